@@ -1,0 +1,2 @@
+/** Source positions and diagnostics shared by every stage (public API). */
+package org.parpe.core.diag;

@@ -1,0 +1,71 @@
+package org.parpe.core.expr;
+
+import org.parpe.core.diag.SourcePos;
+
+/**
+ * A compiled PARSL expression with its source text and place. Compiled once at load, it is
+ * evaluated per tick against an {@link EvalContext} without allocating. Two expressions are
+ * equal when their source text is equal (positions are not compared), so that models can be
+ * compared across a print/parse round trip.
+ */
+public final class Expression {
+    private final String text;
+    private final SourcePos pos;
+    private final Node root;
+
+    /** Wraps a compiled tree. */
+    public Expression(String text, SourcePos pos, Node root) {
+        this.text = text;
+        this.pos = pos;
+        this.root = root;
+    }
+
+    /** A constant expression (used for defaults). */
+    public static Expression constant(double value, String text) {
+        return new Expression(text, SourcePos.NONE, new Nodes.Const(value));
+    }
+
+    /** The expression as written in the script (after XML decoding). */
+    public String text() {
+        return text;
+    }
+
+    /** Where the expression starts in the source. */
+    public SourcePos pos() {
+        return pos;
+    }
+
+    /**
+     * Evaluates the expression.
+     *
+     * @throws EvalException if a value is not finite (division by zero, {@code log(0)}, …)
+     */
+    public double eval(EvalContext ctx) {
+        return root.eval(ctx);
+    }
+
+    /** Whether the value does not depend on anything that changes during a run. */
+    public boolean isConstant() {
+        return root instanceof Nodes.Const;
+    }
+
+    /** The compiled tree. */
+    public Node root() {
+        return root;
+    }
+
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof Expression && ((Expression) o).text.equals(text);
+    }
+
+    @Override
+    public int hashCode() {
+        return text.hashCode();
+    }
+
+    @Override
+    public String toString() {
+        return text;
+    }
+}

@@ -1,0 +1,292 @@
+package org.parpe.core.expr;
+
+
+/**
+ * The node kinds of compiled expressions. Every operator and function checks that its result
+ * is finite, so that {@code 1/0}, {@code log(0)} or {@code sqrt(-1)} stop the run where they
+ * happen (PARSL.md §8) even when a later comparison would hide them.
+ */
+final class Nodes {
+    private Nodes() {
+    }
+
+    static double finite(double v, String what) {
+        if (Double.isFinite(v)) {
+            return v;
+        }
+        throw new EvalException(what + " is not a finite number");
+    }
+
+    /** A number. */
+    static final class Const extends Node {
+        final double value;
+
+        Const(double value) {
+            this.value = value;
+        }
+
+        @Override
+        public double eval(EvalContext c) {
+            return value;
+        }
+    }
+
+    /** A logical variable or other context field. */
+    static final class Var extends Node {
+        static final int TIME = 0, BTIME = 1, INDEX = 2, COUNT = 3, ID = 4, PHASE = 5, CYCLE = 6;
+        final int which;
+
+        Var(int which) {
+            this.which = which;
+        }
+
+        @Override
+        public double eval(EvalContext c) {
+            switch (which) {
+                case TIME: return c.time;
+                case BTIME: return c.btime;
+                case INDEX: return c.index;
+                case COUNT: return c.count;
+                case ID: return c.id;
+                case PHASE: return c.phase;
+                default: return c.cycle;
+            }
+        }
+    }
+
+    /** {@code $control}. */
+    static final class ControlRef extends Node {
+        final int index;
+
+        ControlRef(int index) {
+            this.index = index;
+        }
+
+        @Override
+        public double eval(EvalContext c) {
+            return c.controls[index];
+        }
+    }
+
+    /** An expression-valued macro. */
+    static final class MacroRef extends Node {
+        final int index;
+
+        MacroRef(int index) {
+            this.index = index;
+        }
+
+        @Override
+        public double eval(EvalContext c) {
+            return c.macros[index];
+        }
+    }
+
+    /** {@code $<id>_<sensor>[_<arg>]}: a fixed sensor-table slot. */
+    static final class GlobalSensor extends Node {
+        final int slot;
+
+        GlobalSensor(int slot) {
+            this.slot = slot;
+        }
+
+        @Override
+        public double eval(EvalContext c) {
+            return c.sensors.getSlot(slot);
+        }
+    }
+
+    /** {@code $_n_…}, {@code $_self_…}, {@code $_prev_…}, {@code $_next_…}. */
+    static final class LocalSensor extends Node {
+        static final int SELF = -1, PREV = -2, NEXT = -3;
+        final int position;
+        final int channel;
+
+        LocalSensor(int position, int channel) {
+            this.position = position;
+            this.channel = channel;
+        }
+
+        @Override
+        public double eval(EvalContext c) {
+            int n = c.group.length;
+            int p;
+            if (position == SELF) {
+                p = c.index;
+            } else if (position == PREV) {
+                p = (c.index - 1 + n) % n;
+            } else if (position == NEXT) {
+                p = (c.index + 1) % n;
+            } else {
+                p = position;
+            }
+            return c.sensors.getSlot(c.group[p] * org.parpe.core.run.Channel.count() + channel);
+        }
+    }
+
+    /** Unary minus and logical not. */
+    static final class Unary extends Node {
+        final boolean not;
+        final Node arg;
+
+        Unary(boolean not, Node arg) {
+            this.not = not;
+            this.arg = arg;
+        }
+
+        @Override
+        public double eval(EvalContext c) {
+            double v = arg.eval(c);
+            return not ? (v == 0 ? 1 : 0) : -v;
+        }
+    }
+
+    /** Binary arithmetic and comparison operators. */
+    static final class Binary extends Node {
+        static final int ADD = 0, SUB = 1, MUL = 2, DIV = 3, MOD = 4, POW = 5,
+                LT = 6, GT = 7, LE = 8, GE = 9, EQ = 10, NE = 11;
+        static final String[] SYMBOLS = {"+", "-", "*", "/", "%", "^", "<", ">", "<=", ">=", "==", "!="};
+        final int op;
+        final Node left;
+        final Node right;
+
+        Binary(int op, Node left, Node right) {
+            this.op = op;
+            this.left = left;
+            this.right = right;
+        }
+
+        @Override
+        public double eval(EvalContext c) {
+            double a = left.eval(c);
+            double b = right.eval(c);
+            switch (op) {
+                case ADD: return finite(a + b, "a sum");
+                case SUB: return finite(a - b, "a difference");
+                case MUL: return finite(a * b, "a product");
+                case DIV:
+                    if (b == 0) {
+                        throw new EvalException("division by zero");
+                    }
+                    return finite(a / b, "a quotient");
+                case MOD:
+                    if (b == 0) {
+                        throw new EvalException("remainder of a division by zero");
+                    }
+                    return a % b;
+                case POW: return finite(Math.pow(a, b), "a power");
+                case LT: return a < b ? 1 : 0;
+                case GT: return a > b ? 1 : 0;
+                case LE: return a <= b ? 1 : 0;
+                case GE: return a >= b ? 1 : 0;
+                case EQ: return a == b ? 1 : 0;
+                default: return a != b ? 1 : 0;
+            }
+        }
+    }
+
+    /** {@code &&} and {@code ||}, short-circuiting. */
+    static final class Logic extends Node {
+        final boolean and;
+        final Node left;
+        final Node right;
+
+        Logic(boolean and, Node left, Node right) {
+            this.and = and;
+            this.left = left;
+            this.right = right;
+        }
+
+        @Override
+        public double eval(EvalContext c) {
+            boolean a = left.eval(c) != 0;
+            if (and) {
+                return a && right.eval(c) != 0 ? 1 : 0;
+            }
+            return a || right.eval(c) != 0 ? 1 : 0;
+        }
+    }
+
+    /** {@code if(c, a, b)}, evaluating only the chosen branch. */
+    static final class If extends Node {
+        final Node cond;
+        final Node then;
+        final Node otherwise;
+
+        If(Node cond, Node then, Node otherwise) {
+            this.cond = cond;
+            this.then = then;
+            this.otherwise = otherwise;
+        }
+
+        @Override
+        public double eval(EvalContext c) {
+            return cond.eval(c) != 0 ? then.eval(c) : otherwise.eval(c);
+        }
+    }
+
+    /** One-argument functions. */
+    static final class Func1 extends Node {
+        final Functions.F1 f;
+        final Node arg;
+
+        Func1(Functions.F1 f, Node arg) {
+            this.f = f;
+            this.arg = arg;
+        }
+
+        @Override
+        public double eval(EvalContext c) {
+            return finite(f.apply(arg.eval(c)), f.label());
+        }
+    }
+
+    /** Two-argument functions. */
+    static final class Func2 extends Node {
+        final Functions.F2 f;
+        final Node a;
+        final Node b;
+
+        Func2(Functions.F2 f, Node a, Node b) {
+            this.f = f;
+            this.a = a;
+            this.b = b;
+        }
+
+        @Override
+        public double eval(EvalContext c) {
+            return f.apply(a.eval(c), b.eval(c));
+        }
+    }
+
+    /** {@code sum(a, …)}. */
+    static final class Sum extends Node {
+        final Node[] args;
+
+        Sum(Node[] args) {
+            this.args = args;
+        }
+
+        @Override
+        public double eval(EvalContext c) {
+            double s = 0;
+            for (Node n : args) {
+                s += n.eval(c);
+            }
+            return finite(s, "sum()");
+        }
+    }
+
+    /** {@code rand()}: uniform in [0, 1) from the run's seeded generator. */
+    static final class Rand extends Node {
+        @Override
+        public double eval(EvalContext c) {
+            return c.random.nextDouble();
+        }
+    }
+
+    static int slot(int moduleIndex, int channel) {
+        return moduleIndex * org.parpe.core.run.Channel.count() + channel;
+    }
+
+}

@@ -1,0 +1,22 @@
+package org.parpe.core.model;
+
+import org.parpe.core.diag.SourcePos;
+import org.parpe.core.expr.Expression;
+
+/**
+ * An automaton applied to a group inside a behavior (PARSL.md §7). Optional attributes are
+ * {@code null} when absent.
+ *
+ * @param automaton the automaton's name
+ * @param group     the {@code group} attribute as written: a group or macro name, maybe with {@code !}
+ * @param phase     phase delay between successive modules, cycles
+ * @param offset    phase delay of the whole group, cycles
+ * @param period    seconds per cycle
+ * @param start     seconds after the behavior starts
+ * @param cycles    number of cycles to run
+ * @param pos       the element
+ */
+public record Instance(String automaton, String group, Expression phase, Expression offset,
+                       Expression period, Expression start, Expression cycles, SourcePos pos)
+        implements BehaviorItem {
+}

@@ -1,0 +1,36 @@
+package org.parpe.core.model;
+
+import java.util.List;
+import org.parpe.core.diag.SourcePos;
+import org.parpe.core.expr.Expression;
+
+/**
+ * One behavior invocation in {@code <main>}.
+ *
+ * @param behavior the behavior's name
+ * @param time     run time in seconds, or {@code null}
+ * @param exit     exit condition, or {@code null}
+ * @param macros   the value of each macro of the behavior, in the behavior's order
+ * @param pos      the element
+ */
+public record MainEntry(String behavior, Expression time, Expression exit, List<MacroArg> macros,
+                        SourcePos pos) {
+
+    public MainEntry {
+        macros = List.copyOf(macros);
+    }
+
+    /**
+     * A macro's value for this entry.
+     *
+     * @param name   the macro
+     * @param text   the value as written
+     * @param group  for a group-valued macro, the group name without {@code !}; else {@code null}
+     * @param mirror for a group-valued macro, whether the value starts with {@code !}
+     * @param value  for an expression-valued macro, the expression; else {@code null}
+     * @param pos    the attribute
+     */
+    public record MacroArg(String name, String text, String group, boolean mirror,
+                           Expression value, SourcePos pos) {
+    }
+}

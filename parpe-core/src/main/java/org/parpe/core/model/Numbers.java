@@ -1,0 +1,31 @@
+package org.parpe.core.model;
+
+import java.math.BigDecimal;
+
+/** Number formatting shared by messages and the printer. */
+public final class Numbers {
+    private Numbers() {
+    }
+
+    /** The shortest plain decimal that reads back as {@code v} ({@code 2} rather than {@code 2.0}). */
+    public static String format(double v) {
+        if (v == Math.rint(v) && Math.abs(v) < 1e15) {
+            return Long.toString((long) v);
+        }
+        return new BigDecimal(Double.toString(v)).stripTrailingZeros().toPlainString();
+    }
+
+    /**
+     * Parses a plain decimal number as PARSL allows in {@code value}, {@code min}, {@code max}
+     * and {@code step}: optional sign, digits, optional fraction and exponent. Returns
+     * {@code null} for anything else.
+     */
+    public static Double parsePlain(String text) {
+        String t = text.trim();
+        if (!t.matches("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d+)?")) {
+            return null;
+        }
+        double v = Double.parseDouble(t);
+        return Double.isFinite(v) ? v : null;
+    }
+}
