@@ -1,0 +1,329 @@
+package org.parpe.serial.bus;
+
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.LockSupport;
+import java.util.function.Consumer;
+import org.parpe.core.run.JointSink;
+import org.parpe.core.run.RunInfo;
+import org.parpe.core.run.RunOutcome;
+import org.parpe.core.run.SensorSource;
+import org.parpe.core.run.SensorTable;
+import org.parpe.serial.link.LinkOpener;
+import org.parpe.serial.protocol.Protocol;
+
+/**
+ * Drives real modules from a run: a {@link JointSink} that broadcasts each tick's setpoints and a
+ * {@link SensorSource} that serves the latest readings. A bus thread owns the wire: it sends the
+ * newest setpoints (repeating them as a keepalive for the modules' watchdogs) and reads one
+ * module per cycle, round robin, retrying a timed-out read on the next cycle so that setpoints
+ * never wait for more than one read timeout. When the modules fall silent or the device goes
+ * away it reports at once (the modules stop themselves on their watchdog, in the configured safe
+ * mode) and keeps trying to reconnect; when they are back it rediscovers them and resumes.
+ */
+public final class HardwareBus implements JointSink, SensorSource, AutoCloseable {
+    private static final int BACKOFF_CYCLES = 50;
+
+    private enum State { CONNECTED, SILENT, LINK_LOST }
+
+    private final LinkOpener opener;
+    private final BusConfig config;
+    private final Consumer<String> report;
+    private final Reply reply = new Reply();
+    private volatile BusMaster master;
+    private RunBuffers buffers;
+    private short[] wire;
+    private int first;
+    private int[] backoff;
+    private Thread busThread;
+    private volatile boolean running;
+    private volatile State state = State.CONNECTED;
+    private long silentSince;
+    private int readCursor;
+    private int readAttempt;
+    private long lastSend;
+    private long reads;
+    private long readsRetried;
+    private long readFailures;
+    private long disconnects;
+    private int moduleRxErrors;
+
+    private HardwareBus(LinkOpener opener, BusMaster master, BusConfig config, Consumer<String> report) {
+        this.opener = opener;
+        this.master = master;
+        this.config = config;
+        this.report = report;
+    }
+
+    /**
+     * Opens the bus; {@code report} receives user messages (faults, recoveries, warnings), from
+     * any thread.
+     *
+     * @throws IOException with a user message when the device cannot be opened
+     */
+    public static HardwareBus open(LinkOpener opener, BusConfig config, Consumer<String> report) throws IOException {
+        return new HardwareBus(opener, new BusMaster(opener.open(), config), config, report);
+    }
+
+    /** The device's name. */
+    public String name() {
+        return master.name();
+    }
+
+    /**
+     * Pings each module of the run (before anything moves), configures every module's watchdog
+     * and safe mode and clears old emergency stops. Only the modules found are driven.
+     */
+    public Discovery discover(int[] moduleIds) throws IOException {
+        buffers = new RunBuffers(moduleIds);
+        backoff = new int[moduleIds.length];
+        int lo = Integer.MAX_VALUE;
+        int hi = -1;
+        for (int id : moduleIds) {
+            if (id <= Protocol.MAX_MODULE_ID) {
+                lo = Math.min(lo, id);
+                hi = Math.max(hi, id);
+            }
+        }
+        first = hi < 0 ? 0 : lo;
+        wire = new short[Math.max(1, hi - first + 1)];
+        java.util.Arrays.fill(wire, Protocol.NO_CHANGE);
+        Discovery d = ping(master, buffers.ids);
+        master.sendConfig(config.watchdogMs(), config.safeMode(), 0);
+        master.send(Protocol.BROADCAST, Protocol.RESUME);
+        return d;
+    }
+
+    private Discovery ping(BusMaster m, int[] ids) throws IOException {
+        List<Integer> found = new ArrayList<>();
+        List<Integer> missing = new ArrayList<>();
+        List<Integer> unaddressable = new ArrayList<>();
+        for (int i = 0; i < ids.length; i++) {
+            if (ids[i] > Protocol.MAX_MODULE_ID) {
+                unaddressable.add(ids[i]);
+            } else if (m.ping(ids[i], reply, config.retries() + 1)) {
+                found.add(ids[i]);
+                buffers.driven[i] = true;
+                buffers.store(i, reply, false);
+            } else {
+                buffers.driven[i] = false;
+                missing.add(ids[i]);
+            }
+        }
+        return new Discovery(found, missing, unaddressable);
+    }
+
+    @Override
+    public void start(RunInfo info) {
+        if (buffers == null || !java.util.Arrays.equals(info.moduleIds(), buffers.ids)) {
+            throw new IllegalStateException("discover() must be called with the run's module IDs before start");
+        }
+        running = true;
+        busThread = new Thread(this::busLoop, "bus " + master.name());
+        busThread.setDaemon(true);
+        busThread.start();
+    }
+
+    @Override
+    public void accept(long tick, double time, double[] commanded) {
+        buffers.accept(tick, commanded, report);
+    }
+
+    @Override
+    public void read(double time, SensorTable table) {
+        buffers.copyTo(table);
+    }
+
+    /** The last measured angle of the module at {@code index} (run order), NaN before any. */
+    public double measuredAngle(int index) {
+        return buffers.measuredAngle(index);
+    }
+
+    /** Sends the last setpoints, then tells every module to hold (watchdogs off), and reports. */
+    @Override
+    public void finish(RunOutcome outcome) {
+        stopThread();
+        BusMaster m = master;
+        if (state == State.CONNECTED && m.linkError() == null) {
+            try {
+                int seq = buffers.take(wire, first, true);
+                if (seq >= 0) {
+                    m.sendSetpoints(seq, first, wire, wire.length);
+                }
+                m.send(Protocol.BROADCAST, Protocol.HOLD);
+            } catch (IOException e) {
+                report.accept("bus: could not send the final hold: " + e.getMessage());
+            }
+        }
+        report.accept(summary());
+    }
+
+    /**
+     * Emergency stop: broadcasts ESTOP (three times, in case one is lost); every module stops in
+     * the safe mode and ignores setpoints until the next run. Safe to call from any thread.
+     */
+    public void emergencyStop() {
+        BusMaster m = master;
+        try {
+            for (int i = 0; i < 3; i++) {
+                m.sendEmergencyStop(config.safeMode());
+            }
+            report.accept("bus: emergency stop sent; modules " + config.safeMode().name().toLowerCase()
+                    + " until the next run");
+        } catch (IOException e) {
+            report.accept("bus: emergency stop could not be sent (" + e.getMessage()
+                    + "); modules stop on their watchdog within " + config.watchdogMs() + " ms");
+        }
+    }
+
+    /** One line of counters for the end of a run. */
+    public String summary() {
+        BusMaster.Counters c = master.counters();
+        return String.format(java.util.Locale.ROOT, "bus %s: %d frames sent, %d reads (%d timeouts, %d retried ok, "
+                + "%d failed), %d bad checksums received, modules rejected %d frames, %d setpoints clamped, "
+                + "%d disconnects", master.name(), c.framesSent(), reads, c.timeouts(), readsRetried, readFailures,
+                c.checksumErrors(), moduleRxErrors, buffers == null ? 0 : buffers.clamps(), disconnects);
+    }
+
+    /** Stops the bus thread and closes the device. */
+    @Override
+    public void close() {
+        stopThread();
+        master.close();
+    }
+
+    private void stopThread() {
+        running = false;
+        Thread t = busThread;
+        if (t != null) {
+            t.interrupt();
+            try {
+                t.join(2000);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+            busThread = null;
+        }
+    }
+
+    private void busLoop() {
+        while (running) {
+            try {
+                switch (state) {
+                    case CONNECTED -> cycle();
+                    case SILENT -> lookForModules();
+                    case LINK_LOST -> reopen();
+                    default -> throw new IllegalStateException(state.name());
+                }
+            } catch (IOException e) {
+                if (running) {
+                    linkLost(e);
+                }
+            } catch (InterruptedException e) {
+                return;
+            }
+        }
+    }
+
+    /** One cycle: setpoints if new or due as keepalive, then one read attempt. */
+    private void cycle() throws IOException, InterruptedException {
+        long now = System.nanoTime();
+        boolean keepalive = now - lastSend > TimeUnit.MILLISECONDS.toNanos(config.keepaliveMs());
+        int seq = buffers.take(wire, first, keepalive);
+        if (seq >= 0) {
+            master.sendSetpoints(seq, first, wire, wire.length);
+            lastSend = now;
+        }
+        boolean read = readOne();
+        if (System.nanoTime() - master.lastReplyNanos() > TimeUnit.MILLISECONDS.toNanos(config.deadAfterMs())) {
+            silent();
+        } else if (seq < 0 && !read) {
+            buffers.awaitFresh(config.keepaliveMs());
+        }
+    }
+
+    /** One attempt at reading the module under the cursor; false when nothing is driven. */
+    private boolean readOne() throws IOException {
+        int n = buffers.ids.length;
+        for (int k = 0; k < n && readAttempt == 0; k++) {
+            if (buffers.driven[readCursor] && (backoff[readCursor] == 0 || --backoff[readCursor] == 0)) {
+                break;
+            }
+            readCursor = (readCursor + 1) % n;
+        }
+        if (!buffers.driven[readCursor] || backoff[readCursor] > 0) {
+            return false;
+        }
+        int id = buffers.ids[readCursor];
+        if (master.read(id, reply, 1)) {
+            reads++;
+            readsRetried += readAttempt > 0 ? 1 : 0;
+            buffers.store(readCursor, reply, true);
+            moduleRxErrors = Math.max(moduleRxErrors, reply.rxErrors);
+        } else if (++readAttempt <= config.retries()) {
+            return true;
+        } else {
+            readFailures++;
+            backoff[readCursor] = BACKOFF_CYCLES;
+            report.accept("bus: module " + id + " did not answer " + (config.retries() + 1)
+                    + " reads; reading it less often");
+        }
+        readAttempt = 0;
+        readCursor = (readCursor + 1) % n;
+        return true;
+    }
+
+    private void silent() {
+        state = State.SILENT;
+        silentSince = System.nanoTime();
+        disconnects++;
+        report.accept(String.format(java.util.Locale.ROOT, "bus: no reply from any module on %s for %d ms; "
+                + "modules stop on their watchdog (%s) within %d ms; waiting for them to come back",
+                master.name(), config.deadAfterMs(), config.safeMode().name().toLowerCase(), config.watchdogMs()));
+    }
+
+    private void linkLost(IOException e) {
+        state = State.LINK_LOST;
+        silentSince = System.nanoTime();
+        disconnects++;
+        master.close();
+        report.accept("bus: " + e.getMessage() + "; modules stop on their watchdog ("
+                + config.safeMode().name().toLowerCase() + ") within " + config.watchdogMs()
+                + " ms; waiting for the device to return");
+    }
+
+    private void reopen() throws InterruptedException {
+        Thread.sleep(config.reconnectMs());
+        try {
+            master = new BusMaster(opener.open(), config);
+            state = State.SILENT;
+        } catch (IOException e) {
+            // Still gone: try again after the next interval.
+        }
+    }
+
+    /** While silent: ping one module per interval; when one answers, rediscover and resume. */
+    private void lookForModules() throws IOException, InterruptedException {
+        for (int i = 0; i < buffers.ids.length; i++) {
+            if (buffers.ids[i] <= Protocol.MAX_MODULE_ID && master.ping(buffers.ids[i], reply, 1)) {
+                resume();
+                return;
+            }
+            Thread.sleep(Math.max(1, config.reconnectMs() / Math.max(1, buffers.ids.length)));
+        }
+    }
+
+    private void resume() throws IOException {
+        Discovery d = ping(master, buffers.ids);
+        master.sendConfig(config.watchdogMs(), config.safeMode(), 0);
+        master.send(Protocol.BROADCAST, Protocol.RESUME);
+        java.util.Arrays.fill(backoff, 0);
+        readAttempt = 0;
+        state = State.CONNECTED;
+        report.accept(String.format(java.util.Locale.ROOT, "bus: modules back on %s after %.2f s (%d of %d answer%s); "
+                + "resuming", master.name(), (System.nanoTime() - silentSince) / 1e9, d.found().size(),
+                buffers.ids.length, d.missing().isEmpty() ? "" : ", missing " + d.missing()));
+    }
+}

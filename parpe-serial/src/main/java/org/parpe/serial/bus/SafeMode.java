@@ -1,0 +1,22 @@
+package org.parpe.serial.bus;
+
+import org.parpe.serial.protocol.Protocol;
+
+/** What a module does when it stops on its own (watchdog, emergency stop). */
+public enum SafeMode {
+    /** Keep the current angle with the servo on. */
+    HOLD(Protocol.SAFE_HOLD),
+    /** Turn the servo off: the joint goes slack. */
+    LIMP(Protocol.SAFE_LIMP);
+
+    private final int wire;
+
+    SafeMode(int wire) {
+        this.wire = wire;
+    }
+
+    /** The protocol's code for this mode. */
+    public int wire() {
+        return wire;
+    }
+}

@@ -1,0 +1,68 @@
+package org.parpe.serial.emu;
+
+import org.parpe.serial.protocol.Protocol;
+
+/**
+ * One emulated module: a hobby servo with a speed limit, its PIC's watchdog and latches, and its
+ * sensors. The emulator serialises access; this class is not thread-safe.
+ */
+final class ServoModule {
+    final int id;
+    double angle;
+    double target;
+    boolean limp;
+    boolean estop;
+    boolean watchdogTripped;
+    boolean watchdogArmed;
+    int touch;
+
+    ServoModule(int id) {
+        this.id = id;
+    }
+
+    /** Moves toward the target by at most {@code speed·dt}; a limp servo does not drive. */
+    void step(double dt, double speed) {
+        if (limp) {
+            return;
+        }
+        double d = target - angle;
+        double max = speed * dt;
+        angle = Math.abs(d) <= max ? target : angle + Math.copySign(max, d);
+    }
+
+    /** A new commanded angle (wire units), obeyed unless stopped. */
+    void command(int wire) {
+        if (estop || watchdogTripped) {
+            return;
+        }
+        target = Protocol.fromWire(wire);
+        limp = false;
+        watchdogArmed = true;
+    }
+
+    /** Enters the safe mode: hold where it is, or go limp. */
+    void safe(int mode) {
+        watchdogArmed = false;
+        if (mode == Protocol.SAFE_LIMP) {
+            limp = true;
+        } else {
+            limp = false;
+            target = angle;
+        }
+    }
+
+    int flags() {
+        return (limp ? Protocol.FLAG_LIMP : 0) | (estop ? Protocol.FLAG_ESTOP : 0)
+                | (watchdogTripped ? Protocol.FLAG_WATCHDOG : 0);
+    }
+
+    /** Gravity along a body axis of a module whose body turns with its joint, ×100. */
+    int accel(int axis) {
+        double r = Math.toRadians(angle);
+        switch (axis) {
+            case 0: return (int) Math.round(100 * Math.sin(r));
+            case 1: return (int) Math.round(-100 * Math.cos(r));
+            default: return 0;
+        }
+    }
+}

@@ -1,0 +1,123 @@
+package org.parpe.serial.link;
+
+import com.fazecast.jSerialComm.SerialPort;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.concurrent.locks.LockSupport;
+
+/**
+ * A serial device (a USB adapter, a UART, or one end of a {@code socat} pty pair) at a fixed
+ * baud rate, 8N1, no flow control. Reads poll without blocking because the kernel's read
+ * timeout only has tenths of a second (VTIME), too coarse for the bus's millisecond timeouts.
+ */
+public final class SerialLink implements ByteLink {
+    private static final long POLL_NANOS = 200_000;
+    private static final int POLLS_PER_READ = 5;
+    private static final long WRITE_STALL_NANOS = 50_000_000;
+
+    private final SerialPort port;
+    private final String path;
+    private volatile boolean closed;
+
+    private SerialLink(SerialPort port, String path) {
+        this.port = port;
+        this.path = path;
+    }
+
+    /**
+     * Opens {@code path} at {@code baud}.
+     *
+     * @throws LinkException with a message naming the path and the reason
+     */
+    public static SerialLink open(String path, int baud) throws LinkException {
+        if (baud <= 0) {
+            throw new LinkException("baud rate must be > 0, got " + baud);
+        }
+        Path p = Path.of(path);
+        if (!Files.exists(p)) {
+            throw new LinkException("serial device " + path + " does not exist");
+        }
+        if (Files.isDirectory(p) || Files.isRegularFile(p)) {
+            throw new LinkException(path + " is not a serial device");
+        }
+        if (!Files.isReadable(p) || !Files.isWritable(p)) {
+            throw new LinkException("no permission to open " + path
+                    + " (add yourself to the group that owns it, e.g. dialout)");
+        }
+        SerialPort port;
+        try {
+            port = SerialPort.getCommPort(path);
+        } catch (RuntimeException e) {
+            throw new LinkException("cannot use serial device " + path + ": " + e.getMessage());
+        }
+        port.setComPortParameters(baud, 8, SerialPort.ONE_STOP_BIT, SerialPort.NO_PARITY);
+        port.setFlowControl(SerialPort.FLOW_CONTROL_DISABLED);
+        port.setComPortTimeouts(SerialPort.TIMEOUT_NONBLOCKING, 0, 0);
+        if (!port.openPort()) {
+            throw new LinkException("cannot open serial device " + path + " (error " + port.getLastErrorCode()
+                    + "; is another program using it?)");
+        }
+        return new SerialLink(port, path);
+    }
+
+    @Override
+    public void write(byte[] b, int off, int len) throws IOException {
+        long deadline = 0;
+        while (len > 0) {
+            if (closed) {
+                throw new LinkException(path + " is closed");
+            }
+            int n = port.writeBytes(b, len, off);
+            if (n < 0) {
+                throw new LinkException("serial device " + path + " went away (unplugged?)");
+            }
+            if (n == 0) {
+                // A full output buffer: a real UART drains at the baud rate, a pty only when read.
+                long now = System.nanoTime();
+                if (deadline == 0) {
+                    deadline = now + WRITE_STALL_NANOS;
+                } else if (now - deadline > 0) {
+                    throw new LinkException("serial device " + path + " stopped accepting data for "
+                            + WRITE_STALL_NANOS / 1_000_000 + " ms (unplugged?)");
+                }
+                LockSupport.parkNanos(POLL_NANOS);
+                continue;
+            }
+            deadline = 0;
+            off += n;
+            len -= n;
+        }
+    }
+
+    @Override
+    public int read(byte[] b) throws IOException {
+        for (int i = 0; i < POLLS_PER_READ; i++) {
+            if (closed) {
+                throw new LinkException(path + " is closed");
+            }
+            int n = port.readBytes(b, b.length);
+            if (n < 0) {
+                throw new LinkException("serial device " + path + " went away (unplugged?)");
+            }
+            if (n > 0) {
+                return n;
+            }
+            LockSupport.parkNanos(POLL_NANOS);
+        }
+        return 0;
+    }
+
+    @Override
+    public String name() {
+        return path;
+    }
+
+    @Override
+    public void close() {
+        if (!closed) {
+            closed = true;
+            port.closePort();
+        }
+    }
+}
