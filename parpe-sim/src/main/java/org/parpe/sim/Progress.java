@@ -1,0 +1,53 @@
+package org.parpe.sim;
+
+import org.ode4j.math.DMatrix3C;
+import org.parpe.sim.internal.PhysicsWorld;
+
+/** Follows the centre of mass and the root part's tilt for {@link SimMetrics}. */
+final class Progress {
+    private final PhysicsWorld world;
+    private final double[] com = new double[3];
+    private final double[] start = new double[3];
+    private final double[] upLocal = new double[3];
+    private double startTime;
+    private double maxTilt;
+
+    Progress(PhysicsWorld world) {
+        this.world = world;
+        reset();
+    }
+
+    /** Starts measuring from the current state. */
+    void reset() {
+        world.centerOfMass(start);
+        System.arraycopy(start, 0, com, 0, 3);
+        startTime = world.time();
+        maxTilt = 0;
+        DMatrix3C r = world.pieceRotation(world.assembly().rootPiece());
+        // The root's local axis that points up now: the third row of its rotation.
+        for (int i = 0; i < 3; i++) {
+            upLocal[i] = r.get(2, i);
+        }
+    }
+
+    /** Updates after a tick. */
+    void update() {
+        world.centerOfMass(com);
+        DMatrix3C r = world.pieceRotation(world.assembly().rootPiece());
+        double z = r.get(2, 0) * upLocal[0] + r.get(2, 1) * upLocal[1] + r.get(2, 2) * upLocal[2];
+        maxTilt = Math.max(maxTilt, Math.acos(Math.max(-1, Math.min(1, z))));
+    }
+
+    /** Copies the current centre of mass into {@code out[at..at+2]}. */
+    void centerOfMass(double[] out, int at) {
+        System.arraycopy(com, 0, out, at, 3);
+    }
+
+    SimMetrics metrics() {
+        double duration = world.time() - startTime;
+        double dx = com[0] - start[0];
+        double dy = com[1] - start[1];
+        double d = Math.hypot(dx, dy);
+        return new SimMetrics(duration, d, dx, dy, duration > 0 ? d / duration : 0, Math.toDegrees(maxTilt));
+    }
+}

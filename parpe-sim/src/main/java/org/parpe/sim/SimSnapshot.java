@@ -1,0 +1,39 @@
+package org.parpe.sim;
+
+import java.util.Collections;
+import java.util.List;
+import java.util.SortedMap;
+import java.util.SortedSet;
+import java.util.TreeMap;
+import java.util.TreeSet;
+
+/**
+ * An immutable picture of the simulated world at one instant, safe to hand to another thread
+ * (the IDE draws it on its own timer).
+ *
+ * @param time           simulated time, seconds
+ * @param bodies         every rigid piece, in configuration order
+ * @param contacts       contact points of the last physics sub-step
+ * @param centerOfMass   the robot's centre of mass, world frame, metres
+ * @param measuredAngles joint angle of every segment, degrees, by logical module ID
+ * @param targetAngles   the angle each servo is driving to, degrees, by logical module ID
+ * @param limpModules    the modules whose servo is limp (back-drivable)
+ */
+public record SimSnapshot(double time, List<SimBody> bodies, List<SimContact> contacts,
+                          Vec3 centerOfMass, SortedMap<Integer, Double> measuredAngles,
+                          SortedMap<Integer, Double> targetAngles, SortedSet<Integer> limpModules) {
+
+    public SimSnapshot {
+        bodies = List.copyOf(bodies);
+        contacts = List.copyOf(contacts);
+        measuredAngles = Collections.unmodifiableSortedMap(new TreeMap<>(measuredAngles));
+        targetAngles = Collections.unmodifiableSortedMap(new TreeMap<>(targetAngles));
+        limpModules = Collections.unmodifiableSortedSet(new TreeSet<>(limpModules));
+    }
+
+    /** The measured angle of module {@code id}, degrees, or NaN if the robot has no such module. */
+    public double angle(int id) {
+        Double a = measuredAngles.get(id);
+        return a == null ? Double.NaN : a;
+    }
+}

@@ -1,0 +1,254 @@
+package org.parpe.sim;
+
+import java.util.Arrays;
+import java.util.concurrent.atomic.AtomicIntegerArray;
+import java.util.stream.Collectors;
+import org.ode4j.math.DMatrix3C;
+import org.parpe.core.diag.DiagnosticList;
+import org.parpe.core.run.Channel;
+import org.parpe.core.run.JointSink;
+import org.parpe.core.run.RunInfo;
+import org.parpe.core.run.SensorSource;
+import org.parpe.core.run.SensorTable;
+import org.parpe.core.run.TraceColumns;
+import org.parpe.sim.config.RobotConfig;
+import org.parpe.sim.internal.Assembly;
+import org.parpe.sim.internal.PhysicsParams;
+import org.parpe.sim.internal.PhysicsWorld;
+import org.parpe.sim.internal.SnapshotBuffer;
+
+/**
+ * A PolyBot simulated with rigid-body physics (ODE4j) on a flat floor. As a {@link JointSink}
+ * it takes each tick's commanded angles and advances the physics by one tick (in fixed
+ * sub-steps), so that the next {@link SensorSource#read} sees the plant one tick later; as a
+ * sensor source it fills the measured {@code angle}, {@code accel} and {@code touch} readings
+ * of PARSL.md §10. Runs are deterministic: the same configuration and commands give the same
+ * motion, bit for bit.
+ *
+ * <p>Threads: the engine thread calls the sink and source methods and {@link #step(int)};
+ * {@link #snapshot()}, {@link #setLimp(boolean)} and {@link #setLimp(int, boolean)} may be
+ * called from any thread (limp changes take effect at the next tick).
+ */
+public final class Simulator implements JointSink, SensorSource, AutoCloseable {
+    /** Tick length used by {@link #step(int)} before a run has started, s. */
+    public static final double DEFAULT_TICK = 0.01;
+
+    private static final int NO_REQUEST = 0;
+    private static final int REQUEST_LIMP = 1;
+    private static final int REQUEST_HOLD = 2;
+
+    private final RobotConfig config;
+    private final PhysicsWorld world;
+    private final SnapshotBuffer snapshots;
+    private final int[] hingeIds;
+    private final AtomicIntegerArray limpRequests;
+    private final Progress progress;
+    private int[] programHinge = new int[0];
+    private int[] programIds = new int[0];
+    private double dt = DEFAULT_TICK;
+    private final double[] traceValues;
+
+    /** A simulator of {@code config}; throws {@link IllegalArgumentException} if it is not valid. */
+    public Simulator(RobotConfig config) {
+        this.config = config;
+        DiagnosticList diags = new DiagnosticList();
+        Assembly assembly = Assembly.build(config, diags);
+        if (assembly == null) {
+            throw new IllegalArgumentException("invalid robot configuration '" + config.name() + "':\n"
+                    + diags.all().stream().map(Object::toString).collect(Collectors.joining("\n")));
+        }
+        world = new PhysicsWorld(assembly, PhysicsParams.defaults());
+        hingeIds = assembly.hinges().stream().mapToInt(Assembly.Hinge::moduleId).toArray();
+        limpRequests = new AtomicIntegerArray(hingeIds.length);
+        progress = new Progress(world);
+        snapshots = new SnapshotBuffer(world);
+        traceValues = new double[hingeIds.length + 3];
+    }
+
+    /** The configuration simulated. */
+    public RobotConfig config() {
+        return config;
+    }
+
+    /** The logical IDs of the simulated segments, ascending. */
+    public int[] moduleIds() {
+        return hingeIds.clone();
+    }
+
+    @Override
+    public void start(RunInfo info) {
+        dt = info.dt();
+        bind(info.moduleIds());
+        progress.reset();
+    }
+
+    /** Maps the program's module order onto the simulated hinges (−1 where the robot has no such module). */
+    private void bind(int[] ids) {
+        programIds = ids.clone();
+        programHinge = new int[ids.length];
+        for (int i = 0; i < ids.length; i++) {
+            programHinge[i] = Arrays.binarySearch(hingeIds, ids[i]);
+            programHinge[i] = programHinge[i] < 0 ? -1 : programHinge[i];
+        }
+    }
+
+    @Override
+    public void accept(long tick, double time, double[] commanded) {
+        for (int i = 0; i < programHinge.length && i < commanded.length; i++) {
+            if (programHinge[i] >= 0) {
+                world.setTarget(programHinge[i], Math.toRadians(commanded[i]));
+            }
+        }
+        captureTrace();
+        advance(1);
+    }
+
+    /** Advances {@code ticks} ticks holding the current targets (posing, tests). */
+    public void step(int ticks) {
+        advance(ticks);
+    }
+
+    private void advance(int ticks) {
+        for (int t = 0; t < ticks; t++) {
+            applyLimpRequests();
+            world.advance(dt);
+            progress.update();
+            snapshots.publish();
+        }
+    }
+
+    /** Makes every servo limp (back-drivable, for posing) or holding. */
+    public void setLimp(boolean limp) {
+        for (int h = 0; h < hingeIds.length; h++) {
+            limpRequests.set(h, limp ? REQUEST_LIMP : REQUEST_HOLD);
+        }
+    }
+
+    /** Makes the servo of module {@code id} limp or holding; unknown IDs are ignored. */
+    public void setLimp(int id, boolean limp) {
+        int h = Arrays.binarySearch(hingeIds, id);
+        if (h >= 0) {
+            limpRequests.set(h, limp ? REQUEST_LIMP : REQUEST_HOLD);
+        }
+    }
+
+    private void applyLimpRequests() {
+        for (int h = 0; h < hingeIds.length; h++) {
+            int r = limpRequests.getAndSet(h, NO_REQUEST);
+            if (r != NO_REQUEST) {
+                world.setLimp(h, r == REQUEST_LIMP);
+                if (r == REQUEST_HOLD) {
+                    world.setTarget(h, world.angle(h));
+                }
+            }
+        }
+    }
+
+    @Override
+    public void read(double time, SensorTable table) {
+        for (int i = 0; i < programHinge.length && i < table.moduleCount(); i++) {
+            int h = programHinge[i];
+            if (h < 0) {
+                continue;
+            }
+            table.set(i, Channel.ANGLE, Math.toDegrees(world.angle(h)));
+            DMatrix3C r = world.pieceRotation(world.assembly().hinges().get(h).base());
+            // Gravity points down (−z), so axis·ĝ is minus the axis's z component.
+            table.set(i, Channel.ACCEL_X, -100 * r.get(2, 0));
+            table.set(i, Channel.ACCEL_Y, -100 * r.get(2, 1));
+            table.set(i, Channel.ACCEL_Z, -100 * r.get(2, 2));
+            int touch = world.touch(h);
+            table.set(i, Channel.TOUCH_LEFT, (touch & 1) != 0 ? 1 : 0);
+            table.set(i, Channel.TOUCH_RIGHT, (touch & 2) != 0 ? 1 : 0);
+        }
+    }
+
+    /** A sensor table for the simulator's own modules, filled with the current readings (tests, IDE). */
+    public SensorTable readings() {
+        if (programIds.length == 0) {
+            bind(hingeIds);
+        }
+        SensorTable t = new SensorTable(programIds);
+        read(world.time(), t);
+        return t;
+    }
+
+    /** Trace columns {@code a<ID>} for the program's simulated modules and {@code com_x,com_y,com_z}. */
+    public TraceColumns traceColumns() {
+        return new TraceColumns() {
+            @Override
+            public String[] names() {
+                String[] names = new String[measuredCount() + 3];
+                int k = 0;
+                for (int i = 0; i < programHinge.length; i++) {
+                    if (programHinge[i] >= 0) {
+                        names[k++] = "a" + programIds[i];
+                    }
+                }
+                names[k++] = "com_x";
+                names[k++] = "com_y";
+                names[k] = "com_z";
+                return names;
+            }
+
+            @Override
+            public void values(double[] out) {
+                System.arraycopy(traceValues, 0, out, 0, measuredCount() + 3);
+            }
+        };
+    }
+
+    private int measuredCount() {
+        int n = 0;
+        for (int h : programHinge) {
+            n += h >= 0 ? 1 : 0;
+        }
+        return n;
+    }
+
+    /** Keeps the measured angles and centre of mass of the current tick, before the plant moves on. */
+    private void captureTrace() {
+        int k = 0;
+        for (int h : programHinge) {
+            if (h >= 0) {
+                traceValues[k++] = Math.toDegrees(world.angle(h));
+            }
+        }
+        progress.centerOfMass(traceValues, k);
+    }
+
+    /** The latest published snapshot; safe from any thread. */
+    public SimSnapshot snapshot() {
+        return snapshots.snapshot();
+    }
+
+    /** Distance, speed and tilt since the run started (or since construction). */
+    public SimMetrics metrics() {
+        return progress.metrics();
+    }
+
+    /** Simulated time, s. */
+    public double time() {
+        return world.time();
+    }
+
+    /** Whether any body's state has become non-finite. */
+    public boolean hasNaN() {
+        return world.hasNaN();
+    }
+
+    /** Kinetic plus potential energy of the robot, J. */
+    public double energy() {
+        return world.energy();
+    }
+
+    /** Total mass, kg. */
+    public double totalMass() {
+        return world.totalMass();
+    }
+
+    @Override
+    public void close() {
+        world.close();
+    }
+}

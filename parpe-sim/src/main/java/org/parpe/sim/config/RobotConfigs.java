@@ -1,0 +1,100 @@
+package org.parpe.sim.config;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.parpe.core.diag.DiagnosticSink;
+import org.parpe.core.diag.SourcePos;
+import org.parpe.sim.internal.Assembly;
+import org.parpe.sim.internal.Names;
+
+/**
+ * Where simulated robots come from: a standard configuration made by a generator
+ * ({@code snake}, {@code loop}, {@code wheel}, {@code centipede}, {@code humanoid}, with
+ * {@code :key=value,...} arguments) or a configuration file. Used by the CLI's {@code --sim}
+ * and by the IDE.
+ */
+public final class RobotConfigs {
+    private static final List<String> GENERATORS = List.of("snake", "loop", "wheel", "centipede", "humanoid");
+    /** Most modules a generated chain may have. */
+    private static final int MAX_MODULES = 1000;
+
+    private RobotConfigs() {
+    }
+
+    /** The generator names, in documentation order. */
+    public static List<String> generatorNames() {
+        return GENERATORS;
+    }
+
+    /**
+     * The configuration named by {@code specOrPath}: {@code GENERATOR[:key=value,...]} or a path
+     * to a configuration file (anything ending in {@code .xml} or naming an existing file).
+     * {@code moduleIds} are the script's modules (may be empty): generators size themselves from
+     * them where a size is not given. Returns {@code null} after reporting errors to {@code diags};
+     * a returned configuration has been assembled successfully.
+     */
+    public static RobotConfig resolve(String specOrPath, int[] moduleIds, DiagnosticSink diags) {
+        String spec = specOrPath.trim();
+        RobotConfig config;
+        if (spec.endsWith(".xml") || spec.contains("/") || Files.isRegularFile(Path.of(spec))) {
+            Path path = Path.of(spec);
+            if (!Files.isRegularFile(path)) {
+                diags.error(new SourcePos(spec, 1, 1), "configuration file not found");
+                return null;
+            }
+            config = ConfigReader.read(path, diags);
+        } else {
+            config = generate(spec, moduleIds, diags);
+        }
+        if (config == null || Assembly.build(config, diags) == null) {
+            return null;
+        }
+        return config;
+    }
+
+    private static RobotConfig generate(String spec, int[] moduleIds, DiagnosticSink diags) {
+        int colon = spec.indexOf(':');
+        String name = colon < 0 ? spec : spec.substring(0, colon);
+        GeneratorArgs args = colon < 0 ? GeneratorArgs.empty("--sim " + spec, diags)
+                : GeneratorArgs.parse("--sim " + spec, spec.substring(colon + 1), colon + 2, diags);
+        int fromScript = moduleIds.length == 0 ? 0 : moduleIds[moduleIds.length - 1] + 1;
+        RobotConfig config = switch (name) {
+            case "snake" -> Generators.snake(spec, args.integer("n", Math.max(2, fromScript), 1, MAX_MODULES),
+                    args.word("axes", "parallel", "alternate").equals("alternate"));
+            case "loop" -> Generators.loop(spec, args.integer("n", Math.max(6, fromScript), 4, 72));
+            case "wheel" -> Generators.wheel(spec, args.integer("n", fromScript >= 3 ? Math.min(fromScript, 16) : 8, 3, 16));
+            case "centipede" -> Generators.centipede(spec, args.integer("pairs", 7, 1, 40), args.integer("leg", 2, 1, 4),
+                    args.integer("between", 4, 0, 20), args.integer("head", 2, 0, 20), args.integer("tail", 1, 0, 20));
+            case "humanoid" -> Generators.humanoid(spec);
+            default -> null;
+        };
+        if (config == null) {
+            diags.error(new SourcePos("--sim " + spec, 1, 1), "unknown robot '" + name + "'; expected one of "
+                    + String.join(", ", GENERATORS) + " or a configuration file ending in .xml"
+                    + Names.suggestion(name, GENERATORS));
+            return null;
+        }
+        return args.finish(name) ? config : null;
+    }
+
+    /**
+     * Warns about script modules the robot does not have (their commands are ignored); returns
+     * how many there were.
+     */
+    public static int checkModules(RobotConfig config, int[] moduleIds, DiagnosticSink diags) {
+        int[] have = config.moduleIds();
+        int missing = 0;
+        StringBuilder list = new StringBuilder();
+        for (int id : moduleIds) {
+            if (java.util.Arrays.binarySearch(have, id) < 0) {
+                list.append(missing++ == 0 ? "" : ", ").append(id);
+            }
+        }
+        if (missing > 0) {
+            diags.warning(new SourcePos("--sim " + config.name(), 1, 1), "the simulated robot has no module "
+                    + list + " (it has " + have.length + " modules); commands to them are ignored");
+        }
+        return missing;
+    }
+}

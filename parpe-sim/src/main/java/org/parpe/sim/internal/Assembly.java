@@ -1,0 +1,250 @@
+package org.parpe.sim.internal;
+
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Deque;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import org.parpe.core.diag.DiagnosticSink;
+import org.parpe.sim.BodyShape;
+import org.parpe.sim.Mat3;
+import org.parpe.sim.Vec3;
+import org.parpe.sim.config.Connection;
+import org.parpe.sim.config.PartSpec;
+import org.parpe.sim.config.RobotConfig;
+
+/**
+ * A configuration put together: every piece placed in the world at the initial pose, pieces
+ * that are bolted together grouped into rigid clusters (one physics body each), and one hinge
+ * per segment between its two clusters. Built once per simulator; reports every problem it
+ * finds to a diagnostic sink.
+ */
+public final class Assembly {
+    /** Allowed gap between two plates that close a loop, m. */
+    private static final double LOOP_GAP = 0.003;
+    /** Allowed misalignment of two plates that close a loop, rad. */
+    private static final double LOOP_TWIST = Math.toRadians(3);
+    /** Height of the lowest point above the ground at the start, m. */
+    private static final double DROP = 0.0005;
+
+    /**
+     * One rigid piece placed in the world.
+     *
+     * @param part     the part it belongs to
+     * @param def      its geometry
+     * @param position centre, world
+     * @param rotation orientation, world
+     * @param cluster  the rigid cluster (physics body) it belongs to
+     */
+    public record PlacedPiece(PartSpec part, PartGeometry.Piece def, Vec3 position, Mat3 rotation, int cluster) {
+    }
+
+    /**
+     * One segment's hinge.
+     *
+     * @param moduleId    logical ID
+     * @param base        index of the servo-half piece
+     * @param arm         index of the turning-half piece
+     * @param anchor      a point on the axis, world
+     * @param axis        unit axis (the segment's z), world
+     * @param angle       initial joint angle, radians
+     * @param limp        whether the servo starts limp
+     */
+    public record Hinge(int moduleId, int base, int arm, Vec3 anchor, Vec3 axis, double angle, boolean limp) {
+    }
+
+    private final List<PlacedPiece> pieces;
+    private final List<Hinge> hinges;
+    private final int clusterCount;
+    private final int rootPiece;
+
+    private Assembly(List<PlacedPiece> pieces, List<Hinge> hinges, int clusterCount, int rootPiece) {
+        this.pieces = List.copyOf(pieces);
+        this.hinges = List.copyOf(hinges);
+        this.clusterCount = clusterCount;
+        this.rootPiece = rootPiece;
+    }
+
+    /** Pieces in configuration order (part by part, each part's pieces in order). */
+    public List<PlacedPiece> pieces() {
+        return pieces;
+    }
+
+    /** Hinges in ascending module ID. */
+    public List<Hinge> hinges() {
+        return hinges;
+    }
+
+    public int clusterCount() {
+        return clusterCount;
+    }
+
+    /** The first piece of the root part. */
+    public int rootPiece() {
+        return rootPiece;
+    }
+
+    /** Assembles {@code config}; returns {@code null} after reporting errors to {@code diags}. */
+    public static Assembly build(RobotConfig config, DiagnosticSink diags) {
+        ConfigCheck check = new ConfigCheck(config, diags);
+        if (!check.run()) {
+            return null;
+        }
+        Placement placement = new Placement(config, check.geometries(), diags);
+        if (!placement.run()) {
+            return null;
+        }
+        return assemble(config, check.geometries(), placement, diags);
+    }
+
+    private static Assembly assemble(RobotConfig config, List<PartGeometry> geos, Placement placement,
+                                     DiagnosticSink diags) {
+        List<PartSpec> parts = config.parts();
+        int[] first = new int[parts.size()];
+        int n = 0;
+        for (int i = 0; i < parts.size(); i++) {
+            first[i] = n;
+            n += geos.get(i).pieces().size();
+        }
+        UnionFind uf = new UnionFind(n);
+        Map<String, Integer> index = new HashMap<>();
+        for (int i = 0; i < parts.size(); i++) {
+            index.put(parts.get(i).name(), i);
+        }
+        for (Connection c : config.connections()) {
+            int a = index.get(c.from());
+            int b = index.get(c.to());
+            uf.union(first[a] + geos.get(a).plates().get(c.fromPlate()).piece(),
+                    first[b] + geos.get(b).plates().get(c.toPlate()).piece());
+        }
+        int[] cluster = uf.labels();
+        boolean ok = true;
+        for (int i = 0; i < parts.size(); i++) {
+            if (parts.get(i).isSegment() && cluster[first[i]] == cluster[first[i] + 1]) {
+                diags.error(parts.get(i).pos(), "segment '" + parts.get(i).name()
+                        + "' cannot turn: its two plates are rigidly connected to each other through other parts");
+                ok = false;
+            }
+        }
+        if (!ok) {
+            return null;
+        }
+        return place(parts, geos, placement, first, cluster);
+    }
+
+    private static Assembly place(List<PartSpec> parts, List<PartGeometry> geos, Placement placement,
+                                  int[] first, int[] cluster) {
+        List<PlacedPiece> placed = new ArrayList<>();
+        List<Hinge> hinges = new ArrayList<>();
+        for (int i = 0; i < parts.size(); i++) {
+            PartSpec part = parts.get(i);
+            Mat3 r = placement.rotation(i);
+            Vec3 p = placement.position(i);
+            double angle = Math.toRadians(part.angle());
+            for (PartGeometry.Piece piece : geos.get(i).pieces()) {
+                Mat3 pr = Geo.mul(r, PartGeometry.pieceRotation(piece, angle));
+                Vec3 centre = Geo.add(p, Geo.mul(pr, piece.centre()));
+                placed.add(new PlacedPiece(part, piece, centre, pr, cluster[placed.size()]));
+            }
+            if (part.isSegment()) {
+                hinges.add(new Hinge(part.moduleId(), first[i], first[i] + 1, p,
+                        Geo.mul(r, new Vec3(0, 0, 1)), angle, part.limp()));
+            }
+        }
+        hinges.sort((a, b) -> Integer.compare(a.moduleId(), b.moduleId()));
+        double lift = DROP - lowest(placed);
+        List<PlacedPiece> lifted = new ArrayList<>();
+        Vec3 up = new Vec3(0, 0, lift);
+        for (PlacedPiece pp : placed) {
+            lifted.add(new PlacedPiece(pp.part(), pp.def(), Geo.add(pp.position(), up), pp.rotation(), pp.cluster()));
+        }
+        List<Hinge> liftedHinges = new ArrayList<>();
+        for (Hinge h : hinges) {
+            liftedHinges.add(new Hinge(h.moduleId(), h.base(), h.arm(), Geo.add(h.anchor(), up), h.axis(),
+                    h.angle(), h.limp()));
+        }
+        int clusters = Arrays.stream(cluster).max().orElse(-1) + 1;
+        return new Assembly(lifted, liftedHinges, clusters, first[placement.rootIndex()]);
+    }
+
+    /** The lowest z of any piece. */
+    private static double lowest(List<PlacedPiece> placed) {
+        double min = Double.POSITIVE_INFINITY;
+        for (PlacedPiece pp : placed) {
+            min = Math.min(min, pp.position().z() - halfHeight(pp.def().shape(), pp.rotation()));
+        }
+        return min;
+    }
+
+    /** Half the vertical extent of a shape with the given orientation. */
+    public static double halfHeight(BodyShape shape, Mat3 r) {
+        if (shape instanceof BodyShape.Box b) {
+            return Math.abs(r.m20()) * b.hx() + Math.abs(r.m21()) * b.hy() + Math.abs(r.m22()) * b.hz();
+        }
+        if (shape instanceof BodyShape.Cylinder c) {
+            double az = Math.abs(r.m22());
+            return az * c.length() / 2 + c.radius() * Math.sqrt(Math.max(0, 1 - az * az));
+        }
+        return ((BodyShape.Sphere) shape).radius();
+    }
+
+    /** Disjoint sets over piece indices, labelled in order of first appearance. */
+    private static final class UnionFind {
+        private final int[] parent;
+
+        UnionFind(int n) {
+            parent = new int[n];
+            for (int i = 0; i < n; i++) {
+                parent[i] = i;
+            }
+        }
+
+        int find(int i) {
+            while (parent[i] != i) {
+                parent[i] = parent[parent[i]];
+                i = parent[i];
+            }
+            return i;
+        }
+
+        void union(int a, int b) {
+            int ra = find(a);
+            int rb = find(b);
+            if (ra != rb) {
+                parent[Math.max(ra, rb)] = Math.min(ra, rb);
+            }
+        }
+
+        int[] labels() {
+            int[] label = new int[parent.length];
+            int[] byRoot = new int[parent.length];
+            Arrays.fill(byRoot, -1);
+            int next = 0;
+            for (int i = 0; i < parent.length; i++) {
+                int r = find(i);
+                if (byRoot[r] < 0) {
+                    byRoot[r] = next++;
+                }
+                label[i] = byRoot[r];
+            }
+            return label;
+        }
+    }
+
+    /** Breadth-first order of parts from the root; used by {@link Placement}. */
+    static Deque<Integer> queueOf(int root) {
+        Deque<Integer> q = new ArrayDeque<>();
+        q.add(root);
+        return q;
+    }
+
+    static double loopGap() {
+        return LOOP_GAP;
+    }
+
+    static double loopTwist() {
+        return LOOP_TWIST;
+    }
+}

@@ -1,0 +1,329 @@
+package org.parpe.sim.internal;
+
+import java.util.List;
+import org.ode4j.math.DMatrix3;
+import org.ode4j.math.DMatrix3C;
+import org.ode4j.math.DVector3C;
+import org.ode4j.ode.DBody;
+import org.ode4j.ode.DGeom;
+import org.ode4j.ode.DHashSpace;
+import org.ode4j.ode.DHingeJoint;
+import org.ode4j.ode.DJointGroup;
+import org.ode4j.ode.DMass;
+import org.ode4j.ode.DSpace;
+import org.ode4j.ode.DWorld;
+import org.ode4j.ode.OdeHelper;
+import org.parpe.sim.BodyShape;
+import org.parpe.sim.Mat3;
+import org.parpe.sim.Vec3;
+
+/**
+ * The ODE4j world of one assembled robot on a flat floor: one body per rigid cluster, one
+ * geom per piece, one servo-driven hinge per segment. {@link #advance} runs a tick as equal
+ * fixed sub-steps, so identical inputs give identical results. Not thread-safe: the engine
+ * thread owns it.
+ */
+public final class PhysicsWorld implements AutoCloseable {
+    private static final double GRAVITY = 9.81;
+
+    static {
+        OdeHelper.initODE2(0);
+    }
+
+    private final Assembly assembly;
+    private final PhysicsParams params;
+    private final DWorld world;
+    private final DSpace space;
+    private final DJointGroup contactGroup;
+    private final DBody[] bodies;
+    private final DGeom[] geoms;
+    private final DHingeJoint[] hinges;
+    private final double[] offset;
+    private final double[] target;
+    private final boolean[] limp;
+    private final Contacts contacts;
+    private final double totalMass;
+    private double time;
+
+    /** Builds the world for {@code assembly}. */
+    public PhysicsWorld(Assembly assembly, PhysicsParams params) {
+        this.assembly = assembly;
+        this.params = params;
+        world = OdeHelper.createWorld();
+        world.setGravity(0, 0, -GRAVITY);
+        world.setERP(0.2);
+        world.setCFM(1e-5);
+        world.setQuickStepNumIterations(params.iterations());
+        world.setContactMaxCorrectingVel(0.2);
+        world.setContactSurfaceLayer(0.0005);
+        world.setAutoDisableFlag(false);
+        DHashSpace hash = OdeHelper.createHashSpace();
+        hash.setLevels(-6, 1);
+        space = hash;
+        contactGroup = OdeHelper.createJointGroup();
+        OdeHelper.createPlane(space, 0, 0, 1, 0);
+        bodies = new DBody[assembly.clusterCount()];
+        geoms = new DGeom[assembly.pieces().size()];
+        double mass = 0;
+        for (int c = 0; c < bodies.length; c++) {
+            mass += createBody(c);
+        }
+        totalMass = mass;
+        int n = assembly.hinges().size();
+        hinges = new DHingeJoint[n];
+        offset = new double[n];
+        target = new double[n];
+        limp = new boolean[n];
+        for (int h = 0; h < n; h++) {
+            createHinge(h, assembly.hinges().get(h));
+        }
+        contacts = new Contacts(world, contactGroup, params, assembly);
+    }
+
+    private double createBody(int cluster) {
+        List<Assembly.PlacedPiece> pieces = assembly.pieces();
+        DMass total = OdeHelper.createMass();
+        total.setZero();
+        for (Assembly.PlacedPiece p : pieces) {
+            if (p.cluster() == cluster) {
+                DMass m = OdeHelper.createMass();
+                if (p.def().shape() instanceof BodyShape.Box b) {
+                    m.setBoxTotal(p.def().mass(), 2 * b.hx(), 2 * b.hy(), 2 * b.hz());
+                } else if (p.def().shape() instanceof BodyShape.Cylinder cy) {
+                    m.setCylinderTotal(p.def().mass(), 3, cy.radius(), cy.length());
+                } else {
+                    m.setSphereTotal(p.def().mass(), ((BodyShape.Sphere) p.def().shape()).radius());
+                }
+                m.rotate(toOde(p.rotation()));
+                m.translate(p.position().x(), p.position().y(), p.position().z());
+                total.add(m);
+            }
+        }
+        DVector3C c = total.getC();
+        double cx = c.get0();
+        double cy = c.get1();
+        double cz = c.get2();
+        total.translate(-cx, -cy, -cz);
+        DBody body = OdeHelper.createBody(world);
+        body.setPosition(cx, cy, cz);
+        body.setMass(total);
+        bodies[cluster] = body;
+        for (int i = 0; i < pieces.size(); i++) {
+            Assembly.PlacedPiece p = pieces.get(i);
+            if (p.cluster() == cluster) {
+                DGeom g = createGeom(p.def().shape());
+                g.setData(Integer.valueOf(i));
+                g.setBody(body);
+                g.setOffsetWorldPosition(p.position().x(), p.position().y(), p.position().z());
+                g.setOffsetWorldRotation(toOde(p.rotation()));
+                geoms[i] = g;
+            }
+        }
+        return total.getMass();
+    }
+
+    private DGeom createGeom(BodyShape shape) {
+        if (shape instanceof BodyShape.Box b) {
+            return OdeHelper.createBox(space, 2 * b.hx(), 2 * b.hy(), 2 * b.hz());
+        }
+        if (shape instanceof BodyShape.Cylinder c) {
+            return OdeHelper.createCylinder(space, c.radius(), c.length());
+        }
+        return OdeHelper.createSphere(space, ((BodyShape.Sphere) shape).radius());
+    }
+
+    private void createHinge(int h, Assembly.Hinge def) {
+        DHingeJoint j = OdeHelper.createHingeJoint(world);
+        // ODE measures the hinge angle as body 1 turning relative to body 2: the arm goes first so
+        // that a positive angle turns the arm about +z of the base (PARSL.md §10 body frame).
+        j.attach(bodies[assembly.pieces().get(def.arm()).cluster()], bodies[assembly.pieces().get(def.base()).cluster()]);
+        j.setAnchor(def.anchor().x(), def.anchor().y(), def.anchor().z());
+        j.setAxis(def.axis().x(), def.axis().y(), def.axis().z());
+        offset[h] = def.angle();
+        target[h] = def.angle();
+        limp[h] = def.limp();
+        j.setParamLoStop(-G1.JOINT_RANGE - def.angle());
+        j.setParamHiStop(G1.JOINT_RANGE - def.angle());
+        hinges[h] = j;
+    }
+
+    private static DMatrix3 toOde(Mat3 m) {
+        return new DMatrix3(m.m00(), m.m01(), m.m02(), m.m10(), m.m11(), m.m12(), m.m20(), m.m21(), m.m22());
+    }
+
+    /** Sets the angle hinge {@code h} drives to, radians (clamped to the joint range). */
+    public void setTarget(int h, double radians) {
+        target[h] = Math.max(-G1.JOINT_RANGE, Math.min(G1.JOINT_RANGE, radians));
+    }
+
+    /** The angle hinge {@code h} drives to, radians. */
+    public double target(int h) {
+        return target[h];
+    }
+
+    /** Makes hinge {@code h} limp (back-drivable) or holding. */
+    public void setLimp(int h, boolean value) {
+        limp[h] = value;
+    }
+
+    public boolean limp(int h) {
+        return limp[h];
+    }
+
+    /** Advances by {@code dt} seconds in equal sub-steps; touch flags cover the whole interval. */
+    public void advance(double dt) {
+        int steps = Math.max(1, (int) Math.ceil(dt / params.maxSubstep() - 1e-9));
+        double h = dt / steps;
+        java.util.Arrays.fill(contacts.touch, 0);
+        for (int s = 0; s < steps; s++) {
+            driveServos();
+            contacts.clearKept();
+            space.collide(null, contacts);
+            world.quickStep(h);
+            contactGroup.empty();
+        }
+        time += dt;
+    }
+
+    /** Position loop of a hobby servo: speed proportional to the error, capped in speed and torque. */
+    private void driveServos() {
+        for (int h = 0; h < hinges.length; h++) {
+            DHingeJoint j = hinges[h];
+            if (limp[h]) {
+                j.setParamVel(0);
+                j.setParamFMax(G1.LIMP_TORQUE);
+            } else {
+                double err = target[h] - angle(h);
+                double vel = Math.max(-G1.SERVO_SPEED, Math.min(G1.SERVO_SPEED, G1.SERVO_GAIN * err));
+                j.setParamVel(vel);
+                j.setParamFMax(G1.SERVO_TORQUE);
+            }
+        }
+    }
+
+    /** Simulated time, s. */
+    public double time() {
+        return time;
+    }
+
+    /** Measured angle of hinge {@code h}, radians. */
+    public double angle(int h) {
+        return hinges[h].getAngle() + offset[h];
+    }
+
+    /** Touch bits of hinge {@code h} over the last tick: 1 left (+y), 2 right (−y). */
+    public int touch(int h) {
+        return contacts.touch[h];
+    }
+
+    /** Number of hinges (segments), in ascending module ID. */
+    public int hingeCount() {
+        return hinges.length;
+    }
+
+    public Assembly assembly() {
+        return assembly;
+    }
+
+    public int pieceCount() {
+        return geoms.length;
+    }
+
+    /** World position of piece {@code i}; the returned view changes as the world moves. */
+    public DVector3C piecePosition(int i) {
+        return geoms[i].getPosition();
+    }
+
+    /** World rotation of piece {@code i}; the returned view changes as the world moves. */
+    public DMatrix3C pieceRotation(int i) {
+        return geoms[i].getRotation();
+    }
+
+    /** Writes the centre of mass into {@code out[0..2]}. */
+    public void centerOfMass(double[] out) {
+        double x = 0;
+        double y = 0;
+        double z = 0;
+        for (DBody b : bodies) {
+            double m = b.getMass().getMass();
+            DVector3C p = b.getPosition();
+            x += m * p.get0();
+            y += m * p.get1();
+            z += m * p.get2();
+        }
+        out[0] = x / totalMass;
+        out[1] = y / totalMass;
+        out[2] = z / totalMass;
+    }
+
+    /** Total mass, kg. */
+    public double totalMass() {
+        return totalMass;
+    }
+
+    /** Number of bodies (rigid clusters). */
+    public int bodyCount() {
+        return bodies.length;
+    }
+
+    /** Contact points of the last sub-step (see {@link Contacts}). */
+    Contacts contacts() {
+        return contacts;
+    }
+
+    /** Kinetic plus potential energy of the robot, J (for tests). */
+    public double energy() {
+        double e = 0;
+        for (DBody b : bodies) {
+            double m = b.getMass().getMass();
+            DVector3C v = b.getLinearVel();
+            DVector3C w = b.getAngularVel();
+            DMatrix3C r = b.getRotation();
+            DMatrix3C inertia = b.getMass().getI();
+            e += 0.5 * m * (v.get0() * v.get0() + v.get1() * v.get1() + v.get2() * v.get2());
+            e += 0.5 * rotationalEnergyTwice(r, inertia, w);
+            e += m * GRAVITY * b.getPosition().get2();
+        }
+        return e;
+    }
+
+    /** {@code ωᵀ R I Rᵀ ω} with ω in world coordinates. */
+    private static double rotationalEnergyTwice(DMatrix3C r, DMatrix3C inertia, DVector3C w) {
+        double[] local = new double[3];
+        for (int i = 0; i < 3; i++) {
+            local[i] = r.get(0, i) * w.get0() + r.get(1, i) * w.get1() + r.get(2, i) * w.get2();
+        }
+        double s = 0;
+        for (int i = 0; i < 3; i++) {
+            for (int j = 0; j < 3; j++) {
+                s += local[i] * inertia.get(i, j) * local[j];
+            }
+        }
+        return s;
+    }
+
+    /** Whether any body's position or velocity is not finite. */
+    public boolean hasNaN() {
+        for (DBody b : bodies) {
+            DVector3C p = b.getPosition();
+            DVector3C v = b.getLinearVel();
+            if (!Double.isFinite(p.get0() + p.get1() + p.get2() + v.get0() + v.get1() + v.get2())) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** World position of a piece as a record (setup and tests). */
+    public Vec3 pieceCentre(int i) {
+        DVector3C p = geoms[i].getPosition();
+        return new Vec3(p.get0(), p.get1(), p.get2());
+    }
+
+    @Override
+    public void close() {
+        contactGroup.destroy();
+        space.destroy();
+        world.destroy();
+    }
+}

@@ -1,0 +1,131 @@
+package org.parpe.sim.internal;
+
+import java.util.Deque;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import org.parpe.core.diag.DiagnosticSink;
+import org.parpe.sim.Mat3;
+import org.parpe.sim.Vec3;
+import org.parpe.sim.config.Connection;
+import org.parpe.sim.config.PartSpec;
+import org.parpe.sim.config.RobotConfig;
+import org.parpe.sim.config.RootPose;
+
+/**
+ * Places every part of a configuration in the world at its initial joint angles, breadth first
+ * from the root part along the connections. A connection between two parts already placed
+ * closes a loop and must fit (plates together within 3 mm and 3°).
+ */
+final class Placement {
+    private final RobotConfig config;
+    private final List<PartGeometry> geos;
+    private final DiagnosticSink diags;
+    private final Map<String, Integer> index = new HashMap<>();
+    private final Mat3[] rotation;
+    private final Vec3[] position;
+    private int rootIndex;
+
+    Placement(RobotConfig config, List<PartGeometry> geos, DiagnosticSink diags) {
+        this.config = config;
+        this.geos = geos;
+        this.diags = diags;
+        for (int i = 0; i < config.parts().size(); i++) {
+            index.put(config.parts().get(i).name(), i);
+        }
+        rotation = new Mat3[config.parts().size()];
+        position = new Vec3[config.parts().size()];
+    }
+
+    Mat3 rotation(int part) {
+        return rotation[part];
+    }
+
+    Vec3 position(int part) {
+        return position[part];
+    }
+
+    int rootIndex() {
+        return rootIndex;
+    }
+
+    boolean run() {
+        RootPose root = config.root();
+        rootIndex = index.get(root.part());
+        rotation[rootIndex] = Geo.clean(Geo.rollPitchYaw(root.roll(), root.pitch(), root.yaw()));
+        position[rootIndex] = new Vec3(root.x(), root.y(), 0);
+        boolean ok = true;
+        Deque<Integer> queue = Assembly.queueOf(rootIndex);
+        boolean[] done = new boolean[config.parts().size()];
+        while (!queue.isEmpty()) {
+            int part = queue.poll();
+            if (done[part]) {
+                continue;
+            }
+            done[part] = true;
+            for (Connection c : config.connections()) {
+                int a = index.get(c.from());
+                int b = index.get(c.to());
+                if (a == part && !done[b]) {
+                    ok &= attach(c, a, c.fromPlate(), b, c.toPlate(), queue);
+                } else if (b == part && !done[a]) {
+                    ok &= attach(c, b, c.toPlate(), a, c.fromPlate(), queue);
+                }
+            }
+        }
+        for (int i = 0; i < done.length; i++) {
+            if (!done[i]) {
+                PartSpec p = config.parts().get(i);
+                diags.error(p.pos(), "part '" + p.name() + "' is not connected to the root part '" + root.part() + "'");
+                ok = false;
+            }
+        }
+        return ok;
+    }
+
+    /** Places part {@code b} against plate {@code pa} of placed part {@code a}, or checks the fit. */
+    private boolean attach(Connection c, int a, int pa, int b, int pb, Deque<Integer> queue) {
+        Frame plateA = plateFrame(a, pa, rotation[a], position[a]);
+        PartGeometry.Plate local = localPlate(b, pb);
+        Vec3 up = Geo.mul(Geo.axisAngle(plateA.normal, c.quarterTurns() * Math.PI / 2), plateA.up);
+        Vec3 n = Geo.scale(plateA.normal, -1);
+        Mat3 target = Geo.columns(n, up, Geo.cross(n, up));
+        Mat3 localFrame = Geo.columns(local.normal(), local.up(), Geo.cross(local.normal(), local.up()));
+        Mat3 r = Geo.clean(Geo.mul(target, Geo.transpose(localFrame)));
+        Vec3 p = Geo.sub(plateA.centre, Geo.mul(r, local.centre()));
+        if (rotation[b] == null) {
+            rotation[b] = r;
+            position[b] = p;
+            queue.add(b);
+            return true;
+        }
+        double gap = Geo.sub(p, position[b]).length();
+        double twist = Geo.angleBetween(r, rotation[b]);
+        if (gap > Assembly.loopGap() || twist > Assembly.loopTwist()) {
+            diags.error(c.pos(), String.format(java.util.Locale.ROOT,
+                    "connection %s.%d -> %s.%d closes a loop but does not fit: the plates are %.1f mm and %.1f"
+                            + " degrees apart (at most %.0f mm and %.0f degrees); check the initial angles",
+                    c.from(), c.fromPlate(), c.to(), c.toPlate(), gap * 1000, Math.toDegrees(twist),
+                    Assembly.loopGap() * 1000, Math.toDegrees(Assembly.loopTwist())));
+            return false;
+        }
+        return true;
+    }
+
+    /** A plate of a part in the part frame, at the part's initial joint angle. */
+    private PartGeometry.Plate localPlate(int part, int plate) {
+        PartGeometry.Plate p = geos.get(part).plates().get(plate);
+        PartGeometry.Piece piece = geos.get(part).pieces().get(p.piece());
+        Mat3 turn = PartGeometry.pieceRotation(piece, Math.toRadians(config.parts().get(part).angle()));
+        return new PartGeometry.Plate(p.piece(), Geo.mul(turn, p.centre()), Geo.mul(turn, p.normal()),
+                Geo.mul(turn, p.up()));
+    }
+
+    private Frame plateFrame(int part, int plate, Mat3 r, Vec3 p) {
+        PartGeometry.Plate local = localPlate(part, plate);
+        return new Frame(Geo.add(p, Geo.mul(r, local.centre())), Geo.mul(r, local.normal()), Geo.mul(r, local.up()));
+    }
+
+    private record Frame(Vec3 centre, Vec3 normal, Vec3 up) {
+    }
+}
