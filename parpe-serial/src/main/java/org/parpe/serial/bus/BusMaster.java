@@ -68,6 +68,13 @@ public final class BusMaster implements AutoCloseable {
         }
     }
 
+    /** Sends HOLD to {@code addr}: at the current angle, or finishing the move to the last setpoint. */
+    public void sendHold(int addr, boolean keepTarget) throws IOException {
+        synchronized (writeLock) {
+            write(tx.begin(addr, Protocol.HOLD).putU8(keepTarget ? Protocol.HOLD_TARGET : Protocol.HOLD_HERE).finish());
+        }
+    }
+
     /** Broadcasts setpoints for modules {@code first … first+count−1} (wire units). */
     public void sendSetpoints(int seq, int first, short[] wire, int count) throws IOException {
         synchronized (writeLock) {

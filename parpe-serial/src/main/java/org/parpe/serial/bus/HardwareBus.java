@@ -48,6 +48,7 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
     private long readsRetried;
     private long readFailures;
     private long disconnects;
+    private long watchdogResumes;
     private int moduleRxErrors;
 
     private HardwareBus(LinkOpener opener, BusMaster master, BusConfig config, Consumer<String> report) {
@@ -141,18 +142,24 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
         return buffers.measuredAngle(index);
     }
 
-    /** Sends the last setpoints, then tells every module to hold (watchdogs off), and reports. */
+    /**
+     * Sends the last setpoints, then tells every module to finish its move and hold (watchdogs
+     * off), and reports the counters.
+     */
     @Override
     public void finish(RunOutcome outcome) {
         stopThread();
         BusMaster m = master;
         if (state == State.CONNECTED && m.linkError() == null) {
             try {
+                // Three times: these frames get no reply, and a lost final HOLD would let the watchdogs trip.
                 int seq = buffers.take(wire, first, true);
-                if (seq >= 0) {
-                    m.sendSetpoints(seq, first, wire, wire.length);
+                for (int i = 0; i < 3; i++) {
+                    if (seq >= 0) {
+                        m.sendSetpoints(seq, first, wire, wire.length);
+                    }
+                    m.sendHold(Protocol.BROADCAST, true);
                 }
-                m.send(Protocol.BROADCAST, Protocol.HOLD);
             } catch (IOException e) {
                 report.accept("bus: could not send the final hold: " + e.getMessage());
             }
@@ -183,8 +190,9 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
         BusMaster.Counters c = master.counters();
         return String.format(java.util.Locale.ROOT, "bus %s: %d frames sent, %d reads (%d timeouts, %d retried ok, "
                 + "%d failed), %d bad checksums received, modules rejected %d frames, %d setpoints clamped, "
-                + "%d disconnects", master.name(), c.framesSent(), reads, c.timeouts(), readsRetried, readFailures,
-                c.checksumErrors(), moduleRxErrors, buffers == null ? 0 : buffers.clamps(), disconnects);
+                + "%d watchdog stops, %d disconnects", master.name(), c.framesSent(), reads, c.timeouts(), readsRetried,
+                readFailures, c.checksumErrors(), moduleRxErrors, buffers == null ? 0 : buffers.clamps(),
+                watchdogResumes, disconnects);
     }
 
     /** Stops the bus thread and closes the device. */
@@ -262,6 +270,12 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
             readsRetried += readAttempt > 0 ? 1 : 0;
             buffers.store(readCursor, reply, true);
             moduleRxErrors = Math.max(moduleRxErrors, reply.rxErrors);
+            if ((reply.flags & Protocol.FLAG_WATCHDOG) != 0) {
+                watchdogResumes++;
+                report.accept("bus: module " + id + " had stopped on its watchdog (a gap of more than "
+                        + config.watchdogMs() + " ms in the bus traffic); resuming it");
+                master.send(id, Protocol.RESUME);
+            }
         } else if (++readAttempt <= config.retries()) {
             return true;
         } else {

@@ -258,7 +258,7 @@ public final class BusEmulator implements AutoCloseable {
             switch (cmd) {
                 case Protocol.SETPOINTS -> setpoints(addr, buf, off, len);
                 case Protocol.LIMP -> forEach(target, m -> m.safe(Protocol.SAFE_LIMP));
-                case Protocol.HOLD -> forEach(target, m -> m.safe(Protocol.SAFE_HOLD));
+                case Protocol.HOLD -> forEach(target, m -> m.hold(len > 0 && buf[off] == Protocol.HOLD_TARGET));
                 case Protocol.ESTOP -> estop(target, len > 0 ? buf[off] : Protocol.SAFE_LIMP);
                 case Protocol.RESUME -> forEach(target, m -> {
                     m.estop = false;

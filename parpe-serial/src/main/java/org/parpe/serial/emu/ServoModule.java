@@ -51,6 +51,15 @@ final class ServoModule {
         }
     }
 
+    /** Holds with the servo on, at the current angle or at the last setpoint; disarms the watchdog. */
+    void hold(boolean keepTarget) {
+        watchdogArmed = false;
+        if (!keepTarget || limp) {
+            target = angle;
+        }
+        limp = false;
+    }
+
     int flags() {
         return (limp ? Protocol.FLAG_LIMP : 0) | (estop ? Protocol.FLAG_ESTOP : 0)
                 | (watchdogTripped ? Protocol.FLAG_WATCHDOG : 0);

@@ -62,7 +62,7 @@ public final class PtyPair implements AutoCloseable {
         Files.deleteIfExists(a);
         Files.deleteIfExists(b);
         try {
-            socat = new ProcessBuilder("socat", "-d0", "pty,raw,echo=0,link=" + a, "pty,raw,echo=0,link=" + b)
+            socat = new ProcessBuilder("socat", "pty,raw,echo=0,link=" + a, "pty,raw,echo=0,link=" + b)
                     .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
         } catch (IOException e) {
             throw new IOException("cannot run socat (install it: apt-get install socat): " + e.getMessage(), e);

@@ -36,7 +36,10 @@ public final class Protocol {
     public static final int READ = 0x03;
     /** Turn the servo off so the joint can be back-driven; disarms the watchdog. */
     public static final int LIMP = 0x04;
-    /** Hold the current measured angle with the servo on; disarms the watchdog. */
+    /**
+     * Hold with the servo on and disarm the watchdog: {@code mode:u8} optional, 0 (default) stops
+     * at the current angle, 1 finishes the move to the last setpoint.
+     */
     public static final int HOLD = 0x05;
     /** Emergency stop, latched until {@link #RESUME}: {@code mode:u8} (0 hold, 1 limp). */
     public static final int ESTOP = 0x06;
@@ -69,6 +72,10 @@ public final class Protocol {
     public static final int SAFE_HOLD = 0;
     /** Safe mode: servo off. */
     public static final int SAFE_LIMP = 1;
+    /** HOLD payload: stop at the current angle. */
+    public static final int HOLD_HERE = 0;
+    /** HOLD payload: finish the move to the last setpoint. */
+    public static final int HOLD_TARGET = 1;
 
     /** The joint range, degrees either side of zero; no frame ever carries more. */
     public static final double JOINT_LIMIT_DEG = 90.0;
@@ -95,7 +102,8 @@ public final class Protocol {
      * rounded half away from zero.
      */
     public static short toWire(double degrees) {
-        return (short) Math.round(degrees * WIRE_UNITS_PER_DEG);
+        long w = Math.round(Math.abs(degrees) * WIRE_UNITS_PER_DEG);
+        return (short) (degrees < 0 ? -w : w);
     }
 
     /** Degrees of a wire angle. */

@@ -1,0 +1,262 @@
+package org.parpe.serial.bus;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+import org.parpe.core.run.RunInfo;
+import org.parpe.core.run.RunOutcome;
+import org.parpe.serial.emu.BusEmulator;
+import org.parpe.serial.emu.EmulatorListener;
+import org.parpe.serial.emu.EmulatorOptions;
+import org.parpe.serial.link.LinkOpener;
+import org.parpe.serial.link.PtyPair;
+
+/**
+ * The driver against the emulator over a real pty pair made by socat: the bytes cross the
+ * kernel's tty layer as they would with a USB adapter.
+ */
+@Timeout(value = 60, unit = TimeUnit.SECONDS)
+class BusOverPtyTest {
+    static final int[] IDS = {0, 1, 2, 3, 4, 5, 6, 7};
+
+    @TempDir
+    Path dir;
+    PtyPair pty;
+    BusEmulator emulator;
+    HardwareBus bus;
+    final Map<Integer, double[]> received = new ConcurrentHashMap<>();
+    final List<String> emulatorEvents = new CopyOnWriteArrayList<>();
+    final List<long[]> safeStops = new CopyOnWriteArrayList<>();
+    final List<String> reports = new CopyOnWriteArrayList<>();
+    final List<Long> reportTimes = new CopyOnWriteArrayList<>();
+    volatile long unplugNanos;
+
+    @BeforeAll
+    static void needSocat() {
+        assumeTrue(PtyPair.available(), "socat is not installed (./test-all installs it)");
+    }
+
+    @BeforeEach
+    void pair() throws Exception {
+        pty = PtyPair.start(dir.resolve("a"), dir.resolve("b"));
+    }
+
+    @AfterEach
+    void cleanUp() {
+        if (bus != null) {
+            bus.close();
+        }
+        if (emulator != null) {
+            emulator.close();
+        }
+        if (pty != null) {
+            pty.close();
+        }
+    }
+
+    void startEmulator(EmulatorOptions o) throws Exception {
+        emulator = BusEmulator.start(LinkOpener.serial(pty.b().toString(), 115200), o, new EmulatorListener() {
+            @Override
+            public void onSetpoints(int seq, double[] angles) {
+                received.put(seq, angles.clone());
+            }
+
+            @Override
+            public void onSafeStop(int id, long nanoTime, String why) {
+                safeStops.add(new long[] {id, nanoTime});
+            }
+
+            @Override
+            public void onEvent(String message) {
+                if (message.contains("unplugged")) {
+                    unplugNanos = System.nanoTime();
+                }
+                emulatorEvents.add(message);
+            }
+        });
+    }
+
+    Discovery startBus(int[] ids) throws Exception {
+        bus = HardwareBus.open(LinkOpener.serial(pty.a().toString(), 115200), BusConfig.defaults(), m -> {
+            reportTimes.add(System.nanoTime());
+            reports.add(m);
+        });
+        Discovery d = bus.discover(ids);
+        bus.start(new RunInfo(null, ids, 0.01));
+        return d;
+    }
+
+    static double angle(int tick, int module) {
+        return 60 * Math.sin(tick * 0.05 + module * 0.4);
+    }
+
+    /** Feeds {@code ticks} ticks paced at 5 ms; returns the commanded rows. */
+    double[][] drive(int ticks, int modules) throws InterruptedException {
+        double[][] rows = new double[ticks][modules];
+        for (int k = 0; k < ticks; k++) {
+            for (int m = 0; m < modules; m++) {
+                rows[k][m] = angle(k, m);
+            }
+            bus.accept(k, k * 0.01, rows[k]);
+            Thread.sleep(5);
+        }
+        return rows;
+    }
+
+    void assertReceivedMatch(double[][] rows, int modules, boolean lossless) {
+        int matched = 0;
+        for (Map.Entry<Integer, double[]> e : received.entrySet()) {
+            double[] got = e.getValue();
+            for (int m = 0; m < modules; m++) {
+                assertEquals(rows[e.getKey()][m], got[m], 0.005 + 1e-9, "tick " + e.getKey() + " module " + m);
+            }
+            matched++;
+        }
+        // The bus sends the newest setpoints; ticks that came while it was busy are skipped.
+        assertTrue(matched > rows.length / 5, "only " + matched + " of " + rows.length + " ticks reached the modules");
+        assertTrue(!lossless || received.containsKey(rows.length - 1), "the final setpoints reached the modules");
+    }
+
+    @Test
+    void discoveryReportsMissingModulesAndSetpointsArriveAsSent() throws Exception {
+        startEmulator(EmulatorOptions.of(IDS));
+        Discovery d = startBus(new int[] {0, 1, 2, 3, 4, 5, 6, 7, 9, 300});
+        assertEquals(List.of(9), d.missing());
+        assertEquals(List.of(300), d.unaddressable());
+        assertEquals(8, d.found().size());
+        double[][] rows = drive(200, 10);
+        bus.finish(new RunOutcome(RunOutcome.Status.COMPLETED, 2, ""));
+        assertReceivedMatch(rows, 8, true);
+        Thread.sleep(600);
+        for (int id : IDS) {
+            assertFalse(emulator.isSafeStopped(id), "after a clean finish module " + id + " holds, watchdog disarmed");
+            assertEquals(rows[199][id], emulator.angle(id), 0.01);
+        }
+        assertTrue(reports.get(reports.size() - 1).contains("0 failed"), reports.toString());
+    }
+
+    @Test
+    void outOfRangeSetpointsAreClampedWithOneWarning() throws Exception {
+        startEmulator(EmulatorOptions.of(0, 1));
+        startBus(new int[] {0, 1});
+        for (int k = 0; k < 20; k++) {
+            bus.accept(k, k * 0.01, new double[] {120, -95.5});
+            Thread.sleep(5);
+        }
+        bus.finish(new RunOutcome(RunOutcome.Status.COMPLETED, 0.2, ""));
+        assertFalse(received.isEmpty());
+        for (double[] got : received.values()) {
+            assertEquals(90, got[0], 1e-9);
+            assertEquals(-90, got[1], 1e-9);
+        }
+        assertEquals(2, reports.stream().filter(r -> r.contains("outside the joint range")).count(), reports.toString());
+        assertTrue(reports.get(reports.size() - 1).contains("40 setpoints clamped"), reports.toString());
+    }
+
+    @Test
+    void withDropsCorruptionAndLatencyTheRunCompletesAndCountsTheFaults() throws Exception {
+        startEmulator(EmulatorOptions.of(IDS).withFaults(0.05, 0.05, 2));
+        startBus(IDS);
+        double[][] rows = drive(300, 8);
+        bus.finish(new RunOutcome(RunOutcome.Status.COMPLETED, 3, ""));
+        assertReceivedMatch(rows, 8, false);
+        BusEmulator.Stats s = emulator.stats();
+        assertTrue(s.dropped() > 0 && s.corrupted() > 0, s.toString());
+        String summary = reports.get(reports.size() - 1);
+        assertTrue(summary.matches(".*\\(([1-9]\\d*) timeouts.*"), summary);
+        assertTrue(summary.matches(".*, ([1-9]\\d*) bad checksums received.*"), summary);
+        assertTrue(summary.matches(".*modules rejected ([1-9]\\d*) frames.*"), summary);
+    }
+
+    /*
+     * The safety bound: modules must stop within 100 ms of losing the host. Nominally they stop
+     * after the 50 ms watchdog plus one 2 ms emulator step, and the host reports after 50 ms of
+     * silence plus at most one 20 ms read timeout; the other ~30 ms are margin for a loaded CI
+     * machine.
+     */
+    @Test
+    void pulledCableStopsTheModulesWithinTheBoundAndTheHostSaysSo() throws Exception {
+        startEmulator(EmulatorOptions.of(IDS).withUnplug(0.6, -1));
+        startBus(IDS);
+        drive(150, 8);
+        assertTrue(unplugNanos != 0, "the emulator unplugged: " + emulatorEvents);
+        // A stop before the unplug (a load spike longer than the watchdog) is resumed by the host.
+        safeStops.removeIf(s -> s[1] < unplugNanos);
+        assertEquals(IDS.length, safeStops.size(), () -> "every module stopped once: " + describeStops(unplugNanos)
+                + reports + emulatorEvents);
+        for (long[] s : safeStops) {
+            double ms = (s[1] - unplugNanos) / 1e6;
+            assertTrue(ms > 0 && ms < 100, "module " + s[0] + " stopped " + ms + " ms after the unplug");
+            assertTrue(emulator.isSafeStopped((int) s[0]));
+        }
+        int i = indexOf("no reply from any module");
+        assertTrue(i >= 0, reports.toString());
+        double ms = (reportTimes.get(i) - unplugNanos) / 1e6;
+        assertTrue(ms < 100, "host reported " + ms + " ms after the unplug");
+    }
+
+    @Test
+    void vanishedDeviceIsReportedAndTheBusReconnectsWhenItReturns() throws Exception {
+        startEmulator(EmulatorOptions.of(IDS));
+        startBus(IDS);
+        drive(50, 8);
+        long out = System.nanoTime();
+        pty.unplug();
+        drive(30, 8);
+        int i = indexOf("went away");
+        assertTrue(i >= 0, reports.toString());
+        assertTrue((reportTimes.get(i) - out) / 1e6 < 100, "reported after " + (reportTimes.get(i) - out) / 1e6 + " ms");
+        safeStops.removeIf(s -> s[1] < out);
+        for (long[] s : safeStops) {
+            assertTrue((s[1] - out) / 1e6 < 100, "module stopped " + (s[1] - out) / 1e6 + " ms after the device went");
+        }
+        assertEquals(IDS.length, safeStops.size(), () -> describeStops(out));
+        pty.restart();
+        received.clear();
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        int k = 80;
+        while (indexOf("modules back") < 0 && System.nanoTime() < deadline) {
+            bus.accept(k++, 0, new double[8]);
+            Thread.sleep(5);
+        }
+        assertTrue(indexOf("modules back") >= 0, reports.toString() + emulatorEvents);
+        double[][] rows = drive(60, 8);
+        bus.finish(new RunOutcome(RunOutcome.Status.COMPLETED, 0.6, ""));
+        assertFalse(received.isEmpty(), "setpoints flow again after reconnecting");
+        for (int id : IDS) {
+            assertFalse(emulator.isSafeStopped(id), "module " + id + " resumed");
+        }
+        assertEquals(rows[59][3], received.get(59)[3], 0.005);
+    }
+
+    String describeStops(long from) {
+        StringBuilder b = new StringBuilder();
+        for (long[] s : safeStops) {
+            b.append(String.format("%d@%.1fms ", s[0], (s[1] - from) / 1e6));
+        }
+        return b.toString();
+    }
+
+    int indexOf(String text) {
+        for (int i = 0; i < reports.size(); i++) {
+            if (reports.get(i).contains(text)) {
+                return i;
+            }
+        }
+        return -1;
+    }
+}
