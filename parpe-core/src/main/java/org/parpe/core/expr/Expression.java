@@ -12,17 +12,19 @@ public final class Expression {
     private final String text;
     private final SourcePos pos;
     private final Node root;
+    private final boolean perModule;
 
-    /** Wraps a compiled tree. */
-    public Expression(String text, SourcePos pos, Node root) {
+    /** Wraps a compiled tree; {@code perModule} if it reads the current module's variables or sensors. */
+    public Expression(String text, SourcePos pos, Node root, boolean perModule) {
         this.text = text;
         this.pos = pos;
         this.root = root;
+        this.perModule = perModule;
     }
 
     /** A constant expression (used for defaults). */
     public static Expression constant(double value, String text) {
-        return new Expression(text, SourcePos.NONE, new Nodes.Const(value));
+        return new Expression(text, SourcePos.NONE, new Nodes.Const(value), false);
     }
 
     /** The expression as written in the script (after XML decoding). */
@@ -47,6 +49,11 @@ public final class Expression {
     /** Whether the value does not depend on anything that changes during a run. */
     public boolean isConstant() {
         return root instanceof Nodes.Const;
+    }
+
+    /** Whether the value depends on the current module ($index, $id, $phase, $cycle, local sensors). */
+    public boolean perModule() {
+        return perModule;
     }
 
     /** The compiled tree. */

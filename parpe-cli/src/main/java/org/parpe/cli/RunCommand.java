@@ -1,0 +1,173 @@
+package org.parpe.cli;
+
+import java.io.BufferedWriter;
+import java.io.IOException;
+import java.io.OutputStreamWriter;
+import java.io.PrintStream;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import org.parpe.cli.hw.HardwareOptions;
+import org.parpe.cli.sim.SimOptions;
+import org.parpe.core.diag.Diagnostic;
+import org.parpe.core.load.LoadResult;
+import org.parpe.core.load.ScriptLoader;
+import org.parpe.core.model.Numbers;
+import org.parpe.core.model.Program;
+import org.parpe.core.run.RunOptions;
+import org.parpe.core.run.Stimulus;
+import org.parpe.core.run.StimulusParser;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/** {@code parpe run}: runs a script headless, on the simulator, on hardware, or both (PARSL.md §11). */
+@Command(name = "run", description = "Run a PARSL script. Without --sim or --port only setpoints are computed, as fast as possible.")
+final class RunCommand implements Callable<Integer> {
+    @Parameters(index = "0", paramLabel = "FILE", description = "The PARSL script.")
+    Path file;
+
+    @Option(names = "--duration", paramLabel = "SECONDS", description = "Stop after this much simulated time (default: when <main> ends).")
+    Double duration;
+
+    @Option(names = "--tick", paramLabel = "SECONDS", defaultValue = "0.01", description = "Scheduler tick (default ${DEFAULT-VALUE}).")
+    double tick;
+
+    @Option(names = "--param", paramLabel = "NAME=VALUE", description = "Set a parameter (repeatable).")
+    List<String> params = new ArrayList<>();
+
+    @Option(names = "--stimulus", paramLabel = "FILE", description = "Timed control and sensor assignments.")
+    Path stimulus;
+
+    @Option(names = "--trace", paramLabel = "FILE|-", description = "Write the CSV trace to FILE or '-' for standard output.")
+    String trace;
+
+    @Option(names = "--seed", paramLabel = "N", defaultValue = "0", description = "Seed of rand() (default ${DEFAULT-VALUE}).")
+    long seed;
+
+    @Mixin
+    SimOptions sim = new SimOptions();
+
+    @Mixin
+    HardwareOptions hardware = new HardwareOptions();
+
+    @Spec
+    CommandSpec spec;
+
+    @Override
+    public Integer call() throws IOException {
+        PrintStream err = errStream();
+        try {
+            return execute(err);
+        } catch (UsageException e) {
+            err.println("parpe: " + e.getMessage());
+            return 2;
+        }
+    }
+
+    private PrintStream errStream() {
+        return new PrintStream(new WriterStream(spec.commandLine().getErr()), true, StandardCharsets.UTF_8);
+    }
+
+    private int execute(PrintStream err) throws UsageException, IOException {
+        if (!Files.isReadable(file) || Files.isDirectory(file)) {
+            throw new UsageException("cannot read '" + file + "'");
+        }
+        if (!(tick > 0) || !Double.isFinite(tick)) {
+            throw new UsageException("--tick must be > 0 seconds, got " + tick);
+        }
+        if (duration != null && !(duration >= 0)) {
+            throw new UsageException("--duration must be >= 0 seconds, got " + duration);
+        }
+        LoadResult r = ScriptLoader.load(file, parseParams());
+        for (Diagnostic d : r.diagnostics()) {
+            err.println(d.format());
+        }
+        if (r.program() == null) {
+            return 1;
+        }
+        if (!r.parameterErrors().isEmpty()) {
+            throw new UsageException(String.join("; ", r.parameterErrors()));
+        }
+        Program program = r.program();
+        if (program.main() == null) {
+            err.println(file + ": warning: the program has no <main>; there is nothing to run");
+            return 0;
+        }
+        RunOptions options = new RunOptions(tick, seed, stimuli(program));
+        double limit = duration == null ? Double.POSITIVE_INFINITY : duration;
+        RunSetup setup = new RunSetup(program, options, limit, err);
+        try {
+            sim.configure(setup);
+            hardware.configure(setup);
+            return new RunLoop(setup, err).run(traceWriter(), trace != null && trace.equals("-"));
+        } catch (UsageException e) {
+            throw e;
+        } catch (Exception e) {
+            if (e instanceof RuntimeException && e.getMessage() == null) {
+                throw (RuntimeException) e;
+            }
+            throw new UsageException(e.getMessage() == null ? e.toString() : e.getMessage());
+        } finally {
+            RunLoop.closeAll(setup, err);
+        }
+    }
+
+    private Map<String, Double> parseParams() throws UsageException {
+        Map<String, Double> out = new LinkedHashMap<>();
+        for (String p : params) {
+            int eq = p.indexOf('=');
+            if (eq <= 0) {
+                throw new UsageException("--param expects NAME=VALUE, got '" + p + "'");
+            }
+            String name = p.substring(0, eq).trim();
+            Double v = Numbers.parsePlain(p.substring(eq + 1));
+            if (v == null) {
+                throw new UsageException("parameter '" + name + "' must be a number, got '" + p.substring(eq + 1) + "'");
+            }
+            out.put(name, v);
+        }
+        return out;
+    }
+
+    private List<Stimulus> stimuli(Program program) throws UsageException {
+        if (stimulus == null) {
+            return List.of();
+        }
+        String text;
+        try {
+            text = Files.readString(stimulus, StandardCharsets.UTF_8);
+        } catch (IOException | RuntimeException e) {
+            throw new UsageException("cannot read stimulus file '" + stimulus + "'");
+        }
+        try {
+            return StimulusParser.parse(stimulus.toString(), text, program);
+        } catch (StimulusParser.StimulusException e) {
+            throw new UsageException(e.getMessage());
+        }
+    }
+
+    private Writer traceWriter() throws UsageException {
+        if (trace == null) {
+            return null;
+        }
+        if (trace.equals("-")) {
+            return new BufferedWriter(new OutputStreamWriter(System.out, StandardCharsets.UTF_8), 1 << 16);
+        }
+        try {
+            Path p = Path.of(trace);
+            return Files.newBufferedWriter(p, StandardCharsets.UTF_8);
+        } catch (IOException | RuntimeException e) {
+            throw new UsageException("cannot write trace file '" + trace + "': " + e.getMessage());
+        }
+    }
+}

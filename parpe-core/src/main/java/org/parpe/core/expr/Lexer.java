@@ -1,0 +1,125 @@
+package org.parpe.core.expr;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/** Splits an expression into tokens with their character positions. */
+final class Lexer {
+    enum Type { NUMBER, NAME, DOLLAR, STRING, OP, LPAREN, RPAREN, COMMA }
+
+    record Token(Type type, String text, int start, int end) {
+    }
+
+    /** Thrown for a character that starts no token. */
+    static final class LexError extends Exception {
+        final int index;
+
+        LexError(String message, int index) {
+            super(message, null, false, false);
+            this.index = index;
+        }
+    }
+
+    private static final String[] OPS = {"||", "&&", "==", "!=", "<=", ">=", "<", ">", "+", "-", "*", "/", "%", "^", "!"};
+
+    private Lexer() {
+    }
+
+    static List<Token> lex(String s) throws LexError {
+        List<Token> out = new ArrayList<>();
+        int i = 0;
+        while (i < s.length()) {
+            char c = s.charAt(i);
+            if (Character.isWhitespace(c)) {
+                i++;
+            } else if (Character.isDigit(c) || c == '.' && i + 1 < s.length() && Character.isDigit(s.charAt(i + 1))) {
+                int end = number(s, i);
+                out.add(new Token(Type.NUMBER, s.substring(i, end), i, end));
+                i = end;
+            } else if (isNameStart(c)) {
+                int end = nameEnd(s, i);
+                out.add(new Token(Type.NAME, s.substring(i, end), i, end));
+                i = end;
+            } else if (c == '$') {
+                int end = i + 1;
+                while (end < s.length() && (Character.isLetterOrDigit(s.charAt(end)) && s.charAt(end) < 128 || s.charAt(end) == '_')) {
+                    end++;
+                }
+                if (end == i + 1) {
+                    throw new LexError("'$' must be followed by a control, variable or sensor name", i);
+                }
+                out.add(new Token(Type.DOLLAR, s.substring(i + 1, end), i, end));
+                i = end;
+            } else if (c == '"') {
+                int close = s.indexOf('"', i + 1);
+                if (close < 0) {
+                    throw new LexError("unterminated string literal", i);
+                }
+                out.add(new Token(Type.STRING, s.substring(i + 1, close), i, close + 1));
+                i = close + 1;
+            } else if (c == '(' || c == ')' || c == ',') {
+                Type t = c == '(' ? Type.LPAREN : c == ')' ? Type.RPAREN : Type.COMMA;
+                out.add(new Token(t, String.valueOf(c), i, i + 1));
+                i++;
+            } else {
+                String op = operator(s, i);
+                if (op == null) {
+                    throw new LexError(c == '=' ? "'=' is not an operator; use '==' to compare"
+                            : c == '&' ? "'&' is not an operator; use '&&'"
+                            : c == '|' ? "'|' is not an operator; use '||'"
+                            : "unexpected character '" + c + "'", i);
+                }
+                out.add(new Token(Type.OP, op, i, i + op.length()));
+                i += op.length();
+            }
+        }
+        return out;
+    }
+
+    private static String operator(String s, int i) {
+        for (String op : OPS) {
+            if (s.startsWith(op, i)) {
+                return op;
+            }
+        }
+        return null;
+    }
+
+    static boolean isNameStart(char c) {
+        return c < 128 && (Character.isLetter(c) || c == '_');
+    }
+
+    private static int nameEnd(String s, int i) {
+        int end = i;
+        while (end < s.length() && s.charAt(end) < 128 && (Character.isLetterOrDigit(s.charAt(end)) || s.charAt(end) == '_')) {
+            end++;
+        }
+        return end;
+    }
+
+    private static int number(String s, int i) {
+        int end = i;
+        while (end < s.length() && Character.isDigit(s.charAt(end))) {
+            end++;
+        }
+        if (end < s.length() && s.charAt(end) == '.') {
+            end++;
+            while (end < s.length() && Character.isDigit(s.charAt(end))) {
+                end++;
+            }
+        }
+        if (end < s.length() && (s.charAt(end) == 'e' || s.charAt(end) == 'E')) {
+            int e = end + 1;
+            if (e < s.length() && (s.charAt(e) == '+' || s.charAt(e) == '-')) {
+                e++;
+            }
+            if (e < s.length() && Character.isDigit(s.charAt(e))) {
+                while (e < s.length() && Character.isDigit(s.charAt(e))) {
+                    e++;
+                }
+                end = e;
+            }
+        }
+        return end;
+    }
+}

@@ -1,0 +1,108 @@
+package org.parpe.core.expr;
+
+import java.util.ArrayDeque;
+import java.util.Deque;
+import java.util.List;
+import org.parpe.core.expr.Lexer.Token;
+import org.parpe.core.expr.Lexer.Type;
+
+/**
+ * Checks the token sequence of an expression (operand/operator alternation, parentheses,
+ * function arity) so that syntax errors get a precise column and a plain message before the
+ * expression reaches exp4j. Records the argument count of every call.
+ */
+final class Syntax {
+    /** A syntax error at a character index. */
+    record Problem(String message, int index) {
+    }
+
+    private record Frame(boolean call, Token open, String function, int[] args) {
+    }
+
+    private Syntax() {
+    }
+
+    /** Returns the first problem, or {@code null}; fills {@code argCounts[i]} for call tokens. */
+    static Problem check(List<Token> tokens, int[] argCounts, int length) {
+        if (tokens.isEmpty()) {
+            return new Problem("empty expression", 0);
+        }
+        Deque<Frame> frames = new ArrayDeque<>();
+        boolean expectOperand = true;
+        for (int i = 0; i < tokens.size(); i++) {
+            Token t = tokens.get(i);
+            Token next = i + 1 < tokens.size() ? tokens.get(i + 1) : null;
+            if (expectOperand) {
+                if (t.type() == Type.NAME && next != null && next.type() == Type.LPAREN) {
+                    frames.push(new Frame(true, next, t.text(), new int[] {i, 0}));
+                    i++;
+                    if (i + 1 < tokens.size() && tokens.get(i + 1).type() == Type.RPAREN) {
+                        Problem p = close(frames.pop(), argCounts, tokens.get(i + 1), true);
+                        if (p != null) {
+                            return p;
+                        }
+                        i++;
+                        expectOperand = false;
+                    }
+                } else if (t.type() == Type.NUMBER || t.type() == Type.NAME || t.type() == Type.DOLLAR
+                        || t.type() == Type.STRING) {
+                    expectOperand = false;
+                } else if (t.type() == Type.LPAREN) {
+                    frames.push(new Frame(false, t, null, null));
+                } else if (t.type() == Type.OP && (t.text().equals("-") || t.text().equals("+") || t.text().equals("!"))) {
+                    continue;
+                } else {
+                    return new Problem("expected a value before '" + t.text() + "'", t.start());
+                }
+            } else {
+                if (t.type() == Type.OP && !t.text().equals("!")) {
+                    expectOperand = true;
+                } else if (t.type() == Type.RPAREN) {
+                    if (frames.isEmpty()) {
+                        return new Problem("')' has no matching '('", t.start());
+                    }
+                    Frame f = frames.pop();
+                    if (f.call()) {
+                        Problem p = close(f, argCounts, t, false);
+                        if (p != null) {
+                            return p;
+                        }
+                    }
+                } else if (t.type() == Type.COMMA) {
+                    if (frames.isEmpty() || !frames.peek().call()) {
+                        return new Problem("',' is only allowed between function arguments", t.start());
+                    }
+                    frames.peek().args()[1]++;
+                    expectOperand = true;
+                } else {
+                    return new Problem("missing operator before '" + t.text() + "'", t.start());
+                }
+            }
+        }
+        Token last = tokens.get(tokens.size() - 1);
+        if (expectOperand) {
+            return new Problem("incomplete expression: expected a value after '" + last.text() + "'", last.start());
+        }
+        if (!frames.isEmpty()) {
+            return new Problem("missing ')' to close the '(' here", frames.peek().open().start());
+        }
+        return null;
+    }
+
+    private static Problem close(Frame f, int[] argCounts, Token at, boolean empty) {
+        int n = empty ? 0 : f.args()[1] + 1;
+        argCounts[f.args()[0]] = n;
+        int arity = Functions.arity(f.function());
+        if (arity == -1) {
+            return null; // an unknown function is reported by name resolution
+        }
+        if (arity == -2) {
+            return n >= 1 ? null : new Problem("sum() needs at least one argument", at.start());
+        }
+        if (n != arity) {
+            return new Problem(f.function() + "() takes " + arity + (arity == 1 ? " argument" : " arguments")
+                    + ", got " + n, f.open().start());
+        }
+        return null;
+    }
+}

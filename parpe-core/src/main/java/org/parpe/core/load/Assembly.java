@@ -1,0 +1,160 @@
+package org.parpe.core.load;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Deque;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+import org.parpe.core.diag.DiagnosticSink;
+import org.parpe.core.diag.SourcePos;
+import org.parpe.core.expr.Names;
+import org.parpe.core.xml.SourceText;
+import org.parpe.core.xml.XElement;
+import org.parpe.core.xml.XText;
+import org.parpe.core.xml.XmlReader;
+
+/**
+ * Reads the main file and its includes (PARSL.md §1, §9) and lists their sections in document
+ * order, the content of an include standing where its {@code <include>} is.
+ */
+final class Assembly {
+    static final List<String> SECTIONS = List.of("robot", "parameters", "controls", "main", "behaviors",
+            "automata", "states");
+    private static final List<String> MERGED = List.of("parameters", "controls", "states", "automata", "behaviors");
+
+    /**
+     * A section and where it counts as defined.
+     *
+     * @param element the section element
+     * @param order   its place in the merged document order
+     * @param anchor  for included content, the {@code <include>} in the main file; else {@code null}
+     */
+    record Section(XElement element, int order, SourcePos anchor) {
+        /** Where a definition in this section is reported when it clashes. */
+        SourcePos reportAt(SourcePos own) {
+            return anchor == null ? own : anchor;
+        }
+    }
+
+    final List<Section> sections = new ArrayList<>();
+    XElement robot;
+    int robotOrder;
+    XElement main;
+    private final DiagnosticSink diags;
+    private final Deque<Path> stack = new ArrayDeque<>();
+    private final Set<Path> done = new HashSet<>();
+    private int order;
+
+    Assembly(DiagnosticSink diags) {
+        this.diags = diags;
+    }
+
+    /** Reads a file as UTF-8 text; returns {@code null} when it cannot be read. */
+    static String read(Path file) {
+        try {
+            String s = Files.readString(file, StandardCharsets.UTF_8);
+            return s.startsWith("\uFEFF") ? s.substring(1) : s;
+        } catch (IOException | RuntimeException e) {
+            return null;
+        }
+    }
+
+    /** The main file: its text is given (it may come from an editor). */
+    void addMain(Path file, String text) {
+        SourceText src = new SourceText(file.toString(), text);
+        XElement root = XmlReader.read(src, diags);
+        if (root == null) {
+            return;
+        }
+        Attrs.allow(root, diags, List.of());
+        Attrs.noText(root, diags);
+        stack.push(key(file));
+        done.add(key(file));
+        walk(root, file, null, true);
+        stack.pop();
+    }
+
+    private static Path key(Path p) {
+        return p.toAbsolutePath().normalize();
+    }
+
+    private void walk(XElement root, Path file, SourcePos anchor, boolean isMain) {
+        Set<String> seen = new HashSet<>();
+        for (XElement s : root.children()) {
+            String name = s.name();
+            if (name.equals("include")) {
+                include(s, file, anchor == null ? s.pos() : anchor);
+                continue;
+            }
+            if (!SECTIONS.contains(name)) {
+                String best = Names.closest(name, SECTIONS);
+                diags.error(s.pos(), "unknown section <" + name + ">" + (best != null ? " (did you mean <" + best + ">?)"
+                        : " (sections are " + String.join(", ", SECTIONS) + " and include)"));
+                continue;
+            }
+            if (!seen.add(name)) {
+                diags.error(s.pos(), "section <" + name + "> appears twice in " + s.source().file());
+                continue;
+            }
+            if (name.equals("robot") && isMain) {
+                robot = s;
+                robotOrder = order++;
+            } else if (name.equals("main") && isMain) {
+                main = s;
+            } else if (MERGED.contains(name)) {
+                sections.add(new Section(s, order++, anchor));
+            }
+        }
+    }
+
+    private void include(XElement inc, Path from, SourcePos anchor) {
+        Attrs.allow(inc, diags, List.of("file"));
+        Attrs.noChildren(inc, diags);
+        Attrs.noText(inc, diags);
+        XText rel = Attrs.require(inc, "file", diags);
+        if (rel == null) {
+            return;
+        }
+        Path target = resolve(from, rel.value().trim());
+        Path k = key(target);
+        if (stack.contains(k)) {
+            List<String> chain = new ArrayList<>();
+            stack.descendingIterator().forEachRemaining(p -> chain.add(p.getFileName().toString()));
+            chain.add(target.getFileName().toString());
+            diags.error(rel.pos(), "include cycle: " + String.join(" -> ", chain));
+            return;
+        }
+        if (!done.add(k)) {
+            return; // reached twice without a cycle: loaded once
+        }
+        String text = read(target);
+        if (text == null) {
+            diags.error(rel.pos(), "cannot read included file '" + target + "'");
+            return;
+        }
+        XElement root = XmlReader.read(new SourceText(target.toString(), text), diags);
+        if (root == null) {
+            return;
+        }
+        stack.push(k);
+        walk(root, target, anchor, false);
+        stack.pop();
+    }
+
+    /** {@code rel} relative to the folder of {@code from}, as the user would name it. */
+    static Path resolve(Path from, String rel) {
+        Path parent = from.getParent();
+        Path p = parent == null ? Path.of(rel) : parent.resolve(rel);
+        return p.normalize();
+    }
+
+    /** The sections of one kind, in document order. */
+    List<Section> of(String kind) {
+        return sections.stream().filter(s -> s.element().name().equals(kind)).toList();
+    }
+}

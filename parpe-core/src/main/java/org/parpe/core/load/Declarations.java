@@ -1,0 +1,266 @@
+package org.parpe.core.load;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import org.parpe.core.diag.DiagnosticSink;
+import org.parpe.core.expr.Names;
+import org.parpe.core.model.Control;
+import org.parpe.core.model.Control.ControlType;
+import org.parpe.core.model.Numbers;
+import org.parpe.core.model.Parameter;
+import org.parpe.core.xml.XElement;
+import org.parpe.core.xml.XText;
+
+/** Resolves {@code <parameters>} (PARSL.md §3) and {@code <controls>} (§4). */
+final class Declarations {
+    private static final Set<String> CONTROL_RESERVED = Set.of("time", "btime", "index", "count", "id", "phase", "cycle");
+    private static final Set<String> KEYS = keyNames();
+
+    final List<Parameter> parameters = new ArrayList<>();
+    final Map<String, Double> values = new LinkedHashMap<>();
+    final List<String> parameterErrors = new ArrayList<>();
+    final List<Control> controls = new ArrayList<>();
+    final Map<String, Integer> controlIndex = new LinkedHashMap<>();
+    final Map<String, Integer> radioWords = new LinkedHashMap<>();
+    private final DiagnosticSink d;
+    private final NameRegistry names;
+
+    Declarations(DiagnosticSink d, NameRegistry names) {
+        this.d = d;
+        this.names = names;
+    }
+
+    private static Set<String> keyNames() {
+        Set<String> k = new java.util.HashSet<>(List.of("Up", "Down", "Left", "Right", "space"));
+        for (char c = 'a'; c <= 'z'; c++) {
+            k.add(String.valueOf(c));
+        }
+        for (char c = '0'; c <= '9'; c++) {
+            k.add(String.valueOf(c));
+        }
+        return k;
+    }
+
+    void parameters(List<Assembly.Section> sections, Map<String, Double> overrides) {
+        for (Assembly.Section s : sections) {
+            Attrs.allow(s.element(), d, List.of());
+            Attrs.noText(s.element(), d);
+            int i = 0;
+            for (XElement e : s.element().children()) {
+                parameter(e, s, i++);
+            }
+        }
+        for (Map.Entry<String, Double> o : overrides.entrySet()) {
+            Parameter p = parameters.stream().filter(q -> q.name().equals(o.getKey())).findFirst().orElse(null);
+            if (p == null) {
+                parameterErrors.add("unknown parameter '" + o.getKey() + "'"
+                        + Names.suggest(o.getKey(), values.keySet())
+                        + (values.isEmpty() ? " (the script has no parameters)" : ""));
+                continue;
+            }
+            String problem = p.check(o.getValue());
+            if (problem != null) {
+                parameterErrors.add(problem);
+            } else {
+                values.put(p.name(), o.getValue());
+            }
+        }
+    }
+
+    private void parameter(XElement e, Assembly.Section s, int index) {
+        Attrs.allow(e, d, List.of("type", "value", "min", "max", "label"));
+        Attrs.noText(e, d);
+        Attrs.noChildren(e, d);
+        String name = e.name();
+        boolean okName = Attrs.validName(name, "parameter", e.pos(), d);
+        XText type = Attrs.optional(e, "type");
+        if (type != null && !type.value().trim().equals("text")) {
+            d.error(type.pos(), "parameter type must be 'text', got '" + type.value() + "'");
+        }
+        Double value = number(e, "value", true, "parameter '" + name + "'");
+        Double min = number(e, "min", false, "parameter '" + name + "'");
+        Double max = number(e, "max", false, "parameter '" + name + "'");
+        if (!bounds(e, value, min, max, "parameter '" + name + "'") || value == null || !okName) {
+            return;
+        }
+        XText label = Attrs.optional(e, "label");
+        Parameter p = new Parameter(name, value, min, max, label == null ? "" : label.value(), e.pos());
+        if (values.containsKey(name)) {
+            names.define(name, "parameter", order(s, index), s.reportAt(e.pos()), e.pos(), "");
+            return;
+        }
+        parameters.add(p);
+        values.put(name, value);
+        names.define(name, "parameter", order(s, index), s.reportAt(e.pos()), e.pos(), "");
+    }
+
+    static long order(Assembly.Section s, int index) {
+        return order(s.order(), index, 0);
+    }
+
+    /** The document order of item {@code sub} of entry {@code index} of the section at {@code section}. */
+    static long order(int section, int index, int sub) {
+        return section * 1_000_000_000L + index * 1000L + sub;
+    }
+
+    /** Reads a plain-number attribute; reports a malformed or missing one. */
+    private Double number(XElement e, String attr, boolean required, String what) {
+        XText t = required ? Attrs.require(e, attr, d) : Attrs.optional(e, attr);
+        if (t == null) {
+            return null;
+        }
+        Double v = Numbers.parsePlain(t.value());
+        if (v == null) {
+            d.error(t.pos(), attr + " of " + what + " must be a plain number, got '" + t.value() + "'");
+        }
+        return v;
+    }
+
+    private boolean bounds(XElement e, Double value, Double min, Double max, String what) {
+        if (min != null && max != null && min > max) {
+            d.error(e.attr("min").pos(), "min of " + what + " (" + Numbers.format(min) + ") is greater than max ("
+                    + Numbers.format(max) + ")");
+            return false;
+        }
+        if (value != null && (min != null && value < min || max != null && value > max)) {
+            d.error(e.attr("value").pos(), "value of " + what + " must be within [" + (min == null ? "-inf" : Numbers.format(min))
+                    + ", " + (max == null ? "inf" : Numbers.format(max)) + "], got " + Numbers.format(value));
+            return false;
+        }
+        return true;
+    }
+
+    void controls(List<Assembly.Section> sections) {
+        for (Assembly.Section s : sections) {
+            Attrs.allow(s.element(), d, List.of());
+            Attrs.noText(s.element(), d);
+            int i = 0;
+            for (XElement e : s.element().children()) {
+                control(e, s, i++);
+            }
+        }
+    }
+
+    private void control(XElement e, Assembly.Section s, int index) {
+        Attrs.noText(e, d);
+        Attrs.noChildren(e, d);
+        String name = e.name();
+        boolean ok = Attrs.validName(name, "control", e.pos(), d);
+        if (CONTROL_RESERVED.contains(name)) {
+            d.error(e.pos(), "a control cannot be named '" + name + "' ($" + name + " is a logical variable)");
+            ok = false;
+        }
+        XText typeText = Attrs.optional(e, "type");
+        String type = typeText == null ? "text" : typeText.value().trim();
+        Control c;
+        switch (type) {
+            case "slider": c = slider(e, name); break;
+            case "text": c = text(e, name); break;
+            case "radio": c = radio(e, name, s, index); break;
+            default:
+                d.error(typeText.pos(), "control type must be slider, text or radio, got '" + type + "'");
+                return;
+        }
+        names.define(name, "control", order(s, index), s.reportAt(e.pos()), e.pos(), "");
+        if (c != null && ok && !controlIndex.containsKey(name)) {
+            controlIndex.put(name, controls.size());
+            controls.add(c);
+        }
+    }
+
+    private String label(XElement e) {
+        XText l = Attrs.optional(e, "label");
+        return l == null ? "" : l.value();
+    }
+
+    private Control slider(XElement e, String name) {
+        Attrs.allow(e, d, List.of("type", "min", "max", "value", "step", "label", "keys"));
+        String what = "slider '" + name + "'";
+        Double min = number(e, "min", true, what);
+        Double max = number(e, "max", true, what);
+        Double value = number(e, "value", true, what);
+        Double step = number(e, "step", false, what);
+        if (step != null && step <= 0) {
+            d.error(e.attr("step").pos(), "step of " + what + " must be > 0, got " + Numbers.format(step));
+            return null;
+        }
+        List<String> keys = keys(e, 2, "a slider's keys name two keys: increase, decrease");
+        if (!bounds(e, value, min, max, what) || min == null || max == null || value == null || keys == null) {
+            return null;
+        }
+        return new Control(name, ControlType.SLIDER, value, min, max, step, label(e), List.of(), keys, e.pos());
+    }
+
+    private Control text(XElement e, String name) {
+        Attrs.allow(e, d, List.of("type", "value", "label"));
+        Double value = number(e, "value", true, "control '" + name + "'");
+        return value == null ? null
+                : new Control(name, ControlType.TEXT, value, null, null, null, label(e), List.of(), List.of(), e.pos());
+    }
+
+    private Control radio(XElement e, String name, Assembly.Section s, int index) {
+        Attrs.allow(e, d, List.of("type", "values", "value", "label", "keys"));
+        XText values = Attrs.require(e, "values", d);
+        if (values == null) {
+            return null;
+        }
+        List<String> words = new ArrayList<>();
+        int k = 0;
+        for (XText w : ListItem.split(values, ',')) {
+            String word = w.value();
+            if (word.isEmpty()) {
+                d.error(w.pos(), "empty item in the values of radio '" + name + "'");
+                return null;
+            }
+            if (!Attrs.validName(word, "radio word", w.pos(), d)) {
+                return null;
+            }
+            if (words.contains(word)) {
+                d.error(w.pos(), "radio '" + name + "' lists '" + word + "' twice");
+                return null;
+            }
+            words.add(word);
+            names.define(word, "radio word", order(s.order(), index, ++k), s.reportAt(w.pos()), w.pos(), name);
+        }
+        XText initial = Attrs.optional(e, "value");
+        String first = words.get(0);
+        if (initial != null && !words.contains(initial.value().trim())) {
+            d.error(initial.pos(), "value of radio '" + name + "' must be one of " + String.join(", ", words)
+                    + ", got '" + initial.value() + "'");
+            return null;
+        }
+        List<String> keys = keys(e, words.size(), "a radio's keys name one key per word (" + words.size() + ")");
+        if (keys == null) {
+            return null;
+        }
+        for (String w : words) {
+            radioWords.putIfAbsent(w, radioWords.size() + 1);
+        }
+        String start = initial == null ? first : initial.value().trim();
+        return new Control(name, ControlType.RADIO, radioWords.get(start), null, null, null, label(e), words, keys, e.pos());
+    }
+
+    private List<String> keys(XElement e, int count, String rule) {
+        XText t = Attrs.optional(e, "keys");
+        if (t == null) {
+            return List.of();
+        }
+        List<String> keys = new ArrayList<>();
+        for (XText k : ListItem.split(t, ',')) {
+            if (!KEYS.contains(k.value())) {
+                d.error(k.pos(), "unknown key '" + k.value() + "' (keys are a-z, 0-9, Up, Down, Left, Right, space)");
+                return null;
+            }
+            keys.add(k.value());
+        }
+        if (keys.size() != count) {
+            d.error(t.pos(), rule + ", got " + keys.size());
+            return null;
+        }
+        return keys;
+    }
+
+}

@@ -1,0 +1,136 @@
+package org.parpe.core.load;
+
+import java.util.List;
+import java.util.Map;
+import org.parpe.core.diag.DiagnosticSink;
+import org.parpe.core.expr.ExprCompiler;
+import org.parpe.core.model.Automaton;
+import org.parpe.core.model.Group;
+import org.parpe.core.model.MainEntry;
+import org.parpe.core.model.Robot;
+import org.parpe.core.model.StateDef;
+import org.parpe.core.run.Channel;
+
+/**
+ * The checks made where an automaton meets a group (PARSL.md §7, §13 rule 13): overlapping
+ * unconditional instances, angle-vector lengths and local sensor references. Instances with a
+ * concrete group are checked once per behavior; those whose group comes from a macro, once per
+ * {@code <main>} entry that invokes the behavior.
+ */
+final class InstanceChecks {
+    private final DiagnosticSink d;
+    private final Robot robot;
+    private final Map<String, Automaton> automata;
+    private final Map<String, List<ExprCompiler.LocalUse>> locals;
+
+    InstanceChecks(DiagnosticSink d, Robot robot, Map<String, Automaton> automata,
+                   Map<String, List<ExprCompiler.LocalUse>> locals) {
+        this.d = d;
+        this.robot = robot;
+        this.automata = automata;
+        this.locals = locals;
+    }
+
+    /**
+     * Checks the instances of a behavior. With {@code args == null} only instances on concrete
+     * groups are checked; otherwise those involving macro groups, with these macro values.
+     */
+    void checkBehavior(String behavior, List<BehaviorResolver.InstanceInfo> infos, Map<String, MainEntry.MacroArg> args) {
+        if (robot == null) {
+            return;
+        }
+        String note = args == null ? "" : " (in this invocation of '" + behavior + "')";
+        for (int i = 0; i < infos.size(); i++) {
+            BehaviorResolver.InstanceInfo later = infos.get(i);
+            Group g = group(later, args);
+            if (g == null) {
+                continue;
+            }
+            if ((args == null) == !later.macroGroup()) {
+                shape(later, g, note);
+            }
+            if (later.conditional()) {
+                continue;
+            }
+            for (int j = 0; j < i; j++) {
+                BehaviorResolver.InstanceInfo earlier = infos.get(j);
+                boolean relevant = args == null ? !later.macroGroup() && !earlier.macroGroup()
+                        : later.macroGroup() || earlier.macroGroup();
+                Group h = relevant && !earlier.conditional() ? group(earlier, args) : null;
+                Integer shared = h == null ? null : shared(g, h);
+                if (shared != null) {
+                    d.error(later.model().pos(), "group '" + g.name() + "' overlaps group '" + h.name()
+                            + "' of an earlier instance (module " + shared + ")" + note
+                            + "; instances outside <if> must drive different modules");
+                    break;
+                }
+            }
+        }
+    }
+
+    private Group group(BehaviorResolver.InstanceInfo info, Map<String, MainEntry.MacroArg> args) {
+        String name = info.base();
+        if (info.macroGroup()) {
+            MainEntry.MacroArg a = args == null ? null : args.get(name);
+            if (a == null || a.group() == null) {
+                return null;
+            }
+            name = a.group();
+        }
+        return robot.group(name).orElse(null);
+    }
+
+    private static Integer shared(Group a, Group b) {
+        for (int m : a.modules()) {
+            if (b.modules().contains(m)) {
+                return m;
+            }
+        }
+        return null;
+    }
+
+    private void shape(BehaviorResolver.InstanceInfo info, Group g, String note) {
+        Automaton a = automata.get(info.model().automaton());
+        if (a == null) {
+            return;
+        }
+        int n = g.size();
+        for (StateDef s : a.states()) {
+            int k = s.angles().size();
+            if (k != 1 && k != n) {
+                String what = a.table() ? "row " + s.name().substring(a.name().length()) + " of gait table '" + a.name() + "'"
+                        : "state '" + s.name() + "'";
+                d.error(info.model().pos(), what + " has " + k + " angles but group '" + g.name() + "' has " + n
+                        + (n == 1 ? " module" : " modules") + " (give 1 angle or " + n + ")" + note);
+                return;
+            }
+        }
+        for (ExprCompiler.LocalUse u : locals.getOrDefault(a.name(), List.of())) {
+            String problem = local(u, g);
+            if (problem != null) {
+                d.error(info.model().pos(), problem + note);
+                return;
+            }
+        }
+    }
+
+    private String local(ExprCompiler.LocalUse u, Group g) {
+        Channel c = u.channel();
+        if (u.position() >= 0) {
+            if (u.position() >= g.size()) {
+                return "'" + u.text() + "' (at " + u.pos() + ") needs a group of more than " + u.position()
+                        + " modules; group '" + g.name() + "' has " + g.size();
+            }
+            int id = g.modules().get(u.position());
+            return robot.carries(id, c.sensor()) ? null : "'" + u.text() + "' (at " + u.pos() + ") reads module " + id
+                    + " of group '" + g.name() + "', which has no " + c.sensor() + " sensor";
+        }
+        for (int id : g.modules()) {
+            if (!robot.carries(id, c.sensor())) {
+                return "'" + u.text() + "' (at " + u.pos() + ") needs every module of group '" + g.name()
+                        + "' to carry a " + c.sensor() + " sensor; module " + id + " has none";
+            }
+        }
+        return null;
+    }
+}

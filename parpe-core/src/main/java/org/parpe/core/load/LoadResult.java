@@ -1,0 +1,32 @@
+package org.parpe.core.load;
+
+import java.util.List;
+import org.parpe.core.diag.Diagnostic;
+import org.parpe.core.diag.Severity;
+import org.parpe.core.model.Program;
+
+/**
+ * What loading a script gave.
+ *
+ * @param program         the validated model, or {@code null} when there were errors
+ * @param diagnostics     every error and warning found, in the order found
+ * @param parameterErrors problems with parameter values given from outside (command line,
+ *                        parameters dialog): unknown names or values out of range
+ */
+public record LoadResult(Program program, List<Diagnostic> diagnostics, List<String> parameterErrors) {
+
+    public LoadResult {
+        diagnostics = List.copyOf(diagnostics);
+        parameterErrors = List.copyOf(parameterErrors);
+    }
+
+    /** Whether the script loaded without errors and every given parameter value was accepted. */
+    public boolean ok() {
+        return program != null && parameterErrors.isEmpty();
+    }
+
+    /** Only the errors. */
+    public List<Diagnostic> errors() {
+        return diagnostics.stream().filter(d -> d.severity() == Severity.ERROR).toList();
+    }
+}

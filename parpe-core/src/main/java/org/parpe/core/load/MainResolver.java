@@ -1,0 +1,135 @@
+package org.parpe.core.load;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import org.parpe.core.diag.DiagnosticSink;
+import org.parpe.core.expr.ExprCompiler;
+import org.parpe.core.expr.Expression;
+import org.parpe.core.expr.Names;
+import org.parpe.core.expr.Scope;
+import org.parpe.core.model.Behavior;
+import org.parpe.core.model.MainDef;
+import org.parpe.core.model.MainEntry;
+import org.parpe.core.model.Robot;
+import org.parpe.core.xml.XElement;
+import org.parpe.core.xml.XText;
+
+/** Resolves {@code <main>} (PARSL.md §8): cycles, entries, macro values. */
+final class MainResolver {
+    private final DiagnosticSink d;
+    private final ScriptLoader.Scopes scopes;
+    private final BehaviorResolver behaviors;
+    private final InstanceChecks checks;
+    private final Robot robot;
+
+    MainResolver(DiagnosticSink d, ScriptLoader.Scopes scopes, BehaviorResolver behaviors, InstanceChecks checks, Robot robot) {
+        this.d = d;
+        this.scopes = scopes;
+        this.behaviors = behaviors;
+        this.checks = checks;
+        this.robot = robot;
+    }
+
+    MainDef resolve(XElement main, Map<String, Double> params) {
+        Attrs.allow(main, d, List.of("cycles"));
+        Attrs.noText(main, d);
+        XText cyclesText = Attrs.optional(main, "cycles");
+        long cycles = cyclesText == null ? 1 : cycles(cyclesText);
+        List<MainEntry> entries = new ArrayList<>();
+        for (XElement e : main.children()) {
+            MainEntry entry = entry(e);
+            if (entry != null) {
+                entries.add(entry);
+            }
+        }
+        return new MainDef(cycles, cyclesText == null ? null : cyclesText.value(), entries, main.pos());
+    }
+
+    private long cycles(XText t) {
+        if (t.value().trim().equals("forever")) {
+            return MainDef.FOREVER;
+        }
+        ExprCompiler.Result r = ExprCompiler.compile(t, scopes.scope(Scope.Kind.PARAMETERS_ONLY, Map.of(), Set.of()), d);
+        if (r == null) {
+            return 1;
+        }
+        double v = r.expression().isConstant() ? r.expression().eval(null) : Double.NaN;
+        if (v != Math.rint(v) || v < 1) {
+            d.error(t.pos(), "<main cycles> must be a whole number >= 1 or 'forever', got '" + t.value() + "'");
+            return 1;
+        }
+        return (long) v;
+    }
+
+    private MainEntry entry(XElement e) {
+        Attrs.noText(e, d);
+        Attrs.noChildren(e, d);
+        BehaviorResolver.Info info = behaviors.behaviors.get(e.name());
+        if (info == null && behaviors.broken.contains(e.name())) {
+            return null;
+        }
+        if (info == null) {
+            d.error(e.pos(), "behavior '" + e.name() + "' is not defined in <behaviors>"
+                    + Names.suggest(e.name(), behaviors.behaviors.keySet()));
+            return null;
+        }
+        Behavior b = info.model();
+        List<String> allowed = new ArrayList<>(List.of("time", "exit"));
+        allowed.addAll(b.macros());
+        Attrs.allow(e, d, allowed);
+        Scope scope = scopes.scope(Scope.Kind.ENTRY, Map.of(), Set.of());
+        Expression time = optional(e, "time", scope);
+        Expression exit = optional(e, "exit", scope);
+        Map<String, MainEntry.MacroArg> args = new LinkedHashMap<>();
+        boolean ok = true;
+        for (String m : b.macros()) {
+            XElement.XAttr a = e.attr(m);
+            if (a == null) {
+                d.error(e.pos(), "<" + e.name() + "> must give a value for macro '" + m + "'");
+                ok = false;
+                continue;
+            }
+            MainEntry.MacroArg arg = info.groupMacros().contains(m) ? groupArg(m, a) : exprArg(m, a, scope);
+            if (arg == null) {
+                ok = false;
+            } else {
+                args.put(m, arg);
+            }
+        }
+        if (!ok) {
+            return null;
+        }
+        checks.checkBehavior(b.name(), info.instances(), args);
+        return new MainEntry(b.name(), time, exit, new ArrayList<>(args.values()), e.pos());
+    }
+
+    private Expression optional(XElement e, String attr, Scope scope) {
+        XText t = Attrs.optional(e, attr);
+        if (t == null) {
+            return null;
+        }
+        ExprCompiler.Result r = ExprCompiler.compile(t, scope, d);
+        return r == null ? null : r.expression();
+    }
+
+    private MainEntry.MacroArg groupArg(String macro, XElement.XAttr a) {
+        String v = a.value().value().trim();
+        boolean mirror = v.startsWith("!");
+        String base = mirror ? v.substring(1).trim() : v;
+        if (robot != null && robot.group(base).isEmpty()) {
+            List<String> known = robot.groups().stream().map(g -> g.name()).toList();
+            d.error(a.value().pos(), "macro '" + macro + "' names a group, but '" + base + "' is not a group"
+                    + Names.suggest(base, known));
+            return null;
+        }
+        return new MainEntry.MacroArg(macro, v, base, mirror, null, a.value().pos());
+    }
+
+    private MainEntry.MacroArg exprArg(String macro, XElement.XAttr a, Scope scope) {
+        ExprCompiler.Result r = ExprCompiler.compile(a.value(), scope, d);
+        return r == null ? null : new MainEntry.MacroArg(macro, a.value().value().trim(), null, false, r.expression(), a.value().pos());
+    }
+}

@@ -1,0 +1,289 @@
+package org.parpe.core.load;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeSet;
+import org.parpe.core.diag.DiagnosticSink;
+import org.parpe.core.diag.SourcePos;
+import org.parpe.core.expr.ExprCompiler;
+import org.parpe.core.expr.Expression;
+import org.parpe.core.expr.Names;
+import org.parpe.core.expr.Scope;
+import org.parpe.core.model.Group;
+import org.parpe.core.model.Robot;
+import org.parpe.core.model.SensorDecl;
+import org.parpe.core.xml.SourceText;
+import org.parpe.core.xml.XElement;
+import org.parpe.core.xml.XText;
+import org.parpe.core.xml.XmlReader;
+
+/** Resolves {@code <robot>} (PARSL.md §2, §13 rule 11): groups, modules and sensors. */
+final class RobotResolver {
+    private static final List<String> SENSOR_TYPES = List.of("angle", "accel", "touch");
+
+    private final DiagnosticSink d;
+    private final NameRegistry names;
+    private final Scope paramScope;
+    private final Map<String, Group> groups = new LinkedHashMap<>();
+    private final TreeSet<Integer> modules = new TreeSet<>();
+    private final List<SensorDecl> sensors = new ArrayList<>();
+    /** Groups defined with errors: uses of them are not reported again. */
+    final java.util.Set<String> broken = new java.util.HashSet<>();
+
+    RobotResolver(DiagnosticSink d, NameRegistry names, Scope paramScope) {
+        this.d = d;
+        this.names = names;
+        this.paramScope = paramScope;
+    }
+
+    /** Resolves the robot section of {@code main} (or its file); returns {@code null} if absent. */
+    Robot resolve(XElement robot, int order, Path mainFile, SourcePos rootPos) {
+        if (robot == null) {
+            d.error(rootPos, "the program has no <robot> section (it is required)");
+            return null;
+        }
+        Attrs.allow(robot, d, List.of("file"));
+        Attrs.noText(robot, d);
+        XText file = Attrs.optional(robot, "file");
+        XElement body = robot;
+        String fileName = "";
+        if (file != null) {
+            if (!robot.children().isEmpty()) {
+                d.error(robot.pos(), "<robot file=...> cannot also contain elements");
+                return null;
+            }
+            Path p = Assembly.resolve(mainFile, file.value().trim());
+            String text = Assembly.read(p);
+            if (text == null) {
+                d.error(file.pos(), "cannot read robot file '" + p + "'");
+                return null;
+            }
+            body = XmlReader.read(new SourceText(p.toString(), text), d);
+            if (body == null) {
+                return null;
+            }
+            if (!body.name().equals("robot")) {
+                d.error(body.pos(), "a robot file's root element must be <robot>, got <" + body.name() + ">");
+                return null;
+            }
+            Attrs.allow(body, d, List.of());
+            Attrs.noText(body, d);
+            fileName = file.value().trim();
+        }
+        return resolveBody(body, order, file == null ? null : robot.pos(), fileName);
+    }
+
+    private Robot resolveBody(XElement body, int order, SourcePos anchor, String fileName) {
+        XElement structure = null;
+        XElement sensorsEl = null;
+        for (XElement c : body.children()) {
+            switch (c.name()) {
+                case "structure":
+                    structure = duplicate(structure, c);
+                    break;
+                case "sensors":
+                    sensorsEl = duplicate(sensorsEl, c);
+                    break;
+                case "actuators":
+                    actuators(c);
+                    break;
+                default:
+                    d.error(c.pos(), "unknown element <" + c.name() + "> in <robot> (expected structure, sensors, actuators)");
+            }
+        }
+        if (structure == null) {
+            d.error(body.pos(), "<robot> needs a <structure> with the robot's groups");
+            return null;
+        }
+        preScan(structure);
+        structure(structure, order, anchor);
+        if (!groups.containsKey("all")) {
+            groups.put("all", new Group("all", new ArrayList<>(modules), "", true, body.pos()));
+        }
+        if (sensorsEl != null) {
+            sensors(sensorsEl);
+        }
+        return new Robot(new ArrayList<>(groups.values()), new ArrayList<>(modules), sensors, fileName, body.pos());
+    }
+
+    private XElement duplicate(XElement previous, XElement c) {
+        if (previous != null) {
+            d.error(c.pos(), "<" + c.name() + "> appears twice in <robot>");
+            return previous;
+        }
+        Attrs.allow(c, d, List.of());
+        Attrs.noText(c, d);
+        return c;
+    }
+
+    private void actuators(XElement a) {
+        Attrs.allow(a, d, List.of());
+        Attrs.noText(a, d);
+        for (XElement c : a.children()) {
+            d.error(c.pos(), "actuator '" + c.name() + "' is not implemented (no actuator types are available)");
+        }
+    }
+
+    private void structure(XElement s, int order, SourcePos anchor) {
+        int index = 0;
+        for (XElement g : s.children()) {
+            index++;
+            Attrs.allow(g, d, List.of("elements"));
+            Attrs.noText(g, d);
+            Attrs.noChildren(g, d);
+            String name = g.name();
+            boolean ok = Attrs.validName(name, "group", g.pos(), d);
+            names.define(name, "group", Declarations.order(order, index, 0), anchor == null ? g.pos() : anchor, g.pos(), "");
+            XText elements = Attrs.require(g, "elements", d);
+            if (elements == null || !ok || groups.containsKey(name)) {
+                continue;
+            }
+            List<Integer> ids = elements(elements, true, "group '" + name + "'");
+            if (ids != null) {
+                groups.put(name, new Group(name, ids, elements.value(), false, g.pos()));
+                modules.addAll(ids);
+            } else {
+                broken.add(name);
+            }
+        }
+    }
+
+    /** Expands an element list; {@code structure} selects the rules of §13 rule 11. */
+    private List<Integer> elements(XText text, boolean structure, String what) {
+        List<Integer> out = new ArrayList<>();
+        boolean ok = true;
+        for (XText item : ListItem.split(text, ',')) {
+            String v = item.value();
+            List<Integer> ids;
+            if (v.isEmpty()) {
+                d.error(item.pos(), "empty item in the elements of " + what);
+                ok = false;
+                continue;
+            } else if (v.matches("\\d+")) {
+                ids = List.of(Integer.parseInt(v));
+            } else if (v.contains("..")) {
+                ids = range(item);
+            } else {
+                ids = groupRef(item, structure);
+            }
+            if (ids == null) {
+                ok = false;
+                continue;
+            }
+            for (int id : ids) {
+                if (out.contains(id)) {
+                    d.error(item.pos(), "module " + id + " appears twice in " + what);
+                    ok = false;
+                } else {
+                    out.add(id);
+                }
+            }
+        }
+        if (ok && out.isEmpty()) {
+            d.error(text.pos(), what + " is empty");
+            return null;
+        }
+        return ok ? out : null;
+    }
+
+    private List<Integer> range(XText item) {
+        int dots = item.value().indexOf("..");
+        Integer a = rangeEnd(ListItem.trim(item, 0, dots));
+        Integer b = rangeEnd(ListItem.trim(item, dots + 2, item.value().length()));
+        if (a == null || b == null) {
+            return null;
+        }
+        List<Integer> ids = new ArrayList<>();
+        int step = a <= b ? 1 : -1;
+        for (int i = a; ; i += step) {
+            ids.add(i);
+            if (i == b) {
+                break;
+            }
+        }
+        return ids;
+    }
+
+    private Integer rangeEnd(XText t) {
+        ExprCompiler.Result r = ExprCompiler.compile(t, paramScope, d);
+        if (r == null) {
+            return null;
+        }
+        Expression e = r.expression();
+        if (!e.isConstant()) {
+            d.error(t.pos(), "range ends must be whole numbers over parameters; '" + t.value() + "' is not");
+            return null;
+        }
+        double v = e.eval(null);
+        if (v != Math.rint(v) || v < 0 || v > 1_000_000) {
+            d.error(t.pos(), "range end '" + t.value() + "' must be a whole number >= 0, got " + v);
+            return null;
+        }
+        return (int) v;
+    }
+
+    private List<Integer> groupRef(XText item, boolean structure) {
+        String name = item.value();
+        if (name.equals("all") && structure && !groups.containsKey("all")) {
+            d.error(item.pos(), "'all' cannot be used inside <structure> (it is every module of the structure)");
+            return null;
+        }
+        Group g = groups.get(name);
+        if (g != null) {
+            return g.modules();
+        }
+        if (broken.contains(name)) {
+            return null;
+        }
+        if (!Attrs.isName(name)) {
+            d.error(item.pos(), "'" + name + "' is not a module ID, a range a..b or a group name");
+        } else if (structure && laterNames.contains(name)) {
+            d.error(item.pos(), "group '" + name + "' is defined later in <structure>; a group may only use groups defined before it");
+        } else {
+            d.error(item.pos(), "group '" + name + "' is not defined" + Names.suggest(name, groups.keySet()));
+        }
+        return null;
+    }
+
+    private final java.util.Set<String> laterNames = new java.util.HashSet<>();
+
+    /** Remembers every group name of the structure, so uses of later groups get a clear message. */
+    private void preScan(XElement structure) {
+        structure.children().forEach(g -> laterNames.add(g.name()));
+    }
+
+    private void sensors(XElement s) {
+        java.util.Set<String> seen = new java.util.HashSet<>();
+        for (XElement e : s.children()) {
+            Attrs.noText(e, d);
+            Attrs.noChildren(e, d);
+            if (!SENSOR_TYPES.contains(e.name())) {
+                d.error(e.pos(), "sensor '" + e.name() + "' is not implemented; available: angle, accel, touch");
+                continue;
+            }
+            Attrs.allow(e, d, List.of("elements"));
+            if (!seen.add(e.name())) {
+                d.error(e.pos(), "sensor '" + e.name() + "' is declared twice in <sensors>");
+                continue;
+            }
+            XText elements = Attrs.require(e, "elements", d);
+            List<Integer> ids = elements == null ? null : elements(elements, false, "sensor '" + e.name() + "'");
+            if (ids == null) {
+                continue;
+            }
+            boolean ok = true;
+            for (int id : ids) {
+                if (!modules.contains(id)) {
+                    d.error(elements.pos(), "module " + id + " carries a " + e.name() + " sensor but is not in <structure>");
+                    ok = false;
+                }
+            }
+            if (ok) {
+                sensors.add(new SensorDecl(e.name(), ids, elements.value(), e.pos()));
+            }
+        }
+    }
+}

@@ -1,0 +1,244 @@
+package org.parpe.core.load;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.parpe.core.diag.DiagnosticSink;
+import org.parpe.core.expr.ExprCompiler;
+import org.parpe.core.expr.Expression;
+import org.parpe.core.expr.Names;
+import org.parpe.core.expr.Scope;
+import org.parpe.core.model.Automaton;
+import org.parpe.core.model.Interp;
+import org.parpe.core.model.StateDef;
+import org.parpe.core.model.Timing;
+import org.parpe.core.xml.XElement;
+import org.parpe.core.xml.XText;
+
+/** Resolves {@code <states>} (PARSL.md §5) and {@code <automata>} (§6). */
+final class StateResolver {
+    final Map<String, StateDef> states = new LinkedHashMap<>();
+    final Map<String, Automaton> automata = new LinkedHashMap<>();
+    /** Local sensor references of each automaton (its states' and times' expressions). */
+    final Map<String, List<ExprCompiler.LocalUse>> locals = new HashMap<>();
+    private final Map<String, List<ExprCompiler.LocalUse>> stateLocals = new HashMap<>();
+    private final Map<String, XElement> stateElements = new HashMap<>();
+    /** Names defined with errors: uses of them are not reported again. */
+    final java.util.Set<String> broken = new java.util.HashSet<>();
+    private final DiagnosticSink d;
+    private final Scope scope;
+
+    StateResolver(DiagnosticSink d, Scope moduleScope) {
+        this.d = d;
+        this.scope = moduleScope;
+    }
+
+    void states(List<Assembly.Section> sections) {
+        for (Assembly.Section s : sections) {
+            Attrs.allow(s.element(), d, List.of());
+            Attrs.noText(s.element(), d);
+            for (XElement e : s.element().children()) {
+                state(e, s);
+            }
+        }
+    }
+
+    private void state(XElement e, Assembly.Section s) {
+        Attrs.allow(e, d, List.of("angles", "interp"));
+        Attrs.noText(e, d);
+        Attrs.noChildren(e, d);
+        String name = e.name();
+        boolean ok = Attrs.validName(name, "state", e.pos(), d);
+        if (stateElements.containsKey(name)) {
+            d.error(s.reportAt(e.pos()), "state '" + name + "'" + (s.anchor() == null ? "" : " (defined at " + e.pos() + ")")
+                    + " is already defined at " + stateElements.get(name).pos());
+            return;
+        }
+        stateElements.put(name, e);
+        XText angles = Attrs.require(e, "angles", d);
+        Interp interp = Interp.LINEAR;
+        XText it = Attrs.optional(e, "interp");
+        if (it != null) {
+            try {
+                interp = Interp.valueOf(it.value().trim().toUpperCase(java.util.Locale.ROOT));
+            } catch (IllegalArgumentException ex) {
+                d.error(it.pos(), "interp must be linear, step or smooth, got '" + it.value() + "'");
+                ok = false;
+            }
+        }
+        List<ExprCompiler.LocalUse> uses = new ArrayList<>();
+        List<Expression> list = angles == null ? null : expressions(angles, uses, "state '" + name + "'");
+        if (ok && list != null) {
+            states.put(name, new StateDef(name, list, interp, e.pos()));
+            stateLocals.put(name, uses);
+        } else {
+            broken.add(name);
+        }
+    }
+
+    /** Compiles a comma list of angle expressions; {@code null} after errors. */
+    private List<Expression> expressions(XText text, List<ExprCompiler.LocalUse> uses, String what) {
+        List<Expression> out = new ArrayList<>();
+        boolean ok = true;
+        for (XText item : ListItem.split(text, ',')) {
+            if (item.value().isEmpty()) {
+                d.error(item.pos(), "empty item in the angles of " + what);
+                ok = false;
+                continue;
+            }
+            ExprCompiler.Result r = ExprCompiler.compile(item, scope, d);
+            if (r == null) {
+                ok = false;
+            } else {
+                out.add(r.expression());
+                uses.addAll(r.locals());
+            }
+        }
+        return ok ? out : null;
+    }
+
+    void automata(List<Assembly.Section> sections) {
+        for (Assembly.Section s : sections) {
+            Attrs.allow(s.element(), d, List.of());
+            Attrs.noText(s.element(), d);
+            for (XElement e : s.element().children()) {
+                automaton(e, s);
+            }
+        }
+    }
+
+    private void automaton(XElement e, Assembly.Section s) {
+        Attrs.allow(e, d, List.of("states", "times"));
+        Attrs.noChildren(e, d);
+        String name = e.name();
+        if (!Attrs.validName(name, "automaton", e.pos(), d)) {
+            return;
+        }
+        if (automata.containsKey(name) || locals.containsKey(name)) {
+            d.error(s.reportAt(e.pos()), "automaton '" + name + "'" + (s.anchor() == null ? "" : " (defined at " + e.pos() + ")")
+                    + " is already defined at " + (automata.containsKey(name) ? automata.get(name).pos() : "an earlier place"));
+            return;
+        }
+        XText statesAttr = Attrs.optional(e, "states");
+        boolean table = !e.texts().isEmpty();
+        List<ExprCompiler.LocalUse> uses = new ArrayList<>();
+        locals.put(name, uses);
+        broken.add(name);
+        List<StateDef> list;
+        if (statesAttr != null && table) {
+            d.error(e.pos(), "automaton '" + name + "' has both states=\"...\" and gait-table rows; use one of them");
+            return;
+        } else if (statesAttr != null) {
+            list = stateList(statesAttr, uses);
+        } else if (table) {
+            list = rows(e, name, uses);
+        } else {
+            d.error(e.pos(), "automaton '" + name + "' needs states=\"...\" or gait-table rows inside it");
+            return;
+        }
+        if (list == null) {
+            return;
+        }
+        XText timesAttr = Attrs.optional(e, "times");
+        List<Timing> times = timesAttr == null ? defaultTimes(list.size()) : times(timesAttr, list.size(), uses, name);
+        if (times != null) {
+            automata.put(name, new Automaton(name, list, times, table, timesAttr == null ? null : timesAttr.value(), e.pos()));
+            broken.remove(name);
+        }
+    }
+
+    private List<StateDef> stateList(XText attr, List<ExprCompiler.LocalUse> uses) {
+        List<StateDef> out = new ArrayList<>();
+        boolean ok = true;
+        for (XText item : ListItem.split(attr, ',')) {
+            StateDef st = states.get(item.value());
+            if (item.value().isEmpty()) {
+                d.error(item.pos(), "empty item in states");
+                ok = false;
+            } else if (st == null && broken.contains(item.value())) {
+                ok = false;
+            } else if (st == null) {
+                d.error(item.pos(), "state '" + item.value() + "' is not defined in <states>" + Names.suggest(item.value(), states.keySet()));
+                ok = false;
+            } else {
+                out.add(st);
+                uses.addAll(stateLocals.getOrDefault(st.name(), List.of()));
+            }
+        }
+        return ok ? out : null;
+    }
+
+    private List<StateDef> rows(XElement e, String name, List<ExprCompiler.LocalUse> uses) {
+        List<StateDef> out = new ArrayList<>();
+        boolean ok = true;
+        for (XText text : e.texts()) {
+            for (XText line : ListItem.split(text, '\n')) {
+                for (XText row : ListItem.split(line, ';')) {
+                    if (row.value().isEmpty()) {
+                        continue;
+                    }
+                    String rowName = name + "[" + out.size() + "]";
+                    List<Expression> angles = expressions(row, uses, "row " + out.size() + " of gait table '" + name + "'");
+                    if (angles == null) {
+                        ok = false;
+                        out.add(null);
+                    } else {
+                        out.add(new StateDef(rowName, angles, Interp.LINEAR, row.pos()));
+                    }
+                }
+            }
+        }
+        return ok ? out : null;
+    }
+
+    private static List<Timing> defaultTimes(int n) {
+        List<Timing> out = new ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            out.add(new Timing(Expression.constant(1, "1"), null));
+        }
+        return out;
+    }
+
+    private List<Timing> times(XText attr, int n, List<ExprCompiler.LocalUse> uses, String name) {
+        List<XText> items = ListItem.split(attr, ',');
+        if (items.size() != n) {
+            d.error(attr.pos(), "times of automaton '" + name + "' has " + items.size() + " entries but it has "
+                    + n + (n == 1 ? " state" : " states"));
+            return null;
+        }
+        List<Timing> out = new ArrayList<>();
+        boolean ok = true;
+        for (XText item : items) {
+            String v = item.value();
+            XText t = item;
+            XText cond = null;
+            int open = v.indexOf('[');
+            if (open >= 0) {
+                if (!v.endsWith("]")) {
+                    d.error(item.pos(), "a time with an exit condition is written T[E], got '" + v + "'");
+                    ok = false;
+                    continue;
+                }
+                t = ListItem.trim(item, 0, open);
+                cond = ListItem.trim(item, open + 1, v.length() - 1);
+            }
+            ExprCompiler.Result tr = t.value().isEmpty() ? null : ExprCompiler.compile(t, scope, d);
+            if (t.value().isEmpty()) {
+                d.error(item.pos(), "empty duration in times of automaton '" + name + "'");
+            }
+            ExprCompiler.Result cr = cond == null ? null : ExprCompiler.compile(cond, scope, d);
+            if (tr == null || cond != null && cr == null) {
+                ok = false;
+                continue;
+            }
+            uses.addAll(tr.locals());
+            if (cr != null) {
+                uses.addAll(cr.locals());
+            }
+            out.add(new Timing(tr.expression(), cr == null ? null : cr.expression()));
+        }
+        return ok ? out : null;
+    }
+}

@@ -1,0 +1,440 @@
+package org.parpe.core.run;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.SplittableRandom;
+import java.util.concurrent.ConcurrentLinkedQueue;
+import org.parpe.core.diag.DiagnosticSink;
+import org.parpe.core.diag.SourcePos;
+import org.parpe.core.expr.EvalContext;
+import org.parpe.core.expr.EvalException;
+import org.parpe.core.expr.Expression;
+import org.parpe.core.model.Conditional;
+import org.parpe.core.model.Control;
+import org.parpe.core.model.MainDef;
+import org.parpe.core.model.MainEntry;
+import org.parpe.core.model.Program;
+
+/**
+ * The PARSL scheduler (PARSL.md §7, §11, §13). Stepped one tick at a time by whoever owns the
+ * clock; reads a {@link SensorSource} at the start of each tick and writes every
+ * {@link JointSink} at its end. Confined to one thread, except for {@link #setControl},
+ * {@link #setControlWord} and {@link #requestStop}, which queue commands drained at the next
+ * tick boundary. Ticks do not allocate once the run has started.
+ */
+public final class Engine implements Evaluator {
+    private static final double EPS = 1e-9;
+
+    private final Program program;
+    private final double dt;
+    private final int[] ids;
+    private final double[] commanded;
+    private final double[] next;
+    private final boolean[] driven;
+    private final int[] driverOf;
+    private final SensorTable sensors;
+    private final double[] overrides;
+    private final EvalContext ctx = new EvalContext();
+    private final List<JointSink> sinks = new ArrayList<>();
+    private final ConcurrentLinkedQueue<Runnable> commands = new ConcurrentLinkedQueue<>();
+    private final Stimulus[] stimuli;
+    private final EntryPlan[] plans;
+    private final long mainCycles;
+    private final Set<Long> warnedPairs = new HashSet<>();
+    private SensorSource source;
+    private DiagnosticSink warnings = d -> { };
+    private int nextStimulus;
+    private int entry = -1;
+    private long mainCycle;
+    private long entryStart;
+    private long tick = -1;
+    private boolean ended;
+    private volatile boolean stopRequested;
+
+    /** Prepares a run of {@code program}; nothing happens until {@link #step()}. */
+    public Engine(Program program, RunOptions options) {
+        this.program = program;
+        this.dt = options.dt();
+        this.ids = program.moduleIds();
+        this.commanded = new double[ids.length];
+        this.next = new double[ids.length];
+        this.driven = new boolean[ids.length];
+        this.driverOf = new int[ids.length];
+        this.sensors = new SensorTable(ids);
+        this.overrides = new double[ids.length * Channel.count()];
+        Arrays.fill(overrides, Double.NaN);
+        List<Stimulus> sorted = new ArrayList<>(options.stimuli());
+        sorted.sort((a, b) -> Double.compare(a.time(), b.time()));
+        this.stimuli = sorted.toArray(new Stimulus[0]);
+        ctx.sensors = sensors;
+        ctx.random = new SplittableRandom(options.seed());
+        ctx.controls = new double[program.controls().size()];
+        for (int i = 0; i < ctx.controls.length; i++) {
+            ctx.controls[i] = program.controls().get(i).value();
+        }
+        MainDef main = program.main();
+        this.mainCycles = main == null ? 0 : main.cycles();
+        this.plans = main == null ? new EntryPlan[0]
+                : main.entries().stream().map(e -> new EntryPlan(program, e, ids)).toArray(EntryPlan[]::new);
+    }
+
+    /** Adds a sink; call before {@link #start()}. */
+    public void addSink(JointSink sink) {
+        sinks.add(sink);
+    }
+
+    /** Sets where measured sensor readings come from (none: a plain headless run). */
+    public void setSensorSource(SensorSource s) {
+        this.source = s;
+    }
+
+    /** Where run-time warnings go (overlapping instances under {@code <if>}). */
+    public void setWarningSink(DiagnosticSink sink) {
+        this.warnings = sink;
+    }
+
+    /** The program being run. */
+    public Program program() {
+        return program;
+    }
+
+    /** Module IDs, ascending: the order of setpoint arrays. */
+    public int[] moduleIds() {
+        return ids.clone();
+    }
+
+    /** The tick length, seconds. */
+    public double dt() {
+        return dt;
+    }
+
+    /** The last tick run (−1 before the first). */
+    public long tick() {
+        return tick;
+    }
+
+    /** The time of the last tick run. */
+    public double time() {
+        return Math.max(0, tick) * dt;
+    }
+
+    /** Whether {@code <main>} has ended (or the program has none). */
+    public boolean ended() {
+        return ended;
+    }
+
+    /** Whether a stop was requested (checked by run loops). */
+    public boolean stopRequested() {
+        return stopRequested;
+    }
+
+    /** Asks the run loop to stop at the next tick boundary; safe from any thread. */
+    public void requestStop() {
+        stopRequested = true;
+    }
+
+    /** Tells every sink that the run starts. */
+    public void start() {
+        RunInfo info = new RunInfo(program, ids.clone(), dt);
+        for (JointSink s : sinks) {
+            s.start(info);
+        }
+    }
+
+    /** Tells every sink that the run ended. */
+    public void finish(RunOutcome outcome) {
+        for (JointSink s : sinks) {
+            s.finish(outcome);
+        }
+    }
+
+    /**
+     * Sets a slider or text control (any thread; applied at the next tick).
+     *
+     * @throws IllegalArgumentException for an unknown control or a slider value out of range
+     */
+    public void setControl(String name, double value) {
+        int i = controlIndex(name);
+        Control c = program.controls().get(i);
+        if (c.type() == Control.ControlType.RADIO) {
+            throw new IllegalArgumentException("control '" + name + "' is a radio; set one of its words");
+        }
+        if (!Double.isFinite(value) || c.min() != null && (value < c.min() || value > c.max())) {
+            throw new IllegalArgumentException("control '" + name + "' must be within [" + c.min() + ", " + c.max()
+                    + "], got " + value);
+        }
+        commands.add(() -> ctx.controls[i] = value);
+    }
+
+    /** Selects a word of a radio control (any thread; applied at the next tick). */
+    public void setControlWord(String name, String word) {
+        int i = controlIndex(name);
+        Control c = program.controls().get(i);
+        if (!c.words().contains(word)) {
+            throw new IllegalArgumentException("radio '" + name + "' has no word '" + word + "' (words: "
+                    + String.join(", ", c.words()) + ")");
+        }
+        double code = program.radioWords().get(word);
+        commands.add(() -> ctx.controls[i] = code);
+    }
+
+    /** The current value of a control (engine thread). */
+    public double control(String name) {
+        return ctx.controls[controlIndex(name)];
+    }
+
+    private int controlIndex(String name) {
+        for (int i = 0; i < program.controls().size(); i++) {
+            if (program.controls().get(i).name().equals(name)) {
+                return i;
+            }
+        }
+        throw new IllegalArgumentException("unknown control '" + name + "'");
+    }
+
+    /** The angles emitted at the last tick, by module index (engine thread; do not modify). */
+    public double[] commanded() {
+        return commanded;
+    }
+
+    /** A snapshot of what the engine is doing (engine thread). */
+    public EngineStatus status() {
+        int count = 0;
+        for (boolean b : driven) {
+            count += b ? 1 : 0;
+        }
+        int[] d = new int[count];
+        for (int i = 0, j = 0; i < ids.length; i++) {
+            if (driven[i]) {
+                d[j++] = ids[i];
+            }
+        }
+        String name = entry >= 0 && entry < plans.length ? plans[entry].behavior.name() : "";
+        return new EngineStatus(tick, time(), name, entry, mainCycle, d, ended);
+    }
+
+    /**
+     * Runs the next tick (the first call runs tick 0) and emits its setpoints.
+     *
+     * @return whether the program goes on after this tick
+     * @throws ScriptRuntimeError on a run-time error of the script (nothing is emitted)
+     */
+    public boolean step() {
+        if (ended) {
+            return false;
+        }
+        tick++;
+        ctx.time = tick * dt;
+        Runnable cmd;
+        while ((cmd = commands.poll()) != null) {
+            cmd.run();
+        }
+        applyStimuli();
+        readSensors();
+        Arrays.fill(driven, false);
+        if (tick == 0 && source != null) {
+            for (int i = 0; i < ids.length; i++) {
+                commanded[i] = sensors.get(i, Channel.ANGLE);
+            }
+        }
+        System.arraycopy(commanded, 0, next, 0, ids.length);
+        if (tick == 0) {
+            if (plans.length == 0 || mainCycles == 0) {
+                ended = true;
+            } else {
+                startEntry(0);
+            }
+        } else if (entryEnds()) {
+            nextEntry();
+        } else {
+            runInstances(true);
+        }
+        emit();
+        return !ended;
+    }
+
+    private void applyStimuli() {
+        while (nextStimulus < stimuli.length && stimuli[nextStimulus].time() <= ctx.time + EPS) {
+            Stimulus s = stimuli[nextStimulus++];
+            if (s.target() == Stimulus.Target.CONTROL) {
+                ctx.controls[s.index()] = s.value();
+            } else {
+                overrides[s.index()] = s.value();
+            }
+        }
+    }
+
+    private void readSensors() {
+        if (source != null) {
+            source.read(ctx.time, sensors);
+        } else {
+            for (int i = 0; i < ids.length; i++) {
+                sensors.set(i, Channel.ANGLE, commanded[i]);
+            }
+        }
+        for (int slot = 0; slot < overrides.length; slot++) {
+            if (!Double.isNaN(overrides[slot])) {
+                sensors.setSlot(slot, overrides[slot]);
+            }
+        }
+    }
+
+    private boolean entryEnds() {
+        EntryPlan plan = plans[entry];
+        ctx.btime = tick * dt - entryStart * dt;
+        MainEntry e = plan.entry;
+        if (e.time() != null && ctx.btime >= eval(e.time()) - EPS) {
+            return true;
+        }
+        if (e.exit() != null && eval(e.exit()) != 0) {
+            return true;
+        }
+        if (plan.runs.length == 0) {
+            return false;
+        }
+        for (InstanceRun r : plan.runs) {
+            if (!r.finished()) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private void nextEntry() {
+        int next = entry + 1;
+        if (next >= plans.length) {
+            mainCycle++;
+            if (mainCycles != MainDef.FOREVER && mainCycle >= mainCycles) {
+                ended = true;
+                return;
+            }
+            next = 0;
+        }
+        startEntry(next);
+    }
+
+    private void startEntry(int index) {
+        entry = index;
+        entryStart = tick;
+        ctx.btime = 0;
+        EntryPlan plan = plans[index];
+        for (MainEntry.MacroArg a : plan.entry.macros()) {
+            if (a.value() != null) {
+                plan.macros[plan.behavior.macros().indexOf(a.name())] = eval(a.value());
+            }
+        }
+        for (InstanceRun r : plan.runs) {
+            r.started = false;
+            r.wasActive = false;
+        }
+        runInstances(false);
+    }
+
+    private void runInstances(boolean advance) {
+        EntryPlan plan = plans[entry];
+        ctx.macros = plan.macros;
+        ctx.btime = tick * dt - entryStart * dt;
+        for (InstanceRun r : plan.runs) {
+            if (r.finished()) {
+                continue;
+            }
+            boolean active = conditionsHold(r);
+            ctx.count = r.n;
+            if (!r.started) {
+                if (ctx.btime < evalOr(r.model.start(), 0) - EPS) {
+                    continue;
+                }
+                r.init(this, evalOr(r.model.phase(), 0), evalOr(r.model.offset(), 0),
+                        evalOr(r.model.cycles(), Double.POSITIVE_INFINITY), commanded);
+                r.wasActive = active;
+                if (active) {
+                    for (int k = 0; k < r.n; k++) {
+                        if (!r.fin[k]) {
+                            r.hold(this, k);
+                            drive(r, k);
+                        }
+                    }
+                }
+                continue;
+            }
+            if (!active) {
+                r.wasActive = false;
+                continue;
+            }
+            if (!r.wasActive) {
+                r.reanchor(commanded);
+                r.wasActive = true;
+            }
+            r.prepareTick(this, r.model.period());
+            for (int k = 0; k < r.n; k++) {
+                if (!r.fin[k]) {
+                    r.advance(this, k, dt, commanded);
+                    drive(r, k);
+                }
+            }
+        }
+    }
+
+    private boolean conditionsHold(InstanceRun r) {
+        for (Conditional c : r.conditions) {
+            if (eval(c.condition()) == 0) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private double evalOr(Expression e, double fallback) {
+        return e == null ? fallback : eval(e);
+    }
+
+    private void drive(InstanceRun r, int k) {
+        int m = r.mod[k];
+        if (driven[m] && driverOf[m] != r.docIndex) {
+            warnOverlap(driverOf[m], r, m);
+        }
+        driven[m] = true;
+        driverOf[m] = r.docIndex;
+        next[m] = r.out[k];
+    }
+
+    private void warnOverlap(int earlier, InstanceRun later, int module) {
+        long key = (long) entry << 40 | (long) earlier << 20 | later.docIndex;
+        if (warnedPairs.add(key)) {
+            InstanceRun first = plans[entry].runs[earlier];
+            warnings.warning(later.model.pos(), "instances '" + first.model.automaton() + "' on group '"
+                    + first.model.group() + "' (line " + first.model.pos().line() + ") and '" + later.model.automaton()
+                    + "' on group '" + later.model.group() + "' both drive module " + ids[module] + " at t="
+                    + String.format(java.util.Locale.ROOT, "%.6f", ctx.time) + " s; the later one wins");
+        }
+    }
+
+    private void emit() {
+        System.arraycopy(next, 0, commanded, 0, ids.length);
+        for (JointSink s : sinks) {
+            s.accept(tick, ctx.time, commanded);
+        }
+    }
+
+    @Override
+    public EvalContext ctx() {
+        return ctx;
+    }
+
+    @Override
+    public double eval(Expression e) {
+        try {
+            return e.eval(ctx);
+        } catch (EvalException ex) {
+            throw error(e.pos(), ex.getMessage() + " in '" + e.text() + "'");
+        }
+    }
+
+    @Override
+    public ScriptRuntimeError error(SourcePos pos, String message) {
+        return new ScriptRuntimeError(pos, message, ctx.time);
+    }
+}

@@ -1,0 +1,61 @@
+package org.parpe.core.run;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import org.parpe.core.model.Automaton;
+import org.parpe.core.model.Behavior;
+import org.parpe.core.model.BehaviorItem;
+import org.parpe.core.model.Conditional;
+import org.parpe.core.model.Group;
+import org.parpe.core.model.Instance;
+import org.parpe.core.model.MainEntry;
+import org.parpe.core.model.Program;
+
+/** One {@code <main>} entry made ready to run: its instances with groups resolved and macro slots. */
+final class EntryPlan {
+    final MainEntry entry;
+    final Behavior behavior;
+    final InstanceRun[] runs;
+    final double[] macros;
+
+    EntryPlan(Program program, MainEntry entry, int[] moduleIds) {
+        this.entry = entry;
+        this.behavior = program.behavior(entry.behavior()).orElseThrow();
+        this.macros = new double[behavior.macros().size()];
+        List<InstanceRun> list = new ArrayList<>();
+        collect(program, behavior.items(), new ArrayList<>(), list, moduleIds);
+        this.runs = list.toArray(new InstanceRun[0]);
+    }
+
+    private void collect(Program program, List<BehaviorItem> items, List<Conditional> conds, List<InstanceRun> out,
+                         int[] moduleIds) {
+        for (BehaviorItem item : items) {
+            if (item instanceof Conditional) {
+                Conditional c = (Conditional) item;
+                conds.add(c);
+                collect(program, c.items(), conds, out, moduleIds);
+                conds.remove(conds.size() - 1);
+                continue;
+            }
+            Instance i = (Instance) item;
+            String g = i.group();
+            boolean mirror = g.startsWith("!");
+            String base = mirror ? g.substring(1).trim() : g;
+            for (MainEntry.MacroArg a : entry.macros()) {
+                if (a.name().equals(base) && a.group() != null) {
+                    base = a.group();
+                    mirror ^= a.mirror();
+                }
+            }
+            Group group = program.group(base).orElseThrow();
+            int[] ids = group.modules().stream().mapToInt(Integer::intValue).toArray();
+            int[] mod = new int[ids.length];
+            for (int k = 0; k < ids.length; k++) {
+                mod[k] = Arrays.binarySearch(moduleIds, ids[k]);
+            }
+            Automaton a = program.automaton(i.automaton()).orElseThrow();
+            out.add(new InstanceRun(i, a, conds.toArray(new Conditional[0]), out.size(), mod, ids, mirror));
+        }
+    }
+}

@@ -1,0 +1,17 @@
+package org.parpe.core.run;
+
+import org.parpe.core.diag.SourcePos;
+import org.parpe.core.expr.EvalContext;
+import org.parpe.core.expr.Expression;
+
+/** Evaluates expressions for the scheduler, turning failures into located run-time errors. */
+interface Evaluator {
+    /** The shared evaluation context. */
+    EvalContext ctx();
+
+    /** Evaluates {@code e}; a non-finite value becomes a {@link ScriptRuntimeError}. */
+    double eval(Expression e);
+
+    /** A run-time error at {@code pos} during the current tick. */
+    ScriptRuntimeError error(SourcePos pos, String message);
+}

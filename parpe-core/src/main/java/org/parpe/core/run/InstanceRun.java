@@ -1,0 +1,294 @@
+package org.parpe.core.run;
+
+import org.parpe.core.expr.EvalContext;
+import org.parpe.core.expr.Expression;
+import org.parpe.core.model.Automaton;
+import org.parpe.core.model.Conditional;
+import org.parpe.core.model.Instance;
+import org.parpe.core.model.Interp;
+import org.parpe.core.model.StateDef;
+
+/**
+ * The run-time state of one automaton instance of one {@code <main>} entry: per module the
+ * state index, progress, entry angle and progress, cycle position (PARSL.md §7.1, §13 rules
+ * 6–9). Allocated when the engine is built and reset whenever its entry starts, so ticks do
+ * not allocate.
+ */
+final class InstanceRun {
+    private static final double EPS = 1e-9;
+
+    final Instance model;
+    final Conditional[] conditions;
+    final int docIndex;
+    final int[] mod;
+    final int[] ids;
+    final boolean mirror;
+    final int n;
+    private final String automaton;
+    private final Expression[] angles0;
+    private final Expression[][] angles;
+    private final Interp[] interp;
+    private final Expression[] times;
+    private final Expression[] exits;
+    private final boolean timesPerModule;
+    private final int ns;
+
+    // per module
+    final int[] st;
+    final double[] p;
+    final double[] p0;
+    final double[] a0;
+    final double[] u;
+    final double[] uk;
+    final double[] ph;
+    final double[] cyc;
+    final boolean[] fin;
+    final double[] out;
+
+    private final double[] tBuf;
+    private double sumT;
+    private double scale;
+    private double limit;
+    boolean started;
+    boolean wasActive;
+    int finishedCount;
+
+    InstanceRun(Instance model, Automaton a, Conditional[] conditions, int docIndex, int[] mod, int[] ids, boolean mirror) {
+        this.model = model;
+        this.conditions = conditions;
+        this.docIndex = docIndex;
+        this.mod = mod;
+        this.ids = ids;
+        this.mirror = mirror;
+        this.n = mod.length;
+        this.automaton = a.name();
+        this.ns = a.states().size();
+        this.angles = new Expression[ns][];
+        this.angles0 = new Expression[ns];
+        this.interp = new Interp[ns];
+        this.times = new Expression[ns];
+        this.exits = new Expression[ns];
+        boolean perModule = false;
+        for (int i = 0; i < ns; i++) {
+            StateDef s = a.states().get(i);
+            angles[i] = s.angles().toArray(new Expression[0]);
+            angles0[i] = angles[i][0];
+            interp[i] = s.interp();
+            times[i] = a.times().get(i).duration();
+            exits[i] = a.times().get(i).exit();
+            perModule |= times[i].perModule();
+        }
+        this.timesPerModule = perModule;
+        st = new int[n];
+        p = new double[n];
+        p0 = new double[n];
+        a0 = new double[n];
+        u = new double[n];
+        uk = new double[n];
+        ph = new double[n];
+        cyc = new double[n];
+        fin = new boolean[n];
+        out = new double[n];
+        tBuf = new double[ns];
+    }
+
+    /** Whether every module has finished its cycles. */
+    boolean finished() {
+        return started && finishedCount == n;
+    }
+
+    /** Sets the context to module {@code k} with its start-of-tick $phase and $cycle. */
+    void enter(EvalContext c, int k) {
+        c.index = k;
+        c.id = ids[k];
+        c.count = n;
+        c.group = mod;
+        c.phase = ph[k];
+        c.cycle = cyc[k];
+    }
+
+    /** Initialises every module (§7.1, §13 rule 6); {@code commanded} holds the angles emitted last tick. */
+    void init(Evaluator ev, double phase, double offset, double cycles, double[] commanded) {
+        started = true;
+        finishedCount = 0;
+        limit = cycles;
+        for (int k = 0; k < n; k++) {
+            enter(ev.ctx(), k);
+            if (k == 0 || timesPerModule) {
+                evalTimes(ev);
+            }
+            double x = -(offset + k * phase);
+            double start = x - Math.floor(x);
+            double pos = start * sumT;
+            double cum = 0;
+            int found = -1;
+            for (int j = 0; j < ns; j++) {
+                if (tBuf[j] > 0 && pos < cum + tBuf[j] - EPS) {
+                    found = j;
+                    break;
+                }
+                cum += tBuf[j];
+            }
+            if (found < 0) {
+                st[k] = 0;
+                p[k] = 0;
+                start = 0;
+            } else {
+                st[k] = found;
+                p[k] = Math.max(0, (pos - cum) / tBuf[found]);
+            }
+            uk[k] = start;
+            u[k] = start;
+            p0[k] = p[k];
+            a0[k] = commanded[mod[k]];
+            cyc[k] = 0;
+            ph[k] = phaseOf(st[k], p[k]);
+            fin[k] = cycles <= 0;
+            if (fin[k]) {
+                finishedCount++;
+            }
+        }
+    }
+
+    /** Re-anchors after a suspension (§7.2): motion resumes from the current angle. */
+    void reanchor(double[] commanded) {
+        for (int k = 0; k < n; k++) {
+            if (!fin[k]) {
+                a0[k] = commanded[mod[k]];
+                p0[k] = p[k];
+            }
+        }
+    }
+
+    private void evalTimes(Evaluator ev) {
+        double s = 0;
+        for (int j = 0; j < ns; j++) {
+            tBuf[j] = ev.eval(times[j]);
+            s += tBuf[j];
+        }
+        sumT = s;
+        if (!(s > 0)) {
+            throw ev.error(model.pos(), "the states of automaton '" + automaton + "' last " + s
+                    + " s in total; the total must be > 0");
+        }
+    }
+
+    /** Evaluates the period for this tick (instance scope). */
+    void prepareTick(Evaluator ev, Expression period) {
+        double per = period == null ? Double.NaN : ev.eval(period);
+        if (period != null && !(per > 0)) {
+            throw ev.error(period.pos(), "period of automaton '" + automaton + "' must be > 0, got " + per);
+        }
+        if (!timesPerModule) {
+            enter(ev.ctx(), 0);
+            evalTimes(ev);
+        }
+        scale = per;
+    }
+
+    /** Advances module {@code k} by {@code dt} (§7.1) and computes its setpoint into {@code out}. */
+    void advance(Evaluator ev, int k, double dt, double[] commanded) {
+        EvalContext c = ev.ctx();
+        enter(c, k);
+        if (timesPerModule) {
+            evalTimes(ev);
+        }
+        double sc = Double.isNaN(scale) ? 1 : scale / sumT;
+        double lim = uk[k] + limit;
+        int s = st[k];
+        if (exits[s] != null && ev.eval(exits[s]) != 0) {
+            double du = (1 - p[k]) * tBuf[s] / sumT;
+            if (u[k] + du >= lim - EPS) {
+                finish(k, commanded[mod[k]]);
+                return;
+            }
+            u[k] += du;
+            a0[k] = commanded[mod[k]];
+            st[k] = s = (s + 1) % ns;
+            p[k] = p0[k] = 0;
+        }
+        double r = dt;
+        int skips = 0;
+        while (true) {
+            double t = tBuf[s];
+            double d = t * sc;
+            if (d <= 0) {
+                if (++skips > ns) {
+                    throw ev.error(model.pos(), "every state of automaton '" + automaton + "' has a duration <= 0");
+                }
+                a0[k] = target(ev, s, k);
+                st[k] = s = (s + 1) % ns;
+                p[k] = p0[k] = 0;
+                continue;
+            }
+            double need = (1 - p[k]) * d;
+            if (r < need - EPS) {
+                double dp = r / d;
+                double du = dp * t / sumT;
+                if (u[k] + du >= lim - EPS) {
+                    p[k] = Math.min(1, p[k] + (lim - u[k]) * sumT / t);
+                    ph[k] = phaseOf(s, p[k]);
+                    c.phase = ph[k];
+                    c.cycle = Math.floor(limit + EPS);
+                    finish(k, setpoint(ev, k, s));
+                    return;
+                }
+                p[k] += dp;
+                u[k] += du;
+                break;
+            }
+            double du = (1 - p[k]) * t / sumT;
+            r -= need;
+            if (u[k] + du >= lim - EPS) {
+                finish(k, target(ev, s, k));
+                return;
+            }
+            u[k] += du;
+            a0[k] = target(ev, s, k);
+            st[k] = s = (s + 1) % ns;
+            p[k] = p0[k] = 0;
+        }
+        ph[k] = phaseOf(s, p[k]);
+        cyc[k] = Math.floor(u[k] - uk[k] + EPS);
+        c.phase = ph[k];
+        c.cycle = cyc[k];
+        out[k] = setpoint(ev, k, s);
+    }
+
+    /** Computes module {@code k}'s setpoint without advancing (initialisation tick). */
+    void hold(Evaluator ev, int k) {
+        enter(ev.ctx(), k);
+        out[k] = setpoint(ev, k, st[k]);
+    }
+
+    private void finish(int k, double angle) {
+        fin[k] = true;
+        finishedCount++;
+        out[k] = angle;
+        u[k] = uk[k] + limit;
+        cyc[k] = Math.floor(limit + EPS);
+    }
+
+    private double setpoint(Evaluator ev, int k, int s) {
+        double g = target(ev, s, k);
+        if (interp[s] == Interp.STEP) {
+            return g;
+        }
+        double q = (p[k] - p0[k]) / (1 - p0[k]);
+        return a0[k] + (g - a0[k]) * interp[s].shape(q);
+    }
+
+    private double target(Evaluator ev, int s, int k) {
+        Expression e = angles[s].length == 1 ? angles0[s] : angles[s][k];
+        double v = ev.eval(e);
+        return mirror ? -v : v;
+    }
+
+    private double phaseOf(int s, double prog) {
+        double cum = 0;
+        for (int j = 0; j < s; j++) {
+            cum += tBuf[j];
+        }
+        return (cum + prog * tBuf[s]) / sumT;
+    }
+}

@@ -1,0 +1,30 @@
+package org.parpe.core.run;
+
+import org.parpe.core.diag.SourcePos;
+
+/**
+ * A run-time error of the script (a non-finite value, a period ≤ 0, …). Its message is the
+ * located diagnostic {@code FILE:LINE:COL: error: …}; the run stops with exit code 3 and the
+ * modules hold their last finite angles.
+ */
+public final class ScriptRuntimeError extends RuntimeException {
+    private final SourcePos pos;
+    private final double time;
+
+    /** An error at {@code pos} during the tick at {@code time}. */
+    public ScriptRuntimeError(SourcePos pos, String message, double time) {
+        super(pos + ": error: " + message + String.format(java.util.Locale.ROOT, " (at t=%.6f s)", time), null, false, false);
+        this.pos = pos;
+        this.time = time;
+    }
+
+    /** Where the failing expression or instance is. */
+    public SourcePos pos() {
+        return pos;
+    }
+
+    /** The time of the failing tick. */
+    public double time() {
+        return time;
+    }
+}

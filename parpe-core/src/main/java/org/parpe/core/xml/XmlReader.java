@@ -1,0 +1,78 @@
+package org.parpe.core.xml;
+
+import com.ctc.wstx.stax.WstxInputFactory;
+import java.io.StringReader;
+import java.util.ArrayDeque;
+import java.util.Deque;
+import javax.xml.stream.Location;
+import javax.xml.stream.XMLInputFactory;
+import javax.xml.stream.XMLStreamConstants;
+import javax.xml.stream.XMLStreamException;
+import org.codehaus.stax2.XMLStreamReader2;
+import org.parpe.core.diag.DiagnosticSink;
+
+/**
+ * Reads a PARSL file into an {@link XElement} tree with StAX (Woodstox). DTDs and external
+ * entities are disabled. Woodstox checks well-formedness and gives the offset of every start
+ * tag and text; a small scanner over the raw text then places each attribute value and each of
+ * its characters, which StAX does not report.
+ */
+public final class XmlReader {
+    private static final XMLInputFactory FACTORY = createFactory();
+
+    private XmlReader() {
+    }
+
+    private static XMLInputFactory createFactory() {
+        XMLInputFactory f = new WstxInputFactory();
+        f.setProperty(XMLInputFactory.SUPPORT_DTD, false);
+        f.setProperty(XMLInputFactory.IS_SUPPORTING_EXTERNAL_ENTITIES, false);
+        f.setProperty(XMLInputFactory.IS_NAMESPACE_AWARE, false);
+        f.setProperty(XMLInputFactory.IS_COALESCING, true);
+        return f;
+    }
+
+    /** Parses {@code source}; returns the root element, or {@code null} after reporting an error. */
+    public static XElement read(SourceText source, DiagnosticSink diags) {
+        String text = source.text();
+        try {
+            XMLStreamReader2 r = (XMLStreamReader2) FACTORY.createXMLStreamReader(new StringReader(text));
+            Deque<XElement> open = new ArrayDeque<>();
+            XElement root = null;
+            while (r.hasNext()) {
+                int ev = r.next();
+                int offset = (int) r.getLocationInfo().getStartingCharOffset();
+                if (ev == XMLStreamConstants.START_ELEMENT) {
+                    XElement e = TagScanner.element(source, offset, r.getLocalName());
+                    if (open.isEmpty()) {
+                        root = e;
+                    } else {
+                        open.peek().addChild(e);
+                    }
+                    open.push(e);
+                } else if (ev == XMLStreamConstants.END_ELEMENT) {
+                    open.pop();
+                } else if ((ev == XMLStreamConstants.CHARACTERS || ev == XMLStreamConstants.CDATA)
+                        && !open.isEmpty() && !r.getText().isBlank()) {
+                    open.peek().addText(TagScanner.text(source, offset, r.getText()));
+                } else if (ev == XMLStreamConstants.DTD) {
+                    diags.error(source.pos(offset), "DOCTYPE declarations are not allowed in PARSL files");
+                    return null;
+                }
+            }
+            r.close();
+            return root;
+        } catch (XMLStreamException e) {
+            Location loc = e.getLocation();
+            String msg = e.getMessage() == null ? "malformed XML" : e.getMessage();
+            int cut = msg.indexOf("\n at [");
+            msg = (cut >= 0 ? msg.substring(0, cut) : msg).replace('\n', ' ').trim();
+            if (msg.startsWith("ParseError at [")) {
+                msg = msg.substring(msg.indexOf("Message:") + 8).trim();
+            }
+            diags.error(loc == null ? source.pos(0) : source.pos(loc.getLineNumber(), loc.getColumnNumber()),
+                    "malformed XML: " + msg);
+            return null;
+        }
+    }
+}
