@@ -1,0 +1,91 @@
+package org.parpe.gui;
+
+import java.util.Arrays;
+import java.util.List;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.SWTError;
+import org.eclipse.swt.widgets.Display;
+import org.parpe.gui.app.Automation;
+import org.parpe.gui.app.Bench;
+import org.parpe.gui.app.IdeWindow;
+import org.parpe.gui.app.Prefs;
+import org.parpe.gui.run.CrashLog;
+
+/**
+ * Entry point of the IDE: {@code parpe gui [FILE] [--run-for S] [--screenshot F] [--exit] [--bench]}.
+ * Exit codes: 0 success, 1 the script had errors or the run failed, 2 usage or start-up problems.
+ */
+public final class Main {
+    private Main() {
+    }
+
+    public static void main(String[] args) {
+        System.exit(run(args));
+    }
+
+    /** Runs the IDE until its window closes; returns the exit code. */
+    public static int run(String[] args) {
+        long started = System.nanoTime();
+        List<String> list = Arrays.asList(args);
+        if (!list.isEmpty() && list.get(0).equals("gui")) {
+            list = list.subList(1, list.size());
+        }
+        if (list.contains("--help") || list.contains("-h")) {
+            System.out.println(LaunchOptions.USAGE);
+            return 0;
+        }
+        LaunchOptions options;
+        try {
+            options = LaunchOptions.parse(list);
+        } catch (IllegalArgumentException e) {
+            System.err.println("parpe gui: error: " + e.getMessage());
+            System.err.println(LaunchOptions.USAGE);
+            return 2;
+        }
+        if (options.file() != null && !java.nio.file.Files.isRegularFile(options.file())) {
+            System.err.println("parpe gui: error: cannot read " + options.file() + ": no such file");
+            return 2;
+        }
+        Display.setAppName("PARPE");
+        Display display;
+        try {
+            display = new Display();
+        } catch (SWTError | UnsatisfiedLinkError e) {
+            System.err.println("parpe gui: error: cannot open a window (" + e.getMessage() + "); "
+                    + "is there a display? DISPLAY=" + System.getenv("DISPLAY")
+                    + ". On a machine without a screen, run it under xvfb-run.");
+            return 2;
+        }
+        try {
+            return options.bench() ? Bench.run(display, started) : loop(display, options);
+        } finally {
+            display.dispose();
+        }
+    }
+
+    private static int loop(Display display, LaunchOptions options) {
+        IdeWindow ide = new IdeWindow(display, new Prefs(Prefs.defaultHome()));
+        ide.open(options.file(), options.automated());
+        Automation auto = options.automated() ? Automation.start(ide, options) : null;
+        while (!ide.shell().isDisposed()) {
+            try {
+                if (!display.readAndDispatch()) {
+                    display.sleep();
+                }
+            } catch (RuntimeException e) {
+                // A bug in a listener must not take the user's work with it: report and carry on.
+                String file = CrashLog.write("handling a UI event", e);
+                System.err.println("parpe gui: internal error (" + e + "); details in " + file);
+                if (auto != null) {
+                    auto.fail("internal error: " + e);
+                }
+            }
+        }
+        return auto == null ? 0 : auto.exitCode();
+    }
+
+    /** SWT's version, for reports. */
+    public static String swtVersion() {
+        return Integer.toString(SWT.getVersion());
+    }
+}

@@ -1,0 +1,125 @@
+package org.parpe.gui.app;
+
+import java.io.IOException;
+import org.eclipse.swt.widgets.Display;
+import org.parpe.core.diag.Diagnostic;
+import org.parpe.core.run.RunOutcome;
+import org.parpe.gui.LaunchOptions;
+import org.parpe.gui.run.Speed;
+import org.parpe.gui.run.Target;
+
+/**
+ * What {@code --run-for}, {@code --screenshot} and {@code --exit} do once the window is up:
+ * wait for the script to be validated, run it in the simulator (as fast as possible) for the
+ * given simulated time, let the views catch up, save the picture, close. Every wait is bounded.
+ * Driven by UI-thread timers, so the window stays live throughout.
+ */
+public final class Automation {
+    private static final int POLL_MS = 100;
+    private static final int LOAD_TIMEOUT_MS = 15_000;
+    private static final int SETTLE_MS = 600;
+
+    private final IdeWindow ide;
+    private final LaunchOptions options;
+    private final Display display;
+    private int exitCode;
+    private boolean done;
+
+    private Automation(IdeWindow ide, LaunchOptions options) {
+        this.ide = ide;
+        this.options = options;
+        this.display = ide.shell().getDisplay();
+    }
+
+    /** Starts the automation for {@code ide}. */
+    public static Automation start(IdeWindow ide, LaunchOptions options) {
+        Automation a = new Automation(ide, options);
+        a.waitForLoad(0);
+        return a;
+    }
+
+    /** The process exit code: 0, 1 when the script failed, 2 when the picture could not be saved. */
+    public int exitCode() {
+        return exitCode;
+    }
+
+    /** Records a failure (internal error in the UI). */
+    public void fail(String message) {
+        System.err.println("parpe gui: " + message);
+        exitCode = Math.max(exitCode, 1);
+    }
+
+    private void later(int ms, Runnable r) {
+        display.timerExec(ms, () -> {
+            if (!ide.shell().isDisposed()) {
+                r.run();
+            }
+        });
+    }
+
+    private void waitForLoad(int waited) {
+        if (ide.validations() == 0 && waited < LOAD_TIMEOUT_MS) {
+            later(POLL_MS, () -> waitForLoad(waited + POLL_MS));
+            return;
+        }
+        if (options.runFor() >= 0) {
+            if (ide.program() == null || ide.problems().errorCount() > 0) {
+                for (Diagnostic d : ide.problems().shown()) {
+                    System.err.println(d.format());
+                }
+                fail("the script has errors; not run");
+                later(SETTLE_MS, this::shoot);
+                return;
+            }
+            ide.toolbar().setTarget(Target.SIMULATOR);
+            ide.toolbar().setSpeed(Speed.MAX);
+            ide.runs().run(false, options.runFor(), this::ran);
+            watchdog();
+        } else {
+            later(SETTLE_MS * 2, this::shoot);
+        }
+    }
+
+    /** Stops a run that takes far longer than it should (a stuck plant) so that --exit always exits. */
+    private void watchdog() {
+        int limitMs = (int) Math.min(Integer.MAX_VALUE, 120_000 + options.runFor() * 10_000);
+        later(limitMs, () -> {
+            if (!done && ide.runs().running()) {
+                fail("the run did not finish within " + limitMs / 1000 + " s; stopped");
+                ide.runs().stop();
+            }
+        });
+    }
+
+    private void ran(RunOutcome outcome) {
+        if (outcome.status() == RunOutcome.Status.ERROR) {
+            fail("run failed: " + outcome.message());
+        } else {
+            System.out.printf(java.util.Locale.ROOT, "parpe gui: ran %s to t = %.2f s%n", ide.files().name(), outcome.time());
+        }
+        later(SETTLE_MS, this::shoot);
+    }
+
+    private void shoot() {
+        if (done) {
+            return;
+        }
+        done = true;
+        if (options.screenshot() != null) {
+            try {
+                Screenshot.save(ide.shell(), options.screenshot());
+                System.out.println("parpe gui: screenshot saved to " + options.screenshot());
+            } catch (IOException e) {
+                System.err.println("parpe gui: error: " + e.getMessage());
+                exitCode = 2;
+            }
+        }
+        if (options.exit()) {
+            ide.files().autosaveNow();
+            if (!ide.files().dirty()) {
+                ide.files().closedNormally();
+            }
+            ide.shell().dispose();
+        }
+    }
+}

@@ -1,0 +1,370 @@
+package org.parpe.gui.app;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.custom.CTabFolder;
+import org.eclipse.swt.custom.CTabItem;
+import org.eclipse.swt.custom.SashForm;
+import org.eclipse.swt.custom.StyledText;
+import org.eclipse.swt.layout.GridData;
+import org.eclipse.swt.layout.GridLayout;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Display;
+import org.eclipse.swt.widgets.Event;
+import org.eclipse.swt.widgets.Shell;
+import org.parpe.core.diag.Diagnostic;
+import org.parpe.core.diag.Severity;
+import org.parpe.core.diag.SourcePos;
+import org.parpe.core.load.LoadResult;
+import org.parpe.core.model.Program;
+import org.parpe.gui.editor.ParslEditor;
+import org.parpe.gui.editor.Validator;
+import org.parpe.gui.panels.ControlPanel;
+import org.parpe.gui.panels.OutlineView;
+import org.parpe.gui.panels.PlotView;
+import org.parpe.gui.panels.ProblemsView;
+import org.parpe.gui.view3d.View3D;
+
+/**
+ * The IDE's main window: outline | editor over Problems and Run log | 3D view over controls and
+ * plots, with the menu bar, the run tool bar and the status bar. Owns the wiring between them;
+ * UI thread only (other threads use {@link #logLater}).
+ */
+public final class IdeWindow {
+    private static final Pattern LOCATED = Pattern.compile("^(.*?):(\\d+):(\\d+): (error|warning): (.*)$", Pattern.DOTALL);
+
+    private final Shell shell;
+    private final Prefs prefs;
+    private final ParslEditor editor;
+    private final CTabItem editorTab;
+    private final ProblemsView problems;
+    private final CTabFolder bottom;
+    private final StyledText log;
+    private final OutlineView outline;
+    private final View3D view;
+    private final ViewBar viewBar;
+    private final ControlPanel controls;
+    private final PlotView plots;
+    private final StatusBar status;
+    private final RunToolBar toolbar;
+    private final Validator validator;
+    private final FileActions files;
+    private final RunActions runs;
+    private Program program;
+    private int validations;
+    private List<Diagnostic> runProblems = List.of();
+    private List<Diagnostic> loadProblems = List.of();
+
+    public IdeWindow(Display display, Prefs prefs) {
+        this.prefs = prefs;
+        shell = new Shell(display, SWT.SHELL_TRIM);
+        shell.setText("PARPE");
+        shell.setLayout(grid(1, 0));
+        validator = new Validator(display);
+        runs = new RunActions(this);
+        toolbar = new RunToolBar(shell, runs, prefs);
+        toolbar.control().setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+
+        SashForm main = new SashForm(shell, SWT.HORIZONTAL);
+        main.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
+        CTabFolder left = Panels.folder(main);
+        outline = new OutlineView(left, this::reveal);
+        Panels.tab(left, "Outline", outline.control());
+
+        SashForm middle = new SashForm(main, SWT.VERTICAL);
+        CTabFolder editorFolder = Panels.folder(middle);
+        Composite editorBox = Panels.fill(editorFolder);
+        editor = new ParslEditor(editorBox);
+        editorTab = Panels.tab(editorFolder, "untitled.xml", editorBox);
+        bottom = Panels.folder(middle);
+        problems = new ProblemsView(bottom, d -> reveal(d.pos()));
+        Panels.tab(bottom, "Problems", problems.control());
+        log = new StyledText(bottom, SWT.READ_ONLY | SWT.V_SCROLL | SWT.H_SCROLL | SWT.MULTI);
+        log.setFont(org.eclipse.jface.resource.JFaceResources.getTextFont());
+        Panels.tab(bottom, "Run log", log);
+        middle.setWeights(72, 28);
+
+        SashForm right = new SashForm(main, SWT.VERTICAL);
+        CTabFolder viewFolder = Panels.folder(right);
+        Composite viewBox = new Composite(viewFolder, SWT.NONE);
+        viewBox.setLayout(grid(1, 0));
+        viewBar = new ViewBar(viewBox, this, prefs);
+        view = new View3D(viewBox);
+        view.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
+        viewBar.attach(view);
+        Panels.tab(viewFolder, "3D view", viewBox);
+        CTabFolder controlFolder = Panels.folder(right);
+        controls = new ControlPanel(controlFolder, runs);
+        Panels.tab(controlFolder, "Controls", controls.control());
+        CTabFolder plotFolder = Panels.folder(right);
+        plots = new PlotView(plotFolder);
+        Panels.tab(plotFolder, "Joint angles", plots.control());
+        right.setWeights(54, 18, 28);
+        main.setWeights(15, 43, 42);
+
+        status = new StatusBar(shell);
+        status.control().setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        files = new FileActions(shell, editor, prefs, this::documentChanged);
+        new MenuBar(this).install();
+        wire(display);
+    }
+
+    private static GridLayout grid(int columns, int margin) {
+        GridLayout gl = new GridLayout(columns, false);
+        gl.marginWidth = margin;
+        gl.marginHeight = margin;
+        gl.verticalSpacing = 0;
+        return gl;
+    }
+
+    private void wire(Display display) {
+        view.setSource(runs::snapshot);
+        view.setHighlighted(runs::driven);
+        view.setOverlay(() -> {
+            var st = runs.controller().status();
+            String entry = st == null || st.entry().isEmpty() ? "" : "   behavior: " + st.entry();
+            var snap = runs.snapshot();
+            return String.format(java.util.Locale.ROOT, "t = %.2f s%s", snap == null ? 0 : snap.time(), entry);
+        });
+        view.startAnimation();
+        editor.widget().addCaretListener(e -> {
+            int line = editor.widget().getLineAtOffset(e.caretOffset);
+            status.setCaret(line + 1, e.caretOffset - editor.widget().getOffsetAtLine(line) + 1);
+        });
+        Listener keys = new Listener();
+        display.addFilter(SWT.KeyDown, keys);
+        shell.addListener(SWT.Dispose, e -> display.removeFilter(SWT.KeyDown, keys));
+        shell.addListener(SWT.Close, e -> e.doit = closeRequested());
+        shell.addListener(SWT.Dispose, e -> {
+            runs.dispose();
+            validator.close();
+        });
+        tickStatus();
+        runStateChanged();
+    }
+
+    /** Esc stops everything; control keys steer while the focus is not in a text field. */
+    private final class Listener implements org.eclipse.swt.widgets.Listener {
+        @Override
+        public void handleEvent(Event e) {
+            if (shell.isDisposed()) {
+                return;
+            }
+            if (e.keyCode == SWT.ESC) {
+                if (runs.running()) {
+                    runs.emergencyStop();
+                }
+                return;
+            }
+            var focus = e.display.getFocusControl();
+            boolean typing = focus instanceof StyledText || focus instanceof org.eclipse.swt.widgets.Text
+                    || focus instanceof org.eclipse.swt.widgets.Combo;
+            if (runs.running() && !typing && e.stateMask == 0 && controls.key(e)) {
+                e.doit = false;
+            }
+        }
+    }
+
+    private void tickStatus() {
+        shell.getDisplay().timerExec(100, () -> {
+            if (shell.isDisposed()) {
+                return;
+            }
+            boolean running = runs.running();
+            var st = runs.controller().status();
+            String simState = !toolbar.target().sim() ? "Simulator: off"
+                    : running ? (runs.controller().paused() ? "Simulator: paused" : "Simulator: running")
+                    : "Simulator: idle";
+            status.setSim(simState);
+            status.setHardware(runs.hardwareState());
+            if (st != null) {
+                status.setTime(st.time());
+            }
+            if (running) {
+                plots.refresh();
+            }
+            tickStatus();
+        });
+    }
+
+    /** Opens the window; then {@code file} if given, else recovers or starts a new script. */
+    public void open(Path file, boolean automated) {
+        shell.setSize(1480, 920);
+        shell.open();
+        boolean recovered = !automated && files.offerRecovery(true);
+        if (file != null) {
+            if (!recovered || files.confirmDiscard()) {
+                files.openPath(file);
+            }
+        } else if (!recovered) {
+            files.newFile();
+        }
+        editor.widget().setFocus();
+    }
+
+    private void documentChanged() {
+        String mark = files.dirty() ? "*" : "";
+        editorTab.setText(mark + files.name());
+        shell.setText(mark + files.name() + " \u2014 PARPE");
+        validator.schedule(files.pathForLoading(), editor.document().get(), this::showValidation);
+    }
+
+    /** Shows a load result: markers, Problems, outline, controls, plots and the robot preview. */
+    void showValidation(LoadResult r) {
+        validations++;
+        loadProblems = r.diagnostics();
+        runProblems = List.of();
+        showProblems();
+        if (r.program() != null) {
+            program = r.program();
+            outline.show(program);
+            if (!runs.running()) {
+                controls.show(program);
+            }
+            plots.setModules(program.moduleIds());
+            runs.updatePreview(program);
+        }
+        long errors = problems.errorCount();
+        if (!runs.running()) {
+            status.setMessage(errors == 0 ? "No problems" : errors + " error(s): see Problems");
+        }
+    }
+
+    private void showProblems() {
+        List<Diagnostic> all = new ArrayList<>(loadProblems);
+        all.addAll(runProblems);
+        problems.show(all);
+        Path mine = files.pathForLoading().toAbsolutePath().normalize();
+        editor.setDiagnostics(all.stream().filter(d -> sameFile(d.pos(), mine)).toList());
+    }
+
+    private static boolean sameFile(SourcePos p, Path mine) {
+        try {
+            Path f = Path.of(p.file());
+            return f.toAbsolutePath().normalize().equals(mine) || !f.isAbsolute() && mine.endsWith(f);
+        } catch (RuntimeException e) {
+            return false;
+        }
+    }
+
+    /** Shows a run-time error at its place (message {@code FILE:LINE:COL: error: ...}). */
+    void showRunError(String message) {
+        Matcher m = LOCATED.matcher(message);
+        if (m.matches()) {
+            SourcePos pos = new SourcePos(m.group(1), Integer.parseInt(m.group(2)), Integer.parseInt(m.group(3)));
+            Severity sev = m.group(4).equals("error") ? Severity.ERROR : Severity.WARNING;
+            runProblems = List.of(new Diagnostic(sev, pos, "run-time: " + m.group(5)));
+            showProblems();
+            bottom.setSelection(0);
+        }
+    }
+
+    /** Jumps the editor to {@code pos} (if it is in this file). */
+    void reveal(SourcePos pos) {
+        if (pos != null && pos.line() > 0 && sameFile(pos, files.pathForLoading().toAbsolutePath().normalize())) {
+            editor.reveal(pos.line(), pos.column());
+        }
+    }
+
+    void runStateChanged() {
+        boolean running = runs.running();
+        toolbar.update(running, running && runs.controller().paused());
+        if (!running && program != null) {
+            controls.show(program);
+        }
+    }
+
+    boolean closeRequested() {
+        if (!files.confirmDiscard()) {
+            return false;
+        }
+        files.closedNormally();
+        return true;
+    }
+
+    /** Appends a line to the Run log. */
+    void log(String line) {
+        if (!log.isDisposed()) {
+            log.append(String.format(java.util.Locale.ROOT, "[%tT] %s%n", System.currentTimeMillis(), line));
+            log.setTopIndex(log.getLineCount() - 1);
+        }
+    }
+
+    void clearLog() {
+        log.setText("");
+    }
+
+    /** {@link #log} from any thread. */
+    void logLater(String line) {
+        Display d = shell.getDisplay();
+        if (!d.isDisposed()) {
+            d.asyncExec(() -> {
+                if (!shell.isDisposed()) {
+                    log(line);
+                }
+            });
+        }
+    }
+
+    public Shell shell() {
+        return shell;
+    }
+
+    Prefs prefs() {
+        return prefs;
+    }
+
+    public ParslEditor editor() {
+        return editor;
+    }
+
+    FileActions files() {
+        return files;
+    }
+
+    RunActions runs() {
+        return runs;
+    }
+
+    StatusBar status() {
+        return status;
+    }
+
+    RunToolBar toolbar() {
+        return toolbar;
+    }
+
+    public ControlPanel controls() {
+        return controls;
+    }
+
+    public ProblemsView problems() {
+        return problems;
+    }
+
+    PlotView plots() {
+        return plots;
+    }
+
+    public View3D view() {
+        return view;
+    }
+
+    String robotChoice() {
+        return viewBar.robot();
+    }
+
+    /** How many validation results have been shown (automation waits for the first). */
+    public int validations() {
+        return validations;
+    }
+
+    /** The last program that loaded, or null. */
+    public Program program() {
+        return program;
+    }
+}

@@ -1,0 +1,182 @@
+package org.parpe.gui.app;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.eclipse.jface.dialogs.InputDialog;
+import org.eclipse.jface.dialogs.MessageDialog;
+import org.eclipse.jface.text.ITextOperationTarget;
+import org.eclipse.jface.text.source.ISourceViewer;
+import org.eclipse.jface.window.Window;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.widgets.Control;
+import org.eclipse.swt.widgets.Menu;
+import org.eclipse.swt.widgets.MenuItem;
+import org.eclipse.swt.widgets.Text;
+
+/** The menu bar: File, Edit, Run, View and Help. Every item acts; none is a placeholder. */
+final class MenuBar {
+    private final IdeWindow ide;
+    private FindReplaceDialog find;
+
+    MenuBar(IdeWindow ide) {
+        this.ide = ide;
+    }
+
+    void install() {
+        Menu bar = new Menu(ide.shell(), SWT.BAR);
+        fileMenu(submenu(bar, "&File"));
+        editMenu(submenu(bar, "&Edit"));
+        runMenu(submenu(bar, "&Run"));
+        viewMenu(submenu(bar, "&View"));
+        helpMenu(submenu(bar, "&Help"));
+        ide.shell().setMenuBar(bar);
+    }
+
+    private static Menu submenu(Menu parent, String text) {
+        MenuItem it = new MenuItem(parent, SWT.CASCADE);
+        it.setText(text);
+        Menu m = new Menu(parent.getShell(), SWT.DROP_DOWN);
+        it.setMenu(m);
+        return m;
+    }
+
+    private static MenuItem item(Menu m, String text, int accelerator, Runnable action) {
+        MenuItem it = new MenuItem(m, SWT.PUSH);
+        it.setText(text);
+        if (accelerator != 0) {
+            it.setAccelerator(accelerator);
+        }
+        it.addListener(SWT.Selection, e -> action.run());
+        return it;
+    }
+
+    private void fileMenu(Menu m) {
+        FileActions f = ide.files();
+        item(m, "&New\tCtrl+N", SWT.MOD1 + 'N', f::newFile);
+        item(m, "&Open\u2026\tCtrl+O", SWT.MOD1 + 'O', f::open);
+        Menu recent = submenu(m, "Open &Recent");
+        recent.addListener(SWT.Show, e -> fillRecent(recent));
+        Menu examples = submenu(m, "&Examples");
+        examples.addListener(SWT.Show, e -> fillExamples(examples));
+        new MenuItem(m, SWT.SEPARATOR);
+        item(m, "&Save\tCtrl+S", SWT.MOD1 + 'S', f::save);
+        item(m, "Save &As\u2026\tCtrl+Shift+S", SWT.MOD1 + SWT.SHIFT + 'S', f::saveAs);
+        new MenuItem(m, SWT.SEPARATOR);
+        item(m, "E&xit\tCtrl+Q", SWT.MOD1 + 'Q', () -> ide.shell().close());
+    }
+
+    private void fillRecent(Menu recent) {
+        for (MenuItem it : recent.getItems()) {
+            it.dispose();
+        }
+        List<Path> files = ide.prefs().recentFiles();
+        if (files.isEmpty()) {
+            new MenuItem(recent, SWT.PUSH).setText("(no recent files)");
+            recent.getItem(0).setEnabled(false);
+            return;
+        }
+        for (Path p : files) {
+            item(recent, p.getFileName() + "  \u2014  " + p.getParent(), 0, () -> {
+                if (Files.isRegularFile(p)) {
+                    ide.files().openConfirmed(p);
+                } else {
+                    MessageDialog.openError(ide.shell(), "File not found", p + " no longer exists.");
+                }
+            });
+        }
+        new MenuItem(recent, SWT.SEPARATOR);
+        item(recent, "Clear list", 0, ide.prefs()::clearRecent);
+    }
+
+    private void fillExamples(Menu examples) {
+        for (MenuItem it : examples.getItems()) {
+            it.dispose();
+        }
+        List<Path> list = Examples.list();
+        if (list.isEmpty()) {
+            MenuItem none = new MenuItem(examples, SWT.PUSH);
+            none.setText("(no examples folder found; set -Dparpe.examples=DIR)");
+            none.setEnabled(false);
+        }
+        for (Path p : list) {
+            item(examples, p.getFileName().toString(), 0, () -> ide.files().openConfirmed(p));
+        }
+    }
+
+    private void editMenu(Menu m) {
+        item(m, "&Undo\tCtrl+Z", SWT.MOD1 + 'Z', () -> ide.editor().run(ITextOperationTarget.UNDO));
+        item(m, "&Redo\tCtrl+Y", SWT.MOD1 + 'Y', () -> ide.editor().run(ITextOperationTarget.REDO));
+        new MenuItem(m, SWT.SEPARATOR);
+        item(m, "Cu&t\tCtrl+X", SWT.MOD1 + 'X', () -> textOp(ITextOperationTarget.CUT));
+        item(m, "&Copy\tCtrl+C", SWT.MOD1 + 'C', () -> textOp(ITextOperationTarget.COPY));
+        item(m, "&Paste\tCtrl+V", SWT.MOD1 + 'V', () -> textOp(ITextOperationTarget.PASTE));
+        item(m, "Select &All\tCtrl+A", SWT.MOD1 + 'A', () -> textOp(ITextOperationTarget.SELECT_ALL));
+        new MenuItem(m, SWT.SEPARATOR);
+        item(m, "&Find/Replace\u2026\tCtrl+F", SWT.MOD1 + 'F', this::openFind);
+        item(m, "Content &Assist\tCtrl+Space", 0, () -> {
+            ide.editor().widget().setFocus();
+            ide.editor().run(ISourceViewer.CONTENTASSIST_PROPOSALS);
+        });
+        item(m, "&Go to Line\u2026\tCtrl+L", SWT.MOD1 + 'L', this::gotoLine);
+    }
+
+    /** Clipboard operations go to the text field that has the focus, else to the editor. */
+    private void textOp(int op) {
+        Control focus = ide.shell().getDisplay().getFocusControl();
+        if (focus instanceof Text t) {
+            switch (op) {
+                case ITextOperationTarget.CUT -> t.cut();
+                case ITextOperationTarget.COPY -> t.copy();
+                case ITextOperationTarget.PASTE -> t.paste();
+                default -> t.selectAll();
+            }
+            return;
+        }
+        ide.editor().run(op);
+    }
+
+    private void openFind() {
+        if (find == null || find.getShell() == null || find.getShell().isDisposed()) {
+            find = new FindReplaceDialog(ide.shell(), ide.editor().viewer().getFindReplaceTarget(),
+                    () -> ide.editor().widget().showSelection());
+            find.open();
+        } else {
+            find.getShell().setActive();
+        }
+    }
+
+    private void gotoLine() {
+        int lines = ide.editor().document().getNumberOfLines();
+        InputDialog d = new InputDialog(ide.shell(), "Go to Line", "Line (1\u2013" + lines + "):", "", s -> {
+            try {
+                int n = Integer.parseInt(s.trim());
+                return n >= 1 && n <= lines ? null : "Enter a line between 1 and " + lines;
+            } catch (NumberFormatException e) {
+                return "Enter a line number";
+            }
+        });
+        if (d.open() == Window.OK) {
+            ide.editor().reveal(Integer.parseInt(d.getValue().trim()), 1);
+        }
+    }
+
+    private void runMenu(Menu m) {
+        RunActions r = ide.runs();
+        item(m, "&Run\tF5", SWT.F5, () -> r.run(true, -1, null));
+        item(m, "&Pause/Resume\tF6", SWT.F6, r::pause);
+        item(m, "&Stop\tShift+F5", SWT.SHIFT + SWT.F5, r::stop);
+        item(m, "&Emergency Stop\tEsc", 0, r::emergencyStop);
+    }
+
+    private void viewMenu(Menu m) {
+        item(m, "Reset &3D View", 0, () -> ide.view().resetView());
+        item(m, "Clear Run &Log", 0, ide::clearLog);
+    }
+
+    private void helpMenu(Menu m) {
+        item(m, "PARSL &Quick Reference", SWT.F1, () -> MessageDialog.openInformation(ide.shell(), "PARSL quick reference",
+                HelpText.QUICK_REFERENCE));
+        item(m, "&About PARPE", 0, () -> MessageDialog.openInformation(ide.shell(), "About PARPE", HelpText.ABOUT));
+    }
+}

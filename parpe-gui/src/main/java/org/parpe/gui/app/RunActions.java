@@ -1,0 +1,334 @@
+package org.parpe.gui.app;
+
+import java.nio.file.Path;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.function.Consumer;
+import org.eclipse.jface.window.Window;
+import org.parpe.core.diag.DiagnosticList;
+import org.parpe.core.load.LoadResult;
+import org.parpe.core.model.Numbers;
+import org.parpe.core.model.Parameter;
+import org.parpe.core.model.Program;
+import org.parpe.core.run.Engine;
+import org.parpe.core.run.EngineStatus;
+import org.parpe.core.run.RunOptions;
+import org.parpe.core.run.RunOutcome;
+import org.parpe.core.run.SensorSource;
+import org.parpe.gui.editor.Validator;
+import org.parpe.gui.panels.ControlPanel;
+import org.parpe.gui.panels.ParametersDialog;
+import org.parpe.gui.run.AngleRecorder;
+import org.parpe.gui.run.RunController;
+import org.parpe.gui.run.Target;
+import org.parpe.serial.bus.BusConfig;
+import org.parpe.serial.bus.Discovery;
+import org.parpe.serial.bus.HardwareBus;
+import org.parpe.serial.link.LinkOpener;
+import org.parpe.sim.SimSnapshot;
+import org.parpe.sim.Simulator;
+import org.parpe.sim.config.RobotConfig;
+import org.parpe.sim.config.RobotConfigs;
+
+/**
+ * Run, Pause, Stop and the emergency stop; builds each run (parameters dialog, engine,
+ * simulator, serial bus, plot recorder) and keeps the robot preview of the 3D view. The
+ * engine runs on the {@link RunController}'s thread; everything here runs on the UI thread.
+ */
+final class RunActions implements ControlPanel.Target {
+    private final IdeWindow ide;
+    private final RunController controller;
+    private final ExecutorService previewer = Executors.newSingleThreadExecutor(r -> {
+        Thread t = new Thread(r, "parpe-preview");
+        t.setDaemon(true);
+        return t;
+    });
+    private volatile Simulator sim;
+    private volatile HardwareBus bus;
+    private volatile SimSnapshot preview;
+    private volatile String hardwareState = "Hardware: not connected";
+    private String previewKey = "";
+    private RunOutcome lastOutcome;
+
+    RunActions(IdeWindow ide) {
+        this.ide = ide;
+        this.controller = new RunController(ide.shell().getDisplay());
+    }
+
+    RunController controller() {
+        return controller;
+    }
+
+    boolean running() {
+        return controller.running();
+    }
+
+    RunOutcome lastOutcome() {
+        return lastOutcome;
+    }
+
+    /** The picture for the 3D view: the running simulator's, else the preview. */
+    SimSnapshot snapshot() {
+        Simulator s = sim;
+        return s != null ? s.snapshot() : preview;
+    }
+
+    /** The modules driven at the last tick (empty when idle). */
+    Set<Integer> driven() {
+        EngineStatus st = controller.status();
+        if (st == null || !running()) {
+            return Set.of();
+        }
+        Set<Integer> out = new HashSet<>();
+        for (int id : st.driven()) {
+            out.add(id);
+        }
+        return out;
+    }
+
+    String hardwareState() {
+        return hardwareState;
+    }
+
+    /**
+     * Starts a run of the editor's text (resumes if paused).
+     *
+     * @param interactive whether to ask for parameter values (automation uses the remembered ones)
+     * @param runFor      simulated seconds to run, or negative for until the program ends
+     * @param onEnd       also told the outcome (automation), may be null
+     */
+    void run(boolean interactive, double runFor, Consumer<RunOutcome> onEnd) {
+        if (controller.running()) {
+            if (controller.paused()) {
+                pause();
+            }
+            return;
+        }
+        Path path = ide.files().pathForLoading();
+        String text = ide.editor().document().get();
+        LoadResult first = Validator.load(path, text, Map.of());
+        ide.showValidation(first);
+        if (first.program() == null) {
+            ide.status().setMessage("Cannot run: fix the " + first.errors().size() + " error(s) listed in Problems first.");
+            ide.shell().getDisplay().beep();
+            report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, "script has errors"));
+            return;
+        }
+        Map<String, Double> params = parameters(first.program(), interactive);
+        if (params == null) {
+            ide.status().setMessage("Run cancelled.");
+            return;
+        }
+        LoadResult loaded = params.isEmpty() ? first : Validator.load(path, text, params);
+        if (!loaded.ok()) {
+            ide.showValidation(loaded);
+            String why = loaded.parameterErrors().isEmpty() ? "the script has errors with these parameter values"
+                    : String.join("; ", loaded.parameterErrors());
+            ide.status().setMessage("Cannot run: " + why);
+            report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, why));
+            return;
+        }
+        start(loaded.program(), runFor, onEnd);
+    }
+
+    private void start(Program program, double runFor, Consumer<RunOutcome> onEnd) {
+        Target target = ide.toolbar().target();
+        String spec = RobotChoice.spec(ide.robotChoice(), program);
+        String port = ide.toolbar().port();
+        AngleRecorder recorder = new AngleRecorder();
+        ide.plots().setModules(program.moduleIds());
+        ide.plots().setRecorder(recorder);
+        ide.log("Run " + ide.files().name() + " on " + target.label().toLowerCase() + (target.sim() ? " (robot: " + spec + ")" : "")
+                + (target.hardware() ? " (port " + port + ")" : ""));
+        controller.setSpeed(ide.toolbar().speed());
+        controller.start(resources -> build(program, target, spec, port, recorder, resources), runFor, outcome -> {
+            ended(outcome);
+            report(onEnd, outcome);
+        });
+        ide.controls().pushAll();
+        ide.runStateChanged();
+    }
+
+    /** Builds the engine on the engine thread; opening the bus and the simulator may take time. */
+    private Engine build(Program program, Target target, String spec, String port, AngleRecorder recorder,
+                         List<AutoCloseable> resources) throws Exception {
+        Engine engine = new Engine(program, RunOptions.defaults());
+        engine.setWarningSink(d -> ide.logLater(d.format()));
+        SensorSource source = null;
+        if (target.hardware()) {
+            HardwareBus b = openBus(port, program, resources);
+            engine.addSink(b);
+            source = b;
+        }
+        if (target.sim()) {
+            DiagnosticList diags = new DiagnosticList();
+            RobotConfig config = RobotConfigs.resolve(spec, program.moduleIds(), diags);
+            if (config == null) {
+                throw new IllegalArgumentException("cannot build the simulated robot '" + spec + "': "
+                        + diags.all().stream().map(d -> d.message()).findFirst().orElse("unknown problem"));
+            }
+            Simulator s = new Simulator(config);
+            resources.add(s);
+            resources.add(() -> {
+                preview = s.snapshot();
+                sim = null;
+            });
+            sim = s;
+            engine.addSink(s);
+            source = source == null ? s : source;
+        }
+        engine.addSink(recorder);
+        engine.setSensorSource(recorder.wrap(source));
+        return engine;
+    }
+
+    private HardwareBus openBus(String port, Program program, List<AutoCloseable> resources) throws Exception {
+        if (port == null || port.isBlank()) {
+            throw new IllegalArgumentException("choose a serial port for the hardware (tool bar) first");
+        }
+        hardwareState = "Hardware: connecting to " + port + "\u2026";
+        HardwareBus b = HardwareBus.open(LinkOpener.serial(port, BusConfig.DEFAULT_BAUD), BusConfig.defaults(),
+                ide::logLater);
+        resources.add(() -> {
+            bus = null;
+            hardwareState = "Hardware: disconnected";
+            b.close();
+        });
+        Discovery d = b.discover(program.moduleIds());
+        bus = b;
+        hardwareState = "Hardware: " + b.name() + ", " + d.found().size() + " of " + program.moduleIds().length + " modules";
+        if (!d.missing().isEmpty()) {
+            ide.logLater("hardware: modules not answering: " + d.missing());
+        }
+        return b;
+    }
+
+    private void ended(RunOutcome outcome) {
+        lastOutcome = outcome;
+        String t = String.format(java.util.Locale.ROOT, "%.2f s", outcome.time());
+        switch (outcome.status()) {
+            case COMPLETED -> {
+                ide.log("Run completed at t = " + t);
+                ide.status().setMessage("Run completed at t = " + t);
+            }
+            case STOPPED -> {
+                ide.log("Run stopped at t = " + t);
+                ide.status().setMessage("Run stopped at t = " + t);
+            }
+            case ERROR -> {
+                ide.log("Run failed: " + outcome.message());
+                ide.status().setMessage("Run failed: " + outcome.message());
+                ide.showRunError(outcome.message());
+            }
+        }
+        ide.runStateChanged();
+    }
+
+    private static void report(Consumer<RunOutcome> onEnd, RunOutcome outcome) {
+        if (onEnd != null) {
+            onEnd.accept(outcome);
+        }
+    }
+
+    /** The parameter values for a run: asked in the dialog, or the remembered ones; null if cancelled. */
+    private Map<String, Double> parameters(Program program, boolean interactive) {
+        if (program.parameters().isEmpty()) {
+            return Map.of();
+        }
+        String key = "params." + ide.files().pathForLoading() + ".";
+        Map<String, Double> last = new HashMap<>();
+        for (Parameter p : program.parameters()) {
+            Double v = Numbers.parsePlain(ide.prefs().get(key + p.name(), ""));
+            last.put(p.name(), v != null && p.check(v) == null ? v : p.value());
+        }
+        if (!interactive) {
+            return last;
+        }
+        ParametersDialog d = new ParametersDialog(ide.shell(), program.parameters(), last);
+        if (d.open() != Window.OK) {
+            return null;
+        }
+        d.values().forEach((name, v) -> ide.prefs().put(key + name, Numbers.format(v)));
+        return d.values();
+    }
+
+    void pause() {
+        if (controller.running()) {
+            controller.setPaused(!controller.paused());
+            ide.status().setMessage(controller.paused() ? "Paused" : "Running");
+            ide.runStateChanged();
+        }
+    }
+
+    void stop() {
+        controller.stop();
+    }
+
+    /** Esc: stops the run at the next tick and tells the modules on the bus to stop at once. */
+    void emergencyStop() {
+        controller.stop();
+        HardwareBus b = bus;
+        if (b != null) {
+            b.emergencyStop();
+        }
+        if (controller.running()) {
+            ide.log("EMERGENCY STOP");
+            ide.status().setMessage("Emergency stop");
+        }
+    }
+
+    @Override
+    public void setControl(String name, double value) {
+        controller.setControl(name, value);
+    }
+
+    @Override
+    public void setControlWord(String name, String word) {
+        controller.setControlWord(name, word);
+    }
+
+    /** Shows {@code program}'s robot in its starting pose when idle (built off the UI thread). */
+    void updatePreview(Program program) {
+        if (program == null || controller.running()) {
+            return;
+        }
+        String spec = RobotChoice.spec(ide.robotChoice(), program);
+        int[] ids = program.moduleIds();
+        String key = spec + java.util.Arrays.toString(ids);
+        if (key.equals(previewKey)) {
+            return;
+        }
+        previewKey = key;
+        previewer.execute(() -> {
+            RobotConfig config = RobotConfigs.resolve(spec, ids, new DiagnosticList());
+            if (config == null) {
+                return;
+            }
+            try (Simulator s = new Simulator(config)) {
+                preview = s.snapshot();
+            } catch (RuntimeException e) {
+                ide.logLater("cannot show the robot '" + spec + "': " + e.getMessage());
+            }
+        });
+    }
+
+    /** Forgets the preview so that the next validation rebuilds it (robot picker changed). */
+    void invalidatePreview() {
+        previewKey = "";
+    }
+
+    void dispose() {
+        emergencyStop();
+        previewer.shutdownNow();
+        try {
+            controller.join(2000);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+}

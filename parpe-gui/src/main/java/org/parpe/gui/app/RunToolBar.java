@@ -1,0 +1,157 @@
+package org.parpe.gui.app;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.Stream;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.layout.GridData;
+import org.eclipse.swt.layout.GridLayout;
+import org.eclipse.swt.widgets.Combo;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Label;
+import org.eclipse.swt.widgets.ToolBar;
+import org.eclipse.swt.widgets.ToolItem;
+import org.parpe.gui.run.Speed;
+import org.parpe.gui.run.Target;
+
+/** The run tool bar: Run, Pause, Stop, emergency stop, speed, target and serial port. */
+final class RunToolBar {
+    private final Composite bar;
+    private final ToolItem run;
+    private final ToolItem pause;
+    private final ToolItem stop;
+    private final ToolItem estop;
+    private final Combo speed;
+    private final Combo target;
+    private final Combo port;
+
+    RunToolBar(Composite parent, RunActions actions, Prefs prefs) {
+        bar = new Composite(parent, SWT.NONE);
+        GridLayout gl = new GridLayout(8, false);
+        gl.marginHeight = 2;
+        bar.setLayout(gl);
+        ToolBar tb = new ToolBar(bar, SWT.FLAT | SWT.RIGHT);
+        run = item(tb, "\u25B6  Run", "Run the script (F5)", () -> actions.run(true, -1, null));
+        pause = item(tb, "\u23F8  Pause", "Pause or resume the run (F6)", actions::pause);
+        stop = item(tb, "\u25A0  Stop", "Stop the run (Shift+F5)", actions::stop);
+        new ToolItem(tb, SWT.SEPARATOR);
+        estop = item(tb, "\u26D4  Emergency stop (Esc)", "Stops everything at once, hardware included", actions::emergencyStop);
+        speed = combo("Speed:", 150);
+        for (Speed s : Speed.values()) {
+            speed.add(s.label());
+        }
+        speed.select(index(Speed.values(), prefs.get("run.speed", Speed.REAL_TIME.name()), Speed::name));
+        speed.addListener(SWT.Selection, e -> {
+            actions.controller().setSpeed(speed());
+            prefs.put("run.speed", speed().name());
+        });
+        target = combo("Target:", 170);
+        for (Target t : Target.values()) {
+            target.add(t.label());
+        }
+        target.select(index(Target.values(), prefs.get("run.target", Target.SIMULATOR.name()), Target::name));
+        target.addListener(SWT.Selection, e -> {
+            prefs.put("run.target", target().name());
+            updatePort();
+        });
+        port = new Combo(bar, SWT.DROP_DOWN);
+        GridData gd = new GridData(SWT.LEFT, SWT.CENTER, false, false);
+        gd.widthHint = 160;
+        port.setLayoutData(gd);
+        port.setToolTipText("Serial port of the robot's bus (type a path, or pick one)");
+        port.setText(prefs.get("run.port", ""));
+        port.addListener(SWT.MouseDown, e -> refreshPorts());
+        port.addListener(SWT.Modify, e -> prefs.put("run.port", port.getText()));
+        refreshPorts();
+        updatePort();
+    }
+
+    private static <T> int index(T[] values, String name, java.util.function.Function<T, String> key) {
+        for (int i = 0; i < values.length; i++) {
+            if (key.apply(values[i]).equals(name)) {
+                return i;
+            }
+        }
+        return 0;
+    }
+
+    private static ToolItem item(ToolBar tb, String text, String tip, Runnable action) {
+        ToolItem it = new ToolItem(tb, SWT.PUSH);
+        it.setText(text);
+        it.setToolTipText(tip);
+        it.addListener(SWT.Selection, e -> action.run());
+        return it;
+    }
+
+    private Combo combo(String label, int width) {
+        Label l = new Label(bar, SWT.NONE);
+        l.setText(label);
+        GridData ld = new GridData(SWT.LEFT, SWT.CENTER, false, false);
+        ld.horizontalIndent = 12;
+        l.setLayoutData(ld);
+        Combo c = new Combo(bar, SWT.READ_ONLY);
+        GridData gd = new GridData(SWT.LEFT, SWT.CENTER, false, false);
+        gd.widthHint = width;
+        c.setLayoutData(gd);
+        return c;
+    }
+
+    private void updatePort() {
+        port.setEnabled(target().hardware());
+    }
+
+    /** Lists the serial devices present now (USB adapters first), keeping what the user typed. */
+    void refreshPorts() {
+        String typed = port.getText();
+        List<String> found = new ArrayList<>();
+        try (Stream<Path> s = Files.list(Path.of("/dev"))) {
+            s.map(p -> p.toString()).filter(p -> p.matches("/dev/tty(USB|ACM)\\d+|/dev/ttyS[0-3]|/dev/rfcomm\\d+"))
+                    .sorted((a, b) -> Boolean.compare(a.startsWith("/dev/ttyS"), b.startsWith("/dev/ttyS")) != 0
+                            ? Boolean.compare(a.startsWith("/dev/ttyS"), b.startsWith("/dev/ttyS")) : a.compareTo(b))
+                    .forEach(found::add);
+        } catch (IOException | RuntimeException e) {
+            // No /dev to list (not Linux): the user types the port.
+        }
+        port.setItems(found.toArray(new String[0]));
+        port.setText(typed);
+    }
+
+    Composite control() {
+        return bar;
+    }
+
+    Speed speed() {
+        return Speed.values()[Math.max(0, speed.getSelectionIndex())];
+    }
+
+    Target target() {
+        return Target.values()[Math.max(0, target.getSelectionIndex())];
+    }
+
+    /** Selects a target (automation runs in the simulator). */
+    void setTarget(Target t) {
+        target.select(t.ordinal());
+        updatePort();
+    }
+
+    /** Selects a speed without remembering it (automation). */
+    void setSpeed(Speed s) {
+        speed.select(s.ordinal());
+    }
+
+    String port() {
+        return port.getText().trim();
+    }
+
+    /** Enables the buttons that make sense now. */
+    void update(boolean running, boolean paused) {
+        run.setEnabled(!running || paused);
+        pause.setEnabled(running);
+        pause.setText(paused ? "\u25B6  Resume" : "\u23F8  Pause");
+        stop.setEnabled(running);
+        estop.setEnabled(true);
+    }
+}

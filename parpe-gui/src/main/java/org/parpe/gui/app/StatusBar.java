@@ -1,0 +1,85 @@
+package org.parpe.gui.app;
+
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.layout.GridData;
+import org.eclipse.swt.layout.GridLayout;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Label;
+
+/** The status bar: a message, the simulator's state, the hardware's state, simulated time and the caret position. */
+public final class StatusBar {
+    private final Composite bar;
+    private final Label message;
+    private final Label sim;
+    private final Label hardware;
+    private final Label time;
+    private final Label caret;
+
+    public StatusBar(Composite parent) {
+        bar = new Composite(parent, SWT.NONE);
+        GridLayout gl = new GridLayout(9, false);
+        gl.marginHeight = 2;
+        gl.marginWidth = 6;
+        bar.setLayout(gl);
+        message = field(SWT.DEFAULT, true);
+        separator();
+        sim = field(230, false);
+        separator();
+        hardware = field(230, false);
+        separator();
+        time = field(120, false);
+        separator();
+        caret = field(70, false);
+        sim.setText("Simulator: idle");
+        hardware.setText("Hardware: not connected");
+        time.setText("t = 0.00 s");
+    }
+
+    private Label field(int width, boolean grab) {
+        Label l = new Label(bar, SWT.NONE);
+        GridData gd = new GridData(SWT.FILL, SWT.CENTER, grab, false);
+        gd.widthHint = width;
+        l.setLayoutData(gd);
+        return l;
+    }
+
+    private void separator() {
+        Label s = new Label(bar, SWT.SEPARATOR | SWT.VERTICAL);
+        GridData gd = new GridData(SWT.CENTER, SWT.FILL, false, false);
+        gd.heightHint = 16;
+        s.setLayoutData(gd);
+    }
+
+    public Composite control() {
+        return bar;
+    }
+
+    public void setMessage(String text) {
+        message.setText(text);
+        message.setToolTipText(text);
+    }
+
+    public String message() {
+        return message.getText();
+    }
+
+    public void setSim(String text) {
+        sim.setText(text);
+    }
+
+    public String sim() {
+        return sim.getText();
+    }
+
+    public void setHardware(String text) {
+        hardware.setText(text);
+    }
+
+    public void setTime(double t) {
+        time.setText(String.format(java.util.Locale.ROOT, "t = %.2f s", t));
+    }
+
+    public void setCaret(int line, int column) {
+        caret.setText(line + ":" + column);
+    }
+}

@@ -1,0 +1,114 @@
+package org.parpe.gui.app;
+
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.layout.GridData;
+import org.eclipse.swt.layout.GridLayout;
+import org.eclipse.swt.widgets.Button;
+import org.eclipse.swt.widgets.Combo;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.FileDialog;
+import org.eclipse.swt.widgets.Label;
+import org.parpe.gui.view3d.View3D;
+import org.parpe.sim.config.RobotConfigs;
+
+/**
+ * The bar above the 3D view: the simulated robot (automatic, one of the simulator's generators,
+ * or a configuration file), TrackRobot, module IDs and a reset of the camera.
+ */
+final class ViewBar {
+    private static final String BROWSE = "Configuration file\u2026";
+
+    private final IdeWindow ide;
+    private final Combo robot;
+    private final Button track;
+    private final Button ids;
+    private final Button reset;
+    private String file;
+
+    ViewBar(Composite parent, IdeWindow ide, Prefs prefs) {
+        this.ide = ide;
+        Composite bar = new Composite(parent, SWT.NONE);
+        bar.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        GridLayout gl = new GridLayout(5, false);
+        gl.marginHeight = 2;
+        bar.setLayout(gl);
+        new Label(bar, SWT.NONE).setText("Robot:");
+        robot = new Combo(bar, SWT.READ_ONLY);
+        robot.add(RobotChoice.AUTO + " (from the script)");
+        RobotConfigs.generatorNames().forEach(robot::add);
+        file = prefs.get("view.robotFile", null);
+        if (file != null) {
+            robot.add(file);
+        }
+        robot.add(BROWSE);
+        String saved = prefs.get("view.robot", RobotChoice.AUTO);
+        int at = robot.indexOf(saved);
+        robot.select(at >= 0 ? at : 0);
+        robot.setToolTipText("The simulated robot; 'auto' picks a standard robot that fits the script");
+        robot.addListener(SWT.Selection, e -> chosen(prefs));
+        track = new Button(bar, SWT.CHECK);
+        track.setText("TrackRobot");
+        track.setSelection(Boolean.parseBoolean(prefs.get("view.track", "true")));
+        ids = new Button(bar, SWT.CHECK);
+        ids.setText("Module IDs");
+        ids.setSelection(Boolean.parseBoolean(prefs.get("view.ids", "false")));
+        reset = new Button(bar, SWT.PUSH);
+        reset.setText("Reset view");
+        reset.setToolTipText("Frame the whole robot again (or double-click the view). Drag: rotate; right-drag: pan; wheel: zoom");
+        track.addListener(SWT.Selection, e -> prefs.put("view.track", Boolean.toString(track.getSelection())));
+        ids.addListener(SWT.Selection, e -> prefs.put("view.ids", Boolean.toString(ids.getSelection())));
+    }
+
+    /** Connects the check boxes to {@code view}. */
+    void attach(View3D view) {
+        view.setTrackRobot(track.getSelection());
+        view.setShowIds(ids.getSelection());
+        track.addListener(SWT.Selection, e -> view.setTrackRobot(track.getSelection()));
+        ids.addListener(SWT.Selection, e -> view.setShowIds(ids.getSelection()));
+        reset.addListener(SWT.Selection, e -> {
+            view.resetView();
+            track.setSelection(true);
+            view.setTrackRobot(true);
+        });
+    }
+
+    private void chosen(Prefs prefs) {
+        if (BROWSE.equals(robot.getText())) {
+            FileDialog d = new FileDialog(robot.getShell(), SWT.OPEN);
+            d.setFilterExtensions(new String[] {"*.xml", "*"});
+            d.setText("Robot configuration file");
+            String p = d.open();
+            if (p == null) {
+                robot.select(0);
+                return;
+            }
+            if (file != null) {
+                robot.remove(file);
+            }
+            file = p;
+            robot.add(p, robot.getItemCount() - 1);
+            robot.select(robot.indexOf(p));
+            prefs.put("view.robotFile", p);
+        }
+        prefs.put("view.robot", robot());
+        ide.runs().invalidatePreview();
+        if (ide.program() != null) {
+            ide.runs().updatePreview(ide.program());
+        }
+        ide.view().resetView();
+    }
+
+    /** {@code auto}, a generator name, or a configuration file path. */
+    String robot() {
+        String t = robot.getText();
+        return t.startsWith(RobotChoice.AUTO) ? RobotChoice.AUTO : t;
+    }
+
+    /** Selects a robot by generator name (automation, tests). */
+    void select(String name) {
+        int at = robot.indexOf(name);
+        if (at >= 0) {
+            robot.select(at);
+        }
+    }
+}

@@ -1,0 +1,208 @@
+package org.parpe.gui.editor;
+
+import java.util.ArrayList;
+import java.util.Iterator;
+import java.util.List;
+import org.eclipse.jface.resource.JFaceResources;
+import org.eclipse.jface.text.BadLocationException;
+import org.eclipse.jface.text.CursorLinePainter;
+import org.eclipse.jface.text.Document;
+import org.eclipse.jface.text.IDocument;
+import org.eclipse.jface.text.IDocumentPartitioner;
+import org.eclipse.jface.text.Position;
+import org.eclipse.jface.text.rules.FastPartitioner;
+import org.eclipse.jface.text.source.Annotation;
+import org.eclipse.jface.text.source.AnnotationModel;
+import org.eclipse.jface.text.source.AnnotationPainter;
+import org.eclipse.jface.text.source.AnnotationRulerColumn;
+import org.eclipse.jface.text.source.CompositeRuler;
+import org.eclipse.jface.text.source.IAnnotationAccess;
+import org.eclipse.jface.text.source.IAnnotationHover;
+import org.eclipse.jface.text.source.ISourceViewer;
+import org.eclipse.jface.text.source.LineNumberRulerColumn;
+import org.eclipse.jface.text.source.SourceViewer;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.custom.StyledText;
+import org.eclipse.swt.graphics.Color;
+import org.eclipse.swt.widgets.Composite;
+import org.parpe.core.diag.Diagnostic;
+
+/**
+ * The PARSL source editor: a JFace {@link SourceViewer} with XML colouring, line numbers,
+ * error markers (ruler badges, squiggles, hovers), the current line highlighted, undo/redo and
+ * content assist (Ctrl+Space, or automatically after {@code <}, {@code $} and {@code "}).
+ */
+public final class ParslEditor {
+    private static final String SQUIGGLE = "org.parpe.gui.squiggle";
+    private static final Color LINE_BG = new Color(0xF2, 0xF6, 0xFC);
+    private static final Color RULER_FG = new Color(0x90, 0x98, 0xA8);
+
+    private final SourceViewer viewer;
+    private final Document document = new Document();
+    private final AnnotationModel annotations = new AnnotationModel();
+
+    /** Creates the editor in {@code parent}. */
+    public ParslEditor(Composite parent) {
+        IAnnotationAccess access = new Access();
+        CompositeRuler ruler = new CompositeRuler();
+        AnnotationRulerColumn marks = new AnnotationRulerColumn(annotations, 16, access);
+        marks.addAnnotationType(ProblemAnnotation.ERROR);
+        marks.addAnnotationType(ProblemAnnotation.WARNING);
+        LineNumberRulerColumn lines = new LineNumberRulerColumn();
+        lines.setForeground(RULER_FG);
+        ruler.addDecorator(0, marks);
+        ruler.addDecorator(1, lines);
+        viewer = new SourceViewer(parent, ruler, null, false, SWT.V_SCROLL | SWT.H_SCROLL | SWT.MULTI | SWT.BORDER);
+        viewer.configure(new ParslViewerConfiguration(hover()));
+        IDocumentPartitioner partitioner = new FastPartitioner(XmlScanners.partitionScanner(), XmlScanners.TYPES);
+        partitioner.connect(document);
+        document.setDocumentPartitioner(partitioner);
+        viewer.setDocument(document, annotations);
+        viewer.getTextWidget().setFont(JFaceResources.getTextFont());
+
+        AnnotationPainter painter = new AnnotationPainter(viewer, access);
+        painter.addTextStyleStrategy(SQUIGGLE, new AnnotationPainter.UnderlineStrategy(SWT.UNDERLINE_SQUIGGLE));
+        painter.addAnnotationType(ProblemAnnotation.ERROR, SQUIGGLE);
+        painter.addAnnotationType(ProblemAnnotation.WARNING, SQUIGGLE);
+        painter.setAnnotationTypeColor(ProblemAnnotation.ERROR, ProblemAnnotation.ERROR_COLOR);
+        painter.setAnnotationTypeColor(ProblemAnnotation.WARNING, ProblemAnnotation.WARNING_COLOR);
+        viewer.addPainter(painter);
+        viewer.addTextPresentationListener(painter);
+        CursorLinePainter cursorLine = new CursorLinePainter(viewer);
+        cursorLine.setHighlightColor(LINE_BG);
+        viewer.addPainter(cursorLine);
+
+        viewer.appendVerifyKeyListener(e -> {
+            if ((e.stateMask & SWT.MOD1) != 0 && e.character == ' ') {
+                viewer.doOperation(ISourceViewer.CONTENTASSIST_PROPOSALS);
+                e.doit = false;
+            }
+        });
+    }
+
+    /** The viewer, for operations (undo, find, ...). */
+    public SourceViewer viewer() {
+        return viewer;
+    }
+
+    /** The text widget. */
+    public StyledText widget() {
+        return viewer.getTextWidget();
+    }
+
+    /** The document being edited. */
+    public IDocument document() {
+        return document;
+    }
+
+    /** Replaces the whole text and forgets the undo history (a newly opened file). */
+    public void setText(String text) {
+        document.set(text);
+        viewer.getUndoManager().reset();
+        viewer.setSelectedRange(0, 0);
+    }
+
+    /** Runs one {@link org.eclipse.jface.text.ITextOperationTarget} operation if it is possible. */
+    public void run(int operation) {
+        if (viewer.canDoOperation(operation)) {
+            viewer.doOperation(operation);
+        }
+    }
+
+    /** Shows {@code diagnostics} (those of this document) as markers. */
+    public void setDiagnostics(List<Diagnostic> diagnostics) {
+        annotations.removeAllAnnotations();
+        for (Diagnostic d : diagnostics) {
+            int[] span = span(d.pos().line(), d.pos().column());
+            if (span != null) {
+                annotations.addAnnotation(new ProblemAnnotation(d), new Position(span[0], span[1]));
+            }
+        }
+        widget().redraw();
+    }
+
+    /** The markers now shown. */
+    public List<ProblemAnnotation> markers() {
+        List<ProblemAnnotation> out = new ArrayList<>();
+        for (Iterator<Annotation> it = annotations.getAnnotationIterator(); it.hasNext();) {
+            if (it.next() instanceof ProblemAnnotation p) {
+                out.add(p);
+            }
+        }
+        return out;
+    }
+
+    /** The line (1-based) of a marker. */
+    public int lineOf(ProblemAnnotation a) {
+        Position p = annotations.getPosition(a);
+        try {
+            return p == null ? -1 : document.getLineOfOffset(p.getOffset()) + 1;
+        } catch (BadLocationException e) {
+            return -1;
+        }
+    }
+
+    /** Selects the word at 1-based {@code line}, {@code column}, scrolls to it and focuses the editor. */
+    public void reveal(int line, int column) {
+        int[] span = span(line, column);
+        if (span == null) {
+            return;
+        }
+        viewer.setSelectedRange(span[0], span[1]);
+        viewer.revealRange(span[0], span[1]);
+        widget().setFocus();
+    }
+
+    /** The offset and length of the name at a 1-based place (at least one character), or null. */
+    private int[] span(int line, int column) {
+        try {
+            int l = Math.max(0, Math.min(line - 1, document.getNumberOfLines() - 1));
+            int start = document.getLineOffset(l);
+            int len = document.getLineLength(l) - lineDelimiterLength(l);
+            int off = start + Math.max(0, Math.min(column - 1, Math.max(0, len - 1)));
+            String text = document.get();
+            int end = off;
+            while (end < start + len && (XmlScanners.isNameChar(text.charAt(end)) || end == off && text.charAt(end) == '<')) {
+                end++;
+            }
+            return new int[] {off, Math.max(1, Math.min(end - off, start + len - off))};
+        } catch (BadLocationException e) {
+            return null;
+        }
+    }
+
+    private int lineDelimiterLength(int line) throws BadLocationException {
+        String d = document.getLineDelimiter(line);
+        return d == null ? 0 : d.length();
+    }
+
+    private IAnnotationHover hover() {
+        return (sourceViewer, lineNumber) -> {
+            StringBuilder sb = new StringBuilder();
+            for (ProblemAnnotation a : markers()) {
+                if (lineOf(a) == lineNumber + 1) {
+                    sb.append(sb.length() > 0 ? "\n" : "").append(a.diagnostic().severity().word())
+                            .append(": ").append(a.getText());
+                }
+            }
+            return sb.length() == 0 ? null : sb.toString();
+        };
+    }
+
+    private static final class Access implements IAnnotationAccess {
+        @Override
+        public Object getType(Annotation annotation) {
+            return annotation.getType();
+        }
+
+        @Override
+        public boolean isMultiLine(Annotation annotation) {
+            return false;
+        }
+
+        @Override
+        public boolean isTemporary(Annotation annotation) {
+            return true;
+        }
+    }
+}

@@ -1,0 +1,111 @@
+package org.parpe.gui.panels;
+
+import java.util.function.Consumer;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Tree;
+import org.eclipse.swt.widgets.TreeItem;
+import org.parpe.core.diag.SourcePos;
+import org.parpe.core.model.Automaton;
+import org.parpe.core.model.Behavior;
+import org.parpe.core.model.Control;
+import org.parpe.core.model.Group;
+import org.parpe.core.model.Instance;
+import org.parpe.core.model.MainEntry;
+import org.parpe.core.model.Parameter;
+import org.parpe.core.model.Program;
+import org.parpe.core.model.StateDef;
+
+/**
+ * The outline of the last program that loaded: robot groups, parameters, controls, states,
+ * automata, behaviors with their instances, and the main sequence. Selecting a node jumps to
+ * its definition.
+ */
+public final class OutlineView {
+    private final Tree tree;
+
+    /** Creates the view; {@code jump} receives the place the user picked. */
+    public OutlineView(Composite parent, Consumer<SourcePos> jump) {
+        tree = new Tree(parent, SWT.SINGLE | SWT.V_SCROLL | SWT.H_SCROLL);
+        tree.addListener(SWT.Selection, e -> {
+            if (e.item != null && e.item.getData() instanceof SourcePos p) {
+                jump.accept(p);
+            }
+        });
+    }
+
+    /** The tree. */
+    public Tree control() {
+        return tree;
+    }
+
+    /** Shows {@code program}; {@code null} clears the outline. */
+    public void show(Program program) {
+        tree.setRedraw(false);
+        tree.removeAll();
+        if (program != null) {
+            fill(program);
+        }
+        tree.setRedraw(true);
+    }
+
+    private void fill(Program p) {
+        TreeItem robot = section("Robot (" + p.moduleIds().length + " modules)", p.robot().pos());
+        for (Group g : p.robot().groups()) {
+            if (!g.implicit()) {
+                node(robot, g.name() + "  [" + g.size() + "]", g.pos());
+            }
+        }
+        if (!p.parameters().isEmpty()) {
+            TreeItem s = section("Parameters", null);
+            for (Parameter x : p.parameters()) {
+                node(s, x.name() + " = " + org.parpe.core.model.Numbers.format(p.parameterValues().getOrDefault(x.name(), x.value())), x.pos());
+            }
+        }
+        if (!p.controls().isEmpty()) {
+            TreeItem s = section("Controls", null);
+            for (Control c : p.controls()) {
+                node(s, c.name() + "  (" + c.type().word() + ")", c.pos());
+            }
+        }
+        TreeItem states = section("States", null);
+        for (StateDef st : p.states()) {
+            node(states, st.name(), st.pos());
+        }
+        TreeItem automata = section("Automata", null);
+        for (Automaton a : p.automata()) {
+            node(automata, a.name() + (a.table() ? "  (gait table, " : "  (") + a.states().size() + " states)", a.pos());
+        }
+        TreeItem behaviors = section("Behaviors", null);
+        for (Behavior b : p.behaviors()) {
+            TreeItem bi = node(behaviors, b.name(), b.pos());
+            for (Instance in : b.instances()) {
+                node(bi, in.automaton() + " on " + in.group(), in.pos());
+            }
+        }
+        p.mainDef().ifPresent(m -> {
+            TreeItem main = section("Main" + (m.cycles() == org.parpe.core.model.MainDef.FOREVER ? " (forever)" : ""), m.pos());
+            for (MainEntry e : m.entries()) {
+                node(main, e.behavior(), e.pos());
+            }
+        });
+        for (TreeItem top : tree.getItems()) {
+            top.setExpanded(true);
+        }
+    }
+
+    private TreeItem section(String text, SourcePos pos) {
+        TreeItem it = new TreeItem(tree, SWT.NONE);
+        it.setText(text);
+        it.setData(pos);
+        it.setFont(org.eclipse.jface.resource.JFaceResources.getFontRegistry().getBold(org.eclipse.jface.resource.JFaceResources.DEFAULT_FONT));
+        return it;
+    }
+
+    private static TreeItem node(TreeItem parent, String text, SourcePos pos) {
+        TreeItem it = new TreeItem(parent, SWT.NONE);
+        it.setText(text);
+        it.setData(pos);
+        return it;
+    }
+}

@@ -1,0 +1,196 @@
+package org.parpe.gui.view3d;
+
+import java.util.Set;
+import java.util.function.Supplier;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.graphics.GC;
+import org.eclipse.swt.graphics.Point;
+import org.eclipse.swt.graphics.Rectangle;
+import org.eclipse.swt.widgets.Canvas;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Event;
+import org.parpe.sim.SimBody;
+import org.parpe.sim.SimSnapshot;
+import org.parpe.sim.Vec3;
+
+/**
+ * The 3D view in the spirit of PBSim: draws the latest simulator snapshot on a double-buffered
+ * canvas at about 30 frames a second. Left drag orbits, right (or Shift+left, or middle) drag
+ * pans, the wheel zooms; TrackRobot keeps the robot's centre of mass in the middle. The
+ * snapshot is pulled from a supplier on the UI thread's timer, never pushed by the engine.
+ */
+public final class View3D {
+    private static final int FRAME_MS = 33;
+
+    private final Canvas canvas;
+    private final Camera camera = new Camera();
+    private final SceneRenderer renderer = new SceneRenderer();
+    private Supplier<SimSnapshot> source = () -> null;
+    private Supplier<Set<Integer>> highlighted = Set::of;
+    private Supplier<String> overlay = () -> "";
+    private boolean track = true;
+    private boolean labels;
+    private boolean animating;
+    private SimSnapshot framedFor;
+    private SimSnapshot last;
+    private Point drag;
+    private int dragButton;
+    private long frames;
+
+    /** Creates the view in {@code parent}. */
+    public View3D(Composite parent) {
+        canvas = new Canvas(parent, SWT.DOUBLE_BUFFERED | SWT.NO_BACKGROUND);
+        canvas.addListener(SWT.Paint, this::paint);
+        canvas.addListener(SWT.MouseDown, e -> {
+            drag = new Point(e.x, e.y);
+            dragButton = e.button == 1 && (e.stateMask & SWT.SHIFT) != 0 ? 2 : e.button;
+            canvas.setFocus();
+        });
+        canvas.addListener(SWT.MouseUp, e -> drag = null);
+        canvas.addListener(SWT.MouseMove, this::mouseMove);
+        canvas.addListener(SWT.MouseVerticalWheel, e -> {
+            camera.zoom(e.count > 0 ? 0.88 : 1.0 / 0.88);
+            canvas.redraw();
+        });
+        canvas.addListener(SWT.MouseDoubleClick, e -> resetView());
+    }
+
+    /** The canvas. */
+    public Canvas control() {
+        return canvas;
+    }
+
+    /** Where snapshots come from (called on the UI thread, may return null). */
+    public void setSource(Supplier<SimSnapshot> source) {
+        this.source = source;
+    }
+
+    /** Which modules to highlight (those driven by the current behavior). */
+    public void setHighlighted(Supplier<Set<Integer>> highlighted) {
+        this.highlighted = highlighted;
+    }
+
+    /** A line of text drawn in the corner (simulated time). */
+    public void setOverlay(Supplier<String> overlay) {
+        this.overlay = overlay;
+    }
+
+    /** Keeps the robot centred. */
+    public void setTrackRobot(boolean on) {
+        track = on;
+        canvas.redraw();
+    }
+
+    /** Shows the module IDs. */
+    public void setShowIds(boolean on) {
+        labels = on;
+        canvas.redraw();
+    }
+
+    /** Frames the robot again on the next snapshot. */
+    public void resetView() {
+        framedFor = null;
+        canvas.redraw();
+    }
+
+    /** Starts redrawing on a timer (idempotent). */
+    public void startAnimation() {
+        if (animating) {
+            return;
+        }
+        animating = true;
+        Runnable tick = new Runnable() {
+            @Override
+            public void run() {
+                if (canvas.isDisposed() || !animating) {
+                    animating = false;
+                    return;
+                }
+                if (canvas.isVisible()) {
+                    canvas.redraw();
+                }
+                canvas.getDisplay().timerExec(FRAME_MS, this);
+            }
+        };
+        canvas.getDisplay().timerExec(FRAME_MS, tick);
+    }
+
+    /** Stops the timer (the view still redraws when exposed). */
+    public void stopAnimation() {
+        animating = false;
+    }
+
+    /** Frames painted since creation (for the benchmark). */
+    public long frames() {
+        return frames;
+    }
+
+    /** The snapshot drawn last, or null. */
+    public SimSnapshot lastSnapshot() {
+        return last;
+    }
+
+    private void mouseMove(Event e) {
+        if (drag == null) {
+            return;
+        }
+        int dx = e.x - drag.x;
+        int dy = e.y - drag.y;
+        drag = new Point(e.x, e.y);
+        Rectangle r = canvas.getClientArea();
+        if (dragButton == 1) {
+            camera.rotate(-dx * 0.01, dy * 0.01);
+        } else {
+            camera.pan(dx / (double) Math.max(1, r.height), dy / (double) Math.max(1, r.height));
+            track = false;
+        }
+        canvas.redraw();
+    }
+
+    private void paint(Event e) {
+        Rectangle r = canvas.getClientArea();
+        SimSnapshot snap = source.get();
+        if (snap != null) {
+            last = snap;
+        }
+        snap = last;
+        if (snap != null && framedFor == null) {
+            frame(snap);
+        }
+        if (snap != null && track && snap.centerOfMass().isFinite()) {
+            Vec3 c = snap.centerOfMass();
+            camera.follow(c.x(), c.y(), Math.max(0.0, c.z()), 0.25);
+        }
+        GC gc = e.gc;
+        gc.setAntialias(SWT.ON);
+        renderer.draw(gc, camera, snap, new SceneRenderer.Style(highlighted.get(), labels), r.width, r.height);
+        gc.setAntialias(SWT.DEFAULT);
+        hud(gc, snap);
+        frames++;
+    }
+
+    private void hud(GC gc, SimSnapshot snap) {
+        gc.setForeground(renderer.color(0x2A3648));
+        String text = snap == null ? "No robot yet: open a script and press Run" : overlay.get();
+        gc.drawText(text, 8, 6, true);
+    }
+
+    /** Points the camera at the robot from a distance that shows all of it. */
+    private void frame(SimSnapshot snap) {
+        framedFor = snap;
+        double minX = 1e9, minY = 1e9, maxX = -1e9, maxY = -1e9;
+        for (SimBody b : snap.bodies()) {
+            Vec3 p = b.position();
+            minX = Math.min(minX, p.x());
+            maxX = Math.max(maxX, p.x());
+            minY = Math.min(minY, p.y());
+            maxY = Math.max(maxY, p.y());
+        }
+        if (snap.bodies().isEmpty()) {
+            return;
+        }
+        double size = Math.max(0.2, Math.max(maxX - minX, maxY - minY));
+        camera.lookAt((minX + maxX) / 2, (minY + maxY) / 2, 0.03);
+        camera.setDistance(size * 1.7 + 0.25);
+    }
+}
