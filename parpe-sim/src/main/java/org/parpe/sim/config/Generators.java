@@ -38,13 +38,17 @@ final class Generators {
         return b.build(name, new RootPose("s0", 0, 0, 90, 0, 0));
     }
 
-    /** The paper's Fig. 6 cart wheel: a hub with {@code n} spokes, each a segment with a foot; IDs 0..n−1 round the hub. */
+    /**
+     * The paper's Fig. 6 cart wheel: a hub with {@code n} spokes, each a segment with a foot. IDs
+     * 0..n−1 go round the hub clockwise as seen from the +y side (the way the wheel rolls
+     * toward +x), so a wave whose phase lags from module to module rolls it forwards.
+     */
     static RobotConfig wheel(String name, int n) {
         Builder b = new Builder();
         b.part(PartSpec.hub("hub", n));
         for (int i = 0; i < n; i++) {
             b.segment("s" + i, i, 0);
-            b.connect("hub", i, "s" + i, 0, 0);
+            b.connect("hub", (n - i) % n, "s" + i, 0, 0);
             b.passive("f" + i, PartType.FOOT);
             b.connect("s" + i, 1, "f" + i, 0, 0);
         }
