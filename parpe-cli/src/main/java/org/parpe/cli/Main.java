@@ -17,6 +17,8 @@ import picocli.CommandLine.Command;
             CheckCommand.class,
             RunCommand.class,
             BenchCommand.class,
+            org.parpe.cli.hw.EmulateCommand.class,
+            org.parpe.cli.hw.RecordCommand.class,
             CommandLine.HelpCommand.class
         },
         footer = {"", "  gui [FILE] [--run-for S] [--screenshot F.png] [--exit]",

@@ -1,0 +1,240 @@
+package org.parpe.cli.hw;
+
+import java.io.BufferedReader;
+import java.io.BufferedWriter;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
+import org.parpe.cli.UsageException;
+import org.parpe.serial.emu.BusEmulator;
+import org.parpe.serial.emu.EmulatorListener;
+import org.parpe.serial.emu.EmulatorOptions;
+import org.parpe.serial.link.LinkOpener;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/**
+ * {@code parpe emulate}: serves the bus protocol on a serial device as a chain of G1-style modules
+ * would, with injected faults. Lines on standard input pose limp modules by hand
+ * ({@code pose ID DEG}), press touch sensors ({@code touch ID left|right|both|none}) or print the
+ * modules' state ({@code status}).
+ */
+@Command(name = "emulate", description = {"Emulate PolyBot modules on a serial device (e.g. one end of a socat pty pair).",
+    "Standard input takes: pose ID DEG | touch ID left|right|both|none | status | quit."})
+public final class EmulateCommand implements Callable<Integer> {
+    @Option(names = "--port", required = true, paramLabel = "PATH", description = "The serial device to serve.")
+    String port;
+
+    @Option(names = "--modules", defaultValue = "0..7", paramLabel = "IDS",
+            description = "Module IDs to emulate, e.g. 0..7 or 0,2,4 (default ${DEFAULT-VALUE}).")
+    String modules;
+
+    @Option(names = "--baud", defaultValue = "115200", paramLabel = "N", description = "Line speed (default ${DEFAULT-VALUE}).")
+    int baud;
+
+    @Option(names = "--drop", defaultValue = "0", paramLabel = "P", description = "Probability of losing a frame, each direction.")
+    double drop;
+
+    @Option(names = "--corrupt", defaultValue = "0", paramLabel = "P", description = "Probability of one wrong byte in a frame, each direction.")
+    double corrupt;
+
+    @Option(names = "--latency", defaultValue = "0", paramLabel = "MS", description = "Delay before each reply.")
+    double latency;
+
+    @Option(names = "--unplug-after", paramLabel = "S", description = "Pull the cable this many seconds after start.")
+    Double unplugAfter;
+
+    @Option(names = "--unplug-for", paramLabel = "S", description = "Plug it back after this many seconds (default: never).")
+    Double unplugFor;
+
+    @Option(names = "--speed", defaultValue = "360", paramLabel = "DEG/S", description = "Servo speed limit (default ${DEFAULT-VALUE}).")
+    double speed;
+
+    @Option(names = "--seed", defaultValue = "1", paramLabel = "N", description = "Seed of the fault injector.")
+    long seed;
+
+    @Option(names = "--log", paramLabel = "FILE", description = "Write every setpoint frame received as CSV (seq,m<ID>,...).")
+    Path log;
+
+    @Option(names = "--duration", paramLabel = "S", description = "Stop after this many seconds (default: at Ctrl-C or quit).")
+    Double duration;
+
+    @Spec
+    CommandSpec spec;
+
+    @Override
+    public Integer call() throws Exception {
+        PrintWriter err = spec.commandLine().getErr();
+        try {
+            return serve(err);
+        } catch (UsageException e) {
+            err.println("parpe: " + e.getMessage());
+            return 2;
+        }
+    }
+
+    private EmulatorOptions options(int[] ids) throws UsageException {
+        if (baud <= 0) {
+            throw new UsageException("--baud must be > 0, got " + baud);
+        }
+        if (unplugFor != null && unplugAfter == null) {
+            throw new UsageException("--unplug-for needs --unplug-after");
+        }
+        if (unplugAfter != null && !(unplugAfter >= 0) || unplugFor != null && !(unplugFor >= 0)) {
+            throw new UsageException("--unplug-after and --unplug-for must be >= 0 seconds");
+        }
+        if (duration != null && !(duration > 0)) {
+            throw new UsageException("--duration must be > 0 seconds, got " + duration);
+        }
+        try {
+            return new EmulatorOptions(ids, drop, corrupt, latency, unplugAfter == null ? -1 : unplugAfter,
+                    unplugFor == null ? -1 : unplugFor, speed, seed);
+        } catch (IllegalArgumentException e) {
+            throw new UsageException(e.getMessage());
+        }
+    }
+
+    private int serve(PrintWriter err) throws UsageException, InterruptedException {
+        int[] ids = ModuleList.sorted(ModuleList.parse(modules, "--modules"));
+        EmulatorOptions o = options(ids);
+        SetpointLog csv = SetpointLog.open(log, ids);
+        BusEmulator emu;
+        try {
+            emu = BusEmulator.start(LinkOpener.serial(port, baud), o, listener(err, csv));
+        } catch (IOException e) {
+            csv.close();
+            throw new UsageException(e.getMessage());
+        }
+        err.println("emulate: " + ids.length + " modules (" + ModuleList.format(ids) + ") on " + port + " at " + baud
+                + " baud; Ctrl-C to stop");
+        CountDownLatch done = new CountDownLatch(1);
+        AtomicBoolean closed = new AtomicBoolean();
+        Runnable shutdown = () -> {
+            if (closed.compareAndSet(false, true)) {
+                emu.close();
+                csv.close();
+                BusEmulator.Stats s = emu.stats();
+                err.println(String.format(Locale.ROOT, "emulate: %d frames accepted, %d rejected by CRC, %d dropped "
+                        + "and %d corrupted on purpose, %d replies", s.frames(), s.checksumErrors(), s.dropped(),
+                        s.corrupted(), s.replies()));
+            }
+        };
+        Thread hook = new Thread(shutdown, "emulate-stop");
+        Runtime.getRuntime().addShutdownHook(hook);
+        Thread console = new Thread(() -> console(emu, err, done), "emulate-console");
+        console.setDaemon(true);
+        console.start();
+        if (duration != null) {
+            done.await((long) (duration * 1000), TimeUnit.MILLISECONDS);
+        } else {
+            done.await();
+        }
+        shutdown.run();
+        Runtime.getRuntime().removeShutdownHook(hook);
+        return 0;
+    }
+
+    private static EmulatorListener listener(PrintWriter err, SetpointLog csv) {
+        return new EmulatorListener() {
+            @Override
+            public void onSetpoints(int seq, double[] angles) {
+                csv.write(seq, angles);
+            }
+
+            @Override
+            public void onSafeStop(int id, long nanoTime, String why) {
+                err.println("emulate: module " + id + " stopped (" + why + ")");
+            }
+
+            @Override
+            public void onEvent(String message) {
+                err.println(message);
+            }
+        };
+    }
+
+    /** Reads commands from standard input; end of input only stops the console, not the emulator. */
+    private static void console(BusEmulator emu, PrintWriter err, CountDownLatch done) {
+        BufferedReader in = new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8));
+        try {
+            for (String line; (line = in.readLine()) != null; ) {
+                String[] w = line.trim().split("\\s+");
+                if (w[0].equals("quit")) {
+                    done.countDown();
+                    return;
+                }
+                if (!w[0].isEmpty()) {
+                    err.println(ConsoleCommands.apply(emu, w));
+                }
+            }
+        } catch (IOException e) {
+            err.println("emulate: standard input: " + e.getMessage());
+        }
+    }
+
+    /** The CSV log of received setpoints. */
+    static final class SetpointLog {
+        private final BufferedWriter out;
+        private final StringBuilder row = new StringBuilder();
+
+        private SetpointLog(BufferedWriter out) {
+            this.out = out;
+        }
+
+        static SetpointLog open(Path file, int[] ids) throws UsageException {
+            if (file == null) {
+                return new SetpointLog(null);
+            }
+            try {
+                BufferedWriter w = Files.newBufferedWriter(file, StandardCharsets.UTF_8);
+                StringBuilder h = new StringBuilder("seq");
+                for (int id : ids) {
+                    h.append(",m").append(id);
+                }
+                w.write(h.append('\n').toString());
+                return new SetpointLog(w);
+            } catch (IOException e) {
+                throw new UsageException("cannot write --log file '" + file + "': " + e.getMessage());
+            }
+        }
+
+        synchronized void write(int seq, double[] angles) {
+            if (out == null) {
+                return;
+            }
+            row.setLength(0);
+            row.append(seq);
+            for (double a : angles) {
+                row.append(',');
+                if (!Double.isNaN(a)) {
+                    row.append(String.format(Locale.ROOT, "%.2f", a));
+                }
+            }
+            try {
+                out.write(row.append('\n').toString());
+            } catch (IOException e) {
+                // A full disk must not stop the emulated modules; the log just ends early.
+            }
+        }
+
+        synchronized void close() {
+            try {
+                if (out != null) {
+                    out.close();
+                }
+            } catch (IOException e) {
+                // Nothing more can be done about a log that cannot be closed.
+            }
+        }
+    }
+}

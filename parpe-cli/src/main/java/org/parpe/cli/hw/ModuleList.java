@@ -1,0 +1,72 @@
+package org.parpe.cli.hw;
+
+import java.util.Arrays;
+import java.util.LinkedHashSet;
+import java.util.Set;
+import org.parpe.cli.UsageException;
+import org.parpe.serial.protocol.Protocol;
+
+/** Parses module lists of the command line: {@code 0..7}, {@code 0,2,5}, {@code 0..3,8..9}. */
+final class ModuleList {
+
+    private ModuleList() {
+    }
+
+    /** The IDs in the order written; {@code option} names the option in messages. */
+    static int[] parse(String text, String option) throws UsageException {
+        if (text == null || text.isBlank()) {
+            throw new UsageException(option + " needs a module list such as 0..7 or 0,2,5");
+        }
+        Set<Integer> ids = new LinkedHashSet<>();
+        for (String item : text.split(",", -1)) {
+            String s = item.trim();
+            int dots = s.indexOf("..");
+            int a = id(dots < 0 ? s : s.substring(0, dots), text, option);
+            int b = dots < 0 ? a : id(s.substring(dots + 2), text, option);
+            for (int i = a; a <= b ? i <= b : i >= b; i += a <= b ? 1 : -1) {
+                if (!ids.add(i)) {
+                    throw new UsageException(option + ": module " + i + " is listed twice in '" + text + "'");
+                }
+            }
+        }
+        return ids.stream().mapToInt(Integer::intValue).toArray();
+    }
+
+    /** The same IDs, ascending. */
+    static int[] sorted(int[] ids) {
+        int[] s = ids.clone();
+        Arrays.sort(s);
+        return s;
+    }
+
+    private static int id(String s, String text, String option) throws UsageException {
+        String t = s.trim();
+        if (!t.matches("\\d{1,6}")) {
+            throw new UsageException(option + " expects module IDs or ranges like 0..7, got '" + text + "'");
+        }
+        int v = Integer.parseInt(t);
+        if (v > Protocol.MAX_MODULE_ID) {
+            throw new UsageException(option + ": module ID must be in 0.." + Protocol.MAX_MODULE_ID
+                    + " to be on the bus, got " + v);
+        }
+        return v;
+    }
+
+    /** A compact text of IDs: {@code 0..7, 9}. */
+    static String format(int[] ids) {
+        StringBuilder b = new StringBuilder();
+        int[] s = sorted(ids);
+        for (int i = 0; i < s.length; ) {
+            int j = i;
+            while (j + 1 < s.length && s[j + 1] == s[j] + 1) {
+                j++;
+            }
+            b.append(b.length() == 0 ? "" : ", ").append(s[i]);
+            if (j > i) {
+                b.append(j > i + 1 ? ".." : ", ").append(s[j]);
+            }
+            i = j + 1;
+        }
+        return b.toString();
+    }
+}

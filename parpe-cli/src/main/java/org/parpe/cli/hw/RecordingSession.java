@@ -1,0 +1,101 @@
+package org.parpe.cli.hw;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.concurrent.atomic.AtomicBoolean;
+import org.parpe.serial.record.PoseRecorder;
+import org.parpe.serial.record.PoseRecording;
+import org.parpe.serial.record.RecordingWriter;
+
+/**
+ * One {@code parpe record} session once the group is limp: captures poses on Enter or on a
+ * timer, rewrites the file after each pose, and on any ending (end of input, count, Ctrl-C)
+ * makes the group hold and reports where the recording is.
+ */
+final class RecordingSession {
+    private final PoseRecorder recorder;
+    private final PoseRecording recording;
+    private final Path out;
+    private final String origin;
+    private final PrintWriter err;
+    private final AtomicBoolean ended = new AtomicBoolean();
+    private final long start = System.nanoTime();
+    private long last = start;
+
+    RecordingSession(PoseRecorder recorder, PoseRecording recording, Path out, String origin, PrintWriter err) {
+        this.recorder = recorder;
+        this.recording = recording;
+        this.out = out;
+        this.origin = origin;
+        this.err = err;
+    }
+
+    /** Records until the input ends, {@code count} poses were taken, or the JVM is stopped. */
+    int run(Integer everyMs, Integer count, BufferedReader in) throws IOException, InterruptedException {
+        Thread hook = new Thread(this::end, "record-stop");
+        Runtime.getRuntime().addShutdownHook(hook);
+        err.println("record: group " + recording.group() + " (modules " + ModuleList.format(recording.modules())
+                + ") is limp: pose it by hand; " + (everyMs == null ? "press Enter to capture a pose, Ctrl-D to finish"
+                : "capturing every " + everyMs + " ms, Ctrl-C to finish"));
+        try {
+            while (count == null || recording.size() < count) {
+                if (everyMs == null) {
+                    if (in.readLine() == null) {
+                        break;
+                    }
+                } else {
+                    Thread.sleep(Math.max(0, everyMs - (System.nanoTime() - last) / 1_000_000));
+                }
+                capture();
+            }
+        } finally {
+            end();
+            try {
+                Runtime.getRuntime().removeShutdownHook(hook);
+            } catch (IllegalStateException shuttingDown) {
+                // Ctrl-C: the hook runs end() too, which does nothing the second time.
+            }
+        }
+        return recording.size() == 0 ? 1 : 0;
+    }
+
+    private synchronized void capture() throws IOException {
+        if (ended.get()) {
+            return;
+        }
+        double[] pose = new double[recording.modules().length];
+        int silent = recorder.capture(pose);
+        if (silent >= 0) {
+            err.println("record: module " + silent + " did not answer; pose not captured, try again");
+            return;
+        }
+        long now = System.nanoTime();
+        recording.add(pose, (now - last) / 1e9);
+        last = now;
+        RecordingWriter.write(recording, out, origin);
+        err.println(RecordCommand.describe(recording.size(), (now - start) / 1e9, pose));
+    }
+
+    /** Makes the group hold and reports; runs once, from the main thread or the Ctrl-C hook. */
+    private void end() {
+        if (!ended.compareAndSet(false, true)) {
+            return;
+        }
+        synchronized (this) {
+            try {
+                recorder.end();
+            } catch (IOException e) {
+                err.println("record: could not make the group hold (" + e.getMessage() + ")");
+            }
+            if (recording.size() == 0) {
+                err.println("record: no pose captured; " + out + " not written");
+            } else {
+                err.println("record: " + recording.size() + " poses saved in " + out + "; play them with: parpe run "
+                        + out + " --port PATH");
+            }
+            err.flush();
+        }
+    }
+}

@@ -1,0 +1,98 @@
+package org.parpe.serial.record;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.Locale;
+
+/**
+ * Writes a {@link PoseRecording} as a PARSL file (PARSL.md §12): a robot with the recorded group,
+ * a gait-table automaton {@code rec_G} with one row per pose, a behavior {@code play_G} that plays
+ * it once on that group, and a main that runs the behavior, so the file runs on its own and can
+ * be {@code <include>}d to play the automaton on other groups with other periods and phases.
+ * Row i's time is the recorded interval before pose i; the first row (the move from wherever the
+ * robot is, or the wrap from the last pose when cycling) takes the mean recorded interval, or
+ * 1 s for a single pose. The file is replaced atomically, so a crash leaves the previous version.
+ */
+public final class RecordingWriter {
+    /** The shortest state: a zero interval would make the scheduler skip the pose. */
+    public static final double MIN_INTERVAL = 0.001;
+
+    private RecordingWriter() {
+    }
+
+    /** The duration of each row, seconds. */
+    public static double[] rowTimes(PoseRecording r) {
+        int n = r.size();
+        double[] t = new double[n];
+        double sum = 0;
+        for (int i = 1; i < n; i++) {
+            t[i] = Math.max(MIN_INTERVAL, round3(r.interval(i)));
+            sum += t[i];
+        }
+        t[0] = n > 1 ? Math.max(MIN_INTERVAL, round3(sum / (n - 1))) : 1.0;
+        return t;
+    }
+
+    /** The PARSL text of a recording with at least one pose; {@code origin} goes into a comment. */
+    public static String toParsl(PoseRecording r, String origin) {
+        if (r.size() == 0) {
+            throw new IllegalArgumentException("a recording needs at least one pose");
+        }
+        String g = r.group();
+        StringBuilder ids = new StringBuilder();
+        for (int id : r.modules()) {
+            ids.append(ids.length() == 0 ? "" : ", ").append(id);
+        }
+        double[] t = rowTimes(r);
+        StringBuilder times = new StringBuilder();
+        StringBuilder rows = new StringBuilder();
+        for (int i = 0; i < r.size(); i++) {
+            times.append(i == 0 ? "" : ", ").append(String.format(Locale.ROOT, "%.3f", t[i]));
+            rows.append("      ");
+            double[] p = r.pose(i);
+            for (int k = 0; k < p.length; k++) {
+                rows.append(k == 0 ? "" : ", ").append(String.format(Locale.ROOT, "%.2f", p[k] == 0 ? 0.0 : p[k]));
+            }
+            rows.append('\n');
+        }
+        return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                + "<!-- Pose recording (PARSL.md section 12): " + r.size() + " poses of group " + g + " (modules "
+                + ids + ")" + comment(origin) + ".\n"
+                + "     rec_" + g + " holds one row per pose; row times are the intervals between captures.\n"
+                + "     play_" + g + " plays it once; include this file to play rec_" + g
+                + " on other groups. -->\n"
+                + "<program>\n"
+                + "  <robot>\n    <structure>\n      <" + g + " elements=\"" + ids + "\"/>\n    </structure>\n  </robot>\n"
+                + "  <automata>\n    <rec_" + g + " times=\"" + times + "\">\n" + rows + "    </rec_" + g + ">\n"
+                + "  </automata>\n"
+                + "  <behaviors>\n    <play_" + g + ">\n      <rec_" + g + " group=\"" + g + "\" cycles=\"1\"/>\n"
+                + "    </play_" + g + ">\n  </behaviors>\n"
+                + "  <main>\n    <play_" + g + "/>\n  </main>\n"
+                + "</program>\n";
+    }
+
+    /** Writes the recording to {@code file}, atomically replacing an older version. */
+    public static void write(PoseRecording r, Path file, String origin) throws IOException {
+        Path abs = file.toAbsolutePath();
+        Path tmp = abs.resolveSibling(abs.getFileName() + ".tmp");
+        Files.writeString(tmp, toParsl(r, origin), StandardCharsets.UTF_8);
+        try {
+            Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+        } catch (AtomicMoveNotSupportedException e) {
+            Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING);
+        }
+    }
+
+    private static String comment(String origin) {
+        String safe = origin == null ? "" : origin.replace("--", "- -").replace("<", "(").replace(">", ")");
+        return safe.isEmpty() ? "" : ", " + safe;
+    }
+
+    private static double round3(double v) {
+        return Math.round(v * 1000) / 1000.0;
+    }
+}
