@@ -45,6 +45,8 @@ final class Assembly {
     XElement robot;
     int robotOrder;
     XElement main;
+    /** The root element of the main file, or {@code null} if it did not parse. */
+    XElement root;
     private final DiagnosticSink diags;
     private final Deque<Path> stack = new ArrayDeque<>();
     private final Set<Path> done = new HashSet<>();
@@ -71,6 +73,7 @@ final class Assembly {
         if (root == null) {
             return;
         }
+        this.root = root;
         Attrs.allow(root, diags, List.of());
         Attrs.noText(root, diags);
         stack.push(key(file));

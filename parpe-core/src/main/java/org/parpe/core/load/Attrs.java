@@ -48,7 +48,12 @@ final class Attrs {
     /** Reports text inside {@code e}. */
     static void noText(XElement e, DiagnosticSink d) {
         for (XText t : e.texts()) {
-            d.error(t.pos(), "text is not allowed inside <" + e.name() + ">");
+            String v = t.value();
+            int first = 0;
+            while (first < v.length() && Character.isWhitespace(v.charAt(first))) {
+                first++;
+            }
+            d.error(t.posAt(first), "text is not allowed inside <" + e.name() + ">");
         }
     }
 

@@ -53,7 +53,8 @@ public final class ScriptLoader {
         Scope paramScope = new Scope(Scope.Kind.PARAMETERS_ONLY, decl.values, Map.of(), Map.of(), Set.of(),
                 Map.of(), Set.of(), null);
         RobotResolver robots = new RobotResolver(d, names, paramScope);
-        Robot robot = robots.resolve(a.robot, a.robotOrder, file, new SourcePos(file.toString(), 1, 1));
+        Robot robot = robots.resolve(a.robot, a.robotOrder, file,
+                a.root == null ? new SourcePos(file.toString(), 1, 1) : a.root.pos());
         decl.controls(a.of("controls"));
         Scopes scopes = new Scopes(decl, robot);
         StateResolver states = new StateResolver(d, scopes.scope(Scope.Kind.MODULE, Map.of(), Set.of()));
