@@ -25,6 +25,7 @@ import org.parpe.serial.protocol.Protocol;
  */
 public final class HardwareBus implements JointSink, SensorSource, AutoCloseable {
     private static final int BACKOFF_CYCLES = 50;
+    private static final int READ_GAP_MS = 2;
 
     private enum State { CONNECTED, SILENT, LINK_LOST }
 
@@ -43,6 +44,7 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
     private long silentSince;
     private int readCursor;
     private int readAttempt;
+    private int consecutiveTimeouts;
     private long lastSend;
     private long reads;
     private long readsRetried;
@@ -245,10 +247,12 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
             lastSend = now;
         }
         boolean read = readOne();
-        if (System.nanoTime() - master.lastReplyNanos() > TimeUnit.MILLISECONDS.toNanos(config.deadAfterMs())) {
+        if (consecutiveTimeouts > config.retries()
+                && System.nanoTime() - master.lastReplyNanos() > TimeUnit.MILLISECONDS.toNanos(config.deadAfterMs())) {
             silent();
-        } else if (seq < 0 && !read) {
-            buffers.awaitFresh(config.keepaliveMs());
+        } else if (seq < 0) {
+            // Reads fill the gaps between ticks, at a bounded rate so the bus has room to spare.
+            buffers.awaitFresh(read ? READ_GAP_MS : config.keepaliveMs());
         }
     }
 
@@ -266,6 +270,7 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
         }
         int id = buffers.ids[readCursor];
         if (master.read(id, reply, 1)) {
+            consecutiveTimeouts = 0;
             reads++;
             readsRetried += readAttempt > 0 ? 1 : 0;
             buffers.store(readCursor, reply, true);
@@ -276,9 +281,11 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
                         + config.watchdogMs() + " ms in the bus traffic); resuming it");
                 master.send(id, Protocol.RESUME);
             }
-        } else if (++readAttempt <= config.retries()) {
-            return true;
         } else {
+            consecutiveTimeouts++;
+            if (++readAttempt <= config.retries()) {
+                return true;
+            }
             readFailures++;
             backoff[readCursor] = BACKOFF_CYCLES;
             report.accept("bus: module " + id + " did not answer " + (config.retries() + 1)
@@ -335,6 +342,7 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
         master.send(Protocol.BROADCAST, Protocol.RESUME);
         java.util.Arrays.fill(backoff, 0);
         readAttempt = 0;
+        consecutiveTimeouts = 0;
         state = State.CONNECTED;
         report.accept(String.format(java.util.Locale.ROOT, "bus: modules back on %s after %.2f s (%d of %d answer%s); "
                 + "resuming", master.name(), (System.nanoTime() - silentSince) / 1e9, d.found().size(),
