@@ -1,0 +1,160 @@
+package org.parpe.cli.hw;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+import org.parpe.serial.emu.EmulatorOptions;
+import org.parpe.serial.link.PtyPair;
+
+/** {@code parpe run --port} against the emulator over a socat pty pair: real bytes end to end. */
+@Timeout(value = 90, unit = TimeUnit.SECONDS)
+class HardwareRunTest {
+    static final String SCRIPT = """
+            <program>
+              <robot><structure><body elements="0..3"/><tail elements="9"/></structure></robot>
+              <states><up angles="40"/><down angles="-40"/><far angles="120"/></states>
+              <automata><wave states="up, down" times="0.5, 0.5"/></automata>
+              <behaviors><snake><wave group="body" phase="0.25"/></snake></behaviors>
+              <main><snake/></main>
+            </program>
+            """;
+
+    @TempDir
+    Path dir;
+
+    @BeforeAll
+    static void needSocat() {
+        assumeTrue(PtyPair.available(), "socat is not installed (./test-all installs it)");
+    }
+
+    Path script() throws Exception {
+        Path f = dir.resolve("snake.xml");
+        Files.writeString(f, SCRIPT);
+        return f;
+    }
+
+    @Test
+    void theModulesReceiveTheTracesAnglesAndMissingOnesAreReportedFirst() throws Exception {
+        Path trace = dir.resolve("t.csv");
+        try (EmulatedBus bus = new EmulatedBus(dir, EmulatorOptions.of(0, 1, 2, 3))) {
+            Cli r = Cli.run("run", script().toString(), "--port", bus.port(), "--duration", "2", "--trace", trace.toString());
+            assertEquals(0, r.code, r.toString());
+            assertTrue(r.err.contains("4 of 5 modules answer (0..3)"), r.err);
+            assertTrue(r.err.contains("modules 9 of the script do not answer; they will not move"), r.err);
+            assertTrue(r.err.indexOf("do not answer") < r.err.indexOf("frames sent"), r.err);
+            Traces t = new Traces(trace);
+            assertEquals(201, t.rows.size());
+            int matched = 0;
+            for (Map.Entry<Integer, double[]> e : bus.received.entrySet()) {
+                double[] row = t.rows.get(e.getKey());
+                for (int m = 0; m < 4; m++) {
+                    assertEquals(row[1 + m], e.getValue()[m], 0.005 + 1e-9, "tick " + e.getKey() + " module " + m);
+                }
+                matched++;
+            }
+            // Realtime pacing leaves the bus idle most of each tick, so every tick should arrive.
+            assertTrue(matched >= 190, "only " + matched + " of 201 ticks reached the modules");
+            Thread.sleep(400);
+            double[] last = t.rows.get(200);
+            for (int m = 0; m < 4; m++) {
+                assertEquals(last[1 + m], bus.emulator.angle(m), 0.01, "module " + m + " ends at the last setpoint");
+            }
+            double hw = t.rows.get(200)[t.column("hw1")];
+            assertTrue(Math.abs(hw - t.rows.get(199)[2]) < 15, "hw1 column holds a measured angle: " + hw);
+        }
+    }
+
+    @Test
+    void withDropsAndCorruptionTheRunCompletesAndReportsTheFaults() throws Exception {
+        try (EmulatedBus bus = new EmulatedBus(dir, EmulatorOptions.of(0, 1, 2, 3, 9).withFaults(0.05, 0.05, 1))) {
+            Cli r = Cli.run("run", script().toString(), "--port", bus.port(), "--duration", "2");
+            assertEquals(0, r.code, r.toString());
+            assertTrue(r.err.matches("(?s).*\\(([1-9]\\d*) timeouts.*"), r.err);
+            assertTrue(r.err.matches("(?s).*, ([1-9]\\d*) bad checksums received.*"), r.err);
+            assertTrue(r.err.matches("(?s).*modules rejected ([1-9]\\d*) frames.*"), r.err);
+            assertTrue(bus.emulator.stats().dropped() > 0);
+            assertTrue(bus.received.size() > 50, "setpoints got through: " + bus.received.size());
+        }
+    }
+
+    /* Safety bound: see BusOverPtyTest in parpe-serial for the budget (50 ms watchdog + margin). */
+    @Test
+    void anUnpluggedCableStopsTheModulesWithinTheBoundAndTheRunSaysSo() throws Exception {
+        try (EmulatedBus bus = new EmulatedBus(dir, EmulatorOptions.of(0, 1, 2, 3, 9).withUnplug(1.0, -1))) {
+            Cli r = Cli.run("run", script().toString(), "--port", bus.port(), "--duration", "1.8", "--on-fault", "limp");
+            assertEquals(0, r.code, r.toString());
+            assertTrue(r.err.contains("no reply from any module"), r.err);
+            assertTrue(r.err.contains("modules stop on their watchdog (limp)"), r.err);
+            assertTrue(bus.unplugNanos != 0);
+            long after = bus.stops.stream().filter(s -> s[1] >= bus.unplugNanos).count();
+            assertEquals(5, after, "every module stopped after the unplug");
+            for (long[] s : bus.stops) {
+                if (s[1] >= bus.unplugNanos) {
+                    assertTrue((s[1] - bus.unplugNanos) / 1e6 < 100, "module " + s[0] + " stopped after "
+                            + (s[1] - bus.unplugNanos) / 1e6 + " ms");
+                    assertTrue(bus.emulator.isLimp((int) s[0]));
+                }
+            }
+        }
+    }
+
+    @Test
+    void outOfRangeAnglesAreClampedNeverSent() throws Exception {
+        Path f = dir.resolve("far.xml");
+        Files.writeString(f, SCRIPT.replace("states=\"up, down\"", "states=\"far, down\""));
+        try (EmulatedBus bus = new EmulatedBus(dir, EmulatorOptions.of(0, 1, 2, 3))) {
+            Cli r = Cli.run("run", f.toString(), "--port", bus.port(), "--duration", "1");
+            assertEquals(0, r.code, r.toString());
+            assertTrue(r.err.contains("outside the joint range ±90°; sending 90°"), r.err);
+            for (double[] a : bus.received.values()) {
+                for (double v : a) {
+                    assertTrue(Double.isNaN(v) || Math.abs(v) <= 90, "sent " + v);
+                }
+            }
+        }
+    }
+
+    @Test
+    void badPortsAndOptionsGetAClearMessage() throws Exception {
+        Cli r = Cli.run("run", script().toString(), "--port", dir.resolve("nothing").toString());
+        assertEquals(2, r.code, r.toString());
+        assertTrue(r.err.contains("serial device " + dir.resolve("nothing") + " does not exist"), r.err);
+        assertTrue(!r.err.contains("Exception"), r.err);
+        r = Cli.run("run", script().toString(), "--port", dir.toString());
+        assertEquals(2, r.code, r.toString());
+        assertTrue(r.err.contains("is not a serial device"), r.err);
+        r = Cli.run("run", script().toString(), "--diverge", "5");
+        assertEquals(2, r.code, r.toString());
+        assertTrue(r.err.contains("--diverge"), r.err);
+        r = Cli.run("run", script().toString(), "--port", "/dev/null", "--on-fault", "explode");
+        assertEquals(2, r.code, r.toString());
+        assertTrue(r.err.contains("--on-fault must be hold or limp"), r.err);
+        r = Cli.run("emulate", "--port", dir.resolve("nothing").toString(), "--modules", "0..x");
+        assertEquals(2, r.code, r.toString());
+        assertTrue(r.err.contains("--modules expects module IDs or ranges like 0..7, got '0..x'"), r.err);
+        r = Cli.run("emulate", "--port", dir.resolve("nothing").toString(), "--modules", "0..300");
+        assertEquals(2, r.code, r.toString());
+        assertTrue(r.err.contains("module ID must be in 0..254"), r.err);
+        r = Cli.run("emulate", "--port", dir.resolve("nothing").toString(), "--drop", "2");
+        assertEquals(2, r.code, r.toString());
+        assertTrue(r.err.contains("drop probability must be in 0..1, got 2.0"), r.err);
+    }
+
+    @Test
+    void noModuleAnsweringIsAUsageError() throws Exception {
+        try (EmulatedBus bus = new EmulatedBus(dir, EmulatorOptions.of(20))) {
+            Cli r = Cli.run("run", script().toString(), "--port", bus.port(), "--duration", "1");
+            assertEquals(2, r.code, r.toString());
+            assertTrue(r.err.contains("no module answers on " + bus.port()), r.err);
+        }
+    }
+}
