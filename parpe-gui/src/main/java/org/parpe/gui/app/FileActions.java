@@ -49,13 +49,15 @@ final class FileActions {
     private final Prefs prefs;
     private final Autosave autosave;
     private final Runnable changed;
+    private final Runnable switched;
     private Path file;
     private String savedText = "";
     private String autosavedText;
     private boolean loading;
 
     /** {@code changed} runs after the file, the text or the dirty state changed. */
-    FileActions(Shell shell, ParslEditor editor, Prefs prefs, Runnable changed) {
+    FileActions(Shell shell, ParslEditor editor, Prefs prefs, Runnable changed, Runnable switched) {
+        this.switched = switched;
         this.shell = shell;
         this.editor = editor;
         this.prefs = prefs;
@@ -146,6 +148,7 @@ final class FileActions {
         file = p;
         savedText = saved;
         autosavedText = null;
+        switched.run();
         changed.run();
     }
 

@@ -108,7 +108,7 @@ public final class IdeWindow {
 
         status = new StatusBar(shell);
         status.control().setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
-        files = new FileActions(shell, editor, prefs, this::documentChanged);
+        files = new FileActions(shell, editor, prefs, this::documentChanged, this::fileSwitched);
         new MenuBar(this).install();
         wire(display);
     }
@@ -126,7 +126,7 @@ public final class IdeWindow {
         view.setHighlighted(runs::driven);
         view.setOverlay(() -> {
             var st = runs.controller().status();
-            String entry = st == null || st.entry().isEmpty() ? "" : "   behavior: " + st.entry();
+            String entry = st == null || st.entry().isEmpty() || !runs.running() ? "" : "   behavior: " + st.entry();
             var snap = runs.snapshot();
             return String.format(java.util.Locale.ROOT, "t = %.2f s%s", snap == null ? 0 : snap.time(), entry);
         });
@@ -206,6 +206,19 @@ public final class IdeWindow {
         editor.widget().setFocus();
     }
 
+    /** A different file is in the editor: forget what belonged to the previous one. */
+    void fileSwitched() {
+        program = null;
+        outline.show(null);
+        controls.show(null);
+        plots.setRecorder(null);
+        loadProblems = List.of();
+        runProblems = List.of();
+        showProblems();
+        runs.forgetPreview();
+        view.clear();
+    }
+
     private void documentChanged() {
         String mark = files.dirty() ? "*" : "";
         editorTab.setText(mark + files.name());
@@ -273,6 +286,7 @@ public final class IdeWindow {
     void runStateChanged() {
         boolean running = runs.running();
         toolbar.update(running, running && runs.controller().paused());
+        plots.refresh();
         if (!running && program != null) {
             controls.show(program);
         }

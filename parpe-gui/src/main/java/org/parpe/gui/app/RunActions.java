@@ -317,6 +317,12 @@ final class RunActions implements ControlPanel.Target {
         });
     }
 
+    /** Drops the robot shown for the previous script. */
+    void forgetPreview() {
+        previewKey = "";
+        preview = null;
+    }
+
     /** Forgets the preview so that the next validation rebuilds it (robot picker changed). */
     void invalidatePreview() {
         previewKey = "";

@@ -9,11 +9,13 @@ import java.util.stream.Stream;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.layout.GridLayout;
+import org.eclipse.swt.graphics.Image;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.ToolBar;
 import org.eclipse.swt.widgets.ToolItem;
+import org.parpe.gui.panels.Icons;
 import org.parpe.gui.run.Speed;
 import org.parpe.gui.run.Target;
 
@@ -30,15 +32,16 @@ final class RunToolBar {
 
     RunToolBar(Composite parent, RunActions actions, Prefs prefs) {
         bar = new Composite(parent, SWT.NONE);
-        GridLayout gl = new GridLayout(8, false);
+        GridLayout gl = new GridLayout(9, false);
         gl.marginHeight = 2;
         bar.setLayout(gl);
         ToolBar tb = new ToolBar(bar, SWT.FLAT | SWT.RIGHT);
-        run = item(tb, "\u25B6  Run", "Run the script (F5)", () -> actions.run(true, -1, null));
-        pause = item(tb, "\u23F8  Pause", "Pause or resume the run (F6)", actions::pause);
-        stop = item(tb, "\u25A0  Stop", "Stop the run (Shift+F5)", actions::stop);
+        Icons icons = Icons.of(parent.getDisplay());
+        run = item(tb, icons.run, "Run", "Run the script (F5)", () -> actions.run(true, -1, null));
+        pause = item(tb, icons.pause, "Pause", "Pause or resume the run (F6)", actions::pause);
+        stop = item(tb, icons.stop, "Stop", "Stop the run (Shift+F5)", actions::stop);
         new ToolItem(tb, SWT.SEPARATOR);
-        estop = item(tb, "\u26D4  Emergency stop (Esc)", "Stops everything at once, hardware included", actions::emergencyStop);
+        estop = item(tb, icons.estop, "Emergency stop (Esc)", "Stops everything at once, hardware included", actions::emergencyStop);
         speed = combo("Speed:", 150);
         for (Speed s : Speed.values()) {
             speed.add(s.label());
@@ -57,6 +60,8 @@ final class RunToolBar {
             prefs.put("run.target", target().name());
             updatePort();
         });
+        Label portLabel = new Label(bar, SWT.NONE);
+        portLabel.setText("Port:");
         port = new Combo(bar, SWT.DROP_DOWN);
         GridData gd = new GridData(SWT.LEFT, SWT.CENTER, false, false);
         gd.widthHint = 160;
@@ -78,8 +83,9 @@ final class RunToolBar {
         return 0;
     }
 
-    private static ToolItem item(ToolBar tb, String text, String tip, Runnable action) {
+    private static ToolItem item(ToolBar tb, Image image, String text, String tip, Runnable action) {
         ToolItem it = new ToolItem(tb, SWT.PUSH);
+        it.setImage(image);
         it.setText(text);
         it.setToolTipText(tip);
         it.addListener(SWT.Selection, e -> action.run());
@@ -150,7 +156,9 @@ final class RunToolBar {
     void update(boolean running, boolean paused) {
         run.setEnabled(!running || paused);
         pause.setEnabled(running);
-        pause.setText(paused ? "\u25B6  Resume" : "\u23F8  Pause");
+        Icons icons = Icons.of(pause.getDisplay());
+        pause.setText(paused ? "Resume" : "Pause");
+        pause.setImage(paused ? icons.run : icons.pause);
         stop.setEnabled(running);
         estop.setEnabled(true);
     }

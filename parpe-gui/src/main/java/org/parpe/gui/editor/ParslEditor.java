@@ -17,6 +17,7 @@ import org.eclipse.jface.text.source.AnnotationPainter;
 import org.eclipse.jface.text.source.AnnotationRulerColumn;
 import org.eclipse.jface.text.source.CompositeRuler;
 import org.eclipse.jface.text.source.IAnnotationAccess;
+import org.eclipse.jface.text.source.IAnnotationAccessExtension;
 import org.eclipse.jface.text.source.IAnnotationHover;
 import org.eclipse.jface.text.source.ISourceViewer;
 import org.eclipse.jface.text.source.LineNumberRulerColumn;
@@ -24,6 +25,9 @@ import org.eclipse.jface.text.source.SourceViewer;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.custom.StyledText;
 import org.eclipse.swt.graphics.Color;
+import org.eclipse.swt.graphics.GC;
+import org.eclipse.swt.graphics.Rectangle;
+import org.eclipse.swt.widgets.Canvas;
 import org.eclipse.swt.widgets.Composite;
 import org.parpe.core.diag.Diagnostic;
 
@@ -189,7 +193,39 @@ public final class ParslEditor {
         };
     }
 
-    private static final class Access implements IAnnotationAccess {
+    private static final class Access implements IAnnotationAccess, IAnnotationAccessExtension {
+        @Override
+        public String getTypeLabel(Annotation annotation) {
+            return annotation instanceof ProblemAnnotation p && p.isError() ? "Error" : "Warning";
+        }
+
+        @Override
+        public int getLayer(Annotation annotation) {
+            return annotation instanceof ProblemAnnotation p ? p.getLayer() : DEFAULT_LAYER;
+        }
+
+        @Override
+        public void paint(Annotation annotation, GC gc, Canvas canvas, Rectangle bounds) {
+            if (annotation instanceof ProblemAnnotation p) {
+                p.paint(gc, canvas, bounds);
+            }
+        }
+
+        @Override
+        public boolean isPaintable(Annotation annotation) {
+            return annotation instanceof ProblemAnnotation;
+        }
+
+        @Override
+        public boolean isSubtype(Object annotationType, Object potentialSupertype) {
+            return annotationType.equals(potentialSupertype);
+        }
+
+        @Override
+        public Object[] getSupertypes(Object annotationType) {
+            return new Object[0];
+        }
+
         @Override
         public Object getType(Annotation annotation) {
             return annotation.getType();

@@ -26,7 +26,7 @@ public final class ProblemsView {
         table = new Table(box, SWT.FULL_SELECTION | SWT.SINGLE | SWT.V_SCROLL);
         table.setHeaderVisible(true);
         table.setLinesVisible(true);
-        column("", 70);
+        column("", 90);
         column("Description", 640);
         column("Location", 200);
         table.addListener(SWT.Selection, e -> pick(jump));
@@ -59,7 +59,8 @@ public final class ProblemsView {
         for (Diagnostic d : shown) {
             TableItem it = new TableItem(table, SWT.NONE);
             boolean err = d.severity() == Severity.ERROR;
-            it.setText(0, err ? "\u26D4 error" : "\u26A0 warning");
+            it.setImage(0, err ? Icons.of(table.getDisplay()).error : Icons.of(table.getDisplay()).warning);
+            it.setText(0, err ? "error" : "warning");
             it.setForeground(0, table.getDisplay().getSystemColor(err ? SWT.COLOR_RED : SWT.COLOR_DARK_YELLOW));
             it.setText(1, d.message());
             it.setText(2, location(d));

@@ -87,6 +87,13 @@ public final class View3D {
         canvas.redraw();
     }
 
+    /** Forgets the robot drawn (another script was opened). */
+    public void clear() {
+        last = null;
+        framedFor = null;
+        canvas.redraw();
+    }
+
     /** Frames the robot again on the next snapshot. */
     public void resetView() {
         framedFor = null;
@@ -191,6 +198,6 @@ public final class View3D {
         }
         double size = Math.max(0.2, Math.max(maxX - minX, maxY - minY));
         camera.lookAt((minX + maxX) / 2, (minY + maxY) / 2, 0.03);
-        camera.setDistance(size * 1.7 + 0.25);
+        camera.setDistance(size * 1.25 + 0.2);
     }
 }

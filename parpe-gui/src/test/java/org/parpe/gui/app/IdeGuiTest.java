@@ -1,0 +1,175 @@
+package org.parpe.gui.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.BooleanSupplier;
+import org.eclipse.swt.graphics.ImageData;
+import org.eclipse.swt.graphics.ImageLoader;
+import org.eclipse.swt.widgets.Display;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.MethodOrderer;
+import org.junit.jupiter.api.Order;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.TestMethodOrder;
+import org.parpe.core.run.RunOutcome;
+import org.parpe.gui.editor.ProblemAnnotation;
+import org.parpe.gui.run.Speed;
+import org.parpe.gui.run.Target;
+
+/**
+ * The IDE for real on an X display (Xvfb in CI): open an example, run it in the simulator,
+ * steer it with a control, stop it; a broken script gets a marker at the right line. Every wait
+ * is bounded; screenshots are kept under {@code target/gui-test-artefacts} as evidence.
+ */
+@TestMethodOrder(MethodOrderer.OrderAnnotation.class)
+class IdeGuiTest {
+    private static final long WAIT_MS = 30_000;
+    private static Display display;
+    private static IdeWindow ide;
+    private static Path artefacts;
+
+    @BeforeAll
+    static void openWindow() throws Exception {
+        String x = System.getenv("DISPLAY");
+        if (x == null || x.isBlank()) {
+            fail("No X display (DISPLAY is not set). The GUI tests need one: run them under xvfb-run, as ./test-all does.");
+        }
+        artefacts = Path.of(System.getProperty("parpe.artefacts", "target/gui-test-artefacts"));
+        Files.createDirectories(artefacts);
+        Path home = Files.createTempDirectory("parpe-gui-test");
+        display = Display.getDefault();
+        ide = new IdeWindow(display, new Prefs(home));
+        ide.open(null, true);
+        pump(() -> ide.validations() > 0, "the first validation");
+    }
+
+    @AfterAll
+    static void closeWindow() {
+        if (ide != null && !ide.shell().isDisposed()) {
+            ide.runs().stop();
+            pump(() -> !ide.runs().running(), "the run to stop");
+            ide.shell().dispose();
+        }
+    }
+
+    private static Path example(String name) {
+        Path p = Examples.folder() == null ? null : Examples.folder().resolve(name);
+        assertTrue(p != null && Files.isRegularFile(p), "example " + name + " not found (parpe.examples=" + System.getProperty("parpe.examples") + ")");
+        return p;
+    }
+
+    /** Runs the event loop until {@code done} holds; fails after {@link #WAIT_MS}. */
+    private static void pump(BooleanSupplier done, String what) {
+        long until = System.currentTimeMillis() + WAIT_MS;
+        while (!done.getAsBoolean()) {
+            if (System.currentTimeMillis() > until) {
+                fail("timed out after " + WAIT_MS / 1000 + " s waiting for " + what);
+            }
+            if (!display.readAndDispatch()) {
+                try {
+                    Thread.sleep(5);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    fail("interrupted");
+                }
+            }
+        }
+    }
+
+    private static double engineTime() {
+        var st = ide.runs().controller().status();
+        return st == null ? -1 : st.time();
+    }
+
+    private static void screenshot(String name) throws Exception {
+        Path f = artefacts.resolve(name);
+        Screenshot.save(ide.shell(), f);
+        ImageData d = new ImageLoader().load(f.toString())[0];
+        assertTrue(d.width > 600 && d.height > 400, "screenshot too small: " + d.width + "x" + d.height);
+        assertTrue(Screenshot.distinctColours(d, 64) >= 64, "screenshot " + f + " looks blank");
+    }
+
+    @Test
+    @Order(1)
+    void runsAnExampleInTheSimulatorAndSteersItWithAControl() throws Exception {
+        ide.files().openPath(example("teleop-dirwave.xml"));
+        int before = ide.validations();
+        pump(() -> ide.validations() > before && ide.program() != null, "teleop-dirwave.xml to load");
+        assertEquals(0, ide.problems().errorCount(), "example has errors: " + ide.problems().shown());
+        ide.toolbar().setTarget(Target.SIMULATOR);
+        ide.toolbar().setSpeed(Speed.TIMES_10);
+        AtomicReference<RunOutcome> outcome = new AtomicReference<>();
+        ide.runs().run(false, -1, outcome::set);
+        pump(() -> engineTime() >= 1.0, "1 s of simulated time");
+        assertFalse(ide.runs().driven().isEmpty(), "the wave should drive modules while direction = forward");
+        assertNotNull(ide.view().lastSnapshot(), "the 3D view has drawn no robot");
+        assertFalse(ide.view().lastSnapshot().bodies().isEmpty());
+
+        assertTrue(ide.controls().set("direction", "stop"), "no 'direction' radio control in the panel");
+        double changedAt = engineTime();
+        pump(() -> engineTime() > changedAt + 0.2 && ide.runs().driven().isEmpty(),
+                "the modules to stop being driven after direction = stop");
+        assertTrue(ide.controls().set("direction", "backward"));
+        pump(() -> engineTime() >= 3.0 && !ide.runs().driven().isEmpty(), "3 s of simulated time, driven backwards");
+        assertEquals("", ide.runs().controller().lastError());
+        screenshot("teleop-running.png");
+
+        ide.runs().stop();
+        pump(() -> outcome.get() != null, "the run to stop");
+        assertEquals(RunOutcome.Status.STOPPED, outcome.get().status(), outcome.get().message());
+        assertTrue(outcome.get().time() >= 3.0);
+        assertFalse(ide.runs().running());
+    }
+
+    @Test
+    @Order(2)
+    void aBrokenScriptShowsAnErrorMarkerAtTheRightLine() throws Exception {
+        ide.files().openPath(example("hello-snake.xml"));
+        String text = Files.readString(example("hello-snake.xml"));
+        List<String> lines = List.of(text.split("\n", -1));
+        int line = -1;
+        for (int i = 0; i < lines.size(); i++) {
+            if (lines.get(i).contains("states=\"up, down\"")) {
+                line = i + 1;
+            }
+        }
+        assertTrue(line > 0, "hello-snake.xml has no 'states=\"up, down\"' line to break");
+        int before = ide.validations();
+        ide.editor().document().set(text.replace("states=\"up, down\"", "states=\"up, dwn\""));
+        pump(() -> ide.validations() > before, "validation of the edited text");
+        assertTrue(ide.problems().errorCount() > 0, "no error for an undefined state");
+        List<ProblemAnnotation> marks = ide.editor().markers();
+        assertFalse(marks.isEmpty(), "no marker in the editor");
+        int expected = line;
+        assertTrue(marks.stream().anyMatch(m -> m.isError() && ide.editor().lineOf(m) == expected),
+                "no error marker on line " + expected + "; markers on lines "
+                        + marks.stream().map(ide.editor()::lineOf).toList());
+        assertTrue(ide.files().dirty(), "an edited file should be marked dirty");
+        screenshot("broken-script.png");
+
+        AtomicReference<RunOutcome> refused = new AtomicReference<>();
+        ide.runs().run(false, 1, refused::set);
+        assertNotNull(refused.get(), "Run should refuse a script with errors at once");
+        assertEquals(RunOutcome.Status.ERROR, refused.get().status());
+        assertFalse(ide.runs().running());
+    }
+
+    @Test
+    @Order(3)
+    void unsavedTextIsKeptForRecovery() {
+        ide.files().autosaveNow();
+        Autosave.Recovered r = new Autosave(ide.prefs().home()).find();
+        assertNotNull(r, "no autosave copy of the unsaved text");
+        assertTrue(r.text().contains("up, dwn"));
+        assertEquals(example("hello-snake.xml").toAbsolutePath().normalize(), r.file());
+    }
+}
