@@ -15,11 +15,13 @@ import java.util.Locale;
  * be {@code <include>}d to play the automaton on other groups with other periods and phases.
  * Row i's time is the recorded interval before pose i; the first row (the move from wherever the
  * robot is, or the wrap from the last pose when cycling) takes the mean recorded interval, or
- * 1 s for a single pose. The file is replaced atomically, so a crash leaves the previous version.
+ * 1 s for a single pose. Times are rounded to the default tick (0.01 s) so that at the default tick
+ * every pose is reached exactly on a tick. The file is replaced atomically, so a crash leaves the
+ * previous version.
  */
 public final class RecordingWriter {
-    /** The shortest state: a zero interval would make the scheduler skip the pose. */
-    public static final double MIN_INTERVAL = 0.001;
+    /** Row times are multiples of this (the default tick); also the shortest row, as a zero would skip the pose. */
+    public static final double RESOLUTION = 0.01;
 
     private RecordingWriter() {
     }
@@ -30,10 +32,10 @@ public final class RecordingWriter {
         double[] t = new double[n];
         double sum = 0;
         for (int i = 1; i < n; i++) {
-            t[i] = Math.max(MIN_INTERVAL, round3(r.interval(i)));
+            t[i] = Math.max(RESOLUTION, roundTick(r.interval(i)));
             sum += t[i];
         }
-        t[0] = n > 1 ? Math.max(MIN_INTERVAL, round3(sum / (n - 1))) : 1.0;
+        t[0] = n > 1 ? Math.max(RESOLUTION, roundTick(sum / (n - 1))) : 1.0;
         return t;
     }
 
@@ -51,7 +53,7 @@ public final class RecordingWriter {
         StringBuilder times = new StringBuilder();
         StringBuilder rows = new StringBuilder();
         for (int i = 0; i < r.size(); i++) {
-            times.append(i == 0 ? "" : ", ").append(String.format(Locale.ROOT, "%.3f", t[i]));
+            times.append(i == 0 ? "" : ", ").append(String.format(Locale.ROOT, "%.2f", t[i]));
             rows.append("      ");
             double[] p = r.pose(i);
             for (int k = 0; k < p.length; k++) {
@@ -92,7 +94,7 @@ public final class RecordingWriter {
         return safe.isEmpty() ? "" : ", " + safe;
     }
 
-    private static double round3(double v) {
-        return Math.round(v * 1000) / 1000.0;
+    private static double roundTick(double v) {
+        return Math.round(v / RESOLUTION) * RESOLUTION;
     }
 }

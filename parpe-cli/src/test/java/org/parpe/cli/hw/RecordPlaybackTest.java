@@ -1,0 +1,162 @@
+package org.parpe.cli.hw;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PipedInputStream;
+import java.io.PipedOutputStream;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Map;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+import org.parpe.core.load.LoadResult;
+import org.parpe.core.load.ScriptLoader;
+import org.parpe.core.model.Automaton;
+import org.parpe.serial.emu.EmulatorOptions;
+import org.parpe.serial.link.PtyPair;
+import picocli.CommandLine;
+
+/**
+ * Posable programming end to end: the emulator's limp modules are posed by hand, {@code parpe
+ * record} captures each pose on Enter, and {@code parpe run} plays the file back so that the
+ * modules pass through the captured poses.
+ */
+@Timeout(value = 90, unit = TimeUnit.SECONDS)
+class RecordPlaybackTest {
+    static final double[][] POSES = {{10, -20, 30}, {45.5, 0, -60.25}, {-15, 70, 5}};
+    static final String ROBOT = """
+            <program>
+              <robot><structure><arm elements="4, 2, 3"/><rest elements="0, 1"/></structure></robot>
+            </program>
+            """;
+
+    @TempDir
+    Path dir;
+
+    @BeforeAll
+    static void needSocat() {
+        assumeTrue(PtyPair.available(), "socat is not installed (./test-all installs it)");
+    }
+
+    @Test
+    void recordedPosesPlayBackThroughTheSameModules() throws Exception {
+        Path robot = dir.resolve("robot.xml");
+        Files.writeString(robot, ROBOT);
+        Path rec = dir.resolve("arm-rec.xml");
+        int[] arm = {4, 2, 3};
+        try (EmulatedBus bus = new EmulatedBus(dir, EmulatorOptions.of(0, 1, 2, 3, 4))) {
+            PipedOutputStream keys = new PipedOutputStream();
+            RecordCommand cmd = new RecordCommand();
+            cmd.input = new PipedInputStream(keys);
+            ByteArrayOutputStream err = new ByteArrayOutputStream();
+            CommandLine cl = new CommandLine(cmd);
+            cl.setErr(new PrintWriter(err, true, StandardCharsets.UTF_8));
+            CompletableFuture<Integer> code = CompletableFuture.supplyAsync(() -> cl.execute("--port", bus.port(),
+                    "--group", "arm", "--script", robot.toString(), "--out", rec.toString()));
+            awaitLimp(bus, arm);
+            for (int p = 0; p < POSES.length; p++) {
+                for (int k = 0; k < arm.length; k++) {
+                    assertTrue(bus.emulator.backDrive(arm[k], POSES[p][k]), "module " + arm[k] + " is limp");
+                }
+                Thread.sleep(p == 0 ? 50 : 300 + 200 * p);
+                keys.write('\n');
+                keys.flush();
+                awaitRows(rec, p + 1);
+            }
+            keys.close();
+            assertEquals(0, code.get(20, TimeUnit.SECONDS), err.toString(StandardCharsets.UTF_8));
+            assertTrue(err.toString(StandardCharsets.UTF_8).contains("3 poses saved in " + rec), err.toString());
+            Thread.sleep(100);
+            for (int id : new int[] {0, 1, 2, 3, 4}) {
+                assertTrue(!bus.emulator.isLimp(id), "module " + id + " holds after recording");
+            }
+            double[] times = checkFile(rec);
+            playBack(bus, rec, times);
+        }
+    }
+
+    private static void awaitLimp(EmulatedBus bus, int[] ids) throws InterruptedException {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        while (System.nanoTime() < deadline) {
+            boolean all = true;
+            for (int id : ids) {
+                all &= bus.emulator.isLimp(id);
+            }
+            if (all) {
+                return;
+            }
+            Thread.sleep(10);
+        }
+        throw new AssertionError("the group never went limp");
+    }
+
+    private static void awaitRows(Path rec, int rows) throws Exception {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        while (System.nanoTime() < deadline) {
+            if (Files.exists(rec) && Files.readString(rec).contains(" poses of group") && count(rec) == rows) {
+                return;
+            }
+            Thread.sleep(10);
+        }
+        throw new AssertionError("the recording never reached " + rows + " poses");
+    }
+
+    private static int count(Path rec) throws Exception {
+        String s = Files.readString(rec);
+        return Integer.parseInt(s.substring(s.indexOf("recording (PARSL.md section 12): ") + 33).split(" ")[0]);
+    }
+
+    /** The file loads, has one row per pose with the recorded angles; returns its row times. */
+    private static double[] checkFile(Path rec) throws Exception {
+        LoadResult r = ScriptLoader.load(rec, Map.of());
+        assertTrue(r.errors().isEmpty(), r.diagnostics().toString());
+        Automaton a = r.program().automaton("rec_arm").orElseThrow();
+        assertEquals(POSES.length, a.states().size());
+        String text = Files.readString(rec);
+        String times = text.substring(text.indexOf("times=\"") + 7);
+        double[] t = java.util.Arrays.stream(times.substring(0, times.indexOf('"')).split(","))
+                .mapToDouble(s -> Double.parseDouble(s.trim())).toArray();
+        assertEquals(POSES.length, t.length);
+        assertTrue(t[2] > t[1] + 0.1, "intervals follow the capture times: " + java.util.Arrays.toString(t));
+        assertTrue(t[1] >= 0.45 && t[1] < 2, java.util.Arrays.toString(t));
+        assertEquals((t[1] + t[2]) / 2, t[0], 0.0051, "the first row takes the mean interval");
+        return t;
+    }
+
+    /** Plays the file on the bus; at each pose's time, the trace and the modules hold that pose. */
+    private void playBack(EmulatedBus bus, Path rec, double[] t) throws Exception {
+        bus.received.clear();
+        Path trace = dir.resolve("play.csv");
+        Cli r = Cli.run("run", rec.toString(), "--port", bus.port(), "--trace", trace.toString());
+        assertEquals(0, r.code, r.toString());
+        Traces tr = new Traces(trace);
+        double at = 0;
+        for (int p = 0; p < POSES.length; p++) {
+            at += t[p];
+            int tick = (int) Math.round(at / 0.01);
+            double[] row = tr.rows.get(tick);
+            double[] sent = bus.received.get(tick);
+            for (int k = 0; k < 3; k++) {
+                int col = tr.column("m" + new int[] {4, 2, 3}[k]);
+                assertEquals(POSES[p][k], row[col], 1e-6, "trace at pose " + p);
+                if (sent != null) {
+                    int index = new int[] {4, 2, 3}[k];
+                    assertEquals(POSES[p][k], sent[index], 0.005, "module " + index + " received pose " + p);
+                }
+            }
+        }
+        Thread.sleep(500);
+        for (int k = 0; k < 3; k++) {
+            assertEquals(POSES[2][k], bus.emulator.angle(new int[] {4, 2, 3}[k]), 0.01, "the modules end in the last pose");
+        }
+    }
+}
