@@ -226,16 +226,22 @@ public final class ParslEditor {
             return new Object[0];
         }
 
+        /** Required by the interface, deprecated there; only its type matters here. */
+        @Deprecated
         @Override
         public Object getType(Annotation annotation) {
             return annotation.getType();
         }
 
+        /** Required by the interface, deprecated there; only its type matters here. */
+        @Deprecated
         @Override
         public boolean isMultiLine(Annotation annotation) {
             return false;
         }
 
+        /** Required by the interface, deprecated there; only its type matters here. */
+        @Deprecated
         @Override
         public boolean isTemporary(Annotation annotation) {
             return true;

@@ -156,6 +156,12 @@ public final class View3D {
 
     private void paint(Event e) {
         Rectangle r = canvas.getClientArea();
+        render(e.gc, r.width, r.height);
+        frames++;
+    }
+
+    /** Draws one frame of the current snapshot on {@code gc} (also used to time drawing off screen). */
+    public void render(GC gc, int width, int height) {
         SimSnapshot snap = source.get();
         if (snap != null) {
             last = snap;
@@ -168,12 +174,10 @@ public final class View3D {
             Vec3 c = snap.centerOfMass();
             camera.follow(c.x(), c.y(), Math.max(0.0, c.z()), 0.25);
         }
-        GC gc = e.gc;
         gc.setAntialias(SWT.ON);
-        renderer.draw(gc, camera, snap, new SceneRenderer.Style(highlighted.get(), labels), r.width, r.height);
+        renderer.draw(gc, camera, snap, new SceneRenderer.Style(highlighted.get(), labels), width, height);
         gc.setAntialias(SWT.DEFAULT);
         hud(gc, snap);
-        frames++;
     }
 
     private void hud(GC gc, SimSnapshot snap) {
