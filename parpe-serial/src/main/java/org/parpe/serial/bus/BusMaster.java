@@ -51,6 +51,11 @@ public final class BusMaster implements AutoCloseable {
         return link.name();
     }
 
+    /** Bytes still queued for the wire. */
+    public int pendingOutput() {
+        return link.pendingOutput();
+    }
+
     /** The error that ended the link, or null while it works. */
     public IOException linkError() {
         return linkError;

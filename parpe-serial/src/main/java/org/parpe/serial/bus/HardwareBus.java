@@ -26,6 +26,8 @@ import org.parpe.serial.protocol.Protocol;
 public final class HardwareBus implements JointSink, SensorSource, AutoCloseable {
     private static final int BACKOFF_CYCLES = 50;
     private static final int READ_GAP_MS = 2;
+    private static final int READ_EVERY_WHEN_BUSY = 10;
+    private static final long WIRE_POLL_NANOS = 20_000;
 
     private enum State { CONNECTED, SILENT, LINK_LOST }
 
@@ -45,6 +47,7 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
     private int readCursor;
     private int readAttempt;
     private int consecutiveTimeouts;
+    private int busyCycles;
     private long lastSend;
     private long reads;
     private long readsRetried;
@@ -237,8 +240,18 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
         }
     }
 
-    /** One cycle: setpoints if new or due as keepalive, then one read attempt. */
+    /**
+     * One cycle: setpoints if new or due as keepalive, then one read attempt. While setpoints
+     * come faster than the line carries them, only every {@value #READ_EVERY_WHEN_BUSY}th cycle
+     * reads, so that setpoints keep most of the wire.
+     */
     private void cycle() throws IOException, InterruptedException {
+        int queued = master.pendingOutput();
+        if (queued > 0) {
+            // The line is still busy with the last frame: wait until it drains rather than queue a stale one.
+            LockSupport.parkNanos(Math.max(WIRE_POLL_NANOS, (long) (queued * 10e9 / config.baud()) - WIRE_POLL_NANOS));
+            return;
+        }
         long now = System.nanoTime();
         boolean keepalive = now - lastSend > TimeUnit.MILLISECONDS.toNanos(config.keepaliveMs());
         int seq = buffers.take(wire, first, keepalive);
@@ -246,7 +259,8 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
             master.sendSetpoints(seq, first, wire, wire.length);
             lastSend = now;
         }
-        boolean read = readOne();
+        busyCycles = seq >= 0 ? busyCycles + 1 : 0;
+        boolean read = (busyCycles == 0 || busyCycles % READ_EVERY_WHEN_BUSY == 0) && readOne();
         if (consecutiveTimeouts > config.retries()
                 && System.nanoTime() - master.lastReplyNanos() > TimeUnit.MILLISECONDS.toNanos(config.deadAfterMs())) {
             silent();

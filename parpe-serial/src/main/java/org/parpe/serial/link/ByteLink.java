@@ -17,6 +17,14 @@ public interface ByteLink extends AutoCloseable {
      */
     int read(byte[] b) throws IOException;
 
+    /**
+     * Bytes written but not yet on the wire (the driver's output queue); the bus sends new
+     * setpoints only when it is empty, so stale frames never queue up behind a slow line.
+     */
+    default int pendingOutput() {
+        return 0;
+    }
+
     /** A name for messages (the device path). */
     String name();
 

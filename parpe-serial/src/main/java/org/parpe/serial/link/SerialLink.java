@@ -109,6 +109,11 @@ public final class SerialLink implements ByteLink {
     }
 
     @Override
+    public int pendingOutput() {
+        return closed ? 0 : Math.max(0, port.bytesAwaitingWrite());
+    }
+
+    @Override
     public String name() {
         return path;
     }
