@@ -193,7 +193,10 @@ public final class IdeWindow {
 
     /** Opens the window; then {@code file} if given, else recovers or starts a new script. */
     public void open(Path file, boolean automated) {
-        shell.setSize(1480, 920);
+        org.eclipse.swt.graphics.Rectangle screen = shell.getDisplay().getPrimaryMonitor().getClientArea();
+        int w = Math.min(1480, screen.width);
+        int h = Math.min(920, screen.height);
+        shell.setBounds(screen.x + (screen.width - w) / 2, screen.y + (screen.height - h) / 2, w, h);
         shell.open();
         boolean recovered = !automated && files.offerRecovery(true);
         if (file != null) {

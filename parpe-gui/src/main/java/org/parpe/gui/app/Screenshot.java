@@ -29,7 +29,7 @@ public final class Screenshot {
             // Let every pending paint happen before the capture.
         }
         display.update();
-        Rectangle b = shell.getBounds();
+        Rectangle b = shell.getBounds().intersection(display.getBounds());
         Image image = new Image(display, b.width, b.height);
         try {
             GC gc = new GC(display);

@@ -112,8 +112,8 @@ public final class PlotView {
         }
         gc.setLineWidth(1);
         gc.setForeground(gc.getDevice().getSystemColor(SWT.COLOR_DARK_GRAY));
-        String legend = recorder == null ? "Run a script to see joint angles" : "solid: commanded   dotted: measured (degrees)";
-        gc.drawText(legend, right - gc.textExtent(legend).x, top + 2, true);
+        String legend = recorder == null ? "Run a script to see joint angles" : "solid: commanded, dotted: measured (\u00b0)";
+        gc.drawText(legend, right - gc.textExtent(legend).x - 4, bottom - gc.textExtent(legend).y - 2, true);
     }
 
     private record Frame(int left, int right, int top, int bottom, double t0, double t1, double lo, double hi) {
