@@ -25,7 +25,7 @@ import org.parpe.core.diag.SourcePos;
 final class ConfigReader {
     private static final Set<String> PART_ATTRS = Set.of("name", "type", "id", "angle", "plates", "limp");
     private static final Set<String> CONNECT_ATTRS = Set.of("from", "to", "orientation");
-    private static final Set<String> ROOT_ATTRS = Set.of("part", "x", "y", "roll", "pitch", "yaw");
+    private static final Set<String> ROOT_ATTRS = Set.of("part", "x", "y", "roll", "pitch", "yaw", "height");
 
     private final String file;
     private final DiagnosticSink diags;
@@ -170,7 +170,11 @@ final class ConfigReader {
             return;
         }
         root = new RootPose(a.get("part"), number(a, "x", 0, at, false), number(a, "y", 0, at, false),
-                number(a, "roll", 0, at, false), number(a, "pitch", 0, at, false), number(a, "yaw", 0, at, false));
+                number(a, "roll", 0, at, false), number(a, "pitch", 0, at, false), number(a, "yaw", 0, at, false),
+                number(a, "height", RootPose.RESTING, at, false));
+        if (root.height() < 0) {
+            error(at, "height must be >= 0 m, got " + root.height());
+        }
     }
 
     private boolean known(Map<String, String> a, Set<String> allowed, String element, SourcePos at) {

@@ -58,7 +58,9 @@ final class Generators {
 
     /**
      * A centipede: a spine of segments with a node at every leg pair, legs of {@code leg} segments
-     * (the first swings fore and aft about a vertical axis, the others lift) ending in feet. IDs:
+     * (the first swings fore and aft about a vertical axis, the others lift) ending in feet. A
+     * positive lift angle raises the foot on both sides; a positive swing angle moves a right
+     * foot forwards and a left foot backwards (so scripts mirror the left swing with "!"). IDs:
      * left legs from the head, each from the body outwards; then right legs likewise; then the
      * spine from the head. The defaults (7 pairs, 2-segment legs, 4 segments between pairs,
      * 2 before the first pair, 1 after the last) give the paper's 55-module, 14-leg centipede.
@@ -82,7 +84,7 @@ final class Generators {
             prevPlate = b.chain(prev, prevPlate, node, 0, 1);
             prev = node;
             leg(b, node, 2, "L" + p, p * leg, leg, 1);
-            leg(b, node, 3, "R" + p, legIds + p * leg, leg, 3);
+            leg(b, node, 3, "R" + p, legIds + p * leg, leg, 1);
         }
         for (int i = 0; i < tail; i++) {
             String s = "spine" + (spineId - 2 * legIds);

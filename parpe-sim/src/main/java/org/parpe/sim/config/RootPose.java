@@ -1,8 +1,8 @@
 package org.parpe.sim.config;
 
 /**
- * Where the root part is placed. The robot is then lifted so that its lowest point rests just
- * above the ground (z = 0), so no height is given.
+ * Where the root part is placed. The robot is then moved up or down so that its lowest point is
+ * {@code height} above the ground (z = 0).
  *
  * @param part  name of the root part
  * @param x     x of the root part's origin, metres
@@ -10,6 +10,15 @@ package org.parpe.sim.config;
  * @param roll  rotation about world x, degrees (applied first)
  * @param pitch rotation about world y, degrees (second)
  * @param yaw   rotation about world z, degrees (last)
+ * @param height clearance of the robot's lowest point above the ground at the start, m
  */
-public record RootPose(String part, double x, double y, double roll, double pitch, double yaw) {
+public record RootPose(String part, double x, double y, double roll, double pitch, double yaw, double height) {
+
+    /** Resting on the ground (0.5 mm clearance). */
+    public static final double RESTING = 0.0005;
+
+    /** A pose resting on the ground. */
+    public RootPose(String part, double x, double y, double roll, double pitch, double yaw) {
+        this(part, x, y, roll, pitch, yaw, RESTING);
+    }
 }

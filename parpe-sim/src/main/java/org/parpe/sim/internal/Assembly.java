@@ -26,8 +26,6 @@ public final class Assembly {
     private static final double LOOP_GAP = 0.003;
     /** Allowed misalignment of two plates that close a loop, rad. */
     private static final double LOOP_TWIST = Math.toRadians(3);
-    /** Height of the lowest point above the ground at the start, m. */
-    private static final double DROP = 0.0005;
 
     /**
      * One rigid piece placed in the world.
@@ -131,11 +129,11 @@ public final class Assembly {
         if (!ok) {
             return null;
         }
-        return place(parts, geos, placement, first, cluster);
+        return place(parts, geos, placement, first, cluster, config.root().height());
     }
 
     private static Assembly place(List<PartSpec> parts, List<PartGeometry> geos, Placement placement,
-                                  int[] first, int[] cluster) {
+                                  int[] first, int[] cluster, double height) {
         List<PlacedPiece> placed = new ArrayList<>();
         List<Hinge> hinges = new ArrayList<>();
         for (int i = 0; i < parts.size(); i++) {
@@ -154,7 +152,7 @@ public final class Assembly {
             }
         }
         hinges.sort((a, b) -> Integer.compare(a.moduleId(), b.moduleId()));
-        double lift = DROP - lowest(placed);
+        double lift = height - lowest(placed);
         List<PlacedPiece> lifted = new ArrayList<>();
         Vec3 up = new Vec3(0, 0, lift);
         for (PlacedPiece pp : placed) {

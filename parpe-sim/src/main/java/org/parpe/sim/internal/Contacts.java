@@ -20,6 +20,8 @@ import org.ode4j.ode.OdeHelper;
 final class Contacts implements DGeom.DNearCallback {
     /** Contact points computed per pair of geoms. */
     private static final int PER_PAIR = 8;
+    /** Contact points used per pair of geoms (the deepest ODE reports first). */
+    private final int used;
     /** Contact points kept for a snapshot. */
     static final int KEPT = 512;
 
@@ -44,6 +46,7 @@ final class Contacts implements DGeom.DNearCallback {
         this.world = world;
         this.group = group;
         this.params = params;
+        this.used = Math.min(PER_PAIR, params.contactsPerPair());
         int n = assembly.pieces().size();
         clusterOf = new int[n];
         hingeOf = new int[n];
@@ -83,7 +86,7 @@ final class Contacts implements DGeom.DNearCallback {
         if (p1 >= 0 && p2 >= 0 && (clusterOf[p1] == clusterOf[p2] || jointed[clusterOf[p1]][clusterOf[p2]])) {
             return;
         }
-        int n = OdeHelper.collide(g1, g2, PER_PAIR, buffer.getGeomBuffer());
+        int n = Math.min(used, OdeHelper.collide(g1, g2, PER_PAIR, buffer.getGeomBuffer()));
         boolean ground = p1 < 0 || p2 < 0;
         for (int i = 0; i < n; i++) {
             DContact c = buffer.get(i);

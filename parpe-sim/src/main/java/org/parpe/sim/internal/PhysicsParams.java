@@ -9,12 +9,16 @@ package org.parpe.sim.internal;
  * @param selfFriction     friction between two parts of the robot (plastic on plastic)
  * @param softErp          contact error reduction
  * @param softCfm          contact constraint force mixing (softness)
+ * @param contactsPerPair  contact points kept per pair of touching pieces
  */
 public record PhysicsParams(double maxSubstep, int iterations, double groundFriction, double selfFriction,
-                            double softErp, double softCfm) {
+                            double softErp, double softCfm, int contactsPerPair) {
 
     /** The settings used unless a test asks for others. */
     public static PhysicsParams defaults() {
-        return new PhysicsParams(0.005, 20, 0.6, 0.3, 0.3, 1e-4);
+        // 5 ms steps, 10 solver iterations and two contact points per touching pair: the
+        // cheapest settings measured to keep the standard gaits (snake, wheel, centipede)
+        // moving reliably; 10 ms steps run twice as fast but make the wheel gait erratic.
+        return new PhysicsParams(0.005, 10, 0.6, 0.3, 0.3, 1e-4, 2);
     }
 }

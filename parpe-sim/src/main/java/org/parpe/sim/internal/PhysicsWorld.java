@@ -10,6 +10,7 @@ import org.ode4j.ode.DHashSpace;
 import org.ode4j.ode.DHingeJoint;
 import org.ode4j.ode.DJointGroup;
 import org.ode4j.ode.DMass;
+import org.ode4j.ode.DMisc;
 import org.ode4j.ode.DSpace;
 import org.ode4j.ode.DWorld;
 import org.ode4j.ode.OdeHelper;
@@ -44,6 +45,7 @@ public final class PhysicsWorld implements AutoCloseable {
     private final Contacts contacts;
     private final double totalMass;
     private double time;
+    private long stepCount;
 
     /** Builds the world for {@code assembly}. */
     public PhysicsWorld(Assembly assembly, PhysicsParams params) {
@@ -179,6 +181,9 @@ public final class PhysicsWorld implements AutoCloseable {
             driveServos();
             contacts.clearKept();
             space.collide(null, contacts);
+            // QuickStep reorders constraints with ODE's global random generator; seeding it from
+            // this world's own step count keeps runs reproducible whatever else uses ODE.
+            DMisc.dRandSetSeed(stepCount++);
             world.quickStep(h);
             contactGroup.empty();
         }

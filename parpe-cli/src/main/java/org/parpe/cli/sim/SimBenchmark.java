@@ -1,0 +1,96 @@
+package org.parpe.cli.sim;
+
+import java.io.PrintStream;
+import java.lang.management.ManagementFactory;
+import java.util.List;
+import java.util.Locale;
+import org.parpe.core.run.Engine;
+import org.parpe.core.run.RunOptions;
+import org.parpe.cli.bench.Benchmark;
+import org.parpe.core.diag.DiagnosticList;
+import org.parpe.core.model.Program;
+import org.parpe.sim.Simulator;
+import org.parpe.sim.config.RobotConfigs;
+
+/**
+ * Simulator figures: real-time factor (simulated seconds per wall-clock second, one thread) of
+ * an 8-module snake, the paper's 55-module centipede walking (goal ≥ 25) and a 200-module
+ * snake, plus bytes allocated per tick. Each case warms up, then runs for 3 s of its thread's CPU
+ * time; {@code realtime_factor} divides simulated time by that CPU time (one core, unaffected by
+ * other processes), {@code realtime_factor_wall} by the elapsed wall-clock time.
+ */
+public final class SimBenchmark implements Benchmark {
+    private static final double DT = 0.01;
+    private static final long MEASURE_NANOS = 2_000_000_000L;
+
+    @Override
+    public String name() {
+        return "sim";
+    }
+
+    @Override
+    public void run(PrintStream out) {
+        measure(out, "snake8", "snake:n=8", snakeScript(8));
+        measure(out, "centipede55", "centipede", centipedeScript());
+        measure(out, "snake200", "snake:n=200", snakeScript(200));
+    }
+
+    /** A travelling wave over every module of an {@code n}-module snake. */
+    static String snakeScript(int n) {
+        return "<program><robot><structure><body elements=\"0.." + (n - 1) + "\"/></structure></robot>"
+                + "<main><go/></main><behaviors><go><wave group=\"body\" phase=\"0.125\" period=\"1\"/></go></behaviors>"
+                + "<automata><wave states=\"up, down\"/></automata>"
+                + "<states><up angles=\"30\"/><down angles=\"-30\"/></states></program>";
+    }
+
+    /** The paper's centipede walk, as in {@code examples/centipede-walk.xml}, on the {@code centipede} generator's IDs. */
+    static String centipedeScript() {
+        return "<program><robot><structure><leftSwing elements=\"0,2,4,6,8,10,12\"/>"
+                + "<leftLift elements=\"1,3,5,7,9,11,13\"/><rightSwing elements=\"14,16,18,20,22,24,26\"/>"
+                + "<rightLift elements=\"15,17,19,21,23,25,27\"/><spine elements=\"28..54\"/></structure></robot>"
+                + "<main><walk/></main><behaviors><walk>"
+                + "<swing group=\"!leftSwing\" offset=\"0\" phase=\"0.75\" period=\"3\"/>"
+                + "<swing group=\"rightSwing\" offset=\"0.5\" phase=\"0.75\" period=\"3\"/>"
+                + "<step group=\"leftLift\" offset=\"0\" phase=\"0.75\" period=\"3\"/>"
+                + "<step group=\"rightLift\" offset=\"0.5\" phase=\"0.75\" period=\"3\"/></walk></behaviors>"
+                + "<automata><swing states=\"reach, push\" times=\"1, 2\"/>"
+                + "<step states=\"raise, lower, stance\" times=\"0.5, 0.5, 2\"/></automata>"
+                + "<states><reach angles=\"25\"/><push angles=\"-25\"/><raise angles=\"20\"/>"
+                + "<lower angles=\"-60\"/><stance angles=\"-60\"/></states></program>";
+    }
+
+    private static void measure(PrintStream out, String label, String spec, String script) {
+        Program program = SimRun.load("bench-" + label + ".xml", script);
+        DiagnosticList diags = new DiagnosticList();
+        try (Simulator sim = new Simulator(RobotConfigs.resolve(spec, program.moduleIds(), diags))) {
+            Engine engine = new Engine(program, new RunOptions(DT, 0, List.of()));
+            engine.addSink(sim);
+            engine.setSensorSource(sim);
+            engine.start();
+            for (int i = 0; i < 500; i++) {
+                engine.step();
+            }
+            com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+            long alloc0 = mx.getThreadAllocatedBytes(Thread.currentThread().getId());
+            double t0 = sim.time();
+            long start = System.nanoTime();
+            long cpu0 = mx.getCurrentThreadCpuTime();
+            long ticks = 0;
+            while (mx.getCurrentThreadCpuTime() - cpu0 < MEASURE_NANOS) {
+                for (int i = 0; i < 50; i++) {
+                    engine.step();
+                }
+                ticks += 50;
+            }
+            double wall = (System.nanoTime() - start) / 1e9;
+            double cpu = (mx.getCurrentThreadCpuTime() - cpu0) / 1e9;
+            long alloc = mx.getThreadAllocatedBytes(Thread.currentThread().getId()) - alloc0;
+            out.printf(Locale.ROOT, "sim.%s.modules=%d%n", label, sim.moduleIds().length);
+            out.printf(Locale.ROOT, "sim.%s.bodies=%d%n", label, sim.snapshot().bodies().size());
+            out.printf(Locale.ROOT, "sim.%s.realtime_factor=%.1f%n", label, (sim.time() - t0) / cpu);
+            out.printf(Locale.ROOT, "sim.%s.realtime_factor_wall=%.1f%n", label, (sim.time() - t0) / wall);
+            out.printf(Locale.ROOT, "sim.%s.bytes_per_tick=%d%n", label, alloc / Math.max(1, ticks));
+            out.printf(Locale.ROOT, "sim.%s.distance_m=%.3f%n", label, sim.metrics().distance());
+        }
+    }
+}
