@@ -13,9 +13,10 @@ import org.parpe.serial.bus.HardwareBus;
 /**
  * Compares the measured angles of the hardware and the simulator every tick (a sink added after
  * both) and reports where they differ by more than a threshold: once when a module starts to
- * diverge, once when it comes back, and a summary at the end.
+ * diverge, once when it comes back (below 80 % of the threshold), and a summary at the end.
  */
 final class DivergenceMonitor implements JointSink {
+    private static final double HYSTERESIS = 0.8;
     private final SensorSource sim;
     private final HardwareBus hardware;
     private final double threshold;
@@ -60,10 +61,11 @@ final class DivergenceMonitor implements JointSink {
                 worst[i] = d;
                 worstTime[i] = time;
             }
-            boolean now = d > threshold;
-            if (now) {
+            if (d > threshold) {
                 ticksDiverged[i]++;
             }
+            // Hysteresis: a module back within 80 % of the threshold, so noise at the edge does not chatter.
+            boolean now = diverged[i] ? d > HYSTERESIS * threshold : d > threshold;
             if (now != diverged[i]) {
                 diverged[i] = now;
                 err.println(String.format(Locale.ROOT, now

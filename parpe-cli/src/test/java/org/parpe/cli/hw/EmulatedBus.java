@@ -46,7 +46,7 @@ final class EmulatedBus implements AutoCloseable {
                     }
                 }
             });
-        } catch (IOException e) {
+        } catch (IOException | RuntimeException | Error e) {
             pty.close();
             throw e;
         }

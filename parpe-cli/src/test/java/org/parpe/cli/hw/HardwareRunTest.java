@@ -61,8 +61,10 @@ class HardwareRunTest {
                 }
                 matched++;
             }
-            // Realtime pacing leaves the bus idle most of each tick, so every tick should arrive.
-            assertTrue(matched >= 190, "only " + matched + " of 201 ticks reached the modules");
+            // Realtime pacing leaves the bus idle most of each tick, so nearly every tick arrives; a
+            // loaded machine can delay the bus thread past a tick, and then the newest setpoints win.
+            assertTrue(matched >= 120, "only " + matched + " of 201 ticks reached the modules");
+            assertTrue(bus.received.containsKey(200), "the last tick reached the modules");
             Thread.sleep(400);
             double[] last = t.rows.get(200);
             for (int m = 0; m < 4; m++) {
@@ -120,6 +122,27 @@ class HardwareRunTest {
                     assertTrue(Double.isNaN(v) || Math.abs(v) <= 90, "sent " + v);
                 }
             }
+        }
+    }
+
+    @Test
+    void hardwareAndSimulatorRunTogetherAndDivergenceIsReported() throws Exception {
+        Path trace = dir.resolve("both.csv");
+        try (EmulatedBus bus = new EmulatedBus(dir, EmulatorOptions.of(0, 1, 2, 3, 9))) {
+            Cli r = Cli.run("run", script().toString(), "--port", bus.port(), "--sim", "--diverge", "0.0001",
+                    "--duration", "1", "--trace", trace.toString());
+            assertEquals(0, r.code, r.toString());
+            assertTrue(r.err.matches("(?s).*diverge: module \\d at t=.*more than 0\\.00° apart.*"), r.err);
+            assertTrue(r.err.matches("(?s).*diverge: module \\d was more than 0\\.00° off for .*"), r.err);
+            Traces t = new Traces(trace);
+            t.column("hw0");
+            // When the simulator runs slower than real time, ticks come in bursts and the bus sends
+            // the newest of each burst: not every tick, but the hardware follows the run.
+            assertTrue(bus.received.size() > 20, "the hardware was driven too: " + bus.received.size());
+            assertTrue(bus.received.containsKey(100), "the last tick reached the modules");
+            r = Cli.run("run", script().toString(), "--port", bus.port(), "--sim", "--diverge", "1000", "--duration", "0.5");
+            assertEquals(0, r.code, r.toString());
+            assertTrue(r.err.contains("diverge: hardware and simulator stayed within 1000.00°"), r.err);
         }
     }
 

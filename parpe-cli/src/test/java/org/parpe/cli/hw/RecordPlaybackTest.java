@@ -70,7 +70,12 @@ class RecordPlaybackTest {
                 Thread.sleep(p == 0 ? 50 : 300 + 200 * p);
                 keys.write('\n');
                 keys.flush();
-                awaitRows(rec, p + 1);
+                // A capture that a loaded machine made time out is announced; press Enter again.
+                for (int attempt = 0; !awaitRows(rec, p + 1); attempt++) {
+                    assertTrue(attempt < 3, "pose " + p + " was never captured: " + err.toString(StandardCharsets.UTF_8));
+                    keys.write('\n');
+                    keys.flush();
+                }
             }
             keys.close();
             assertEquals(0, code.get(20, TimeUnit.SECONDS), err.toString(StandardCharsets.UTF_8));
@@ -99,19 +104,22 @@ class RecordPlaybackTest {
         throw new AssertionError("the group never went limp");
     }
 
-    private static void awaitRows(Path rec, int rows) throws Exception {
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+    private static boolean awaitRows(Path rec, int rows) throws Exception {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(3);
         while (System.nanoTime() < deadline) {
-            if (Files.exists(rec) && Files.readString(rec).contains(" poses of group") && count(rec) == rows) {
-                return;
+            if (Files.exists(rec) && count(rec) == rows) {
+                return true;
             }
             Thread.sleep(10);
         }
-        throw new AssertionError("the recording never reached " + rows + " poses");
+        return false;
     }
 
     private static int count(Path rec) throws Exception {
         String s = Files.readString(rec);
+        if (!s.contains(" poses of group")) {
+            return 0;
+        }
         return Integer.parseInt(s.substring(s.indexOf("recording (PARSL.md section 12): ") + 33).split(" ")[0]);
     }
 

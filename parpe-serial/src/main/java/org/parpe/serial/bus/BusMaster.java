@@ -148,9 +148,21 @@ public final class BusMaster implements AutoCloseable {
         }
     }
 
-    /** Stops the reader and closes the link. */
+    /**
+     * Waits up to {@code timeoutMs} until every byte written has left the output queue; closing a
+     * port may discard what is still queued (the final HOLD, for instance).
+     */
+    public void drain(long timeoutMs) {
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);
+        while (linkError == null && link.pendingOutput() > 0 && System.nanoTime() < deadline) {
+            java.util.concurrent.locks.LockSupport.parkNanos(200_000);
+        }
+    }
+
+    /** Lets queued bytes leave (at most 250 ms), stops the reader and closes the link. */
     @Override
     public void close() {
+        drain(250);
         running = false;
         link.close();
         try {

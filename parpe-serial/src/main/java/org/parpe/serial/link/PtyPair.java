@@ -16,7 +16,8 @@ public final class PtyPair implements AutoCloseable {
 
     private final Path a;
     private final Path b;
-    private Process socat;
+    private final Thread reaper = new Thread(this::unplug, "pty-pair-reaper");
+    private volatile Process socat;
 
     private PtyPair(Path a, Path b) {
         this.a = a;
@@ -26,7 +27,14 @@ public final class PtyPair implements AutoCloseable {
     /** Starts socat with the two devices linked at {@code a} and {@code b}. */
     public static PtyPair start(Path a, Path b) throws IOException {
         PtyPair p = new PtyPair(a, b);
-        p.restart();
+        // socat outlives the JVM unless killed: make sure an aborted test run does not leave it behind.
+        Runtime.getRuntime().addShutdownHook(p.reaper);
+        try {
+            p.restart();
+        } catch (IOException | RuntimeException e) {
+            p.close();
+            throw e;
+        }
         return p;
     }
 
@@ -103,6 +111,11 @@ public final class PtyPair implements AutoCloseable {
     @Override
     public void close() {
         unplug();
+        try {
+            Runtime.getRuntime().removeShutdownHook(reaper);
+        } catch (IllegalStateException | IllegalArgumentException e) {
+            // The JVM is shutting down (the hook runs now) or the hook was removed already.
+        }
         try {
             Files.deleteIfExists(a);
             Files.deleteIfExists(b);

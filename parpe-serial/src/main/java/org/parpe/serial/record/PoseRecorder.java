@@ -13,6 +13,8 @@ import org.parpe.serial.protocol.Protocol;
  * pose.
  */
 public final class PoseRecorder {
+    private static final int CAPTURE_ATTEMPTS = 6;
+
     private final BusMaster bus;
     private final int[] modules;
     private final Reply reply = new Reply();
@@ -49,7 +51,8 @@ public final class PoseRecorder {
      */
     public int capture(double[] out) throws IOException {
         for (int i = 0; i < modules.length; i++) {
-            if (!bus.read(modules[i], reply)) {
+            // Posing is not time-critical: more attempts than a run's reads.
+            if (!bus.read(modules[i], reply, CAPTURE_ATTEMPTS)) {
                 return modules[i];
             }
             out[i] = reply.angle;
