@@ -17,6 +17,7 @@ import picocli.CommandLine.Command;
             CheckCommand.class,
             RunCommand.class,
             BenchCommand.class,
+            org.parpe.cli.sim.RaceCommand.class,
             org.parpe.cli.hw.EmulateCommand.class,
             org.parpe.cli.hw.RecordCommand.class,
             CommandLine.HelpCommand.class

@@ -1,0 +1,81 @@
+package org.parpe.cli.sim;
+
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.util.Map;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+import org.junit.jupiter.api.Test;
+import org.parpe.core.diag.DiagnosticList;
+import org.parpe.core.load.LoadResult;
+import org.parpe.core.load.ScriptLoader;
+import org.parpe.core.model.Program;
+import org.parpe.sim.SimBody;
+import org.parpe.sim.SimMetrics;
+import org.parpe.sim.Simulator;
+import org.parpe.sim.config.RobotConfigs;
+
+/** The example scripts on their simulated robots: the gaits move them, and long runs stay sane. */
+class ExamplesOnSimulatorTest {
+    private static final Path EXAMPLES = Path.of("..", "examples");
+
+    private static Program program(String file) {
+        LoadResult r = ScriptLoader.load(EXAMPLES.resolve(file), Map.of());
+        assertNotNull(r.program(), r.diagnostics().toString());
+        return r.program();
+    }
+
+    private static Simulator simulator(String spec, Program p) {
+        DiagnosticList d = new DiagnosticList();
+        Simulator s = new Simulator(RobotConfigs.resolve(spec, p.moduleIds(), d));
+        assertFalse(d.hasErrors(), d.all().toString());
+        return s;
+    }
+
+    private static SimMetrics run(String file, String spec, double seconds) {
+        Program p = program(file);
+        try (Simulator s = simulator(spec, p)) {
+            SimRun.run(p, s, seconds, 0.01);
+            return s.metrics();
+        }
+    }
+
+    @Test
+    void helloSnakeCrawls() {
+        SimMetrics m = run("hello-snake.xml", "snake", 20);
+        assertTrue(m.distance() >= 0.1, m.toJson());
+    }
+
+    @Test
+    void theWheelRolls() {
+        SimMetrics m = run("wheel.xml", "wheel", 20);
+        assertTrue(m.distance() >= 0.3, m.toJson());
+    }
+
+    @Test
+    void theCentipedeWalksForwards() {
+        SimMetrics m = run("centipede-walk.xml", "centipede", 20);
+        assertTrue(m.dx() >= 0.1, m.toJson());
+    }
+
+    @ParameterizedTest
+    @CsvSource({"hello-snake.xml, snake", "wheel.xml, wheel", "centipede-walk.xml, centipede",
+        "gait-table-12.xml, snake", "standup-walk.xml, centipede", "teleop-dirwave.xml, snake:axes=alternate",
+        "param-loop.xml, loop", "sensor-exit.xml, snake"})
+    void tenSimulatedMinutesStaySane(String file, String spec) {
+        Program p = program(file);
+        try (Simulator s = simulator(spec, p)) {
+            SimRun.run(p, s, 600, 0.01);
+            assertFalse(s.hasNaN(), file + " produced NaN");
+            for (SimBody b : s.snapshot().bodies()) {
+                assertTrue(b.position().isFinite(), file + ": " + b);
+                assertTrue(Math.abs(b.position().x()) < 100 && Math.abs(b.position().y()) < 100
+                        && b.position().z() > -0.05 && b.position().z() < 5, file + ": " + b.part() + " left the box at "
+                        + b.position());
+            }
+        }
+    }
+}

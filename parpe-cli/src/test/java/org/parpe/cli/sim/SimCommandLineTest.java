@@ -1,0 +1,82 @@
+package org.parpe.cli.sim;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.parpe.cli.Main;
+
+/** {@code parpe run --sim ...} and {@code parpe race} end to end. */
+class SimCommandLineTest {
+    @TempDir
+    Path dir;
+
+    private record Result(int code, String out, String err) {
+    }
+
+    private static Result cli(String... args) {
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        PrintStream oldOut = System.out;
+        System.setOut(new PrintStream(out, true, StandardCharsets.UTF_8));
+        try {
+            int code = Main.execute(args, System.out, new PrintStream(err, true, StandardCharsets.UTF_8));
+            return new Result(code, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
+        } finally {
+            System.setOut(oldOut);
+        }
+    }
+
+    @Test
+    void traceGainsMeasuredAnglesAndCentreOfMassAndMetricsAndPlotAreWritten() throws Exception {
+        Path trace = dir.resolve("t.csv");
+        Path metrics = dir.resolve("m.json");
+        Path plot = dir.resolve("p.png");
+        Result r = cli("run", "../examples/hello-snake.xml", "--sim", "--duration", "2", "--trace", trace.toString(),
+                "--metrics", metrics.toString(), "--plot", plot.toString());
+        assertEquals(0, r.code(), r.err());
+        String header = Files.readAllLines(trace).get(0);
+        assertEquals("time,m0,m2,m4,m6,a0,a2,a4,a6,com_x,com_y,com_z", header);
+        String json = Files.readString(metrics);
+        for (String key : new String[] {"duration", "distance", "dx", "dy", "speed", "maxTiltDeg"}) {
+            assertTrue(json.contains("\"" + key + "\""), json);
+        }
+        BufferedImage img = ImageIO.read(plot.toFile());
+        assertTrue(img.getWidth() >= 800 && img.getHeight() >= 300);
+    }
+
+    @Test
+    void aBadRobotSpecIsAUsageErrorWithALocatedMessage() {
+        Result r = cli("run", "../examples/hello-snake.xml", "--sim", "snake:n=-3", "--duration", "1");
+        assertEquals(2, r.code(), r.err());
+        assertTrue(r.err().contains("--sim snake:n=-3:1:7: error: n must be in 1..1000, got -3"), r.err());
+        assertTrue(!r.err().contains("Exception"), r.err());
+    }
+
+    @Test
+    void metricsWithoutSimIsAUsageError() {
+        Result r = cli("run", "../examples/hello-snake.xml", "--metrics", "-", "--duration", "1");
+        assertEquals(2, r.code());
+    }
+
+    @Test
+    void raceRanksByDistance() {
+        Result r = cli("race", "../examples/hello-snake.xml", "../examples/teleop-dirwave.xml", "--sim", "snake:n=8",
+                "--duration", "5");
+        assertEquals(0, r.code(), r.err());
+        String[] lines = r.out().strip().split("\n");
+        assertEquals(3, lines.length, r.out());
+        assertTrue(lines[0].startsWith("rank"), r.out());
+        double first = Double.parseDouble(lines[1].trim().split("\\s+")[2]);
+        double second = Double.parseDouble(lines[2].trim().split("\\s+")[2]);
+        assertTrue(first >= second, r.out());
+    }
+}
