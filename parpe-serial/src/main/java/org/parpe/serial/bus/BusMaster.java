@@ -173,11 +173,7 @@ public final class BusMaster implements AutoCloseable {
     }
 
     private boolean transact(int id, int cmd, int replyCmd, Reply out, int attempts) throws IOException {
-        long deadAfter = TimeUnit.MILLISECONDS.toNanos(config.deadAfterMs());
         for (int attempt = 0; attempt < attempts; attempt++) {
-            if (attempt > 0 && System.nanoTime() - lastReplyNanos > deadAfter) {
-                break;
-            }
             replyLock.lock();
             try {
                 expectAddr = id;

@@ -26,8 +26,11 @@ import org.parpe.serial.protocol.Protocol;
 public final class HardwareBus implements JointSink, SensorSource, AutoCloseable {
     private static final int BACKOFF_CYCLES = 50;
     private static final int READ_GAP_MS = 2;
+    /** Nothing moves yet during discovery, so a module gets more chances than a read in a run. */
+    private static final int DISCOVERY_ATTEMPTS = 5;
     private static final int READ_EVERY_WHEN_BUSY = 10;
     private static final long WIRE_POLL_NANOS = 20_000;
+    private static final long PROBE_NANOS = 500_000_000;
 
     private enum State { CONNECTED, SILENT, LINK_LOST }
 
@@ -48,6 +51,8 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
     private int readAttempt;
     private int consecutiveTimeouts;
     private int busyCycles;
+    private long lastProbe = System.nanoTime();
+    private int probeCursor;
     private long lastSend;
     private long reads;
     private long readsRetried;
@@ -109,7 +114,7 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
         for (int i = 0; i < ids.length; i++) {
             if (ids[i] > Protocol.MAX_MODULE_ID) {
                 unaddressable.add(ids[i]);
-            } else if (m.ping(ids[i], reply, config.retries() + 1)) {
+            } else if (m.ping(ids[i], reply, Math.max(DISCOVERY_ATTEMPTS, config.retries() + 1))) {
                 found.add(ids[i]);
                 buffers.driven[i] = true;
                 buffers.store(i, reply, false);
@@ -260,6 +265,7 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
             lastSend = now;
         }
         busyCycles = seq >= 0 ? busyCycles + 1 : 0;
+        probeMissing(now);
         boolean read = (busyCycles == 0 || busyCycles % READ_EVERY_WHEN_BUSY == 0) && readOne();
         if (consecutiveTimeouts > config.retries()
                 && System.nanoTime() - master.lastReplyNanos() > TimeUnit.MILLISECONDS.toNanos(config.deadAfterMs())) {
@@ -310,6 +316,28 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
         return true;
     }
 
+    /** Every half second, pings one module that is not driven; one that answers is driven again. */
+    private void probeMissing(long now) throws IOException {
+        if (now - lastProbe < PROBE_NANOS) {
+            return;
+        }
+        lastProbe = now;
+        int n = buffers.ids.length;
+        for (int k = 0; k < n; k++) {
+            probeCursor = (probeCursor + 1) % n;
+            int id = buffers.ids[probeCursor];
+            if (!buffers.driven[probeCursor] && id <= Protocol.MAX_MODULE_ID) {
+                if (master.ping(id, reply, 1)) {
+                    buffers.store(probeCursor, reply, false);
+                    buffers.driven[probeCursor] = true;
+                    master.send(id, Protocol.RESUME);
+                    report.accept("bus: module " + id + " answers now; driving it");
+                }
+                return;
+            }
+        }
+    }
+
     private void silent() {
         state = State.SILENT;
         silentSince = System.nanoTime();
@@ -352,6 +380,7 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
 
     private void resume() throws IOException {
         Discovery d = ping(master, buffers.ids);
+        lastProbe = System.nanoTime();
         master.sendConfig(config.watchdogMs(), config.safeMode(), 0);
         master.send(Protocol.BROADCAST, Protocol.RESUME);
         java.util.Arrays.fill(backoff, 0);

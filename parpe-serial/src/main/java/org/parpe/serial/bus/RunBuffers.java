@@ -76,8 +76,9 @@ final class RunBuffers {
             return -1;
         }
         for (int i = 0; i < ids.length; i++) {
-            if (driven[i]) {
-                wire[ids[i] - first] = Protocol.toWire(pending[i]);
+            if (ids[i] <= Protocol.MAX_MODULE_ID) {
+                // A module that is not (or no longer) driven gets "no change", never a stale value.
+                wire[ids[i] - first] = driven[i] ? Protocol.toWire(pending[i]) : Protocol.NO_CHANGE;
             }
         }
         fresh = false;

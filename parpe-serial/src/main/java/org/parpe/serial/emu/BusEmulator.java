@@ -54,6 +54,7 @@ public final class BusEmulator implements AutoCloseable {
     private volatile boolean running = true;
     private volatile long lastFrameNanos = System.nanoTime();
     private volatile long lastPollNanos = System.nanoTime();
+    private volatile boolean deviceGone;
     private ByteLink link;
     private boolean unplugged;
     private int watchdogMs = 50;
@@ -190,6 +191,7 @@ public final class BusEmulator implements AutoCloseable {
                 }
                 link.close();
                 link = null;
+                deviceGone = true;
                 continue;
             }
             long now = System.nanoTime();
@@ -208,6 +210,7 @@ public final class BusEmulator implements AutoCloseable {
         LockSupport.parkNanos(REOPEN_NANOS);
         try {
             link = opener.open();
+            deviceGone = false;
             listener.onEvent("emulator: serving " + link.name() + " again");
             return true;
         } catch (IOException e) {
@@ -365,7 +368,7 @@ public final class BusEmulator implements AutoCloseable {
             last = now;
             // Silence counts only while the rx thread is polling: a stall of this process (GC, a
             // loaded CI machine) must not look like a silent host, as it could not on a PIC.
-            boolean silent = lastPollNanos - lastFrameNanos > watchdogMs * 1_000_000L;
+            boolean silent = (deviceGone ? now : lastPollNanos) - lastFrameNanos > watchdogMs * 1_000_000L;
             synchronized (lock) {
                 for (ServoModule m : modules) {
                     if (silent && m.watchdogArmed && !m.watchdogTripped) {

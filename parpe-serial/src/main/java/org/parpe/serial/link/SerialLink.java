@@ -69,7 +69,7 @@ public final class SerialLink implements ByteLink {
                 throw new LinkException(path + " is closed");
             }
             int n = port.writeBytes(b, len, off);
-            if (n < 0) {
+            if (n < 0 || n == 0 && port.bytesAvailable() < 0) {
                 throw new LinkException("serial device " + path + " went away (unplugged?)");
             }
             if (n == 0) {
