@@ -111,7 +111,7 @@ final class PlotWriter {
         g.setStroke(new BasicStroke(1f));
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
         double yStep = range <= 30 ? 15 : range <= 60 ? 30 : 45;
-        for (double v = -range; v <= range + 1e-9; v += yStep) {
+        for (double v = -Math.floor(range / yStep) * yStep; v <= range + 1e-9; v += yStep) {
             int y = yPix(v, range, top);
             g.setColor(new Color(0xe6e6e6));
             g.drawLine(LEFT, y, LEFT + w, y);
