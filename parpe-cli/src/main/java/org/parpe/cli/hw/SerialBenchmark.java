@@ -122,6 +122,7 @@ public final class SerialBenchmark implements Benchmark {
             }
             double fps = (frames.get() - startFrames) / ((System.nanoTime() - start) / 1e9);
             bus.finish(new RunOutcome(RunOutcome.Status.COMPLETED, 0, ""));
+            checkClean(emu);
             return fps;
         }
     }
@@ -160,8 +161,16 @@ public final class SerialBenchmark implements Benchmark {
             print(out, "serial.pty_fraction_of_wire_115200", fps / (115_200 / 10.0 / frame));
             print(out, "serial.pty_fraction_of_wire_1000000", fps / (1_000_000 / 10.0 / frame));
             print(out, "serial.host_send_cpu_us_per_frame", (c1 - c0) / 1e3 / sent);
+            checkClean(emu);
         } finally {
             Files.deleteIfExists(dir);
+        }
+    }
+
+    /** A benchmark on a damaged line would measure the wrong thing. */
+    private static void checkClean(BusEmulator emu) {
+        if (emu.stats().checksumErrors() > 0) {
+            throw new IllegalStateException("the emulator rejected " + emu.stats().checksumErrors() + " frames");
         }
     }
 
