@@ -12,6 +12,7 @@ import org.parpe.core.run.TraceColumns;
 import org.parpe.serial.bus.Discovery;
 import org.parpe.serial.bus.HardwareBus;
 import org.parpe.serial.link.LinkOpener;
+import org.parpe.serial.link.SerialLink;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
@@ -48,6 +49,8 @@ public class HardwareOptions implements RunTarget {
         PrintStream err = setup.err();
         HardwareBus hw = HardwareBus.open(LinkOpener.serial(port, bus.baud), bus.config(), err::println);
         setup.closeAtEnd(hw);
+        // Ctrl-C: the emergency stop must leave before jSerialComm closes the port at shutdown.
+        SerialLink.beforePortsClose(hw::emergencyStopIfRunning);
         int[] ids = setup.program().moduleIds();
         Discovery d = hw.discover(ids);
         reportDiscovery(d, ids.length, err);
@@ -127,10 +130,10 @@ public class HardwareOptions implements RunTarget {
 
         @Override
         public void finish(RunOutcome outcome) {
-            hw.finish(outcome);
             if (outcome.status() == RunOutcome.Status.STOPPED) {
-                hw.emergencyStop();
+                hw.emergencyStopIfRunning();
             }
+            hw.finish(outcome);
         }
     }
 }

@@ -142,6 +142,7 @@ public final class RecordCommand implements Callable<Integer> {
             recorder.begin();
             RecordingSession session = new RecordingSession(recorder, new PoseRecording(group, ids), out,
                     "recorded from " + port, err);
+            SerialLink.beforePortsClose(session::end);
             return session.run(every, count, new BufferedReader(new InputStreamReader(input, StandardCharsets.UTF_8)));
         } finally {
             bus.close();

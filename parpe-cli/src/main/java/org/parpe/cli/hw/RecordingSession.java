@@ -11,8 +11,8 @@ import org.parpe.serial.record.RecordingWriter;
 
 /**
  * One {@code parpe record} session once the group is limp: captures poses on Enter or on a
- * timer, rewrites the file after each pose, and on any ending (end of input, count, Ctrl-C)
- * makes the group hold and reports where the recording is.
+ * timer, rewrites the file after each pose, and on any ending (end of input, count, or Ctrl-C
+ * through {@link #end}) makes the group hold and reports where the recording is.
  */
 final class RecordingSession {
     private final PoseRecorder recorder;
@@ -34,8 +34,6 @@ final class RecordingSession {
 
     /** Records until the input ends, {@code count} poses were taken, or the JVM is stopped. */
     int run(Integer everyMs, Integer count, BufferedReader in) throws IOException, InterruptedException {
-        Thread hook = new Thread(this::end, "record-stop");
-        Runtime.getRuntime().addShutdownHook(hook);
         err.println("record: group " + recording.group() + " (modules " + ModuleList.format(recording.modules())
                 + ") is limp: pose it by hand; " + (everyMs == null ? "press Enter to capture a pose, Ctrl-D to finish"
                 : "capturing every " + everyMs + " ms, Ctrl-C to finish"));
@@ -52,11 +50,6 @@ final class RecordingSession {
             }
         } finally {
             end();
-            try {
-                Runtime.getRuntime().removeShutdownHook(hook);
-            } catch (IllegalStateException shuttingDown) {
-                // Ctrl-C: the hook runs end() too, which does nothing the second time.
-            }
         }
         return recording.size() == 0 ? 1 : 0;
     }
@@ -78,8 +71,11 @@ final class RecordingSession {
         err.println(RecordCommand.describe(recording.size(), (now - start) / 1e9, pose));
     }
 
-    /** Makes the group hold and reports; runs once, from the main thread or the Ctrl-C hook. */
-    private void end() {
+    /**
+     * Makes the group hold and reports; runs once, from the main thread or at Ctrl-C (registered
+     * to run before the serial port is closed).
+     */
+    void end() {
         if (!ended.compareAndSet(false, true)) {
             return;
         }

@@ -43,8 +43,9 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
     private short[] wire;
     private int first;
     private int[] backoff;
-    private Thread busThread;
+    private volatile Thread busThread;
     private volatile boolean running;
+    private volatile boolean estopped;
     private volatile State state = State.CONNECTED;
     private long silentSince;
     private int readCursor;
@@ -160,7 +161,7 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
     public void finish(RunOutcome outcome) {
         stopThread();
         BusMaster m = master;
-        if (state == State.CONNECTED && m.linkError() == null) {
+        if (!estopped && state == State.CONNECTED && m.linkError() == null) {
             try {
                 // Three times: these frames get no reply, and a lost final HOLD would let the watchdogs trip.
                 int seq = buffers.take(wire, first, true);
@@ -182,17 +183,37 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
      * the safe mode and ignores setpoints until the next run. Safe to call from any thread.
      */
     public void emergencyStop() {
+        estopped = true;
+        // The bus thread has nothing more to send; stopping it also keeps a port closed at
+        // shutdown from being reported as an unplugged device.
+        stopThread();
         BusMaster m = master;
         try {
             for (int i = 0; i < 3; i++) {
                 m.sendEmergencyStop(config.safeMode());
             }
+            m.drain(100);
             report.accept("bus: emergency stop sent; modules " + config.safeMode().name().toLowerCase()
                     + " until the next run");
         } catch (IOException e) {
             report.accept("bus: emergency stop could not be sent (" + e.getMessage()
                     + "); modules stop on their watchdog within " + config.watchdogMs() + " ms");
         }
+    }
+
+    /**
+     * Emergency stop if a run is in progress (between {@link #start} and {@link #finish}); for a
+     * shutdown hook, which also runs after a run that ended normally.
+     */
+    public void emergencyStopIfRunning() {
+        if (busThread != null && !estopped) {
+            emergencyStop();
+        }
+    }
+
+    /** Whether an emergency stop was sent. */
+    public boolean emergencyStopped() {
+        return estopped;
     }
 
     /** One line of counters for the end of a run. */

@@ -302,9 +302,12 @@ public final class BusEmulator implements AutoCloseable {
     private void estop(ServoModule target, int mode) {
         long now = System.nanoTime();
         forEach(target, m -> {
+            boolean first = !m.estop;
             m.estop = true;
             m.safe(mode);
-            listener.onSafeStop(m.id, now, "emergency stop");
+            if (first) {
+                listener.onSafeStop(m.id, now, "emergency stop");
+            }
         });
     }
 

@@ -53,6 +53,10 @@ final class ServoModule {
 
     /** Holds with the servo on, at the current angle or at the last setpoint; disarms the watchdog. */
     void hold(boolean keepTarget) {
+        if (estop) {
+            // An emergency stop stays as it is until RESUME: HOLD must not power a limp servo again.
+            return;
+        }
         watchdogArmed = false;
         if (!keepTarget || limp) {
             target = angle;

@@ -61,6 +61,14 @@ public final class SerialLink implements ByteLink {
         return new SerialLink(port, path);
     }
 
+    /**
+     * Runs {@code action} when the JVM shuts down (Ctrl-C), before jSerialComm closes the open
+     * ports, so that last frames (an emergency stop) can still be sent.
+     */
+    public static void beforePortsClose(Runnable action) {
+        SerialPort.addShutdownHook(new Thread(action, "serial-last-words"));
+    }
+
     @Override
     public void write(byte[] b, int off, int len) throws IOException {
         long deadline = 0;

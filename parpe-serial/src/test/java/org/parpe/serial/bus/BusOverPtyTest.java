@@ -244,6 +244,44 @@ class BusOverPtyTest {
         assertEquals(rows[59][3], received.get(59)[3], 0.005);
     }
 
+    @Test
+    void emergencyStopLatchesTheSafeModeUntilTheNextRun() throws Exception {
+        startEmulator(EmulatorOptions.of(IDS));
+        bus = HardwareBus.open(LinkOpener.serial(pty.a().toString(), 115200),
+                BusConfig.defaults().withSafeMode(SafeMode.LIMP), reports::add);
+        bus.discover(IDS);
+        bus.start(new RunInfo(null, IDS, 0.01));
+        drive(40, 8);
+        bus.emergencyStop();
+        assertTrue(bus.emergencyStopped());
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(2);
+        while (safeStops.size() < IDS.length && System.nanoTime() < deadline) {
+            Thread.sleep(5);
+        }
+        Thread.sleep(50);
+        for (int id : IDS) {
+            assertTrue(emulator.isSafeStopped(id) && emulator.isLimp(id), "module " + id + " limp after ESTOP");
+        }
+        assertEquals(IDS.length, safeStops.size(), "one stop per module although ESTOP is sent three times");
+        bus.finish(new RunOutcome(RunOutcome.Status.STOPPED, 0.4, ""));
+        Thread.sleep(100);
+        for (int id : IDS) {
+            assertTrue(emulator.isLimp(id), "the final HOLD is not sent after an emergency stop: module " + id);
+        }
+        bus.close();
+        bus = HardwareBus.open(LinkOpener.serial(pty.a().toString(), 115200), BusConfig.defaults(), reports::add);
+        bus.discover(IDS);
+        bus.start(new RunInfo(null, IDS, 0.01));
+        drive(20, 8);
+        bus.finish(new RunOutcome(RunOutcome.Status.COMPLETED, 0.2, ""));
+        bus.emergencyStopIfRunning();
+        assertFalse(bus.emergencyStopped(), "no emergency stop after a run that ended");
+        Thread.sleep(100);
+        for (int id : IDS) {
+            assertFalse(emulator.isSafeStopped(id) || emulator.isLimp(id), "the next run resumed module " + id);
+        }
+    }
+
     String describeStops(long from) {
         StringBuilder b = new StringBuilder();
         for (long[] s : safeStops) {
