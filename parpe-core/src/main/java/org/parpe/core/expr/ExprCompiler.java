@@ -360,10 +360,10 @@ public final class ExprCompiler {
             if (c == null) {
                 return null;
             }
-            int id = Integer.parseInt(m.group(1));
-            int index = scope.sensors().moduleIndex(id);
+            int id = m.group(1).length() > 7 ? -1 : Integer.parseInt(m.group(1));
+            int index = id < 0 ? -1 : scope.sensors().moduleIndex(id);
             if (index < 0) {
-                error(t, "module " + id + " is not part of the robot");
+                error(t, "module " + m.group(1) + " is not part of the robot");
                 return null;
             }
             if (!scope.sensors().carries(id, c)) {
@@ -384,7 +384,7 @@ public final class ExprCompiler {
             }
             String which = m.group(1);
             int position = which.equals("self") ? Nodes.LocalSensor.SELF : which.equals("prev") ? Nodes.LocalSensor.PREV
-                    : which.equals("next") ? Nodes.LocalSensor.NEXT : Integer.parseInt(which);
+                    : which.equals("next") ? Nodes.LocalSensor.NEXT : which.length() > 7 ? Integer.MAX_VALUE : Integer.parseInt(which);
             perModule = true;
             locals.add(new LocalUse(position, c, src.posAt(t.start()), "$" + t.text()));
             return new Nodes.LocalSensor(position, c.ordinal());

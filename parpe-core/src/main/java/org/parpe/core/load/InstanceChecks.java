@@ -22,6 +22,8 @@ final class InstanceChecks {
     private final Robot robot;
     private final Map<String, Automaton> automata;
     private final Map<String, List<ExprCompiler.LocalUse>> locals;
+    private final Map<String, java.util.BitSet> members = new java.util.HashMap<>();
+    private final Map<String, java.util.Set<Integer>> carried = new java.util.HashMap<>();
 
     InstanceChecks(DiagnosticSink d, Robot robot, Map<String, Automaton> automata,
                    Map<String, List<ExprCompiler.LocalUse>> locals) {
@@ -29,6 +31,13 @@ final class InstanceChecks {
         this.robot = robot;
         this.automata = automata;
         this.locals = locals;
+        if (robot != null) {
+            robot.sensors().forEach(sd -> carried.put(sd.type(), java.util.Set.copyOf(sd.modules())));
+        }
+    }
+
+    private boolean carries(int id, String type) {
+        return carried.getOrDefault(type, java.util.Set.of()).contains(id);
     }
 
     /**
@@ -80,13 +89,18 @@ final class InstanceChecks {
         return robot.group(name).orElse(null);
     }
 
-    private static Integer shared(Group a, Group b) {
-        for (int m : a.modules()) {
-            if (b.modules().contains(m)) {
-                return m;
-            }
-        }
-        return null;
+    private Integer shared(Group a, Group b) {
+        java.util.BitSet x = (java.util.BitSet) bits(a).clone();
+        x.and(bits(b));
+        return x.isEmpty() ? null : x.nextSetBit(0);
+    }
+
+    private java.util.BitSet bits(Group g) {
+        return members.computeIfAbsent(g.name(), k -> {
+            java.util.BitSet b = new java.util.BitSet();
+            g.modules().forEach(b::set);
+            return b;
+        });
     }
 
     private void shape(BehaviorResolver.InstanceInfo info, Group g, String note) {
@@ -122,11 +136,11 @@ final class InstanceChecks {
                         + " modules; group '" + g.name() + "' has " + g.size();
             }
             int id = g.modules().get(u.position());
-            return robot.carries(id, c.sensor()) ? null : "'" + u.text() + "' (at " + u.pos() + ") reads module " + id
+            return carries(id, c.sensor()) ? null : "'" + u.text() + "' (at " + u.pos() + ") reads module " + id
                     + " of group '" + g.name() + "', which has no " + c.sensor() + " sensor";
         }
         for (int id : g.modules()) {
-            if (!robot.carries(id, c.sensor())) {
+            if (!carries(id, c.sensor())) {
                 return "'" + u.text() + "' (at " + u.pos() + ") needs every module of group '" + g.name()
                         + "' to carry a " + c.sensor() + " sensor; module " + id + " has none";
             }

@@ -22,6 +22,8 @@ import org.parpe.core.xml.XmlReader;
 
 /** Resolves {@code <robot>} (PARSL.md §2, §13 rule 11): groups, modules and sensors. */
 final class RobotResolver {
+    /** The largest module ID a script may use. */
+    static final int MAX_ID = 65_535;
     private static final List<String> SENSOR_TYPES = List.of("angle", "accel", "touch");
 
     private final DiagnosticSink d;
@@ -154,6 +156,7 @@ final class RobotResolver {
     /** Expands an element list; {@code structure} selects the rules of §13 rule 11. */
     private List<Integer> elements(XText text, boolean structure, String what) {
         List<Integer> out = new ArrayList<>();
+        java.util.Set<Integer> seen = new java.util.HashSet<>();
         boolean ok = true;
         for (XText item : ListItem.split(text, ',')) {
             String v = item.value();
@@ -163,6 +166,11 @@ final class RobotResolver {
                 ok = false;
                 continue;
             } else if (v.matches("\\d+")) {
+                if (v.length() > 6 || Integer.parseInt(v) > MAX_ID) {
+                    d.error(item.pos(), "module ID " + v + " is too large (IDs are 0.." + MAX_ID + ")");
+                    ok = false;
+                    continue;
+                }
                 ids = List.of(Integer.parseInt(v));
             } else if (v.contains("..")) {
                 ids = range(item);
@@ -174,7 +182,7 @@ final class RobotResolver {
                 continue;
             }
             for (int id : ids) {
-                if (out.contains(id)) {
+                if (!seen.add(id)) {
                     d.error(item.pos(), "module " + id + " appears twice in " + what);
                     ok = false;
                 } else {
@@ -218,7 +226,7 @@ final class RobotResolver {
             return null;
         }
         double v = e.eval(null);
-        if (v != Math.rint(v) || v < 0 || v > 1_000_000) {
+        if (v != Math.rint(v) || v < 0 || v > MAX_ID) {
             d.error(t.pos(), "range end '" + t.value() + "' must be a whole number >= 0, got " + v);
             return null;
         }

@@ -16,6 +16,8 @@ import org.parpe.core.model.StateDef;
  */
 final class InstanceRun {
     private static final double EPS = 1e-9;
+    /** More transitions than this in one tick means the states are far shorter than the tick. */
+    static final int MAX_TRANSITIONS_PER_TICK = 10_000;
 
     final Instance model;
     final Conditional[] conditions;
@@ -209,6 +211,7 @@ final class InstanceRun {
         }
         double r = dt;
         int skips = 0;
+        int transitions = 0;
         while (true) {
             double t = tBuf[s];
             double d = t * sc;
@@ -239,6 +242,11 @@ final class InstanceRun {
             }
             double du = (1 - p[k]) * t / sumT;
             r -= need;
+            skips = 0;
+            if (++transitions > MAX_TRANSITIONS_PER_TICK) {
+                throw ev.error(model.pos(), "automaton '" + automaton + "' makes more than " + MAX_TRANSITIONS_PER_TICK
+                        + " state changes in one tick; its states are far shorter than the tick (" + dt + " s)");
+            }
             if (u[k] + du >= lim - EPS) {
                 finish(k, target(ev, s, k));
                 return;

@@ -67,14 +67,14 @@ public final class StimulusParser {
             throw new StimulusException(where + "unknown control or sensor '$" + name + "'"
                     + org.parpe.core.expr.Names.suggest(name, controls.stream().map(Control::name).toList(), "$"));
         }
-        int id = Integer.parseInt(s.group(1));
+        int id = s.group(1).length() > 7 ? -1 : Integer.parseInt(s.group(1));
         Channel ch = Channel.of(s.group(2), s.group(3) == null ? "" : s.group(3));
-        int index = java.util.Arrays.binarySearch(ids, id);
+        int index = id < 0 ? -1 : java.util.Arrays.binarySearch(ids, id);
         if (ch == null) {
             throw new StimulusException(where + "'$" + name + "' is not a sensor reading (use angle, accel_x|y|z, touch_left|right)");
         }
         if (index < 0) {
-            throw new StimulusException(where + "module " + id + " is not part of the robot");
+            throw new StimulusException(where + "module " + s.group(1) + " is not part of the robot");
         }
         if (!program.robot().carries(id, ch.sensor())) {
             throw new StimulusException(where + "module " + id + " has no " + ch.sensor() + " sensor");

@@ -1,5 +1,6 @@
 package org.parpe.core.xml;
 
+import com.ctc.wstx.exc.WstxLazyException;
 import com.ctc.wstx.stax.WstxInputFactory;
 import java.io.StringReader;
 import java.util.ArrayDeque;
@@ -34,45 +35,56 @@ public final class XmlReader {
 
     /** Parses {@code source}; returns the root element, or {@code null} after reporting an error. */
     public static XElement read(SourceText source, DiagnosticSink diags) {
-        String text = source.text();
         try {
-            XMLStreamReader2 r = (XMLStreamReader2) FACTORY.createXMLStreamReader(new StringReader(text));
-            Deque<XElement> open = new ArrayDeque<>();
-            XElement root = null;
-            while (r.hasNext()) {
-                int ev = r.next();
-                int offset = (int) r.getLocationInfo().getStartingCharOffset();
-                if (ev == XMLStreamConstants.START_ELEMENT) {
-                    XElement e = TagScanner.element(source, offset, r.getLocalName());
-                    if (open.isEmpty()) {
-                        root = e;
-                    } else {
-                        open.peek().addChild(e);
-                    }
-                    open.push(e);
-                } else if (ev == XMLStreamConstants.END_ELEMENT) {
-                    open.pop();
-                } else if ((ev == XMLStreamConstants.CHARACTERS || ev == XMLStreamConstants.CDATA)
-                        && !open.isEmpty() && !r.getText().isBlank()) {
-                    open.peek().addText(TagScanner.text(source, offset, r.getText()));
-                } else if (ev == XMLStreamConstants.DTD) {
-                    diags.error(source.pos(offset), "DOCTYPE declarations are not allowed in PARSL files");
-                    return null;
-                }
-            }
-            r.close();
-            return root;
+            return parse(source, diags);
         } catch (XMLStreamException e) {
-            Location loc = e.getLocation();
-            String msg = e.getMessage() == null ? "malformed XML" : e.getMessage();
-            int cut = msg.indexOf("\n at [");
-            msg = (cut >= 0 ? msg.substring(0, cut) : msg).replace('\n', ' ').trim();
-            if (msg.startsWith("ParseError at [")) {
-                msg = msg.substring(msg.indexOf("Message:") + 8).trim();
-            }
-            diags.error(loc == null ? source.pos(0) : source.pos(loc.getLineNumber(), loc.getColumnNumber()),
-                    "malformed XML: " + msg);
-            return null;
+            report(source, diags, e);
+        } catch (WstxLazyException e) {
+            // Woodstox defers some errors in text until the text is read
+            report(source, diags, (XMLStreamException) e.getCause());
         }
+        return null;
+    }
+
+    private static XElement parse(SourceText source, DiagnosticSink diags) throws XMLStreamException {
+        String text = source.text();
+        XMLStreamReader2 r = (XMLStreamReader2) FACTORY.createXMLStreamReader(new StringReader(text));
+        Deque<XElement> open = new ArrayDeque<>();
+        XElement root = null;
+        while (r.hasNext()) {
+            int ev = r.next();
+            int offset = (int) r.getLocationInfo().getStartingCharOffset();
+            if (ev == XMLStreamConstants.START_ELEMENT) {
+                XElement e = TagScanner.element(source, offset, r.getLocalName());
+                if (open.isEmpty()) {
+                    root = e;
+                } else {
+                    open.peek().addChild(e);
+                }
+                open.push(e);
+            } else if (ev == XMLStreamConstants.END_ELEMENT) {
+                open.pop();
+            } else if ((ev == XMLStreamConstants.CHARACTERS || ev == XMLStreamConstants.CDATA)
+                    && !open.isEmpty() && !r.getText().isBlank()) {
+                open.peek().addText(TagScanner.text(source, offset, r.getText()));
+            } else if (ev == XMLStreamConstants.DTD) {
+                diags.error(source.pos(offset), "DOCTYPE declarations are not allowed in PARSL files");
+                return null;
+            }
+        }
+        r.close();
+        return root;
+    }
+
+    private static void report(SourceText source, DiagnosticSink diags, XMLStreamException e) {
+        Location loc = e.getLocation();
+        String msg = e.getMessage() == null ? "malformed XML" : e.getMessage();
+        int cut = msg.indexOf("\n at [");
+        msg = (cut >= 0 ? msg.substring(0, cut) : msg).replace('\n', ' ').trim();
+        if (msg.startsWith("ParseError at [")) {
+            msg = msg.substring(msg.indexOf("Message:") + 8).trim();
+        }
+        diags.error(loc == null ? source.pos(0) : source.pos(loc.getLineNumber(), loc.getColumnNumber()),
+                "malformed XML: " + msg);
     }
 }
