@@ -16,6 +16,7 @@ import org.parpe.serial.protocol.Protocol;
  * thread at a time; plain frames (setpoints, emergency stop) may be sent from any thread.
  */
 public final class BusMaster implements AutoCloseable {
+    private static final long LINGER_MS = 50;
     private final ByteLink link;
     private final BusConfig config;
     private final FrameEncoder tx = new FrameEncoder();
@@ -28,6 +29,7 @@ public final class BusMaster implements AutoCloseable {
     private volatile boolean running = true;
     private volatile IOException linkError;
     private volatile long lastReplyNanos = System.nanoTime();
+    private volatile long lastWriteNanos;
     private int expectAddr = -1;
     private int expectCmd = -1;
     private boolean ready;
@@ -159,10 +161,18 @@ public final class BusMaster implements AutoCloseable {
         }
     }
 
-    /** Lets queued bytes leave (at most 250 ms), stops the reader and closes the link. */
+    /**
+     * Lets queued bytes leave (at most 250 ms) and gives the far end {@value #LINGER_MS} ms after
+     * the last write before the port is closed: closing may flush what the other side has not
+     * read yet (a pty's queue, a USB adapter's buffer). Then stops the reader and closes the link.
+     */
     @Override
     public void close() {
         drain(250);
+        long linger = lastWriteNanos + TimeUnit.MILLISECONDS.toNanos(LINGER_MS) - System.nanoTime();
+        if (linger > 0 && linkError == null) {
+            java.util.concurrent.locks.LockSupport.parkNanos(linger);
+        }
         running = false;
         link.close();
         try {
@@ -238,6 +248,7 @@ public final class BusMaster implements AutoCloseable {
         }
         link.write(tx.buffer(), 0, n);
         framesSent++;
+        lastWriteNanos = System.nanoTime();
     }
 
     private void readLoop() {
