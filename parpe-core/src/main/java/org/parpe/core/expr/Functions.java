@@ -12,8 +12,11 @@ final class Functions {
         SIN, COS, TAN, ASIN, ACOS, ATAN, SINH, COSH, TANH, ASINH, ACOSH, ATANH, LOG, LN, EXP,
         SQRT, ABS, ROUND, FLOOR, CEIL, RAD, DEG;
 
+        /** The name used in messages, made once (evaluation must not allocate). */
+        private final String label = name().toLowerCase(Locale.ROOT) + "()";
+
         String label() {
-            return name().toLowerCase(Locale.ROOT) + "()";
+            return label;
         }
 
         double apply(double x) {

@@ -321,10 +321,8 @@ public final class Engine implements Evaluator {
         entryStart = tick;
         ctx.btime = 0;
         EntryPlan plan = plans[index];
-        for (MainEntry.MacroArg a : plan.entry.macros()) {
-            if (a.value() != null) {
-                plan.macros[plan.behavior.macros().indexOf(a.name())] = eval(a.value());
-            }
+        for (int i = 0; i < plan.valueArgs.length; i++) {
+            plan.macros[plan.valueSlots[i]] = eval(plan.valueArgs[i].value());
         }
         for (InstanceRun r : plan.runs) {
             r.started = false;

@@ -18,11 +18,19 @@ final class EntryPlan {
     final Behavior behavior;
     final InstanceRun[] runs;
     final double[] macros;
+    /** Expression-valued macro arguments and their slots, evaluated when the entry starts. */
+    final MainEntry.MacroArg[] valueArgs;
+    final int[] valueSlots;
 
     EntryPlan(Program program, MainEntry entry, int[] moduleIds) {
         this.entry = entry;
         this.behavior = program.behavior(entry.behavior()).orElseThrow();
         this.macros = new double[behavior.macros().size()];
+        this.valueArgs = entry.macros().stream().filter(a -> a.value() != null).toArray(MainEntry.MacroArg[]::new);
+        this.valueSlots = new int[valueArgs.length];
+        for (int i = 0; i < valueArgs.length; i++) {
+            valueSlots[i] = behavior.macros().indexOf(valueArgs[i].name());
+        }
         List<InstanceRun> list = new ArrayList<>();
         collect(program, behavior.items(), new ArrayList<>(), list, moduleIds);
         this.runs = list.toArray(new InstanceRun[0]);

@@ -1,0 +1,49 @@
+package org.parpe.core;
+
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.lang.management.ManagementFactory;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+import org.parpe.core.load.LoadResult;
+import org.parpe.core.load.ScriptLoader;
+import org.parpe.core.run.Engine;
+import org.parpe.core.run.JointSink;
+import org.parpe.core.run.RunOptions;
+import org.parpe.core.run.Stimulus;
+
+/** The tick loop does not allocate once the run has started (STYLE.md): bytes, not time. */
+class EngineAllocationTest {
+    @Test
+    void ticksDoNotAllocate() {
+        String script = "<program><robot><structure><body elements=\"0..199\"/><legs elements=\"200..209\"/></structure>"
+                + "<sensors><touch elements=\"legs\"/><angle elements=\"all\"/></sensors></robot>"
+                + "<controls><dir type=\"radio\" values=\"fwd, back\"/><speed type=\"slider\" min=\"0.1\" max=\"5\" value=\"1\"/></controls>"
+                + "<main cycles=\"forever\"><go time=\"3\"/><rest time=\"1\"/></main><behaviors>"
+                + "<go><if cond=\"$dir == fwd\"><wave group=\"body\" phase=\"1/$count\" period=\"2/$speed\"/></if>"
+                + "<crawl group=\"legs\" phase=\"0.3\" cycles=\"5\"/></go><rest><wave group=\"all\" period=\"0.5\"/></rest></behaviors>"
+                + "<automata><wave states=\"crest, trough\"/><crawl states=\"lift, push\" times=\"1, 2[$_self_touch_left == 1]\"/></automata>"
+                + "<states><crest angles=\"30*sin(2*pi*$phase) + $_prev_angle/10 + sum(1, 2, $cycle)\" interp=\"smooth\"/>"
+                + "<trough angles=\"-30*cos(pi*$index/$count) + if($time &gt; 1, 1, 0)\"/>"
+                + "<lift angles=\"40\"/><push angles=\"-20 + rand()\"/></states></program>";
+        LoadResult r = ScriptLoader.loadText(Path.of("alloc.xml"), script, Map.of());
+        assertTrue(r.ok(), r.diagnostics()::toString);
+        Engine e = new Engine(r.program(), new RunOptions(0.01, 1, List.of(
+                new Stimulus(2.5, 1, Stimulus.Target.SENSOR, 205 * 6 + 4, 1, "touch"))));
+        double[] sum = new double[1];
+        e.addSink((JointSink) (tick, time, commanded) -> sum[0] += commanded[0]);
+        e.start();
+        for (int i = 0; i < 30_000; i++) {
+            e.step(); // warm up: class loading and JIT compilation allocate, the ticks themselves do not
+        }
+        com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+        long before = mx.getThreadAllocatedBytes(Thread.currentThread().getId());
+        for (int i = 0; i < 10_000; i++) {
+            e.step();
+        }
+        long bytes = mx.getThreadAllocatedBytes(Thread.currentThread().getId()) - before;
+        assertTrue(bytes < 10_000, "10000 ticks (with entry changes, stimuli, ifs, exits) allocated " + bytes + " bytes");
+    }
+}
