@@ -51,6 +51,8 @@ class DiagnosticsTest {
                     + REST.replace("\"g\"", "\"a\""), "'all' cannot be used"),
             c("module twice", "<robot><structure>\n<a elements=\"1, 2, 1\"/> <!--E-->\n</structure></robot>"
                     + REST.replace("\"g\"", "\"a\""), "appears twice"),
+            c("module ID too large", "<robot><structure>\n<a elements=\"70000\"/> <!--E-->\n</structure></robot>"
+                    + REST.replace("\"g\"", "\"a\""), "too large"),
             c("empty item", "<robot><structure>\n<a elements=\"1, , 2\"/> <!--E-->\n</structure></robot>"
                     + REST.replace("\"g\"", "\"a\""), "empty item"),
             c("range over non-parameter", "<robot><structure>\n<a elements=\"0..$time\"/> <!--E-->\n</structure></robot>"

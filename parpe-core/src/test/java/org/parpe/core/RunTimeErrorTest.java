@@ -80,6 +80,16 @@ class RunTimeErrorTest {
     }
 
     @Test
+    void statesFarShorterThanTheTickStopTheRunInsteadOfSpinning() {
+        String text = wave("10", "").replace("<w states=\"s, t\"/>", "<w states=\"s, t\" times=\"1e-7, 1e-7\"/>");
+        Engine e = new Engine(load(text), RunOptions.defaults());
+        e.start();
+        e.step();
+        ScriptRuntimeError err = assertThrows(ScriptRuntimeError.class, e::step);
+        assertTrue(err.getMessage().contains("more than 10000 state changes in one tick"), err.getMessage());
+    }
+
+    @Test
     void controlsAreCheckedWhenSet() {
         Engine e = new Engine(load(wave("10", "")), RunOptions.defaults());
         assertThrows(IllegalArgumentException.class, () -> e.setControl("k", 5));

@@ -174,7 +174,13 @@ final class Nodes {
                         throw new EvalException("remainder of a division by zero");
                     }
                     return a % b;
-                case POW: return finite(Math.pow(a, b), "a power");
+                case POW:
+                    double pw = Math.pow(a, b);
+                    if (!Double.isFinite(pw)) {
+                        throw new EvalException(org.parpe.core.model.Numbers.brief(a) + "^" + org.parpe.core.model.Numbers.brief(b)
+                                + " is not a finite number");
+                    }
+                    return pw;
                 case LT: return a < b ? 1 : 0;
                 case GT: return a > b ? 1 : 0;
                 case LE: return a <= b ? 1 : 0;
@@ -237,7 +243,12 @@ final class Nodes {
 
         @Override
         public double eval(EvalContext c) {
-            return finite(f.apply(arg.eval(c)), f.label());
+            double x = arg.eval(c);
+            double v = f.apply(x);
+            if (Double.isFinite(v)) {
+                return v;
+            }
+            throw new EvalException(f.label() + " of " + org.parpe.core.model.Numbers.brief(x) + " is not a finite number");
         }
     }
 

@@ -15,6 +15,14 @@ public final class Numbers {
         return new BigDecimal(Double.toString(v)).stripTrailingZeros().toPlainString();
     }
 
+    /** {@code v} with at most 6 significant digits, for messages ({@code -0.005}). */
+    public static String brief(double v) {
+        if (!Double.isFinite(v)) {
+            return Double.toString(v);
+        }
+        return new BigDecimal(v).round(new java.math.MathContext(6)).stripTrailingZeros().toPlainString();
+    }
+
     /**
      * Parses a plain decimal number as PARSL allows in {@code value}, {@code min}, {@code max}
      * and {@code step}: optional sign, digits, optional fraction and exponent. Returns
