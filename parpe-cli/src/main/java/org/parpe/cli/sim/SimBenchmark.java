@@ -22,6 +22,7 @@ import org.parpe.sim.config.RobotConfigs;
 public final class SimBenchmark implements Benchmark {
     private static final double DT = 0.01;
     private static final long MEASURE_NANOS = 2_000_000_000L;
+    private static final int ROUNDS = 3;
 
     @Override
     public String name() {
@@ -67,28 +68,40 @@ public final class SimBenchmark implements Benchmark {
             engine.addSink(sim);
             engine.setSensorSource(sim);
             engine.start();
-            for (int i = 0; i < 500; i++) {
-                engine.step();
-            }
+            // Warm up until the JIT has compiled ODE's solver, then take the median of three rounds.
             com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
-            long alloc0 = mx.getThreadAllocatedBytes(Thread.currentThread().getId());
-            double t0 = sim.time();
-            long start = System.nanoTime();
-            long cpu0 = mx.getCurrentThreadCpuTime();
-            long ticks = 0;
-            while (mx.getCurrentThreadCpuTime() - cpu0 < MEASURE_NANOS) {
+            long warm0 = mx.getCurrentThreadCpuTime();
+            while (mx.getCurrentThreadCpuTime() - warm0 < MEASURE_NANOS) {
                 for (int i = 0; i < 50; i++) {
                     engine.step();
                 }
-                ticks += 50;
             }
-            double wall = (System.nanoTime() - start) / 1e9;
-            double cpu = (mx.getCurrentThreadCpuTime() - cpu0) / 1e9;
-            long alloc = mx.getThreadAllocatedBytes(Thread.currentThread().getId()) - alloc0;
+            double[] cpuFactor = new double[ROUNDS];
+            double[] wallFactor = new double[ROUNDS];
+            long alloc = 0;
+            long ticks = 0;
+            for (int round = 0; round < ROUNDS; round++) {
+                long alloc0 = mx.getThreadAllocatedBytes(Thread.currentThread().getId());
+                double t0 = sim.time();
+                long start = System.nanoTime();
+                long cpu0 = mx.getCurrentThreadCpuTime();
+                while (mx.getCurrentThreadCpuTime() - cpu0 < MEASURE_NANOS) {
+                    for (int i = 0; i < 50; i++) {
+                        engine.step();
+                    }
+                    ticks += 50;
+                }
+                wallFactor[round] = (sim.time() - t0) / ((System.nanoTime() - start) / 1e9);
+                cpuFactor[round] = (sim.time() - t0) / ((mx.getCurrentThreadCpuTime() - cpu0) / 1e9);
+                alloc += mx.getThreadAllocatedBytes(Thread.currentThread().getId()) - alloc0;
+            }
+            java.util.Arrays.sort(cpuFactor);
+            java.util.Arrays.sort(wallFactor);
             out.printf(Locale.ROOT, "sim.%s.modules=%d%n", label, sim.moduleIds().length);
             out.printf(Locale.ROOT, "sim.%s.bodies=%d%n", label, sim.snapshot().bodies().size());
-            out.printf(Locale.ROOT, "sim.%s.realtime_factor=%.1f%n", label, (sim.time() - t0) / cpu);
-            out.printf(Locale.ROOT, "sim.%s.realtime_factor_wall=%.1f%n", label, (sim.time() - t0) / wall);
+            out.printf(Locale.ROOT, "sim.%s.realtime_factor=%.1f%n", label, cpuFactor[ROUNDS / 2]);
+            out.printf(Locale.ROOT, "sim.%s.realtime_factor_min=%.1f%n", label, cpuFactor[0]);
+            out.printf(Locale.ROOT, "sim.%s.realtime_factor_wall=%.1f%n", label, wallFactor[ROUNDS / 2]);
             out.printf(Locale.ROOT, "sim.%s.bytes_per_tick=%d%n", label, alloc / Math.max(1, ticks));
             out.printf(Locale.ROOT, "sim.%s.distance_m=%.3f%n", label, sim.metrics().distance());
         }

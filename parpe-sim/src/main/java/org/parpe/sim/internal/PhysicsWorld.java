@@ -59,9 +59,7 @@ public final class PhysicsWorld implements AutoCloseable {
         world.setContactMaxCorrectingVel(0.2);
         world.setContactSurfaceLayer(0.0005);
         world.setAutoDisableFlag(false);
-        DHashSpace hash = OdeHelper.createHashSpace();
-        hash.setLevels(-6, 1);
-        space = hash;
+        space = OdeHelper.createSapSpace(org.ode4j.ode.DSapSpace.AXES.XYZ);
         contactGroup = OdeHelper.createJointGroup();
         OdeHelper.createPlane(space, 0, 0, 1, 0);
         bodies = new DBody[assembly.clusterCount()];
