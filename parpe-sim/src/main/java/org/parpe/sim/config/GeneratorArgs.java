@@ -6,7 +6,7 @@ import java.util.List;
 import java.util.Map;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
-import org.parpe.sim.internal.Names;
+import org.parpe.core.expr.Names;
 
 /**
  * The {@code key=value} arguments of a generator spec such as {@code snake:n=12,axes=alternate},
@@ -92,7 +92,7 @@ final class GeneratorArgs {
         for (Map.Entry<String, Integer> e : columns.entrySet()) {
             if (!known.contains(e.getKey())) {
                 error(e.getValue(), "generator '" + generator + "' has no parameter '" + e.getKey() + "'; it takes "
-                        + String.join(", ", known) + Names.suggestion(e.getKey(), known));
+                        + String.join(", ", known) + Names.suggest(e.getKey(), known));
             }
         }
         return ok;

@@ -6,7 +6,7 @@ import java.util.List;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.sim.internal.Assembly;
-import org.parpe.sim.internal.Names;
+import org.parpe.core.expr.Names;
 
 /**
  * Where simulated robots come from: a standard configuration made by a generator
@@ -72,7 +72,7 @@ public final class RobotConfigs {
         if (config == null) {
             diags.error(new SourcePos("--sim " + spec, 1, 1), "unknown robot '" + name + "'; expected one of "
                     + String.join(", ", GENERATORS) + " or a configuration file ending in .xml"
-                    + Names.suggestion(name, GENERATORS));
+                    + Names.suggest(name, GENERATORS));
             return null;
         }
         return args.finish(name) ? config : null;

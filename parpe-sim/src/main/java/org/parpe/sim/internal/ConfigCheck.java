@@ -1,5 +1,6 @@
 package org.parpe.sim.internal;
 
+import org.parpe.core.expr.Names;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.HashSet;
@@ -41,7 +42,7 @@ final class ConfigCheck {
         }
         if (!index.containsKey(config.root().part())) {
             error(SourcePos.NONE, "root part '" + config.root().part() + "' is not defined"
-                    + Names.suggestion(config.root().part(), index.keySet()));
+                    + Names.suggest(config.root().part(), index.keySet()));
         }
         Set<String> usedPlates = new HashSet<>();
         for (Connection c : config.connections()) {
@@ -89,7 +90,7 @@ final class ConfigCheck {
     private boolean checkEnd(Connection c, String part, int plate, Set<String> usedPlates) {
         Integer i = index.get(part);
         if (i == null) {
-            error(c.pos(), "part '" + part + "' is not defined" + Names.suggestion(part, index.keySet()));
+            error(c.pos(), "part '" + part + "' is not defined" + Names.suggest(part, index.keySet()));
             return false;
         }
         int count = geometries.get(i).plates().size();
