@@ -17,24 +17,13 @@ import org.parpe.core.expr.EvalContext;
 import org.parpe.core.expr.EvalException;
 import org.parpe.core.expr.ExprCompiler;
 import org.parpe.core.expr.Scope;
-import org.parpe.core.run.Channel;
 import org.parpe.core.xml.XText;
 
 /** JEP compatibility of PARSL expressions (PARSL.md §8, §13 rule 16). */
 class ExpressionTest {
     private static final Scope SCOPE = new Scope(Scope.Kind.ENTRY, Map.of("a", 2.0, "speed", 3.0),
             Map.of("pick", 0), Map.of("red", 1, "green", 2, "blue", 3), Set.of("legs"), Map.of(), Set.of(),
-            new Scope.SensorCatalog() {
-                @Override
-                public int moduleIndex(int id) {
-                    return -1;
-                }
-
-                @Override
-                public boolean carries(int id, Channel channel) {
-                    return false;
-                }
-            });
+            Scope.SensorCatalog.NONE);
 
     static double eval(String text) {
         DiagnosticList d = new DiagnosticList();

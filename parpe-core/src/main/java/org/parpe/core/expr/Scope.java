@@ -38,6 +38,19 @@ public record Scope(Kind kind, Map<String, Double> parameters, Map<String, Integ
 
     /** Knows which module carries which sensor and where its readings live. */
     public interface SensorCatalog {
+        /** A robot without sensors. */
+        SensorCatalog NONE = new SensorCatalog() {
+            @Override
+            public int moduleIndex(int id) {
+                return -1;
+            }
+
+            @Override
+            public boolean carries(int id, Channel channel) {
+                return false;
+            }
+        };
+
         /** The sensor-table index of module {@code id}, or −1 if it is not in the robot. */
         int moduleIndex(int id);
 

@@ -91,20 +91,8 @@ public final class ScriptLoader {
 
         Scope scope(Scope.Kind kind, Map<String, Integer> macros, Set<String> groupMacros) {
             return new Scope(kind, decl.values, decl.controlIndex, decl.radioWords, groups, macros, groupMacros,
-                    sensors == null ? EMPTY : sensors);
+                    sensors == null ? Scope.SensorCatalog.NONE : sensors);
         }
-
-        private static final Scope.SensorCatalog EMPTY = new Scope.SensorCatalog() {
-            @Override
-            public int moduleIndex(int id) {
-                return -1;
-            }
-
-            @Override
-            public boolean carries(int id, Channel channel) {
-                return false;
-            }
-        };
 
         private static Scope.SensorCatalog catalog(Robot robot) {
             SensorTable ids = new SensorTable(robot.moduleIds());
