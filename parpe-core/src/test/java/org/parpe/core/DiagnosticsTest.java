@@ -99,6 +99,7 @@ class DiagnosticsTest {
             c("missing parenthesis", ROBOT + exprCase("(1 + 2"), "missing ')'"),
             c("unmatched parenthesis", ROBOT + exprCase("1 + 2)"), "no matching '('"),
             c("implicit multiplication", ROBOT + exprCase("2 pi"), "missing operator"),
+            c("number too large", ROBOT + exprCase("1e400"), "too large"),
             c("unknown function", ROBOT + exprCase("sine(1)"), "did you mean 'sin'"),
             c("arity", ROBOT + exprCase("atan2(1)"), "takes 2 arguments, got 1"),
             c("sum without arguments", ROBOT + exprCase("sum()"), "at least one"),

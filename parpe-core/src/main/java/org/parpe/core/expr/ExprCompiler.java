@@ -251,13 +251,22 @@ public final class ExprCompiler {
         String operand(Lexer.Token t) {
             Node n;
             switch (t.type()) {
-                case NUMBER: n = new Nodes.Const(Double.parseDouble(t.text())); break;
+                case NUMBER: n = number(t); break;
                 case STRING: n = word(t); break;
                 case DOLLAR: n = dollar(t); break;
                 default: n = bare(t); break;
             }
             nodes.add(n == null ? new Nodes.Const(0) : n);
             return "v" + (nodes.size() - 1);
+        }
+
+        private Node number(Lexer.Token t) {
+            double v = Double.parseDouble(t.text());
+            if (!Double.isFinite(v)) {
+                error(t, "the number " + t.text() + " is too large");
+                return null;
+            }
+            return new Nodes.Const(v);
         }
 
         private Node word(Lexer.Token t) {

@@ -286,10 +286,10 @@ public final class Engine implements Evaluator {
         EntryPlan plan = plans[entry];
         ctx.btime = tick * dt - entryStart * dt;
         MainEntry e = plan.entry;
-        if (e.time() != null && ctx.btime >= eval(e.time()) - EPS) {
-            return true;
-        }
-        if (e.exit() != null && eval(e.exit()) != 0) {
+        // Both are evaluated on every tick (PARSL.md §13 rule 4), even when the first decides.
+        boolean timeUp = e.time() != null && ctx.btime >= eval(e.time()) - EPS;
+        boolean exit = e.exit() != null && eval(e.exit()) != 0;
+        if (timeUp || exit) {
             return true;
         }
         if (plan.runs.length == 0) {
@@ -425,7 +425,12 @@ public final class Engine implements Evaluator {
     @Override
     public double eval(Expression e) {
         try {
-            return e.eval(ctx);
+            double v = e.eval(ctx);
+            if (!Double.isFinite(v)) {
+                // a reading or control can only be non-finite if a plant reported one
+                throw new EvalException("the value " + v + " is not a finite number");
+            }
+            return v;
         } catch (EvalException ex) {
             throw error(e.pos(), ex.getMessage() + " in '" + e.text() + "'");
         }
