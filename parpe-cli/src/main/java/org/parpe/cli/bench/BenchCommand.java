@@ -19,6 +19,10 @@ public final class BenchCommand implements Callable<Integer> {
     @Option(names = "--list", description = "List the benchmark names and exit.")
     boolean list;
 
+    @Option(names = "--no-fork", description = "Run every benchmark in this JVM (by default each gets a fresh one, as JMH does,"
+            + " so that one benchmark's JIT profile does not slow the next).")
+    boolean noFork;
+
     @Spec
     CommandSpec spec;
 
@@ -38,13 +42,25 @@ public final class BenchCommand implements Callable<Integer> {
                 return 2;
             }
         }
-        for (Benchmark b : all) {
-            if (only.isEmpty() || only.contains(b.name())) {
+        List<Benchmark> chosen = all.stream().filter(b -> only.isEmpty() || only.contains(b.name())).toList();
+        for (Benchmark b : chosen) {
+            if (noFork || chosen.size() == 1) {
                 out.println("# " + b.name());
                 b.run(out);
                 out.flush();
+            } else if (fork(b.name()) != 0) {
+                spec.commandLine().getErr().println("parpe: benchmark '" + b.name() + "' failed");
+                return 3;
             }
         }
         return 0;
+    }
+
+    /** Runs one benchmark in a fresh JVM with the same class path, passing its output through. */
+    private static int fork(String name) throws Exception {
+        String java = ProcessHandle.current().info().command().orElse("java");
+        ProcessBuilder pb = new ProcessBuilder(java, "-cp", System.getProperty("java.class.path"),
+                "org.parpe.cli.Main", "bench", "--only", name).inheritIO();
+        return pb.start().waitFor();
     }
 }
