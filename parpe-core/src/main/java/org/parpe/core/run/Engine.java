@@ -6,14 +6,12 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 import java.util.SplittableRandom;
-import java.util.concurrent.ConcurrentLinkedQueue;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.expr.EvalContext;
 import org.parpe.core.expr.EvalException;
 import org.parpe.core.expr.Expression;
 import org.parpe.core.model.Conditional;
-import org.parpe.core.model.Control;
 import org.parpe.core.model.MainDef;
 import org.parpe.core.model.MainEntry;
 import org.parpe.core.model.Program;
@@ -36,17 +34,14 @@ public final class Engine implements Evaluator {
     private final boolean[] driven;
     private final int[] driverOf;
     private final SensorTable sensors;
-    private final double[] overrides;
     private final EvalContext ctx = new EvalContext();
+    private final Inputs inputs;
     private final List<JointSink> sinks = new ArrayList<>();
-    private final ConcurrentLinkedQueue<Runnable> commands = new ConcurrentLinkedQueue<>();
-    private final Stimulus[] stimuli;
     private final EntryPlan[] plans;
     private final long mainCycles;
     private final Set<Long> warnedPairs = new HashSet<>();
     private SensorSource source;
     private DiagnosticSink warnings = d -> { };
-    private int nextStimulus;
     private int entry = -1;
     private long mainCycle;
     private long entryStart;
@@ -64,17 +59,9 @@ public final class Engine implements Evaluator {
         this.driven = new boolean[ids.length];
         this.driverOf = new int[ids.length];
         this.sensors = new SensorTable(ids);
-        this.overrides = new double[ids.length * Channel.count()];
-        Arrays.fill(overrides, Double.NaN);
-        List<Stimulus> sorted = new ArrayList<>(options.stimuli());
-        sorted.sort((a, b) -> Double.compare(a.time(), b.time()));
-        this.stimuli = sorted.toArray(new Stimulus[0]);
         ctx.sensors = sensors;
         ctx.random = new SplittableRandom(options.seed());
-        ctx.controls = new double[program.controls().size()];
-        for (int i = 0; i < ctx.controls.length; i++) {
-            ctx.controls[i] = program.controls().get(i).value();
-        }
+        this.inputs = new Inputs(program, ctx, sensors, options.stimuli());
         MainDef main = program.main();
         this.mainCycles = main == null ? 0 : main.cycles();
         this.plans = main == null ? new EntryPlan[0]
@@ -157,42 +144,17 @@ public final class Engine implements Evaluator {
      * @throws IllegalArgumentException for an unknown control or a slider value out of range
      */
     public void setControl(String name, double value) {
-        int i = controlIndex(name);
-        Control c = program.controls().get(i);
-        if (c.type() == Control.ControlType.RADIO) {
-            throw new IllegalArgumentException("control '" + name + "' is a radio; set one of its words");
-        }
-        if (!Double.isFinite(value) || c.min() != null && (value < c.min() || value > c.max())) {
-            throw new IllegalArgumentException("control '" + name + "' must be within [" + c.min() + ", " + c.max()
-                    + "], got " + value);
-        }
-        commands.add(() -> ctx.controls[i] = value);
+        inputs.setControl(name, value);
     }
 
     /** Selects a word of a radio control (any thread; applied at the next tick). */
     public void setControlWord(String name, String word) {
-        int i = controlIndex(name);
-        Control c = program.controls().get(i);
-        if (!c.words().contains(word)) {
-            throw new IllegalArgumentException("radio '" + name + "' has no word '" + word + "' (words: "
-                    + String.join(", ", c.words()) + ")");
-        }
-        double code = program.radioWords().get(word);
-        commands.add(() -> ctx.controls[i] = code);
+        inputs.setControlWord(name, word);
     }
 
     /** The current value of a control (engine thread). */
     public double control(String name) {
-        return ctx.controls[controlIndex(name)];
-    }
-
-    private int controlIndex(String name) {
-        for (int i = 0; i < program.controls().size(); i++) {
-            if (program.controls().get(i).name().equals(name)) {
-                return i;
-            }
-        }
-        throw new IllegalArgumentException("unknown control '" + name + "'");
+        return inputs.control(name);
     }
 
     /** The angles emitted at the last tick, by module index (engine thread; do not modify). */
@@ -228,12 +190,7 @@ public final class Engine implements Evaluator {
         }
         tick++;
         ctx.time = tick * dt;
-        Runnable cmd;
-        while ((cmd = commands.poll()) != null) {
-            cmd.run();
-        }
-        applyStimuli();
-        readSensors();
+        inputs.read(source, commanded);
         Arrays.fill(driven, false);
         if (tick == 0 && source != null) {
             for (int i = 0; i < ids.length; i++) {
@@ -254,32 +211,6 @@ public final class Engine implements Evaluator {
         }
         emit();
         return !ended;
-    }
-
-    private void applyStimuli() {
-        while (nextStimulus < stimuli.length && stimuli[nextStimulus].time() <= ctx.time + EPS) {
-            Stimulus s = stimuli[nextStimulus++];
-            if (s.target() == Stimulus.Target.CONTROL) {
-                ctx.controls[s.index()] = s.value();
-            } else {
-                overrides[s.index()] = s.value();
-            }
-        }
-    }
-
-    private void readSensors() {
-        if (source != null) {
-            source.read(ctx.time, sensors);
-        } else {
-            for (int i = 0; i < ids.length; i++) {
-                sensors.set(i, Channel.ANGLE, commanded[i]);
-            }
-        }
-        for (int slot = 0; slot < overrides.length; slot++) {
-            if (!Double.isNaN(overrides[slot])) {
-                sensors.setSlot(slot, overrides[slot]);
-            }
-        }
     }
 
     private boolean entryEnds() {

@@ -1,0 +1,228 @@
+package org.parpe.core.expr;
+
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Set;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import net.objecthunter.exp4j.function.Function;
+import org.parpe.core.diag.DiagnosticSink;
+import org.parpe.core.run.Channel;
+import org.parpe.core.xml.XText;
+
+/**
+ * Resolves the names of one expression against its {@link Scope} (parameters, macros, radio
+ * words, controls, logical variables, sensors, functions) into nodes, and gives each operand
+ * the exp4j variable name it stands under in the rewritten text.
+ */
+final class NameResolver {
+    static final Pattern GLOBAL = Pattern.compile("(\\d+)_([A-Za-z]+)(?:_([A-Za-z0-9]+))?");
+    static final Pattern LOCAL = Pattern.compile("_(\\d+|self|prev|next)_([A-Za-z]+)(?:_([A-Za-z0-9]+))?");
+    static final Set<String> CONSTANTS = Set.of("pi", "e", "true", "false");
+
+    final XText src;
+    final Scope scope;
+    final DiagnosticSink diags;
+    final List<Node> nodes = new ArrayList<>();
+    final List<ExprCompiler.LocalUse> locals = new ArrayList<>();
+    boolean failed;
+    boolean perModule;
+
+    NameResolver(XText src, Scope scope, DiagnosticSink diags) {
+        this.src = src;
+        this.scope = scope;
+        this.diags = diags;
+    }
+
+    Set<String> variableNames() {
+        Set<String> names = new HashSet<>();
+        for (int i = 0; i < nodes.size(); i++) {
+            names.add("v" + i);
+        }
+        return names;
+    }
+
+    String function(Lexer.Token t, int args, Map<String, Function> functions) {
+        String name = t.text();
+        int arity = Functions.arity(name);
+        if (arity == -1 || !name.equals(name.toLowerCase(Locale.ROOT))) {
+            error(t, "unknown function '" + name + "()'" + Names.suggest(name, Names.FUNCTIONS));
+            return "rand";
+        }
+        String key = arity == -2 ? "sum" + args : name;
+        functions.computeIfAbsent(key, k -> new Function(k, arity == -2 ? args : arity) {
+            @Override
+            public double apply(double... a) {
+                throw new UnsupportedOperationException("PARSL evaluates its own node tree");
+            }
+        });
+        return key;
+    }
+
+    String operand(Lexer.Token t) {
+        Node n;
+        switch (t.type()) {
+            case NUMBER: n = number(t); break;
+            case STRING: n = word(t); break;
+            case DOLLAR: n = dollar(t); break;
+            default: n = bare(t); break;
+        }
+        nodes.add(n == null ? new Nodes.Const(0) : n);
+        return "v" + (nodes.size() - 1);
+    }
+
+    private Node number(Lexer.Token t) {
+        double v = Double.parseDouble(t.text());
+        if (!Double.isFinite(v)) {
+            error(t, "the number " + t.text() + " is too large");
+            return null;
+        }
+        return new Nodes.Const(v);
+    }
+
+    private Node word(Lexer.Token t) {
+        Integer code = scope.kind() == Scope.Kind.PARAMETERS_ONLY ? null : scope.radioWords().get(t.text());
+        if (code == null) {
+            error(t, "\"" + t.text() + "\" is not a radio word; string literals are only for radio words"
+                    + Names.suggest(t.text(), scope.radioWords().keySet()));
+            return null;
+        }
+        return new Nodes.Const(code);
+    }
+
+    private Node bare(Lexer.Token t) {
+        String name = t.text();
+        switch (name) {
+            case "pi": return new Nodes.Const(Math.PI);
+            case "e": return new Nodes.Const(Math.E);
+            case "true": return new Nodes.Const(1);
+            case "false": return new Nodes.Const(0);
+            default: break;
+        }
+        if (scope.parameters().containsKey(name)) {
+            return new Nodes.Const(scope.parameters().get(name));
+        }
+        if (scope.macros().containsKey(name)) {
+            return new Nodes.MacroRef(scope.macros().get(name));
+        }
+        if (scope.kind() != Scope.Kind.PARAMETERS_ONLY && scope.radioWords().containsKey(name)) {
+            return new Nodes.Const(scope.radioWords().get(name));
+        }
+        if (scope.groupMacros().contains(name)) {
+            error(t, "macro '" + name + "' names a group; it cannot be used in an arithmetic expression");
+        } else if (scope.groups().contains(name)) {
+            error(t, "'" + name + "' is a group; groups cannot be used in expressions");
+        } else if (scope.controls().containsKey(name)) {
+            error(t, "control '" + name + "' is written '$" + name + "' in expressions");
+        } else if (Functions.arity(name) != -1) {
+            error(t, "'" + name + "' is a function; call it as " + name + "(...)");
+        } else {
+            List<String> known = new ArrayList<>(scope.parameters().keySet());
+            known.addAll(scope.macros().keySet());
+            known.addAll(scope.radioWords().keySet());
+            known.addAll(CONSTANTS);
+            String where = scope.kind() == Scope.Kind.PARAMETERS_ONLY ? " (only parameters are allowed here)" : "";
+            error(t, "unknown name '" + name + "'" + where + Names.suggest(name, known));
+        }
+        return null;
+    }
+
+    private Node dollar(Lexer.Token t) {
+        String name = t.text();
+        if (Scope.LOGICAL.contains(name)) {
+            if (!scope.sees(name)) {
+                error(t, "'$" + name + "' is not available here" + logicalWhere(name));
+                return null;
+            }
+            int which = Scope.LOGICAL.indexOf(name);
+            perModule |= which == Nodes.Var.INDEX || which == Nodes.Var.ID || which == Nodes.Var.PHASE
+                    || which == Nodes.Var.CYCLE;
+            return new Nodes.Var(which);
+        }
+        if (scope.controls().containsKey(name)) {
+            return new Nodes.ControlRef(scope.controls().get(name));
+        }
+        Matcher g = GLOBAL.matcher(name);
+        if (g.matches()) {
+            return globalSensor(t, g);
+        }
+        Matcher l = LOCAL.matcher(name);
+        if (l.matches()) {
+            return localSensor(t, l);
+        }
+        List<String> known = new ArrayList<>();
+        scope.controls().keySet().forEach(c -> known.add(c));
+        known.addAll(Scope.LOGICAL);
+        error(t, "unknown control or variable '$" + name + "'" + Names.suggest(name, known, "$"));
+        return null;
+    }
+
+    private Channel channel(Lexer.Token t, String sensor, String arg) {
+        if (!List.of("angle", "accel", "touch").contains(sensor)) {
+            error(t, "sensor '" + sensor + "' is not implemented; available: angle, accel, touch");
+            return null;
+        }
+        Channel c = Channel.of(sensor, arg == null ? "" : arg);
+        if (c == null) {
+            error(t, sensor.equals("angle") ? "the angle sensor takes no argument"
+                    : sensor.equals("accel") ? "accel needs an axis: _x, _y or _z"
+                    : "touch needs a side: _left or _right");
+        }
+        return c;
+    }
+
+    private Node globalSensor(Lexer.Token t, Matcher m) {
+        if (scope.sensors() == null) {
+            error(t, "sensor references are not allowed here");
+            return null;
+        }
+        Channel c = channel(t, m.group(2), m.group(3));
+        if (c == null) {
+            return null;
+        }
+        int id = m.group(1).length() > 7 ? -1 : Integer.parseInt(m.group(1));
+        int index = id < 0 ? -1 : scope.sensors().moduleIndex(id);
+        if (index < 0) {
+            error(t, "module " + m.group(1) + " is not part of the robot");
+            return null;
+        }
+        if (!scope.sensors().carries(id, c)) {
+            error(t, "module " + id + " has no " + c.sensor() + " sensor (declare it in <sensors>)");
+            return null;
+        }
+        return new Nodes.GlobalSensor(Nodes.slot(index, c.ordinal()));
+    }
+
+    private Node localSensor(Lexer.Token t, Matcher m) {
+        if (scope.kind() != Scope.Kind.MODULE) {
+            error(t, "local sensor references ($_" + m.group(1) + "_...) are only allowed in states, times and exit conditions");
+            return null;
+        }
+        Channel c = channel(t, m.group(2), m.group(3));
+        if (c == null) {
+            return null;
+        }
+        String which = m.group(1);
+        int position = which.equals("self") ? Nodes.LocalSensor.SELF : which.equals("prev") ? Nodes.LocalSensor.PREV
+                : which.equals("next") ? Nodes.LocalSensor.NEXT : which.length() > 7 ? Integer.MAX_VALUE : Integer.parseInt(which);
+        perModule = true;
+        locals.add(new ExprCompiler.LocalUse(position, c, src.posAt(t.start()), "$" + t.text()));
+        return new Nodes.LocalSensor(position, c.ordinal());
+    }
+
+    private static String logicalWhere(String name) {
+        switch (name) {
+            case "count": return " ($count is defined in states, times and instance attributes)";
+            case "time": case "btime": return " (only parameters are allowed here)";
+            default: return " ($" + name + " is defined in states and automaton times)";
+        }
+    }
+
+    private void error(Lexer.Token t, String message) {
+        diags.error(src.posAt(t.start()), message);
+        failed = true;
+    }
+}
