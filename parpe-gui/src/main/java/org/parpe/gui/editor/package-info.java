@@ -1,0 +1,2 @@
+/** The PARSL editor: colouring, content assist, live validation and error markers. */
+package org.parpe.gui.editor;

@@ -1,0 +1,2 @@
+/** The IDE's entry point and its command-line options (./parpe gui). */
+package org.parpe.gui;

@@ -1,0 +1,2 @@
+/** Running scripts from the IDE: the engine thread, targets, speeds and recorded angles. */
+package org.parpe.gui.run;
