@@ -26,6 +26,12 @@ import picocli.CommandLine.Command;
                   "          Open the IDE (./parpe with no arguments does the same).",
                   "", "Exit codes: 0 success, 1 script errors, 2 usage errors, 3 run-time error."})
 public final class Main implements Runnable {
+    static {
+        // Plots are drawn with AWT into images; the command line never opens a window, so AWT
+        // must not load its X11 toolkit even where a display is set (and X libraries are absent).
+        System.setProperty("java.awt.headless", "true");
+    }
+
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
