@@ -28,8 +28,6 @@ import org.parpe.core.xml.XText;
 public final class ExprCompiler {
     /** A local sensor reference, checked where the automaton meets a group (PARSL.md §13 rule 13). */
     public record LocalUse(int position, Channel channel, org.parpe.core.diag.SourcePos pos, String text) {
-        /** The position code of {@code $_self_…}. */
-        public static final int SELF = Nodes.LocalSensor.SELF;
     }
 
     /** A compiled expression with what the loader needs to check it further. */
@@ -59,7 +57,7 @@ public final class ExprCompiler {
             return null;
         }
         int[] argCounts = new int[tokens.size()];
-        Syntax.Problem p = Syntax.check(tokens, argCounts, text.length());
+        Syntax.Problem p = Syntax.check(tokens, argCounts);
         if (p != null) {
             diags.error(src.posAt(p.index()), p.message() + " in '" + text.trim() + "'");
             return null;

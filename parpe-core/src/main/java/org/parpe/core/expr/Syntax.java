@@ -23,7 +23,7 @@ final class Syntax {
     }
 
     /** Returns the first problem, or {@code null}; fills {@code argCounts[i]} for call tokens. */
-    static Problem check(List<Token> tokens, int[] argCounts, int length) {
+    static Problem check(List<Token> tokens, int[] argCounts) {
         if (tokens.isEmpty()) {
             return new Problem("empty expression", 0);
         }

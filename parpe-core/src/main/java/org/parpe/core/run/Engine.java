@@ -157,11 +157,6 @@ public final class Engine implements Evaluator {
         return inputs.control(name);
     }
 
-    /** The angles emitted at the last tick, by module index (engine thread; do not modify). */
-    public double[] commanded() {
-        return commanded;
-    }
-
     /** A snapshot of what the engine is doing (engine thread). */
     public EngineStatus status() {
         int count = 0;

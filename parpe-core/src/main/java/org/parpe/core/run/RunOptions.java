@@ -23,8 +23,4 @@ public record RunOptions(double dt, long seed, List<Stimulus> stimuli) {
         return new RunOptions(0.01, 0, List.of());
     }
 
-    /** The same options with another tick. */
-    public RunOptions withDt(double newDt) {
-        return new RunOptions(newDt, seed, stimuli);
-    }
 }
