@@ -122,6 +122,11 @@ class BusOverPtyTest {
         for (Map.Entry<Integer, double[]> e : received.entrySet()) {
             double[] got = e.getValue();
             for (int m = 0; m < modules; m++) {
+                if (!lossless && Double.isNaN(got[m])) {
+                    // "no change": with faults injected, every discovery ping to this module can be
+                    // lost; the bus then reports it missing and drives it from its next probe on
+                    continue;
+                }
                 assertEquals(rows[e.getKey()][m], got[m], 0.005 + 1e-9, "tick " + e.getKey() + " module " + m);
             }
             matched++;
