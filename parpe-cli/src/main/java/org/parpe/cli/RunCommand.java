@@ -64,7 +64,7 @@ final class RunCommand implements Callable<Integer> {
     CommandSpec spec;
 
     @Override
-    public Integer call() throws IOException {
+    public Integer call() throws Exception {
         PrintStream err = errStream();
         try {
             return execute(err);
@@ -78,7 +78,7 @@ final class RunCommand implements Callable<Integer> {
         return new PrintStream(new WriterStream(spec.commandLine().getErr()), true, StandardCharsets.UTF_8);
     }
 
-    private int execute(PrintStream err) throws UsageException, IOException {
+    private int execute(PrintStream err) throws Exception {
         if (!Files.isReadable(file) || Files.isDirectory(file)) {
             throw new UsageException("cannot read '" + file + "'");
         }
@@ -110,12 +110,8 @@ final class RunCommand implements Callable<Integer> {
             sim.configure(setup);
             hardware.configure(setup);
             return new RunLoop(setup, err).run(traceWriter(), trace != null && trace.equals("-"));
-        } catch (UsageException e) {
-            throw e;
-        } catch (Exception e) {
-            if (e instanceof RuntimeException && e.getMessage() == null) {
-                throw (RuntimeException) e;
-            }
+        } catch (IOException e) {
+            // a device or file the targets could not use (e.g. a serial port that will not open)
             throw new UsageException(e.getMessage() == null ? e.toString() : e.getMessage());
         } finally {
             RunLoop.closeAll(setup, err);

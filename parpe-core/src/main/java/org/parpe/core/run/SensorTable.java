@@ -30,7 +30,8 @@ public final class SensorTable {
 
     /** The module index of logical ID {@code id}, or −1. */
     public int indexOf(int id) {
-        return Arrays.binarySearch(ids, id) >= 0 ? Arrays.binarySearch(ids, id) : -1;
+        int i = Arrays.binarySearch(ids, id);
+        return i >= 0 ? i : -1;
     }
 
     /** The reading of {@code channel} of the module at {@code index}. */

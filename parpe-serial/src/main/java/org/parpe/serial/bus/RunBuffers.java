@@ -35,7 +35,8 @@ final class RunBuffers {
 
     /** Index of module {@code id}, or −1. */
     int indexOf(int id) {
-        return java.util.Arrays.binarySearch(ids, id) >= 0 ? java.util.Arrays.binarySearch(ids, id) : -1;
+        int i = java.util.Arrays.binarySearch(ids, id);
+        return i >= 0 ? i : -1;
     }
 
     /**
