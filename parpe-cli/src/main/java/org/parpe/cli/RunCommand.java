@@ -11,6 +11,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import org.parpe.cli.hw.HardwareOptions;
@@ -20,9 +21,14 @@ import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
 import org.parpe.core.model.Numbers;
 import org.parpe.core.model.Program;
+import org.parpe.core.run.Pacer;
+import org.parpe.core.run.Run;
 import org.parpe.core.run.RunOptions;
+import org.parpe.core.run.RunOutcome;
 import org.parpe.core.run.Stimulus;
 import org.parpe.core.run.StimulusParser;
+import org.parpe.core.run.TargetException;
+import org.parpe.core.run.WallClockPacer;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -104,18 +110,47 @@ final class RunCommand implements Callable<Integer> {
             return 0;
         }
         RunOptions options = new RunOptions(tick, seed, stimuli(program));
-        double limit = duration == null ? Double.POSITIVE_INFINITY : duration;
-        RunSetup setup = new RunSetup(program, options, limit, err);
-        try {
-            sim.configure(setup);
-            hardware.configure(setup);
-            return new RunLoop(setup, err).run(traceWriter(), trace != null && trace.equals("-"));
-        } catch (IOException e) {
-            // a device or file the targets could not use (e.g. a serial port that will not open)
-            throw new UsageException(e.getMessage() == null ? e.toString() : e.getMessage());
-        } finally {
-            RunLoop.closeAll(setup, err);
+        Run.Builder builder = Run.builder(program, options, d -> err.println(d.format()));
+        if (duration != null) {
+            builder.duration(duration);
         }
+        Writer out;
+        try {
+            sim.configure(builder, duration == null ? Double.POSITIVE_INFINITY : duration, err);
+            hardware.configure(builder, err);
+            out = traceWriter();
+        } catch (TargetException e) {
+            builder.abandon();
+            e.diagnostics().forEach(d -> err.println(d.format()));
+            if (e.diagnostics().size() > 1) {
+                err.println("parpe: " + e.getMessage());
+            }
+            return 2;
+        } catch (UsageException e) {
+            builder.abandon();
+            throw e;
+        }
+        boolean toStdout = "-".equals(trace);
+        if (out != null) {
+            builder.trace(out);
+        }
+        builder.observer(Progress.forStderr(err, duration == null ? Double.POSITIVE_INFINITY : duration));
+        builder.pacer(sim.realtime() || builder.realtimeRequired() ? new WallClockPacer(1) : Pacer.NONE);
+        Run run = builder.build();
+        RunOutcome outcome;
+        try (InterruptHook hook = new InterruptHook(run)) {
+            outcome = run.execute();
+        } finally {
+            if (out != null && !toStdout) {
+                out.close();
+            } else if (out != null) {
+                out.flush();
+            }
+        }
+        if (outcome.status() == RunOutcome.Status.STOPPED) {
+            err.println("parpe: stopped at t=" + String.format(Locale.ROOT, "%.3f", outcome.time()) + " s");
+        }
+        return outcome.status() == RunOutcome.Status.ERROR ? 3 : 0;
     }
 
     private Map<String, Double> parseParams() throws UsageException {

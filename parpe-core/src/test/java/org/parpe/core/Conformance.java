@@ -84,7 +84,7 @@ public final class Conformance {
                 : StimulusParser.parse(stimulus.toString(), Files.readString(stimulus, StandardCharsets.UTF_8), r.program());
         Engine e = new Engine(r.program(), new RunOptions(tick, 0, stimuli));
         StringWriter out = new StringWriter();
-        e.addSink(new TraceWriter(out));
+        e.addObserver(new TraceWriter(out));
         List<Diagnostic> warnings = new ArrayList<>(r.diagnostics());
         e.setWarningSink(warnings::add);
         e.start();

@@ -33,7 +33,7 @@ class EngineAllocationTest {
         Engine e = new Engine(r.program(), new RunOptions(0.01, 1, List.of(
                 new Stimulus(2.5, 1, Stimulus.Target.SENSOR, 205 * 6 + 4, 1, "touch"))));
         double[] sum = new double[1];
-        e.addSink((JointSink) (tick, time, commanded) -> sum[0] += commanded[0]);
+        e.addObserver((JointSink) (tick, time, commanded) -> sum[0] += commanded[0]);
         e.start();
         for (int i = 0; i < 30_000; i++) {
             e.step(); // warm up: class loading and JIT compilation allocate, the ticks themselves do not

@@ -40,7 +40,7 @@ class RunTimeErrorTest {
         Program p = load(wave("10 / ($time - 0.5)", ""));
         Engine e = new Engine(p, RunOptions.defaults());
         StringWriter trace = new StringWriter();
-        e.addSink(new TraceWriter(trace));
+        e.addObserver(new TraceWriter(trace));
         e.start();
         ScriptRuntimeError err = assertThrows(ScriptRuntimeError.class, () -> {
             for (int i = 0; i < 200; i++) {

@@ -73,7 +73,7 @@ class SchedulerProperties {
     /** Records the commanded angles of every tick. */
     static double[][] run(Engine e, int ticks) {
         double[][] rows = new double[ticks][];
-        e.addSink(new JointSink() {
+        e.addObserver(new JointSink() {
             @Override
             public void accept(long tick, double time, double[] commanded) {
                 rows[(int) tick] = commanded.clone();
@@ -134,7 +134,7 @@ class SchedulerProperties {
     static String trace(String script, long seed) {
         Engine e = engine(script, new RunOptions(0.01, seed, List.of()));
         StringWriter out = new StringWriter();
-        e.addSink(new TraceWriter(out));
+        e.addObserver(new TraceWriter(out));
         e.start();
         for (int i = 0; i < 400; i++) {
             e.step();

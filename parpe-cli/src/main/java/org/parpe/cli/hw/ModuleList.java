@@ -4,6 +4,7 @@ import java.util.Arrays;
 import java.util.LinkedHashSet;
 import java.util.Set;
 import org.parpe.cli.UsageException;
+import org.parpe.serial.bus.Discovery;
 import org.parpe.serial.protocol.Protocol;
 
 /** Parses module lists of the command line: {@code 0..7}, {@code 0,2,5}, {@code 0..3,8..9}. */
@@ -54,19 +55,6 @@ final class ModuleList {
 
     /** A compact text of IDs: {@code 0..7, 9}. */
     static String format(int[] ids) {
-        StringBuilder b = new StringBuilder();
-        int[] s = sorted(ids);
-        for (int i = 0; i < s.length; ) {
-            int j = i;
-            while (j + 1 < s.length && s[j + 1] == s[j] + 1) {
-                j++;
-            }
-            b.append(b.length() == 0 ? "" : ", ").append(s[i]);
-            if (j > i) {
-                b.append(j > i + 1 ? ".." : ", ").append(s[j]);
-            }
-            i = j + 1;
-        }
-        return b.toString();
+        return Discovery.format(ids);
     }
 }

@@ -14,6 +14,7 @@ import org.parpe.core.run.RunInfo;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.serial.bus.BusConfig;
 import org.parpe.serial.bus.BusMaster;
+import org.parpe.serial.bus.BusReport;
 import org.parpe.serial.bus.HardwareBus;
 import org.parpe.serial.emu.BusEmulator;
 import org.parpe.serial.emu.EmulatorListener;
@@ -103,7 +104,7 @@ public final class SerialBenchmark implements Benchmark {
                 frames.incrementAndGet();
             }
         }); HardwareBus bus = HardwareBus.open(() -> new WireLink(pipe[0], baud),
-                BusConfig.defaults().withBaud(baud), m -> { })) {
+                BusConfig.defaults().withBaud(baud), BusReport.lines(m -> { }))) {
             bus.discover(ids);
             bus.start(new RunInfo(null, ids, 0.01));
             double[] row = new double[MODULES];

@@ -6,9 +6,9 @@ import org.parpe.core.run.TraceColumns;
 import org.parpe.sim.Simulator;
 
 /**
- * Keeps commanded and measured angles for {@code --plot}: a sink added after the simulator, so
- * the simulator's trace columns hold the measured angles of the same tick. Samples at most
- * about {@value #TARGET_SAMPLES} ticks of a run of known length; grows its arrays otherwise.
+ * Keeps commanded and measured angles for {@code --plot}: an observer of the run, so it sees
+ * each tick after the simulator, whose trace columns then hold the measured angles of the same
+ * tick. Samples at most about {@value #TARGET_SAMPLES} ticks of a run of known length; grows its arrays otherwise.
  */
 final class PlotRecorder implements JointSink {
     private static final int TARGET_SAMPLES = 4000;
@@ -16,7 +16,7 @@ final class PlotRecorder implements JointSink {
     private final int[] ids;
     private final int[] measuredColumn;
     private final TraceColumns columns;
-    private final double[] row;
+    private double[] row = new double[0];
     private final long stride;
     private double dt = 0.01;
     private double[] times = new double[1024];
@@ -27,20 +27,21 @@ final class PlotRecorder implements JointSink {
     PlotRecorder(Simulator sim, int[] moduleIds, double duration, double tick) {
         ids = moduleIds.clone();
         columns = sim.traceColumns();
-        String[] names = columns.names();
-        row = new double[names.length];
         measuredColumn = new int[ids.length];
-        for (int i = 0; i < ids.length; i++) {
-            measuredColumn[i] = Arrays.asList(names).indexOf("a" + ids[i]);
-        }
         commanded = new double[times.length * ids.length];
         measured = new double[times.length * ids.length];
         stride = Double.isFinite(duration) ? Math.max(1, (long) (duration / tick) / TARGET_SAMPLES) : 1;
     }
 
+    /** Finds the measured columns: the simulator, a plant, has bound the program's modules by now. */
     @Override
     public void start(org.parpe.core.run.RunInfo info) {
         dt = info.dt();
+        String[] names = columns.names();
+        row = new double[names.length];
+        for (int i = 0; i < ids.length; i++) {
+            measuredColumn[i] = Arrays.asList(names).indexOf("a" + ids[i]);
+        }
     }
 
     @Override

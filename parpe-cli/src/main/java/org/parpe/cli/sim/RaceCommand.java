@@ -13,7 +13,7 @@ import org.parpe.cli.UsageException;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
-import org.parpe.core.run.ScriptRuntimeError;
+import org.parpe.core.run.RunOutcome;
 import org.parpe.sim.SimMetrics;
 import org.parpe.sim.Simulator;
 import picocli.CommandLine.Command;
@@ -91,11 +91,11 @@ public final class RaceCommand implements Callable<Integer> {
             }
         }, true, java.nio.charset.StandardCharsets.UTF_8);
         try (Simulator s = SimOptions.create(sim, r.program().moduleIds(), errStream)) {
-            SimRun.run(r.program(), s, duration, tick);
+            RunOutcome outcome = SimRun.run(r.program(), s, duration, tick, d -> err.println(d.format()));
+            if (outcome.status() == RunOutcome.Status.ERROR) {
+                return new Entry(file.toString(), null, "run-time error");
+            }
             return new Entry(file.toString(), s.metrics(), "");
-        } catch (ScriptRuntimeError e) {
-            err.println(e.getMessage());
-            return new Entry(file.toString(), null, "run-time error");
         }
     }
 

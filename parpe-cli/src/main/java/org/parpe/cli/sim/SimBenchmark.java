@@ -65,7 +65,7 @@ public final class SimBenchmark implements Benchmark {
         DiagnosticList diags = new DiagnosticList();
         try (Simulator sim = new Simulator(RobotConfigs.resolve(spec, program.moduleIds(), diags))) {
             Engine engine = new Engine(program, new RunOptions(DT, 0, List.of()));
-            engine.addSink(sim);
+            engine.addPlant(sim);
             engine.setSensorSource(sim);
             engine.start();
             // Warm up until the JIT has compiled ODE's solver, then take the median of three rounds.

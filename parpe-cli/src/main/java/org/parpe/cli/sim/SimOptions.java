@@ -5,20 +5,17 @@ import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import org.parpe.cli.RunSetup;
-import org.parpe.cli.RunTarget;
 import org.parpe.cli.UsageException;
-import org.parpe.core.diag.Diagnostic;
-import org.parpe.core.diag.DiagnosticList;
+import org.parpe.core.run.Run;
 import org.parpe.core.run.RunOutcome;
+import org.parpe.core.run.TargetException;
 import org.parpe.sim.SimMetrics;
+import org.parpe.sim.SimTarget;
 import org.parpe.sim.Simulator;
-import org.parpe.sim.config.RobotConfig;
-import org.parpe.sim.config.RobotConfigs;
 import picocli.CommandLine.Option;
 
 /** The simulator options of {@code parpe run} ({@code --sim}, {@code --metrics}, {@code --plot}, {@code --realtime}). */
-public class SimOptions implements RunTarget {
+public class SimOptions {
     @Option(names = "--sim", arity = "0..1", fallbackValue = "snake", paramLabel = "ROBOT",
             description = "Run on the physics simulator. ROBOT is GENERATOR[:key=value,...] (snake, loop, wheel,"
                     + " centipede, humanoid) or a configuration file CONFIG.xml; without ROBOT, a snake of the"
@@ -36,51 +33,48 @@ public class SimOptions implements RunTarget {
     @Option(names = "--realtime", description = "With --sim: pace the run to the wall clock.")
     boolean realtime;
 
-    @Override
-    public void configure(RunSetup setup) throws UsageException {
+    /** Whether {@code --realtime} was given. */
+    public boolean realtime() {
+        return realtime;
+    }
+
+    /**
+     * Attaches the simulator to {@code run} when {@code --sim} was given, with the plot and
+     * metrics it asks for ({@code duration}: the run's limit, for the plot's sampling; messages
+     * about the outputs go to {@code err}).
+     */
+    public void configure(Run.Builder run, double duration, PrintStream err) throws UsageException, TargetException {
         if (sim == null) {
             if (metrics != null || plot != null || realtime) {
                 throw new UsageException("--metrics, --plot and --realtime need --sim");
             }
             return;
         }
-        Simulator simulator = create(sim, setup.program().moduleIds(), setup.err());
-        setup.closeAtEnd(simulator);
-        simulator.start(new org.parpe.core.run.RunInfo(setup.program(), setup.program().moduleIds(),
-                setup.options().dt()));
-        setup.addSink(simulator);
-        setup.offerSensorSource("sim", simulator, 5);
-        setup.addTraceColumns(simulator.traceColumns());
-        setup.setRealtime(realtime);
+        SimTarget target = new SimTarget(sim);
+        run.attach(target);
+        Simulator simulator = target.simulator();
         if (plot != null) {
-            PlotRecorder recorder = new PlotRecorder(simulator, setup.program().moduleIds(), setup.duration(),
-                    setup.options().dt());
-            setup.addSink(recorder);
-            setup.onFinish(o -> writePlot(recorder, setup.err()));
+            PlotRecorder recorder = new PlotRecorder(simulator, run.program().moduleIds(), duration,
+                    run.options().dt());
+            run.observer(recorder);
+            run.onFinish(o -> writePlot(recorder, err));
         }
         if (metrics != null) {
-            setup.onFinish(o -> writeMetrics(simulator.metrics(), o, setup.err()));
+            run.onFinish(o -> writeMetrics(simulator.metrics(), o, err));
         }
     }
 
     /**
-     * Builds the simulator for {@code spec}, printing located problems to {@code err}; a bad spec
-     * or configuration file is a usage error.
+     * Builds the simulator for {@code spec} outside a run ({@code race}), printing located
+     * problems to {@code err}; a bad spec or configuration file is a usage error.
      */
     static Simulator create(String spec, int[] moduleIds, PrintStream err) throws UsageException {
-        DiagnosticList diags = new DiagnosticList();
-        RobotConfig config = RobotConfigs.resolve(spec, moduleIds, diags);
-        if (config != null) {
-            RobotConfigs.checkModules(config, moduleIds, diags);
+        try {
+            return SimTarget.create(spec, moduleIds, d -> err.println(d.format()));
+        } catch (TargetException e) {
+            e.diagnostics().forEach(d -> err.println(d.format()));
+            throw new UsageException(e.getMessage() + " above");
         }
-        for (Diagnostic d : diags.all()) {
-            err.println(d.format());
-        }
-        if (config == null) {
-            throw new UsageException("cannot build the simulated robot '" + spec + "' (" + diags.errorCount()
-                    + " error" + (diags.errorCount() == 1 ? "" : "s") + " above)");
-        }
-        return new Simulator(config);
     }
 
     private void writeMetrics(SimMetrics m, RunOutcome outcome, PrintStream err) {

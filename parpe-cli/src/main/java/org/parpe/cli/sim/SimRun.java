@@ -6,9 +6,11 @@ import java.util.Map;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
 import org.parpe.core.model.Program;
-import org.parpe.core.run.Engine;
+import org.parpe.core.diag.DiagnosticSink;
+import org.parpe.core.run.Run;
 import org.parpe.core.run.RunOptions;
 import org.parpe.core.run.RunOutcome;
+import org.parpe.sim.SimTarget;
 import org.parpe.sim.Simulator;
 
 /**
@@ -16,28 +18,20 @@ import org.parpe.sim.Simulator;
  * {@code <main>} ends): used by {@code parpe race}, the simulator benchmark and tests.
  */
 public final class SimRun {
-    private static final double EPS = 1e-9;
-
     private SimRun() {
     }
 
-    /** Runs {@code program} on {@code sim} for at most {@code duration} s with tick {@code dt}; returns the simulated time reached. */
-    public static double run(Program program, Simulator sim, double duration, double dt) {
-        Engine engine = new Engine(program, new RunOptions(dt, 0, List.of()));
-        engine.addSink(sim);
-        engine.setSensorSource(sim);
-        engine.start();
-        RunOutcome.Status status = RunOutcome.Status.COMPLETED;
-        try {
-            for (long k = 0; k * dt <= duration + EPS; k++) {
-                if (!engine.step()) {
-                    break;
-                }
-            }
-        } finally {
-            engine.finish(new RunOutcome(status, engine.time(), ""));
-        }
-        return sim.time();
+    /**
+     * Runs {@code program} on {@code sim} as fast as possible for at most {@code duration} s
+     * with tick {@code dt}; warnings and a run-time error go to {@code diags}.
+     */
+    public static RunOutcome run(Program program, Simulator sim, double duration, double dt, DiagnosticSink diags) {
+        return Run.builder(program, new RunOptions(dt, 0, List.of()), diags)
+                .plant(sim)
+                .sensorSource("sim", sim, SimTarget.PRIORITY)
+                .duration(duration)
+                .build()
+                .execute();
     }
 
     /** Loads a script from text (benchmarks, tests); throws if it has errors. */

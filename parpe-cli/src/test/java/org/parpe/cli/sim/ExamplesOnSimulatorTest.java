@@ -1,5 +1,6 @@
 package org.parpe.cli.sim;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -13,6 +14,7 @@ import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
 import org.parpe.core.model.Program;
+import org.parpe.core.run.RunOutcome;
 import org.parpe.sim.SimBody;
 import org.parpe.sim.SimMetrics;
 import org.parpe.sim.Simulator;
@@ -38,7 +40,7 @@ class ExamplesOnSimulatorTest {
     private static SimMetrics run(String file, String spec, double seconds) {
         Program p = program(file);
         try (Simulator s = simulator(spec, p)) {
-            SimRun.run(p, s, seconds, 0.01);
+            assertEquals(RunOutcome.Status.COMPLETED, SimRun.run(p, s, seconds, 0.01, d -> { }).status());
             return s.metrics();
         }
     }
@@ -68,7 +70,7 @@ class ExamplesOnSimulatorTest {
     void tenSimulatedMinutesStaySane(String file, String spec) {
         Program p = program(file);
         try (Simulator s = simulator(spec, p)) {
-            SimRun.run(p, s, 600, 0.01);
+            assertEquals(RunOutcome.Status.COMPLETED, SimRun.run(p, s, 600, 0.01, d -> { }).status());
             assertFalse(s.hasNaN(), file + " produced NaN");
             for (SimBody b : s.snapshot().bodies()) {
                 assertTrue(b.position().isFinite(), file + ": " + b);

@@ -54,6 +54,43 @@ class SimCommandLineTest {
     }
 
     @Test
+    void theSimulatorColumnsOfARowBelongToItsTime() throws Exception {
+        Path trace = dir.resolve("t.csv");
+        Result r = cli("run", "../examples/hello-snake.xml", "--sim", "--duration", "0.05", "--trace", trace.toString());
+        assertEquals(0, r.code(), r.err());
+        java.util.List<String> rows = Files.readAllLines(trace);
+        String[] header = rows.get(0).split(",");
+        String[] first = rows.get(1).split(",");
+        assertEquals("0.000000", first[0]);
+        int comZ = java.util.Arrays.asList(header).indexOf("com_z");
+        // At t = 0 the robot lies in its start pose, its centre of mass a module's half height above the ground.
+        assertTrue(Double.parseDouble(first[comZ]) > 0.01, "t=0 shows the simulator before it was placed: " + rows.get(1));
+    }
+
+    @Test
+    void aParslScriptChosenAsRobotConfigurationIsALocatedUsageError() {
+        Result r = cli("run", "../examples/hello-snake.xml", "--sim", "../examples/gait-table-12.xml", "--duration", "1");
+        assertEquals(2, r.code(), r.err());
+        assertTrue(r.err().contains("../examples/gait-table-12.xml:5:1: error: <program> is not a robot configuration but a PARSL script"),
+                r.err());
+        assertTrue(!r.err().contains("Exception"), r.err());
+    }
+
+    @Test
+    void scriptModulesTheRobotLacksAreAWarning() {
+        Result r = cli("run", "../examples/hello-snake.xml", "--sim", "../examples/configs/wheel6.xml", "--duration", "0.1");
+        assertEquals(0, r.code(), r.err());
+        assertTrue(r.err().contains("simulated robot ../examples/configs/wheel6.xml: warning: it has no module 6 of the script"), r.err());
+    }
+
+    @Test
+    void anEmptyPortIsAUsageErrorNotACrash() {
+        Result r = cli("run", "../examples/hello-snake.xml", "--port", "", "--duration", "1");
+        assertEquals(2, r.code(), r.err());
+        assertTrue(r.err().contains("hardware: error: no serial port chosen"), r.err());
+    }
+
+    @Test
     void aBadRobotSpecIsAUsageErrorWithALocatedMessage() {
         Result r = cli("run", "../examples/hello-snake.xml", "--sim", "snake:n=-3", "--duration", "1");
         assertEquals(2, r.code(), r.err());

@@ -13,6 +13,20 @@ public record SourcePos(String file, int line, int column) {
     /** A position for things that come from no file (command line, generated code). */
     public static final SourcePos NONE = new SourcePos("", 0, 0);
 
+    /**
+     * A place that is not in a file but names where a problem comes from: a device
+     * ({@code bus /dev/ttyUSB0}), a command-line option ({@code --param}), the simulator. It
+     * prints as its name alone.
+     */
+    public static SourcePos origin(String name) {
+        return new SourcePos(name, 0, 0);
+    }
+
+    /** Whether this is a place in a file (line ≥ 1), as opposed to {@link #NONE} or an {@link #origin}. */
+    public boolean located() {
+        return line > 0;
+    }
+
     /** The position {@code delta} columns to the right on the same line. */
     public SourcePos shift(int delta) {
         return new SourcePos(file, line, column + delta);
@@ -20,6 +34,9 @@ public record SourcePos(String file, int line, int column) {
 
     @Override
     public String toString() {
-        return file.isEmpty() && line == 0 ? "<no place>" : file + ":" + line + ":" + column;
+        if (line == 0) {
+            return file.isEmpty() ? "<no place>" : file;
+        }
+        return file + ":" + line + ":" + column;
     }
 }

@@ -18,8 +18,10 @@ import org.parpe.core.model.Program;
 
 /**
  * The PARSL scheduler (PARSL.md §7, §11, §13). Stepped one tick at a time by whoever owns the
- * clock; reads a {@link SensorSource} at the start of each tick and writes every
- * {@link JointSink} at its end. Confined to one thread, except for {@link #setControl},
+ * clock (normally a {@link Run}); reads a {@link SensorSource} at the start of each tick and at
+ * its end hands the setpoints first to every <em>plant</em> (simulator, hardware), then to every
+ * <em>observer</em> (trace, plots, recorders), so observers always see the plants' state of the
+ * same tick whatever the order of registration. Confined to one thread, except for {@link #setControl},
  * {@link #setControlWord} and {@link #requestStop}, which queue commands drained at the next
  * tick boundary. Ticks do not allocate once the run has started.
  */
@@ -36,7 +38,8 @@ public final class Engine implements Evaluator {
     private final SensorTable sensors;
     private final EvalContext ctx = new EvalContext();
     private final Inputs inputs;
-    private final List<JointSink> sinks = new ArrayList<>();
+    private final List<JointSink> plants = new ArrayList<>();
+    private final List<JointSink> observers = new ArrayList<>();
     private final EntryPlan[] plans;
     private final long mainCycles;
     private final Set<Long> warnedPairs = new HashSet<>();
@@ -68,9 +71,21 @@ public final class Engine implements Evaluator {
                 : main.entries().stream().map(e -> new EntryPlan(program, e, ids)).toArray(EntryPlan[]::new);
     }
 
-    /** Adds a sink; call before {@link #start()}. */
-    public void addSink(JointSink sink) {
-        sinks.add(sink);
+    /**
+     * Adds a plant: a sink that acts on the robot (simulator, serial bus). Plants receive each
+     * tick's setpoints before any observer; call before {@link #start()}.
+     */
+    public void addPlant(JointSink plant) {
+        plants.add(plant);
+    }
+
+    /**
+     * Adds an observer: a sink that only records (trace, plots). Observers receive each tick's
+     * setpoints after every plant has, so what they read of a plant belongs to the same tick;
+     * call before {@link #start()}.
+     */
+    public void addObserver(JointSink observer) {
+        observers.add(observer);
     }
 
     /** Sets where measured sensor readings come from (none: a plain headless run). */
@@ -113,27 +128,33 @@ public final class Engine implements Evaluator {
         return ended;
     }
 
-    /** Whether a stop was requested (checked by run loops). */
+    /** Whether a stop was requested: the one cancellation flag of a run, checked at every tick. */
     public boolean stopRequested() {
         return stopRequested;
     }
 
-    /** Asks the run loop to stop at the next tick boundary; safe from any thread. */
+    /** Asks the run to stop at the next tick boundary; safe from any thread. */
     public void requestStop() {
         stopRequested = true;
     }
 
-    /** Tells every sink that the run starts. */
+    /** Tells every plant, then every observer, that the run starts. */
     public void start() {
         RunInfo info = new RunInfo(program, ids.clone(), dt);
-        for (JointSink s : sinks) {
+        for (JointSink s : plants) {
+            s.start(info);
+        }
+        for (JointSink s : observers) {
             s.start(info);
         }
     }
 
-    /** Tells every sink that the run ended. */
+    /** Tells every plant, then every observer, that the run ended. */
     public void finish(RunOutcome outcome) {
-        for (JointSink s : sinks) {
+        for (JointSink s : plants) {
+            s.finish(outcome);
+        }
+        for (JointSink s : observers) {
             s.finish(outcome);
         }
     }
@@ -338,8 +359,11 @@ public final class Engine implements Evaluator {
 
     private void emit() {
         System.arraycopy(next, 0, commanded, 0, ids.length);
-        for (JointSink s : sinks) {
-            s.accept(tick, ctx.time, commanded);
+        for (int i = 0; i < plants.size(); i++) {
+            plants.get(i).accept(tick, ctx.time, commanded);
+        }
+        for (int i = 0; i < observers.size(); i++) {
+            observers.get(i).accept(tick, ctx.time, commanded);
         }
     }
 

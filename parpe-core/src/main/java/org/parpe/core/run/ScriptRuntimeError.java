@@ -1,5 +1,7 @@
 package org.parpe.core.run;
 
+import org.parpe.core.diag.Diagnostic;
+import org.parpe.core.diag.Severity;
 import org.parpe.core.diag.SourcePos;
 
 /**
@@ -10,12 +12,19 @@ import org.parpe.core.diag.SourcePos;
 public final class ScriptRuntimeError extends RuntimeException {
     private final SourcePos pos;
     private final double time;
+    private final String detail;
 
     /** An error at {@code pos} during the tick at {@code time}. */
     public ScriptRuntimeError(SourcePos pos, String message, double time) {
         super(pos + ": error: " + message + String.format(java.util.Locale.ROOT, " (at t=%.6f s)", time), null, false, false);
         this.pos = pos;
         this.time = time;
+        this.detail = message + String.format(java.util.Locale.ROOT, " (at t=%.6f s)", time);
+    }
+
+    /** The error as a located diagnostic (its {@code format()} is this exception's message). */
+    public Diagnostic diagnostic() {
+        return new Diagnostic(Severity.ERROR, pos, detail);
     }
 
     /** Where the failing expression or instance is. */

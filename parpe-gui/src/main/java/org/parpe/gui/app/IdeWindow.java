@@ -3,8 +3,6 @@ package org.parpe.gui.app;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.custom.CTabFolder;
 import org.eclipse.swt.custom.CTabItem;
@@ -35,8 +33,6 @@ import org.parpe.gui.view3d.View3D;
  * UI thread only (other threads use {@link #logLater}).
  */
 public final class IdeWindow {
-    private static final Pattern LOCATED = Pattern.compile("^(.*?):(\\d+):(\\d+): (error|warning): (.*)$", Pattern.DOTALL);
-
     private final Shell shell;
     private final Prefs prefs;
     private final ParslEditor editor;
@@ -233,7 +229,6 @@ public final class IdeWindow {
     void showValidation(LoadResult r) {
         validations++;
         loadProblems = r.diagnostics();
-        runProblems = List.of();
         showProblems();
         if (r.program() != null) {
             program = r.program();
@@ -267,16 +262,34 @@ public final class IdeWindow {
         }
     }
 
-    /** Shows a run-time error at its place (message {@code FILE:LINE:COL: error: ...}). */
-    void showRunError(String message) {
-        Matcher m = LOCATED.matcher(message);
-        if (m.matches()) {
-            SourcePos pos = new SourcePos(m.group(1), Integer.parseInt(m.group(2)), Integer.parseInt(m.group(3)));
-            Severity sev = m.group(4).equals("error") ? Severity.ERROR : Severity.WARNING;
-            runProblems = List.of(new Diagnostic(sev, pos, "run-time: " + m.group(5)));
-            showProblems();
-            bottom.setSelection(0);
+    /** Forgets the problems of the previous run (a new run starts). */
+    void clearRunProblems() {
+        runProblems = List.of();
+        showProblems();
+    }
+
+    /**
+     * Shows a problem reported by the run (a run-time error or warning of the script, a control
+     * value refused, a robot configuration or bus problem) in Problems and the log; any thread.
+     */
+    void runProblemLater(Diagnostic d) {
+        Display display = shell.getDisplay();
+        if (display.isDisposed()) {
+            return;
         }
+        display.asyncExec(() -> {
+            if (shell.isDisposed()) {
+                return;
+            }
+            List<Diagnostic> all = new ArrayList<>(runProblems);
+            all.add(d);
+            runProblems = List.copyOf(all);
+            showProblems();
+            log(d.format());
+            if (d.severity() == Severity.ERROR) {
+                bottom.setSelection(0);
+            }
+        });
     }
 
     /** Jumps the editor to {@code pos} (if it is in this file). */
@@ -373,6 +386,10 @@ public final class IdeWindow {
 
     String robotChoice() {
         return viewBar.robot();
+    }
+
+    ViewBar viewBar() {
+        return viewBar;
     }
 
     /** How many validation results have been shown (automation waits for the first). */

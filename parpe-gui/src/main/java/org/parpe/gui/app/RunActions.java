@@ -3,23 +3,26 @@ package org.parpe.gui.app;
 import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.HashSet;
-import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.function.Consumer;
 import org.eclipse.jface.window.Window;
+import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.DiagnosticList;
+import org.parpe.core.diag.Severity;
+import org.parpe.core.diag.SourcePos;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.model.Numbers;
 import org.parpe.core.model.Parameter;
 import org.parpe.core.model.Program;
 import org.parpe.core.run.Engine;
 import org.parpe.core.run.EngineStatus;
+import org.parpe.core.run.Run;
 import org.parpe.core.run.RunOptions;
 import org.parpe.core.run.RunOutcome;
-import org.parpe.core.run.SensorSource;
+import org.parpe.core.run.TargetException;
 import org.parpe.gui.editor.Validator;
 import org.parpe.gui.panels.ControlPanel;
 import org.parpe.gui.panels.ParametersDialog;
@@ -27,10 +30,10 @@ import org.parpe.gui.run.AngleRecorder;
 import org.parpe.gui.run.RunController;
 import org.parpe.gui.run.Target;
 import org.parpe.serial.bus.BusConfig;
-import org.parpe.serial.bus.Discovery;
+import org.parpe.serial.bus.BusTarget;
 import org.parpe.serial.bus.HardwareBus;
-import org.parpe.serial.link.LinkOpener;
 import org.parpe.sim.SimSnapshot;
+import org.parpe.sim.SimTarget;
 import org.parpe.sim.Simulator;
 import org.parpe.sim.config.RobotConfig;
 import org.parpe.sim.config.RobotConfigs;
@@ -138,74 +141,62 @@ final class RunActions implements ControlPanel.Target {
 
     private void start(Program program, double runFor, Consumer<RunOutcome> onEnd) {
         Target target = ide.toolbar().target();
-        String spec = RobotChoice.spec(ide.robotChoice(), program);
+        String spec = robotSpec(program);
         String port = ide.toolbar().port();
         AngleRecorder recorder = new AngleRecorder();
         ide.plots().setModules(program.moduleIds());
         ide.plots().setRecorder(recorder);
+        ide.clearRunProblems();
         ide.log("Run " + ide.files().name() + " on " + target.label().toLowerCase() + (target.sim() ? " (robot: " + spec + ")" : "")
                 + (target.hardware() ? " (port " + port + ")" : ""));
         controller.setSpeed(ide.toolbar().speed());
-        controller.start(resources -> build(program, target, spec, port, recorder, resources), runFor, outcome -> {
+        Run.Builder run = Run.builder(program, RunOptions.defaults(), ide::runProblemLater);
+        controller.start(run, b -> attach(b, target, spec, port, recorder), runFor, outcome -> {
             ended(outcome);
             report(onEnd, outcome);
-        });
+        }, ide::logLater);
         ide.controls().pushAll();
         ide.runStateChanged();
     }
 
-    /** Builds the engine on the engine thread; opening the bus and the simulator may take time. */
-    private Engine build(Program program, Target target, String spec, String port, AngleRecorder recorder,
-                         List<AutoCloseable> resources) throws Exception {
-        Engine engine = new Engine(program, RunOptions.defaults());
-        engine.setWarningSink(d -> ide.logLater(d.format()));
-        SensorSource source = null;
+    /** The robot to simulate: the picker's choice, or the one that fits the script for "auto". */
+    private String robotSpec(Program program) {
+        String choice = ide.robotChoice();
+        return SimTarget.AUTO.equals(choice) ? SimTarget.autoSpec(program) : choice;
+    }
+
+    /**
+     * Attaches the run's targets on the engine thread, as the command line does (opening the
+     * bus and building the simulated robot take time), and the plots' recorder.
+     */
+    private void attach(Run.Builder run, Target target, String spec, String port, AngleRecorder recorder)
+            throws TargetException {
         if (target.hardware()) {
-            HardwareBus b = openBus(port, program, resources);
-            engine.addSink(b);
-            source = b;
+            hardwareState = "Hardware: connecting to " + port + "\u2026";
+            BusTarget hw = new BusTarget(port, BusConfig.defaults(), ide::logLater);
+            try {
+                run.attach(hw);
+            } finally {
+                hardwareState = hw.bus() == null ? "Hardware: not connected" : "Hardware: " + hw.bus().name();
+            }
+            bus = hw.bus();
+            run.closeAtEnd(() -> {
+                bus = null;
+                hardwareState = "Hardware: disconnected";
+            });
         }
         if (target.sim()) {
-            DiagnosticList diags = new DiagnosticList();
-            RobotConfig config = RobotConfigs.resolve(spec, program.moduleIds(), diags);
-            if (config == null) {
-                throw new IllegalArgumentException("cannot build the simulated robot '" + spec + "': "
-                        + diags.all().stream().map(d -> d.message()).findFirst().orElse("unknown problem"));
-            }
-            Simulator s = new Simulator(config);
-            resources.add(s);
-            resources.add(() -> {
+            SimTarget st = new SimTarget(spec);
+            run.attach(st);
+            Simulator s = st.simulator();
+            sim = s;
+            run.closeAtEnd(() -> {
                 preview = s.snapshot();
                 sim = null;
             });
-            sim = s;
-            engine.addSink(s);
-            source = source == null ? s : source;
         }
-        engine.addSink(recorder);
-        engine.setSensorSource(recorder.wrap(source));
-        return engine;
-    }
-
-    private HardwareBus openBus(String port, Program program, List<AutoCloseable> resources) throws Exception {
-        if (port == null || port.isBlank()) {
-            throw new IllegalArgumentException("choose a serial port for the hardware (tool bar) first");
-        }
-        hardwareState = "Hardware: connecting to " + port + "\u2026";
-        HardwareBus b = HardwareBus.open(LinkOpener.serial(port, BusConfig.DEFAULT_BAUD), BusConfig.defaults(),
-                ide::logLater);
-        resources.add(() -> {
-            bus = null;
-            hardwareState = "Hardware: disconnected";
-            b.close();
-        });
-        Discovery d = b.discover(program.moduleIds());
-        bus = b;
-        hardwareState = "Hardware: " + b.name() + ", " + d.found().size() + " of " + program.moduleIds().length + " modules";
-        if (!d.missing().isEmpty()) {
-            ide.logLater("hardware: modules not answering: " + d.missing());
-        }
-        return b;
+        run.observer(recorder);
+        run.observeReadings(recorder::keepMeasured);
     }
 
     private void ended(RunOutcome outcome) {
@@ -223,7 +214,6 @@ final class RunActions implements ControlPanel.Target {
             case ERROR -> {
                 ide.log("Run failed: " + outcome.message());
                 ide.status().setMessage("Run failed: " + outcome.message());
-                ide.showRunError(outcome.message());
             }
         }
         ide.runStateChanged();
@@ -284,12 +274,31 @@ final class RunActions implements ControlPanel.Target {
 
     @Override
     public void setControl(String name, double value) {
-        controller.setControl(name, value);
+        control(name, e -> e.setControl(name, value));
     }
 
     @Override
     public void setControlWord(String name, String word) {
-        controller.setControlWord(name, word);
+        control(name, e -> e.setControlWord(name, word));
+    }
+
+    /**
+     * Applies a control change to the running engine (at its next tick); a refused value becomes
+     * a problem located at the control's definition.
+     */
+    private void control(String name, Consumer<Engine> change) {
+        Engine e = controller.engine();
+        if (e == null || !controller.running()) {
+            return;
+        }
+        try {
+            change.accept(e);
+        } catch (IllegalArgumentException ex) {
+            Program p = e.program();
+            SourcePos where = p.controls().stream().filter(c -> c.name().equals(name)).map(c -> c.pos())
+                    .findFirst().orElse(SourcePos.origin("control " + name));
+            ide.runProblemLater(new Diagnostic(Severity.ERROR, where, ex.getMessage()));
+        }
     }
 
     /** Shows {@code program}'s robot in its starting pose when idle (built off the UI thread). */
@@ -297,7 +306,7 @@ final class RunActions implements ControlPanel.Target {
         if (program == null || controller.running()) {
             return;
         }
-        String spec = RobotChoice.spec(ide.robotChoice(), program);
+        String spec = robotSpec(program);
         int[] ids = program.moduleIds();
         String key = spec + java.util.Arrays.toString(ids);
         if (key.equals(previewKey)) {

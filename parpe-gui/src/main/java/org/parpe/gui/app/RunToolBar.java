@@ -152,6 +152,11 @@ final class RunToolBar {
         return port.getText().trim();
     }
 
+    /** Types a serial port into the port box (automation, tests). */
+    void setPort(String p) {
+        port.setText(p);
+    }
+
     /** Enables the buttons that make sense now. */
     void update(boolean running, boolean paused) {
         run.setEnabled(!running || paused);

@@ -9,6 +9,7 @@ import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.FileDialog;
 import org.eclipse.swt.widgets.Label;
 import org.parpe.gui.view3d.View3D;
+import org.parpe.sim.SimTarget;
 import org.parpe.sim.config.RobotConfigs;
 
 /**
@@ -23,10 +24,12 @@ final class ViewBar {
     private final Button track;
     private final Button ids;
     private final Button reset;
+    private final Prefs prefs;
     private String file;
 
     ViewBar(Composite parent, IdeWindow ide, Prefs prefs) {
         this.ide = ide;
+        this.prefs = prefs;
         Composite bar = new Composite(parent, SWT.NONE);
         bar.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         GridLayout gl = new GridLayout(5, false);
@@ -34,18 +37,18 @@ final class ViewBar {
         bar.setLayout(gl);
         new Label(bar, SWT.NONE).setText("Robot:");
         robot = new Combo(bar, SWT.READ_ONLY);
-        robot.add(RobotChoice.AUTO + " (from the script)");
+        robot.add(SimTarget.AUTO + " (from the script)");
         RobotConfigs.generatorNames().forEach(robot::add);
         file = prefs.get("view.robotFile", null);
         if (file != null) {
             robot.add(file);
         }
         robot.add(BROWSE);
-        String saved = prefs.get("view.robot", RobotChoice.AUTO);
+        String saved = prefs.get("view.robot", SimTarget.AUTO);
         int at = robot.indexOf(saved);
         robot.select(at >= 0 ? at : 0);
         robot.setToolTipText("The simulated robot; 'auto' picks a standard robot that fits the script");
-        robot.addListener(SWT.Selection, e -> chosen(prefs));
+        robot.addListener(SWT.Selection, e -> chosen());
         track = new Button(bar, SWT.CHECK);
         track.setText("TrackRobot");
         track.setSelection(Boolean.parseBoolean(prefs.get("view.track", "true")));
@@ -72,7 +75,7 @@ final class ViewBar {
         });
     }
 
-    private void chosen(Prefs prefs) {
+    private void chosen() {
         if (BROWSE.equals(robot.getText())) {
             FileDialog d = new FileDialog(robot.getShell(), SWT.OPEN);
             d.setFilterExtensions(new String[] {"*.xml", "*"});
@@ -82,13 +85,7 @@ final class ViewBar {
                 robot.select(0);
                 return;
             }
-            if (file != null) {
-                robot.remove(file);
-            }
-            file = p;
-            robot.add(p, robot.getItemCount() - 1);
-            robot.select(robot.indexOf(p));
-            prefs.put("view.robotFile", p);
+            useFile(p);
         }
         prefs.put("view.robot", robot());
         ide.runs().invalidatePreview();
@@ -101,7 +98,18 @@ final class ViewBar {
     /** {@code auto}, a generator name, or a configuration file path. */
     String robot() {
         String t = robot.getText();
-        return t.startsWith(RobotChoice.AUTO) ? RobotChoice.AUTO : t;
+        return t.startsWith(SimTarget.AUTO) ? SimTarget.AUTO : t;
+    }
+
+    /** Adds the configuration file {@code path} to the choices (replacing the previous file) and selects it. */
+    void useFile(String path) {
+        if (file != null) {
+            robot.remove(file);
+        }
+        file = path;
+        robot.add(path, robot.getItemCount() - 1);
+        robot.select(robot.indexOf(path));
+        prefs.put("view.robotFile", path);
     }
 
     /** Selects a robot by generator name (automation, tests). */

@@ -4,12 +4,11 @@ import java.util.Arrays;
 import org.parpe.core.run.Channel;
 import org.parpe.core.run.JointSink;
 import org.parpe.core.run.RunInfo;
-import org.parpe.core.run.SensorSource;
 import org.parpe.core.run.SensorTable;
 
 /**
- * Records commanded and measured joint angles of every module for the live plots: a sink for
- * the commanded angles and a wrapper around the run's sensor source for the measured ones.
+ * Records commanded and measured joint angles of every module for the live plots: an observer of
+ * the commanded angles and of the readings for the measured ones.
  * Written on the engine thread (no allocation once started), read on the UI thread; a ring
  * of {@value #CAPACITY} samples taken at most every {@value #INTERVAL} s of simulated time.
  */
@@ -38,15 +37,8 @@ public final class AngleRecorder implements JointSink {
         lastTime = Double.NEGATIVE_INFINITY;
     }
 
-    /** A sensor source that reads {@code source} and keeps its angle readings for the plots. */
-    public SensorSource wrap(SensorSource source) {
-        return (time, table) -> {
-            source.read(time, table);
-            copyAngles(table);
-        };
-    }
-
-    private void copyAngles(SensorTable table) {
+    /** Keeps the angle readings the scheduler uses this tick, for the plots (an observer of the readings). */
+    public void keepMeasured(double time, SensorTable table) {
         int n = Math.min(latestMeasured.length, table.moduleCount());
         for (int i = 0; i < n; i++) {
             latestMeasured[i] = table.get(i, Channel.ANGLE);

@@ -1,76 +1,73 @@
 package org.parpe.gui.run;
 
-import java.util.ArrayList;
-import java.util.List;
-import java.util.concurrent.ConcurrentLinkedQueue;
-import java.util.concurrent.locks.LockSupport;
 import java.util.function.Consumer;
 import org.eclipse.swt.widgets.Display;
 import org.parpe.core.run.Engine;
 import org.parpe.core.run.EngineStatus;
+import org.parpe.core.run.JointSink;
+import org.parpe.core.run.Run;
 import org.parpe.core.run.RunOutcome;
-import org.parpe.core.run.ScriptRuntimeError;
+import org.parpe.core.run.TargetException;
+import org.parpe.core.run.WallClockPacer;
 
 /**
- * Runs an {@link Engine} on its own thread. The UI talks to it only through a command queue
- * drained at tick boundaries (control changes) and volatile flags (stop, pause, speed); the
- * engine thread publishes an immutable {@link EngineStatus} that the UI reads on its own timer.
- * The end of a run is reported with {@code Display.asyncExec}, never {@code syncExec}.
+ * Runs a {@link Run} on its own thread. The run is assembled by the core's {@link Run.Builder},
+ * as on the command line; this class only owns the thread, the pacing (speed and pause, a
+ * {@link WallClockPacer}) and the published status. Its one stop flag is the engine's. The UI
+ * talks to the engine through thread-safe calls applied at tick boundaries (controls, stop);
+ * the engine thread publishes an immutable {@link EngineStatus} that the UI reads on its own
+ * timer. The end of a run is reported with {@code Display.asyncExec}, never {@code syncExec}.
  */
 public final class RunController {
     private static final long STATUS_EVERY_NS = 20_000_000L;
-    private static final double MAX_LAG_S = 0.25;
 
     private final Display display;
-    private final ConcurrentLinkedQueue<Consumer<Engine>> commands = new ConcurrentLinkedQueue<>();
-    private volatile boolean stop;
-    private volatile boolean paused;
+    private final WallClockPacer pacer = new WallClockPacer(Speed.REAL_TIME.factor());
     private volatile Speed speed = Speed.REAL_TIME;
     private volatile EngineStatus status;
     private volatile Thread thread;
-    private volatile String lastError = "";
+    private volatile Engine engine;
+    private volatile boolean hardwarePaced;
 
     public RunController(Display display) {
         this.display = display;
     }
 
-    /** Whether a run is going on. */
+    /** Whether a run is going on (being assembled or ticking). */
     public boolean running() {
         Thread t = thread;
         return t != null && t.isAlive();
     }
 
-    /** Builds the engine of a run on the engine thread (opening the simulator and the bus takes time). */
+    /** Attaches the run's targets on the engine thread (opening the simulator and the bus takes time). */
     @FunctionalInterface
     public interface Setup {
         /**
-         * Returns the engine with its sinks and source attached; adds what must be closed after
-         * the run to {@code resources}.
+         * Attaches targets and observers to {@code run}.
          *
-         * @throws Exception with a message for the user when something cannot be opened
+         * @throws TargetException when a target cannot be used; its diagnostics say why
          */
-        Engine build(List<AutoCloseable> resources) throws Exception;
+        void attach(Run.Builder run) throws TargetException;
     }
 
     /**
-     * Builds and runs an engine on a new thread.
+     * Assembles and runs {@code run} on a new thread.
      *
-     * @param runFor stop after this much simulated time (negative: when the program ends)
-     * @param onEnd  runs on the UI thread with the outcome
+     * @param setup   attaches the targets, on the engine thread
+     * @param runFor  stop after this much simulated time (negative: when the program ends)
+     * @param onEnd   runs on the UI thread with the outcome
+     * @param onCrash told (on the engine thread) about a failure of PARPE itself, with the crash file
      */
-    public synchronized void start(Setup setup, double runFor, Consumer<RunOutcome> onEnd) {
+    public synchronized void start(Run.Builder run, Setup setup, double runFor, Consumer<RunOutcome> onEnd,
+                                   Consumer<String> onCrash) {
         if (running()) {
             throw new IllegalStateException("a run is already going on");
         }
-        commands.clear();
-        stop = false;
-        paused = false;
         status = null;
-        lastError = "";
+        engine = run.engine();
+        pacer.setPaused(false);
         Thread t = new Thread(() -> {
-            List<AutoCloseable> resources = new ArrayList<>();
-            RunOutcome outcome = prepareAndRun(setup, runFor, resources);
-            close(resources);
+            RunOutcome outcome = assembleAndRun(run, setup, runFor, onCrash);
             try {
                 if (!display.isDisposed()) {
                     display.asyncExec(() -> onEnd.accept(outcome));
@@ -84,83 +81,41 @@ public final class RunController {
         t.start();
     }
 
-    private RunOutcome prepareAndRun(Setup setup, double runFor, List<AutoCloseable> resources) {
+    private RunOutcome assembleAndRun(Run.Builder builder, Setup setup, double runFor, Consumer<String> onCrash) {
+        Engine e = builder.engine();
         try {
-            Engine engine = setup.build(resources);
-            return stop ? new RunOutcome(RunOutcome.Status.STOPPED, 0, "") : loop(engine, runFor);
-        } catch (RuntimeException | LinkageError e) {
-            lastError = "internal error while preparing the run (" + e + "); details for a bug report in "
-                    + CrashLog.write("preparing the run", e);
-        } catch (Exception e) {
-            lastError = e.getMessage() == null ? e.toString() : e.getMessage();
+            setup.attach(builder);
+        } catch (TargetException ex) {
+            builder.abandon();
+            ex.diagnostics().forEach(builder.diagnostics()::report);
+            return new RunOutcome(RunOutcome.Status.ERROR, 0, ex.getMessage());
+        } catch (RuntimeException | LinkageError ex) {
+            builder.abandon();
+            return crashed(e, "preparing the run", ex, onCrash);
         }
-        return new RunOutcome(RunOutcome.Status.ERROR, 0, lastError);
+        if (runFor >= 0) {
+            builder.duration(runFor);
+        }
+        // Hardware cannot go faster than the wall clock: the faster speeds pace it at real time.
+        hardwarePaced = builder.realtimeRequired();
+        applySpeed();
+        builder.pacer(pacer);
+        builder.observer(new StatusPublisher(e));
+        Run run = builder.build();
+        try {
+            RunOutcome outcome = run.execute();
+            status = safeStatus(e);
+            return outcome;
+        } catch (RuntimeException | LinkageError ex) {
+            return crashed(e, "the run", ex, onCrash);
+        }
     }
 
-    private RunOutcome loop(Engine engine, double runFor) {
-        RunOutcome outcome;
-        try {
-            engine.start();
-            outcome = ticks(engine, runFor);
-        } catch (ScriptRuntimeError e) {
-            outcome = new RunOutcome(RunOutcome.Status.ERROR, engine.time(), e.getMessage());
-        } catch (RuntimeException | LinkageError e) {
-            String file = CrashLog.write("engine thread", e);
-            outcome = new RunOutcome(RunOutcome.Status.ERROR, engine.time(),
-                    "internal error during the run (" + e + "); details for a bug report in " + file);
-        }
-        lastError = outcome.message();
-        try {
-            engine.finish(outcome);
-        } catch (RuntimeException e) {
-            CrashLog.write("finishing the run", e);
-        }
-        status = safeStatus(engine);
-        return outcome;
-    }
-
-    private RunOutcome ticks(Engine engine, double runFor) {
-        long wall0 = System.nanoTime();
-        double sim0 = 0;
-        long lastStatus = 0;
-        Speed pacedAt = speed;
-        while (true) {
-            for (Consumer<Engine> c; (c = commands.poll()) != null;) {
-                c.accept(engine);
-            }
-            if (stop) {
-                return new RunOutcome(RunOutcome.Status.STOPPED, engine.time(), "");
-            }
-            if (paused || speed != pacedAt) {
-                if (paused) {
-                    LockSupport.parkNanos(20_000_000L);
-                }
-                pacedAt = speed;
-                wall0 = System.nanoTime();
-                sim0 = Math.max(0, engine.time());
-                continue;
-            }
-            boolean more = engine.step();
-            long now = System.nanoTime();
-            if (now - lastStatus > STATUS_EVERY_NS || !more) {
-                status = engine.status();
-                lastStatus = now;
-            }
-            if (!more || runFor >= 0 && engine.time() >= runFor - 1e-9) {
-                return new RunOutcome(RunOutcome.Status.COMPLETED, engine.time(), "");
-            }
-            double factor = pacedAt.factor();
-            if (Double.isFinite(factor)) {
-                double ahead = (engine.time() - sim0) / factor - (now - wall0) / 1e9;
-                if (ahead > 0) {
-                    LockSupport.parkNanos((long) (ahead * 1e9));
-                } else if (ahead < -MAX_LAG_S) {
-                    // The plant cannot keep up: carry on from here rather than racing to catch up.
-                    wall0 = now;
-                    sim0 = engine.time();
-                }
-            }
-        }
+    private RunOutcome crashed(Engine e, String during, Throwable ex, Consumer<String> onCrash) {
+        String file = CrashLog.write(during, ex);
+        String message = "internal error during " + during + " (" + ex + "); details for a bug report in " + file;
+        onCrash.accept(message);
+        return new RunOutcome(RunOutcome.Status.ERROR, e.time(), message);
     }
 
     private static EngineStatus safeStatus(Engine engine) {
@@ -171,59 +126,55 @@ public final class RunController {
         }
     }
 
-    private static void close(List<AutoCloseable> resources) {
-        for (int i = resources.size() - 1; i >= 0; i--) {
-            try {
-                resources.get(i).close();
-            } catch (Exception e) {
-                CrashLog.write("closing " + resources.get(i), e);
+    /** Publishes the engine's status for the UI at most every 20 ms of wall-clock time. */
+    private final class StatusPublisher implements JointSink {
+        private final Engine e;
+        private long last;
+
+        StatusPublisher(Engine e) {
+            this.e = e;
+        }
+
+        @Override
+        public void accept(long tick, double time, double[] commanded) {
+            long now = System.nanoTime();
+            if (now - last > STATUS_EVERY_NS) {
+                status = e.status();
+                last = now;
             }
+        }
+
+        @Override
+        public void finish(RunOutcome outcome) {
+            status = e.status();
         }
     }
 
-    /** Queues a slider or text control change for the next tick boundary. */
-    public void setControl(String name, double value) {
-        commands.add(e -> {
-            try {
-                e.setControl(name, value);
-            } catch (IllegalArgumentException ex) {
-                lastError = ex.getMessage();
-            }
-        });
-    }
-
-    /** Queues a radio control change for the next tick boundary. */
-    public void setControlWord(String name, String word) {
-        commands.add(e -> {
-            try {
-                e.setControlWord(name, word);
-            } catch (IllegalArgumentException ex) {
-                lastError = ex.getMessage();
-            }
-        });
-    }
-
-    /** Asks the run to stop at the next tick boundary (the Stop button only sets this flag). */
+    /** Asks the run to stop at the next tick boundary (the Stop button only sets the engine's flag). */
     public void stop() {
-        stop = true;
-        Thread t = thread;
-        if (t != null) {
-            LockSupport.unpark(t);
+        Engine e = engine;
+        if (e != null) {
+            e.requestStop();
         }
     }
 
     /** Pauses or resumes the run. */
     public void setPaused(boolean p) {
-        paused = p;
+        pacer.setPaused(p);
     }
 
     public boolean paused() {
-        return paused;
+        return pacer.paused();
     }
 
     /** Changes the pace (takes effect at the next tick). */
     public void setSpeed(Speed s) {
         speed = s;
+        applySpeed();
+    }
+
+    private void applySpeed() {
+        pacer.setFactor(hardwarePaced ? Math.min(1, speed.factor()) : speed.factor());
     }
 
     public Speed speed() {
@@ -235,9 +186,9 @@ public final class RunController {
         return status;
     }
 
-    /** The message of the last failed control change or run error, or empty. */
-    public String lastError() {
-        return lastError;
+    /** The engine of the current or last run (null before the first run). */
+    public Engine engine() {
+        return engine;
     }
 
     /** Waits up to {@code millis} for the engine thread to end (tests, shutdown). */

@@ -5,7 +5,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
-import java.util.function.Consumer;
 import org.parpe.core.run.JointSink;
 import org.parpe.core.run.RunInfo;
 import org.parpe.core.run.RunOutcome;
@@ -36,7 +35,7 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
 
     private final LinkOpener opener;
     private final BusConfig config;
-    private final Consumer<String> report;
+    private final BusReport report;
     private final Reply reply = new Reply();
     private volatile BusMaster master;
     private RunBuffers buffers;
@@ -62,7 +61,7 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
     private long watchdogResumes;
     private int moduleRxErrors;
 
-    private HardwareBus(LinkOpener opener, BusMaster master, BusConfig config, Consumer<String> report) {
+    private HardwareBus(LinkOpener opener, BusMaster master, BusConfig config, BusReport report) {
         this.opener = opener;
         this.master = master;
         this.config = config;
@@ -75,7 +74,7 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
      *
      * @throws IOException with a user message when the device cannot be opened
      */
-    public static HardwareBus open(LinkOpener opener, BusConfig config, Consumer<String> report) throws IOException {
+    public static HardwareBus open(LinkOpener opener, BusConfig config, BusReport report) throws IOException {
         return new HardwareBus(opener, new BusMaster(opener.open(), config), config, report);
     }
 
@@ -140,7 +139,7 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
 
     @Override
     public void accept(long tick, double time, double[] commanded) {
-        buffers.accept(tick, commanded, report);
+        buffers.accept(tick, commanded, report::problem);
     }
 
     @Override
@@ -172,10 +171,10 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
                     m.sendHold(Protocol.BROADCAST, true);
                 }
             } catch (IOException e) {
-                report.accept("bus: could not send the final hold: " + e.getMessage());
+                report.problem("bus: could not send the final hold: " + e.getMessage());
             }
         }
-        report.accept(summary());
+        report.note(summary());
     }
 
     /**
@@ -193,10 +192,10 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
                 m.sendEmergencyStop(config.safeMode());
             }
             m.drain(100);
-            report.accept("bus: emergency stop sent; modules " + config.safeMode().name().toLowerCase()
+            report.note("bus: emergency stop sent; modules " + config.safeMode().name().toLowerCase()
                     + " until the next run");
         } catch (IOException e) {
-            report.accept("bus: emergency stop could not be sent (" + e.getMessage()
+            report.problem("bus: emergency stop could not be sent (" + e.getMessage()
                     + "); modules stop on their watchdog within " + config.watchdogMs() + " ms");
         }
     }
@@ -318,7 +317,7 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
             moduleRxErrors = Math.max(moduleRxErrors, reply.rxErrors);
             if ((reply.flags & Protocol.FLAG_WATCHDOG) != 0) {
                 watchdogResumes++;
-                report.accept("bus: module " + id + " had stopped on its watchdog (a gap of more than "
+                report.problem("bus: module " + id + " had stopped on its watchdog (a gap of more than "
                         + config.watchdogMs() + " ms in the bus traffic); resuming it");
                 master.send(id, Protocol.RESUME);
             }
@@ -329,7 +328,7 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
             }
             readFailures++;
             backoff[readCursor] = BACKOFF_CYCLES;
-            report.accept("bus: module " + id + " did not answer " + (config.retries() + 1)
+            report.problem("bus: module " + id + " did not answer " + (config.retries() + 1)
                     + " reads; reading it less often");
         }
         readAttempt = 0;
@@ -352,7 +351,7 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
                     buffers.store(probeCursor, reply, false);
                     buffers.driven[probeCursor] = true;
                     master.send(id, Protocol.RESUME);
-                    report.accept("bus: module " + id + " answers now; driving it");
+                    report.note("bus: module " + id + " answers now; driving it");
                 }
                 return;
             }
@@ -363,7 +362,7 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
         state = State.SILENT;
         silentSince = System.nanoTime();
         disconnects++;
-        report.accept(String.format(java.util.Locale.ROOT, "bus: no reply from any module on %s for %d ms; "
+        report.problem(String.format(java.util.Locale.ROOT, "bus: no reply from any module on %s for %d ms; "
                 + "modules stop on their watchdog (%s) within %d ms; waiting for them to come back",
                 master.name(), config.deadAfterMs(), config.safeMode().name().toLowerCase(), config.watchdogMs()));
     }
@@ -373,7 +372,7 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
         silentSince = System.nanoTime();
         disconnects++;
         master.close();
-        report.accept("bus: " + e.getMessage() + "; modules stop on their watchdog ("
+        report.problem("bus: " + e.getMessage() + "; modules stop on their watchdog ("
                 + config.safeMode().name().toLowerCase() + ") within " + config.watchdogMs()
                 + " ms; waiting for the device to return");
     }
@@ -408,7 +407,7 @@ public final class HardwareBus implements JointSink, SensorSource, AutoCloseable
         readAttempt = 0;
         consecutiveTimeouts = 0;
         state = State.CONNECTED;
-        report.accept(String.format(java.util.Locale.ROOT, "bus: modules back on %s after %.2f s (%d of %d answer%s); "
+        report.note(String.format(java.util.Locale.ROOT, "bus: modules back on %s after %.2f s (%d of %d answer%s); "
                 + "resuming", master.name(), (System.nanoTime() - silentSince) / 1e9, d.found().size(),
                 buffers.ids.length, d.missing().isEmpty() ? "" : ", missing " + d.missing()));
     }

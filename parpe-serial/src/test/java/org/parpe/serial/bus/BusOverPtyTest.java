@@ -91,10 +91,10 @@ class BusOverPtyTest {
     }
 
     Discovery startBus(int[] ids) throws Exception {
-        bus = HardwareBus.open(LinkOpener.serial(pty.a().toString(), 115200), BusConfig.defaults(), m -> {
+        bus = HardwareBus.open(LinkOpener.serial(pty.a().toString(), 115200), BusConfig.defaults(), BusReport.lines(m -> {
             reportTimes.add(System.nanoTime());
             reports.add(m);
-        });
+        }));
         Discovery d = bus.discover(ids);
         bus.start(new RunInfo(null, ids, 0.01));
         return d;
@@ -253,7 +253,7 @@ class BusOverPtyTest {
     void emergencyStopLatchesTheSafeModeUntilTheNextRun() throws Exception {
         startEmulator(EmulatorOptions.of(IDS));
         bus = HardwareBus.open(LinkOpener.serial(pty.a().toString(), 115200),
-                BusConfig.defaults().withSafeMode(SafeMode.LIMP), reports::add);
+                BusConfig.defaults().withSafeMode(SafeMode.LIMP), BusReport.lines(reports::add));
         bus.discover(IDS);
         bus.start(new RunInfo(null, IDS, 0.01));
         drive(40, 8);
@@ -274,7 +274,7 @@ class BusOverPtyTest {
             assertTrue(emulator.isLimp(id), "the final HOLD is not sent after an emergency stop: module " + id);
         }
         bus.close();
-        bus = HardwareBus.open(LinkOpener.serial(pty.a().toString(), 115200), BusConfig.defaults(), reports::add);
+        bus = HardwareBus.open(LinkOpener.serial(pty.a().toString(), 115200), BusConfig.defaults(), BusReport.lines(reports::add));
         bus.discover(IDS);
         bus.start(new RunInfo(null, IDS, 0.01));
         drive(20, 8);

@@ -5,6 +5,7 @@ import com.fasterxml.jackson.core.JsonParser;
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.core.JsonToken;
 import com.fasterxml.jackson.dataformat.xml.XmlFactory;
+import com.fasterxml.jackson.dataformat.xml.deser.FromXmlParser;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.file.Files;
@@ -67,6 +68,13 @@ final class ConfigReader {
     private void document(JsonParser p) throws IOException {
         if (p.nextToken() != JsonToken.START_OBJECT) {
             error(new SourcePos(file, 1, 1), "expected a <robot-config> element with <part> and <connect> elements");
+            return;
+        }
+        String rootName = p instanceof FromXmlParser x ? x.getStaxReader().getLocalName() : "robot-config";
+        if (!"robot-config".equals(rootName)) {
+            error(pos(p.currentTokenLocation()), "<" + rootName + "> is not a robot configuration"
+                    + ("program".equals(rootName) ? " but a PARSL script" : "")
+                    + "; expected a <robot-config> element with <part> and <connect> elements, or a generator such as snake");
             return;
         }
         while (p.nextToken() == JsonToken.FIELD_NAME) {

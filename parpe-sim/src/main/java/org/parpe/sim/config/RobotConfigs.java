@@ -92,8 +92,8 @@ public final class RobotConfigs {
             }
         }
         if (missing > 0) {
-            diags.warning(new SourcePos("--sim " + config.name(), 1, 1), "the simulated robot has no module "
-                    + list + " (it has " + have.length + " modules); commands to them are ignored");
+            diags.warning(SourcePos.origin("simulated robot " + config.name()), "it has no module " + list
+                    + " of the script (it has " + have.length + " modules); commands to them are ignored");
         }
         return missing;
     }

@@ -1,0 +1,122 @@
+package org.parpe.sim;
+
+import java.nio.file.Path;
+import java.util.Locale;
+import org.parpe.core.diag.Diagnostic;
+import org.parpe.core.diag.DiagnosticList;
+import org.parpe.core.diag.DiagnosticSink;
+import org.parpe.core.model.Group;
+import org.parpe.core.model.Program;
+import org.parpe.core.run.Run;
+import org.parpe.core.run.RunTarget;
+import org.parpe.core.run.TargetException;
+import org.parpe.sim.config.RobotConfig;
+import org.parpe.sim.config.RobotConfigs;
+
+/**
+ * The physics simulator as a run target: builds the robot named by a specification
+ * ({@code GENERATOR[:key=value,...]} or a configuration file), warns about script modules the
+ * robot lacks, and adds the simulator as a plant, a sensor source (priority {@value #PRIORITY},
+ * below hardware) and trace columns {@code a<ID>}, {@code com_*}. Used by the command line's
+ * {@code --sim} and the IDE's Simulator target alike.
+ */
+public final class SimTarget implements RunTarget {
+    /** Priority of the simulator as a sensor source (hardware has 10). */
+    public static final int PRIORITY = 5;
+    /** The choice that guesses the robot from the script ({@link #autoSpec}). */
+    public static final String AUTO = "auto";
+
+    private final String spec;
+    private Simulator simulator;
+
+    /** The simulator for {@code spec}; {@value #AUTO} guesses from the script when attached. */
+    public SimTarget(String spec) {
+        this.spec = spec;
+    }
+
+    @Override
+    public void attach(Run.Builder run) throws TargetException {
+        Program program = run.program();
+        String resolved = AUTO.equals(spec) ? autoSpec(program) : spec;
+        Simulator s = create(resolved, program.moduleIds(), run.diagnostics());
+        run.closeAtEnd(s);
+        run.plant(s);
+        run.sensorSource("sim", s, PRIORITY);
+        run.traceColumns(s.traceColumns());
+        simulator = s;
+    }
+
+    /** The simulator attached last (null before {@link #attach}). */
+    public Simulator simulator() {
+        return simulator;
+    }
+
+    /**
+     * Builds the simulator for {@code spec} and the script's {@code moduleIds}. Warnings (modules
+     * the robot lacks) go to {@code diags}; a specification or configuration file with errors
+     * throws, carrying the located errors.
+     */
+    public static Simulator create(String spec, int[] moduleIds, DiagnosticSink diags) throws TargetException {
+        DiagnosticList found = new DiagnosticList();
+        RobotConfig config = RobotConfigs.resolve(spec, moduleIds, found);
+        if (config != null) {
+            RobotConfigs.checkModules(config, moduleIds, found);
+        }
+        if (config == null) {
+            long n = found.errorCount();
+            throw new TargetException("cannot build the simulated robot '" + spec + "' (" + n + " error"
+                    + (n == 1 ? "" : "s") + ")", found.all());
+        }
+        for (Diagnostic d : found.all()) {
+            diags.report(d);
+        }
+        return new Simulator(config);
+    }
+
+    /**
+     * The standard robot that fits {@code program}: guessed from the file name and the group
+     * names (wheel, loop, centipede, humanoid), kept only if it has every module of the script
+     * and the script uses at least three quarters of its modules; otherwise a snake of the
+     * script's modules.
+     */
+    public static String autoSpec(Program program) {
+        String guess = guess(program);
+        if (guess.equals("snake")) {
+            return guess;
+        }
+        int[] ids = program.moduleIds();
+        DiagnosticList diags = new DiagnosticList();
+        RobotConfig config = RobotConfigs.resolve(guess, ids, diags);
+        if (config == null || RobotConfigs.checkModules(config, ids, diags) > 0
+                || 4L * ids.length < 3L * config.moduleIds().length) {
+            return "snake";
+        }
+        return guess;
+    }
+
+    private static String guess(Program program) {
+        String file = Path.of(program.file()).getFileName().toString().toLowerCase(Locale.ROOT);
+        for (String g : new String[] {"centipede", "wheel", "loop", "humanoid", "snake"}) {
+            if (file.contains(g)) {
+                return g;
+            }
+        }
+        boolean left = false;
+        boolean right = false;
+        for (Group g : program.robot().groups()) {
+            String n = g.name().toLowerCase(Locale.ROOT);
+            if (n.contains("wheel")) {
+                return "wheel";
+            }
+            if (n.contains("loop") || n.contains("ring")) {
+                return "loop";
+            }
+            left |= n.startsWith("left");
+            right |= n.startsWith("right");
+            if (n.contains("leg") || n.contains("arm")) {
+                left = right = true;
+            }
+        }
+        return left && right ? "centipede" : "snake";
+    }
+}
