@@ -102,7 +102,8 @@ final class RunCommand implements Callable<Integer> {
             return 1;
         }
         if (!r.parameterErrors().isEmpty()) {
-            throw new UsageException(String.join("; ", r.parameterErrors()));
+            r.parameterErrors().forEach(d -> err.println(d.format()));
+            return 2;
         }
         Program program = r.program();
         if (program.main() == null) {

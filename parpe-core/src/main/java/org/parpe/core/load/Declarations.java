@@ -5,7 +5,10 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.DiagnosticSink;
+import org.parpe.core.diag.Severity;
+import org.parpe.core.diag.SourcePos;
 import org.parpe.core.expr.Names;
 import org.parpe.core.model.Control;
 import org.parpe.core.model.Control.ControlType;
@@ -21,7 +24,7 @@ final class Declarations {
 
     final List<Parameter> parameters = new ArrayList<>();
     final Map<String, Double> values = new LinkedHashMap<>();
-    final List<String> parameterErrors = new ArrayList<>();
+    final List<Diagnostic> parameterErrors = new ArrayList<>();
     final List<Control> controls = new ArrayList<>();
     final Map<String, Integer> controlIndex = new LinkedHashMap<>();
     final Map<String, Integer> radioWords = new LinkedHashMap<>();
@@ -56,14 +59,15 @@ final class Declarations {
         for (Map.Entry<String, Double> o : overrides.entrySet()) {
             Parameter p = parameters.stream().filter(q -> q.name().equals(o.getKey())).findFirst().orElse(null);
             if (p == null) {
-                parameterErrors.add("unknown parameter '" + o.getKey() + "'"
-                        + Names.suggest(o.getKey(), values.keySet())
-                        + (values.isEmpty() ? " (the script has no parameters)" : ""));
+                parameterErrors.add(new Diagnostic(Severity.ERROR, SourcePos.origin("--param " + o.getKey()),
+                        "unknown parameter '" + o.getKey() + "'" + Names.suggest(o.getKey(), values.keySet())
+                        + (values.isEmpty() ? " (the script has no parameters)" : "")));
                 continue;
             }
             String problem = p.check(o.getValue());
             if (problem != null) {
-                parameterErrors.add(problem);
+                // Located at the definition, whose min and max the value breaks.
+                parameterErrors.add(new Diagnostic(Severity.ERROR, p.pos(), problem));
             } else {
                 values.put(p.name(), o.getValue());
             }

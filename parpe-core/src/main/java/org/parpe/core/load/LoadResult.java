@@ -11,9 +11,10 @@ import org.parpe.core.model.Program;
  * @param program         the validated model, or {@code null} when there were errors
  * @param diagnostics     every error and warning found, in the order found
  * @param parameterErrors problems with parameter values given from outside (command line,
- *                        parameters dialog): unknown names or values out of range
+ *                        parameters dialog): unknown names (at {@code --param NAME}) or values
+ *                        out of range (at the parameter's definition)
  */
-public record LoadResult(Program program, List<Diagnostic> diagnostics, List<String> parameterErrors) {
+public record LoadResult(Program program, List<Diagnostic> diagnostics, List<Diagnostic> parameterErrors) {
 
     public LoadResult {
         diagnostics = List.copyOf(diagnostics);

@@ -130,8 +130,10 @@ final class RunActions implements ControlPanel.Target {
         LoadResult loaded = params.isEmpty() ? first : Validator.load(path, text, params);
         if (!loaded.ok()) {
             ide.showValidation(loaded);
+            ide.clearRunProblems();
+            loaded.parameterErrors().forEach(ide::runProblemLater);
             String why = loaded.parameterErrors().isEmpty() ? "the script has errors with these parameter values"
-                    : String.join("; ", loaded.parameterErrors());
+                    : loaded.parameterErrors().get(0).message();
             ide.status().setMessage("Cannot run: " + why);
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, why));
             return;
