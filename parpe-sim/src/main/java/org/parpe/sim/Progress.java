@@ -9,8 +9,11 @@ final class Progress {
     private final double[] com = new double[3];
     private final double[] start = new double[3];
     private final double[] upLocal = new double[3];
+    private final double[] markedCom = new double[3];
     private double startTime;
     private double maxTilt;
+    private double markedTime = Double.NaN;
+    private double markedMaxTilt;
 
     Progress(PhysicsWorld world) {
         this.world = world;
@@ -23,6 +26,7 @@ final class Progress {
         System.arraycopy(start, 0, com, 0, 3);
         startTime = world.time();
         maxTilt = 0;
+        markedTime = Double.NaN;
         DMatrix3C r = world.pieceRotation(world.assembly().rootPiece());
         // The root's local axis that points up now: the third row of its rotation.
         for (int i = 0; i < 3; i++) {
@@ -43,11 +47,25 @@ final class Progress {
         System.arraycopy(com, 0, out, at, 3);
     }
 
+    /**
+     * Remembers the current state as that of the tick being emitted, before the plant moves on:
+     * the metrics of a run end at its last tick, not one physics step later.
+     */
+    void mark() {
+        System.arraycopy(com, 0, markedCom, 0, 3);
+        markedTime = world.time();
+        markedMaxTilt = maxTilt;
+    }
+
+    /** From the start to the last marked tick, or to now when no tick was marked (stepped by hand). */
     SimMetrics metrics() {
-        double duration = world.time() - startTime;
-        double dx = com[0] - start[0];
-        double dy = com[1] - start[1];
+        boolean marked = !Double.isNaN(markedTime);
+        double[] end = marked ? markedCom : com;
+        double duration = (marked ? markedTime : world.time()) - startTime;
+        double dx = end[0] - start[0];
+        double dy = end[1] - start[1];
         double d = Math.hypot(dx, dy);
-        return new SimMetrics(duration, d, dx, dy, duration > 0 ? d / duration : 0, Math.toDegrees(maxTilt));
+        return new SimMetrics(duration, d, dx, dy, duration > 0 ? d / duration : 0,
+                Math.toDegrees(marked ? markedMaxTilt : maxTilt));
     }
 }

@@ -100,6 +100,7 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
             }
         }
         captureTrace();
+        progress.mark();
         advance(1);
     }
 
@@ -222,7 +223,11 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
         return snapshots.snapshot();
     }
 
-    /** Distance, speed and tilt since the run started (or since construction). */
+    /**
+     * Distance, speed and tilt from the start of the run (or construction) to the last tick the
+     * simulator was given, so a run of {@code --duration D} measures exactly {@code D} seconds;
+     * after {@link #step} without a run, to the current state.
+     */
     public SimMetrics metrics() {
         return progress.metrics();
     }

@@ -68,6 +68,13 @@ class SimCommandLineTest {
     }
 
     @Test
+    void metricsCoverExactlyTheDuration() throws Exception {
+        Result r = cli("run", "../examples/hello-snake.xml", "--sim", "--duration", "2", "--metrics", "-");
+        assertEquals(0, r.code(), r.err());
+        assertTrue(r.out().contains("\"duration\": 2.000000,"), "metrics measured one physics step past the last tick: " + r.out());
+    }
+
+    @Test
     void aParslScriptChosenAsRobotConfigurationIsALocatedUsageError() {
         Result r = cli("run", "../examples/hello-snake.xml", "--sim", "../examples/gait-table-12.xml", "--duration", "1");
         assertEquals(2, r.code(), r.err());

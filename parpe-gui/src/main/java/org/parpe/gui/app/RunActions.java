@@ -32,6 +32,7 @@ import org.parpe.gui.run.Target;
 import org.parpe.serial.bus.BusConfig;
 import org.parpe.serial.bus.BusTarget;
 import org.parpe.serial.bus.HardwareBus;
+import org.parpe.sim.SimMetrics;
 import org.parpe.sim.SimSnapshot;
 import org.parpe.sim.SimTarget;
 import org.parpe.sim.Simulator;
@@ -57,6 +58,7 @@ final class RunActions implements ControlPanel.Target {
     private volatile String hardwareState = "Hardware: not connected";
     private String previewKey = "";
     private RunOutcome lastOutcome;
+    private volatile SimMetrics lastMetrics;
 
     RunActions(IdeWindow ide) {
         this.ide = ide;
@@ -194,6 +196,7 @@ final class RunActions implements ControlPanel.Target {
             sim = s;
             run.closeAtEnd(() -> {
                 preview = s.snapshot();
+                lastMetrics = s.metrics();
                 sim = null;
             });
         }
@@ -204,14 +207,19 @@ final class RunActions implements ControlPanel.Target {
     private void ended(RunOutcome outcome) {
         lastOutcome = outcome;
         String t = String.format(java.util.Locale.ROOT, "%.2f s", outcome.time());
+        SimMetrics m = lastMetrics;
+        lastMetrics = null;
+        String travelled = m == null || outcome.status() == RunOutcome.Status.ERROR ? ""
+                : String.format(java.util.Locale.ROOT, "; the robot travelled %.3f m (%.3f m/s, forward %+.3f m)",
+                        m.distance(), m.speed(), m.dx());
         switch (outcome.status()) {
             case COMPLETED -> {
-                ide.log("Run completed at t = " + t);
-                ide.status().setMessage("Run completed at t = " + t);
+                ide.log("Run completed at t = " + t + travelled);
+                ide.status().setMessage("Run completed at t = " + t + travelled);
             }
             case STOPPED -> {
-                ide.log("Run stopped at t = " + t);
-                ide.status().setMessage("Run stopped at t = " + t);
+                ide.log("Run stopped at t = " + t + travelled);
+                ide.status().setMessage("Run stopped at t = " + t + travelled);
             }
             case ERROR -> {
                 ide.log("Run failed: " + outcome.message());

@@ -159,4 +159,13 @@ class RunProblemsGuiTest {
         List<Diagnostic> warnings = shown(Severity.WARNING);
         assertTrue(warnings.stream().anyMatch(d -> d.message().contains("it has no module 15")), warnings.toString());
     }
+
+    @Test
+    void aSimulatorRunEndsWithTheDistanceTravelled() throws Exception {
+        open("travel.xml", snake("20"));
+        RunOutcome o = runToEnd(0.5);
+        assertEquals(RunOutcome.Status.COMPLETED, o.status(), o.message());
+        assertTrue(ide.status().message().matches("Run completed at t = 0\\.50 s; the robot travelled \\d+\\.\\d{3} m .*"),
+                ide.status().message());
+    }
 }
