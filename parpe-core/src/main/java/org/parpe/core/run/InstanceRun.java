@@ -7,6 +7,7 @@ import org.parpe.core.model.Automaton;
 import org.parpe.core.model.Conditional;
 import org.parpe.core.model.Instance;
 import org.parpe.core.model.Interp;
+import org.parpe.core.model.Numbers;
 import org.parpe.core.model.StateDef;
 
 /**
@@ -183,7 +184,7 @@ final class InstanceRun {
             if (t < 0) {
                 // §13 rule 21: a negative duration is an error, not a skipped state
                 throw ev.error(times[j].pos(), "state '" + stateNames[j] + "' of automaton '" + automaton
-                        + "' has a negative duration: " + t + " s (durations must be >= 0)");
+                        + "' has a negative duration: " + Numbers.brief(t) + " s (durations must be >= 0)");
             }
             tBuf[j] = t;
             s += t;
