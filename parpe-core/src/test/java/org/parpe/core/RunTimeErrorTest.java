@@ -128,4 +128,24 @@ class RunTimeErrorTest {
         }
         assertEquals("time,m0,m1\n0.000000,0.000000,0.000000\n0.010000,0.000000,0.000000\n", trace.toString());
     }
+
+    @Test
+    void anInstanceWithCyclesZeroUnderAnIfCausesNoOverlapWarning() {
+        // PARSL 1.0.1 §13 rule 19: it never drives its modules, so it never competes for one
+        String text = "<program><robot><structure><g elements=\"0, 1\"/><h elements=\"1, 2\"/></structure></robot>"
+                + "<main><b/></main><behaviors><b><w group=\"g\"/><if cond=\"1\"><w group=\"h\" cycles=\"-0.0\"/></if>"
+                + "<if cond=\"1\"><w group=\"h\" cycles=\"0\"/></if></b></behaviors>"
+                + "<automata><w states=\"s\"/></automata><states><s angles=\"10\" interp=\"step\"/></states></program>";
+        Engine e = new Engine(load(text), RunOptions.defaults());
+        List<Diagnostic> warnings = new ArrayList<>();
+        e.setWarningSink(warnings::add);
+        StringWriter trace = new StringWriter();
+        e.addSink(new TraceWriter(trace));
+        e.start();
+        for (int i = 0; i < 3; i++) {
+            e.step();
+        }
+        assertEquals(List.of(), warnings);
+        assertTrue(trace.toString().endsWith("0.020000,10.000000,10.000000,0.000000\n"), trace.toString());
+    }
 }
