@@ -125,10 +125,9 @@ public final class TraceWriter implements JointSink {
     }
 
     private static void slow(StringBuilder sb, double v) {
-        if (Double.isNaN(v)) {
-            sb.append("nan");
-        } else if (Double.isInfinite(v)) {
-            sb.append(v > 0 ? "inf" : "-inf");
+        if (!Double.isFinite(v)) {
+            // only extra columns can hold these (a module that sent no reading is NaN); as before
+            sb.append(Double.isNaN(v) ? "NaN" : v > 0 ? "Infinity" : "-Infinity");
         } else {
             sb.append(new BigDecimal(v).setScale(6, RoundingMode.HALF_EVEN).toPlainString());
         }

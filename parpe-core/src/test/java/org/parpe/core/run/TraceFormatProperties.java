@@ -57,6 +57,15 @@ class TraceFormatProperties {
     }
 
     @Test
+    void nonFiniteValuesOfExtraColumnsPrintAsJavaReadsThem() {
+        StringBuilder sb = new StringBuilder();
+        TraceWriter.format(sb, Double.NaN);
+        sb.append(' ');
+        TraceWriter.format(sb, Double.NEGATIVE_INFINITY);
+        assertEquals("NaN -Infinity", sb.toString());
+    }
+
+    @Test
     void negativeZeroPrintsWithoutSign() {
         StringBuilder sb = new StringBuilder();
         TraceWriter.format(sb, -0.0);
