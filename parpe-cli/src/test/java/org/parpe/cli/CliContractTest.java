@@ -78,6 +78,18 @@ class CliContractTest {
     }
 
     @Test
+    void aNegativeStateDurationExitsThreeNamingAutomatonStateAndValue() throws Exception {
+        // PARSL 1.0.1 §13 rule 21: the second duration becomes negative after t = 0.5
+        Path p = write("neg.xml", GOOD.replace("<w states=\"s, t\"/>", "<w states=\"s, t\" times=\"1, 0.5 - $time\"/>"));
+        Path trace = dir.resolve("neg.csv");
+        Result r = parpe("run", p.toString(), "--tick", "0.1", "--trace", trace.toString());
+        assertEquals(3, r.code(), r.err());
+        assertTrue(r.err().contains("neg.xml:7:38: error: state 't' of automaton 'w' has a negative duration: -0.1 s"), r.err());
+        assertTrue(r.err().contains("(at t=0.600000 s)"), r.err());
+        assertEquals(1 + 6, Files.readAllLines(trace).size(), "rows t=0..0.5 are kept");
+    }
+
+    @Test
     void badParametersAndStimuliAreUsageErrors() throws Exception {
         Path good = write("good.xml", GOOD);
         Result unknown = parpe("run", good.toString(), "--param", "ampl=3");

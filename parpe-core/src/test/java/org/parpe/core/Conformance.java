@@ -18,10 +18,17 @@ import org.parpe.core.run.Stimulus;
 import org.parpe.core.run.StimulusParser;
 import org.parpe.core.run.TraceWriter;
 
-/** Runs a case of the PARSL conformance suite through the core API (no CLI), as run.sh would. */
+/**
+ * Runs a case of the PARSL conformance suite (spec/conformance) or of PARPE's extra suite
+ * (spec/conformance-parpe) through the core API (no CLI), as run.sh would.
+ */
 public final class Conformance {
-    /** The shared suite beside the repository. */
-    public static final Path CASES = locate();
+    /** The repository's root: the folder holding {@code spec/PARSL.md}. */
+    public static final Path ROOT = locate();
+    /** The PARSL conformance suite, the repository's copy of the shared one (spec/conformance). */
+    public static final Path CASES = ROOT.resolve("spec/conformance/cases");
+    /** PARPE's own extra cases, in the same layout (spec/conformance-parpe). */
+    public static final Path PARPE_CASES = ROOT.resolve("spec/conformance-parpe/cases");
 
     private Conformance() {
     }
@@ -29,20 +36,26 @@ public final class Conformance {
     private static Path locate() {
         Path here = Path.of("").toAbsolutePath();
         for (Path p = here; p != null; p = p.getParent()) {
-            Path c = p.resolve("../shared/parsl/conformance/cases").normalize();
-            if (Files.isDirectory(c)) {
-                return c;
+            if (Files.isRegularFile(p.resolve("spec/PARSL.md"))) {
+                return p;
             }
         }
-        return here.resolve("../../shared/parsl/conformance/cases").normalize();
+        throw new IllegalStateException("no spec/PARSL.md in " + here + " or a folder above it");
     }
 
-    /** The case folders, sorted. */
+    /** The case folders of both suites, sorted (the PARSL suite first). */
     public static List<Path> cases() throws IOException {
-        if (!Files.isDirectory(CASES)) {
-            throw new IllegalStateException("the PARSL conformance suite is missing: expected " + CASES);
+        List<Path> all = new ArrayList<>(cases(CASES));
+        all.addAll(cases(PARPE_CASES));
+        return all;
+    }
+
+    /** The case folders of one suite, sorted. */
+    public static List<Path> cases(Path suite) throws IOException {
+        if (!Files.isDirectory(suite)) {
+            throw new IllegalStateException("a conformance suite is missing: expected " + suite);
         }
-        try (var s = Files.list(CASES)) {
+        try (var s = Files.list(suite)) {
             return s.filter(p -> Files.exists(p.resolve("cmd"))).sorted().toList();
         }
     }

@@ -19,7 +19,8 @@ import org.parpe.core.load.ScriptLoader;
 /**
  * The PARSL conformance suite as a golden test of the core: every run case's trace matches
  * the reference within 1e-6, every error case reports a diagnostic on each expected line.
- * (The same suite also runs through ./parpe in the CLI's integration-test phase.)
+ * PARPE's own cases (spec/conformance-parpe) must also match the expected text exactly. (Both
+ * suites also run through ./parpe and spec/conformance/run.sh in the CLI's integration-test phase.)
  */
 class ConformanceTest {
     static Stream<Path> cases() throws Exception {
@@ -46,5 +47,9 @@ class ConformanceTest {
         assertTrue(out.loaded(), "does not load: " + out.diagnostics());
         String expected = Files.readString(dir.resolve("expected.csv"));
         assertNull(Conformance.compare(expected, out.trace()));
+        if (dir.startsWith(Conformance.PARPE_CASES)) {
+            // PARPE's own cases are derived exactly from the rules: the text must match too (§13 rule 23)
+            assertEquals(expected.replace("\r\n", "\n"), out.trace(), "the trace text of " + dir.getFileName());
+        }
     }
 }

@@ -53,6 +53,10 @@ class DiagnosticsTest {
                     + REST.replace("\"g\"", "\"a\""), "appears twice"),
             c("module ID too large", "<robot><structure>\n<a elements=\"70000\"/> <!--E-->\n</structure></robot>"
                     + REST.replace("\"g\"", "\"a\""), "too large"),
+            c("module ID 65536 names the value and the bound", "<robot><structure>\n<a elements=\"1,\n 65536\"/> <!--E-->\n"
+                    + "</structure></robot>" + REST.replace("\"g\"", "\"a\""), "module ID 65536 is too large: module IDs are whole numbers 0..65535"),
+            c("range past the largest module ID", "<robot><structure>\n<a elements=\"65530..65536\"/> <!--E-->\n</structure></robot>"
+                    + REST.replace("\"g\"", "\"a\""), "is module ID 65536, too large: module IDs are whole numbers 0..65535"),
             c("empty item", "<robot><structure>\n<a elements=\"1, , 2\"/> <!--E-->\n</structure></robot>"
                     + REST.replace("\"g\"", "\"a\""), "empty item"),
             c("range over non-parameter", "<robot><structure>\n<a elements=\"0..$time\"/> <!--E-->\n</structure></robot>"

@@ -46,4 +46,21 @@ class EngineAllocationTest {
         long bytes = mx.getThreadAllocatedBytes(Thread.currentThread().getId()) - before;
         assertTrue(bytes < 10_000, "10000 ticks (with entry changes, stimuli, ifs, exits) allocated " + bytes + " bytes");
     }
+
+    @Test
+    void traceNumbersAreFormattedWithoutAllocating() {
+        org.parpe.core.run.TraceWriter w = new org.parpe.core.run.TraceWriter(java.io.Writer.nullWriter());
+        w.start(new org.parpe.core.run.RunInfo(null, new int[] {0, 1, 2, 3}, 0.01));
+        double[] values = {0.0078125, -123456.7890125, 1e15 + 0.5, 2.5e-6};
+        for (int i = 0; i < 50_000; i++) {
+            w.accept(i, i * 0.01, values); // warm up
+        }
+        com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+        long before = mx.getThreadAllocatedBytes(Thread.currentThread().getId());
+        for (int i = 0; i < 10_000; i++) {
+            w.accept(i, i * 0.01, values);
+        }
+        long bytes = mx.getThreadAllocatedBytes(Thread.currentThread().getId()) - before;
+        assertTrue(bytes < 10_000, "10000 trace rows (exact ties among them) allocated " + bytes + " bytes");
+    }
 }

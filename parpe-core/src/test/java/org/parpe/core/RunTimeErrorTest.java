@@ -95,4 +95,57 @@ class RunTimeErrorTest {
         assertThrows(IllegalArgumentException.class, () -> e.setControl("k", 5));
         assertThrows(IllegalArgumentException.class, () -> e.setControl("nope", 0));
     }
+
+    @Test
+    void aNegativeDurationIsARunTimeErrorNamingAutomatonStateAndValue() {
+        // PARSL 1.0.1 §13 rule 21: the duration becomes negative at t = 0.3, the run stops there
+        String text = wave("10", "").replace("<w states=\"s, t\"/>", "<w states=\"s, t\" times=\"1, 0.25 - $time\"/>");
+        Engine e = new Engine(load(text), RunOptions.defaults());
+        StringWriter trace = new StringWriter();
+        e.addSink(new TraceWriter(trace));
+        e.start();
+        ScriptRuntimeError err = assertThrows(ScriptRuntimeError.class, () -> {
+            for (int i = 0; i < 100; i++) {
+                e.step();
+            }
+        });
+        assertTrue(err.getMessage().startsWith("rt.xml:6:38: error: "), err.getMessage()); // at the times expression
+        assertTrue(err.getMessage().contains("state 't' of automaton 'w' has a negative duration: -0.01 s"), err.getMessage());
+        assertTrue(err.getMessage().contains("t=0.260000"), err.getMessage());
+    }
+
+    @Test
+    void anInstanceWithCyclesZeroEvaluatesNothingAndDrivesNothing() {
+        // PARSL 1.0.1 §13 rule 19: durations that would be an error are never evaluated
+        String text = wave("10", " cycles=\"0\"").replace("<w states=\"s, t\"/>", "<w states=\"s, t\" times=\"-1, 0\"/>")
+                .replace("<main><b/></main>", "<main><b time=\"0.05\"/></main>");
+        Engine e = new Engine(load(text), RunOptions.defaults());
+        StringWriter trace = new StringWriter();
+        e.addSink(new TraceWriter(trace));
+        e.start();
+        while (e.step()) {
+            // runs to the entry's end
+        }
+        assertEquals("time,m0,m1\n0.000000,0.000000,0.000000\n0.010000,0.000000,0.000000\n", trace.toString());
+    }
+
+    @Test
+    void anInstanceWithCyclesZeroUnderAnIfCausesNoOverlapWarning() {
+        // PARSL 1.0.1 §13 rule 19: it never drives its modules, so it never competes for one
+        String text = "<program><robot><structure><g elements=\"0, 1\"/><h elements=\"1, 2\"/></structure></robot>"
+                + "<main><b/></main><behaviors><b><w group=\"g\"/><if cond=\"1\"><w group=\"h\" cycles=\"-0.0\"/></if>"
+                + "<if cond=\"1\"><w group=\"h\" cycles=\"0\"/></if></b></behaviors>"
+                + "<automata><w states=\"s\"/></automata><states><s angles=\"10\" interp=\"step\"/></states></program>";
+        Engine e = new Engine(load(text), RunOptions.defaults());
+        List<Diagnostic> warnings = new ArrayList<>();
+        e.setWarningSink(warnings::add);
+        StringWriter trace = new StringWriter();
+        e.addSink(new TraceWriter(trace));
+        e.start();
+        for (int i = 0; i < 3; i++) {
+            e.step();
+        }
+        assertEquals(List.of(), warnings);
+        assertTrue(trace.toString().endsWith("0.020000,10.000000,10.000000,0.000000\n"), trace.toString());
+    }
 }

@@ -13,6 +13,7 @@ import org.parpe.core.expr.Expression;
 import org.parpe.core.expr.Names;
 import org.parpe.core.expr.Scope;
 import org.parpe.core.model.Group;
+import org.parpe.core.model.Numbers;
 import org.parpe.core.model.Robot;
 import org.parpe.core.model.SensorDecl;
 import org.parpe.core.xml.SourceText;
@@ -166,12 +167,15 @@ final class RobotResolver {
                 ok = false;
                 continue;
             } else if (v.matches("\\d+")) {
-                if (v.length() > 6 || Integer.parseInt(v) > MAX_ID) {
-                    d.error(item.pos(), "module ID " + v + " is too large (IDs are 0.." + MAX_ID + ")");
+                // leading zeros do not change the value (007 is module 7); compare the value, not the length
+                String digits = v.replaceFirst("^0+(?=\\d)", "");
+                if (digits.length() > 5 || Integer.parseInt(digits) > MAX_ID) {
+                    d.error(item.pos(), "module ID " + v + " is too large: module IDs are whole numbers 0.." + MAX_ID
+                            + " (PARSL 1.0.1 section 13 rule 23)");
                     ok = false;
                     continue;
                 }
-                ids = List.of(Integer.parseInt(v));
+                ids = List.of(Integer.parseInt(digits));
             } else if (v.contains("..")) {
                 ids = range(item);
             } else {
@@ -226,8 +230,13 @@ final class RobotResolver {
             return null;
         }
         double v = e.eval(null);
-        if (v != Math.rint(v) || v < 0 || v > MAX_ID) {
-            d.error(t.pos(), "range end '" + t.value() + "' must be a whole number >= 0, got " + v);
+        if (v != Math.rint(v) || v < 0) {
+            d.error(t.pos(), "range end '" + t.value() + "' must be a whole number >= 0, got " + Numbers.format(v));
+            return null;
+        }
+        if (v > MAX_ID) {
+            d.error(t.pos(), "range end '" + t.value() + "' is module ID " + Numbers.format(v)
+                    + ", too large: module IDs are whole numbers 0.." + MAX_ID + " (PARSL 1.0.1 section 13 rule 23)");
             return null;
         }
         return (int) v;

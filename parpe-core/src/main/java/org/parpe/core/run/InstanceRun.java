@@ -1,11 +1,13 @@
 package org.parpe.core.run;
 
+import java.util.Arrays;
 import org.parpe.core.expr.EvalContext;
 import org.parpe.core.expr.Expression;
 import org.parpe.core.model.Automaton;
 import org.parpe.core.model.Conditional;
 import org.parpe.core.model.Instance;
 import org.parpe.core.model.Interp;
+import org.parpe.core.model.Numbers;
 import org.parpe.core.model.StateDef;
 
 /**
@@ -31,6 +33,7 @@ final class InstanceRun {
     private final Expression[][] angles;
     private final Interp[] interp;
     private final Expression[] times;
+    private final String[] stateNames;
     private final Expression[] exits;
     private final boolean timesPerModule;
     private final int ns;
@@ -69,6 +72,7 @@ final class InstanceRun {
         this.angles0 = new Expression[ns];
         this.interp = new Interp[ns];
         this.times = new Expression[ns];
+        this.stateNames = new String[ns];
         this.exits = new Expression[ns];
         boolean perModule = false;
         for (int i = 0; i < ns; i++) {
@@ -76,6 +80,7 @@ final class InstanceRun {
             angles[i] = s.angles().toArray(new Expression[0]);
             angles0[i] = angles[i][0];
             interp[i] = s.interp();
+            stateNames[i] = s.name();
             times[i] = a.times().get(i).duration();
             exits[i] = a.times().get(i).exit();
             perModule |= times[i].perModule();
@@ -109,18 +114,31 @@ final class InstanceRun {
         c.cycle = cyc[k];
     }
 
-    /** Initialises every module (§7.1, §13 rule 6); {@code commanded} holds the angles emitted last tick. */
+    /**
+     * Places every module (§7.1, §13 rules 6, 18, 19); {@code commanded} holds the angles
+     * emitted last tick. {@code times} and the targets see the placement values
+     * {@code $phase = u_k}, {@code $cycle = 0}, never those of an earlier run of the entry.
+     * With {@code cycles ≤ 0} nothing is placed or evaluated: the modules are never driven.
+     */
     void init(Evaluator ev, double phase, double offset, double cycles, double[] commanded) {
         started = true;
-        finishedCount = 0;
         limit = cycles;
+        if (cycles <= 0) {
+            Arrays.fill(fin, true);
+            finishedCount = n;
+            return;
+        }
+        finishedCount = 0;
+        EvalContext c = ev.ctx();
         for (int k = 0; k < n; k++) {
-            enter(ev.ctx(), k);
+            double x = -(offset + k * phase);
+            double start = x - Math.floor(x);
+            enter(c, k);
+            c.phase = start;
+            c.cycle = 0;
             if (k == 0 || timesPerModule) {
                 evalTimes(ev);
             }
-            double x = -(offset + k * phase);
-            double start = x - Math.floor(x);
             double pos = start * sumT;
             double cum = 0;
             int found = -1;
@@ -144,11 +162,8 @@ final class InstanceRun {
             p0[k] = p[k];
             a0[k] = commanded[mod[k]];
             cyc[k] = 0;
-            ph[k] = phaseOf(st[k], p[k]);
-            fin[k] = cycles <= 0;
-            if (fin[k]) {
-                finishedCount++;
-            }
+            ph[k] = start;
+            fin[k] = false;
         }
     }
 
@@ -165,8 +180,14 @@ final class InstanceRun {
     private void evalTimes(Evaluator ev) {
         double s = 0;
         for (int j = 0; j < ns; j++) {
-            tBuf[j] = ev.eval(times[j]);
-            s += tBuf[j];
+            double t = ev.eval(times[j]);
+            if (t < 0) {
+                // §13 rule 21: a negative duration is an error, not a skipped state
+                throw ev.error(times[j].pos(), "state '" + stateNames[j] + "' of automaton '" + automaton
+                        + "' has a negative duration: " + Numbers.brief(t) + " s (durations must be >= 0)");
+            }
+            tBuf[j] = t;
+            s += t;
         }
         sumT = s;
         if (!(s > 0)) {
@@ -188,14 +209,16 @@ final class InstanceRun {
         scale = per;
     }
 
-    /** Advances module {@code k} by {@code dt} (§7.1) and computes its setpoint into {@code out}. */
+    /**
+     * Advances module {@code k} by {@code dt} (§7.1, §13 rules 7–9, 20, 22) and computes its
+     * setpoint into {@code out}.
+     */
     void advance(Evaluator ev, int k, double dt, double[] commanded) {
         EvalContext c = ev.ctx();
         enter(c, k);
         if (timesPerModule) {
             evalTimes(ev);
         }
-        double sc = Double.isNaN(scale) ? 1 : scale / sumT;
         double lim = uk[k] + limit;
         int s = st[k];
         if (exits[s] != null && ev.eval(exits[s]) != 0) {
@@ -214,7 +237,8 @@ final class InstanceRun {
         int transitions = 0;
         while (true) {
             double t = tBuf[s];
-            double d = t * sc;
+            // §13 rule 22: (T · period) / ΣT, in that order
+            double d = Double.isNaN(scale) ? t : t * scale / sumT;
             if (d <= 0) {
                 if (++skips > ns) {
                     throw ev.error(model.pos(), "every state of automaton '" + automaton + "' has a duration <= 0");
@@ -226,17 +250,12 @@ final class InstanceRun {
             }
             double need = (1 - p[k]) * d;
             if (r < need - EPS) {
-                double dp = r / d;
-                double du = dp * t / sumT;
+                double du = r / d * t / sumT;
                 if (u[k] + du >= lim - EPS) {
-                    p[k] = Math.min(1, p[k] + (lim - u[k]) * sumT / t);
-                    ph[k] = phaseOf(s, p[k]);
-                    c.phase = ph[k];
-                    c.cycle = Math.floor(limit + EPS);
-                    finish(k, setpoint(ev, k, s));
+                    finishInside(ev, k, s, lim);
                     return;
                 }
-                p[k] += dp;
+                p[k] += r / d;
                 u[k] += du;
                 break;
             }
@@ -248,7 +267,11 @@ final class InstanceRun {
                         + " state changes in one tick; its states are far shorter than the tick (" + dt + " s)");
             }
             if (u[k] + du >= lim - EPS) {
-                finish(k, target(ev, s, k));
+                if (u[k] + du <= lim + EPS) {
+                    finishAtEnd(ev, k, s);
+                } else {
+                    finishInside(ev, k, s, lim);
+                }
                 return;
             }
             u[k] += du;
@@ -261,6 +284,30 @@ final class InstanceRun {
         c.phase = ph[k];
         c.cycle = cyc[k];
         out[k] = setpoint(ev, k, s);
+    }
+
+    /**
+     * The {@code cycles} limit lies inside state {@code s} (§13 rule 20): the module stops at
+     * that cycle position and holds the interpolated angle there, seen with the updated
+     * {@code $phase} and {@code $cycle}.
+     */
+    private void finishInside(Evaluator ev, int k, int s, double lim) {
+        p[k] = Math.min(1, p[k] + (lim - u[k]) * sumT / tBuf[s]);
+        seeFinalPosition(ev.ctx(), k, s);
+        finish(k, setpoint(ev, k, s));
+    }
+
+    /** The limit is the end of state {@code s}: the module holds its target, seen with the updated values. */
+    private void finishAtEnd(Evaluator ev, int k, int s) {
+        p[k] = 1;
+        seeFinalPosition(ev.ctx(), k, s);
+        finish(k, target(ev, s, k));
+    }
+
+    private void seeFinalPosition(EvalContext c, int k, int s) {
+        ph[k] = phaseOf(s, p[k]);
+        c.phase = ph[k];
+        c.cycle = Math.floor(limit + EPS);
     }
 
     /** Computes module {@code k}'s setpoint without advancing (initialisation tick). */

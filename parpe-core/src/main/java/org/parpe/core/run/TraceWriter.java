@@ -3,13 +3,15 @@ package org.parpe.core.run;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.io.Writer;
+import java.math.BigDecimal;
+import java.math.RoundingMode;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 
 /**
  * Writes the CSV trace of PARSL.md §11: header {@code time,m<ID>,…} plus any extra columns,
- * then one row per tick, every number as {@code %.6f} with {@code .} as the decimal separator.
+ * then one row per tick, every number as C's {@code %.6f} (exact, half-even, §13 rule 23) with
+ * {@code .} as the decimal separator.
  */
 public final class TraceWriter implements JointSink {
     private final Writer out;
@@ -82,28 +84,52 @@ public final class TraceWriter implements JointSink {
         }
     }
 
+    /** Above this the integer part no longer fits a {@code long}: such values take the exact slow path. */
+    private static final double LONG_LIMIT = 0x1p63;
+
     /**
-     * Appends {@code v} as {@code %.6f} would, without allocating in the common case; {@code -0}
-     * prints as {@code 0.000000}. Values whose rounding is a near tie, and huge values, take
-     * the exact slow path.
+     * Appends {@code v} as C's {@code printf("%.6f")} does (PARSL.md §13 rule 23): the exact
+     * decimal value of the double, rounded half-even to six decimals; {@code -0} (and anything
+     * that rounds to zero) prints as {@code 0.000000}. Exact and allocation-free below 2^63:
+     * the fraction {@code f} of a double is exact, and {@link Math#fma} gives the exact sign of
+     * {@code f·10^6 − m} and {@code f·10^6 − (m + ½)}, so ties are recognised exactly
+     * ({@code String.format} would round the shortest decimal representation half-up instead).
      */
     static void format(StringBuilder sb, double v) {
         double a = Math.abs(v);
-        double scaled = a * 1e6;
-        double frac = scaled - Math.floor(scaled);
-        if (!(a < 1e9) || Math.abs(frac - 0.5) < 1e-3) {
-            String s = String.format(Locale.ROOT, "%.6f", v);
-            sb.append(s.equals("-0.000000") ? "0.000000" : s);
+        if (!(a < LONG_LIMIT)) {
+            slow(sb, v);
             return;
         }
-        long m = Math.round(scaled);
-        if (v < 0 && m != 0) {
+        long ip = (long) a;
+        double f = a - ip;
+        long m = (long) (f * 1e6);
+        if (Math.fma(f, 1e6, -m) < 0) {
+            m--; // f·10^6 rounded up to the integer m
+        }
+        double tie = Math.fma(f, 1e6, -(m + 0.5));
+        if (tie > 0 || (tie == 0 && (m & 1) == 1)) {
+            m++;
+        }
+        if (m == 1_000_000) {
+            ip++;
+            m = 0;
+        }
+        if (v < 0 && (ip != 0 || m != 0)) {
             sb.append('-');
         }
-        sb.append(m / 1_000_000).append('.');
-        long f = m % 1_000_000;
+        sb.append(ip).append('.');
         for (long d = 100_000; d > 0; d /= 10) {
-            sb.append((char) ('0' + f / d % 10));
+            sb.append((char) ('0' + m / d % 10));
+        }
+    }
+
+    private static void slow(StringBuilder sb, double v) {
+        if (!Double.isFinite(v)) {
+            // only extra columns can hold these (a module that sent no reading is NaN); as before
+            sb.append(Double.isNaN(v) ? "NaN" : v > 0 ? "Infinity" : "-Infinity");
+        } else {
+            sb.append(new BigDecimal(v).setScale(6, RoundingMode.HALF_EVEN).toPlainString());
         }
     }
 }
