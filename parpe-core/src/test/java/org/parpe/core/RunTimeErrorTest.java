@@ -102,7 +102,7 @@ class RunTimeErrorTest {
         String text = wave("10", "").replace("<w states=\"s, t\"/>", "<w states=\"s, t\" times=\"1, 0.25 - $time\"/>");
         Engine e = new Engine(load(text), RunOptions.defaults());
         StringWriter trace = new StringWriter();
-        e.addSink(new TraceWriter(trace));
+        e.addObserver(new TraceWriter(trace));
         e.start();
         ScriptRuntimeError err = assertThrows(ScriptRuntimeError.class, () -> {
             for (int i = 0; i < 100; i++) {
@@ -121,7 +121,7 @@ class RunTimeErrorTest {
                 .replace("<main><b/></main>", "<main><b time=\"0.05\"/></main>");
         Engine e = new Engine(load(text), RunOptions.defaults());
         StringWriter trace = new StringWriter();
-        e.addSink(new TraceWriter(trace));
+        e.addObserver(new TraceWriter(trace));
         e.start();
         while (e.step()) {
             // runs to the entry's end
@@ -140,7 +140,7 @@ class RunTimeErrorTest {
         List<Diagnostic> warnings = new ArrayList<>();
         e.setWarningSink(warnings::add);
         StringWriter trace = new StringWriter();
-        e.addSink(new TraceWriter(trace));
+        e.addObserver(new TraceWriter(trace));
         e.start();
         for (int i = 0; i < 3; i++) {
             e.step();

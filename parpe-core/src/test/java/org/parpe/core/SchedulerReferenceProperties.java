@@ -109,9 +109,9 @@ class SchedulerReferenceProperties {
     static List<double[]> engineRows(String script, StringBuilder text) {
         Engine e = SchedulerProperties.engine(script, new RunOptions(DT, 0, List.of()));
         StringWriter out = new StringWriter();
-        e.addSink(new TraceWriter(out));
+        e.addObserver(new TraceWriter(out));
         List<double[]> rows = new ArrayList<>();
-        e.addSink((tick, time, commanded) -> rows.add(commanded.clone()));
+        e.addObserver((tick, time, commanded) -> rows.add(commanded.clone()));
         e.start();
         for (int k = 0; k < MAX_TICKS && e.step(); k++) {
             // until <main> ends
