@@ -1,0 +1,76 @@
+package org.parpe.gui.app;
+
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.function.BooleanSupplier;
+import org.eclipse.swt.graphics.ImageData;
+import org.eclipse.swt.graphics.ImageLoader;
+import org.eclipse.swt.widgets.Display;
+import org.eclipse.swt.widgets.Shell;
+
+/** What the GUI tests share: the display, bounded waits, examples and screenshots as evidence. */
+final class Gui {
+    static final long WAIT_MS = 30_000;
+
+    private Gui() {
+    }
+
+    /** The display; fails with a hint when there is no X server. */
+    static Display display() {
+        String x = System.getenv("DISPLAY");
+        if (x == null || x.isBlank()) {
+            fail("No X display (DISPLAY is not set). The GUI tests need one: run them under xvfb-run, as ./test-all does.");
+        }
+        return Display.getDefault();
+    }
+
+    /** Runs the event loop until {@code done} holds; fails after {@link #WAIT_MS}. */
+    static void pump(BooleanSupplier done, String what) {
+        Display display = Display.getDefault();
+        long until = System.currentTimeMillis() + WAIT_MS;
+        while (!done.getAsBoolean()) {
+            if (System.currentTimeMillis() > until) {
+                fail("timed out after " + WAIT_MS / 1000 + " s waiting for " + what);
+            }
+            if (!display.readAndDispatch()) {
+                try {
+                    Thread.sleep(5);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    fail("interrupted");
+                }
+            }
+        }
+    }
+
+    /** Handles the events pending now (layout, paint). */
+    static void settle() {
+        Display display = Display.getDefault();
+        for (int i = 0; i < 20; i++) {
+            while (display.readAndDispatch()) {
+                // Everything queued.
+            }
+            display.update();
+        }
+    }
+
+    static Path example(String name) {
+        Path p = Examples.folder() == null ? null : Examples.folder().resolve(name);
+        assertTrue(p != null && Files.isRegularFile(p), "example " + name + " not found (parpe.examples=" + System.getProperty("parpe.examples") + ")");
+        return p;
+    }
+
+    /** Saves a screenshot of {@code shell} under the artefacts folder and checks it is not blank. */
+    static void screenshot(Shell shell, String name) throws Exception {
+        Path dir = Path.of(System.getProperty("parpe.artefacts", "target/gui-test-artefacts"));
+        Files.createDirectories(dir);
+        Path f = dir.resolve(name);
+        Screenshot.save(shell, f);
+        ImageData d = new ImageLoader().load(f.toString())[0];
+        assertTrue(d.width > 600 && d.height > 400, "screenshot too small: " + d.width + "x" + d.height);
+        assertTrue(Screenshot.distinctColours(d, 64) >= 64, "screenshot " + f + " looks blank");
+    }
+}
