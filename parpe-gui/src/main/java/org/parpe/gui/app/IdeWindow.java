@@ -1,7 +1,6 @@
 package org.parpe.gui.app;
 
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -56,8 +55,7 @@ public final class IdeWindow {
     private final RunActions runs;
     private Program program;
     private int validations;
-    private List<Diagnostic> runProblems = List.of();
-    private List<Diagnostic> loadProblems = List.of();
+    private boolean wasRunning;
 
     public IdeWindow(Display display, Prefs prefs) {
         this.prefs = prefs;
@@ -81,7 +79,7 @@ public final class IdeWindow {
         editor = new ParslEditor(editorBox);
         editorTab = Panels.tab(editorFolder, "untitled.xml", editorBox);
         bottom = Panels.folder(middle);
-        problems = new ProblemsView(bottom, d -> reveal(d.pos()));
+        problems = new ProblemsView(bottom, d -> reveal(d.pos()), this::markProblems);
         Panels.tab(bottom, "Problems", problems.control());
         log = new StyledText(bottom, SWT.READ_ONLY | SWT.V_SCROLL | SWT.H_SCROLL | SWT.MULTI);
         log.setFont(org.eclipse.jface.resource.JFaceResources.getTextFont());
@@ -215,9 +213,8 @@ public final class IdeWindow {
         outline.show(null);
         controls.show(null);
         plots.setRecorder(null);
-        loadProblems = List.of();
-        runProblems = List.of();
-        showProblems();
+        problems.setLoadDiagnostics(List.of());
+        problems.clearRunDiagnostics();
         runs.forgetPreview();
         view.clear();
     }
@@ -232,9 +229,7 @@ public final class IdeWindow {
     /** Shows a load result: markers, Problems, outline, controls, plots and the robot preview. */
     void showValidation(LoadResult r) {
         validations++;
-        loadProblems = r.diagnostics();
-        runProblems = List.of();
-        showProblems();
+        problems.setLoadDiagnostics(r.diagnostics());
         if (r.program() != null) {
             program = r.program();
             outline.show(program);
@@ -250,12 +245,10 @@ public final class IdeWindow {
         }
     }
 
-    private void showProblems() {
-        List<Diagnostic> all = new ArrayList<>(loadProblems);
-        all.addAll(runProblems);
-        problems.show(all);
+    /** The Problems view changed: mark this file's problems in the editor. */
+    private void markProblems() {
         Path mine = files.pathForLoading().toAbsolutePath().normalize();
-        editor.setDiagnostics(all.stream().filter(d -> sameFile(d.pos(), mine)).toList());
+        editor.setDiagnostics(problems.shown().stream().filter(d -> sameFile(d.pos(), mine)).toList());
     }
 
     private static boolean sameFile(SourcePos p, Path mine) {
@@ -273,9 +266,29 @@ public final class IdeWindow {
         if (m.matches()) {
             SourcePos pos = new SourcePos(m.group(1), Integer.parseInt(m.group(2)), Integer.parseInt(m.group(3)));
             Severity sev = m.group(4).equals("error") ? Severity.ERROR : Severity.WARNING;
-            runProblems = List.of(new Diagnostic(sev, pos, "run-time: " + m.group(5)));
-            showProblems();
+            problems.setRunDiagnostics(List.of(new Diagnostic(sev, pos, "run-time: " + m.group(5))));
             bottom.setSelection(0);
+        }
+    }
+
+    /**
+     * Shows the diagnostics of a run (run-time errors, overlap warnings, parameter and control
+     * errors, robot configuration and bus faults) in Problems beside the load diagnostics,
+     * replacing the run's earlier ones; they stay until the next run starts or another file is
+     * opened. Any thread: the update is posted to the UI thread.
+     */
+    public void showRunDiagnostics(List<Diagnostic> diagnostics) {
+        List<Diagnostic> copy = List.copyOf(diagnostics);
+        Display d = shell.getDisplay();
+        if (!d.isDisposed()) {
+            d.asyncExec(() -> {
+                if (!shell.isDisposed()) {
+                    problems.setRunDiagnostics(copy);
+                    if (!copy.isEmpty()) {
+                        bottom.setSelection(0);
+                    }
+                }
+            });
         }
     }
 
@@ -288,6 +301,10 @@ public final class IdeWindow {
 
     void runStateChanged() {
         boolean running = runs.running();
+        if (running && !wasRunning) {
+            problems.clearRunDiagnostics();
+        }
+        wasRunning = running;
         toolbar.update(running, running && runs.controller().paused());
         plots.refresh();
         if (!running && program != null) {

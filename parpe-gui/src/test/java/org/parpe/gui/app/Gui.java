@@ -46,15 +46,28 @@ final class Gui {
         }
     }
 
-    /** Handles the events pending now (layout, paint). */
+    /** Handles events for a moment, so that layouts and paints (GTK draws on its frame clock) are done. */
     static void settle() {
         Display display = Display.getDefault();
-        for (int i = 0; i < 20; i++) {
-            while (display.readAndDispatch()) {
-                // Everything queued.
+        long until = System.currentTimeMillis() + 300;
+        while (System.currentTimeMillis() < until) {
+            if (!display.readAndDispatch()) {
+                display.update();
+                try {
+                    Thread.sleep(5);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    fail("interrupted");
+                }
             }
-            display.update();
         }
+    }
+
+    /** Stops the run if any and waits until its end has been reported to the window (through asyncExec). */
+    static void endRun(IdeWindow ide) {
+        boolean started = ide.runs().running() || ide.runs().controller().status() != null;
+        ide.runs().stop();
+        pump(() -> !ide.runs().running() && (!started || ide.runs().lastOutcome() != null), "the run to end");
     }
 
     static Path example(String name) {

@@ -26,8 +26,7 @@ class RunToolBarGuiTest {
     @AfterEach
     void closeWindow() {
         if (ide != null && !ide.shell().isDisposed()) {
-            ide.runs().stop();
-            Gui.pump(() -> !ide.runs().running(), "the run to stop");
+            Gui.endRun(ide);
             ide.shell().dispose();
         }
     }
