@@ -196,13 +196,16 @@ public final class IdeWindow {
         int h = Math.min(920, screen.height);
         shell.setBounds(screen.x + (screen.width - w) / 2, screen.y + (screen.height - h) / 2, w, h);
         shell.open();
-        boolean recovered = !automated && files.offerRecovery(true);
-        if (file != null) {
-            if (!recovered || files.confirmDiscard()) {
+        boolean recovered = !automated && files.offerRecovery();
+        if (!recovered) {
+            if (file != null) {
                 files.openPath(file);
+            } else {
+                files.newFile();
             }
-        } else if (!recovered) {
-            files.newFile();
+        } else if (file != null && !file.toAbsolutePath().normalize().equals(files.file())) {
+            // The recovered text stays in the editor until it is saved or set aside.
+            status.setMessage("Recovered unsaved text; " + file.getFileName() + " was not opened (File > Open it when ready).");
         }
         editor.widget().setFocus();
     }
@@ -313,11 +316,7 @@ public final class IdeWindow {
     }
 
     boolean closeRequested() {
-        if (!files.confirmDiscard()) {
-            return false;
-        }
-        files.closedNormally();
-        return true;
+        return files.confirmDiscard();
     }
 
     /** Appends a line to the Run log. */

@@ -167,9 +167,9 @@ class IdeGuiTest {
     @Order(3)
     void unsavedTextIsKeptForRecovery() {
         ide.files().autosaveNow();
-        Autosave.Recovered r = new Autosave(ide.prefs().home()).find();
-        assertNotNull(r, "no autosave copy of the unsaved text");
-        assertTrue(r.text().contains("up, dwn"));
-        assertEquals(example("hello-snake.xml").toAbsolutePath().normalize(), r.file());
+        List<Autosave.Copy> copies = ide.files().autosave().own();
+        assertEquals(1, copies.size(), "expected one autosave copy of the unsaved text: " + copies);
+        assertTrue(copies.get(0).text().contains("up, dwn"));
+        assertEquals(example("hello-snake.xml").toAbsolutePath().normalize(), copies.get(0).file());
     }
 }
