@@ -5,6 +5,9 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.function.Consumer;
 import org.eclipse.jface.dialogs.MessageDialog;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.FileDialog;
@@ -14,7 +17,8 @@ import org.parpe.gui.editor.ParslEditor;
 /**
  * The document behind the editor: which file it is, whether it has unsaved changes, and the
  * file commands (new, open, save, save as, recent files, examples). Unsaved text is copied to
- * the autosave folder every few seconds and offered back after a crash. UI thread only.
+ * the autosave folder every few seconds and offered back after a crash. Files are read on a
+ * background thread, so opening a large one never freezes the window. UI thread only.
  */
 final class FileActions {
     static final String TEMPLATE = String.join("\n",
@@ -56,6 +60,14 @@ final class FileActions {
     private final Autosave autosave;
     private final Runnable changed;
     private final Runnable switched;
+    private final Consumer<String> message;
+    private final ExecutorService reader = Executors.newSingleThreadExecutor(r -> {
+        Thread t = new Thread(r, "parpe-open");
+        t.setDaemon(true);
+        return t;
+    });
+    private long opening;
+    private boolean reading;
     private Path file;
     private String savedText = "";
     private String autosavedText;
@@ -64,8 +76,12 @@ final class FileActions {
     private boolean loading;
     private Questions questions;
 
-    /** {@code changed} runs after the file, the text or the dirty state changed. */
-    FileActions(Shell shell, ParslEditor editor, Prefs prefs, Runnable changed, Runnable switched) {
+    /**
+     * {@code changed} runs after the file, the text or the dirty state changed, {@code switched}
+     * when another document is shown; {@code message} shows a line in the status bar.
+     */
+    FileActions(Shell shell, ParslEditor editor, Prefs prefs, Runnable changed, Runnable switched, Consumer<String> message) {
+        this.message = message;
         this.switched = switched;
         this.shell = shell;
         this.editor = editor;
@@ -73,9 +89,12 @@ final class FileActions {
         this.autosave = new Autosave(prefs.home());
         this.changed = changed;
         this.slot = autosave.untitledSlot();
-        this.questions = (title, message, buttons) -> new MessageDialog(shell, title, null, message, MessageDialog.QUESTION,
+        this.questions = (title, text, buttons) -> new MessageDialog(shell, title, null, text, MessageDialog.QUESTION,
                 buttons, 0).open();
-        shell.addListener(SWT.Dispose, e -> autosave.close());
+        shell.addListener(SWT.Dispose, e -> {
+            autosave.close();
+            reader.shutdownNow();
+        });
         editor.document().addDocumentListener(new org.eclipse.jface.text.IDocumentListener() {
             @Override
             public void documentAboutToBeChanged(org.eclipse.jface.text.DocumentEvent event) {
@@ -141,17 +160,59 @@ final class FileActions {
         }
     }
 
-    /** Opens {@code p} without asking (the caller has confirmed); false with a message if it cannot be read. */
-    boolean openPath(Path p) {
-        try {
-            String text = Files.readString(p, StandardCharsets.UTF_8);
-            show(p.toAbsolutePath().normalize(), text, text, null);
-            prefs.addRecent(p);
-            return true;
-        } catch (IOException | RuntimeException e) {
-            MessageDialog.openError(shell, "Cannot open file", "Cannot read " + p + ":\n" + describe(e));
-            return false;
+    /**
+     * Opens {@code p} without asking (the caller has confirmed). The file is read on a background
+     * thread and then shown; meanwhile the window works and the editor is read-only. A message
+     * if it cannot be read. A later open, New or recovery wins over one still being read.
+     */
+    void openPath(Path p) {
+        Path abs = p.toAbsolutePath().normalize();
+        long gen = ++opening;
+        reading = true;
+        editor.viewer().setEditable(false);
+        message.accept("Opening " + abs.getFileName() + "\u2026");
+        org.eclipse.swt.widgets.Display display = shell.getDisplay();
+        reader.execute(() -> {
+            String text = null;
+            String error = null;
+            try {
+                text = Files.readString(abs, StandardCharsets.UTF_8);
+            } catch (IOException | RuntimeException e) {
+                error = describe(e);
+            }
+            String t = text;
+            String why = error;
+            try {
+                display.asyncExec(() -> opened(gen, abs, t, why));
+            } catch (org.eclipse.swt.SWTException e) {
+                // The window closed while the file was read.
+            }
+        });
+    }
+
+    private void opened(long gen, Path abs, String text, String error) {
+        if (shell.isDisposed() || gen != opening) {
+            return;
         }
+        if (text == null) {
+            stopReading();
+            message.accept("");
+            MessageDialog.openError(shell, "Cannot open file", "Cannot read " + abs + ":\n" + error);
+            return;
+        }
+        show(abs, text, text, null);
+        prefs.addRecent(abs);
+    }
+
+    private void stopReading() {
+        opening++;
+        reading = false;
+        editor.viewer().setEditable(true);
+    }
+
+    /** Whether a file is being read (the editor is read-only meanwhile). */
+    boolean reading() {
+        return reading;
     }
 
     /** Asks first if there are unsaved changes, then opens {@code p}. */
@@ -163,6 +224,7 @@ final class FileActions {
 
     /** Puts a document in the editor; {@code recoveredSlot} is the autosave slot of recovered text, else null. */
     private void show(Path p, String text, String saved, String recoveredSlot) {
+        stopReading();
         loading = true;
         try {
             editor.setText(text);
@@ -315,7 +377,7 @@ final class FileActions {
         }
     }
 
-    private static String describe(Exception e) {
+    private static String describe(Throwable e) {
         return e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
     }
 }

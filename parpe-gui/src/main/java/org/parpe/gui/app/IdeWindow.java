@@ -106,7 +106,7 @@ public final class IdeWindow {
 
         status = new StatusBar(shell);
         status.control().setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
-        files = new FileActions(shell, editor, prefs, this::documentChanged, this::fileSwitched);
+        files = new FileActions(shell, editor, prefs, this::documentChanged, this::fileSwitched, status::setMessage);
         new MenuBar(this).install();
         wire(display);
     }
@@ -226,7 +226,7 @@ public final class IdeWindow {
         String mark = files.dirty() ? "*" : "";
         editorTab.setText(mark + files.name());
         shell.setText(mark + files.name() + " \u2014 PARPE");
-        validator.schedule(files.pathForLoading(), editor.document().get(), this::showValidation);
+        validator.schedule(files.pathForLoading(), editor.document(), this::showValidation);
     }
 
     /** Shows a load result: markers, Problems, outline, controls, plots and the robot preview. */
@@ -244,14 +244,16 @@ public final class IdeWindow {
         }
         long errors = problems.errorCount();
         if (!runs.running()) {
-            status.setMessage(errors == 0 ? "No problems" : errors + " error(s): see Problems");
+            status.setMessage((errors == 0 ? "No problems" : errors + " error(s): see Problems")
+                    + (editor.plain() ? "   \u2014   no colouring: the file is over " + ParslEditor.COLOUR_LIMIT / 1_000_000 + " MB" : ""));
         }
     }
 
     /** The Problems view changed: mark this file's problems in the editor. */
     private void markProblems() {
         Path mine = files.pathForLoading().toAbsolutePath().normalize();
-        editor.setDiagnostics(problems.shown().stream().filter(d -> sameFile(d.pos(), mine)).toList());
+        editor.setDiagnostics(problems.shown().stream().filter(d -> sameFile(d.pos(), mine))
+                .limit(ParslEditor.MARKER_LIMIT).toList());
     }
 
     private static boolean sameFile(SourcePos p, Path mine) {
@@ -373,6 +375,10 @@ public final class IdeWindow {
 
     public ControlPanel controls() {
         return controls;
+    }
+
+    OutlineView outline() {
+        return outline;
     }
 
     public ProblemsView problems() {

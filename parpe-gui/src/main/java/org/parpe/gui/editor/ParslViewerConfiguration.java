@@ -1,6 +1,9 @@
 package org.parpe.gui.editor;
 
+import java.util.function.BooleanSupplier;
 import org.eclipse.jface.text.IDocument;
+import org.eclipse.jface.text.ITypedRegion;
+import org.eclipse.jface.text.TextPresentation;
 import org.eclipse.jface.text.IUndoManager;
 import org.eclipse.jface.text.TextViewerUndoManager;
 import org.eclipse.jface.text.contentassist.ContentAssistant;
@@ -17,9 +20,12 @@ import org.eclipse.swt.SWT;
 /** Colouring, content assist, hovers and undo of the PARSL source viewer. */
 final class ParslViewerConfiguration extends SourceViewerConfiguration {
     private final IAnnotationHover hover;
+    private final BooleanSupplier plain;
 
-    ParslViewerConfiguration(IAnnotationHover hover) {
+    /** {@code plain} says when not to colour (a very large text). */
+    ParslViewerConfiguration(IAnnotationHover hover, BooleanSupplier plain) {
         this.hover = hover;
+        this.plain = plain;
     }
 
     @Override
@@ -37,8 +43,15 @@ final class ParslViewerConfiguration extends SourceViewerConfiguration {
         return r;
     }
 
-    private static void add(PresentationReconciler r, ITokenScanner scanner, String type) {
-        DefaultDamagerRepairer dr = new DefaultDamagerRepairer(scanner);
+    private void add(PresentationReconciler r, ITokenScanner scanner, String type) {
+        DefaultDamagerRepairer dr = new DefaultDamagerRepairer(scanner) {
+            @Override
+            public void createPresentation(TextPresentation presentation, ITypedRegion region) {
+                if (!plain.getAsBoolean()) {
+                    super.createPresentation(presentation, region);
+                }
+            }
+        };
         r.setDamager(dr, type);
         r.setRepairer(dr, type);
     }

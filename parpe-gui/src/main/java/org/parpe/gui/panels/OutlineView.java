@@ -1,5 +1,7 @@
 package org.parpe.gui.panels;
 
+import java.util.LinkedHashMap;
+import java.util.Map;
 import java.util.function.Consumer;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Composite;
@@ -19,10 +21,16 @@ import org.parpe.core.model.StateDef;
 /**
  * The outline of the last program that loaded: robot groups, parameters, controls, states,
  * automata, behaviors with their instances, and the main sequence. Selecting a node jumps to
- * its definition.
+ * its definition. A section lists at most {@link #SECTION_LIMIT} entries and then says how many
+ * more there are: native tree rows cost about a millisecond each, so a generated script with a
+ * hundred thousand states would otherwise freeze the window for minutes.
  */
 public final class OutlineView {
+    /** Entries shown per section (and per behavior). */
+    public static final int SECTION_LIMIT = 500;
+
     private final Tree tree;
+    private final Map<TreeItem, Integer> hidden = new LinkedHashMap<>();
 
     /** Creates the view; {@code jump} receives the place the user picked. */
     public OutlineView(Composite parent, Consumer<SourcePos> jump) {
@@ -43,9 +51,12 @@ public final class OutlineView {
     public void show(Program program) {
         tree.setRedraw(false);
         tree.removeAll();
+        hidden.clear();
         if (program != null) {
             fill(program);
         }
+        hidden.forEach((section, n) -> new TreeItem(section, SWT.NONE).setText("\u2026 and " + n + " more"));
+        hidden.clear();
         tree.setRedraw(true);
     }
 
@@ -102,7 +113,12 @@ public final class OutlineView {
         return it;
     }
 
-    private static TreeItem node(TreeItem parent, String text, SourcePos pos) {
+    /** Adds an entry under {@code parent}, or counts it as hidden once the section is full (then returns {@code parent}). */
+    private TreeItem node(TreeItem parent, String text, SourcePos pos) {
+        if (parent.getItemCount() >= SECTION_LIMIT) {
+            hidden.merge(parent, 1, Integer::sum);
+            return parent;
+        }
         TreeItem it = new TreeItem(parent, SWT.NONE);
         it.setText(text);
         it.setData(pos);

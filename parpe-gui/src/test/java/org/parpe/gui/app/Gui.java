@@ -70,6 +70,13 @@ final class Gui {
         pump(() -> !ide.runs().running() && (!started || ide.runs().lastOutcome() != null), "the run to end");
     }
 
+    /** Opens {@code file} in {@code ide} and waits until it is in the editor (files are read in the background). */
+    static void open(IdeWindow ide, Path file) {
+        Path abs = file.toAbsolutePath().normalize();
+        ide.files().openPath(abs);
+        pump(() -> !ide.files().reading() && abs.equals(ide.files().file()), "opening " + file.getFileName());
+    }
+
     static Path example(String name) {
         Path p = Examples.folder() == null ? null : Examples.folder().resolve(name);
         assertTrue(p != null && Files.isRegularFile(p), "example " + name + " not found (parpe.examples=" + System.getProperty("parpe.examples") + ")");

@@ -101,7 +101,7 @@ class IdeGuiTest {
     @Test
     @Order(1)
     void runsAnExampleInTheSimulatorAndSteersItWithAControl() throws Exception {
-        ide.files().openPath(example("teleop-dirwave.xml"));
+        Gui.open(ide, example("teleop-dirwave.xml"));
         int before = ide.validations();
         pump(() -> ide.validations() > before && ide.program() != null, "teleop-dirwave.xml to load");
         assertEquals(0, ide.problems().errorCount(), "example has errors: " + ide.problems().shown());
@@ -133,7 +133,7 @@ class IdeGuiTest {
     @Test
     @Order(2)
     void aBrokenScriptShowsAnErrorMarkerAtTheRightLine() throws Exception {
-        ide.files().openPath(example("hello-snake.xml"));
+        Gui.open(ide, example("hello-snake.xml"));
         String text = Files.readString(example("hello-snake.xml"));
         List<String> lines = List.of(text.split("\n", -1));
         int line = -1;
