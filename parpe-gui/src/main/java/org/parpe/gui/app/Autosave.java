@@ -116,12 +116,16 @@ public final class Autosave implements AutoCloseable {
         return copies(mine);
     }
 
-    /** The copies left by IDEs that no longer run (their lock is free), newest first. */
+    /** The copies left by IDEs that no longer run (their lock is free), newest first; their empty folders are removed. */
     public List<Copy> orphans() {
         List<Copy> out = new ArrayList<>();
         for (Path dir : folders()) {
             if (!dir.equals(mine) && !alive(dir)) {
-                out.addAll(copies(dir));
+                List<Copy> left = copies(dir);
+                out.addAll(left);
+                if (left.isEmpty()) {
+                    removeIfEmpty(dir); // an IDE killed with nothing unsaved
+                }
             }
         }
         out.sort(Comparator.comparingLong(Copy::modified).reversed());

@@ -30,7 +30,8 @@ public final class OutlineView {
     public static final int SECTION_LIMIT = 500;
 
     private final Tree tree;
-    private final Map<TreeItem, Integer> hidden = new LinkedHashMap<>();
+    /** Entries per section of the outline being filled (counted here: asking the native tree is slow). */
+    private final Map<TreeItem, Integer> entries = new LinkedHashMap<>();
 
     /** Creates the view; {@code jump} receives the place the user picked. */
     public OutlineView(Composite parent, Consumer<SourcePos> jump) {
@@ -51,12 +52,15 @@ public final class OutlineView {
     public void show(Program program) {
         tree.setRedraw(false);
         tree.removeAll();
-        hidden.clear();
         if (program != null) {
             fill(program);
         }
-        hidden.forEach((section, n) -> new TreeItem(section, SWT.NONE).setText("\u2026 and " + n + " more"));
-        hidden.clear();
+        entries.forEach((section, n) -> {
+            if (n > SECTION_LIMIT) {
+                new TreeItem(section, SWT.NONE).setText("\u2026 and " + (n - SECTION_LIMIT) + " more");
+            }
+        });
+        entries.clear();
         tree.setRedraw(true);
     }
 
@@ -115,8 +119,7 @@ public final class OutlineView {
 
     /** Adds an entry under {@code parent}, or counts it as hidden once the section is full (then returns {@code parent}). */
     private TreeItem node(TreeItem parent, String text, SourcePos pos) {
-        if (parent.getItemCount() >= SECTION_LIMIT) {
-            hidden.merge(parent, 1, Integer::sum);
+        if (entries.merge(parent, 1, Integer::sum) > SECTION_LIMIT) {
             return parent;
         }
         TreeItem it = new TreeItem(parent, SWT.NONE);

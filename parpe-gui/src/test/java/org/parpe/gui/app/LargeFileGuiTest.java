@@ -31,29 +31,9 @@ class LargeFileGuiTest {
         }
     }
 
-    /** A valid script of about {@code bytes} bytes: hello-snake with many extra states. */
-    static String largeScript(int bytes) {
-        StringBuilder sb = new StringBuilder("""
-                <?xml version="1.0" ?>
-                <program>
-                  <robot><structure><group1 elements="0,2,4,6" /></structure></robot>
-                  <main><simpleWave /></main>
-                  <behaviors><simpleWave><wave group="group1" phase="0.25" period="1" /></simpleWave></behaviors>
-                  <automata><wave states="up, down" /></automata>
-                  <states>
-                    <up angles="30" />
-                    <down angles="-30" />
-                """);
-        for (int i = 0; sb.length() < bytes; i++) {
-            sb.append("    <s").append(i).append(" angles=\"").append(i % 60 - 30).append("\" />  <!-- filler state ")
-                    .append(i).append(" -->\n");
-        }
-        return sb.append("  </states>\n</program>\n").toString();
-    }
-
     @Test
     void opensAFiveMegabyteScriptWhileTheWindowKeepsWorking() throws Exception {
-        String text = largeScript(5 << 20);
+        String text = Bench.largeScript(5 << 20);
         Path big = dir.resolve("big.xml");
         Files.writeString(big, text);
         ide = new IdeWindow(Gui.display(), new Prefs(dir.resolve("home")));
