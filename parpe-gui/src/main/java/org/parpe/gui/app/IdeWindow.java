@@ -62,7 +62,6 @@ public final class IdeWindow {
         shell = new Shell(display, SWT.SHELL_TRIM);
         shell.setText("PARPE");
         shell.setLayout(grid(1, 0));
-        validator = new Validator(display);
         runs = new RunActions(this);
         toolbar = new RunToolBar(shell, runs, prefs);
         toolbar.control().setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
@@ -77,6 +76,7 @@ public final class IdeWindow {
         CTabFolder editorFolder = Panels.folder(middle);
         Composite editorBox = Panels.fill(editorFolder);
         editor = new ParslEditor(editorBox);
+        validator = new Validator(display, editor::setNames);
         editorTab = Panels.tab(editorFolder, "untitled.xml", editorBox);
         bottom = Panels.folder(middle);
         problems = new ProblemsView(bottom, d -> reveal(d.pos()), this::markProblems);

@@ -53,6 +53,7 @@ public final class ParslEditor {
     private final AnnotationModel annotations = new AnnotationModel();
     private final IDocumentPartitioner partitioner = new FastPartitioner(XmlScanners.partitionScanner(), XmlScanners.TYPES);
     private boolean plain;
+    private volatile NameIndex backgroundNames = NameIndex.of("");
 
     /** Creates the editor in {@code parent}. */
     public ParslEditor(Composite parent) {
@@ -66,7 +67,7 @@ public final class ParslEditor {
         ruler.addDecorator(0, marks);
         ruler.addDecorator(1, lines);
         viewer = new SourceViewer(parent, ruler, null, false, SWT.V_SCROLL | SWT.H_SCROLL | SWT.MULTI | SWT.BORDER);
-        viewer.configure(new ParslViewerConfiguration(hover(), () -> plain));
+        viewer.configure(new ParslViewerConfiguration(hover(), () -> plain, this::names));
         partitioner.connect(document);
         document.setDocumentPartitioner(partitioner);
         viewer.setDocument(document, annotations);
@@ -129,6 +130,19 @@ public final class ParslEditor {
         }
         viewer.getUndoManager().reset();
         viewer.setSelectedRange(0, 0);
+    }
+
+    /**
+     * The names {@code text} defines, for completion: scanned now, or for a text over
+     * {@link #COLOUR_LIMIT} (a scan takes about a second at 10 MB) the last background scan.
+     */
+    public NameIndex names(String text) {
+        return text.length() > COLOUR_LIMIT ? backgroundNames : NameIndex.of(text);
+    }
+
+    /** Keeps the names of a large text, scanned off the UI thread (by the {@link Validator}). */
+    public void setNames(NameIndex names) {
+        backgroundNames = names;
     }
 
     /** Whether the text is shown without colouring (it was too large when opened). */

@@ -1,6 +1,7 @@
 package org.parpe.gui.editor;
 
 import java.util.function.BooleanSupplier;
+import java.util.function.Function;
 import org.eclipse.jface.text.IDocument;
 import org.eclipse.jface.text.ITypedRegion;
 import org.eclipse.jface.text.TextPresentation;
@@ -21,11 +22,13 @@ import org.eclipse.swt.SWT;
 final class ParslViewerConfiguration extends SourceViewerConfiguration {
     private final IAnnotationHover hover;
     private final BooleanSupplier plain;
+    private final Function<String, NameIndex> names;
 
-    /** {@code plain} says when not to colour (a very large text). */
-    ParslViewerConfiguration(IAnnotationHover hover, BooleanSupplier plain) {
+    /** {@code plain} says when not to colour (a very large text); {@code names} gives the names a text defines. */
+    ParslViewerConfiguration(IAnnotationHover hover, BooleanSupplier plain, Function<String, NameIndex> names) {
         this.hover = hover;
         this.plain = plain;
+        this.names = names;
     }
 
     @Override
@@ -59,7 +62,7 @@ final class ParslViewerConfiguration extends SourceViewerConfiguration {
     @Override
     public IContentAssistant getContentAssistant(ISourceViewer sourceViewer) {
         ContentAssistant a = new ContentAssistant();
-        ParslAssistProcessor p = new ParslAssistProcessor();
+        ParslAssistProcessor p = new ParslAssistProcessor(names);
         for (String type : getConfiguredContentTypes(sourceViewer)) {
             a.setContentAssistProcessor(p, type);
         }

@@ -34,9 +34,12 @@ public final class Validator implements AutoCloseable {
         return t;
     });
     private final AtomicLong generation = new AtomicLong();
+    private final Consumer<NameIndex> names;
 
-    public Validator(Display display) {
+    /** {@code names} receives, on the UI thread, the names of each text too large to scan at a keystroke. */
+    public Validator(Display display, Consumer<NameIndex> names) {
         this.display = display;
+        this.names = names;
     }
 
     /**
@@ -57,9 +60,13 @@ public final class Validator implements AutoCloseable {
                     return;
                 }
                 LoadResult r = load(file, text, Map.of());
+                NameIndex index = text.length() > ParslEditor.COLOUR_LIMIT ? NameIndex.of(text) : null;
                 if (!display.isDisposed()) {
                     display.asyncExec(() -> {
                         if (gen == generation.get()) {
+                            if (index != null) {
+                                names.accept(index);
+                            }
                             onResult.accept(r);
                         }
                     });

@@ -61,6 +61,8 @@ class LargeFileGuiTest {
                 "the large script to be validated");
         Gui.pump(() -> ide.program() != null && ide.program().states().size() > 2, "the large script to load");
         assertEquals(0, ide.problems().errorCount(), "generated script has errors: " + ide.problems().shown());
+        assertTrue(ide.editor().names(text).states().contains("s1000"),
+                "completion should know the states of the large script (scanned in the background)");
         Tree tree = ide.outline().control();
         int shown = 0;
         for (TreeItem section : tree.getItems()) {
