@@ -305,6 +305,7 @@ final class FileActions {
             case 1 -> {
                 if (!recovered) {
                     autosave.clear(slot);
+                    autosavedText = null; // copied again if the text stays after all (Open cancelled)
                 }
                 yield true;
             }

@@ -284,9 +284,11 @@ public final class IdeWindow {
      */
     public void showRunDiagnostics(List<Diagnostic> diagnostics) {
         List<Diagnostic> copy = List.copyOf(diagnostics);
-        Display d = shell.getDisplay();
-        if (!d.isDisposed()) {
-            d.asyncExec(() -> {
+        if (shell.isDisposed()) {
+            return;
+        }
+        try {
+            shell.getDisplay().asyncExec(() -> {
                 if (!shell.isDisposed()) {
                     problems.setRunDiagnostics(copy);
                     if (!copy.isEmpty()) {
@@ -294,6 +296,8 @@ public final class IdeWindow {
                     }
                 }
             });
+        } catch (org.eclipse.swt.SWTException e) {
+            // The window closed meanwhile: nobody is left to show them to.
         }
     }
 
