@@ -21,7 +21,7 @@ public record LaunchOptions(Path file, double runFor, Path screenshot, boolean e
             "  --run-for S       run the script in the simulator for S seconds of simulated time",
             "  --screenshot F    save a PNG picture of the window (after the run, if any)",
             "  --exit            close the IDE when done",
-            "  --bench           print window-up time and 3D frame rate (centipede) as name=value lines, then exit");
+            "  --bench           print window-up time, 3D frame rate (centipede) and opening a 10 MB script as name=value lines, then exit");
 
     /** Whether anything automatic is requested. */
     public boolean automated() {

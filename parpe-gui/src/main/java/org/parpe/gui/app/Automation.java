@@ -116,9 +116,6 @@ public final class Automation {
         }
         if (options.exit()) {
             ide.files().autosaveNow();
-            if (!ide.files().dirty()) {
-                ide.files().closedNormally();
-            }
             ide.shell().dispose();
         }
     }

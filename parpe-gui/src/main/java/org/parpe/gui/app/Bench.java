@@ -16,9 +16,10 @@ import org.parpe.sim.config.RobotConfig;
 import org.parpe.sim.config.RobotConfigs;
 
 /**
- * {@code parpe gui --bench}: measures how long the window takes to come up and how many frames
- * per second the 3D view draws for the 55-module centipede, and prints {@code name=value}
- * lines. A measurement, not a test: nothing here passes or fails on a timing.
+ * {@code parpe gui --bench}: measures how long the window takes to come up, how many frames
+ * per second the 3D view draws for the 55-module centipede, and how opening a generated 10 MB
+ * script goes, and prints {@code name=value} lines. A measurement, not a test: nothing here
+ * passes or fails on a timing.
  */
 public final class Bench {
     private static final int WARMUP = 40;
@@ -77,8 +78,72 @@ public final class Bench {
         print("view_fullscreen_width_px", c.getSize().x);
         print("view_fullscreen_height_px", c.getSize().y);
         print("fps_centipede_fullscreen", fps(display, view));
+        try {
+            openLarge(display, ide, home);
+        } catch (java.io.IOException e) {
+            System.err.println("parpe gui: error: cannot write the large script: " + e.getMessage());
+            return 2;
+        }
         ide.shell().dispose();
         return 0;
+    }
+
+    /** A valid script of about {@code chars} characters: a snake wave and many extra states. */
+    static String largeScript(int chars) {
+        StringBuilder sb = new StringBuilder(String.join("\n", "<?xml version=\"1.0\" ?>", "<program>",
+                "  <robot><structure><group1 elements=\"0,2,4,6\" /></structure></robot>",
+                "  <main><simpleWave /></main>",
+                "  <behaviors><simpleWave><wave group=\"group1\" phase=\"0.25\" period=\"1\" /></simpleWave></behaviors>",
+                "  <automata><wave states=\"up, down\" /></automata>",
+                "  <states>", "    <up angles=\"30\" />", "    <down angles=\"-30\" />", ""));
+        for (int i = 0; sb.length() < chars; i++) {
+            sb.append("    <s").append(i).append(" angles=\"").append(i % 60 - 30).append("\" />  <!-- filler state ")
+                    .append(i).append(" -->\n");
+        }
+        return sb.append("  </states>\n</program>\n").toString();
+    }
+
+    /**
+     * Opens a generated 10 MB script: time until it is in the editor and until it is validated,
+     * the longest time the UI thread handled no event meanwhile, and the heap afterwards.
+     */
+    private static void openLarge(Display display, IdeWindow ide, Path home) throws java.io.IOException {
+        Path big = home.resolve("large-10mb.xml");
+        Files.writeString(big, largeScript(10 << 20));
+        int before = ide.validations();
+        long[] last = {System.nanoTime(), 0};
+        Runnable[] tick = new Runnable[1];
+        tick[0] = () -> {
+            long now = System.nanoTime();
+            last[1] = Math.max(last[1], now - last[0]);
+            last[0] = now;
+            display.timerExec(5, tick[0]);
+        };
+        long t0 = System.nanoTime();
+        display.timerExec(5, tick[0]);
+        ide.files().openPath(big);
+        while (ide.files().reading() && !ide.shell().isDisposed()) {
+            step(display);
+        }
+        long shown = System.nanoTime();
+        long limit = shown + 120_000_000_000L;
+        while (ide.validations() == before && System.nanoTime() < limit) {
+            step(display);
+        }
+        drain(display);
+        display.timerExec(-1, tick[0]);
+        print("open_10mb_shown_ms", (shown - t0) / 1e6);
+        print("open_10mb_validated_ms", (System.nanoTime() - t0) / 1e6);
+        print("open_10mb_longest_ui_stall_ms", last[1] / 1e6);
+        System.gc();
+        Runtime rt = Runtime.getRuntime();
+        print("open_10mb_heap_used_mb", (rt.totalMemory() - rt.freeMemory()) / 1e6);
+    }
+
+    private static void step(Display display) {
+        if (!display.readAndDispatch()) {
+            display.sleep();
+        }
     }
 
     /** Frames actually painted on screen per second when the view asks for a new frame as soon as the last is done. */

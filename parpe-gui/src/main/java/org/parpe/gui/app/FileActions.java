@@ -5,6 +5,9 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.function.Consumer;
 import org.eclipse.jface.dialogs.MessageDialog;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.FileDialog;
@@ -14,7 +17,8 @@ import org.parpe.gui.editor.ParslEditor;
 /**
  * The document behind the editor: which file it is, whether it has unsaved changes, and the
  * file commands (new, open, save, save as, recent files, examples). Unsaved text is copied to
- * the autosave folder every few seconds and offered back after a crash. UI thread only.
+ * the autosave folder every few seconds and offered back after a crash. Files are read on a
+ * background thread, so opening a large one never freezes the window. UI thread only.
  */
 final class FileActions {
     static final String TEMPLATE = String.join("\n",
@@ -44,25 +48,53 @@ final class FileActions {
             "");
     private static final int AUTOSAVE_MS = 3000;
 
+    /** Asks a question with buttons and returns the index of the answer (-1: dialog closed); tests answer without a dialog. */
+    @FunctionalInterface
+    interface Questions {
+        int ask(String title, String message, String... buttons);
+    }
+
     private final Shell shell;
     private final ParslEditor editor;
     private final Prefs prefs;
     private final Autosave autosave;
     private final Runnable changed;
     private final Runnable switched;
+    private final Consumer<String> message;
+    private final ExecutorService reader = Executors.newSingleThreadExecutor(r -> {
+        Thread t = new Thread(r, "parpe-open");
+        t.setDaemon(true);
+        return t;
+    });
+    private long opening;
+    private boolean reading;
     private Path file;
     private String savedText = "";
     private String autosavedText;
+    private String slot;
+    private boolean recovered;
     private boolean loading;
+    private Questions questions;
 
-    /** {@code changed} runs after the file, the text or the dirty state changed. */
-    FileActions(Shell shell, ParslEditor editor, Prefs prefs, Runnable changed, Runnable switched) {
+    /**
+     * {@code changed} runs after the file, the text or the dirty state changed, {@code switched}
+     * when another document is shown; {@code message} shows a line in the status bar.
+     */
+    FileActions(Shell shell, ParslEditor editor, Prefs prefs, Runnable changed, Runnable switched, Consumer<String> message) {
+        this.message = message;
         this.switched = switched;
         this.shell = shell;
         this.editor = editor;
         this.prefs = prefs;
         this.autosave = new Autosave(prefs.home());
         this.changed = changed;
+        this.slot = autosave.untitledSlot();
+        this.questions = (title, text, buttons) -> new MessageDialog(shell, title, null, text, MessageDialog.QUESTION,
+                buttons, 0).open();
+        shell.addListener(SWT.Dispose, e -> {
+            autosave.close();
+            reader.shutdownNow();
+        });
         editor.document().addDocumentListener(new org.eclipse.jface.text.IDocumentListener() {
             @Override
             public void documentAboutToBeChanged(org.eclipse.jface.text.DocumentEvent event) {
@@ -92,13 +124,23 @@ final class FileActions {
         return file == null ? "untitled.xml" : file.getFileName().toString();
     }
 
+    /** Whether the text is not saved: it differs from the file, or it was recovered and not saved since. */
     boolean dirty() {
-        return !editor.document().get().equals(savedText);
+        return recovered || !editor.document().get().equals(savedText);
+    }
+
+    /** Answers the questions of this class with {@code q} instead of dialogs (tests). */
+    void answerWith(Questions q) {
+        questions = q;
+    }
+
+    Autosave autosave() {
+        return autosave;
     }
 
     void newFile() {
         if (confirmDiscard()) {
-            show(null, TEMPLATE, TEMPLATE);
+            show(null, TEMPLATE, TEMPLATE, null);
         }
     }
 
@@ -118,17 +160,59 @@ final class FileActions {
         }
     }
 
-    /** Opens {@code p} without asking (the caller has confirmed); false with a message if it cannot be read. */
-    boolean openPath(Path p) {
-        try {
-            String text = Files.readString(p, StandardCharsets.UTF_8);
-            show(p.toAbsolutePath().normalize(), text, text);
-            prefs.addRecent(p);
-            return true;
-        } catch (IOException | RuntimeException e) {
-            MessageDialog.openError(shell, "Cannot open file", "Cannot read " + p + ":\n" + describe(e));
-            return false;
+    /**
+     * Opens {@code p} without asking (the caller has confirmed). The file is read on a background
+     * thread and then shown; meanwhile the window works and the editor is read-only. A message
+     * if it cannot be read. A later open, New or recovery wins over one still being read.
+     */
+    void openPath(Path p) {
+        Path abs = p.toAbsolutePath().normalize();
+        long gen = ++opening;
+        reading = true;
+        editor.viewer().setEditable(false);
+        message.accept("Opening " + abs.getFileName() + "\u2026");
+        org.eclipse.swt.widgets.Display display = shell.getDisplay();
+        reader.execute(() -> {
+            String text = null;
+            String error = null;
+            try {
+                text = Files.readString(abs, StandardCharsets.UTF_8);
+            } catch (IOException | RuntimeException e) {
+                error = describe(e);
+            }
+            String t = text;
+            String why = error;
+            try {
+                display.asyncExec(() -> opened(gen, abs, t, why));
+            } catch (org.eclipse.swt.SWTException e) {
+                // The window closed while the file was read.
+            }
+        });
+    }
+
+    private void opened(long gen, Path abs, String text, String error) {
+        if (shell.isDisposed() || gen != opening) {
+            return;
         }
+        if (text == null) {
+            stopReading();
+            message.accept("");
+            MessageDialog.openError(shell, "Cannot open file", "Cannot read " + abs + ":\n" + error);
+            return;
+        }
+        show(abs, text, text, null);
+        prefs.addRecent(abs);
+    }
+
+    private void stopReading() {
+        opening++;
+        reading = false;
+        editor.viewer().setEditable(true);
+    }
+
+    /** Whether a file is being read (the editor is read-only meanwhile). */
+    boolean reading() {
+        return reading;
     }
 
     /** Asks first if there are unsaved changes, then opens {@code p}. */
@@ -138,7 +222,9 @@ final class FileActions {
         }
     }
 
-    private void show(Path p, String text, String saved) {
+    /** Puts a document in the editor; {@code recoveredSlot} is the autosave slot of recovered text, else null. */
+    private void show(Path p, String text, String saved, String recoveredSlot) {
+        stopReading();
         loading = true;
         try {
             editor.setText(text);
@@ -147,7 +233,9 @@ final class FileActions {
         }
         file = p;
         savedText = saved;
-        autosavedText = null;
+        recovered = recoveredSlot != null;
+        slot = recovered ? recoveredSlot : p == null ? autosave.untitledSlot() : Autosave.slotFor(p);
+        autosavedText = recovered ? text : null;
         switched.run();
         changed.run();
     }
@@ -186,7 +274,10 @@ final class FileActions {
             Files.writeString(tmp, text, StandardCharsets.UTF_8);
             Files.move(tmp, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
             savedText = text;
-            autosave.clear();
+            recovered = false;
+            autosave.clear(slot);
+            slot = Autosave.slotFor(target);
+            autosave.clear(slot);
             changed.run();
             return true;
         } catch (IOException | RuntimeException e) {
@@ -196,47 +287,70 @@ final class FileActions {
         }
     }
 
-    /** True if there is nothing unsaved, or the user saved or chose to discard it. */
+    /**
+     * True if there is nothing unsaved, or the user saved it or chose not to. "Don't Save"
+     * deletes the autosave copy of edited text, but keeps that of recovered text (it is offered
+     * again at the next start): only saving it, or "Discard" when offered, removes it.
+     */
     boolean confirmDiscard() {
         if (!dirty()) {
             return true;
         }
-        MessageDialog d = new MessageDialog(shell, "Unsaved changes", null,
-                name() + " has unsaved changes. Save them?", MessageDialog.QUESTION,
-                new String[] {"Save", "Don't Save", "Cancel"}, 0);
-        return switch (d.open()) {
+        String message = recovered
+                ? name() + " holds recovered text that is not saved. Save it?\n\nIf you don't, the recovered copy is kept"
+                        + " and offered again when PARPE starts."
+                : name() + " has unsaved changes. Save them?";
+        return switch (questions.ask("Unsaved changes", message, "Save", "Don't Save", "Cancel")) {
             case 0 -> save();
-            case 1 -> true;
+            case 1 -> {
+                if (!recovered) {
+                    autosave.clear(slot);
+                    autosavedText = null; // copied again if the text stays after all (Open cancelled)
+                }
+                yield true;
+            }
             default -> false;
         };
     }
 
-    /** Clears the autosave copy (normal exit after the user saved or discarded). */
-    void closedNormally() {
-        autosave.clear();
+    /**
+     * Offers the copies left by IDEs that are gone (killed, crashed), newest first, until one is
+     * recovered or the user says "Not Now"; "Discard" deletes a copy. True if one was recovered:
+     * it is then in the editor as unsaved text.
+     */
+    boolean offerRecovery() {
+        for (Autosave.Copy c : autosave.orphans()) {
+            String where = c.file() == null ? "an untitled script" : c.file().getFileName().toString();
+            int answer = questions.ask("Recover unsaved work", "A PARPE window closed without saving " + where
+                    + ". Recover its unsaved text?", "Recover", "Discard", "Not Now");
+            if (answer == 1) {
+                autosave.discard(c);
+            } else if (answer == 0) {
+                return recover(c);
+            } else {
+                return false;
+            }
+        }
+        return false;
     }
 
-    /** Offers the text an earlier session left unsaved; true if it was restored. */
-    boolean offerRecovery(boolean ask) {
-        Autosave.Recovered r = autosave.find();
-        if (r == null) {
-            return false;
-        }
-        String where = r.file() == null ? "an untitled script" : r.file().getFileName().toString();
-        if (ask && !MessageDialog.openQuestion(shell, "Recover unsaved work",
-                "PARPE did not close normally last time. Recover the unsaved text of " + where + "?")) {
-            autosave.clear();
+    private boolean recover(Autosave.Copy c) {
+        String adopted;
+        try {
+            adopted = autosave.adopt(c);
+        } catch (IOException e) {
+            MessageDialog.openError(shell, "Cannot recover", "Cannot take over the copy of unsaved text: " + describe(e));
             return false;
         }
         String saved = "";
-        if (r.file() != null && Files.isRegularFile(r.file())) {
+        if (c.file() != null && Files.isRegularFile(c.file())) {
             try {
-                saved = Files.readString(r.file(), StandardCharsets.UTF_8);
+                saved = Files.readString(c.file(), StandardCharsets.UTF_8);
             } catch (IOException e) {
                 saved = "";
             }
         }
-        show(r.file(), r.text(), saved);
+        show(c.file(), c.text(), saved, adopted);
         return true;
     }
 
@@ -257,14 +371,14 @@ final class FileActions {
             return;
         }
         try {
-            autosave.write(file, text);
+            autosave.write(slot, file, text);
             autosavedText = text;
         } catch (IOException e) {
             // Keep editing; the next attempt may succeed (disk full, folder removed).
         }
     }
 
-    private static String describe(Exception e) {
+    private static String describe(Throwable e) {
         return e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
     }
 }

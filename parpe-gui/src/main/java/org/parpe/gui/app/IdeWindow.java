@@ -34,6 +34,9 @@ import org.parpe.gui.view3d.View3D;
  */
 public final class IdeWindow {
     private final Shell shell;
+    /** Problems one run may add to the view; more are logged only. */
+    static final int RUN_PROBLEM_LIMIT = 500;
+
     private final Prefs prefs;
     private final ParslEditor editor;
     private final CTabItem editorTab;
@@ -52,15 +55,13 @@ public final class IdeWindow {
     private final RunActions runs;
     private Program program;
     private int validations;
-    private List<Diagnostic> runProblems = List.of();
-    private List<Diagnostic> loadProblems = List.of();
+    private boolean wasRunning;
 
     public IdeWindow(Display display, Prefs prefs) {
         this.prefs = prefs;
         shell = new Shell(display, SWT.SHELL_TRIM);
         shell.setText("PARPE");
         shell.setLayout(grid(1, 0));
-        validator = new Validator(display);
         runs = new RunActions(this);
         toolbar = new RunToolBar(shell, runs, prefs);
         toolbar.control().setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
@@ -75,9 +76,10 @@ public final class IdeWindow {
         CTabFolder editorFolder = Panels.folder(middle);
         Composite editorBox = Panels.fill(editorFolder);
         editor = new ParslEditor(editorBox);
+        validator = new Validator(display, editor::setNames);
         editorTab = Panels.tab(editorFolder, "untitled.xml", editorBox);
         bottom = Panels.folder(middle);
-        problems = new ProblemsView(bottom, d -> reveal(d.pos()));
+        problems = new ProblemsView(bottom, d -> reveal(d.pos()), this::markProblems);
         Panels.tab(bottom, "Problems", problems.control());
         log = new StyledText(bottom, SWT.READ_ONLY | SWT.V_SCROLL | SWT.H_SCROLL | SWT.MULTI);
         log.setFont(org.eclipse.jface.resource.JFaceResources.getTextFont());
@@ -104,7 +106,7 @@ public final class IdeWindow {
 
         status = new StatusBar(shell);
         status.control().setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
-        files = new FileActions(shell, editor, prefs, this::documentChanged, this::fileSwitched);
+        files = new FileActions(shell, editor, prefs, this::documentChanged, this::fileSwitched, status::setMessage);
         new MenuBar(this).install();
         wire(display);
     }
@@ -194,13 +196,16 @@ public final class IdeWindow {
         int h = Math.min(920, screen.height);
         shell.setBounds(screen.x + (screen.width - w) / 2, screen.y + (screen.height - h) / 2, w, h);
         shell.open();
-        boolean recovered = !automated && files.offerRecovery(true);
-        if (file != null) {
-            if (!recovered || files.confirmDiscard()) {
+        boolean recovered = !automated && files.offerRecovery();
+        if (!recovered) {
+            if (file != null) {
                 files.openPath(file);
+            } else {
+                files.newFile();
             }
-        } else if (!recovered) {
-            files.newFile();
+        } else if (file != null && !file.toAbsolutePath().normalize().equals(files.file())) {
+            // The recovered text stays in the editor until it is saved or set aside.
+            status.setMessage("Recovered unsaved text; " + file.getFileName() + " was not opened (File > Open it when ready).");
         }
         editor.widget().setFocus();
     }
@@ -211,9 +216,8 @@ public final class IdeWindow {
         outline.show(null);
         controls.show(null);
         plots.setRecorder(null);
-        loadProblems = List.of();
-        runProblems = List.of();
-        showProblems();
+        problems.setLoadDiagnostics(List.of());
+        problems.clearRunDiagnostics();
         runs.forgetPreview();
         view.clear();
     }
@@ -222,14 +226,13 @@ public final class IdeWindow {
         String mark = files.dirty() ? "*" : "";
         editorTab.setText(mark + files.name());
         shell.setText(mark + files.name() + " \u2014 PARPE");
-        validator.schedule(files.pathForLoading(), editor.document().get(), this::showValidation);
+        validator.schedule(files.pathForLoading(), editor.document(), this::showValidation);
     }
 
     /** Shows a load result: markers, Problems, outline, controls, plots and the robot preview. */
     void showValidation(LoadResult r) {
         validations++;
-        loadProblems = r.diagnostics();
-        showProblems();
+        problems.setLoadDiagnostics(r.diagnostics());
         if (r.program() != null) {
             program = r.program();
             outline.show(program);
@@ -241,16 +244,16 @@ public final class IdeWindow {
         }
         long errors = problems.errorCount();
         if (!runs.running()) {
-            status.setMessage(errors == 0 ? "No problems" : errors + " error(s): see Problems");
+            status.setMessage((errors == 0 ? "No problems" : errors + " error(s): see Problems")
+                    + (editor.plain() ? "   \u2014   no colouring: the file is over " + ParslEditor.COLOUR_LIMIT / 1_000_000 + " MB" : ""));
         }
     }
 
-    private void showProblems() {
-        List<Diagnostic> all = new ArrayList<>(loadProblems);
-        all.addAll(runProblems);
-        problems.show(all);
+    /** The Problems view changed: mark this file's problems in the editor. */
+    private void markProblems() {
         Path mine = files.pathForLoading().toAbsolutePath().normalize();
-        editor.setDiagnostics(all.stream().filter(d -> sameFile(d.pos(), mine)).toList());
+        editor.setDiagnostics(problems.shown().stream().filter(d -> sameFile(d.pos(), mine))
+                .limit(ParslEditor.MARKER_LIMIT).toList());
     }
 
     private static boolean sameFile(SourcePos p, Path mine) {
@@ -262,34 +265,63 @@ public final class IdeWindow {
         }
     }
 
-    /** Forgets the problems of the previous run (a new run starts). */
+    /** Forgets the problems of the previous run (a new run is being prepared); UI thread. */
     void clearRunProblems() {
-        runProblems = List.of();
-        showProblems();
+        problems.clearRunDiagnostics();
     }
 
     /**
-     * Shows a problem reported by the run (a run-time error or warning of the script, a control
-     * value refused, a robot configuration or bus problem) in Problems and the log; any thread.
+     * Adds a problem reported by the run (a run-time error or warning of the script, a control
+     * or parameter value refused, a robot configuration or bus problem) to Problems and the log.
+     * Any thread: the update is posted to the UI thread. A run that reports more than
+     * {@value #RUN_PROBLEM_LIMIT} problems (a bus fault repeating) shows the first ones and
+     * logs the rest.
      */
     void runProblemLater(Diagnostic d) {
-        Display display = shell.getDisplay();
-        if (display.isDisposed()) {
-            return;
-        }
-        display.asyncExec(() -> {
-            if (shell.isDisposed()) {
-                return;
+        post(() -> {
+            List<Diagnostic> now = problems.runDiagnostics();
+            if (now.size() < RUN_PROBLEM_LIMIT) {
+                List<Diagnostic> all = new ArrayList<>(now);
+                all.add(d);
+                problems.setRunDiagnostics(all);
             }
-            List<Diagnostic> all = new ArrayList<>(runProblems);
-            all.add(d);
-            runProblems = List.copyOf(all);
-            showProblems();
             log(d.format());
             if (d.severity() == Severity.ERROR) {
                 bottom.setSelection(0);
             }
         });
+    }
+
+    /**
+     * Shows the diagnostics of a run (run-time errors, overlap warnings, parameter and control
+     * errors, robot configuration and bus faults) in Problems beside the load diagnostics,
+     * replacing the run's earlier ones; they stay until the next run starts or another file is
+     * opened. Any thread: the update is posted to the UI thread.
+     */
+    public void showRunDiagnostics(List<Diagnostic> diagnostics) {
+        List<Diagnostic> copy = List.copyOf(diagnostics);
+        post(() -> {
+            problems.setRunDiagnostics(copy);
+            if (!copy.isEmpty()) {
+                bottom.setSelection(0);
+            }
+        });
+    }
+
+    /** Runs {@code r} on the UI thread unless the window has closed (then nobody is left to tell). */
+    private void post(Runnable r) {
+        if (shell.isDisposed()) {
+            return;
+        }
+        try {
+            shell.getDisplay().asyncExec(() -> {
+                if (!shell.isDisposed()) {
+                    r.run();
+                }
+            });
+        } catch (org.eclipse.swt.SWTException e) {
+            // The display was disposed between the check and the call.
+        }
     }
 
     /** Jumps the editor to {@code pos} (if it is in this file). */
@@ -301,6 +333,10 @@ public final class IdeWindow {
 
     void runStateChanged() {
         boolean running = runs.running();
+        if (running && !wasRunning) {
+            problems.clearRunDiagnostics();
+        }
+        wasRunning = running;
         toolbar.update(running, running && runs.controller().paused());
         plots.refresh();
         if (!running && program != null) {
@@ -309,11 +345,7 @@ public final class IdeWindow {
     }
 
     boolean closeRequested() {
-        if (!files.confirmDiscard()) {
-            return false;
-        }
-        files.closedNormally();
-        return true;
+        return files.confirmDiscard();
     }
 
     /** Appends a line to the Run log. */
@@ -330,14 +362,7 @@ public final class IdeWindow {
 
     /** {@link #log} from any thread. */
     void logLater(String line) {
-        Display d = shell.getDisplay();
-        if (!d.isDisposed()) {
-            d.asyncExec(() -> {
-                if (!shell.isDisposed()) {
-                    log(line);
-                }
-            });
-        }
+        post(() -> log(line));
     }
 
     public Shell shell() {
@@ -370,6 +395,10 @@ public final class IdeWindow {
 
     public ControlPanel controls() {
         return controls;
+    }
+
+    OutlineView outline() {
+        return outline;
     }
 
     public ProblemsView problems() {

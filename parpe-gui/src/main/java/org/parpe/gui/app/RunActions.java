@@ -156,6 +156,9 @@ final class RunActions implements ControlPanel.Target {
         controller.setSpeed(ide.toolbar().speed());
         Run.Builder run = Run.builder(program, RunOptions.defaults(), ide::runProblemLater);
         controller.start(run, b -> attach(b, target, spec, port, recorder), runFor, outcome -> {
+            if (ide.shell().isDisposed()) {
+                return; // the window closed while the run was ending
+            }
             ended(outcome);
             report(onEnd, outcome);
         }, ide::logLater);

@@ -148,6 +148,11 @@ final class RunToolBar {
         speed.select(s.ordinal());
     }
 
+    /** The emergency stop button. */
+    ToolItem emergencyStop() {
+        return estop;
+    }
+
     String port() {
         return port.getText().trim();
     }
@@ -166,5 +171,8 @@ final class RunToolBar {
         pause.setImage(paused ? icons.run : icons.pause);
         stop.setEnabled(running);
         estop.setEnabled(true);
+        // "Resume" is wider than "Pause": without a new layout the tool bar keeps its old width
+        // and the last item, the emergency stop, is pushed out of sight.
+        bar.layout(true, true);
     }
 }

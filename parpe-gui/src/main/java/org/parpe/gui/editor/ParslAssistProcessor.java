@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Function;
 import org.eclipse.jface.text.IDocument;
 import org.eclipse.jface.text.ITextViewer;
 import org.eclipse.jface.text.contentassist.CompletionProposal;
@@ -28,12 +29,19 @@ public final class ParslAssistProcessor implements IContentAssistProcessor {
     private static final List<String> EXPRESSION_ATTRS = List.of("angles", "phase", "offset", "period", "start",
             "cycles", "times", "cond", "exit", "time");
 
+    private final Function<String, NameIndex> index;
+
+    /** {@code index} gives the names defined by a text (scanned now, or kept from a background scan). */
+    public ParslAssistProcessor(Function<String, NameIndex> index) {
+        this.index = index;
+    }
+
     @Override
     public ICompletionProposal[] computeCompletionProposals(ITextViewer viewer, int offset) {
         IDocument doc = viewer.getDocument();
         String text = doc.get();
         XmlContext ctx = XmlContext.at(text, offset);
-        NameIndex names = NameIndex.of(text);
+        NameIndex names = index.apply(text);
         Map<String, String> candidates = switch (ctx.kind()) {
             case ELEMENT_NAME -> elementNames(ctx, names);
             case ATTRIBUTE_NAME -> attributeNames(ctx, names);

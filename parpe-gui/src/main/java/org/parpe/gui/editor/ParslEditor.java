@@ -35,15 +35,25 @@ import org.parpe.core.diag.Diagnostic;
  * The PARSL source editor: a JFace {@link SourceViewer} with XML colouring, line numbers,
  * error markers (ruler badges, squiggles, hovers), the current line highlighted, undo/redo and
  * content assist (Ctrl+Space, or automatically after {@code <}, {@code $} and {@code "}).
+ * A text over {@link #COLOUR_LIMIT} characters is shown plain: colouring it would partition and
+ * style the whole text at once, seconds of the UI thread and hundreds of megabytes; and at most
+ * {@link #MARKER_LIMIT} problems are marked.
  */
 public final class ParslEditor {
     private static final String SQUIGGLE = "org.parpe.gui.squiggle";
     private static final Color LINE_BG = new Color(0xF2, 0xF6, 0xFC);
     private static final Color RULER_FG = new Color(0x90, 0x98, 0xA8);
+    /** Texts longer than this (characters) are not coloured. */
+    public static final int COLOUR_LIMIT = 1_000_000;
+    /** At most this many problems are marked in the text and the ruler (Problems lists them all). */
+    public static final int MARKER_LIMIT = 2_000;
 
     private final SourceViewer viewer;
     private final Document document = new Document();
     private final AnnotationModel annotations = new AnnotationModel();
+    private final IDocumentPartitioner partitioner = new FastPartitioner(XmlScanners.partitionScanner(), XmlScanners.TYPES);
+    private boolean plain;
+    private volatile NameIndex backgroundNames = NameIndex.of("");
 
     /** Creates the editor in {@code parent}. */
     public ParslEditor(Composite parent) {
@@ -57,8 +67,7 @@ public final class ParslEditor {
         ruler.addDecorator(0, marks);
         ruler.addDecorator(1, lines);
         viewer = new SourceViewer(parent, ruler, null, false, SWT.V_SCROLL | SWT.H_SCROLL | SWT.MULTI | SWT.BORDER);
-        viewer.configure(new ParslViewerConfiguration(hover()));
-        IDocumentPartitioner partitioner = new FastPartitioner(XmlScanners.partitionScanner(), XmlScanners.TYPES);
+        viewer.configure(new ParslViewerConfiguration(hover(), () -> plain, this::names));
         partitioner.connect(document);
         document.setDocumentPartitioner(partitioner);
         viewer.setDocument(document, annotations);
@@ -99,11 +108,46 @@ public final class ParslEditor {
         return document;
     }
 
-    /** Replaces the whole text and forgets the undo history (a newly opened file). */
+    /**
+     * Replaces the whole text and forgets the undo history (a newly opened file). Colouring is
+     * switched off for a text over {@link #COLOUR_LIMIT} characters, on again for a smaller one.
+     */
     public void setText(String text) {
+        boolean big = text.length() > COLOUR_LIMIT;
+        if (big && !plain) {
+            // Disconnect first, so that the partitioner never scans the large text.
+            plain = true;
+            partitioner.disconnect();
+            document.setDocumentPartitioner(null);
+        }
+        annotations.removeAllAnnotations();
         document.set(text);
+        if (!big && plain) {
+            plain = false;
+            partitioner.connect(document);
+            document.setDocumentPartitioner(partitioner);
+            viewer.invalidateTextPresentation();
+        }
         viewer.getUndoManager().reset();
         viewer.setSelectedRange(0, 0);
+    }
+
+    /**
+     * The names {@code text} defines, for completion: scanned now, or for a text over
+     * {@link #COLOUR_LIMIT} (a scan takes about a second at 10 MB) the last background scan.
+     */
+    public NameIndex names(String text) {
+        return text.length() > COLOUR_LIMIT ? backgroundNames : NameIndex.of(text);
+    }
+
+    /** Keeps the names of a large text, scanned off the UI thread (by the {@link Validator}). */
+    public void setNames(NameIndex names) {
+        backgroundNames = names;
+    }
+
+    /** Whether the text is shown without colouring (it was too large when opened). */
+    public boolean plain() {
+        return plain;
     }
 
     /** Runs one {@link org.eclipse.jface.text.ITextOperationTarget} operation if it is possible. */
@@ -116,7 +160,7 @@ public final class ParslEditor {
     /** Shows {@code diagnostics} (those of this document) as markers. */
     public void setDiagnostics(List<Diagnostic> diagnostics) {
         annotations.removeAllAnnotations();
-        for (Diagnostic d : diagnostics) {
+        for (Diagnostic d : diagnostics.subList(0, Math.min(diagnostics.size(), MARKER_LIMIT))) {
             int[] span = span(d.pos().line(), d.pos().column());
             if (span != null) {
                 annotations.addAnnotation(new ProblemAnnotation(d), new Position(span[0], span[1]));
@@ -164,9 +208,11 @@ public final class ParslEditor {
             int start = document.getLineOffset(l);
             int len = document.getLineLength(l) - lineDelimiterLength(l);
             int off = start + Math.max(0, Math.min(column - 1, Math.max(0, len - 1)));
-            String text = document.get();
+            // Only this line: copying the whole text per marker made many markers quadratic.
+            String text = document.get(start, len);
             int end = off;
-            while (end < start + len && (XmlScanners.isNameChar(text.charAt(end)) || end == off && text.charAt(end) == '<')) {
+            while (end < start + len && (XmlScanners.isNameChar(text.charAt(end - start))
+                    || end == off && text.charAt(end - start) == '<')) {
                 end++;
             }
             return new int[] {off, Math.max(1, Math.min(end - off, start + len - off))};

@@ -1,6 +1,10 @@
 package org.parpe.gui.editor;
 
+import java.util.function.BooleanSupplier;
+import java.util.function.Function;
 import org.eclipse.jface.text.IDocument;
+import org.eclipse.jface.text.ITypedRegion;
+import org.eclipse.jface.text.TextPresentation;
 import org.eclipse.jface.text.IUndoManager;
 import org.eclipse.jface.text.TextViewerUndoManager;
 import org.eclipse.jface.text.contentassist.ContentAssistant;
@@ -17,9 +21,14 @@ import org.eclipse.swt.SWT;
 /** Colouring, content assist, hovers and undo of the PARSL source viewer. */
 final class ParslViewerConfiguration extends SourceViewerConfiguration {
     private final IAnnotationHover hover;
+    private final BooleanSupplier plain;
+    private final Function<String, NameIndex> names;
 
-    ParslViewerConfiguration(IAnnotationHover hover) {
+    /** {@code plain} says when not to colour (a very large text); {@code names} gives the names a text defines. */
+    ParslViewerConfiguration(IAnnotationHover hover, BooleanSupplier plain, Function<String, NameIndex> names) {
         this.hover = hover;
+        this.plain = plain;
+        this.names = names;
     }
 
     @Override
@@ -37,8 +46,15 @@ final class ParslViewerConfiguration extends SourceViewerConfiguration {
         return r;
     }
 
-    private static void add(PresentationReconciler r, ITokenScanner scanner, String type) {
-        DefaultDamagerRepairer dr = new DefaultDamagerRepairer(scanner);
+    private void add(PresentationReconciler r, ITokenScanner scanner, String type) {
+        DefaultDamagerRepairer dr = new DefaultDamagerRepairer(scanner) {
+            @Override
+            public void createPresentation(TextPresentation presentation, ITypedRegion region) {
+                if (!plain.getAsBoolean()) {
+                    super.createPresentation(presentation, region);
+                }
+            }
+        };
         r.setDamager(dr, type);
         r.setRepairer(dr, type);
     }
@@ -46,7 +62,7 @@ final class ParslViewerConfiguration extends SourceViewerConfiguration {
     @Override
     public IContentAssistant getContentAssistant(ISourceViewer sourceViewer) {
         ContentAssistant a = new ContentAssistant();
-        ParslAssistProcessor p = new ParslAssistProcessor();
+        ParslAssistProcessor p = new ParslAssistProcessor(names);
         for (String type : getConfiguredContentTypes(sourceViewer)) {
             a.setContentAssistProcessor(p, type);
         }

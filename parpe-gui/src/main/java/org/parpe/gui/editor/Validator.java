@@ -7,6 +7,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
+import org.eclipse.jface.text.IDocument;
 import org.eclipse.swt.widgets.Display;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.Severity;
@@ -17,10 +18,14 @@ import org.parpe.core.load.ScriptLoader;
 /**
  * Live validation: loads the editor text with the core's loader on a background thread a short
  * while after the last keystroke and hands the result to the UI thread. Results of texts that
- * have since changed are dropped, so the markers always describe the latest text.
+ * have since changed are dropped, so the markers always describe the latest text. The pause
+ * grows with the text (a quarter of a second, plus about 50 ms per megabyte, at most 2 s), so
+ * that typing in a very large script does not start a load at every pause.
  */
 public final class Validator implements AutoCloseable {
     private static final int DEBOUNCE_MS = 250;
+    private static final int MAX_DEBOUNCE_MS = 2000;
+    private static final int CHARS_PER_MS = 20_000;
 
     private final Display display;
     private final ExecutorService worker = Executors.newSingleThreadExecutor(r -> {
@@ -29,29 +34,39 @@ public final class Validator implements AutoCloseable {
         return t;
     });
     private final AtomicLong generation = new AtomicLong();
+    private final Consumer<NameIndex> names;
 
-    public Validator(Display display) {
+    /** {@code names} receives, on the UI thread, the names of each text too large to scan at a keystroke. */
+    public Validator(Display display, Consumer<NameIndex> names) {
         this.display = display;
+        this.names = names;
     }
 
     /**
-     * Validates {@code text} (the content of {@code file}) soon; {@code onResult} runs on the UI
-     * thread unless a newer text was scheduled meanwhile. UI thread only.
+     * Validates the text of {@code document} (the content of {@code file}) soon; the text is
+     * taken once, when the pause is over. {@code onResult} runs on the UI thread unless a newer
+     * text was scheduled meanwhile. UI thread only.
      */
-    public void schedule(Path file, String text, Consumer<LoadResult> onResult) {
+    public void schedule(Path file, IDocument document, Consumer<LoadResult> onResult) {
         long gen = generation.incrementAndGet();
-        display.timerExec(DEBOUNCE_MS, () -> {
+        int delay = Math.min(MAX_DEBOUNCE_MS, DEBOUNCE_MS + document.getLength() / CHARS_PER_MS);
+        display.timerExec(delay, () -> {
             if (gen != generation.get()) {
                 return;
             }
+            String text = document.get();
             worker.execute(() -> {
                 if (gen != generation.get()) {
                     return;
                 }
                 LoadResult r = load(file, text, Map.of());
+                NameIndex index = text.length() > ParslEditor.COLOUR_LIMIT ? NameIndex.of(text) : null;
                 if (!display.isDisposed()) {
                     display.asyncExec(() -> {
                         if (gen == generation.get()) {
+                            if (index != null) {
+                                names.accept(index);
+                            }
                             onResult.accept(r);
                         }
                     });

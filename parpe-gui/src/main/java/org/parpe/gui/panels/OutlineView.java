@@ -1,5 +1,7 @@
 package org.parpe.gui.panels;
 
+import java.util.LinkedHashMap;
+import java.util.Map;
 import java.util.function.Consumer;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Composite;
@@ -19,10 +21,17 @@ import org.parpe.core.model.StateDef;
 /**
  * The outline of the last program that loaded: robot groups, parameters, controls, states,
  * automata, behaviors with their instances, and the main sequence. Selecting a node jumps to
- * its definition.
+ * its definition. A section lists at most {@link #SECTION_LIMIT} entries and then says how many
+ * more there are: native tree rows cost about a millisecond each, so a generated script with a
+ * hundred thousand states would otherwise freeze the window for minutes.
  */
 public final class OutlineView {
+    /** Entries shown per section (and per behavior). */
+    public static final int SECTION_LIMIT = 500;
+
     private final Tree tree;
+    /** Entries per section of the outline being filled (counted here: asking the native tree is slow). */
+    private final Map<TreeItem, Integer> entries = new LinkedHashMap<>();
 
     /** Creates the view; {@code jump} receives the place the user picked. */
     public OutlineView(Composite parent, Consumer<SourcePos> jump) {
@@ -46,6 +55,12 @@ public final class OutlineView {
         if (program != null) {
             fill(program);
         }
+        entries.forEach((section, n) -> {
+            if (n > SECTION_LIMIT) {
+                new TreeItem(section, SWT.NONE).setText("\u2026 and " + (n - SECTION_LIMIT) + " more");
+            }
+        });
+        entries.clear();
         tree.setRedraw(true);
     }
 
@@ -102,7 +117,11 @@ public final class OutlineView {
         return it;
     }
 
-    private static TreeItem node(TreeItem parent, String text, SourcePos pos) {
+    /** Adds an entry under {@code parent}, or counts it as hidden once the section is full (then returns {@code parent}). */
+    private TreeItem node(TreeItem parent, String text, SourcePos pos) {
+        if (entries.merge(parent, 1, Integer::sum) > SECTION_LIMIT) {
+            return parent;
+        }
         TreeItem it = new TreeItem(parent, SWT.NONE);
         it.setText(text);
         it.setData(pos);

@@ -1,34 +1,58 @@
 package org.parpe.gui.panels;
 
+import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
 import java.util.function.Consumer;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.FillLayout;
 import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Event;
 import org.eclipse.swt.widgets.Table;
 import org.eclipse.swt.widgets.TableColumn;
 import org.eclipse.swt.widgets.TableItem;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.Severity;
+import org.parpe.core.diag.SourcePos;
 
 /**
- * The Problems view: one row per error or warning of the last validation, or per problem of the
- * last run. Selecting a row (click, Enter, double-click) jumps to its place in the editor.
+ * The Problems view: the errors and warnings of the last validation of the text (load
+ * diagnostics) and those of the last run (run diagnostics: run-time errors, overlap warnings,
+ * parameter and control errors, robot configuration and bus faults), in one table sorted by
+ * file, line and column. The two lists are kept apart: validating the text again replaces the
+ * load diagnostics only, and only {@link #clearRunDiagnostics} (a new run) drops the run's.
+ * Selecting a row (click, Enter, double-click) jumps to its place. The table is virtual, so a
+ * script with a hundred thousand problems costs only the rows on screen. UI thread only.
  */
 public final class ProblemsView {
+    private static final Comparator<Diagnostic> BY_PLACE = Comparator
+            .comparing((Diagnostic d) -> d.pos().file())
+            .thenComparingInt(d -> d.pos().line())
+            .thenComparingInt(d -> d.pos().column());
+
     private final Table table;
+    private final Runnable changed;
+    private List<Diagnostic> load = List.of();
+    private List<Diagnostic> run = List.of();
     private List<Diagnostic> shown = List.of();
 
-    /** Creates the view; {@code jump} receives the diagnostic the user picked. */
-    public ProblemsView(Composite parent, Consumer<Diagnostic> jump) {
+    /**
+     * Creates the view.
+     *
+     * @param jump    receives the diagnostic the user picked
+     * @param changed runs after the diagnostics shown changed (to update the editor's markers)
+     */
+    public ProblemsView(Composite parent, Consumer<Diagnostic> jump, Runnable changed) {
+        this.changed = changed;
         Composite box = new Composite(parent, SWT.NONE);
         box.setLayout(new FillLayout());
-        table = new Table(box, SWT.FULL_SELECTION | SWT.SINGLE | SWT.V_SCROLL);
+        table = new Table(box, SWT.VIRTUAL | SWT.FULL_SELECTION | SWT.SINGLE | SWT.V_SCROLL | SWT.H_SCROLL);
         table.setHeaderVisible(true);
         table.setLinesVisible(true);
-        column("", 90);
-        column("Description", 640);
-        column("Location", 200);
+        column("", 110);
+        column("Location", 190);
+        column("Description", 700);
+        table.addListener(SWT.SetData, this::fill);
         table.addListener(SWT.Selection, e -> pick(jump));
         table.addListener(SWT.DefaultSelection, e -> pick(jump));
     }
@@ -37,6 +61,32 @@ public final class ProblemsView {
         TableColumn c = new TableColumn(table, SWT.LEFT);
         c.setText(name);
         c.setWidth(width);
+    }
+
+    private void fill(Event e) {
+        TableItem it = (TableItem) e.item;
+        int i = table.indexOf(it);
+        if (i < 0 || i >= shown.size()) {
+            return;
+        }
+        Diagnostic d = shown.get(i);
+        boolean err = d.severity() == Severity.ERROR;
+        Icons icons = Icons.of(table.getDisplay());
+        it.setImage(0, err ? icons.error : icons.warning);
+        it.setText(0, (isRun(d) ? "run " : "") + d.severity().word());
+        it.setForeground(0, table.getDisplay().getSystemColor(err ? SWT.COLOR_RED : SWT.COLOR_DARK_YELLOW));
+        it.setText(1, location(d.pos()));
+        it.setText(2, d.message());
+    }
+
+    /** Whether {@code d} came from the run (identity: an equal load diagnostic is a different row). */
+    private boolean isRun(Diagnostic d) {
+        for (Diagnostic r : run) {
+            if (r == d) {
+                return true;
+            }
+        }
+        return false;
     }
 
     private void pick(Consumer<Diagnostic> jump) {
@@ -51,36 +101,68 @@ public final class ProblemsView {
         return table.getParent();
     }
 
-    /** Shows {@code diagnostics}. */
-    public void show(List<Diagnostic> diagnostics) {
-        shown = List.copyOf(diagnostics);
-        table.setRedraw(false);
-        table.removeAll();
-        for (Diagnostic d : shown) {
-            TableItem it = new TableItem(table, SWT.NONE);
-            boolean err = d.severity() == Severity.ERROR;
-            it.setImage(0, err ? Icons.of(table.getDisplay()).error : Icons.of(table.getDisplay()).warning);
-            it.setText(0, err ? "error" : "warning");
-            it.setForeground(0, table.getDisplay().getSystemColor(err ? SWT.COLOR_RED : SWT.COLOR_DARK_YELLOW));
-            it.setText(1, d.message());
-            it.setText(2, location(d));
+    /** Shows the diagnostics of the latest validation of the text, keeping the run's. */
+    public void setLoadDiagnostics(List<Diagnostic> diagnostics) {
+        load = List.copyOf(diagnostics);
+        refresh();
+    }
+
+    /** Shows the diagnostics of the current or last run beside the load diagnostics, replacing earlier run ones. */
+    public void setRunDiagnostics(List<Diagnostic> diagnostics) {
+        run = List.copyOf(diagnostics);
+        refresh();
+    }
+
+    /** Drops the run diagnostics (a new run starts, or another file is opened). */
+    public void clearRunDiagnostics() {
+        if (!run.isEmpty()) {
+            run = List.of();
+            refresh();
         }
+    }
+
+    private void refresh() {
+        List<Diagnostic> all = new ArrayList<>(load.size() + run.size());
+        all.addAll(load);
+        all.addAll(run);
+        all.sort(BY_PLACE);
+        shown = List.copyOf(all);
+        table.setRedraw(false);
+        table.clearAll();
+        table.setItemCount(shown.size());
         table.setRedraw(true);
+        changed.run();
     }
 
-    private static String location(Diagnostic d) {
-        String f = d.pos().file();
-        int slash = Math.max(f.lastIndexOf('/'), f.lastIndexOf('\\'));
-        return f.substring(slash + 1) + ":" + d.pos().line() + ":" + d.pos().column();
+    /** {@code FILE:LINE:COL} with the file's name only; the file alone for a diagnostic with no line. */
+    public static String location(SourcePos p) {
+        String f = p.file();
+        String name = f.substring(Math.max(f.lastIndexOf('/'), f.lastIndexOf('\\')) + 1);
+        return p.line() <= 0 ? name : name + ":" + p.line() + ":" + p.column();
     }
 
-    /** The diagnostics shown. */
+    /** The diagnostics shown, in table order: load and run diagnostics sorted by file, line, column. */
     public List<Diagnostic> shown() {
         return shown;
+    }
+
+    /** The run diagnostics shown. */
+    public List<Diagnostic> runDiagnostics() {
+        return run;
     }
 
     /** Number of errors shown. */
     public long errorCount() {
         return shown.stream().filter(d -> d.severity() == Severity.ERROR).count();
+    }
+
+    /** The text of a cell as the table shows it (tests). */
+    public String cell(int row, int column) {
+        return table.getItem(row).getText(column);
+    }
+
+    /** The title of a column (tests check the Location column is there). */
+    public String columnTitle(int column) {
+        return table.getColumn(column).getText();
     }
 }

@@ -4,16 +4,11 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assertions.fail;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicReference;
-import java.util.function.BooleanSupplier;
-import org.eclipse.swt.graphics.ImageData;
-import org.eclipse.swt.graphics.ImageLoader;
-import org.eclipse.swt.widgets.Display;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.MethodOrderer;
@@ -32,56 +27,21 @@ import org.parpe.gui.run.Target;
  */
 @TestMethodOrder(MethodOrderer.OrderAnnotation.class)
 class IdeGuiTest {
-    private static final long WAIT_MS = 30_000;
-    private static Display display;
     private static IdeWindow ide;
-    private static Path artefacts;
 
     @BeforeAll
     static void openWindow() throws Exception {
-        String x = System.getenv("DISPLAY");
-        if (x == null || x.isBlank()) {
-            fail("No X display (DISPLAY is not set). The GUI tests need one: run them under xvfb-run, as ./test-all does.");
-        }
-        artefacts = Path.of(System.getProperty("parpe.artefacts", "target/gui-test-artefacts"));
-        Files.createDirectories(artefacts);
         Path home = Files.createTempDirectory("parpe-gui-test");
-        display = Display.getDefault();
-        ide = new IdeWindow(display, new Prefs(home));
+        ide = new IdeWindow(Gui.display(), new Prefs(home));
         ide.open(null, true);
-        pump(() -> ide.validations() > 0, "the first validation");
+        Gui.pump(() -> ide.validations() > 0, "the first validation");
     }
 
     @AfterAll
     static void closeWindow() {
         if (ide != null && !ide.shell().isDisposed()) {
-            ide.runs().stop();
-            pump(() -> !ide.runs().running(), "the run to stop");
+            Gui.endRun(ide);
             ide.shell().dispose();
-        }
-    }
-
-    private static Path example(String name) {
-        Path p = Examples.folder() == null ? null : Examples.folder().resolve(name);
-        assertTrue(p != null && Files.isRegularFile(p), "example " + name + " not found (parpe.examples=" + System.getProperty("parpe.examples") + ")");
-        return p;
-    }
-
-    /** Runs the event loop until {@code done} holds; fails after {@link #WAIT_MS}. */
-    private static void pump(BooleanSupplier done, String what) {
-        long until = System.currentTimeMillis() + WAIT_MS;
-        while (!done.getAsBoolean()) {
-            if (System.currentTimeMillis() > until) {
-                fail("timed out after " + WAIT_MS / 1000 + " s waiting for " + what);
-            }
-            if (!display.readAndDispatch()) {
-                try {
-                    Thread.sleep(5);
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                    fail("interrupted");
-                }
-            }
         }
     }
 
@@ -90,41 +50,33 @@ class IdeGuiTest {
         return st == null ? -1 : st.time();
     }
 
-    private static void screenshot(String name) throws Exception {
-        Path f = artefacts.resolve(name);
-        Screenshot.save(ide.shell(), f);
-        ImageData d = new ImageLoader().load(f.toString())[0];
-        assertTrue(d.width > 600 && d.height > 400, "screenshot too small: " + d.width + "x" + d.height);
-        assertTrue(Screenshot.distinctColours(d, 64) >= 64, "screenshot " + f + " looks blank");
-    }
-
     @Test
     @Order(1)
     void runsAnExampleInTheSimulatorAndSteersItWithAControl() throws Exception {
-        ide.files().openPath(example("teleop-dirwave.xml"));
+        Gui.open(ide, Gui.example("teleop-dirwave.xml"));
         int before = ide.validations();
-        pump(() -> ide.validations() > before && ide.program() != null, "teleop-dirwave.xml to load");
+        Gui.pump(() -> ide.validations() > before && ide.program() != null, "teleop-dirwave.xml to load");
         assertEquals(0, ide.problems().errorCount(), "example has errors: " + ide.problems().shown());
         ide.toolbar().setTarget(Target.SIMULATOR);
         ide.toolbar().setSpeed(Speed.TIMES_10);
         AtomicReference<RunOutcome> outcome = new AtomicReference<>();
         ide.runs().run(false, -1, outcome::set);
-        pump(() -> engineTime() >= 1.0, "1 s of simulated time");
+        Gui.pump(() -> engineTime() >= 1.0, "1 s of simulated time");
         assertFalse(ide.runs().driven().isEmpty(), "the wave should drive modules while direction = forward");
         assertNotNull(ide.view().lastSnapshot(), "the 3D view has drawn no robot");
         assertFalse(ide.view().lastSnapshot().bodies().isEmpty());
 
         assertTrue(ide.controls().set("direction", "stop"), "no 'direction' radio control in the panel");
         double changedAt = engineTime();
-        pump(() -> engineTime() > changedAt + 0.2 && ide.runs().driven().isEmpty(),
+        Gui.pump(() -> engineTime() > changedAt + 0.2 && ide.runs().driven().isEmpty(),
                 "the modules to stop being driven after direction = stop");
         assertTrue(ide.controls().set("direction", "backward"));
-        pump(() -> engineTime() >= 3.0 && !ide.runs().driven().isEmpty(), "3 s of simulated time, driven backwards");
+        Gui.pump(() -> engineTime() >= 3.0 && !ide.runs().driven().isEmpty(), "3 s of simulated time, driven backwards");
         assertEquals(0, ide.problems().errorCount(), "control changes refused: " + ide.problems().shown());
-        screenshot("teleop-running.png");
+        Gui.screenshot(ide.shell(), "teleop-running.png");
 
         ide.runs().stop();
-        pump(() -> outcome.get() != null, "the run to stop");
+        Gui.pump(() -> outcome.get() != null, "the run to stop");
         assertEquals(RunOutcome.Status.STOPPED, outcome.get().status(), outcome.get().message());
         assertTrue(outcome.get().time() >= 3.0);
         assertFalse(ide.runs().running());
@@ -133,8 +85,8 @@ class IdeGuiTest {
     @Test
     @Order(2)
     void aBrokenScriptShowsAnErrorMarkerAtTheRightLine() throws Exception {
-        ide.files().openPath(example("hello-snake.xml"));
-        String text = Files.readString(example("hello-snake.xml"));
+        Gui.open(ide, Gui.example("hello-snake.xml"));
+        String text = Files.readString(Gui.example("hello-snake.xml"));
         List<String> lines = List.of(text.split("\n", -1));
         int line = -1;
         for (int i = 0; i < lines.size(); i++) {
@@ -145,7 +97,7 @@ class IdeGuiTest {
         assertTrue(line > 0, "hello-snake.xml has no 'states=\"up, down\"' line to break");
         int before = ide.validations();
         ide.editor().document().set(text.replace("states=\"up, down\"", "states=\"up, dwn\""));
-        pump(() -> ide.validations() > before, "validation of the edited text");
+        Gui.pump(() -> ide.validations() > before, "validation of the edited text");
         assertTrue(ide.problems().errorCount() > 0, "no error for an undefined state");
         List<ProblemAnnotation> marks = ide.editor().markers();
         assertFalse(marks.isEmpty(), "no marker in the editor");
@@ -154,7 +106,7 @@ class IdeGuiTest {
                 "no error marker on line " + expected + "; markers on lines "
                         + marks.stream().map(ide.editor()::lineOf).toList());
         assertTrue(ide.files().dirty(), "an edited file should be marked dirty");
-        screenshot("broken-script.png");
+        Gui.screenshot(ide.shell(), "broken-script.png");
 
         AtomicReference<RunOutcome> refused = new AtomicReference<>();
         ide.runs().run(false, 1, refused::set);
@@ -167,9 +119,9 @@ class IdeGuiTest {
     @Order(3)
     void unsavedTextIsKeptForRecovery() {
         ide.files().autosaveNow();
-        Autosave.Recovered r = new Autosave(ide.prefs().home()).find();
-        assertNotNull(r, "no autosave copy of the unsaved text");
-        assertTrue(r.text().contains("up, dwn"));
-        assertEquals(example("hello-snake.xml").toAbsolutePath().normalize(), r.file());
+        List<Autosave.Copy> copies = ide.files().autosave().own();
+        assertEquals(1, copies.size(), "expected one autosave copy of the unsaved text: " + copies);
+        assertTrue(copies.get(0).text().contains("up, dwn"));
+        assertEquals(Gui.example("hello-snake.xml").toAbsolutePath().normalize(), copies.get(0).file());
     }
 }

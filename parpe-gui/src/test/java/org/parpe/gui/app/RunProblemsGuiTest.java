@@ -3,13 +3,11 @@ package org.parpe.gui.app;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assertions.fail;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicReference;
-import java.util.function.BooleanSupplier;
 import org.eclipse.swt.widgets.Display;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.AfterEach;
@@ -27,28 +25,23 @@ import org.parpe.gui.run.Target;
  * problems stay there when the text is validated again. Real widgets under Xvfb, bounded waits.
  */
 class RunProblemsGuiTest {
-    private static final long WAIT_MS = 30_000;
     private static Display display;
     private static IdeWindow ide;
     private static Path dir;
 
     @BeforeAll
     static void openWindow() throws Exception {
-        String x = System.getenv("DISPLAY");
-        if (x == null || x.isBlank()) {
-            fail("No X display (DISPLAY is not set). The GUI tests need one: run them under xvfb-run, as ./test-all does.");
-        }
+        display = Gui.display();
         dir = Files.createTempDirectory("parpe-run-problems");
-        display = Display.getDefault();
         ide = new IdeWindow(display, new Prefs(dir.resolve("home")));
         ide.open(null, true);
-        pump(() -> ide.validations() > 0, "the first validation");
+        Gui.pump(() -> ide.validations() > 0, "the first validation");
     }
 
     @AfterAll
     static void closeWindow() {
         if (ide != null && !ide.shell().isDisposed()) {
-            ide.runs().stop();
+            Gui.endRun(ide);
             ide.shell().dispose();
         }
     }
@@ -59,30 +52,14 @@ class RunProblemsGuiTest {
         ide.viewBar().select("auto (from the script)");
     }
 
-    private static void pump(BooleanSupplier done, String what) {
-        long until = System.currentTimeMillis() + WAIT_MS;
-        while (!done.getAsBoolean()) {
-            if (System.currentTimeMillis() > until) {
-                fail("timed out after " + WAIT_MS / 1000 + " s waiting for " + what);
-            }
-            if (!display.readAndDispatch()) {
-                try {
-                    Thread.sleep(5);
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                    fail("interrupted");
-                }
-            }
-        }
-    }
-
     /** Opens {@code text} as a file and waits for it to validate without errors. */
     private static Path open(String name, String text) throws Exception {
         Path f = dir.resolve(name);
         Files.writeString(f, text);
         int before = ide.validations();
-        ide.files().openPath(f);
-        pump(() -> ide.validations() > before && ide.program() != null, name + " to load");
+        Gui.open(ide, f);
+        Gui.pump(() -> ide.validations() > before && ide.program() != null
+                && ide.program().file().endsWith(name), name + " to load");
         assertEquals(0, ide.problems().errorCount(), "script has errors: " + ide.problems().shown());
         return f;
     }
@@ -91,9 +68,9 @@ class RunProblemsGuiTest {
         AtomicReference<RunOutcome> outcome = new AtomicReference<>();
         ide.toolbar().setSpeed(Speed.MAX);
         ide.runs().run(false, seconds, outcome::set);
-        pump(() -> outcome.get() != null, "the run to end");
+        Gui.pump(() -> outcome.get() != null, "the run to end");
         // Problems reported from the engine thread arrive through asyncExec: let them in.
-        pump(() -> !display.readAndDispatch(), "pending UI events");
+        Gui.settle();
         return outcome.get();
     }
 
@@ -145,7 +122,7 @@ class RunProblemsGuiTest {
 
         int before = ide.validations();
         ide.editor().document().set(ide.editor().document().get() + "\n");
-        pump(() -> ide.validations() > before, "validation of the edited text");
+        Gui.pump(() -> ide.validations() > before, "validation of the edited text");
         assertEquals(1, shown(Severity.ERROR).size(), "the run's error vanished when the text was validated again");
     }
 

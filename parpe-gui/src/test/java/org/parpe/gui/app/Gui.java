@@ -1,0 +1,96 @@
+package org.parpe.gui.app;
+
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.function.BooleanSupplier;
+import org.eclipse.swt.graphics.ImageData;
+import org.eclipse.swt.graphics.ImageLoader;
+import org.eclipse.swt.widgets.Display;
+import org.eclipse.swt.widgets.Shell;
+
+/** What the GUI tests share: the display, bounded waits, examples and screenshots as evidence. */
+final class Gui {
+    static final long WAIT_MS = 30_000;
+
+    private Gui() {
+    }
+
+    /** The display; fails with a hint when there is no X server. */
+    static Display display() {
+        String x = System.getenv("DISPLAY");
+        if (x == null || x.isBlank()) {
+            fail("No X display (DISPLAY is not set). The GUI tests need one: run them under xvfb-run, as ./test-all does.");
+        }
+        return Display.getDefault();
+    }
+
+    /** Runs the event loop until {@code done} holds; fails after {@link #WAIT_MS}. */
+    static void pump(BooleanSupplier done, String what) {
+        Display display = Display.getDefault();
+        long until = System.currentTimeMillis() + WAIT_MS;
+        while (!done.getAsBoolean()) {
+            if (System.currentTimeMillis() > until) {
+                fail("timed out after " + WAIT_MS / 1000 + " s waiting for " + what);
+            }
+            if (!display.readAndDispatch()) {
+                try {
+                    Thread.sleep(5);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    fail("interrupted");
+                }
+            }
+        }
+    }
+
+    /** Handles events for a moment, so that layouts and paints (GTK draws on its frame clock) are done. */
+    static void settle() {
+        Display display = Display.getDefault();
+        long until = System.currentTimeMillis() + 300;
+        while (System.currentTimeMillis() < until) {
+            if (!display.readAndDispatch()) {
+                display.update();
+                try {
+                    Thread.sleep(5);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    fail("interrupted");
+                }
+            }
+        }
+    }
+
+    /** Stops the run if any and waits until its end has been reported to the window (through asyncExec). */
+    static void endRun(IdeWindow ide) {
+        boolean started = ide.runs().running() || ide.runs().controller().status() != null;
+        ide.runs().stop();
+        pump(() -> !ide.runs().running() && (!started || ide.runs().lastOutcome() != null), "the run to end");
+    }
+
+    /** Opens {@code file} in {@code ide} and waits until it is in the editor (files are read in the background). */
+    static void open(IdeWindow ide, Path file) {
+        Path abs = file.toAbsolutePath().normalize();
+        ide.files().openPath(abs);
+        pump(() -> !ide.files().reading() && abs.equals(ide.files().file()), "opening " + file.getFileName());
+    }
+
+    static Path example(String name) {
+        Path p = Examples.folder() == null ? null : Examples.folder().resolve(name);
+        assertTrue(p != null && Files.isRegularFile(p), "example " + name + " not found (parpe.examples=" + System.getProperty("parpe.examples") + ")");
+        return p;
+    }
+
+    /** Saves a screenshot of {@code shell} under the artefacts folder and checks it is not blank. */
+    static void screenshot(Shell shell, String name) throws Exception {
+        Path dir = Path.of(System.getProperty("parpe.artefacts", "target/gui-test-artefacts"));
+        Files.createDirectories(dir);
+        Path f = dir.resolve(name);
+        Screenshot.save(shell, f);
+        ImageData d = new ImageLoader().load(f.toString())[0];
+        assertTrue(d.width > 600 && d.height > 400, "screenshot too small: " + d.width + "x" + d.height);
+        assertTrue(Screenshot.distinctColours(d, 64) >= 64, "screenshot " + f + " looks blank");
+    }
+}

@@ -1,0 +1,99 @@
+package org.parpe.gui.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * Recovery in the real window: a copy left by an IDE that is gone is offered, recovered as
+ * unsaved text, survives "Don't Save" on closing, and is deleted once the text is saved.
+ */
+class RecoveryGuiTest {
+    @TempDir
+    Path dir;
+    private IdeWindow ide;
+    private final List<String> asked = new ArrayList<>();
+
+    @AfterEach
+    void closeWindow() {
+        if (ide != null && !ide.shell().isDisposed()) {
+            ide.shell().dispose();
+        }
+    }
+
+    /** Opens an IDE on {@code home} whose questions are answered in turn by {@code answers}. */
+    private IdeWindow open(Path home, int... answers) {
+        IdeWindow w = new IdeWindow(Gui.display(), new Prefs(home));
+        int[] next = {0};
+        w.files().answerWith((title, message, buttons) -> {
+            asked.add(title);
+            return next[0] < answers.length ? answers[next[0]++] : 2;
+        });
+        w.open(null, false);
+        return w;
+    }
+
+    private static List<String> orphanTexts(Path home) {
+        try (Autosave probe = new Autosave(home)) {
+            return probe.orphans().stream().map(Autosave.Copy::text).toList();
+        }
+    }
+
+    @Test
+    void recoveredTextSurvivesDontSaveAndGoesOnlyWhenSaved() throws Exception {
+        Path home = dir.resolve("home");
+        Path script = dir.resolve("walk.xml");
+        String original = Files.readString(Gui.example("hello-snake.xml"));
+        Files.writeString(script, original);
+        String unsaved = original.replace("period=\"1\"", "period=\"2\"");
+        Autosave crashed = new Autosave(home);
+        crashed.write(Autosave.slotFor(script), script, unsaved);
+        crashed.close();
+
+        ide = open(home, 0, 1); // Recover; then "Don't Save" when closing
+        assertEquals("Recover unsaved work", asked.get(0));
+        assertEquals(unsaved, ide.editor().document().get());
+        assertEquals(script.toAbsolutePath().normalize(), ide.files().file());
+        assertTrue(ide.files().dirty(), "recovered text must be unsaved");
+        assertTrue(ide.shell().getText().startsWith("*"), "title should mark unsaved text: " + ide.shell().getText());
+        assertTrue(ide.closeRequested(), "Don't Save should let the window close");
+        ide.shell().dispose();
+        assertEquals(List.of(unsaved), orphanTexts(home), "Don't Save after recovering deleted the recovered copy");
+        assertEquals(original, Files.readString(script));
+
+        asked.clear();
+        ide = open(home, 0); // Recover again, then save
+        assertEquals(unsaved, ide.editor().document().get());
+        assertTrue(ide.files().save());
+        assertEquals(unsaved, Files.readString(script));
+        assertFalse(ide.files().dirty());
+        assertEquals(List.of(), ide.files().autosave().own(), "the saved text's copy is still there");
+        ide.shell().dispose();
+        assertEquals(List.of(), orphanTexts(home));
+    }
+
+    @Test
+    void discardDeletesTheCopyAndNotNowKeepsIt() throws Exception {
+        Path home = dir.resolve("home2");
+        Autosave crashed = new Autosave(home);
+        crashed.write(crashed.untitledSlot(), null, "<program/>");
+        crashed.close();
+
+        ide = open(home, 2); // Not Now
+        assertEquals(FileActions.TEMPLATE, ide.editor().document().get());
+        ide.shell().dispose();
+        assertEquals(List.of("<program/>"), orphanTexts(home));
+
+        ide = open(home, 1); // Discard
+        ide.shell().dispose();
+        assertEquals(List.of(), orphanTexts(home));
+    }
+}
