@@ -23,6 +23,7 @@ import org.parpe.core.model.Program;
 import org.parpe.core.run.RunOptions;
 import org.parpe.core.run.Stimulus;
 import org.parpe.core.run.StimulusParser;
+import org.parpe.core.xml.InputFiles;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -31,7 +32,7 @@ import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code parpe run}: runs a script headless, on the simulator, on hardware, or both (PARSL.md §11). */
-@Command(name = "run", description = "Run a PARSL script. Without --sim or --port only setpoints are computed, as fast as possible.")
+@Command(name = "run", mixinStandardHelpOptions = true, description = "Run a PARSL script. Without --sim or --port only setpoints are computed, as fast as possible.")
 final class RunCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "FILE", description = "The PARSL script.")
     Path file;
@@ -79,14 +80,10 @@ final class RunCommand implements Callable<Integer> {
     }
 
     private int execute(PrintStream err) throws Exception {
-        if (!Files.isReadable(file) || Files.isDirectory(file)) {
-            throw new UsageException("cannot read '" + file + "'");
-        }
-        if (!(tick > 0) || !Double.isFinite(tick)) {
-            throw new UsageException("--tick must be > 0 seconds, got " + tick);
-        }
-        if (duration != null && !(duration >= 0)) {
-            throw new UsageException("--duration must be >= 0 seconds, got " + duration);
+        ClockOptions.check(tick, duration);
+        Inputs.check(file);
+        if (stimulus != null) {
+            Inputs.check(stimulus);
         }
         LoadResult r = ScriptLoader.load(file, parseParams());
         for (Diagnostic d : r.diagnostics()) {
@@ -102,6 +99,10 @@ final class RunCommand implements Callable<Integer> {
         if (program.main() == null) {
             err.println(file + ": warning: the program has no <main>; there is nothing to run");
             return 0;
+        }
+        if (duration == null) {
+            err.println("parpe: no --duration: the run lasts until <main> ends or Ctrl-C; use --duration SECONDS"
+                    + " to bound it");
         }
         RunOptions options = new RunOptions(tick, seed, stimuli(program));
         double limit = duration == null ? Double.POSITIVE_INFINITY : duration;
@@ -141,9 +142,9 @@ final class RunCommand implements Callable<Integer> {
         }
         String text;
         try {
-            text = Files.readString(stimulus, StandardCharsets.UTF_8);
-        } catch (IOException | RuntimeException e) {
-            throw new UsageException("cannot read stimulus file '" + stimulus + "'");
+            text = InputFiles.readText(stimulus);
+        } catch (IOException e) {
+            throw new UsageException("cannot read stimulus file '" + stimulus + "': " + e.getMessage());
         }
         try {
             return StimulusParser.parse(stimulus.toString(), text, program);

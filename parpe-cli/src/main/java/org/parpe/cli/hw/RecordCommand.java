@@ -11,8 +11,10 @@ import java.nio.file.Path;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import org.parpe.cli.Inputs;
 import org.parpe.cli.UsageException;
 import org.parpe.core.diag.Diagnostic;
+import org.parpe.core.expr.ExprCompiler;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
 import org.parpe.core.model.Group;
@@ -34,7 +36,7 @@ import picocli.CommandLine.Model.CommandSpec;
  * {@code parpe run} plays back. The file is rewritten after every pose, so Ctrl-C, the end of
  * input or a crash never lose what was captured.
  */
-@Command(name = "record", description = {"Record poses of a group of modules posed by hand into a PARSL file.",
+@Command(name = "record", mixinStandardHelpOptions = true, description = {"Record poses of a group of modules posed by hand into a PARSL file.",
     "Press Enter to capture a pose; Ctrl-D (end of input) or Ctrl-C finishes."})
 public final class RecordCommand implements Callable<Integer> {
     @Option(names = "--port", required = true, paramLabel = "PATH", description = "The serial device of the modules.")
@@ -88,9 +90,7 @@ public final class RecordCommand implements Callable<Integer> {
         if (source.modules != null) {
             return ModuleList.parse(source.modules, "--modules");
         }
-        if (!Files.isReadable(source.script) || Files.isDirectory(source.script)) {
-            throw new UsageException("cannot read '" + source.script + "'");
-        }
+        Inputs.check(source.script);
         LoadResult r = ScriptLoader.load(source.script, Map.of());
         if (r.program() == null) {
             StringBuilder b = new StringBuilder("the script has errors:");
@@ -116,6 +116,13 @@ public final class RecordCommand implements Callable<Integer> {
         }
         if (!group.matches("[A-Za-z_][A-Za-z0-9_]*")) {
             throw new UsageException("--group must be a PARSL name ([A-Za-z_][A-Za-z0-9_]*), got '" + group + "'");
+        }
+        // the recording defines the group, the automaton rec_GROUP and the behavior play_GROUP
+        for (String name : new String[] {group, "rec_" + group, "play_" + group}) {
+            if (ExprCompiler.isReserved(name) && !name.equals("all")) {
+                throw new UsageException("--group '" + group + "' cannot be used: '" + name
+                        + "' is a reserved word of PARSL (a function, constant or keyword)");
+            }
         }
         Path dir = out.toAbsolutePath().getParent();
         if (dir != null && !Files.isDirectory(dir)) {
