@@ -4,9 +4,9 @@ import java.io.BufferedWriter;
 import java.io.IOException;
 import java.io.OutputStreamWriter;
 import java.io.PrintStream;
+import java.io.UncheckedIOException;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -64,6 +64,8 @@ final class RunCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
+    private OutputFile traceFile;
+
     @Override
     public Integer call() throws Exception {
         PrintStream err = errStream();
@@ -100,6 +102,7 @@ final class RunCommand implements Callable<Integer> {
             err.println(file + ": warning: the program has no <main>; there is nothing to run");
             return 0;
         }
+        checkOutputs(r);
         if (duration == null) {
             err.println("parpe: no --duration: the run lasts until <main> ends or Ctrl-C; use --duration SECONDS"
                     + " to bound it");
@@ -110,10 +113,13 @@ final class RunCommand implements Callable<Integer> {
         try {
             sim.configure(setup);
             hardware.configure(setup);
-            return new RunLoop(setup, err).run(traceWriter(), trace != null && trace.equals("-"));
+            return sim.outputsWritten(new RunLoop(setup, err).run(traceWriter(), trace != null && trace.equals("-")));
         } catch (IOException e) {
             // a device or file the targets could not use (e.g. a serial port that will not open)
             throw new UsageException(e.getMessage() == null ? e.toString() : e.getMessage());
+        } catch (UncheckedIOException e) {
+            // an output that failed while the run wrote it (full disk): OutputFile named it
+            throw new UsageException(e.getCause().getMessage());
         } finally {
             RunLoop.closeAll(setup, err);
         }
@@ -153,6 +159,17 @@ final class RunCommand implements Callable<Integer> {
         }
     }
 
+    /** Refuses outputs that would replace a directory, a device or an input, before the run starts. */
+    private void checkOutputs(LoadResult r) throws UsageException {
+        List<Path> inputs = new ArrayList<>(r.files());
+        if (stimulus != null) {
+            inputs.add(stimulus);
+        }
+        sim.addInputs(inputs);
+        traceFile = OutputFile.ofOptional("--trace", trace, inputs);
+        sim.checkOutputs(inputs);
+    }
+
     private Writer traceWriter() throws UsageException {
         if (trace == null) {
             return null;
@@ -160,11 +177,6 @@ final class RunCommand implements Callable<Integer> {
         if (trace.equals("-")) {
             return new BufferedWriter(new OutputStreamWriter(System.out, StandardCharsets.UTF_8), 1 << 16);
         }
-        try {
-            Path p = Path.of(trace);
-            return Files.newBufferedWriter(p, StandardCharsets.UTF_8);
-        } catch (IOException | RuntimeException e) {
-            throw new UsageException("cannot write trace file '" + trace + "': " + e.getMessage());
-        }
+        return traceFile.openWriter();
     }
 }

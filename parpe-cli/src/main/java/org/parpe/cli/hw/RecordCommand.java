@@ -6,12 +6,13 @@ import java.io.InputStream;
 import java.io.InputStreamReader;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import org.parpe.cli.Inputs;
+import org.parpe.cli.OutputFile;
 import org.parpe.cli.UsageException;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.expr.ExprCompiler;
@@ -23,7 +24,6 @@ import org.parpe.serial.bus.BusMaster;
 import org.parpe.serial.link.SerialLink;
 import org.parpe.serial.record.PoseRecorder;
 import org.parpe.serial.record.PoseRecording;
-import org.parpe.serial.record.RecordingWriter;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -71,6 +71,8 @@ public final class RecordCommand implements Callable<Integer> {
 
     @Spec
     CommandSpec spec;
+
+    private OutputFile outFile;
 
     /** Standard input, replaceable by tests. */
     InputStream input = System.in;
@@ -124,10 +126,7 @@ public final class RecordCommand implements Callable<Integer> {
                         + "' is a reserved word of PARSL (a function, constant or keyword)");
             }
         }
-        Path dir = out.toAbsolutePath().getParent();
-        if (dir != null && !Files.isDirectory(dir)) {
-            throw new UsageException("cannot write '" + out + "': directory " + dir + " does not exist");
-        }
+        outFile = OutputFile.of("--out", out.toString(), source.script == null ? List.of() : List.of(source.script));
     }
 
     private int record(PrintWriter err) throws UsageException, IOException, InterruptedException {
@@ -147,7 +146,7 @@ public final class RecordCommand implements Callable<Integer> {
                         + "; nothing was made limp");
             }
             recorder.begin();
-            RecordingSession session = new RecordingSession(recorder, new PoseRecording(group, ids), out,
+            RecordingSession session = new RecordingSession(recorder, new PoseRecording(group, ids), outFile,
                     "recorded from " + port, err);
             SerialLink.beforePortsClose(session::end);
             return session.run(every, count, new BufferedReader(new InputStreamReader(input, StandardCharsets.UTF_8)));
