@@ -70,7 +70,14 @@ public final class Main implements Runnable {
                     + "--help' for usage.");
             return 2;
         });
-        return cl.execute(args);
+        try {
+            return cl.execute(args);
+        } catch (OutOfMemoryError e) {
+            // inputs are capped at 16 MiB, which loads in well under 1 GiB; a smaller heap may not do
+            err.println("parpe: out of memory with a Java heap of " + (Runtime.getRuntime().maxMemory() >> 20)
+                    + " MiB; allow more with JAVA_TOOL_OPTIONS=-Xmx1g");
+            return INTERNAL_ERROR;
+        }
     }
 
     /** The word given where a command was expected ({@code parpe rn}), or {@code null}. */
