@@ -117,11 +117,14 @@ class BadInputTest {
     }
 
     @Test
-    void anInternalErrorHasItsOwnExitCode() {
+    void anInternalErrorHasItsOwnExitCode() throws Exception {
         ByteArrayOutputStream err = new ByteArrayOutputStream();
         int code = Main.internalError(new IllegalStateException("boom"), new PrintStream(err, true, StandardCharsets.UTF_8));
         assertEquals(4, code);
-        assertTrue(err.toString(StandardCharsets.UTF_8).startsWith("parpe: internal error: "));
+        String message = err.toString(StandardCharsets.UTF_8);
+        assertTrue(message.startsWith("parpe: internal error: "), message);
+        String crash = message.substring(message.indexOf("please attach ") + 14, message.indexOf(" to a bug report"));
+        assertTrue(Files.deleteIfExists(Path.of(crash)), message);
         assertTrue(parpe("--help").out().contains("4 internal error"));
     }
 }
