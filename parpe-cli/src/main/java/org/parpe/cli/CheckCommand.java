@@ -1,6 +1,5 @@
 package org.parpe.cli;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
@@ -14,7 +13,7 @@ import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code parpe check FILE...}: loads and validates scripts, reporting every problem. */
-@Command(name = "check", description = "Check PARSL scripts; errors are printed as FILE:LINE:COL.")
+@Command(name = "check", mixinStandardHelpOptions = true, description = "Check PARSL scripts; errors are printed as FILE:LINE:COL.")
 final class CheckCommand implements Callable<Integer> {
     @Parameters(arity = "1..*", paramLabel = "FILE", description = "PARSL scripts to check.")
     List<Path> files;
@@ -26,8 +25,10 @@ final class CheckCommand implements Callable<Integer> {
     public Integer call() {
         int code = 0;
         for (Path f : files) {
-            if (!Files.isReadable(f) || Files.isDirectory(f)) {
-                spec.commandLine().getErr().println("parpe: cannot read '" + f + "'");
+            try {
+                Inputs.check(f);
+            } catch (UsageException e) {
+                spec.commandLine().getErr().println("parpe: " + e.getMessage());
                 code = Math.max(code, 2);
                 continue;
             }

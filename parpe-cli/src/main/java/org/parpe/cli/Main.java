@@ -7,6 +7,7 @@ import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.parpe.cli.bench.BenchCommand;
+import org.parpe.core.expr.Names;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
@@ -24,8 +25,12 @@ import picocli.CommandLine.Command;
         },
         footer = {"", "  gui [FILE] [--run-for S] [--screenshot F.png] [--exit]",
                   "          Open the IDE (./parpe with no arguments does the same).",
-                  "", "Exit codes: 0 success, 1 script errors, 2 usage errors, 3 run-time error."})
+                  "", "Exit codes: 0 success, 1 script errors, 2 usage errors, 3 run-time error,",
+                  "            4 internal error."})
 public final class Main implements Runnable {
+    /** The exit code of a failure of PARPE itself, distinct from a script's run-time error (3). */
+    public static final int INTERNAL_ERROR = 4;
+
     static {
         // Plots are drawn with AWT into images; the command line never opens a window, so AWT
         // must not load its X11 toolkit even where a display is set (and X libraries are absent).
@@ -52,13 +57,36 @@ public final class Main implements Runnable {
         cl.setErr(new PrintWriter(err, true));
         cl.setExecutionExceptionHandler((ex, line, parsed) -> internalError(ex, err));
         cl.setParameterExceptionHandler((ex, args2) -> {
-            err.println("parpe: " + ex.getMessage());
-            CommandLine.UnmatchedArgumentException.printSuggestions(ex, err);
+            String command = unknownCommand(ex, cl);
+            if (command != null) {
+                err.println("parpe: unknown command '" + command + "'" + Names.suggest(command,
+                        cl.getSubcommands().keySet()) + "; commands are " + String.join(", ", cl.getSubcommands().keySet())
+                        + " and gui");
+            } else {
+                err.println("parpe: " + ex.getMessage());
+                CommandLine.UnmatchedArgumentException.printSuggestions(ex, err);
+            }
             err.println("Try 'parpe " + (ex.getCommandLine() == cl ? "" : ex.getCommandLine().getCommandName() + " ")
                     + "--help' for usage.");
             return 2;
         });
-        return cl.execute(args);
+        try {
+            return cl.execute(args);
+        } catch (OutOfMemoryError e) {
+            // inputs are capped at 16 MiB, which loads in well under 1 GiB; a smaller heap may not do
+            err.println("parpe: out of memory with a Java heap of " + (Runtime.getRuntime().maxMemory() >> 20)
+                    + " MiB; allow more with JAVA_TOOL_OPTIONS=-Xmx1g");
+            return INTERNAL_ERROR;
+        }
+    }
+
+    /** The word given where a command was expected ({@code parpe rn}), or {@code null}. */
+    private static String unknownCommand(CommandLine.ParameterException ex, CommandLine top) {
+        if (ex instanceof CommandLine.UnmatchedArgumentException u && ex.getCommandLine() == top
+                && !u.getUnmatched().isEmpty() && !u.getUnmatched().get(0).startsWith("-")) {
+            return u.getUnmatched().get(0);
+        }
+        return null;
     }
 
     /** Reports a failure of PARPE itself: one line for the user, the details in a file. */
@@ -74,6 +102,6 @@ public final class Main implements Runnable {
             where = "(could not write a crash file: " + io.getMessage() + ")";
         }
         err.println("parpe: internal error: " + ex + "; please attach " + where + " to a bug report");
-        return 3;
+        return INTERNAL_ERROR;
     }
 }

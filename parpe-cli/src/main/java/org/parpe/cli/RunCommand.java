@@ -4,9 +4,9 @@ import java.io.BufferedWriter;
 import java.io.IOException;
 import java.io.OutputStreamWriter;
 import java.io.PrintStream;
+import java.io.UncheckedIOException;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -29,6 +29,7 @@ import org.parpe.core.run.Stimulus;
 import org.parpe.core.run.StimulusParser;
 import org.parpe.core.run.TargetException;
 import org.parpe.core.run.WallClockPacer;
+import org.parpe.core.xml.InputFiles;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -37,7 +38,7 @@ import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code parpe run}: runs a script headless, on the simulator, on hardware, or both (PARSL.md §11). */
-@Command(name = "run", description = "Run a PARSL script. Without --sim or --port only setpoints are computed, as fast as possible.")
+@Command(name = "run", mixinStandardHelpOptions = true, description = "Run a PARSL script. Without --sim or --port only setpoints are computed, as fast as possible.")
 final class RunCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "FILE", description = "The PARSL script.")
     Path file;
@@ -69,6 +70,8 @@ final class RunCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
+    private OutputFile traceFile;
+
     @Override
     public Integer call() throws Exception {
         PrintStream err = errStream();
@@ -85,14 +88,10 @@ final class RunCommand implements Callable<Integer> {
     }
 
     private int execute(PrintStream err) throws Exception {
-        if (!Files.isReadable(file) || Files.isDirectory(file)) {
-            throw new UsageException("cannot read '" + file + "'");
-        }
-        if (!(tick > 0) || !Double.isFinite(tick)) {
-            throw new UsageException("--tick must be > 0 seconds, got " + tick);
-        }
-        if (duration != null && !(duration >= 0)) {
-            throw new UsageException("--duration must be >= 0 seconds, got " + duration);
+        ClockOptions.check(tick, duration);
+        Inputs.check(file);
+        if (stimulus != null) {
+            Inputs.check(stimulus);
         }
         LoadResult r = ScriptLoader.load(file, parseParams());
         for (Diagnostic d : r.diagnostics()) {
@@ -109,6 +108,11 @@ final class RunCommand implements Callable<Integer> {
         if (program.main() == null) {
             err.println(file + ": warning: the program has no <main>; there is nothing to run");
             return 0;
+        }
+        checkOutputs(r);
+        if (duration == null) {
+            err.println("parpe: no --duration: the run lasts until <main> ends or Ctrl-C; use --duration SECONDS"
+                    + " to bound it");
         }
         RunOptions options = new RunOptions(tick, seed, stimuli(program));
         Run.Builder builder = Run.builder(program, options, d -> err.println(d.format()));
@@ -141,17 +145,21 @@ final class RunCommand implements Callable<Integer> {
         RunOutcome outcome;
         try (InterruptHook hook = new InterruptHook(run)) {
             outcome = run.execute();
-        } finally {
             if (out != null && !toStdout) {
-                out.close();
+                out.close(); // replaces the trace file, also after a run-time error (its rows are kept)
             } else if (out != null) {
                 out.flush();
             }
+        } catch (UncheckedIOException e) {
+            // an output that failed while the run wrote it (full disk): OutputFile named it
+            throw new UsageException(e.getCause().getMessage());
+        } catch (IOException e) {
+            throw new UsageException(e.getMessage());
         }
         if (outcome.status() == RunOutcome.Status.STOPPED) {
             err.println("parpe: stopped at t=" + String.format(Locale.ROOT, "%.3f", outcome.time()) + " s");
         }
-        return outcome.status() == RunOutcome.Status.ERROR ? 3 : 0;
+        return sim.outputsWritten(outcome.status() == RunOutcome.Status.ERROR ? 3 : 0);
     }
 
     private Map<String, Double> parseParams() throws UsageException {
@@ -177,15 +185,26 @@ final class RunCommand implements Callable<Integer> {
         }
         String text;
         try {
-            text = Files.readString(stimulus, StandardCharsets.UTF_8);
-        } catch (IOException | RuntimeException e) {
-            throw new UsageException("cannot read stimulus file '" + stimulus + "'");
+            text = InputFiles.readText(stimulus);
+        } catch (IOException e) {
+            throw new UsageException("cannot read stimulus file '" + stimulus + "': " + e.getMessage());
         }
         try {
             return StimulusParser.parse(stimulus.toString(), text, program);
         } catch (StimulusParser.StimulusException e) {
             throw new UsageException(e.getMessage());
         }
+    }
+
+    /** Refuses outputs that would replace a directory, a device or an input, before the run starts. */
+    private void checkOutputs(LoadResult r) throws UsageException {
+        List<Path> inputs = new ArrayList<>(r.files());
+        if (stimulus != null) {
+            inputs.add(stimulus);
+        }
+        sim.addInputs(inputs);
+        traceFile = OutputFile.ofOptional("--trace", trace, inputs);
+        sim.checkOutputs(inputs);
     }
 
     private Writer traceWriter() throws UsageException {
@@ -195,11 +214,6 @@ final class RunCommand implements Callable<Integer> {
         if (trace.equals("-")) {
             return new BufferedWriter(new OutputStreamWriter(System.out, StandardCharsets.UTF_8), 1 << 16);
         }
-        try {
-            Path p = Path.of(trace);
-            return Files.newBufferedWriter(p, StandardCharsets.UTF_8);
-        } catch (IOException | RuntimeException e) {
-            throw new UsageException("cannot write trace file '" + trace + "': " + e.getMessage());
-        }
+        return traceFile.openWriter();
     }
 }

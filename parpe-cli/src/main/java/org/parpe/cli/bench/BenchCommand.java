@@ -11,7 +11,7 @@ import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code parpe bench}: runs every registered benchmark and prints {@code name=value} lines. */
-@Command(name = "bench", description = "Measure speed: scheduler, loading, simulator, serial bus. Prints name=value lines.")
+@Command(name = "bench", mixinStandardHelpOptions = true, description = "Measure speed: scheduler, loading, simulator, serial bus. Prints name=value lines.")
 public final class BenchCommand implements Callable<Integer> {
     @Option(names = "--only", paramLabel = "NAME", description = "Run only the benchmarks with these names (repeatable).")
     List<String> only = new ArrayList<>();
@@ -50,7 +50,7 @@ public final class BenchCommand implements Callable<Integer> {
                 out.flush();
             } else if (fork(b.name()) != 0) {
                 spec.commandLine().getErr().println("parpe: benchmark '" + b.name() + "' failed");
-                return 3;
+                return org.parpe.cli.Main.INTERNAL_ERROR;
             }
         }
         return 0;

@@ -29,7 +29,7 @@ import picocli.CommandLine.Model.CommandSpec;
  * ({@code pose ID DEG}), press touch sensors ({@code touch ID left|right|both|none}) or print the
  * modules' state ({@code status}).
  */
-@Command(name = "emulate", description = {"Emulate PolyBot modules on a serial device (e.g. one end of a socat pty pair).",
+@Command(name = "emulate", mixinStandardHelpOptions = true, description = {"Emulate PolyBot modules on a serial device (e.g. one end of a socat pty pair).",
     "Standard input takes: pose ID DEG | touch ID left|right|both|none | status | quit."})
 public final class EmulateCommand implements Callable<Integer> {
     @Option(names = "--port", required = true, paramLabel = "PATH", description = "The serial device to serve.")

@@ -6,13 +6,16 @@ import java.io.InputStream;
 import java.io.InputStreamReader;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import org.parpe.cli.Inputs;
+import org.parpe.cli.OutputFile;
 import org.parpe.cli.UsageException;
 import org.parpe.core.diag.Diagnostic;
+import org.parpe.core.expr.ExprCompiler;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
 import org.parpe.core.model.Group;
@@ -21,7 +24,6 @@ import org.parpe.serial.bus.BusMaster;
 import org.parpe.serial.link.SerialLink;
 import org.parpe.serial.record.PoseRecorder;
 import org.parpe.serial.record.PoseRecording;
-import org.parpe.serial.record.RecordingWriter;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -34,7 +36,7 @@ import picocli.CommandLine.Model.CommandSpec;
  * {@code parpe run} plays back. The file is rewritten after every pose, so Ctrl-C, the end of
  * input or a crash never lose what was captured.
  */
-@Command(name = "record", description = {"Record poses of a group of modules posed by hand into a PARSL file.",
+@Command(name = "record", mixinStandardHelpOptions = true, description = {"Record poses of a group of modules posed by hand into a PARSL file.",
     "Press Enter to capture a pose; Ctrl-D (end of input) or Ctrl-C finishes."})
 public final class RecordCommand implements Callable<Integer> {
     @Option(names = "--port", required = true, paramLabel = "PATH", description = "The serial device of the modules.")
@@ -70,6 +72,8 @@ public final class RecordCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
+    private OutputFile outFile;
+
     /** Standard input, replaceable by tests. */
     InputStream input = System.in;
 
@@ -88,9 +92,7 @@ public final class RecordCommand implements Callable<Integer> {
         if (source.modules != null) {
             return ModuleList.parse(source.modules, "--modules");
         }
-        if (!Files.isReadable(source.script) || Files.isDirectory(source.script)) {
-            throw new UsageException("cannot read '" + source.script + "'");
-        }
+        Inputs.check(source.script);
         LoadResult r = ScriptLoader.load(source.script, Map.of());
         if (r.program() == null) {
             StringBuilder b = new StringBuilder("the script has errors:");
@@ -117,10 +119,14 @@ public final class RecordCommand implements Callable<Integer> {
         if (!group.matches("[A-Za-z_][A-Za-z0-9_]*")) {
             throw new UsageException("--group must be a PARSL name ([A-Za-z_][A-Za-z0-9_]*), got '" + group + "'");
         }
-        Path dir = out.toAbsolutePath().getParent();
-        if (dir != null && !Files.isDirectory(dir)) {
-            throw new UsageException("cannot write '" + out + "': directory " + dir + " does not exist");
+        // the recording defines the group, the automaton rec_GROUP and the behavior play_GROUP
+        for (String name : new String[] {group, "rec_" + group, "play_" + group}) {
+            if (ExprCompiler.isReserved(name) && !name.equals("all")) {
+                throw new UsageException("--group '" + group + "' cannot be used: '" + name
+                        + "' is a reserved word of PARSL (a function, constant or keyword)");
+            }
         }
+        outFile = OutputFile.of("--out", out.toString(), source.script == null ? List.of() : List.of(source.script));
     }
 
     private int record(PrintWriter err) throws UsageException, IOException, InterruptedException {
@@ -140,7 +146,7 @@ public final class RecordCommand implements Callable<Integer> {
                         + "; nothing was made limp");
             }
             recorder.begin();
-            RecordingSession session = new RecordingSession(recorder, new PoseRecording(group, ids), out,
+            RecordingSession session = new RecordingSession(recorder, new PoseRecording(group, ids), outFile,
                     "recorded from " + port, err);
             SerialLink.beforePortsClose(session::end);
             return session.run(every, count, new BufferedReader(new InputStreamReader(input, StandardCharsets.UTF_8)));

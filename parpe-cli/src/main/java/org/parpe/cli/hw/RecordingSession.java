@@ -3,8 +3,9 @@ package org.parpe.cli.hw;
 import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.file.Path;
 import java.util.concurrent.atomic.AtomicBoolean;
+import org.parpe.cli.OutputFile;
+import org.parpe.cli.UsageException;
 import org.parpe.serial.record.PoseRecorder;
 import org.parpe.serial.record.PoseRecording;
 import org.parpe.serial.record.RecordingWriter;
@@ -17,14 +18,14 @@ import org.parpe.serial.record.RecordingWriter;
 final class RecordingSession {
     private final PoseRecorder recorder;
     private final PoseRecording recording;
-    private final Path out;
+    private final OutputFile out;
     private final String origin;
     private final PrintWriter err;
     private final AtomicBoolean ended = new AtomicBoolean();
     private final long start = System.nanoTime();
     private long last = start;
 
-    RecordingSession(PoseRecorder recorder, PoseRecording recording, Path out, String origin, PrintWriter err) {
+    RecordingSession(PoseRecorder recorder, PoseRecording recording, OutputFile out, String origin, PrintWriter err) {
         this.recorder = recorder;
         this.recording = recording;
         this.out = out;
@@ -33,7 +34,7 @@ final class RecordingSession {
     }
 
     /** Records until the input ends, {@code count} poses were taken, or the JVM is stopped. */
-    int run(Integer everyMs, Integer count, BufferedReader in) throws IOException, InterruptedException {
+    int run(Integer everyMs, Integer count, BufferedReader in) throws IOException, InterruptedException, UsageException {
         err.println("record: group " + recording.group() + " (modules " + ModuleList.format(recording.modules())
                 + ") is limp: pose it by hand; " + (everyMs == null ? "press Enter to capture a pose, Ctrl-D to finish"
                 : "capturing every " + everyMs + " ms, Ctrl-C to finish"));
@@ -54,7 +55,7 @@ final class RecordingSession {
         return recording.size() == 0 ? 1 : 0;
     }
 
-    private synchronized void capture() throws IOException {
+    private synchronized void capture() throws IOException, UsageException {
         if (ended.get()) {
             return;
         }
@@ -67,7 +68,7 @@ final class RecordingSession {
         long now = System.nanoTime();
         recording.add(pose, (now - last) / 1e9);
         last = now;
-        RecordingWriter.write(recording, out, origin);
+        out.write(RecordingWriter.toParsl(recording, origin));
         err.println(RecordCommand.describe(recording.size(), (now - start) / 1e9, pose));
     }
 

@@ -9,7 +9,7 @@ import java.awt.Stroke;
 import java.awt.geom.Path2D;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
-import java.nio.file.Path;
+import java.io.OutputStream;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -38,7 +38,7 @@ final class PlotWriter {
         this.data = data;
     }
 
-    void write(Path file) throws IOException {
+    void write(OutputStream out) throws IOException {
         System.setProperty("java.awt.headless", "true");
         List<Integer> shown = chooseModules();
         int height = TOP + shown.size() * (PANEL + GAP) + BOTTOM;
@@ -55,11 +55,7 @@ final class PlotWriter {
             panel(g, shown.get(p), top, tEnd, p == shown.size() - 1, COLORS[p % COLORS.length]);
         }
         g.dispose();
-        Path parent = file.toAbsolutePath().getParent();
-        if (parent != null && !java.nio.file.Files.isDirectory(parent)) {
-            throw new IOException("directory " + parent + " does not exist");
-        }
-        if (!ImageIO.write(img, "png", file.toFile())) {
+        if (!ImageIO.write(img, "png", out)) {
             throw new IOException("no PNG writer available");
         }
     }

@@ -1,7 +1,6 @@
 package org.parpe.cli.sim;
 
 import java.io.PrintWriter;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Comparator;
@@ -9,6 +8,8 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import org.parpe.cli.ClockOptions;
+import org.parpe.cli.Inputs;
 import org.parpe.cli.UsageException;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.load.LoadResult;
@@ -23,7 +24,7 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
 /** {@code parpe race}: runs several scripts on the same simulated robot and ranks them by distance. */
-@Command(name = "race", description = "Run scripts on the simulator, each on a fresh robot, and rank them by the"
+@Command(name = "race", mixinStandardHelpOptions = true, description = "Run scripts on the simulator, each on a fresh robot, and rank them by the"
         + " distance their robot's centre of mass travelled.")
 public final class RaceCommand implements Callable<Integer> {
     @Parameters(arity = "1..*", paramLabel = "FILE", description = "PARSL scripts to race.")
@@ -50,24 +51,21 @@ public final class RaceCommand implements Callable<Integer> {
     public Integer call() {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
-        if (!(duration > 0) || !(tick > 0) || !Double.isFinite(duration)) {
-            err.println("parpe: --duration and --tick must be > 0 seconds");
-            return 2;
-        }
         List<Entry> entries = new ArrayList<>();
-        for (Path f : files) {
-            if (!Files.isReadable(f) || Files.isDirectory(f)) {
-                err.println("parpe: cannot read '" + f + "'");
-                return 2;
+        try {
+            if (!(duration > 0)) {
+                throw new UsageException("--duration must be > 0 seconds, got " + duration);
             }
-            Entry e;
-            try {
-                e = race(f, err);
-            } catch (UsageException u) {
-                err.println("parpe: " + u.getMessage());
-                return 2;
+            ClockOptions.check(tick, duration);
+            for (Path f : files) {
+                Inputs.check(f);
             }
-            entries.add(e);
+            for (Path f : files) {
+                entries.add(race(f, err));
+            }
+        } catch (UsageException u) {
+            err.println("parpe: " + u.getMessage());
+            return 2;
         }
         entries.sort(Comparator.comparing((Entry e) -> e.metrics() == null)
                 .thenComparing(e -> e.metrics() == null ? 0 : -e.metrics().distance()));

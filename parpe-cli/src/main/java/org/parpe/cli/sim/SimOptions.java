@@ -2,9 +2,10 @@ package org.parpe.cli.sim;
 
 import java.io.IOException;
 import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
+import org.parpe.cli.OutputFile;
 import org.parpe.cli.UsageException;
 import org.parpe.core.run.Run;
 import org.parpe.core.run.RunOutcome;
@@ -32,6 +33,11 @@ public class SimOptions {
 
     @Option(names = "--realtime", description = "With --sim: pace the run to the wall clock.")
     boolean realtime;
+
+    private OutputFile metricsFile;
+    private OutputFile plotFile;
+    /** Whether writing the metrics or the plot failed (reported at once). */
+    private boolean outputFailed;
 
     /** Whether {@code --realtime} was given. */
     public boolean realtime() {
@@ -77,25 +83,49 @@ public class SimOptions {
         }
     }
 
+    /** Adds the robot configuration file of {@code --sim}, if it names one, to the run's inputs. */
+    public void addInputs(List<Path> inputs) {
+        try {
+            if (sim != null && Files.isRegularFile(Path.of(sim.trim()))) {
+                inputs.add(Path.of(sim.trim()));
+            }
+        } catch (java.nio.file.InvalidPathException notAFile) {
+            // a generator spec such as snake:n=8 need not be a valid path
+        }
+    }
+
+    /** Checks the {@code --metrics} and {@code --plot} targets before the run starts. */
+    public void checkOutputs(List<Path> inputs) throws UsageException {
+        metricsFile = OutputFile.ofOptional("--metrics", metrics, inputs);
+        plotFile = plot == null ? null : OutputFile.of("--plot", plot.toString(), inputs);
+    }
+
+    /** {@code code}, or 2 (a usage or I/O error) if writing the metrics or the plot failed. */
+    public int outputsWritten(int code) {
+        return outputFailed ? 2 : code;
+    }
+
     private void writeMetrics(SimMetrics m, RunOutcome outcome, PrintStream err) {
         String json = m.toJson() + System.lineSeparator();
-        if (metrics.equals("-")) {
+        if (metricsFile == null) {
             System.out.print(json);
             System.out.flush();
             return;
         }
         try {
-            Files.writeString(Path.of(metrics), json, StandardCharsets.UTF_8);
-        } catch (IOException | RuntimeException e) {
-            err.println("parpe: error: cannot write metrics file '" + metrics + "': " + e.getMessage());
+            metricsFile.write(json);
+        } catch (UsageException e) {
+            err.println("parpe: " + e.getMessage());
+            outputFailed = true;
         }
     }
 
     private void writePlot(PlotRecorder recorder, PrintStream err) {
         try {
-            new PlotWriter(recorder).write(plot);
-        } catch (IOException | RuntimeException e) {
-            err.println("parpe: error: cannot write plot '" + plot + "': " + e.getMessage());
+            plotFile.write(new PlotWriter(recorder)::write);
+        } catch (UsageException e) {
+            err.println("parpe: " + e.getMessage());
+            outputFailed = true;
         }
     }
 }

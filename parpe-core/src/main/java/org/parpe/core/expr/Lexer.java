@@ -32,7 +32,7 @@ final class Lexer {
             char c = s.charAt(i);
             if (Character.isWhitespace(c)) {
                 i++;
-            } else if (Character.isDigit(c) || c == '.' && i + 1 < s.length() && Character.isDigit(s.charAt(i + 1))) {
+            } else if (isDigit(c) || c == '.' && i + 1 < s.length() && isDigit(s.charAt(i + 1))) {
                 int end = number(s, i);
                 out.add(new Token(Type.NUMBER, s.substring(i, end), i, end));
                 i = end;
@@ -67,6 +67,8 @@ final class Lexer {
                     throw new LexError(c == '=' ? "'=' is not an operator; use '==' to compare"
                             : c == '&' ? "'&' is not an operator; use '&&'"
                             : c == '|' ? "'|' is not an operator; use '||'"
+                            : Character.isDigit(c) ? String.format(java.util.Locale.ROOT, "'%c' (U+%04X) is not an ASCII digit; numbers are"
+                                    + " written with the digits 0-9", c, (int) c)
                             : "unexpected character '" + c + "'", i);
                 }
                 out.add(new Token(Type.OP, op, i, i + op.length()));
@@ -85,6 +87,11 @@ final class Lexer {
         return null;
     }
 
+    /** Only ASCII digits: {@link Character#isDigit} accepts every script's digits, which Java cannot parse. */
+    private static boolean isDigit(char c) {
+        return c >= '0' && c <= '9';
+    }
+
     static boolean isNameStart(char c) {
         return c < 128 && (Character.isLetter(c) || c == '_');
     }
@@ -99,12 +106,12 @@ final class Lexer {
 
     private static int number(String s, int i) {
         int end = i;
-        while (end < s.length() && Character.isDigit(s.charAt(end))) {
+        while (end < s.length() && isDigit(s.charAt(end))) {
             end++;
         }
         if (end < s.length() && s.charAt(end) == '.') {
             end++;
-            while (end < s.length() && Character.isDigit(s.charAt(end))) {
+            while (end < s.length() && isDigit(s.charAt(end))) {
                 end++;
             }
         }
@@ -113,8 +120,8 @@ final class Lexer {
             if (e < s.length() && (s.charAt(e) == '+' || s.charAt(e) == '-')) {
                 e++;
             }
-            if (e < s.length() && Character.isDigit(s.charAt(e))) {
-                while (e < s.length() && Character.isDigit(s.charAt(e))) {
+            if (e < s.length() && isDigit(s.charAt(e))) {
+                while (e < s.length() && isDigit(s.charAt(e))) {
                     e++;
                 }
                 end = e;

@@ -1,8 +1,6 @@
 package org.parpe.core.load;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
@@ -13,6 +11,7 @@ import java.util.Set;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.expr.Names;
+import org.parpe.core.xml.InputFiles;
 import org.parpe.core.xml.SourceText;
 import org.parpe.core.xml.XElement;
 import org.parpe.core.xml.XText;
@@ -25,6 +24,8 @@ import org.parpe.core.xml.XmlReader;
 final class Assembly {
     static final List<String> SECTIONS = List.of("robot", "parameters", "controls", "main", "behaviors",
             "automata", "states");
+    /** How deep includes may nest: far beyond real use, and the assembly recurses once per level. */
+    static final int MAX_INCLUDE_DEPTH = 64;
     private static final List<String> MERGED = List.of("parameters", "controls", "states", "automata", "behaviors");
 
     /**
@@ -42,6 +43,8 @@ final class Assembly {
     }
 
     final List<Section> sections = new ArrayList<>();
+    /** The main file and every included file read, in the order read. */
+    final List<Path> files = new ArrayList<>();
     XElement robot;
     int robotOrder;
     XElement main;
@@ -56,18 +59,9 @@ final class Assembly {
         this.diags = diags;
     }
 
-    /** Reads a file as UTF-8 text; returns {@code null} when it cannot be read. */
-    static String read(Path file) {
-        try {
-            String s = Files.readString(file, StandardCharsets.UTF_8);
-            return s.startsWith("\uFEFF") ? s.substring(1) : s;
-        } catch (IOException | RuntimeException e) {
-            return null;
-        }
-    }
-
     /** The main file: its text is given (it may come from an editor). */
     void addMain(Path file, String text) {
+        files.add(file);
         SourceText src = new SourceText(file.toString(), text);
         XElement root = XmlReader.read(src, diags);
         if (root == null) {
@@ -132,12 +126,20 @@ final class Assembly {
             diags.error(rel.pos(), "include cycle: " + String.join(" -> ", chain));
             return;
         }
+        if (stack.size() > MAX_INCLUDE_DEPTH) {
+            diags.error(rel.pos(), "this include would nest " + stack.size() + " levels deep; includes nest at most "
+                    + MAX_INCLUDE_DEPTH + " levels");
+            return;
+        }
         if (!done.add(k)) {
             return; // reached twice without a cycle: loaded once
         }
-        String text = read(target);
-        if (text == null) {
-            diags.error(rel.pos(), "cannot read included file '" + target + "'");
+        String text;
+        try {
+            files.add(target);
+            text = InputFiles.readText(target);
+        } catch (IOException e) {
+            diags.error(rel.pos(), "cannot read included file '" + target + "': " + e.getMessage());
             return;
         }
         XElement root = XmlReader.read(new SourceText(target.toString(), text), diags);

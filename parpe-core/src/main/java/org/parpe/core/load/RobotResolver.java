@@ -16,6 +16,7 @@ import org.parpe.core.model.Group;
 import org.parpe.core.model.Numbers;
 import org.parpe.core.model.Robot;
 import org.parpe.core.model.SensorDecl;
+import org.parpe.core.xml.InputFiles;
 import org.parpe.core.xml.SourceText;
 import org.parpe.core.xml.XElement;
 import org.parpe.core.xml.XText;
@@ -35,6 +36,8 @@ final class RobotResolver {
     private final List<SensorDecl> sensors = new ArrayList<>();
     /** Groups defined with errors: uses of them are not reported again. */
     final java.util.Set<String> broken = new java.util.HashSet<>();
+    /** The robot file read for {@code <robot file=...>}, or {@code null}. */
+    Path file;
 
     RobotResolver(DiagnosticSink d, NameRegistry names, Scope paramScope) {
         this.d = d;
@@ -59,9 +62,12 @@ final class RobotResolver {
                 return null;
             }
             Path p = Assembly.resolve(mainFile, file.value().trim());
-            String text = Assembly.read(p);
-            if (text == null) {
-                d.error(file.pos(), "cannot read robot file '" + p + "'");
+            String text;
+            this.file = p;
+            try {
+                text = InputFiles.readText(p);
+            } catch (java.io.IOException e) {
+                d.error(file.pos(), "cannot read robot file '" + p + "': " + e.getMessage());
                 return null;
             }
             body = XmlReader.read(new SourceText(p.toString(), text), d);

@@ -1,5 +1,6 @@
 package org.parpe.core.load;
 
+import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -16,6 +17,7 @@ import org.parpe.core.model.Program;
 import org.parpe.core.model.Robot;
 import org.parpe.core.run.Channel;
 import org.parpe.core.run.SensorTable;
+import org.parpe.core.xml.InputFiles;
 
 /**
  * Loads a PARSL program: XML with positions → parse tree → resolution and validation →
@@ -27,11 +29,13 @@ public final class ScriptLoader {
 
     /** Loads {@code file} with the given parameter values (defaults for the others). */
     public static LoadResult load(Path file, Map<String, Double> parameters) {
-        String text = Assembly.read(file);
-        if (text == null) {
+        String text;
+        try {
+            text = InputFiles.readText(file);
+        } catch (IOException e) {
             DiagnosticList d = new DiagnosticList();
-            d.error(new SourcePos(file.toString(), 1, 1), "cannot read file '" + file + "'");
-            return new LoadResult(null, d.all(), List.of());
+            d.error(new SourcePos(file.toString(), 1, 1), "cannot read file '" + file + "': " + e.getMessage());
+            return new LoadResult(null, d.all(), List.of(), List.of(file));
         }
         return loadText(file, text, parameters);
     }
@@ -45,7 +49,7 @@ public final class ScriptLoader {
         Assembly a = new Assembly(d);
         a.addMain(file, text);
         if (d.hasErrors() && a.robot == null && a.sections.isEmpty() && a.main == null) {
-            return new LoadResult(null, d.all(), List.of());
+            return new LoadResult(null, d.all(), List.of(), a.files);
         }
         NameRegistry names = new NameRegistry();
         Declarations decl = new Declarations(d, names);
@@ -67,14 +71,17 @@ public final class ScriptLoader {
         MainDef main = a.main == null ? null
                 : new MainResolver(d, scopes, behaviors, checks, robot).resolve(a.main, decl.values);
         names.check(d);
+        if (robots.file != null) {
+            a.files.add(robots.file);
+        }
         if (d.hasErrors() || robot == null) {
-            return new LoadResult(null, d.all(), decl.parameterErrors);
+            return new LoadResult(null, d.all(), decl.parameterErrors, a.files);
         }
         List<Behavior> bs = new ArrayList<>();
         behaviors.behaviors.values().forEach(i -> bs.add(i.model()));
         Program p = new Program(file.toString(), robot, decl.parameters, decl.values, decl.controls, decl.radioWords,
                 new ArrayList<>(states.states.values()), new ArrayList<>(states.automata.values()), bs, main);
-        return new LoadResult(p, d.all(), decl.parameterErrors);
+        return new LoadResult(p, d.all(), decl.parameterErrors, a.files);
     }
 
     /** Builds the scopes of §13 rule 12 for this program. */

@@ -46,7 +46,7 @@ final class TagScanner {
         // CDATA or other constructs: keep the parser's text, placed at the start.
         int[] offsets = new int[expected.length()];
         java.util.Arrays.fill(offsets, offset);
-        return new XText(expected, offsets, offset, src);
+        return new XText(expected, offset, offsets, offset, src);
     }
 
     private static int skipSpace(String s, int i) {
@@ -60,8 +60,7 @@ final class TagScanner {
     private static XText decode(SourceText src, int from, int to, boolean attribute) {
         String s = src.text();
         StringBuilder out = new StringBuilder(to - from);
-        int[] offsets = new int[to - from];
-        int n = 0;
+        int[] offsets = null; // made only once a character is not at from + its index
         for (int i = from; i < to; i++) {
             char c = s.charAt(i);
             int at = i;
@@ -79,10 +78,20 @@ final class TagScanner {
             if (attribute && (c == '\n' || c == '\t')) {
                 c = ' ';
             }
+            int n = out.length();
+            if (offsets == null && at != from + n) {
+                offsets = new int[to - from];
+                for (int k = 0; k < n; k++) {
+                    offsets[k] = from + k;
+                }
+            }
+            if (offsets != null) {
+                offsets[n] = at;
+            }
             out.append(c);
-            offsets[n++] = at;
         }
-        return new XText(out.toString(), java.util.Arrays.copyOf(offsets, n), to, src);
+        int[] exact = offsets == null ? null : java.util.Arrays.copyOf(offsets, out.length());
+        return new XText(out.toString(), from, exact, to, src);
     }
 
     private static char entity(String ent) {

@@ -10,17 +10,26 @@ import org.parpe.core.diag.SourcePos;
  */
 public final class XText {
     private final String value;
+    /** The offset of the first character when characters map one to one onto the file. */
+    private final int start;
+    /** The offset of each character, only where decoding made them differ (entities, CR LF). */
     private final int[] offsets;
     private final int endOffset;
     private final SourceText source;
     private final SourcePos fixed;
 
-    XText(String value, int[] offsets, int endOffset, SourceText source) {
-        this(value, offsets, endOffset, source, null);
+    /**
+     * A text whose character {@code i} is at {@code offsets[i]}, or, with {@code offsets}
+     * {@code null}, at {@code start + i}: most text has no entity, and an offset per character
+     * made a large gait table take four times its size again.
+     */
+    XText(String value, int start, int[] offsets, int endOffset, SourceText source) {
+        this(value, start, offsets, endOffset, source, null);
     }
 
-    private XText(String value, int[] offsets, int endOffset, SourceText source, SourcePos fixed) {
+    private XText(String value, int start, int[] offsets, int endOffset, SourceText source, SourcePos fixed) {
         this.value = value;
+        this.start = start;
         this.offsets = offsets;
         this.endOffset = endOffset;
         this.source = source;
@@ -29,7 +38,7 @@ public final class XText {
 
     /** A text whose every character is placed at {@code pos} (e.g. a command-line value). */
     public static XText detached(String value, SourcePos pos) {
-        return new XText(value, new int[0], 0, null, pos);
+        return new XText(value, 0, null, 0, null, pos);
     }
 
     /** The decoded value. */
@@ -42,13 +51,14 @@ public final class XText {
         if (fixed != null) {
             return fixed;
         }
-        if (offsets.length == 0) {
-            return source.pos(endOffset);
+        return source.pos(offset(Math.max(index, 0)));
+    }
+
+    private int offset(int index) {
+        if (index >= value.length()) {
+            return endOffset;
         }
-        if (index < 0) {
-            return source.pos(offsets[0]);
-        }
-        return source.pos(index < offsets.length ? offsets[index] : endOffset);
+        return offsets == null ? start + index : offsets[index];
     }
 
     /** The position where the value starts. */
@@ -59,10 +69,10 @@ public final class XText {
     /** The part {@code [from, to)} of this text, keeping positions. */
     public XText sub(int from, int to) {
         if (fixed != null) {
-            return new XText(value.substring(from, to), offsets, 0, null, fixed);
+            return new XText(value.substring(from, to), 0, null, 0, null, fixed);
         }
-        int end = to < offsets.length ? offsets[to] : endOffset;
-        return new XText(value.substring(from, to), Arrays.copyOfRange(offsets, from, to), end, source, null);
+        int[] part = offsets == null ? null : Arrays.copyOfRange(offsets, from, to);
+        return new XText(value.substring(from, to), offset(from), part, offset(to), source, null);
     }
 
     @Override

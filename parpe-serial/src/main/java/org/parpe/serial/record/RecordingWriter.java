@@ -1,11 +1,5 @@
 package org.parpe.serial.record;
 
-import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.AtomicMoveNotSupportedException;
-import java.nio.file.Files;
-import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.Locale;
 
 /**
@@ -75,18 +69,6 @@ public final class RecordingWriter {
                 + "    </play_" + g + ">\n  </behaviors>\n"
                 + "  <main>\n    <play_" + g + "/>\n  </main>\n"
                 + "</program>\n";
-    }
-
-    /** Writes the recording to {@code file}, atomically replacing an older version. */
-    public static void write(PoseRecording r, Path file, String origin) throws IOException {
-        Path abs = file.toAbsolutePath();
-        Path tmp = abs.resolveSibling(abs.getFileName() + ".tmp");
-        Files.writeString(tmp, toParsl(r, origin), StandardCharsets.UTF_8);
-        try {
-            Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-        } catch (AtomicMoveNotSupportedException e) {
-            Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING);
-        }
     }
 
     private static String comment(String origin) {

@@ -8,7 +8,6 @@ import com.fasterxml.jackson.dataformat.xml.XmlFactory;
 import com.fasterxml.jackson.dataformat.xml.deser.FromXmlParser;
 import java.io.IOException;
 import java.io.InputStream;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -17,6 +16,8 @@ import java.util.Map;
 import java.util.Set;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
+import org.parpe.core.model.Numbers;
+import org.parpe.core.xml.InputFiles;
 
 /**
  * Reads a robot configuration file (format in {@code docs/simulator.md}) with Jackson's XML
@@ -43,7 +44,7 @@ final class ConfigReader {
     /** Reads {@code path}; returns {@code null} after reporting errors. */
     static RobotConfig read(Path path, DiagnosticSink diags) {
         ConfigReader r = new ConfigReader(path.toString(), diags);
-        try (InputStream in = Files.newInputStream(path);
+        try (InputStream in = InputFiles.open(path);
              JsonParser p = new XmlFactory().createParser(in)) {
             r.document(p);
         } catch (JsonProcessingException e) {
@@ -213,16 +214,13 @@ final class ConfigReader {
         if (v == null) {
             return fallback;
         }
-        try {
-            double d = Double.parseDouble(v);
-            if (!Double.isFinite(d) || whole && d != Math.rint(d)) {
-                throw new NumberFormatException(v);
-            }
-            return d;
-        } catch (NumberFormatException e) {
+        // the plain decimals of scripts: Double.parseDouble would take "1d", "0x1p3" or "NaN"
+        Double d = Numbers.parsePlain(v);
+        if (d == null || whole && d != Math.rint(d)) {
             error(at, key + " must be " + (whole ? "a whole number" : "a number") + ", got '" + v + "'");
             return fallback;
         }
+        return d;
     }
 
     private SourcePos pos(JsonLocation l) {

@@ -59,6 +59,10 @@ final class GeneratorArgs {
             return fallback;
         }
         try {
+            if (!v.matches("[+-]?[0-9]+")) {
+                // Integer.parseInt would read other scripts' digits ("٣" as 3)
+                throw new NumberFormatException(v);
+            }
             int n = Integer.parseInt(v);
             if (n < min || n > max) {
                 error(columns.get(key), key + " must be in " + min + ".." + max + ", got " + n);

@@ -38,12 +38,7 @@ public final class RobotConfigs {
         String spec = specOrPath.trim();
         RobotConfig config;
         if (spec.endsWith(".xml") || spec.contains("/") || Files.isRegularFile(Path.of(spec))) {
-            Path path = Path.of(spec);
-            if (!Files.isRegularFile(path)) {
-                diags.error(new SourcePos(spec, 1, 1), "configuration file not found");
-                return null;
-            }
-            config = ConfigReader.read(path, diags);
+            config = ConfigReader.read(Path.of(spec), diags);
         } else {
             config = generate(spec, moduleIds, diags);
         }

@@ -1,0 +1,24 @@
+package org.parpe.cli;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import org.parpe.core.xml.InputFiles;
+
+/** Checks of the input files named on the command line, made before anything is loaded. */
+public final class Inputs {
+    private Inputs() {
+    }
+
+    /**
+     * Refuses a file that cannot be read as an input (missing, a directory, a device or FIFO, or
+     * larger than {@link InputFiles#MAX_BYTES}): an unreadable file on the command line is a usage
+     * error (PARSL.md §13 rule 15).
+     */
+    public static void check(Path file) throws UsageException {
+        try {
+            InputFiles.check(file);
+        } catch (IOException e) {
+            throw new UsageException("cannot read '" + file + "': " + e.getMessage());
+        }
+    }
+}
