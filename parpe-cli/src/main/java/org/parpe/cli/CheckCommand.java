@@ -1,9 +1,14 @@
 package org.parpe.cli;
 
+import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import java.util.stream.Stream;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
@@ -12,10 +17,15 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 
-/** {@code parpe check FILE...}: loads and validates scripts, reporting every problem. */
-@Command(name = "check", mixinStandardHelpOptions = true, description = "Check PARSL scripts; errors are printed as FILE:LINE:COL.")
+/**
+ * {@code parpe check FILE|DIR...}: loads and validates scripts, reporting every problem. A folder
+ * stands for the {@code .xml} and {@code .parsl} files directly in it (not in its subfolders,
+ * where robot configurations usually live), in name order: a teacher checks a class's folder.
+ */
+@Command(name = "check", mixinStandardHelpOptions = true, description = "Check PARSL scripts; errors are printed as FILE:LINE:COL."
+        + " A folder checks the .xml and .parsl files directly in it.")
 final class CheckCommand implements Callable<Integer> {
-    @Parameters(arity = "1..*", paramLabel = "FILE", description = "PARSL scripts to check.")
+    @Parameters(arity = "1..*", paramLabel = "FILE|DIR", description = "PARSL scripts, or folders of them, to check.")
     List<Path> files;
 
     @Spec
@@ -24,7 +34,20 @@ final class CheckCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         int code = 0;
+        List<Path> scripts = new ArrayList<>();
         for (Path f : files) {
+            if (!Files.isDirectory(f)) {
+                scripts.add(f);
+                continue;
+            }
+            List<Path> inside = scriptsIn(f);
+            if (inside.isEmpty()) {
+                spec.commandLine().getErr().println("parpe: the folder '" + f + "' has no .xml or .parsl scripts");
+                code = 2;
+            }
+            scripts.addAll(inside);
+        }
+        for (Path f : scripts) {
             try {
                 Inputs.check(f);
             } catch (UsageException e) {
@@ -45,5 +68,16 @@ final class CheckCommand implements Callable<Integer> {
             }
         }
         return code;
+    }
+
+    private List<Path> scriptsIn(Path dir) {
+        try (Stream<Path> s = Files.list(dir)) {
+            return s.filter(p -> {
+                String n = p.getFileName().toString().toLowerCase(Locale.ROOT);
+                return (n.endsWith(".xml") || n.endsWith(".parsl")) && Files.isRegularFile(p);
+            }).sorted().toList();
+        } catch (IOException | RuntimeException e) {
+            return List.of();
+        }
     }
 }

@@ -16,6 +16,7 @@ import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.sim.SimMetrics;
+import org.parpe.sim.SimTarget;
 import org.parpe.sim.Simulator;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -23,15 +24,20 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
-/** {@code parpe race}: runs several scripts on the same simulated robot and ranks them by distance. */
-@Command(name = "race", mixinStandardHelpOptions = true, description = "Run scripts on the simulator, each on a fresh robot, and rank them by the"
-        + " distance their robot's centre of mass travelled.")
+/**
+ * {@code parpe race}: runs several scripts on the simulator, each on a fresh robot of its own
+ * kind (or the one {@code --sim} names), and ranks them by how far the centre of mass went
+ * forwards (+x, the way every standard robot faces).
+ */
+@Command(name = "race", mixinStandardHelpOptions = true, description = "Run scripts on the simulator, each on a fresh"
+        + " robot, and rank them by how far their robot's centre of mass went forwards (+x).")
 public final class RaceCommand implements Callable<Integer> {
     @Parameters(arity = "1..*", paramLabel = "FILE", description = "PARSL scripts to race.")
     List<Path> files = new ArrayList<>();
 
-    @Option(names = "--sim", paramLabel = "ROBOT", defaultValue = "snake",
-            description = "GENERATOR[:key=value,...] or CONFIG.xml (default: a snake of each script's modules).")
+    @Option(names = "--sim", paramLabel = "ROBOT",
+            description = "GENERATOR[:key=value,...] or CONFIG.xml for every script (default: each script's own"
+                    + " robot, as the IDE's 'auto' picks it: a wheel script races as a wheel, a snake as a snake).")
     String sim;
 
     @Option(names = "--duration", paramLabel = "SECONDS", defaultValue = "20",
@@ -44,7 +50,7 @@ public final class RaceCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    private record Entry(String script, SimMetrics metrics, String problem) {
+    private record Entry(String script, String robot, SimMetrics metrics, String problem) {
     }
 
     @Override
@@ -67,8 +73,9 @@ public final class RaceCommand implements Callable<Integer> {
             err.println("parpe: " + u.getMessage());
             return 2;
         }
+        // The standard robots all head towards +x: ranked by how far they got that way.
         entries.sort(Comparator.comparing((Entry e) -> e.metrics() == null)
-                .thenComparing(e -> e.metrics() == null ? 0 : -e.metrics().distance()));
+                .thenComparing(e -> e.metrics() == null ? 0 : -e.metrics().dx()));
         print(out, entries);
         out.flush();
         return entries.stream().anyMatch(e -> e.metrics() == null) ? 1 : 0;
@@ -80,7 +87,7 @@ public final class RaceCommand implements Callable<Integer> {
             err.println(d.format());
         }
         if (r.program() == null || r.program().main() == null) {
-            return new Entry(file.toString(), null, r.program() == null ? "script errors" : "no <main>");
+            return new Entry(file.toString(), "", null, r.program() == null ? "script errors" : "no <main>");
         }
         java.io.PrintStream errStream = new java.io.PrintStream(new java.io.OutputStream() {
             @Override
@@ -88,26 +95,31 @@ public final class RaceCommand implements Callable<Integer> {
                 err.write(b);
             }
         }, true, java.nio.charset.StandardCharsets.UTF_8);
-        try (Simulator s = SimOptions.create(sim, r.program().moduleIds(), errStream)) {
+        String robot = sim != null ? sim : SimTarget.autoSpec(r.program());
+        try (Simulator s = SimOptions.create(robot, r.program().moduleIds(), errStream)) {
             RunOutcome outcome = SimRun.run(r.program(), s, duration, tick, d -> err.println(d.format()));
             if (outcome.status() == RunOutcome.Status.ERROR) {
-                return new Entry(file.toString(), null, "run-time error");
+                return new Entry(file.toString(), robot, null, "run-time error");
             }
-            return new Entry(file.toString(), s.metrics(), "");
+            return new Entry(file.toString(), robot, s.metrics(), "");
         }
     }
 
     private static void print(PrintWriter out, List<Entry> entries) {
         int width = Math.max(6, entries.stream().mapToInt(e -> e.script().length()).max().orElse(6));
-        out.println(String.format(Locale.ROOT, "%-4s  %-" + width + "s  %12s  %11s  %13s", "rank", "script",
-                "distance (m)", "speed (m/s)", "max tilt (°)"));
+        int robotWidth = Math.max(5, entries.stream().mapToInt(e -> e.robot().length()).max().orElse(5));
+        String columns = "%-4s  %-" + width + "s  %-" + robotWidth + "s  %11s  %12s  %11s  %13s";
+        out.println(String.format(Locale.ROOT, columns, "rank", "script", "robot", "forward (m)", "distance (m)",
+                "speed (m/s)", "max tilt (°)"));
         int rank = 1;
         for (Entry e : entries) {
             if (e.metrics() == null) {
-                out.println(String.format(Locale.ROOT, "%-4s  %-" + width + "s  %s", "-", e.script(), e.problem()));
+                out.println(String.format(Locale.ROOT, "%-4s  %-" + width + "s  %-" + robotWidth + "s  %s", "-",
+                        e.script(), e.robot(), e.problem()));
             } else {
-                out.println(String.format(Locale.ROOT, "%-4d  %-" + width + "s  %12.3f  %11.4f  %13.1f", rank++,
-                        e.script(), e.metrics().distance(), e.metrics().speed(), e.metrics().maxTiltDeg()));
+                out.println(String.format(Locale.ROOT, "%-4d  %-" + width + "s  %-" + robotWidth
+                        + "s  %11.3f  %12.3f  %11.4f  %13.1f", rank++, e.script(), e.robot(), e.metrics().dx(),
+                        e.metrics().distance(), e.metrics().speed(), e.metrics().maxTiltDeg()));
             }
         }
     }

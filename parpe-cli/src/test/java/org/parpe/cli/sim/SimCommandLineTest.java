@@ -119,8 +119,35 @@ class SimCommandLineTest {
         String[] lines = r.out().strip().split("\n");
         assertEquals(3, lines.length, r.out());
         assertTrue(lines[0].startsWith("rank"), r.out());
-        double first = Double.parseDouble(lines[1].trim().split("\\s+")[2]);
-        double second = Double.parseDouble(lines[2].trim().split("\\s+")[2]);
-        assertTrue(first >= second, r.out());
+        double first = Double.parseDouble(lines[1].trim().split("\\s+")[3]);
+        double second = Double.parseDouble(lines[2].trim().split("\\s+")[3]);
+        assertTrue(first >= second, "ranked by the forward distance: " + r.out());
+    }
+
+    @Test
+    void eachScriptRacesOnItsOwnRobotAndTheRankIsByForwardDistance() {
+        Result r = cli("race", "../examples/hello-snake.xml", "../examples/wheel.xml", "--duration", "5");
+        assertEquals(0, r.code(), r.err());
+        String[] lines = r.out().strip().split("\n");
+        assertEquals(3, lines.length, r.out());
+        java.util.Map<String, String> robotOf = new java.util.HashMap<>();
+        double previous = Double.POSITIVE_INFINITY;
+        for (int i = 1; i < lines.length; i++) {
+            String[] f = lines[i].trim().split("\\s+");
+            robotOf.put(f[1], f[2]);
+            double forward = Double.parseDouble(f[3]);
+            assertTrue(forward <= previous, "not ranked by forward distance: " + r.out());
+            previous = forward;
+        }
+        assertEquals("wheel", robotOf.get("../examples/wheel.xml"), r.out());
+        assertEquals("snake", robotOf.get("../examples/hello-snake.xml"), r.out());
+    }
+
+    @Test
+    void checkTakesAFolder() {
+        Result r = cli("check", "../examples");
+        assertEquals(0, r.code(), r.err());
+        assertTrue(r.out().contains("../examples/hello-snake.xml: ok") && r.out().contains("../examples/wheel.xml: ok"), r.out());
+        assertTrue(!r.out().contains("configs"), "robot configurations in subfolders are not scripts: " + r.out());
     }
 }
