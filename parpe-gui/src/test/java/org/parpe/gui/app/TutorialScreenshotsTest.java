@@ -11,11 +11,15 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Set;
+import java.util.TreeSet;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.BooleanSupplier;
 import java.util.stream.Stream;
 import org.eclipse.swt.graphics.ImageData;
 import org.eclipse.swt.graphics.ImageLoader;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Control;
 import org.eclipse.swt.widgets.Display;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
@@ -30,7 +34,8 @@ import org.parpe.gui.run.Target;
  * The tutorial's pictures, made by the IDE itself so that they never go stale: for every
  * {@code examples/tutorial/*.xml}, open it in the IDE, run it in the simulator (robot "auto",
  * which the lesson files' names pick) at maximum speed for a few simulated seconds, check that
- * the run went through with nothing in Problems, and save the window to
+ * the run went through with nothing in Problems, plot three of the modules it moved, and save
+ * the window to
  * {@code docs/tutorial/img/NAME.png} (folder: system property {@code parpe.tutorialImages},
  * default {@code ../docs/tutorial/img} from the module). One window for the whole class; every
  * wait is bounded.
@@ -105,6 +110,30 @@ class TutorialScreenshotsTest {
         pump(() -> System.currentTimeMillis() >= until, "the views to settle", ms + WAIT_MS);
     }
 
+    /**
+     * Shows the first three modules the script moved in the Joint angles plot (by default it
+     * shows the first three of the robot, which some lessons leave still).
+     */
+    private static void plotModules(Set<Integer> driven) {
+        for (Control c : ((Composite) ide.plots().control()).getChildren()) {
+            if (c instanceof org.eclipse.swt.widgets.List chooser) {
+                chooser.deselectAll();
+                int shown = 0;
+                for (int id : driven) {
+                    int at = chooser.indexOf("module " + id);
+                    if (at >= 0 && shown < 3) {
+                        chooser.select(at);
+                        shown++;
+                    }
+                }
+                if (shown == 0) {
+                    chooser.select(0, Math.min(2, chooser.getItemCount() - 1));
+                }
+            }
+        }
+        ide.plots().refresh();
+    }
+
     @Test
     void thereIsALessonScriptForEveryLesson() throws IOException {
         assertTrue(scripts().size() >= 10, "expected ten lesson scripts in " + tutorialFolder() + ", found " + scripts());
@@ -122,14 +151,20 @@ class TutorialScreenshotsTest {
         ide.toolbar().setTarget(Target.SIMULATOR);
         ide.toolbar().setSpeed(Speed.MAX);
         AtomicReference<RunOutcome> outcome = new AtomicReference<>();
+        Set<Integer> driven = new TreeSet<>();
         ide.runs().run(false, RUN_FOR, outcome::set);
         // The 55-module centipede is the slowest; allow for a busy machine.
-        pump(() -> outcome.get() != null, RUN_FOR + " simulated seconds of " + name, 180_000);
+        pump(() -> {
+            driven.addAll(ide.runs().driven());
+            return outcome.get() != null;
+        }, RUN_FOR + " simulated seconds of " + name, 180_000);
         RunOutcome o = outcome.get();
         assertNotEquals(RunOutcome.Status.ERROR, o.status(), name + " failed: " + o.message());
         assertTrue(o.time() >= RUN_FOR - 0.02 || o.status() == RunOutcome.Status.COMPLETED,
                 name + " stopped early at t = " + o.time());
         assertFalse(ide.runs().running());
+        assertFalse(driven.isEmpty(), name + " drove no module");
+        plotModules(driven);
         settle(800);
         assertEquals(0, ide.problems().errorCount(), name + " reported problems while running: " + ide.problems().shown());
 
