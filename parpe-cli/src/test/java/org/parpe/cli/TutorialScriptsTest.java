@@ -32,6 +32,8 @@ class TutorialScriptsTest {
     /** Markdown links and images: {@code [text](target)} and {@code ![alt](target)}. */
     static final Pattern LINK = Pattern.compile("\\]\\(([^)\\s#]+)(?:#[^)]*)?\\)");
 
+    /** A command of a page: {@code ./parpe run ...} or {@code ./parpe race ...}, in a code block or in backquotes. */
+    static final Pattern COMMAND = Pattern.compile("\\./parpe ((?:run|race) [^`\\n]+)");
     static final Pattern BREAK = Pattern.compile("<!-- what-went-wrong: replace `([^`]+)` with `([^`]*)`");
     static final Pattern SHOWN = Pattern.compile("(?m)^> (examples/tutorial/[^:\\s]+\\.xml):(\\d+:\\d+: error: .*)$");
 
@@ -149,5 +151,47 @@ class TutorialScriptsTest {
         List<String> printed = c.err().lines().filter(l -> l.contains(": error: "))
                 .map(l -> l.substring(l.lastIndexOf(name(original)))).toList();
         assertEquals(expected, printed, name(page) + ": the box no longer matches what parpe check prints");
+    }
+
+    static List<Path> pages() throws IOException {
+        List<Path> out = new ArrayList<>(lessons());
+        out.add(DOCS.resolve("index.md"));
+        return out;
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("pages")
+    void theCommandsOfAPageRunAsPrinted(Path page) throws IOException {
+        Matcher m = COMMAND.matcher(Files.readString(page));
+        while (m.find()) {
+            String[] args = m.group(1).trim().split("\\s+");
+            boolean ours = true;
+            for (int i = 0; i < args.length; i++) {
+                if (args[i].endsWith(".xml")) {
+                    ours &= args[i].startsWith("examples/tutorial/");
+                    args[i] = "../" + args[i];
+                }
+            }
+            if (!ours) {
+                continue; // a student's own file, e.g. team-anna.xml
+            }
+            ByteArrayOutputStream out = new ByteArrayOutputStream();
+            ByteArrayOutputStream err = new ByteArrayOutputStream();
+            // "--metrics -" writes to System.out itself (as SimCommandLineTest also captures it).
+            PrintStream oldOut = System.out;
+            PrintStream captured = new PrintStream(out, true, StandardCharsets.UTF_8);
+            int code;
+            try {
+                System.setOut(captured);
+                code = Main.execute(args, captured, new PrintStream(err, true, StandardCharsets.UTF_8));
+            } finally {
+                System.setOut(oldOut);
+            }
+            String e = err.toString(StandardCharsets.UTF_8);
+            assertEquals(0, code, name(page) + ": './parpe " + m.group(1) + "' failed:\n" + e);
+            assertFalse(e.contains("error") || e.contains("warning"), name(page) + ": './parpe " + m.group(1) + "' complained:\n" + e);
+            String o = out.toString(StandardCharsets.UTF_8);
+            assertTrue(o.contains("distance"), name(page) + ": './parpe " + m.group(1) + "' printed no distance:\n" + o);
+        }
     }
 }
