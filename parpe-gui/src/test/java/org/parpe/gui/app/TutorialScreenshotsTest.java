@@ -1,0 +1,204 @@
+package org.parpe.gui.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Set;
+import java.util.TreeSet;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.BooleanSupplier;
+import java.util.stream.Stream;
+import org.eclipse.swt.graphics.ImageData;
+import org.eclipse.swt.graphics.ImageLoader;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Control;
+import org.eclipse.swt.widgets.Display;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+import org.parpe.core.model.Instance;
+import org.parpe.core.model.MainEntry;
+import org.parpe.core.model.Program;
+import org.parpe.core.run.RunOutcome;
+import org.parpe.gui.run.Speed;
+import org.parpe.gui.run.Target;
+
+/**
+ * The tutorial's pictures, made by the IDE itself so that they never go stale: for every
+ * {@code examples/tutorial/*.xml}, open it in the IDE, run it in the simulator (robot "auto",
+ * which the lesson files' names pick) at maximum speed for a few simulated seconds, check that
+ * the run went through with nothing in Problems, plot three of the modules it moves, and save
+ * the window to
+ * {@code docs/tutorial/img/NAME.png} (folder: system property {@code parpe.tutorialImages},
+ * default {@code ../docs/tutorial/img} from the module). One window for the whole class; every
+ * wait is bounded.
+ */
+class TutorialScreenshotsTest {
+    private static final long WAIT_MS = 30_000;
+    /** Simulated seconds before the picture: far enough into every lesson to show it moving. */
+    private static final double RUN_FOR = 8;
+    private static Display display;
+    private static IdeWindow ide;
+    private static Path images;
+
+    static Path tutorialFolder() {
+        Path examples = Examples.folder();
+        assertNotNull(examples, "no examples folder (parpe.examples=" + System.getProperty("parpe.examples") + ")");
+        return examples.resolve("tutorial");
+    }
+
+    static List<Path> scripts() throws IOException {
+        Path dir = tutorialFolder();
+        assertTrue(Files.isDirectory(dir), "no tutorial folder " + dir);
+        try (Stream<Path> s = Files.list(dir)) {
+            return s.filter(p -> p.getFileName().toString().endsWith(".xml")).sorted().toList();
+        }
+    }
+
+    @BeforeAll
+    static void openWindow() throws Exception {
+        String x = System.getenv("DISPLAY");
+        if (x == null || x.isBlank()) {
+            fail("No X display (DISPLAY is not set). The GUI tests need one: run them under xvfb-run, as ./test-all does.");
+        }
+        images = Path.of(System.getProperty("parpe.tutorialImages", "../docs/tutorial/img"));
+        Files.createDirectories(images);
+        Path home = Files.createTempDirectory("parpe-tutorial-test");
+        display = Display.getDefault();
+        ide = new IdeWindow(display, new Prefs(home));
+        ide.open(null, true);
+        pump(() -> ide.validations() > 0, "the first validation", WAIT_MS);
+    }
+
+    @AfterAll
+    static void closeWindow() {
+        if (ide != null && !ide.shell().isDisposed()) {
+            ide.runs().stop();
+            pump(() -> !ide.runs().running(), "the run to stop", WAIT_MS);
+            ide.shell().dispose();
+        }
+    }
+
+    /** Runs the event loop until {@code done} holds; fails after {@code ms}. */
+    private static void pump(BooleanSupplier done, String what, long ms) {
+        long until = System.currentTimeMillis() + ms;
+        while (!done.getAsBoolean()) {
+            if (System.currentTimeMillis() > until) {
+                fail("timed out after " + ms / 1000 + " s waiting for " + what);
+            }
+            if (!display.readAndDispatch()) {
+                try {
+                    Thread.sleep(5);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    fail("interrupted");
+                }
+            }
+        }
+    }
+
+    /** Lets the views catch up (the 3D view and the plots redraw on timers). */
+    private static void settle(long ms) {
+        long until = System.currentTimeMillis() + ms;
+        pump(() -> System.currentTimeMillis() >= until, "the views to settle", ms + WAIT_MS);
+    }
+
+    /**
+     * The modules of the groups that the behaviors of {@code <main>} drive, lowest first (taken
+     * from the script rather than sampled during the run, which at maximum speed may be over
+     * before the first sample, so that the picture is the same on every run).
+     */
+    private static Set<Integer> moved(Program program) {
+        Set<Integer> ids = new TreeSet<>();
+        program.mainDef().ifPresent(main -> {
+            for (MainEntry entry : main.entries()) {
+                program.behavior(entry.behavior()).ifPresent(b -> {
+                    for (Instance i : b.instances()) {
+                        String group = i.group().startsWith("!") ? i.group().substring(1) : i.group();
+                        program.group(group).ifPresent(g -> ids.addAll(g.modules()));
+                    }
+                });
+            }
+        });
+        return ids;
+    }
+
+    /**
+     * Shows the first three modules the script moves in the Joint angles plot (by default it
+     * shows the first three of the robot, which some lessons leave still).
+     */
+    private static void plotModules(Set<Integer> driven) {
+        for (Control c : ((Composite) ide.plots().control()).getChildren()) {
+            if (c instanceof org.eclipse.swt.widgets.List chooser) {
+                chooser.deselectAll();
+                int shown = 0;
+                for (int id : driven) {
+                    int at = chooser.indexOf("module " + id);
+                    if (at >= 0 && shown < 3) {
+                        chooser.select(at);
+                        shown++;
+                    }
+                }
+                if (shown == 0) {
+                    chooser.select(0, Math.min(2, chooser.getItemCount() - 1));
+                }
+            }
+        }
+        ide.plots().refresh();
+    }
+
+    @Test
+    void thereIsALessonScriptForEveryLesson() throws IOException {
+        assertTrue(scripts().size() >= 10, "expected ten lesson scripts in " + tutorialFolder() + ", found " + scripts());
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("scripts")
+    void runsInTheSimulatorAndTakesTheLessonsPicture(Path script) throws Exception {
+        String name = script.getFileName().toString();
+        assertTrue(ide.files().openPath(script), "could not open " + script);
+        int before = ide.validations();
+        pump(() -> ide.validations() > before && ide.program() != null, name + " to load", WAIT_MS);
+        assertEquals(0, ide.problems().errorCount(), name + " has errors: " + ide.problems().shown());
+
+        ide.toolbar().setTarget(Target.SIMULATOR);
+        ide.toolbar().setSpeed(Speed.MAX);
+        AtomicReference<RunOutcome> outcome = new AtomicReference<>();
+        Set<Integer> driven = moved(ide.program());
+        ide.runs().run(false, RUN_FOR, outcome::set);
+        // The 55-module centipede is the slowest; allow for a busy machine.
+        pump(() -> outcome.get() != null, RUN_FOR + " simulated seconds of " + name, 180_000);
+        RunOutcome o = outcome.get();
+        assertNotEquals(RunOutcome.Status.ERROR, o.status(), name + " failed: " + o.message());
+        assertTrue(o.time() >= RUN_FOR - 0.02 || o.status() == RunOutcome.Status.COMPLETED,
+                name + " stopped early at t = " + o.time());
+        pump(() -> !ide.runs().running(), "the run of " + name + " to wind up", WAIT_MS);
+        assertFalse(driven.isEmpty(), name + " moves no module");
+        plotModules(driven);
+        // A picture that is the same on every run, so that the build leaves the committed images
+        // alone unless something really changed: the camera framed on the final pose rather than
+        // eased towards it frame by frame, and no blinking caret in the editor.
+        ide.view().setTrackRobot(false);
+        ide.view().resetView();
+        ide.view().control().setFocus();
+        settle(800);
+        assertEquals(0, ide.problems().errorCount(), name + " reported problems while running: " + ide.problems().shown());
+
+        Path png = images.resolve(name.replaceFirst("\\.xml$", ".png"));
+        Screenshot.save(ide.shell(), png);
+        ide.view().setTrackRobot(true);
+        ImageData d = new ImageLoader().load(png.toString())[0];
+        assertTrue(d.width > 600 && d.height > 400, "screenshot too small: " + d.width + "x" + d.height);
+        assertTrue(Screenshot.distinctColours(d, 64) >= 64, "screenshot " + png + " looks blank");
+    }
+}
