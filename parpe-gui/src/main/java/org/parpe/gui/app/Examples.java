@@ -52,4 +52,11 @@ public final class Examples {
             return List.of();
         }
     }
+
+    /** The tutorial's folder, {@code docs/tutorial} beside the examples folder, or {@code null}. */
+    public static Path tutorialFolder() {
+        Path examples = folder();
+        Path t = examples == null ? null : examples.getParent().resolve("docs").resolve("tutorial");
+        return t != null && Files.isDirectory(t) ? t : null;
+    }
 }

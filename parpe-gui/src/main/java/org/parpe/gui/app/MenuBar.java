@@ -13,6 +13,7 @@ import org.eclipse.swt.widgets.Control;
 import org.eclipse.swt.widgets.Menu;
 import org.eclipse.swt.widgets.MenuItem;
 import org.eclipse.swt.widgets.Text;
+import org.parpe.gui.help.TutorialWindow;
 
 /** The menu bar: File, Edit, Run, View and Help. Every item acts; none is a placeholder. */
 final class MenuBar {
@@ -175,8 +176,20 @@ final class MenuBar {
     }
 
     private void helpMenu(Menu m) {
+        item(m, "&Tutorial", 0, this::openTutorial);
         item(m, "PARSL &Quick Reference", SWT.F1, () -> MessageDialog.openInformation(ide.shell(), "PARSL quick reference",
                 HelpText.QUICK_REFERENCE));
         item(m, "&About PARPE", 0, () -> MessageDialog.openInformation(ide.shell(), "About PARPE", HelpText.ABOUT));
+    }
+
+    /** Help → Tutorial: the lessons beside the examples ({@code docs/tutorial}), in their own window. */
+    private void openTutorial() {
+        Path folder = Examples.tutorialFolder();
+        if (folder == null) {
+            MessageDialog.openInformation(ide.shell(), "Tutorial", "The tutorial (docs/tutorial) was not found next to the"
+                    + " examples. It is also online with the PARPE sources, in docs/tutorial/index.md.");
+            return;
+        }
+        new TutorialWindow(ide.shell(), folder, p -> ide.files().openConfirmed(p)).open();
     }
 }

@@ -166,9 +166,10 @@ class TutorialScreenshotsTest {
     @MethodSource("scripts")
     void runsInTheSimulatorAndTakesTheLessonsPicture(Path script) throws Exception {
         String name = script.getFileName().toString();
-        assertTrue(ide.files().openPath(script), "could not open " + script);
         int before = ide.validations();
-        pump(() -> ide.validations() > before && ide.program() != null, name + " to load", WAIT_MS);
+        Gui.open(ide, script);
+        pump(() -> ide.validations() > before && ide.program() != null && ide.program().file().endsWith(name),
+                name + " to load", WAIT_MS);
         assertEquals(0, ide.problems().errorCount(), name + " has errors: " + ide.problems().shown());
 
         ide.toolbar().setTarget(Target.SIMULATOR);

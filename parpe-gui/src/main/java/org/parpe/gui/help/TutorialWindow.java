@@ -1,0 +1,257 @@
+package org.parpe.gui.help;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.function.Consumer;
+import java.util.stream.Stream;
+import org.eclipse.jface.resource.JFaceResources;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.custom.SashForm;
+import org.eclipse.swt.custom.StyleRange;
+import org.eclipse.swt.custom.StyledText;
+import org.eclipse.swt.graphics.Color;
+import org.eclipse.swt.graphics.Font;
+import org.eclipse.swt.graphics.FontData;
+import org.eclipse.swt.graphics.GlyphMetrics;
+import org.eclipse.swt.graphics.Image;
+import org.eclipse.swt.graphics.ImageData;
+import org.eclipse.swt.layout.GridData;
+import org.eclipse.swt.layout.GridLayout;
+import org.eclipse.swt.widgets.Button;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Shell;
+
+/**
+ * Help → Tutorial: a window with the lessons of {@code docs/tutorial} on the left and the chosen
+ * lesson on the right, rendered from its Markdown with its pictures. "Open the lesson's script"
+ * puts the lesson's example in the editor (through the IDE's usual unsaved-text check).
+ */
+public final class TutorialWindow {
+    private static final int IMAGE_WIDTH = 720;
+    private static final char OBJECT = '\uFFFC';
+
+    private final Shell shell;
+    private final Path folder;
+    private final List<Path> pages;
+    private final org.eclipse.swt.widgets.List index;
+    private final StyledText text;
+    private final Button open;
+    private final Font heading;
+    private final Font code;
+    private final List<Image> images = new ArrayList<>();
+    private final Consumer<Path> openScript;
+    private Path script;
+
+    /**
+     * A tutorial window over {@code folder} (holding {@code index.md}, the numbered lessons and
+     * {@code teachers.md}); {@code openScript} opens a lesson's script in the editor.
+     */
+    public TutorialWindow(Shell parent, Path folder, Consumer<Path> openScript) {
+        this.folder = folder;
+        this.openScript = openScript;
+        this.pages = pages(folder);
+        shell = new Shell(parent, SWT.SHELL_TRIM);
+        shell.setText("PARPE tutorial");
+        shell.setLayout(new GridLayout(1, false));
+        SashForm sash = new SashForm(shell, SWT.HORIZONTAL);
+        sash.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
+        index = new org.eclipse.swt.widgets.List(sash, SWT.BORDER | SWT.SINGLE | SWT.V_SCROLL);
+        text = new StyledText(sash, SWT.BORDER | SWT.WRAP | SWT.V_SCROLL | SWT.READ_ONLY);
+        text.setMargins(16, 12, 16, 12);
+        sash.setWeights(new int[] {22, 78});
+        FontData fd = text.getFont().getFontData()[0];
+        heading = new Font(shell.getDisplay(), fd.getName(), Math.round(fd.getHeight() * 1.35f), SWT.BOLD);
+        code = JFaceResources.getTextFont();
+        text.addPaintObjectListener(e -> {
+            Object data = e.style.data;
+            if (data instanceof Image img && !img.isDisposed()) {
+                e.gc.drawImage(img, e.x, e.y + e.ascent - e.style.metrics.ascent);
+            }
+        });
+        Composite buttons = new Composite(shell, SWT.NONE);
+        buttons.setLayout(new GridLayout(3, false));
+        buttons.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        Button previous = button(buttons, "\u2190 Previous", () -> show(index.getSelectionIndex() - 1));
+        Button next = button(buttons, "Next \u2192", () -> show(index.getSelectionIndex() + 1));
+        open = button(buttons, "Open the lesson's script", () -> {
+            if (script != null) {
+                openScript.accept(script);
+            }
+        });
+        previous.setLayoutData(new GridData(SWT.BEGINNING, SWT.CENTER, false, false));
+        next.setLayoutData(new GridData(SWT.BEGINNING, SWT.CENTER, false, false));
+        open.setLayoutData(new GridData(SWT.END, SWT.CENTER, true, false));
+        for (Path p : pages) {
+            index.add(title(p));
+        }
+        index.addListener(SWT.Selection, e -> show(index.getSelectionIndex()));
+        shell.addListener(SWT.Dispose, e -> {
+            disposeImages();
+            heading.dispose();
+        });
+        shell.setSize(1100, 800);
+    }
+
+    private static Button button(Composite parent, String label, Runnable action) {
+        Button b = new Button(parent, SWT.PUSH);
+        b.setText(label);
+        b.addListener(SWT.Selection, e -> action.run());
+        return b;
+    }
+
+    /** Opens the window on the first page. */
+    public void open() {
+        shell.open();
+        show(0);
+    }
+
+    public Shell shell() {
+        return shell;
+    }
+
+    /** The page titles, in order (tests). */
+    public String[] titles() {
+        return index.getItems();
+    }
+
+    /** The text shown (tests). */
+    public String shownText() {
+        return text.getText();
+    }
+
+    /** The script of the page shown, or null (tests). */
+    public Path script() {
+        return script;
+    }
+
+    /** Shows page {@code i} (ignored when out of range). */
+    public void show(int i) {
+        if (i < 0 || i >= pages.size()) {
+            return;
+        }
+        index.setSelection(i);
+        Markdown.Page page;
+        try {
+            page = Markdown.parse(Files.readString(pages.get(i), StandardCharsets.UTF_8));
+        } catch (IOException | RuntimeException e) {
+            text.setText("Cannot read " + pages.get(i) + ": " + e.getMessage());
+            return;
+        }
+        render(page, pages.get(i).getParent());
+        script = page.links().stream().filter(l -> l.endsWith(".xml"))
+                .map(l -> pages.get(0).getParent().resolve(l).normalize())
+                .filter(Files::isRegularFile).findFirst().orElse(null);
+        open.setEnabled(script != null);
+        open.setText(script == null ? "Open the lesson's script" : "Open " + script.getFileName());
+        open.getParent().layout();
+        text.setTopPixel(0);
+    }
+
+    private void render(Markdown.Page page, Path dir) {
+        disposeImages();
+        StringBuilder all = new StringBuilder();
+        List<StyleRange> styles = new ArrayList<>();
+        Color codeBack = shell.getDisplay().getSystemColor(SWT.COLOR_WIDGET_LIGHT_SHADOW);
+        for (Markdown.Block b : page.blocks()) {
+            int start = all.length();
+            String indent = b.kind() == Markdown.Kind.ITEM ? "    ".repeat(Math.max(0, b.level() - 1)) + "  " : "";
+            switch (b.kind()) {
+                case IMAGE -> {
+                    Image img = image(dir.resolve(b.target()).normalize());
+                    if (img == null) {
+                        all.append("[picture: ").append(b.text()).append(']');
+                    } else {
+                        all.append(OBJECT);
+                        StyleRange r = new StyleRange();
+                        r.start = start;
+                        r.length = 1;
+                        r.data = img;
+                        org.eclipse.swt.graphics.Rectangle bounds = img.getBounds();
+                        r.metrics = new GlyphMetrics(bounds.height, 0, bounds.width);
+                        styles.add(r);
+                    }
+                }
+                case CODE -> {
+                    all.append(b.text());
+                    StyleRange r = new StyleRange(start, b.text().length(), null, codeBack);
+                    r.font = code;
+                    styles.add(r);
+                }
+                default -> {
+                    all.append(indent).append(b.text());
+                    int base = start + indent.length();
+                    if (b.kind() == Markdown.Kind.HEADING) {
+                        StyleRange r = new StyleRange(start, b.text().length(), null, null);
+                        r.font = heading;
+                        styles.add(r);
+                    } else {
+                        for (Markdown.Span s : b.spans()) {
+                            StyleRange r = new StyleRange(base + s.start(), s.length(), null, null);
+                            if (s.code()) {
+                                r.font = code;
+                            } else {
+                                r.fontStyle = SWT.BOLD;
+                            }
+                            styles.add(r);
+                        }
+                    }
+                }
+            }
+            all.append("\n\n");
+        }
+        text.setText(all.toString());
+        text.setStyleRanges(styles.toArray(new StyleRange[0]));
+    }
+
+    /** The picture at {@code p}, scaled to at most {@value #IMAGE_WIDTH} pixels wide, or null. */
+    private Image image(Path p) {
+        if (!p.startsWith(folder) || !Files.isRegularFile(p)) {
+            return null;
+        }
+        try {
+            ImageData d = new ImageData(p.toString());
+            if (d.width > IMAGE_WIDTH) {
+                d = d.scaledTo(IMAGE_WIDTH, Math.max(1, d.height * IMAGE_WIDTH / d.width));
+            }
+            Image img = new Image(shell.getDisplay(), d);
+            images.add(img);
+            return img;
+        } catch (org.eclipse.swt.SWTException e) {
+            return null;
+        }
+    }
+
+    private void disposeImages() {
+        images.forEach(Image::dispose);
+        images.clear();
+    }
+
+    /** index.md, the numbered lessons in order, then any other page (teachers.md). */
+    static List<Path> pages(Path folder) {
+        List<Path> all;
+        try (Stream<Path> s = Files.list(folder)) {
+            all = s.filter(p -> p.getFileName().toString().endsWith(".md")).sorted().toList();
+        } catch (IOException e) {
+            return List.of();
+        }
+        List<Path> out = new ArrayList<>();
+        all.stream().filter(p -> p.getFileName().toString().equals("index.md")).forEach(out::add);
+        all.stream().filter(p -> p.getFileName().toString().matches("\\d+-.*")).forEach(out::add);
+        all.stream().filter(p -> !out.contains(p)).forEach(out::add);
+        return out;
+    }
+
+    private static String title(Path page) {
+        try (Stream<String> lines = Files.lines(page, StandardCharsets.UTF_8)) {
+            return lines.filter(l -> l.startsWith("# ")).findFirst().map(l -> l.substring(2).strip())
+                    .orElse(page.getFileName().toString().replace(".md", "").toLowerCase(Locale.ROOT));
+        } catch (IOException | java.io.UncheckedIOException e) {
+            return page.getFileName().toString();
+        }
+    }
+}

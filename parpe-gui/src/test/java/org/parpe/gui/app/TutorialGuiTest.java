@@ -1,0 +1,60 @@
+package org.parpe.gui.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.eclipse.swt.widgets.Display;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.parpe.gui.help.TutorialWindow;
+
+/** Help → Tutorial: the lessons in order, a lesson with its picture, and its script opened in the editor. */
+class TutorialGuiTest {
+    private static Display display;
+    private static IdeWindow ide;
+
+    @BeforeAll
+    static void openWindow() throws Exception {
+        display = Gui.display();
+        ide = new IdeWindow(display, new Prefs(Files.createTempDirectory("parpe-tutorial-home")));
+        ide.open(null, true);
+        Gui.pump(() -> ide.validations() > 0, "the first validation");
+    }
+
+    @AfterAll
+    static void closeWindow() {
+        if (ide != null && !ide.shell().isDisposed()) {
+            ide.shell().dispose();
+        }
+    }
+
+    @Test
+    void theLessonsAreInOrderAndALessonOpensItsScript() throws Exception {
+        Path folder = Examples.tutorialFolder();
+        assertNotNull(folder, "docs/tutorial not found beside " + Examples.folder());
+        TutorialWindow w = new TutorialWindow(ide.shell(), folder, p -> ide.files().openConfirmed(p));
+        w.open();
+        try {
+            String[] titles = w.titles();
+            assertTrue(titles.length >= 12, String.join(" | ", titles));
+            assertTrue(titles[1].startsWith("Lesson 1") && titles[10].startsWith("Lesson 10"), String.join(" | ", titles));
+            w.show(3);
+            Gui.settle();
+            assertTrue(w.shownText().startsWith(titles[3]), w.shownText());
+            assertTrue(w.shownText().contains("\uFFFC"), "lesson 3's picture is not shown");
+            Path script = w.script();
+            assertNotNull(script, "lesson 3 names no script");
+            assertEquals("03-hello-snake.xml", script.getFileName().toString());
+            Gui.screenshot(w.shell(), "tutorial-lesson-3.png");
+            ide.files().openConfirmed(script);
+            Gui.pump(() -> !ide.files().reading() && script.toAbsolutePath().normalize().equals(ide.files().file()),
+                    "the lesson's script in the editor");
+        } finally {
+            w.shell().dispose();
+        }
+    }
+}
