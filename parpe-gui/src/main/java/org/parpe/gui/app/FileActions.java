@@ -249,9 +249,7 @@ final class FileActions {
         d.setFilterExtensions(new String[] {"*.xml", "*"});
         d.setOverwrite(true);
         d.setFileName(name());
-        if (file != null && file.getParent() != null) {
-            d.setFilterPath(file.getParent().toString());
-        }
+        d.setFilterPath(saveFolder(file, Examples.folder(), Path.of(System.getProperty("user.home"))).toString());
         String p = d.open();
         if (p == null) {
             return false;
@@ -264,6 +262,21 @@ final class FileActions {
             return true;
         }
         return false;
+    }
+
+    /**
+     * Where Save As starts: the folder of the file being edited, except for a new script or one of
+     * the bundled examples (in the install folder, which is no place for a student's work): then
+     * the user's Documents folder, or the home folder when there is none.
+     */
+    static Path saveFolder(Path file, Path examples, Path home) {
+        Path parent = file == null ? null : file.toAbsolutePath().normalize().getParent();
+        Path bundled = examples == null ? null : examples.toAbsolutePath().normalize().getParent();
+        if (parent != null && (bundled == null || !parent.startsWith(bundled))) {
+            return parent;
+        }
+        Path documents = home.resolve("Documents");
+        return Files.isDirectory(documents) ? documents : home;
     }
 
     private boolean write(Path target) {
