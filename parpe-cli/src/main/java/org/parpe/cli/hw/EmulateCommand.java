@@ -18,6 +18,8 @@ import org.parpe.serial.emu.BusEmulator;
 import org.parpe.serial.emu.EmulatorListener;
 import org.parpe.serial.emu.EmulatorOptions;
 import org.parpe.serial.link.LinkOpener;
+import org.parpe.serial.servo.ServoModel;
+import org.parpe.serial.servo.ServoProtocol;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -29,8 +31,10 @@ import picocli.CommandLine.Model.CommandSpec;
  * ({@code pose ID DEG}), press touch sensors ({@code touch ID left|right|both|none}) or print the
  * modules' state ({@code status}).
  */
-@Command(name = "emulate", description = {"Emulate PolyBot modules on a serial device (e.g. one end of a socat pty pair).",
-    "Standard input takes: pose ID DEG | touch ID left|right|both|none | status | quit."})
+@Command(name = "emulate", description = {"Emulate PolyBot modules, Dynamixel 2.0 or Feetech servos on a serial device "
+    + "(e.g. one end of a socat pty pair).",
+    "Standard input takes: pose ID DEG | touch ID left|right|both|none (G1) | fault ID overload|overheat|voltage|none "
+    + "(servos) | status | quit."})
 public final class EmulateCommand implements Callable<Integer> {
     @Option(names = "--port", required = true, paramLabel = "PATH", description = "The serial device to serve.")
     String port;
@@ -41,6 +45,14 @@ public final class EmulateCommand implements Callable<Integer> {
 
     @Option(names = "--baud", defaultValue = "115200", paramLabel = "N", description = "Line speed (default ${DEFAULT-VALUE}).")
     int baud;
+
+    @Option(names = "--protocol", defaultValue = "g1", paramLabel = "g1|dxl2|sts|scs",
+            description = "Bus protocol: PARPE's G1 modules, Dynamixel 2.0 or Feetech STS/SCS servos (default ${DEFAULT-VALUE}).")
+    String protocol;
+
+    @Option(names = "--model", paramLabel = "NAME",
+            description = "Servo model for dxl2/sts/scs, e.g. xl430-w250, xm430-w210, xl330-m288, sts3215 (default: the protocol's first).")
+    String model;
 
     @Option(names = "--drop", defaultValue = "0", paramLabel = "P", description = "Probability of losing a frame, each direction.")
     double drop;
@@ -107,6 +119,16 @@ public final class EmulateCommand implements Callable<Integer> {
     private int serve(PrintWriter err) throws UsageException, InterruptedException {
         int[] ids = ModuleList.sorted(ModuleList.parse(modules, "--modules"));
         EmulatorOptions o = options(ids);
+        ServoProtocol p = ServoProtocol.of(protocol);
+        if (p == null) {
+            throw new UsageException("--protocol must be one of " + ServoProtocol.keys() + ", got '" + protocol + "'");
+        }
+        if (p != ServoProtocol.G1) {
+            return new ServoEmulation(port, baud, servoModel(p), o, duration, log, err).serve();
+        }
+        if (model != null) {
+            throw new UsageException("--model applies to dxl2, sts and scs servos, not to G1 modules");
+        }
         SetpointLog csv = SetpointLog.open(log, ids);
         BusEmulator emu;
         try {
@@ -144,7 +166,19 @@ public final class EmulateCommand implements Callable<Integer> {
         return 0;
     }
 
-    private static EmulatorListener listener(PrintWriter err, SetpointLog csv) {
+    private ServoModel servoModel(ServoProtocol p) throws UsageException {
+        if (model == null) {
+            return ServoModel.defaultFor(p);
+        }
+        ServoModel m = ServoModel.named(model);
+        if (m == null || m.protocol() != p) {
+            throw new UsageException("--model '" + model + "' is not a " + p.key() + " servo PARPE knows; known: "
+                    + ServoModel.names(p));
+        }
+        return m;
+    }
+
+    static EmulatorListener listener(PrintWriter err, SetpointLog csv) {
         return new EmulatorListener() {
             @Override
             public void onSetpoints(int seq, double[] angles) {
