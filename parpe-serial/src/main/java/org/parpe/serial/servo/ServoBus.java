@@ -57,10 +57,43 @@ public interface ServoBus extends AutoCloseable {
     String watchdog(int[] ids, ServoModel[] models, int n, int ms, boolean limp) throws IOException;
 
     /**
+     * Whether servo {@code id} had stopped on its own watchdog (its last status error was
+     * {@code statusError}); if so it is re-armed with {@code ms} and obeys goals again.
+     */
+    boolean resumeIfTripped(int id, ServoModel model, int statusError, int ms) throws IOException;
+
+    /**
      * Emergency stop of servos {@code 0…n)}: torque off ({@code limp}), or stop where they are
      * and hold. Several packets, so that one lost packet does not matter.
      */
     void emergencyStop(int[] ids, ServoModel[] models, int n, boolean limp) throws IOException;
+
+    /**
+     * Makes servos {@code 0…n)} hold where they are: their present positions become their goals,
+     * then torque on (a servo whose torque comes on must not jump to an old goal). Returns how
+     * many answered.
+     */
+    default int holdHere(int[] ids, ServoModel[] models, int n) throws IOException {
+        double[] deg = new double[n];
+        int[] err = new int[n];
+        readPositions(ids, models, n, deg, err);
+        int[] held = new int[n];
+        ServoModel[] heldModels = new ServoModel[n];
+        int[] ticks = new int[n];
+        int m = 0;
+        for (int i = 0; i < n; i++) {
+            if (err[i] != NO_REPLY) {
+                held[m] = ids[i];
+                heldModels[m] = models[i];
+                ticks[m++] = models[i].ticks(deg[i]);
+            }
+        }
+        if (m > 0) {
+            writeGoals(held, heldModels, ticks, m);
+            torque(held, heldModels, m, true);
+        }
+        return m;
+    }
 
     /** Bytes queued but not yet on the wire. */
     int pendingOutput();

@@ -24,6 +24,8 @@ import org.parpe.serial.servo.wire.PacketDecoder;
  */
 public final class ControlTableBus implements ServoBus {
     private static final long LINGER_MS = 50;
+    /** Bus Watchdog after it tripped: −1 in one byte. */
+    private static final int WATCHDOG_TRIPPED = 0xFF;
 
     private final ServoProtocol protocol;
     private final ByteLink link;
@@ -196,7 +198,7 @@ public final class ControlTableBus implements ServoBus {
             return "Feetech servos have no watchdog: they hold their last goal when the host falls silent";
         }
         // Units of 20 ms; writing 0 first also clears an earlier Bus Watchdog error.
-        int units = ms <= 0 ? 0 : Math.max(1, Math.min(127, (ms + 19) / 20));
+        int units = watchdogUnits(ms);
         int covered = 0;
         for (int i = 0; i < n; i++) {
             int addr = models[i].registers().watchdog();
@@ -209,6 +211,15 @@ public final class ControlTableBus implements ServoBus {
     }
 
     @Override
+    public boolean resumeIfTripped(int id, ServoModel model, int statusError, int ms) throws IOException {
+        int addr = model.registers().watchdog();
+        if (addr < 0 || ms <= 0 || read(id, addr, 1, 1) != WATCHDOG_TRIPPED) {
+            return false;
+        }
+        return write(id, addr, 1, 0) && write(id, addr, 1, watchdogUnits(ms));
+    }
+
+    @Override
     public void emergencyStop(int[] ids, ServoModel[] models, int n, boolean limp) throws IOException {
         if (limp) {
             for (int pass = 0; pass < 3; pass++) {
@@ -216,24 +227,7 @@ public final class ControlTableBus implements ServoBus {
             }
             return;
         }
-        // Stop where they are: the present positions become the goals (three times: no reply).
-        double[] deg = new double[n];
-        int[] err = new int[n];
-        readPositions(ids, models, n, deg, err);
-        int[] held = new int[n];
-        ServoModel[] heldModels = new ServoModel[n];
-        int[] ticks = new int[n];
-        int m = 0;
-        for (int i = 0; i < n; i++) {
-            if (err[i] != NO_REPLY) {
-                held[m] = ids[i];
-                heldModels[m] = models[i];
-                ticks[m++] = models[i].ticks(deg[i]);
-            }
-        }
-        for (int pass = 0; pass < 3 && m > 0; pass++) {
-            writeGoals(held, heldModels, ticks, m);
-        }
+        holdHere(ids, models, n);
     }
 
     @Override
@@ -275,6 +269,11 @@ public final class ControlTableBus implements ServoBus {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
+    }
+
+    /** Bus Watchdog units (20 ms) of {@code ms}, 0 for off. */
+    private static int watchdogUnits(int ms) {
+        return ms <= 0 ? 0 : Math.max(1, Math.min(127, (ms + 19) / 20));
     }
 
     /** The distinct register layouts of models {@code 0…n)}, in order of first use. */

@@ -94,18 +94,24 @@ public final class G1Bus implements ServoBus {
         return answered;
     }
 
+    /** G1 modules report no faults of their own: their flags are the host's latches (watchdog, emergency stop). */
     @Override
     public boolean faulty(int statusError) {
-        return statusError > 0;
+        return false;
     }
 
     @Override
-    public String describeFault(int id, ServoModel model, int statusError) throws IOException {
-        // Both latches are cleared by RESUME, which the run's driver sends when it turns torque on again.
-        if ((statusError & Protocol.FLAG_WATCHDOG) != 0) {
-            return "stopped on its watchdog";
+    public String describeFault(int id, ServoModel model, int statusError) {
+        return "flags " + statusError;
+    }
+
+    @Override
+    public boolean resumeIfTripped(int id, ServoModel model, int statusError, int ms) throws IOException {
+        if (statusError < 0 || (statusError & Protocol.FLAG_WATCHDOG) == 0) {
+            return false;
         }
-        return (statusError & Protocol.FLAG_ESTOP) != 0 ? "emergency stop latched" : "flags " + statusError;
+        master.send(id, Protocol.RESUME);
+        return true;
     }
 
     @Override

@@ -31,6 +31,7 @@ import org.parpe.serial.servo.profile.ServoMapping;
 public final class ServoDriver implements JointSink, SensorSource, AutoCloseable {
     private static final int READ_EVERY_WHEN_BUSY = 10;
     private static final int READ_GAP_MS = 2;
+    private static final int WATCHDOG_CHECK_MS = 100;
 
     private enum State { CONNECTED, SILENT, LINK_LOST }
 
@@ -52,6 +53,9 @@ public final class ServoDriver implements JointSink, SensorSource, AutoCloseable
     private long readFailures;
     private long disconnects;
     private long faults;
+    private long watchdogResumes;
+    private long lastWatchdogCheck;
+    private int watchdogCursor;
 
     private ServoDriver(LinkOpener opener, ServoBus bus, BusConfig config, HardwareProfile profile, int[] runModules,
                         BusReport report) {
@@ -112,7 +116,7 @@ public final class ServoDriver implements JointSink, SensorSource, AutoCloseable
                 profile.onFault() == SafeMode.LIMP));
         bus.readPositions(set.ids, set.models, n, set.degrees, set.errors);
         set.storeReadings(n, bus, this::fault);
-        bus.torque(set.ids, set.models, n, true);
+        bus.holdHere(set.ids, set.models, n);
     }
 
     /** Modules of the run without a servo in the profile. */
@@ -187,9 +191,9 @@ public final class ServoDriver implements JointSink, SensorSource, AutoCloseable
     public String summary() {
         ServoBus.Counters c = bus.counters();
         return String.format(Locale.ROOT, "bus %s (%s): %d packets sent, %d position reads (%d servo timeouts, "
-                + "%d failed), %d bad checksums received, %d setpoints clamped, %d servo faults, %d disconnects",
-                bus.name(), profile.protocol().key(), c.packetsSent(), reads, c.timeouts(), readFailures,
-                c.checksumErrors(), set.clamps(), faults, disconnects);
+                + "%d failed), %d bad checksums received, %d setpoints clamped, %d servo faults, %d watchdog stops, "
+                + "%d disconnects", bus.name(), profile.protocol().key(), c.packetsSent(), reads, c.timeouts(),
+                readFailures, c.checksumErrors(), set.clamps(), faults, watchdogResumes, disconnects);
     }
 
     @Override
@@ -253,6 +257,7 @@ public final class ServoDriver implements JointSink, SensorSource, AutoCloseable
             if (answered > 0) {
                 lastAnswer = System.nanoTime();
                 faults += set.storeReadings(n, bus, this::fault);
+                checkWatchdog(n);
             } else if (n > 0) {
                 readFailures++;
                 if (System.nanoTime() - lastAnswer > TimeUnit.MILLISECONDS.toNanos(config.deadAfterMs())) {
@@ -265,6 +270,21 @@ public final class ServoDriver implements JointSink, SensorSource, AutoCloseable
             }
         } else if (!sent) {
             set.awaitFresh(config.keepaliveMs());
+        }
+    }
+
+    /** Every {@value #WATCHDOG_CHECK_MS} ms, one servo: resumed if it stopped on its own watchdog. */
+    private void checkWatchdog(int n) throws IOException {
+        long now = System.nanoTime();
+        if (n == 0 || profile.watchdogMs() <= 0 || now - lastWatchdogCheck < WATCHDOG_CHECK_MS * 1_000_000L) {
+            return;
+        }
+        lastWatchdogCheck = now;
+        int k = watchdogCursor++ % n;
+        if (bus.resumeIfTripped(set.ids[k], set.models[k], set.errors[k], profile.watchdogMs())) {
+            watchdogResumes++;
+            report.problem("bus: servo " + set.ids[k] + " had stopped on its watchdog (a gap of more than "
+                    + profile.watchdogMs() + " ms in the bus traffic); resuming it");
         }
     }
 
