@@ -60,6 +60,18 @@ public final class PoseRecorder {
      * of the first servo that did not answer, or −1 when the pose is complete.
      */
     public int capture(double[] out) throws IOException {
+        int silent = captureServoAngles(out);
+        for (int i = 0; silent < 0 && i < group.length; i++) {
+            out[i] = group[i].jointAngle(out[i]);
+        }
+        return silent;
+    }
+
+    /**
+     * Reads the servo angle (before zero and direction) of every module into {@code out} (group
+     * order); returns the module ID of the first servo that did not answer, or −1.
+     */
+    public int captureServoAngles(double[] out) throws IOException {
         boolean[] have = new boolean[group.length];
         // Posing is not time-critical: more attempts than a run's reads.
         for (int attempt = 0; attempt < CAPTURE_ATTEMPTS; attempt++) {
@@ -68,7 +80,7 @@ public final class PoseRecorder {
             for (int i = 0; i < group.length; i++) {
                 if (errors[i] != ServoBus.NO_REPLY && !have[i]) {
                     have[i] = true;
-                    out[i] = group[i].jointAngle(degrees[i]);
+                    out[i] = degrees[i];
                 }
                 all &= have[i];
             }

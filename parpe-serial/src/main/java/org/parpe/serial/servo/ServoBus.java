@@ -25,6 +25,18 @@ public interface ServoBus extends AutoCloseable {
      */
     int ping(int id, int attempts) throws IOException;
 
+    /**
+     * Looks for servos {@code ids}: the model number of each (as {@link #ping}), −1 for those that
+     * do not answer. Every ID is pinged twice.
+     */
+    default int[] scan(int[] ids) throws IOException {
+        int[] models = new int[ids.length];
+        for (int i = 0; i < ids.length; i++) {
+            models[i] = ping(ids[i], 2);
+        }
+        return models;
+    }
+
     /** Turns the torque of servos {@code ids[0…n)} on (holding) or off (limp, back-drivable). */
     void torque(int[] ids, ServoModel[] models, int n, boolean on) throws IOException;
 

@@ -98,6 +98,35 @@ public final class ControlTableBus implements ServoBus {
         return -1;
     }
 
+    /**
+     * On Dynamixel 2.0 a broadcast Ping, which every servo answers in turn (twice, merging the
+     * answers); Feetech servos are pinged one by one.
+     */
+    @Override
+    public int[] scan(int[] ids) throws IOException {
+        if (protocol != ServoProtocol.DXL2) {
+            return ServoBus.super.scan(ids);
+        }
+        int[] models = new int[ids.length];
+        java.util.Arrays.fill(models, -1);
+        ServoModel[] any = new ServoModel[ids.length];
+        java.util.Arrays.fill(any, ServoModel.defaultFor(protocol));
+        for (int pass = 0; pass < 2; pass++) {
+            transact(PacketCodec.BROADCAST, PacketCodec.PING, 0, ids, any, ids.length, null);
+            replyLock.lock();
+            try {
+                for (int i = 0; i < ids.length; i++) {
+                    if (got[ids[i]] && models[i] < 0) {
+                        models[i] = answerSize[ids[i]] >= 3 ? value[ids[i]] & 0xFFFF : 0;
+                    }
+                }
+            } finally {
+                replyLock.unlock();
+            }
+        }
+        return models;
+    }
+
     /** Reads {@code size} bytes at {@code addr} of servo {@code id}: the value, or {@link Integer#MIN_VALUE}. */
     public int read(int id, int addr, int size, int attempts) throws IOException {
         for (int a = 0; a < attempts; a++) {

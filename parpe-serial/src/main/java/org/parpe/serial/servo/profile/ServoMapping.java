@@ -38,6 +38,18 @@ public record ServoMapping(int module, int servo, ServoModel model, double zero,
         return model.ticks(servoAngle(joint));
     }
 
+    /**
+     * The same mapping with {@link #min} and {@link #max} narrowed, where needed, to joint angles
+     * the servo can reach with this zero and direction.
+     */
+    public ServoMapping reachable() {
+        double a = jointAngle(model.minDegrees());
+        double b = jointAngle(model.maxDegrees());
+        double lo = Math.max(min, Math.min(a, b));
+        double hi = Math.min(max, Math.max(a, b));
+        return lo == min && hi == max ? this : new ServoMapping(module, servo, model, zero, direction, lo, hi, where);
+    }
+
     /** The same mapping placed elsewhere (a profile rewritten). */
     public ServoMapping withWhere(SourcePos w) {
         return new ServoMapping(module, servo, model, zero, direction, min, max, w);
