@@ -1,9 +1,6 @@
 package org.parpe.serial.servo.host;
 
 import java.io.IOException;
-import java.util.concurrent.TimeUnit;
-import java.util.concurrent.locks.Condition;
-import java.util.concurrent.locks.ReentrantLock;
 import org.parpe.serial.link.ByteLink;
 import org.parpe.serial.servo.Registers;
 import org.parpe.serial.servo.ServoBus;
@@ -13,47 +10,23 @@ import org.parpe.serial.servo.wire.Dxl2Codec;
 import org.parpe.serial.servo.wire.FeetechCodec;
 import org.parpe.serial.servo.wire.Packet;
 import org.parpe.serial.servo.wire.PacketCodec;
-import org.parpe.serial.servo.wire.PacketDecoder;
 
 /**
  * The host end of a control-table servo bus (Dynamixel Protocol 2.0, Feetech STS or SCS). Goals
  * and torque go out as one Sync Write per register layout; positions come back by Sync Read
  * (Dynamixel, STS), Bulk Read (Dynamixel servos with different layouts on one bus) or one Read
- * per servo (SCS, which has no Sync Read). A reader thread owns the decoder and hands replies to
- * the waiting request by servo ID.
+ * per servo (SCS, which has no Sync Read). Requests and replies go through a {@link PacketPort}.
  */
 public final class ControlTableBus implements ServoBus {
-    private static final long LINGER_MS = 50;
     /** Bus Watchdog after it tripped: −1 in one byte. */
     private static final int WATCHDOG_TRIPPED = 0xFF;
 
     private final ServoProtocol protocol;
-    private final ByteLink link;
-    private final int baud;
-    private final int timeoutMs;
-    private final PacketCodec codec;
     private final boolean bigEndian;
-    private final PacketDecoder rx;
-    private final byte[] out;
+    private final PacketPort port;
     private final byte[] params = new byte[Packet.MAX_PARAMS];
-    private final Object writeLock = new Object();
-    private final ReentrantLock replyLock = new ReentrantLock();
-    private final Condition replied = replyLock.newCondition();
-    private final boolean[] waiting = new boolean[256];
-    private final int[] value = new int[256];
-    private final int[] error = new int[256];
-    private final int[] answerSize = new int[256];
-    private final boolean[] got = new boolean[256];
-    private final int[] expectedIds = new int[256];
-    private int expected;
-    private final Thread reader;
-    private int waitingCount;
-    private volatile boolean running = true;
-    private volatile IOException linkError;
-    private volatile long lastWriteNanos;
-    private long packetsSent;
-    private long timeouts;
-    private long stray;
+    private final int[] replyIds = new int[256];
+    private final java.util.List<Registers> layouts = new java.util.ArrayList<>(2);
 
     /** Starts talking {@code protocol} (not G1) over {@code link} running at {@code baud}. */
     public ControlTableBus(ServoProtocol protocol, ByteLink link, int baud, int timeoutMs) {
@@ -61,16 +34,9 @@ public final class ControlTableBus implements ServoBus {
             throw new IllegalArgumentException("G1 is not a control-table protocol; use G1Bus");
         }
         this.protocol = protocol;
-        this.link = link;
-        this.baud = baud;
-        this.timeoutMs = timeoutMs;
-        this.codec = protocol == ServoProtocol.DXL2 ? new Dxl2Codec() : new FeetechCodec(protocol == ServoProtocol.SCS);
         this.bigEndian = protocol == ServoProtocol.SCS;
-        this.out = new byte[codec.bufferSize()];
-        this.rx = codec.decoder(this::onPacket);
-        reader = new Thread(this::readLoop, "servo-reader " + link.name());
-        reader.setDaemon(true);
-        reader.start();
+        PacketCodec codec = protocol == ServoProtocol.DXL2 ? new Dxl2Codec() : new FeetechCodec(bigEndian);
+        this.port = new PacketPort(link, codec, protocol == ServoProtocol.DXL2, bigEndian, baud, timeoutMs);
     }
 
     @Override
@@ -80,16 +46,16 @@ public final class ControlTableBus implements ServoBus {
 
     @Override
     public String name() {
-        return link.name();
+        return port.name();
     }
 
     @Override
     public int ping(int id, int attempts) throws IOException {
         for (int a = 0; a < attempts; a++) {
-            if (transact(id, PacketCodec.PING, 0, id)) {
+            if (port.request(id, PacketCodec.PING, params, 0, id)) {
                 if (protocol == ServoProtocol.DXL2) {
                     // The status of a Dynamixel ping carries the model number (2 bytes) and firmware version.
-                    return answerSize[id] >= 3 ? value[id] & 0xFFFF : 0;
+                    return port.size(id) >= 3 ? port.value(id) & 0xFFFF : 0;
                 }
                 int model = read(id, Registers.FEETECH.model(), 2, attempts - a);
                 return model == Integer.MIN_VALUE ? 0 : model;
@@ -109,19 +75,12 @@ public final class ControlTableBus implements ServoBus {
         }
         int[] models = new int[ids.length];
         java.util.Arrays.fill(models, -1);
-        ServoModel[] any = new ServoModel[ids.length];
-        java.util.Arrays.fill(any, ServoModel.defaultFor(protocol));
         for (int pass = 0; pass < 2; pass++) {
-            transact(PacketCodec.BROADCAST, PacketCodec.PING, 0, ids, any, ids.length, null);
-            replyLock.lock();
-            try {
-                for (int i = 0; i < ids.length; i++) {
-                    if (got[ids[i]] && models[i] < 0) {
-                        models[i] = answerSize[ids[i]] >= 3 ? value[ids[i]] & 0xFFFF : 0;
-                    }
+            port.requestAll(PacketCodec.BROADCAST, PacketCodec.PING, params, 0, ids, ids.length);
+            for (int i = 0; i < ids.length; i++) {
+                if (port.got(ids[i]) && models[i] < 0) {
+                    models[i] = port.size(ids[i]) >= 3 ? port.value(ids[i]) & 0xFFFF : 0;
                 }
-            } finally {
-                replyLock.unlock();
             }
         }
         return models;
@@ -131,8 +90,8 @@ public final class ControlTableBus implements ServoBus {
     public int read(int id, int addr, int size, int attempts) throws IOException {
         for (int a = 0; a < attempts; a++) {
             int n = putAddress(0, addr, size);
-            if (transact(id, PacketCodec.READ, n, id) && answerSize[id] >= size) {
-                return value[id];
+            if (port.request(id, PacketCodec.READ, params, n, id) && port.size(id) >= size) {
+                return port.value(id);
             }
         }
         return Integer.MIN_VALUE;
@@ -142,7 +101,7 @@ public final class ControlTableBus implements ServoBus {
     public boolean write(int id, int addr, int size, int v) throws IOException {
         int n = putAddress(0, addr, -1);
         n = put(n, v, size);
-        return transact(id, PacketCodec.WRITE, n, id) && error[id] == 0;
+        return port.request(id, PacketCodec.WRITE, params, n, id) && port.error(id) == 0;
     }
 
     @Override
@@ -162,21 +121,24 @@ public final class ControlTableBus implements ServoBus {
     @Override
     public int readPositions(int[] ids, ServoModel[] models, int n, double[] degrees, int[] errors) throws IOException {
         java.util.List<Registers> layouts = layouts(models, n);
+        int expected = 0;
         if (protocol == ServoProtocol.SCS) {
             for (int i = 0; i < n; i++) {
                 Registers r = models[i].registers();
                 int k = putAddress(0, r.present(), r.presentSize());
-                transact(ids[i], PacketCodec.READ, k, ids[i]);
+                port.request(ids[i], PacketCodec.READ, params, k, ids[i]);
             }
         } else if (layouts.size() == 1 || protocol != ServoProtocol.DXL2) {
             for (Registers r : layouts) {
                 int k = putAddress(0, r.present(), r.presentSize());
+                expected = 0;
                 for (int i = 0; i < n; i++) {
                     if (models[i].registers() == r) {
                         params[k++] = (byte) ids[i];
+                        replyIds[expected++] = ids[i];
                     }
                 }
-                transact(PacketCodec.BROADCAST, PacketCodec.SYNC_READ, k, ids, models, n, r);
+                port.requestAll(PacketCodec.BROADCAST, PacketCodec.SYNC_READ, params, k, replyIds, expected);
             }
         } else {
             int k = 0;
@@ -185,24 +147,19 @@ public final class ControlTableBus implements ServoBus {
                 params[k++] = (byte) ids[i];
                 k = putAddress(k, r.present(), r.presentSize());
             }
-            transact(PacketCodec.BROADCAST, PacketCodec.BULK_READ, k, ids, models, n, null);
+            port.requestAll(PacketCodec.BROADCAST, PacketCodec.BULK_READ, params, k, ids, n);
         }
         int answered = 0;
-        replyLock.lock();
-        try {
-            for (int i = 0; i < n; i++) {
-                int id = ids[i];
-                int size = models[i].registers().presentSize();
-                if (!got[id] || answerSize[id] < size) {
-                    errors[i] = NO_REPLY;
-                } else {
-                    degrees[i] = models[i].degrees(value[id], size);
-                    errors[i] = error[id];
-                    answered++;
-                }
+        for (int i = 0; i < n; i++) {
+            int id = ids[i];
+            int size = models[i].registers().presentSize();
+            if (!port.got(id) || port.size(id) < size) {
+                errors[i] = NO_REPLY;
+            } else {
+                degrees[i] = models[i].degrees(port.value(id), size);
+                errors[i] = port.error(id);
+                answered++;
             }
-        } finally {
-            replyLock.unlock();
         }
         return answered;
     }
@@ -261,43 +218,23 @@ public final class ControlTableBus implements ServoBus {
 
     @Override
     public int pendingOutput() {
-        return link.pendingOutput();
+        return port.pendingOutput();
     }
 
     @Override
     public Counters counters() {
-        replyLock.lock();
-        try {
-            synchronized (writeLock) {
-                return new Counters(packetsSent, timeouts, rx.checksumErrors(), stray);
-            }
-        } finally {
-            replyLock.unlock();
-        }
+        long[] c = port.receiveCounters();
+        return new Counters(port.packetsSent(), c[0], c[1], c[2]);
     }
 
     @Override
     public IOException linkError() {
-        return linkError;
+        return port.linkError();
     }
 
     @Override
     public void close() {
-        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(250);
-        while (linkError == null && link.pendingOutput() > 0 && System.nanoTime() < deadline) {
-            java.util.concurrent.locks.LockSupport.parkNanos(200_000);
-        }
-        long linger = lastWriteNanos + TimeUnit.MILLISECONDS.toNanos(LINGER_MS) - System.nanoTime();
-        if (linger > 0 && linkError == null) {
-            java.util.concurrent.locks.LockSupport.parkNanos(linger);
-        }
-        running = false;
-        link.close();
-        try {
-            reader.join(1000);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+        port.close();
     }
 
     /** Bus Watchdog units (20 ms) of {@code ms}, 0 for off. */
@@ -305,21 +242,21 @@ public final class ControlTableBus implements ServoBus {
         return ms <= 0 ? 0 : Math.max(1, Math.min(127, (ms + 19) / 20));
     }
 
-    /** The distinct register layouts of models {@code 0…n)}, in order of first use. */
-    private static java.util.List<Registers> layouts(ServoModel[] models, int n) {
-        java.util.List<Registers> l = new java.util.ArrayList<>(2);
+    /** The distinct register layouts of models {@code 0…n)}, in order of first use (a reused list). */
+    private java.util.List<Registers> layouts(ServoModel[] models, int n) {
+        layouts.clear();
         for (int i = 0; i < n; i++) {
-            if (!l.contains(models[i].registers())) {
-                l.add(models[i].registers());
+            if (!layouts.contains(models[i].registers())) {
+                layouts.add(models[i].registers());
             }
         }
-        return l;
+        return layouts;
     }
 
     /** One Sync Write of {@code size} bytes at {@code addr} to the servos of layout {@code r}. */
     private void syncWrite(int addr, int size, int[] ids, ServoModel[] models, int[] values, int constant, int n,
                            Registers r) throws IOException {
-        synchronized (writeLock) {
+        synchronized (params) {
             int k = putAddress(0, addr, size);
             for (int i = 0; i < n; i++) {
                 if (models[i].registers() == r) {
@@ -327,7 +264,7 @@ public final class ControlTableBus implements ServoBus {
                     k = put(k, values == null ? constant : values[i], size);
                 }
             }
-            send(PacketCodec.BROADCAST, PacketCodec.SYNC_WRITE, k);
+            port.send(PacketCodec.BROADCAST, PacketCodec.SYNC_WRITE, params, k);
         }
     }
 
@@ -354,154 +291,5 @@ public final class ControlTableBus implements ServoBus {
             params[k + i] = (byte) (v >>> 8 * (bigEndian ? size - 1 - i : i));
         }
         return k + size;
-    }
-
-    private void send(int id, int instruction, int paramLen) throws IOException {
-        synchronized (writeLock) {
-            IOException e = linkError;
-            if (e != null) {
-                throw e;
-            }
-            int len = codec.instruction(out, id, instruction, params, paramLen);
-            link.write(out, 0, len);
-            packetsSent++;
-            lastWriteNanos = System.nanoTime();
-        }
-    }
-
-    /** A request to one servo; true when it replied in time. */
-    private boolean transact(int id, int instruction, int paramLen, int replyId) throws IOException {
-        replyLock.lock();
-        try {
-            expected = 0;
-            expect(replyId);
-        } finally {
-            replyLock.unlock();
-        }
-        await(id, instruction, paramLen, 1);
-        return got[replyId];
-    }
-
-    /** A request answered by every servo of layout {@code r} (all when null) among {@code 0…n)}. */
-    private void transact(int id, int instruction, int paramLen, int[] ids, ServoModel[] models, int n, Registers r)
-            throws IOException {
-        replyLock.lock();
-        try {
-            expected = 0;
-            for (int i = 0; i < n; i++) {
-                if (r == null || models[i].registers() == r) {
-                    expect(ids[i]);
-                }
-            }
-        } finally {
-            replyLock.unlock();
-        }
-        await(id, instruction, paramLen, expected);
-    }
-
-    /** Adds {@code id} to the replies awaited, with {@link #replyLock} held. */
-    private void expect(int id) {
-        expectedIds[expected++] = id;
-        waiting[id] = true;
-        got[id] = false;
-        answerSize[id] = 0;
-        waitingCount++;
-    }
-
-    /** Sends and waits for the {@code replies} expected replies; the replies are in {@link #got} and its arrays. */
-    private void await(int id, int instruction, int paramLen, int replies) throws IOException {
-        try {
-            send(id, instruction, paramLen);
-        } catch (IOException e) {
-            forget();
-            throw e;
-        }
-        // Room for every reply on the wire (10 bits a byte) on top of the read timeout.
-        long wire = (long) replies * codec.packetLength(8) * 10_000_000_000L / baud;
-        long left = TimeUnit.MILLISECONDS.toNanos(timeoutMs) + wire;
-        replyLock.lock();
-        try {
-            while (waitingCount > 0 && left > 0 && linkError == null) {
-                left = replied.awaitNanos(left);
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        } finally {
-            replyLock.unlock();
-        }
-        forget();
-        if (linkError != null) {
-            throw linkError;
-        }
-    }
-
-    /** Ends the current request: late replies count as stray. */
-    private void forget() {
-        replyLock.lock();
-        try {
-            timeouts += waitingCount;
-            for (int i = 0; i < expected; i++) {
-                waiting[expectedIds[i]] = false;
-            }
-            waitingCount = 0;
-        } finally {
-            replyLock.unlock();
-        }
-    }
-
-    private void readLoop() {
-        byte[] in = new byte[2048];
-        long lastByte = System.nanoTime();
-        while (running) {
-            int n;
-            try {
-                n = link.read(in);
-            } catch (IOException e) {
-                replyLock.lock();
-                try {
-                    linkError = e;
-                    replied.signalAll();
-                } finally {
-                    replyLock.unlock();
-                }
-                return;
-            }
-            long now = System.nanoTime();
-            replyLock.lock();
-            try {
-                if (n > 0) {
-                    lastByte = now;
-                    rx.feed(in, 0, n);
-                } else if (rx.pending() > 0 && now - lastByte > 5_000_000L) {
-                    rx.idle();
-                }
-            } finally {
-                replyLock.unlock();
-            }
-        }
-    }
-
-    /** On the reader thread with {@link #replyLock} held. */
-    private void onPacket(Packet p) {
-        if (protocol == ServoProtocol.DXL2 && p.code != PacketCodec.STATUS) {
-            return;
-        }
-        if (!waiting[p.id]) {
-            stray++;
-            return;
-        }
-        waiting[p.id] = false;
-        got[p.id] = true;
-        int size = Math.min(4, p.length);
-        int v = 0;
-        for (int i = 0; i < size; i++) {
-            v |= (p.params[i] & 0xFF) << 8 * (bigEndian ? size - 1 - i : i);
-        }
-        value[p.id] = v;
-        answerSize[p.id] = p.length;
-        error[p.id] = codec.statusError(p);
-        if (--waitingCount <= 0) {
-            replied.signalAll();
-        }
     }
 }
