@@ -33,7 +33,8 @@ import picocli.CommandLine.Model.CommandSpec;
 @Command(name = "scan", description = {"Find Dynamixel 2.0, Feetech STS/SCS or G1 servos on a serial device and write "
     + "a starter hardware profile.", "Without --protocol every protocol is tried, without --baud every common baud rate."})
 public final class ScanCommand implements Callable<Integer> {
-    private static final int PING_TIMEOUT_MS = 3;
+    /** A reply takes 2.5 ms at 57 600 baud, plus the servo's return delay and a loaded host's latency. */
+    private static final int PING_TIMEOUT_MS = 10;
 
     @Option(names = "--port", required = true, paramLabel = "PATH", description = "The serial device.")
     String port;
@@ -129,7 +130,10 @@ public final class ScanCommand implements Callable<Integer> {
                 if (model != null) {
                     double[] d = new double[1];
                     int[] e = new int[1];
-                    bus.readPositions(new int[] {wanted[i]}, new ServoModel[] {model}, 1, d, e);
+                    e[0] = ServoBus.NO_REPLY;
+                    for (int attempt = 0; attempt < 3 && e[0] == ServoBus.NO_REPLY; attempt++) {
+                        bus.readPositions(new int[] {wanted[i]}, new ServoModel[] {model}, 1, d, e);
+                    }
                     deg = e[0] == ServoBus.NO_REPLY ? Double.NaN : d[0];
                 }
                 found.add(new Found(wanted[i], numbers[i], model, deg));

@@ -50,6 +50,10 @@ public final class ServoEmulator implements AutoCloseable {
     private final PacketDecoder servoRx;
     private final ServoResponder responder;
     private final byte[] scratch;
+    /** Status packets of the request being answered, back to back; packet i ends at outEnds[i]. */
+    private final byte[] outBuf = new byte[64 * 1024];
+    private final int[] outEnds = new int[256];
+    private int outCount;
     private final Random random;
     final Object lock = new Object();
     private final long startNanos = System.nanoTime();
@@ -283,33 +287,45 @@ public final class ServoEmulator implements AutoCloseable {
     private void onServoPacket(Packet p) {
         synchronized (lock) {
             packets++;
+            outCount = 0;
             responder.execute(p, System.nanoTime());
+        }
+        // Replies leave outside the lock: a reply latency must not stall the motors.
+        for (int i = 0; i < outCount; i++) {
+            if (options.latencyMs() > 0) {
+                LockSupport.parkNanos((long) (options.latencyMs() * 1e6));
+            }
+            ByteLink l = link;
+            if (l == null || unplugged) {
+                return;
+            }
+            int from = i == 0 ? 0 : outEnds[i - 1];
+            try {
+                l.write(outBuf, from, outEnds[i] - from);
+            } catch (IOException e) {
+                // The rx loop notices the lost device on its next read and reopens it.
+                return;
+            }
         }
     }
 
-    /** Sends a status packet (called by the responder with {@link #lock} held). */
+    /** Queues a status packet (called by the responder with {@link #lock} held); faults apply here. */
     private void reply(byte[] packet, int len) {
-        if (options.latencyMs() > 0) {
-            LockSupport.parkNanos((long) (options.latencyMs() * 1e6));
-        }
         if (options.drop() > 0 && random.nextDouble() < options.drop()) {
             dropped++;
             return;
         }
-        if (options.corrupt() > 0 && random.nextDouble() < options.corrupt()) {
-            corrupted++;
-            packet[random.nextInt(len)] ^= (byte) (1 + random.nextInt(255));
-        }
-        replies++;
-        ByteLink l = link;
-        if (l == null || unplugged) {
+        int from = outCount == 0 ? 0 : outEnds[outCount - 1];
+        if (outCount == outEnds.length || from + len > outBuf.length) {
             return;
         }
-        try {
-            l.write(packet, 0, len);
-        } catch (IOException e) {
-            // The rx loop notices the lost device on its next read and reopens it.
+        System.arraycopy(packet, 0, outBuf, from, len);
+        if (options.corrupt() > 0 && random.nextDouble() < options.corrupt()) {
+            corrupted++;
+            outBuf[from + random.nextInt(len)] ^= (byte) (1 + random.nextInt(255));
         }
+        outEnds[outCount++] = from + len;
+        replies++;
     }
 
     private void physicsLoop() {

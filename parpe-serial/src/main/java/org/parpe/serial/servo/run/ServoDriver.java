@@ -48,6 +48,7 @@ public final class ServoDriver implements JointSink, SensorSource, AutoCloseable
     private long silentSince;
     private long lastAnswer = System.nanoTime();
     private long lastSend;
+    private int failedReads;
     private int busyCycles;
     private long reads;
     private long readFailures;
@@ -126,6 +127,7 @@ public final class ServoDriver implements JointSink, SensorSource, AutoCloseable
 
     @Override
     public void start(RunInfo info) {
+        lastAnswer = System.nanoTime();
         running = true;
         Thread t = new Thread(this::loop, "servo bus " + bus.name());
         t.setDaemon(true);
@@ -256,11 +258,14 @@ public final class ServoDriver implements JointSink, SensorSource, AutoCloseable
             reads++;
             if (answered > 0) {
                 lastAnswer = System.nanoTime();
+                failedReads = 0;
                 faults += set.storeReadings(n, bus, this::fault);
                 checkWatchdog(n);
             } else if (n > 0) {
                 readFailures++;
-                if (System.nanoTime() - lastAnswer > TimeUnit.MILLISECONDS.toNanos(config.deadAfterMs())) {
+                // Dead: no answer for the dead-bus time and more failed reads in a row than retries.
+                if (++failedReads > config.retries()
+                        && System.nanoTime() - lastAnswer > TimeUnit.MILLISECONDS.toNanos(config.deadAfterMs())) {
                     silent();
                     return;
                 }
@@ -339,6 +344,7 @@ public final class ServoDriver implements JointSink, SensorSource, AutoCloseable
             if (bus.ping(set.ids[i], 1) >= 0) {
                 setUp();
                 lastAnswer = System.nanoTime();
+                failedReads = 0;
                 state = State.CONNECTED;
                 report.note(String.format(Locale.ROOT, "bus: servos back on %s after %.2f s; resuming", bus.name(),
                         (System.nanoTime() - silentSince) / 1e9));
