@@ -112,8 +112,9 @@ class ServoRunTest {
     @Test
     void pulledCableIsReportedAndTheRunEnds() throws Exception {
         try (EmulatedServos s = new EmulatedServos(dir, ServoModel.named("xl330-m288"),
-                EmulatorOptions.of(1, 2, 3, 4).withUnplug(0.6, -1))) {
-            Cli r = run(s, "dxl2", "--duration", "1.5");
+                EmulatorOptions.of(1, 2, 3, 4).withUnplug(1.5, -1))) {
+            // The cable comes out well after discovery, even on a loaded machine.
+            Cli r = run(s, "dxl2", "--duration", "2.5");
             assertEquals(0, r.code, r.toString());
             assertTrue(r.err.contains("no reply from any servo"), r.err);
             assertTrue(r.err.contains("servos hold their last goal"), r.err);
@@ -131,5 +132,57 @@ class ServoRunTest {
         assertEquals(2, r.code, r.toString());
         assertTrue(r.err.contains(profile + ":2:3: error: unknown dxl2 servo model 'ax-12'"), r.err);
         assertTrue(r.err.contains(profile + ":3:3: error: <servo> needs the attribute 'id'"), r.err);
+    }
+
+    @Test
+    void g1ModulesRunThroughAProfileToo() throws Exception {
+        try (EmulatedBus bus = new EmulatedBus(dir, EmulatorOptions.of(0, 1, 2, 3))) {
+            Path script = file("snake.xml", HardwareRunTest.SCRIPT);
+            Path profile = file("g1.xml", """
+                    <hardware protocol="g1">
+                      <servo module="0" id="0" zero="5" max="85"/>
+                      <servo module="1" id="1"/>
+                      <servo module="2" id="2"/>
+                      <servo module="3" id="3" direction="-1"/>
+                    </hardware>
+                    """);
+            Path trace = dir.resolve("g1.csv");
+            Cli r = Cli.run("run", script.toString(), "--hardware", profile.toString(), "--port", bus.port(),
+                    "--duration", "1", "--trace", trace.toString());
+            assertEquals(0, r.code, r.toString());
+            assertTrue(r.err.contains("(g1, 115200 baud): 4 of 4 servos answer"), r.err);
+            assertTrue(r.err.contains("modules hold after 60 ms without a frame (module watchdog)"), r.err);
+            Thread.sleep(300);
+            Traces t = new Traces(trace);
+            double[] last = t.rows.get(t.rows.size() - 1);
+            assertEquals(5 + last[1], bus.emulator.angle(0), 0.01, "module 0 through zero 5");
+            assertEquals(-last[4], bus.emulator.angle(3), 0.01, "module 3 turned the other way");
+        }
+    }
+
+    @Test
+    void theEmulateCommandServesDynamixelServosThatScanFinds() throws Exception {
+        try (PtyPair pty = PtyPair.start(dir.resolve("ea"), dir.resolve("eb"))) {
+            java.util.concurrent.CompletableFuture<Cli> emu = java.util.concurrent.CompletableFuture.supplyAsync(() ->
+                    Cli.run("emulate", "--protocol", "dxl2", "--model", "xm430-w210", "--port", pty.b().toString(),
+                            "--modules", "1..2", "--duration", "3"));
+            Thread.sleep(800);
+            Cli scan = Cli.run("scan", "--port", pty.a().toString(), "--protocol", "dxl2", "--baud", "1000000",
+                    "--ids", "0..4", "--out", dir.resolve("e.xml").toString());
+            assertEquals(0, scan.code, scan.toString());
+            assertTrue(scan.out.contains("2 dxl2 servos"), scan.out);
+            assertTrue(scan.out.contains("xm430-w210 (1030)"), scan.out);
+            Cli e = emu.get(20, TimeUnit.SECONDS);
+            assertEquals(0, e.code, e.toString());
+            assertTrue(e.err.contains("emulate: 2 dxl2 servos xm430-w210 (1030) (1, 2)"), e.err);
+            assertTrue(e.err.matches("(?s).*emulate: [1-9]\\d* packets accepted.*"), e.err);
+        }
+    }
+
+    @Test
+    void emulateRefusesAModelOfAnotherProtocol() {
+        Cli r = Cli.run("emulate", "--protocol", "sts", "--model", "xl430-w250", "--port", "/nonexistent");
+        assertEquals(2, r.code, r.toString());
+        assertTrue(r.err.contains("--model 'xl430-w250' is not a sts servo PARPE knows; known: sts3215"), r.err);
     }
 }

@@ -97,11 +97,19 @@ public final class ControlTableBus implements ServoBus {
         return Integer.MIN_VALUE;
     }
 
-    /** Writes {@code value} ({@code size} bytes) at {@code addr} of servo {@code id}; true when it acknowledged. */
-    public boolean write(int id, int addr, int size, int v) throws IOException {
-        int n = putAddress(0, addr, -1);
-        n = put(n, v, size);
-        return port.request(id, PacketCodec.WRITE, params, n, id) && port.error(id) == 0;
+    /**
+     * Writes {@code v} ({@code size} bytes) at {@code addr} of servo {@code id} with up to
+     * {@code attempts} tries; true when it acknowledged without error.
+     */
+    public boolean write(int id, int addr, int size, int v, int attempts) throws IOException {
+        for (int a = 0; a < attempts; a++) {
+            int n = putAddress(0, addr, -1);
+            n = put(n, v, size);
+            if (port.request(id, PacketCodec.WRITE, params, n, id)) {
+                return port.error(id) == 0;
+            }
+        }
+        return false;
     }
 
     @Override
@@ -188,7 +196,7 @@ public final class ControlTableBus implements ServoBus {
         int covered = 0;
         for (int i = 0; i < n; i++) {
             int addr = models[i].registers().watchdog();
-            if (addr >= 0 && write(ids[i], addr, 1, 0) && (units == 0 || write(ids[i], addr, 1, units))) {
+            if (addr >= 0 && write(ids[i], addr, 1, 0, 3) && (units == 0 || write(ids[i], addr, 1, units, 3))) {
                 covered++;
             }
         }
@@ -199,10 +207,10 @@ public final class ControlTableBus implements ServoBus {
     @Override
     public boolean resumeIfTripped(int id, ServoModel model, int statusError, int ms) throws IOException {
         int addr = model.registers().watchdog();
-        if (addr < 0 || ms <= 0 || read(id, addr, 1, 1) != WATCHDOG_TRIPPED) {
+        if (addr < 0 || ms <= 0 || read(id, addr, 1, 3) != WATCHDOG_TRIPPED) {
             return false;
         }
-        return write(id, addr, 1, 0) && write(id, addr, 1, watchdogUnits(ms));
+        return write(id, addr, 1, 0, 3) && write(id, addr, 1, watchdogUnits(ms), 3);
     }
 
     @Override

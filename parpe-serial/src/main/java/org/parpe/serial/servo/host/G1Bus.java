@@ -116,7 +116,14 @@ public final class G1Bus implements ServoBus {
 
     @Override
     public String watchdog(int[] ids, ServoModel[] models, int n, int ms, boolean limp) throws IOException {
-        master.sendConfig(Math.max(1, ms), limp ? SafeMode.LIMP : SafeMode.HOLD, 0);
+        if (ms <= 0) {
+            // HOLD disarms the watchdogs; mode 1 lets a module finish its move to the last setpoint.
+            for (int pass = 0; pass < 3; pass++) {
+                master.sendHold(Protocol.BROADCAST, true);
+            }
+            return "module watchdogs off; modules finish their move and hold";
+        }
+        master.sendConfig(ms, limp ? SafeMode.LIMP : SafeMode.HOLD, 0);
         master.send(Protocol.BROADCAST, Protocol.RESUME);
         return "modules " + (limp ? "go limp" : "hold") + " after " + ms + " ms without a frame (module watchdog)";
     }

@@ -87,7 +87,7 @@ class ServoBusOverPtyTest {
         ServoModel[] ms = models(model, IDS.length);
         start(ms, EmulatorOptions.of(IDS));
         for (int id : IDS) {
-            assertEquals(model.number(), bus.ping(id, 3), "model of servo " + id);
+            assertEquals(model.number(), bus.ping(id, 5), "model of servo " + id);
         }
         assertEquals(-1, bus.ping(9, 1), "servo 9 is absent");
         bus.torque(IDS, ms, IDS.length, true);
@@ -140,7 +140,7 @@ class ServoBusOverPtyTest {
         ServoModel xl320 = ServoModel.named("xl-320");
         ServoModel[] ms = {xl430, xl320, xl430, xl320};
         start(ms, EmulatorOptions.of(IDS));
-        assertEquals(350, bus.ping(2, 3));
+        assertEquals(350, bus.ping(2, 5));
         bus.torque(IDS, ms, 4, true);
         int[] ticks = {xl430.ticks(20), xl320.ticks(-20), xl430.ticks(30), xl320.ticks(-30)};
         bus.writeGoals(IDS, ms, ticks, 4);
@@ -194,7 +194,7 @@ class ServoBusOverPtyTest {
             ServoModel model = ServoModel.defaultFor(ServoProtocol.G1);
             ServoModel[] ms = models(model, IDS.length);
             bus = ServoBuses.open(ServoProtocol.G1, LinkOpener.serial(pty.a().toString(), 115_200), BusConfig.defaults());
-            assertEquals(1, bus.ping(2, 3));
+            assertEquals(1, bus.ping(2, 5));
             assertEquals(-1, bus.ping(7, 1));
             bus.torque(IDS, ms, IDS.length, false);
             await(() -> g1.isLimp(3));
