@@ -101,6 +101,7 @@ public final class ServoBenchmark implements Benchmark {
             }
             double rate = (writes.get() - startWrites) / ((System.nanoTime() - start) / 1e9);
             d.finish(new RunOutcome(RunOutcome.Status.COMPLETED, 0, ""));
+            checkClean(emu);
             return rate;
         }
     }
@@ -139,11 +140,16 @@ public final class ServoBenchmark implements Benchmark {
             double rate = (writes.get() - f0) / ((System.nanoTime() - w0 - 200e6) / 1e9);
             print(out, "servo.dxl2_pty_syncwrites_per_s_" + n, rate);
             print(out, "servo.dxl2_pty_received_fraction_" + n, (double) writes.get() / sent);
-            if (emu.stats().checksumErrors() > 0) {
-                throw new IllegalStateException("the emulator rejected " + emu.stats().checksumErrors() + " packets");
-            }
+            checkClean(emu);
         } finally {
             Files.deleteIfExists(dir);
+        }
+    }
+
+    /** A benchmark on a damaged line would measure the wrong thing. */
+    private static void checkClean(ServoEmulator emu) {
+        if (emu.stats().checksumErrors() > 0) {
+            throw new IllegalStateException("the emulator rejected " + emu.stats().checksumErrors() + " packets");
         }
     }
 

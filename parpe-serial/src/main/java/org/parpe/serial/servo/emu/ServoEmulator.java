@@ -74,7 +74,7 @@ public final class ServoEmulator implements AutoCloseable {
         this.options = options;
         this.listener = listener;
         this.protocol = models[0].protocol();
-        this.codec = protocol == ServoProtocol.DXL2 ? new Dxl2Codec() : new FeetechCodec(protocol == ServoProtocol.SCS);
+        this.codec = protocol == ServoProtocol.DXL2 ? new Dxl2Codec() : new FeetechCodec();
         this.random = new Random(options.seed());
         int[] ids = options.modules();
         servos = new EmulatedServo[ids.length];

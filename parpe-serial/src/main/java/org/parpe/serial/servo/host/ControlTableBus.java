@@ -35,7 +35,7 @@ public final class ControlTableBus implements ServoBus {
         }
         this.protocol = protocol;
         this.bigEndian = protocol == ServoProtocol.SCS;
-        PacketCodec codec = protocol == ServoProtocol.DXL2 ? new Dxl2Codec() : new FeetechCodec(bigEndian);
+        PacketCodec codec = protocol == ServoProtocol.DXL2 ? new Dxl2Codec() : new FeetechCodec();
         this.port = new PacketPort(link, codec, protocol == ServoProtocol.DXL2, bigEndian, baud, timeoutMs);
     }
 

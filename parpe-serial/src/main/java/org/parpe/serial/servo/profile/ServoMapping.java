@@ -50,11 +50,6 @@ public record ServoMapping(int module, int servo, ServoModel model, double zero,
         return lo == min && hi == max ? this : new ServoMapping(module, servo, model, zero, direction, lo, hi, where);
     }
 
-    /** The same mapping placed elsewhere (a profile rewritten). */
-    public ServoMapping withWhere(SourcePos w) {
-        return new ServoMapping(module, servo, model, zero, direction, min, max, w);
-    }
-
     /** The same mapping with another zero offset. */
     public ServoMapping withZero(double z) {
         return new ServoMapping(module, servo, model, z, direction, min, max, where);

@@ -6,7 +6,9 @@ package org.parpe.serial.servo.wire;
  * the (stuffed) parameters and the CRC. A status packet has INST {@code 0x55} followed by the
  * error byte. Byte stuffing: wherever {@code FF FF FD} appears from the instruction on, a
  * {@code FD} is inserted after it, so the header can never appear inside a packet; LEN and the
- * CRC cover the stuffed bytes, and the receiver removes the extra {@code FD}.
+ * CRC cover the stuffed bytes, and the receiver removes the extra {@code FD}. The error numbers
+ * (low 7 bits of the error byte) 1…7 are result fail, instruction, CRC, data range, data length,
+ * data limit and access error.
  */
 public final class Dxl2Codec implements PacketCodec {
     /** Bytes of header, ID and length. */
@@ -14,16 +16,8 @@ public final class Dxl2Codec implements PacketCodec {
     private static final byte[] HEADER = {(byte) 0xFF, (byte) 0xFF, (byte) 0xFD, 0x00};
     /** Error byte bit: the servo has a hardware error (read Hardware Error Status). */
     public static final int ERROR_ALERT = 0x80;
-    /** Error number (low 7 bits): the instruction failed. */
-    public static final int ERROR_RESULT_FAIL = 0x01;
     /** Error number: unknown instruction, or Action without Reg Write. */
     public static final int ERROR_INSTRUCTION = 0x02;
-    /** Error number: the packet's CRC did not match. */
-    public static final int ERROR_CRC = 0x03;
-    /** Error number: a value outside the range of its field. */
-    public static final int ERROR_DATA_RANGE = 0x04;
-    /** Error number: data shorter than the field. */
-    public static final int ERROR_DATA_LENGTH = 0x05;
     /** Error number: a value outside the limits set in the control table. */
     public static final int ERROR_DATA_LIMIT = 0x06;
     /** Error number: a read-only or unknown address, or a write to the EEPROM with torque on. */

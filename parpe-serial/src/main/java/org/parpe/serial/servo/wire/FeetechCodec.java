@@ -5,34 +5,15 @@ package org.parpe.serial.servo.wire;
  * as Dynamixel Protocol 1.0): {@code FF FF ID LEN INST PARAM… CHK}, where LEN is the number of
  * parameters + 2 and CHK = ~(ID + LEN + INST + PARAM…) & 0xFF. A status packet carries the
  * servo's error byte where the instruction would be. Multi-byte values: STS servos are
- * little-endian, SCS servos big-endian ({@link #bigEndian}).
+ * little-endian, SCS servos big-endian. Status bits: 0 voltage, 1 sensor, 2 overheating,
+ * 3 overcurrent, 4 angle, 5 overload.
  */
 public final class FeetechCodec implements PacketCodec {
     private static final int HEAD = 4;
-    /** Error bit: input voltage out of range. */
-    public static final int ERROR_VOLTAGE = 0x01;
-    /** Error bit: magnetic encoder (sensor) fault. */
-    public static final int ERROR_SENSOR = 0x02;
     /** Error bit: overheating. */
     public static final int ERROR_OVERHEAT = 0x04;
-    /** Error bit: overcurrent. */
-    public static final int ERROR_CURRENT = 0x08;
-    /** Error bit: goal outside the angle limits. */
-    public static final int ERROR_ANGLE = 0x10;
     /** Error bit: overload. */
     public static final int ERROR_OVERLOAD = 0x20;
-
-    private final boolean bigEndian;
-
-    /** The codec of STS servos ({@code bigEndian} false) or SCS servos (true). */
-    public FeetechCodec(boolean bigEndian) {
-        this.bigEndian = bigEndian;
-    }
-
-    /** Whether multi-byte control table values are big-endian (SCS). */
-    public boolean bigEndian() {
-        return bigEndian;
-    }
 
     @Override
     public int instruction(byte[] out, int id, int instruction, byte[] params, int len) {

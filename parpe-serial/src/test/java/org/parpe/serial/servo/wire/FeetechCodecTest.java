@@ -16,7 +16,7 @@ import org.junit.jupiter.api.Test;
  * manual (ping, read, write), and the checksum rule ~(ID + LEN + INST + params).
  */
 class FeetechCodecTest {
-    final FeetechCodec codec = new FeetechCodec(false);
+    final FeetechCodec codec = new FeetechCodec();
     final byte[] out = new byte[codec.bufferSize()];
 
     byte[] instruction(int id, int inst, int... p) {
