@@ -43,8 +43,9 @@ public final class EmulateCommand implements Callable<Integer> {
             description = "Module IDs to emulate, e.g. 0..7 or 0,2,4 (default ${DEFAULT-VALUE}).")
     String modules;
 
-    @Option(names = "--baud", defaultValue = "115200", paramLabel = "N", description = "Line speed (default ${DEFAULT-VALUE}).")
-    int baud;
+    @Option(names = "--baud", paramLabel = "N",
+            description = "Line speed (default: the protocol's, 115200 for g1, 57600 for dxl2, 1000000 for sts and scs).")
+    Integer baud;
 
     @Option(names = "--protocol", defaultValue = "g1", paramLabel = "g1|dxl2|sts|scs",
             description = "Bus protocol: PARPE's G1 modules, Dynamixel 2.0 or Feetech STS/SCS servos (default ${DEFAULT-VALUE}).")
@@ -96,7 +97,7 @@ public final class EmulateCommand implements Callable<Integer> {
     }
 
     private EmulatorOptions options(int[] ids) throws UsageException {
-        if (baud <= 0) {
+        if (baud != null && baud <= 0) {
             throw new UsageException("--baud must be > 0, got " + baud);
         }
         if (unplugFor != null && unplugAfter == null) {
@@ -123,8 +124,9 @@ public final class EmulateCommand implements Callable<Integer> {
         if (p == null) {
             throw new UsageException("--protocol must be one of " + ServoProtocol.keys() + ", got '" + protocol + "'");
         }
+        int rate = baud == null ? p.scanBauds().get(0) : baud;
         if (p != ServoProtocol.G1) {
-            return new ServoEmulation(port, baud, servoModel(p), o, duration, log, err).serve();
+            return new ServoEmulation(port, rate, servoModel(p), o, duration, log, err).serve();
         }
         if (model != null) {
             throw new UsageException("--model applies to dxl2, sts and scs servos, not to G1 modules");
@@ -132,12 +134,12 @@ public final class EmulateCommand implements Callable<Integer> {
         SetpointLog csv = SetpointLog.open(log, ids);
         BusEmulator emu;
         try {
-            emu = BusEmulator.start(LinkOpener.serial(port, baud), o, listener(err, csv));
+            emu = BusEmulator.start(LinkOpener.serial(port, rate), o, listener(err, csv));
         } catch (IOException e) {
             csv.close();
             throw new UsageException(e.getMessage());
         }
-        err.println("emulate: " + ids.length + " modules (" + ModuleList.format(ids) + ") on " + port + " at " + baud
+        err.println("emulate: " + ids.length + " modules (" + ModuleList.format(ids) + ") on " + port + " at " + rate
                 + " baud; Ctrl-C to stop");
         CountDownLatch done = new CountDownLatch(1);
         AtomicBoolean closed = new AtomicBoolean();
