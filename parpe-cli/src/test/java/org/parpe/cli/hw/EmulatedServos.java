@@ -16,12 +16,19 @@ final class EmulatedServos implements AutoCloseable {
     final PtyPair pty;
     final ServoEmulator emulator;
     final List<String> events = new CopyOnWriteArrayList<>();
+    /** Every goal Sync Write received: servo degrees in servo ID order, NaN for servos it left out. */
+    final List<double[]> goals = new CopyOnWriteArrayList<>();
 
     EmulatedServos(Path dir, ServoModel model, EmulatorOptions options) throws IOException {
         pty = PtyPair.start(dir.resolve("servo-a"), dir.resolve("servo-b"));
         try {
             emulator = ServoEmulator.start(LinkOpener.serial(pty.b().toString(), 1_000_000), model, options,
                     new EmulatorListener() {
+                        @Override
+                        public void onSetpoints(int seq, double[] angles) {
+                            goals.add(angles.clone());
+                        }
+
                         @Override
                         public void onEvent(String message) {
                             events.add(message);

@@ -72,6 +72,10 @@ class ServoRunTest {
             assertEquals(Math.max(-30, Math.min(30, last[3])), s.emulator.angle(3), tick, "module 2 within its limits");
             assertTrue(Math.abs(last[t.column("hw0")] - last[1]) < 15, "hw0 holds a measured angle");
             assertTrue(!s.emulator.isLimp(1), "the servos hold at the end");
+            assertTrue(s.goals.size() > 50, "goals received: " + s.goals.size());
+            for (double[] g : s.goals) {
+                assertTrue(Double.isNaN(g[2]) || Math.abs(g[2]) <= 30 + tick, "servo 3 was sent " + g[2] + "°");
+            }
         }
     }
 
