@@ -184,6 +184,18 @@ class ServoRunTest {
     }
 
     @Test
+    void aServoOfAnotherControlTableThanTheProfileSaysDoesNotMove() throws Exception {
+        try (EmulatedServos s = new EmulatedServos(dir, ServoModel.named("xl-320"), EmulatorOptions.of(1, 2, 3, 4))) {
+            Cli r = run(s, "dxl2", "--duration", "0.5");
+            assertEquals(2, r.code, r.toString());
+            assertTrue(r.err.contains("servo 1 (module 0) is an xl-320 (350), the profile says xl430-w250 (1060) at "),
+                    r.err);
+            assertTrue(r.err.contains("it will not move (correct the model in the profile)"), r.err);
+            assertTrue(r.err.contains("error: no servo answers"), r.err);
+        }
+    }
+
+    @Test
     void emulateRefusesAModelOfAnotherProtocol() {
         Cli r = Cli.run("emulate", "--protocol", "sts", "--model", "xl430-w250", "--port", "/nonexistent");
         assertEquals(2, r.code, r.toString());

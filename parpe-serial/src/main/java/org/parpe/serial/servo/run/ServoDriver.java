@@ -17,6 +17,7 @@ import org.parpe.serial.bus.BusReport;
 import org.parpe.serial.bus.SafeMode;
 import org.parpe.serial.link.LinkOpener;
 import org.parpe.serial.servo.ServoBus;
+import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.profile.HardwareProfile;
 import org.parpe.serial.servo.profile.ServoMapping;
 
@@ -93,21 +94,35 @@ public final class ServoDriver implements JointSink, SensorSource, AutoCloseable
         for (int j = 0; j < set.size(); j++) {
             ServoMapping m = set.mapping(j);
             int model = bus.ping(m.servo(), Math.max(5, config.retries() + 1));
-            set.driven[j] = model >= 0;
-            if (model < 0) {
-                continue;
-            }
-            found.add(m.module());
-            if (model > 0 && model != m.model().number()) {
-                report.problem(String.format(Locale.ROOT, "bus: servo %d (module %d) reports model number %d, the "
-                        + "profile says %s at %s; driving it with the profile's units", m.servo(), m.module(), model,
-                        m.model().label(), m.where()));
+            set.driven[j] = model >= 0 && compatible(m, model);
+            if (set.driven[j]) {
+                found.add(m.module());
             }
         }
         if (!found.isEmpty()) {
             setUp();
         }
         return found;
+    }
+
+    /**
+     * Whether a servo reporting {@code model} can be driven as the profile's model says: the same
+     * model, or one with the same control table and units (warned). Another one would get goals
+     * at the wrong address or in the wrong unit, so it is not driven.
+     */
+    private boolean compatible(ServoMapping m, int model) {
+        if (model == 0 || model == m.model().number()) {
+            return true;
+        }
+        ServoModel actual = ServoModel.of(profile.protocol(), model);
+        boolean same = actual != null && actual.registers() == m.model().registers()
+                && actual.resolution() == m.model().resolution() && actual.rangeDeg() == m.model().rangeDeg()
+                && actual.centre() == m.model().centre();
+        report.problem(String.format(Locale.ROOT, "bus: servo %d (module %d) is %s, the profile says %s at %s; %s",
+                m.servo(), m.module(), actual == null ? "of unknown model " + model : "an " + actual.label(),
+                m.model().label(), m.where(), same ? "driving it anyway (same control table and units)"
+                        : "it will not move (correct the model in the profile)"));
+        return same;
     }
 
     /** Watchdog, torque on, first positions; the servos hold where they are until setpoints come. */
