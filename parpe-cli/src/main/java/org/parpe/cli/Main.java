@@ -21,6 +21,8 @@ import picocli.CommandLine.Command;
             org.parpe.cli.sim.RaceCommand.class,
             org.parpe.cli.hw.EmulateCommand.class,
             org.parpe.cli.hw.RecordCommand.class,
+            org.parpe.cli.hw.ScanCommand.class,
+            org.parpe.cli.hw.CalibrateCommand.class,
             CommandLine.HelpCommand.class
         },
         footer = {"", "  gui [FILE] [--run-for S] [--screenshot F.png] [--exit]",

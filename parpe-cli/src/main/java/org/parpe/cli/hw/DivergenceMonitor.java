@@ -8,7 +8,6 @@ import org.parpe.core.run.RunInfo;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.core.run.SensorSource;
 import org.parpe.core.run.SensorTable;
-import org.parpe.serial.bus.HardwareBus;
 
 /**
  * Compares the measured angles of the hardware and the simulator every tick (a sink added after
@@ -18,7 +17,7 @@ import org.parpe.serial.bus.HardwareBus;
 final class DivergenceMonitor implements JointSink {
     private static final double HYSTERESIS = 0.8;
     private final SensorSource sim;
-    private final HardwareBus hardware;
+    private final java.util.function.IntToDoubleFunction hardware;
     private final double threshold;
     private final PrintStream err;
     private SensorTable simTable;
@@ -29,7 +28,7 @@ final class DivergenceMonitor implements JointSink {
     private long[] ticksDiverged;
     private double dt;
 
-    DivergenceMonitor(SensorSource sim, HardwareBus hardware, double threshold, PrintStream err) {
+    DivergenceMonitor(SensorSource sim, java.util.function.IntToDoubleFunction hardware, double threshold, PrintStream err) {
         this.sim = sim;
         this.hardware = hardware;
         this.threshold = threshold;
@@ -51,7 +50,7 @@ final class DivergenceMonitor implements JointSink {
     public void accept(long tick, double time, double[] commanded) {
         sim.read(time, simTable);
         for (int i = 0; i < ids.length; i++) {
-            double hw = hardware.measuredAngle(i);
+            double hw = hardware.applyAsDouble(i);
             if (Double.isNaN(hw)) {
                 continue;
             }

@@ -18,6 +18,8 @@ import org.parpe.serial.emu.BusEmulator;
 import org.parpe.serial.emu.EmulatorListener;
 import org.parpe.serial.emu.EmulatorOptions;
 import org.parpe.serial.link.LinkOpener;
+import org.parpe.serial.servo.ServoModel;
+import org.parpe.serial.servo.ServoProtocol;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -29,8 +31,10 @@ import picocli.CommandLine.Model.CommandSpec;
  * ({@code pose ID DEG}), press touch sensors ({@code touch ID left|right|both|none}) or print the
  * modules' state ({@code status}).
  */
-@Command(name = "emulate", mixinStandardHelpOptions = true, description = {"Emulate PolyBot modules on a serial device (e.g. one end of a socat pty pair).",
-    "Standard input takes: pose ID DEG | touch ID left|right|both|none | status | quit."})
+@Command(name = "emulate", mixinStandardHelpOptions = true, description = {"Emulate PolyBot modules, Dynamixel 2.0 or Feetech servos on a serial device "
+    + "(e.g. one end of a socat pty pair).",
+    "Standard input takes: pose ID DEG | touch ID left|right|both|none (G1) | fault ID overload|overheat|voltage|none "
+    + "(servos) | status | quit."})
 public final class EmulateCommand implements Callable<Integer> {
     @Option(names = "--port", required = true, paramLabel = "PATH", description = "The serial device to serve.")
     String port;
@@ -39,8 +43,17 @@ public final class EmulateCommand implements Callable<Integer> {
             description = "Module IDs to emulate, e.g. 0..7 or 0,2,4 (default ${DEFAULT-VALUE}).")
     String modules;
 
-    @Option(names = "--baud", defaultValue = "115200", paramLabel = "N", description = "Line speed (default ${DEFAULT-VALUE}).")
-    int baud;
+    @Option(names = "--baud", paramLabel = "N",
+            description = "Line speed (default: the protocol's, 115200 for g1, 57600 for dxl2, 1000000 for sts and scs).")
+    Integer baud;
+
+    @Option(names = "--protocol", defaultValue = "g1", paramLabel = "g1|dxl2|sts|scs",
+            description = "Bus protocol: PARPE's G1 modules, Dynamixel 2.0 or Feetech STS/SCS servos (default ${DEFAULT-VALUE}).")
+    String protocol;
+
+    @Option(names = "--model", paramLabel = "NAME",
+            description = "Servo model for dxl2/sts/scs, e.g. xl430-w250, xm430-w210, xl330-m288, sts3215 (default: the protocol's first).")
+    String model;
 
     @Option(names = "--drop", defaultValue = "0", paramLabel = "P", description = "Probability of losing a frame, each direction.")
     double drop;
@@ -84,7 +97,7 @@ public final class EmulateCommand implements Callable<Integer> {
     }
 
     private EmulatorOptions options(int[] ids) throws UsageException {
-        if (baud <= 0) {
+        if (baud != null && baud <= 0) {
             throw new UsageException("--baud must be > 0, got " + baud);
         }
         if (unplugFor != null && unplugAfter == null) {
@@ -107,15 +120,26 @@ public final class EmulateCommand implements Callable<Integer> {
     private int serve(PrintWriter err) throws UsageException, InterruptedException {
         int[] ids = ModuleList.sorted(ModuleList.parse(modules, "--modules"));
         EmulatorOptions o = options(ids);
+        ServoProtocol p = ServoProtocol.of(protocol);
+        if (p == null) {
+            throw new UsageException("--protocol must be one of " + ServoProtocol.keys() + ", got '" + protocol + "'");
+        }
+        int rate = baud == null ? p.scanBauds().get(0) : baud;
+        if (p != ServoProtocol.G1) {
+            return new ServoEmulation(port, rate, servoModel(p), o, duration, log, err).serve();
+        }
+        if (model != null) {
+            throw new UsageException("--model applies to dxl2, sts and scs servos, not to G1 modules");
+        }
         SetpointLog csv = SetpointLog.open(log, ids);
         BusEmulator emu;
         try {
-            emu = BusEmulator.start(LinkOpener.serial(port, baud), o, listener(err, csv));
+            emu = BusEmulator.start(LinkOpener.serial(port, rate), o, listener(err, csv));
         } catch (IOException e) {
             csv.close();
             throw new UsageException(e.getMessage());
         }
-        err.println("emulate: " + ids.length + " modules (" + ModuleList.format(ids) + ") on " + port + " at " + baud
+        err.println("emulate: " + ids.length + " modules (" + ModuleList.format(ids) + ") on " + port + " at " + rate
                 + " baud; Ctrl-C to stop");
         CountDownLatch done = new CountDownLatch(1);
         AtomicBoolean closed = new AtomicBoolean();
@@ -144,7 +168,19 @@ public final class EmulateCommand implements Callable<Integer> {
         return 0;
     }
 
-    private static EmulatorListener listener(PrintWriter err, SetpointLog csv) {
+    private ServoModel servoModel(ServoProtocol p) throws UsageException {
+        if (model == null) {
+            return ServoModel.defaultFor(p);
+        }
+        ServoModel m = ServoModel.named(model);
+        if (m == null || m.protocol() != p) {
+            throw new UsageException("--model '" + model + "' is not a " + p.key() + " servo PARPE knows; known: "
+                    + ServoModel.names(p));
+        }
+        return m;
+    }
+
+    static EmulatorListener listener(PrintWriter err, SetpointLog csv) {
         return new EmulatorListener() {
             @Override
             public void onSetpoints(int seq, double[] angles) {

@@ -1,25 +1,35 @@
 package org.parpe.cli.hw;
 
 import java.io.PrintStream;
+import java.nio.file.Path;
 import org.parpe.cli.UsageException;
 import org.parpe.core.run.Run;
 import org.parpe.core.run.SensorSource;
 import org.parpe.core.run.TargetException;
 import org.parpe.serial.bus.BusTarget;
 import org.parpe.serial.link.SerialLink;
+import org.parpe.serial.servo.profile.HardwareProfile;
+import org.parpe.serial.servo.run.ServoTarget;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
  * The serial-bus options of {@code parpe run}: with {@code --port} the run drives real (or
- * emulated) modules through a {@link BusTarget}, paced to the wall clock. With {@code --sim}
+ * emulated) G1 modules through a {@link BusTarget}, with {@code --hardware} the servos of a
+ * hardware profile (any protocol) through a {@link ServoTarget}, paced to the wall clock. With {@code --sim}
  * as well, both are driven and {@code --diverge} reports where they disagree. Stopping the run
  * (Ctrl-C) sends an emergency stop.
  */
 public class HardwareOptions {
     @Option(names = "--port", paramLabel = "PATH",
-            description = "Drive the modules on this serial device (e.g. /dev/ttyUSB0, or a socat pty).")
+            description = "Drive the modules on this serial device (e.g. /dev/ttyUSB0, or a socat pty); without "
+                    + "--hardware, PARPE's G1 modules; with it, overrides the profile's port.")
     String port;
+
+    @Option(names = "--hardware", paramLabel = "PROFILE.xml",
+            description = "Drive the servos of this hardware profile (Dynamixel 2.0, Feetech STS/SCS or G1; "
+                    + "docs/hardware-profile.md). Protocol, baud, limits and on-fault come from the profile.")
+    Path hardware;
 
     @Option(names = "--diverge", paramLabel = "DEG",
             description = "With --port and --sim: report where measured angles of hardware and simulator differ by more.")
@@ -30,25 +40,45 @@ public class HardwareOptions {
 
     /** Attaches the bus to {@code run} when {@code --port} was given (after the simulator, for {@code --diverge}). */
     public void configure(Run.Builder run, PrintStream err) throws UsageException, TargetException {
+        if (hardware != null) {
+            configureProfile(run, err);
+            return;
+        }
         if (port == null) {
             if (diverge != null) {
                 throw new UsageException("--diverge compares hardware with the simulator: it needs --port and --sim");
             }
             return;
         }
-        if (diverge != null && !(diverge > 0)) {
-            throw new UsageException("--diverge must be > 0 degrees, got " + diverge);
-        }
         SensorSource sim = run.sensorSource("sim");
-        if (diverge != null && sim == null) {
-            throw new UsageException("--diverge compares hardware with the simulator: add --sim");
-        }
+        checkDiverge(sim);
         BusTarget target = new BusTarget(port, bus.config(), err::println);
         run.attach(target);
         // Ctrl-C: the emergency stop must leave before jSerialComm closes the port at shutdown.
         SerialLink.beforePortsClose(target.bus()::emergencyStopIfRunning);
         if (diverge != null) {
-            run.observer(new DivergenceMonitor(sim, target.bus(), diverge, err));
+            run.observer(new DivergenceMonitor(sim, target.bus()::measuredAngle, diverge, err));
+        }
+    }
+
+    private void configureProfile(Run.Builder run, PrintStream err) throws UsageException, TargetException {
+        SensorSource sim = run.sensorSource("sim");
+        checkDiverge(sim);
+        HardwareProfile profile = Profiles.load(hardware, port);
+        ServoTarget target = new ServoTarget(profile, bus.config(), err::println);
+        run.attach(target);
+        SerialLink.beforePortsClose(target.driver()::emergencyStopIfRunning);
+        if (diverge != null) {
+            run.observer(new DivergenceMonitor(sim, target.driver()::measuredAngle, diverge, err));
+        }
+    }
+
+    private void checkDiverge(SensorSource sim) throws UsageException {
+        if (diverge != null && !(diverge > 0)) {
+            throw new UsageException("--diverge must be > 0 degrees, got " + diverge);
+        }
+        if (diverge != null && sim == null) {
+            throw new UsageException("--diverge compares hardware with the simulator: add --sim");
         }
     }
 }

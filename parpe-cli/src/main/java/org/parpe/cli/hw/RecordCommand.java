@@ -7,6 +7,7 @@ import java.io.InputStreamReader;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -19,9 +20,17 @@ import org.parpe.core.expr.ExprCompiler;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
 import org.parpe.core.model.Group;
+import org.parpe.core.diag.SourcePos;
+import org.parpe.core.run.TargetException;
 import org.parpe.serial.bus.BusConfig;
-import org.parpe.serial.bus.BusMaster;
+import org.parpe.serial.link.LinkOpener;
 import org.parpe.serial.link.SerialLink;
+import org.parpe.serial.servo.ServoBus;
+import org.parpe.serial.servo.ServoModel;
+import org.parpe.serial.servo.ServoProtocol;
+import org.parpe.serial.servo.host.ServoBuses;
+import org.parpe.serial.servo.profile.HardwareProfile;
+import org.parpe.serial.servo.profile.ServoMapping;
 import org.parpe.serial.record.PoseRecorder;
 import org.parpe.serial.record.PoseRecording;
 import picocli.CommandLine.ArgGroup;
@@ -39,8 +48,13 @@ import picocli.CommandLine.Model.CommandSpec;
 @Command(name = "record", mixinStandardHelpOptions = true, description = {"Record poses of a group of modules posed by hand into a PARSL file.",
     "Press Enter to capture a pose; Ctrl-D (end of input) or Ctrl-C finishes."})
 public final class RecordCommand implements Callable<Integer> {
-    @Option(names = "--port", required = true, paramLabel = "PATH", description = "The serial device of the modules.")
+    @Option(names = "--port", paramLabel = "PATH",
+            description = "The serial device of the modules (G1 without --hardware; overrides the profile's port).")
     String port;
+
+    @Option(names = "--hardware", paramLabel = "PROFILE.xml",
+            description = "Record the servos of this hardware profile (Dynamixel 2.0, Feetech STS/SCS or G1).")
+    Path hardware;
 
     @Option(names = "--baud", defaultValue = "115200", paramLabel = "N", description = "Line speed (default ${DEFAULT-VALUE}).")
     int baud;
@@ -132,27 +146,72 @@ public final class RecordCommand implements Callable<Integer> {
     private int record(PrintWriter err) throws UsageException, IOException, InterruptedException {
         validate();
         int[] ids = groupModules();
-        BusMaster bus;
+        HardwareProfile profile = profile();
+        List<ServoMapping> servos = mappings(profile, ids);
+        String device = profile == null ? port : profile.port();
+        if (device == null) {
+            throw new UsageException("no serial port: give --port or a port attribute in " + hardware);
+        }
+        ServoProtocol protocol = profile == null ? ServoProtocol.G1 : profile.protocol();
+        int rate = profile == null ? baud : profile.baud();
+        ServoBus bus;
         try {
-            bus = new BusMaster(SerialLink.open(port, baud), BusConfig.defaults().withBaud(baud));
+            bus = ServoBuses.open(protocol, LinkOpener.serial(device, rate), BusConfig.defaults().withBaud(rate));
         } catch (IOException | IllegalArgumentException e) {
             throw new UsageException(e.getMessage());
         }
         try {
-            PoseRecorder recorder = new PoseRecorder(bus, ids);
-            java.util.List<Integer> missing = recorder.missing();
+            PoseRecorder recorder = new PoseRecorder(bus, servos);
+            List<Integer> missing = recorder.missing();
             if (!missing.isEmpty()) {
-                throw new UsageException("modules " + missing + " of group '" + group + "' do not answer on " + port
-                        + "; nothing was made limp");
+                throw new UsageException("modules " + missing + " of group '" + group + "' do not answer on " + device
+                        + " (" + protocol.key() + ", " + rate + " baud); nothing was made limp");
             }
             recorder.begin();
             RecordingSession session = new RecordingSession(recorder, new PoseRecording(group, ids), outFile,
-                    "recorded from " + port, err);
+                    "recorded from " + device, err);
             SerialLink.beforePortsClose(session::end);
             return session.run(every, count, new BufferedReader(new InputStreamReader(input, StandardCharsets.UTF_8)));
         } finally {
             bus.close();
         }
+    }
+
+    private HardwareProfile profile() throws UsageException {
+        if (hardware == null) {
+            if (port == null) {
+                throw new UsageException("give --port (G1 modules) or --hardware PROFILE.xml");
+            }
+            return null;
+        }
+        try {
+            return Profiles.load(hardware, port);
+        } catch (TargetException e) {
+            StringBuilder b = new StringBuilder(e.getMessage() + ":");
+            e.diagnostics().forEach(d -> b.append('\n').append(d.format()));
+            throw new UsageException(b.toString());
+        }
+    }
+
+    /** The group's servos: from the profile, or G1 modules addressed by their module ID. */
+    private static List<ServoMapping> mappings(HardwareProfile profile, int[] ids) throws UsageException {
+        List<ServoMapping> out = new ArrayList<>();
+        List<Integer> unmapped = new ArrayList<>();
+        ServoModel g1 = ServoModel.defaultFor(ServoProtocol.G1);
+        for (int id : ids) {
+            ServoMapping m = profile == null
+                    ? new ServoMapping(id, id, g1, 0, 1, g1.minDegrees(), g1.maxDegrees(), SourcePos.origin("--port"))
+                    : profile.forModule(id);
+            if (m == null) {
+                unmapped.add(id);
+            } else {
+                out.add(m);
+            }
+        }
+        if (!unmapped.isEmpty()) {
+            throw new UsageException("modules " + unmapped + " of the group have no <servo> in " + profile.file());
+        }
+        return out;
     }
 
     /** Formats one pose for the console. */

@@ -168,4 +168,65 @@ class RecordPlaybackTest {
             assertEquals(POSES[2][k], bus.emulator.angle(new int[] {4, 2, 3}[k]), 0.01, "the modules end in the last pose");
         }
     }
+
+    /**
+     * The same on Dynamixel servos through a hardware profile: poses are joint angles (the
+     * profile's zero and direction undone) and play back through the same servos.
+     */
+    @Test
+    void dynamixelPosesRecordThroughTheProfileAndPlayBack() throws Exception {
+        Path robot = dir.resolve("robot.xml");
+        Files.writeString(robot, ROBOT);
+        Path profile = dir.resolve("profile.xml");
+        Files.writeString(profile, """
+                <hardware protocol="dxl2" baud="1000000">
+                  <servo module="4" id="14" zero="20"/>
+                  <servo module="2" id="12" direction="-1"/>
+                  <servo module="3" id="13" zero="-5" direction="-1"/>
+                </hardware>
+                """);
+        Path rec = dir.resolve("arm-rec.xml");
+        int[] servos = {14, 12, 13};
+        double[] zero = {20, 0, -5};
+        int[] dir = {1, -1, -1};
+        org.parpe.serial.servo.ServoModel xm = org.parpe.serial.servo.ServoModel.named("xm430-w350");
+        try (EmulatedServos bus = new EmulatedServos(this.dir, xm, EmulatorOptions.of(12, 13, 14))) {
+            PipedOutputStream keys = new PipedOutputStream();
+            RecordCommand cmd = new RecordCommand();
+            cmd.input = new PipedInputStream(keys);
+            ByteArrayOutputStream err = new ByteArrayOutputStream();
+            CommandLine cl = new CommandLine(cmd);
+            cl.setErr(new PrintWriter(err, true, StandardCharsets.UTF_8));
+            CompletableFuture<Integer> code = CompletableFuture.supplyAsync(() -> cl.execute("--hardware",
+                    profile.toString(), "--port", bus.port(), "--group", "arm", "--script", robot.toString(),
+                    "--out", rec.toString()));
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+            while (!(bus.emulator.isLimp(12) && bus.emulator.isLimp(13) && bus.emulator.isLimp(14))) {
+                assertTrue(System.nanoTime() < deadline, "the group never went limp: " + err);
+                Thread.sleep(10);
+            }
+            for (int p = 0; p < 2; p++) {
+                for (int k = 0; k < 3; k++) {
+                    assertTrue(bus.emulator.backDrive(servos[k], zero[k] + dir[k] * POSES[p][k]));
+                }
+                Thread.sleep(300);
+                keys.write('\n');
+                keys.flush();
+                assertTrue(awaitRows(rec, p + 1), "pose " + p + " captured: " + err);
+            }
+            keys.close();
+            assertEquals(0, code.get(20, TimeUnit.SECONDS), err.toString(StandardCharsets.UTF_8));
+            assertTrue(!bus.emulator.isLimp(12), "the servos hold after recording");
+            for (int k = 0; k < 3; k++) {
+                bus.emulator.backDrive(servos[k], 0);
+            }
+            Cli r = Cli.run("run", rec.toString(), "--hardware", profile.toString(), "--port", bus.port());
+            assertEquals(0, r.code, r.toString());
+            Thread.sleep(500);
+            for (int k = 0; k < 3; k++) {
+                assertEquals(zero[k] + dir[k] * POSES[1][k], bus.emulator.angle(servos[k]), 0.2,
+                        "servo " + servos[k] + " ends in the last pose; " + r + Files.readString(rec));
+            }
+        }
+    }
 }

@@ -33,6 +33,10 @@ import org.parpe.serial.bus.BusConfig;
 import org.parpe.serial.bus.BusTarget;
 import org.parpe.serial.bus.HardwareBus;
 import org.parpe.sim.SimMetrics;
+import org.parpe.serial.servo.profile.HardwareProfile;
+import org.parpe.serial.servo.profile.ProfileReader;
+import org.parpe.serial.servo.run.ServoDriver;
+import org.parpe.serial.servo.run.ServoTarget;
 import org.parpe.sim.SimSnapshot;
 import org.parpe.sim.SimTarget;
 import org.parpe.sim.Simulator;
@@ -54,6 +58,7 @@ final class RunActions implements ControlPanel.Target {
     });
     private volatile Simulator sim;
     private volatile HardwareBus bus;
+    private volatile ServoDriver servos;
     private volatile SimSnapshot preview;
     private volatile String hardwareState = "Hardware: not connected";
     private String previewKey = "";
@@ -147,15 +152,16 @@ final class RunActions implements ControlPanel.Target {
         Target target = ide.toolbar().target();
         String spec = robotSpec(program);
         String port = ide.toolbar().port();
+        String profile = ide.toolbar().hardwareProfile();
         AngleRecorder recorder = new AngleRecorder();
         ide.plots().setModules(program.moduleIds());
         ide.plots().setRecorder(recorder);
         ide.clearRunProblems();
         ide.log("Run " + ide.files().name() + " on " + target.label().toLowerCase() + (target.sim() ? " (robot: " + spec + ")" : "")
-                + (target.hardware() ? " (port " + port + ")" : ""));
+                + (target.hardware() ? " (port " + port + (profile == null ? "" : ", profile " + profile) + ")" : ""));
         controller.setSpeed(ide.toolbar().speed());
         Run.Builder run = Run.builder(program, RunOptions.defaults(), ide::runProblemLater);
-        controller.start(run, b -> attach(b, target, spec, port, recorder), runFor, outcome -> {
+        controller.start(run, b -> attach(b, target, spec, port, profile, recorder), runFor, outcome -> {
             if (ide.shell().isDisposed()) {
                 return; // the window closed while the run was ending
             }
@@ -176,9 +182,11 @@ final class RunActions implements ControlPanel.Target {
      * Attaches the run's targets on the engine thread, as the command line does (opening the
      * bus and building the simulated robot take time), and the plots' recorder.
      */
-    private void attach(Run.Builder run, Target target, String spec, String port, AngleRecorder recorder)
-            throws TargetException {
-        if (target.hardware()) {
+    private void attach(Run.Builder run, Target target, String spec, String port, String profile,
+                        AngleRecorder recorder) throws TargetException {
+        if (target.hardware() && profile != null) {
+            attachServos(run, profile, port);
+        } else if (target.hardware()) {
             hardwareState = "Hardware: connecting to " + port + "\u2026";
             BusTarget hw = new BusTarget(port, BusConfig.defaults(), ide::logLater);
             try {
@@ -205,6 +213,31 @@ final class RunActions implements ControlPanel.Target {
         }
         run.observer(recorder);
         run.observeReadings(recorder::keepMeasured);
+    }
+
+    /** The servos of a hardware profile (any protocol); the port box, when filled, replaces the profile's port. */
+    private void attachServos(Run.Builder run, String file, String port) throws TargetException {
+        DiagnosticList problems = new DiagnosticList();
+        HardwareProfile profile = ProfileReader.read(Path.of(file), problems);
+        if (profile == null) {
+            throw new TargetException("the hardware profile " + file + " has errors", problems.all());
+        }
+        if (!port.isEmpty()) {
+            profile = profile.withPort(port);
+        }
+        hardwareState = "Hardware: connecting to " + profile.port() + "\u2026";
+        ServoTarget st = new ServoTarget(profile, BusConfig.defaults(), ide::logLater);
+        try {
+            run.attach(st);
+        } finally {
+            hardwareState = st.driver() == null ? "Hardware: not connected"
+                    : "Hardware: " + st.driver().name() + " (" + profile.protocol().key() + ")";
+        }
+        servos = st.driver();
+        run.closeAtEnd(() -> {
+            servos = null;
+            hardwareState = "Hardware: disconnected";
+        });
     }
 
     private void ended(RunOutcome outcome) {
@@ -278,6 +311,10 @@ final class RunActions implements ControlPanel.Target {
         HardwareBus b = bus;
         if (b != null) {
             b.emergencyStop();
+        }
+        ServoDriver s = servos;
+        if (s != null) {
+            s.emergencyStop();
         }
         if (controller.running()) {
             ide.log("EMERGENCY STOP");

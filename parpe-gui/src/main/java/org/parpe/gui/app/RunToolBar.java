@@ -10,7 +10,9 @@ import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.graphics.Image;
+import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Combo;
+import org.eclipse.swt.widgets.FileDialog;
 import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.ToolBar;
@@ -19,7 +21,7 @@ import org.parpe.gui.panels.Icons;
 import org.parpe.gui.run.Speed;
 import org.parpe.gui.run.Target;
 
-/** The run tool bar: Run, Pause, Stop, emergency stop, speed, target and serial port. */
+/** The run tool bar: Run, Pause, Stop, emergency stop, speed, target, serial port and hardware profile. */
 final class RunToolBar {
     private final Composite bar;
     private final ToolItem run;
@@ -29,10 +31,12 @@ final class RunToolBar {
     private final Combo speed;
     private final Combo target;
     private final Combo port;
+    private final Combo profile;
+    private final Button browse;
 
     RunToolBar(Composite parent, RunActions actions, Prefs prefs) {
         bar = new Composite(parent, SWT.NONE);
-        GridLayout gl = new GridLayout(9, false);
+        GridLayout gl = new GridLayout(12, false);
         gl.marginHeight = 2;
         bar.setLayout(gl);
         ToolBar tb = new ToolBar(bar, SWT.FLAT | SWT.RIGHT);
@@ -70,6 +74,27 @@ final class RunToolBar {
         port.setText(prefs.get("run.port", ""));
         port.addListener(SWT.MouseDown, e -> refreshPorts());
         port.addListener(SWT.Modify, e -> prefs.put("run.port", port.getText()));
+        Label profileLabel = new Label(bar, SWT.NONE);
+        profileLabel.setText("Profile:");
+        profile = new Combo(bar, SWT.DROP_DOWN);
+        GridData pd = new GridData(SWT.LEFT, SWT.CENTER, false, false);
+        pd.widthHint = 180;
+        profile.setLayoutData(pd);
+        profile.setToolTipText("Hardware profile of Dynamixel, Feetech or G1 servos (docs/hardware-profile.md); "
+                + "empty: G1 modules on the port. A port typed here replaces the profile's.");
+        profile.setText(prefs.get("run.hardware", ""));
+        profile.addListener(SWT.Modify, e -> prefs.put("run.hardware", profile.getText()));
+        browse = new Button(bar, SWT.PUSH);
+        browse.setText("\u2026");
+        browse.setToolTipText("Choose a hardware profile");
+        browse.addListener(SWT.Selection, e -> {
+            FileDialog d = new FileDialog(bar.getShell(), SWT.OPEN);
+            d.setFilterExtensions(new String[] {"*.xml", "*"});
+            String chosen = d.open();
+            if (chosen != null) {
+                profile.setText(chosen);
+            }
+        });
         refreshPorts();
         updatePort();
     }
@@ -107,6 +132,8 @@ final class RunToolBar {
 
     private void updatePort() {
         port.setEnabled(target().hardware());
+        profile.setEnabled(target().hardware());
+        browse.setEnabled(target().hardware());
     }
 
     /** Lists the serial devices present now (USB adapters first), keeping what the user typed. */
@@ -155,6 +182,17 @@ final class RunToolBar {
 
     String port() {
         return port.getText().trim();
+    }
+
+    /** The hardware profile chosen, or null for G1 modules without one. */
+    String hardwareProfile() {
+        String p = profile.getText().trim();
+        return p.isEmpty() ? null : p;
+    }
+
+    /** Types a hardware profile into the profile box (automation, tests). */
+    void setHardwareProfile(String p) {
+        profile.setText(p);
     }
 
     /** Types a serial port into the port box (automation, tests). */

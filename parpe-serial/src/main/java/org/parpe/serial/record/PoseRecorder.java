@@ -3,69 +3,101 @@ package org.parpe.serial.record;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
-import org.parpe.serial.bus.BusMaster;
-import org.parpe.serial.bus.Reply;
-import org.parpe.serial.protocol.Protocol;
+import org.parpe.serial.servo.ServoBus;
+import org.parpe.serial.servo.ServoModel;
+import org.parpe.serial.servo.profile.ServoMapping;
 
 /**
- * Captures poses of a group from the bus: {@link #begin} makes the group's modules limp so they
- * can be posed by hand, {@link #capture} reads every angle, {@link #end} makes them hold the last
- * pose.
+ * Captures poses of a group from a servo bus of any protocol: {@link #begin} turns the group's
+ * torque off so it can be posed by hand, {@link #capture} reads every present position as a joint
+ * angle (through the profile's zero and direction), {@link #end} makes the group hold the last pose.
  */
 public final class PoseRecorder {
     private static final int CAPTURE_ATTEMPTS = 6;
 
-    private final BusMaster bus;
-    private final int[] modules;
-    private final Reply reply = new Reply();
+    private final ServoBus bus;
+    private final ServoMapping[] group;
+    private final int[] ids;
+    private final ServoModel[] models;
+    private final double[] degrees;
+    private final int[] errors;
 
-    /** A recorder of {@code modules} (group order) on {@code bus}. */
-    public PoseRecorder(BusMaster bus, int[] modules) {
+    /** A recorder of {@code group} (group order) on {@code bus}. */
+    public PoseRecorder(ServoBus bus, List<ServoMapping> group) {
         this.bus = bus;
-        this.modules = modules.clone();
+        this.group = group.toArray(new ServoMapping[0]);
+        int n = this.group.length;
+        ids = new int[n];
+        models = new ServoModel[n];
+        for (int i = 0; i < n; i++) {
+            ids[i] = this.group[i].servo();
+            models[i] = this.group[i].model();
+        }
+        degrees = new double[n];
+        errors = new int[n];
     }
 
-    /** Pings every module; returns those that do not answer (nothing is made limp then). */
+    /** Pings every servo; returns the modules whose servo does not answer (nothing is made limp then). */
     public List<Integer> missing() throws IOException {
         List<Integer> out = new ArrayList<>();
-        for (int id : modules) {
-            if (!bus.ping(id, reply, 3)) {
-                out.add(id);
+        for (ServoMapping m : group) {
+            if (bus.ping(m.servo(), 3) < 0) {
+                out.add(m.module());
             }
         }
         return out;
     }
 
-    /** Makes every module of the group limp (twice: LIMP has no reply). */
+    /** Turns the torque of the group off (twice: it has no reply). */
     public void begin() throws IOException {
         for (int pass = 0; pass < 2; pass++) {
-            for (int id : modules) {
-                bus.send(id, Protocol.LIMP);
-            }
+            bus.torque(ids, models, ids.length, false);
         }
     }
 
     /**
-     * Reads the angle of every module into {@code out} (group order); returns the ID of the first
-     * module that did not answer, or −1 when the pose is complete.
+     * Reads the joint angle of every module into {@code out} (group order); returns the module ID
+     * of the first servo that did not answer, or −1 when the pose is complete.
      */
     public int capture(double[] out) throws IOException {
-        for (int i = 0; i < modules.length; i++) {
-            // Posing is not time-critical: more attempts than a run's reads.
-            if (!bus.read(modules[i], reply, CAPTURE_ATTEMPTS)) {
-                return modules[i];
+        int silent = captureServoAngles(out);
+        for (int i = 0; silent < 0 && i < group.length; i++) {
+            out[i] = group[i].jointAngle(out[i]);
+        }
+        return silent;
+    }
+
+    /**
+     * Reads the servo angle (before zero and direction) of every module into {@code out} (group
+     * order); returns the module ID of the first servo that did not answer, or −1.
+     */
+    public int captureServoAngles(double[] out) throws IOException {
+        boolean[] have = new boolean[group.length];
+        // Posing is not time-critical: more attempts than a run's reads.
+        for (int attempt = 0; attempt < CAPTURE_ATTEMPTS; attempt++) {
+            bus.readPositions(ids, models, ids.length, degrees, errors);
+            boolean all = true;
+            for (int i = 0; i < group.length; i++) {
+                if (errors[i] != ServoBus.NO_REPLY && !have[i]) {
+                    have[i] = true;
+                    out[i] = degrees[i];
+                }
+                all &= have[i];
             }
-            out[i] = reply.angle;
+            if (all) {
+                return -1;
+            }
+        }
+        for (int i = 0; i < group.length; i++) {
+            if (!have[i]) {
+                return group[i].module();
+            }
         }
         return -1;
     }
 
-    /** Makes every module hold where it is (twice, as for {@link #begin}). */
+    /** Makes every servo of the group hold where it is. */
     public void end() throws IOException {
-        for (int pass = 0; pass < 2; pass++) {
-            for (int id : modules) {
-                bus.sendHold(id, false);
-            }
-        }
+        bus.holdHere(ids, models, ids.length);
     }
 }

@@ -1,0 +1,126 @@
+package org.parpe.cli.hw;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.InputStreamReader;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import org.parpe.cli.UsageException;
+import org.parpe.core.run.TargetException;
+import org.parpe.serial.bus.BusConfig;
+import org.parpe.serial.link.LinkOpener;
+import org.parpe.serial.record.PoseRecorder;
+import org.parpe.serial.servo.ServoBus;
+import org.parpe.serial.servo.host.ServoBuses;
+import org.parpe.serial.servo.profile.HardwareProfile;
+import org.parpe.serial.servo.profile.ProfileWriter;
+import org.parpe.serial.servo.profile.ServoMapping;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/**
+ * {@code parpe calibrate}: makes every servo of a profile limp, waits for the user to pose the
+ * robot in its zero pose and press Enter, then writes each servo's present angle into the
+ * profile as its zero offset, and makes the servos hold.
+ */
+@Command(name = "calibrate", description = {"Set the zero offsets of a hardware profile from the robot posed by hand.",
+    "The servos go limp; pose the robot with every joint at 0° and press Enter."})
+public final class CalibrateCommand implements Callable<Integer> {
+    @Option(names = "--hardware", required = true, paramLabel = "PROFILE.xml", description = "The profile to calibrate.")
+    Path hardware;
+
+    @Option(names = "--port", paramLabel = "PATH", description = "The serial device (replaces the profile's port).")
+    String port;
+
+    @Spec
+    CommandSpec spec;
+
+    /** Standard input, replaceable by tests. */
+    InputStream input = System.in;
+
+    @Override
+    public Integer call() throws Exception {
+        PrintWriter err = spec.commandLine().getErr();
+        try {
+            return calibrate(err);
+        } catch (UsageException e) {
+            err.println("parpe: " + e.getMessage());
+            return 2;
+        }
+    }
+
+    private int calibrate(PrintWriter err) throws UsageException, IOException {
+        HardwareProfile profile;
+        try {
+            profile = Profiles.load(hardware, port);
+        } catch (TargetException e) {
+            StringBuilder b = new StringBuilder(e.getMessage() + ":");
+            e.diagnostics().forEach(d -> b.append('\n').append(d.format()));
+            throw new UsageException(b.toString());
+        }
+        if (profile.port() == null) {
+            throw new UsageException("no serial port: give --port or a port attribute in " + hardware);
+        }
+        ServoBus bus;
+        try {
+            bus = ServoBuses.open(profile.protocol(), LinkOpener.serial(profile.port(), profile.baud()),
+                    BusConfig.defaults().withBaud(profile.baud()));
+        } catch (IOException | IllegalArgumentException e) {
+            throw new UsageException(e.getMessage());
+        }
+        try {
+            return calibrate(profile, new PoseRecorder(bus, profile.servos()), err);
+        } finally {
+            bus.close();
+        }
+    }
+
+    private int calibrate(HardwareProfile profile, PoseRecorder servos, PrintWriter err) throws UsageException,
+            IOException {
+        List<Integer> missing = servos.missing();
+        if (!missing.isEmpty()) {
+            throw new UsageException("the servos of modules " + missing + " do not answer on " + profile.port() + " ("
+                    + profile.protocol().key() + ", " + profile.baud() + " baud); nothing was made limp");
+        }
+        servos.begin();
+        err.println("calibrate: the servos are limp; pose the robot with every joint at 0° (its zero pose), then press"
+                + " Enter (Ctrl-D cancels)");
+        err.flush();
+        BufferedReader in = new BufferedReader(new InputStreamReader(input, StandardCharsets.UTF_8));
+        double[] servo = new double[profile.servos().size()];
+        try {
+            if (in.readLine() == null) {
+                err.println("calibrate: cancelled; " + hardware + " unchanged");
+                return 1;
+            }
+            int silent = servos.captureServoAngles(servo);
+            if (silent >= 0) {
+                err.println("calibrate: the servo of module " + silent + " did not answer; " + hardware + " unchanged");
+                return 1;
+            }
+        } finally {
+            servos.end();
+        }
+        List<ServoMapping> calibrated = new ArrayList<>();
+        for (int i = 0; i < servo.length; i++) {
+            ServoMapping m = profile.servos().get(i);
+            ServoMapping c = m.withZero(Math.round(servo[i] * 100) / 100.0);
+            calibrated.add(c.reachable());
+            err.println(String.format(Locale.ROOT, "calibrate: module %d (servo %d): zero %.2f° (was %.2f°)%s",
+                    m.module(), m.servo(), c.zero(), m.zero(), c.reachable().equals(c) ? ""
+                            : String.format(Locale.ROOT, "; limits narrowed to %.2f..%.2f° to stay in the servo's range",
+                            c.reachable().min(), c.reachable().max())));
+        }
+        ProfileWriter.write(profile.withServos(calibrated), hardware, "calibrated by parpe calibrate");
+        err.println("calibrate: zero offsets written to " + hardware + "; the servos hold where they are");
+        return 0;
+    }
+}

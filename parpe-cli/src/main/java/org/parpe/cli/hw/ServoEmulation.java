@@ -1,0 +1,145 @@
+package org.parpe.cli.hw;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
+import org.parpe.cli.UsageException;
+import org.parpe.serial.emu.EmulatorOptions;
+import org.parpe.serial.link.LinkOpener;
+import org.parpe.serial.servo.ServoModel;
+import org.parpe.serial.servo.emu.ServoEmulator;
+
+/**
+ * {@code parpe emulate --protocol dxl2|sts|scs}: serves emulated servos until Ctrl-C, {@code quit}
+ * or {@code --duration}. Console lines: {@code pose ID DEG} (move a limp servo by hand),
+ * {@code fault ID overload|overheat|voltage|none}, {@code status}.
+ */
+final class ServoEmulation {
+    private final String port;
+    private final int baud;
+    private final ServoModel model;
+    private final EmulatorOptions options;
+    private final Double duration;
+    private final Path log;
+    private final PrintWriter err;
+
+    ServoEmulation(String port, int baud, ServoModel model, EmulatorOptions options, Double duration, Path log,
+                   PrintWriter err) {
+        this.port = port;
+        this.baud = baud;
+        this.model = model;
+        this.options = options;
+        this.duration = duration;
+        this.log = log;
+        this.err = err;
+    }
+
+    int serve() throws UsageException, InterruptedException {
+        int[] ids = options.modules();
+        EmulateCommand.SetpointLog csv = EmulateCommand.SetpointLog.open(log, ids);
+        ServoEmulator emu;
+        try {
+            emu = ServoEmulator.start(LinkOpener.serial(port, baud), model, options, EmulateCommand.listener(err, csv));
+        } catch (IOException | IllegalArgumentException e) {
+            csv.close();
+            throw new UsageException(e.getMessage());
+        }
+        err.println("emulate: " + ids.length + " " + model.protocol().key() + " servos " + model.label() + " ("
+                + ModuleList.format(ids) + ") on " + port + " at " + baud + " baud; Ctrl-C to stop");
+        CountDownLatch done = new CountDownLatch(1);
+        AtomicBoolean closed = new AtomicBoolean();
+        Runnable shutdown = () -> {
+            if (closed.compareAndSet(false, true)) {
+                emu.close();
+                csv.close();
+                ServoEmulator.Stats s = emu.stats();
+                err.println(String.format(Locale.ROOT, "emulate: %d packets accepted, %d rejected by checksum, "
+                        + "%d dropped and %d corrupted on purpose, %d replies", s.packets(), s.checksumErrors(),
+                        s.dropped(), s.corrupted(), s.replies()));
+            }
+        };
+        Thread hook = new Thread(shutdown, "emulate-stop");
+        Runtime.getRuntime().addShutdownHook(hook);
+        Thread console = new Thread(() -> console(emu, done), "emulate-console");
+        console.setDaemon(true);
+        console.start();
+        if (duration != null) {
+            done.await((long) (duration * 1000), TimeUnit.MILLISECONDS);
+        } else {
+            done.await();
+        }
+        shutdown.run();
+        Runtime.getRuntime().removeShutdownHook(hook);
+        return 0;
+    }
+
+    private void console(ServoEmulator emu, CountDownLatch done) {
+        BufferedReader in = new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8));
+        try {
+            for (String line; (line = in.readLine()) != null; ) {
+                String[] w = line.trim().split("\\s+");
+                if (w[0].equals("quit")) {
+                    done.countDown();
+                    return;
+                }
+                if (!w[0].isEmpty()) {
+                    err.println(apply(emu, w));
+                }
+            }
+        } catch (IOException e) {
+            err.println("emulate: standard input: " + e.getMessage());
+        }
+    }
+
+    /** Applies one console command; returns the reply to print. */
+    static String apply(ServoEmulator emu, String[] w) {
+        try {
+            switch (w[0]) {
+                case "pose":
+                    if (w.length != 3) {
+                        return "usage: pose ID DEGREES";
+                    }
+                    return emu.backDrive(Integer.parseInt(w[1]), Double.parseDouble(w[2]))
+                            ? "servo " + w[1] + " posed at " + w[2] + "°"
+                            : "servo " + w[1] + " has its torque on; it can be posed only while limp";
+                case "fault":
+                    if (w.length != 3) {
+                        return "usage: fault ID overload|overheat|voltage|none";
+                    }
+                    emu.fault(Integer.parseInt(w[1]), faultBits(w[2]));
+                    return "servo " + w[1] + " fault " + w[2];
+                case "status":
+                    StringBuilder b = new StringBuilder();
+                    for (int id : emu.servoIds()) {
+                        b.append(String.format(Locale.ROOT, "servo %d: %.2f°%s%s%s%n", id, emu.angle(id),
+                                emu.isLimp(id) ? " limp" : "", emu.watchdogTripped(id) ? " watchdog" : "",
+                                emu.hardwareError(id) != 0 ? String.format(" error 0x%02X", emu.hardwareError(id)) : ""));
+                    }
+                    return b.toString().stripTrailing();
+                default:
+                    return "unknown command '" + w[0] + "'; try pose, fault, status or quit";
+            }
+        } catch (IllegalArgumentException e) {
+            return "error: " + e.getMessage();
+        }
+    }
+
+    /** The same bits on Dynamixel (Hardware Error Status) and Feetech (servo status). */
+    private static int faultBits(String what) {
+        return switch (what) {
+            case "overload" -> 0x20;
+            case "overheat" -> 0x04;
+            case "voltage" -> 0x01;
+            case "none" -> 0;
+            default -> throw new IllegalArgumentException("fault must be overload, overheat, voltage or none, got '"
+                    + what + "'");
+        };
+    }
+}

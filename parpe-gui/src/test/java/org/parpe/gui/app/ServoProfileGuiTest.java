@@ -1,0 +1,143 @@
+package org.parpe.gui.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.BooleanSupplier;
+import org.eclipse.swt.widgets.Display;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.parpe.core.diag.Diagnostic;
+import org.parpe.core.diag.Severity;
+import org.parpe.core.run.RunOutcome;
+import org.parpe.gui.run.Speed;
+import org.parpe.gui.run.Target;
+import org.parpe.serial.emu.EmulatorListener;
+import org.parpe.serial.emu.EmulatorOptions;
+import org.parpe.serial.link.LinkOpener;
+import org.parpe.serial.link.PtyPair;
+import org.parpe.serial.servo.ServoModel;
+import org.parpe.serial.servo.emu.ServoEmulator;
+
+/**
+ * The IDE's Hardware target with a hardware profile: errors of the profile reach the Problems
+ * view at their lines, and a run drives emulated Dynamixel servos over a socat pty. Real widgets
+ * under Xvfb, bounded waits.
+ */
+class ServoProfileGuiTest {
+    private static final long WAIT_MS = 30_000;
+    private static final String SCRIPT = "<program>\n<robot><structure><body elements=\"0..1\"/></structure></robot>\n"
+            + "<main><b/></main>\n<behaviors><b><w group=\"body\"/></b></behaviors>\n"
+            + "<automata><w states=\"s, t\"/></automata>\n"
+            + "<states>\n<s angles=\"30\"/>\n<t angles=\"30\"/></states>\n</program>\n";
+    private static Display display;
+    private static IdeWindow ide;
+    private static Path dir;
+
+    @BeforeAll
+    static void openWindow() throws Exception {
+        String x = System.getenv("DISPLAY");
+        if (x == null || x.isBlank()) {
+            fail("No X display (DISPLAY is not set). The GUI tests need one: run them under xvfb-run, as ./test-all does.");
+        }
+        dir = Files.createTempDirectory("parpe-servo-gui");
+        display = Display.getDefault();
+        ide = new IdeWindow(display, new Prefs(dir.resolve("home")));
+        ide.open(null, true);
+        pump(() -> ide.validations() > 0, "the first validation");
+    }
+
+    @AfterAll
+    static void closeWindow() {
+        if (ide != null && !ide.shell().isDisposed()) {
+            ide.runs().stop();
+            ide.shell().dispose();
+        }
+    }
+
+    @AfterEach
+    void backToTheSimulator() {
+        ide.toolbar().setHardwareProfile("");
+        ide.toolbar().setPort("");
+        ide.toolbar().setTarget(Target.SIMULATOR);
+    }
+
+    private static void pump(BooleanSupplier done, String what) {
+        long until = System.currentTimeMillis() + WAIT_MS;
+        while (!done.getAsBoolean()) {
+            if (System.currentTimeMillis() > until) {
+                fail("timed out after " + WAIT_MS / 1000 + " s waiting for " + what);
+            }
+            if (!display.readAndDispatch()) {
+                try {
+                    Thread.sleep(5);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    fail("interrupted");
+                }
+            }
+        }
+    }
+
+    private static void open() throws Exception {
+        Path f = dir.resolve("two.xml");
+        Files.writeString(f, SCRIPT);
+        int before = ide.validations();
+        ide.files().openPath(f);
+        pump(() -> ide.validations() > before && ide.program() != null, "the script to load");
+    }
+
+    private static RunOutcome runToEnd(double seconds) {
+        AtomicReference<RunOutcome> outcome = new AtomicReference<>();
+        ide.toolbar().setSpeed(Speed.MAX);
+        ide.runs().run(false, seconds, outcome::set);
+        pump(() -> outcome.get() != null, "the run to end");
+        pump(() -> !display.readAndDispatch(), "pending UI events");
+        return outcome.get();
+    }
+
+    @Test
+    void profileErrorsAreProblemsAtTheirLines() throws Exception {
+        open();
+        Path profile = dir.resolve("bad-profile.xml");
+        Files.writeString(profile, "<hardware protocol=\"dxl2\" port=\"/dev/null\">\n  <servo module=\"0\" id=\"999\"/>\n"
+                + "</hardware>\n");
+        ide.toolbar().setTarget(Target.HARDWARE);
+        ide.toolbar().setHardwareProfile(profile.toString());
+        RunOutcome o = runToEnd(1);
+        assertEquals(RunOutcome.Status.ERROR, o.status());
+        List<Diagnostic> errors = ide.problems().shown().stream().filter(d -> d.severity() == Severity.ERROR).toList();
+        assertTrue(errors.stream().anyMatch(d -> d.pos().file().equals(profile.toString()) && d.pos().line() == 2
+                && d.message().equals("id must be in 0..253, got 999")), errors.toString());
+    }
+
+    @Test
+    void aRunDrivesDynamixelServosOfTheProfile() throws Exception {
+        assumeTrue(PtyPair.available(), "socat is not installed");
+        open();
+        try (PtyPair pty = PtyPair.start(dir.resolve("a"), dir.resolve("b"));
+             ServoEmulator emu = ServoEmulator.start(LinkOpener.serial(pty.b().toString(), 1_000_000),
+                     ServoModel.named("xl430-w250"), EmulatorOptions.of(5, 6), new EmulatorListener() { })) {
+            Path profile = dir.resolve("profile.xml");
+            Files.writeString(profile, "<hardware protocol=\"dxl2\" baud=\"1000000\">\n"
+                    + "  <servo module=\"0\" id=\"5\" zero=\"10\"/>\n  <servo module=\"1\" id=\"6\" direction=\"-1\"/>\n"
+                    + "</hardware>\n");
+            ide.toolbar().setTarget(Target.HARDWARE);
+            ide.toolbar().setHardwareProfile(profile.toString());
+            ide.toolbar().setPort(pty.a().toString());
+            RunOutcome o = runToEnd(1);
+            assertEquals(RunOutcome.Status.COMPLETED, o.status(), o.message() + " " + ide.problems().shown());
+            Thread.sleep(300);
+            assertEquals(40, emu.angle(5), 0.1, "module 0 at 30° through zero 10");
+            assertEquals(-30, emu.angle(6), 0.1, "module 1 at 30° turned the other way");
+        }
+    }
+}

@@ -1,0 +1,133 @@
+package org.parpe.serial.servo;
+
+import java.io.IOException;
+
+/**
+ * One open servo bus, whatever its protocol: ping, torque on and off, goal positions of many
+ * servos in one packet, present positions, error status, emergency stop. Positions cross this
+ * interface as ticks ({@link ServoModel#ticks}) going out and servo degrees coming back. Requests
+ * that expect a reply must come from one thread at a time; {@link #emergencyStop} may be called
+ * from any thread.
+ */
+public interface ServoBus extends AutoCloseable {
+    /** Status error value of a servo that did not reply. */
+    int NO_REPLY = -1;
+
+    /** The protocol spoken. */
+    ServoProtocol protocol();
+
+    /** The device's name. */
+    String name();
+
+    /**
+     * Pings servo {@code id} with up to {@code attempts} tries: its model number, 0 when it
+     * answers but its model cannot be read, or −1 when it does not answer.
+     */
+    int ping(int id, int attempts) throws IOException;
+
+    /**
+     * Looks for servos {@code ids}: the model number of each (as {@link #ping}), −1 for those that
+     * do not answer. Every ID is pinged twice.
+     */
+    default int[] scan(int[] ids) throws IOException {
+        int[] models = new int[ids.length];
+        for (int i = 0; i < ids.length; i++) {
+            models[i] = ping(ids[i], 2);
+        }
+        return models;
+    }
+
+    /** Turns the torque of servos {@code ids[0…n)} on (holding) or off (limp, back-drivable). */
+    void torque(int[] ids, ServoModel[] models, int n, boolean on) throws IOException;
+
+    /** Sends goal positions ({@code ticks[i]} for {@code ids[i]}) to servos {@code 0…n) at once. */
+    void writeGoals(int[] ids, ServoModel[] models, int[] ticks, int n) throws IOException;
+
+    /**
+     * Reads the present positions of servos {@code 0…n)}: servo degrees into {@code degrees[i]}
+     * (unchanged for a servo that did not reply) and the status error byte into
+     * {@code errors[i]} (0 when all is well, {@link #NO_REPLY} when it did not reply). Returns the
+     * number of servos that replied.
+     */
+    int readPositions(int[] ids, ServoModel[] models, int n, double[] degrees, int[] errors) throws IOException;
+
+    /** Whether a status error byte reports a fault of the servo (rather than of the request). */
+    boolean faulty(int statusError);
+
+    /**
+     * What servo {@code id} reports as wrong, in words (for example {@code overload,
+     * overheating}), reading its error register where the protocol has one; null when it does not
+     * answer.
+     */
+    String describeFault(int id, ServoModel model, int statusError) throws IOException;
+
+    /**
+     * Sets the servos' own watchdog: stop after {@code ms} without a packet ({@code limp} or
+     * holding), where the protocol and model have one; 0 turns it off. Returns what the servos
+     * will do when the host falls silent, for the user.
+     */
+    String watchdog(int[] ids, ServoModel[] models, int n, int ms, boolean limp) throws IOException;
+
+    /**
+     * Whether servo {@code id} had stopped on its own watchdog (its last status error was
+     * {@code statusError}); if so it is re-armed with {@code ms} and obeys goals again.
+     */
+    boolean resumeIfTripped(int id, ServoModel model, int statusError, int ms) throws IOException;
+
+    /**
+     * Emergency stop of servos {@code 0…n)}: torque off ({@code limp}), or stop where they are
+     * and hold. Several packets, so that one lost packet does not matter.
+     */
+    void emergencyStop(int[] ids, ServoModel[] models, int n, boolean limp) throws IOException;
+
+    /**
+     * Makes servos {@code 0…n)} hold where they are: their present positions become their goals,
+     * then torque on (a servo whose torque comes on must not jump to an old goal). Returns how
+     * many answered.
+     */
+    default int holdHere(int[] ids, ServoModel[] models, int n) throws IOException {
+        double[] deg = new double[n];
+        int[] err = new int[n];
+        readPositions(ids, models, n, deg, err);
+        int[] held = new int[n];
+        ServoModel[] heldModels = new ServoModel[n];
+        int[] ticks = new int[n];
+        int m = 0;
+        for (int i = 0; i < n; i++) {
+            if (err[i] != NO_REPLY) {
+                held[m] = ids[i];
+                heldModels[m] = models[i];
+                ticks[m++] = models[i].ticks(deg[i]);
+            }
+        }
+        if (m > 0) {
+            writeGoals(held, heldModels, ticks, m);
+            torque(held, heldModels, m, true);
+        }
+        return m;
+    }
+
+    /** Bytes queued but not yet on the wire. */
+    int pendingOutput();
+
+    /**
+     * Counters.
+     *
+     * @param packetsSent    packets written
+     * @param timeouts       replies that did not come in time
+     * @param checksumErrors received packets with a bad CRC or checksum
+     * @param stray          valid packets nobody waited for
+     */
+    record Counters(long packetsSent, long timeouts, long checksumErrors, long stray) {
+    }
+
+    /** A snapshot of the counters. */
+    Counters counters();
+
+    /** The error that ended the link, or null while it works. */
+    IOException linkError();
+
+    /** Lets queued bytes leave, then closes the device. */
+    @Override
+    void close();
+}

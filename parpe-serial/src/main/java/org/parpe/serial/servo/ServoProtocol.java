@@ -1,0 +1,51 @@
+package org.parpe.serial.servo;
+
+import java.util.List;
+
+/**
+ * The servo bus protocols, with the name used on the command line and in hardware profiles and
+ * the baud rates a scan tries when none is given (most common first).
+ */
+public enum ServoProtocol {
+    /** PARPE's reconstructed PolyBot G1 module bus (docs/hardware-protocol.md). */
+    G1("g1", List.of(115_200, 1_000_000, 57_600, 9_600)),
+    /** Dynamixel Protocol 2.0 (X series: XL330, XL430, XM430, …). */
+    DXL2("dxl2", List.of(57_600, 1_000_000, 115_200, 2_000_000, 3_000_000, 4_000_000, 9_600)),
+    /** Feetech STS series (STS3215, …): little-endian control table. */
+    STS("sts", List.of(1_000_000, 500_000, 115_200, 57_600, 250_000, 128_000, 76_800, 38_400)),
+    /** Feetech SCS series (SCS15, SCS0009, …): big-endian control table. */
+    SCS("scs", List.of(1_000_000, 500_000, 115_200, 57_600, 250_000, 128_000, 76_800, 38_400));
+
+    private final String key;
+    private final List<Integer> scanBauds;
+
+    ServoProtocol(String key, List<Integer> scanBauds) {
+        this.key = key;
+        this.scanBauds = scanBauds;
+    }
+
+    /** The name on the command line and in profiles: g1, dxl2, sts, scs. */
+    public String key() {
+        return key;
+    }
+
+    /** Baud rates a scan tries, most common (the factory default) first. */
+    public List<Integer> scanBauds() {
+        return scanBauds;
+    }
+
+    /** The protocol named {@code key}, or null. */
+    public static ServoProtocol of(String key) {
+        for (ServoProtocol p : values()) {
+            if (p.key.equals(key)) {
+                return p;
+            }
+        }
+        return null;
+    }
+
+    /** The names, for messages: {@code g1, dxl2, sts, scs}. */
+    public static String keys() {
+        return String.join(", ", java.util.Arrays.stream(values()).map(ServoProtocol::key).toList());
+    }
+}

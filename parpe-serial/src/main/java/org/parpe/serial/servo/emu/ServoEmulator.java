@@ -1,0 +1,347 @@
+package org.parpe.serial.servo.emu;
+
+import java.io.IOException;
+import java.util.Arrays;
+import java.util.Random;
+import java.util.concurrent.locks.LockSupport;
+import org.parpe.serial.emu.EmulatorListener;
+import org.parpe.serial.emu.EmulatorOptions;
+import org.parpe.serial.link.ByteLink;
+import org.parpe.serial.link.LinkOpener;
+import org.parpe.serial.servo.ServoModel;
+import org.parpe.serial.servo.ServoProtocol;
+import org.parpe.serial.servo.wire.Dxl2Codec;
+import org.parpe.serial.servo.wire.FeetechCodec;
+import org.parpe.serial.servo.wire.Packet;
+import org.parpe.serial.servo.wire.PacketCodec;
+import org.parpe.serial.servo.wire.PacketDecoder;
+
+/**
+ * Emulates a chain of Dynamixel 2.0 or Feetech servos on the far end of a serial link. Incoming
+ * bytes pass a perfect decoder, then the fault injector ({@link EmulatorOptions}: lose a packet,
+ * change one of its bytes, delay replies, pull the cable), then the servos' own decoder, so
+ * corrupted packets are really rejected by CRC or checksum. {@link ServoResponder} executes the
+ * instructions; a physics thread moves the motors every 2 ms and runs the Dynamixel Bus Watchdog.
+ */
+public final class ServoEmulator implements AutoCloseable {
+    private static final long PHYSICS_NANOS = 2_000_000;
+    private static final long IDLE_GAP_NANOS = 20_000_000;
+    private static final long REOPEN_NANOS = 100_000_000;
+
+    /**
+     * Counters.
+     *
+     * @param packets        packets the servos accepted
+     * @param dropped        packets lost on purpose, both directions
+     * @param corrupted      packets given a wrong byte on purpose, both directions
+     * @param checksumErrors packets the servos rejected by CRC or checksum
+     * @param replies        status packets sent
+     */
+    public record Stats(long packets, long dropped, long corrupted, long checksumErrors, long replies) {
+    }
+
+    private final LinkOpener opener;
+    private final EmulatorOptions options;
+    private final EmulatorListener listener;
+    private final ServoProtocol protocol;
+    private final EmulatedServo[] servos;
+    private final PacketCodec codec;
+    private final PacketDecoder wire;
+    private final PacketDecoder servoRx;
+    private final ServoResponder responder;
+    private final byte[] scratch;
+    /** Status packets of the request being answered, back to back; packet i ends at outEnds[i]. */
+    private final byte[] outBuf = new byte[64 * 1024];
+    private final int[] outEnds = new int[256];
+    private int outCount;
+    private final Random random;
+    final Object lock = new Object();
+    private final long startNanos = System.nanoTime();
+    private final Thread rxThread;
+    private final Thread physicsThread;
+    private volatile boolean running = true;
+    private ByteLink link;
+    private boolean unplugged;
+    private long packets;
+    private long dropped;
+    private long corrupted;
+    private long replies;
+
+    private ServoEmulator(LinkOpener opener, ByteLink first, ServoModel[] models, EmulatorOptions options,
+                          EmulatorListener listener) {
+        this.opener = opener;
+        this.link = first;
+        this.options = options;
+        this.listener = listener;
+        this.protocol = models[0].protocol();
+        this.codec = protocol == ServoProtocol.DXL2 ? new Dxl2Codec() : new FeetechCodec();
+        this.random = new Random(options.seed());
+        int[] ids = options.modules();
+        servos = new EmulatedServo[ids.length];
+        for (int i = 0; i < ids.length; i++) {
+            servos[i] = new EmulatedServo(ids[i], models[i]);
+        }
+        Arrays.sort(servos, (a, b) -> Integer.compare(a.id, b.id));
+        scratch = new byte[codec.bufferSize() * 2];
+        responder = new ServoResponder(protocol, codec, servos, this::reply, listener);
+        wire = codec.decoder(this::onWirePacket);
+        servoRx = codec.decoder(this::onServoPacket);
+        rxThread = new Thread(this::rxLoop, "servo-emulator-rx " + first.name());
+        physicsThread = new Thread(this::physicsLoop, "servo-emulator-physics");
+        rxThread.setDaemon(true);
+        physicsThread.setDaemon(true);
+    }
+
+    /**
+     * Opens the device through {@code opener} and serves servos of {@code model} (its protocol
+     * must not be G1) with the IDs of {@code options}.
+     */
+    public static ServoEmulator start(LinkOpener opener, ServoModel model, EmulatorOptions options,
+                                      EmulatorListener listener) throws IOException {
+        ServoModel[] models = new ServoModel[options.modules().length];
+        Arrays.fill(models, model);
+        return start(opener, models, options, listener);
+    }
+
+    /**
+     * Like {@link #start(LinkOpener, ServoModel, EmulatorOptions, EmulatorListener)} with a model
+     * per servo: {@code models[i]} for {@code options.modules()[i]}, all of one protocol.
+     */
+    public static ServoEmulator start(LinkOpener opener, ServoModel[] models, EmulatorOptions options,
+                                      EmulatorListener listener) throws IOException {
+        if (models.length != options.modules().length || models.length == 0) {
+            throw new IllegalArgumentException("one model per servo needed, got " + models.length + " for "
+                    + options.modules().length + " servos");
+        }
+        for (ServoModel m : models) {
+            if (m.protocol() == ServoProtocol.G1 || m.protocol() != models[0].protocol()) {
+                throw new IllegalArgumentException("servos of one protocol other than G1 needed, got " + m.label());
+            }
+        }
+        for (int id : options.modules()) {
+            if (id >= PacketCodec.BROADCAST) {
+                throw new IllegalArgumentException("servo IDs are 0..253, got " + id);
+            }
+        }
+        ServoEmulator e = new ServoEmulator(opener, opener.open(), models, options, listener);
+        e.rxThread.start();
+        e.physicsThread.start();
+        return e;
+    }
+
+    /** The emulated servo IDs, ascending. */
+    public int[] servoIds() {
+        return Arrays.stream(servos).mapToInt(s -> s.id).toArray();
+    }
+
+    /** The servo angle of servo {@code id}, degrees (0 at the model's centre tick). */
+    public double angle(int id) {
+        synchronized (lock) {
+            return servo(id).angle();
+        }
+    }
+
+    /** Whether the torque of servo {@code id} is off. */
+    public boolean isLimp(int id) {
+        synchronized (lock) {
+            return !servo(id).torqueOn();
+        }
+    }
+
+    /** Whether servo {@code id} has stopped on its Bus Watchdog. */
+    public boolean watchdogTripped(int id) {
+        synchronized (lock) {
+            return servo(id).watchdogTripped();
+        }
+    }
+
+    /** The hardware error bits of servo {@code id}. */
+    public int hardwareError(int id) {
+        synchronized (lock) {
+            return servo(id).hardwareError();
+        }
+    }
+
+    /** Raises hardware error bits on servo {@code id} (0 clears them); a fault turns the torque off. */
+    public void fault(int id, int bits) {
+        synchronized (lock) {
+            servo(id).fault(bits);
+        }
+    }
+
+    /** Moves a limp servo by hand (posing); false, and nothing moves, when its torque is on. */
+    public boolean backDrive(int id, double degrees) {
+        synchronized (lock) {
+            return servo(id).backDrive(degrees);
+        }
+    }
+
+    /** The counters so far. */
+    public Stats stats() {
+        synchronized (lock) {
+            return new Stats(packets, dropped, corrupted, servoRx.checksumErrors(), replies);
+        }
+    }
+
+    /** Stops serving and closes the device. */
+    @Override
+    public void close() {
+        running = false;
+        rxThread.interrupt();
+        physicsThread.interrupt();
+        try {
+            rxThread.join(2000);
+            physicsThread.join(2000);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        ByteLink l = link;
+        if (l != null) {
+            l.close();
+        }
+    }
+
+    private EmulatedServo servo(int id) {
+        for (EmulatedServo s : servos) {
+            if (s.id == id) {
+                return s;
+            }
+        }
+        throw new IllegalArgumentException("servo " + id + " is not emulated");
+    }
+
+    private void rxLoop() {
+        byte[] in = new byte[4096];
+        long lastByte = System.nanoTime();
+        while (running) {
+            if (link == null && !reopen()) {
+                continue;
+            }
+            int n;
+            try {
+                n = link.read(in);
+            } catch (IOException e) {
+                if (running) {
+                    listener.onEvent("emulator: " + e.getMessage() + "; waiting for it to come back");
+                }
+                link.close();
+                link = null;
+                continue;
+            }
+            long now = System.nanoTime();
+            if (pluggedIn(now) && n > 0) {
+                lastByte = now;
+                wire.feed(in, 0, n);
+            } else if (now - lastByte > IDLE_GAP_NANOS && (wire.pending() > 0 || servoRx.pending() > 0)) {
+                wire.idle();
+                servoRx.idle();
+            }
+        }
+    }
+
+    private boolean reopen() {
+        LockSupport.parkNanos(REOPEN_NANOS);
+        try {
+            link = opener.open();
+            listener.onEvent("emulator: serving " + link.name() + " again");
+            return true;
+        } catch (IOException e) {
+            return false;
+        }
+    }
+
+    /** Applies the unplug schedule; while unplugged, received bytes fall on the floor and nothing is sent. */
+    private boolean pluggedIn(long now) {
+        if (options.unplugAfterS() < 0) {
+            return true;
+        }
+        double t = (now - startNanos) / 1e9;
+        boolean out = t >= options.unplugAfterS()
+                && (options.unplugForS() < 0 || t < options.unplugAfterS() + options.unplugForS());
+        if (out != unplugged) {
+            unplugged = out;
+            listener.onEvent(String.format("emulator: cable %s at %.3f s", out ? "unplugged" : "plugged back", t));
+        }
+        return !out;
+    }
+
+    /** Packets as they were sent; the fault injector decides what the servos get. */
+    private void onWirePacket(Packet p) {
+        if (options.drop() > 0 && random.nextDouble() < options.drop()) {
+            synchronized (lock) {
+                dropped++;
+            }
+            return;
+        }
+        int total = p.rawLength;
+        System.arraycopy(p.raw, 0, scratch, 0, total);
+        if (options.corrupt() > 0 && random.nextDouble() < options.corrupt()) {
+            synchronized (lock) {
+                corrupted++;
+            }
+            scratch[random.nextInt(total)] ^= (byte) (1 + random.nextInt(255));
+        }
+        servoRx.feed(scratch, 0, total);
+    }
+
+    private void onServoPacket(Packet p) {
+        synchronized (lock) {
+            packets++;
+            outCount = 0;
+            responder.execute(p, System.nanoTime());
+        }
+        // Replies leave outside the lock: a reply latency must not stall the motors.
+        for (int i = 0; i < outCount; i++) {
+            if (options.latencyMs() > 0) {
+                LockSupport.parkNanos((long) (options.latencyMs() * 1e6));
+            }
+            ByteLink l = link;
+            if (l == null || unplugged) {
+                return;
+            }
+            int from = i == 0 ? 0 : outEnds[i - 1];
+            try {
+                l.write(outBuf, from, outEnds[i] - from);
+            } catch (IOException e) {
+                // The rx loop notices the lost device on its next read and reopens it.
+                return;
+            }
+        }
+    }
+
+    /** Queues a status packet (called by the responder with {@link #lock} held); faults apply here. */
+    private void reply(byte[] packet, int len) {
+        if (options.drop() > 0 && random.nextDouble() < options.drop()) {
+            dropped++;
+            return;
+        }
+        int from = outCount == 0 ? 0 : outEnds[outCount - 1];
+        if (outCount == outEnds.length || from + len > outBuf.length) {
+            return;
+        }
+        System.arraycopy(packet, 0, outBuf, from, len);
+        if (options.corrupt() > 0 && random.nextDouble() < options.corrupt()) {
+            corrupted++;
+            outBuf[from + random.nextInt(len)] ^= (byte) (1 + random.nextInt(255));
+        }
+        outEnds[outCount++] = from + len;
+        replies++;
+    }
+
+    private void physicsLoop() {
+        long last = System.nanoTime();
+        while (running) {
+            LockSupport.parkNanos(PHYSICS_NANOS);
+            long now = System.nanoTime();
+            double dt = (now - last) / 1e9;
+            last = now;
+            synchronized (lock) {
+                for (EmulatedServo s : servos) {
+                    if (s.step(now, dt, options.speedDegPerS())) {
+                        listener.onSafeStop(s.id, now, "bus watchdog");
+                    }
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,303 @@
+package org.parpe.serial.servo.host;
+
+import java.io.IOException;
+import org.parpe.serial.link.ByteLink;
+import org.parpe.serial.servo.Registers;
+import org.parpe.serial.servo.ServoBus;
+import org.parpe.serial.servo.ServoModel;
+import org.parpe.serial.servo.ServoProtocol;
+import org.parpe.serial.servo.wire.Dxl2Codec;
+import org.parpe.serial.servo.wire.FeetechCodec;
+import org.parpe.serial.servo.wire.Packet;
+import org.parpe.serial.servo.wire.PacketCodec;
+
+/**
+ * The host end of a control-table servo bus (Dynamixel Protocol 2.0, Feetech STS or SCS). Goals
+ * and torque go out as one Sync Write per register layout; positions come back by Sync Read
+ * (Dynamixel, STS), Bulk Read (Dynamixel servos with different layouts on one bus) or one Read
+ * per servo (SCS, which has no Sync Read). Requests and replies go through a {@link PacketPort}.
+ */
+public final class ControlTableBus implements ServoBus {
+    /** Bus Watchdog after it tripped: −1 in one byte. */
+    private static final int WATCHDOG_TRIPPED = 0xFF;
+
+    private final ServoProtocol protocol;
+    private final boolean bigEndian;
+    private final PacketPort port;
+    private final byte[] params = new byte[Packet.MAX_PARAMS];
+    private final int[] replyIds = new int[256];
+    private final java.util.List<Registers> layouts = new java.util.ArrayList<>(2);
+
+    /** Starts talking {@code protocol} (not G1) over {@code link} running at {@code baud}. */
+    public ControlTableBus(ServoProtocol protocol, ByteLink link, int baud, int timeoutMs) {
+        if (protocol == ServoProtocol.G1) {
+            throw new IllegalArgumentException("G1 is not a control-table protocol; use G1Bus");
+        }
+        this.protocol = protocol;
+        this.bigEndian = protocol == ServoProtocol.SCS;
+        PacketCodec codec = protocol == ServoProtocol.DXL2 ? new Dxl2Codec() : new FeetechCodec();
+        this.port = new PacketPort(link, codec, protocol == ServoProtocol.DXL2, bigEndian, baud, timeoutMs);
+    }
+
+    @Override
+    public ServoProtocol protocol() {
+        return protocol;
+    }
+
+    @Override
+    public String name() {
+        return port.name();
+    }
+
+    @Override
+    public int ping(int id, int attempts) throws IOException {
+        for (int a = 0; a < attempts; a++) {
+            if (port.request(id, PacketCodec.PING, params, 0, id)) {
+                if (protocol == ServoProtocol.DXL2) {
+                    // The status of a Dynamixel ping carries the model number (2 bytes) and firmware version.
+                    return port.size(id) >= 3 ? port.value(id) & 0xFFFF : 0;
+                }
+                int model = read(id, Registers.FEETECH.model(), 2, attempts - a);
+                return model == Integer.MIN_VALUE ? 0 : model;
+            }
+        }
+        return -1;
+    }
+
+    /**
+     * On Dynamixel 2.0 a broadcast Ping, which every servo answers in turn (twice, merging the
+     * answers); Feetech servos are pinged one by one.
+     */
+    @Override
+    public int[] scan(int[] ids) throws IOException {
+        if (protocol != ServoProtocol.DXL2) {
+            return ServoBus.super.scan(ids);
+        }
+        int[] models = new int[ids.length];
+        java.util.Arrays.fill(models, -1);
+        for (int pass = 0; pass < 2; pass++) {
+            port.requestAll(PacketCodec.BROADCAST, PacketCodec.PING, params, 0, ids, ids.length);
+            for (int i = 0; i < ids.length; i++) {
+                if (port.got(ids[i]) && models[i] < 0) {
+                    models[i] = port.size(ids[i]) >= 3 ? port.value(ids[i]) & 0xFFFF : 0;
+                }
+            }
+        }
+        return models;
+    }
+
+    /** Reads {@code size} bytes at {@code addr} of servo {@code id}: the value, or {@link Integer#MIN_VALUE}. */
+    public int read(int id, int addr, int size, int attempts) throws IOException {
+        for (int a = 0; a < attempts; a++) {
+            int n = putAddress(0, addr, size);
+            if (port.request(id, PacketCodec.READ, params, n, id) && port.size(id) >= size) {
+                return port.value(id);
+            }
+        }
+        return Integer.MIN_VALUE;
+    }
+
+    /**
+     * Writes {@code v} ({@code size} bytes) at {@code addr} of servo {@code id} with up to
+     * {@code attempts} tries; true when it acknowledged without error.
+     */
+    public boolean write(int id, int addr, int size, int v, int attempts) throws IOException {
+        for (int a = 0; a < attempts; a++) {
+            int n = putAddress(0, addr, -1);
+            n = put(n, v, size);
+            if (port.request(id, PacketCodec.WRITE, params, n, id)) {
+                return port.error(id) == 0;
+            }
+        }
+        return false;
+    }
+
+    @Override
+    public void torque(int[] ids, ServoModel[] models, int n, boolean on) throws IOException {
+        for (Registers r : layouts(models, n)) {
+            syncWrite(r.torque(), 1, ids, models, null, on ? 1 : 0, n, r);
+        }
+    }
+
+    @Override
+    public void writeGoals(int[] ids, ServoModel[] models, int[] ticks, int n) throws IOException {
+        for (Registers r : layouts(models, n)) {
+            syncWrite(r.goal(), r.goalSize(), ids, models, ticks, 0, n, r);
+        }
+    }
+
+    @Override
+    public int readPositions(int[] ids, ServoModel[] models, int n, double[] degrees, int[] errors) throws IOException {
+        java.util.List<Registers> layouts = layouts(models, n);
+        int expected = 0;
+        if (protocol == ServoProtocol.SCS) {
+            for (int i = 0; i < n; i++) {
+                Registers r = models[i].registers();
+                int k = putAddress(0, r.present(), r.presentSize());
+                port.request(ids[i], PacketCodec.READ, params, k, ids[i]);
+            }
+        } else if (layouts.size() == 1 || protocol != ServoProtocol.DXL2) {
+            for (Registers r : layouts) {
+                int k = putAddress(0, r.present(), r.presentSize());
+                expected = 0;
+                for (int i = 0; i < n; i++) {
+                    if (models[i].registers() == r) {
+                        params[k++] = (byte) ids[i];
+                        replyIds[expected++] = ids[i];
+                    }
+                }
+                port.requestAll(PacketCodec.BROADCAST, PacketCodec.SYNC_READ, params, k, replyIds, expected);
+            }
+        } else {
+            int k = 0;
+            for (int i = 0; i < n; i++) {
+                Registers r = models[i].registers();
+                params[k++] = (byte) ids[i];
+                k = putAddress(k, r.present(), r.presentSize());
+            }
+            port.requestAll(PacketCodec.BROADCAST, PacketCodec.BULK_READ, params, k, ids, n);
+        }
+        int answered = 0;
+        for (int i = 0; i < n; i++) {
+            int id = ids[i];
+            int size = models[i].registers().presentSize();
+            if (!port.got(id) || port.size(id) < size) {
+                errors[i] = NO_REPLY;
+            } else {
+                degrees[i] = models[i].degrees(port.value(id), size);
+                errors[i] = port.error(id);
+                answered++;
+            }
+        }
+        return answered;
+    }
+
+    @Override
+    public boolean faulty(int statusError) {
+        if (statusError <= 0) {
+            return false;
+        }
+        return protocol != ServoProtocol.DXL2 || Faults.alert(statusError);
+    }
+
+    @Override
+    public String describeFault(int id, ServoModel model, int statusError) throws IOException {
+        int bits = read(id, model.registers().error(), 1, 2);
+        return bits == Integer.MIN_VALUE ? null : Faults.describe(protocol, statusError, bits);
+    }
+
+    @Override
+    public String watchdog(int[] ids, ServoModel[] models, int n, int ms, boolean limp) throws IOException {
+        if (protocol != ServoProtocol.DXL2) {
+            return "Feetech servos have no watchdog: they hold their last goal when the host falls silent";
+        }
+        // Units of 20 ms; writing 0 first also clears an earlier Bus Watchdog error.
+        int units = watchdogUnits(ms);
+        int covered = 0;
+        for (int i = 0; i < n; i++) {
+            int addr = models[i].registers().watchdog();
+            if (addr >= 0 && write(ids[i], addr, 1, 0, 3) && (units == 0 || write(ids[i], addr, 1, units, 3))) {
+                covered++;
+            }
+        }
+        return covered + " of " + n + " servos stop and hold after " + units * 20 + " ms without a packet (Bus Watchdog)"
+                + (limp ? "; Dynamixel servos cannot go limp on their own, PARPE turns their torque off when it can" : "");
+    }
+
+    @Override
+    public boolean resumeIfTripped(int id, ServoModel model, int statusError, int ms) throws IOException {
+        int addr = model.registers().watchdog();
+        if (addr < 0 || ms <= 0 || read(id, addr, 1, 3) != WATCHDOG_TRIPPED) {
+            return false;
+        }
+        return write(id, addr, 1, 0, 3) && write(id, addr, 1, watchdogUnits(ms), 3);
+    }
+
+    @Override
+    public void emergencyStop(int[] ids, ServoModel[] models, int n, boolean limp) throws IOException {
+        if (limp) {
+            for (int pass = 0; pass < 3; pass++) {
+                torque(ids, models, n, false);
+            }
+            return;
+        }
+        holdHere(ids, models, n);
+    }
+
+    @Override
+    public int pendingOutput() {
+        return port.pendingOutput();
+    }
+
+    @Override
+    public Counters counters() {
+        long[] c = port.receiveCounters();
+        return new Counters(port.packetsSent(), c[0], c[1], c[2]);
+    }
+
+    @Override
+    public IOException linkError() {
+        return port.linkError();
+    }
+
+    @Override
+    public void close() {
+        port.close();
+    }
+
+    /** Bus Watchdog units (20 ms) of {@code ms}, 0 for off. */
+    private static int watchdogUnits(int ms) {
+        return ms <= 0 ? 0 : Math.max(1, Math.min(127, (ms + 19) / 20));
+    }
+
+    /** The distinct register layouts of models {@code 0…n)}, in order of first use (a reused list). */
+    private java.util.List<Registers> layouts(ServoModel[] models, int n) {
+        layouts.clear();
+        for (int i = 0; i < n; i++) {
+            if (!layouts.contains(models[i].registers())) {
+                layouts.add(models[i].registers());
+            }
+        }
+        return layouts;
+    }
+
+    /** One Sync Write of {@code size} bytes at {@code addr} to the servos of layout {@code r}. */
+    private void syncWrite(int addr, int size, int[] ids, ServoModel[] models, int[] values, int constant, int n,
+                           Registers r) throws IOException {
+        synchronized (params) {
+            int k = putAddress(0, addr, size);
+            for (int i = 0; i < n; i++) {
+                if (models[i].registers() == r) {
+                    params[k++] = (byte) ids[i];
+                    k = put(k, values == null ? constant : values[i], size);
+                }
+            }
+            port.send(PacketCodec.BROADCAST, PacketCodec.SYNC_WRITE, params, k);
+        }
+    }
+
+    /** Address (and length unless {@code size} < 0) as the protocol encodes them, from {@code k}. */
+    private int putAddress(int k, int addr, int size) {
+        if (protocol == ServoProtocol.DXL2) {
+            PacketCodec.putLe(params, k, 2, addr);
+            k += 2;
+            if (size >= 0) {
+                PacketCodec.putLe(params, k, 2, size);
+                k += 2;
+            }
+            return k;
+        }
+        params[k++] = (byte) addr;
+        if (size >= 0) {
+            params[k++] = (byte) size;
+        }
+        return k;
+    }
+
+    private int put(int k, int v, int size) {
+        for (int i = 0; i < size; i++) {
+            params[k + i] = (byte) (v >>> 8 * (bigEndian ? size - 1 - i : i));
+        }
+        return k + size;
+    }
+}

@@ -1,0 +1,277 @@
+package org.parpe.serial.servo.host;
+
+import java.io.IOException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.Condition;
+import java.util.concurrent.locks.LockSupport;
+import java.util.concurrent.locks.ReentrantLock;
+import org.parpe.serial.link.ByteLink;
+import org.parpe.serial.servo.wire.Packet;
+import org.parpe.serial.servo.wire.PacketCodec;
+import org.parpe.serial.servo.wire.PacketDecoder;
+
+/**
+ * Request and reply over one link for a control-table protocol: sends instruction packets and
+ * waits for the status packets of the servos named, each kept by servo ID (its first four
+ * parameter bytes as a number, its error byte, its length). A reader thread owns the decoder;
+ * late replies to an ended request are counted as stray. Requests must come from one thread at a
+ * time; plain sends may come from any thread.
+ */
+final class PacketPort {
+    private static final long LINGER_MS = 50;
+    private static final long IDLE_GAP_NANOS = 5_000_000;
+
+    private final ByteLink link;
+    private final PacketCodec codec;
+    private final boolean dxl;
+    private final boolean bigEndian;
+    private final int baud;
+    private final int timeoutMs;
+    private final PacketDecoder rx;
+    private final byte[] out;
+    private final Object writeLock = new Object();
+    private final ReentrantLock lock = new ReentrantLock();
+    private final Condition replied = lock.newCondition();
+    private final boolean[] waiting = new boolean[256];
+    private final boolean[] got = new boolean[256];
+    private final int[] value = new int[256];
+    private final int[] error = new int[256];
+    private final int[] size = new int[256];
+    private final int[] expectedIds = new int[256];
+    private final Thread reader;
+    private int expected;
+    private int waitingCount;
+    private volatile boolean running = true;
+    private volatile IOException linkError;
+    private volatile long lastWriteNanos;
+    private long packetsSent;
+    private long timeouts;
+    private long stray;
+
+    PacketPort(ByteLink link, PacketCodec codec, boolean dxl, boolean bigEndian, int baud, int timeoutMs) {
+        this.link = link;
+        this.codec = codec;
+        this.dxl = dxl;
+        this.bigEndian = bigEndian;
+        this.baud = baud;
+        this.timeoutMs = timeoutMs;
+        this.rx = codec.decoder(this::onPacket);
+        this.out = new byte[codec.bufferSize()];
+        reader = new Thread(this::readLoop, "servo-reader " + link.name());
+        reader.setDaemon(true);
+        reader.start();
+    }
+
+    String name() {
+        return link.name();
+    }
+
+    /** Sends an instruction packet that gets no reply. */
+    void send(int id, int instruction, byte[] params, int len) throws IOException {
+        synchronized (writeLock) {
+            IOException e = linkError;
+            if (e != null) {
+                throw e;
+            }
+            int n = codec.instruction(out, id, instruction, params, len);
+            link.write(out, 0, n);
+            packetsSent++;
+            lastWriteNanos = System.nanoTime();
+        }
+    }
+
+    /** A request answered by servo {@code replyId}; true when it replied in time. */
+    boolean request(int id, int instruction, byte[] params, int len, int replyId) throws IOException {
+        lock.lock();
+        try {
+            expected = 0;
+            expect(replyId);
+        } finally {
+            lock.unlock();
+        }
+        await(id, instruction, params, len, 1);
+        return got[replyId];
+    }
+
+    /** A request answered by each of servos {@code replyIds[0…n)} in turn. */
+    void requestAll(int id, int instruction, byte[] params, int len, int[] replyIds, int n) throws IOException {
+        lock.lock();
+        try {
+            expected = 0;
+            for (int i = 0; i < n; i++) {
+                expect(replyIds[i]);
+            }
+        } finally {
+            lock.unlock();
+        }
+        await(id, instruction, params, len, n);
+    }
+
+    /** Whether servo {@code id} replied to the last request. */
+    boolean got(int id) {
+        return got[id];
+    }
+
+    /** The first (up to four) parameter bytes of servo {@code id}'s last reply as a number. */
+    int value(int id) {
+        return value[id];
+    }
+
+    /** The error byte of servo {@code id}'s last reply. */
+    int error(int id) {
+        return error[id];
+    }
+
+    /** The parameter count of servo {@code id}'s last reply. */
+    int size(int id) {
+        return size[id];
+    }
+
+    int pendingOutput() {
+        return link.pendingOutput();
+    }
+
+    IOException linkError() {
+        return linkError;
+    }
+
+    long packetsSent() {
+        synchronized (writeLock) {
+            return packetsSent;
+        }
+    }
+
+    /** Replies that did not come in time, received packets with a bad check, stray replies. */
+    long[] receiveCounters() {
+        lock.lock();
+        try {
+            return new long[] {timeouts, rx.checksumErrors(), stray};
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** Lets queued bytes leave and the far end read them, then stops the reader and closes the link. */
+    void close() {
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(250);
+        while (linkError == null && link.pendingOutput() > 0 && System.nanoTime() < deadline) {
+            LockSupport.parkNanos(200_000);
+        }
+        long linger = lastWriteNanos + TimeUnit.MILLISECONDS.toNanos(LINGER_MS) - System.nanoTime();
+        if (linger > 0 && linkError == null) {
+            LockSupport.parkNanos(linger);
+        }
+        running = false;
+        link.close();
+        try {
+            reader.join(1000);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    /** Adds {@code id} to the replies awaited, with {@link #lock} held. */
+    private void expect(int id) {
+        expectedIds[expected++] = id;
+        waiting[id] = true;
+        got[id] = false;
+        size[id] = 0;
+        waitingCount++;
+    }
+
+    private void await(int id, int instruction, byte[] params, int len, int replies) throws IOException {
+        try {
+            send(id, instruction, params, len);
+        } catch (IOException e) {
+            forget();
+            throw e;
+        }
+        // Room for every reply on the wire (10 bits a byte) on top of the read timeout.
+        long wire = (long) replies * codec.packetLength(8) * 10_000_000_000L / baud;
+        long left = TimeUnit.MILLISECONDS.toNanos(timeoutMs) + wire;
+        lock.lock();
+        try {
+            while (waitingCount > 0 && left > 0 && linkError == null) {
+                left = replied.awaitNanos(left);
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } finally {
+            lock.unlock();
+        }
+        forget();
+        if (linkError != null) {
+            throw linkError;
+        }
+    }
+
+    /** Ends the current request: replies still missing count as timeouts, late ones as stray. */
+    private void forget() {
+        lock.lock();
+        try {
+            timeouts += waitingCount;
+            for (int i = 0; i < expected; i++) {
+                waiting[expectedIds[i]] = false;
+            }
+            waitingCount = 0;
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    private void readLoop() {
+        byte[] in = new byte[2048];
+        long lastByte = System.nanoTime();
+        while (running) {
+            int n;
+            try {
+                n = link.read(in);
+            } catch (IOException e) {
+                lock.lock();
+                try {
+                    linkError = e;
+                    replied.signalAll();
+                } finally {
+                    lock.unlock();
+                }
+                return;
+            }
+            long now = System.nanoTime();
+            lock.lock();
+            try {
+                if (n > 0) {
+                    lastByte = now;
+                    rx.feed(in, 0, n);
+                } else if (rx.pending() > 0 && now - lastByte > IDLE_GAP_NANOS) {
+                    rx.idle();
+                }
+            } finally {
+                lock.unlock();
+            }
+        }
+    }
+
+    /** On the reader thread with {@link #lock} held. */
+    private void onPacket(Packet p) {
+        if (dxl && p.code != PacketCodec.STATUS) {
+            return;
+        }
+        if (!waiting[p.id]) {
+            stray++;
+            return;
+        }
+        waiting[p.id] = false;
+        got[p.id] = true;
+        int n = Math.min(4, p.length);
+        int v = 0;
+        for (int i = 0; i < n; i++) {
+            v |= (p.params[i] & 0xFF) << 8 * (bigEndian ? n - 1 - i : i);
+        }
+        value[p.id] = v;
+        size[p.id] = p.length;
+        error[p.id] = codec.statusError(p);
+        if (--waitingCount <= 0) {
+            replied.signalAll();
+        }
+    }
+}

@@ -1,0 +1,54 @@
+package org.parpe.serial.servo.profile;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.Locale;
+
+/** Writes a hardware profile (atomically: a crash never leaves half a file). */
+public final class ProfileWriter {
+    private ProfileWriter() {
+    }
+
+    /** The profile as XML; {@code comment} (one line, may be null) goes on top. */
+    public static String toXml(HardwareProfile p, String comment) {
+        StringBuilder b = new StringBuilder("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
+        if (comment != null) {
+            b.append("<!-- ").append(comment.replace("--", "- -")).append(" -->\n");
+        }
+        b.append("<hardware protocol=\"").append(p.protocol().key()).append('"');
+        if (p.port() != null) {
+            b.append(" port=\"").append(escape(p.port())).append('"');
+        }
+        b.append(" baud=\"").append(p.baud()).append("\" on-fault=\"").append(p.onFault().name().toLowerCase(Locale.ROOT))
+                .append("\" watchdog=\"").append(p.watchdogMs()).append("\">\n");
+        for (ServoMapping m : p.servos()) {
+            b.append(String.format(Locale.ROOT, "  <servo module=\"%d\" id=\"%d\" model=\"%s\" zero=\"%s\" direction=\"%d\""
+                    + " min=\"%s\" max=\"%s\"/>\n", m.module(), m.servo(), m.model().name(), num(m.zero()),
+                    m.direction(), num(m.min()), num(m.max())));
+        }
+        return b.append("</hardware>\n").toString();
+    }
+
+    /** Writes {@code p} to {@code file} through a temporary file in the same directory. */
+    public static void write(HardwareProfile p, Path file, String comment) throws IOException {
+        Path abs = file.toAbsolutePath();
+        Path tmp = Files.createTempFile(abs.getParent(), ".profile-", ".tmp");
+        try {
+            Files.writeString(tmp, toXml(p, comment), StandardCharsets.UTF_8);
+            Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+        } finally {
+            Files.deleteIfExists(tmp);
+        }
+    }
+
+    private static String num(double d) {
+        return d == Math.rint(d) ? String.valueOf((long) d) : String.format(Locale.ROOT, "%.2f", d);
+    }
+
+    private static String escape(String s) {
+        return s.replace("&", "&amp;").replace("\"", "&quot;").replace("<", "&lt;");
+    }
+}

@@ -1,0 +1,57 @@
+package org.parpe.serial.servo.profile;
+
+import org.parpe.core.diag.SourcePos;
+import org.parpe.serial.servo.ServoModel;
+
+/**
+ * How one PARSL module is driven: servo angle = {@code zero} + {@code direction} × joint angle.
+ *
+ * @param module    PARSL module ID
+ * @param servo     servo ID on the bus
+ * @param model     the servo's model (its units)
+ * @param zero      servo angle of joint angle 0, degrees
+ * @param direction +1, or −1 when the servo turns the other way than the joint
+ * @param min       lowest joint angle ever commanded, degrees
+ * @param max       highest joint angle ever commanded, degrees
+ * @param where     the {@code <servo>} element, for messages
+ */
+public record ServoMapping(int module, int servo, ServoModel model, double zero, int direction, double min, double max,
+                           SourcePos where) {
+
+    /** The joint angle clamped to {@link #min}…{@link #max}. */
+    public double clamp(double joint) {
+        return Math.max(min, Math.min(max, joint));
+    }
+
+    /** The servo angle of a joint angle (not clamped). */
+    public double servoAngle(double joint) {
+        return zero + direction * joint;
+    }
+
+    /** The joint angle of a servo angle. */
+    public double jointAngle(double servoAngle) {
+        return (servoAngle - zero) * direction;
+    }
+
+    /** The goal position, in the model's ticks, of a joint angle already clamped. */
+    public int goalTicks(double joint) {
+        return model.ticks(servoAngle(joint));
+    }
+
+    /**
+     * The same mapping with {@link #min} and {@link #max} narrowed, where needed, to joint angles
+     * the servo can reach with this zero and direction.
+     */
+    public ServoMapping reachable() {
+        double a = jointAngle(model.minDegrees());
+        double b = jointAngle(model.maxDegrees());
+        double lo = Math.max(min, Math.min(a, b));
+        double hi = Math.min(max, Math.max(a, b));
+        return lo == min && hi == max ? this : new ServoMapping(module, servo, model, zero, direction, lo, hi, where);
+    }
+
+    /** The same mapping with another zero offset. */
+    public ServoMapping withZero(double z) {
+        return new ServoMapping(module, servo, model, z, direction, min, max, where);
+    }
+}

@@ -1,0 +1,371 @@
+package org.parpe.serial.servo.run;
+
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.LockSupport;
+import org.parpe.core.run.Channel;
+import org.parpe.core.run.JointSink;
+import org.parpe.core.run.RunInfo;
+import org.parpe.core.run.RunOutcome;
+import org.parpe.core.run.SensorSource;
+import org.parpe.core.run.SensorTable;
+import org.parpe.serial.bus.BusConfig;
+import org.parpe.serial.bus.BusReport;
+import org.parpe.serial.bus.SafeMode;
+import org.parpe.serial.link.LinkOpener;
+import org.parpe.serial.servo.ServoBus;
+import org.parpe.serial.servo.ServoModel;
+import org.parpe.serial.servo.profile.HardwareProfile;
+import org.parpe.serial.servo.profile.ServoMapping;
+
+/**
+ * Drives the servos of a hardware profile from a run. The engine's setpoints are clamped to each
+ * servo's limits (warned once per module, counted always) and turned into goal ticks; a bus
+ * thread sends them in one packet, repeats them as a keepalive, and reads present positions,
+ * which become the modules' measured angles. A servo reporting a fault (overload, overheating,
+ * voltage) is reported in words. When every servo falls silent or the device goes away, the
+ * driver reports it at once, keeps looking and resumes when they are back.
+ */
+public final class ServoDriver implements JointSink, SensorSource, AutoCloseable {
+    private static final int READ_EVERY_WHEN_BUSY = 10;
+    private static final int READ_GAP_MS = 2;
+    private static final int WATCHDOG_CHECK_MS = 100;
+
+    private enum State { CONNECTED, SILENT, LINK_LOST }
+
+    private final LinkOpener opener;
+    private final BusConfig config;
+    private final HardwareProfile profile;
+    private final BusReport report;
+    private volatile ServoBus bus;
+    private final ServoSet set;
+    private volatile Thread thread;
+    private volatile boolean running;
+    private volatile boolean estopped;
+    private volatile State state = State.CONNECTED;
+    private long silentSince;
+    private long lastAnswer = System.nanoTime();
+    private long lastSend;
+    private int failedReads;
+    private int busyCycles;
+    private long reads;
+    private long readFailures;
+    private long disconnects;
+    private long faults;
+    private long watchdogResumes;
+    private long lastWatchdogCheck;
+    private int watchdogCursor;
+
+    private ServoDriver(LinkOpener opener, ServoBus bus, BusConfig config, HardwareProfile profile, int[] runModules,
+                        BusReport report) {
+        this.opener = opener;
+        this.bus = bus;
+        this.config = config;
+        this.profile = profile;
+        this.report = report;
+        this.set = new ServoSet(profile, runModules);
+    }
+
+    /**
+     * Opens the bus of {@code profile} through {@code opener} for a run of {@code runModules}.
+     *
+     * @throws IOException with a user message when the device cannot be opened
+     */
+    public static ServoDriver open(LinkOpener opener, BusConfig config, HardwareProfile profile, int[] runModules,
+                                   BusReport report) throws IOException {
+        ServoBus b = org.parpe.serial.servo.host.ServoBuses.open(profile.protocol(), opener, config);
+        return new ServoDriver(opener, b, config, profile, runModules, report);
+    }
+
+    /** The device's name. */
+    public String name() {
+        return bus.name();
+    }
+
+    /**
+     * Pings every mapped servo of the run, sets the servos' watchdog and turns the found ones'
+     * torque on, holding where they are. Returns the modules whose servo answered.
+     */
+    public List<Integer> discover() throws IOException {
+        List<Integer> found = new ArrayList<>();
+        for (int j = 0; j < set.size(); j++) {
+            ServoMapping m = set.mapping(j);
+            int model = bus.ping(m.servo(), Math.max(5, config.retries() + 1));
+            set.driven[j] = model >= 0 && compatible(m, model);
+            if (set.driven[j]) {
+                found.add(m.module());
+            }
+        }
+        if (!found.isEmpty()) {
+            setUp();
+        }
+        return found;
+    }
+
+    /**
+     * Whether a servo reporting {@code model} can be driven as the profile's model says: the same
+     * model, or one with the same control table and units (warned). Another one would get goals
+     * at the wrong address or in the wrong unit, so it is not driven.
+     */
+    private boolean compatible(ServoMapping m, int model) {
+        if (model == 0 || model == m.model().number()) {
+            return true;
+        }
+        ServoModel actual = ServoModel.of(profile.protocol(), model);
+        boolean same = actual != null && actual.registers() == m.model().registers()
+                && actual.resolution() == m.model().resolution() && actual.rangeDeg() == m.model().rangeDeg()
+                && actual.centre() == m.model().centre();
+        report.problem(String.format(Locale.ROOT, "bus: servo %d (module %d) is %s, the profile says %s at %s; %s",
+                m.servo(), m.module(), actual == null ? "of unknown model " + model : "an " + actual.label(),
+                m.model().label(), m.where(), same ? "driving it anyway (same control table and units)"
+                        : "it will not move (correct the model in the profile)"));
+        return same;
+    }
+
+    /** Watchdog, torque on, first positions; the servos hold where they are until setpoints come. */
+    private void setUp() throws IOException {
+        int n = set.pack();
+        report.note("bus: " + bus.watchdog(set.ids, set.models, n, profile.watchdogMs(),
+                profile.onFault() == SafeMode.LIMP));
+        bus.readPositions(set.ids, set.models, n, set.degrees, set.errors);
+        set.storeReadings(n, bus, this::fault);
+        bus.holdHere(set.ids, set.models, n);
+    }
+
+    /** Modules of the run without a servo in the profile. */
+    public List<Integer> unmapped() {
+        return set.unmapped();
+    }
+
+    @Override
+    public void start(RunInfo info) {
+        lastAnswer = System.nanoTime();
+        running = true;
+        Thread t = new Thread(this::loop, "servo bus " + bus.name());
+        t.setDaemon(true);
+        thread = t;
+        t.start();
+    }
+
+    @Override
+    public void accept(long tick, double time, double[] commanded) {
+        set.accept(tick, commanded, report::problem);
+    }
+
+    @Override
+    public void read(double time, SensorTable table) {
+        set.copyTo(table, Channel.ANGLE);
+    }
+
+    /** The last measured joint angle of run module {@code index}, NaN before any. */
+    public double measuredAngle(int index) {
+        return set.measured(index);
+    }
+
+    /** Sends the last goals (three times: no reply), turns the watchdog off so the servos keep holding, reports. */
+    @Override
+    public void finish(RunOutcome outcome) {
+        stopThread();
+        ServoBus b = bus;
+        if (!estopped && state == State.CONNECTED && b.linkError() == null) {
+            try {
+                int n = set.pack();
+                for (int i = 0; i < 3 && set.takeGoals(true); i++) {
+                    b.writeGoals(set.ids, set.models, set.goals, n);
+                }
+                b.watchdog(set.ids, set.models, n, 0, false);
+            } catch (IOException e) {
+                report.problem("bus: could not send the final goals: " + e.getMessage());
+            }
+        }
+        report.note(summary());
+    }
+
+    /** Emergency stop: every driven servo stops in the profile's safe mode. Safe from any thread. */
+    public void emergencyStop() {
+        estopped = true;
+        stopThread();
+        boolean limp = profile.onFault() == SafeMode.LIMP;
+        try {
+            bus.emergencyStop(set.ids, set.models, set.pack(), limp);
+            report.note("bus: emergency stop sent; servos " + (limp ? "limp (torque off)" : "hold where they are"));
+        } catch (IOException e) {
+            report.problem("bus: emergency stop could not be sent (" + e.getMessage() + ")");
+        }
+    }
+
+    /** Emergency stop if a run is in progress; for a shutdown hook. */
+    public void emergencyStopIfRunning() {
+        if (thread != null && !estopped) {
+            emergencyStop();
+        }
+    }
+
+    /** One line of counters for the end of a run. */
+    public String summary() {
+        ServoBus.Counters c = bus.counters();
+        return String.format(Locale.ROOT, "bus %s (%s): %d packets sent, %d position reads (%d servo timeouts, "
+                + "%d failed), %d bad checksums received, %d setpoints clamped, %d servo faults, %d watchdog stops, "
+                + "%d disconnects", bus.name(), profile.protocol().key(), c.packetsSent(), reads, c.timeouts(),
+                readFailures, c.checksumErrors(), set.clamps(), faults, watchdogResumes, disconnects);
+    }
+
+    @Override
+    public void close() {
+        stopThread();
+        bus.close();
+    }
+
+    private void stopThread() {
+        running = false;
+        Thread t = thread;
+        if (t != null) {
+            t.interrupt();
+            try {
+                t.join(2000);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+            thread = null;
+        }
+    }
+
+    private void loop() {
+        while (running) {
+            try {
+                switch (state) {
+                    case CONNECTED -> cycle();
+                    case SILENT -> lookForServos();
+                    case LINK_LOST -> reopen();
+                    default -> throw new IllegalStateException(state.name());
+                }
+            } catch (IOException e) {
+                if (running) {
+                    linkLost(e);
+                }
+            } catch (InterruptedException e) {
+                return;
+            }
+        }
+    }
+
+    /** Goals when new or due as keepalive, then a read of every servo unless goals saturate the line. */
+    private void cycle() throws IOException, InterruptedException {
+        int queued = bus.pendingOutput();
+        if (queued > 0) {
+            LockSupport.parkNanos((long) (queued * 10e9 / config.baud()));
+            return;
+        }
+        long now = System.nanoTime();
+        int n = set.pack();
+        boolean keepalive = now - lastSend > TimeUnit.MILLISECONDS.toNanos(config.keepaliveMs());
+        boolean sent = set.takeGoals(keepalive);
+        if (sent) {
+            bus.writeGoals(set.ids, set.models, set.goals, n);
+            lastSend = now;
+        }
+        busyCycles = sent ? busyCycles + 1 : 0;
+        if (busyCycles == 0 || busyCycles % READ_EVERY_WHEN_BUSY == 0) {
+            int answered = bus.readPositions(set.ids, set.models, n, set.degrees, set.errors);
+            reads++;
+            if (answered > 0) {
+                lastAnswer = System.nanoTime();
+                failedReads = 0;
+                faults += set.storeReadings(n, bus, this::fault);
+                checkWatchdog(n);
+            } else if (n > 0) {
+                readFailures++;
+                // Dead: no answer for the dead-bus time and more failed reads in a row than retries.
+                if (++failedReads > config.retries()
+                        && System.nanoTime() - lastAnswer > TimeUnit.MILLISECONDS.toNanos(config.deadAfterMs())) {
+                    silent();
+                    return;
+                }
+            }
+            if (!sent) {
+                set.awaitFresh(READ_GAP_MS);
+            }
+        } else if (!sent) {
+            set.awaitFresh(config.keepaliveMs());
+        }
+    }
+
+    /** Every {@value #WATCHDOG_CHECK_MS} ms, one servo: resumed if it stopped on its own watchdog. */
+    private void checkWatchdog(int n) throws IOException {
+        long now = System.nanoTime();
+        if (n == 0 || profile.watchdogMs() <= 0 || now - lastWatchdogCheck < WATCHDOG_CHECK_MS * 1_000_000L) {
+            return;
+        }
+        lastWatchdogCheck = now;
+        int k = watchdogCursor++ % n;
+        if (bus.resumeIfTripped(set.ids[k], set.models[k], set.errors[k], profile.watchdogMs())) {
+            watchdogResumes++;
+            report.problem("bus: servo " + set.ids[k] + " had stopped on its watchdog (a gap of more than "
+                    + profile.watchdogMs() + " ms in the bus traffic); resuming it");
+        }
+    }
+
+    private void fault(String message) {
+        report.problem("bus: " + message);
+    }
+
+    private void silent() {
+        state = State.SILENT;
+        silentSince = System.nanoTime();
+        disconnects++;
+        report.problem(String.format(Locale.ROOT, "bus: no reply from any servo on %s for %d ms; %s; waiting for them "
+                + "to come back", bus.name(), config.deadAfterMs(), safeStop()));
+    }
+
+    /** What the servos do when the host loses them, and the torque-off attempt for limp. */
+    private String safeStop() {
+        if (profile.onFault() == SafeMode.LIMP) {
+            try {
+                bus.torque(set.ids, set.models, set.pack(), false);
+            } catch (IOException e) {
+                return "servos keep their last goal (the torque-off could not be sent)";
+            }
+            return "torque-off sent (limp)";
+        }
+        return "servos hold their last goal";
+    }
+
+    private void linkLost(IOException e) {
+        state = State.LINK_LOST;
+        silentSince = System.nanoTime();
+        disconnects++;
+        bus.close();
+        report.problem("bus: " + e.getMessage() + "; servos hold their last goal"
+                + (profile.watchdogMs() > 0 ? " or stop on their own watchdog" : "") + "; waiting for the device to return");
+    }
+
+    private void reopen() throws InterruptedException {
+        Thread.sleep(config.reconnectMs());
+        try {
+            bus = org.parpe.serial.servo.host.ServoBuses.open(profile.protocol(), opener, config);
+            state = State.SILENT;
+        } catch (IOException e) {
+            // Still gone: try again after the next interval.
+        }
+    }
+
+    /** While silent: ping one servo per interval; when one answers, set up again and resume. */
+    private void lookForServos() throws IOException, InterruptedException {
+        int n = set.pack();
+        for (int i = 0; i < n; i++) {
+            if (bus.ping(set.ids[i], 1) >= 0) {
+                setUp();
+                lastAnswer = System.nanoTime();
+                failedReads = 0;
+                state = State.CONNECTED;
+                report.note(String.format(Locale.ROOT, "bus: servos back on %s after %.2f s; resuming", bus.name(),
+                        (System.nanoTime() - silentSince) / 1e9));
+                return;
+            }
+            Thread.sleep(Math.max(1, config.reconnectMs() / Math.max(1, n)));
+        }
+    }
+}

@@ -1,0 +1,172 @@
+package org.parpe.serial.servo.run;
+
+import java.io.IOException;
+import java.util.List;
+import java.util.function.Consumer;
+import org.parpe.core.diag.DiagnosticSink;
+import org.parpe.core.diag.SourcePos;
+import org.parpe.core.run.JointSink;
+import org.parpe.core.run.Run;
+import org.parpe.core.run.RunInfo;
+import org.parpe.core.run.RunOutcome;
+import org.parpe.core.run.RunTarget;
+import org.parpe.core.run.TargetException;
+import org.parpe.core.run.TraceColumns;
+import org.parpe.serial.bus.BusConfig;
+import org.parpe.serial.bus.BusReport;
+import org.parpe.serial.bus.BusTarget;
+import org.parpe.serial.bus.Discovery;
+import org.parpe.serial.link.LinkOpener;
+import org.parpe.serial.servo.profile.HardwareProfile;
+
+/**
+ * The servos of a hardware profile as a run target, on any protocol, for the command line's
+ * {@code --hardware} and the IDE alike: opens the profile's bus, pings the script's servos before
+ * anything moves (reporting modules without a servo in the profile and servos that do not
+ * answer), and adds the servos as a plant, as the sensor source (priority
+ * {@value BusTarget#PRIORITY}, above the simulator) and as trace columns {@code hw<ID>}. The run is
+ * paced to the wall clock; a run stopped by the user ends in an emergency stop. Bus problems
+ * become warnings located at {@code bus PORT}; notes go to {@code notes}.
+ */
+public final class ServoTarget implements RunTarget {
+    private final HardwareProfile profile;
+    private final BusConfig config;
+    private final LinkOpener opener;
+    private final Consumer<String> notes;
+    private ServoDriver driver;
+
+    /** The servos of {@code profile} on its port, with the read timing of {@code config}. */
+    public ServoTarget(HardwareProfile profile, BusConfig config, Consumer<String> notes) {
+        this(profile, config, profile.port() == null ? null : LinkOpener.serial(profile.port(), profile.baud()), notes);
+    }
+
+    /** The servos reached through {@code opener} (tests, benchmarks). */
+    public ServoTarget(HardwareProfile profile, BusConfig config, LinkOpener opener, Consumer<String> notes) {
+        this.profile = profile;
+        this.config = config.withBaud(profile.baud()).withSafeMode(profile.onFault());
+        this.opener = opener;
+        this.notes = notes;
+    }
+
+    @Override
+    public void attach(Run.Builder run) throws TargetException {
+        String port = profile.port();
+        if (port == null || port.isBlank() || opener == null) {
+            throw new TargetException(SourcePos.origin(profile.file()), "no serial port: give --port or a port "
+                    + "attribute in the profile (e.g. /dev/ttyUSB0 or COM3)");
+        }
+        SourcePos where = SourcePos.origin("bus " + port);
+        DiagnosticSink diags = run.diagnostics();
+        int[] ids = run.program().moduleIds();
+        ServoDriver d;
+        try {
+            d = ServoDriver.open(opener, config, profile, ids, report(where, diags));
+        } catch (IOException e) {
+            throw new TargetException(where, "cannot open the serial device: " + message(e));
+        }
+        run.closeAtEnd(d);
+        List<Integer> unmapped = d.unmapped();
+        if (!unmapped.isEmpty()) {
+            diags.warning(SourcePos.origin(profile.file()), "modules " + Discovery.format(unmapped)
+                    + " of the script have no <servo> in the profile; they will not move");
+        }
+        List<Integer> found;
+        try {
+            found = d.discover();
+        } catch (IOException e) {
+            throw new TargetException(where, "the bus failed while looking for servos: " + message(e));
+        }
+        int mapped = ids.length - unmapped.size();
+        notes.accept("bus " + port + " (" + profile.protocol().key() + ", " + profile.baud() + " baud): " + found.size()
+                + " of " + mapped + " servos answer" + (found.isEmpty() ? "" : " (modules " + Discovery.format(found) + ")"));
+        if (found.size() < mapped) {
+            List<Integer> missing = new java.util.ArrayList<>();
+            for (int id : ids) {
+                if (!unmapped.contains(id) && !found.contains(id)) {
+                    missing.add(id);
+                }
+            }
+            diags.warning(where, "the servos of modules " + Discovery.format(missing) + " do not answer; they will not move");
+        }
+        if (found.isEmpty()) {
+            throw new TargetException(where, "no servo answers on " + port + " at " + profile.baud() + " baud ("
+                    + profile.protocol().key() + "; is the robot powered, and are protocol and baud rate right? "
+                    + "parpe scan finds them)");
+        }
+        run.plant(new StopGuard(d));
+        run.sensorSource("hardware", d, BusTarget.PRIORITY);
+        run.traceColumns(measuredColumns(d, ids));
+        run.requireRealtime();
+        driver = d;
+    }
+
+    /** The driver attached last (null before {@link #attach}). */
+    public ServoDriver driver() {
+        return driver;
+    }
+
+    private BusReport report(SourcePos where, DiagnosticSink diags) {
+        return new BusReport() {
+            @Override
+            public void problem(String message) {
+                diags.warning(where, message.startsWith("bus: ") ? message.substring(5) : message);
+            }
+
+            @Override
+            public void note(String message) {
+                notes.accept(message);
+            }
+        };
+    }
+
+    private static String message(IOException e) {
+        return e.getMessage() == null ? e.toString() : e.getMessage();
+    }
+
+    private static TraceColumns measuredColumns(ServoDriver d, int[] ids) {
+        String[] names = new String[ids.length];
+        for (int i = 0; i < ids.length; i++) {
+            names[i] = "hw" + ids[i];
+        }
+        return new TraceColumns() {
+            @Override
+            public String[] names() {
+                return names.clone();
+            }
+
+            @Override
+            public void values(double[] out) {
+                for (int i = 0; i < ids.length; i++) {
+                    out[i] = d.measuredAngle(i);
+                }
+            }
+        };
+    }
+
+    /** The driver as a plant, except that a run stopped by the user ends in an emergency stop. */
+    private static final class StopGuard implements JointSink {
+        private final ServoDriver d;
+
+        StopGuard(ServoDriver d) {
+            this.d = d;
+        }
+
+        @Override
+        public void start(RunInfo info) {
+            d.start(info);
+        }
+
+        @Override
+        public void accept(long tick, double time, double[] commanded) {
+            d.accept(tick, time, commanded);
+        }
+
+        @Override
+        public void finish(RunOutcome outcome) {
+            if (outcome.status() == RunOutcome.Status.STOPPED) {
+                d.emergencyStopIfRunning();
+            }
+            d.finish(outcome);
+        }
+    }
+}

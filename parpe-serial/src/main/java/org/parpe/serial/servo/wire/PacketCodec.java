@@ -1,0 +1,63 @@
+package org.parpe.serial.servo.wire;
+
+/**
+ * The packet format of one servo protocol: encodes instruction and status packets into a
+ * caller's buffer (at least {@link #bufferSize} bytes) and makes stream decoders. Instruction
+ * codes are the same on both protocols for what PARPE uses.
+ */
+public interface PacketCodec {
+    /** Broadcast ID: every servo executes, none replies (except to Sync Read and Bulk Read). */
+    int BROADCAST = 0xFE;
+    /** Ping: the servo replies (Dynamixel 2.0: model number and firmware version). */
+    int PING = 0x01;
+    /** Read {@code addr, len} from the control table. */
+    int READ = 0x02;
+    /** Write {@code addr, data…} to the control table. */
+    int WRITE = 0x03;
+    /** Dynamixel 2.0 Reboot: restarts the servo, which clears a hardware error. */
+    int REBOOT = 0x08;
+    /** Sync Read: the same {@code addr, len} from several servos, each replies in turn. */
+    int SYNC_READ = 0x82;
+    /** Sync Write: the same {@code addr, len} to several servos, {@code id, data…} each; no reply. */
+    int SYNC_WRITE = 0x83;
+    /** Dynamixel 2.0 Bulk Read: {@code id, addr, len} per servo, each replies in turn. */
+    int BULK_READ = 0x92;
+    /** Dynamixel 2.0: the instruction field of a status packet. */
+    int STATUS = 0x55;
+
+    /** Largest packet this codec builds, stuffing included. */
+    default int bufferSize() {
+        return 2 * Packet.MAX_PARAMS + 16;
+    }
+
+    /** Builds an instruction packet in {@code out}; returns its length. */
+    int instruction(byte[] out, int id, int instruction, byte[] params, int len);
+
+    /** Builds a status packet with error byte {@code error} in {@code out}; returns its length. */
+    int status(byte[] out, int id, int error, byte[] params, int len);
+
+    /** A new decoder handing packets to {@code handler}. */
+    PacketDecoder decoder(PacketHandler handler);
+
+    /** The error byte of a received status packet. */
+    int statusError(Packet p);
+
+    /** Bytes on the wire of a packet with {@code params} parameters (without stuffing). */
+    int packetLength(int params);
+
+    /** An unsigned little-endian value of {@code size} bytes of {@code b} at {@code off}. */
+    static int le(byte[] b, int off, int size) {
+        int v = 0;
+        for (int i = size - 1; i >= 0; i--) {
+            v = v << 8 | (b[off + i] & 0xFF);
+        }
+        return v;
+    }
+
+    /** Writes {@code v} as {@code size} little-endian bytes into {@code b} at {@code off}. */
+    static void putLe(byte[] b, int off, int size, int v) {
+        for (int i = 0; i < size; i++) {
+            b[off + i] = (byte) (v >>> 8 * i);
+        }
+    }
+}

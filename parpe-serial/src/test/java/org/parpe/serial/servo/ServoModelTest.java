@@ -1,0 +1,53 @@
+package org.parpe.serial.servo;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+
+import org.junit.jupiter.api.Test;
+
+/** Ticks and degrees of the models in the table. */
+class ServoModelTest {
+
+    @Test
+    void dynamixelXHas4096TicksPerTurnCentredAt2048() {
+        ServoModel xl430 = ServoModel.of(ServoProtocol.DXL2, 1060);
+        assertEquals("xl430-w250", xl430.name());
+        assertEquals(0.0, xl430.degrees(2048, 4), 1e-9);
+        assertEquals(90.0, xl430.degrees(3072, 4), 1e-9);
+        assertEquals(-180.0, xl430.degrees(0, 4), 1e-9);
+        assertEquals(1024, xl430.ticks(-90));
+        assertEquals(4095, xl430.ticks(400), "never a goal beyond the servo's range");
+        assertEquals(0, xl430.ticks(-400));
+        assertEquals(1030, ServoModel.named("XM430-W210").number());
+    }
+
+    @Test
+    void sts3215UsesBit15AsTheSign() {
+        ServoModel sts = ServoModel.named("sts3215");
+        assertEquals(777, sts.number());
+        assertEquals(-2048 * 360.0 / 4096 - 10 * 360.0 / 4096, sts.degrees(0x8000 | 10, 2), 1e-9);
+        assertEquals(0.0, sts.degrees(2048, 2), 1e-9);
+        assertEquals(2048 + 512, sts.ticks(45));
+    }
+
+    @Test
+    void xl320AndScsHave1024Ticks() {
+        assertEquals(0.0, ServoModel.of(ServoProtocol.DXL2, 350).degrees(512, 2), 1e-9);
+        ServoModel scs = ServoModel.defaultFor(ServoProtocol.SCS);
+        assertEquals(200.0 / 1024, scs.degreesPerTick(), 1e-12);
+        assertEquals(-100.0, scs.minDegrees(), 1e-9);
+    }
+
+    @Test
+    void unknownModelsAreNull() {
+        assertNull(ServoModel.of(ServoProtocol.DXL2, 777));
+        assertNull(ServoModel.named("ax-12"));
+    }
+
+    @Test
+    void g1TicksAreHundredthsOfADegree() {
+        ServoModel g1 = ServoModel.defaultFor(ServoProtocol.G1);
+        assertEquals(-12.34, g1.degrees(-1234 & 0xFFFF, 2), 1e-9);
+        assertEquals(9000, g1.ticks(120));
+    }
+}

@@ -1,0 +1,129 @@
+package org.parpe.serial.servo.run;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.TimeUnit;
+import java.util.function.BooleanSupplier;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+import org.parpe.core.diag.SourcePos;
+import org.parpe.core.run.RunInfo;
+import org.parpe.core.run.RunOutcome;
+import org.parpe.serial.bus.BusConfig;
+import org.parpe.serial.bus.BusReport;
+import org.parpe.serial.bus.SafeMode;
+import org.parpe.serial.emu.EmulatorListener;
+import org.parpe.serial.emu.EmulatorOptions;
+import org.parpe.serial.link.LinkOpener;
+import org.parpe.serial.link.PtyPair;
+import org.parpe.serial.servo.ServoModel;
+import org.parpe.serial.servo.ServoProtocol;
+import org.parpe.serial.servo.emu.ServoEmulator;
+import org.parpe.serial.servo.profile.HardwareProfile;
+import org.parpe.serial.servo.profile.ServoMapping;
+
+/** The run driver of profile servos against emulated Dynamixel servos over a socat pty: emergency stop and a vanished device. */
+@Timeout(value = 60, unit = TimeUnit.SECONDS)
+class ServoDriverTest {
+    static final int[] MODULES = {0, 1, 2};
+    static final ServoModel XL430 = ServoModel.named("xl430-w250");
+
+    @TempDir
+    Path dir;
+    PtyPair pty;
+    ServoEmulator emulator;
+    ServoDriver driver;
+    final List<String> reports = new CopyOnWriteArrayList<>();
+
+    @BeforeAll
+    static void needSocat() {
+        assumeTrue(PtyPair.available(), "socat is not installed (./test-all installs it)");
+    }
+
+    @BeforeEach
+    void pair() throws Exception {
+        pty = PtyPair.start(dir.resolve("a"), dir.resolve("b"));
+        emulator = ServoEmulator.start(LinkOpener.serial(pty.b().toString(), 1_000_000), XL430,
+                EmulatorOptions.of(11, 12, 13), new EmulatorListener() { });
+    }
+
+    @AfterEach
+    void cleanUp() {
+        if (driver != null) {
+            driver.close();
+        }
+        emulator.close();
+        pty.close();
+    }
+
+    void start(SafeMode onFault) throws Exception {
+        List<ServoMapping> servos = new ArrayList<>();
+        for (int m : MODULES) {
+            servos.add(new ServoMapping(m, 11 + m, XL430, 0, 1, -90, 90, SourcePos.NONE));
+        }
+        HardwareProfile profile = new HardwareProfile("test", ServoProtocol.DXL2, pty.a().toString(), 1_000_000,
+                onFault, HardwareProfile.DEFAULT_WATCHDOG_MS, servos);
+        driver = ServoDriver.open(LinkOpener.serial(pty.a().toString(), 1_000_000),
+                BusConfig.defaults().withBaud(1_000_000), profile, MODULES, BusReport.lines(reports::add));
+        assertEquals(List.of(0, 1, 2), driver.discover());
+        driver.start(new RunInfo(null, MODULES, 0.01));
+    }
+
+    static void await(BooleanSupplier c, String what) throws InterruptedException {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
+        while (!c.getAsBoolean()) {
+            assertTrue(System.nanoTime() < deadline, what + " within 5 s");
+            Thread.sleep(2);
+        }
+    }
+
+    @Test
+    void emergencyStopWithLimpTurnsTheTorqueOff() throws Exception {
+        start(SafeMode.LIMP);
+        driver.accept(0, 0, new double[] {60, 60, 60});
+        await(() -> emulator.angle(13) > 10, "servo 13 moving");
+        driver.emergencyStop();
+        await(() -> emulator.isLimp(11) && emulator.isLimp(12) && emulator.isLimp(13), "every servo limp");
+        assertTrue(reports.contains("bus: emergency stop sent; servos limp (torque off)"), reports.toString());
+        driver.finish(new RunOutcome(RunOutcome.Status.STOPPED, 0, ""));
+    }
+
+    @Test
+    void emergencyStopWithHoldStopsTheServosWhereTheyAre() throws Exception {
+        start(SafeMode.HOLD);
+        driver.accept(0, 0, new double[] {80, 80, 80});
+        await(() -> emulator.angle(12) > 15, "servo 12 moving");
+        driver.emergencyStop();
+        double at = emulator.angle(12);
+        Thread.sleep(300);
+        assertTrue(emulator.angle(12) < 70, "servo 12 stopped near " + at + "°, not at its goal: " + emulator.angle(12));
+        assertFalse(emulator.isLimp(12), "and holds with torque on");
+        driver.finish(new RunOutcome(RunOutcome.Status.STOPPED, 0, ""));
+    }
+
+    @Test
+    void aVanishedDeviceIsReportedAndTheRunResumesWhenItIsBack() throws Exception {
+        start(SafeMode.HOLD);
+        driver.accept(0, 0, new double[] {10, 20, 30});
+        await(() -> Math.abs(emulator.angle(13) - 30) < 0.1, "servo 13 at 30°");
+        pty.unplug();
+        await(() -> reports.stream().anyMatch(r -> r.contains("waiting for the device to return")), "the report");
+        pty.restart();
+        await(() -> reports.stream().anyMatch(r -> r.startsWith("bus: servos back on")), "the servos back");
+        driver.accept(1, 0.01, new double[] {-10, -20, -30});
+        await(() -> Math.abs(emulator.angle(13) + 30) < 0.1, "servo 13 following again");
+        driver.finish(new RunOutcome(RunOutcome.Status.COMPLETED, 0, ""));
+        assertTrue(reports.get(reports.size() - 1).contains("1 disconnects"), reports.toString());
+    }
+}
