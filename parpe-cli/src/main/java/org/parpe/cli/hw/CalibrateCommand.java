@@ -31,7 +31,7 @@ import picocli.CommandLine.Model.CommandSpec;
  * robot in its zero pose and press Enter, then writes each servo's present angle into the
  * profile as its zero offset, and makes the servos hold.
  */
-@Command(name = "calibrate", description = {"Set the zero offsets of a hardware profile from the robot posed by hand.",
+@Command(name = "calibrate", mixinStandardHelpOptions = true, description = {"Set the zero offsets of a hardware profile from the robot posed by hand.",
     "The servos go limp; pose the robot with every joint at 0° and press Enter."})
 public final class CalibrateCommand implements Callable<Integer> {
     @Option(names = "--hardware", required = true, paramLabel = "PROFILE.xml", description = "The profile to calibrate.")

@@ -30,7 +30,7 @@ import picocli.CommandLine.Model.CommandSpec;
  * all, at one baud rate or all common ones (stopping at the first that finds servos); prints ID,
  * model and position of each, and writes a starter hardware profile with one module per servo.
  */
-@Command(name = "scan", description = {"Find Dynamixel 2.0, Feetech STS/SCS or G1 servos on a serial device and write "
+@Command(name = "scan", mixinStandardHelpOptions = true, description = {"Find Dynamixel 2.0, Feetech STS/SCS or G1 servos on a serial device and write "
     + "a starter hardware profile.", "Without --protocol every protocol is tried, without --baud every common baud rate."})
 public final class ScanCommand implements Callable<Integer> {
     /** A reply takes 2.5 ms at 57 600 baud, plus the servo's return delay and a loaded host's latency. */

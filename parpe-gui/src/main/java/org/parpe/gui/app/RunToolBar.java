@@ -1,11 +1,6 @@
 package org.parpe.gui.app;
 
-import java.io.IOException;
-import java.nio.file.Files;
-import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
-import java.util.stream.Stream;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.layout.GridLayout;
@@ -20,6 +15,7 @@ import org.eclipse.swt.widgets.ToolItem;
 import org.parpe.gui.panels.Icons;
 import org.parpe.gui.run.Speed;
 import org.parpe.gui.run.Target;
+import org.parpe.serial.link.SerialLink;
 
 /** The run tool bar: Run, Pause, Stop, emergency stop, speed, target, serial port and hardware profile. */
 final class RunToolBar {
@@ -139,15 +135,7 @@ final class RunToolBar {
     /** Lists the serial devices present now (USB adapters first), keeping what the user typed. */
     void refreshPorts() {
         String typed = port.getText();
-        List<String> found = new ArrayList<>();
-        try (Stream<Path> s = Files.list(Path.of("/dev"))) {
-            s.map(p -> p.toString()).filter(p -> p.matches("/dev/tty(USB|ACM)\\d+|/dev/ttyS[0-3]|/dev/rfcomm\\d+"))
-                    .sorted((a, b) -> Boolean.compare(a.startsWith("/dev/ttyS"), b.startsWith("/dev/ttyS")) != 0
-                            ? Boolean.compare(a.startsWith("/dev/ttyS"), b.startsWith("/dev/ttyS")) : a.compareTo(b))
-                    .forEach(found::add);
-        } catch (IOException | RuntimeException e) {
-            // No /dev to list (not Linux): the user types the port.
-        }
+        List<String> found = SerialLink.availablePorts();
         port.setItems(found.toArray(new String[0]));
         port.setText(typed);
     }

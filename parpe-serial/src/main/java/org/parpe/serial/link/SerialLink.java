@@ -26,6 +26,23 @@ public final class SerialLink implements ByteLink {
     }
 
     /**
+     * The serial devices present now, as the system names them ({@code /dev/ttyUSB0},
+     * {@code COM3}, {@code /dev/cu.usbserial-…}), USB adapters first; empty when none can be listed.
+     */
+    public static java.util.List<String> availablePorts() {
+        try {
+            return java.util.Arrays.stream(SerialPort.getCommPorts())
+                    .map(SerialPort::getSystemPortPath)
+                    .sorted(java.util.Comparator.comparing((String p) -> !p.matches(".*(USB|ACM|usb).*"))
+                            .thenComparing(java.util.Comparator.naturalOrder()))
+                    .distinct()
+                    .toList();
+        } catch (RuntimeException | LinkageError e) {
+            return java.util.List.of(); // no native library for this system: the user types the port
+        }
+    }
+
+    /**
      * Opens {@code path} at {@code baud}.
      *
      * @throws LinkException with a message naming the path and the reason
