@@ -4,27 +4,20 @@ import java.io.IOException;
 import java.util.function.Consumer;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
-import org.parpe.core.run.JointSink;
 import org.parpe.core.run.Run;
-import org.parpe.core.run.RunInfo;
-import org.parpe.core.run.RunOutcome;
 import org.parpe.core.run.RunTarget;
 import org.parpe.core.run.TargetException;
-import org.parpe.core.run.TraceColumns;
 import org.parpe.serial.link.LinkOpener;
 
 /**
  * Modules on a serial bus as a run target, for the command line's {@code --port} and the IDE's
  * Hardware target alike: opens the bus, pings the script's modules before anything moves
  * (reporting the missing ones), and adds the bus as a plant, as the sensor source (priority
- * {@value #PRIORITY}, above the simulator), and as trace columns {@code hw<ID>}. The run is
+ * {@value HostPlant#PRIORITY}, above the simulator), and as trace columns {@code hw<ID>}. The run is
  * paced to the wall clock. A run stopped by the user ends in an emergency stop. Bus problems
  * become warnings located at {@code bus PORT}; notes (counts, recoveries) go to {@code notes}.
  */
 public final class BusTarget implements RunTarget {
-    /** Priority of the bus as a sensor source (the simulator has 5). */
-    public static final int PRIORITY = 10;
-
     private final String port;
     private final BusConfig config;
     private final LinkOpener opener;
@@ -54,9 +47,9 @@ public final class BusTarget implements RunTarget {
         DiagnosticSink diags = run.diagnostics();
         HardwareBus hw;
         try {
-            hw = HardwareBus.open(opener, config, report(where, diags));
+            hw = HardwareBus.open(opener, config, HostPlant.reportTo(where, diags, notes));
         } catch (IOException e) {
-            throw new TargetException(where, "cannot open the serial device: " + message(e));
+            throw new TargetException(where, "cannot open the serial device: " + HostPlant.message(e));
         }
         run.closeAtEnd(hw);
         int[] ids = run.program().moduleIds();
@@ -64,7 +57,7 @@ public final class BusTarget implements RunTarget {
         try {
             d = hw.discover(ids);
         } catch (IOException e) {
-            throw new TargetException(where, "the bus failed while looking for modules: " + message(e));
+            throw new TargetException(where, "the bus failed while looking for modules: " + HostPlant.message(e));
         }
         int[] found = d.found().stream().mapToInt(Integer::intValue).toArray();
         notes.accept("bus " + port + ": " + found.length + " of " + ids.length + " modules answer"
@@ -80,81 +73,12 @@ public final class BusTarget implements RunTarget {
             throw new TargetException(where, "no module answers on " + port + " at " + config.baud()
                     + " baud (is the robot powered and connected, and is the baud rate right?)");
         }
-        run.plant(new StopGuard(hw));
-        run.sensorSource("hardware", hw, PRIORITY);
-        run.traceColumns(measuredColumns(hw, ids));
-        run.requireRealtime();
+        HostPlant.attachTo(run, hw, ids);
         bus = hw;
     }
 
     /** The bus attached last (null before {@link #attach}). */
     public HardwareBus bus() {
         return bus;
-    }
-
-    private BusReport report(SourcePos where, DiagnosticSink diags) {
-        return new BusReport() {
-            @Override
-            public void problem(String message) {
-                diags.warning(where, message.startsWith("bus: ") ? message.substring(5) : message);
-            }
-
-            @Override
-            public void note(String message) {
-                notes.accept(message);
-            }
-        };
-    }
-
-    private static String message(IOException e) {
-        return e.getMessage() == null ? e.toString() : e.getMessage();
-    }
-
-    /** Trace columns {@code hw<ID>}: the angle each module last reported (empty until read). */
-    private static TraceColumns measuredColumns(HardwareBus hw, int[] ids) {
-        String[] names = new String[ids.length];
-        for (int i = 0; i < ids.length; i++) {
-            names[i] = "hw" + ids[i];
-        }
-        return new TraceColumns() {
-            @Override
-            public String[] names() {
-                return names.clone();
-            }
-
-            @Override
-            public void values(double[] out) {
-                for (int i = 0; i < ids.length; i++) {
-                    out[i] = hw.measuredAngle(i);
-                }
-            }
-        };
-    }
-
-    /** The bus as a plant, except that a run stopped by the user ends in an emergency stop. */
-    private static final class StopGuard implements JointSink {
-        private final HardwareBus hw;
-
-        StopGuard(HardwareBus hw) {
-            this.hw = hw;
-        }
-
-        @Override
-        public void start(RunInfo info) {
-            hw.start(info);
-        }
-
-        @Override
-        public void accept(long tick, double time, double[] commanded) {
-            hw.accept(tick, time, commanded);
-        }
-
-        @Override
-        public void finish(RunOutcome outcome) {
-            if (outcome.status() == RunOutcome.Status.STOPPED) {
-                hw.emergencyStopIfRunning();
-            }
-            hw.finish(outcome);
-        }
     }
 }

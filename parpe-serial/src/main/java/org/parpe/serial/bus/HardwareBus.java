@@ -22,7 +22,7 @@ import org.parpe.serial.protocol.Protocol;
  * away it reports at once (the modules stop themselves on their watchdog, in the configured safe
  * mode) and keeps trying to reconnect; when they are back it rediscovers them and resumes.
  */
-public final class HardwareBus implements JointSink, SensorSource, AutoCloseable {
+public final class HardwareBus implements HostPlant, AutoCloseable {
     private static final int BACKOFF_CYCLES = 50;
     private static final int READ_GAP_MS = 2;
     /** Nothing moves yet during discovery, so a module gets more chances than a read in a run. */

@@ -7,13 +7,12 @@ import java.util.Locale;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
 import org.parpe.core.run.Channel;
-import org.parpe.core.run.JointSink;
 import org.parpe.core.run.RunInfo;
 import org.parpe.core.run.RunOutcome;
-import org.parpe.core.run.SensorSource;
 import org.parpe.core.run.SensorTable;
 import org.parpe.serial.bus.BusConfig;
 import org.parpe.serial.bus.BusReport;
+import org.parpe.serial.bus.HostPlant;
 import org.parpe.serial.bus.SafeMode;
 import org.parpe.serial.link.LinkOpener;
 import org.parpe.serial.servo.ServoBus;
@@ -29,7 +28,7 @@ import org.parpe.serial.servo.profile.ServoMapping;
  * voltage) is reported in words. When every servo falls silent or the device goes away, the
  * driver reports it at once, keeps looking and resumes when they are back.
  */
-public final class ServoDriver implements JointSink, SensorSource, AutoCloseable {
+public final class ServoDriver implements HostPlant, AutoCloseable {
     private static final int READ_EVERY_WHEN_BUSY = 10;
     private static final int READ_GAP_MS = 2;
     private static final int WATCHDOG_CHECK_MS = 100;

@@ -5,17 +5,12 @@ import java.util.List;
 import java.util.function.Consumer;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
-import org.parpe.core.run.JointSink;
 import org.parpe.core.run.Run;
-import org.parpe.core.run.RunInfo;
-import org.parpe.core.run.RunOutcome;
 import org.parpe.core.run.RunTarget;
 import org.parpe.core.run.TargetException;
-import org.parpe.core.run.TraceColumns;
 import org.parpe.serial.bus.BusConfig;
-import org.parpe.serial.bus.BusReport;
-import org.parpe.serial.bus.BusTarget;
 import org.parpe.serial.bus.Discovery;
+import org.parpe.serial.bus.HostPlant;
 import org.parpe.serial.link.LinkOpener;
 import org.parpe.serial.servo.profile.HardwareProfile;
 
@@ -24,7 +19,7 @@ import org.parpe.serial.servo.profile.HardwareProfile;
  * {@code --hardware} and the IDE alike: opens the profile's bus, pings the script's servos before
  * anything moves (reporting modules without a servo in the profile and servos that do not
  * answer), and adds the servos as a plant, as the sensor source (priority
- * {@value BusTarget#PRIORITY}, above the simulator) and as trace columns {@code hw<ID>}. The run is
+ * {@value HostPlant#PRIORITY}, above the simulator) and as trace columns {@code hw<ID>}. The run is
  * paced to the wall clock; a run stopped by the user ends in an emergency stop. Bus problems
  * become warnings located at {@code bus PORT}; notes go to {@code notes}.
  */
@@ -60,9 +55,9 @@ public final class ServoTarget implements RunTarget {
         int[] ids = run.program().moduleIds();
         ServoDriver d;
         try {
-            d = ServoDriver.open(opener, config, profile, ids, report(where, diags));
+            d = ServoDriver.open(opener, config, profile, ids, HostPlant.reportTo(where, diags, notes));
         } catch (IOException e) {
-            throw new TargetException(where, "cannot open the serial device: " + message(e));
+            throw new TargetException(where, "cannot open the serial device: " + HostPlant.message(e));
         }
         run.closeAtEnd(d);
         List<Integer> unmapped = d.unmapped();
@@ -74,7 +69,7 @@ public final class ServoTarget implements RunTarget {
         try {
             found = d.discover();
         } catch (IOException e) {
-            throw new TargetException(where, "the bus failed while looking for servos: " + message(e));
+            throw new TargetException(where, "the bus failed while looking for servos: " + HostPlant.message(e));
         }
         int mapped = ids.length - unmapped.size();
         notes.accept("bus " + port + " (" + profile.protocol().key() + ", " + profile.baud() + " baud): " + found.size()
@@ -93,80 +88,12 @@ public final class ServoTarget implements RunTarget {
                     + profile.protocol().key() + "; is the robot powered, and are protocol and baud rate right? "
                     + "parpe scan finds them)");
         }
-        run.plant(new StopGuard(d));
-        run.sensorSource("hardware", d, BusTarget.PRIORITY);
-        run.traceColumns(measuredColumns(d, ids));
-        run.requireRealtime();
+        HostPlant.attachTo(run, d, ids);
         driver = d;
     }
 
     /** The driver attached last (null before {@link #attach}). */
     public ServoDriver driver() {
         return driver;
-    }
-
-    private BusReport report(SourcePos where, DiagnosticSink diags) {
-        return new BusReport() {
-            @Override
-            public void problem(String message) {
-                diags.warning(where, message.startsWith("bus: ") ? message.substring(5) : message);
-            }
-
-            @Override
-            public void note(String message) {
-                notes.accept(message);
-            }
-        };
-    }
-
-    private static String message(IOException e) {
-        return e.getMessage() == null ? e.toString() : e.getMessage();
-    }
-
-    private static TraceColumns measuredColumns(ServoDriver d, int[] ids) {
-        String[] names = new String[ids.length];
-        for (int i = 0; i < ids.length; i++) {
-            names[i] = "hw" + ids[i];
-        }
-        return new TraceColumns() {
-            @Override
-            public String[] names() {
-                return names.clone();
-            }
-
-            @Override
-            public void values(double[] out) {
-                for (int i = 0; i < ids.length; i++) {
-                    out[i] = d.measuredAngle(i);
-                }
-            }
-        };
-    }
-
-    /** The driver as a plant, except that a run stopped by the user ends in an emergency stop. */
-    private static final class StopGuard implements JointSink {
-        private final ServoDriver d;
-
-        StopGuard(ServoDriver d) {
-            this.d = d;
-        }
-
-        @Override
-        public void start(RunInfo info) {
-            d.start(info);
-        }
-
-        @Override
-        public void accept(long tick, double time, double[] commanded) {
-            d.accept(tick, time, commanded);
-        }
-
-        @Override
-        public void finish(RunOutcome outcome) {
-            if (outcome.status() == RunOutcome.Status.STOPPED) {
-                d.emergencyStopIfRunning();
-            }
-            d.finish(outcome);
-        }
     }
 }
