@@ -148,6 +148,8 @@ class DiagnosticsTest {
                     + "<automata><w states=\"s\"/></automata><states><s angles=\"1\"/></states>", "whole number"),
             c("include unreadable", ROBOT + REST + "<include file=\"no/such.xml\"/> <!--E-->", "cannot read included file"),
             c("robot file unreadable", "<robot file=\"no/robot.xml\"/> <!--E-->\n" + REST, "cannot read robot file"),
+            c("dollar before a parameter", ROBOT + "<parameters><amp value=\"1\"/></parameters>" + exprCase("2 * $amp"),
+                    "parameter 'amp' is written without '$': amp"),
             c("robot file with children", "<robot file=\"r.xml\"> <!--E-->\n<structure/></robot>" + REST, "cannot also contain"));
     }
 
@@ -177,5 +179,16 @@ class DiagnosticsTest {
                                 + r.diagnostics().stream().map(Diagnostic::format).toList() + "\n" + text);
             }
         }
+    }
+
+    @org.junit.jupiter.api.Test
+    void aParameterOutsideItsBoundsIsReportedOnceNotAgainAtItsUses() {
+        String text = prog(ROBOT + "<parameters>\n<amp value=\"90\" min=\"0\" max=\"45\"/>\n</parameters>"
+                + exprCase("amp"));
+        LoadResult r = ScriptLoader.loadText(Path.of("case.xml"), text, Map.of());
+        assertFalse(r.ok());
+        org.junit.jupiter.api.Assertions.assertEquals(1, r.errors().size(),
+                () -> r.diagnostics().stream().map(Diagnostic::format).toList().toString());
+        assertTrue(r.errors().get(0).message().contains("must be within [0, 45], got 90"), r.errors().toString());
     }
 }

@@ -153,6 +153,12 @@ final class NameResolver {
         if (l.matches()) {
             return localSensor(t, l);
         }
+        if (scope.parameters().containsKey(name) || scope.macros().containsKey(name)) {
+            String kind = scope.parameters().containsKey(name) ? "parameter" : "macro";
+            error(t, kind + " '" + name + "' is written without '$': " + name + " ('$' is for controls, sensors and"
+                    + " variables such as $time)");
+            return null;
+        }
         List<String> known = new ArrayList<>();
         scope.controls().keySet().forEach(c -> known.add(c));
         known.addAll(Scope.LOGICAL);

@@ -87,9 +87,12 @@ final class Declarations {
         Double value = number(e, "value", true, "parameter '" + name + "'");
         Double min = number(e, "min", false, "parameter '" + name + "'");
         Double max = number(e, "max", false, "parameter '" + name + "'");
-        if (!bounds(e, value, min, max, "parameter '" + name + "'") || value == null || !okName) {
+        if (value == null || !okName) {
             return;
         }
+        // A value outside its bounds is reported here; the parameter is still defined so that its
+        // uses are not reported again as unknown names (one mistake, one message).
+        bounds(e, value, min, max, "parameter '" + name + "'");
         XText label = Attrs.optional(e, "label");
         Parameter p = new Parameter(name, value, min, max, label == null ? "" : label.value(), e.pos());
         if (values.containsKey(name)) {
