@@ -41,8 +41,17 @@ public final class Examples {
 
     /** The example scripts, sorted by name; empty if there are none. */
     public static List<Path> list() {
+        return scriptsIn(folder());
+    }
+
+    /** The tutorial's lesson scripts ({@code examples/tutorial}), sorted by name; empty if there are none. */
+    public static List<Path> lessons() {
         Path dir = folder();
-        if (dir == null) {
+        return dir == null ? List.of() : scriptsIn(dir.resolve("tutorial"));
+    }
+
+    private static List<Path> scriptsIn(Path dir) {
+        if (dir == null || !Files.isDirectory(dir)) {
             return List.of();
         }
         try (Stream<Path> s = Files.list(dir)) {

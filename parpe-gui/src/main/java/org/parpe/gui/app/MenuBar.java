@@ -103,6 +103,14 @@ final class MenuBar {
         for (Path p : list) {
             item(examples, p.getFileName().toString(), 0, () -> ide.files().openConfirmed(p));
         }
+        List<Path> lessons = Examples.lessons();
+        if (!lessons.isEmpty()) {
+            new MenuItem(examples, SWT.SEPARATOR);
+            Menu tutorial = submenu(examples, "&Tutorial lessons");
+            for (Path p : lessons) {
+                item(tutorial, p.getFileName().toString(), 0, () -> ide.files().openConfirmed(p));
+            }
+        }
     }
 
     private void editMenu(Menu m) {

@@ -36,6 +36,7 @@ class TutorialGuiTest {
     void theLessonsAreInOrderAndALessonOpensItsScript() throws Exception {
         Path folder = Examples.tutorialFolder();
         assertNotNull(folder, "docs/tutorial not found beside " + Examples.folder());
+        assertTrue(Examples.lessons().size() >= 10, "File > Examples > Tutorial lessons lists " + Examples.lessons());
         TutorialWindow w = new TutorialWindow(ide.shell(), folder, p -> ide.files().openConfirmed(p));
         w.open();
         try {
