@@ -101,6 +101,11 @@ final class RunActions implements ControlPanel.Target {
         return out;
     }
 
+    /** Opens the Hardware dialog (Run > Hardware…). */
+    void openHardware() {
+        HardwareDialog.open(ide);
+    }
+
     String hardwareState() {
         return hardwareState;
     }
