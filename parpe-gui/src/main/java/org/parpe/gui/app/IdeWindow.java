@@ -397,6 +397,11 @@ public final class IdeWindow {
         hardwareDialog = d;
     }
 
+    /** What the status bar says while the Hardware dialog holds a bus, or null. */
+    String hardwareHeld() {
+        return hardwareHeld;
+    }
+
     /** What the status bar says while the Hardware dialog holds a bus; null when it holds none. */
     void setHardwareHeld(String state) {
         hardwareHeld = state;

@@ -124,6 +124,14 @@ final class RunActions implements ControlPanel.Target {
             }
             return;
         }
+        if (ide.toolbar().target().hardware() && ide.hardwareHeld() != null) {
+            // Two owners of one serial port would garble each other's packets.
+            String why = "the Hardware dialog holds the bus; close it first";
+            ide.status().setMessage("Cannot run: " + why + ".");
+            ide.shell().getDisplay().beep();
+            report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, why));
+            return;
+        }
         Path path = ide.files().pathForLoading();
         String text = ide.editor().document().get();
         LoadResult first = Validator.load(path, text, Map.of());

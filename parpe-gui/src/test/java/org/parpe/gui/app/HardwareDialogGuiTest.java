@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.concurrent.atomic.AtomicReference;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Composite;
@@ -18,6 +19,8 @@ import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.parpe.core.diag.DiagnosticList;
+import org.parpe.core.run.RunOutcome;
+import org.parpe.gui.run.Target;
 import org.parpe.serial.emu.EmulatorListener;
 import org.parpe.serial.emu.EmulatorOptions;
 import org.parpe.serial.link.LinkOpener;
@@ -121,6 +124,15 @@ class HardwareDialogGuiTest {
             assertEquals(pty.a().toString(), p.port());
             assertEquals(3, p.servos().size());
             assertEquals(3, p.servos().get(2).servo());
+
+            Gui.open(ide, Gui.example("hello-snake.xml"));
+            ide.toolbar().setTarget(Target.HARDWARE);
+            AtomicReference<RunOutcome> outcome = new AtomicReference<>();
+            ide.runs().run(false, 1, outcome::set);
+            ide.toolbar().setTarget(Target.SIMULATOR);
+            assertNotNull(outcome.get(), "a hardware run is refused at once while the dialog holds the bus");
+            assertEquals(RunOutcome.Status.ERROR, outcome.get().status());
+            assertTrue(outcome.get().message().contains("Hardware dialog holds the bus"), outcome.get().message());
 
             click(d, "Close");
             Gui.pump(() -> d.shell().isDisposed(), "the dialog to close");
