@@ -61,6 +61,11 @@ final class HardwareDialog {
         port.setItems(SerialLink.availablePorts().toArray(new String[0]));
         port.setText(ide.toolbar().port());
         port.setToolTipText("Serial device of the servo bus (type a path, or pick one)");
+        port.addListener(SWT.MouseDown, e -> {
+            String typed = port.getText();
+            port.setItems(SerialLink.availablePorts().toArray(new String[0]));
+            port.setText(typed);
+        });
         label(top, "Protocol:");
         protocol = new Combo(top, SWT.READ_ONLY);
         protocol.add(ANY);

@@ -87,6 +87,10 @@ class HardwareDialogGuiTest {
             HardwareDialog d = HardwareDialog.open(ide);
             assertTrue(d == HardwareDialog.open(ide), "a second Run > Hardware… brings the same dialog");
             d.portBox().setText(pty.a().toString());
+            // Scan tries every protocol and rate; a pty ignores the rate, so Dynamixel's factory 57 600 answers.
+            click(d, "Scan");
+            Gui.pump(() -> d.table().getItemCount() == 3, "the scan to find three servos");
+            assertTrue(d.message().contains("dxl2 at 57600 baud"), d.message());
             d.protocolBox().select(d.protocolBox().indexOf("dxl2"));
             d.baudBox().setText("1000000");
             click(d, "Connect");
