@@ -1,6 +1,8 @@
 package org.parpe.cli.hw;
 
 import java.io.PrintStream;
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -29,15 +31,36 @@ import org.parpe.serial.servo.profile.ServoMapping;
 import org.parpe.serial.servo.run.ServoDriver;
 
 /**
- * {@code parpe bench --only servo}: Dynamixel 2.0 Sync Write of goal positions for 8 and 55
+ * {@code parpe bench --only servo}. First, for each protocol (dxl2, sts, scs) with 18 and 55
+ * servos at 1 Mbaud, the full host cycle of a run: Sync Write of every goal, then every present
+ * position read back (Sync Read; SCS, which has none, one Read per servo), back to back through
+ * an emulator on a {@link HalfDuplexLine} that gives every byte of both directions its line time.
+ * Printed: cycles per second, the wire limit from the bytes counted on the line per cycle at ten
+ * bits a byte, their ratio, and the CPU time of the driving thread per cycle (ThreadMXBean; reply
+ * decoding runs on the bus's reader thread and is not in it). Then the older Dynamixel 2.0 Sync Write of goal positions for 8 and 55
  * XL430 servos at 1 Mbaud, into the emulator. (1) Sync Writes per second of the whole run driver
  * (bus thread, Sync Reads included) through a line that drains at 1 Mbaud, against the wire
  * limit of the Sync Write alone; (2) raw Sync Writes per second through a socat pty (no baud
- * limit). Replies cost no wire time on the drained line, so (1) is the host's side only. About 12 s.
+ * limit). Replies cost no wire time on the drained line, so (1) is the host's side only. About 30 s in all.
  */
 public final class ServoBenchmark implements Benchmark {
     private static final int BAUD = 1_000_000;
     private static final long PRODUCER_NANOS = 500_000;
+    private static final int[] CYCLE_SERVOS = {18, 55};
+
+    private final double cycleSeconds;
+    private final boolean cyclesOnly;
+
+    /** The full benchmark, about 30 s. */
+    public ServoBenchmark() {
+        this(2.0, false);
+    }
+
+    /** {@code cycleSeconds} per cycle measurement; only those when {@code cyclesOnly} (for a smoke test). */
+    ServoBenchmark(double cycleSeconds, boolean cyclesOnly) {
+        this.cycleSeconds = cycleSeconds;
+        this.cyclesOnly = cyclesOnly;
+    }
 
     @Override
     public String name() {
@@ -46,6 +69,14 @@ public final class ServoBenchmark implements Benchmark {
 
     @Override
     public void run(PrintStream out) throws Exception {
+        for (String model : new String[] {"xl430-w250", "sts3215", "scs0009"}) {
+            for (int n : CYCLE_SERVOS) {
+                cycles(out, ServoModel.named(model), n, cycleSeconds);
+            }
+        }
+        if (cyclesOnly) {
+            return;
+        }
         ServoModel xl430 = ServoModel.named("xl430-w250");
         for (int n : new int[] {8, 55}) {
             // Header, ID, length (7) + instruction (1) + address and data length (4) + n × (ID + 4 bytes) + CRC (2).
@@ -66,6 +97,59 @@ public final class ServoBenchmark implements Benchmark {
             ids[i] = i + 1;
         }
         return ids;
+    }
+
+    /** Full cycles, as fast as the host and the simulated 1 Mbaud line allow. */
+    private static void cycles(PrintStream out, ServoModel model, int n, double seconds) throws Exception {
+        String key = "servo." + model.protocol().key() + ".n" + n + ".";
+        HalfDuplexLine line = HalfDuplexLine.open(BAUD, "line");
+        int[] ids = ids(n);
+        ServoModel[] models = new ServoModel[n];
+        java.util.Arrays.fill(models, model);
+        int[] ticks = new int[n];
+        double[] degrees = new double[n];
+        int[] errors = new int[n];
+        ThreadMXBean mx = ManagementFactory.getThreadMXBean();
+        try (ServoEmulator emu = ServoEmulator.start(line::servos, model, EmulatorOptions.of(ids), new EmulatorListener() { });
+             ControlTableBus bus = new ControlTableBus(model.protocol(), line.host(), BAUD, 20)) {
+            long warmEnd = System.nanoTime() + Math.min(500_000_000L, (long) (seconds * 0.25e9));
+            long k = 0;
+            while (System.nanoTime() < warmEnd) {
+                cycle(bus, model, ids, models, ticks, degrees, errors, n, k++);
+            }
+            long timeouts0 = bus.counters().timeouts();
+            long bytes0 = line.bytes();
+            long cpu0 = mx.getCurrentThreadCpuTime();
+            long t0 = System.nanoTime();
+            long end = t0 + (long) (seconds * 1e9);
+            long cycles = 0;
+            while (System.nanoTime() < end) {
+                cycle(bus, model, ids, models, ticks, degrees, errors, n, k++);
+                cycles++;
+            }
+            long elapsed = System.nanoTime() - t0;
+            long cpu = mx.getCurrentThreadCpuTime() - cpu0;
+            double bytesPerCycle = (double) (line.bytes() - bytes0) / cycles;
+            double fps = cycles / (elapsed / 1e9);
+            double limit = BAUD / 10.0 / bytesPerCycle;
+            print(out, key + "bytes_per_cycle", bytesPerCycle);
+            print(out, key + "cycle_fps", fps);
+            print(out, key + "wire_limit_fps", limit);
+            print(out, key + "fraction", fps / limit);
+            print(out, key + "cpu_us_per_cycle", cpu / 1e3 / cycles);
+            // A timeout costs the read timeout (20 ms): a stall of the host, not the line; shown so
+            // that a low fraction can be told apart from a slow host cycle.
+            print(out, key + "timeouts", bus.counters().timeouts() - timeouts0);
+            checkClean(emu);
+        }
+    }
+
+    /** One cycle: every goal by Sync Write, every present position read back. */
+    private static void cycle(ControlTableBus bus, ServoModel model, int[] ids, ServoModel[] models, int[] ticks,
+                              double[] degrees, int[] errors, int n, long k) throws java.io.IOException {
+        ticks[(int) (k % n)] = model.ticks((k % 1800) / 20.0 - 45);
+        bus.writeGoals(ids, models, ticks, n);
+        bus.readPositions(ids, models, n, degrees, errors);
     }
 
     /** The run driver over a line draining at 1 Mbaud, a producer offering setpoints every 0.5 ms. */

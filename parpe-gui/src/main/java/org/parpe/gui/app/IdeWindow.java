@@ -53,6 +53,8 @@ public final class IdeWindow {
     private final Validator validator;
     private final FileActions files;
     private final RunActions runs;
+    private HardwareDialog hardwareDialog;
+    private volatile String hardwareHeld;
     private Program program;
     private int validations;
     private boolean wasRunning;
@@ -178,7 +180,8 @@ public final class IdeWindow {
                     : running ? (runs.controller().paused() ? "Simulator: paused" : "Simulator: running")
                     : "Simulator: idle";
             status.setSim(simState);
-            status.setHardware(runs.hardwareState());
+            String held = hardwareHeld;
+            status.setHardware(held != null && !running ? held : runs.hardwareState());
             if (st != null) {
                 status.setTime(st.time());
             }
@@ -383,6 +386,25 @@ public final class IdeWindow {
 
     RunActions runs() {
         return runs;
+    }
+
+    /** The open Hardware dialog, or null. */
+    HardwareDialog hardwareDialog() {
+        return hardwareDialog;
+    }
+
+    void setHardwareDialog(HardwareDialog d) {
+        hardwareDialog = d;
+    }
+
+    /** What the status bar says while the Hardware dialog holds a bus, or null. */
+    String hardwareHeld() {
+        return hardwareHeld;
+    }
+
+    /** What the status bar says while the Hardware dialog holds a bus; null when it holds none. */
+    void setHardwareHeld(String state) {
+        hardwareHeld = state;
     }
 
     StatusBar status() {

@@ -176,6 +176,8 @@ final class MenuBar {
         item(m, "&Pause/Resume\tF6", SWT.F6, r::pause);
         item(m, "&Stop\tShift+F5", SWT.SHIFT + SWT.F5, r::stop);
         item(m, "&Emergency Stop\tEsc", 0, r::emergencyStop);
+        new MenuItem(m, SWT.SEPARATOR);
+        item(m, "&Hardware\u2026", 0, () -> HardwareDialog.open(ide));
     }
 
     private void viewMenu(Menu m) {

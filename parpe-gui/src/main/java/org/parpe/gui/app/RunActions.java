@@ -101,6 +101,11 @@ final class RunActions implements ControlPanel.Target {
         return out;
     }
 
+    /** Opens the Hardware dialog (Run > Hardware…). */
+    void openHardware() {
+        HardwareDialog.open(ide);
+    }
+
     String hardwareState() {
         return hardwareState;
     }
@@ -117,6 +122,14 @@ final class RunActions implements ControlPanel.Target {
             if (controller.paused()) {
                 pause();
             }
+            return;
+        }
+        if (ide.toolbar().target().hardware() && ide.hardwareHeld() != null) {
+            // Two owners of one serial port would garble each other's packets.
+            String why = "the Hardware dialog holds the bus; close it first";
+            ide.status().setMessage("Cannot run: " + why + ".");
+            ide.shell().getDisplay().beep();
+            report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, why));
             return;
         }
         Path path = ide.files().pathForLoading();

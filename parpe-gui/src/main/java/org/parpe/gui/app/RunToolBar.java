@@ -91,6 +91,10 @@ final class RunToolBar {
                 profile.setText(chosen);
             }
         });
+        Button hardware = new Button(bar, SWT.PUSH);
+        hardware.setText("Hardware\u2026");
+        hardware.setToolTipText("Find the servos on the port, move them one by one, save a profile (Run > Hardware\u2026)");
+        hardware.addListener(SWT.Selection, e -> actions.openHardware());
         refreshPorts();
         updatePort();
     }

@@ -75,6 +75,10 @@ public final class StatusBar {
         hardware.setText(text);
     }
 
+    public String hardware() {
+        return hardware.getText();
+    }
+
     public void setTime(double t) {
         time.setText(String.format(java.util.Locale.ROOT, "t = %.2f s", t));
     }

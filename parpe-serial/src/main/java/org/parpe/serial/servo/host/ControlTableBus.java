@@ -131,10 +131,15 @@ public final class ControlTableBus implements ServoBus {
         java.util.List<Registers> layouts = layouts(models, n);
         int expected = 0;
         if (protocol == ServoProtocol.SCS) {
-            for (int i = 0; i < n; i++) {
-                Registers r = models[i].registers();
+            for (Registers r : layouts) {
                 int k = putAddress(0, r.present(), r.presentSize());
-                port.request(ids[i], PacketCodec.READ, params, k, ids[i]);
+                expected = 0;
+                for (int i = 0; i < n; i++) {
+                    if (models[i].registers() == r) {
+                        replyIds[expected++] = ids[i];
+                    }
+                }
+                port.requestEach(PacketCodec.READ, params, k, replyIds, expected);
             }
         } else if (layouts.size() == 1 || protocol != ServoProtocol.DXL2) {
             for (Registers r : layouts) {

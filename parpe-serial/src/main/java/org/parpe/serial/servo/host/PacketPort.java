@@ -41,6 +41,15 @@ final class PacketPort {
     private final Thread reader;
     private int expected;
     private int waitingCount;
+    // A chain of requests (requestEach), guarded by lock: the reader sends the next as soon as a reply ends one.
+    private int[] chainIds;
+    private int chainN;
+    private int chainAt = -1;
+    private int chainInstruction;
+    private byte[] chainParams;
+    private int chainLen;
+    private long chainDeadline;
+    private long chainTimeoutNanos;
     private volatile boolean running = true;
     private volatile IOException linkError;
     private volatile long lastWriteNanos;
@@ -105,6 +114,71 @@ final class PacketPort {
             lock.unlock();
         }
         await(id, instruction, params, len, n);
+    }
+
+    /**
+     * The same request to each of servos {@code ids[0…n)} in turn, each answered by that servo:
+     * the next goes out the moment the reply to the one before has arrived, sent by the reader
+     * thread (the caller is not woken between them, which saves a thread switch per servo on buses
+     * without Sync Read); a servo that does not reply in time is skipped.
+     */
+    void requestEach(int instruction, byte[] params, int len, int[] ids, int n) throws IOException {
+        if (n == 0) {
+            return;
+        }
+        long perRequest = TimeUnit.MILLISECONDS.toNanos(timeoutMs)
+                + (long) (codec.packetLength(len) + codec.packetLength(8)) * 10_000_000_000L / baud;
+        lock.lock();
+        try {
+            expected = 0;
+            for (int i = 0; i < n; i++) {
+                expect(ids[i]);
+            }
+            chainIds = ids;
+            chainN = n;
+            chainInstruction = instruction;
+            chainParams = params;
+            chainLen = len;
+            chainTimeoutNanos = perRequest;
+            chainAt = 0;
+            chainDeadline = System.nanoTime() + perRequest;
+            send(ids[0], instruction, params, len);
+            while (chainAt >= 0 && linkError == null) {
+                long left = chainDeadline - System.nanoTime();
+                if (left <= 0) {
+                    // This servo is silent: give up on it and ask the next.
+                    waiting[chainIds[chainAt]] = false;
+                    waitingCount--;
+                    timeouts++;
+                    chainNext();
+                } else {
+                    replied.awaitNanos(left);
+                }
+            }
+        } catch (IOException e) {
+            chainAt = -1;
+            throw e;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } finally {
+            chainAt = -1;
+            lock.unlock();
+            forget();
+        }
+        if (linkError != null) {
+            throw linkError;
+        }
+    }
+
+    /** With {@link #lock} held: the next request of the chain, or its end (the caller is woken). */
+    private void chainNext() throws IOException {
+        if (++chainAt >= chainN) {
+            chainAt = -1;
+            replied.signalAll();
+            return;
+        }
+        chainDeadline = System.nanoTime() + chainTimeoutNanos;
+        send(chainIds[chainAt], chainInstruction, chainParams, chainLen);
     }
 
     /** Whether servo {@code id} replied to the last request. */
@@ -262,6 +336,7 @@ final class PacketPort {
         }
         waiting[p.id] = false;
         got[p.id] = true;
+        boolean chained = chainAt >= 0 && chainIds[chainAt] == p.id;
         int n = Math.min(4, p.length);
         int v = 0;
         for (int i = 0; i < n; i++) {
@@ -270,7 +345,15 @@ final class PacketPort {
         value[p.id] = v;
         size[p.id] = p.length;
         error[p.id] = codec.statusError(p);
-        if (--waitingCount <= 0) {
+        --waitingCount;
+        if (chained) {
+            try {
+                chainNext();
+            } catch (IOException e) {
+                linkError = e;
+                replied.signalAll();
+            }
+        } else if (waitingCount <= 0) {
             replied.signalAll();
         }
     }

@@ -119,6 +119,25 @@ class ServoBusOverPtyTest {
         assertEquals(-33, deg[0], model.degreesPerTick());
     }
 
+    /** SCS reads one servo after the other, each sent as the reply before it arrives: a silent one must not stop the rest. */
+    @Test
+    void scsReadsPastASilentServo() throws Exception {
+        ServoModel model = ServoModel.defaultFor(ServoProtocol.SCS);
+        int[] ids = {1, 2, 9, 3, 4};
+        ServoModel[] ms = models(model, ids.length);
+        start(models(model, IDS.length), EmulatorOptions.of(IDS));
+        double[] deg = new double[ids.length];
+        int[] err = new int[ids.length];
+        long timeouts = bus.counters().timeouts();
+        assertEquals(4, bus.readPositions(ids, ms, ids.length, deg, err));
+        assertEquals(ServoBus.NO_REPLY, err[2], "servo 9 is absent");
+        for (int i : new int[] {0, 1, 3, 4}) {
+            assertEquals(0, err[i], "servo " + ids[i]);
+        }
+        assertEquals(timeouts + 1, bus.counters().timeouts());
+        assertEquals(4, bus.readPositions(ids, ms, ids.length, deg, err), "and again, with no late reply in the way");
+    }
+
     @ParameterizedTest
     @ValueSource(strings = {"dxl2", "sts"})
     void aServoFaultIsReportedInWords(String key) throws Exception {

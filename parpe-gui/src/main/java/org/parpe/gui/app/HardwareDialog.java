@@ -1,0 +1,372 @@
+package org.parpe.gui.app;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.stream.IntStream;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.layout.GridData;
+import org.eclipse.swt.layout.GridLayout;
+import org.eclipse.swt.widgets.Button;
+import org.eclipse.swt.widgets.Combo;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Display;
+import org.eclipse.swt.widgets.FileDialog;
+import org.eclipse.swt.widgets.Label;
+import org.eclipse.swt.widgets.Shell;
+import org.eclipse.swt.widgets.Slider;
+import org.eclipse.swt.widgets.Table;
+import org.eclipse.swt.widgets.TableColumn;
+import org.eclipse.swt.widgets.TableItem;
+import org.parpe.serial.link.SerialLink;
+import org.parpe.serial.servo.ServoModel;
+import org.parpe.serial.servo.ServoProtocol;
+
+/**
+ * Run → Hardware…: connect to a servo bus (port, protocol, baud) or scan for one, see the servos
+ * with their positions and faults, make them limp or hold, jog one with a slider, and save a
+ * starter hardware profile that becomes the tool bar's profile. The bus belongs to a
+ * {@link HardwareSession} (its own thread); this class only touches widgets, on the UI thread.
+ * Closing the dialog closes the bus.
+ */
+final class HardwareDialog {
+    private static final String ANY = "any";
+    private static final int[] BAUDS = {57_600, 115_200, 1_000_000, 2_000_000, 3_000_000, 4_000_000, 500_000, 9_600};
+    /** The slider counts tenths of a degree. */
+    private static final int STEPS_PER_DEG = 10;
+
+    private final IdeWindow ide;
+    private final Shell shell;
+    private final Combo port;
+    private final Combo protocol;
+    private final Combo baud;
+    private final Table table;
+    private final Slider slider;
+    private final Label jogValue;
+    private final Label message;
+    private final HardwareSession session;
+    private List<HardwareSession.Servo> servos = List.of();
+
+    private HardwareDialog(IdeWindow ide) {
+        this.ide = ide;
+        shell = new Shell(ide.shell(), SWT.DIALOG_TRIM | SWT.RESIZE);
+        shell.setText("Hardware");
+        // Reports reach widgets through asyncExec, after the constructor has made them.
+        session = new HardwareSession(new ToUi());
+        shell.setLayout(new GridLayout(1, false));
+        Composite top = row(9);
+        label(top, "Port:");
+        port = new Combo(top, SWT.DROP_DOWN);
+        port.setLayoutData(width(170));
+        port.setItems(SerialLink.availablePorts().toArray(new String[0]));
+        port.setText(ide.toolbar().port());
+        port.setToolTipText("Serial device of the servo bus (type a path, or pick one)");
+        port.addListener(SWT.MouseDown, e -> {
+            String typed = port.getText();
+            port.setItems(SerialLink.availablePorts().toArray(new String[0]));
+            port.setText(typed);
+        });
+        label(top, "Protocol:");
+        protocol = new Combo(top, SWT.READ_ONLY);
+        protocol.add(ANY);
+        for (ServoProtocol p : ServoProtocol.values()) {
+            protocol.add(p.key());
+        }
+        protocol.select(0);
+        label(top, "Baud:");
+        baud = new Combo(top, SWT.DROP_DOWN);
+        baud.setLayoutData(width(100));
+        baud.add(ANY);
+        for (int b : BAUDS) {
+            baud.add(String.valueOf(b));
+        }
+        baud.select(0);
+        button(top, "Connect", "Look for servos with this protocol and baud rate (\"any\": try them all)", this::connect);
+        button(top, "Scan", "Try every protocol at every common baud rate", () -> {
+            protocol.select(0);
+            baud.select(0);
+            connect();
+        });
+
+        table = new Table(shell, SWT.BORDER | SWT.FULL_SELECTION | SWT.SINGLE);
+        table.setHeaderVisible(true);
+        table.setLinesVisible(true);
+        GridData td = new GridData(SWT.FILL, SWT.FILL, true, true);
+        td.heightHint = 220;
+        table.setLayoutData(td);
+        for (String[] c : new String[][] {{"ID", "50"}, {"Model", "170"}, {"Position", "100"}, {"Torque", "80"},
+            {"Status", "260"}}) {
+            TableColumn col = new TableColumn(table, SWT.LEFT);
+            col.setText(c[0]);
+            col.setWidth(Integer.parseInt(c[1]));
+        }
+        table.addListener(SWT.Selection, e -> selected());
+
+        Composite torque = row(5);
+        button(torque, "Limp all", "Torque off for every servo: they can be moved by hand", () -> session.torque(-1, false));
+        button(torque, "Hold all", "Torque on for every servo, holding where they are", () -> session.torque(-1, true));
+        button(torque, "Limp", "Torque off for the selected servo", () -> onSelected(r -> session.torque(r, false)));
+        button(torque, "Hold", "Torque on for the selected servo, holding where it is",
+                () -> onSelected(r -> session.torque(r, true)));
+
+        Composite jog = row(3);
+        label(jog, "Jog selected:");
+        slider = new Slider(jog, SWT.HORIZONTAL);
+        slider.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        slider.setEnabled(false);
+        slider.setToolTipText("Goal position of the selected servo (its torque comes on), within the model's range");
+        slider.addListener(SWT.Selection, e -> jog());
+        jogValue = new Label(jog, SWT.NONE);
+        jogValue.setLayoutData(width(80));
+
+        message = new Label(shell, SWT.WRAP);
+        GridData md = new GridData(SWT.FILL, SWT.CENTER, true, false);
+        md.widthHint = 640;
+        md.heightHint = 40;
+        message.setLayoutData(md);
+        message.setText("Pick the port, then Connect (protocol and baud known) or Scan.");
+
+        Composite bottom = row(2);
+        button(bottom, "Save profile\u2026", "Write a starter hardware profile of these servos and use it for runs",
+                this::chooseProfileFile);
+        button(bottom, "Close", "Close the bus and this dialog", shell::close);
+
+        shell.addListener(SWT.Dispose, e -> {
+            session.close();
+            ide.setHardwareHeld(null);
+        });
+        shell.pack();
+        shell.setSize(Math.max(760, shell.getSize().x), Math.max(520, shell.getSize().y));
+        shell.open();
+    }
+
+    /** Opens the dialog, or brings the open one to the front. */
+    static HardwareDialog open(IdeWindow ide) {
+        HardwareDialog d = ide.hardwareDialog();
+        if (d != null && !d.shell.isDisposed()) {
+            d.shell.setActive();
+            return d;
+        }
+        d = new HardwareDialog(ide);
+        ide.setHardwareDialog(d);
+        return d;
+    }
+
+    private Composite row(int columns) {
+        Composite c = new Composite(shell, SWT.NONE);
+        GridLayout gl = new GridLayout(columns, false);
+        gl.marginWidth = 0;
+        gl.marginHeight = 0;
+        c.setLayout(gl);
+        c.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        return c;
+    }
+
+    private static void label(Composite parent, String text) {
+        new Label(parent, SWT.NONE).setText(text);
+    }
+
+    private static GridData width(int w) {
+        GridData gd = new GridData(SWT.LEFT, SWT.CENTER, false, false);
+        gd.widthHint = w;
+        return gd;
+    }
+
+    private static Button button(Composite parent, String text, String tip, Runnable action) {
+        Button b = new Button(parent, SWT.PUSH);
+        b.setText(text);
+        b.setToolTipText(tip);
+        b.addListener(SWT.Selection, e -> action.run());
+        return b;
+    }
+
+    /** Connect with what the boxes say; a wrong baud is said in the dialog. */
+    void connect() {
+        String p = port.getText().trim();
+        if (p.isEmpty()) {
+            show("Give the serial port first (e.g. /dev/ttyUSB0 or COM3).", true);
+            return;
+        }
+        ServoProtocol proto = protocol.getSelectionIndex() <= 0 ? null : ServoProtocol.of(protocol.getText());
+        Integer rate = null;
+        String b = baud.getText().trim();
+        if (!b.isEmpty() && !b.equalsIgnoreCase(ANY)) {
+            try {
+                rate = Integer.parseInt(b);
+            } catch (NumberFormatException e) {
+                rate = -1;
+            }
+            if (rate <= 0) {
+                show("Baud must be a whole number > 0 or 'any', got '" + b + "'.", true);
+                return;
+            }
+        }
+        ide.toolbar().setPort(p);
+        setServos(List.of());
+        show(proto == null || rate == null ? "Scanning " + p + "\u2026" : "Connecting\u2026", false);
+        session.connect(p, proto, rate, IntStream.rangeClosed(0, 253).toArray());
+    }
+
+    private void onSelected(java.util.function.IntConsumer action) {
+        int r = table.getSelectionIndex();
+        if (r < 0) {
+            show("Select a servo in the table first.", true);
+            return;
+        }
+        action.accept(r);
+    }
+
+    private void selected() {
+        int r = table.getSelectionIndex();
+        ServoModel m = r < 0 || r >= servos.size() ? null : servos.get(r).model();
+        slider.setEnabled(m != null);
+        if (m == null) {
+            jogValue.setText("");
+            return;
+        }
+        slider.setValues(0, 0, (int) Math.round((m.maxDegrees() - m.minDegrees()) * STEPS_PER_DEG) + 1, 1, 1,
+                STEPS_PER_DEG * 5);
+        double deg = servos.get(r).degrees();
+        if (!Double.isNaN(deg)) {
+            slider.setSelection((int) Math.round((deg - m.minDegrees()) * STEPS_PER_DEG));
+        }
+        jogValue.setText(degrees(sliderDegrees(m)));
+    }
+
+    private double sliderDegrees(ServoModel m) {
+        return m.minDegrees() + (double) slider.getSelection() / STEPS_PER_DEG;
+    }
+
+    private void jog() {
+        int r = table.getSelectionIndex();
+        if (r < 0 || r >= servos.size() || servos.get(r).model() == null) {
+            return;
+        }
+        double deg = sliderDegrees(servos.get(r).model());
+        jogValue.setText(degrees(deg));
+        session.jog(r, deg);
+    }
+
+    private void chooseProfileFile() {
+        FileDialog d = new FileDialog(shell, SWT.SAVE);
+        d.setFilterExtensions(new String[] {"*.xml", "*"});
+        d.setFileName("hardware.xml");
+        d.setOverwrite(true);
+        String f = d.open();
+        if (f != null) {
+            saveProfile(Path.of(f));
+        }
+    }
+
+    /** Writes the starter profile (on the bus thread) and selects it in the tool bar's Profile box. */
+    void saveProfile(Path file) {
+        session.saveProfile(file, f -> ui(() -> ide.toolbar().setHardwareProfile(f.toString())));
+    }
+
+    private void show(String text, boolean error) {
+        message.setText(text);
+        message.setForeground(error ? shell.getDisplay().getSystemColor(SWT.COLOR_DARK_RED) : null);
+    }
+
+    private void setServos(List<HardwareSession.Servo> list) {
+        int sel = table.getSelectionIndex();
+        boolean sameRows = list.size() == servos.size();
+        servos = list;
+        if (!sameRows) {
+            table.removeAll();
+            for (int i = 0; i < list.size(); i++) {
+                new TableItem(table, SWT.NONE);
+            }
+        }
+        for (int i = 0; i < list.size(); i++) {
+            HardwareSession.Servo s = list.get(i);
+            table.getItem(i).setText(new String[] {String.valueOf(s.id()),
+                s.model() == null ? "unknown (" + s.modelNumber() + ")" : s.model().label(),
+                Double.isNaN(s.degrees()) ? "?" : degrees(s.degrees()), s.torque() == null ? "?" : s.torque() ? "hold" : "limp",
+                s.status().isEmpty() ? "ok" : s.status()});
+        }
+        if (!sameRows) {
+            selected();
+        } else if (sel >= 0) {
+            table.setSelection(sel);
+        }
+    }
+
+    private static String degrees(double d) {
+        return String.format(Locale.ROOT, "%.1f\u00b0", d);
+    }
+
+    /** Runs {@code r} on the UI thread unless the dialog has gone. */
+    private void ui(Runnable r) {
+        Display display = shell.getDisplay();
+        if (display.isDisposed()) {
+            return;
+        }
+        try {
+            display.asyncExec(() -> {
+                if (!shell.isDisposed()) {
+                    r.run();
+                }
+            });
+        } catch (org.eclipse.swt.SWTException e) {
+            // The display was disposed between the check and the call.
+        }
+    }
+
+    /** The session's reports, moved to the UI thread. */
+    private final class ToUi implements HardwareSession.Listener {
+        @Override
+        public void message(String text, boolean error) {
+            ui(() -> show(text, error));
+        }
+
+        @Override
+        public void connected(List<HardwareSession.Servo> list, ServoProtocol p, int rate, String device) {
+            ui(() -> {
+                setServos(list);
+                ide.setHardwareHeld(list.isEmpty() ? null : String.format(Locale.ROOT,
+                        "Hardware: %d servo%s connected (%s, %s)", list.size(), list.size() == 1 ? "" : "s",
+                        p.key().toUpperCase(Locale.ROOT), device));
+            });
+        }
+
+        @Override
+        public void updated(List<HardwareSession.Servo> list) {
+            ui(() -> setServos(list));
+        }
+    }
+
+    // For tests: the widgets as a user sees them.
+
+    Shell shell() {
+        return shell;
+    }
+
+    HardwareSession sessionForTest() {
+        return session;
+    }
+
+    Table table() {
+        return table;
+    }
+
+    Slider slider() {
+        return slider;
+    }
+
+    String message() {
+        return message.getText();
+    }
+
+    Combo portBox() {
+        return port;
+    }
+
+    Combo protocolBox() {
+        return protocol;
+    }
+
+    Combo baudBox() {
+        return baud;
+    }
+}

@@ -1,0 +1,281 @@
+package org.parpe.gui.app;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
+import org.parpe.serial.bus.BusConfig;
+import org.parpe.serial.link.LinkOpener;
+import org.parpe.serial.servo.ServoBus;
+import org.parpe.serial.servo.ServoModel;
+import org.parpe.serial.servo.ServoProtocol;
+import org.parpe.serial.servo.host.ServoBuses;
+import org.parpe.serial.servo.host.ServoScanner;
+import org.parpe.serial.servo.profile.HardwareProfile;
+import org.parpe.serial.servo.profile.ProfileWriter;
+
+/**
+ * The servo bus held by the Hardware dialog. Every bus operation runs on one background thread
+ * ("hardware-bus"), so the UI never waits for a servo; results come back through the
+ * {@link Listener}, on that thread (the dialog moves them to the UI thread). Positions are read
+ * every {@value #POLL_MS} ms while connected.
+ */
+final class HardwareSession {
+    static final int POLL_MS = 200;
+    private static final int READ_TIMEOUT_MS = 20;
+
+    /** One servo as the dialog shows it; immutable snapshot. */
+    record Servo(int id, int modelNumber, ServoModel model, double degrees, Boolean torque, String status) {
+        Servo with(double deg, Boolean on, String st) {
+            return new Servo(id, modelNumber, model, deg, on, st);
+        }
+    }
+
+    /** What the bus thread reports. */
+    interface Listener {
+        /** A line of progress or an error, in words. */
+        void message(String text, boolean error);
+
+        /** The servos now connected (empty when none), with protocol, baud and port. */
+        void connected(List<Servo> servos, ServoProtocol protocol, int baud, String port);
+
+        /** New positions and states. */
+        void updated(List<Servo> servos);
+    }
+
+    private final Listener listener;
+    private final ScheduledExecutorService worker = Executors.newSingleThreadScheduledExecutor(r -> {
+        Thread t = new Thread(r, "hardware-bus");
+        t.setDaemon(true);
+        return t;
+    });
+    private volatile boolean closing;
+    // Confined to the worker thread:
+    private ServoBus bus;
+    private ServoProtocol protocol;
+    private int baud;
+    private String port;
+    private List<Servo> servos = List.of();
+
+    HardwareSession(Listener listener) {
+        this.listener = listener;
+        worker.scheduleWithFixedDelay(this::poll, POLL_MS, POLL_MS, TimeUnit.MILLISECONDS);
+    }
+
+    /**
+     * Closes any bus held, then looks for servos {@code ids} on {@code port}: with {@code p} and
+     * {@code rate} when given, else every protocol and common baud rate; keeps the bus open.
+     */
+    void connect(String port, ServoProtocol p, Integer rate, int[] ids) {
+        submit(() -> {
+            disconnect();
+            try {
+                scanAndOpen(port, p, rate, ids);
+            } catch (IOException e) {
+                listener.message(e.getMessage() + ".", true);
+                listener.connected(List.of(), p, rate == null ? 0 : rate, port);
+            }
+        });
+    }
+
+    private void scanAndOpen(String port, ServoProtocol p, Integer rate, int[] ids) throws IOException {
+        {
+            ServoScanner.Result found;
+            if (p != null && rate != null) {
+                listener.message(String.format(Locale.ROOT, "Looking for %s servos on %s at %d baud\u2026", p.key(), port,
+                        rate), false);
+                found = new ServoScanner.Result(p, rate, ServoScanner.scanOne(port, p, rate, ids));
+            } else {
+                found = ServoScanner.scan(port, p == null ? ServoScanner.allProtocols() : List.of(p), rate, ids,
+                        (q, r) -> listener.message(String.format(Locale.ROOT, "Scanning: %s at %d baud\u2026", q.key(), r),
+                                false), () -> closing);
+            }
+            if (found == null || found.servos().isEmpty()) {
+                listener.message("No servo answers on " + port + (p == null ? "" : " (" + p.key()
+                        + (rate == null ? "" : " at " + rate + " baud") + ")")
+                        + ". Is the robot powered, and is the adapter for this bus? Try Scan with protocol and baud 'any'.",
+                        true);
+                listener.connected(List.of(), p, rate == null ? 0 : rate, port);
+                return;
+            }
+            open(port, found);
+        }
+    }
+
+    private void open(String port, ServoScanner.Result found) throws IOException {
+        bus = ServoBuses.open(found.protocol(), LinkOpener.serial(port, found.baud()),
+                BusConfig.defaults().withBaud(found.baud()).withReads(READ_TIMEOUT_MS, 1));
+        protocol = found.protocol();
+        baud = found.baud();
+        this.port = port;
+        servos = found.servos().stream().map(f -> new Servo(f.id(), f.modelNumber(), f.model(), f.degrees(), null,
+                f.model() == null ? "model " + f.modelNumber() + " unknown to PARPE" : "")).toList();
+        listener.connected(servos, protocol, baud, port);
+        listener.message(String.format(Locale.ROOT, "%d servo%s on %s (%s at %d baud).", servos.size(),
+                servos.size() == 1 ? "" : "s", port, protocol.key(), baud), false);
+    }
+
+    /** Torque on (hold where it is) or off (limp) for servo {@code row}, or all when {@code row} < 0. */
+    void torque(int row, boolean on) {
+        submit(() -> {
+            if (bus == null) {
+                return;
+            }
+            int[] rows = rows(row);
+            int[] ids = new int[rows.length];
+            ServoModel[] models = new ServoModel[rows.length];
+            for (int i = 0; i < rows.length; i++) {
+                ids[i] = servos.get(rows[i]).id();
+                models[i] = servos.get(rows[i]).model();
+            }
+            if (on) {
+                bus.holdHere(ids, models, ids.length);
+            } else {
+                bus.torque(ids, models, ids.length, false);
+            }
+            Servo[] next = servos.toArray(new Servo[0]);
+            for (int r : rows) {
+                next[r] = next[r].with(next[r].degrees(), on, next[r].status());
+            }
+            servos = List.of(next);
+            listener.updated(servos);
+        });
+    }
+
+    /** Goal position {@code degrees} (servo degrees, clamped to the model's range) for servo {@code row}. */
+    void jog(int row, double degrees) {
+        submit(() -> {
+            if (bus == null || row < 0 || row >= servos.size() || servos.get(row).model() == null) {
+                return;
+            }
+            Servo s = servos.get(row);
+            int[] ids = {s.id()};
+            ServoModel[] models = {s.model()};
+            if (!Boolean.TRUE.equals(s.torque())) {
+                // Torque first: a servo may take "torque on" as "hold where you are", which would undo the goal.
+                bus.torque(ids, models, 1, true);
+                Servo[] next = servos.toArray(new Servo[0]);
+                next[row] = s.with(s.degrees(), true, s.status());
+                servos = List.of(next);
+            }
+            bus.writeGoals(ids, models, new int[] {s.model().ticks(degrees)}, 1);
+        });
+    }
+
+    /** Writes a starter profile of the servos connected to {@code file}; {@code done} gets the file on success. */
+    void saveProfile(Path file, Consumer<Path> done) {
+        submit(() -> {
+            if (bus == null || servos.isEmpty()) {
+                listener.message("No servos connected: connect or scan first.", true);
+                return;
+            }
+            List<ServoScanner.Found> found = servos.stream()
+                    .map(s -> new ServoScanner.Found(s.id(), s.modelNumber(), s.model(), s.degrees())).toList();
+            HardwareProfile profile = ServoScanner.starterProfile(file.toString(), protocol, port, baud, found);
+            try {
+                ProfileWriter.write(profile, file, "written by the PARPE IDE's Hardware dialog: one module per servo, "
+                        + "in ID order; set module, direction and limits, then run parpe calibrate");
+            } catch (IOException e) {
+                listener.message("Cannot write " + file + ": " + e.getMessage(), true);
+                return;
+            }
+            listener.message("Profile written to " + file + " (" + profile.servos().size() + " servos).", false);
+            done.accept(file);
+        });
+    }
+
+    /** Closes the bus and stops the thread; returns at once. */
+    void close() {
+        closing = true;
+        worker.execute(this::disconnect);
+        worker.shutdown();
+    }
+
+    /** Waits up to {@code ms} for the bus to be closed (tests). */
+    boolean awaitClosed(long ms) throws InterruptedException {
+        return worker.awaitTermination(ms, TimeUnit.MILLISECONDS);
+    }
+
+    private int[] rows(int row) {
+        if (row >= 0) {
+            return servos.get(row).model() == null ? new int[0] : new int[] {row};
+        }
+        return java.util.stream.IntStream.range(0, servos.size()).filter(i -> servos.get(i).model() != null).toArray();
+    }
+
+    private void poll() {
+        if (bus == null || closing || servos.isEmpty()) {
+            return;
+        }
+        try {
+            int[] rows = rows(-1);
+            int[] ids = new int[rows.length];
+            ServoModel[] models = new ServoModel[rows.length];
+            for (int i = 0; i < rows.length; i++) {
+                ids[i] = servos.get(rows[i]).id();
+                models[i] = servos.get(rows[i]).model();
+            }
+            double[] deg = new double[rows.length];
+            int[] err = new int[rows.length];
+            bus.readPositions(ids, models, rows.length, deg, err);
+            Servo[] next = servos.toArray(new Servo[0]);
+            for (int i = 0; i < rows.length; i++) {
+                Servo s = next[rows[i]];
+                String status = err[i] == ServoBus.NO_REPLY ? "no reply"
+                        : bus.faulty(err[i]) ? describe(s, err[i]) : "";
+                next[rows[i]] = s.with(err[i] == ServoBus.NO_REPLY ? s.degrees() : deg[i], s.torque(), status);
+            }
+            servos = List.of(next);
+            listener.updated(servos);
+        } catch (IOException e) {
+            lost(e);
+        } catch (RuntimeException e) {
+            listener.message("Internal error while reading the servos: " + e, true);
+        }
+    }
+
+    private String describe(Servo s, int error) throws IOException {
+        String what = bus.describeFault(s.id(), s.model(), error);
+        return what == null ? String.format(Locale.ROOT, "error 0x%02X", error) : what;
+    }
+
+    private void lost(IOException e) {
+        listener.message("The bus failed: " + e.getMessage() + ". Connect again when the device is back.", true);
+        disconnect();
+        listener.connected(List.of(), protocol, baud, port);
+    }
+
+    private void disconnect() {
+        if (bus != null) {
+            bus.close();
+            bus = null;
+        }
+        servos = List.of();
+    }
+
+    /** A bus operation; an error becomes a message, never a stack trace. */
+    private interface BusTask {
+        void run() throws IOException;
+    }
+
+    private void submit(BusTask task) {
+        if (closing) {
+            return;
+        }
+        worker.execute(() -> {
+            try {
+                task.run();
+            } catch (IOException e) {
+                lost(e);
+            } catch (IllegalArgumentException e) {
+                listener.message(e.getMessage(), true);
+            } catch (RuntimeException e) {
+                listener.message("Internal error: " + e + " (please report it)", true);
+            }
+        });
+    }
+}
