@@ -93,4 +93,20 @@ final class Gui {
         assertTrue(d.width > 600 && d.height > 400, "screenshot too small: " + d.width + "x" + d.height);
         assertTrue(Screenshot.distinctColours(d, 64) >= 64, "screenshot " + f + " looks blank");
     }
+
+    /** A new IDE window, automated (no recovery offered), with its settings in {@code home}, after its first validation. */
+    static IdeWindow openIde(Path home) {
+        IdeWindow ide = new IdeWindow(display(), new Prefs(home));
+        ide.open(null, true);
+        pump(() -> ide.validations() > 0, "the first validation");
+        return ide;
+    }
+
+    /** Ends any run of {@code ide} and closes its window (for {@code @AfterAll}). */
+    static void closeIde(IdeWindow ide) {
+        if (ide != null && !ide.shell().isDisposed()) {
+            endRun(ide);
+            ide.shell().dispose();
+        }
+    }
 }

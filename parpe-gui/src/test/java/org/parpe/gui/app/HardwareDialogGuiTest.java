@@ -13,7 +13,6 @@ import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Control;
-import org.eclipse.swt.widgets.Display;
 import org.eclipse.swt.widgets.Event;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
@@ -37,24 +36,18 @@ import org.parpe.serial.servo.profile.ProfileReader;
  * with it). Real widgets under Xvfb, bounded waits, a screenshot as evidence.
  */
 class HardwareDialogGuiTest {
-    private static Display display;
     private static IdeWindow ide;
     private static Path dir;
 
     @BeforeAll
     static void openWindow() throws Exception {
-        display = Gui.display();
         dir = Files.createTempDirectory("parpe-hw-dialog");
-        ide = new IdeWindow(display, new Prefs(dir.resolve("home")));
-        ide.open(null, true);
-        Gui.pump(() -> ide.validations() > 0, "the first validation");
+        ide = Gui.openIde(dir.resolve("home"));
     }
 
     @AfterAll
     static void closeWindow() {
-        if (ide != null && !ide.shell().isDisposed()) {
-            ide.shell().dispose();
-        }
+        Gui.closeIde(ide);
     }
 
     private static Button button(Composite parent, String text) {

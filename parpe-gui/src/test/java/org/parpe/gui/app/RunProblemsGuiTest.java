@@ -8,7 +8,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicReference;
-import org.eclipse.swt.widgets.Display;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
@@ -25,25 +24,18 @@ import org.parpe.gui.run.Target;
  * problems stay there when the text is validated again. Real widgets under Xvfb, bounded waits.
  */
 class RunProblemsGuiTest {
-    private static Display display;
     private static IdeWindow ide;
     private static Path dir;
 
     @BeforeAll
     static void openWindow() throws Exception {
-        display = Gui.display();
         dir = Files.createTempDirectory("parpe-run-problems");
-        ide = new IdeWindow(display, new Prefs(dir.resolve("home")));
-        ide.open(null, true);
-        Gui.pump(() -> ide.validations() > 0, "the first validation");
+        ide = Gui.openIde(dir.resolve("home"));
     }
 
     @AfterAll
     static void closeWindow() {
-        if (ide != null && !ide.shell().isDisposed()) {
-            Gui.endRun(ide);
-            ide.shell().dispose();
-        }
+        Gui.closeIde(ide);
     }
 
     @AfterEach

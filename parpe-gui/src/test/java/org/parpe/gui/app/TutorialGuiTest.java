@@ -6,7 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
-import org.eclipse.swt.widgets.Display;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -14,22 +13,16 @@ import org.parpe.gui.help.TutorialWindow;
 
 /** Help → Tutorial: the lessons in order, a lesson with its picture, and its script opened in the editor. */
 class TutorialGuiTest {
-    private static Display display;
     private static IdeWindow ide;
 
     @BeforeAll
     static void openWindow() throws Exception {
-        display = Gui.display();
-        ide = new IdeWindow(display, new Prefs(Files.createTempDirectory("parpe-tutorial-home")));
-        ide.open(null, true);
-        Gui.pump(() -> ide.validations() > 0, "the first validation");
+        ide = Gui.openIde(Files.createTempDirectory("parpe-tutorial-home"));
     }
 
     @AfterAll
     static void closeWindow() {
-        if (ide != null && !ide.shell().isDisposed()) {
-            ide.shell().dispose();
-        }
+        Gui.closeIde(ide);
     }
 
     @Test
