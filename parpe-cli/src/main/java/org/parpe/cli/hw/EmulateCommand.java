@@ -13,6 +13,7 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.function.Function;
 import org.parpe.cli.UsageException;
 import org.parpe.serial.emu.BusEmulator;
 import org.parpe.serial.emu.EmulatorListener;
@@ -141,31 +142,14 @@ public final class EmulateCommand implements Callable<Integer> {
         }
         err.println("emulate: " + ids.length + " modules (" + ModuleList.format(ids) + ") on " + port + " at " + rate
                 + " baud; Ctrl-C to stop");
-        CountDownLatch done = new CountDownLatch(1);
-        AtomicBoolean closed = new AtomicBoolean();
-        Runnable shutdown = () -> {
-            if (closed.compareAndSet(false, true)) {
-                emu.close();
-                csv.close();
-                BusEmulator.Stats s = emu.stats();
-                err.println(String.format(Locale.ROOT, "emulate: %d frames accepted, %d rejected by CRC, %d dropped "
-                        + "and %d corrupted on purpose, %d replies", s.frames(), s.checksumErrors(), s.dropped(),
-                        s.corrupted(), s.replies()));
-            }
-        };
-        Thread hook = new Thread(shutdown, "emulate-stop");
-        Runtime.getRuntime().addShutdownHook(hook);
-        Thread console = new Thread(() -> console(emu, err, done), "emulate-console");
-        console.setDaemon(true);
-        console.start();
-        if (duration != null) {
-            done.await((long) (duration * 1000), TimeUnit.MILLISECONDS);
-        } else {
-            done.await();
-        }
-        shutdown.run();
-        Runtime.getRuntime().removeShutdownHook(hook);
-        return 0;
+        return serveUntilDone(() -> {
+            emu.close();
+            csv.close();
+            BusEmulator.Stats s = emu.stats();
+            err.println(String.format(Locale.ROOT, "emulate: %d frames accepted, %d rejected by CRC, %d dropped "
+                    + "and %d corrupted on purpose, %d replies", s.frames(), s.checksumErrors(), s.dropped(),
+                    s.corrupted(), s.replies()));
+        }, w -> ConsoleCommands.apply(emu, w), duration, err);
     }
 
     private ServoModel servoModel(ServoProtocol p) throws UsageException {
@@ -200,7 +184,36 @@ public final class EmulateCommand implements Callable<Integer> {
     }
 
     /** Reads commands from standard input; end of input only stops the console, not the emulator. */
-    private static void console(BusEmulator emu, PrintWriter err, CountDownLatch done) {
+    /**
+     * Serves until {@code quit} on standard input, the end of {@code duration} seconds (null: no
+     * end) or Ctrl-C, answering console lines with {@code commands}; then runs
+     * {@code closeAndReport} once, whichever came first. Returns the exit code 0.
+     */
+    static int serveUntilDone(Runnable closeAndReport, Function<String[], String> commands, Double duration,
+                              PrintWriter err) throws InterruptedException {
+        CountDownLatch done = new CountDownLatch(1);
+        AtomicBoolean closed = new AtomicBoolean();
+        Runnable shutdown = () -> {
+            if (closed.compareAndSet(false, true)) {
+                closeAndReport.run();
+            }
+        };
+        Thread hook = new Thread(shutdown, "emulate-stop");
+        Runtime.getRuntime().addShutdownHook(hook);
+        Thread console = new Thread(() -> console(commands, err, done), "emulate-console");
+        console.setDaemon(true);
+        console.start();
+        if (duration != null) {
+            done.await((long) (duration * 1000), TimeUnit.MILLISECONDS);
+        } else {
+            done.await();
+        }
+        shutdown.run();
+        Runtime.getRuntime().removeShutdownHook(hook);
+        return 0;
+    }
+
+    private static void console(Function<String[], String> commands, PrintWriter err, CountDownLatch done) {
         BufferedReader in = new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8));
         try {
             for (String line; (line = in.readLine()) != null; ) {
@@ -210,7 +223,7 @@ public final class EmulateCommand implements Callable<Integer> {
                     return;
                 }
                 if (!w[0].isEmpty()) {
-                    err.println(ConsoleCommands.apply(emu, w));
+                    err.println(commands.apply(w));
                 }
             }
         } catch (IOException e) {

@@ -1,15 +1,9 @@
 package org.parpe.cli.hw;
 
-import java.io.BufferedReader;
 import java.io.IOException;
-import java.io.InputStreamReader;
 import java.io.PrintWriter;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.Locale;
-import java.util.concurrent.CountDownLatch;
-import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicBoolean;
 import org.parpe.cli.UsageException;
 import org.parpe.serial.emu.EmulatorOptions;
 import org.parpe.serial.link.LinkOpener;
@@ -53,49 +47,14 @@ final class ServoEmulation {
         }
         err.println("emulate: " + ids.length + " " + model.protocol().key() + " servos " + model.label() + " ("
                 + ModuleList.format(ids) + ") on " + port + " at " + baud + " baud; Ctrl-C to stop");
-        CountDownLatch done = new CountDownLatch(1);
-        AtomicBoolean closed = new AtomicBoolean();
-        Runnable shutdown = () -> {
-            if (closed.compareAndSet(false, true)) {
-                emu.close();
-                csv.close();
-                ServoEmulator.Stats s = emu.stats();
-                err.println(String.format(Locale.ROOT, "emulate: %d packets accepted, %d rejected by checksum, "
-                        + "%d dropped and %d corrupted on purpose, %d replies", s.packets(), s.checksumErrors(),
-                        s.dropped(), s.corrupted(), s.replies()));
-            }
-        };
-        Thread hook = new Thread(shutdown, "emulate-stop");
-        Runtime.getRuntime().addShutdownHook(hook);
-        Thread console = new Thread(() -> console(emu, done), "emulate-console");
-        console.setDaemon(true);
-        console.start();
-        if (duration != null) {
-            done.await((long) (duration * 1000), TimeUnit.MILLISECONDS);
-        } else {
-            done.await();
-        }
-        shutdown.run();
-        Runtime.getRuntime().removeShutdownHook(hook);
-        return 0;
-    }
-
-    private void console(ServoEmulator emu, CountDownLatch done) {
-        BufferedReader in = new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8));
-        try {
-            for (String line; (line = in.readLine()) != null; ) {
-                String[] w = line.trim().split("\\s+");
-                if (w[0].equals("quit")) {
-                    done.countDown();
-                    return;
-                }
-                if (!w[0].isEmpty()) {
-                    err.println(apply(emu, w));
-                }
-            }
-        } catch (IOException e) {
-            err.println("emulate: standard input: " + e.getMessage());
-        }
+        return EmulateCommand.serveUntilDone(() -> {
+            emu.close();
+            csv.close();
+            ServoEmulator.Stats s = emu.stats();
+            err.println(String.format(Locale.ROOT, "emulate: %d packets accepted, %d rejected by checksum, "
+                    + "%d dropped and %d corrupted on purpose, %d replies", s.packets(), s.checksumErrors(),
+                    s.dropped(), s.corrupted(), s.replies()));
+        }, w -> apply(emu, w), duration, err);
     }
 
     /** Applies one console command; returns the reply to print. */
