@@ -18,6 +18,7 @@ import java.util.Map;
 import java.util.Set;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
+import org.parpe.core.model.Numbers;
 import org.parpe.serial.bus.SafeMode;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.ServoProtocol;
@@ -247,20 +248,18 @@ public final class ProfileReader {
             return fallback;
         }
         boolean whole = Set.of("module", "id", "baud", "watchdog").contains(key);
-        try {
-            double d = Double.parseDouble(v);
-            if (!Double.isFinite(d) || whole && d != Math.rint(d)) {
-                throw new NumberFormatException(v);
-            }
-            if (d < lo || d > hi) {
-                error(at, key + " must be in " + fmt(lo) + ".." + fmt(hi) + ", got " + v);
-                return fallback;
-            }
-            return d;
-        } catch (NumberFormatException e) {
+        // the plain decimals of scripts and robot configurations: Double.parseDouble would take
+        // "1d", "0x1p3" or "NaN"
+        Double d = Numbers.parsePlain(v);
+        if (d == null || whole && d != Math.rint(d)) {
             error(at, key + " must be " + (whole ? "a whole number" : "a number") + ", got '" + v + "'");
             return fallback;
         }
+        if (d < lo || d > hi) {
+            error(at, key + " must be in " + fmt(lo) + ".." + fmt(hi) + ", got " + v);
+            return fallback;
+        }
+        return d;
     }
 
     private static String fmt(double d) {

@@ -102,6 +102,22 @@ class ProfileReaderTest {
                 sorted(messages()));
     }
 
+    @Test
+    void numbersAreThePlainDecimalsOfScripts() throws Exception {
+        assertNull(read("""
+                <hardware protocol="dxl2">
+                  <servo module="0" id="1" zero="1d"/>
+                  <servo module="1" id="0x2"/>
+                  <servo module="2" id="3" zero="\u0663"/>
+                </hardware>
+                """));
+        assertEquals(List.of(
+                "F:2:3: error: zero must be a number, got '1d'",
+                "F:3:3: error: id must be a whole number, got '0x2'",
+                "F:4:3: error: zero must be a number, got '\u0663'"),
+                sorted(messages()));
+    }
+
     static List<String> sorted(List<String> l) {
         return l.stream().sorted(java.util.Comparator.comparingInt(s -> Integer.parseInt(s.split(":")[1]))).toList();
     }
