@@ -22,11 +22,6 @@ public record SourcePos(String file, int line, int column) {
         return new SourcePos(name, 0, 0);
     }
 
-    /** Whether this is a place in a file (line ≥ 1), as opposed to {@link #NONE} or an {@link #origin}. */
-    public boolean located() {
-        return line > 0;
-    }
-
     /** The position {@code delta} columns to the right on the same line. */
     public SourcePos shift(int delta) {
         return new SourcePos(file, line, column + delta);

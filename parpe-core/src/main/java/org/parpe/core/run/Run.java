@@ -30,7 +30,6 @@ public final class Run {
     private final DiagnosticSink diagnostics;
     private final List<Consumer<RunOutcome>> finishers;
     private final List<AutoCloseable> resources;
-    private final boolean realtimeRequired;
 
     private Run(Builder b) {
         this.engine = b.engine;
@@ -39,7 +38,6 @@ public final class Run {
         this.diagnostics = b.diagnostics;
         this.finishers = List.copyOf(b.finishers);
         this.resources = List.copyOf(b.resources);
-        this.realtimeRequired = b.realtimeRequired;
     }
 
     /**
@@ -53,11 +51,6 @@ public final class Run {
     /** The engine: controls ({@link Engine#setControl}) and status are reached through it. */
     public Engine engine() {
         return engine;
-    }
-
-    /** Whether a target must be paced to the wall clock (hardware). */
-    public boolean realtimeRequired() {
-        return realtimeRequired;
     }
 
     /** Asks the run to stop at the next tick boundary; safe from any thread. */

@@ -16,10 +16,14 @@ public final class ScriptRuntimeError extends RuntimeException {
 
     /** An error at {@code pos} during the tick at {@code time}. */
     public ScriptRuntimeError(SourcePos pos, String message, double time) {
-        super(pos + ": error: " + message + String.format(java.util.Locale.ROOT, " (at t=%.6f s)", time), null, false, false);
+        super(new Diagnostic(Severity.ERROR, pos, detail(message, time)).format(), null, false, false);
         this.pos = pos;
         this.time = time;
-        this.detail = message + String.format(java.util.Locale.ROOT, " (at t=%.6f s)", time);
+        this.detail = detail(message, time);
+    }
+
+    private static String detail(String message, double time) {
+        return message + String.format(java.util.Locale.ROOT, " (at t=%.6f s)", time);
     }
 
     /** The error as a located diagnostic (its {@code format()} is this exception's message). */
