@@ -5,6 +5,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.ReentrantLock;
 import org.parpe.serial.link.ByteLink;
+import org.parpe.serial.link.ReadLoop;
 import org.parpe.serial.protocol.FrameDecoder;
 import org.parpe.serial.protocol.FrameEncoder;
 import org.parpe.serial.protocol.Protocol;
@@ -252,36 +253,10 @@ public final class BusMaster implements AutoCloseable {
     }
 
     private void readLoop() {
-        byte[] in = new byte[1024];
-        long idleGap = TimeUnit.MILLISECONDS.toNanos(config.idleGapMs());
-        long lastByte = System.nanoTime();
-        while (running) {
-            int n;
-            try {
-                n = link.read(in);
-            } catch (IOException e) {
-                replyLock.lock();
-                try {
-                    linkError = e;
-                    replied.signalAll();
-                } finally {
-                    replyLock.unlock();
-                }
-                return;
-            }
-            long now = System.nanoTime();
-            replyLock.lock();
-            try {
-                if (n > 0) {
-                    lastByte = now;
-                    rx.feed(in, 0, n);
-                } else if (rx.pending() > 0 && now - lastByte > idleGap) {
-                    rx.idle();
-                }
-            } finally {
-                replyLock.unlock();
-            }
-        }
+        ReadLoop.run(link, () -> running, replyLock, rx, TimeUnit.MILLISECONDS.toNanos(config.idleGapMs()), 1024, e -> {
+            linkError = e;
+            replied.signalAll();
+        });
     }
 
     /** Called by the decoder on the reader thread, with {@link #replyLock} held. */

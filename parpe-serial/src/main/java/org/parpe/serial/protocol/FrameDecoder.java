@@ -1,12 +1,14 @@
 package org.parpe.serial.protocol;
 
+import org.parpe.serial.link.StreamDecoder;
+
 /**
  * Turns a byte stream into frames. It finds the sync bytes, checks the length bound and the CRC,
  * and after any mismatch resynchronises one byte further, so garbage, cut frames and corrupted
  * bytes cost at most the frames they touch. No allocation after construction; any input is
  * accepted (it never throws on bytes). Not thread-safe.
  */
-public final class FrameDecoder {
+public final class FrameDecoder implements StreamDecoder {
     private final FrameHandler handler;
     private final byte[] buf = new byte[2 * Protocol.MAX_FRAME];
     private int start;

@@ -6,6 +6,7 @@ import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.LockSupport;
 import java.util.concurrent.locks.ReentrantLock;
 import org.parpe.serial.link.ByteLink;
+import org.parpe.serial.link.ReadLoop;
 import org.parpe.serial.servo.wire.Packet;
 import org.parpe.serial.servo.wire.PacketCodec;
 import org.parpe.serial.servo.wire.PacketDecoder;
@@ -294,35 +295,10 @@ final class PacketPort {
     }
 
     private void readLoop() {
-        byte[] in = new byte[2048];
-        long lastByte = System.nanoTime();
-        while (running) {
-            int n;
-            try {
-                n = link.read(in);
-            } catch (IOException e) {
-                lock.lock();
-                try {
-                    linkError = e;
-                    replied.signalAll();
-                } finally {
-                    lock.unlock();
-                }
-                return;
-            }
-            long now = System.nanoTime();
-            lock.lock();
-            try {
-                if (n > 0) {
-                    lastByte = now;
-                    rx.feed(in, 0, n);
-                } else if (rx.pending() > 0 && now - lastByte > IDLE_GAP_NANOS) {
-                    rx.idle();
-                }
-            } finally {
-                lock.unlock();
-            }
-        }
+        ReadLoop.run(link, () -> running, lock, rx, IDLE_GAP_NANOS, 2048, e -> {
+            linkError = e;
+            replied.signalAll();
+        });
     }
 
     /** On the reader thread with {@link #lock} held. */

@@ -1,11 +1,13 @@
 package org.parpe.serial.servo.wire;
 
+import org.parpe.serial.link.StreamDecoder;
+
 /**
  * Turns a received byte stream into packets: finds the header, waits for the whole packet,
  * checks its CRC or checksum and after a mismatch resynchronises one byte further. Accepts any
  * input without throwing; no allocation after construction; not thread-safe.
  */
-public abstract class PacketDecoder {
+public abstract class PacketDecoder implements StreamDecoder {
     private final PacketHandler handler;
     /** Received bytes not consumed yet, {@code buf[start … end)}. */
     protected final byte[] buf = new byte[4 * Packet.MAX_PARAMS + 64];
