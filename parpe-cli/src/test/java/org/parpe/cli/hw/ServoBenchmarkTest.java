@@ -18,13 +18,13 @@ class ServoBenchmarkTest {
         for (String p : new String[] {"dxl2", "sts", "scs"}) {
             for (int n : new int[] {18, 55}) {
                 for (String k : new String[] {"bytes_per_cycle", "cycle_fps", "wire_limit_fps", "fraction",
-                    "cpu_us_per_cycle", "timeouts"}) {
+                    "cpu_us_per_cycle", "cpu_us_per_cycle_max", "timeouts"}) {
                     assertTrue(out.contains("servo." + p + ".n" + n + "." + k + "="), () -> k + " missing in\n" + out);
                 }
             }
         }
         // The bytes of a cycle are fixed by the protocols: a wrong count would mean a wrong limit.
         assertTrue(out.contains("servo.dxl2.n18.bytes_per_cycle=406\n"), out);
-        assertEquals(36, out.lines().count());
+        assertEquals(42, out.lines().count());
     }
 }

@@ -51,6 +51,17 @@ public interface ServoBus extends AutoCloseable {
      */
     int readPositions(int[] ids, ServoModel[] models, int n, double[] degrees, int[] errors) throws IOException;
 
+    /**
+     * One full cycle: {@link #writeGoals} then {@link #readPositions}, with the same arguments and
+     * result. A bus may put both requests on the line in one write (one system call and one USB
+     * transfer instead of two); the servos see the same packets in the same order.
+     */
+    default int writeGoalsAndRead(int[] ids, ServoModel[] models, int[] ticks, int n, double[] degrees, int[] errors)
+            throws IOException {
+        writeGoals(ids, models, ticks, n);
+        return readPositions(ids, models, n, degrees, errors);
+    }
+
     /** Whether a status error byte reports a fault of the servo (rather than of the request). */
     boolean faulty(int statusError);
 

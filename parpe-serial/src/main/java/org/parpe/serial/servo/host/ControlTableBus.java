@@ -115,15 +115,25 @@ public final class ControlTableBus implements ServoBus {
     @Override
     public void torque(int[] ids, ServoModel[] models, int n, boolean on) throws IOException {
         for (Registers r : layouts(models, n)) {
-            syncWrite(r.torque(), 1, ids, models, null, on ? 1 : 0, n, r);
+            syncWrite(r.torque(), 1, ids, models, null, on ? 1 : 0, n, r, false);
         }
     }
 
     @Override
     public void writeGoals(int[] ids, ServoModel[] models, int[] ticks, int n) throws IOException {
         for (Registers r : layouts(models, n)) {
-            syncWrite(r.goal(), r.goalSize(), ids, models, ticks, 0, n, r);
+            syncWrite(r.goal(), r.goalSize(), ids, models, ticks, 0, n, r, false);
         }
+    }
+
+    /** The Sync Writes of the goals are held back and leave in one write with the first read request. */
+    @Override
+    public int writeGoalsAndRead(int[] ids, ServoModel[] models, int[] ticks, int n, double[] degrees, int[] errors)
+            throws IOException {
+        for (Registers r : layouts(models, n)) {
+            syncWrite(r.goal(), r.goalSize(), ids, models, ticks, 0, n, r, true);
+        }
+        return readPositions(ids, models, n, degrees, errors);
     }
 
     @Override
@@ -266,9 +276,12 @@ public final class ControlTableBus implements ServoBus {
         return layouts;
     }
 
-    /** One Sync Write of {@code size} bytes at {@code addr} to the servos of layout {@code r}. */
+    /**
+     * One Sync Write of {@code size} bytes at {@code addr} to the servos of layout {@code r}; when
+     * {@code held}, it leaves with the next packet sent (the caller sends one at once).
+     */
     private void syncWrite(int addr, int size, int[] ids, ServoModel[] models, int[] values, int constant, int n,
-                           Registers r) throws IOException {
+                           Registers r, boolean held) throws IOException {
         synchronized (params) {
             int k = putAddress(0, addr, size);
             for (int i = 0; i < n; i++) {
@@ -277,7 +290,11 @@ public final class ControlTableBus implements ServoBus {
                     k = put(k, values == null ? constant : values[i], size);
                 }
             }
-            port.send(PacketCodec.BROADCAST, PacketCodec.SYNC_WRITE, params, k);
+            if (held) {
+                port.hold(PacketCodec.BROADCAST, PacketCodec.SYNC_WRITE, params, k);
+            } else {
+                port.send(PacketCodec.BROADCAST, PacketCodec.SYNC_WRITE, params, k);
+            }
         }
     }
 

@@ -262,13 +262,17 @@ public final class ServoDriver implements HostPlant, AutoCloseable {
         int n = set.pack();
         boolean keepalive = now - lastSend > TimeUnit.MILLISECONDS.toNanos(config.keepaliveMs());
         boolean sent = set.takeGoals(keepalive);
-        if (sent) {
-            bus.writeGoals(set.ids, set.models, set.goals, n);
-            lastSend = now;
-        }
         busyCycles = sent ? busyCycles + 1 : 0;
-        if (busyCycles == 0 || busyCycles % READ_EVERY_WHEN_BUSY == 0) {
-            int answered = bus.readPositions(set.ids, set.models, n, set.degrees, set.errors);
+        boolean read = busyCycles == 0 || busyCycles % READ_EVERY_WHEN_BUSY == 0;
+        if (sent) {
+            lastSend = now;
+            if (!read) {
+                bus.writeGoals(set.ids, set.models, set.goals, n);
+            }
+        }
+        if (read) {
+            int answered = sent ? bus.writeGoalsAndRead(set.ids, set.models, set.goals, n, set.degrees, set.errors)
+                    : bus.readPositions(set.ids, set.models, n, set.degrees, set.errors);
             reads++;
             if (answered > 0) {
                 lastAnswer = System.nanoTime();
