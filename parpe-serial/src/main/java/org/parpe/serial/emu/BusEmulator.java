@@ -2,7 +2,6 @@ package org.parpe.serial.emu;
 
 import java.io.IOException;
 import java.util.Arrays;
-import java.util.Random;
 import java.util.concurrent.locks.LockSupport;
 import org.parpe.serial.link.ByteLink;
 import org.parpe.serial.link.LinkOpener;
@@ -19,11 +18,7 @@ import org.parpe.serial.protocol.Protocol;
  * trips each module's watchdog when no frame arrived for the configured time. If the device
  * goes away, the emulator keeps reopening it.
  */
-public final class BusEmulator implements AutoCloseable {
-    private static final long PHYSICS_NANOS = 2_000_000;
-    private static final long IDLE_GAP_NANOS = 20_000_000;
-    private static final long REOPEN_NANOS = 100_000_000;
-
+public final class BusEmulator extends ServedLine {
     /**
      * Counters of one emulator.
      *
@@ -36,9 +31,6 @@ public final class BusEmulator implements AutoCloseable {
     public record Stats(long frames, long dropped, long corrupted, long checksumErrors, long replies) {
     }
 
-    private final LinkOpener opener;
-    private final EmulatorOptions options;
-    private final EmulatorListener listener;
     private final ServoModule[] modules;
     private final ServoModule[] byId = new ServoModule[256];
     private final double[] view;
@@ -46,32 +38,16 @@ public final class BusEmulator implements AutoCloseable {
     private final FrameDecoder moduleRx = new FrameDecoder(this::onModuleFrame);
     private final FrameEncoder tx = new FrameEncoder();
     private final byte[] scratch = new byte[Protocol.MAX_FRAME];
-    private final Random random;
-    private final Object lock = new Object();
-    private final long startNanos = System.nanoTime();
-    private final Thread rxThread;
-    private final Thread physicsThread;
-    private volatile boolean running = true;
     private volatile long lastFrameNanos = System.nanoTime();
-    private volatile long lastPollNanos = System.nanoTime();
-    private volatile boolean deviceGone;
-    private ByteLink link;
-    private boolean unplugged;
     private int watchdogMs = 50;
     private int safeMode = Protocol.SAFE_HOLD;
     private double speed;
     private long frames;
-    private long dropped;
-    private long corrupted;
     private long replies;
 
     private BusEmulator(LinkOpener opener, ByteLink first, EmulatorOptions options, EmulatorListener listener) {
-        this.opener = opener;
-        this.link = first;
-        this.options = options;
-        this.listener = listener;
+        super(opener, first, options, listener, "emulator");
         this.speed = options.speedDegPerS();
-        this.random = new Random(options.seed());
         int[] ids = options.modules().clone();
         Arrays.sort(ids);
         modules = new ServoModule[ids.length];
@@ -80,18 +56,13 @@ public final class BusEmulator implements AutoCloseable {
             byId[ids[i]] = modules[i];
         }
         view = new double[ids.length];
-        rxThread = new Thread(this::rxLoop, "emulator-rx " + first.name());
-        physicsThread = new Thread(this::physicsLoop, "emulator-physics");
-        rxThread.setDaemon(true);
-        physicsThread.setDaemon(true);
     }
 
     /** Opens the device through {@code opener} (errors surface here) and starts serving it. */
     public static BusEmulator start(LinkOpener opener, EmulatorOptions options, EmulatorListener listener)
             throws IOException {
         BusEmulator e = new BusEmulator(opener, opener.open(), options, listener);
-        e.rxThread.start();
-        e.physicsThread.start();
+        e.serve();
         return e;
     }
 
@@ -145,27 +116,10 @@ public final class BusEmulator implements AutoCloseable {
     /** The counters so far. */
     public Stats stats() {
         synchronized (lock) {
-            return new Stats(frames, dropped, corrupted, moduleRx.checksumErrors(), replies);
+            return new Stats(frames, dropped(), corrupted(), moduleRx.checksumErrors(), replies);
         }
     }
 
-    /** Stops serving and closes the device. */
-    @Override
-    public void close() {
-        running = false;
-        rxThread.interrupt();
-        physicsThread.interrupt();
-        try {
-            rxThread.join(2000);
-            physicsThread.join(2000);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
-        ByteLink l = link;
-        if (l != null) {
-            l.close();
-        }
-    }
 
     private ServoModule module(int id) {
         ServoModule m = id >= 0 && id < byId.length ? byId[id] : null;
@@ -175,80 +129,31 @@ public final class BusEmulator implements AutoCloseable {
         return m;
     }
 
-    private void rxLoop() {
-        byte[] in = new byte[4096];
-        long lastByte = System.nanoTime();
-        while (running) {
-            if (link == null && !reopen()) {
-                continue;
-            }
-            int n;
-            try {
-                n = link.read(in);
-            } catch (IOException e) {
-                if (running) {
-                    listener.onEvent("emulator: " + e.getMessage() + "; waiting for it to come back");
-                }
-                link.close();
-                link = null;
-                deviceGone = true;
-                continue;
-            }
-            long now = System.nanoTime();
-            lastPollNanos = now;
-            if (pluggedIn(now) && n > 0) {
-                lastByte = now;
-                wire.feed(in, 0, n);
-            } else if (now - lastByte > IDLE_GAP_NANOS && (wire.pending() > 0 || moduleRx.pending() > 0)) {
-                wire.idle();
-                moduleRx.idle();
-            }
-        }
+
+    @Override
+    protected void received(byte[] in, int n) {
+        wire.feed(in, 0, n);
     }
 
-    private boolean reopen() {
-        LockSupport.parkNanos(REOPEN_NANOS);
-        try {
-            link = opener.open();
-            deviceGone = false;
-            listener.onEvent("emulator: serving " + link.name() + " again");
-            return true;
-        } catch (IOException e) {
-            return false;
-        }
+    @Override
+    protected boolean partial() {
+        return wire.pending() > 0 || moduleRx.pending() > 0;
     }
 
-    /** Applies the unplug schedule; while unplugged, received bytes fall on the floor. */
-    private boolean pluggedIn(long now) {
-        if (options.unplugAfterS() < 0) {
-            return true;
-        }
-        double t = (now - startNanos) / 1e9;
-        boolean out = t >= options.unplugAfterS()
-                && (options.unplugForS() < 0 || t < options.unplugAfterS() + options.unplugForS());
-        if (out != unplugged) {
-            unplugged = out;
-            listener.onEvent(String.format("emulator: cable %s at %.3f s", out ? "unplugged" : "plugged back", t));
-        }
-        return !out;
+    @Override
+    protected void idle() {
+        wire.idle();
+        moduleRx.idle();
     }
 
     /** Frames as they were sent; the fault injector decides what the modules get. */
     private void onWireFrame(int addr, int cmd, byte[] buf, int off, int len) {
         int total = len + Protocol.OVERHEAD;
-        if (options.drop() > 0 && random.nextDouble() < options.drop()) {
-            synchronized (lock) {
-                dropped++;
-            }
+        if (lose()) {
             return;
         }
         System.arraycopy(buf, off - Protocol.HEADER, scratch, 0, total);
-        if (options.corrupt() > 0 && random.nextDouble() < options.corrupt()) {
-            synchronized (lock) {
-                corrupted++;
-            }
-            scratch[random.nextInt(total)] ^= (byte) (1 + random.nextInt(255));
-        }
+        maybeCorrupt(scratch, 0, total);
         moduleRx.feed(scratch, 0, total);
     }
 
@@ -345,42 +250,28 @@ public final class BusEmulator implements AutoCloseable {
                         .putU8(m.accel(1)).putU8(m.accel(2)).putU8(m.touch).putU8(m.flags())
                         .putU16((int) Math.min(0xFFFF, moduleRx.checksumErrors())).finish();
             }
-            if (options.drop() > 0 && random.nextDouble() < options.drop()) {
-                dropped++;
+            if (lose()) {
                 return;
             }
-            if (options.corrupt() > 0 && random.nextDouble() < options.corrupt()) {
-                corrupted++;
-                tx.buffer()[random.nextInt(n)] ^= (byte) (1 + random.nextInt(255));
-            }
+            maybeCorrupt(tx.buffer(), 0, n);
             replies++;
         }
-        try {
-            link.write(tx.buffer(), 0, n);
-        } catch (IOException e) {
-            // The rx loop notices the lost device on its next read and reopens it.
-        }
+        send(tx.buffer(), 0, n);
     }
 
-    private void physicsLoop() {
-        long last = System.nanoTime();
-        while (running) {
-            LockSupport.parkNanos(PHYSICS_NANOS);
-            long now = System.nanoTime();
-            double dt = (now - last) / 1e9;
-            last = now;
-            // Silence counts only while the rx thread is polling: a stall of this process (GC, a
-            // loaded CI machine) must not look like a silent host, as it could not on a PIC.
-            boolean silent = (deviceGone ? now : lastPollNanos) - lastFrameNanos > watchdogMs * 1_000_000L;
-            synchronized (lock) {
-                for (ServoModule m : modules) {
-                    if (silent && m.watchdogArmed && !m.watchdogTripped) {
-                        m.watchdogTripped = true;
-                        m.safe(safeMode);
-                        listener.onSafeStop(m.id, now, "watchdog");
-                    }
-                    m.step(dt, speed);
+    @Override
+    protected void physics(long now, double dt) {
+        // Silence counts only while the rx thread is polling: a stall of this process (GC, a
+        // loaded CI machine) must not look like a silent host, as it could not on a PIC.
+        boolean silent = listenedAt(now) - lastFrameNanos > watchdogMs * 1_000_000L;
+        synchronized (lock) {
+            for (ServoModule m : modules) {
+                if (silent && m.watchdogArmed && !m.watchdogTripped) {
+                    m.watchdogTripped = true;
+                    m.safe(safeMode);
+                    listener.onSafeStop(m.id, now, "watchdog");
                 }
+                m.step(dt, speed);
             }
         }
     }

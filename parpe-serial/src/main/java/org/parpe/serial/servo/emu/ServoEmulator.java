@@ -2,10 +2,10 @@ package org.parpe.serial.servo.emu;
 
 import java.io.IOException;
 import java.util.Arrays;
-import java.util.Random;
 import java.util.concurrent.locks.LockSupport;
 import org.parpe.serial.emu.EmulatorListener;
 import org.parpe.serial.emu.EmulatorOptions;
+import org.parpe.serial.emu.ServedLine;
 import org.parpe.serial.link.ByteLink;
 import org.parpe.serial.link.LinkOpener;
 import org.parpe.serial.servo.ServoModel;
@@ -23,11 +23,7 @@ import org.parpe.serial.servo.wire.PacketDecoder;
  * corrupted packets are really rejected by CRC or checksum. {@link ServoResponder} executes the
  * instructions; a physics thread moves the motors every 2 ms and runs the Dynamixel Bus Watchdog.
  */
-public final class ServoEmulator implements AutoCloseable {
-    private static final long PHYSICS_NANOS = 2_000_000;
-    private static final long IDLE_GAP_NANOS = 20_000_000;
-    private static final long REOPEN_NANOS = 100_000_000;
-
+public final class ServoEmulator extends ServedLine {
     /**
      * Counters.
      *
@@ -40,9 +36,6 @@ public final class ServoEmulator implements AutoCloseable {
     public record Stats(long packets, long dropped, long corrupted, long checksumErrors, long replies) {
     }
 
-    private final LinkOpener opener;
-    private final EmulatorOptions options;
-    private final EmulatorListener listener;
     private final ServoProtocol protocol;
     private final EmulatedServo[] servos;
     private final PacketCodec codec;
@@ -54,28 +47,14 @@ public final class ServoEmulator implements AutoCloseable {
     private final byte[] outBuf = new byte[64 * 1024];
     private final int[] outEnds = new int[256];
     private int outCount;
-    private final Random random;
-    final Object lock = new Object();
-    private final long startNanos = System.nanoTime();
-    private final Thread rxThread;
-    private final Thread physicsThread;
-    private volatile boolean running = true;
-    private ByteLink link;
-    private boolean unplugged;
     private long packets;
-    private long dropped;
-    private long corrupted;
     private long replies;
 
     private ServoEmulator(LinkOpener opener, ByteLink first, ServoModel[] models, EmulatorOptions options,
                           EmulatorListener listener) {
-        this.opener = opener;
-        this.link = first;
-        this.options = options;
-        this.listener = listener;
+        super(opener, first, options, listener, "servo-emulator");
         this.protocol = models[0].protocol();
         this.codec = protocol == ServoProtocol.DXL2 ? new Dxl2Codec() : new FeetechCodec();
-        this.random = new Random(options.seed());
         int[] ids = options.modules();
         servos = new EmulatedServo[ids.length];
         for (int i = 0; i < ids.length; i++) {
@@ -86,10 +65,6 @@ public final class ServoEmulator implements AutoCloseable {
         responder = new ServoResponder(protocol, codec, servos, this::reply, listener);
         wire = codec.decoder(this::onWirePacket);
         servoRx = codec.decoder(this::onServoPacket);
-        rxThread = new Thread(this::rxLoop, "servo-emulator-rx " + first.name());
-        physicsThread = new Thread(this::physicsLoop, "servo-emulator-physics");
-        rxThread.setDaemon(true);
-        physicsThread.setDaemon(true);
     }
 
     /**
@@ -124,8 +99,7 @@ public final class ServoEmulator implements AutoCloseable {
             }
         }
         ServoEmulator e = new ServoEmulator(opener, opener.open(), models, options, listener);
-        e.rxThread.start();
-        e.physicsThread.start();
+        e.serve();
         return e;
     }
 
@@ -179,27 +153,10 @@ public final class ServoEmulator implements AutoCloseable {
     /** The counters so far. */
     public Stats stats() {
         synchronized (lock) {
-            return new Stats(packets, dropped, corrupted, servoRx.checksumErrors(), replies);
+            return new Stats(packets, dropped(), corrupted(), servoRx.checksumErrors(), replies);
         }
     }
 
-    /** Stops serving and closes the device. */
-    @Override
-    public void close() {
-        running = false;
-        rxThread.interrupt();
-        physicsThread.interrupt();
-        try {
-            rxThread.join(2000);
-            physicsThread.join(2000);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
-        ByteLink l = link;
-        if (l != null) {
-            l.close();
-        }
-    }
 
     private EmulatedServo servo(int id) {
         for (EmulatedServo s : servos) {
@@ -210,77 +167,31 @@ public final class ServoEmulator implements AutoCloseable {
         throw new IllegalArgumentException("servo " + id + " is not emulated");
     }
 
-    private void rxLoop() {
-        byte[] in = new byte[4096];
-        long lastByte = System.nanoTime();
-        while (running) {
-            if (link == null && !reopen()) {
-                continue;
-            }
-            int n;
-            try {
-                n = link.read(in);
-            } catch (IOException e) {
-                if (running) {
-                    listener.onEvent("emulator: " + e.getMessage() + "; waiting for it to come back");
-                }
-                link.close();
-                link = null;
-                continue;
-            }
-            long now = System.nanoTime();
-            if (pluggedIn(now) && n > 0) {
-                lastByte = now;
-                wire.feed(in, 0, n);
-            } else if (now - lastByte > IDLE_GAP_NANOS && (wire.pending() > 0 || servoRx.pending() > 0)) {
-                wire.idle();
-                servoRx.idle();
-            }
-        }
+
+    @Override
+    protected void received(byte[] in, int n) {
+        wire.feed(in, 0, n);
     }
 
-    private boolean reopen() {
-        LockSupport.parkNanos(REOPEN_NANOS);
-        try {
-            link = opener.open();
-            listener.onEvent("emulator: serving " + link.name() + " again");
-            return true;
-        } catch (IOException e) {
-            return false;
-        }
+    @Override
+    protected boolean partial() {
+        return wire.pending() > 0 || servoRx.pending() > 0;
     }
 
-    /** Applies the unplug schedule; while unplugged, received bytes fall on the floor and nothing is sent. */
-    private boolean pluggedIn(long now) {
-        if (options.unplugAfterS() < 0) {
-            return true;
-        }
-        double t = (now - startNanos) / 1e9;
-        boolean out = t >= options.unplugAfterS()
-                && (options.unplugForS() < 0 || t < options.unplugAfterS() + options.unplugForS());
-        if (out != unplugged) {
-            unplugged = out;
-            listener.onEvent(String.format("emulator: cable %s at %.3f s", out ? "unplugged" : "plugged back", t));
-        }
-        return !out;
+    @Override
+    protected void idle() {
+        wire.idle();
+        servoRx.idle();
     }
 
     /** Packets as they were sent; the fault injector decides what the servos get. */
     private void onWirePacket(Packet p) {
-        if (options.drop() > 0 && random.nextDouble() < options.drop()) {
-            synchronized (lock) {
-                dropped++;
-            }
+        if (lose()) {
             return;
         }
         int total = p.rawLength;
         System.arraycopy(p.raw, 0, scratch, 0, total);
-        if (options.corrupt() > 0 && random.nextDouble() < options.corrupt()) {
-            synchronized (lock) {
-                corrupted++;
-            }
-            scratch[random.nextInt(total)] ^= (byte) (1 + random.nextInt(255));
-        }
+        maybeCorrupt(scratch, 0, total);
         servoRx.feed(scratch, 0, total);
     }
 
@@ -295,24 +206,14 @@ public final class ServoEmulator implements AutoCloseable {
             if (options.latencyMs() > 0) {
                 LockSupport.parkNanos((long) (options.latencyMs() * 1e6));
             }
-            ByteLink l = link;
-            if (l == null || unplugged) {
-                return;
-            }
             int from = i == 0 ? 0 : outEnds[i - 1];
-            try {
-                l.write(outBuf, from, outEnds[i] - from);
-            } catch (IOException e) {
-                // The rx loop notices the lost device on its next read and reopens it.
-                return;
-            }
+            send(outBuf, from, outEnds[i] - from);
         }
     }
 
     /** Queues a status packet (called by the responder with {@link #lock} held); faults apply here. */
     private void reply(byte[] packet, int len) {
-        if (options.drop() > 0 && random.nextDouble() < options.drop()) {
-            dropped++;
+        if (lose()) {
             return;
         }
         int from = outCount == 0 ? 0 : outEnds[outCount - 1];
@@ -320,26 +221,17 @@ public final class ServoEmulator implements AutoCloseable {
             return;
         }
         System.arraycopy(packet, 0, outBuf, from, len);
-        if (options.corrupt() > 0 && random.nextDouble() < options.corrupt()) {
-            corrupted++;
-            outBuf[from + random.nextInt(len)] ^= (byte) (1 + random.nextInt(255));
-        }
+        maybeCorrupt(outBuf, from, len);
         outEnds[outCount++] = from + len;
         replies++;
     }
 
-    private void physicsLoop() {
-        long last = System.nanoTime();
-        while (running) {
-            LockSupport.parkNanos(PHYSICS_NANOS);
-            long now = System.nanoTime();
-            double dt = (now - last) / 1e9;
-            last = now;
-            synchronized (lock) {
-                for (EmulatedServo s : servos) {
-                    if (s.step(now, dt, options.speedDegPerS())) {
-                        listener.onSafeStop(s.id, now, "bus watchdog");
-                    }
+    @Override
+    protected void physics(long now, double dt) {
+        synchronized (lock) {
+            for (EmulatedServo s : servos) {
+                if (s.step(now, dt, options.speedDegPerS())) {
+                    listener.onSafeStop(s.id, now, "bus watchdog");
                 }
             }
         }

@@ -64,6 +64,21 @@ class ServoBusOverPtyTest {
                 new EmulatorListener() { });
         bus = ServoBuses.open(models[0].protocol(), LinkOpener.serial(pty.a().toString(), 1_000_000),
                 BusConfig.defaults().withBaud(1_000_000));
+        awaitAnswer(bus, o.modules()[o.modules().length - 1]);
+    }
+
+    /**
+     * Waits until servo {@code id} answers a ping: the first packets of a fresh emulator load its
+     * classes, which on a loaded machine takes longer than a ping's retries.
+     */
+    static void awaitAnswer(ServoBus b, int id) throws InterruptedException {
+        await(() -> {
+            try {
+                return b.ping(id, 1) >= 0;
+            } catch (java.io.IOException e) {
+                throw new AssertionError(e);
+            }
+        });
     }
 
     static ServoModel[] models(ServoModel m, int n) {
@@ -215,6 +230,7 @@ class ServoBusOverPtyTest {
             ServoModel model = ServoModel.defaultFor(ServoProtocol.G1);
             ServoModel[] ms = models(model, IDS.length);
             bus = ServoBuses.open(ServoProtocol.G1, LinkOpener.serial(pty.a().toString(), 115_200), BusConfig.defaults());
+            awaitAnswer(bus, 4);
             assertEquals(1, bus.ping(2, 5));
             assertEquals(-1, bus.ping(7, 1));
             bus.torque(IDS, ms, IDS.length, false);

@@ -56,6 +56,15 @@ class ServoDriverTest {
         pty = PtyPair.start(dir.resolve("a"), dir.resolve("b"));
         emulator = ServoEmulator.start(LinkOpener.serial(pty.b().toString(), 1_000_000), XL430,
                 EmulatorOptions.of(11, 12, 13), new EmulatorListener() { });
+        // The first packets of a fresh emulator load its classes, which on a loaded machine takes
+        // longer than discovery's retries: wait until it answers before the driver looks.
+        try (org.parpe.serial.servo.ServoBus warm = org.parpe.serial.servo.host.ServoBuses.open(ServoProtocol.DXL2,
+                LinkOpener.serial(pty.a().toString(), 1_000_000), BusConfig.defaults().withBaud(1_000_000))) {
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
+            while (warm.ping(13, 1) < 0) {
+                assertTrue(System.nanoTime() < deadline, "the emulator did not answer in 5 s");
+            }
+        }
     }
 
     @AfterEach
