@@ -22,7 +22,7 @@ import org.parpe.serial.protocol.Protocol;
  * away it reports at once (the modules stop themselves on their watchdog, in the configured safe
  * mode) and keeps trying to reconnect; when they are back it rediscovers them and resumes.
  */
-public final class HardwareBus implements HostPlant, AutoCloseable {
+public final class HardwareBus extends BusThread {
     private static final int BACKOFF_CYCLES = 50;
     private static final int READ_GAP_MS = 2;
     /** Nothing moves yet during discovery, so a module gets more chances than a read in a run. */
@@ -31,22 +31,13 @@ public final class HardwareBus implements HostPlant, AutoCloseable {
     private static final long WIRE_POLL_NANOS = 20_000;
     private static final long PROBE_NANOS = 500_000_000;
 
-    private enum State { CONNECTED, SILENT, LINK_LOST }
-
     private final LinkOpener opener;
-    private final BusConfig config;
-    private final BusReport report;
     private final Reply reply = new Reply();
     private volatile BusMaster master;
     private RunBuffers buffers;
     private short[] wire;
     private int first;
     private int[] backoff;
-    private volatile Thread busThread;
-    private volatile boolean running;
-    private volatile boolean estopped;
-    private volatile State state = State.CONNECTED;
-    private long silentSince;
     private int readCursor;
     private int readAttempt;
     private int consecutiveTimeouts;
@@ -57,15 +48,13 @@ public final class HardwareBus implements HostPlant, AutoCloseable {
     private long reads;
     private long readsRetried;
     private long readFailures;
-    private long disconnects;
     private long watchdogResumes;
     private int moduleRxErrors;
 
     private HardwareBus(LinkOpener opener, BusMaster master, BusConfig config, BusReport report) {
+        super(config, report);
         this.opener = opener;
         this.master = master;
-        this.config = config;
-        this.report = report;
     }
 
     /**
@@ -131,10 +120,7 @@ public final class HardwareBus implements HostPlant, AutoCloseable {
         if (buffers == null || !java.util.Arrays.equals(info.moduleIds(), buffers.ids)) {
             throw new IllegalStateException("discover() must be called with the run's module IDs before start");
         }
-        running = true;
-        busThread = new Thread(this::busLoop, "bus " + master.name());
-        busThread.setDaemon(true);
-        busThread.start();
+        startThread("bus " + master.name());
     }
 
     @Override
@@ -160,7 +146,7 @@ public final class HardwareBus implements HostPlant, AutoCloseable {
     public void finish(RunOutcome outcome) {
         stopThread();
         BusMaster m = master;
-        if (!estopped && state == State.CONNECTED && m.linkError() == null) {
+        if (connected() && m.linkError() == null) {
             try {
                 // Three times: these frames get no reply, and a lost final HOLD would let the watchdogs trip.
                 int seq = buffers.take(wire, first, true);
@@ -181,11 +167,11 @@ public final class HardwareBus implements HostPlant, AutoCloseable {
      * Emergency stop: broadcasts ESTOP (three times, in case one is lost); every module stops in
      * the safe mode and ignores setpoints until the next run. Safe to call from any thread.
      */
+    @Override
     public void emergencyStop() {
-        estopped = true;
-        // The bus thread has nothing more to send; stopping it also keeps a port closed at
-        // shutdown from being reported as an unplugged device.
-        stopThread();
+        // Stopping the bus thread also keeps a port closed at shutdown from being reported as an
+        // unplugged device.
+        emergencyStopping();
         BusMaster m = master;
         try {
             for (int i = 0; i < 3; i++) {
@@ -200,21 +186,6 @@ public final class HardwareBus implements HostPlant, AutoCloseable {
         }
     }
 
-    /**
-     * Emergency stop if a run is in progress (between {@link #start} and {@link #finish}); for a
-     * shutdown hook, which also runs after a run that ended normally.
-     */
-    public void emergencyStopIfRunning() {
-        if (busThread != null && !estopped) {
-            emergencyStop();
-        }
-    }
-
-    /** Whether an emergency stop was sent. */
-    public boolean emergencyStopped() {
-        return estopped;
-    }
-
     /** One line of counters for the end of a run. */
     public String summary() {
         BusMaster.Counters c = master.counters();
@@ -222,47 +193,7 @@ public final class HardwareBus implements HostPlant, AutoCloseable {
                 + "%d failed), %d bad checksums received, modules rejected %d frames, %d setpoints clamped, "
                 + "%d watchdog stops, %d disconnects", master.name(), c.framesSent(), reads, c.timeouts(), readsRetried,
                 readFailures, c.checksumErrors(), moduleRxErrors, buffers == null ? 0 : buffers.clamps(),
-                watchdogResumes, disconnects);
-    }
-
-    /** Stops the bus thread and closes the device. */
-    @Override
-    public void close() {
-        stopThread();
-        master.close();
-    }
-
-    private void stopThread() {
-        running = false;
-        Thread t = busThread;
-        if (t != null) {
-            t.interrupt();
-            try {
-                t.join(2000);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-            busThread = null;
-        }
-    }
-
-    private void busLoop() {
-        while (running) {
-            try {
-                switch (state) {
-                    case CONNECTED -> cycle();
-                    case SILENT -> lookForModules();
-                    case LINK_LOST -> reopen();
-                    default -> throw new IllegalStateException(state.name());
-                }
-            } catch (IOException e) {
-                if (running) {
-                    linkLost(e);
-                }
-            } catch (InterruptedException e) {
-                return;
-            }
-        }
+                watchdogResumes, disconnects());
     }
 
     /**
@@ -270,7 +201,8 @@ public final class HardwareBus implements HostPlant, AutoCloseable {
      * come faster than the line carries them, only every {@value #READ_EVERY_WHEN_BUSY}th cycle
      * reads, so that setpoints keep most of the wire.
      */
-    private void cycle() throws IOException, InterruptedException {
+    @Override
+    protected void cycle() throws IOException, InterruptedException {
         int queued = master.pendingOutput();
         if (queued > 0) {
             // The line is still busy with the last frame: wait until it drains rather than queue a stale one.
@@ -359,36 +291,30 @@ public final class HardwareBus implements HostPlant, AutoCloseable {
     }
 
     private void silent() {
-        state = State.SILENT;
-        silentSince = System.nanoTime();
-        disconnects++;
-        report.problem(String.format(java.util.Locale.ROOT, "bus: no reply from any module on %s for %d ms; "
+        silent(String.format(java.util.Locale.ROOT, "bus: no reply from any module on %s for %d ms; "
                 + "modules stop on their watchdog (%s) within %d ms; waiting for them to come back",
                 master.name(), config.deadAfterMs(), config.safeMode().name().toLowerCase(), config.watchdogMs()));
     }
 
-    private void linkLost(IOException e) {
-        state = State.LINK_LOST;
-        silentSince = System.nanoTime();
-        disconnects++;
-        master.close();
-        report.problem("bus: " + e.getMessage() + "; modules stop on their watchdog ("
-                + config.safeMode().name().toLowerCase() + ") within " + config.watchdogMs()
-                + " ms; waiting for the device to return");
+    @Override
+    protected String whileLost() {
+        return "modules stop on their watchdog (" + config.safeMode().name().toLowerCase() + ") within "
+                + config.watchdogMs() + " ms";
     }
 
-    private void reopen() throws InterruptedException {
-        Thread.sleep(config.reconnectMs());
-        try {
-            master = new BusMaster(opener.open(), config);
-            state = State.SILENT;
-        } catch (IOException e) {
-            // Still gone: try again after the next interval.
-        }
+    @Override
+    protected void reopenDevice() throws IOException {
+        master = new BusMaster(opener.open(), config);
+    }
+
+    @Override
+    protected void closeDevice() {
+        master.close();
     }
 
     /** While silent: ping one module per interval; when one answers, rediscover and resume. */
-    private void lookForModules() throws IOException, InterruptedException {
+    @Override
+    protected void lookFor() throws IOException, InterruptedException {
         for (int i = 0; i < buffers.ids.length; i++) {
             if (buffers.ids[i] <= Protocol.MAX_MODULE_ID && master.ping(buffers.ids[i], reply, 1)) {
                 resume();
@@ -406,9 +332,9 @@ public final class HardwareBus implements HostPlant, AutoCloseable {
         java.util.Arrays.fill(backoff, 0);
         readAttempt = 0;
         consecutiveTimeouts = 0;
-        state = State.CONNECTED;
+        double away = resumed();
         report.note(String.format(java.util.Locale.ROOT, "bus: modules back on %s after %.2f s (%d of %d answer%s); "
-                + "resuming", master.name(), (System.nanoTime() - silentSince) / 1e9, d.found().size(),
+                + "resuming", master.name(), away, d.found().size(),
                 buffers.ids.length, d.missing().isEmpty() ? "" : ", missing " + d.missing()));
     }
 }

@@ -12,7 +12,7 @@ import org.parpe.core.run.RunOutcome;
 import org.parpe.core.run.SensorTable;
 import org.parpe.serial.bus.BusConfig;
 import org.parpe.serial.bus.BusReport;
-import org.parpe.serial.bus.HostPlant;
+import org.parpe.serial.bus.BusThread;
 import org.parpe.serial.bus.SafeMode;
 import org.parpe.serial.link.LinkOpener;
 import org.parpe.serial.servo.ServoBus;
@@ -28,31 +28,21 @@ import org.parpe.serial.servo.profile.ServoMapping;
  * voltage) is reported in words. When every servo falls silent or the device goes away, the
  * driver reports it at once, keeps looking and resumes when they are back.
  */
-public final class ServoDriver implements HostPlant, AutoCloseable {
+public final class ServoDriver extends BusThread {
     private static final int READ_EVERY_WHEN_BUSY = 10;
     private static final int READ_GAP_MS = 2;
     private static final int WATCHDOG_CHECK_MS = 100;
 
-    private enum State { CONNECTED, SILENT, LINK_LOST }
-
     private final LinkOpener opener;
-    private final BusConfig config;
     private final HardwareProfile profile;
-    private final BusReport report;
     private volatile ServoBus bus;
     private final ServoSet set;
-    private volatile Thread thread;
-    private volatile boolean running;
-    private volatile boolean estopped;
-    private volatile State state = State.CONNECTED;
-    private long silentSince;
     private long lastAnswer = System.nanoTime();
     private long lastSend;
     private int failedReads;
     private int busyCycles;
     private long reads;
     private long readFailures;
-    private long disconnects;
     private long faults;
     private long watchdogResumes;
     private long lastWatchdogCheck;
@@ -60,11 +50,10 @@ public final class ServoDriver implements HostPlant, AutoCloseable {
 
     private ServoDriver(LinkOpener opener, ServoBus bus, BusConfig config, HardwareProfile profile, int[] runModules,
                         BusReport report) {
+        super(config, report);
         this.opener = opener;
         this.bus = bus;
-        this.config = config;
         this.profile = profile;
-        this.report = report;
         this.set = new ServoSet(profile, runModules);
     }
 
@@ -142,11 +131,7 @@ public final class ServoDriver implements HostPlant, AutoCloseable {
     @Override
     public void start(RunInfo info) {
         lastAnswer = System.nanoTime();
-        running = true;
-        Thread t = new Thread(this::loop, "servo bus " + bus.name());
-        t.setDaemon(true);
-        thread = t;
-        t.start();
+        startThread("servo bus " + bus.name());
     }
 
     @Override
@@ -169,7 +154,7 @@ public final class ServoDriver implements HostPlant, AutoCloseable {
     public void finish(RunOutcome outcome) {
         stopThread();
         ServoBus b = bus;
-        if (!estopped && state == State.CONNECTED && b.linkError() == null) {
+        if (connected() && b.linkError() == null) {
             try {
                 int n = set.pack();
                 for (int i = 0; i < 3 && set.takeGoals(true); i++) {
@@ -184,9 +169,9 @@ public final class ServoDriver implements HostPlant, AutoCloseable {
     }
 
     /** Emergency stop: every driven servo stops in the profile's safe mode. Safe from any thread. */
+    @Override
     public void emergencyStop() {
-        estopped = true;
-        stopThread();
+        emergencyStopping();
         boolean limp = profile.onFault() == SafeMode.LIMP;
         try {
             bus.emergencyStop(set.ids, set.models, set.pack(), limp);
@@ -196,63 +181,18 @@ public final class ServoDriver implements HostPlant, AutoCloseable {
         }
     }
 
-    /** Emergency stop if a run is in progress; for a shutdown hook. */
-    public void emergencyStopIfRunning() {
-        if (thread != null && !estopped) {
-            emergencyStop();
-        }
-    }
-
     /** One line of counters for the end of a run. */
     public String summary() {
         ServoBus.Counters c = bus.counters();
         return String.format(Locale.ROOT, "bus %s (%s): %d packets sent, %d position reads (%d servo timeouts, "
                 + "%d failed), %d bad checksums received, %d setpoints clamped, %d servo faults, %d watchdog stops, "
                 + "%d disconnects", bus.name(), profile.protocol().key(), c.packetsSent(), reads, c.timeouts(),
-                readFailures, c.checksumErrors(), set.clamps(), faults, watchdogResumes, disconnects);
-    }
-
-    @Override
-    public void close() {
-        stopThread();
-        bus.close();
-    }
-
-    private void stopThread() {
-        running = false;
-        Thread t = thread;
-        if (t != null) {
-            t.interrupt();
-            try {
-                t.join(2000);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-            thread = null;
-        }
-    }
-
-    private void loop() {
-        while (running) {
-            try {
-                switch (state) {
-                    case CONNECTED -> cycle();
-                    case SILENT -> lookForServos();
-                    case LINK_LOST -> reopen();
-                    default -> throw new IllegalStateException(state.name());
-                }
-            } catch (IOException e) {
-                if (running) {
-                    linkLost(e);
-                }
-            } catch (InterruptedException e) {
-                return;
-            }
-        }
+                readFailures, c.checksumErrors(), set.clamps(), faults, watchdogResumes, disconnects());
     }
 
     /** Goals when new or due as keepalive, then a read of every servo unless goals saturate the line. */
-    private void cycle() throws IOException, InterruptedException {
+    @Override
+    protected void cycle() throws IOException, InterruptedException {
         int queued = bus.pendingOutput();
         if (queued > 0) {
             LockSupport.parkNanos((long) (queued * 10e9 / config.baud()));
@@ -316,10 +256,7 @@ public final class ServoDriver implements HostPlant, AutoCloseable {
     }
 
     private void silent() {
-        state = State.SILENT;
-        silentSince = System.nanoTime();
-        disconnects++;
-        report.problem(String.format(Locale.ROOT, "bus: no reply from any servo on %s for %d ms; %s; waiting for them "
+        silent(String.format(Locale.ROOT, "bus: no reply from any servo on %s for %d ms; %s; waiting for them "
                 + "to come back", bus.name(), config.deadAfterMs(), safeStop()));
     }
 
@@ -336,36 +273,34 @@ public final class ServoDriver implements HostPlant, AutoCloseable {
         return "servos hold their last goal";
     }
 
-    private void linkLost(IOException e) {
-        state = State.LINK_LOST;
-        silentSince = System.nanoTime();
-        disconnects++;
-        bus.close();
-        report.problem("bus: " + e.getMessage() + "; servos hold their last goal"
-                + (profile.watchdogMs() > 0 ? " or stop on their own watchdog" : "") + "; waiting for the device to return");
+
+    @Override
+    protected String whileLost() {
+        return "servos hold their last goal" + (profile.watchdogMs() > 0 ? " or stop on their own watchdog" : "");
     }
 
-    private void reopen() throws InterruptedException {
-        Thread.sleep(config.reconnectMs());
-        try {
-            bus = org.parpe.serial.servo.host.ServoBuses.open(profile.protocol(), opener, config);
-            state = State.SILENT;
-        } catch (IOException e) {
-            // Still gone: try again after the next interval.
-        }
+    @Override
+    protected void reopenDevice() throws IOException {
+        bus = org.parpe.serial.servo.host.ServoBuses.open(profile.protocol(), opener, config);
+    }
+
+    @Override
+    protected void closeDevice() {
+        bus.close();
     }
 
     /** While silent: ping one servo per interval; when one answers, set up again and resume. */
-    private void lookForServos() throws IOException, InterruptedException {
+    @Override
+    protected void lookFor() throws IOException, InterruptedException {
         int n = set.pack();
         for (int i = 0; i < n; i++) {
             if (bus.ping(set.ids[i], 1) >= 0) {
                 setUp();
                 lastAnswer = System.nanoTime();
                 failedReads = 0;
-                state = State.CONNECTED;
+                double away = resumed();
                 report.note(String.format(Locale.ROOT, "bus: servos back on %s after %.2f s; resuming", bus.name(),
-                        (System.nanoTime() - silentSince) / 1e9));
+                        away));
                 return;
             }
             Thread.sleep(Math.max(1, config.reconnectMs() / Math.max(1, n)));
