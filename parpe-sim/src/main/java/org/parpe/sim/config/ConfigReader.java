@@ -1,23 +1,13 @@
 package org.parpe.sim.config;
 
-import com.fasterxml.jackson.core.JsonLocation;
-import com.fasterxml.jackson.core.JsonParser;
-import com.fasterxml.jackson.core.JsonProcessingException;
-import com.fasterxml.jackson.core.JsonToken;
-import com.fasterxml.jackson.dataformat.xml.XmlFactory;
-import com.fasterxml.jackson.dataformat.xml.deser.FromXmlParser;
-import java.io.IOException;
-import java.io.InputStream;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
-import org.parpe.core.model.Numbers;
-import org.parpe.core.xml.InputFiles;
+import org.parpe.core.xml.FlatXmlFile;
 
 /**
  * Reads a robot configuration file (format in {@code docs/simulator.md}) with Jackson's XML
@@ -29,89 +19,45 @@ final class ConfigReader {
     private static final Set<String> CONNECT_ATTRS = Set.of("from", "to", "orientation");
     private static final Set<String> ROOT_ATTRS = Set.of("part", "x", "y", "roll", "pitch", "yaw", "height");
 
-    private final String file;
-    private final DiagnosticSink diags;
+    private final FlatXmlFile xml;
     private final List<PartSpec> parts = new ArrayList<>();
     private final List<Connection> connections = new ArrayList<>();
     private RootPose root;
-    private boolean ok = true;
 
-    private ConfigReader(String file, DiagnosticSink diags) {
-        this.file = file;
-        this.diags = diags;
+    private ConfigReader(FlatXmlFile xml) {
+        this.xml = xml;
     }
 
     /** Reads {@code path}; returns {@code null} after reporting errors. */
     static RobotConfig read(Path path, DiagnosticSink diags) {
-        ConfigReader r = new ConfigReader(path.toString(), diags);
-        try (InputStream in = InputFiles.open(path);
-             JsonParser p = new XmlFactory().createParser(in)) {
-            r.document(p);
-        } catch (JsonProcessingException e) {
-            JsonLocation l = e.getLocation();
-            r.error(l == null ? new SourcePos(r.file, 1, 1) : r.pos(l), "not well-formed XML: " + e.getOriginalMessage());
-        } catch (IOException e) {
-            r.error(new SourcePos(r.file, 1, 1), "cannot read the configuration file: " + e.getMessage());
+        FlatXmlFile xml = FlatXmlFile.read(path, "robot configuration", "robot-config",
+                "a <robot-config> element with <part> and <connect> elements, or a generator such as snake", diags);
+        if (xml.root() == null) {
+            return null;
         }
-        if (!r.ok) {
+        ConfigReader r = new ConfigReader(xml);
+        for (String name : xml.rootAttributes().keySet()) {
+            xml.error(xml.root(), "unexpected '" + name + "' in <robot-config>; expected <part>, <connect> or <root>");
+        }
+        for (FlatXmlFile.Element e : xml.children()) {
+            switch (e.name()) {
+                case "part" -> r.part(e.attributes(), e.at());
+                case "connect" -> r.connect(e.attributes(), e.at());
+                case "root" -> r.root(e.attributes(), e.at());
+                default -> xml.error(e.at(), "unknown element <" + e.name() + ">; expected <part>, <connect> or <root>");
+            }
+        }
+        if (!xml.ok()) {
             return null;
         }
         if (r.root == null && !r.parts.isEmpty()) {
             r.root = new RootPose(r.parts.get(0).name(), 0, 0, 0, 0, 0);
         }
         if (r.parts.isEmpty()) {
-            r.error(new SourcePos(r.file, 1, 1), "the configuration defines no <part>");
+            xml.error(xml.start(), "the configuration defines no <part>");
             return null;
         }
         return new RobotConfig(path.toString(), r.parts, r.connections, r.root);
-    }
-
-    private void document(JsonParser p) throws IOException {
-        if (p.nextToken() != JsonToken.START_OBJECT) {
-            error(new SourcePos(file, 1, 1), "expected a <robot-config> element with <part> and <connect> elements");
-            return;
-        }
-        String rootName = p instanceof FromXmlParser x ? x.getStaxReader().getLocalName() : "robot-config";
-        if (!"robot-config".equals(rootName)) {
-            error(pos(p.currentTokenLocation()), "<" + rootName + "> is not a robot configuration"
-                    + ("program".equals(rootName) ? " but a PARSL script" : "")
-                    + "; expected a <robot-config> element with <part> and <connect> elements, or a generator such as snake");
-            return;
-        }
-        while (p.nextToken() == JsonToken.FIELD_NAME) {
-            String name = p.currentName();
-            SourcePos at = pos(p.currentTokenLocation());
-            JsonToken t = p.nextToken();
-            if (t != JsonToken.START_OBJECT) {
-                error(at, "unexpected '" + name + "' in <robot-config>; expected <part>, <connect> or <root>");
-                continue;
-            }
-            Map<String, String> attrs = attributes(p, name, at);
-            switch (name) {
-                case "part" -> part(attrs, at);
-                case "connect" -> connect(attrs, at);
-                case "root" -> root(attrs, at);
-                default -> error(at, "unknown element <" + name + ">; expected <part>, <connect> or <root>");
-            }
-        }
-    }
-
-    /** The attributes of the current element; nested elements are errors. */
-    private Map<String, String> attributes(JsonParser p, String element, SourcePos at) throws IOException {
-        Map<String, String> attrs = new LinkedHashMap<>();
-        while (p.nextToken() == JsonToken.FIELD_NAME) {
-            String key = p.currentName();
-            JsonToken t = p.nextToken();
-            if (t == JsonToken.START_OBJECT || t == JsonToken.START_ARRAY) {
-                error(pos(p.currentTokenLocation()), "<" + element + "> may not contain <" + key + ">");
-                p.skipChildren();
-            } else if (!key.isEmpty()) {
-                attrs.put(key, p.getText().trim());
-            } else if (!p.getText().isBlank()) {
-                error(at, "<" + element + "> may not contain text");
-            }
-        }
-        return attrs;
     }
 
     private void part(Map<String, String> a, SourcePos at) {
@@ -187,48 +133,18 @@ final class ConfigReader {
     }
 
     private boolean known(Map<String, String> a, Set<String> allowed, String element, SourcePos at) {
-        boolean good = true;
-        for (String k : a.keySet()) {
-            if (!allowed.contains(k)) {
-                error(at, "<" + element + "> has no attribute '" + k + "'; it takes "
-                        + String.join(", ", allowed.stream().sorted().toList()));
-                good = false;
-            }
-        }
-        return good;
+        return xml.known(a, allowed, element, at);
     }
 
     private boolean required(Map<String, String> a, SourcePos at, String element, String... keys) {
-        boolean good = true;
-        for (String k : keys) {
-            if (!a.containsKey(k) || a.get(k).isEmpty()) {
-                error(at, "<" + element + "> needs the attribute '" + k + "'");
-                good = false;
-            }
-        }
-        return good;
+        return xml.required(a, at, element, keys);
     }
 
     private double number(Map<String, String> a, String key, double fallback, SourcePos at, boolean whole) {
-        String v = a.get(key);
-        if (v == null) {
-            return fallback;
-        }
-        // the plain decimals of scripts: Double.parseDouble would take "1d", "0x1p3" or "NaN"
-        Double d = Numbers.parsePlain(v);
-        if (d == null || whole && d != Math.rint(d)) {
-            error(at, key + " must be " + (whole ? "a whole number" : "a number") + ", got '" + v + "'");
-            return fallback;
-        }
-        return d;
-    }
-
-    private SourcePos pos(JsonLocation l) {
-        return new SourcePos(file, Math.max(1, l.getLineNr()), Math.max(1, l.getColumnNr()));
+        return xml.number(a, key, fallback, at, whole, Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY);
     }
 
     private void error(SourcePos at, String message) {
-        diags.error(at, message);
-        ok = false;
+        xml.error(at, message);
     }
 }

@@ -1,147 +1,63 @@
 package org.parpe.serial.servo.profile;
 
-import com.fasterxml.jackson.core.JsonLocation;
-import com.fasterxml.jackson.core.JsonParser;
-import com.fasterxml.jackson.core.JsonProcessingException;
-import com.fasterxml.jackson.core.JsonToken;
-import com.fasterxml.jackson.dataformat.xml.XmlFactory;
-import com.fasterxml.jackson.dataformat.xml.deser.FromXmlParser;
-import java.io.IOException;
-import java.io.InputStream;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
-import org.parpe.core.model.Numbers;
+import org.parpe.core.xml.FlatXmlFile;
 import org.parpe.serial.bus.SafeMode;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.ServoProtocol;
 import org.parpe.serial.servo.wire.PacketCodec;
 
 /**
- * Reads a hardware profile (docs/hardware-profile.md) with Jackson's XML streaming parser,
- * keeping the place of every element: each problem is reported at {@code FILE:LINE:COL}, all of
- * them, not only the first.
+ * Reads a hardware profile (docs/hardware-profile.md) through {@link FlatXmlFile}, which keeps
+ * the place of every element: each problem is reported at {@code FILE:LINE:COL}, all of them,
+ * not only the first.
  */
 public final class ProfileReader {
     private static final Set<String> ROOT_ATTRS = Set.of("protocol", "port", "baud", "on-fault", "watchdog");
     private static final Set<String> SERVO_ATTRS = Set.of("module", "id", "model", "zero", "direction", "min", "max");
     /** Joint range given to a servo whose profile names none. */
     private static final double DEFAULT_LIMIT = 90;
+    private static final Set<String> WHOLE = Set.of("module", "id", "baud", "watchdog");
 
-    private final String file;
-    private final DiagnosticSink diags;
+    private final FlatXmlFile xml;
     private final List<ServoMapping> servos = new ArrayList<>();
-    private final Map<String, String> root = new LinkedHashMap<>();
-    private final List<Map<String, String>> servoAttrs = new ArrayList<>();
-    private final List<SourcePos> servoPlaces = new ArrayList<>();
-    private SourcePos rootPos;
-    private boolean ok = true;
+    private final Map<String, String> root;
+    private final SourcePos rootPos;
 
-    private ProfileReader(String file, DiagnosticSink diags) {
-        this.file = file;
-        this.diags = diags;
+    private ProfileReader(FlatXmlFile xml) {
+        this.xml = xml;
+        this.root = xml.rootAttributes();
+        this.rootPos = xml.root();
     }
 
     /** Reads {@code path}; returns null after reporting every problem to {@code diags}. */
     public static HardwareProfile read(Path path, DiagnosticSink diags) {
-        ProfileReader r = new ProfileReader(path.toString(), diags);
-        try (InputStream in = Files.newInputStream(path);
-             JsonParser p = new XmlFactory().createParser(in)) {
-            r.document(p);
-        } catch (JsonProcessingException e) {
-            JsonLocation l = e.getLocation();
-            r.error(l == null ? new SourcePos(r.file, 1, 1) : r.pos(l), "not well-formed XML: " + e.getOriginalMessage());
-            return null;
-        } catch (IOException e) {
-            r.error(new SourcePos(r.file, 1, 1), "cannot read the hardware profile: " + e.getMessage());
+        FlatXmlFile xml = FlatXmlFile.read(path, "hardware profile", "hardware",
+                "a <hardware protocol=\"…\"> element with <servo> elements", diags);
+        if (xml.root() == null) {
             return null;
         }
-        if (r.rootPos == null) {
-            return null;
-        }
-        HardwareProfile profile = r.build();
-        return r.ok ? profile : null;
+        HardwareProfile profile = new ProfileReader(xml).build(path.toString());
+        return xml.ok() ? profile : null;
     }
 
-    private void document(JsonParser p) throws IOException {
-        if (p.nextToken() != JsonToken.START_OBJECT) {
-            error(new SourcePos(file, 1, 1), "expected a <hardware> element with <servo> elements");
-            return;
-        }
-        SourcePos start = pos(p.currentTokenLocation());
-        String rootName = p instanceof FromXmlParser x ? x.getStaxReader().getLocalName() : "hardware";
-        if (!"hardware".equals(rootName)) {
-            error(start, "<" + rootName + "> is not a hardware profile"
-                    + ("program".equals(rootName) ? " but a PARSL script" : "")
-                    + "; expected a <hardware protocol=\"…\"> element with <servo> elements");
-            return;
-        }
-        rootPos = start;
-        while (p.nextToken() == JsonToken.FIELD_NAME) {
-            String name = p.currentName();
-            SourcePos at = pos(p.currentTokenLocation());
-            boolean element = isElement(p, name);
-            JsonToken t = p.nextToken();
-            if (t == JsonToken.START_OBJECT) {
-                Map<String, String> attrs = attributes(p, name);
-                if (name.equals("servo")) {
-                    servoAttrs.add(attrs);
-                    servoPlaces.add(at);
-                } else {
-                    error(at, "unknown element <" + name + "> in <hardware>; expected <servo>");
-                }
-            } else if (name.equals("servo")) {
-                error(at, "<servo> needs the attributes module and id");
-            } else if (name.isEmpty()) {
-                if (!p.getText().isBlank()) {
-                    error(at, "<hardware> may not contain text");
-                }
-            } else if (element || t == JsonToken.START_ARRAY) {
-                error(at, "unknown element <" + name + "> in <hardware>; expected <servo>");
-                p.skipChildren();
+    private HardwareProfile build(String file) {
+        xml.known(root, ROOT_ATTRS, "hardware", rootPos);
+        List<FlatXmlFile.Element> servoElements = new ArrayList<>();
+        for (FlatXmlFile.Element e : xml.children()) {
+            if (e.name().equals("servo")) {
+                servoElements.add(e);
             } else {
-                root.put(name, p.getText() == null ? "" : p.getText().trim());
+                error(e.at(), "unknown element <" + e.name() + "> in <hardware>; expected <servo>");
             }
         }
-    }
-
-    /** Whether the field just read is a child element (an empty one looks like an attribute otherwise). */
-    private static boolean isElement(JsonParser p, String name) {
-        if (!(p instanceof FromXmlParser x)) {
-            return false;
-        }
-        javax.xml.stream.XMLStreamReader r = x.getStaxReader();
-        return r.getEventType() == javax.xml.stream.XMLStreamConstants.START_ELEMENT && name.equals(r.getLocalName());
-    }
-
-    /** The attributes of the current element; nested elements and text are errors. */
-    private Map<String, String> attributes(JsonParser p, String element) throws IOException {
-        Map<String, String> attrs = new LinkedHashMap<>();
-        while (p.nextToken() == JsonToken.FIELD_NAME) {
-            String key = p.currentName();
-            SourcePos at = pos(p.currentTokenLocation());
-            JsonToken t = p.nextToken();
-            if (t == JsonToken.START_OBJECT || t == JsonToken.START_ARRAY) {
-                error(at, "<" + element + "> may not contain <" + key + ">");
-                p.skipChildren();
-            } else if (!key.isEmpty()) {
-                attrs.put(key, p.getText() == null ? "" : p.getText().trim());
-            } else if (!p.getText().isBlank()) {
-                error(at, "<" + element + "> may not contain text");
-            }
-        }
-        return attrs;
-    }
-
-    private HardwareProfile build() {
-        known(root, ROOT_ATTRS, "hardware", rootPos);
         String key = root.get("protocol");
         ServoProtocol protocol = key == null ? null : ServoProtocol.of(key.toLowerCase(Locale.ROOT));
         if (key == null) {
@@ -160,19 +76,19 @@ public final class ProfileReader {
             error(rootPos, "port is empty; give the serial device (e.g. /dev/ttyUSB0) or leave the attribute out");
         }
         if (protocol != null) {
-            for (int i = 0; i < servoAttrs.size(); i++) {
-                servo(protocol, servoAttrs.get(i), servoPlaces.get(i));
+            for (FlatXmlFile.Element e : servoElements) {
+                servo(protocol, e.attributes(), e.at());
             }
-            if (servoAttrs.isEmpty()) {
+            if (servoElements.isEmpty()) {
                 error(rootPos, "the profile maps no module: add <servo module=\"0\" id=\"1\"/> elements");
             }
         }
-        return ok ? new HardwareProfile(file, protocol, port, baud, fault.equals("limp") ? SafeMode.LIMP : SafeMode.HOLD,
+        return xml.ok() ? new HardwareProfile(file, protocol, port, baud, fault.equals("limp") ? SafeMode.LIMP : SafeMode.HOLD,
                 watchdog, servos) : null;
     }
 
     private void servo(ServoProtocol protocol, Map<String, String> a, SourcePos at) {
-        if (!known(a, SERVO_ATTRS, "servo", at) || !required(a, at, "module", "id")) {
+        if (!xml.known(a, SERVO_ATTRS, "servo", at) || !xml.required(a, at, "servo", "module", "id")) {
             return;
         }
         int maxId = protocol == ServoProtocol.G1 ? 254 : PacketCodec.BROADCAST - 1;
@@ -218,60 +134,16 @@ public final class ProfileReader {
         servos.add(m);
     }
 
-    private boolean known(Map<String, String> a, Set<String> allowed, String element, SourcePos at) {
-        boolean good = true;
-        for (String k : a.keySet()) {
-            if (!allowed.contains(k)) {
-                error(at, "<" + element + "> has no attribute '" + k + "'; it takes "
-                        + String.join(", ", allowed.stream().sorted().toList()));
-                good = false;
-            }
-        }
-        return good;
-    }
-
-    private boolean required(Map<String, String> a, SourcePos at, String... keys) {
-        boolean good = true;
-        for (String k : keys) {
-            if (!a.containsKey(k) || a.get(k).isEmpty()) {
-                error(at, "<servo> needs the attribute '" + k + "'");
-                good = false;
-            }
-        }
-        return good;
-    }
-
-    /** A number attribute within {@code lo…hi}; whole when both bounds are whole and the fallback is. */
+    /** A number attribute within {@code lo…hi}; whole for IDs, baud and watchdog. */
     private double number(Map<String, String> a, String key, double fallback, SourcePos at, double lo, double hi) {
-        String v = a.get(key);
-        if (v == null) {
-            return fallback;
-        }
-        boolean whole = Set.of("module", "id", "baud", "watchdog").contains(key);
-        // the plain decimals of scripts and robot configurations: Double.parseDouble would take
-        // "1d", "0x1p3" or "NaN"
-        Double d = Numbers.parsePlain(v);
-        if (d == null || whole && d != Math.rint(d)) {
-            error(at, key + " must be " + (whole ? "a whole number" : "a number") + ", got '" + v + "'");
-            return fallback;
-        }
-        if (d < lo || d > hi) {
-            error(at, key + " must be in " + fmt(lo) + ".." + fmt(hi) + ", got " + v);
-            return fallback;
-        }
-        return d;
+        return xml.number(a, key, fallback, at, WHOLE.contains(key), lo, hi);
     }
 
     private static String fmt(double d) {
-        return d == Math.rint(d) ? String.valueOf((long) d) : String.format(Locale.ROOT, "%.2f", d);
-    }
-
-    private SourcePos pos(JsonLocation l) {
-        return new SourcePos(file, Math.max(1, l.getLineNr()), Math.max(1, l.getColumnNr()));
+        return FlatXmlFile.plain(d);
     }
 
     private void error(SourcePos at, String message) {
-        diags.error(at, message);
-        ok = false;
+        xml.error(at, message);
     }
 }

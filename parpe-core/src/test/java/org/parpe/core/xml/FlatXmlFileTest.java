@@ -1,0 +1,91 @@
+package org.parpe.core.xml;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.parpe.core.diag.DiagnosticList;
+
+/** The reader of the small attribute-only XML files (robot configurations, hardware profiles). */
+class FlatXmlFileTest {
+    @TempDir
+    Path dir;
+
+    private FlatXmlFile read(String text, DiagnosticList d) throws Exception {
+        Path f = dir.resolve("f.xml");
+        Files.writeString(f, text);
+        return FlatXmlFile.read(f, "thing list", "things", "a <things> element with <thing> elements", d);
+    }
+
+    private static List<String> lines(DiagnosticList d) {
+        return d.all().stream().map(x -> x.pos().line() + ":" + x.pos().column() + " " + x.message()).toList();
+    }
+
+    @Test
+    void rootAttributesAndChildrenKeepTheirPlaces() throws Exception {
+        DiagnosticList d = new DiagnosticList();
+        FlatXmlFile f = read("<things size=\" 3 \">\n  <thing a=\"1\" b=\"x\"/>\n  <other/>\n</things>\n", d);
+        assertTrue(f.ok(), lines(d).toString());
+        assertEquals(Map.of("size", "3"), f.rootAttributes());
+        assertEquals(2, f.children().size());
+        assertEquals("thing", f.children().get(0).name());
+        assertEquals(Map.of("a", "1", "b", "x"), f.children().get(0).attributes());
+        assertEquals(2, f.children().get(0).at().line());
+        assertEquals("other", f.children().get(1).name());
+        assertEquals(Map.of(), f.children().get(1).attributes());
+        assertEquals(3, f.children().get(1).at().line());
+    }
+
+    @Test
+    void nestedElementsAndTextAreErrorsAtTheirPlace() throws Exception {
+        DiagnosticList d = new DiagnosticList();
+        FlatXmlFile f = read("<things>\n  <thing a=\"1\"><inner/></thing>\n  <thing>words</thing>\n</things>\n", d);
+        assertFalse(f.ok());
+        assertEquals(List.of("2:16 <thing> may not contain <inner>", "3:3 <thing> may not contain text"), lines(d));
+    }
+
+    @Test
+    void aScriptGivenInsteadIsNamed() throws Exception {
+        DiagnosticList d = new DiagnosticList();
+        FlatXmlFile f = read("<?xml version=\"1.0\"?>\n<program/>\n", d);
+        assertNull(f.root());
+        assertEquals(List.of("2:1 <program> is not a thing list but a PARSL script; expected a <things> element with"
+                + " <thing> elements"), lines(d));
+    }
+
+    @Test
+    void brokenXmlIsLocated() throws Exception {
+        DiagnosticList d = new DiagnosticList();
+        FlatXmlFile f = read("<things>\n  <thing a=\"1\">\n</things>\n", d);
+        assertNull(f.root());
+        assertEquals(1, d.all().size());
+        assertTrue(d.all().get(0).message().startsWith("not well-formed XML"), lines(d).toString());
+        assertEquals(3, d.all().get(0).pos().line());
+    }
+
+    @Test
+    void attributeChecksNameTheValueAndTheBound() throws Exception {
+        DiagnosticList d = new DiagnosticList();
+        FlatXmlFile f = read("<things/>", d);
+        Map<String, String> a = Map.of("n", "2.5", "x", "1d", "y", "700", "z", "-3");
+        var at = f.start();
+        assertEquals(7, f.number(a, "missing", 7, at, false, 0, 10));
+        assertEquals(-3, f.number(a, "z", 0, at, true, -5, 5));
+        assertEquals(1, f.number(a, "n", 1, at, true, 0, 10));
+        assertEquals(1, f.number(a, "x", 1, at, false, 0, 10));
+        assertEquals(1, f.number(a, "y", 1, at, false, 0, 600));
+        assertFalse(f.known(Map.of("q", "1"), Set.of("n", "m"), "thing", at));
+        assertFalse(f.required(Map.of("n", ""), at, "thing", "n"));
+        assertEquals(List.of("1:1 n must be a whole number, got '2.5'", "1:1 x must be a number, got '1d'",
+                "1:1 y must be in 0..600, got 700", "1:1 <thing> has no attribute 'q'; it takes m, n",
+                "1:1 <thing> needs the attribute 'n'"), lines(d));
+    }
+}
