@@ -96,14 +96,15 @@ final class Plots {
 
     private static void legend(Graphics2D g, String dots, String line, Color lineColor) {
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
-        int x = WIDTH - 480;
+        int x = LEFT + 420;
         g.setColor(Chart.GREY);
         g.fillOval(x, 40, 7, 7);
         g.setColor(Color.DARK_GRAY);
         g.drawString(dots, x + 12, 48);
+        x += 12 + g.getFontMetrics().stringWidth(dots) + 24;
         g.setColor(lineColor);
-        g.fillRect(x + 250, 43, 20, 3);
+        g.fillRect(x, 43, 20, 3);
         g.setColor(Color.DARK_GRAY);
-        g.drawString(line, x + 276, 48);
+        g.drawString(line, x + 26, 48);
     }
 }
