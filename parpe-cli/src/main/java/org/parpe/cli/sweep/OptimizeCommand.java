@@ -32,7 +32,7 @@ import picocli.CommandLine.Spec;
  * for the best gait with CMA-ES, prints the best values and writes a copy of the script with
  * them as defaults, plus the convergence plot.
  */
-@Command(name = "optimize", aliases = "optimise", mixinStandardHelpOptions = true,
+@Command(name = "optimize", mixinStandardHelpOptions = true,
         description = "Search the script's parameters (those with a min and a max) for the best gait with CMA-ES on"
                 + " the simulator; print the best values and write a copy of the script with them as defaults.")
 public final class OptimizeCommand implements Callable<Integer> {
