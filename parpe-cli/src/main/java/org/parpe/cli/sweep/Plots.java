@@ -26,6 +26,7 @@ final class Plots {
     private static final int LEFT = 110;
     private static final int TOP = 60;
     private static final int GAP = 70;
+    private static final Color MISSES = new Color(0xfdae61);
 
     private Plots() {
     }
@@ -80,10 +81,10 @@ final class Plots {
                 Chart.range(scores));
         c.axes("simulation", result.objective().label());
         for (int i = 0; i < n.length; i++) {
-            c.dot(n[i], scores[i], all.get(i).feasible() ? new Color(0x9ecae1) : Chart.GREY, 5);
+            c.dot(n[i], scores[i], all.get(i).feasible() ? Chart.GREY : MISSES, 5);
         }
         c.line(n, best, Chart.RED, 2.5f);
-        legend(g, "each simulation (grey: misses a constraint)", "best so far", Chart.RED);
+        legend(g, "each simulation (orange: misses a constraint)", "best so far", Chart.RED);
         g.dispose();
         Chart.write(img, out);
     }

@@ -122,11 +122,11 @@ public final class Evaluator {
             return failed(point, problems.isEmpty() ? "the script does not load" : problems.get(0).format());
         }
         Program program = r.program();
-        String spec = SimTarget.AUTO.equals(robot) ? SimTarget.autoSpec(program) : robot;
         DiagnosticSink quiet = d -> { };
         Simulator sim;
         try {
-            sim = SimTarget.create(spec, program.moduleIds(), quiet);
+            sim = SimTarget.create(SimTarget.AUTO.equals(robot) ? SimTarget.autoSpec(program) : robot,
+                    program.moduleIds(), quiet);
         } catch (TargetException e) {
             return failed(point, e.diagnostics().isEmpty() ? e.getMessage() : e.diagnostics().get(0).format());
         }

@@ -57,14 +57,26 @@ public final class SweepCsv {
      * a run found twice, or runs missing from {@code 0} to {@code runs - 1} throw with one line.
      */
     public static List<String> merge(Map<String, List<String>> shards) throws SweepException {
-        String header = null;
-        String headerFrom = null;
-        int runs = -1;
-        TreeMap<Integer, String> rows = new TreeMap<>();
-        Map<Integer, String> rowFrom = new TreeMap<>();
+        Merger m = new Merger();
         for (Map.Entry<String, List<String>> shard : shards.entrySet()) {
-            String name = shard.getKey();
-            List<String> lines = shard.getValue().stream().filter(l -> !l.isBlank()).toList();
+            m.add(shard.getKey(), shard.getValue().stream().filter(l -> !l.isBlank()).toList());
+        }
+        checkComplete(m.rows, m.runs);
+        List<String> out = new ArrayList<>();
+        out.add(m.header);
+        out.addAll(m.rows.values());
+        return out;
+    }
+
+    /** The shards read so far: their header, the sweep's size, and the rows by run number. */
+    private static final class Merger {
+        private String header;
+        private String headerFrom;
+        private int runs = -1;
+        private final TreeMap<Integer, String> rows = new TreeMap<>();
+        private final Map<Integer, String> rowFrom = new TreeMap<>();
+
+        void add(String name, List<String> lines) throws SweepException {
             if (lines.isEmpty() || !lines.get(0).startsWith("run,runs,")) {
                 throw new SweepException(name + ":1: error: not a sweep result (its first line must be the header"
                         + " 'run,runs,...' that parpe sweep writes)");
@@ -77,35 +89,33 @@ public final class SweepCsv {
                         + "; only shards of one sweep can be merged");
             }
             for (int i = 1; i < lines.size(); i++) {
-                String[] f = lines.get(i).split(",", 3);
-                if (f.length < 3 || !f[0].matches("\\d{1,9}") || !f[1].matches("\\d{1,9}")) {
-                    throw new SweepException(name + ":" + (i + 1) + ": error: expected a run number and the number of"
-                            + " runs, got '" + lines.get(i) + "'");
-                }
-                int run = Integer.parseInt(f[0]);
-                int total = Integer.parseInt(f[1]);
-                if (runs >= 0 && total != runs) {
-                    throw new SweepException(name + ":" + (i + 1) + ": error: a sweep of " + total + " runs, but "
-                            + "the shards before are from a sweep of " + runs);
-                }
-                runs = total;
-                if (run >= total) {
-                    throw new SweepException(name + ":" + (i + 1) + ": error: run " + run + " in a sweep of " + total
-                            + " runs (numbered from 0)");
-                }
-                String before = rows.put(run, lines.get(i));
-                if (before != null) {
-                    throw new SweepException(name + ":" + (i + 1) + ": error: run " + run + " is also in "
-                            + rowFrom.get(run) + "; were shards given twice or run with different --shard N?");
-                }
-                rowFrom.put(run, name);
+                row(name, i + 1, lines.get(i));
             }
         }
-        checkComplete(rows, runs);
-        List<String> out = new ArrayList<>();
-        out.add(header);
-        out.addAll(rows.values());
-        return out;
+
+        private void row(String name, int line, String text) throws SweepException {
+            String[] f = text.split(",", 3);
+            String at = name + ":" + line + ": error: ";
+            if (f.length < 3 || !f[0].matches("\\d{1,9}") || !f[1].matches("\\d{1,9}")) {
+                throw new SweepException(at + "expected a run number and the number of runs, got '" + text + "'");
+            }
+            int run = Integer.parseInt(f[0]);
+            int total = Integer.parseInt(f[1]);
+            if (runs >= 0 && total != runs) {
+                throw new SweepException(at + "a sweep of " + total + " runs, but the shards before are from a sweep of "
+                        + runs);
+            }
+            runs = total;
+            if (run >= total) {
+                throw new SweepException(at + "run " + run + " in a sweep of " + total + " runs (numbered from 0)");
+            }
+            String before = rows.put(run, text);
+            if (before != null) {
+                throw new SweepException(at + "run " + run + " is also in " + rowFrom.get(run)
+                        + "; were shards given twice or run with different --shard N?");
+            }
+            rowFrom.put(run, name);
+        }
     }
 
     private static void checkComplete(TreeMap<Integer, String> rows, int runs) throws SweepException {
