@@ -1,0 +1,128 @@
+package org.parpe.cli.bench;
+
+import java.io.PrintStream;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Set;
+import org.parpe.sim.sweep.Axis;
+import org.parpe.sim.sweep.Cancellation;
+import org.parpe.sim.sweep.Constraints;
+import org.parpe.sim.sweep.Evaluator;
+import org.parpe.sim.sweep.Objective;
+import org.parpe.sim.sweep.OptimizationResult;
+import org.parpe.sim.sweep.OptimizeSpec;
+import org.parpe.sim.sweep.Optimizer;
+import org.parpe.sim.sweep.Sweep;
+import org.parpe.sim.sweep.SweepException;
+import org.parpe.sim.sweep.SweepListener;
+import org.parpe.sim.sweep.SweepResult;
+import org.parpe.sim.sweep.SweepSpec;
+
+/**
+ * Sweep figures: simulations per second (wall clock) of the 8-module snake and the 55-module
+ * centipede with one job and with every core, and the best forward speed that {@code optimize}
+ * finds on the snake with a budget of 300 runs against the best of a 300-point random sweep
+ * over the same bounds (lesson 10's race snake, 6 s per run). The machine's load
+ * average is printed too: with other processes on the cores, the wall-clock speed-up of more
+ * jobs shrinks while the CPU time per simulation ({@code cpu_s_per_sim}) shows the overhead.
+ */
+public final class SweepBenchmark implements Benchmark {
+    private static final int BUDGET = 300;
+    private static final double RACE_SECONDS = 6;
+
+    /** Lesson 10's race snake: a travelling wave with bend, period and phase to tune. */
+    static final String SNAKE = "<program><robot><structure><body elements=\"0..7\"/></structure></robot>"
+            + "<parameters><bend value=\"30\" min=\"0\" max=\"80\"/><period value=\"2\" min=\"0.3\" max=\"5\"/>"
+            + "<phase value=\"0.2\" min=\"0\" max=\"1\"/></parameters><main><race/></main>"
+            + "<behaviors><race><wave group=\"body\" phase=\"phase\" period=\"period\"/></race></behaviors>"
+            + "<automata><wave states=\"up, down\"/></automata>"
+            + "<states><up angles=\"bend\" interp=\"smooth\"/><down angles=\"-bend\" interp=\"smooth\"/></states></program>";
+
+    /** The paper's centipede walk with its period as a parameter, on the {@code centipede} generator's IDs. */
+    static final String CENTIPEDE = "<program><robot><structure><leftSwing elements=\"0,2,4,6,8,10,12\"/>"
+            + "<leftLift elements=\"1,3,5,7,9,11,13\"/><rightSwing elements=\"14,16,18,20,22,24,26\"/>"
+            + "<rightLift elements=\"15,17,19,21,23,25,27\"/><spine elements=\"28..54\"/></structure></robot>"
+            + "<parameters><period value=\"3\" min=\"2\" max=\"4\"/></parameters>"
+            + "<main><walk/></main><behaviors><walk>"
+            + "<swing group=\"!leftSwing\" offset=\"0\" phase=\"0.75\" period=\"period\"/>"
+            + "<swing group=\"rightSwing\" offset=\"0.5\" phase=\"0.75\" period=\"period\"/>"
+            + "<step group=\"leftLift\" offset=\"0\" phase=\"0.75\" period=\"period\"/>"
+            + "<step group=\"rightLift\" offset=\"0.5\" phase=\"0.75\" period=\"period\"/></walk></behaviors>"
+            + "<automata><swing states=\"reach, push\" times=\"1, 2\"/>"
+            + "<step states=\"raise, lower, stance\" times=\"0.5, 0.5, 2\"/></automata>"
+            + "<states><reach angles=\"25\"/><push angles=\"-25\"/><raise angles=\"20\"/>"
+            + "<lower angles=\"-60\"/><stance angles=\"-60\"/></states></program>";
+
+    private static final com.sun.management.OperatingSystemMXBean OS =
+            (com.sun.management.OperatingSystemMXBean) java.lang.management.ManagementFactory.getOperatingSystemMXBean();
+
+    @Override
+    public String name() {
+        return "sweep";
+    }
+
+    @Override
+    public void run(PrintStream out) throws SweepException {
+        int cores = Runtime.getRuntime().availableProcessors();
+        out.printf(Locale.ROOT, "sweep.cores=%d%n", cores);
+        out.printf(Locale.ROOT, "sweep.load_average_before=%.2f%n", OS.getSystemLoadAverage());
+        throughput(out, "snake8", evaluator("bench-snake.xml", SNAKE, "snake:n=8", 5), "bend", 20, cores);
+        throughput(out, "centipede55", evaluator("bench-centipede.xml", CENTIPEDE, "centipede", 3), "period", 6, cores);
+        optimiseVersusRandom(out, cores);
+    }
+
+    private static Evaluator evaluator(String name, String text, String robot, double seconds) throws SweepException {
+        return Evaluator.load(new Evaluator.Settings(Path.of(name), text, Map.of(), robot, seconds, 0.01, 90));
+    }
+
+    /** Simulations per second for {@code runs} runs with one job, then with every core (after a warm-up of both). */
+    private static void throughput(PrintStream out, String label, Evaluator ev, String param, int runs, int cores)
+            throws SweepException {
+        Axis axis = Axis.even(param, ev.parameters().stream().filter(p -> p.name().equals(param)).findFirst()
+                .orElseThrow().min(), ev.parameters().stream().filter(p -> p.name().equals(param)).findFirst()
+                .orElseThrow().max(), runs);
+        Sweep sweep = new Sweep(ev, SweepSpec.grid(List.of(axis), 1, 0));
+        sweep.run(0, Math.min(runs, 2 * cores), cores, SweepListener.NONE, new Cancellation());
+        double[] one = rate(sweep, 1);
+        double[] all = rate(sweep, cores);
+        out.printf(Locale.ROOT, "sweep.%s.sims_per_s.jobs1=%.2f%n", label, one[0]);
+        out.printf(Locale.ROOT, "sweep.%s.sims_per_s.jobs%d=%.2f%n", label, cores, all[0]);
+        out.printf(Locale.ROOT, "sweep.%s.speedup=%.2f%n", label, all[0] / one[0]);
+        out.printf(Locale.ROOT, "sweep.%s.cpu_s_per_sim.jobs1=%.3f%n", label, one[1]);
+        out.printf(Locale.ROOT, "sweep.%s.cpu_s_per_sim.jobs%d=%.3f%n", label, cores, all[1]);
+    }
+
+    /** Simulations per wall-clock second and CPU seconds (all threads of this process) per simulation. */
+    private static double[] rate(Sweep sweep, int jobs) {
+        long cpu0 = OS.getProcessCpuTime();
+        long t0 = System.nanoTime();
+        SweepResult r = sweep.run(jobs, SweepListener.NONE, new Cancellation());
+        double wall = (System.nanoTime() - t0) / 1e9;
+        double cpu = (OS.getProcessCpuTime() - cpu0) / 1e9;
+        return new double[] {r.rows().size() / wall, cpu / r.rows().size()};
+    }
+
+    private static void optimiseVersusRandom(PrintStream out, int cores) throws SweepException {
+        Evaluator ev = evaluator("bench-race-snake.xml", SNAKE, "snake:n=8", RACE_SECONDS);
+        long t0 = System.nanoTime();
+        OptimizationResult opt = new Optimizer(ev, new OptimizeSpec(Objective.FORWARD_SPEED, Constraints.NONE, BUDGET,
+                4, 1)).run(cores, SweepListener.NONE, new Cancellation());
+        double optSeconds = (System.nanoTime() - t0) / 1e9;
+        t0 = System.nanoTime();
+        SweepResult random = new Sweep(ev, SweepSpec.random(SweepSpec.declaredSpace(ev.parameters(), Set.of()), BUDGET,
+                1, 1)).run(cores, SweepListener.NONE, new Cancellation());
+        double randomSeconds = (System.nanoTime() - t0) / 1e9;
+        double defaults = opt.starts().get(0).get(0).score();
+        out.printf(Locale.ROOT, "sweep.race_snake.defaults_forward_speed_mps=%.4f%n", defaults);
+        out.printf(Locale.ROOT, "sweep.race_snake.optimize%d.best_forward_speed_mps=%.4f%n", BUDGET,
+                opt.best().orElseThrow().score());
+        out.printf(Locale.ROOT, "sweep.race_snake.random%d.best_forward_speed_mps=%.4f%n", BUDGET,
+                random.best(Objective.FORWARD_SPEED).map(Objective.FORWARD_SPEED::of).orElse(Double.NaN));
+        out.printf(Locale.ROOT, "sweep.race_snake.optimize%d.seconds=%.1f%n", BUDGET, optSeconds);
+        out.printf(Locale.ROOT, "sweep.race_snake.random%d.seconds=%.1f%n", BUDGET, randomSeconds);
+        opt.best().ifPresent(b -> out.printf(Locale.ROOT, "sweep.race_snake.optimize%d.best_values=%s%n", BUDGET,
+                b.row().values()));
+    }
+}

@@ -1,0 +1,153 @@
+package org.parpe.cli.sweep;
+
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import org.parpe.cli.OutputFile;
+import org.parpe.cli.UsageException;
+import org.parpe.core.model.Numbers;
+import org.parpe.sim.sweep.Cancellation;
+import org.parpe.sim.sweep.Constraints;
+import org.parpe.sim.sweep.Evaluation;
+import org.parpe.sim.sweep.Evaluator;
+import org.parpe.sim.sweep.Objective;
+import org.parpe.sim.sweep.OptimizationResult;
+import org.parpe.sim.sweep.OptimizeSpec;
+import org.parpe.sim.sweep.Optimizer;
+import org.parpe.sim.sweep.ParameterDefaults;
+import org.parpe.sim.sweep.SweepException;
+import org.parpe.sim.sweep.SweepListener;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code parpe optimize}: searches the script's parameters within their {@code min}/{@code max}
+ * for the best gait with CMA-ES, prints the best values and writes a copy of the script with
+ * them as defaults, plus the convergence plot.
+ */
+@Command(name = "optimize", mixinStandardHelpOptions = true,
+        description = "Search the script's parameters (those with a min and a max) for the best gait with CMA-ES on"
+                + " the simulator; print the best values and write a copy of the script with them as defaults.")
+public final class OptimizeCommand implements Callable<Integer> {
+    @Parameters(index = "0", paramLabel = "FILE", description = "The PARSL script.")
+    Path file;
+
+    @Option(names = "--objective", paramLabel = "NAME", defaultValue = "forward-speed",
+            description = "What to maximise: forward-speed, speed, forward, distance (default ${DEFAULT-VALUE}).")
+    String objective;
+
+    @Option(names = "--budget", paramLabel = "RUNS", defaultValue = "500", description = "The most simulations (default ${DEFAULT-VALUE}).")
+    int budget;
+
+    @Option(names = "--starts", paramLabel = "N", defaultValue = "4", description = "Independent CMA-ES searches sharing the"
+            + " budget, run in parallel (default ${DEFAULT-VALUE}); the result depends on it, not on --jobs.")
+    int starts;
+
+    @Option(names = "--max-tilt", paramLabel = "DEGREES", description = "Only accept gaits whose robot never tilts more than this.")
+    Double maxTilt;
+
+    @Option(names = "--not-fallen", description = "Only accept gaits whose robot does not fall over (see --fall-tilt).")
+    boolean notFallen;
+
+    @Option(names = "--out", paramLabel = "FILE.xml", description = "The optimised script (default: FILE-optimised.xml"
+            + " beside FILE; never FILE itself).")
+    String out;
+
+    @Option(names = "--plot", paramLabel = "FILE.png", description = "The convergence plot (default: --out with -convergence.png).")
+    String plot;
+
+    @Mixin
+    SimSweepOptions options;
+
+    @Spec
+    CommandSpec spec;
+
+    @Override
+    public Integer call() throws Exception {
+        PrintWriter err = spec.commandLine().getErr();
+        try {
+            return execute(spec.commandLine().getOut(), err);
+        } catch (UsageException | SweepException e) {
+            err.println("parpe: " + e.getMessage());
+            return 2;
+        }
+    }
+
+    private int execute(PrintWriter stdout, PrintWriter err) throws Exception {
+        Objective goal = Objective.byId(objective);
+        if (goal == null) {
+            throw new UsageException("--objective must be one of " + Objective.ids() + ", got '" + objective + "'");
+        }
+        if (maxTilt != null && !(maxTilt >= 0 && maxTilt <= 180)) {
+            throw new UsageException("--max-tilt must be within [0, 180] degrees, got " + maxTilt);
+        }
+        Evaluator ev = options.evaluator(file, err);
+        if (ev == null) {
+            return 1;
+        }
+        Constraints constraints = new Constraints(maxTilt == null ? Double.POSITIVE_INFINITY : maxTilt, notFallen);
+        Optimizer optimizer = new Optimizer(ev, new OptimizeSpec(goal, constraints, budget, starts, options.seed));
+        List<Path> inputs = new ArrayList<>(List.of(file));
+        options.addInputs(inputs);
+        String script = out != null ? out : sibling(file, "-optimised.xml");
+        OutputFile xml = OutputFile.of("--out", script, inputs);
+        String base = script.toLowerCase(Locale.ROOT).endsWith(".xml") ? script.substring(0, script.length() - 4) : script;
+        OutputFile png = OutputFile.of("--plot", plot != null ? plot : base + "-convergence.png", inputs);
+        Cancellation cancel = new Cancellation();
+        OptimizationResult result;
+        try (StopOnInterrupt hook = new StopOnInterrupt(cancel)) {
+            ProgressBar bar = new ProgressBar(err, SweepListener.NONE);
+            result = optimizer.run(options.jobs(), bar, cancel);
+            bar.clear();
+            if (hook.interrupted()) {
+                err.println("parpe: interrupted (Ctrl-C): keeping what is finished");
+            }
+        }
+        String title = file.getFileName() + " on " + options.sim + ": CMA-ES, " + result.evaluations().size()
+                + " simulations of " + Numbers.format(options.duration) + " s";
+        png.write(o -> Plots.convergence(o, title, result));
+        return report(stdout, err, result, goal, ev, xml, png);
+    }
+
+    private int report(PrintWriter stdout, PrintWriter err, OptimizationResult result, Objective goal, Evaluator ev,
+                       OutputFile xml, OutputFile png) throws UsageException, SweepException {
+        List<Evaluation> all = result.evaluations();
+        Evaluation first = result.starts().get(0).isEmpty() ? null : result.starts().get(0).get(0);
+        if (result.best().isEmpty()) {
+            err.println("parpe: no simulation met the constraints" + result.bestIgnoringConstraints()
+                    .map(e -> String.format(Locale.ROOT, " (the best without them: %s %.4f, max tilt %.1f°)", goal.id(),
+                            e.score(), e.row().maxTiltDeg())).orElse("") + "; no script written");
+            err.println("parpe: convergence plot in " + png);
+            return 1;
+        }
+        Evaluation best = result.best().get();
+        stdout.println(String.format(Locale.ROOT, "best %s: %.4f after %d simulations%s", goal.id(), best.score(),
+                all.size(), result.cancelled() ? " (stopped early)" : ""));
+        if (first != null && first.row().values().equals(ev.parameters().stream().filter(p -> first.row().values()
+                .containsKey(p.name())).collect(java.util.stream.Collectors.toMap(p -> p.name(), p -> p.value())))) {
+            stdout.println(String.format(Locale.ROOT, "the script's own values: %.4f%s", first.score(),
+                    first.feasible() ? "" : " (misses a constraint)"));
+        }
+        best.row().values().forEach((k, v) -> stdout.println("  " + k + " = " + Numbers.format(v)));
+        stdout.println(String.format(Locale.ROOT, "  (distance %.3f m, forward %.3f m, max tilt %.1f°, fell over: %s)",
+                best.row().distance(), best.row().forward(), best.row().maxTiltDeg(), best.row().fell() ? "yes" : "no"));
+        stdout.flush();
+        xml.write(ParameterDefaults.rewrite(file, ev.text(), ev.parameters(), best.row().values()));
+        err.println("parpe: wrote " + xml + " (the best values as defaults) and the convergence plot " + png);
+        return 0;
+    }
+
+    private static String sibling(Path file, String suffix) {
+        String name = file.getFileName().toString();
+        String stem = name.toLowerCase(Locale.ROOT).endsWith(".xml") ? name.substring(0, name.length() - 4) : name;
+        Path parent = file.getParent();
+        return (parent == null ? Path.of(stem + suffix) : parent.resolve(stem + suffix)).toString();
+    }
+}

@@ -1,0 +1,124 @@
+package org.parpe.cli.sweep;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.parpe.cli.ClockOptions;
+import org.parpe.cli.Inputs;
+import org.parpe.cli.UsageException;
+import org.parpe.core.load.LoadResult;
+import org.parpe.core.load.ScriptLoader;
+import org.parpe.core.model.Numbers;
+import org.parpe.core.xml.InputFiles;
+import org.parpe.sim.SimTarget;
+import org.parpe.sim.sweep.Evaluator;
+import org.parpe.sim.sweep.SweepException;
+import picocli.CommandLine.Option;
+
+/** The options {@code sweep} and {@code optimize} share: robot, duration, fixed parameters, threads, seed. */
+public class SimSweepOptions {
+    @Option(names = "--sim", paramLabel = "ROBOT", defaultValue = SimTarget.AUTO,
+            description = "GENERATOR[:key=value,...] or CONFIG.xml (default: the robot that fits the script,"
+                    + " as 'parpe race' picks it).")
+    String sim;
+
+    @Option(names = "--duration", paramLabel = "SECONDS", defaultValue = "20",
+            description = "Simulated seconds per run (default ${DEFAULT-VALUE}).")
+    double duration;
+
+    @Option(names = "--tick", paramLabel = "SECONDS", defaultValue = "0.01", description = "Scheduler tick (default ${DEFAULT-VALUE}).")
+    double tick;
+
+    @Option(names = "--param", paramLabel = "NAME=VALUE", description = "Keep a parameter at this value in every run (repeatable).")
+    List<String> params = new java.util.ArrayList<>();
+
+    @Option(names = "--jobs", paramLabel = "N", description = "Simulations at once (default: the number of cores, ${sys:parpe.cores}).")
+    Integer jobs;
+
+    @Option(names = "--seed", paramLabel = "N", defaultValue = "0", description = "Seed of the random draws and of rand() (default ${DEFAULT-VALUE}).")
+    long seed;
+
+    @Option(names = "--fall-tilt", paramLabel = "DEGREES", defaultValue = "90",
+            description = "A robot whose tilt passes this angle has fallen over (default ${DEFAULT-VALUE}).")
+    double fallTilt;
+
+    static {
+        System.setProperty("parpe.cores", Integer.toString(Runtime.getRuntime().availableProcessors()));
+    }
+
+    /** The number of threads: {@code --jobs}, or every core. */
+    int jobs() throws UsageException {
+        if (jobs == null) {
+            return Runtime.getRuntime().availableProcessors();
+        }
+        if (jobs < 1 || jobs > 1024) {
+            throw new UsageException("--jobs must be within [1, 1024], got " + jobs);
+        }
+        return jobs;
+    }
+
+    /**
+     * Loads {@code file} for runs: script errors are printed (all of them) and end with exit
+     * code 1 ({@code null} returned), bad options throw a usage error.
+     */
+    Evaluator evaluator(Path file, PrintWriter err) throws UsageException {
+        ClockOptions.check(tick, duration);
+        if (!(duration > 0)) {
+            throw new UsageException("--duration must be > 0 seconds, got " + duration);
+        }
+        if (!(fallTilt >= 0 && fallTilt <= 180)) {
+            throw new UsageException("--fall-tilt must be within [0, 180] degrees, got " + fallTilt);
+        }
+        Inputs.check(file);
+        Map<String, Double> fixed = fixed();
+        LoadResult r = ScriptLoader.load(file, fixed);
+        r.diagnostics().forEach(d -> err.println(d.format()));
+        if (r.program() == null) {
+            return null;
+        }
+        if (!r.parameterErrors().isEmpty()) {
+            r.parameterErrors().forEach(d -> err.println(d.format()));
+            throw new UsageException("bad --param values above");
+        }
+        try {
+            String text = InputFiles.readText(file);
+            return Evaluator.load(new Evaluator.Settings(file, text, fixed, sim.trim(), duration, tick, fallTilt));
+        } catch (IOException e) {
+            throw new UsageException("cannot read '" + file + "': " + e.getMessage());
+        } catch (SweepException e) {
+            throw new UsageException(e.getMessage());
+        }
+    }
+
+    /** The input files besides the script: a robot configuration file named by {@code --sim}. */
+    void addInputs(List<Path> inputs) {
+        try {
+            if (Files.isRegularFile(Path.of(sim.trim()))) {
+                inputs.add(Path.of(sim.trim()));
+            }
+        } catch (java.nio.file.InvalidPathException notAFile) {
+            // a generator spec such as snake:n=8 need not be a valid path
+        }
+    }
+
+    private Map<String, Double> fixed() throws UsageException {
+        Map<String, Double> out = new LinkedHashMap<>();
+        for (String p : params) {
+            int eq = p.indexOf('=');
+            if (eq <= 0) {
+                throw new UsageException("--param expects NAME=VALUE, got '" + p + "'");
+            }
+            String name = p.substring(0, eq).trim();
+            Double v = Numbers.parsePlain(p.substring(eq + 1));
+            if (v == null) {
+                throw new UsageException("parameter '" + name + "' must be a number, got '" + p.substring(eq + 1) + "'");
+            }
+            out.put(name, v);
+        }
+        return out;
+    }
+}

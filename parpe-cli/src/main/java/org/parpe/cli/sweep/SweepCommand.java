@@ -1,0 +1,208 @@
+package org.parpe.cli.sweep;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.Writer;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import org.parpe.cli.OutputFile;
+import org.parpe.cli.UsageException;
+import org.parpe.core.model.Numbers;
+import org.parpe.sim.sweep.Axis;
+import org.parpe.sim.sweep.Cancellation;
+import org.parpe.sim.sweep.Evaluator;
+import org.parpe.sim.sweep.Objective;
+import org.parpe.sim.sweep.Sweep;
+import org.parpe.sim.sweep.SweepCsv;
+import org.parpe.sim.sweep.SweepException;
+import org.parpe.sim.sweep.SweepListener;
+import org.parpe.sim.sweep.SweepResult;
+import org.parpe.sim.sweep.SweepRow;
+import org.parpe.sim.sweep.SweepSpec;
+import org.parpe.sim.sweep.VarySpec;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code parpe sweep}: runs a script with every combination of the varied parameters (or random
+ * ones) on fresh simulated robots, on every core, and writes one CSV row per run plus a plot.
+ */
+@Command(name = "sweep", mixinStandardHelpOptions = true, description = "Run a script with every combination of"
+        + " parameter values (or --random ones) on fresh simulated robots, in parallel; write one CSV row per run"
+        + " and a plot of the objective over the parameters.")
+public final class SweepCommand implements Callable<Integer> {
+    @Parameters(index = "0", paramLabel = "FILE", description = "The PARSL script.")
+    Path file;
+
+    @Option(names = "--vary", paramLabel = "NAME=RANGE", description = "A parameter to vary: NAME=A..B (integers),"
+            + " NAME=A..B:K (K values), NAME=V1,V2,... (repeatable). With --random and no --vary: every parameter"
+            + " with a min and a max, over [min, max].")
+    List<String> vary = new ArrayList<>();
+
+    @Option(names = "--random", paramLabel = "COUNT", description = "Draw COUNT random combinations (with --seed) instead of the whole grid.")
+    Integer random;
+
+    @Option(names = "--repeat", paramLabel = "K", defaultValue = "1",
+            description = "Run each combination K times, with rand() seeds SEED..SEED+K-1 (default ${DEFAULT-VALUE}).")
+    int repeat;
+
+    @Option(names = "--out", paramLabel = "FILE.csv|-", required = true, description = "Where to write the CSV ('-': standard output).")
+    String out;
+
+    @Option(names = "--plot", paramLabel = "FILE.png", description = "Where to draw the plot (default: --out with .png;"
+            + " none for a shard or standard output).")
+    String plot;
+
+    @Option(names = "--objective", paramLabel = "NAME", defaultValue = "forward-speed",
+            description = "What the plot and the summary rank by: forward-speed, speed, forward, distance (default ${DEFAULT-VALUE}).")
+    String objective;
+
+    @Option(names = "--shard", paramLabel = "K/N", description = "Run only the K-th of N equal shares of the runs (1 <= K <= N);"
+            + " join the shards' files with 'parpe merge'.")
+    String shard;
+
+    @Mixin
+    SimSweepOptions options;
+
+    @Spec
+    CommandSpec spec;
+
+    @Override
+    public Integer call() throws Exception {
+        PrintWriter err = spec.commandLine().getErr();
+        try {
+            return execute(spec.commandLine().getOut(), err);
+        } catch (UsageException | SweepException e) {
+            err.println("parpe: " + e.getMessage());
+            return 2;
+        }
+    }
+
+    private int execute(PrintWriter stdout, PrintWriter err) throws Exception {
+        Objective goal = objective();
+        int[] share = shard();
+        Evaluator ev = options.evaluator(file, err);
+        if (ev == null) {
+            return 1;
+        }
+        List<Axis> axes = new ArrayList<>();
+        for (String v : vary) {
+            axes.add(VarySpec.parse(v, ev.parameters()));
+        }
+        if (axes.isEmpty() && random != null) {
+            axes = SweepSpec.declaredSpace(ev.parameters(), ev.fixed().keySet());
+        }
+        if (random != null && random < 1) {
+            throw new UsageException("--random must be >= 1, got " + random);
+        }
+        Sweep sweep = new Sweep(ev, random == null ? SweepSpec.grid(axes, repeat, options.seed)
+                : SweepSpec.random(axes, random, repeat, options.seed));
+        int total = sweep.spec().size();
+        int[] range = share == null ? new int[] {0, total} : SweepSpec.shard(total, share[0], share[1]);
+        List<Path> inputs = new ArrayList<>(List.of(file));
+        options.addInputs(inputs);
+        OutputFile csv = OutputFile.ofOptional("--out", out, inputs);
+        OutputFile png = plotFile(inputs, share != null);
+        SweepResult result = write(sweep, range, csv, stdout, err);
+        if (png != null) {
+            String title = file.getFileName() + " on " + options.sim + ", " + Numbers.format(options.duration) + " s, "
+                    + result.rows().size() + " runs";
+            png.write(o -> Plots.sweep(o, title, sweep.spec().axes(), result.rows(), goal));
+        }
+        summary(err, result, range[1] - range[0], goal, png);
+        return 0;
+    }
+
+    /** Runs the sweep's share {@code range}, writing the header and each row as it comes. */
+    private SweepResult write(Sweep sweep, int[] range, OutputFile csv, PrintWriter stdout, PrintWriter err)
+            throws UsageException {
+        int total = sweep.spec().size();
+        int jobs = options.jobs();
+        Cancellation cancel = new Cancellation();
+        SweepResult result;
+        try (Writer w = csv == null ? null : csv.openWriter(); StopOnInterrupt hook = new StopOnInterrupt(cancel)) {
+            Writer target = w != null ? w : stdout;
+            target.write(SweepCsv.header(sweep.spec().axes()) + "\n");
+            ProgressBar bar = new ProgressBar(err, new SweepListener() {
+                @Override
+                public void row(SweepRow row) {
+                    try {
+                        target.write(SweepCsv.line(row, total) + "\n");
+                    } catch (IOException e) {
+                        throw new java.io.UncheckedIOException(e);
+                    }
+                }
+            });
+            result = sweep.run(range[0], range[1], jobs, bar, cancel);
+            bar.clear();
+            if (hook.interrupted()) {
+                err.println("parpe: interrupted (Ctrl-C): keeping what is finished");
+            }
+            target.flush();
+        } catch (java.io.UncheckedIOException | IOException e) {
+            throw new UsageException("cannot write --out file '" + out + "': " + e.getMessage());
+        }
+        return result;
+    }
+
+    private void summary(PrintWriter err, SweepResult result, int expected, Objective goal, OutputFile png) {
+        List<SweepRow> rows = result.rows();
+        long failed = rows.stream().filter(r -> !r.ok()).count();
+        long fell = rows.stream().filter(SweepRow::fell).count();
+        err.println(String.format(Locale.ROOT, "parpe: %d of %d runs%s; %d with errors, %d fell over", rows.size(),
+                expected, result.cancelled() ? " (stopped: the file holds the runs finished in order)" : "", failed, fell));
+        result.best(goal).ifPresent(b -> err.println(String.format(Locale.ROOT, "parpe: best %s %.4f with %s (run %d)",
+                goal.id(), goal.of(b), values(b), b.point().index())));
+        if (png != null) {
+            err.println("parpe: plot in " + png);
+        }
+    }
+
+    private static String values(SweepRow row) {
+        List<String> parts = new ArrayList<>();
+        row.values().forEach((k, v) -> parts.add(k + "=" + Numbers.format(v)));
+        return String.join(" ", parts);
+    }
+
+    private Objective objective() throws UsageException {
+        Objective o = Objective.byId(objective);
+        if (o == null) {
+            throw new UsageException("--objective must be one of " + Objective.ids() + ", got '" + objective + "'");
+        }
+        return o;
+    }
+
+    private int[] shard() throws UsageException {
+        if (shard == null) {
+            return null;
+        }
+        String[] kn = shard.trim().split("/", -1);
+        if (kn.length != 2 || !kn[0].matches("\\d{1,6}") || !kn[1].matches("\\d{1,6}")) {
+            throw new UsageException("--shard expects K/N with whole numbers, for example 2/8, got '" + shard + "'");
+        }
+        int k = Integer.parseInt(kn[0]);
+        int n = Integer.parseInt(kn[1]);
+        if (n < 1 || k < 1 || k > n) {
+            throw new UsageException("--shard " + shard + ": K must be within [1, N] and N >= 1");
+        }
+        return new int[] {k, n};
+    }
+
+    private OutputFile plotFile(List<Path> inputs, boolean sharded) throws UsageException {
+        if (plot != null) {
+            return OutputFile.of("--plot", plot, inputs);
+        }
+        if (sharded || out.equals("-")) {
+            return null;
+        }
+        String base = out.toLowerCase(Locale.ROOT).endsWith(".csv") ? out.substring(0, out.length() - 4) : out;
+        return OutputFile.of("--plot", base + ".png", inputs);
+    }
+}

@@ -1,0 +1,219 @@
+package org.parpe.sim.sweep;
+
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.parpe.core.diag.Diagnostic;
+import org.parpe.core.diag.DiagnosticSink;
+import org.parpe.core.load.LoadResult;
+import org.parpe.core.load.ScriptLoader;
+import org.parpe.core.model.Parameter;
+import org.parpe.core.model.Program;
+import org.parpe.core.run.Run;
+import org.parpe.core.run.RunOptions;
+import org.parpe.core.run.RunOutcome;
+import org.parpe.core.run.TargetException;
+import org.parpe.sim.SimMetrics;
+import org.parpe.sim.SimTarget;
+import org.parpe.sim.Simulator;
+
+/**
+ * Runs one script on fresh simulated robots with given parameter values and measures each run.
+ * Every call loads the script with its values and builds its own simulator, so calls may run on
+ * several threads at once and a run's result depends only on its values and seed.
+ */
+public final class Evaluator {
+    private final Path script;
+    private final String text;
+    private final Map<String, Double> fixed;
+    private final String robot;
+    private final double duration;
+    private final double tick;
+    private final double fallTiltDeg;
+    private final Program base;
+
+    private Evaluator(Settings s, Program base) {
+        this.script = s.script();
+        this.text = s.text();
+        this.fixed = Map.copyOf(s.fixed());
+        this.robot = s.robot();
+        this.duration = s.duration();
+        this.tick = s.tick();
+        this.fallTiltDeg = s.fallTiltDeg();
+        this.base = base;
+    }
+
+    /**
+     * What to run.
+     *
+     * @param script      the script's file (includes and robot files are found next to it)
+     * @param text        its text (an editor's buffer may differ from the file)
+     * @param fixed       parameter values that stay the same in every run ({@code --param})
+     * @param robot       the simulated robot: {@code GENERATOR[:key=value,...]}, a configuration
+     *                    file, or {@link SimTarget#AUTO} to pick it from the script
+     * @param duration    simulated seconds per run, > 0
+     * @param tick        the scheduler's tick, s
+     * @param fallTiltDeg the tilt beyond which the robot counts as fallen over, degrees
+     */
+    public record Settings(Path script, String text, Map<String, Double> fixed, String robot, double duration,
+                           double tick, double fallTiltDeg) {
+    }
+
+    /**
+     * Loads the script once with its defaults and the fixed values and checks the robot, so that
+     * problems shared by every run are reported once, before any run.
+     */
+    public static Evaluator load(Settings s) throws SweepException {
+        if (!(s.duration() > 0) || !Double.isFinite(s.duration())) {
+            throw new SweepException("the duration must be > 0 seconds, got " + s.duration());
+        }
+        if (!(s.tick() > 0) || s.tick() > s.duration()) {
+            throw new SweepException("the tick must be > 0 and at most the duration, got " + s.tick() + " s");
+        }
+        LoadResult r = ScriptLoader.loadText(s.script(), s.text(), s.fixed());
+        if (!r.ok()) {
+            List<Diagnostic> problems = r.parameterErrors().isEmpty() ? r.errors() : r.parameterErrors();
+            throw new SweepException(problems.isEmpty() ? s.script() + ": the script does not load"
+                    : problems.get(0).format() + (problems.size() > 1 ? " (and " + (problems.size() - 1) + " more)" : ""));
+        }
+        if (r.program().main() == null) {
+            throw new SweepException(s.script() + ": the script has no <main>, so it would not move the robot");
+        }
+        String spec = SimTarget.AUTO.equals(s.robot()) ? SimTarget.autoSpec(r.program()) : s.robot();
+        try (Simulator sim = SimTarget.create(spec, r.program().moduleIds(), d -> { })) {
+            sim.moduleIds();
+        } catch (TargetException e) {
+            throw new SweepException(e.diagnostics().isEmpty() ? e.getMessage() : e.diagnostics().get(0).format());
+        }
+        return new Evaluator(s, r.program());
+    }
+
+    /** The script's parameters (with their bounds), in file order. */
+    public List<Parameter> parameters() {
+        return base.parameters();
+    }
+
+    /** The parameter values that stay the same in every run. */
+    public Map<String, Double> fixed() {
+        return fixed;
+    }
+
+    /** The script's file. */
+    public Path script() {
+        return script;
+    }
+
+    /** The script's text. */
+    public String text() {
+        return text;
+    }
+
+    /**
+     * Runs {@code point} on a fresh robot until the duration, a run-time error, or
+     * {@code cancellation}; returns {@code null} when cancelled before the end.
+     */
+    public SweepRow run(Point point, Cancellation cancellation) {
+        Map<String, Double> values = new LinkedHashMap<>(fixed);
+        values.putAll(point.values());
+        LoadResult r = ScriptLoader.loadText(script, text, values);
+        if (!r.ok()) {
+            List<Diagnostic> problems = r.parameterErrors().isEmpty() ? r.errors() : r.parameterErrors();
+            return failed(point, problems.isEmpty() ? "the script does not load" : problems.get(0).format());
+        }
+        Program program = r.program();
+        DiagnosticSink quiet = d -> { };
+        Simulator sim;
+        try {
+            sim = SimTarget.create(SimTarget.AUTO.equals(robot) ? SimTarget.autoSpec(program) : robot,
+                    program.moduleIds(), quiet);
+        } catch (TargetException e) {
+            return failed(point, e.diagnostics().isEmpty() ? e.getMessage() : e.diagnostics().get(0).format());
+        }
+        JointTravel travel = new JointTravel();
+        SimMetrics[] measured = new SimMetrics[1];
+        Run run = Run.builder(program, new RunOptions(tick, point.seed(), List.of()), quiet)
+                .plant(sim)
+                .sensorSource("sim", sim, SimTarget.PRIORITY)
+                .observeReadings(travel)
+                .onFinish(o -> measured[0] = sim.metrics())
+                .closeAtEnd(sim)
+                .duration(duration)
+                .pacer((self, t) -> {
+                    if (cancellation.cancelled()) {
+                        self.requestStop();
+                    }
+                })
+                .build();
+        RunOutcome outcome = run.execute();
+        if (outcome.status() == RunOutcome.Status.STOPPED) {
+            return null;
+        }
+        SimMetrics m = measured[0];
+        double time = m.duration();
+        return new SweepRow(point, time, m.distance(), m.dx(), time > 0 ? m.dx() / time : 0, m.speed(),
+                m.maxTiltDeg(), travel.total(), m.maxTiltDeg() > fallTiltDeg,
+                outcome.status() == RunOutcome.Status.ERROR ? outcome.message() : "");
+    }
+
+    /**
+     * Runs of this evaluator's script for one worker thread, safe alongside other workers and
+     * other simulations in this program: each worker simulates with its own copy of the physics
+     * library ({@link Lanes}). Close it to give the copy back.
+     */
+    Worker worker() {
+        ClassLoader loader;
+        java.util.function.Function<Object[], Object[]> far;
+        try {
+            loader = Lanes.acquire();
+            far = Lanes.evaluatorIn(loader);
+        } catch (IllegalStateException noPrivateCopy) {
+            // No class path to copy the simulator from (a custom runtime image): one run at a time.
+            return new Worker() {
+                @Override
+                public SweepRow run(Point point, Cancellation cancellation) {
+                    synchronized (Evaluator.class) {
+                        return Evaluator.this.run(point, cancellation);
+                    }
+                }
+
+                @Override
+                public void close() {
+                }
+            };
+        }
+        Object[] loaded = far.apply(new Object[] {"load", script.toString(), text, new java.util.HashMap<>(fixed),
+            robot, duration, tick, fallTiltDeg});
+        if (loaded != null) {
+            Lanes.release(loader);
+            throw new IllegalStateException("the worker's copy of the script does not load: " + loaded[0]);
+        }
+        return new Worker() {
+            @Override
+            public SweepRow run(Point point, Cancellation cancellation) {
+                Object[] answer = far.apply(new Object[] {"run", new java.util.LinkedHashMap<>(point.values()),
+                    point.seed(), (java.util.function.BooleanSupplier) cancellation::cancelled});
+                return answer == null ? null : IsolatedEvaluator.row(point, answer);
+            }
+
+            @Override
+            public void close() {
+                Lanes.release(loader);
+            }
+        };
+    }
+
+    /** Runs for one thread; see {@link #worker()}. */
+    interface Worker extends AutoCloseable {
+        /** As {@link Evaluator#run}. */
+        SweepRow run(Point point, Cancellation cancellation);
+
+        @Override
+        void close();
+    }
+
+    private static SweepRow failed(Point point, String why) {
+        double nan = Double.NaN;
+        return new SweepRow(point, nan, nan, nan, nan, nan, nan, nan, false, why);
+    }
+}

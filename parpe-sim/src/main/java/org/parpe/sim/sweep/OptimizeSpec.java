@@ -1,0 +1,24 @@
+package org.parpe.sim.sweep;
+
+/**
+ * What an optimisation looks for.
+ *
+ * @param objective   what to maximise
+ * @param constraints what a gait must meet; runs that miss are ranked below every run that meets them
+ * @param budget      the most simulations, >= 2 per start
+ * @param starts      independent CMA-ES searches sharing the budget, run in parallel; the result
+ *                    depends on this number, never on the number of threads
+ * @param seed        the seed of CMA-ES's random numbers and of the script's {@code rand()}
+ */
+public record OptimizeSpec(Objective objective, Constraints constraints, int budget, int starts, long seed) {
+
+    /** Checks the numbers; one line per problem. */
+    public void check() throws SweepException {
+        if (starts < 1) {
+            throw new SweepException("--starts must be >= 1, got " + starts);
+        }
+        if (budget < 2 * starts) {
+            throw new SweepException("--budget must be at least 2 runs per start (" + 2 * starts + "), got " + budget);
+        }
+    }
+}

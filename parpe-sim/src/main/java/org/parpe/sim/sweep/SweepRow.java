@@ -1,0 +1,33 @@
+package org.parpe.sim.sweep;
+
+import java.util.Map;
+
+/**
+ * The result of one simulated run: its {@link Point} and what the robot did.
+ *
+ * @param point          which run it was
+ * @param duration       simulated seconds covered
+ * @param distance       horizontal displacement of the centre of mass, m
+ * @param forward        its component forwards (+x, the way every standard robot faces), m
+ * @param forwardSpeed   {@code forward / duration}, m/s
+ * @param speed          {@code distance / duration}, m/s
+ * @param maxTiltDeg     the largest tilt of the root part from the vertical, degrees
+ * @param jointTravelDeg the energy proxy: the summed rotation of every measured joint, degrees
+ *                       (a servo's work grows with how far it turns)
+ * @param fell           whether the robot fell over (its tilt passed the sweep's limit)
+ * @param error          the run-time error (or the reason the run could not start), empty if none;
+ *                       the numbers are NaN when the run could not start
+ */
+public record SweepRow(Point point, double duration, double distance, double forward, double forwardSpeed,
+                       double speed, double maxTiltDeg, double jointTravelDeg, boolean fell, String error) {
+
+    /** The varied parameters' values. */
+    public Map<String, Double> values() {
+        return point.values();
+    }
+
+    /** Whether the run went to its end without an error. */
+    public boolean ok() {
+        return error.isEmpty();
+    }
+}

@@ -1,0 +1,138 @@
+package org.parpe.sim.sweep;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+
+class SweepTest {
+    private static final double DURATION = 1.5;
+
+    private static Sweep grid() throws SweepException {
+        Evaluator ev = Scripts.snake(DURATION, Map.of("phase", 0.2));
+        return new Sweep(ev, SweepSpec.grid(List.of(VarySpec.parse("bend=20..40:3", ev.parameters()),
+                VarySpec.parse("period=1,2", ev.parameters())), 1, 7));
+    }
+
+    /** The CSV lines of runs {@code [from, to)} on {@code jobs} threads, as the listener received them. */
+    private static List<String> csv(Sweep sweep, int from, int to, int jobs) {
+        List<String> lines = new ArrayList<>();
+        SweepResult r = sweep.run(from, to, jobs, new SweepListener() {
+            @Override
+            public void row(SweepRow row) {
+                lines.add(SweepCsv.line(row, sweep.spec().size()));
+            }
+        }, new Cancellation());
+        assertFalse(r.cancelled());
+        assertEquals(lines, r.rows().stream().map(row -> SweepCsv.line(row, sweep.spec().size())).toList());
+        return lines;
+    }
+
+    @Test
+    void gridRunsEveryCombinationInOrderFirstAxisSlowest() throws Exception {
+        Sweep sweep = grid();
+        assertEquals(6, sweep.spec().size());
+        List<Map<String, Double>> values = new ArrayList<>();
+        for (int i = 0; i < 6; i++) {
+            values.add(sweep.spec().point(i).values());
+        }
+        assertEquals(List.of(Map.of("bend", 20.0, "period", 1.0), Map.of("bend", 20.0, "period", 2.0),
+                Map.of("bend", 30.0, "period", 1.0), Map.of("bend", 30.0, "period", 2.0),
+                Map.of("bend", 40.0, "period", 1.0), Map.of("bend", 40.0, "period", 2.0)), values);
+    }
+
+    @Test
+    void sameSpecGivesTheSameCsvWhateverTheThreads() throws Exception {
+        List<String> once = csv(grid(), 0, 6, 1);
+        List<String> again = csv(grid(), 0, 6, 2);
+        assertEquals(once, again);
+        assertEquals(6, once.size());
+        // the runs differ from each other: the values reach the simulation
+        assertEquals(6, once.stream().map(l -> l.split(",")[8]).distinct().count());
+        assertTrue(once.get(0).startsWith("0,6,0,0,7,20,1,1.500000,"), once.get(0));
+    }
+
+    @Test
+    void shardsTogetherAreTheWholeSweep() throws Exception {
+        Sweep sweep = grid();
+        List<String> whole = csv(sweep, 0, 6, 2);
+        Map<String, List<String>> shards = new LinkedHashMap<>();
+        for (int k = 3; k >= 1; k--) {
+            int[] range = SweepSpec.shard(6, k, 3);
+            List<String> lines = new ArrayList<>();
+            lines.add(SweepCsv.header(sweep.spec().axes()));
+            lines.addAll(csv(grid(), range[0], range[1], 1));
+            shards.put("shard" + k + ".csv", lines);
+        }
+        List<String> expected = new ArrayList<>();
+        expected.add(SweepCsv.header(sweep.spec().axes()));
+        expected.addAll(whole);
+        assertEquals(expected, SweepCsv.merge(shards));
+    }
+
+    @Test
+    void shardsCoverEveryRunOnce() {
+        int covered = 0;
+        for (int k = 1; k <= 7; k++) {
+            int[] r = SweepSpec.shard(20, k, 7);
+            assertEquals(covered, r[0]);
+            assertTrue(r[1] - r[0] == 2 || r[1] - r[0] == 3);
+            covered = r[1];
+        }
+        assertEquals(20, covered);
+    }
+
+    @Test
+    void mergeRefusesMissingAndDoubledRuns() throws Exception {
+        String header = "run,runs,combination,repeat,seed,bend,duration_s";
+        SweepException missing = assertThrows(SweepException.class, () -> SweepCsv.merge(Map.of(
+                "a.csv", List.of(header, "0,3,0,0,1,5,1.0", "2,3,2,0,1,7,1.0"))));
+        assertEquals("runs are missing: 1 of 3 (the first is run 1); is a shard missing or unfinished?",
+                missing.getMessage());
+        Map<String, List<String>> twice = new LinkedHashMap<>();
+        twice.put("a.csv", List.of(header, "0,2,0,0,1,5,1.0"));
+        twice.put("b.csv", List.of(header, "0,2,0,0,1,5,1.0", "1,2,1,0,1,6,1.0"));
+        SweepException doubled = assertThrows(SweepException.class, () -> SweepCsv.merge(twice));
+        assertEquals("b.csv:2: error: run 0 is also in a.csv; were shards given twice or run with different"
+                + " --shard N?", doubled.getMessage());
+    }
+
+    @Test
+    void randomSweepsDependOnTheSeedOnly() throws Exception {
+        Evaluator ev = Scripts.snake(DURATION, Map.of());
+        List<Axis> space = SweepSpec.declaredSpace(ev.parameters(), java.util.Set.of());
+        assertEquals(List.of("bend", "period", "phase"), space.stream().map(Axis::name).toList());
+        SweepSpec a = SweepSpec.random(space, 4, 1, 11);
+        SweepSpec b = SweepSpec.random(space, 4, 1, 11);
+        SweepSpec c = SweepSpec.random(space, 4, 1, 12);
+        for (int i = 0; i < 4; i++) {
+            assertEquals(a.point(i), b.point(i));
+            assertNotEquals(a.point(i).values(), c.point(i).values());
+            double bend = a.point(i).values().get("bend");
+            assertEquals(Math.rint(bend), bend);
+        }
+    }
+
+    @Test
+    void cancellingStopsTheSweep() throws Exception {
+        Cancellation stop = new Cancellation();
+        List<SweepRow> seen = new ArrayList<>();
+        SweepResult r = grid().run(0, 6, 1, new SweepListener() {
+            @Override
+            public void row(SweepRow row) {
+                seen.add(row);
+                stop.cancel();
+            }
+        }, stop);
+        assertTrue(r.cancelled());
+        assertEquals(1, r.rows().size());
+        assertEquals(seen, r.rows());
+    }
+}
