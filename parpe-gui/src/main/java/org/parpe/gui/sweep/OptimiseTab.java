@@ -76,9 +76,10 @@ final class OptimiseTab {
         return root;
     }
 
-    /** Sets the budget (tests, automation). */
-    void setBudget(int runs) {
+    /** Sets the budget and the number of searches (tests, automation). */
+    void setBudget(int runs, int searches) {
         budget.setSelection(runs);
+        starts.setSelection(searches);
     }
 
     /** The constraints the boxes describe; a bad tilt throws with one line. */

@@ -292,7 +292,8 @@ public final class SweepDialog {
                     : "Finished " + all.size() + " runs. ";
             info(head + (best == null ? "No run was acceptable (see the error and fell columns)."
                     : "Best: run " + (best.point().index() + 1) + ", " + values(best.values()) + ": "
-                    + results.objective().label() + " " + ResultsTable.number(results.objective().of(best))));
+                    + results.objective().label() + " " + ResultsTable.number(results.objective().of(best))
+                    + (best.fell() ? " (its robot fell over)" : "")));
             apply.setEnabled(best != null);
         }
 

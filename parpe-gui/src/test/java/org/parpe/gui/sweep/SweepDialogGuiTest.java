@@ -23,6 +23,12 @@ import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.model.Numbers;
 import org.parpe.gui.editor.ParslEditor;
 import org.parpe.sim.sweep.Cancellation;
+import org.parpe.sim.sweep.Constraints;
+import org.parpe.sim.sweep.Evaluation;
+import org.parpe.sim.sweep.Objective;
+import org.parpe.sim.sweep.OptimizationResult;
+import org.parpe.sim.sweep.OptimizeSpec;
+import org.parpe.sim.sweep.Optimizer;
 import org.parpe.sim.sweep.Evaluator;
 import org.parpe.sim.sweep.SweepCsv;
 import org.parpe.sim.sweep.SweepListener;
@@ -219,5 +225,57 @@ class SweepDialogGuiTest {
         assertTrue(dialog.message().contains("no-such-robot.xml"), dialog.message());
         assertFalse(dialog.message().contains("Exception"), dialog.message());
         assertNull(dialog.results().best());
+        Ui.pump(() -> !problems.isEmpty(), "the robot's problem in Problems");
+        assertTrue(problems.get(0).format().contains("no-such-robot.xml"), problems.get(0).format());
+    }
+
+    @Test
+    void editsToTheParametersShowWhenTheDialogIsActivated() {
+        vary("amp", "10", "20", 4);
+        editor.document().set(original.replace("  </parameters>", "    <lean value=\"0\" min=\"-5\" max=\"5\"/>\n  </parameters>"));
+        dialog.activate();
+        assertNotNull(dialog.sweepTab().line("lean"), "the new parameter has a line");
+        SweepTab.Line amp = dialog.sweepTab().line("amp");
+        assertTrue(amp.vary().getSelection());
+        assertEquals("10", amp.from().getText());
+        assertEquals(4, amp.values().getSelection());
+    }
+
+    @Test
+    void anOptimisationGivesTheEngineEvaluationsAndItsBestCanBeApplied() throws Exception {
+        dialog.setDuration("1");
+        dialog.selectTab(1);
+        dialog.optimiseTab().setBudget(6, 2);
+        runToEnd();
+        assertTrue(dialog.message().startsWith("Finished 6 runs."), dialog.message());
+        Evaluator ev = Evaluator.load(new Evaluator.Settings(file, original, Map.of(), "auto", 1, 0.01, 90));
+        OptimizationResult direct = new Optimizer(ev, new OptimizeSpec(Objective.FORWARD_SPEED,
+                new Constraints(Double.POSITIVE_INFINITY, true), 6, 2, 0)).run(2, SweepListener.NONE, new Cancellation());
+        assertEquals(direct.evaluations().stream().map(Evaluation::row).toList(), dialog.results().rows());
+        assertEquals(6, dialog.table().control().getItemCount());
+        assertEquals("N", dialog.table().control().getColumn(1).getText());
+        Evaluation best = direct.best().orElseThrow();
+        assertEquals(best.row(), dialog.results().best());
+        Ui.click(dialog.applyButton());
+        String text = editor.document().get();
+        for (var v : best.row().values().entrySet()) {
+            assertTrue(text.matches("(?s).*<" + v.getKey() + " +value=\"" + java.util.regex.Pattern.quote(Numbers.format(v.getValue()))
+                    + "\".*"), v.getKey() + " = " + v.getValue() + " not written:\n" + text);
+        }
+        editor.run(ITextOperationTarget.UNDO);
+        assertEquals(original, editor.document().get());
+    }
+
+    @Test
+    void aFinishedSweepForTheManual() throws Exception {
+        dialog.setDuration("4");
+        vary("amp", "10", "60", 6);
+        vary("period", "1", "3", 3);
+        runToEnd();
+        assertEquals(18, dialog.table().control().getItemCount());
+        dialog.table().control().getColumn(3).notifyListeners(SWT.Selection, new org.eclipse.swt.widgets.Event());
+        Ui.settle();
+        // docs/images/sweep-dialog.png is this picture (see docs/ide.md).
+        Ui.screenshot(dialog.shell(), "sweep-dialog.png");
     }
 }
