@@ -7,6 +7,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import org.eclipse.swt.SWTException;
+import org.eclipse.swt.widgets.Display;
 import org.parpe.sim.sweep.Axis;
 import org.parpe.sim.sweep.SweepCsv;
 import org.parpe.sim.sweep.SweepRow;
@@ -46,5 +48,35 @@ final class CsvExport {
         } finally {
             Files.deleteIfExists(tmp);
         }
+    }
+
+    /** What became of a save: whether it worked, and a line to show. */
+    interface Outcome {
+        void done(boolean ok, String message);
+    }
+
+    /** {@link #write} on its own thread; {@code outcome} is told on the UI thread of {@code display}. */
+    static void inBackground(Display display, Path file, List<Axis> axes, List<SweepRow> rows, int runs, Outcome outcome) {
+        Thread t = new Thread(() -> {
+            boolean ok;
+            String said;
+            try {
+                write(file, axes, rows, runs);
+                ok = true;
+                said = "Saved " + rows.size() + " rows to " + file;
+            } catch (IOException | RuntimeException e) {
+                ok = false;
+                said = "Cannot save " + file + ": " + e.getMessage();
+            }
+            boolean saved = ok;
+            String text = said;
+            try {
+                display.asyncExec(() -> outcome.done(saved, text));
+            } catch (SWTException closed) {
+                // The IDE closed during the save: nobody is left to tell.
+            }
+        }, "parpe-sweep-csv");
+        t.setDaemon(true);
+        t.start();
     }
 }

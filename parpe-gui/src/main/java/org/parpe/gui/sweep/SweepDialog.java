@@ -7,25 +7,20 @@ import java.util.Map;
 import org.eclipse.jface.text.DocumentEvent;
 import org.eclipse.jface.text.IDocumentListener;
 import org.eclipse.swt.SWT;
-import org.eclipse.swt.custom.SashForm;
 import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.widgets.Button;
-import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.FileDialog;
 import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.ProgressBar;
 import org.eclipse.swt.widgets.Shell;
-import org.eclipse.swt.widgets.Spinner;
 import org.eclipse.swt.widgets.TabFolder;
 import org.eclipse.swt.widgets.TabItem;
-import org.eclipse.swt.widgets.Text;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
 import org.parpe.core.model.Numbers;
 import org.parpe.core.model.Parameter;
-import org.parpe.sim.sweep.Objective;
 import org.parpe.sim.sweep.SweepRow;
 
 /**
@@ -38,10 +33,7 @@ import org.parpe.sim.sweep.SweepRow;
 public final class SweepDialog {
     private final SweepHost host;
     private final Shell shell;
-    private final RobotChoice robot;
-    private final Text duration;
-    private final Spinner jobs;
-    private final Combo objective;
+    private final RunSettings settings;
     private final TabFolder tabs;
     private final SweepTab sweepTab;
     private final OptimiseTab optimiseTab;
@@ -50,9 +42,7 @@ public final class SweepDialog {
     private final ProgressBar progress;
     private final Label counts;
     private final Label message;
-    private final ResultsTable table;
-    private final ResultsPlot plot;
-    private final Combo plotOver;
+    private final ResultsPane pane;
     private final Button apply;
     private final Button save;
     private final IDocumentListener edits = new IDocumentListener() {
@@ -75,26 +65,7 @@ public final class SweepDialog {
         this.host = host;
         shell = new Shell(host.shell(), SWT.SHELL_TRIM | SWT.MODELESS);
         shell.setLayout(new GridLayout(1, false));
-        Composite top = row(shell, 8);
-        new Label(top, SWT.NONE).setText("Robot:");
-        robot = new RobotChoice(top, host.robot().get());
-        new Label(top, SWT.NONE).setText("   Seconds per run:");
-        duration = new Text(top, SWT.BORDER);
-        duration.setText("10");
-        duration.setLayoutData(new GridData(60, SWT.DEFAULT));
-        duration.setToolTipText("Simulated seconds of each run");
-        new Label(top, SWT.NONE).setText("   Jobs:");
-        jobs = new Spinner(top, SWT.BORDER);
-        jobs.setValues(Runtime.getRuntime().availableProcessors(), 1, 1024, 0, 1, 4);
-        jobs.setToolTipText("Simulations at once (default: every core); the results do not depend on it");
-        new Label(top, SWT.NONE).setText("   Objective:");
-        objective = new Combo(top, SWT.READ_ONLY);
-        for (Objective o : Objective.values()) {
-            objective.add(o.label());
-        }
-        objective.select(0);
-        objective.setToolTipText("What ranks the runs (larger is better): the plot's vertical axis and what Optimise maximises");
-
+        settings = new RunSettings(row(shell, 8), host.robot().get());
         tabs = new TabFolder(shell, SWT.TOP);
         tabs.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, false));
         sweepTab = new SweepTab(tabs);
@@ -114,19 +85,7 @@ public final class SweepDialog {
         message = new Label(shell, SWT.WRAP);
         message.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
 
-        SashForm split = new SashForm(shell, SWT.HORIZONTAL);
-        split.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
-        table = new ResultsTable(split);
-        Composite right = new Composite(split, SWT.NONE);
-        right.setLayout(new GridLayout(2, false));
-        plot = new ResultsPlot(right);
-        plot.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true, 2, 1));
-        new Label(right, SWT.NONE).setText("Plot over:");
-        plotOver = new Combo(right, SWT.READ_ONLY);
-        plotOver.setLayoutData(new GridData(160, SWT.DEFAULT));
-        plotOver.addListener(SWT.Selection, e -> plot.show(results, plotOver.getText()));
-        split.setWeights(55, 45);
-
+        pane = new ResultsPane(shell);
         Composite bottom = row(shell, 3);
         apply = button(bottom, "Apply best", this::applyBest);
         apply.setToolTipText("Write the best run's values as the parameters' defaults into the editor (Edit > Undo takes them back)");
@@ -165,7 +124,13 @@ public final class SweepDialog {
                 runner.stop();
             }
         });
-        shell.addListener(SWT.Dispose, e -> host.editor().document().removeDocumentListener(edits));
+        shell.addListener(SWT.Dispose, e -> {
+            // The IDE window closing disposes this one without a Close event.
+            if (runner != null) {
+                runner.stop();
+            }
+            host.editor().document().removeDocumentListener(edits);
+        });
         setRunning(false);
     }
 
@@ -223,8 +188,8 @@ public final class SweepDialog {
             return;
         }
         try {
-            StartRequest req = new StartRequest(host.script().get(), host.editor().document().get(), robot.robot(),
-                    duration.getText(), jobs.getSelection(), Objective.values()[objective.getSelectionIndex()]);
+            StartRequest req = new StartRequest(host.script().get(), host.editor().document().get(), settings.robot().robot(),
+                    settings.duration(), settings.jobs(), settings.objective());
             boolean sweeping = tabs.getSelectionIndex() == 0;
             SweepRunner.Events events = new Events();
             StartRequest.Started s = sweeping ? req.sweep(now, sweepTab, shell.getDisplay(), events)
@@ -236,15 +201,11 @@ public final class SweepDialog {
             error(words(e.getMessage()));
             return;
         }
-        table.show(results);
-        plotOver.setItems(results.parameters().toArray(new String[0]));
-        plotOver.select(0);
-        plotOver.setEnabled(results.mode() == Results.Mode.SWEEP);
-        plot.show(results, plotOver.getText());
+        pane.show(results);
         progress.setSelection(0);
         counts.setText("0 of " + total + " runs");
         info(String.format(Locale.ROOT, "Running %d simulation(s) of %s s on %d thread(s)\u2026", total,
-                duration.getText().trim(), jobs.getSelection()));
+                settings.duration().trim(), settings.jobs()));
         setRunning(true);
     }
 
@@ -263,8 +224,7 @@ public final class SweepDialog {
                 return;
             }
             rows.forEach(results::add);
-            table.refresh();
-            plot.redraw();
+            pane.refresh();
             progress.setSelection(of == 0 ? 0 : (int) (1000L * done / of));
             counts.setText(done + " of " + of + " runs");
             apply.setEnabled(results.best() != null);
@@ -281,8 +241,7 @@ public final class SweepDialog {
                 return;
             }
             results.replace(all);
-            table.refresh();
-            plot.redraw();
+            pane.refresh();
             counts.setText(all.size() + " of " + total + " runs");
             if (!cancelled) {
                 progress.setSelection(1000);
@@ -323,12 +282,13 @@ public final class SweepDialog {
         start.setEnabled(!running);
         stop.setEnabled(running);
         save.setEnabled(!running && results != null && !results.rows().isEmpty());
-        apply.setEnabled(!running && results != null && results.best() != null);
+        apply.setEnabled(results != null && results.best() != null);
         tabs.setEnabled(!running);
+        settings.setEnabled(!running);
     }
 
     private void applyBest() {
-        if (results == null || runner != null && runner.running()) {
+        if (results == null) {
             return;
         }
         try {
@@ -354,31 +314,16 @@ public final class SweepDialog {
     /** Writes the rows to {@code file} off the UI thread and says when it is done. */
     void saveCsv(Path file) {
         List<SweepRow> rows = List.copyOf(results.rows());
-        List<String> names = results.parameters();
-        int runs = total;
-        Thread t = new Thread(() -> {
-            String said;
-            try {
-                CsvExport.write(file, CsvExport.axes(names), rows, runs);
-                said = "Saved " + rows.size() + " rows to " + file;
-            } catch (java.io.IOException | RuntimeException e) {
-                said = "Cannot save " + file + ": " + e.getMessage();
+        CsvExport.inBackground(shell.getDisplay(), file, CsvExport.axes(results.parameters()), rows, total, (ok, said) -> {
+            if (shell.isDisposed()) {
+                return;
             }
-            String text = said;
-            if (!shell.isDisposed()) {
-                shell.getDisplay().asyncExec(() -> {
-                    if (!shell.isDisposed()) {
-                        if (text.startsWith("Saved")) {
-                            info(text);
-                        } else {
-                            error(text);
-                        }
-                    }
-                });
+            if (ok) {
+                info(said);
+            } else {
+                error(said);
             }
-        }, "parpe-sweep-csv");
-        t.setDaemon(true);
-        t.start();
+        });
     }
 
     private void info(String text) {
@@ -408,7 +353,7 @@ public final class SweepDialog {
     }
 
     ResultsTable table() {
-        return table;
+        return pane.table();
     }
 
     Results results() {
@@ -420,11 +365,11 @@ public final class SweepDialog {
     }
 
     void setDuration(String seconds) {
-        duration.setText(seconds);
+        settings.setDuration(seconds);
     }
 
     void setJobs(int n) {
-        jobs.setSelection(n);
+        settings.setJobs(n);
     }
 
     void selectTab(int index) {
@@ -432,7 +377,7 @@ public final class SweepDialog {
     }
 
     RobotChoice robot() {
-        return robot;
+        return settings.robot();
     }
 
     Button startButton() {
