@@ -1,5 +1,6 @@
 package org.parpe.gui.sweep;
 
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -16,17 +17,24 @@ final class Results {
     /** Whether rows come from a sweep or from an optimisation. */
     enum Mode { SWEEP, OPTIMISE }
 
+    private final Path script;
     private final Mode mode;
     private final List<String> parameters;
     private final Objective objective;
     private final Constraints constraints;
     private final List<SweepRow> rows = new ArrayList<>();
 
-    Results(Mode mode, List<String> parameters, Objective objective, Constraints constraints) {
+    Results(Path script, Mode mode, List<String> parameters, Objective objective, Constraints constraints) {
+        this.script = script;
         this.mode = mode;
         this.parameters = List.copyOf(parameters);
         this.objective = objective;
         this.constraints = constraints;
+    }
+
+    /** The path of the script the runs were made with. */
+    Path script() {
+        return script;
     }
 
     Mode mode() {

@@ -70,7 +70,7 @@ final class ResultsTable {
             boolean text = i >= columns.size() - 2;
             TableColumn tc = new TableColumn(table, text ? SWT.LEFT : SWT.RIGHT);
             tc.setText(c.title());
-            tc.setWidth(i == columns.size() - 1 ? 300 : i == 0 ? 50 : text ? 50 : i <= r.parameters().size() ? 80 : 130);
+            tc.setWidth(i == columns.size() - 1 ? 300 : i == 0 ? 50 : text ? 50 : i <= r.parameters().size() ? 80 : 140);
             tc.setMoveable(true);
             tc.addListener(SWT.Selection, e -> sort(c, tc));
         }
@@ -117,7 +117,7 @@ final class ResultsTable {
 
     private void fill(Event e) {
         TableItem item = (TableItem) e.item;
-        int i = table.indexOf(item);
+        int i = e.index;
         if (i < 0 || i >= view.size()) {
             return;
         }

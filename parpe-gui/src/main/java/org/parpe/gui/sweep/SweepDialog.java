@@ -291,8 +291,14 @@ public final class SweepDialog {
         if (results == null) {
             return;
         }
+        Path now = host.script().get();
+        if (!now.equals(results.script())) {
+            error("these results are of " + results.script().getFileName() + ", but the editor holds " + now.getFileName()
+                    + "; open " + results.script().getFileName() + " again to apply them");
+            return;
+        }
         try {
-            String what = ApplyBest.apply(host.editor(), host.script().get(), results.bestValues());
+            String what = ApplyBest.apply(host.editor(), now, results.bestValues());
             info("Applied to the editor: " + what + " (Edit > Undo takes it back; the file is saved only when you save it).");
         } catch (org.parpe.sim.sweep.SweepException e) {
             error(e.getMessage());

@@ -51,6 +51,8 @@ class SweepDialogGuiTest {
     private Shell window;
     private ParslEditor editor;
     private Path file;
+    /** The path the "IDE" says its editor holds. */
+    private Path shown;
     private String original;
     private final List<Diagnostic> problems = new ArrayList<>();
     private SweepDialog dialog;
@@ -67,7 +69,8 @@ class SweepDialogGuiTest {
         original = Files.readString(file);
         editor.setText(original);
         window.open();
-        dialog = SweepDialog.open(new SweepHost(window, editor, () -> file, () -> "auto", problems::addAll));
+        shown = file;
+        dialog = SweepDialog.open(new SweepHost(window, editor, () -> shown, () -> "auto", problems::addAll));
         dialog.setJobs(2);
     }
 
@@ -155,6 +158,12 @@ class SweepDialogGuiTest {
         runToEnd();
         SweepRow best = dialog.results().best();
         assertNotNull(best);
+        shown = file.resolveSibling("another.xml");
+        Ui.click(dialog.applyButton());
+        assertEquals(original, editor.document().get(), "results are not applied to another file");
+        assertTrue(dialog.message().startsWith("these results are of 07-parameters-snake.xml, but the editor holds another.xml"),
+                dialog.message());
+        shown = file;
         Ui.click(dialog.applyButton());
         String text = editor.document().get();
         assertNotEquals(original, text);
