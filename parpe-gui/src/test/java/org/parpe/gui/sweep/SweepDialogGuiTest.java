@@ -181,13 +181,16 @@ class SweepDialogGuiTest {
 
     @Test
     void stopEndsALongSweepAndTheDialogStaysUsable() throws Exception {
-        dialog.setDuration("600");
+        dialog.setDuration("60");
         dialog.setJobs(1);
         vary("amp", "0", "60", 40);
         Ui.click(dialog.startButton());
         assertTrue(dialog.running(), dialog.message());
         assertFalse(dialog.startButton().isEnabled());
-        Ui.settle();
+        // The table fills while the sweep goes on (40 runs of 60 s take far longer than the first).
+        Ui.pump(() -> dialog.table().control().getItemCount() > 0 || !dialog.running(), "the first row");
+        assertTrue(dialog.running(), "the sweep ended before Stop: " + dialog.message());
+        assertEquals(dialog.results().rows().get(0), dialog.table().rowAt(0));
         Ui.click(dialog.stopButton());
         Ui.pump(() -> !dialog.running(), "Stop to end the sweep");
         assertTrue(dialog.message().startsWith("Stopped after "), dialog.message());
@@ -199,6 +202,20 @@ class SweepDialogGuiTest {
         runToEnd();
         assertEquals(3, dialog.results().rows().size());
         assertTrue(dialog.message().startsWith("Finished 3 runs."), dialog.message());
+    }
+
+    @Test
+    void aRandomSweepDrawsWhatTheEngineDraws() throws Exception {
+        dialog.setDuration("0.5");
+        vary("period", "1", "2", 2);
+        dialog.sweepTab().setRandom(3);
+        runToEnd();
+        Evaluator ev = Evaluator.load(new Evaluator.Settings(file, original, Map.of(), "auto", 0.5, 0.01, 90));
+        SweepSpec spec = SweepSpec.random(List.of(org.parpe.sim.sweep.Axis.continuous("period", 1, 2)), 3, 1, 0);
+        List<SweepRow> expected = new Sweep(ev, spec).run(1, SweepListener.NONE, new Cancellation()).rows();
+        assertEquals(expected, dialog.results().rows());
+        // period (default 1.5) is not a count: whole ends still draw anywhere between them.
+        assertTrue(expected.stream().anyMatch(r -> r.values().get("period") != Math.rint(r.values().get("period"))));
     }
 
     @Test
