@@ -14,11 +14,14 @@ import org.eclipse.swt.widgets.Menu;
 import org.eclipse.swt.widgets.MenuItem;
 import org.eclipse.swt.widgets.Text;
 import org.parpe.gui.help.TutorialWindow;
+import org.parpe.gui.sweep.SweepDialog;
+import org.parpe.gui.sweep.SweepHost;
 
 /** The menu bar: File, Edit, Run, View and Help. Every item acts; none is a placeholder. */
 final class MenuBar {
     private final IdeWindow ide;
     private FindReplaceDialog find;
+    private SweepDialog sweep;
 
     MenuBar(IdeWindow ide) {
         this.ide = ide;
@@ -178,6 +181,17 @@ final class MenuBar {
         item(m, "&Emergency Stop\tEsc", 0, r::emergencyStop);
         new MenuItem(m, SWT.SEPARATOR);
         item(m, "&Hardware\u2026", 0, () -> HardwareDialog.open(ide));
+        item(m, "S&weep / Optimise\u2026", 0, this::openSweep);
+    }
+
+    /** Run → Sweep / Optimise…: one dialog per window, on the editor's script. */
+    private void openSweep() {
+        if (sweep == null || sweep.shell().isDisposed()) {
+            sweep = SweepDialog.open(new SweepHost(ide.shell(), ide.editor(), ide.files()::pathForLoading,
+                    ide::robotChoice, ide::showRunDiagnostics));
+        } else {
+            sweep.activate();
+        }
     }
 
     private void viewMenu(Menu m) {

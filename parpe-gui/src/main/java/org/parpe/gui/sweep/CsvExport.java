@@ -1,0 +1,82 @@
+package org.parpe.gui.sweep;
+
+import java.io.BufferedWriter;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import org.eclipse.swt.SWTException;
+import org.eclipse.swt.widgets.Display;
+import org.parpe.sim.sweep.Axis;
+import org.parpe.sim.sweep.SweepCsv;
+import org.parpe.sim.sweep.SweepRow;
+
+/**
+ * "Save CSV…": the rows in the engine's CSV form ({@link SweepCsv}, the same columns as
+ * {@code parpe sweep --out}), written to a temporary file beside the target and moved over it,
+ * so that a failed write never leaves half a file.
+ */
+final class CsvExport {
+    private CsvExport() {
+    }
+
+    /** The header's parameter columns for {@code names} (the CSV shows only their names). */
+    static List<Axis> axes(List<String> names) {
+        List<Axis> axes = new ArrayList<>();
+        for (String n : names) {
+            axes.add(Axis.continuous(n, 0, 0));
+        }
+        return axes;
+    }
+
+    /** Writes {@code rows} (of a sweep of {@code runs} runs over {@code axes}) to {@code file}. */
+    static void write(Path file, List<Axis> axes, List<SweepRow> rows, int runs) throws IOException {
+        Path dir = file.toAbsolutePath().getParent();
+        Path tmp = Files.createTempFile(dir, "." + file.getFileName(), ".tmp");
+        try {
+            try (BufferedWriter w = Files.newBufferedWriter(tmp, StandardCharsets.UTF_8)) {
+                w.write(SweepCsv.header(axes));
+                w.write('\n');
+                for (SweepRow r : rows) {
+                    w.write(SweepCsv.line(r, runs));
+                    w.write('\n');
+                }
+            }
+            Files.move(tmp, file, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+        } finally {
+            Files.deleteIfExists(tmp);
+        }
+    }
+
+    /** What became of a save: whether it worked, and a line to show. */
+    interface Outcome {
+        void done(boolean ok, String message);
+    }
+
+    /** {@link #write} on its own thread; {@code outcome} is told on the UI thread of {@code display}. */
+    static void inBackground(Display display, Path file, List<Axis> axes, List<SweepRow> rows, int runs, Outcome outcome) {
+        Thread t = new Thread(() -> {
+            boolean ok;
+            String said;
+            try {
+                write(file, axes, rows, runs);
+                ok = true;
+                said = "Saved " + rows.size() + " rows to " + file;
+            } catch (IOException | RuntimeException e) {
+                ok = false;
+                said = "Cannot save " + file + ": " + e.getMessage();
+            }
+            boolean saved = ok;
+            String text = said;
+            try {
+                display.asyncExec(() -> outcome.done(saved, text));
+            } catch (SWTException closed) {
+                // The IDE closed during the save: nobody is left to tell.
+            }
+        }, "parpe-sweep-csv");
+        t.setDaemon(true);
+        t.start();
+    }
+}

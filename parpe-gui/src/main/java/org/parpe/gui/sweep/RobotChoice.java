@@ -1,0 +1,83 @@
+package org.parpe.gui.sweep;
+
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.widgets.Combo;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.FileDialog;
+import org.parpe.sim.SimTarget;
+import org.parpe.sim.config.RobotConfigs;
+
+/**
+ * The robot to simulate, with the choices of the IDE's runs: {@code auto} (the standard robot
+ * that fits the script), one of the simulator's generators, or a robot configuration file.
+ * Starts on the robot the IDE's run uses.
+ */
+final class RobotChoice {
+    private static final String AUTO_TEXT = SimTarget.AUTO + " (from the script)";
+    private static final String BROWSE = "Configuration file\u2026";
+
+    private final Combo combo;
+    private String file;
+    private String previous;
+
+    RobotChoice(Composite parent, String current) {
+        combo = new Combo(parent, SWT.READ_ONLY);
+        combo.add(AUTO_TEXT);
+        RobotConfigs.generatorNames().forEach(combo::add);
+        combo.add(BROWSE);
+        if (current != null && !SimTarget.AUTO.equals(current) && combo.indexOf(current) < 0) {
+            useFile(current);
+        }
+        int at = current == null ? -1 : combo.indexOf(current);
+        combo.select(at >= 0 ? at : 0);
+        previous = combo.getText();
+        combo.setToolTipText("The simulated robot; 'auto' picks a standard robot that fits the script, as a run does");
+        combo.addListener(SWT.Selection, e -> chosen());
+    }
+
+    Combo control() {
+        return combo;
+    }
+
+    private void chosen() {
+        if (!BROWSE.equals(combo.getText())) {
+            previous = combo.getText();
+            return;
+        }
+        FileDialog d = new FileDialog(combo.getShell(), SWT.OPEN);
+        d.setFilterExtensions(new String[] {"*.xml", "*"});
+        d.setText("Robot configuration file");
+        String p = d.open();
+        if (p == null) {
+            combo.select(combo.indexOf(previous));
+            return;
+        }
+        useFile(p);
+        previous = p;
+    }
+
+    /** Adds the configuration file {@code path} (replacing the previous one) and selects it. */
+    void useFile(String path) {
+        if (file != null) {
+            combo.remove(file);
+        }
+        file = path;
+        combo.add(path, combo.getItemCount() - 1);
+        combo.select(combo.indexOf(path));
+    }
+
+    /** {@code auto}, a generator name, or a configuration file path. */
+    String robot() {
+        String t = combo.getText();
+        return AUTO_TEXT.equals(t) || BROWSE.equals(t) ? SimTarget.AUTO : t;
+    }
+
+    /** Selects a generator by name (tests, automation). */
+    void select(String name) {
+        int at = combo.indexOf(name);
+        if (at >= 0) {
+            combo.select(at);
+            previous = name;
+        }
+    }
+}

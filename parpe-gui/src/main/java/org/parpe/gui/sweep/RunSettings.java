@@ -1,0 +1,76 @@
+package org.parpe.gui.sweep;
+
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.layout.GridData;
+import org.eclipse.swt.widgets.Combo;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Label;
+import org.eclipse.swt.widgets.Spinner;
+import org.eclipse.swt.widgets.Text;
+import org.parpe.sim.sweep.Objective;
+
+/**
+ * The dialog's top line, shared by sweeps and optimisations: the robot, the simulated seconds
+ * per run, the threads (every core unless changed) and the objective.
+ */
+final class RunSettings {
+    private final RobotChoice robot;
+    private final Text duration;
+    private final Spinner jobs;
+    private final Combo objective;
+
+    /** The line in {@code parent} (a grid of 8 columns), starting on the IDE's robot {@code currentRobot}. */
+    RunSettings(Composite parent, String currentRobot) {
+        new Label(parent, SWT.NONE).setText("Robot:");
+        robot = new RobotChoice(parent, currentRobot);
+        new Label(parent, SWT.NONE).setText("   Seconds per run:");
+        duration = new Text(parent, SWT.BORDER);
+        duration.setText("10");
+        duration.setLayoutData(new GridData(60, SWT.DEFAULT));
+        duration.setToolTipText("Simulated seconds of each run");
+        new Label(parent, SWT.NONE).setText("   Jobs:");
+        jobs = new Spinner(parent, SWT.BORDER);
+        jobs.setValues(Runtime.getRuntime().availableProcessors(), 1, 1024, 0, 1, 4);
+        jobs.setToolTipText("Simulations at once (default: every core); the results do not depend on it");
+        new Label(parent, SWT.NONE).setText("   Objective:");
+        objective = new Combo(parent, SWT.READ_ONLY);
+        for (Objective o : Objective.values()) {
+            objective.add(o.label());
+        }
+        objective.select(0);
+        objective.setToolTipText("What ranks the runs (larger is better): the plot's vertical axis and what Optimise maximises");
+    }
+
+    RobotChoice robot() {
+        return robot;
+    }
+
+    /** The seconds per run as typed (checked at Start). */
+    String duration() {
+        return duration.getText();
+    }
+
+    void setDuration(String seconds) {
+        duration.setText(seconds);
+    }
+
+    int jobs() {
+        return jobs.getSelection();
+    }
+
+    void setJobs(int n) {
+        jobs.setSelection(n);
+    }
+
+    Objective objective() {
+        return Objective.values()[objective.getSelectionIndex()];
+    }
+
+    /** Whether the boxes can be changed (not while runs are going on). */
+    void setEnabled(boolean enabled) {
+        robot.control().setEnabled(enabled);
+        duration.setEnabled(enabled);
+        jobs.setEnabled(enabled);
+        objective.setEnabled(enabled);
+    }
+}

@@ -1,0 +1,74 @@
+package org.parpe.gui.sweep;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import org.eclipse.swt.widgets.Display;
+import org.parpe.core.model.Numbers;
+import org.parpe.core.model.Parameter;
+import org.parpe.sim.sweep.Axis;
+import org.parpe.sim.sweep.Constraints;
+import org.parpe.sim.sweep.Evaluator;
+import org.parpe.sim.sweep.Objective;
+import org.parpe.sim.sweep.OptimizeSpec;
+import org.parpe.sim.sweep.SearchSpace;
+import org.parpe.sim.sweep.SweepException;
+import org.parpe.sim.sweep.SweepSpec;
+
+/**
+ * What Start was pressed with: the script (the editor's text, loaded as its file), the robot,
+ * the seconds per run, the threads and the objective. Checks the boxes, then starts the
+ * engine; every problem found before the start is a {@link SweepException} with one line.
+ *
+ * @param file      the path the text is loaded as
+ * @param text      the editor's text
+ * @param robot     {@code auto}, a generator, or a configuration file
+ * @param duration  the seconds per run, as typed
+ * @param jobs      the threads
+ * @param objective what ranks the runs
+ */
+record StartRequest(Path file, String text, String robot, String duration, int jobs, Objective objective) {
+    /** The scheduler's tick, as the IDE's runs and {@code parpe sweep} use. */
+    static final double TICK = 0.01;
+    /** The tilt beyond which a robot counts as fallen over, as {@code parpe sweep} counts it. */
+    static final double FALL_TILT = 90;
+
+    /** A started sweep or optimisation. */
+    record Started(Results results, SweepRunner runner, int total) {
+    }
+
+    private Evaluator.Settings settings() throws SweepException {
+        Double seconds = Numbers.parsePlain(duration);
+        if (seconds == null || !(seconds > 0) || seconds.isInfinite() || seconds < TICK) {
+            throw new SweepException("the seconds per run must be a number >= " + Numbers.format(TICK) + ", got '"
+                    + duration.trim() + "'");
+        }
+        return new Evaluator.Settings(file, text, Map.of(), robot, seconds, TICK, FALL_TILT);
+    }
+
+    /** Starts the sweep the Sweep tab describes. */
+    Started sweep(List<Parameter> parameters, SweepTab tab, Display display, SweepRunner.Events events)
+            throws SweepException {
+        Evaluator.Settings s = settings();
+        SweepSpec spec = tab.spec(parameters);
+        List<String> names = spec.axes().stream().map(Axis::name).toList();
+        Results results = new Results(file, Results.Mode.SWEEP, names, objective, Constraints.NONE);
+        return new Started(results, SweepRunner.sweep(display, s, spec, jobs, events), spec.size());
+    }
+
+    /** Starts the optimisation the Optimise tab describes. */
+    Started optimise(List<Parameter> parameters, OptimiseTab tab, Display display, SweepRunner.Events events)
+            throws SweepException {
+        Evaluator.Settings s = settings();
+        OptimizeSpec spec = tab.spec(objective);
+        SearchSpace space = new SearchSpace(parameters, Set.of());
+        if (space.dimension() == 0) {
+            throw new SweepException("nothing to optimise: no parameter of " + file.getFileName()
+                    + " has both a min and a max (with min < max)");
+        }
+        List<String> names = space.parameters().stream().map(Parameter::name).toList();
+        Results results = new Results(file, Results.Mode.OPTIMISE, names, objective, spec.constraints());
+        return new Started(results, SweepRunner.optimise(display, s, spec, jobs, events), spec.budget());
+    }
+}

@@ -1,0 +1,400 @@
+package org.parpe.gui.sweep;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import org.eclipse.jface.text.DocumentEvent;
+import org.eclipse.jface.text.IDocumentListener;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.layout.GridData;
+import org.eclipse.swt.layout.GridLayout;
+import org.eclipse.swt.widgets.Button;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.FileDialog;
+import org.eclipse.swt.widgets.Label;
+import org.eclipse.swt.widgets.ProgressBar;
+import org.eclipse.swt.widgets.Shell;
+import org.eclipse.swt.widgets.TabFolder;
+import org.eclipse.swt.widgets.TabItem;
+import org.parpe.core.load.LoadResult;
+import org.parpe.core.load.ScriptLoader;
+import org.parpe.core.model.Numbers;
+import org.parpe.core.model.Parameter;
+import org.parpe.sim.sweep.SweepRow;
+
+/**
+ * Run → Sweep / Optimise…: a window beside the IDE (not modal) on the editor's script, unsaved
+ * edits included. Above, the robot, the simulated seconds per run, the threads and the
+ * objective; a Sweep tab and an Optimise tab; Start and Stop with a progress bar; the results
+ * table and the plot filled as runs finish; "Apply best" and "Save CSV…" below. The engine
+ * runs on worker threads ({@link SweepRunner}); this class runs on the UI thread only.
+ */
+public final class SweepDialog {
+    private final SweepHost host;
+    private final Shell shell;
+    private final RunSettings settings;
+    private final TabFolder tabs;
+    private final SweepTab sweepTab;
+    private final OptimiseTab optimiseTab;
+    private final Button start;
+    private final Button stop;
+    private final ProgressBar progress;
+    private final Label counts;
+    private final Label message;
+    private final ResultsPane pane;
+    private final Button apply;
+    private final Button save;
+    private final IDocumentListener edits = new IDocumentListener() {
+        @Override
+        public void documentAboutToBeChanged(DocumentEvent event) {
+        }
+
+        @Override
+        public void documentChanged(DocumentEvent event) {
+            edited = true;
+        }
+    };
+    private boolean edited;
+    private List<Parameter> parameters = List.of();
+    private Results results;
+    private SweepRunner runner;
+    private int total;
+
+    private SweepDialog(SweepHost host) {
+        this.host = host;
+        shell = new Shell(host.shell(), SWT.SHELL_TRIM | SWT.MODELESS);
+        shell.setLayout(new GridLayout(1, false));
+        settings = new RunSettings(row(shell, 8), host.robot().get());
+        tabs = new TabFolder(shell, SWT.TOP);
+        tabs.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, false));
+        sweepTab = new SweepTab(tabs);
+        tab("Sweep", sweepTab.control());
+        optimiseTab = new OptimiseTab(tabs);
+        tab("Optimise", optimiseTab.control());
+        ((GridData) tabs.getLayoutData()).heightHint = 270;
+
+        Composite bar = row(shell, 4);
+        start = button(bar, "Start", this::start);
+        stop = button(bar, "Stop", this::stop);
+        progress = new ProgressBar(bar, SWT.HORIZONTAL);
+        progress.setMaximum(1000);
+        progress.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        counts = new Label(bar, SWT.NONE);
+        counts.setLayoutData(new GridData(200, SWT.DEFAULT));
+        message = new Label(shell, SWT.WRAP);
+        message.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+
+        pane = new ResultsPane(shell);
+        Composite bottom = row(shell, 3);
+        apply = button(bottom, "Apply best", this::applyBest);
+        apply.setToolTipText("Write the best run's values as the parameters' defaults into the editor (Edit > Undo takes them back)");
+        save = button(bottom, "Save CSV\u2026", this::saveCsv);
+        button(bottom, "Close", shell::close);
+        wire();
+    }
+
+    private static Composite row(Composite parent, int columns) {
+        Composite c = new Composite(parent, SWT.NONE);
+        GridLayout gl = new GridLayout(columns, false);
+        gl.marginHeight = 2;
+        c.setLayout(gl);
+        c.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        return c;
+    }
+
+    private void tab(String text, org.eclipse.swt.widgets.Control control) {
+        TabItem item = new TabItem(tabs, SWT.NONE);
+        item.setText(text);
+        item.setControl(control);
+    }
+
+    private static Button button(Composite parent, String text, Runnable action) {
+        Button b = new Button(parent, SWT.PUSH);
+        b.setText(text);
+        b.addListener(SWT.Selection, e -> action.run());
+        return b;
+    }
+
+    private void wire() {
+        host.editor().document().addDocumentListener(edits);
+        shell.addListener(SWT.Activate, e -> reloadIfEdited());
+        shell.addListener(SWT.Close, e -> {
+            if (runner != null) {
+                runner.stop();
+            }
+        });
+        shell.addListener(SWT.Dispose, e -> {
+            // The IDE window closing disposes this one without a Close event.
+            if (runner != null) {
+                runner.stop();
+            }
+            host.editor().document().removeDocumentListener(edits);
+        });
+        setRunning(false);
+    }
+
+    /** Opens the dialog on {@code host}'s editor. */
+    public static SweepDialog open(SweepHost host) {
+        SweepDialog d = new SweepDialog(host);
+        d.reload();
+        d.shell.setSize(1200, 900);
+        d.shell.open();
+        return d;
+    }
+
+    /** The dialog's window. */
+    public Shell shell() {
+        return shell;
+    }
+
+    /** Brings the dialog to the front and reads the script's parameters again if it was edited. */
+    public void activate() {
+        shell.setActive();
+        reloadIfEdited();
+    }
+
+    private void reloadIfEdited() {
+        if (edited && (runner == null || !runner.running())) {
+            reload();
+        }
+    }
+
+    /** Reads the editor's script and shows its parameters; returns its parameters, or null when it does not load. */
+    private List<Parameter> reload() {
+        edited = false;
+        Path file = host.script().get();
+        shell.setText("Sweep / Optimise \u2014 " + file.getFileName());
+        LoadResult r = ScriptLoader.loadText(file, host.editor().document().get(), Map.of());
+        if (r.program() == null) {
+            String first = r.errors().isEmpty() ? file + ": the script does not load" : r.errors().get(0).format();
+            error(first + (r.errors().size() > 1 ? " (and " + (r.errors().size() - 1) + " more in Problems)" : ""));
+            return null;
+        }
+        List<Parameter> now = r.program().parameters();
+        if (!now.equals(parameters)) {
+            parameters = now;
+            sweepTab.setParameters(now);
+        }
+        return now;
+    }
+
+    private void start() {
+        if (runner != null && runner.running()) {
+            return;
+        }
+        List<Parameter> now = reload();
+        if (now == null) {
+            return;
+        }
+        try {
+            StartRequest req = new StartRequest(host.script().get(), host.editor().document().get(), settings.robot().robot(),
+                    settings.duration(), settings.jobs(), settings.objective());
+            boolean sweeping = tabs.getSelectionIndex() == 0;
+            SweepRunner.Events events = new Events();
+            StartRequest.Started s = sweeping ? req.sweep(now, sweepTab, shell.getDisplay(), events)
+                    : req.optimise(now, optimiseTab, shell.getDisplay(), events);
+            results = s.results();
+            runner = s.runner();
+            total = s.total();
+        } catch (org.parpe.sim.sweep.SweepException e) {
+            error(words(e.getMessage()));
+            return;
+        }
+        pane.show(results);
+        progress.setSelection(0);
+        counts.setText("0 of " + total + " runs");
+        info(String.format(Locale.ROOT, "Running %d simulation(s) of %s s on %d thread(s)\u2026", total,
+                settings.duration().trim(), settings.jobs()));
+        setRunning(true);
+    }
+
+    /** The engine's option names, as the dialog's boxes call them. */
+    private static String words(String engineMessage) {
+        return engineMessage.replaceFirst("^--vary ", "").replace("--budget", "the budget")
+                .replace("--starts", "the number of searches").replace("--random", "the random count")
+                .replace("--repeat", "runs per combination").replace("give at least one --vary NAME=A..B", "tick Vary");
+    }
+
+    /** Receives the runner's news on the UI thread; ignores a runner that is no longer the current one. */
+    private final class Events implements SweepRunner.Events {
+        @Override
+        public void rows(List<SweepRow> rows, int done, int of) {
+            if (shell.isDisposed() || runner == null || results == null) {
+                return;
+            }
+            rows.forEach(results::add);
+            pane.refresh();
+            progress.setSelection(of == 0 ? 0 : (int) (1000L * done / of));
+            counts.setText(done + " of " + of + " runs");
+            apply.setEnabled(results.best() != null);
+        }
+
+        @Override
+        public void finished(List<SweepRow> all, boolean cancelled, String error) {
+            if (shell.isDisposed()) {
+                return;
+            }
+            setRunning(false);
+            if (error != null) {
+                error(words(error));
+                return;
+            }
+            results.replace(all);
+            pane.refresh();
+            counts.setText(all.size() + " of " + total + " runs");
+            if (!cancelled) {
+                progress.setSelection(1000);
+            }
+            SweepRow best = results.best();
+            String head = cancelled ? "Stopped after " + all.size() + " of " + total + " runs. "
+                    : "Finished " + all.size() + " runs. ";
+            info(head + (best == null ? "No run was acceptable (see the error and fell columns)."
+                    : "Best: run " + (best.point().index() + 1) + ", " + values(best.values()) + ": "
+                    + results.objective().label() + " " + ResultsTable.number(results.objective().of(best))
+                    + (best.fell() ? " (its robot fell over)" : "")));
+            apply.setEnabled(best != null);
+        }
+
+        @Override
+        public void problems(List<org.parpe.core.diag.Diagnostic> problems) {
+            if (!shell.isDisposed()) {
+                host.problems().accept(problems);
+            }
+        }
+    }
+
+    private static String values(Map<String, Double> values) {
+        StringBuilder b = new StringBuilder();
+        values.forEach((k, v) -> b.append(b.length() == 0 ? "" : ", ").append(k).append(" = ").append(Numbers.format(v)));
+        return b.toString();
+    }
+
+    private void stop() {
+        if (runner != null && runner.running()) {
+            runner.stop();
+            stop.setEnabled(false);
+            info("Stopping: the runs in progress end at their next tick\u2026");
+        }
+    }
+
+    private void setRunning(boolean running) {
+        start.setEnabled(!running);
+        stop.setEnabled(running);
+        save.setEnabled(!running && results != null && !results.rows().isEmpty());
+        apply.setEnabled(results != null && results.best() != null);
+        tabs.setEnabled(!running);
+        settings.setEnabled(!running);
+    }
+
+    private void applyBest() {
+        if (results == null) {
+            return;
+        }
+        Path now = host.script().get();
+        if (!now.equals(results.script())) {
+            error("these results are of " + results.script().getFileName() + ", but the editor holds " + now.getFileName()
+                    + "; open " + results.script().getFileName() + " again to apply them");
+            return;
+        }
+        try {
+            String what = ApplyBest.apply(host.editor(), now, results.bestValues());
+            info("Applied to the editor: " + what + " (Edit > Undo takes it back; the file is saved only when you save it).");
+        } catch (org.parpe.sim.sweep.SweepException e) {
+            error(e.getMessage());
+        }
+    }
+
+    private void saveCsv() {
+        FileDialog d = new FileDialog(shell, SWT.SAVE);
+        d.setFilterExtensions(new String[] {"*.csv", "*"});
+        d.setOverwrite(true);
+        String name = host.script().get().getFileName().toString().replaceFirst("\\.xml$", "");
+        d.setFileName(name + (results.mode() == Results.Mode.SWEEP ? "-sweep.csv" : "-optimise.csv"));
+        String p = d.open();
+        if (p != null) {
+            saveCsv(Path.of(p));
+        }
+    }
+
+    /** Writes the rows to {@code file} off the UI thread and says when it is done. */
+    void saveCsv(Path file) {
+        List<SweepRow> rows = List.copyOf(results.rows());
+        CsvExport.inBackground(shell.getDisplay(), file, CsvExport.axes(results.parameters()), rows, total, (ok, said) -> {
+            if (shell.isDisposed()) {
+                return;
+            }
+            if (ok) {
+                info(said);
+            } else {
+                error(said);
+            }
+        });
+    }
+
+    private void info(String text) {
+        message.setForeground(null);
+        message.setText(text);
+        shell.layout(true, true);
+    }
+
+    private void error(String text) {
+        message.setForeground(shell.getDisplay().getSystemColor(SWT.COLOR_RED));
+        message.setText(text);
+        shell.layout(true, true);
+    }
+
+    // Accessors for the tests of this package.
+
+    String message() {
+        return message.getText();
+    }
+
+    SweepTab sweepTab() {
+        return sweepTab;
+    }
+
+    OptimiseTab optimiseTab() {
+        return optimiseTab;
+    }
+
+    ResultsTable table() {
+        return pane.table();
+    }
+
+    Results results() {
+        return results;
+    }
+
+    boolean running() {
+        return runner != null && runner.running();
+    }
+
+    void setDuration(String seconds) {
+        settings.setDuration(seconds);
+    }
+
+    void setJobs(int n) {
+        settings.setJobs(n);
+    }
+
+    void selectTab(int index) {
+        tabs.setSelection(index);
+    }
+
+    RobotChoice robot() {
+        return settings.robot();
+    }
+
+    Button startButton() {
+        return start;
+    }
+
+    Button stopButton() {
+        return stop;
+    }
+
+    Button applyButton() {
+        return apply;
+    }
+}

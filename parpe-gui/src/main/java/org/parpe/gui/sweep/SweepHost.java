@@ -1,0 +1,22 @@
+package org.parpe.gui.sweep;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.function.Consumer;
+import java.util.function.Supplier;
+import org.eclipse.swt.widgets.Shell;
+import org.parpe.core.diag.Diagnostic;
+import org.parpe.gui.editor.ParslEditor;
+
+/**
+ * What the Sweep/Optimise dialog needs from the IDE window.
+ *
+ * @param shell    the window the dialog belongs to
+ * @param editor   the editor whose text is swept and into which the best values are written
+ * @param script   the path the editor's text is loaded as (includes are found next to it)
+ * @param robot    the robot the IDE's runs use: {@code auto}, a generator, or a configuration file
+ * @param problems shows diagnostics that have a place in the Problems view (UI thread or any)
+ */
+public record SweepHost(Shell shell, ParslEditor editor, Supplier<Path> script, Supplier<String> robot,
+                        Consumer<List<Diagnostic>> problems) {
+}

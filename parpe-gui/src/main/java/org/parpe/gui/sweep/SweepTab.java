@@ -1,0 +1,185 @@
+package org.parpe.gui.sweep;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.custom.ScrolledComposite;
+import org.eclipse.swt.layout.GridData;
+import org.eclipse.swt.layout.GridLayout;
+import org.eclipse.swt.widgets.Button;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Control;
+import org.eclipse.swt.widgets.Label;
+import org.eclipse.swt.widgets.Spinner;
+import org.eclipse.swt.widgets.Text;
+import org.parpe.core.model.Numbers;
+import org.parpe.core.model.Parameter;
+import org.parpe.sim.sweep.Axis;
+import org.parpe.sim.sweep.SweepException;
+import org.parpe.sim.sweep.SweepSpec;
+import org.parpe.sim.sweep.VarySpec;
+
+/**
+ * The Sweep tab: one line per script parameter (vary it or not, from, to, number of values;
+ * its bounds beside), a grid or a random draw with its count, runs per combination and the
+ * seed. {@link #spec} turns the boxes into the engine's {@link SweepSpec} with the engine's
+ * own checks and messages ({@link VarySpec}).
+ */
+final class SweepTab {
+    private final Composite root;
+    private final Composite lines;
+    private final ScrolledComposite scroller;
+    private final Map<String, Line> byName = new LinkedHashMap<>();
+    private final Button grid;
+    private final Button random;
+    private final Spinner count;
+    private final Spinner repeat;
+    private final Text seed;
+
+    /** The widgets of one parameter. */
+    record Line(Parameter parameter, Button vary, Text from, Text to, Spinner values) {
+    }
+
+    SweepTab(Composite parent) {
+        root = new Composite(parent, SWT.NONE);
+        root.setLayout(new GridLayout(1, false));
+        scroller = new ScrolledComposite(root, SWT.V_SCROLL | SWT.BORDER);
+        scroller.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
+        scroller.setExpandHorizontal(true);
+        lines = new Composite(scroller, SWT.NONE);
+        scroller.setContent(lines);
+        lines.setLayout(new GridLayout(6, false));
+        Composite how = new Composite(root, SWT.NONE);
+        how.setLayout(new GridLayout(8, false));
+        grid = new Button(how, SWT.RADIO);
+        grid.setText("Grid (every combination)");
+        grid.setSelection(true);
+        random = new Button(how, SWT.RADIO);
+        random.setText("Random:");
+        count = spinner(how, 1, 1_000_000, 20);
+        count.setToolTipText("The number of random combinations (values drawn anywhere between From and To)");
+        new Label(how, SWT.NONE).setText("   Runs per combination:");
+        repeat = spinner(how, 1, 1000, 1);
+        repeat.setToolTipText("Each combination this many times, run r with rand() seed = seed + r");
+        new Label(how, SWT.NONE).setText("   Seed:");
+        seed = new Text(how, SWT.BORDER);
+        seed.setText("0");
+        seed.setLayoutData(new GridData(70, SWT.DEFAULT));
+    }
+
+    private static Spinner spinner(Composite parent, int min, int max, int value) {
+        Spinner s = new Spinner(parent, SWT.BORDER);
+        s.setValues(value, min, max, 0, 1, 10);
+        return s;
+    }
+
+    Control control() {
+        return root;
+    }
+
+    /**
+     * One line per parameter of {@code parameters}; a parameter that had a line before keeps
+     * what was typed for it (the script was edited while the dialog was open).
+     */
+    void setParameters(List<Parameter> parameters) {
+        Map<String, String[]> typed = new LinkedHashMap<>();
+        byName.forEach((n, l) -> typed.put(n, new String[] {Boolean.toString(l.vary().getSelection()), l.from().getText(),
+            l.to().getText(), Integer.toString(l.values().getSelection())}));
+        for (Control c : lines.getChildren()) {
+            c.dispose();
+        }
+        byName.clear();
+        for (String h : new String[] {"Vary", "Parameter", "From", "To", "Values", "Bounds (default)"}) {
+            Label l = new Label(lines, SWT.NONE);
+            l.setText(h);
+        }
+        for (Parameter p : parameters) {
+            Line line = line(p);
+            String[] before = typed.get(p.name());
+            if (before != null) {
+                line.vary().setSelection(Boolean.parseBoolean(before[0]));
+                line.from().setText(before[1]);
+                line.to().setText(before[2]);
+                line.values().setSelection(Integer.parseInt(before[3]));
+            }
+            byName.put(p.name(), line);
+        }
+        if (parameters.isEmpty()) {
+            Label none = new Label(lines, SWT.WRAP);
+            none.setText("The script has no <parameters>: declare some (with min and max) to sweep them.");
+            none.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false, 6, 1));
+        }
+        lines.setSize(lines.computeSize(SWT.DEFAULT, SWT.DEFAULT));
+        scroller.setMinHeight(lines.getSize().y);
+    }
+
+    private Line line(Parameter p) {
+        Button vary = new Button(lines, SWT.CHECK);
+        new Label(lines, SWT.NONE).setText(p.displayLabel().equals(p.name()) ? p.name() : p.name() + " (" + p.displayLabel() + ")");
+        Text from = new Text(lines, SWT.BORDER);
+        from.setText(Numbers.format(p.min() != null ? p.min() : p.value()));
+        from.setLayoutData(new GridData(70, SWT.DEFAULT));
+        Text to = new Text(lines, SWT.BORDER);
+        to.setText(Numbers.format(p.max() != null ? p.max() : p.value()));
+        to.setLayoutData(new GridData(70, SWT.DEFAULT));
+        Spinner values = spinner(lines, 1, 1_000_000, 3);
+        values.setToolTipText("How many evenly spaced values from From to To (grid)");
+        Label bounds = new Label(lines, SWT.NONE);
+        bounds.setText((p.min() == null ? "-\u221e" : Numbers.format(p.min())) + " \u2026 "
+                + (p.max() == null ? "+\u221e" : Numbers.format(p.max())) + "   (" + Numbers.format(p.value()) + ")");
+        bounds.setForeground(lines.getDisplay().getSystemColor(SWT.COLOR_DARK_GRAY));
+        return new Line(p, vary, from, to, values);
+    }
+
+    /** The line of parameter {@code name}, or null (tests, automation). */
+    Line line(String name) {
+        return byName.get(name);
+    }
+
+    /** Chooses a random sweep of {@code n} combinations, or a grid when {@code n} is 0 (tests, automation). */
+    void setRandom(int n) {
+        random.setSelection(n > 0);
+        grid.setSelection(n <= 0);
+        if (n > 0) {
+            count.setSelection(n);
+        }
+    }
+
+    /**
+     * The sweep the boxes describe for {@code parameters} (the script as it is now); a bad range
+     * or seed throws with one line naming the parameter and the value.
+     */
+    SweepSpec spec(List<Parameter> parameters) throws SweepException {
+        List<Axis> axes = new ArrayList<>();
+        boolean draw = random.getSelection();
+        for (Line l : byName.values()) {
+            if (!l.vary().getSelection()) {
+                continue;
+            }
+            String name = l.parameter().name();
+            String range = l.from().getText().trim() + ".." + l.to().getText().trim();
+            Axis a = VarySpec.parse(name + "=" + range + (draw ? "" : ":" + l.values().getSelection()), parameters);
+            // A random sweep draws anywhere in the range unless the parameter counts something.
+            axes.add(draw && a.kind() == Axis.Kind.INTEGERS && !whole(l.parameter()) ? Axis.continuous(name, a.lo(), a.hi()) : a);
+        }
+        if (axes.isEmpty()) {
+            throw new SweepException("nothing to vary: tick Vary for at least one parameter");
+        }
+        Double s = Numbers.parsePlain(seed.getText());
+        if (s == null || s != Math.rint(s) || Math.abs(s) > 1e15) {
+            throw new SweepException("the seed must be a whole number, got '" + seed.getText().trim() + "'");
+        }
+        SweepSpec spec = draw ? SweepSpec.random(axes, count.getSelection(), repeat.getSelection(), s.longValue())
+                : SweepSpec.grid(axes, repeat.getSelection(), s.longValue());
+        spec.check();
+        return spec;
+    }
+
+    /** Whether {@code p} counts something: its default and bounds are whole numbers. */
+    private static boolean whole(Parameter p) {
+        return p.value() == Math.rint(p.value()) && p.min() != null && p.min() == Math.rint(p.min())
+                && p.max() != null && p.max() == Math.rint(p.max());
+    }
+}

@@ -1,0 +1,55 @@
+package org.parpe.gui.sweep;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Arrays;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.widgets.Event;
+import org.eclipse.swt.widgets.Menu;
+import org.eclipse.swt.widgets.MenuItem;
+import org.eclipse.swt.widgets.Shell;
+import org.junit.jupiter.api.Test;
+import org.parpe.gui.app.IdeWindow;
+import org.parpe.gui.app.Prefs;
+
+/** Run → Sweep / Optimise… in the IDE window opens the dialog on the editor's script, once. */
+class SweepMenuGuiTest {
+
+    private static MenuItem item(Menu menu, String prefix) {
+        return Arrays.stream(menu.getItems()).filter(i -> i.getText().replace("&", "").startsWith(prefix)).findFirst()
+                .orElse(null);
+    }
+
+    private static Shell[] sweepShells(IdeWindow ide) {
+        return Arrays.stream(ide.shell().getShells()).filter(s -> !s.isDisposed() && s.getText().startsWith("Sweep / Optimise"))
+                .toArray(Shell[]::new);
+    }
+
+    @Test
+    void theRunMenuOpensOneDialogOnTheEditorsScript() throws Exception {
+        Path home = Files.createTempDirectory("parpe-sweep-menu");
+        IdeWindow ide = new IdeWindow(Ui.display(), new Prefs(home));
+        try {
+            ide.open(null, true);
+            Ui.pump(() -> ide.validations() > 0, "the first validation");
+            MenuItem run = item(ide.shell().getMenuBar(), "Run");
+            assertNotNull(run, "no Run menu");
+            MenuItem sweep = item(run.getMenu(), "Sweep / Optimise");
+            assertNotNull(sweep, "no Run > Sweep / Optimise… item");
+            sweep.notifyListeners(SWT.Selection, new Event());
+            sweep.notifyListeners(SWT.Selection, new Event());
+            Shell[] open = sweepShells(ide);
+            assertEquals(1, open.length, "a second click brings the same dialog");
+            assertEquals("Sweep / Optimise \u2014 untitled.xml", open[0].getText());
+            assertTrue(open[0].isVisible());
+            open[0].close();
+            Ui.pump(() -> sweepShells(ide).length == 0, "the dialog to close");
+        } finally {
+            ide.shell().dispose();
+        }
+    }
+}

@@ -1,0 +1,86 @@
+package org.parpe.gui.sweep;
+
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.function.BooleanSupplier;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.graphics.ImageData;
+import org.eclipse.swt.graphics.ImageLoader;
+import org.eclipse.swt.widgets.Button;
+import org.eclipse.swt.widgets.Display;
+import org.eclipse.swt.widgets.Event;
+import org.eclipse.swt.widgets.Shell;
+import org.parpe.gui.app.Screenshot;
+
+/** What the sweep dialog's GUI tests share: the display, bounded waits, clicks and screenshots. */
+final class Ui {
+    static final long WAIT_MS = 60_000;
+
+    private Ui() {
+    }
+
+    /** The display; fails with a hint when there is no X server. */
+    static Display display() {
+        String x = System.getenv("DISPLAY");
+        if (x == null || x.isBlank()) {
+            fail("No X display (DISPLAY is not set). The GUI tests need one: run them under xvfb-run, as ./test-all does.");
+        }
+        return Display.getDefault();
+    }
+
+    /** Runs the event loop until {@code done} holds; fails after {@link #WAIT_MS}. */
+    static void pump(BooleanSupplier done, String what) {
+        Display display = Display.getDefault();
+        long until = System.currentTimeMillis() + WAIT_MS;
+        while (!done.getAsBoolean()) {
+            if (System.currentTimeMillis() > until) {
+                fail("timed out after " + WAIT_MS / 1000 + " s waiting for " + what);
+            }
+            if (!display.readAndDispatch()) {
+                sleep();
+            }
+        }
+    }
+
+    /** Handles events for a moment, so that layouts and paints are done. */
+    static void settle() {
+        Display display = Display.getDefault();
+        long until = System.currentTimeMillis() + 300;
+        while (System.currentTimeMillis() < until) {
+            if (!display.readAndDispatch()) {
+                display.update();
+                sleep();
+            }
+        }
+    }
+
+    private static void sleep() {
+        try {
+            Thread.sleep(5);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            fail("interrupted");
+        }
+    }
+
+    /** Presses {@code b} as a click would: its selection listeners run on the UI thread. */
+    static void click(Button b) {
+        assertTrue(b.isEnabled(), "the button '" + b.getText() + "' is disabled");
+        b.notifyListeners(SWT.Selection, new Event());
+    }
+
+    /** Saves a screenshot of {@code shell} under the artefacts folder, checks it is not blank, returns its path. */
+    static Path screenshot(Shell shell, String name) throws Exception {
+        Path dir = Path.of(System.getProperty("parpe.artefacts", "target/gui-test-artefacts"));
+        Files.createDirectories(dir);
+        Path f = dir.resolve(name);
+        Screenshot.save(shell, f);
+        ImageData d = new ImageLoader().load(f.toString())[0];
+        assertTrue(d.width > 600 && d.height > 400, "screenshot too small: " + d.width + "x" + d.height);
+        assertTrue(Screenshot.distinctColours(d, 64) >= 64, "screenshot " + f + " looks blank");
+        return f;
+    }
+}
