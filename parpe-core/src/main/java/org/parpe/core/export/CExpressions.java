@@ -11,6 +11,10 @@ import org.parpe.core.expr.Node;
  * finiteness checks, which raise the same run-time errors.
  */
 final class CExpressions implements ExprTree.Visitor<String> {
+    /** One-argument functions in the order of the runtime's names table ({@code parsl_io.c}). */
+    static final List<String> FUNCTIONS = List.of("sin", "cos", "tan", "asin", "acos", "atan", "sinh", "cosh", "tanh",
+            "asinh", "acosh", "atanh", "log", "ln", "exp", "sqrt", "abs", "round", "floor", "ceil", "rad", "deg");
+
     private final StringBuilder body = new StringBuilder();
     private final int[] sensorSlot;
     private int temps;
@@ -166,7 +170,7 @@ final class CExpressions implements ExprTree.Visitor<String> {
     public String function1(String name, Node arg) {
         String x = ExprTree.visit(arg, this);
         String t = set(c1(name, x));
-        line("if (!isfinite(" + t + ")) parsl_raise(r, PARSL_E_FUNC, " + x + ", 0, 0);");
+        line("if (!isfinite(" + t + ")) parsl_raise(r, PARSL_E_FUNC, " + x + ", 0, " + FUNCTIONS.indexOf(name) + ");");
         return t;
     }
 

@@ -217,6 +217,7 @@ public final class CProgram {
         define(h, "PARSL_NS", sensorCount, "sensor readings (carried channels)");
         define(h, "PARSL_NS1", Math.max(1, sensorCount), "");
         define(h, "PARSL_NE", t.entry.size(), "main entries");
+        define(h, "PARSL_NA", t.aut.size(), "automata");
         define(h, "PARSL_NI1", instances(), "instances of the largest entry");
         define(h, "PARSL_POOL1", moduleStates(), "module states of the largest entry");
         define(h, "PARSL_TPOOL1", durations(), "state durations of the largest entry");
@@ -254,7 +255,7 @@ public final class CProgram {
             c.append("    case ").append(i).append(": return x").append(i).append("(r);\n");
         }
         c.append("    default: return 0;\n    }\n}\n\n");
-        new CTables(program, ids, sensorSlot, t, places, files).append(c);
+        new CTables(program, ids, sensorSlot, t, places, files, exprs.stream().map(Expression::text).toList()).append(c);
         return c.toString();
     }
 

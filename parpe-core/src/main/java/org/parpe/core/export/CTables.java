@@ -16,9 +16,11 @@ final class CTables {
     private final CProgram.Tables t;
     private final List<SourcePos> places;
     private final Map<String, Integer> files;
+    private final List<String> exprTexts;
 
     CTables(Program program, int[] ids, int[] sensorSlot, CProgram.Tables t, List<SourcePos> places,
-            Map<String, Integer> files) {
+            Map<String, Integer> files, List<String> exprTexts) {
+        this.exprTexts = exprTexts;
         this.program = program;
         this.ids = ids;
         this.sensorSlot = sensorSlot;
@@ -105,7 +107,14 @@ final class CTables {
         for (String f : files.keySet()) {
             c.append(i++ == 0 ? "" : ", ").append('"').append(CText.escape(f)).append('"');
         }
-        c.append("};\nconst char *const parsl_aut_names[] = {");
+        c.append("};\nconst char *const parsl_expr_text[] = {");
+        for (int e = 0; e < exprTexts.size(); e++) {
+            c.append(e == 0 ? "\n    \"" : ",\n    \"").append(CText.escape(exprTexts.get(e))).append('"');
+        }
+        if (exprTexts.isEmpty()) {
+            c.append("\"\"");
+        }
+        c.append("\n};\nconst char *const parsl_aut_names[] = {");
         StringBuilder states = new StringBuilder("const char *const parsl_state_names[] = {");
         int s = 0;
         for (int a = 0; a < program.automata().size(); a++) {

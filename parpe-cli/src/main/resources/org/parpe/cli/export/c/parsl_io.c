@@ -13,6 +13,14 @@ static const char *const CHANNEL_NAMES[PARSL_CHANNELS] = {
     "angle", "accel_x", "accel_y", "accel_z", "touch_left", "touch_right"
 };
 
+#ifndef PARSL_NO_NAMES
+/* One-argument functions, in the order of org.parpe.core.export.CExpressions.FUNCTIONS. */
+static const char *const FUNCTIONS[] = {
+    "sin", "cos", "tan", "asin", "acos", "atan", "sinh", "cosh", "tanh", "asinh", "acosh", "atanh", "log", "ln",
+    "exp", "sqrt", "abs", "round", "floor", "ceil", "rad", "deg"
+};
+#endif
+
 static int fail(char *msg, size_t n, const char *what, const char *name)
 {
     if (msg != NULL && n > 0) {
@@ -190,7 +198,7 @@ const char *parsl_error_text(const parsl_rt *r, char *msg, size_t n)
 #ifdef PARSL_NO_NAMES
     snprintf(msg, n, "run-time error %d", (int) r->err_code);
 #else
-    const char *aut = r->err_what >= 0 ? parsl_aut_names[r->err_what] : "";
+    const char *aut = r->err_code >= PARSL_E_PERIOD && r->err_code != PARSL_E_NEGATIVE ? parsl_aut_names[r->err_what] : "";
     switch (r->err_code) {
     case PARSL_E_DIV: snprintf(msg, n, "division by zero"); break;
     case PARSL_E_REM: snprintf(msg, n, "remainder of a division by zero"); break;
@@ -200,21 +208,32 @@ const char *parsl_error_text(const parsl_rt *r, char *msg, size_t n)
     case PARSL_E_PROD: snprintf(msg, n, "a product is not a finite number"); break;
     case PARSL_E_QUOT: snprintf(msg, n, "a quotient is not a finite number"); break;
     case PARSL_E_POW: snprintf(msg, n, "%g^%g is not a finite number", r->err_a, r->err_b); break;
-    case PARSL_E_FUNC: snprintf(msg, n, "a function of %g is not a finite number", r->err_a); break;
+    case PARSL_E_FUNC: snprintf(msg, n, "%s() of %g is not a finite number", FUNCTIONS[r->err_what], r->err_a); break;
     case PARSL_E_SUMF: snprintf(msg, n, "sum() is not a finite number"); break;
     case PARSL_E_VALUE: snprintf(msg, n, "the value %g is not a finite number", r->err_a); break;
     case PARSL_E_PERIOD: snprintf(msg, n, "period of automaton '%s' must be > 0, got %g", aut, r->err_a); break;
     case PARSL_E_TOTAL:
         snprintf(msg, n, "the states of automaton '%s' last %g s in total; the total must be > 0", aut, r->err_a);
         break;
-    case PARSL_E_NEGATIVE:
-        snprintf(msg, n, "state '%s' has a negative duration: %g s (durations must be >= 0)",
-                 parsl_state_names[r->err_what], r->err_a);
+    case PARSL_E_NEGATIVE: {
+        int16_t a = 0;
+        while (a + 1 < PARSL_NA && PARSL_I16(parsl_aut[a + 1], PARSL_A_STATES) <= r->err_what) {
+            a++;
+        }
+        snprintf(msg, n, "state '%s' of automaton '%s' has a negative duration: %g s (durations must be >= 0)",
+                 parsl_state_names[r->err_what], parsl_aut_names[a], r->err_a);
         break;
+    }
     case PARSL_E_ALLZERO: snprintf(msg, n, "every state of automaton '%s' has a duration <= 0", aut); break;
     default:
         snprintf(msg, n, "automaton '%s' makes more than 10000 state changes in one tick", aut);
         break;
+    }
+#endif
+#ifndef PARSL_NO_NAMES
+    if (r->err_code < PARSL_E_PERIOD) {
+        size_t used = strlen(msg);
+        snprintf(msg + used, n - used, " in '%s'", parsl_expr_text[r->err_pos]);
     }
 #endif
     return msg;

@@ -166,6 +166,7 @@ extern PARSL_ROM const int16_t parsl_angle[];
 extern PARSL_ROM const uint16_t parsl_pos[][3];
 #ifndef PARSL_NO_NAMES
 extern const char *const parsl_files[];
+extern const char *const parsl_expr_text[];
 extern const char *const parsl_aut_names[];
 extern const char *const parsl_state_names[];
 #endif
