@@ -27,7 +27,7 @@ final class ArduinoSketch {
                 .append(Path.of(p.file()).getFileName()).append(" (")
                 .append(s.driver().name().toLowerCase(Locale.ROOT)).append(" servos, tick ").append(tick).append(" s).\n");
         b.append("// Board code may be added below the generated part; parpe export then refuses to overwrite this file.\n");
-        b.append("#include \"parsl_servo.h\"\n");
+        b.append("#include <Arduino.h>\n#include \"parsl_servo.h\"\n");
         b.append("#define PARSL_TICK_US ").append(Math.round(tick * 1e6)).append("UL\n");
         if (s.driver() == SketchOptions.Driver.PWM) {
             b.append("static const uint8_t PARSL_PINS[] = {");
