@@ -50,11 +50,24 @@ public final class CExport {
         files.put("parsl_program.h", c.header());
         String source = c.source();
         files.put("parsl_program.c", source);
-        long lines = source.lines().filter(l -> l.startsWith("    ")).count();
-        MemoryReport m = MemoryReport.of(c, board, lines);
+        MemoryReport m = MemoryReport.of(c, board, statements(source));
         for (String problem : m.problems()) {
             diags.error(program.robot().pos(), problem);
         }
         return m.fits() ? new Result(files, m, c) : null;
+    }
+
+    /**
+     * The memory estimate of {@code program} on {@code board}, whether or not it fits (for
+     * reports and benchmarks); {@code program} must have a {@code <main>}.
+     */
+    public static MemoryReport estimate(Program program, double dt, Board board) {
+        CProgram c = CProgram.of(program, dt);
+        return MemoryReport.of(c, board, statements(c.source()));
+    }
+
+    /** Generated statements (indented lines), the measure of expression code for the flash estimate. */
+    private static long statements(String source) {
+        return source.lines().filter(l -> l.startsWith("    ")).count();
     }
 }
