@@ -94,6 +94,12 @@ public final class ExportCommand implements Callable<Integer> {
         if (b == null) {
             throw new UsageException("--board must be uno, nano, esp32 or host, got '" + board + "'");
         }
+        if (arduino && b == Board.HOST) {
+            throw new UsageException("--board host is for --target c; an Arduino sketch runs on uno, nano or esp32");
+        }
+        if (!arduino && (!pins.isEmpty() || model != null || !servo.equals("pwm"))) {
+            throw new UsageException("--servo, --pins and --model are for --target arduino");
+        }
         SketchOptions sketch = arduino ? SketchOptions.of(servo, pins, baud, model) : null;
         LoadResult r = ScriptLoader.load(file, parseParams());
         r.diagnostics().forEach(d -> err.println(d.format()));

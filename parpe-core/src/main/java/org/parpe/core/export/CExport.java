@@ -23,9 +23,8 @@ public final class CExport {
      *
      * @param files  file name to content
      * @param memory the estimate for the board
-     * @param program the tables, for further estimates
      */
-    public record Result(Map<String, String> files, MemoryReport memory, CProgram program) {
+    public record Result(Map<String, String> files, MemoryReport memory) {
     }
 
     /** Exports {@code program} run with tick {@code dt} for {@code board}; {@code null} after reporting errors. */
@@ -54,7 +53,7 @@ public final class CExport {
         for (String problem : m.problems()) {
             diags.error(program.robot().pos(), problem);
         }
-        return m.fits() ? new Result(files, m, c) : null;
+        return m.fits() ? new Result(files, m) : null;
     }
 
     /**

@@ -12,7 +12,6 @@ import org.parpe.core.model.Automaton;
 import org.parpe.core.model.Behavior;
 import org.parpe.core.model.BehaviorItem;
 import org.parpe.core.model.Conditional;
-import org.parpe.core.model.Control;
 import org.parpe.core.model.Instance;
 import org.parpe.core.model.MainEntry;
 import org.parpe.core.model.Program;
@@ -96,11 +95,6 @@ public final class CProgram {
     /** Bytes of the constant tables, for {@code int16_t} entries and {@code doubleBytes} per double. */
     public long tableBytes(int doubleBytes) {
         return 2L * t.cells() + (long) doubleBytes * 3 * Math.max(1, controls()) + 6L * places.size();
-    }
-
-    /** Number of compiled expressions. */
-    public int expressions() {
-        return exprs.size();
     }
 
     private void build() {
@@ -293,10 +287,5 @@ public final class CProgram {
     /** The largest value the tables hold (rows, offsets, expression ids). */
     public int largestTableValue() {
         return Math.max(t.largest(), Math.max(exprs.size(), places.size()));
-    }
-
-    /** The controls, for the memory estimate. */
-    List<Control> controlList() {
-        return program.controls();
     }
 }
