@@ -92,8 +92,12 @@ public final class ExportBenchmark implements Benchmark {
         Path dir = Files.createTempDirectory("parpe-export-bench");
         try {
             ExportFolder.writeHost(p, 0.01, dir);
-            run(dir, List.of("gcc", "-std=c99", "-O2", "-o", "program", "parsl_rt.c", "parsl_io.c", "parsl_program.c",
-                    "parsl_host.c", "-lm"));
+            List<String> gcc = new ArrayList<>(List.of("gcc", "-std=c99", "-O2", "-o", "program"));
+            try (Stream<Path> s = Files.list(dir)) {
+                s.map(f -> f.getFileName().toString()).filter(n -> n.endsWith(".c")).sorted().forEach(gcc::add);
+            }
+            gcc.add("-lm");
+            run(dir, gcc);
             int ticks = 20_000;
             double best = 0;
             for (int round = 0; round < 3; round++) {

@@ -11,7 +11,7 @@ import java.util.Map;
 /** The portable C runtime shipped as resources beside this class ({@code c/}). */
 final class RuntimeFiles {
     /** The runtime's files, in every export. */
-    static final List<String> RUNTIME = List.of("parsl_rt.h", "parsl_rt.c", "parsl_io.c");
+    static final List<String> RUNTIME = List.of("parsl_rt.h", "parsl_rt.c", "parsl_inst.h", "parsl_inst.c", "parsl_io.c");
     /** The host trace program's main. */
     static final String HOST_MAIN = "parsl_host.c";
 
