@@ -65,6 +65,10 @@ public final class ExportCommand implements Callable<Integer> {
     @Option(names = "--model", paramLabel = "NAME", description = "Servo model for dxl/sts (default xl430-w250 / sts3215).")
     String model;
 
+    @Option(names = "--console-sensors", description = "Arduino: take accel and touch readings from console commands"
+            + " ($3_touch_left=1) instead of refusing scripts that declare them.")
+    boolean consoleSensors;
+
     @Spec
     CommandSpec spec;
 
@@ -97,10 +101,10 @@ public final class ExportCommand implements Callable<Integer> {
         if (arduino && b == Board.HOST) {
             throw new UsageException("--board host is for --target c; an Arduino sketch runs on uno, nano or esp32");
         }
-        if (!arduino && (!pins.isEmpty() || model != null || !servo.equals("pwm"))) {
-            throw new UsageException("--servo, --pins and --model are for --target arduino");
+        if (!arduino && (!pins.isEmpty() || model != null || !servo.equals("pwm") || consoleSensors)) {
+            throw new UsageException("--servo, --pins, --model and --console-sensors are for --target arduino");
         }
-        SketchOptions sketch = arduino ? SketchOptions.of(servo, pins, baud, model) : null;
+        SketchOptions sketch = arduino ? SketchOptions.of(servo, pins, baud, model, consoleSensors) : null;
         LoadResult r = ScriptLoader.load(file, parseParams());
         r.diagnostics().forEach(d -> err.println(d.format()));
         if (r.program() == null) {

@@ -4,6 +4,7 @@ import java.util.List;
 import org.parpe.cli.UsageException;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.model.Program;
+import org.parpe.core.model.SensorDecl;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.ServoProtocol;
 
@@ -15,15 +16,17 @@ import org.parpe.serial.servo.ServoProtocol;
  * @param pins   PWM pins in ascending module ID order (empty: 2, 3, 4, …)
  * @param baud   bus baud rate
  * @param model  the servo model of a bus (its units and control table), {@code null} for PWM
+ * @param consoleSensors whether {@code accel} and {@code touch} readings may come from console commands
  */
-record SketchOptions(Driver driver, List<Integer> pins, int baud, ServoModel model) {
+record SketchOptions(Driver driver, List<Integer> pins, int baud, ServoModel model, boolean consoleSensors) {
     /** The Servo library drives at most 12 servos on an ATmega328P (one timer). */
     static final int MAX_PWM = 12;
 
     /** The servo drivers of a sketch. */
     enum Driver { PWM, DXL, STS }
 
-    static SketchOptions of(String servo, List<Integer> pins, int baud, String modelName) throws UsageException {
+    static SketchOptions of(String servo, List<Integer> pins, int baud, String modelName, boolean consoleSensors)
+            throws UsageException {
         Driver d = switch (servo) {
             case "pwm" -> Driver.PWM;
             case "dxl" -> Driver.DXL;
@@ -45,7 +48,7 @@ record SketchOptions(Driver driver, List<Integer> pins, int baud, ServoModel mod
             if (modelName != null) {
                 throw new UsageException("--model is for --servo dxl or sts");
             }
-            return new SketchOptions(d, List.copyOf(pins), baud, null);
+            return new SketchOptions(d, List.copyOf(pins), baud, null, consoleSensors);
         }
         ServoProtocol protocol = d == Driver.DXL ? ServoProtocol.DXL2 : ServoProtocol.STS;
         ServoModel m = modelName == null ? ServoModel.defaultFor(protocol) : ServoModel.named(modelName);
@@ -53,11 +56,22 @@ record SketchOptions(Driver driver, List<Integer> pins, int baud, ServoModel mod
             throw new UsageException("--model '" + modelName + "' is not a " + servo + " servo; known: "
                     + ServoModel.names(protocol));
         }
-        return new SketchOptions(d, List.of(), baud, m);
+        return new SketchOptions(d, List.of(), baud, m, consoleSensors);
     }
 
-    /** Reports, at the robot, what this driver cannot do with the program's modules. */
+    /**
+     * Reports what the sketch cannot do: sensors it has no driver for (at their declaration),
+     * more PWM servos than it can drive, module IDs that are no servo IDs (at the robot).
+     */
     void check(Program p, DiagnosticSink diags) {
+        for (SensorDecl s : p.robot().sensors()) {
+            if (!s.type().equals("angle") && !consoleSensors) {
+                diags.error(s.pos(), "an Arduino sketch cannot read '" + s.type() + "' sensors (it drives servos only);"
+                        + " export with --console-sensors to take their readings from console commands such as '$"
+                        + s.modules().get(0) + "_" + (s.type().equals("touch") ? "touch_left" : "accel_z")
+                        + "=1', or with --target c and read them in your board code (parsl_set_reading)");
+            }
+        }
         int[] ids = p.moduleIds();
         if (driver == Driver.PWM) {
             if (!pins.isEmpty() && pins.size() != ids.length) {

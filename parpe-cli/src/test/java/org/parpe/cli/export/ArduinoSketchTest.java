@@ -93,6 +93,38 @@ class ArduinoSketchTest {
         assertEquals(0, esp.code, () -> "an ESP32 holds 60 modules: " + esp);
     }
 
+    @Test
+    void sensorsTheSketchCannotReadAreRefusedAtTheirDeclaration() {
+        String script = ExportEqualityTest.ROOT.resolve("examples/sensor-exit.xml").toString();
+        ExportEqualityTest.Cli refused = ExportEqualityTest.Cli.run(List.of("export", script, "--target", "arduino",
+                "--out", tmp.resolve("a").toString()));
+        assertEquals(1, refused.code, () -> "export: " + refused);
+        assertTrue(refused.err.contains("sensor-exit.xml:12:8: error: an Arduino sketch cannot read 'touch' sensors"),
+                refused.err);
+        assertTrue(refused.err.contains("sensor-exit.xml:13:8: error: an Arduino sketch cannot read 'accel' sensors"),
+                refused.err);
+        ExportEqualityTest.Cli accepted = ExportEqualityTest.Cli.run(List.of("export", script, "--target", "arduino",
+                "--console-sensors", "--out", tmp.resolve("b").toString()));
+        assertEquals(0, accepted.code, () -> "export: " + accepted);
+    }
+
+    @Test
+    void badOptionsAreUsageErrors() {
+        String script = SCRIPT.toString();
+        String out = tmp.resolve("x").toString();
+        for (List<String> args : List.of(List.of("--target", "fpga"), List.of("--target", "arduino", "--servo", "can"),
+                List.of("--target", "arduino", "--board", "host"), List.of("--servo", "dxl"),
+                List.of("--target", "arduino", "--servo", "dxl", "--model", "sts3215"),
+                List.of("--target", "arduino", "--pins", "2,3"), List.of("--tick", "0"))) {
+            List<String> cmd = new ArrayList<>(List.of("export", script, "--out", out));
+            cmd.addAll(args);
+            ExportEqualityTest.Cli r = ExportEqualityTest.Cli.run(cmd);
+            int want = args.contains("--pins") ? 1 : 2;
+            assertEquals(want, r.code, () -> args + ": " + r);
+            assertTrue(r.err.lines().count() >= 1 && !r.err.contains("Exception"), () -> args + ": " + r.err);
+        }
+    }
+
     /** Compiles the runtime as C and the sketch as C++ against the shim, then runs TICKS ticks. */
     private String runSketch(Path sketch, String command) throws Exception {
         List<String> objects = new ArrayList<>();
