@@ -26,6 +26,7 @@ import picocli.CommandLine.Command;
             org.parpe.cli.hw.RecordCommand.class,
             org.parpe.cli.hw.ScanCommand.class,
             org.parpe.cli.hw.CalibrateCommand.class,
+            org.parpe.cli.export.ExportCommand.class,
             CommandLine.HelpCommand.class
         },
         footer = {"", "  gui [FILE] [--run-for S] [--screenshot F.png] [--exit]",

@@ -1,0 +1,139 @@
+package org.parpe.cli.bench;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Stream;
+import org.parpe.cli.export.ExportFolder;
+import org.parpe.core.export.Board;
+import org.parpe.core.export.CExport;
+import org.parpe.core.export.MemoryReport;
+import org.parpe.core.load.LoadResult;
+import org.parpe.core.load.ScriptLoader;
+import org.parpe.core.model.Program;
+import org.parpe.core.run.Engine;
+import org.parpe.core.run.RunOptions;
+
+/**
+ * {@code parpe bench --only export}: ticks per second of the generated C (gcc -O2) for the
+ * 1 000-module benchmark snake of {@link CoreBenchmark} against the Java scheduler, and the RAM
+ * the exported hello-world snake and centipede need on an Arduino Uno and on the host.
+ */
+public final class ExportBenchmark implements Benchmark {
+    private static final int MODULES = 1000;
+
+    @Override
+    public String name() {
+        return "export";
+    }
+
+    @Override
+    public void run(PrintStream out) throws Exception {
+        Program snake = load(Path.of("bench-snake.xml"), CoreBenchmark.snake(MODULES));
+        double java = javaTicksPerSecond(snake);
+        double c = cTicksPerSecond(snake);
+        out.printf(Locale.ROOT, "export.modules=%d%n", MODULES);
+        out.printf(Locale.ROOT, "export.c_ticks_per_s=%.0f%n", c);
+        out.printf(Locale.ROOT, "export.java_ticks_per_s=%.0f%n", java);
+        out.printf(Locale.ROOT, "export.c_over_java=%.2f%n", c / java);
+        for (String example : List.of("hello-snake", "centipede-walk")) {
+            Path file = examples().resolve(example + ".xml");
+            Program p = load(file, Files.readString(file));
+            for (Board b : List.of(Board.UNO, Board.ESP32, Board.HOST)) {
+                MemoryReport m = CExport.estimate(p, 0.01, b);
+                out.printf(Locale.ROOT, "export.%s.%s.state_ram_bytes=%d%n", example, b.word(), m.stateBytes());
+                if (b != Board.HOST) {
+                    out.printf(Locale.ROOT, "export.%s.%s.ram_bytes=%d%n", example, b.word(), m.ramBytes());
+                    out.printf(Locale.ROOT, "export.%s.%s.flash_bytes=%d%n", example, b.word(), m.flashBytes());
+                    out.printf(Locale.ROOT, "export.%s.%s.fits=%s%n", example, b.word(), m.fits());
+                }
+            }
+        }
+    }
+
+    private static Path examples() {
+        for (Path p = Path.of("").toAbsolutePath(); p != null; p = p.getParent()) {
+            if (Files.isRegularFile(p.resolve("examples/hello-snake.xml"))) {
+                return p.resolve("examples");
+            }
+        }
+        throw new IllegalStateException("run the benchmark inside the PARPE folder (examples/ not found)");
+    }
+
+    private static double javaTicksPerSecond(Program p) {
+        Engine e = new Engine(p, RunOptions.defaults());
+        e.start();
+        for (int i = 0; i < 3000; i++) {
+            e.step();
+        }
+        double best = 0;
+        for (int round = 0; round < 5; round++) {
+            long start = System.nanoTime();
+            long ticks = 0;
+            while (System.nanoTime() - start < 600_000_000L) {
+                for (int i = 0; i < 100; i++) {
+                    e.step();
+                }
+                ticks += 100;
+            }
+            best = Math.max(best, ticks / ((System.nanoTime() - start) / 1e9));
+        }
+        return best;
+    }
+
+    private static double cTicksPerSecond(Program p) throws IOException, InterruptedException {
+        Path dir = Files.createTempDirectory("parpe-export-bench");
+        try {
+            ExportFolder.writeHost(p, 0.01, dir);
+            List<String> gcc = new ArrayList<>(List.of("gcc", "-std=c99", "-O2", "-o", "program"));
+            try (Stream<Path> s = Files.list(dir)) {
+                s.map(f -> f.getFileName().toString()).filter(n -> n.endsWith(".c")).sorted().forEach(gcc::add);
+            }
+            gcc.add("-lm");
+            run(dir, gcc);
+            int ticks = 20_000;
+            double best = 0;
+            for (int round = 0; round < 3; round++) {
+                long start = System.nanoTime();
+                run(dir, List.of(dir.resolve("program").toString(), "--duration", String.valueOf((ticks - 1) * 0.01)));
+                best = Math.max(best, ticks / ((System.nanoTime() - start) / 1e9));
+            }
+            return best;
+        } finally {
+            try (Stream<Path> s = Files.walk(dir)) {
+                for (Path f : s.sorted(Comparator.reverseOrder()).toList()) {
+                    Files.deleteIfExists(f);
+                }
+            }
+        }
+    }
+
+    private static void run(Path dir, List<String> command) throws IOException, InterruptedException {
+        Process p;
+        try {
+            p = new ProcessBuilder(new ArrayList<>(command)).directory(dir.toFile()).redirectErrorStream(true).start();
+        } catch (IOException e) {
+            throw new IllegalStateException("cannot start " + command.get(0) + " (the export benchmark needs gcc: "
+                    + "sudo apt-get install gcc): " + e.getMessage());
+        }
+        String output = new String(p.getInputStream().readAllBytes());
+        if (!p.waitFor(10, TimeUnit.MINUTES) || p.exitValue() != 0) {
+            throw new IllegalStateException(String.join(" ", command) + " failed: " + output);
+        }
+    }
+
+    private static Program load(Path name, String text) {
+        LoadResult r = ScriptLoader.loadText(name, text, Map.of());
+        if (r.program() == null) {
+            throw new IllegalStateException(name + " does not load: " + r.diagnostics());
+        }
+        return r.program();
+    }
+}

@@ -1,0 +1,44 @@
+package org.parpe.cli.export;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+/** The portable C runtime shipped as resources beside this class ({@code c/}). */
+final class RuntimeFiles {
+    /** The runtime's files, in every export. */
+    static final List<String> RUNTIME = List.of("parsl_rt.h", "parsl_rt.c", "parsl_inst.h", "parsl_inst.c", "parsl_io.c");
+    /** The host trace program's main. */
+    static final String HOST_MAIN = "parsl_host.c";
+
+    private RuntimeFiles() {
+    }
+
+    /** The content of resource {@code c/NAME}. */
+    static String read(String name) {
+        try (InputStream in = RuntimeFiles.class.getResourceAsStream("c/" + name)) {
+            if (in == null) {
+                throw new IllegalStateException("the runtime file " + name + " is missing from the PARPE jar");
+            }
+            return new String(in.readAllBytes(), StandardCharsets.UTF_8);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    /** The runtime files, plus the host main if {@code host}. */
+    static Map<String, String> runtime(boolean host) {
+        Map<String, String> out = new LinkedHashMap<>();
+        for (String f : RUNTIME) {
+            out.put(f, read(f));
+        }
+        if (host) {
+            out.put(HOST_MAIN, read(HOST_MAIN));
+        }
+        return out;
+    }
+}

@@ -1,0 +1,95 @@
+package org.parpe.cli.export;
+
+import java.util.List;
+import org.parpe.cli.UsageException;
+import org.parpe.core.diag.DiagnosticSink;
+import org.parpe.core.model.Program;
+import org.parpe.core.model.SensorDecl;
+import org.parpe.serial.servo.ServoModel;
+import org.parpe.serial.servo.ServoProtocol;
+
+/**
+ * How an Arduino sketch drives the modules: hobby PWM servos on pins, or Dynamixel 2.0 / Feetech
+ * STS servos on a UART with the module ID as servo ID.
+ *
+ * @param driver the driver
+ * @param pins   PWM pins in ascending module ID order (empty: 2, 3, 4, …)
+ * @param baud   bus baud rate
+ * @param model  the servo model of a bus (its units and control table), {@code null} for PWM
+ * @param consoleSensors whether {@code accel} and {@code touch} readings may come from console commands
+ */
+record SketchOptions(Driver driver, List<Integer> pins, int baud, ServoModel model, boolean consoleSensors) {
+    /** The Servo library drives at most 12 servos on an ATmega328P (one timer). */
+    static final int MAX_PWM = 12;
+
+    /** The servo drivers of a sketch. */
+    enum Driver { PWM, DXL, STS }
+
+    static SketchOptions of(String servo, List<Integer> pins, int baud, String modelName, boolean consoleSensors)
+            throws UsageException {
+        Driver d = switch (servo) {
+            case "pwm" -> Driver.PWM;
+            case "dxl" -> Driver.DXL;
+            case "sts" -> Driver.STS;
+            default -> throw new UsageException("--servo must be pwm, dxl or sts, got '" + servo + "'");
+        };
+        if (d != Driver.PWM && !pins.isEmpty()) {
+            throw new UsageException("--pins is for --servo pwm; a " + servo + " bus addresses servos by ID");
+        }
+        for (int p : pins) {
+            if (p < 0 || p > 99) {
+                throw new UsageException("--pins must be pin numbers 0..99, got " + p);
+            }
+        }
+        if (!(baud >= 9600 && baud <= 4_500_000)) {
+            throw new UsageException("--baud must be within [9600, 4500000], got " + baud);
+        }
+        if (d == Driver.PWM) {
+            if (modelName != null) {
+                throw new UsageException("--model is for --servo dxl or sts");
+            }
+            return new SketchOptions(d, List.copyOf(pins), baud, null, consoleSensors);
+        }
+        ServoProtocol protocol = d == Driver.DXL ? ServoProtocol.DXL2 : ServoProtocol.STS;
+        ServoModel m = modelName == null ? ServoModel.defaultFor(protocol) : ServoModel.named(modelName);
+        if (m == null || m.protocol() != protocol) {
+            throw new UsageException("--model '" + modelName + "' is not a " + servo + " servo; known: "
+                    + ServoModel.names(protocol));
+        }
+        return new SketchOptions(d, List.of(), baud, m, consoleSensors);
+    }
+
+    /**
+     * Reports what the sketch cannot do: sensors it has no driver for (at their declaration),
+     * more PWM servos than it can drive, module IDs that are no servo IDs (at the robot).
+     */
+    void check(Program p, DiagnosticSink diags) {
+        for (SensorDecl s : p.robot().sensors()) {
+            if (!s.type().equals("angle") && !consoleSensors) {
+                diags.error(s.pos(), "an Arduino sketch cannot read '" + s.type() + "' sensors (it drives servos only);"
+                        + " export with --console-sensors to take their readings from console commands such as '$"
+                        + s.modules().get(0) + "_" + (s.type().equals("touch") ? "touch_left" : "accel_z")
+                        + "=1', or with --target c and read them in your board code (parsl_set_reading)");
+            }
+        }
+        int[] ids = p.moduleIds();
+        if (driver == Driver.PWM) {
+            if (!pins.isEmpty() && pins.size() != ids.length) {
+                diags.error(p.robot().pos(), "--pins names " + pins.size() + " pins but the robot has " + ids.length
+                        + " modules; give one pin per module, in ascending ID order");
+            } else if (pins.isEmpty() && ids.length > MAX_PWM) {
+                diags.error(p.robot().pos(), "the robot has " + ids.length + " modules but an Arduino drives at most "
+                        + MAX_PWM + " PWM servos; use --servo dxl or sts (a bus of up to 253 servos)");
+            }
+            return;
+        }
+        int max = driver == Driver.DXL ? 252 : 253;
+        for (int id : ids) {
+            if (id > max) {
+                diags.error(p.robot().pos(), "module " + id + " cannot be a " + model.name() + " servo ID (0.." + max
+                        + "); the sketch uses module IDs as servo IDs");
+                return;
+            }
+        }
+    }
+}

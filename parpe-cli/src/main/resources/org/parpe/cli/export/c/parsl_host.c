@@ -1,0 +1,178 @@
+/*
+ * The exported program on a PC: `parpe run` without a simulator, as a small C program.
+ *
+ *   ./program [--duration SECONDS] [--seed N] [--stimulus FILE] [--trace FILE|-]
+ *
+ * Writes the CSV trace of PARSL.md section 11 (header time,m<ID>,...; every number as %.6f);
+ * exit codes as parpe run: 0 success, 2 usage errors, 3 run-time error.
+ */
+#include "parsl_rt.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MAX_STIMULI 4096
+
+typedef struct {
+    double time;
+    char text[80];
+} stimulus;
+
+static parsl_rt rt;
+static parsl_rt probe;
+static stimulus stimuli[MAX_STIMULI];
+static int stimulus_count;
+
+static int usage(const char *message)
+{
+    fprintf(stderr, "%s: %s\nusage: program [--duration SECONDS] [--seed N] [--stimulus FILE] [--trace FILE|-]\n",
+            PARSL_FILE, message);
+    return 2;
+}
+
+/* Reads "TIME $NAME=VALUE" lines (# comments) into stimuli, sorted by time, stable. */
+static int read_stimuli(const char *file)
+{
+    char line[256];
+    int number = 0;
+    FILE *in = fopen(file, "r");
+    if (in == NULL) {
+        fprintf(stderr, "parpe: cannot read stimulus file '%s'\n", file);
+        return 2;
+    }
+    while (fgets(line, sizeof line, in) != NULL) {
+        char *hash = strchr(line, '#');
+        char *body = line;
+        char *end;
+        double t;
+        int i;
+        number++;
+        if (hash != NULL) {
+            *hash = '\0';
+        }
+        while (*body == ' ' || *body == '\t') {
+            body++;
+        }
+        for (end = body + strlen(body); end > body && (end[-1] == ' ' || end[-1] == '\t' || end[-1] == '\n'
+                || end[-1] == '\r'); end--) {
+        }
+        *end = '\0';
+        if (*body == '\0') {
+            continue;
+        }
+        t = strtod(body, &end);
+        if (end == body || !(t >= 0) || (*end != ' ' && *end != '\t') || stimulus_count == MAX_STIMULI) {
+            fprintf(stderr, "%s:%d:1: error: expected 'TIME $NAME=VALUE', got '%s'\n", file, number, body);
+            fclose(in);
+            return 2;
+        }
+        while (*end == ' ' || *end == '\t') {
+            end++;
+        }
+        for (i = stimulus_count; i > 0 && stimuli[i - 1].time > t; i--) {
+            stimuli[i] = stimuli[i - 1];
+        }
+        stimuli[i].time = t;
+        snprintf(stimuli[i].text, sizeof stimuli[i].text, "%s", end);
+        stimulus_count++;
+    }
+    fclose(in);
+    return 0;
+}
+
+static void row(FILE *out)
+{
+    char buf[64];
+    int i;
+    parsl_format(buf, rt.time);
+    fputs(buf, out);
+    for (i = 0; i < PARSL_N; i++) {
+        parsl_format(buf, rt.commanded[i]);
+        fputc(',', out);
+        fputs(buf, out);
+    }
+    fputc('\n', out);
+}
+
+int main(int argc, char **argv)
+{
+    double duration = INFINITY;
+    unsigned long long seed = 0;
+    const char *trace = NULL;
+    FILE *out = NULL;
+    int next = 0;
+    long k;
+    int i;
+    for (i = 1; i < argc; i++) {
+        if (i + 1 >= argc) {
+            return usage("an option needs a value");
+        } else if (strcmp(argv[i], "--duration") == 0) {
+            duration = strtod(argv[++i], NULL);
+        } else if (strcmp(argv[i], "--seed") == 0) {
+            seed = strtoull(argv[++i], NULL, 10);
+        } else if (strcmp(argv[i], "--stimulus") == 0) {
+            if (read_stimuli(argv[++i]) != 0) {
+                return 2;
+            }
+        } else if (strcmp(argv[i], "--trace") == 0) {
+            trace = argv[++i];
+        } else {
+            return usage("unknown option");
+        }
+    }
+    parsl_init(&rt, (uint64_t) seed, NULL);
+    probe = rt;
+    for (i = 0; i < stimulus_count; i++) {
+        char msg[120];
+        if (parsl_assign(&probe, stimuli[i].text, msg, sizeof msg) != 0) {
+            fprintf(stderr, "stimulus: error: %s\n", msg);
+            return 2;
+        }
+    }
+    if (trace != NULL) {
+        out = strcmp(trace, "-") == 0 ? stdout : fopen(trace, "w");
+        if (out == NULL) {
+            fprintf(stderr, "parpe: cannot write trace file '%s'\n", trace);
+            return 2;
+        }
+        fputs("time", out);
+        for (i = 0; i < PARSL_N; i++) {
+            fprintf(out, ",m%u", (unsigned) PARSL_U16(parsl_ids, i));
+        }
+        fputc('\n', out);
+    }
+    for (k = 0;; k++) {
+        double t = k * PARSL_DT;
+        int status;
+        if (t > duration + 1e-9) {
+            break;
+        }
+        while (next < stimulus_count && stimuli[next].time <= t + 1e-9) {
+            parsl_assign(&rt, stimuli[next++].text, NULL, 0);
+        }
+        status = parsl_step(&rt);
+        if (status == PARSL_ERROR) {
+            char msg[200];
+            fprintf(stderr, "%s:%u:%u: error: %s (at t=%.6f s)\n", parsl_files[PARSL_U16(parsl_pos[rt.err_pos], 0)],
+                    (unsigned) PARSL_U16(parsl_pos[rt.err_pos], 1), (unsigned) PARSL_U16(parsl_pos[rt.err_pos], 2),
+                    parsl_error_text(&rt, msg, sizeof msg), rt.time);
+            if (out != NULL) {
+                fclose(out);
+            }
+            return 3;
+        }
+        if (out != NULL) {
+            row(out);
+        }
+        if (status == PARSL_ENDED) {
+            break;
+        }
+    }
+    if (out != NULL && out != stdout) {
+        fclose(out);
+    } else if (out != NULL) {
+        fflush(out);
+    }
+    return 0;
+}

@@ -1,0 +1,313 @@
+/*
+ * PARSL embedded runtime: one automaton instance (see parsl_inst.h), the same operations on
+ * doubles in the same order as PARPE's InstanceRun, so that setpoints are equal bit for bit.
+ */
+#include "parsl_inst.h"
+#include <math.h>
+
+#define EPS 1e-9
+#define MAX_TRANSITIONS 10000
+
+static void state_error(parsl_rt *r, int16_t code, int16_t pos, double a, int16_t what)
+{
+    r->err_code = code;
+    r->err_pos = pos;
+    r->err_a = a;
+    r->err_b = 0;
+    r->err_what = what;
+    longjmp(r->fail, 1);
+}
+void parsl_view(parsl_rt *r, int16_t slot, int16_t row, inst_view *v)
+{
+    v->row = row;
+    v->aut = PARSL_I16(parsl_inst[row], PARSL_I_AUT);
+    v->ns = PARSL_I16(parsl_aut[v->aut], PARSL_A_NS);
+    v->s0 = PARSL_I16(parsl_aut[v->aut], PARSL_A_STATES);
+    v->per_module = (uint8_t) PARSL_I16(parsl_aut[v->aut], PARSL_A_PERMODULE);
+    v->n = PARSL_I16(parsl_inst[row], PARSL_I_N);
+    v->mod = PARSL_I16(parsl_inst[row], PARSL_I_MOD);
+    v->pool = PARSL_I16(parsl_inst[row], PARSL_I_POOL);
+    v->tb = PARSL_I16(parsl_inst[row], PARSL_I_TBUF);
+    v->mirror = (uint8_t) PARSL_I16(parsl_inst[row], PARSL_I_MIRROR);
+    v->is = &r->inst[slot];
+}
+
+int16_t parsl_module_of(const inst_view *v, int16_t k)
+{
+    return PARSL_I16(parsl_inst_mod, v->mod + k);
+}
+
+static void enter(parsl_rt *r, const inst_view *v, int16_t k)
+{
+    int16_t q = v->pool + k;
+    r->index = k;
+    r->id = PARSL_U16(parsl_ids, parsl_module_of(v, k));
+    r->count = v->n;
+    r->group_off = v->mod;
+    r->group_n = v->n;
+    r->phase = r->ph[q];
+    r->cycle = r->cyc[q];
+}
+
+static void eval_times(parsl_rt *r, const inst_view *v)
+{
+    double s = 0;
+    int16_t j;
+    for (j = 0; j < v->ns; j++) {
+        int16_t x = PARSL_I16(parsl_state[v->s0 + j], PARSL_S_TIME);
+        double t = parsl_eval(r, x);
+        if (t < 0) {
+            state_error(r, PARSL_E_NEGATIVE, x, t, (int16_t) (v->s0 + j));
+        }
+        r->tbuf[v->tb + j] = t;
+        s += t;
+    }
+    v->is->sum_t = s;
+    if (!(s > 0)) {
+        state_error(r, PARSL_E_TOTAL, PARSL_I16(parsl_inst[v->row], PARSL_I_POS), s, v->aut);
+    }
+}
+
+void parsl_inst_init(parsl_rt *r, const inst_view *v, double phase, double offset, double cycles)
+{
+    parsl_inst_state *is = v->is;
+    int16_t k;
+    int16_t j;
+    is->started = 1;
+    is->limit = cycles;
+    if (cycles <= 0) {
+        for (k = 0; k < v->n; k++) {
+            r->fin[v->pool + k] = 1;
+        }
+        is->finished = v->n;
+        return;
+    }
+    is->finished = 0;
+    for (k = 0; k < v->n; k++) {
+        int16_t q = v->pool + k;
+        double x = -(offset + k * phase);
+        double start = x - floor(x);
+        double pos;
+        double cum = 0;
+        int16_t found = -1;
+        enter(r, v, k);
+        r->phase = start;
+        r->cycle = 0;
+        if (k == 0 || v->per_module) {
+            eval_times(r, v);
+        }
+        pos = start * is->sum_t;
+        for (j = 0; j < v->ns; j++) {
+            double t = r->tbuf[v->tb + j];
+            if (t > 0 && pos < cum + t - EPS) {
+                found = j;
+                break;
+            }
+            cum += t;
+        }
+        if (found < 0) {
+            r->st[q] = 0;
+            r->p[q] = 0;
+            start = 0;
+        } else {
+            double f = (pos - cum) / r->tbuf[v->tb + found];
+            r->st[q] = found;
+            r->p[q] = f > 0 ? f : 0;
+        }
+        r->uk[q] = start;
+        r->u[q] = start;
+        r->p0[q] = r->p[q];
+        r->a0[q] = r->commanded[parsl_module_of(v, k)];
+        r->cyc[q] = 0;
+        r->ph[q] = start;
+        r->fin[q] = 0;
+    }
+}
+
+void parsl_reanchor(parsl_rt *r, const inst_view *v)
+{
+    int16_t k;
+    for (k = 0; k < v->n; k++) {
+        int16_t q = v->pool + k;
+        if (!r->fin[q]) {
+            r->a0[q] = r->commanded[parsl_module_of(v, k)];
+            r->p0[q] = r->p[q];
+        }
+    }
+}
+
+void parsl_prepare_tick(parsl_rt *r, const inst_view *v)
+{
+    int16_t x = PARSL_I16(parsl_inst[v->row], PARSL_I_PERIOD);
+    double per = 0;
+    if (x >= 0) {
+        per = parsl_eval(r, x);
+        if (!(per > 0)) {
+            state_error(r, PARSL_E_PERIOD, x, per, v->aut);
+        }
+    }
+    if (!v->per_module) {
+        enter(r, v, 0);
+        eval_times(r, v);
+    }
+    v->is->scale = per;
+    v->is->has_scale = x >= 0;
+}
+
+static double target(parsl_rt *r, const inst_view *v, int16_t s, int16_t k)
+{
+    int16_t row = v->s0 + s;
+    int16_t first = PARSL_I16(parsl_state[row], PARSL_S_ANGLES);
+    int16_t x = PARSL_I16(parsl_state[row], PARSL_S_NANGLES) == 1 ? PARSL_I16(parsl_angle, first)
+            : PARSL_I16(parsl_angle, first + k);
+    double a = parsl_eval(r, x);
+    return v->mirror ? -a : a;
+}
+
+static double setpoint(parsl_rt *r, const inst_view *v, int16_t k, int16_t s)
+{
+    int16_t q = v->pool + k;
+    int16_t interp = PARSL_I16(parsl_state[v->s0 + s], PARSL_S_INTERP);
+    double g = target(r, v, s, k);
+    double qq;
+    double shape;
+    if (interp == PARSL_STEP) {
+        return g;
+    }
+    qq = (r->p[q] - r->p0[q]) / (1 - r->p0[q]);
+    shape = interp == PARSL_SMOOTH ? (1.0 - cos(3.141592653589793 * qq)) / 2.0 : qq;
+    return r->a0[q] + (g - r->a0[q]) * shape;
+}
+
+static double phase_of(parsl_rt *r, const inst_view *v, int16_t s, double prog)
+{
+    double cum = 0;
+    int16_t j;
+    for (j = 0; j < s; j++) {
+        cum += r->tbuf[v->tb + j];
+    }
+    return (cum + prog * r->tbuf[v->tb + s]) / v->is->sum_t;
+}
+
+static void finish(parsl_rt *r, const inst_view *v, int16_t k, double angle)
+{
+    int16_t q = v->pool + k;
+    r->fin[q] = 1;
+    v->is->finished++;
+    r->out[q] = angle;
+    r->u[q] = r->uk[q] + v->is->limit;
+    r->cyc[q] = floor(v->is->limit + EPS);
+}
+
+static void see_final(parsl_rt *r, const inst_view *v, int16_t k, int16_t s)
+{
+    int16_t q = v->pool + k;
+    r->ph[q] = phase_of(r, v, s, r->p[q]);
+    r->phase = r->ph[q];
+    r->cycle = floor(v->is->limit + EPS);
+}
+
+static void finish_inside(parsl_rt *r, const inst_view *v, int16_t k, int16_t s, double lim)
+{
+    int16_t q = v->pool + k;
+    double f = r->p[q] + (lim - r->u[q]) * v->is->sum_t / r->tbuf[v->tb + s];
+    r->p[q] = f < 1 ? f : 1;
+    see_final(r, v, k, s);
+    finish(r, v, k, setpoint(r, v, k, s));
+}
+
+static void finish_at_end(parsl_rt *r, const inst_view *v, int16_t k, int16_t s)
+{
+    r->p[v->pool + k] = 1;
+    see_final(r, v, k, s);
+    finish(r, v, k, target(r, v, s, k));
+}
+
+void parsl_hold(parsl_rt *r, const inst_view *v, int16_t k)
+{
+    enter(r, v, k);
+    r->out[v->pool + k] = setpoint(r, v, k, r->st[v->pool + k]);
+}
+
+static void next_state(parsl_rt *r, const inst_view *v, int16_t q, int16_t *s)
+{
+    *s = (int16_t) ((*s + 1) % v->ns);
+    r->st[q] = *s;
+    r->p[q] = r->p0[q] = 0;
+}
+
+void parsl_advance(parsl_rt *r, const inst_view *v, int16_t k, double dt)
+{
+    parsl_inst_state *is = v->is;
+    int16_t q = v->pool + k;
+    int16_t s;
+    int16_t ex;
+    double lim;
+    double rem = dt;
+    int16_t skips = 0;
+    int16_t transitions = 0;
+    enter(r, v, k);
+    if (v->per_module) {
+        eval_times(r, v);
+    }
+    lim = r->uk[q] + is->limit;
+    s = r->st[q];
+    ex = PARSL_I16(parsl_state[v->s0 + s], PARSL_S_EXIT);
+    if (ex >= 0 && parsl_eval(r, ex) != 0) {
+        double du = (1 - r->p[q]) * r->tbuf[v->tb + s] / is->sum_t;
+        if (r->u[q] + du >= lim - EPS) {
+            finish(r, v, k, r->commanded[parsl_module_of(v, k)]);
+            return;
+        }
+        r->u[q] += du;
+        r->a0[q] = r->commanded[parsl_module_of(v, k)];
+        next_state(r, v, q, &s);
+    }
+    for (;;) {
+        double t = r->tbuf[v->tb + s];
+        double d = is->has_scale ? t * is->scale / is->sum_t : t;
+        double need;
+        double du;
+        if (d <= 0) {
+            if (++skips > v->ns) {
+                state_error(r, PARSL_E_ALLZERO, PARSL_I16(parsl_inst[v->row], PARSL_I_POS), 0, v->aut);
+            }
+            r->a0[q] = target(r, v, s, k);
+            next_state(r, v, q, &s);
+            continue;
+        }
+        need = (1 - r->p[q]) * d;
+        if (rem < need - EPS) {
+            du = rem / d * t / is->sum_t;
+            if (r->u[q] + du >= lim - EPS) {
+                finish_inside(r, v, k, s, lim);
+                return;
+            }
+            r->p[q] += rem / d;
+            r->u[q] += du;
+            break;
+        }
+        du = (1 - r->p[q]) * t / is->sum_t;
+        rem -= need;
+        skips = 0;
+        if (++transitions > MAX_TRANSITIONS) {
+            state_error(r, PARSL_E_TRANSITIONS, PARSL_I16(parsl_inst[v->row], PARSL_I_POS), dt, v->aut);
+        }
+        if (r->u[q] + du >= lim - EPS) {
+            if (r->u[q] + du <= lim + EPS) {
+                finish_at_end(r, v, k, s);
+            } else {
+                finish_inside(r, v, k, s, lim);
+            }
+            return;
+        }
+        r->u[q] += du;
+        r->a0[q] = target(r, v, s, k);
+        next_state(r, v, q, &s);
+    }
+    r->ph[q] = phase_of(r, v, s, r->p[q]);
+    r->cyc[q] = floor(r->u[q] - r->uk[q] + EPS);
+    r->phase = r->ph[q];
+    r->cycle = r->cyc[q];
+    r->out[q] = setpoint(r, v, k, s);
+}

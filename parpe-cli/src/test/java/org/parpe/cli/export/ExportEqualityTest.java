@@ -1,0 +1,178 @@
+package org.parpe.cli.export;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.parallel.Execution;
+import org.junit.jupiter.api.parallel.ExecutionMode;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+import org.parpe.cli.Main;
+
+/**
+ * The proof of equality of issue 13: for every conformance case (the shared suite and PARPE's
+ * own), every example and tutorial script, and scripts that fail at run time, the interpreter
+ * runs in-process, the script is exported with {@code --target c}, compiled with gcc
+ * ({@code -std=c99 -Wall -Werror -O2}), and run; its trace must equal the interpreter's byte for
+ * byte, with the same exit code (3 at the same tick for a run-time error, with the same place).
+ * Cases whose expected result is a load error: export refuses with the diagnostics of {@code check}.
+ */
+class ExportEqualityTest {
+    static final Path ROOT = Path.of("..").toAbsolutePath().normalize();
+
+    @TempDir
+    Path tmp;
+
+    /**
+     * One script to compare.
+     *
+     * @param name     for the report
+     * @param script   the script
+     * @param runArgs  the arguments of {@code run} after the script (without {@code --trace})
+     * @param check    whether the expected result is a load error
+     */
+    record Case(String name, Path script, List<String> runArgs, boolean check) {
+        @Override
+        public String toString() {
+            return name;
+        }
+    }
+
+    @BeforeAll
+    static void compilerInstalled() {
+        HostCompiler.require("gcc");
+    }
+
+    static List<Case> cases() throws IOException {
+        List<Case> out = new ArrayList<>();
+        for (String suite : List.of("spec/conformance/cases", "spec/conformance-parpe/cases")) {
+            try (Stream<Path> s = Files.list(ROOT.resolve(suite))) {
+                for (Path dir : s.sorted().toList()) {
+                    List<String> args = Arrays.asList(Files.readString(dir.resolve("cmd")).trim().split("\\s+"));
+                    boolean check = args.get(0).equals("check");
+                    List<String> rest = new ArrayList<>();
+                    for (int i = 1; i < args.size(); i++) {
+                        String a = args.get(i);
+                        rest.add(a);
+                        if (a.equals("--stimulus")) {
+                            rest.add(dir.resolve(args.get(++i)).toString());
+                        }
+                    }
+                    out.add(new Case(dir.getFileName().toString(), dir.resolve("program.xml"), rest, check));
+                }
+            }
+        }
+        for (String folder : List.of("examples", "examples/tutorial")) {
+            try (Stream<Path> s = Files.list(ROOT.resolve(folder))) {
+                for (Path f : s.filter(p -> p.toString().endsWith(".xml")).sorted().toList()) {
+                    List<String> args = new ArrayList<>(List.of("--duration", "10"));
+                    Path stim = f.resolveSibling(f.getFileName().toString().replace(".xml", ".stim"));
+                    if (Files.exists(stim)) {
+                        args.addAll(List.of("--stimulus", stim.toString()));
+                    }
+                    out.add(new Case(folder + "/" + f.getFileName(), f, args, false));
+                }
+            }
+        }
+        for (String n : List.of("functions", "divide-by-zero", "negative-duration", "period-zero")) {
+            out.add(new Case(n, Path.of("src/test/resources/export/" + n + ".xml").toAbsolutePath(),
+                    List.of("--duration", "3", "--seed", "7"), false));
+        }
+        return out;
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("cases")
+    void generatedCTraceEqualsInterpreterTrace(Case c) throws Exception {
+        if (c.check()) {
+            refusedLikeCheck(c);
+            return;
+        }
+        Path javaTrace = tmp.resolve("interpreter.csv");
+        List<String> run = new ArrayList<>(List.of("run", c.script().toString()));
+        run.addAll(c.runArgs());
+        run.addAll(List.of("--trace", javaTrace.toString()));
+        Cli interpreter = Cli.run(run);
+        assertTrue(interpreter.code == 0 || interpreter.code == 3, () -> "interpreter: " + interpreter);
+
+        Path dir = tmp.resolve("c");
+        List<String> export = new ArrayList<>(List.of("export", c.script().toString(), "--target", "c", "--out", dir.toString()));
+        for (int i = 0; i < c.runArgs().size(); i++) {
+            if (List.of("--tick", "--param").contains(c.runArgs().get(i))) {
+                export.add(c.runArgs().get(i));
+                export.add(c.runArgs().get(i + 1));
+            }
+        }
+        Cli exported = Cli.run(export);
+        assertEquals(0, exported.code, () -> "export: " + exported);
+        HostCompiler.compile(dir);
+        List<String> program = new ArrayList<>(List.of(dir.resolve("program").toString()));
+        for (int i = 0; i < c.runArgs().size(); i += 2) {
+            if (List.of("--duration", "--stimulus", "--seed").contains(c.runArgs().get(i))) {
+                program.add(c.runArgs().get(i));
+                program.add(c.runArgs().get(i + 1));
+            }
+        }
+        program.addAll(List.of("--trace", tmp.resolve("c.csv").toString()));
+        HostCompiler.Result r = HostCompiler.run(dir, program, 60);
+        assertEquals(interpreter.code, r.code(), () -> "exit code of the C program; its stderr: " + r.err()
+                + "\ninterpreter: " + interpreter);
+        assertEquals(Files.readString(javaTrace), Files.readString(tmp.resolve("c.csv")), "trace of the C program");
+        if (interpreter.code == 3) {
+            String place = interpreter.err.lines().filter(l -> l.contains(": error: ")).findFirst().orElseThrow();
+            assertTrue(r.err().startsWith(place.substring(0, place.indexOf(": error: "))),
+                    () -> "the C program names another place: " + r.err() + " vs " + place);
+        }
+    }
+
+    private void refusedLikeCheck(Case c) {
+        Cli check = Cli.run(List.of("check", c.script().toString()));
+        Cli export = Cli.run(List.of("export", c.script().toString(), "--out", tmp.resolve("c").toString()));
+        assertEquals(1, check.code, () -> "check: " + check);
+        assertEquals(1, export.code, () -> "export: " + export);
+        assertEquals(diagnostics(check.err), diagnostics(export.err));
+        assertTrue(Files.notExists(tmp.resolve("c")), "nothing is written for a script with errors");
+    }
+
+    private static List<String> diagnostics(String err) {
+        return err.lines().filter(l -> l.contains(": error: ") || l.contains(": warning: ")).toList();
+    }
+
+    /** The command line run in-process. */
+    static final class Cli {
+        final int code;
+        final String out;
+        final String err;
+
+        private Cli(int code, String out, String err) {
+            this.code = code;
+            this.out = out;
+            this.err = err;
+        }
+
+        static Cli run(List<String> args) {
+            ByteArrayOutputStream o = new ByteArrayOutputStream();
+            ByteArrayOutputStream e = new ByteArrayOutputStream();
+            int code = Main.execute(args.toArray(new String[0]), new PrintStream(o, true, StandardCharsets.UTF_8),
+                    new PrintStream(e, true, StandardCharsets.UTF_8));
+            return new Cli(code, o.toString(StandardCharsets.UTF_8), e.toString(StandardCharsets.UTF_8));
+        }
+
+        @Override
+        public String toString() {
+            return "exit " + code + "\nstdout:\n" + out + "\nstderr:\n" + err;
+        }
+    }
+}

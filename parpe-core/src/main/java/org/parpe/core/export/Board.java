@@ -1,0 +1,80 @@
+package org.parpe.core.export;
+
+import java.util.Locale;
+
+/**
+ * A machine the exported C runs on, with what the memory estimate needs: RAM and flash for the
+ * program, the size of a C {@code double} (32 bits on 8-bit AVR), of a {@code jmp_buf}, and the
+ * RAM the board code itself takes (serial buffers, servo library, stack reserve).
+ */
+public enum Board {
+    /** A PC: the trace program of the equality test; no limit. */
+    HOST(Long.MAX_VALUE, Long.MAX_VALUE, 8, 200, 0, 0),
+    /** Arduino Uno (ATmega328P): 2 KB RAM, 32 KB flash less the 0.5 KB bootloader. */
+    UNO(2048, 32256, 4, 23, 560, 9000),
+    /** Arduino Nano (ATmega328P), the Uno's chip. */
+    NANO(2048, 30720, 4, 23, 560, 9000),
+    /** ESP32 (320 KB of data RAM, a 1.25 MB application partition). */
+    ESP32(327680, 1310720, 8, 68, 30000, 250000);
+
+    private final long ram;
+    private final long flash;
+    private final int doubleBytes;
+    private final int jmpBuf;
+    private final int boardRam;
+    private final int runtimeFlash;
+
+    Board(long ram, long flash, int doubleBytes, int jmpBuf, int boardRam, int runtimeFlash) {
+        this.ram = ram;
+        this.flash = flash;
+        this.doubleBytes = doubleBytes;
+        this.jmpBuf = jmpBuf;
+        this.boardRam = boardRam;
+        this.runtimeFlash = runtimeFlash;
+    }
+
+    /** The board called {@code name} ({@code uno}, {@code nano}, {@code esp32}, {@code host}), or {@code null}. */
+    public static Board of(String name) {
+        for (Board b : values()) {
+            if (b.word().equals(name)) {
+                return b;
+            }
+        }
+        return null;
+    }
+
+    /** The name used on the command line. */
+    public String word() {
+        return name().toLowerCase(Locale.ROOT);
+    }
+
+    /** RAM in bytes. */
+    public long ram() {
+        return ram;
+    }
+
+    /** Flash for the program in bytes. */
+    public long flash() {
+        return flash;
+    }
+
+    /** Bytes of a C {@code double}. */
+    public int doubleBytes() {
+        return doubleBytes;
+    }
+
+    /** Bytes of a {@code jmp_buf}. */
+    public int jmpBuf() {
+        return jmpBuf;
+    }
+
+    /** RAM taken by the board code around the runtime (serial buffers, servo library, stack reserve). */
+    public int boardRam() {
+        return boardRam;
+    }
+
+    /** Flash taken by the runtime, the C library's maths and the board code. */
+    public int runtimeFlash() {
+        return runtimeFlash;
+    }
+}

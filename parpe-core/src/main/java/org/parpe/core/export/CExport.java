@@ -1,0 +1,72 @@
+package org.parpe.core.export;
+
+import java.util.LinkedHashMap;
+import java.util.Map;
+import org.parpe.core.diag.DiagnosticSink;
+import org.parpe.core.diag.SourcePos;
+import org.parpe.core.model.Program;
+
+/**
+ * Exports a loaded program as C for the embedded runtime: checks what the target cannot do,
+ * generates {@code parsl_program.h} and {@code parsl_program.c}, and estimates the memory.
+ * Problems go to the sink as located errors; nothing is generated then.
+ */
+public final class CExport {
+    /** The tables hold {@code int16_t}. */
+    static final int TABLE_LIMIT = Short.MAX_VALUE;
+
+    private CExport() {
+    }
+
+    /**
+     * The generated files and their memory estimate.
+     *
+     * @param files  file name to content
+     * @param memory the estimate for the board
+     */
+    public record Result(Map<String, String> files, MemoryReport memory) {
+    }
+
+    /** Exports {@code program} run with tick {@code dt} for {@code board}; {@code null} after reporting errors. */
+    public static Result export(Program program, double dt, Board board, DiagnosticSink diags) {
+        SourcePos root = new SourcePos(program.file(), 1, 1);
+        if (program.main() == null) {
+            diags.error(root, "the program has no <main>; an exported program needs one to run");
+            return null;
+        }
+        if (!(dt > 0) || !Double.isFinite(dt)) {
+            diags.error(root, "the tick must be > 0 s, got " + dt);
+            return null;
+        }
+        CProgram c = CProgram.of(program, dt);
+        if (c.largestTableValue() > TABLE_LIMIT || c.modules() > TABLE_LIMIT / 6) {
+            diags.error(program.robot().pos(), "the program is too large for the embedded tables (their entries are"
+                    + " 16-bit: at most " + TABLE_LIMIT / 6 + " modules and " + TABLE_LIMIT
+                    + " expressions, instances or table rows)");
+            return null;
+        }
+        Map<String, String> files = new LinkedHashMap<>();
+        files.put("parsl_program.h", c.header());
+        String source = c.source();
+        files.put("parsl_program.c", source);
+        MemoryReport m = MemoryReport.of(c, board, statements(source));
+        for (String problem : m.problems()) {
+            diags.error(program.robot().pos(), problem);
+        }
+        return m.fits() ? new Result(files, m) : null;
+    }
+
+    /**
+     * The memory estimate of {@code program} on {@code board}, whether or not it fits (for
+     * reports and benchmarks); {@code program} must have a {@code <main>}.
+     */
+    public static MemoryReport estimate(Program program, double dt, Board board) {
+        CProgram c = CProgram.of(program, dt);
+        return MemoryReport.of(c, board, statements(c.source()));
+    }
+
+    /** Generated statements (indented lines), the measure of expression code for the flash estimate. */
+    private static long statements(String source) {
+        return source.lines().filter(l -> l.startsWith("    ")).count();
+    }
+}

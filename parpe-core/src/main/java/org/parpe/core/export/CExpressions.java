@@ -1,0 +1,224 @@
+package org.parpe.core.export;
+
+import java.util.List;
+import org.parpe.core.expr.ExprTree;
+import org.parpe.core.expr.Node;
+
+/**
+ * Translates one compiled expression tree into the body of a C function that evaluates it as
+ * {@code org.parpe.core.expr.Nodes} does: operands left to right, one temporary per node (C
+ * leaves the order of function arguments open), short-circuits as branches, and the same
+ * finiteness checks, which raise the same run-time errors.
+ */
+final class CExpressions implements ExprTree.Visitor<String> {
+    /** One-argument functions in the order of the runtime's names table ({@code parsl_io.c}). */
+    static final List<String> FUNCTIONS = List.of("sin", "cos", "tan", "asin", "acos", "atan", "sinh", "cosh", "tanh",
+            "asinh", "acosh", "atanh", "log", "ln", "exp", "sqrt", "abs", "round", "floor", "ceil", "rad", "deg");
+
+    private final StringBuilder body = new StringBuilder();
+    private final int[] sensorSlot;
+    private int temps;
+    private int depth = 1;
+
+    /** {@code sensorSlot} maps the interpreter's flat sensor slots to the compact C table (−1: none). */
+    private CExpressions(int[] sensorSlot) {
+        this.sensorSlot = sensorSlot;
+    }
+
+    /** The C function {@code static double NAME(parsl_rt *r)} evaluating {@code root}. */
+    static String function(String name, Node root, int[] sensorSlot) {
+        CExpressions c = new CExpressions(sensorSlot);
+        String result = ExprTree.visit(root, c);
+        StringBuilder out = new StringBuilder("static double ").append(name).append("(parsl_rt *r)\n{\n");
+        if (c.temps > 0) {
+            out.append("    double ");
+            for (int i = 0; i < c.temps; i++) {
+                out.append(i == 0 ? "" : ", ").append('t').append(i);
+            }
+            out.append(";\n");
+        }
+        out.append(c.body).append("    (void) r;\n    return ").append(result).append(";\n}\n");
+        return out.toString();
+    }
+
+    /** A C literal with exactly the value of {@code v}. */
+    static String literal(double v) {
+        if (v == 0) {
+            return (1 / v < 0) ? "(-0.0)" : "0.0";
+        }
+        return "(" + Double.toHexString(v) + ")";
+    }
+
+    private String temp() {
+        return "t" + temps++;
+    }
+
+    private void line(String s) {
+        body.append("    ".repeat(depth)).append(s).append('\n');
+    }
+
+    private String set(String expression) {
+        String t = temp();
+        line(t + " = " + expression + ";");
+        return t;
+    }
+
+    @Override
+    public String constant(double value) {
+        return literal(value);
+    }
+
+    @Override
+    public String variable(String name) {
+        switch (name) {
+            case "index": case "count": case "id":
+                return set("(double) r->" + name);
+            default:
+                return set("r->" + name);
+        }
+    }
+
+    @Override
+    public String control(int index) {
+        return set("r->controls[" + index + "]");
+    }
+
+    @Override
+    public String macro(int index) {
+        return set("r->macros[" + index + "]");
+    }
+
+    @Override
+    public String globalSensor(int slot) {
+        int s = sensorSlot[slot];
+        return s < 0 ? "0.0" : set("r->sens[" + s + "]");
+    }
+
+    @Override
+    public String localSensor(int position, int channel) {
+        return set("parsl_local(r, " + position + ", " + channel + ")");
+    }
+
+    @Override
+    public String unary(boolean not, Node arg) {
+        String a = ExprTree.visit(arg, this);
+        return set(not ? "(" + a + " == 0 ? 1.0 : 0.0)" : "-" + a);
+    }
+
+    @Override
+    public String binary(String op, Node left, Node right) {
+        String a = ExprTree.visit(left, this);
+        String b = ExprTree.visit(right, this);
+        switch (op) {
+            case "+": return checked(a + " + " + b, "PARSL_E_SUM");
+            case "-": return checked(a + " - " + b, "PARSL_E_DIFF");
+            case "*": return checked(a + " * " + b, "PARSL_E_PROD");
+            case "/":
+                line("if (" + b + " == 0) parsl_raise(r, PARSL_E_DIV, 0, 0, 0);");
+                return checked(a + " / " + b, "PARSL_E_QUOT");
+            case "%":
+                line("if (" + b + " == 0) parsl_raise(r, PARSL_E_REM, 0, 0, 0);");
+                return set("fmod(" + a + ", " + b + ")");
+            case "^": {
+                String t = set("pow(" + a + ", " + b + ")");
+                line("if (!isfinite(" + t + ")) parsl_raise(r, PARSL_E_POW, " + a + ", " + b + ", 0);");
+                return t;
+            }
+            default:
+                return set("(" + a + " " + op + " " + b + " ? 1.0 : 0.0)");
+        }
+    }
+
+    private String checked(String expression, String error) {
+        String t = set(expression);
+        line("if (!isfinite(" + t + ")) parsl_raise(r, " + error + ", 0, 0, 0);");
+        return t;
+    }
+
+    @Override
+    public String logic(boolean and, Node left, Node right) {
+        String a = ExprTree.visit(left, this);
+        String t = temp();
+        line("if (" + a + (and ? " != 0" : " == 0") + ") {");
+        depth++;
+        String b = ExprTree.visit(right, this);
+        line(t + " = " + b + " != 0 ? 1.0 : 0.0;");
+        depth--;
+        line("} else {");
+        line("    " + t + " = " + (and ? "0.0" : "1.0") + ";");
+        line("}");
+        return t;
+    }
+
+    @Override
+    public String conditional(Node cond, Node then, Node otherwise) {
+        String c = ExprTree.visit(cond, this);
+        String t = temp();
+        line("if (" + c + " != 0) {");
+        depth++;
+        line(t + " = " + ExprTree.visit(then, this) + ";");
+        depth--;
+        line("} else {");
+        depth++;
+        line(t + " = " + ExprTree.visit(otherwise, this) + ";");
+        depth--;
+        line("}");
+        return t;
+    }
+
+    @Override
+    public String function1(String name, Node arg) {
+        String x = ExprTree.visit(arg, this);
+        String t = set(c1(name, x));
+        line("if (!isfinite(" + t + ")) parsl_raise(r, PARSL_E_FUNC, " + x + ", 0, " + FUNCTIONS.indexOf(name) + ");");
+        return t;
+    }
+
+    /** The C of {@code org.parpe.core.expr.Functions.F1}, formula for formula. */
+    private static String c1(String name, String x) {
+        switch (name) {
+            case "asinh": return "log(" + x + " + sqrt(" + x + " * " + x + " + 1))";
+            case "acosh": return "log(" + x + " + sqrt(" + x + " * " + x + " - 1))";
+            case "atanh": return "0.5 * log((1 + " + x + ") / (1 - " + x + "))";
+            case "log": return "log10(" + x + ")";
+            case "ln": return "log(" + x + ")";
+            case "abs": return "fabs(" + x + ")";
+            case "round": return "floor(" + x + " + 0.5)";
+            // java.lang.Math.toRadians and toDegrees multiply by these constants (JDK 9 and later)
+            case "rad": return x + " * 0.017453292519943295";
+            case "deg": return x + " * 57.29577951308232";
+            default: return name + "(" + x + ")";
+        }
+    }
+
+    @Override
+    public String function2(String name, Node a, Node b) {
+        String x = ExprTree.visit(a, this);
+        String y = ExprTree.visit(b, this);
+        switch (name) {
+            case "atan2": return set("atan2(" + x + ", " + y + ")");
+            case "mod":
+                line("if (" + y + " == 0) parsl_raise(r, PARSL_E_MODF, 0, 0, 0);");
+                return set("fmod(" + x + ", " + y + ")");
+            // java.lang.Math.min/max: NaN wins, and -0.0 is below 0.0
+            case "min": return set("parsl_min(" + x + ", " + y + ")");
+            default: return set("parsl_max(" + x + ", " + y + ")");
+        }
+    }
+
+    @Override
+    public String sum(List<Node> args) {
+        String s = set("0.0");
+        for (Node n : args) {
+            String v = ExprTree.visit(n, this);
+            line(s + " += " + v + ";");
+        }
+        line("if (!isfinite(" + s + ")) parsl_raise(r, PARSL_E_SUMF, 0, 0, 0);");
+        return s;
+    }
+
+    @Override
+    public String random() {
+        return set("parsl_rand(r)");
+    }
+}

@@ -1,0 +1,291 @@
+package org.parpe.core.export;
+
+import java.util.ArrayList;
+import java.util.IdentityHashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import org.parpe.core.diag.SourcePos;
+import org.parpe.core.expr.Expression;
+import org.parpe.core.model.Automaton;
+import org.parpe.core.model.Behavior;
+import org.parpe.core.model.BehaviorItem;
+import org.parpe.core.model.Conditional;
+import org.parpe.core.model.Instance;
+import org.parpe.core.model.MainEntry;
+import org.parpe.core.model.Program;
+import org.parpe.core.model.StateDef;
+import org.parpe.core.model.Timing;
+import org.parpe.core.run.Channel;
+
+/**
+ * A loaded program as the C tables of the embedded runtime ({@code parsl_rt.h}): one C function
+ * per expression, and the main entries, instances (groups resolved as the interpreter's
+ * {@code EntryPlan} does), automata and states as constant {@code int16_t} tables. Per-module
+ * state is pooled: only one {@code <main>} entry runs at a time, so the RAM is sized by the
+ * largest entry. Call {@link #of} after {@link ExportCheck} has accepted the program.
+ */
+public final class CProgram {
+    private final Program program;
+    private final double dt;
+    private final Map<Expression, Integer> exprIds = new IdentityHashMap<>();
+    private final List<Expression> exprs = new ArrayList<>();
+    private final List<SourcePos> places = new ArrayList<>();
+    private final Map<String, Integer> files = new LinkedHashMap<>();
+    private final int[] ids;
+    private final int[] sensorSlot;
+    private int sensorCount;
+    private final Tables t = new Tables();
+    /** Sizes of the pooled state, taken over all entries. */
+    int maxInstances;
+    int maxPool;
+    int maxDurations;
+    int maxMacros;
+
+    private CProgram(Program program, double dt) {
+        this.program = program;
+        this.dt = dt;
+        this.ids = program.moduleIds();
+        this.sensorSlot = new int[ids.length * Channel.count()];
+    }
+
+    /** Builds the tables of {@code program} run with tick {@code dt}. */
+    public static CProgram of(Program program, double dt) {
+        CProgram c = new CProgram(program, dt);
+        c.build();
+        return c;
+    }
+
+    /** The number of modules. */
+    public int modules() {
+        return ids.length;
+    }
+
+    /** The number of sensor readings kept in RAM (carried channels only). */
+    public int sensorReadings() {
+        return sensorCount;
+    }
+
+    /** Largest number of instances of one entry. */
+    public int instances() {
+        return Math.max(1, maxInstances);
+    }
+
+    /** Largest number of module states of one entry (one per module of each instance). */
+    public int moduleStates() {
+        return Math.max(1, maxPool);
+    }
+
+    /** Largest number of state durations kept for one entry. */
+    public int durations() {
+        return Math.max(1, maxDurations);
+    }
+
+    /** Number of controls. */
+    public int controls() {
+        return program.controls().size();
+    }
+
+    /** Largest number of macros of a behavior. */
+    public int macros() {
+        return Math.max(1, maxMacros);
+    }
+
+    /** Bytes of the constant tables, for {@code int16_t} entries and {@code doubleBytes} per double. */
+    public long tableBytes(int doubleBytes) {
+        return 2L * t.cells() + (long) doubleBytes * 3 * Math.max(1, controls()) + 6L * places.size();
+    }
+
+    private void build() {
+        for (int i = 0; i < ids.length; i++) {
+            for (Channel c : Channel.values()) {
+                int slot = i * Channel.count() + c.ordinal();
+                sensorSlot[slot] = program.robot().carries(ids[i], c.sensor()) ? sensorCount++ : -1;
+            }
+        }
+        for (Automaton a : program.automata()) {
+            t.aut.add(new int[] {a.states().size(), t.state.size(), perModule(a) ? 1 : 0});
+            for (int s = 0; s < a.states().size(); s++) {
+                StateDef st = a.states().get(s);
+                Timing tm = a.times().get(s);
+                t.state.add(new int[] {st.interp().ordinal(), st.angles().size(), t.angle.size(), id(tm.duration()),
+                    tm.exit() == null ? -1 : id(tm.exit())});
+                st.angles().forEach(e -> t.angle.add(id(e)));
+            }
+        }
+        if (program.main() != null) {
+            for (MainEntry e : program.main().entries()) {
+                entry(e);
+            }
+        }
+    }
+
+    private static boolean perModule(Automaton a) {
+        return a.times().stream().anyMatch(tm -> tm.duration().perModule());
+    }
+
+    private void entry(MainEntry e) {
+        Behavior b = program.behavior(e.behavior()).orElseThrow();
+        int first = t.inst.size();
+        int vargs = t.varg.size();
+        for (MainEntry.MacroArg a : e.macros()) {
+            if (a.value() != null) {
+                t.varg.add(new int[] {b.macros().indexOf(a.name()), id(a.value())});
+            }
+        }
+        int[] pool = {0, 0};
+        collect(e, b.items(), new ArrayList<>(), pool);
+        int n = t.inst.size() - first;
+        t.entry.add(new int[] {first, n, e.time() == null ? -1 : id(e.time()), e.exit() == null ? -1 : id(e.exit()),
+            vargs, t.varg.size() - vargs});
+        maxInstances = Math.max(maxInstances, n);
+        maxPool = Math.max(maxPool, pool[0]);
+        maxDurations = Math.max(maxDurations, pool[1]);
+        maxMacros = Math.max(maxMacros, b.macros().size());
+    }
+
+    private void collect(MainEntry e, List<BehaviorItem> items, List<Conditional> conds, int[] pool) {
+        for (BehaviorItem item : items) {
+            if (item instanceof Conditional c) {
+                conds.add(c);
+                collect(e, c.items(), conds, pool);
+                conds.remove(conds.size() - 1);
+                continue;
+            }
+            Instance i = (Instance) item;
+            String g = i.group();
+            boolean mirror = g.startsWith("!");
+            String base = mirror ? g.substring(1).trim() : g;
+            for (MainEntry.MacroArg a : e.macros()) {
+                if (a.name().equals(base) && a.group() != null) {
+                    base = a.group();
+                    mirror ^= a.mirror();
+                }
+            }
+            List<Integer> group = program.group(base).orElseThrow().modules();
+            int automaton = program.automata().indexOf(program.automaton(i.automaton()).orElseThrow());
+            int mod = t.mod.size();
+            for (int id : group) {
+                t.mod.add(java.util.Arrays.binarySearch(ids, id));
+            }
+            int cond = t.cond.size();
+            conds.forEach(c -> t.cond.add(id(c.condition())));
+            int ns = t.aut.get(automaton)[0];
+            t.inst.add(new int[] {automaton, mirror ? 1 : 0, group.size(), mod, cond, conds.size(), opt(i.phase()),
+                opt(i.offset()), opt(i.period()), opt(i.start()), opt(i.cycles()), pool[0], pool[1], place(i.pos())});
+            pool[0] += group.size();
+            pool[1] += ns;
+        }
+    }
+
+    private int opt(Expression e) {
+        return e == null ? -1 : id(e);
+    }
+
+    private int id(Expression e) {
+        Integer i = exprIds.get(e);
+        if (i == null) {
+            i = exprs.size();
+            exprIds.put(e, i);
+            exprs.add(e);
+            places.add(e.pos());
+        }
+        return i;
+    }
+
+    private int place(SourcePos pos) {
+        places.add(pos);
+        return places.size() - 1;
+    }
+
+    /** {@code parsl_program.h}: the sizes the runtime's state is declared with. */
+    public String header() {
+        StringBuilder h = new StringBuilder();
+        h.append("/* Generated by parpe export from ").append(comment(program.file())).append(". */\n");
+        h.append("#ifndef PARSL_PROGRAM_H\n#define PARSL_PROGRAM_H\n\n");
+        h.append("#define PARSL_FILE \"").append(CText.escape(program.file())).append("\"\n");
+        define(h, "PARSL_N", ids.length, "modules");
+        define(h, "PARSL_NC", controls(), "controls");
+        define(h, "PARSL_NC1", Math.max(1, controls()), "");
+        define(h, "PARSL_NS", sensorCount, "sensor readings (carried channels)");
+        define(h, "PARSL_NS1", Math.max(1, sensorCount), "");
+        define(h, "PARSL_NE", t.entry.size(), "main entries");
+        define(h, "PARSL_NA", t.aut.size(), "automata");
+        define(h, "PARSL_NI1", instances(), "instances of the largest entry");
+        define(h, "PARSL_POOL1", moduleStates(), "module states of the largest entry");
+        define(h, "PARSL_TPOOL1", durations(), "state durations of the largest entry");
+        define(h, "PARSL_NM1", macros(), "macros of the largest behavior");
+        long cycles = program.main() == null ? 0 : program.main().cycles();
+        h.append("#define PARSL_MAIN_CYCLES (").append(cycles).append("L) /* -1: forever */\n");
+        h.append("#define PARSL_DT ").append(CExpressions.literal(dt)).append(" /* the tick, ")
+                .append(String.format(Locale.ROOT, "%s", dt)).append(" s */\n");
+        h.append("\n#endif\n");
+        return h.toString();
+    }
+
+    private static void define(StringBuilder h, String name, int value, String what) {
+        h.append("#define ").append(name).append(' ').append(value);
+        h.append(what.isEmpty() ? "\n" : " /* " + what + " */\n");
+    }
+
+    private static String comment(String s) {
+        return s.replace("*/", "* /");
+    }
+
+    /** {@code parsl_program.c}: the expressions and the tables. */
+    public String source() {
+        StringBuilder c = new StringBuilder();
+        c.append("/* Generated by parpe export from ").append(comment(program.file())).append(". */\n");
+        c.append("#include \"parsl_rt.h\"\n#include <math.h>\n#include <string.h>\n\n");
+        c.append(CText.PRELUDE);
+        for (int i = 0; i < exprs.size(); i++) {
+            Expression e = exprs.get(i);
+            c.append("/* ").append(comment(e.pos().toString())).append(": ").append(comment(e.text())).append(" */\n");
+            c.append(CExpressions.function("x" + i, e.root(), sensorSlot)).append('\n');
+        }
+        c.append("double parsl_expr(parsl_rt *r, int16_t x)\n{\n    switch (x) {\n");
+        for (int i = 0; i < exprs.size(); i++) {
+            c.append("    case ").append(i).append(": return x").append(i).append("(r);\n");
+        }
+        c.append("    default: return 0;\n    }\n}\n\n");
+        new CTables(program, ids, sensorSlot, t, places, files, exprs.stream().map(Expression::text).toList()).append(c);
+        return c.toString();
+    }
+
+    /** The rows of the generated tables, in the column order of {@code parsl_rt.h}. */
+    static final class Tables {
+        final List<int[]> entry = new ArrayList<>();
+        final List<int[]> varg = new ArrayList<>();
+        final List<int[]> inst = new ArrayList<>();
+        final List<Integer> mod = new ArrayList<>();
+        final List<Integer> cond = new ArrayList<>();
+        final List<int[]> aut = new ArrayList<>();
+        final List<int[]> state = new ArrayList<>();
+        final List<Integer> angle = new ArrayList<>();
+
+        long cells() {
+            return 6L * entry.size() + 2L * varg.size() + 14L * inst.size() + mod.size() + cond.size()
+                    + 3L * aut.size() + 5L * state.size() + angle.size();
+        }
+
+        /** The largest value in any table, which must fit an {@code int16_t}. */
+        int largest() {
+            int m = Math.max(mod.size(), Math.max(cond.size(), angle.size()));
+            for (List<int[]> rows : List.of(entry, varg, inst, aut, state)) {
+                m = Math.max(m, rows.size());
+                for (int[] r : rows) {
+                    for (int v : r) {
+                        m = Math.max(m, v);
+                    }
+                }
+            }
+            return m;
+        }
+    }
+
+    /** The largest value the tables hold (rows, offsets, expression ids). */
+    public int largestTableValue() {
+        return Math.max(t.largest(), Math.max(exprs.size(), places.size()));
+    }
+}

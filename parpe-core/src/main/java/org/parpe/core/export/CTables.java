@@ -1,0 +1,159 @@
+package org.parpe.core.export;
+
+import java.util.List;
+import java.util.Map;
+import org.parpe.core.diag.SourcePos;
+import org.parpe.core.model.Automaton;
+import org.parpe.core.model.Control;
+import org.parpe.core.model.Program;
+import org.parpe.core.model.StateDef;
+
+/** Writes the constant tables of a {@link CProgram} as C definitions ({@code PARSL_ROM}: flash on AVR). */
+final class CTables {
+    private final Program program;
+    private final int[] ids;
+    private final int[] sensorSlot;
+    private final CProgram.Tables t;
+    private final List<SourcePos> places;
+    private final Map<String, Integer> files;
+    private final List<String> exprTexts;
+
+    CTables(Program program, int[] ids, int[] sensorSlot, CProgram.Tables t, List<SourcePos> places,
+            Map<String, Integer> files, List<String> exprTexts) {
+        this.exprTexts = exprTexts;
+        this.program = program;
+        this.ids = ids;
+        this.sensorSlot = sensorSlot;
+        this.t = t;
+        this.places = places;
+        this.files = files;
+    }
+
+    void append(StringBuilder c) {
+        list(c, "const uint16_t parsl_ids[]", java.util.Arrays.stream(ids).boxed().toList());
+        list(c, "const int16_t parsl_slot[]", java.util.Arrays.stream(sensorSlot).boxed().toList());
+        controls(c);
+        rows(c, "const int16_t parsl_entry[][PARSL_ENTRY_COLS]", t.entry, 6);
+        rows(c, "const int16_t parsl_varg[][2]", t.varg, 2);
+        rows(c, "const int16_t parsl_inst[][PARSL_INST_COLS]", t.inst, 14);
+        list(c, "const int16_t parsl_inst_mod[]", t.mod);
+        list(c, "const int16_t parsl_cond[]", t.cond);
+        rows(c, "const int16_t parsl_aut[][PARSL_AUT_COLS]", t.aut, 3);
+        rows(c, "const int16_t parsl_state[][PARSL_STATE_COLS]", t.state, 5);
+        list(c, "const int16_t parsl_angle[]", t.angle);
+        positions(c);
+        names(c);
+    }
+
+    private void controls(StringBuilder c) {
+        List<Control> cs = program.controls();
+        StringBuilder init = new StringBuilder("PARSL_ROM const double parsl_control_init[] = {");
+        StringBuilder range = new StringBuilder("PARSL_ROM const double parsl_control_range[][2] = {");
+        StringBuilder rows = new StringBuilder("PARSL_ROM const int16_t parsl_control[][PARSL_CONTROL_COLS] = {");
+        StringBuilder words = new StringBuilder("PARSL_ROM const int16_t parsl_words[] = {");
+        StringBuilder index = new StringBuilder("int16_t parsl_control_index(const char *name)\n{\n");
+        int nwords = 0;
+        for (int i = 0; i < cs.size(); i++) {
+            Control k = cs.get(i);
+            init.append(i == 0 ? "" : ", ").append(CExpressions.literal(k.value()));
+            range.append(i == 0 ? "" : ", ").append('{').append(CExpressions.literal(k.min() == null ? 0 : k.min()))
+                    .append(", ").append(CExpressions.literal(k.max() == null ? 0 : k.max())).append('}');
+            rows.append(i == 0 ? "" : ", ").append('{').append(k.type().ordinal()).append(", ").append(nwords)
+                    .append(", ").append(k.words().size()).append('}');
+            for (String w : k.words()) {
+                words.append(nwords++ == 0 ? "" : ", ").append(program.radioWords().get(w));
+            }
+            index.append("    if (PARSL_IS(name, \"").append(k.name()).append("\")) {\n        return ").append(i)
+                    .append(";\n    }\n");
+        }
+        if (cs.isEmpty()) {
+            init.append("0.0");
+            range.append("{0.0, 0.0}");
+            rows.append("{0, 0, 0}");
+        }
+        if (nwords == 0) {
+            words.append('0');
+        }
+        index.append("    (void) name;\n    return -1;\n}\n\n");
+        c.append(init).append("};\n").append(range).append("};\n").append(rows).append("};\n").append(words)
+                .append("};\n\n").append(index);
+        c.append("int16_t parsl_word_code(const char *name)\n{\n");
+        program.radioWords().entrySet().stream().sorted(Map.Entry.comparingByValue()).forEach(e ->
+                c.append("    if (PARSL_IS(name, \"").append(e.getKey()).append("\")) {\n        return ")
+                        .append(e.getValue()).append(";\n    }\n"));
+        c.append("    (void) name;\n    return -1;\n}\n\n");
+    }
+
+    private void positions(StringBuilder c) {
+        c.append("PARSL_ROM const uint16_t parsl_pos[][3] = {\n");
+        for (int i = 0; i < places.size(); i++) {
+            SourcePos p = places.get(i);
+            int f = files.computeIfAbsent(p.file(), k -> files.size());
+            c.append(i == 0 ? "    " : ",\n    ").append('{').append(f).append(", ").append(Math.min(65535, p.line()))
+                    .append(", ").append(Math.min(65535, p.column())).append('}');
+        }
+        if (places.isEmpty()) {
+            c.append("    {0, 0, 0}");
+        }
+        c.append("\n};\n\n");
+    }
+
+    private void names(StringBuilder c) {
+        c.append("#ifndef PARSL_NO_NAMES\nconst char *const parsl_files[] = {");
+        if (files.isEmpty()) {
+            c.append("\"\"");
+        }
+        int i = 0;
+        for (String f : files.keySet()) {
+            c.append(i++ == 0 ? "" : ", ").append('"').append(CText.escape(f)).append('"');
+        }
+        c.append("};\nconst char *const parsl_expr_text[] = {");
+        for (int e = 0; e < exprTexts.size(); e++) {
+            c.append(e == 0 ? "\n    \"" : ",\n    \"").append(CText.escape(exprTexts.get(e))).append('"');
+        }
+        if (exprTexts.isEmpty()) {
+            c.append("\"\"");
+        }
+        c.append("\n};\nconst char *const parsl_aut_names[] = {");
+        StringBuilder states = new StringBuilder("const char *const parsl_state_names[] = {");
+        int s = 0;
+        for (int a = 0; a < program.automata().size(); a++) {
+            Automaton au = program.automata().get(a);
+            c.append(a == 0 ? "" : ", ").append('"').append(CText.escape(au.name())).append('"');
+            for (StateDef st : au.states()) {
+                states.append(s++ == 0 ? "" : ", ").append('"').append(CText.escape(st.name())).append('"');
+            }
+        }
+        if (program.automata().isEmpty()) {
+            c.append("\"\"");
+            states.append("\"\"");
+        }
+        c.append("};\n").append(states).append("};\n#endif\n");
+    }
+
+    private static void list(StringBuilder c, String decl, List<Integer> values) {
+        c.append("PARSL_ROM ").append(decl).append(" = {");
+        for (int i = 0; i < values.size(); i++) {
+            c.append(i == 0 ? "" : ",").append(i % 16 == 0 ? "\n    " : " ").append(values.get(i));
+        }
+        if (values.isEmpty()) {
+            c.append('0');
+        }
+        c.append("\n};\n");
+    }
+
+    private static void rows(StringBuilder c, String decl, List<int[]> rows, int width) {
+        c.append("PARSL_ROM ").append(decl).append(" = {\n");
+        for (int i = 0; i < rows.size(); i++) {
+            c.append(i == 0 ? "    {" : ",\n    {");
+            for (int j = 0; j < width; j++) {
+                c.append(j == 0 ? "" : ", ").append(rows.get(i)[j]);
+            }
+            c.append('}');
+        }
+        if (rows.isEmpty()) {
+            c.append("    {0}");
+        }
+        c.append("\n};\n");
+    }
+}

@@ -1,0 +1,99 @@
+package org.parpe.core.expr;
+
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * A read-only view of a compiled expression tree for code generators (the C export): each
+ * node kind is handed to a {@link Visitor} with its operands, so a generator translates the
+ * very tree the interpreter evaluates instead of parsing the text again. Evaluation is not
+ * affected.
+ */
+public final class ExprTree {
+    private ExprTree() {
+    }
+
+    /** Local sensor positions that are not a fixed index: the current module and its neighbours. */
+    public static final int SELF = Nodes.LocalSensor.SELF, PREV = Nodes.LocalSensor.PREV, NEXT = Nodes.LocalSensor.NEXT;
+
+    /** Receives one node; children are passed as {@link Node}s to visit in turn. */
+    public interface Visitor<R> {
+        /** A number (parameters, radio words and constant sub-expressions are folded into these). */
+        R constant(double value);
+
+        /** A logical variable: {@code time btime index count id phase cycle}. */
+        R variable(String name);
+
+        /** {@code $control}, by control index. */
+        R control(int index);
+
+        /** An expression-valued macro, by macro slot. */
+        R macro(int index);
+
+        /** A global sensor reference: a flat slot {@code moduleIndex * channels + channel}. */
+        R globalSensor(int slot);
+
+        /** A local sensor reference: a group position, or {@link #SELF}, {@link #PREV}, {@link #NEXT}. */
+        R localSensor(int position, int channel);
+
+        /** Unary minus, or logical not. */
+        R unary(boolean not, Node arg);
+
+        /** One of {@code + - * / % ^ < > <= >= == !=}, evaluating the left operand first. */
+        R binary(String op, Node left, Node right);
+
+        /** {@code &&} ({@code and}) or {@code ||}, short-circuiting. */
+        R logic(boolean and, Node left, Node right);
+
+        /** {@code if(c, a, b)}, evaluating only the chosen branch. */
+        R conditional(Node cond, Node then, Node otherwise);
+
+        /** A one-argument function by its script name ({@code sin}, {@code round}, …). */
+        R function1(String name, Node arg);
+
+        /** {@code atan2 mod min max}. */
+        R function2(String name, Node a, Node b);
+
+        /** {@code sum(a, …)}, added left to right. */
+        R sum(List<Node> args);
+
+        /** {@code rand()}. */
+        R random();
+    }
+
+    private static final String[] VARIABLES = {"time", "btime", "index", "count", "id", "phase", "cycle"};
+
+    /** Hands {@code n} to the matching method of {@code v}. */
+    public static <R> R visit(Node n, Visitor<R> v) {
+        if (n instanceof Nodes.Const c) {
+            return v.constant(c.value);
+        } else if (n instanceof Nodes.Var x) {
+            return v.variable(VARIABLES[x.which]);
+        } else if (n instanceof Nodes.ControlRef c) {
+            return v.control(c.index);
+        } else if (n instanceof Nodes.MacroRef m) {
+            return v.macro(m.index);
+        } else if (n instanceof Nodes.GlobalSensor g) {
+            return v.globalSensor(g.slot);
+        } else if (n instanceof Nodes.LocalSensor l) {
+            return v.localSensor(l.position, l.channel);
+        } else if (n instanceof Nodes.Unary u) {
+            return v.unary(u.not, u.arg);
+        } else if (n instanceof Nodes.Binary b) {
+            return v.binary(Nodes.Binary.SYMBOLS[b.op], b.left, b.right);
+        } else if (n instanceof Nodes.Logic l) {
+            return v.logic(l.and, l.left, l.right);
+        } else if (n instanceof Nodes.If f) {
+            return v.conditional(f.cond, f.then, f.otherwise);
+        } else if (n instanceof Nodes.Func1 f) {
+            return v.function1(f.f.name().toLowerCase(Locale.ROOT), f.arg);
+        } else if (n instanceof Nodes.Func2 f) {
+            return v.function2(f.f.name().toLowerCase(Locale.ROOT), f.a, f.b);
+        } else if (n instanceof Nodes.Sum s) {
+            return v.sum(List.of(s.args));
+        } else if (n instanceof Nodes.Rand) {
+            return v.random();
+        }
+        throw new IllegalArgumentException("unknown expression node " + n.getClass().getName());
+    }
+}
