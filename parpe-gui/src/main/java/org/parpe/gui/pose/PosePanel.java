@@ -401,6 +401,26 @@ public final class PosePanel {
         return program;
     }
 
+    /** The push button or check box labelled {@code text} (mnemonics ignored), or null (tests press them). */
+    Button button(String text) {
+        return find(box, text);
+    }
+
+    private static Button find(Composite parent, String text) {
+        for (Control c : parent.getChildren()) {
+            if (c instanceof Button b && b.getText().replace("&", "").equals(text)) {
+                return b;
+            }
+            if (c instanceof Composite child) {
+                Button b = find(child, text);
+                if (b != null) {
+                    return b;
+                }
+            }
+        }
+        return null;
+    }
+
     JointSliders sliders() {
         return sliders;
     }
