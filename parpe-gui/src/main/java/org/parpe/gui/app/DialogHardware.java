@@ -55,10 +55,13 @@ final class DialogHardware implements PoseHardware {
 
     @Override
     public void limp(int[] modules, boolean limp) {
-        for (int id : modules) {
-            int r = row(id);
-            if (r >= 0) {
-                dialog.session().torque(r, !limp);
+        // Twice, as the command-line recorder does: a torque write has no reply, so a lost packet would go unnoticed.
+        for (int pass = 0; pass < 2; pass++) {
+            for (int id : modules) {
+                int r = row(id);
+                if (r >= 0) {
+                    dialog.session().torque(r, !limp);
+                }
             }
         }
     }

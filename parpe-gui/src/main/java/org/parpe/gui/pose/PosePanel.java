@@ -421,6 +421,11 @@ public final class PosePanel {
         return null;
     }
 
+    /** Simulator or robot (tests choose as a user would). */
+    Combo source() {
+        return source;
+    }
+
     JointSliders sliders() {
         return sliders;
     }

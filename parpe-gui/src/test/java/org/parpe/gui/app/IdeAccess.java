@@ -59,6 +59,55 @@ public final class IdeAccess {
         return ide.status().message();
     }
 
+    /**
+     * Opens Run > Hardware…, connects to {@code port} with {@code protocol} at {@code baud} as a
+     * user would, and waits until {@code servos} servos are listed.
+     */
+    public static void connectHardware(IdeWindow ide, String port, String protocol, int baud, int servos) {
+        HardwareDialog d = HardwareDialog.open(ide);
+        d.portBox().setText(port);
+        d.protocolBox().select(d.protocolBox().indexOf(protocol));
+        d.baudBox().setText(Integer.toString(baud));
+        // A scan on a busy machine may miss replies (20 ms read timeout): try a few times, as a user would.
+        for (int attempt = 0; attempt < 4 && d.servos().size() != servos; attempt++) {
+            for (org.eclipse.swt.widgets.Control c : allChildren(d.shell())) {
+                if (c instanceof org.eclipse.swt.widgets.Button b && b.getText().equals("Connect")) {
+                    b.notifyListeners(org.eclipse.swt.SWT.Selection, new org.eclipse.swt.widgets.Event());
+                }
+            }
+            long shortWait = System.currentTimeMillis() + 3000;
+            Gui.pump(() -> d.message().startsWith("Looking") || d.servos().size() == servos
+                    || System.currentTimeMillis() > shortWait, "the dialog to start looking");
+            Gui.pump(() -> !d.message().startsWith("Looking"), "the dialog to finish looking");
+            Gui.settle();
+        }
+        if (d.servos().size() != servos || d.table().getItemCount() != servos) {
+            throw new org.opentest4j.AssertionFailedError("expected " + servos + " servos in the Hardware dialog; it says: "
+                    + d.message());
+        }
+    }
+
+    /** Closes the Hardware dialog (and its bus) and waits until the bus is closed. */
+    public static void closeHardware(IdeWindow ide) throws InterruptedException {
+        HardwareDialog d = ide.hardwareDialog();
+        if (d != null && !d.shell().isDisposed()) {
+            d.shell().close();
+            Gui.pump(() -> d.shell().isDisposed(), "the Hardware dialog to close");
+            d.session().awaitClosed(5000);
+        }
+    }
+
+    private static java.util.List<org.eclipse.swt.widgets.Control> allChildren(org.eclipse.swt.widgets.Composite parent) {
+        java.util.List<org.eclipse.swt.widgets.Control> out = new java.util.ArrayList<>();
+        for (org.eclipse.swt.widgets.Control c : parent.getChildren()) {
+            out.add(c);
+            if (c instanceof org.eclipse.swt.widgets.Composite k) {
+                out.addAll(allChildren(k));
+            }
+        }
+        return out;
+    }
+
     /** Selects the simulated robot (a generator name) as the 3D view's picker does. */
     public static void robot(IdeWindow ide, String name) {
         ide.viewBar().select(name);
