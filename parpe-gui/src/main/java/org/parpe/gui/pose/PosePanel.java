@@ -8,23 +8,17 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import java.util.TreeSet;
-import java.util.function.Supplier;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.custom.SashForm;
-import org.eclipse.swt.custom.StyledText;
 import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Control;
-import org.eclipse.swt.widgets.Event;
 import org.eclipse.swt.widgets.Label;
-import org.eclipse.swt.widgets.Listener;
 import org.parpe.core.model.Group;
 import org.parpe.core.model.Program;
-import org.parpe.gui.view3d.View3D;
-import org.parpe.sim.SimSnapshot;
 
 /**
  * The Pose panel (posable programming, the paper's Level I): choose a group, or Ctrl+click
@@ -105,13 +99,8 @@ public final class PosePanel {
         middle.setWeights(55, 45);
         output = new PoseOutput(box, host, this);
         sim = new PoseSim(msg -> runOnUi(() -> say(msg)));
-        hookView(host.view());
-        Listener space = this::spaceKey;
-        box.getDisplay().addFilter(SWT.KeyDown, space);
-        box.addListener(SWT.Dispose, e -> {
-            box.getDisplay().removeFilter(SWT.KeyDown, space);
-            sim.close();
-        });
+        PoseInput.attach(this, host);
+        box.addListener(SWT.Dispose, e -> sim.close());
         poll();
     }
 
@@ -120,32 +109,7 @@ public final class PosePanel {
         return box;
     }
 
-    private void hookView(View3D view) {
-        Supplier<SimSnapshot> base = view.source();
-        view.setSource(() -> posing() && sim.ready() ? sim.snapshot() : base.get());
-        Supplier<Set<Integer>> highlight = view.highlighted();
-        view.setHighlighted(() -> posing() && current != null ? ids(current.modules()) : highlight.get());
-        view.setJointDrag(new View3D.JointDrag() {
-            @Override
-            public boolean canTurn(int id) {
-                return posing() && source.getSelectionIndex() == 0 && sliders.indexOf(id) >= 0;
-            }
-
-            @Override
-            public void turn(int id, double degrees) {
-                sliders.set(id, sliders.angle(id) + degrees);
-            }
-
-            @Override
-            public void picked(int id) {
-                if (posing()) {
-                    pick(id);
-                }
-            }
-        });
-    }
-
-    private static Set<Integer> ids(int[] modules) {
+    static Set<Integer> ids(int[] modules) {
         Set<Integer> s = new TreeSet<>();
         for (int id : modules) {
             s.add(id);
@@ -163,12 +127,7 @@ public final class PosePanel {
         if (box.isDisposed()) {
             return;
         }
-        shown = box.isVisible();
-        Program p = host.program();
-        if (p != null && p != program) {
-            programChanged(p);
-        }
-        sim.setActive(posing());
+        pollNow();
         if (posing() && sim.ready() && current != null) {
             int[] m = current.modules();
             double[] a = sliders.angles();
@@ -222,6 +181,9 @@ public final class PosePanel {
             modules = g.modules().stream().mapToInt(Integer::intValue).toArray();
         }
         String key = name + Arrays.toString(modules);
+        if (current != null && current == lists.get(key)) {
+            return; // the script was validated again and this group did not change
+        }
         if (groups.indexOf(name) >= 0 && groups.getSelectionIndex() != groups.indexOf(name)) {
             groups.select(groups.indexOf(name));
         }
@@ -352,22 +314,7 @@ public final class PosePanel {
         return true;
     }
 
-    private void spaceKey(Event e) {
-        if (e.keyCode != ' ' || e.stateMask != 0 || box.isDisposed() || !box.isVisible() || host.running()) {
-            return;
-        }
-        Control focus = e.display.getFocusControl();
-        if (focus instanceof StyledText || focus instanceof org.eclipse.swt.widgets.Text || focus instanceof Combo
-                || focus instanceof Button) {
-            return;
-        }
-        if (focus != null && focus.getShell() == box.getShell()) {
-            capture();
-            e.doit = false;
-        }
-    }
-
-    private void say(String text) {
+    void say(String text) {
         host.status(text);
     }
 
@@ -403,22 +350,12 @@ public final class PosePanel {
 
     /** The push button or check box labelled {@code text} (mnemonics ignored), or null (tests press them). */
     Button button(String text) {
-        return find(box, text);
+        return PoseTable.find(box, text);
     }
 
-    private static Button find(Composite parent, String text) {
-        for (Control c : parent.getChildren()) {
-            if (c instanceof Button b && b.getText().replace("&", "").equals(text)) {
-                return b;
-            }
-            if (c instanceof Composite child) {
-                Button b = find(child, text);
-                if (b != null) {
-                    return b;
-                }
-            }
-        }
-        return null;
+    /** Whether the joints are posed with the sliders and the 3D view (not by hand on the robot). */
+    boolean posingInSimulator() {
+        return source.getSelectionIndex() == 0;
     }
 
     /** Simulator or robot (tests choose as a user would). */

@@ -192,11 +192,15 @@ final class PoseTable {
         return table;
     }
 
-    /** Finds a button by its text (tests press it as a user would). */
-    Button button(String text) {
-        for (Control row : box.getChildren()) {
-            for (Control c : row instanceof Composite r ? r.getChildren() : new Control[0]) {
-                if (c instanceof Button b && b.getText().equals(text)) {
+    /** The button labelled {@code text} (mnemonics ignored) anywhere in {@code parent}, or null (tests press it). */
+    static Button find(Composite parent, String text) {
+        for (Control c : parent.getChildren()) {
+            if (c instanceof Button b && b.getText().replace("&", "").equals(text)) {
+                return b;
+            }
+            if (c instanceof Composite child) {
+                Button b = find(child, text);
+                if (b != null) {
                     return b;
                 }
             }

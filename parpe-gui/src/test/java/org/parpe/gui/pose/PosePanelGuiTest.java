@@ -230,18 +230,89 @@ class PosePanelGuiTest {
         }
     }
 
+    /**
+     * Fills in the "Use on another group" dialog as a user would: a period of 0 first (refused,
+     * the dialog stays open and says why), then pair1 and pair2, period 2, phase 0, offset 0.25.
+     */
+    private static void fillUseDialog(List<String> seen) {
+        org.eclipse.swt.widgets.Shell dialog = null;
+        for (org.eclipse.swt.widgets.Shell sh : ide.shell().getShells()) {
+            if (!sh.isDisposed() && sh.getText().equals("Use the poses on other groups")) {
+                dialog = sh;
+            }
+        }
+        if (dialog == null) {
+            ide.shell().getDisplay().timerExec(200, () -> fillUseDialog(seen));
+            return;
+        }
+        org.eclipse.swt.widgets.List groups = null;
+        List<org.eclipse.swt.widgets.Text> fields = new java.util.ArrayList<>();
+        org.eclipse.swt.widgets.Label problem = null;
+        for (org.eclipse.swt.widgets.Control c : all(dialog)) {
+            if (c instanceof org.eclipse.swt.widgets.List l) {
+                groups = l;
+            } else if (c instanceof org.eclipse.swt.widgets.Text t) {
+                fields.add(t);
+            } else if (c instanceof org.eclipse.swt.widgets.Label l) {
+                problem = l;
+            }
+        }
+        Button ok = PoseTable.find(dialog, "Write into script");
+        if (groups == null || fields.size() != 3 || problem == null || ok == null) {
+            seen.add("unexpected dialog");
+            dialog.close();
+            return;
+        }
+        seen.add(String.join(",", groups.getItems()));
+        groups.setSelection(new String[] {"pair1"});
+        fields.get(0).setText("0");
+        ok.notifyListeners(SWT.Selection, new Event());
+        seen.add(dialog.isDisposed() ? "written with period 0" : "refused: " + problem.getText());
+        fields.get(0).setText("2");
+        fields.get(1).setText("0");
+        fields.get(2).setText("0.25");
+        groups.setSelection(new String[] {"pair1", "pair2"});
+        ok.notifyListeners(SWT.Selection, new Event());
+        seen.add(dialog.isDisposed() ? "written" : "still open: " + problem.getText());
+    }
+
+    private static List<org.eclipse.swt.widgets.Control> all(org.eclipse.swt.widgets.Composite parent) {
+        List<org.eclipse.swt.widgets.Control> out = new java.util.ArrayList<>();
+        for (org.eclipse.swt.widgets.Control c : parent.getChildren()) {
+            out.add(c);
+            if (c instanceof org.eclipse.swt.widgets.Composite k) {
+                out.addAll(all(k));
+            }
+        }
+        return out;
+    }
+
+    private static void closeDialogs() {
+        for (org.eclipse.swt.widgets.Shell sh : ide.shell().getShells()) {
+            if (!sh.isDisposed()) {
+                sh.close();
+            }
+        }
+    }
+
     @Test
     @Order(4)
     void usedOnTwoOtherPairsTheScriptRunsThemWithThePhaseDelayAndOneUndoTakesItBack() throws Exception {
         PoseList recorded = panel.poses();
         openScript(script);
         String before = ide.editor().document().get();
-        ScriptInsert.Request req = new ScriptInsert.Request(recorded.toRecording(), List.of("pair1", "pair2"), 2, 0, 0.25);
-        ScriptInsert.Result r = panel.output().useOnGroups(req);
-        assertNotNull(r, IdeAccess.status(ide));
+        assertNotNull(recorded);
+        // The dialog is modal: fill it in from a timer while the button's nested event loop runs.
+        List<String> seen = new java.util.ArrayList<>();
+        ide.shell().getDisplay().timerExec(300, () -> fillUseDialog(seen));
+        ide.shell().getDisplay().timerExec(25_000, PosePanelGuiTest::closeDialogs);
+        press("Use on another group\u2026");
+        assertEquals(List.of("front,pair1,pair2", "refused: The period must be a number of seconds > 0, got 0.0.", "written"),
+                seen, "the dialog offers the groups of four modules, refuses a period of 0, then writes");
         assertNotEquals(before, ide.editor().document().get());
         int v = ide.validations();
-        IdeAccess.pump(() -> ide.validations() > v && ide.program() != null && ide.program().behavior(r.behavior()).isPresent(),
+        IdeAccess.pump(() -> ide.validations() > v && ide.program() != null && ide.program().behavior("play_front").isPresent()
+                && ide.program().automaton("rec_front").isPresent(),
                 "the changed script to load");
         assertEquals(0, ide.problems().errorCount(), "errors: " + ide.problems().shown());
         Traces trace = Traces.run(ide.program(), 6);
