@@ -24,6 +24,7 @@ public final class Automation {
     private final Display display;
     private int exitCode;
     private boolean done;
+    private boolean posePanelShown;
 
     private Automation(IdeWindow ide, LaunchOptions options) {
         this.ide = ide;
@@ -62,6 +63,10 @@ public final class Automation {
             later(POLL_MS, () -> waitForLoad(waited + POLL_MS));
             return;
         }
+        if (options.posePanel() && !posePanelShown) {
+            showPosePanel(0);
+            return;
+        }
         if (options.runFor() >= 0) {
             if (ide.program() == null || ide.problems().errorCount() > 0) {
                 for (Diagnostic d : ide.problems().shown()) {
@@ -78,6 +83,32 @@ public final class Automation {
         } else {
             later(SETTLE_MS * 2, this::shoot);
         }
+    }
+
+    /**
+     * {@code --pose-panel}: brings the Pose panel to the front with the poses the script plays,
+     * waits (bounded) until the posed robot stands in the first of them, then carries on.
+     */
+    private void showPosePanel(int waited) {
+        if (waited == 0) {
+            ide.showPosePanel();
+            ide.pose().pollNow();
+            if (!ide.pose().loadFromScript()) {
+                System.err.println("parpe gui: " + ide.status().message());
+            }
+        }
+        if (!ide.pose().posingReady() && waited < LOAD_TIMEOUT_MS) {
+            later(POLL_MS, () -> showPosePanel(waited + POLL_MS));
+            return;
+        }
+        posePanelShown = true;
+        // The joints take a moment to reach the pose; then the camera goes close to the posed group.
+        later(SETTLE_MS * 3, () -> {
+            if (ide.view().focus(ide.pose().posedModules())) {
+                ide.viewBar().trackRobot(false);
+            }
+            later(SETTLE_MS, () -> waitForLoad(LOAD_TIMEOUT_MS));
+        });
     }
 
     /** Stops a run that takes far longer than it should (a stuck plant) so that --exit always exits. */

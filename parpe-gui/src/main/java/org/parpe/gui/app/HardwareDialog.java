@@ -336,6 +336,16 @@ final class HardwareDialog {
         }
     }
 
+    /** The servos as last read (positions polled every few hundred ms); empty when none is connected. */
+    List<HardwareSession.Servo> servos() {
+        return servos;
+    }
+
+    /** The bus session (the Pose panel makes servos limp, reads and moves them through it). */
+    HardwareSession session() {
+        return session;
+    }
+
     // For tests: the widgets as a user sees them.
 
     Shell shell() {

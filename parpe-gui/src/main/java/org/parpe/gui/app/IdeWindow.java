@@ -25,6 +25,7 @@ import org.parpe.gui.panels.ControlPanel;
 import org.parpe.gui.panels.OutlineView;
 import org.parpe.gui.panels.PlotView;
 import org.parpe.gui.panels.ProblemsView;
+import org.parpe.gui.pose.PosePanel;
 import org.parpe.gui.view3d.View3D;
 
 /**
@@ -53,6 +54,9 @@ public final class IdeWindow {
     private final Validator validator;
     private final FileActions files;
     private final RunActions runs;
+    private final PosePanel pose;
+    private final CTabItem poseTab;
+    private final SashForm editorSplit;
     private HardwareDialog hardwareDialog;
     private volatile String hardwareHeld;
     private Program program;
@@ -75,6 +79,7 @@ public final class IdeWindow {
         Panels.tab(left, "Outline", outline.control());
 
         SashForm middle = new SashForm(main, SWT.VERTICAL);
+        editorSplit = middle;
         CTabFolder editorFolder = Panels.folder(middle);
         Composite editorBox = Panels.fill(editorFolder);
         editor = new ParslEditor(editorBox);
@@ -111,6 +116,15 @@ public final class IdeWindow {
         files = new FileActions(shell, editor, prefs, this::documentChanged, this::fileSwitched, status::setMessage);
         new MenuBar(this).install();
         wire(display);
+        // After wire(): the panel shows its posed robot in the 3D view, and the run's otherwise.
+        pose = new PosePanel(bottom, new PoseBridge(this));
+        poseTab = Panels.tab(bottom, "Pose", pose.control());
+        bottom.addListener(SWT.Selection, e -> fitBottom());
+    }
+
+    /** The Pose panel needs more room than Problems and the Run log. */
+    private void fitBottom() {
+        editorSplit.setWeights(bottom.getSelection() == poseTab ? new int[] {40, 60} : new int[] {72, 28});
     }
 
     private static GridLayout grid(int columns, int margin) {
@@ -441,6 +455,17 @@ public final class IdeWindow {
 
     ViewBar viewBar() {
         return viewBar;
+    }
+
+    /** The Pose panel. */
+    public PosePanel pose() {
+        return pose;
+    }
+
+    /** Brings the Pose panel to the front. */
+    public void showPosePanel() {
+        bottom.setSelection(poseTab);
+        fitBottom();
     }
 
     /** How many validation results have been shown (automation waits for the first). */

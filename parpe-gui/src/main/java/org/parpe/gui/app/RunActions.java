@@ -162,8 +162,28 @@ final class RunActions implements ControlPanel.Target {
     }
 
     private void start(Program program, double runFor, Consumer<RunOutcome> onEnd) {
-        Target target = ide.toolbar().target();
-        String spec = robotSpec(program);
+        start(program, ide.toolbar().target(), robotSpec(program), runFor, onEnd);
+    }
+
+    /**
+     * Runs a program made by the IDE (the Pose panel's playback) on {@code target}, simulating
+     * the robot {@code spec}, until it ends or is stopped; refused while a run is going on or
+     * the Hardware dialog holds the bus a hardware target needs.
+     */
+    void play(Program program, Target target, String spec, Consumer<RunOutcome> onEnd) {
+        if (controller.running()) {
+            report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, "a run is going on"));
+            return;
+        }
+        if (target.hardware() && ide.hardwareHeld() != null) {
+            ide.status().setMessage("Cannot play on the robot: the Hardware dialog holds the bus; close it first.");
+            report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, "the Hardware dialog holds the bus"));
+            return;
+        }
+        start(program, target, spec, -1, onEnd);
+    }
+
+    private void start(Program program, Target target, String spec, double runFor, Consumer<RunOutcome> onEnd) {
         String port = ide.toolbar().port();
         String profile = ide.toolbar().hardwareProfile();
         AngleRecorder recorder = new AngleRecorder();

@@ -112,6 +112,12 @@ final class ViewBar {
         prefs.put("view.robotFile", path);
     }
 
+    /** Turns TrackRobot on or off for now (automation framing a group), without changing the preference. */
+    void trackRobot(boolean on) {
+        track.setSelection(on);
+        ide.view().setTrackRobot(on);
+    }
+
     /** Selects a robot by generator name (automation, tests). */
     void select(String name) {
         int at = robot.indexOf(name);

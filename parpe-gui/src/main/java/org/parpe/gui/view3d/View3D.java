@@ -36,6 +36,8 @@ public final class View3D {
     private Point drag;
     private int dragButton;
     private long frames;
+    private JointDrag jointDrag;
+    private int turning = -1;
 
     /** Creates the view in {@code parent}. */
     public View3D(Composite parent) {
@@ -44,9 +46,13 @@ public final class View3D {
         canvas.addListener(SWT.MouseDown, e -> {
             drag = new Point(e.x, e.y);
             dragButton = e.button == 1 && (e.stateMask & SWT.SHIFT) != 0 ? 2 : e.button;
+            turning = e.button == 1 && (e.stateMask & SWT.SHIFT) == 0 ? grab(e) : -1;
             canvas.setFocus();
         });
-        canvas.addListener(SWT.MouseUp, e -> drag = null);
+        canvas.addListener(SWT.MouseUp, e -> {
+            drag = null;
+            turning = -1;
+        });
         canvas.addListener(SWT.MouseMove, this::mouseMove);
         canvas.addListener(SWT.MouseVerticalWheel, e -> {
             camera.zoom(e.count > 0 ? 0.88 : 1.0 / 0.88);
@@ -63,6 +69,65 @@ public final class View3D {
     /** Where snapshots come from (called on the UI thread, may return null). */
     public void setSource(Supplier<SimSnapshot> source) {
         this.source = source;
+    }
+
+    /** Where snapshots come from now (to show another picture for a while and then give the view back). */
+    public Supplier<SimSnapshot> source() {
+        return source;
+    }
+
+    /** Which modules are highlighted now. */
+    public Supplier<Set<Integer>> highlighted() {
+        return highlighted;
+    }
+
+    /**
+     * Posing with the mouse (null: none). While set, a left press on a module the handler accepts
+     * turns that module's joint as the mouse moves up and down, instead of orbiting; Ctrl+click
+     * picks a module.
+     */
+    public void setJointDrag(JointDrag d) {
+        jointDrag = d;
+        turning = -1;
+    }
+
+    /** Posing with the mouse in the 3D view. */
+    public interface JointDrag {
+        /** Whether the joint of module {@code id} may be turned now. */
+        boolean canTurn(int id);
+
+        /** Turns the joint of module {@code id} by {@code degrees}. */
+        void turn(int id, double degrees);
+
+        /** Module {@code id} was Ctrl+clicked. */
+        void picked(int id);
+    }
+
+    /** Degrees a joint turns per pixel of mouse movement. */
+    public static final double DEGREES_PER_PIXEL = 0.5;
+
+    /** The module under canvas point (x, y) in the last frame drawn, or −1. */
+    public int moduleAt(int x, int y) {
+        return Picking.moduleAt(camera, last, x, y);
+    }
+
+    /** Where module {@code id}'s segment appears on the canvas in the last frame drawn, or null. */
+    public Point screenPoint(int id) {
+        return Picking.screenPoint(camera, last, id);
+    }
+
+    /** A left press: the module whose joint to turn, or −1 (orbit); a Ctrl+click picks instead. */
+    private int grab(Event e) {
+        JointDrag d = jointDrag;
+        if (d == null) {
+            return -1;
+        }
+        int id = moduleAt(e.x, e.y);
+        if (id >= 0 && (e.stateMask & SWT.MOD1) != 0) {
+            d.picked(id);
+            return -1;
+        }
+        return id >= 0 && d.canTurn(id) ? id : -1;
     }
 
     /** Which modules to highlight (those driven by the current behavior). */
@@ -145,7 +210,10 @@ public final class View3D {
         int dy = e.y - drag.y;
         drag = new Point(e.x, e.y);
         Rectangle r = canvas.getClientArea();
-        if (dragButton == 1) {
+        JointDrag d = jointDrag;
+        if (turning >= 0 && d != null) {
+            d.turn(turning, -dy * DEGREES_PER_PIXEL);
+        } else if (dragButton == 1) {
             camera.rotate(-dx * 0.01, dy * 0.01);
         } else {
             camera.pan(dx / (double) Math.max(1, r.height), dy / (double) Math.max(1, r.height));
@@ -184,6 +252,36 @@ public final class View3D {
         gc.setForeground(renderer.color(0x2A3648));
         String text = snap == null ? "No robot yet: open a script and press Run" : overlay.get();
         gc.drawText(text, 8, 6, true);
+    }
+
+    /**
+     * Points the camera from close by at modules {@code ids} of the last picture (the group being
+     * posed) and stops tracking the robot, so that it stays there; false if none is drawn.
+     */
+    public boolean focus(Set<Integer> ids) {
+        SimSnapshot snap = last;
+        double minX = 1e9, minY = 1e9, maxX = -1e9, maxY = -1e9, maxZ = 0;
+        boolean any = false;
+        for (SimBody b : snap == null ? java.util.List.<SimBody>of() : snap.bodies()) {
+            if (ids.contains(b.moduleId())) {
+                Vec3 p = b.position();
+                minX = Math.min(minX, p.x());
+                maxX = Math.max(maxX, p.x());
+                minY = Math.min(minY, p.y());
+                maxY = Math.max(maxY, p.y());
+                maxZ = Math.max(maxZ, p.z());
+                any = true;
+            }
+        }
+        if (!any) {
+            return false;
+        }
+        track = false;
+        framedFor = snap;
+        camera.lookAt((minX + maxX) / 2, (minY + maxY) / 2, maxZ / 2);
+        camera.setDistance(Math.max(0.15, Math.max(maxX - minX, maxY - minY)) * 2 + 0.3);
+        canvas.redraw();
+        return true;
     }
 
     /** Points the camera at the robot from a distance that shows all of it. */

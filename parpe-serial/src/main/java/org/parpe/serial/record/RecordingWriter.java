@@ -35,6 +35,18 @@ public final class RecordingWriter {
 
     /** The PARSL text of a recording with at least one pose; {@code origin} goes into a comment. */
     public static String toParsl(PoseRecording r, String origin) {
+        return toParsl(r, origin, 1, false);
+    }
+
+    /**
+     * The PARSL text of a recording played {@code rate} times as fast as recorded (the instance's
+     * {@code period} is the recorded cycle divided by {@code rate}; none is written at rate 1),
+     * once or, when {@code loop}, until stopped (no {@code cycles}). The IDE's pose playback runs it.
+     */
+    public static String toParsl(PoseRecording r, String origin, double rate, boolean loop) {
+        if (!(rate > 0) || Double.isInfinite(rate)) {
+            throw new IllegalArgumentException("rate must be a number > 0, got " + rate);
+        }
         if (r.size() == 0) {
             throw new IllegalArgumentException("a recording needs at least one pose");
         }
@@ -55,17 +67,23 @@ public final class RecordingWriter {
             }
             rows.append('\n');
         }
+        double cycle = 0;
+        for (double ti : t) {
+            cycle += ti;
+        }
+        String play = (rate == 1 ? "" : String.format(Locale.ROOT, " period=\"%.4f\"", cycle / rate))
+                + (loop ? "" : " cycles=\"1\"");
         return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
                 + "<!-- Pose recording (PARSL.md section 12): " + r.size() + " poses of group " + g + " (modules "
                 + ids + ")" + comment(origin) + ".\n"
                 + "     rec_" + g + " holds one row per pose; row times are the intervals between captures.\n"
-                + "     play_" + g + " plays it once; include this file to play rec_" + g
+                + "     play_" + g + " plays it " + (loop ? "over and over" : "once") + "; include this file to play rec_" + g
                 + " on other groups. -->\n"
                 + "<program>\n"
                 + "  <robot>\n    <structure>\n      <" + g + " elements=\"" + ids + "\"/>\n    </structure>\n  </robot>\n"
                 + "  <automata>\n    <rec_" + g + " times=\"" + times + "\">\n" + rows + "    </rec_" + g + ">\n"
                 + "  </automata>\n"
-                + "  <behaviors>\n    <play_" + g + ">\n      <rec_" + g + " group=\"" + g + "\" cycles=\"1\"/>\n"
+                + "  <behaviors>\n    <play_" + g + ">\n      <rec_" + g + " group=\"" + g + "\"" + play + "/>\n"
                 + "    </play_" + g + ">\n  </behaviors>\n"
                 + "  <main>\n    <play_" + g + "/>\n  </main>\n"
                 + "</program>\n";

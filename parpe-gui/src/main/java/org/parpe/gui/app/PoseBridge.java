@@ -1,0 +1,104 @@
+package org.parpe.gui.app;
+
+import java.nio.file.Path;
+import java.util.Map;
+import java.util.function.Consumer;
+import org.eclipse.jface.text.IDocument;
+import org.eclipse.swt.widgets.Shell;
+import org.parpe.core.diag.DiagnosticList;
+import org.parpe.core.load.LoadResult;
+import org.parpe.core.model.Program;
+import org.parpe.core.run.RunOutcome;
+import org.parpe.gui.editor.Validator;
+import org.parpe.gui.pose.PoseHardware;
+import org.parpe.gui.pose.PoseHost;
+import org.parpe.gui.run.Target;
+import org.parpe.gui.view3d.View3D;
+import org.parpe.serial.servo.profile.HardwareProfile;
+import org.parpe.serial.servo.profile.ProfileReader;
+import org.parpe.sim.SimTarget;
+
+/** The IDE window as the Pose panel sees it. UI thread only. */
+final class PoseBridge implements PoseHost {
+    private final IdeWindow ide;
+
+    PoseBridge(IdeWindow ide) {
+        this.ide = ide;
+    }
+
+    @Override
+    public Shell shell() {
+        return ide.shell();
+    }
+
+    @Override
+    public Program program() {
+        return ide.program();
+    }
+
+    @Override
+    public String robotSpec(Program program) {
+        String choice = ide.robotChoice();
+        return SimTarget.AUTO.equals(choice) ? SimTarget.autoSpec(program) : choice;
+    }
+
+    @Override
+    public View3D view() {
+        return ide.view();
+    }
+
+    @Override
+    public IDocument document() {
+        return ide.editor().document();
+    }
+
+    @Override
+    public Path scriptPath() {
+        return ide.files().pathForLoading();
+    }
+
+    @Override
+    public LoadResult load(Path path, String text) {
+        return Validator.load(path, text, Map.of());
+    }
+
+    @Override
+    public boolean running() {
+        return ide.runs().running();
+    }
+
+    @Override
+    public void play(Program program, Target target, String spec, Consumer<RunOutcome> onEnd) {
+        ide.runs().play(program, target, spec, onEnd);
+    }
+
+    @Override
+    public void stop() {
+        ide.runs().stop();
+    }
+
+    @Override
+    public void status(String message) {
+        ide.status().setMessage(message);
+    }
+
+    @Override
+    public PoseHardware hardware() {
+        HardwareDialog d = ide.hardwareDialog();
+        if (d == null || d.shell().isDisposed() || d.servos().isEmpty()) {
+            return null;
+        }
+        HardwareProfile profile = null;
+        String file = ide.toolbar().hardwareProfile();
+        if (file != null) {
+            DiagnosticList problems = new DiagnosticList();
+            profile = ProfileReader.read(Path.of(file), problems);
+            if (profile == null) {
+                ide.status().setMessage("The hardware profile " + file + " has errors: "
+                        + (problems.all().isEmpty() ? "" : problems.all().get(0).format()));
+                return null;
+            }
+        }
+        return new DialogHardware(d, profile);
+    }
+}

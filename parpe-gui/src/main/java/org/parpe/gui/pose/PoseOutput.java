@@ -1,0 +1,226 @@
+package org.parpe.gui.pose;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.function.Consumer;
+import org.eclipse.jface.text.BadLocationException;
+import org.eclipse.jface.text.IDocument;
+import org.eclipse.jface.window.Window;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.layout.GridData;
+import org.eclipse.swt.layout.GridLayout;
+import org.eclipse.swt.widgets.Button;
+import org.eclipse.swt.widgets.Combo;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.FileDialog;
+import org.eclipse.swt.widgets.Label;
+import org.parpe.core.diag.Diagnostic;
+import org.parpe.core.load.LoadResult;
+import org.parpe.core.model.Program;
+import org.parpe.core.run.RunOutcome;
+import org.parpe.gui.run.Target;
+import org.parpe.serial.record.RecordingWriter;
+
+/**
+ * What the Pose panel does with its list: play it (×0.5…×4, once or looped, on the simulator,
+ * the robot or both) by running its §12 recording through the IDE's run pipeline, so it moves
+ * exactly as PARSL runs it; save it as a §12 recording; and "Use on another group", which writes
+ * it into the open script for other groups (one undoable edit). UI thread only.
+ */
+final class PoseOutput {
+    /** Playback rates offered. */
+    static final double[] RATES = {0.5, 1, 2, 4};
+
+    private final PoseHost host;
+    private final PosePanel panel;
+    private final Combo rate;
+    private final Button loop;
+    private final Combo target;
+
+    PoseOutput(Composite parent, PoseHost host, PosePanel panel) {
+        this.host = host;
+        this.panel = panel;
+        Composite row = new Composite(parent, SWT.NONE);
+        row.setLayout(new GridLayout(7, false));
+        row.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        new Label(row, SWT.NONE).setText("Play at");
+        rate = new Combo(row, SWT.READ_ONLY);
+        for (double r : RATES) {
+            rate.add("\u00d7" + (r == Math.rint(r) ? Integer.toString((int) r) : Double.toString(r)));
+        }
+        rate.select(1);
+        rate.setToolTipText("How fast to play the poses compared with their recorded times");
+        loop = new Button(row, SWT.CHECK);
+        loop.setText("Loop");
+        loop.setToolTipText("Play the poses over and over until Stop; otherwise once");
+        new Label(row, SWT.NONE).setText("on");
+        target = new Combo(row, SWT.READ_ONLY);
+        for (Target t : Target.values()) {
+            target.add(t.label());
+        }
+        target.select(0);
+        button(row, "Play", "Play the poses as PARSL runs them (interpolated in joint space)", this::play);
+        button(row, "Stop", "Stop the playback", host::stop);
+        row = new Composite(parent, SWT.NONE);
+        row.setLayout(new GridLayout(2, false));
+        button(row, "Save recording\u2026", "Save the poses as a PARSL recording (a gait table and a behavior that plays it)",
+                this::saveAs);
+        button(row, "Use on another group\u2026",
+                "Write the poses into this script for other groups, with a period, phase and offset", this::useOnGroups);
+    }
+
+    private static void button(Composite parent, String text, String tip, Runnable action) {
+        Button b = new Button(parent, SWT.PUSH);
+        b.setText(text);
+        b.setToolTipText(tip);
+        b.addListener(SWT.Selection, e -> action.run());
+    }
+
+    /** Chooses the rate, loop and target of the next playback (as a user would in the row's widgets). */
+    void choose(double playRate, boolean looped, Target on) {
+        for (int i = 0; i < RATES.length; i++) {
+            if (RATES[i] == playRate) {
+                rate.select(i);
+            }
+        }
+        loop.setSelection(looped);
+        target.select(on.ordinal());
+    }
+
+    /** The poses, or null with a message when there are none. */
+    private PoseList poses() {
+        PoseList l = panel.poses();
+        if (l == null || l.size() == 0) {
+            host.status("Capture at least one pose first.");
+            return null;
+        }
+        return l;
+    }
+
+    /** Plays the poses; {@code onEnd} (may be null) gets the outcome. Returns false if it did not start. */
+    boolean play(Consumer<RunOutcome> onEnd) {
+        PoseList l = poses();
+        Program open = panel.program();
+        if (l == null || open == null) {
+            return false;
+        }
+        if (host.running()) {
+            host.status("A run is going on: stop it first.");
+            return false;
+        }
+        double r = RATES[Math.max(0, rate.getSelectionIndex())];
+        String text = RecordingWriter.toParsl(l.toRecording(), "playback in the Pose panel", r, loop.getSelection());
+        LoadResult loaded = host.load(host.scriptPath().resolveSibling("pose-playback.xml"), text);
+        if (loaded.program() == null) {
+            host.status("Cannot play the poses: " + loaded.errors().stream().map(Diagnostic::message).findFirst().orElse("?"));
+            return false;
+        }
+        Target t = Target.values()[Math.max(0, target.getSelectionIndex())];
+        host.play(loaded.program(), t, host.robotSpec(open), outcome -> {
+            host.status("Playback " + (outcome.status() == RunOutcome.Status.ERROR ? "failed: " + outcome.message()
+                    : "ended at t = " + String.format(java.util.Locale.ROOT, "%.2f s", outcome.time())));
+            if (onEnd != null) {
+                onEnd.accept(outcome);
+            }
+        });
+        return true;
+    }
+
+    private void play() {
+        play(null);
+    }
+
+    private void saveAs() {
+        if (poses() == null) {
+            return;
+        }
+        FileDialog d = new FileDialog(host.shell(), SWT.SAVE);
+        d.setText("Save the poses as a PARSL recording");
+        d.setFilterExtensions(new String[] {"*.xml", "*"});
+        d.setFileName(panel.poses().group() + "-poses.xml");
+        d.setOverwrite(true);
+        Path dir = host.scriptPath().toAbsolutePath().getParent();
+        if (dir != null) {
+            d.setFilterPath(dir.toString());
+        }
+        String chosen = d.open();
+        if (chosen != null) {
+            save(Path.of(chosen));
+        }
+    }
+
+    /** Writes the poses as a §12 recording to {@code file}, replacing it atomically; false (and a message) on failure. */
+    boolean save(Path file) {
+        PoseList l = poses();
+        if (l == null) {
+            return false;
+        }
+        String origin = "recorded in the PARPE IDE's Pose panel from " + host.scriptPath().getFileName();
+        String text = RecordingWriter.toParsl(l.toRecording(), origin);
+        try {
+            Path abs = file.toAbsolutePath();
+            Path tmp = Files.createTempFile(abs.getParent(), ".parpe-", ".xml");
+            try {
+                Files.writeString(tmp, text);
+                Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+            } finally {
+                Files.deleteIfExists(tmp);
+            }
+        } catch (IOException | RuntimeException e) {
+            host.status("Cannot save " + file + ": " + e.getMessage());
+            return false;
+        }
+        host.status("Saved " + l.size() + " poses of group " + l.group() + " to " + file + ".");
+        return true;
+    }
+
+    private void useOnGroups() {
+        PoseList l = poses();
+        Program open = panel.program();
+        if (l == null || open == null) {
+            return;
+        }
+        UseOnGroupDialog d = new UseOnGroupDialog(host.shell(), open, l);
+        if (d.open() == Window.OK) {
+            useOnGroups(d.request());
+        }
+    }
+
+    /**
+     * Writes the poses into the open script for {@code request}'s groups as one edit of the
+     * editor's document (one Undo reverts it); returns what was written, or null (and a message).
+     */
+    ScriptInsert.Result useOnGroups(ScriptInsert.Request request) {
+        Program open = panel.program();
+        String problem = open == null ? "The script has not loaded yet." : ScriptInsert.check(open, request);
+        if (problem != null) {
+            host.status(problem);
+            return null;
+        }
+        IDocument doc = host.document();
+        String before = doc.get();
+        ScriptInsert.Result r = ScriptInsert.insert(before, open, request);
+        String after = r.text();
+        int start = 0;
+        while (start < before.length() && start < after.length() && before.charAt(start) == after.charAt(start)) {
+            start++;
+        }
+        int endBefore = before.length();
+        int endAfter = after.length();
+        while (endBefore > start && endAfter > start && before.charAt(endBefore - 1) == after.charAt(endAfter - 1)) {
+            endBefore--;
+            endAfter--;
+        }
+        try {
+            doc.replace(start, endBefore - start, after.substring(start, endAfter));
+        } catch (BadLocationException e) {
+            host.status("Cannot change the script: " + e.getMessage());
+            return null;
+        }
+        host.status("Added automaton " + r.automaton() + " and behavior " + r.behavior() + " playing it on "
+                + String.join(", ", request.targets()) + (r.mainAdded() ? ", run by <main>." : "; add it to <main> to run it."));
+        return r;
+    }
+}

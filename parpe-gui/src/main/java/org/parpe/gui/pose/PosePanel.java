@@ -1,0 +1,416 @@
+package org.parpe.gui.pose;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+import java.util.TreeSet;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.custom.SashForm;
+import org.eclipse.swt.layout.GridData;
+import org.eclipse.swt.layout.GridLayout;
+import org.eclipse.swt.widgets.Button;
+import org.eclipse.swt.widgets.Combo;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Control;
+import org.eclipse.swt.widgets.Label;
+import org.parpe.core.model.Group;
+import org.parpe.core.model.Program;
+
+/**
+ * The Pose panel (posable programming, the paper's Level I): choose a group, or Ctrl+click
+ * modules in the 3D view; pose it in the simulator (sliders, or drag a module in the 3D view to
+ * turn its joint; the simulated robot follows live, and the real one too if asked) or by hand on
+ * the robot (its servos limp); Capture (or Space) adds the pose to the list. The list, playback,
+ * saving and "use on another group" are in {@link PoseTable} and {@link PoseOutput}. One list of
+ * poses is kept per group, so choosing another group loses nothing. UI thread only; the posed
+ * robot's physics runs on {@link PoseSim}'s thread.
+ */
+public final class PosePanel {
+    /** The group made of the modules picked in the 3D view. */
+    static final String PICKED = "picked";
+    private static final int POLL_MS = 250;
+
+    private final PoseHost host;
+    private final Composite box;
+    private final Combo groups;
+    private final Combo source;
+    private final Button follow;
+    private final Button timed;
+    private final PoseTable table;
+    private final JointSliders sliders;
+    private final PoseOutput output;
+    private final PoseSim sim;
+    private final Map<String, PoseList> lists = new HashMap<>();
+    private final Set<Integer> picked = new TreeSet<>();
+    private Program program;
+    private PoseList current;
+    private long lastCapture;
+    private volatile boolean shown;
+
+    /** Creates the panel in {@code parent} and hooks it to the 3D view of {@code host}. */
+    public PosePanel(Composite parent, PoseHost host) {
+        this.host = host;
+        box = new Composite(parent, SWT.NONE);
+        box.setLayout(new GridLayout(1, false));
+        Composite top = new Composite(box, SWT.NONE);
+        top.setLayout(new GridLayout(6, false));
+        top.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        new Label(top, SWT.NONE).setText("Group:");
+        groups = new Combo(top, SWT.READ_ONLY);
+        groups.setToolTipText("The group to pose; or Ctrl+click modules in the 3D view to pose just those");
+        groups.setLayoutData(new GridData(110, SWT.DEFAULT));
+        groups.addListener(SWT.Selection, e -> chooseGroup(groups.getText()));
+        new Label(top, SWT.NONE).setText(" with");
+        source = new Combo(top, SWT.READ_ONLY);
+        source.setItems("Simulator", "Robot (limp)");
+        source.setToolTipText("Simulator: pose with the sliders or drag a module in the 3D view. "
+                + "Robot (limp): its servos go limp, move it by hand (connect it in Run > Hardware… first)");
+        source.select(0);
+        source.addListener(SWT.Selection, e -> sourceChanged());
+        Button capture = new Button(top, SWT.PUSH);
+        capture.setText("&Capture");
+        capture.setToolTipText("Add the current pose to the list (or press Space while the panel is shown)");
+        capture.addListener(SWT.Selection, e -> capture());
+        Button fromScript = new Button(top, SWT.PUSH);
+        fromScript.setText("From script");
+        fromScript.setToolTipText("Add the poses of the gait table the script plays on this group (a saved recording) to the list");
+        fromScript.addListener(SWT.Selection, e -> loadFromScript());
+
+        SashForm middle = new SashForm(box, SWT.HORIZONTAL);
+        middle.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
+        table = new PoseTable(middle, new TableOwner());
+        Composite right = new Composite(middle, SWT.NONE);
+        GridLayout rl = new GridLayout(2, false);
+        rl.marginWidth = 0;
+        rl.marginHeight = 0;
+        right.setLayout(rl);
+        sliders = new JointSliders(right, this::jointChanged);
+        sliders.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true, 2, 1));
+        follow = new Button(right, SWT.CHECK);
+        follow.setText("Real robot follows");
+        follow.setToolTipText("Sync mode: the robot connected in Run > Hardware… moves with the sliders");
+        timed = new Button(right, SWT.CHECK);
+        timed.setText("Real time");
+        timed.setToolTipText("Each new pose gets the time since the previous capture instead of the time typed under the list");
+        middle.setWeights(55, 45);
+        output = new PoseOutput(box, host, this);
+        sim = new PoseSim(msg -> runOnUi(() -> say(msg)));
+        PoseInput.attach(this, host);
+        box.addListener(SWT.Dispose, e -> sim.close());
+        poll();
+    }
+
+    /** The panel's control (a tab's content). */
+    public Control control() {
+        return box;
+    }
+
+    static Set<Integer> ids(int[] modules) {
+        Set<Integer> s = new TreeSet<>();
+        for (int id : modules) {
+            s.add(id);
+        }
+        return s;
+    }
+
+    /** Whether the panel is posing: shown, and no run has the 3D view. */
+    boolean posing() {
+        return shown && !host.running();
+    }
+
+    /** Follows the open script and keeps the posed robot stepping while the panel is shown. */
+    private void poll() {
+        if (box.isDisposed()) {
+            return;
+        }
+        pollNow();
+        if (posing() && sim.ready() && current != null) {
+            int[] m = current.modules();
+            double[] a = sliders.angles();
+            for (int k = 0; k < m.length; k++) {
+                sim.set(m[k], a[k]);
+            }
+        }
+        box.getDisplay().timerExec(POLL_MS, this::poll);
+    }
+
+    private void programChanged(Program p) {
+        program = p;
+        sim.build(host.robotSpec(p), p.moduleIds());
+        List<String> names = new ArrayList<>();
+        for (Group g : p.robot().groups()) {
+            names.add(g.name());
+        }
+        names.add(PICKED);
+        String was = groups.getText();
+        groups.setItems(names.toArray(new String[0]));
+        int at = names.indexOf(was);
+        if (at < 0) {
+            at = defaultGroup(p);
+        }
+        groups.select(at);
+        chooseGroup(groups.getText());
+    }
+
+    /** The smallest group that is not the whole robot (a leg rather than everything), else the first. */
+    private static int defaultGroup(Program p) {
+        List<Group> gs = p.robot().groups();
+        int best = 0;
+        for (int i = 0; i < gs.size(); i++) {
+            if (gs.get(i).size() < gs.get(best).size() && gs.get(i).size() > 1) {
+                best = i;
+            }
+        }
+        return best;
+    }
+
+    /** Poses {@code name} (a group of the script, or {@link #PICKED}), with its own list of poses. */
+    void chooseGroup(String name) {
+        int[] modules;
+        if (PICKED.equals(name)) {
+            modules = picked.stream().mapToInt(Integer::intValue).toArray();
+        } else {
+            Group g = program == null ? null : program.group(name).orElse(null);
+            if (g == null) {
+                return;
+            }
+            modules = g.modules().stream().mapToInt(Integer::intValue).toArray();
+        }
+        String key = name + Arrays.toString(modules);
+        if (current != null && current == lists.get(key)) {
+            return; // the script was validated again and this group did not change
+        }
+        if (groups.indexOf(name) >= 0 && groups.getSelectionIndex() != groups.indexOf(name)) {
+            groups.select(groups.indexOf(name));
+        }
+        if (modules.length == 0) {
+            current = null;
+            table.show(null);
+            sliders.show(new int[0], new double[0]);
+            say("Ctrl+click modules in the 3D view to pose them.");
+            return;
+        }
+        current = lists.computeIfAbsent(key, k -> new PoseList(name, modules));
+        double[] start = new double[modules.length];
+        for (int k = 0; k < modules.length; k++) {
+            start[k] = sim.target(modules[k]);
+        }
+        sliders.show(modules, start);
+        table.show(current);
+        if (source.getSelectionIndex() == 1) {
+            limp(true);
+        }
+    }
+
+    /** Ctrl+click in the 3D view: adds module {@code id} to (or removes it from) the picked modules. */
+    void pick(int id) {
+        if (!picked.remove(id)) {
+            picked.add(id);
+        }
+        groups.select(groups.indexOf(PICKED));
+        chooseGroup(PICKED);
+        say("Picked modules " + picked + ".");
+    }
+
+    private void jointChanged(int module, double degrees) {
+        sim.set(module, degrees);
+        if (follow.getSelection() && source.getSelectionIndex() == 0) {
+            PoseHardware hw = host.hardware();
+            if (hw != null) {
+                hw.move(module, degrees);
+            }
+        }
+    }
+
+    private void sourceChanged() {
+        if (source.getSelectionIndex() == 1 && host.hardware() == null) {
+            say("Connect the robot in Run > Hardware\u2026 first (keep that window open while posing).");
+            source.select(0);
+            return;
+        }
+        limp(source.getSelectionIndex() == 1);
+    }
+
+    private void limp(boolean on) {
+        PoseHardware hw = host.hardware();
+        if (hw != null && current != null) {
+            hw.limp(current.modules(), on);
+            say(on ? "The group is limp: move the robot by hand, then Capture (or Space)." : "The robot holds its pose.");
+        }
+    }
+
+    /** Adds the current pose (sliders, or the robot's angles when posing by hand) to the list; false if none. */
+    boolean capture() {
+        if (current == null) {
+            say("Choose a group to pose first.");
+            return false;
+        }
+        double[] angles = sliders.angles();
+        if (source.getSelectionIndex() == 1) {
+            PoseHardware hw = host.hardware();
+            if (hw == null) {
+                say("The robot is no longer connected (Run > Hardware\u2026).");
+                return false;
+            }
+            try {
+                angles = hw.angles(current.modules());
+            } catch (IllegalStateException e) {
+                say("Cannot capture: " + e.getMessage());
+                return false;
+            }
+            for (int k = 0; k < angles.length; k++) {
+                angles[k] = Math.max(-90, Math.min(90, angles[k]));
+            }
+            sliders.setAll(angles);
+        }
+        long now = System.nanoTime();
+        if (timed.getSelection() && lastCapture != 0 && current.size() > 0) {
+            double s = (now - lastCapture) / 1e9;
+            table.setInterval(Math.max(PoseList.MIN_INTERVAL, Math.min(PoseList.MAX_INTERVAL, s)));
+        }
+        Double interval = table.interval();
+        if (interval == null) {
+            return false;
+        }
+        lastCapture = now;
+        int i = current.add(angles, interval);
+        table.select(i);
+        say("Pose " + (i + 1) + " captured.");
+        return true;
+    }
+
+    /**
+     * Adds the poses of the first gait table of plain numbers that the script plays on the group
+     * (else on any group, which is then chosen) to the end of its list; false (and a message) if none.
+     */
+    public boolean loadFromScript() {
+        if (program == null) {
+            say("The script has not loaded yet.");
+            return false;
+        }
+        Optional<PoseList> found = PoseImport.read(program, current == null ? null : current.group());
+        if (found.isEmpty()) {
+            found = PoseImport.read(program, null);
+        }
+        if (found.isEmpty()) {
+            say("The script plays no gait table of plain numbers on a group.");
+            return false;
+        }
+        PoseList in = found.get();
+        chooseGroup(in.group());
+        if (current == null) {
+            return false;
+        }
+        int first = current.size();
+        for (int i = 0; i < in.size(); i++) {
+            current.add(in.get(i).angles(), in.get(i).interval());
+        }
+        table.select(first);
+        say(in.size() + " poses of group " + in.group() + " taken from the script.");
+        return true;
+    }
+
+    void say(String text) {
+        host.status(text);
+    }
+
+    private void runOnUi(Runnable r) {
+        if (!box.isDisposed()) {
+            box.getDisplay().asyncExec(() -> {
+                if (!box.isDisposed()) {
+                    r.run();
+                }
+            });
+        }
+    }
+
+    /** Whether the posed robot is built and shown (the 3D view follows the sliders). */
+    public boolean posingReady() {
+        return posing() && sim.ready();
+    }
+
+    /** The modules being posed (none before a group is chosen). */
+    public Set<Integer> posedModules() {
+        return current == null ? Set.of() : ids(current.modules());
+    }
+
+    /** The poses of the group being posed, or null. */
+    PoseList poses() {
+        return current;
+    }
+
+    /** The open script's program as the panel last saw it, or null. */
+    Program program() {
+        return program;
+    }
+
+    /** The push button or check box labelled {@code text} (mnemonics ignored), or null (tests press them). */
+    Button button(String text) {
+        return PoseTable.find(box, text);
+    }
+
+    /** Whether the joints are posed with the sliders and the 3D view (not by hand on the robot). */
+    boolean posingInSimulator() {
+        return source.getSelectionIndex() == 0;
+    }
+
+    /** Simulator or robot (tests choose as a user would). */
+    Combo source() {
+        return source;
+    }
+
+    JointSliders sliders() {
+        return sliders;
+    }
+
+    PoseTable table() {
+        return table;
+    }
+
+    PoseOutput output() {
+        return output;
+    }
+
+    PoseSim sim() {
+        return sim;
+    }
+
+    /** Shows the panel's own state at once instead of at the next poll (tests, automation). */
+    public void pollNow() {
+        shown = box.isVisible();
+        Program p = host.program();
+        if (p != null && p != program) {
+            programChanged(p);
+        }
+        sim.setActive(posing());
+    }
+
+    private final class TableOwner implements PoseTable.Owner {
+        @Override
+        public double[] sliders() {
+            return sliders.angles();
+        }
+
+        @Override
+        public void mirror(int i) {
+            int[] swap = MirrorMap.swap(program, current.modules());
+            current.mirror(i, swap, MirrorMap.unpaired(swap));
+            table.refresh();
+            sliders.setAll(current.get(i).angles());
+        }
+
+        @Override
+        public void selected(PoseList.Pose pose) {
+            sliders.setAll(pose.angles());
+        }
+
+        @Override
+        public void say(String text) {
+            PosePanel.this.say(text);
+        }
+    }
+}

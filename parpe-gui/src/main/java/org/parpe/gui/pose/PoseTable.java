@@ -1,0 +1,219 @@
+package org.parpe.gui.pose;
+
+import java.util.Locale;
+import java.util.function.IntConsumer;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.layout.GridData;
+import org.eclipse.swt.layout.GridLayout;
+import org.eclipse.swt.widgets.Button;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Control;
+import org.eclipse.swt.widgets.Label;
+import org.eclipse.swt.widgets.Table;
+import org.eclipse.swt.widgets.TableColumn;
+import org.eclipse.swt.widgets.TableItem;
+import org.eclipse.swt.widgets.Text;
+
+/**
+ * The list of poses with the time since the previous one, and the buttons that edit it: move up
+ * or down, duplicate, mirror, delete, retime and update a pose from the sliders. Selecting a pose
+ * shows it on the sliders. UI thread only.
+ */
+final class PoseTable {
+    /** What the table asks of the panel. */
+    interface Owner {
+        /** The current angles of the sliders, group order. */
+        double[] sliders();
+
+        /** Mirrors pose {@code i} (the panel knows the robot's left and right groups). */
+        void mirror(int i);
+
+        /** A pose was selected: show it. */
+        void selected(PoseList.Pose pose);
+
+        /** A message for the status bar. */
+        void say(String text);
+    }
+
+    private final Composite box;
+    private final Table table;
+    private final Text time;
+    private final Owner owner;
+    private PoseList list;
+
+    PoseTable(Composite parent, Owner owner) {
+        this.owner = owner;
+        box = new Composite(parent, SWT.NONE);
+        GridLayout gl = new GridLayout(1, false);
+        gl.marginWidth = 0;
+        gl.marginHeight = 0;
+        box.setLayout(gl);
+        table = new Table(box, SWT.BORDER | SWT.SINGLE | SWT.FULL_SELECTION);
+        table.setHeaderVisible(true);
+        table.setLinesVisible(true);
+        table.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
+        column("#", 34);
+        column("after (s)", 70);
+        column("joint angles (\u00b0)", 220);
+        table.addListener(SWT.Selection, e -> rowSelected());
+        Composite buttons = new Composite(box, SWT.NONE);
+        buttons.setLayout(new GridLayout(6, false));
+        buttons.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        button(buttons, "Up", "Move the selected pose earlier", i -> select(list.move(i, -1)));
+        button(buttons, "Down", "Move the selected pose later", i -> select(list.move(i, 1)));
+        button(buttons, "Duplicate", "Insert a copy of the selected pose after it", i -> select(list.duplicate(i)));
+        button(buttons, "Mirror", "Swap the angles of the left and right modules of the selected pose "
+                + "(a group with no left/right partners turns the other way)", owner::mirror);
+        button(buttons, "Update", "Replace the selected pose's angles with the sliders'", i -> list.set(i, owner.sliders()));
+        button(buttons, "Delete", "Delete the selected pose", i -> {
+            list.remove(i);
+            select(Math.min(i, list.size() - 1));
+        });
+        Composite timing = new Composite(box, SWT.NONE);
+        timing.setLayout(new GridLayout(4, false));
+        new Label(timing, SWT.NONE).setText("Time:");
+        time = new Text(timing, SWT.BORDER);
+        time.setText("1.00");
+        time.setToolTipText("Seconds from the previous pose to this one (" + PoseList.MIN_INTERVAL + " to "
+                + (int) PoseList.MAX_INTERVAL + "); new poses get this time too. Enter sets it for the selected pose.");
+        time.setLayoutData(new GridData(50, SWT.DEFAULT));
+        time.addListener(SWT.DefaultSelection, e -> retime());
+        new Label(timing, SWT.NONE).setText("s");
+        button(timing, "Set time", "Set the time of the selected pose", i -> retime());
+    }
+
+    private void rowSelected() {
+        int i = table.getSelectionIndex();
+        if (list != null && i >= 0 && i < list.size()) {
+            time.setText(seconds(list.get(i).interval()));
+            owner.selected(list.get(i));
+        }
+    }
+
+    private void column(String title, int width) {
+        TableColumn c = new TableColumn(table, SWT.LEFT);
+        c.setText(title);
+        c.setWidth(width);
+    }
+
+    private void button(Composite parent, String text, String tip, IntConsumer onSelected) {
+        Button b = new Button(parent, SWT.PUSH);
+        b.setText(text);
+        b.setToolTipText(tip);
+        b.addListener(SWT.Selection, e -> {
+            int i = table.getSelectionIndex();
+            if (list == null || i < 0 || i >= list.size()) {
+                owner.say("Select a pose in the list first.");
+                return;
+            }
+            onSelected.accept(i);
+            refresh();
+        });
+    }
+
+    Control control() {
+        return box;
+    }
+
+    /** Shows {@code poses} (null: none). */
+    void show(PoseList poses) {
+        list = poses;
+        refresh();
+    }
+
+    /** Redraws the rows from the list, keeping the selection. */
+    void refresh() {
+        int sel = table.getSelectionIndex();
+        table.removeAll();
+        if (list == null) {
+            return;
+        }
+        for (int i = 0; i < list.size(); i++) {
+            PoseList.Pose p = list.get(i);
+            TableItem it = new TableItem(table, SWT.NONE);
+            StringBuilder a = new StringBuilder();
+            for (double v : p.angles()) {
+                a.append(a.length() == 0 ? "" : ", ").append(String.format(Locale.ROOT, "%.1f", v));
+            }
+            it.setText(new String[] {Integer.toString(i + 1), seconds(p.interval()), a.toString()});
+        }
+        if (sel >= 0 && sel < list.size()) {
+            table.setSelection(sel);
+        }
+    }
+
+    /** Selects pose {@code i} (−1: none) as a click would. */
+    void select(int i) {
+        refresh();
+        if (i < 0 || list == null || i >= list.size()) {
+            table.deselectAll();
+            return;
+        }
+        table.setSelection(i);
+        table.showSelection();
+        table.notifyListeners(SWT.Selection, new org.eclipse.swt.widgets.Event());
+    }
+
+    /** The selected pose's index, or −1. */
+    int selection() {
+        return table.getSelectionIndex();
+    }
+
+    /** The time typed for new poses, s; null (and a message) when it is not a number in range. */
+    Double interval() {
+        Double v = PoseList.parseInterval(time.getText());
+        if (v == null) {
+            owner.say("The time must be a number of seconds from " + PoseList.MIN_INTERVAL + " to "
+                    + (int) PoseList.MAX_INTERVAL + ", got '" + time.getText().trim() + "'.");
+        }
+        return v;
+    }
+
+    /** Shows {@code seconds} in the time box (the real time since the last capture). */
+    void setInterval(double seconds) {
+        time.setText(seconds(seconds));
+    }
+
+    private void retime() {
+        int i = table.getSelectionIndex();
+        Double v = interval();
+        if (list == null || i < 0 || v == null) {
+            if (v != null) {
+                owner.say("Select a pose in the list first.");
+            }
+            return;
+        }
+        list.retime(i, v);
+        refresh();
+    }
+
+    /** The table (tests click it and read it). */
+    Table table() {
+        return table;
+    }
+
+    /** The button labelled {@code text} (mnemonics ignored) anywhere in {@code parent}, or null (tests press it). */
+    static Button find(Composite parent, String text) {
+        for (Control c : parent.getChildren()) {
+            if (c instanceof Button b && b.getText().replace("&", "").equals(text)) {
+                return b;
+            }
+            if (c instanceof Composite child) {
+                Button b = find(child, text);
+                if (b != null) {
+                    return b;
+                }
+            }
+        }
+        return null;
+    }
+
+    /** The time box (tests type in it). */
+    Text timeBox() {
+        return time;
+    }
+
+    static String seconds(double s) {
+        return String.format(Locale.ROOT, "%.2f", s);
+    }
+}

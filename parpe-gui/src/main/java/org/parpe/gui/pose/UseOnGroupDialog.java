@@ -1,0 +1,128 @@
+package org.parpe.gui.pose;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.eclipse.jface.dialogs.Dialog;
+import org.eclipse.jface.dialogs.IDialogConstants;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.layout.GridData;
+import org.eclipse.swt.layout.GridLayout;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Control;
+import org.eclipse.swt.widgets.Label;
+import org.eclipse.swt.widgets.Shell;
+import org.eclipse.swt.widgets.Text;
+import org.parpe.core.model.Group;
+import org.parpe.core.model.Numbers;
+import org.parpe.core.model.Program;
+import org.parpe.serial.record.PoseRecording;
+import org.parpe.serial.record.RecordingWriter;
+
+/**
+ * "Use on another group": the groups of the open script with as many modules as the poses
+ * (several may be chosen), the period, the phase between successive modules and the offset
+ * between successive chosen groups. OK is refused, with the reason shown, until the values can
+ * be written.
+ */
+final class UseOnGroupDialog extends Dialog {
+    private final Program program;
+    private final PoseRecording recording;
+    private final List<String> candidates = new ArrayList<>();
+    private org.eclipse.swt.widgets.List groups;
+    private Text period;
+    private Text phase;
+    private Text offset;
+    private Label problem;
+    private ScriptInsert.Request request;
+
+    UseOnGroupDialog(Shell parent, Program program, PoseList poses) {
+        super(parent);
+        this.program = program;
+        this.recording = poses.toRecording();
+        for (Group g : program.robot().groups()) {
+            if (g.size() == poses.modules().length && !g.implicit()) {
+                candidates.add(g.name());
+            }
+        }
+    }
+
+    @Override
+    protected void configureShell(Shell shell) {
+        super.configureShell(shell);
+        shell.setText("Use the poses on other groups");
+    }
+
+    @Override
+    protected Control createDialogArea(Composite parent) {
+        Composite area = (Composite) super.createDialogArea(parent);
+        area.setLayout(new GridLayout(2, false));
+        Label intro = new Label(area, SWT.WRAP);
+        intro.setText("Play the " + recording.size() + " poses of group " + recording.group() + " on these groups ("
+                + recording.modules().length + " modules each). Each chosen group lags the one before by the offset.");
+        GridData wide = new GridData(SWT.FILL, SWT.CENTER, true, false, 2, 1);
+        wide.widthHint = 420;
+        intro.setLayoutData(wide);
+        new Label(area, SWT.NONE).setText("Groups:");
+        groups = new org.eclipse.swt.widgets.List(area, SWT.MULTI | SWT.BORDER | SWT.V_SCROLL);
+        groups.setItems(candidates.toArray(new String[0]));
+        GridData gd = new GridData(SWT.FILL, SWT.FILL, true, true);
+        gd.heightHint = 110;
+        groups.setLayoutData(gd);
+        double cycle = 0;
+        for (double t : RecordingWriter.rowTimes(recording)) {
+            cycle += t;
+        }
+        period = field(area, "Period (s):", Numbers.format(Math.round(cycle * 100) / 100.0),
+                "Seconds per cycle through all the poses");
+        phase = field(area, "Phase (cycles):", "0", "Delay between successive modules of a group, in cycles");
+        offset = field(area, "Offset (cycles):", "0.5", "Delay of each chosen group after the one before, in cycles");
+        problem = new Label(area, SWT.WRAP);
+        problem.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false, 2, 1));
+        problem.setForeground(area.getDisplay().getSystemColor(SWT.COLOR_DARK_RED));
+        if (candidates.isEmpty()) {
+            problem.setText("The script has no other group of " + recording.modules().length + " modules.");
+        }
+        return area;
+    }
+
+    private static Text field(Composite area, String label, String value, String tip) {
+        new Label(area, SWT.NONE).setText(label);
+        Text t = new Text(area, SWT.BORDER);
+        t.setText(value);
+        t.setToolTipText(tip);
+        t.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        return t;
+    }
+
+    @Override
+    protected void okPressed() {
+        Double p = Numbers.parsePlain(period.getText().trim());
+        Double ph = Numbers.parsePlain(phase.getText().trim());
+        Double off = Numbers.parsePlain(offset.getText().trim());
+        if (p == null || ph == null || off == null) {
+            problem.setText("Period, phase and offset must be numbers, got '" + period.getText().trim() + "', '"
+                    + phase.getText().trim() + "', '" + offset.getText().trim() + "'.");
+            return;
+        }
+        ScriptInsert.Request r = new ScriptInsert.Request(recording, List.of(groups.getSelection()), p, ph, off);
+        String why = ScriptInsert.check(program, r);
+        if (why != null) {
+            problem.setText(why);
+            problem.getParent().layout(true);
+            return;
+        }
+        request = r;
+        super.okPressed();
+    }
+
+    @Override
+    protected void createButtonsForButtonBar(Composite parent) {
+        createButton(parent, IDialogConstants.OK_ID, "Write into script", true);
+        createButton(parent, IDialogConstants.CANCEL_ID, IDialogConstants.CANCEL_LABEL, false);
+    }
+
+    /** What to write, after OK. */
+    ScriptInsert.Request request() {
+        return request;
+    }
+}

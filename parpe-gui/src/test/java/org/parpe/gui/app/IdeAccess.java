@@ -1,0 +1,115 @@
+package org.parpe.gui.app;
+
+import java.nio.file.Path;
+import java.util.function.BooleanSupplier;
+import java.util.function.Consumer;
+import org.eclipse.swt.widgets.Shell;
+import org.parpe.core.run.RunOutcome;
+import org.parpe.gui.run.Target;
+
+/** {@link Gui}'s helpers and the window's package-private parts, for GUI tests of other packages. */
+public final class IdeAccess {
+    private IdeAccess() {
+    }
+
+    /** A new automated IDE window with its settings in {@code home}, after its first validation. */
+    public static IdeWindow openIde(Path home) {
+        return Gui.openIde(home);
+    }
+
+    /** Ends any run and closes the window. */
+    public static void closeIde(IdeWindow ide) {
+        Gui.closeIde(ide);
+    }
+
+    /** Opens {@code file} as File > Open does and waits until it is in the editor. */
+    public static void open(IdeWindow ide, Path file) {
+        Gui.open(ide, file);
+    }
+
+    /** Runs the event loop until {@code done} holds (bounded). */
+    public static void pump(BooleanSupplier done, String what) {
+        Gui.pump(done, what);
+    }
+
+    /** Lets layouts and paints finish. */
+    public static void settle() {
+        Gui.settle();
+    }
+
+    /** Saves a screenshot as evidence and checks it is not blank. */
+    public static void screenshot(Shell shell, String name) throws Exception {
+        Gui.screenshot(shell, name);
+    }
+
+    /** Whether a run is going on. */
+    public static boolean running(IdeWindow ide) {
+        return ide.runs().running();
+    }
+
+    /** Runs the editor's script on {@code target} for {@code seconds} of simulated time, as fast as possible. */
+    public static void run(IdeWindow ide, Target target, double seconds, Consumer<RunOutcome> onEnd) {
+        ide.toolbar().setTarget(target);
+        ide.toolbar().setSpeed(org.parpe.gui.run.Speed.MAX);
+        ide.runs().run(false, seconds, onEnd);
+    }
+
+    /** The status bar's message. */
+    public static String status(IdeWindow ide) {
+        return ide.status().message();
+    }
+
+    /**
+     * Opens Run > Hardware…, connects to {@code port} with {@code protocol} at {@code baud} as a
+     * user would, and waits until {@code servos} servos are listed.
+     */
+    public static void connectHardware(IdeWindow ide, String port, String protocol, int baud, int servos) {
+        HardwareDialog d = HardwareDialog.open(ide);
+        d.portBox().setText(port);
+        d.protocolBox().select(d.protocolBox().indexOf(protocol));
+        d.baudBox().setText(Integer.toString(baud));
+        // A scan on a busy machine may miss replies (20 ms read timeout): try a few times, as a user would.
+        for (int attempt = 0; attempt < 4 && d.servos().size() != servos; attempt++) {
+            for (org.eclipse.swt.widgets.Control c : allChildren(d.shell())) {
+                if (c instanceof org.eclipse.swt.widgets.Button b && b.getText().equals("Connect")) {
+                    b.notifyListeners(org.eclipse.swt.SWT.Selection, new org.eclipse.swt.widgets.Event());
+                }
+            }
+            long shortWait = System.currentTimeMillis() + 3000;
+            Gui.pump(() -> d.message().startsWith("Looking") || d.servos().size() == servos
+                    || System.currentTimeMillis() > shortWait, "the dialog to start looking");
+            Gui.pump(() -> !d.message().startsWith("Looking"), "the dialog to finish looking");
+            Gui.settle();
+        }
+        if (d.servos().size() != servos || d.table().getItemCount() != servos) {
+            throw new org.opentest4j.AssertionFailedError("expected " + servos + " servos in the Hardware dialog; it says: "
+                    + d.message());
+        }
+    }
+
+    /** Closes the Hardware dialog (and its bus) and waits until the bus is closed. */
+    public static void closeHardware(IdeWindow ide) throws InterruptedException {
+        HardwareDialog d = ide.hardwareDialog();
+        if (d != null && !d.shell().isDisposed()) {
+            d.shell().close();
+            Gui.pump(() -> d.shell().isDisposed(), "the Hardware dialog to close");
+            d.session().awaitClosed(5000);
+        }
+    }
+
+    private static java.util.List<org.eclipse.swt.widgets.Control> allChildren(org.eclipse.swt.widgets.Composite parent) {
+        java.util.List<org.eclipse.swt.widgets.Control> out = new java.util.ArrayList<>();
+        for (org.eclipse.swt.widgets.Control c : parent.getChildren()) {
+            out.add(c);
+            if (c instanceof org.eclipse.swt.widgets.Composite k) {
+                out.addAll(allChildren(k));
+            }
+        }
+        return out;
+    }
+
+    /** Selects the simulated robot (a generator name) as the 3D view's picker does. */
+    public static void robot(IdeWindow ide, String name) {
+        ide.viewBar().select(name);
+    }
+}

@@ -1,0 +1,332 @@
+package org.parpe.gui.pose;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicReference;
+import org.eclipse.jface.text.ITextOperationTarget;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.graphics.Point;
+import org.eclipse.swt.widgets.Button;
+import org.eclipse.swt.widgets.Event;
+import org.eclipse.swt.widgets.Scale;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.MethodOrderer;
+import org.junit.jupiter.api.Order;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.TestMethodOrder;
+import org.parpe.core.run.RunOutcome;
+import org.parpe.gui.app.IdeAccess;
+import org.parpe.gui.app.IdeWindow;
+import org.parpe.gui.run.Target;
+import org.parpe.gui.view3d.View3D;
+import org.parpe.serial.record.RecordingWriter;
+
+/**
+ * The Pose panel for real on an X display: pose three poses of a centipede's front pair of legs
+ * with the sliders and by dragging a module in the 3D view, edit the list, play it in the
+ * simulator, save it, reopen the recording and run it (the trace goes through the poses), and
+ * write it into a script for two other pairs (the trace shows the phase delay; one Undo takes it
+ * back). Widgets are driven with the events a user's clicks send; every wait is bounded.
+ */
+@TestMethodOrder(MethodOrderer.OrderAnnotation.class)
+class PosePanelGuiTest {
+    static final String PAIRS = """
+            <?xml version="1.0"?>
+            <!-- the simulator's centipede: pairs of legs (left swing, left lift, right swing, right lift) -->
+            <program>
+              <robot>
+                <structure>
+                  <front elements="0, 1, 14, 15"/>
+                  <pair1 elements="2, 3, 16, 17"/>
+                  <pair2 elements="4, 5, 18, 19"/>
+                  <leftFront elements="0, 1"/>
+                  <rightFront elements="14, 15"/>
+                  <rest elements="6..13, 20..54"/>
+                </structure>
+              </robot>
+            </program>
+            """;
+    private static IdeWindow ide;
+    private static Path dir;
+    private static Path script;
+    private static PosePanel panel;
+
+    @BeforeAll
+    static void openWindow() throws Exception {
+        dir = Files.createTempDirectory("parpe-pose-test");
+        ide = IdeAccess.openIde(dir.resolve("home"));
+        script = dir.resolve("pairs-centipede.xml");
+        Files.writeString(script, PAIRS);
+        openScript(script);
+        ide.showPosePanel();
+        panel = ide.pose();
+        panel.pollNow();
+        panel.chooseGroup("front");
+        IdeAccess.pump(() -> panel.posingReady() && panel.poses() != null, "the posed centipede to be built");
+    }
+
+    @AfterAll
+    static void closeWindow() {
+        IdeAccess.closeIde(ide);
+    }
+
+    private static void openScript(Path file) {
+        int before = ide.validations();
+        IdeAccess.open(ide, file);
+        IdeAccess.pump(() -> ide.validations() > before && ide.program() != null
+                && ide.program().file().endsWith(file.getFileName().toString()), file.getFileName() + " to load");
+        assertEquals(0, ide.problems().errorCount(), "errors: " + ide.problems().shown());
+        panel = ide.pose();
+        if (panel != null) {
+            panel.pollNow();
+        }
+    }
+
+    private static void press(String button) {
+        Button b = panel.button(button);
+        assertNotNull(b, "no button " + button);
+        b.notifyListeners(SWT.Selection, new Event());
+    }
+
+    private static void slide(int module, int degrees) {
+        Scale s = panel.sliders().scale(module);
+        assertNotNull(s, "no slider for module " + module);
+        s.setSelection(degrees + 90);
+        s.notifyListeners(SWT.Selection, new Event());
+    }
+
+    private static void mouse(int type, int x, int y, int button) {
+        Event e = new Event();
+        e.x = x;
+        e.y = y;
+        e.button = button;
+        ide.view().control().notifyListeners(type, e);
+    }
+
+    /** A module of the group whose picture is under its own screen point (not hidden by another). */
+    private static int grabbable(View3D view, int... ids) {
+        for (int id : ids) {
+            Point p = view.screenPoint(id);
+            if (p != null && view.moduleAt(p.x, p.y) == id) {
+                return id;
+            }
+        }
+        return -1;
+    }
+
+    @Test
+    @Order(1)
+    void posesThreePosesWithSlidersAndDraggingAndEditsTheList() throws Exception {
+        assertEquals("front", panel.poses().group());
+        slide(0, -25);
+        slide(1, 20);
+        slide(14, -25);
+        slide(15, -60);
+        press("Capture");
+
+        IdeAccess.pump(() -> ide.view().lastSnapshot() != null
+                && Math.abs(ide.view().lastSnapshot().angle(15) + 60) < 5, "the simulated leg to follow the sliders");
+        View3D view = ide.view();
+        view.focus(panel.posedModules());
+        IdeAccess.settle();
+        int id = grabbable(view, 1, 15, 0, 14);
+        assertTrue(id >= 0, "no module of the front pair can be grabbed in the 3D view");
+        double before = panel.sliders().angle(id);
+        Point p = view.screenPoint(id);
+        mouse(SWT.MouseDown, p.x, p.y, 1);
+        mouse(SWT.MouseMove, p.x, p.y - 20, 0);
+        mouse(SWT.MouseMove, p.x, p.y - 40, 0);
+        mouse(SWT.MouseUp, p.x, p.y - 40, 1);
+        assertEquals(before + 40 * View3D.DEGREES_PER_PIXEL, panel.sliders().angle(id), 1e-9,
+                "dragging module " + id + " up by 40 pixels should turn its joint");
+        slide(0, -25);
+        slide(1, -60);
+        slide(14, -25);
+        slide(15, -60);
+        double[] second = panel.sliders().angles();
+        panel.table().timeBox().setText("0.5");
+        press("Capture");
+        slide(0, 25);
+        slide(1, -60);
+        slide(14, 25);
+        slide(15, 20);
+        press("Capture");
+        assertEquals(3, panel.poses().size());
+        assertArrayEquals(second, panel.poses().get(1).angles());
+        assertEquals(0.5, panel.poses().get(1).interval());
+        assertEquals(3, panel.table().table().getItemCount(), "the list shows every pose");
+
+        // Duplicate the last pose, mirror the copy (the front pair swaps left and right), delete it.
+        panel.table().select(2);
+        press("Duplicate");
+        assertEquals(4, panel.poses().size());
+        press("Mirror");
+        assertArrayEquals(new double[] {25, 20, 25, -60}, panel.poses().get(3).angles());
+        press("Delete");
+        assertEquals(3, panel.poses().size());
+        // Retime the second pose; the first cannot move up, the second moves down and back.
+        panel.table().select(1);
+        panel.table().timeBox().setText("0.8");
+        press("Set time");
+        assertEquals(0.8, panel.poses().get(1).interval());
+        press("Down");
+        assertArrayEquals(second, panel.poses().get(2).angles());
+        press("Up");
+        assertArrayEquals(second, panel.poses().get(1).angles());
+        assertTrue(panel.table().table().getItem(1).getText(1).equals("0.80"), "the list shows the new time");
+        IdeAccess.screenshot(ide.shell(), "pose-panel-posed.png");
+    }
+
+    @Test
+    @Order(2)
+    void playsThePosesInTheSimulatorAtTwiceTheRate() {
+        panel.output().choose(2, false, Target.SIMULATOR);
+        AtomicReference<RunOutcome> outcome = new AtomicReference<>();
+        assertTrue(panel.output().play(outcome::set), "playback did not start: " + IdeAccess.status(ide));
+        IdeAccess.pump(() -> outcome.get() != null, "the playback to end");
+        assertEquals(RunOutcome.Status.COMPLETED, outcome.get().status(), outcome.get().message());
+        double cycle = 0;
+        for (double t : RecordingWriter.rowTimes(panel.poses().toRecording())) {
+            cycle += t;
+        }
+        // The entry ends at the tick after the last pose is reached (PARSL.md §8), and the scaled
+        // state durations need not fall on ticks: allow two ticks.
+        assertEquals(cycle / 2, outcome.get().time(), 0.021, "once through the poses at x2 takes half the recorded time");
+        IdeAccess.pump(() -> !IdeAccess.running(ide), "the run to wind up");
+    }
+
+    @Test
+    @Order(3)
+    void savesTheRecordingAndTheReopenedFileRunsThroughThePoses() throws Exception {
+        List<PoseList.Pose> poses = panel.poses().poses();
+        double[] times = RecordingWriter.rowTimes(panel.poses().toRecording());
+        Path saved = dir.resolve("front-poses.xml");
+        assertTrue(panel.output().save(saved), IdeAccess.status(ide));
+        openScript(saved);
+        Traces trace = Traces.run(ide.program(), 10);
+        int[] modules = {0, 1, 14, 15};
+        double reached = 0;
+        for (int i = 0; i < poses.size(); i++) {
+            reached += times[i];
+            double when = Math.round(reached * 100) / 100.0;
+            for (int k = 0; k < modules.length; k++) {
+                assertEquals(poses.get(i).angles()[k], trace.at(modules[k], when), 0.005,
+                        "module " + modules[k] + " at pose " + (i + 1) + " (t = " + when + ")");
+            }
+        }
+        int had = panel.poses().size();
+        press("From script");
+        assertEquals(had + poses.size(), panel.poses().size(), "From script adds the recording's poses");
+        for (int i = 0; i < poses.size(); i++) {
+            assertArrayEquals(poses.get(i).angles(), panel.poses().get(had + i).angles(), 1e-9);
+        }
+    }
+
+    /**
+     * Fills in the "Use on another group" dialog as a user would: a period of 0 first (refused,
+     * the dialog stays open and says why), then pair1 and pair2, period 2, phase 0, offset 0.25.
+     */
+    private static void fillUseDialog(List<String> seen) {
+        org.eclipse.swt.widgets.Shell dialog = null;
+        for (org.eclipse.swt.widgets.Shell sh : ide.shell().getShells()) {
+            if (!sh.isDisposed() && sh.getText().equals("Use the poses on other groups")) {
+                dialog = sh;
+            }
+        }
+        if (dialog == null) {
+            ide.shell().getDisplay().timerExec(200, () -> fillUseDialog(seen));
+            return;
+        }
+        org.eclipse.swt.widgets.List groups = null;
+        List<org.eclipse.swt.widgets.Text> fields = new java.util.ArrayList<>();
+        org.eclipse.swt.widgets.Label problem = null;
+        for (org.eclipse.swt.widgets.Control c : all(dialog)) {
+            if (c instanceof org.eclipse.swt.widgets.List l) {
+                groups = l;
+            } else if (c instanceof org.eclipse.swt.widgets.Text t) {
+                fields.add(t);
+            } else if (c instanceof org.eclipse.swt.widgets.Label l) {
+                problem = l;
+            }
+        }
+        Button ok = PoseTable.find(dialog, "Write into script");
+        if (groups == null || fields.size() != 3 || problem == null || ok == null) {
+            seen.add("unexpected dialog");
+            dialog.close();
+            return;
+        }
+        seen.add(String.join(",", groups.getItems()));
+        groups.setSelection(new String[] {"pair1"});
+        fields.get(0).setText("0");
+        ok.notifyListeners(SWT.Selection, new Event());
+        seen.add(dialog.isDisposed() ? "written with period 0" : "refused: " + problem.getText());
+        fields.get(0).setText("2");
+        fields.get(1).setText("0");
+        fields.get(2).setText("0.25");
+        groups.setSelection(new String[] {"pair1", "pair2"});
+        ok.notifyListeners(SWT.Selection, new Event());
+        seen.add(dialog.isDisposed() ? "written" : "still open: " + problem.getText());
+    }
+
+    private static List<org.eclipse.swt.widgets.Control> all(org.eclipse.swt.widgets.Composite parent) {
+        List<org.eclipse.swt.widgets.Control> out = new java.util.ArrayList<>();
+        for (org.eclipse.swt.widgets.Control c : parent.getChildren()) {
+            out.add(c);
+            if (c instanceof org.eclipse.swt.widgets.Composite k) {
+                out.addAll(all(k));
+            }
+        }
+        return out;
+    }
+
+    private static void closeDialogs() {
+        for (org.eclipse.swt.widgets.Shell sh : ide.shell().getShells()) {
+            if (!sh.isDisposed()) {
+                sh.close();
+            }
+        }
+    }
+
+    @Test
+    @Order(4)
+    void usedOnTwoOtherPairsTheScriptRunsThemWithThePhaseDelayAndOneUndoTakesItBack() throws Exception {
+        PoseList recorded = panel.poses();
+        openScript(script);
+        String before = ide.editor().document().get();
+        assertNotNull(recorded);
+        // The dialog is modal: fill it in from a timer while the button's nested event loop runs.
+        List<String> seen = new java.util.ArrayList<>();
+        ide.shell().getDisplay().timerExec(300, () -> fillUseDialog(seen));
+        ide.shell().getDisplay().timerExec(25_000, PosePanelGuiTest::closeDialogs);
+        press("Use on another group\u2026");
+        assertEquals(List.of("front,pair1,pair2", "refused: The period must be a number of seconds > 0, got 0.0.", "written"),
+                seen, "the dialog offers the groups of four modules, refuses a period of 0, then writes");
+        assertNotEquals(before, ide.editor().document().get());
+        int v = ide.validations();
+        IdeAccess.pump(() -> ide.validations() > v && ide.program() != null && ide.program().behavior("play_front").isPresent()
+                && ide.program().automaton("rec_front").isPresent(),
+                "the changed script to load");
+        assertEquals(0, ide.problems().errorCount(), "errors: " + ide.problems().shown());
+        Traces trace = Traces.run(ide.program(), 6);
+        // pair2 lags pair1 by 0.25 of a 2 s cycle: it is where pair1 was 0.5 s earlier.
+        boolean moved = false;
+        for (double t = 2.0; t <= 5.5; t += 0.13) {
+            double now = Math.round(t * 100) / 100.0;
+            assertEquals(trace.at(2, now - 0.5), trace.at(4, now), 1e-6, "swing of pair2 at " + now);
+            assertEquals(trace.at(3, now - 0.5), trace.at(5, now), 1e-6, "lift of pair2 at " + now);
+            moved |= trace.at(2, now) != trace.at(4, now);
+        }
+        assertTrue(moved, "the two pairs move in step");
+        IdeAccess.screenshot(ide.shell(), "pose-panel-used-on-pairs.png");
+        ide.editor().run(ITextOperationTarget.UNDO);
+        assertEquals(before, ide.editor().document().get(), "one Undo should take the whole change back");
+    }
+}
