@@ -11,21 +11,24 @@ import java.util.List;
  * @param screenshot where to save a picture of the window, or {@code null}
  * @param exit       whether to close the IDE when the automation is done
  * @param bench      whether to print start-up and drawing figures and exit
+ * @param grid       the gait table to show in the grid editor (selected whole), or {@code null}
  */
-public record LaunchOptions(Path file, double runFor, Path screenshot, boolean exit, boolean bench) {
+public record LaunchOptions(Path file, double runFor, Path screenshot, boolean exit, boolean bench,
+                            String grid) {
 
     /** The usage text printed for {@code --help} and bad arguments. */
     public static final String USAGE = String.join("\n",
-            "usage: parpe gui [FILE] [--run-for SECONDS] [--screenshot FILE.png] [--exit] [--bench]",
+            "usage: parpe gui [FILE] [--run-for SECONDS] [--screenshot FILE.png] [--exit] [--bench] [--grid NAME]",
             "  FILE              PARSL script to open",
             "  --run-for S       run the script in the simulator for S seconds of simulated time",
             "  --screenshot F    save a PNG picture of the window (after the run, if any)",
             "  --exit            close the IDE when done",
+            "  --grid NAME       show gait table NAME in the grid editor, all of it selected",
             "  --bench           print window-up time, 3D frame rate (centipede) and opening a 10 MB script as name=value lines, then exit");
 
     /** Whether anything automatic is requested. */
     public boolean automated() {
-        return runFor >= 0 || screenshot != null || exit;
+        return runFor >= 0 || screenshot != null || exit || grid != null;
     }
 
     /**
@@ -39,6 +42,7 @@ public record LaunchOptions(Path file, double runFor, Path screenshot, boolean e
         Path shot = null;
         boolean exit = false;
         boolean bench = false;
+        String grid = null;
         for (int i = 0; i < args.size(); i++) {
             String a = args.get(i);
             switch (a) {
@@ -46,6 +50,7 @@ public record LaunchOptions(Path file, double runFor, Path screenshot, boolean e
                 case "--screenshot" -> shot = Path.of(value(args, i++, a));
                 case "--exit" -> exit = true;
                 case "--bench" -> bench = true;
+                case "--grid" -> grid = value(args, i++, a);
                 default -> {
                     if (a.startsWith("-")) {
                         throw new IllegalArgumentException("unknown option '" + a + "'");
@@ -57,7 +62,7 @@ public record LaunchOptions(Path file, double runFor, Path screenshot, boolean e
                 }
             }
         }
-        return new LaunchOptions(file, runFor, shot, exit, bench);
+        return new LaunchOptions(file, runFor, shot, exit, bench, grid);
     }
 
     private static String value(List<String> args, int i, String option) {

@@ -21,6 +21,7 @@ import org.parpe.core.load.LoadResult;
 import org.parpe.core.model.Program;
 import org.parpe.gui.editor.ParslEditor;
 import org.parpe.gui.editor.Validator;
+import org.parpe.gui.grid.GridPane;
 import org.parpe.gui.panels.ControlPanel;
 import org.parpe.gui.panels.OutlineView;
 import org.parpe.gui.panels.PlotView;
@@ -39,6 +40,7 @@ public final class IdeWindow {
 
     private final Prefs prefs;
     private final ParslEditor editor;
+    private final GridPane gaitGrid;
     private final CTabItem editorTab;
     private final ProblemsView problems;
     private final CTabFolder bottom;
@@ -76,8 +78,9 @@ public final class IdeWindow {
 
         SashForm middle = new SashForm(main, SWT.VERTICAL);
         CTabFolder editorFolder = Panels.folder(middle);
-        Composite editorBox = Panels.fill(editorFolder);
+        SashForm editorBox = new SashForm(editorFolder, SWT.HORIZONTAL);
         editor = new ParslEditor(editorBox);
+        gaitGrid = new GridPane(editorBox, editor);
         validator = new Validator(display, editor::setNames);
         editorTab = Panels.tab(editorFolder, "untitled.xml", editorBox);
         bottom = Panels.folder(middle);
@@ -216,6 +219,7 @@ public final class IdeWindow {
     /** A different file is in the editor: forget what belonged to the previous one. */
     void fileSwitched() {
         program = null;
+        gaitGrid.setProgram(null);
         outline.show(null);
         controls.show(null);
         plots.setRecorder(null);
@@ -238,6 +242,7 @@ public final class IdeWindow {
         problems.setLoadDiagnostics(r.diagnostics());
         if (r.program() != null) {
             program = r.program();
+            gaitGrid.setProgram(program);
             outline.show(program);
             if (!runs.running()) {
                 controls.show(program);
@@ -255,8 +260,10 @@ public final class IdeWindow {
     /** The Problems view changed: mark this file's problems in the editor. */
     private void markProblems() {
         Path mine = files.pathForLoading().toAbsolutePath().normalize();
-        editor.setDiagnostics(problems.shown().stream().filter(d -> sameFile(d.pos(), mine))
-                .limit(ParslEditor.MARKER_LIMIT).toList());
+        List<Diagnostic> mineOnly = problems.shown().stream().filter(d -> sameFile(d.pos(), mine))
+                .limit(ParslEditor.MARKER_LIMIT).toList();
+        editor.setDiagnostics(mineOnly);
+        gaitGrid.setDiagnostics(mineOnly);
     }
 
     private static boolean sameFile(SourcePos p, Path mine) {
@@ -378,6 +385,11 @@ public final class IdeWindow {
 
     public ParslEditor editor() {
         return editor;
+    }
+
+    /** The gait-table grid beside the editor. */
+    public GridPane grid() {
+        return gaitGrid;
     }
 
     FileActions files() {
