@@ -218,16 +218,17 @@ public final class TableEdits {
         return Change.between(from, doc.substring(from, t.end()), newDoc.substring(from, newDoc.length() - tailLen));
     }
 
-    /** The indentation of the first row when it starts its line, else the start tag's plus two spaces. */
+    /** The smallest indentation of the rows that start their line, else the start tag's plus two spaces. */
     private static String indent(String doc, GaitTable t) {
-        if (!t.rows().isEmpty() && !t.rows().get(0).isEmpty()) {
-            int first = t.rows().get(0).get(0).start();
+        String best = null;
+        for (List<Cell> row : t.rows()) {
+            int first = row.get(0).start();
             int ls = doc.lastIndexOf('\n', first - 1) + 1;
-            if (ls > t.start() - 1 && doc.substring(ls, first).isBlank()) {
-                return doc.substring(ls, first);
+            if (ls >= t.start() && doc.substring(ls, first).isBlank() && (best == null || first - ls < best.length())) {
+                best = doc.substring(ls, first);
             }
         }
-        return lineIndent(doc, t.attrInsert()) + "  ";
+        return best != null ? best : lineIndent(doc, t.attrInsert()) + "  ";
     }
 
     private static String lineIndent(String doc, int offset) {
