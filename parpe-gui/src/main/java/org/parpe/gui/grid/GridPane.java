@@ -41,6 +41,8 @@ import org.parpe.gui.grid.TableEdits.At;
  */
 public final class GridPane implements GridView.Actions {
     private static final String TIMES = "times";
+    /** The background of a cell with a problem (not selected). */
+    public static final org.eclipse.swt.graphics.Color INVALID = GridView.INVALID;
 
     private final SashForm sash;
     private final Control text;
