@@ -108,6 +108,7 @@ public final class IdeWindow {
         Panels.tab(plotFolder, "Joint angles", plots.control());
         right.setWeights(54, 18, 28);
         main.setWeights(15, 43, 42);
+        gaitGrid.onShown(v -> main.setWeights(v ? new int[] {11, 61, 28} : new int[] {15, 43, 42}));
 
         status = new StatusBar(shell);
         status.control().setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));

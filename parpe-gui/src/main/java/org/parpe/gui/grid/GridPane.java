@@ -61,6 +61,7 @@ public final class GridPane implements GridView.Actions {
     private List<Diagnostic> diagnostics = List.of();
     private double amplitude = 15;
     private double phaseStep = 0.125;
+    private java.util.function.Consumer<Boolean> shown = v -> { };
 
     /** Adds the grid to {@code sash}, beside the editor's control (already in it). */
     public GridPane(SashForm sash, ParslEditor editor) {
@@ -90,7 +91,7 @@ public final class GridPane implements GridView.Actions {
         grid = new GridView(box, this);
         status = new Label(box, SWT.WRAP);
         status.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
-        sash.setWeights(45, 55);
+        sash.setWeights(40, 60);
         sash.setMaximizedControl(text);
         editor.document().addDocumentListener(new IDocumentListener() {
             @Override
@@ -141,11 +142,11 @@ public final class GridPane implements GridView.Actions {
             choice.getParent().layout();
         }
         if (table == null) {
-            sash.setMaximizedControl(text);
+            setShown(false);
             return;
         }
         choice.select(names.indexOf(chosen));
-        sash.setMaximizedControl(null);
+        setShown(true);
         show(doc);
     }
 
@@ -235,6 +236,18 @@ public final class GridPane implements GridView.Actions {
         } catch (BadLocationException e) {
             return -1;
         }
+    }
+
+    private void setShown(boolean v) {
+        if (v != (sash.getMaximizedControl() == null)) {
+            sash.setMaximizedControl(v ? null : text);
+            shown.accept(v);
+        }
+    }
+
+    /** {@code listener} learns when the grid appears beside the text (true) or goes (false). */
+    public void onShown(java.util.function.Consumer<Boolean> listener) {
+        shown = listener;
     }
 
     /** The program last loaded, for the modules of the table's group. */

@@ -27,6 +27,7 @@ final class GridView {
     static final Color INVALID = new Color(0xF8, 0xC8, 0xC8);
     static final Color INVALID_SELECTED = new Color(0xE8, 0xB0, 0xC8);
     static final Color ABSENT = new Color(0xEE, 0xEE, 0xEE);
+    private static final int MIN_WIDTH = 34;
 
     /** What the grid asks its owner to do. */
     interface Actions {
@@ -114,8 +115,7 @@ final class GridView {
                 table.getColumn(table.getColumnCount() - 1).dispose();
             }
             while (table.getColumnCount() < headers.size() + 1) {
-                TableColumn c = new TableColumn(table, SWT.RIGHT);
-                c.setWidth(table.getColumnCount() == 1 ? 40 : 46);
+                new TableColumn(table, SWT.RIGHT);
             }
             table.getColumn(0).setText("Step");
             table.getColumn(0).setToolTipText("Row: the time step");
@@ -131,6 +131,10 @@ final class GridView {
                 for (int c = 0; c < headers.size(); c++) {
                     it.setText(c + 1, c < rows.get(r).size() ? rows.get(r).get(c) : "");
                 }
+            }
+            for (TableColumn c : table.getColumns()) {
+                c.pack();
+                c.setWidth(Math.max(c.getWidth(), MIN_WIDTH));
             }
             focusRow = clamp(focusRow, rows.size());
             anchorRow = clamp(anchorRow, rows.size());
