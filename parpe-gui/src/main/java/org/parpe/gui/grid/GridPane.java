@@ -60,7 +60,7 @@ public final class GridPane implements GridView.Actions {
     private Program program;
     private List<Diagnostic> diagnostics = List.of();
     private double amplitude = 15;
-    private double phaseStep = 0.125;
+    private double phaseStep = -0.125;
     private java.util.function.Consumer<Boolean> shown = v -> { };
 
     /** Adds the grid to {@code sash}, beside the editor's control (already in it). */

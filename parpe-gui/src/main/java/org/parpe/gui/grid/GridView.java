@@ -111,10 +111,12 @@ final class GridView {
         this.editable = editable;
         table.setRedraw(false);
         try {
-            while (table.getColumnCount() > headers.size() + 1) {
+            // The step numbers, a column per grid column, and an empty one that takes the room
+            // left (GTK stretches the last column; the last module's should look like the others).
+            while (table.getColumnCount() > headers.size() + 2) {
                 table.getColumn(table.getColumnCount() - 1).dispose();
             }
-            while (table.getColumnCount() < headers.size() + 1) {
+            while (table.getColumnCount() < headers.size() + 2) {
                 new TableColumn(table, SWT.RIGHT);
             }
             table.getColumn(0).setText("Step");
@@ -132,7 +134,10 @@ final class GridView {
                     it.setText(c + 1, c < rows.get(r).size() ? rows.get(r).get(c) : "");
                 }
             }
-            for (TableColumn c : table.getColumns()) {
+            table.getColumn(headers.size() + 1).setText("");
+            table.getColumn(headers.size() + 1).setWidth(1);
+            for (int i = 0; i <= headers.size(); i++) {
+                TableColumn c = table.getColumn(i);
                 c.pack();
                 c.setWidth(Math.max(c.getWidth(), MIN_WIDTH));
             }
@@ -150,8 +155,9 @@ final class GridView {
         return Math.max(0, Math.min(v, n - 1));
     }
 
+    /** The number of grid columns (without the step numbers and the filler). */
     private int columns() {
-        return table.getColumnCount() - 1;
+        return Math.max(0, table.getColumnCount() - 2);
     }
 
     /** The selected rectangle, in rows and grid columns. */
@@ -194,7 +200,7 @@ final class GridView {
         if (it == null) {
             return null;
         }
-        for (int c = 1; c < table.getColumnCount(); c++) {
+        for (int c = 1; c <= columns(); c++) {
             if (it.getBounds(c).contains(x, y)) {
                 return new Point(c - 1, table.indexOf(it));
             }

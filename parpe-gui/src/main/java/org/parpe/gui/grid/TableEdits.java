@@ -24,7 +24,10 @@ public final class TableEdits {
     public record At(int row, int column) {
     }
 
-    /** Sets the entries in {@code values}; entries past a row's end are appended (the gap filled with 0). */
+    /**
+     * Sets the entries in {@code values}; entries past a row's end are appended (the gap filled
+     * with 0). A time set on a table without {@code times} adds the attribute, 1 for the other rows.
+     */
     public static Change setCells(String doc, GaitTable t, Map<At, String> values) {
         List<Edit> edits = new ArrayList<>();
         for (var e : values.entrySet()) {
@@ -45,7 +48,8 @@ public final class TableEdits {
             }
         }
         if (values.keySet().stream().anyMatch(a -> a.row() == TIMES) && t.times() == null) {
-            return rewrite(doc, t, merged(t, values), mergedTimes(t, values));
+            String times = String.join(", ", mergedTimes(t, values).stream().map(Entities::encodeAttribute).toList());
+            edits.add(new Edit(t.attrInsert(), t.attrInsert(), " times=\"" + times + "\""));
         }
         return apply(doc, edits);
     }
@@ -96,25 +100,8 @@ public final class TableEdits {
         return Change.between(from, doc.substring(from, to), out.toString());
     }
 
-    private static List<List<String>> merged(GaitTable t, Map<At, String> values) {
-        List<List<String>> rows = new ArrayList<>();
-        for (List<String> r : t.texts()) {
-            rows.add(new ArrayList<>(r));
-        }
-        values.forEach((at, v) -> {
-            if (at.row() != TIMES) {
-                List<String> row = rows.get(at.row());
-                while (row.size() <= at.column()) {
-                    row.add("0");
-                }
-                row.set(at.column(), v.trim());
-            }
-        });
-        return rows;
-    }
-
     private static List<String> mergedTimes(GaitTable t, Map<At, String> values) {
-        List<String> times = new ArrayList<>(t.times() == null ? List.of() : t.timeTexts());
+        List<String> times = new ArrayList<>();
         while (times.size() < t.rows().size()) {
             times.add("1");
         }

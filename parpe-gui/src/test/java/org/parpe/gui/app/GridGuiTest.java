@@ -99,12 +99,12 @@ class GridGuiTest {
         String before = Files.readString(example);
         ide.files().openExample(example);
         Gui.pump(() -> !ide.files().reading() && ide.files().example() != null && grid().visible()
-                && grid().widget().getColumnCount() == 14 && "12".equals(grid().widget().getColumn(13).getText()),
+                && grid().widget().getColumnCount() == 15 && "12".equals(grid().widget().getColumn(13).getText()),
                 "the example copy and its grid, headed by module IDs once the script has loaded");
         assertNull(ide.files().file(), "an example opens as an untitled copy");
         assertEquals("travel", grid().table().name());
         assertEquals(8, grid().widget().getItemCount());
-        assertEquals(14, grid().widget().getColumnCount(), "step, times and 12 modules");
+        assertEquals(15, grid().widget().getColumnCount(), "step, times, 12 modules and the filler");
         assertEquals("12", grid().widget().getColumn(13).getText(), "headers are the module IDs");
         assertEquals("-15", grid().widget().getItem(1).getText(2));
         assertEquals(before, Files.readString(example));
