@@ -93,7 +93,7 @@ final class FileActions {
         this.slot = autosave.untitledSlot();
         this.questions = (title, text, buttons) -> new MessageDialog(shell, title, null, text, MessageDialog.QUESTION,
                 buttons, 0).open();
-        this.saveTarget = this::askSaveTarget;
+        this.saveTarget = (folder, name) -> SafeSave.ask(shell, folder, name);
         shell.addListener(SWT.Dispose, e -> {
             autosave.close();
             reader.shutdownNow();
@@ -313,16 +313,6 @@ final class FileActions {
             return true;
         }
         return false;
-    }
-
-    private Path askSaveTarget(Path folder, String name) {
-        FileDialog d = new FileDialog(shell, SWT.SAVE);
-        d.setFilterExtensions(new String[] {"*.xml", "*"});
-        d.setOverwrite(true);
-        d.setFileName(name);
-        d.setFilterPath(folder.toString());
-        String p = d.open();
-        return p == null ? null : Path.of(p);
     }
 
     /**

@@ -7,7 +7,6 @@ import java.util.List;
 import java.util.Map;
 import org.eclipse.jface.text.BadLocationException;
 import org.eclipse.jface.text.DocumentEvent;
-import org.eclipse.jface.text.IDocument;
 import org.eclipse.jface.text.IDocumentListener;
 import org.eclipse.jface.window.Window;
 import org.eclipse.swt.SWT;
@@ -57,6 +56,7 @@ public final class GridPane implements GridView.Actions {
     private String chosen;
     private boolean stale;
     private boolean pending;
+    private boolean following;
     private Program program;
     private List<Diagnostic> diagnostics = List.of();
     private double amplitude = 15;
@@ -93,6 +93,7 @@ public final class GridPane implements GridView.Actions {
         status.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         sash.setWeights(40, 60);
         sash.setMaximizedControl(text);
+        editor.widget().addCaretListener(e -> caretAt(e.caretOffset));
         editor.document().addDocumentListener(new IDocumentListener() {
             @Override
             public void documentAboutToBeChanged(DocumentEvent event) {
@@ -147,10 +148,10 @@ public final class GridPane implements GridView.Actions {
         }
         choice.select(names.indexOf(chosen));
         setShown(true);
-        show(doc);
+        show();
     }
 
-    private void show(String doc) {
+    private void show() {
         List<Integer> modules = Modules.of(program, table.name());
         int width = table.width();
         int columns = width == 1 && modules != null ? 1 : Math.max(width, modules == null ? 0 : modules.size());
@@ -170,9 +171,7 @@ public final class GridPane implements GridView.Actions {
         }
         Map<Long, String> problems = new HashMap<>();
         List<String> others = new ArrayList<>();
-        for (Diagnostic d : diagnostics) {
-            place(doc, d, problems, others);
-        }
+        CellProblems.place(editor.document(), table, diagnostics, problems, others);
         boolean[] absent = new boolean[headers.size()];
         absent[0] = times == null;
         grid.show(headers, rows, problems, absent, editable());
@@ -206,38 +205,6 @@ public final class GridPane implements GridView.Actions {
         return s.toString();
     }
 
-    /** Puts a diagnostic on the cell it points into, or among the table's other problems if it names the table. */
-    private void place(String doc, Diagnostic d, Map<Long, String> problems, List<String> others) {
-        int offset = offset(d.pos().line(), d.pos().column());
-        if (offset >= 0) {
-            for (int r = 0; r < table.rows().size(); r++) {
-                List<Cell> row = table.rows().get(r);
-                for (int c = 0; c < row.size(); c++) {
-                    if (row.get(c).covers(offset)) {
-                        problems.merge(GridView.cellKey(r, c + 1), d.message(), (a, b) -> a + "\n" + b);
-                        return;
-                    }
-                }
-                if (table.times() != null && r < table.times().size() && table.times().get(r).covers(offset)) {
-                    problems.merge(GridView.cellKey(r, 0), d.message(), (a, b) -> a + "\n" + b);
-                    return;
-                }
-            }
-        }
-        if (d.message().contains("'" + table.name() + "'")) {
-            others.add(d.severity().name().toLowerCase(java.util.Locale.ROOT) + ": " + d.message());
-        }
-    }
-
-    private int offset(int line, int column) {
-        IDocument doc = editor.document();
-        try {
-            return line < 1 || line > doc.getNumberOfLines() ? -1 : doc.getLineOffset(line - 1) + column - 1;
-        } catch (BadLocationException e) {
-            return -1;
-        }
-    }
-
     private void setShown(boolean v) {
         if (v != (sash.getMaximizedControl() == null)) {
             sash.setMaximizedControl(v ? null : text);
@@ -260,7 +227,7 @@ public final class GridPane implements GridView.Actions {
     public void setDiagnostics(List<Diagnostic> ds) {
         diagnostics = List.copyOf(ds);
         if (table != null) {
-            show(editor.document().get());
+            show();
         }
     }
 
@@ -269,6 +236,11 @@ public final class GridPane implements GridView.Actions {
         chosen = name;
         refresh();
         return table != null && table.name().equals(name);
+    }
+
+    /** The names of the script's gait tables, as last read from the text. */
+    public List<String> tableNames() {
+        return tables.stream().map(GaitTable::name).toList();
     }
 
     /** The table shown, as last read from the text, or {@code null}. */
@@ -304,6 +276,39 @@ public final class GridPane implements GridView.Actions {
     /** The text of the status line under the grid. */
     public String status() {
         return status.getText();
+    }
+
+    /** Shows the focused cell's entry selected in the text. */
+    @Override
+    public void focused(int row, int column) {
+        if (table == null || row >= table.rows().size()) {
+            return;
+        }
+        Cell c = column == 0 ? (table.times() != null && row < table.times().size() ? table.times().get(row) : null)
+                : table.cell(row, column - 1);
+        if (c != null && c.end() <= editor.document().getLength()) {
+            following = true;
+            try {
+                editor.viewer().setSelectedRange(c.start(), c.end() - c.start());
+                editor.viewer().revealRange(c.start(), c.end() - c.start());
+            } finally {
+                following = false;
+            }
+        }
+    }
+
+    /** The caret moved in the text: show the table it is in, if another. */
+    private void caretAt(int offset) {
+        if (following) {
+            return;
+        }
+        for (GaitTable t : tables) {
+            if (offset >= t.attrInsert() && offset <= t.end() && !t.name().equals(chosen)) {
+                chosen = t.name();
+                refresh();
+                return;
+            }
+        }
     }
 
     @Override

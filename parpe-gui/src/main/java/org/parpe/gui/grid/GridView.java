@@ -34,6 +34,9 @@ final class GridView {
         /** The user entered {@code text} into the cell at {@code row}, grid column {@code column}. */
         void edited(int row, int column, String text);
 
+        /** The focused cell moved to {@code row}, grid column {@code column}. */
+        void focused(int row, int column);
+
         /** Ctrl+C in the grid. */
         void copy();
 
@@ -176,6 +179,7 @@ final class GridView {
         if (focusRow >= 0 && focusRow < table.getItemCount()) {
             table.showItem(table.getItem(focusRow));
             table.showColumn(table.getColumn(focusCol + 1));
+            actions.focused(focusRow, focusCol);
         }
     }
 

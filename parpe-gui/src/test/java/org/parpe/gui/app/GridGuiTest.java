@@ -118,6 +118,9 @@ class GridGuiTest {
         click(1, 2, 0);
         assertEquals(1, grid().selection().r0());
         assertEquals(1, grid().selection().c0(), "grid column 1 is module 1");
+        var entry = grid().table().cell(1, 0);
+        assertEquals(entry.start(), ide.editor().viewer().getSelectedRange().x, "the focused cell's entry is selected in the text");
+        assertEquals(3, ide.editor().viewer().getSelectedRange().y);
         key('7', '7');
         Text cell = grid().cellEditor();
         assertNotNull(cell, "typing in a cell opens its editor");
@@ -193,6 +196,23 @@ class GridGuiTest {
 
     @Test
     @Order(6)
+    void theCaretInAnotherTableShowsThatTable() throws Exception {
+        String doc = ide.editor().document().get();
+        int end = doc.indexOf("</automata>");
+        ide.editor().document().replace(end, 0, "  <second>1, 2; 3, 4</second>\n  ");
+        Gui.pump(() -> grid().tableNames().equals(java.util.List.of("travel", "second")), "the grid to find the new table");
+        assertEquals("travel", grid().table().name(), "the grid stays on its table");
+        int at = ide.editor().document().get().indexOf("3, 4</second>");
+        ide.editor().widget().setCaretOffset(at);
+        Gui.pump(() -> "second".equals(grid().table().name()), "the grid to follow the caret into 'second'");
+        assertEquals("3", grid().widget().getItem(1).getText(2));
+        ide.editor().run(ITextOperationTarget.UNDO);
+        Gui.pump(() -> "travel".equals(grid().table().name()) && !ide.editor().document().get().contains("<second>"),
+                "Undo to remove 'second'");
+    }
+
+    @Test
+    @Order(7)
     void savingTheCopyAsksWhereAndNeverWritesTheExample() throws Exception {
         Path example = Gui.example("gait-table-12.xml");
         String before = Files.readString(example);
@@ -211,7 +231,7 @@ class GridGuiTest {
     }
 
     @Test
-    @Order(7)
+    @Order(8)
     void savingKeepsTheFilesPermissions() throws Exception {
         Path script = home.resolve("shared.xml");
         Files.writeString(script, Files.readString(Gui.example("gait-table-12.xml")));
