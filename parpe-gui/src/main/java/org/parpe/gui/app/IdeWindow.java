@@ -166,7 +166,7 @@ public final class IdeWindow {
             }
             var focus = e.display.getFocusControl();
             boolean typing = focus instanceof StyledText || focus instanceof org.eclipse.swt.widgets.Text
-                    || focus instanceof org.eclipse.swt.widgets.Combo;
+                    || focus instanceof org.eclipse.swt.widgets.Combo || gaitGrid.hasFocus();
             if (runs.running() && !typing && e.stateMask == 0 && controls.key(e)) {
                 e.doit = false;
             }

@@ -128,8 +128,9 @@ public final class GridPane implements GridView.Actions {
 
     /** Reads the tables from the text again and shows the chosen one. */
     void refresh() {
-        String doc = editor.document().get();
-        List<GaitTable> found = doc.length() > ParslEditor.COLOUR_LIMIT ? List.of() : TableText.find(doc);
+        // A text over the colouring limit is not parsed at every keystroke: it shows no grid.
+        List<GaitTable> found = editor.document().getLength() > ParslEditor.COLOUR_LIMIT ? List.of()
+                : TableText.find(editor.document().get());
         stale = found == null;
         if (found != null) {
             tables = found;
