@@ -10,8 +10,15 @@ import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.util.concurrent.atomic.AtomicReference;
 import org.eclipse.swt.SWT;
+import org.eclipse.swt.dnd.Clipboard;
+import org.eclipse.swt.dnd.TextTransfer;
+import org.eclipse.swt.dnd.Transfer;
 import org.eclipse.swt.graphics.Rectangle;
+import org.eclipse.swt.widgets.Button;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Control;
 import org.eclipse.swt.widgets.Event;
+import org.eclipse.swt.widgets.Shell;
 import org.eclipse.swt.widgets.Table;
 import org.eclipse.swt.widgets.Text;
 import org.junit.jupiter.api.AfterAll;
@@ -177,25 +184,97 @@ class GridGuiTest {
 
     @Test
     @Order(5)
-    void aTravellingWaveAndAPasteFillTheSelection() throws Exception {
+    void theWaveDialogAndCtrlVFillTheSelection() throws Exception {
         click(0, 2, 0);
         click(7, 13, SWT.SHIFT);
         assertEquals(8, grid().selection().rows());
         assertEquals(12, grid().selection().columns());
-        grid().fillWave(20, 0.125);
+        AtomicReference<String> dialog = new AtomicReference<>();
+        ide.shell().getDisplay().asyncExec(() -> answerWaveDialog("20", "0.125", dialog));
+        button("Wave\u2026").notifyListeners(SWT.Selection, new Event());
+        assertEquals("Fill with a travelling wave", dialog.get(), "the Wave\u2026 button should open its dialog");
         Gui.pump(() -> "14.1".equals(grid().widget().getItem(0).getText(3)), "the wave in the grid");
         assertEquals("20", grid().widget().getItem(2).getText(2), "20 sin(2pi 2/8)");
         assertTrue(ide.editor().document().get().contains("<!--        module: 1    2    3"), "the comment above the table stays");
+
         click(6, 2, 0);
-        grid().paste("1\t2\n3\t4\n");
+        Clipboard cb = new Clipboard(ide.shell().getDisplay());
+        cb.setContents(new Object[] {"1\t2\n3\t4\n"}, new Transfer[] {TextTransfer.getInstance()});
+        cb.dispose();
+        grid().widget().setFocus();
+        Event paste = new Event();
+        paste.keyCode = 'v';
+        paste.character = 0x16;
+        paste.stateMask = SWT.MOD1;
+        grid().widget().notifyListeners(SWT.KeyDown, paste);
         Gui.pump(() -> "4".equals(grid().widget().getItem(7).getText(3)), "the pasted cells");
         assertEquals("1", grid().table().cell(6, 0).text());
         grid().select(0, 1, 7, 12);
         Gui.screenshot(ide.shell(), "grid-wave.png");
     }
 
+    /** Fills in the wave dialog once it is up (it runs its own event loop) and presses OK. */
+    private static void answerWaveDialog(String amplitude, String phase, AtomicReference<String> title) {
+        for (Shell s : ide.shell().getDisplay().getShells()) {
+            if (s != ide.shell() && s.isVisible() && !s.isDisposed()) {
+                title.set(s.getText());
+                java.util.List<Text> fields = new java.util.ArrayList<>();
+                java.util.List<Button> buttons = new java.util.ArrayList<>();
+                collect(s, fields, buttons);
+                fields.get(0).setText(amplitude);
+                fields.get(1).setText(phase);
+                buttons.stream().filter(b -> "OK".equals(b.getText().replace("&", ""))).findFirst().orElseThrow()
+                        .notifyListeners(SWT.Selection, new Event());
+                return;
+            }
+        }
+        ide.shell().getDisplay().timerExec(50, () -> answerWaveDialog(amplitude, phase, title));
+    }
+
+    private static void collect(Composite c, java.util.List<Text> fields, java.util.List<Button> buttons) {
+        for (Control child : c.getChildren()) {
+            if (child instanceof Text t) {
+                fields.add(t);
+            } else if (child instanceof Button b) {
+                buttons.add(b);
+            }
+            if (child instanceof Composite k) {
+                collect(k, fields, buttons);
+            }
+        }
+    }
+
+    private static Button button(String label) {
+        java.util.List<Text> fields = new java.util.ArrayList<>();
+        java.util.List<Button> buttons = new java.util.ArrayList<>();
+        collect(grid().widget().getParent(), fields, buttons);
+        return buttons.stream().filter(b -> label.equals(b.getText())).findFirst()
+                .orElseThrow(() -> new AssertionError("no button '" + label + "' in the grid"));
+    }
+
     @Test
     @Order(6)
+    void rowButtonsAddAndRemoveRowsAndUndoTakesThemBack() throws Exception {
+        String before = ide.editor().document().get();
+        click(2, 3, 0);
+        button("+Row").notifyListeners(SWT.Selection, new Event());
+        Gui.pump(() -> grid().widget().getItemCount() == 9, "a ninth row");
+        assertEquals(grid().table().texts().get(2), grid().table().texts().get(3), "the new row is a copy of the selected one");
+        String after = ide.editor().document().get();
+        assertEquals(before.substring(0, before.indexOf("<travel>")), after.substring(0, after.indexOf("<travel>")),
+                "the text before the table is unchanged");
+        click(0, 3, 0);
+        click(1, 3, SWT.SHIFT);
+        button("\u2212Rows").notifyListeners(SWT.Selection, new Event());
+        Gui.pump(() -> grid().widget().getItemCount() == 7, "two rows fewer");
+        ide.editor().run(ITextOperationTarget.UNDO);
+        ide.editor().run(ITextOperationTarget.UNDO);
+        assertEquals(before, ide.editor().document().get(), "two Undos should restore the text");
+        Gui.pump(() -> grid().widget().getItemCount() == 8, "the grid to show the 8 rows again");
+    }
+
+    @Test
+    @Order(7)
     void theCaretInAnotherTableShowsThatTable() throws Exception {
         String doc = ide.editor().document().get();
         int end = doc.indexOf("</automata>");
@@ -212,7 +291,7 @@ class GridGuiTest {
     }
 
     @Test
-    @Order(7)
+    @Order(8)
     void savingTheCopyAsksWhereAndNeverWritesTheExample() throws Exception {
         Path example = Gui.example("gait-table-12.xml");
         String before = Files.readString(example);
@@ -231,7 +310,7 @@ class GridGuiTest {
     }
 
     @Test
-    @Order(8)
+    @Order(9)
     void savingKeepsTheFilesPermissions() throws Exception {
         Path script = home.resolve("shared.xml");
         Files.writeString(script, Files.readString(Gui.example("gait-table-12.xml")));
