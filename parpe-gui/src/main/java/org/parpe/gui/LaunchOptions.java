@@ -12,23 +12,26 @@ import java.util.List;
  * @param exit       whether to close the IDE when the automation is done
  * @param bench      whether to print start-up and drawing figures and exit
  * @param posePanel  whether to bring the Pose panel to the front with the poses the script plays
+ * @param grid       the gait table to show in the grid editor (selected whole), or {@code null}
  */
 public record LaunchOptions(Path file, double runFor, Path screenshot, boolean exit, boolean bench,
-                            boolean posePanel) {
+                            boolean posePanel, String grid) {
 
     /** The usage text printed for {@code --help} and bad arguments. */
     public static final String USAGE = String.join("\n",
-            "usage: parpe gui [FILE] [--run-for SECONDS] [--screenshot FILE.png] [--exit] [--bench] [--pose-panel]",
+            "usage: parpe gui [FILE] [--run-for SECONDS] [--screenshot FILE.png] [--exit] [--bench] [--pose-panel]"
+                    + " [--grid NAME]",
             "  FILE              PARSL script to open",
             "  --run-for S       run the script in the simulator for S seconds of simulated time",
             "  --screenshot F    save a PNG picture of the window (after the run, if any)",
             "  --exit            close the IDE when done",
             "  --pose-panel      show the Pose panel with the poses of the gait table the script plays (a recording)",
+            "  --grid NAME       show gait table NAME in the grid editor, all of it selected",
             "  --bench           print window-up time, 3D frame rate (centipede) and opening a 10 MB script as name=value lines, then exit");
 
     /** Whether anything automatic is requested. */
     public boolean automated() {
-        return runFor >= 0 || screenshot != null || exit || posePanel;
+        return runFor >= 0 || screenshot != null || exit || posePanel || grid != null;
     }
 
     /**
@@ -43,6 +46,7 @@ public record LaunchOptions(Path file, double runFor, Path screenshot, boolean e
         boolean exit = false;
         boolean bench = false;
         boolean posePanel = false;
+        String grid = null;
         for (int i = 0; i < args.size(); i++) {
             String a = args.get(i);
             switch (a) {
@@ -51,6 +55,7 @@ public record LaunchOptions(Path file, double runFor, Path screenshot, boolean e
                 case "--exit" -> exit = true;
                 case "--bench" -> bench = true;
                 case "--pose-panel" -> posePanel = true;
+                case "--grid" -> grid = value(args, i++, a);
                 default -> {
                     if (a.startsWith("-")) {
                         throw new IllegalArgumentException("unknown option '" + a + "'");
@@ -62,7 +67,7 @@ public record LaunchOptions(Path file, double runFor, Path screenshot, boolean e
                 }
             }
         }
-        return new LaunchOptions(file, runFor, shot, exit, bench, posePanel);
+        return new LaunchOptions(file, runFor, shot, exit, bench, posePanel, grid);
     }
 
     private static String value(List<String> args, int i, String option) {

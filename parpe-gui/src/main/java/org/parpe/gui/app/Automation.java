@@ -67,6 +67,9 @@ public final class Automation {
             showPosePanel(0);
             return;
         }
+        if (options.grid() != null) {
+            showGrid(options.grid());
+        }
         if (options.runFor() >= 0) {
             if (ide.program() == null || ide.problems().errorCount() > 0) {
                 for (Diagnostic d : ide.problems().shown()) {
@@ -109,6 +112,17 @@ public final class Automation {
             }
             later(SETTLE_MS, () -> waitForLoad(LOAD_TIMEOUT_MS));
         });
+    }
+
+    /** {@code --grid NAME}: the grid editor on gait table NAME, every module cell selected. */
+    private void showGrid(String name) {
+        var grid = ide.grid();
+        if (!grid.showTable(name)) {
+            fail("no gait table '" + name + "' in " + ide.files().name()
+                    + (grid.table() == null ? " (it has none)" : " (its first is '" + grid.table().name() + "')"));
+            return;
+        }
+        grid.select(0, 1, grid.table().rows().size() - 1, Math.max(1, grid.table().width()));
     }
 
     /** Stops a run that takes far longer than it should (a stuck plant) so that --exit always exits. */

@@ -4,7 +4,6 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.function.Consumer;
@@ -69,12 +68,15 @@ final class FileActions {
     private long opening;
     private boolean reading;
     private Path file;
+    /** The example this untitled document is a copy of, or null. */
+    private Path example;
     private String savedText = "";
     private String autosavedText;
     private String slot;
     private boolean recovered;
     private boolean loading;
     private Questions questions;
+    private SaveTarget saveTarget;
 
     /**
      * {@code changed} runs after the file, the text or the dirty state changed, {@code switched}
@@ -91,6 +93,7 @@ final class FileActions {
         this.slot = autosave.untitledSlot();
         this.questions = (title, text, buttons) -> new MessageDialog(shell, title, null, text, MessageDialog.QUESTION,
                 buttons, 0).open();
+        this.saveTarget = (folder, name) -> SafeSave.ask(shell, folder, name);
         shell.addListener(SWT.Dispose, e -> {
             autosave.close();
             reader.shutdownNow();
@@ -117,16 +120,37 @@ final class FileActions {
 
     /** The path given to the loader: the file, or an untitled name in the working directory. */
     Path pathForLoading() {
-        return file != null ? file : Path.of("untitled.xml").toAbsolutePath();
+        return file != null ? file : example != null ? example : Path.of("untitled.xml").toAbsolutePath();
     }
 
     String name() {
-        return file == null ? "untitled.xml" : file.getFileName().toString();
+        return file == null && example != null ? fileName() + " (example copy)" : fileName();
+    }
+
+    /** The file's name, or the name Save As proposes for an untitled document. */
+    private String fileName() {
+        return file != null ? file.getFileName().toString() : example != null ? example.getFileName().toString() : "untitled.xml";
+    }
+
+    /** The example the untitled document is a copy of, or null. */
+    Path example() {
+        return example;
     }
 
     /** Whether the text is not saved: it differs from the file, or it was recovered and not saved since. */
     boolean dirty() {
         return recovered || !editor.document().get().equals(savedText);
+    }
+
+    /** Asks where to save: the folder to start in and the name proposed; returns the chosen file or null (cancelled). */
+    @FunctionalInterface
+    interface SaveTarget {
+        Path ask(Path folder, String name);
+    }
+
+    /** Chooses where to save with {@code t} instead of the file dialog (tests). */
+    void chooseSaveTargetWith(SaveTarget t) {
+        saveTarget = t;
     }
 
     /** Answers the questions of this class with {@code q} instead of dialogs (tests). */
@@ -166,6 +190,22 @@ final class FileActions {
      * if it cannot be read. A later open, New or recovery wins over one still being read.
      */
     void openPath(Path p) {
+        read(p, false);
+    }
+
+    /**
+     * File → Examples and the tutorial's lessons: asks first if there are unsaved changes, then
+     * opens an untitled copy of the example {@code p}. Its first Save asks where (in the
+     * Documents folder), so the example itself is never written. The copy is loaded as if it
+     * were at {@code p}, so that the files it names are found beside it.
+     */
+    void openExample(Path p) {
+        if (confirmDiscard()) {
+            read(p, true);
+        }
+    }
+
+    private void read(Path p, boolean copy) {
         Path abs = p.toAbsolutePath().normalize();
         long gen = ++opening;
         reading = true;
@@ -183,14 +223,14 @@ final class FileActions {
             String t = text;
             String why = error;
             try {
-                display.asyncExec(() -> opened(gen, abs, t, why));
+                display.asyncExec(() -> opened(gen, abs, t, why, copy));
             } catch (org.eclipse.swt.SWTException e) {
                 // The window closed while the file was read.
             }
         });
     }
 
-    private void opened(long gen, Path abs, String text, String error) {
+    private void opened(long gen, Path abs, String text, String error, boolean copy) {
         if (shell.isDisposed() || gen != opening) {
             return;
         }
@@ -198,6 +238,11 @@ final class FileActions {
             stopReading();
             message.accept("");
             MessageDialog.openError(shell, "Cannot open file", "Cannot read " + abs + ":\n" + error);
+            return;
+        }
+        if (copy) {
+            show(null, text, text, null, abs);
+            message.accept("A copy of the example " + abs.getFileName() + ": Save asks where to keep your version.");
             return;
         }
         show(abs, text, text, null);
@@ -224,7 +269,12 @@ final class FileActions {
 
     /** Puts a document in the editor; {@code recoveredSlot} is the autosave slot of recovered text, else null. */
     private void show(Path p, String text, String saved, String recoveredSlot) {
+        show(p, text, saved, recoveredSlot, null);
+    }
+
+    private void show(Path p, String text, String saved, String recoveredSlot, Path exampleOf) {
         stopReading();
+        example = exampleOf;
         loading = true;
         try {
             editor.setText(text);
@@ -245,18 +295,19 @@ final class FileActions {
     }
 
     boolean saveAs() {
-        FileDialog d = new FileDialog(shell, SWT.SAVE);
-        d.setFilterExtensions(new String[] {"*.xml", "*"});
-        d.setOverwrite(true);
-        d.setFileName(name());
-        d.setFilterPath(saveFolder(file, Examples.folder(), Path.of(System.getProperty("user.home"))).toString());
-        String p = d.open();
-        if (p == null) {
+        Path chosen = saveTarget.ask(saveFolder(file, Examples.folder(), Path.of(System.getProperty("user.home"))), fileName());
+        if (chosen == null) {
             return false;
         }
-        Path target = Path.of(p).toAbsolutePath().normalize();
+        Path target = chosen.toAbsolutePath().normalize();
+        if (example != null && target.equals(example)) {
+            MessageDialog.openError(shell, "Cannot save over the example", target + " is the example this text was copied"
+                    + " from; examples are never overwritten. Choose another name or folder.");
+            return false;
+        }
         if (write(target)) {
             file = target;
+            example = null;
             prefs.addRecent(target);
             changed.run();
             return true;
@@ -282,10 +333,7 @@ final class FileActions {
     private boolean write(Path target) {
         String text = editor.document().get();
         try {
-            Path dir = target.toAbsolutePath().getParent();
-            Path tmp = Files.createTempFile(dir, "." + target.getFileName(), ".tmp");
-            Files.writeString(tmp, text, StandardCharsets.UTF_8);
-            Files.move(tmp, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+            SafeSave.write(target, text);
             savedText = text;
             recovered = false;
             autosave.clear(slot);

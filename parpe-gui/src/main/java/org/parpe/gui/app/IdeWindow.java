@@ -21,6 +21,7 @@ import org.parpe.core.load.LoadResult;
 import org.parpe.core.model.Program;
 import org.parpe.gui.editor.ParslEditor;
 import org.parpe.gui.editor.Validator;
+import org.parpe.gui.grid.GridPane;
 import org.parpe.gui.panels.ControlPanel;
 import org.parpe.gui.panels.OutlineView;
 import org.parpe.gui.panels.PlotView;
@@ -40,6 +41,7 @@ public final class IdeWindow {
 
     private final Prefs prefs;
     private final ParslEditor editor;
+    private final GridPane gaitGrid;
     private final CTabItem editorTab;
     private final ProblemsView problems;
     private final CTabFolder bottom;
@@ -81,8 +83,9 @@ public final class IdeWindow {
         SashForm middle = new SashForm(main, SWT.VERTICAL);
         editorSplit = middle;
         CTabFolder editorFolder = Panels.folder(middle);
-        Composite editorBox = Panels.fill(editorFolder);
+        SashForm editorBox = new SashForm(editorFolder, SWT.HORIZONTAL);
         editor = new ParslEditor(editorBox);
+        gaitGrid = new GridPane(editorBox, editor);
         validator = new Validator(display, editor::setNames);
         editorTab = Panels.tab(editorFolder, "untitled.xml", editorBox);
         bottom = Panels.folder(middle);
@@ -110,6 +113,7 @@ public final class IdeWindow {
         Panels.tab(plotFolder, "Joint angles", plots.control());
         right.setWeights(54, 18, 28);
         main.setWeights(15, 43, 42);
+        gaitGrid.onShown(v -> main.setWeights(v ? new int[] {11, 61, 28} : new int[] {15, 43, 42}));
 
         status = new StatusBar(shell);
         status.control().setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
@@ -176,7 +180,7 @@ public final class IdeWindow {
             }
             var focus = e.display.getFocusControl();
             boolean typing = focus instanceof StyledText || focus instanceof org.eclipse.swt.widgets.Text
-                    || focus instanceof org.eclipse.swt.widgets.Combo;
+                    || focus instanceof org.eclipse.swt.widgets.Combo || gaitGrid.hasFocus();
             if (runs.running() && !typing && e.stateMask == 0 && controls.key(e)) {
                 e.doit = false;
             }
@@ -230,6 +234,7 @@ public final class IdeWindow {
     /** A different file is in the editor: forget what belonged to the previous one. */
     void fileSwitched() {
         program = null;
+        gaitGrid.setProgram(null);
         outline.show(null);
         controls.show(null);
         plots.setRecorder(null);
@@ -252,6 +257,7 @@ public final class IdeWindow {
         problems.setLoadDiagnostics(r.diagnostics());
         if (r.program() != null) {
             program = r.program();
+            gaitGrid.setProgram(program);
             outline.show(program);
             if (!runs.running()) {
                 controls.show(program);
@@ -269,8 +275,10 @@ public final class IdeWindow {
     /** The Problems view changed: mark this file's problems in the editor. */
     private void markProblems() {
         Path mine = files.pathForLoading().toAbsolutePath().normalize();
-        editor.setDiagnostics(problems.shown().stream().filter(d -> sameFile(d.pos(), mine))
-                .limit(ParslEditor.MARKER_LIMIT).toList());
+        List<Diagnostic> mineOnly = problems.shown().stream().filter(d -> sameFile(d.pos(), mine))
+                .limit(ParslEditor.MARKER_LIMIT).toList();
+        editor.setDiagnostics(mineOnly);
+        gaitGrid.setDiagnostics(mineOnly);
     }
 
     private static boolean sameFile(SourcePos p, Path mine) {
@@ -392,6 +400,11 @@ public final class IdeWindow {
 
     public ParslEditor editor() {
         return editor;
+    }
+
+    /** The gait-table grid beside the editor. */
+    public GridPane grid() {
+        return gaitGrid;
     }
 
     FileActions files() {

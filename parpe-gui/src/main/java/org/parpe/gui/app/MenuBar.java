@@ -104,14 +104,14 @@ final class MenuBar {
             none.setEnabled(false);
         }
         for (Path p : list) {
-            item(examples, p.getFileName().toString(), 0, () -> ide.files().openConfirmed(p));
+            item(examples, p.getFileName().toString(), 0, () -> ide.files().openExample(p));
         }
         List<Path> lessons = Examples.lessons();
         if (!lessons.isEmpty()) {
             new MenuItem(examples, SWT.SEPARATOR);
             Menu tutorial = submenu(examples, "&Tutorial lessons");
             for (Path p : lessons) {
-                item(tutorial, p.getFileName().toString(), 0, () -> ide.files().openConfirmed(p));
+                item(tutorial, p.getFileName().toString(), 0, () -> ide.files().openExample(p));
             }
         }
     }
@@ -136,6 +136,14 @@ final class MenuBar {
     /** Clipboard operations go to the text field that has the focus, else to the editor. */
     private void textOp(int op) {
         Control focus = ide.shell().getDisplay().getFocusControl();
+        if (ide.grid().hasFocus() && (op == ITextOperationTarget.COPY || op == ITextOperationTarget.PASTE)) {
+            if (op == ITextOperationTarget.COPY) {
+                ide.grid().copy();
+            } else {
+                ide.grid().paste();
+            }
+            return;
+        }
         if (focus instanceof Text t) {
             switch (op) {
                 case ITextOperationTarget.CUT -> t.cut();
@@ -214,6 +222,6 @@ final class MenuBar {
                     + " examples. It is also online with the PARPE sources, in docs/tutorial/index.md.");
             return;
         }
-        new TutorialWindow(ide.shell(), folder, p -> ide.files().openConfirmed(p)).open();
+        new TutorialWindow(ide.shell(), folder, p -> ide.files().openExample(p)).open();
     }
 }

@@ -1,0 +1,460 @@
+package org.parpe.gui.grid;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.eclipse.jface.text.BadLocationException;
+import org.eclipse.jface.text.DocumentEvent;
+import org.eclipse.jface.text.IDocumentListener;
+import org.eclipse.jface.window.Window;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.custom.SashForm;
+import org.eclipse.swt.dnd.Clipboard;
+import org.eclipse.swt.dnd.TextTransfer;
+import org.eclipse.swt.dnd.Transfer;
+import org.eclipse.swt.layout.GridData;
+import org.eclipse.swt.layout.GridLayout;
+import org.eclipse.swt.layout.RowLayout;
+import org.eclipse.swt.widgets.Button;
+import org.eclipse.swt.widgets.Combo;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Control;
+import org.eclipse.swt.widgets.Label;
+import org.eclipse.swt.widgets.Table;
+import org.parpe.core.diag.Diagnostic;
+import org.parpe.core.model.Program;
+import org.parpe.gui.editor.ParslEditor;
+import org.parpe.gui.grid.Fill.Selection;
+import org.parpe.gui.grid.TableEdits.At;
+
+/**
+ * The grid editor beside the text: when the script holds a gait table, the table is shown as a
+ * grid (rows = time steps, a column for the {@code times}, then one column per module of the
+ * group the table runs on) and kept in step with the text both ways. Every grid edit is one
+ * replacement of the table's own range in the editor's document, so the rest of the file keeps
+ * its comments and layout and Edit → Undo takes it back. Cells the script's diagnostics point
+ * into are tinted and carry the same message. Hidden while the script has no gait table. UI
+ * thread only.
+ */
+public final class GridPane implements GridView.Actions {
+    private static final String TIMES = "times";
+    /** The background of a cell with a problem (not selected). */
+    public static final org.eclipse.swt.graphics.Color INVALID = GridView.INVALID;
+
+    private final SashForm sash;
+    private final Control text;
+    private final ParslEditor editor;
+    private final Composite box;
+    private final Combo choice;
+    private final GridView grid;
+    private final Label status;
+    private final List<Button> commands = new ArrayList<>();
+    private List<GaitTable> tables = List.of();
+    private GaitTable table;
+    private String chosen;
+    private boolean stale;
+    private boolean pending;
+    private boolean following;
+    private Program program;
+    private List<Diagnostic> diagnostics = List.of();
+    private double amplitude = 15;
+    private double phaseStep = -0.125;
+    private java.util.function.Consumer<Boolean> shown = v -> { };
+
+    /** Adds the grid to {@code sash}, beside the editor's control (already in it). */
+    public GridPane(SashForm sash, ParslEditor editor) {
+        this.sash = sash;
+        this.editor = editor;
+        this.text = editor.viewer().getControl();
+        box = new Composite(sash, SWT.NONE);
+        GridLayout gl = new GridLayout(1, false);
+        gl.marginWidth = 2;
+        gl.marginHeight = 2;
+        box.setLayout(gl);
+        Composite bar = new Composite(box, SWT.NONE);
+        bar.setLayout(new RowLayout(SWT.HORIZONTAL));
+        bar.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        new Label(bar, SWT.NONE).setText("Gait table:");
+        choice = new Combo(bar, SWT.READ_ONLY);
+        choice.addListener(SWT.Selection, e -> {
+            chosen = choice.getText();
+            refresh();
+        });
+        command(bar, "+Row", "Add a copy of the focused row below it", this::insertRow);
+        command(bar, "\u2212Rows", "Remove the selected rows", this::deleteRows);
+        command(bar, "+Col", "Add a copy of the last selected module column after it", this::insertColumn);
+        command(bar, "\u2212Cols", "Remove the selected module columns", this::deleteColumns);
+        command(bar, "Wave\u2026", "Fill the selection with a travelling wave", this::askWave);
+        command(bar, "Paste", "Paste cells copied from a spreadsheet at the selection", this::paste);
+        grid = new GridView(box, this);
+        status = new Label(box, SWT.WRAP);
+        status.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        sash.setWeights(40, 60);
+        sash.setMaximizedControl(text);
+        editor.widget().addCaretListener(e -> caretAt(e.caretOffset));
+        editor.document().addDocumentListener(new IDocumentListener() {
+            @Override
+            public void documentAboutToBeChanged(DocumentEvent event) {
+            }
+
+            @Override
+            public void documentChanged(DocumentEvent event) {
+                refreshSoon();
+            }
+        });
+    }
+
+    private void command(Composite bar, String label, String tip, Runnable action) {
+        Button b = new Button(bar, SWT.PUSH);
+        b.setText(label);
+        b.setToolTipText(tip);
+        b.addListener(SWT.Selection, e -> action.run());
+        commands.add(b);
+    }
+
+    private void refreshSoon() {
+        if (!pending && !box.isDisposed()) {
+            pending = true;
+            box.getDisplay().asyncExec(() -> {
+                pending = false;
+                if (!box.isDisposed()) {
+                    refresh();
+                }
+            });
+        }
+    }
+
+    /** Reads the tables from the text again and shows the chosen one. */
+    void refresh() {
+        // A text over the colouring limit is not parsed at every keystroke: it shows no grid.
+        List<GaitTable> found = editor.document().getLength() > ParslEditor.COLOUR_LIMIT ? List.of()
+                : TableText.find(editor.document().get());
+        stale = found == null;
+        if (found != null) {
+            tables = found;
+        }
+        table = tables.stream().filter(t -> t.name().equals(chosen)).findFirst()
+                .orElse(tables.isEmpty() ? null : tables.get(0));
+        chosen = table == null ? null : table.name();
+        List<String> names = tables.stream().map(GaitTable::name).toList();
+        if (!names.equals(List.of(choice.getItems()))) {
+            choice.setItems(names.toArray(String[]::new));
+            choice.getParent().layout();
+        }
+        if (table == null) {
+            setShown(false);
+            return;
+        }
+        choice.select(names.indexOf(chosen));
+        setShown(true);
+        show();
+    }
+
+    private void show() {
+        List<Integer> modules = Modules.of(program, table.name());
+        int width = table.width();
+        int columns = width == 1 && modules != null ? 1 : Math.max(width, modules == null ? 0 : modules.size());
+        List<String> headers = new ArrayList<>();
+        headers.add(TIMES);
+        for (int c = 0; c < columns; c++) {
+            headers.add(width == 1 && modules != null ? "all" : modules != null && c < modules.size()
+                    ? Integer.toString(modules.get(c)) : "#" + (c + 1));
+        }
+        List<List<String>> rows = new ArrayList<>();
+        List<String> times = table.timeTexts();
+        for (int r = 0; r < table.rows().size(); r++) {
+            List<String> row = new ArrayList<>();
+            row.add(times == null ? "1" : r < times.size() ? times.get(r) : "");
+            row.addAll(table.texts().get(r));
+            rows.add(row);
+        }
+        Map<Long, String> problems = new HashMap<>();
+        List<String> others = new ArrayList<>();
+        CellProblems.place(editor.document(), table, diagnostics, problems, others);
+        boolean[] absent = new boolean[headers.size()];
+        absent[0] = times == null;
+        grid.show(headers, rows, problems, absent, editable());
+        for (Button b : commands) {
+            b.setEnabled(editable());
+        }
+        status.setText(describe(columns, modules != null, problems.size(), others));
+        box.layout();
+    }
+
+    private boolean editable() {
+        return table != null && table.readOnly() == null && !stale;
+    }
+
+    private String describe(int columns, boolean used, int bad, List<String> others) {
+        if (stale) {
+            return "The text is not well-formed XML just now: the grid shows the table as it last was.";
+        }
+        if (table.readOnly() != null) {
+            return "Read-only: " + table.readOnly() + ".";
+        }
+        StringBuilder s = new StringBuilder(table.name() + ": " + table.rows().size() + " rows \u00d7 " + columns
+                + (columns == 1 ? " column" : " columns") + (!used ? " (not used by a behavior: columns are entry positions)" : " (headers: module IDs)")
+                + (table.times() == null ? "; no times=\"\u2026\": the rows share the period equally" : ""));
+        if (bad > 0) {
+            s.append("\n").append(bad).append(bad == 1 ? " cell has a problem" : " cells have problems").append(" (tinted; point at one to read it)");
+        }
+        for (String o : others.subList(0, Math.min(3, others.size()))) {
+            s.append("\n").append(o);
+        }
+        return s.toString();
+    }
+
+    private void setShown(boolean v) {
+        if (v != (sash.getMaximizedControl() == null)) {
+            sash.setMaximizedControl(v ? null : text);
+            shown.accept(v);
+        }
+    }
+
+    /** {@code listener} learns when the grid appears beside the text (true) or goes (false). */
+    public void onShown(java.util.function.Consumer<Boolean> listener) {
+        shown = listener;
+    }
+
+    /** The program last loaded, for the modules of the table's group. */
+    public void setProgram(Program p) {
+        program = p;
+        refresh();
+    }
+
+    /** The diagnostics of this file (those the editor marks). */
+    public void setDiagnostics(List<Diagnostic> ds) {
+        diagnostics = List.copyOf(ds);
+        if (table != null) {
+            show();
+        }
+    }
+
+    /** Shows the gait table called {@code name}; false if the script has none of that name. */
+    public boolean showTable(String name) {
+        chosen = name;
+        refresh();
+        return table != null && table.name().equals(name);
+    }
+
+    /** The names of the script's gait tables, as last read from the text. */
+    public List<String> tableNames() {
+        return tables.stream().map(GaitTable::name).toList();
+    }
+
+    /** The table shown, as last read from the text, or {@code null}. */
+    public GaitTable table() {
+        return table;
+    }
+
+    /** Whether the grid is shown beside the text. */
+    public boolean visible() {
+        return table != null && sash.getMaximizedControl() == null;
+    }
+
+    /** The grid's table widget. */
+    public Table widget() {
+        return grid.control();
+    }
+
+    /** The in-place cell editor while one is open, else {@code null}. */
+    public org.eclipse.swt.widgets.Text cellEditor() {
+        return grid.editor();
+    }
+
+    /** Selects rows {@code r0..r1}, grid columns {@code c0..c1} (column 0 is the times, 1 the first module). */
+    public void select(int r0, int c0, int r1, int c1) {
+        grid.select(r0, c0, r1, c1);
+    }
+
+    /** The selection, in rows and grid columns. */
+    public Selection selection() {
+        return grid.selection();
+    }
+
+    /** The text of the status line under the grid. */
+    public String status() {
+        return status.getText();
+    }
+
+    /** Shows the focused cell's entry selected in the text. */
+    @Override
+    public void focused(int row, int column) {
+        if (table == null || row >= table.rows().size()) {
+            return;
+        }
+        Cell c = column == 0 ? (table.times() != null && row < table.times().size() ? table.times().get(row) : null)
+                : table.cell(row, column - 1);
+        if (c != null && c.end() <= editor.document().getLength()) {
+            following = true;
+            try {
+                editor.viewer().setSelectedRange(c.start(), c.end() - c.start());
+                editor.viewer().revealRange(c.start(), c.end() - c.start());
+            } finally {
+                following = false;
+            }
+        }
+    }
+
+    /** The caret moved in the text: show the table it is in, if another. */
+    private void caretAt(int offset) {
+        if (following) {
+            return;
+        }
+        for (GaitTable t : tables) {
+            if (offset >= t.attrInsert() && offset <= t.end() && !t.name().equals(chosen)) {
+                chosen = t.name();
+                refresh();
+                return;
+            }
+        }
+    }
+
+    @Override
+    public void edited(int row, int column, String value) {
+        apply(TableEdits.setCells(editor.document().get(), table, Map.of(at(row, column), value)));
+    }
+
+    private static At at(int row, int column) {
+        return column == 0 ? new At(TableEdits.TIMES, row) : new At(row, column - 1);
+    }
+
+    private void apply(Change ch) {
+        if (!editable() || ch.empty()) {
+            return;
+        }
+        try {
+            editor.document().replace(ch.offset(), ch.length(), ch.text());
+        } catch (BadLocationException e) {
+            status.setText("The text changed meanwhile; try again (" + e.getMessage() + ").");
+            return;
+        }
+        refresh();
+    }
+
+    /** Fills the selected module cells (all of them when one cell is selected) with a travelling wave. */
+    public void fillWave(double a, double phi) {
+        if (!editable()) {
+            return;
+        }
+        Map<At, String> cells = new LinkedHashMap<>();
+        Fill.wave(waveTarget(), a, phi).forEach((at, v) -> cells.put(new At(at.row(), at.column() - 1), v));
+        apply(TableEdits.setCells(editor.document().get(), table, cells));
+    }
+
+    private Selection waveTarget() {
+        Selection s = grid.selection();
+        if (s.rows() == 1 && s.columns() == 1 || s.c1() == 0) {
+            return new Selection(0, 1, table.rows().size() - 1, Math.max(1, table.width()));
+        }
+        return new Selection(s.r0(), Math.max(1, s.c0()), s.r1(), s.c1());
+    }
+
+    private void askWave() {
+        if (table == null) {
+            return;
+        }
+        Selection s = waveTarget();
+        WaveDialog d = new WaveDialog(box.getShell(), s.rows() + " rows \u00d7 " + s.columns() + " modules", amplitude, phaseStep);
+        if (d.open() == Window.OK) {
+            amplitude = d.amplitude();
+            phaseStep = d.phaseStep();
+            fillWave(amplitude, phaseStep);
+        }
+    }
+
+    /** Pastes {@code clip} (tab- or comma-separated lines) at the selection; returns how many cells fell outside. */
+    public int paste(String clip) {
+        if (!editable() || clip == null || clip.isBlank()) {
+            return 0;
+        }
+        int[] outside = {0};
+        Map<At, String> cells = new LinkedHashMap<>();
+        Fill.paste(clip, grid.selection(), table.rows().size(), Math.max(1, table.width()) + 1, outside)
+                .forEach((at, v) -> cells.put(at(at.row(), at.column()), v));
+        apply(TableEdits.setCells(editor.document().get(), table, cells));
+        if (outside[0] > 0) {
+            status.setText(status.getText() + "\n" + outside[0] + " pasted cell(s) fell outside the table and were left out.");
+        }
+        return outside[0];
+    }
+
+    @Override
+    public void paste() {
+        Clipboard cb = new Clipboard(box.getDisplay());
+        try {
+            paste((String) cb.getContents(TextTransfer.getInstance()));
+        } finally {
+            cb.dispose();
+        }
+    }
+
+    /** The selected cells as tab-separated lines, as a spreadsheet takes them. */
+    public String copyText() {
+        Selection s = grid.selection();
+        StringBuilder out = new StringBuilder();
+        List<String> times = table.timeTexts();
+        for (int r = s.r0(); r <= s.r1(); r++) {
+            for (int c = s.c0(); c <= s.c1(); c++) {
+                Cell cell = c == 0 ? null : table.cell(r, c - 1);
+                String v = c == 0 ? (times == null ? "1" : r < times.size() ? times.get(r) : "") : cell == null ? "" : cell.text();
+                out.append(c > s.c0() ? "\t" : "").append(v);
+            }
+            out.append('\n');
+        }
+        return out.toString();
+    }
+
+    @Override
+    public void copy() {
+        if (table == null) {
+            return;
+        }
+        Clipboard cb = new Clipboard(box.getDisplay());
+        try {
+            cb.setContents(new Object[] {copyText()}, new Transfer[] {TextTransfer.getInstance()});
+        } finally {
+            cb.dispose();
+        }
+    }
+
+    /** Adds a copy of the focused row below the selection. */
+    public void insertRow() {
+        Selection s = grid.selection();
+        if (editable()) {
+            apply(TableEdits.insertRow(editor.document().get(), table, s.r1() + 1, s.r1()));
+        }
+    }
+
+    /** Removes the selected rows (a table keeps one). */
+    public void deleteRows() {
+        Selection s = grid.selection();
+        if (editable()) {
+            apply(TableEdits.deleteRows(editor.document().get(), table, s.r0(), s.r1()));
+        }
+    }
+
+    /** Adds a copy of the last selected module column after it. */
+    public void insertColumn() {
+        Selection s = grid.selection();
+        if (editable()) {
+            int c = Math.max(0, s.c1() - 1);
+            apply(TableEdits.insertColumn(editor.document().get(), table, c + 1, c));
+        }
+    }
+
+    /** Removes the selected module columns (each row keeps one entry). */
+    public void deleteColumns() {
+        Selection s = grid.selection();
+        if (editable() && s.c1() >= 1) {
+            apply(TableEdits.deleteColumns(editor.document().get(), table, Math.max(0, s.c0() - 1), s.c1() - 1));
+        }
+    }
+
+    /** Whether the keyboard focus is in the grid (the Edit menu's clipboard items then act on it). */
+    public boolean hasFocus() {
+        return !grid.control().isDisposed() && grid.control().isFocusControl();
+    }
+}

@@ -1,0 +1,45 @@
+package org.parpe.gui.grid;
+
+import java.util.List;
+import org.parpe.core.model.BehaviorItem;
+import org.parpe.core.model.Conditional;
+import org.parpe.core.model.Group;
+import org.parpe.core.model.Instance;
+import org.parpe.core.model.Program;
+
+/** The modules a gait table drives: those of the first group it is applied to in the behaviors. */
+final class Modules {
+    private Modules() {
+    }
+
+    /** The module IDs of the group {@code automaton} first runs on, or {@code null} if it is used nowhere. */
+    static List<Integer> of(Program p, String automaton) {
+        if (p == null) {
+            return null;
+        }
+        for (var b : p.behaviors()) {
+            List<Integer> m = in(p, b.items(), automaton);
+            if (m != null) {
+                return m;
+            }
+        }
+        return null;
+    }
+
+    private static List<Integer> in(Program p, List<BehaviorItem> items, String automaton) {
+        for (BehaviorItem item : items) {
+            if (item instanceof Instance i && i.automaton().equals(automaton)) {
+                List<Integer> m = p.group(i.group()).map(Group::modules).orElse(null);
+                if (m != null) {
+                    return m;
+                }
+            } else if (item instanceof Conditional c) {
+                List<Integer> m = in(p, c.items(), automaton);
+                if (m != null) {
+                    return m;
+                }
+            }
+        }
+        return null;
+    }
+}

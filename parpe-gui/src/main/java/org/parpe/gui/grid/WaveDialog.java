@@ -1,0 +1,93 @@
+package org.parpe.gui.grid;
+
+import org.eclipse.jface.dialogs.Dialog;
+import org.eclipse.jface.dialogs.IDialogConstants;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.layout.GridData;
+import org.eclipse.swt.layout.GridLayout;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Control;
+import org.eclipse.swt.widgets.Label;
+import org.eclipse.swt.widgets.Shell;
+import org.eclipse.swt.widgets.Text;
+
+/** Asks for the amplitude and the phase step of a travelling wave; says which cells it will fill. */
+final class WaveDialog extends Dialog {
+    private final String target;
+    private double amplitude;
+    private double phaseStep;
+    private Text amplitudeText;
+    private Text phaseText;
+    private Label error;
+
+    WaveDialog(Shell parent, String target, double amplitude, double phaseStep) {
+        super(parent);
+        this.target = target;
+        this.amplitude = amplitude;
+        this.phaseStep = phaseStep;
+    }
+
+    @Override
+    protected void configureShell(Shell shell) {
+        super.configureShell(shell);
+        shell.setText("Fill with a travelling wave");
+    }
+
+    @Override
+    protected Control createDialogArea(Composite parent) {
+        Composite c = (Composite) super.createDialogArea(parent);
+        c.setLayout(new GridLayout(2, false));
+        Label about = new Label(c, SWT.WRAP);
+        about.setText("Fills " + target + " with A\u00b7sin(2\u03c0(r/rows + c\u00b7\u03c6)), r and c counted from the"
+                + " top-left selected cell, rounded to 0.1\u00b0.");
+        GridData wide = new GridData(SWT.FILL, SWT.TOP, true, false, 2, 1);
+        wide.widthHint = 380;
+        about.setLayoutData(wide);
+        amplitudeText = field(c, "Amplitude A (degrees):", amplitude);
+        phaseText = field(c, "Phase step \u03c6 (cycles per module):", phaseStep);
+        error = new Label(c, SWT.NONE);
+        error.setLayoutData(new GridData(SWT.FILL, SWT.TOP, true, false, 2, 1));
+        error.setForeground(parent.getDisplay().getSystemColor(SWT.COLOR_DARK_RED));
+        return c;
+    }
+
+    private static Text field(Composite c, String label, double value) {
+        new Label(c, SWT.NONE).setText(label);
+        Text t = new Text(c, SWT.BORDER);
+        t.setText(java.math.BigDecimal.valueOf(value).stripTrailingZeros().toPlainString());
+        t.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        return t;
+    }
+
+    @Override
+    protected void okPressed() {
+        Double a = number(amplitudeText.getText());
+        Double p = number(phaseText.getText());
+        if (a == null || p == null) {
+            error.setText((a == null ? "amplitude" : "phase step") + " must be a number, got '"
+                    + (a == null ? amplitudeText : phaseText).getText().trim() + "'");
+            getButton(IDialogConstants.OK_ID).getParent().layout();
+            return;
+        }
+        amplitude = a;
+        phaseStep = p;
+        super.okPressed();
+    }
+
+    private static Double number(String s) {
+        try {
+            double v = Double.parseDouble(s.trim());
+            return Double.isFinite(v) ? v : null;
+        } catch (NumberFormatException e) {
+            return null;
+        }
+    }
+
+    double amplitude() {
+        return amplitude;
+    }
+
+    double phaseStep() {
+        return phaseStep;
+    }
+}
