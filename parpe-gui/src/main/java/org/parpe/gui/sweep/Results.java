@@ -85,6 +85,16 @@ final class Results {
         return best;
     }
 
+    /** The number of {@code row} in the engine's order, from 1 (0 when it is not one of these rows). */
+    int number(SweepRow row) {
+        for (int i = 0; i < rows.size(); i++) {
+            if (rows.get(i) == row) {
+                return i + 1;
+            }
+        }
+        return 0;
+    }
+
     /** The parameter values of the best row, or an empty map. */
     Map<String, Double> bestValues() {
         SweepRow b = best();

@@ -91,6 +91,7 @@ public final class SweepDialog {
         apply.setToolTipText("Write the best run's values as the parameters' defaults into the editor (Edit > Undo takes them back)");
         save = button(bottom, "Save CSV\u2026", this::saveCsv);
         button(bottom, "Close", shell::close);
+        shell.setDefaultButton(start);
         wire();
     }
 
@@ -250,7 +251,7 @@ public final class SweepDialog {
             String head = cancelled ? "Stopped after " + all.size() + " of " + total + " runs. "
                     : "Finished " + all.size() + " runs. ";
             info(head + (best == null ? "No run was acceptable (see the error and fell columns)."
-                    : "Best: run " + (best.point().index() + 1) + ", " + values(best.values()) + ": "
+                    : "Best: run " + results.number(best) + ", " + values(best.values()) + ": "
                     + results.objective().label() + " " + ResultsTable.number(results.objective().of(best))
                     + (best.fell() ? " (its robot fell over)" : "")));
             apply.setEnabled(best != null);

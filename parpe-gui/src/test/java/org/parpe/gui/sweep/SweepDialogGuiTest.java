@@ -280,6 +280,9 @@ class SweepDialogGuiTest {
         assertEquals(direct.evaluations().stream().map(Evaluation::row).toList(), dialog.results().rows());
         assertEquals(6, dialog.table().control().getItemCount());
         assertEquals("N", dialog.table().control().getColumn(1).getText());
+        for (int i = 0; i < 6; i++) {
+            assertEquals(Integer.toString(i + 1), dialog.table().cell(i, 0), "evaluations are numbered in the engine's order");
+        }
         Evaluation best = direct.best().orElseThrow();
         assertEquals(best.row(), dialog.results().best());
         Ui.click(dialog.applyButton());
