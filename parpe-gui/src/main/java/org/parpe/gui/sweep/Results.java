@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.parpe.core.model.Numbers;
 import org.parpe.sim.sweep.Constraints;
 import org.parpe.sim.sweep.Objective;
 import org.parpe.sim.sweep.SweepRow;
@@ -99,5 +100,12 @@ final class Results {
     Map<String, Double> bestValues() {
         SweepRow b = best();
         return b == null ? Map.of() : new LinkedHashMap<>(b.values());
+    }
+
+    /** {@code values} as {@code name = value, ...}. */
+    static String describe(Map<String, Double> values) {
+        StringBuilder b = new StringBuilder();
+        values.forEach((k, v) -> b.append(b.length() == 0 ? "" : ", ").append(k).append(" = ").append(Numbers.format(v)));
+        return b.toString();
     }
 }
