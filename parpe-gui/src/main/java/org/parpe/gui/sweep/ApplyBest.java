@@ -7,7 +7,6 @@ import org.eclipse.jface.text.IDocument;
 import org.eclipse.jface.text.IRewriteTarget;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
-import org.parpe.core.model.Numbers;
 import org.parpe.core.model.Parameter;
 import org.parpe.gui.editor.ParslEditor;
 import org.parpe.sim.sweep.ParameterDefaults;
@@ -39,7 +38,6 @@ final class ApplyBest {
         if (r.program() == null) {
             throw new SweepException("the script has errors now (see Problems); fix them, then apply the best values");
         }
-        StringBuilder said = new StringBuilder();
         for (Map.Entry<String, Double> v : values.entrySet()) {
             Parameter p = r.program().parameters().stream().filter(q -> q.name().equals(v.getKey())).findFirst()
                     .orElseThrow(() -> new SweepException("parameter '" + v.getKey() + "' is no longer in the script"));
@@ -47,11 +45,10 @@ final class ApplyBest {
             if (problem != null) {
                 throw new SweepException(problem + " (the script's bounds changed since the run)");
             }
-            said.append(said.length() == 0 ? "" : ", ").append(v.getKey()).append(" = ").append(Numbers.format(v.getValue()));
         }
         String out = ParameterDefaults.rewrite(file, text, r.program().parameters(), values);
         replaceChanged(editor, text, out);
-        return said.toString();
+        return Results.describe(values);
     }
 
     /** Replaces the part of the document where {@code before} and {@code after} differ, as one undo step. */

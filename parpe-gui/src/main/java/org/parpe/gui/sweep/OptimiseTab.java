@@ -46,7 +46,7 @@ final class OptimiseTab {
         notFallen.setText("Not fallen over");
         notFallen.setSelection(true);
         notFallen.setLayoutData(new GridData(SWT.LEFT, SWT.CENTER, false, false, 2, 1));
-        note("accept only gaits whose robot stays up (tilt under 90\u00b0)");
+        note("accept only gaits whose robot stays up (tilt under " + Numbers.format(StartRequest.FALL_TILT) + "\u00b0)");
         new Label(root, SWT.NONE).setText("Seed:");
         seed = new Text(root, SWT.BORDER);
         seed.setText("0");

@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.parpe.core.model.Numbers;
 import org.parpe.sim.sweep.Constraints;
 import org.parpe.sim.sweep.Objective;
 import org.parpe.sim.sweep.SweepRow;
@@ -85,9 +86,26 @@ final class Results {
         return best;
     }
 
+    /** The number of {@code row} in the engine's order, from 1 (0 when it is not one of these rows). */
+    int number(SweepRow row) {
+        for (int i = 0; i < rows.size(); i++) {
+            if (rows.get(i) == row) {
+                return i + 1;
+            }
+        }
+        return 0;
+    }
+
     /** The parameter values of the best row, or an empty map. */
     Map<String, Double> bestValues() {
         SweepRow b = best();
         return b == null ? Map.of() : new LinkedHashMap<>(b.values());
+    }
+
+    /** {@code values} as {@code name = value, ...}. */
+    static String describe(Map<String, Double> values) {
+        StringBuilder b = new StringBuilder();
+        values.forEach((k, v) -> b.append(b.length() == 0 ? "" : ", ").append(k).append(" = ").append(Numbers.format(v)));
+        return b.toString();
     }
 }

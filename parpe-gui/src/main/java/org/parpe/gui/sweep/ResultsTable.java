@@ -2,7 +2,9 @@ package org.parpe.gui.sweep;
 
 import java.util.ArrayList;
 import java.util.Comparator;
+import java.util.IdentityHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Locale;
 import java.util.function.Function;
 import org.eclipse.swt.SWT;
@@ -23,6 +25,7 @@ final class ResultsTable {
     private final Table table;
     private final List<Column> columns = new ArrayList<>();
     private List<SweepRow> view = new ArrayList<>();
+    private final Map<SweepRow, Integer> place = new IdentityHashMap<>();
     private Results results;
     private Column sortedBy;
     private boolean descending;
@@ -51,8 +54,9 @@ final class ResultsTable {
         columns.clear();
         sortedBy = null;
         table.setSortColumn(null);
-        columns.add(new Column("run", row -> Integer.toString(row.point().index() + 1),
-                Comparator.comparingInt(row -> row.point().index())));
+        // The run's place in the engine's order: a sweep's run number, an optimisation's evaluation
+        // number (the point's own index restarts with each independent search).
+        columns.add(new Column("run", row -> Integer.toString(place.get(row) + 1), Comparator.comparingInt(place::get)));
         for (String p : r.parameters()) {
             columns.add(new Column(p, row -> value(row.values().get(p)),
                     Comparator.comparingDouble(row -> nanLast(row.values().get(p)))));
@@ -105,6 +109,10 @@ final class ResultsTable {
     /** Shows the rows now in the results (after rows arrived or the order changed). */
     void refresh() {
         List<SweepRow> rows = new ArrayList<>(results == null ? List.of() : results.rows());
+        place.clear();
+        for (int i = 0; i < rows.size(); i++) {
+            place.put(rows.get(i), i);
+        }
         if (sortedBy != null) {
             Comparator<SweepRow> order = descending ? sortedBy.order().reversed() : sortedBy.order();
             // Ties keep the engine's order, whichever the direction.

@@ -71,4 +71,11 @@ record StartRequest(Path file, String text, String robot, String duration, int j
         Results results = new Results(file, Results.Mode.OPTIMISE, names, objective, spec.constraints());
         return new Started(results, SweepRunner.optimise(display, s, spec, jobs, events), spec.budget());
     }
+
+    /** The engine's option names, as the dialog's boxes call them. */
+    static String words(String engineMessage) {
+        return engineMessage.replaceFirst("^--vary ", "").replace("--budget", "the budget")
+                .replace("--starts", "the number of searches").replace("--random COUNT", "a random sweep").replace("--random", "the random count")
+                .replace("--repeat", "runs per combination").replace("give at least one --vary NAME=A..B", "tick Vary");
+    }
 }

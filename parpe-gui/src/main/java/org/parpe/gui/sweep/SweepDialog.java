@@ -19,7 +19,6 @@ import org.eclipse.swt.widgets.TabFolder;
 import org.eclipse.swt.widgets.TabItem;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
-import org.parpe.core.model.Numbers;
 import org.parpe.core.model.Parameter;
 import org.parpe.sim.sweep.SweepRow;
 
@@ -60,6 +59,8 @@ public final class SweepDialog {
     private Results results;
     private SweepRunner runner;
     private int total;
+    /** Counts the starts, so that news of an earlier one can never reach the later one's table. */
+    private int generation;
 
     private SweepDialog(SweepHost host) {
         this.host = host;
@@ -83,7 +84,9 @@ public final class SweepDialog {
         counts = new Label(bar, SWT.NONE);
         counts.setLayoutData(new GridData(200, SWT.DEFAULT));
         message = new Label(shell, SWT.WRAP);
-        message.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        GridData wrap = new GridData(SWT.FILL, SWT.CENTER, true, false);
+        wrap.widthHint = 300;
+        message.setLayoutData(wrap);
 
         pane = new ResultsPane(shell);
         Composite bottom = row(shell, 3);
@@ -91,6 +94,7 @@ public final class SweepDialog {
         apply.setToolTipText("Write the best run's values as the parameters' defaults into the editor (Edit > Undo takes them back)");
         save = button(bottom, "Save CSV\u2026", this::saveCsv);
         button(bottom, "Close", shell::close);
+        shell.setDefaultButton(start);
         wire();
     }
 
@@ -191,14 +195,14 @@ public final class SweepDialog {
             StartRequest req = new StartRequest(host.script().get(), host.editor().document().get(), settings.robot().robot(),
                     settings.duration(), settings.jobs(), settings.objective());
             boolean sweeping = tabs.getSelectionIndex() == 0;
-            SweepRunner.Events events = new Events();
+            SweepRunner.Events events = new Events(++generation);
             StartRequest.Started s = sweeping ? req.sweep(now, sweepTab, shell.getDisplay(), events)
                     : req.optimise(now, optimiseTab, shell.getDisplay(), events);
             results = s.results();
             runner = s.runner();
             total = s.total();
         } catch (org.parpe.sim.sweep.SweepException e) {
-            error(words(e.getMessage()));
+            error(StartRequest.words(e.getMessage()));
             return;
         }
         pane.show(results);
@@ -209,18 +213,21 @@ public final class SweepDialog {
         setRunning(true);
     }
 
-    /** The engine's option names, as the dialog's boxes call them. */
-    private static String words(String engineMessage) {
-        return engineMessage.replaceFirst("^--vary ", "").replace("--budget", "the budget")
-                .replace("--starts", "the number of searches").replace("--random", "the random count")
-                .replace("--repeat", "runs per combination").replace("give at least one --vary NAME=A..B", "tick Vary");
-    }
-
     /** Receives the runner's news on the UI thread; ignores a runner that is no longer the current one. */
     private final class Events implements SweepRunner.Events {
+        private final int start;
+
+        Events(int start) {
+            this.start = start;
+        }
+
+        private boolean stale() {
+            return shell.isDisposed() || start != generation;
+        }
+
         @Override
         public void rows(List<SweepRow> rows, int done, int of) {
-            if (shell.isDisposed() || runner == null || results == null) {
+            if (stale()) {
                 return;
             }
             rows.forEach(results::add);
@@ -232,12 +239,12 @@ public final class SweepDialog {
 
         @Override
         public void finished(List<SweepRow> all, boolean cancelled, String error) {
-            if (shell.isDisposed()) {
+            if (stale()) {
                 return;
             }
             setRunning(false);
             if (error != null) {
-                error(words(error));
+                error(StartRequest.words(error));
                 return;
             }
             results.replace(all);
@@ -250,7 +257,7 @@ public final class SweepDialog {
             String head = cancelled ? "Stopped after " + all.size() + " of " + total + " runs. "
                     : "Finished " + all.size() + " runs. ";
             info(head + (best == null ? "No run was acceptable (see the error and fell columns)."
-                    : "Best: run " + (best.point().index() + 1) + ", " + values(best.values()) + ": "
+                    : "Best: run " + results.number(best) + ", " + Results.describe(best.values()) + ": "
                     + results.objective().label() + " " + ResultsTable.number(results.objective().of(best))
                     + (best.fell() ? " (its robot fell over)" : "")));
             apply.setEnabled(best != null);
@@ -258,16 +265,10 @@ public final class SweepDialog {
 
         @Override
         public void problems(List<org.parpe.core.diag.Diagnostic> problems) {
-            if (!shell.isDisposed()) {
+            if (!stale()) {
                 host.problems().accept(problems);
             }
         }
-    }
-
-    private static String values(Map<String, Double> values) {
-        StringBuilder b = new StringBuilder();
-        values.forEach((k, v) -> b.append(b.length() == 0 ? "" : ", ").append(k).append(" = ").append(Numbers.format(v)));
-        return b.toString();
     }
 
     private void stop() {

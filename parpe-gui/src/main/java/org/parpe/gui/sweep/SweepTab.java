@@ -112,6 +112,8 @@ final class SweepTab {
             none.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false, 6, 1));
         }
         lines.setSize(lines.computeSize(SWT.DEFAULT, SWT.DEFAULT));
+        // The same size as before would not lay the new lines out by itself.
+        lines.layout(true, true);
         scroller.setMinHeight(lines.getSize().y);
     }
 

@@ -219,6 +219,22 @@ class SweepDialogGuiTest {
     }
 
     @Test
+    void applyBestRefusesValuesThatNoLongerFitTheScript() {
+        org.parpe.sim.sweep.SweepException gone = org.junit.jupiter.api.Assertions.assertThrows(
+                org.parpe.sim.sweep.SweepException.class, () -> ApplyBest.apply(editor, file, Map.of("stride", 3.0)));
+        assertEquals("parameter 'stride' is no longer in the script", gone.getMessage());
+        editor.document().set(original.replace("value=\"35\"  min=\"0\"   max=\"60\"", "value=\"25\"  min=\"0\"   max=\"30\""));
+        org.parpe.sim.sweep.SweepException narrowed = org.junit.jupiter.api.Assertions.assertThrows(
+                org.parpe.sim.sweep.SweepException.class, () -> ApplyBest.apply(editor, file, Map.of("amp", 40.0)));
+        assertEquals("parameter 'amp' must be <= 30, got 40 (the script's bounds changed since the run)", narrowed.getMessage());
+        editor.document().set(original.replace("<main>", "<main"));
+        org.parpe.sim.sweep.SweepException broken = org.junit.jupiter.api.Assertions.assertThrows(
+                org.parpe.sim.sweep.SweepException.class, () -> ApplyBest.apply(editor, file, Map.of("amp", 40.0)));
+        assertTrue(broken.getMessage().startsWith("the script has errors now"), broken.getMessage());
+        assertEquals(original.replace("<main>", "<main"), editor.document().get(), "nothing was written");
+    }
+
+    @Test
     void badInputIsAMessageNotAnException() {
         vary("amp", "70", "80", 2);
         Ui.click(dialog.startButton());
@@ -280,6 +296,11 @@ class SweepDialogGuiTest {
         assertEquals(direct.evaluations().stream().map(Evaluation::row).toList(), dialog.results().rows());
         assertEquals(6, dialog.table().control().getItemCount());
         assertEquals("N", dialog.table().control().getColumn(1).getText());
+        for (int i = 0; i < 6; i++) {
+            assertEquals(Integer.toString(i + 1), dialog.table().cell(i, 0), "evaluations are numbered in the engine's order");
+        }
+        Ui.settle();
+        Ui.screenshot(dialog.shell(), "sweep-dialog-optimise.png");
         Evaluation best = direct.best().orElseThrow();
         assertEquals(best.row(), dialog.results().best());
         Ui.click(dialog.applyButton());
