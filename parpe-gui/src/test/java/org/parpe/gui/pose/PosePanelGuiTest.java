@@ -104,7 +104,12 @@ class PosePanelGuiTest {
     }
 
     private static void mouse(int type, int x, int y, int button) {
+        mouse(type, x, y, button, 0);
+    }
+
+    private static void mouse(int type, int x, int y, int button, int stateMask) {
         Event e = new Event();
+        e.stateMask = stateMask;
         e.x = x;
         e.y = y;
         e.button = button;
@@ -182,6 +187,7 @@ class PosePanelGuiTest {
         press("Up");
         assertArrayEquals(second, panel.poses().get(1).angles());
         assertTrue(panel.table().table().getItem(1).getText(1).equals("0.80"), "the list shows the new time");
+        assertEquals(List.of("3 poses of front"), panel.unsaved(), "closing the window would ask before losing them");
         IdeAccess.screenshot(ide.shell(), "pose-panel-posed.png");
     }
 
@@ -210,6 +216,7 @@ class PosePanelGuiTest {
         double[] times = RecordingWriter.rowTimes(panel.poses().toRecording());
         Path saved = dir.resolve("front-poses.xml");
         assertTrue(panel.output().save(saved), IdeAccess.status(ide));
+        assertTrue(panel.unsaved().isEmpty(), "saved poses are kept: " + panel.unsaved());
         openScript(saved);
         Traces trace = Traces.run(ide.program(), 10);
         int[] modules = {0, 1, 14, 15};
@@ -328,5 +335,21 @@ class PosePanelGuiTest {
         IdeAccess.screenshot(ide.shell(), "pose-panel-used-on-pairs.png");
         ide.editor().run(ITextOperationTarget.UNDO);
         assertEquals(before, ide.editor().document().get(), "one Undo should take the whole change back");
+    }
+
+    @Test
+    @Order(5)
+    void ctrlClickInThe3DViewPicksModulesToPose() {
+        View3D view = ide.view();
+        IdeAccess.pump(() -> panel.posingReady(), "the posed robot");
+        IdeAccess.settle();
+        int id = grabbable(view, 4, 5, 18, 19, 2, 3);
+        assertTrue(id >= 0, "no module of pair1 or pair2 under its own screen point");
+        Point p = view.screenPoint(id);
+        mouse(SWT.MouseDown, p.x, p.y, 1, SWT.MOD1);
+        mouse(SWT.MouseUp, p.x, p.y, 1, SWT.MOD1);
+        assertEquals(PosePanel.PICKED, panel.poses().group());
+        assertArrayEquals(new int[] {id}, panel.poses().modules());
+        assertNotNull(panel.sliders().scale(id), "a slider for the picked module");
     }
 }
