@@ -48,6 +48,7 @@ public final class PosePanel {
     private final Set<Integer> picked = new TreeSet<>();
     private final Map<PoseList, List<PoseList.Pose>> kept = new java.util.IdentityHashMap<>();
     private Program program;
+    private String robotChoice = "";
     private PoseList current;
     private long lastCapture;
     private volatile boolean shown;
@@ -423,6 +424,11 @@ public final class PosePanel {
         if (p != null && p != program) {
             programChanged(p);
         }
+        String choice = host.robotChoice();
+        if (!choice.equals(robotChoice) && program != null) {
+            sim.build(host.robotSpec(program), program.moduleIds());
+        }
+        robotChoice = choice;
         sim.setActive(posing());
     }
 

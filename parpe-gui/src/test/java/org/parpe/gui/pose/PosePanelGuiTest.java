@@ -352,4 +352,28 @@ class PosePanelGuiTest {
         assertArrayEquals(new int[] {id}, panel.poses().modules());
         assertNotNull(panel.sliders().scale(id), "a slider for the picked module");
     }
+
+    /** The documented {@code ./parpe gui examples/tutorial/01-recorded-leg-centipede.xml --pose-panel --screenshot …}. */
+    @Test
+    @Order(6)
+    void posePanelOptionShowsTheRecordedLegsPoses() throws Exception {
+        Path example = Path.of(System.getProperty("parpe.examples", "../examples"), "tutorial", "01-recorded-leg-centipede.xml");
+        assertTrue(Files.isRegularFile(example), "no " + example);
+        openScript(example);
+        Path shot = Path.of(System.getProperty("parpe.artefacts", "target/gui-test-artefacts"), "pose-panel-option.png");
+        Files.createDirectories(shot.getParent());
+        Files.deleteIfExists(shot);
+        org.parpe.gui.app.Automation.start(ide, new org.parpe.gui.LaunchOptions(example, -1, shot, false, false, true));
+        IdeAccess.pump(() -> Files.exists(shot), "the --pose-panel screenshot");
+        assertEquals("front", panel.poses().group());
+        // The earlier tests' poses of front stay; the recording's four are added after them and selected.
+        List<PoseList.Pose> all = panel.poses().poses();
+        assertTrue(all.size() >= 4, "the recording's four poses in the list");
+        List<PoseList.Pose> poses = all.subList(all.size() - 4, all.size());
+        assertArrayEquals(new double[] {-25, 20, -25, -60}, poses.get(0).angles());
+        assertArrayEquals(new double[] {25, -60, 25, 20}, poses.get(2).angles());
+        assertEquals(all.size() - 4, panel.table().selection(), "the first added pose is selected");
+        assertTrue(panel.posingReady());
+        assertEquals(-60, ide.view().lastSnapshot().angle(15), 6, "the posed robot stands in the first pose");
+    }
 }
