@@ -370,7 +370,7 @@ public final class IdeWindow {
     }
 
     boolean closeRequested() {
-        return files.confirmDiscard();
+        return files.confirmDiscard() && pose.confirmClose();
     }
 
     /** Appends a line to the Run log. */

@@ -37,6 +37,11 @@ final class PoseBridge implements PoseHost {
     }
 
     @Override
+    public String robotChoice() {
+        return ide.robotChoice();
+    }
+
+    @Override
     public String robotSpec(Program program) {
         String choice = ide.robotChoice();
         return SimTarget.AUTO.equals(choice) ? SimTarget.autoSpec(program) : choice;

@@ -18,6 +18,9 @@ public interface PoseHost {
     /** The last program of the editor that loaded, or null. */
     Program program();
 
+    /** The robot picker's choice ("auto", a generator name or a file): when it changes, the posed robot is rebuilt. */
+    String robotChoice();
+
     /** The simulated robot the IDE shows for {@code program} (the robot picker's choice, or "auto"'s). */
     String robotSpec(Program program);
 

@@ -172,6 +172,7 @@ final class PoseOutput {
             host.status("Cannot save " + file + ": " + e.getMessage());
             return false;
         }
+        panel.markKept(l);
         host.status("Saved " + l.size() + " poses of group " + l.group() + " to " + file + ".");
         return true;
     }
@@ -219,6 +220,7 @@ final class PoseOutput {
             host.status("Cannot change the script: " + e.getMessage());
             return null;
         }
+        panel.markKept(panel.poses());
         host.status("Added automaton " + r.automaton() + " and behavior " + r.behavior() + " playing it on "
                 + String.join(", ", request.targets()) + (r.mainAdded() ? ", run by <main>." : "; add it to <main> to run it."));
         return r;

@@ -46,7 +46,9 @@ public final class PosePanel {
     private final PoseSim sim;
     private final Map<String, PoseList> lists = new HashMap<>();
     private final Set<Integer> picked = new TreeSet<>();
+    private final Map<PoseList, List<PoseList.Pose>> kept = new java.util.IdentityHashMap<>();
     private Program program;
+    private String robotChoice = "";
     private PoseList current;
     private long lastCapture;
     private volatile boolean shown;
@@ -180,7 +182,7 @@ public final class PosePanel {
             }
             modules = g.modules().stream().mapToInt(Integer::intValue).toArray();
         }
-        String key = name + Arrays.toString(modules);
+        String key = name + (PICKED.equals(name) ? picked.toString() : Arrays.toString(modules));
         if (current != null && current == lists.get(key)) {
             return; // the script was validated again and this group did not change
         }
@@ -208,6 +210,12 @@ public final class PosePanel {
 
     /** Ctrl+click in the 3D view: adds module {@code id} to (or removes it from) the picked modules. */
     void pick(int id) {
+        PoseList was = lists.get(PICKED + picked);
+        if (was != null && was.size() > 0) {
+            // Its poses have an angle per picked module: another set of modules would leave them behind.
+            say("The picked modules " + picked + " have " + was.size() + " poses: save or delete them before picking others.");
+            return;
+        }
         if (!picked.remove(id)) {
             picked.add(id);
         }
@@ -309,6 +317,9 @@ public final class PosePanel {
         for (int i = 0; i < in.size(); i++) {
             current.add(in.get(i).angles(), in.get(i).interval());
         }
+        if (first == 0) {
+            markKept(current); // they are in the script already
+        }
         table.select(first);
         say(in.size() + " poses of group " + in.group() + " taken from the script.");
         return true;
@@ -326,6 +337,33 @@ public final class PosePanel {
                 }
             });
         }
+    }
+
+    /** Remembers that the poses of {@code list} as they are now are kept in a file or the script. */
+    void markKept(PoseList list) {
+        kept.put(list, list.poses());
+    }
+
+    /** Lists with poses that were changed since they were last saved or written into the script. */
+    public List<String> unsaved() {
+        List<String> out = new ArrayList<>();
+        for (PoseList l : lists.values()) {
+            if (l.size() > 0 && !l.poses().equals(kept.get(l))) {
+                out.add(l.size() + " poses of " + l.group());
+            }
+        }
+        return out;
+    }
+
+    /**
+     * Asks before the window closes with poses that were neither saved nor written into the
+     * script; true to close.
+     */
+    public boolean confirmClose() {
+        List<String> lost = unsaved();
+        return lost.isEmpty() || org.eclipse.jface.dialogs.MessageDialog.openQuestion(box.getShell(), "Unsaved poses",
+                "The Pose panel has " + String.join(", ", lost) + " that are not saved (Save recording\u2026 or "
+                        + "Use on another group\u2026). Close and lose them?");
     }
 
     /** Whether the posed robot is built and shown (the 3D view follows the sliders). */
@@ -386,6 +424,11 @@ public final class PosePanel {
         if (p != null && p != program) {
             programChanged(p);
         }
+        String choice = host.robotChoice();
+        if (!choice.equals(robotChoice) && program != null) {
+            sim.build(host.robotSpec(program), program.moduleIds());
+        }
+        robotChoice = choice;
         sim.setActive(posing());
     }
 

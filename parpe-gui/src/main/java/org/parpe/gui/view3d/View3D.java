@@ -18,6 +18,8 @@ import org.parpe.sim.Vec3;
  * canvas at about 30 frames a second. Left drag orbits, right (or Shift+left, or middle) drag
  * pans, the wheel zooms; TrackRobot keeps the robot's centre of mass in the middle. The
  * snapshot is pulled from a supplier on the UI thread's timer, never pushed by the engine.
+ * While a {@link JointDrag} is set (the Pose panel), a left drag on a module turns its joint
+ * and Ctrl+click picks modules.
  */
 public final class View3D {
     private static final int FRAME_MS = 33;

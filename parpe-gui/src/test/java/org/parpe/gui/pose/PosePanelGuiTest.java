@@ -104,7 +104,12 @@ class PosePanelGuiTest {
     }
 
     private static void mouse(int type, int x, int y, int button) {
+        mouse(type, x, y, button, 0);
+    }
+
+    private static void mouse(int type, int x, int y, int button, int stateMask) {
         Event e = new Event();
+        e.stateMask = stateMask;
         e.x = x;
         e.y = y;
         e.button = button;
@@ -182,6 +187,7 @@ class PosePanelGuiTest {
         press("Up");
         assertArrayEquals(second, panel.poses().get(1).angles());
         assertTrue(panel.table().table().getItem(1).getText(1).equals("0.80"), "the list shows the new time");
+        assertEquals(List.of("3 poses of front"), panel.unsaved(), "closing the window would ask before losing them");
         IdeAccess.screenshot(ide.shell(), "pose-panel-posed.png");
     }
 
@@ -210,6 +216,7 @@ class PosePanelGuiTest {
         double[] times = RecordingWriter.rowTimes(panel.poses().toRecording());
         Path saved = dir.resolve("front-poses.xml");
         assertTrue(panel.output().save(saved), IdeAccess.status(ide));
+        assertTrue(panel.unsaved().isEmpty(), "saved poses are kept: " + panel.unsaved());
         openScript(saved);
         Traces trace = Traces.run(ide.program(), 10);
         int[] modules = {0, 1, 14, 15};
@@ -328,5 +335,45 @@ class PosePanelGuiTest {
         IdeAccess.screenshot(ide.shell(), "pose-panel-used-on-pairs.png");
         ide.editor().run(ITextOperationTarget.UNDO);
         assertEquals(before, ide.editor().document().get(), "one Undo should take the whole change back");
+    }
+
+    @Test
+    @Order(5)
+    void ctrlClickInThe3DViewPicksModulesToPose() {
+        View3D view = ide.view();
+        IdeAccess.pump(() -> panel.posingReady(), "the posed robot");
+        IdeAccess.settle();
+        int id = grabbable(view, 4, 5, 18, 19, 2, 3);
+        assertTrue(id >= 0, "no module of pair1 or pair2 under its own screen point");
+        Point p = view.screenPoint(id);
+        mouse(SWT.MouseDown, p.x, p.y, 1, SWT.MOD1);
+        mouse(SWT.MouseUp, p.x, p.y, 1, SWT.MOD1);
+        assertEquals(PosePanel.PICKED, panel.poses().group());
+        assertArrayEquals(new int[] {id}, panel.poses().modules());
+        assertNotNull(panel.sliders().scale(id), "a slider for the picked module");
+    }
+
+    /** The documented {@code ./parpe gui examples/tutorial/01-recorded-leg-centipede.xml --pose-panel --screenshot …}. */
+    @Test
+    @Order(6)
+    void posePanelOptionShowsTheRecordedLegsPoses() throws Exception {
+        Path example = Path.of(System.getProperty("parpe.examples", "../examples"), "tutorial", "01-recorded-leg-centipede.xml");
+        assertTrue(Files.isRegularFile(example), "no " + example);
+        openScript(example);
+        Path shot = Path.of(System.getProperty("parpe.artefacts", "target/gui-test-artefacts"), "pose-panel-option.png");
+        Files.createDirectories(shot.getParent());
+        Files.deleteIfExists(shot);
+        org.parpe.gui.app.Automation.start(ide, new org.parpe.gui.LaunchOptions(example, -1, shot, false, false, true));
+        IdeAccess.pump(() -> Files.exists(shot), "the --pose-panel screenshot");
+        assertEquals("front", panel.poses().group());
+        // The earlier tests' poses of front stay; the recording's four are added after them and selected.
+        List<PoseList.Pose> all = panel.poses().poses();
+        assertTrue(all.size() >= 4, "the recording's four poses in the list");
+        List<PoseList.Pose> poses = all.subList(all.size() - 4, all.size());
+        assertArrayEquals(new double[] {-25, 20, -25, -60}, poses.get(0).angles());
+        assertArrayEquals(new double[] {25, -60, 25, 20}, poses.get(2).angles());
+        assertEquals(all.size() - 4, panel.table().selection(), "the first added pose is selected");
+        assertTrue(panel.posingReady());
+        assertEquals(-60, ide.view().lastSnapshot().angle(15), 6, "the posed robot stands in the first pose");
     }
 }
