@@ -56,6 +56,8 @@ final class GridView {
     private int focusRow;
     private int focusCol;
     private Text text;
+    private int editRow;
+    private int editCol;
 
     GridView(Composite parent, Actions actions) {
         this.actions = actions;
@@ -107,7 +109,11 @@ final class GridView {
      */
     void show(List<String> headers, List<List<String>> rows, Map<Long, String> problems, boolean[] absentColumns,
               boolean editable) {
-        cancelEdit();
+        // A cell being typed into stays open (a validation finishing must not drop the typing)
+        // unless its cell is gone.
+        if (!editable || editRow >= rows.size() || editCol >= headers.size()) {
+            cancelEdit();
+        }
         this.cells = rows;
         this.problems = problems;
         this.absent = absentColumns;
@@ -265,6 +271,8 @@ final class GridView {
         select(row, column, row, column);
         Text t = new Text(table, SWT.SINGLE | SWT.RIGHT);
         text = t;
+        editRow = row;
+        editCol = column;
         String old = column < cells.get(row).size() ? cells.get(row).get(column) : "";
         t.setText(initial != null ? initial : old);
         t.setSelection(initial != null ? t.getText().length() : 0, t.getText().length());

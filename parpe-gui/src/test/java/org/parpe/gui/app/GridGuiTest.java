@@ -165,6 +165,9 @@ class GridGuiTest {
         Text cell = grid().cellEditor();
         assertNotNull(cell, "F2 opens the cell editor");
         cell.setText("$nowhere");
+        grid().setDiagnostics(ide.problems().shown());
+        assertTrue(cell == grid().cellEditor() && "$nowhere".equals(cell.getText()),
+                "a validation result arriving while a cell is typed into must not drop the typing");
         cell.notifyListeners(SWT.DefaultSelection, new Event());
         Gui.pump(() -> ide.problems().errorCount() > 0 && grid().widget().getItem(2).getBackground(5).equals(GridPane.INVALID),
                 "the bad cell to be tinted");
@@ -209,6 +212,10 @@ class GridGuiTest {
         grid().widget().notifyListeners(SWT.KeyDown, paste);
         Gui.pump(() -> "4".equals(grid().widget().getItem(7).getText(3)), "the pasted cells");
         assertEquals("1", grid().table().cell(6, 0).text());
+        assertEquals(0, grid().paste("1,5\t7"), "nothing falls outside");
+        assertEquals("7", grid().table().cell(6, 1).text());
+        assertEquals("1", grid().table().cell(6, 0).text(), "a decimal comma would split the entry: left out");
+        assertTrue(grid().status().contains("1 entry was left out"), grid().status());
         grid().select(0, 1, 7, 12);
         Gui.screenshot(ide.shell(), "grid-wave.png");
     }
