@@ -120,21 +120,7 @@ final class GridView {
         this.editable = editable;
         table.setRedraw(false);
         try {
-            // The step numbers, a column per grid column, and an empty one that takes the room
-            // left (GTK stretches the last column; the last module's should look like the others).
-            while (table.getColumnCount() > headers.size() + 2) {
-                table.getColumn(table.getColumnCount() - 1).dispose();
-            }
-            while (table.getColumnCount() < headers.size() + 2) {
-                new TableColumn(table, SWT.RIGHT);
-            }
-            table.getColumn(0).setText("Step");
-            table.getColumn(0).setToolTipText("Row: the time step");
-            for (int i = 0; i < headers.size(); i++) {
-                table.getColumn(i + 1).setText(headers.get(i));
-                table.getColumn(i + 1).setToolTipText(i == 0 ? "times: the row's share of the period (relative duration)"
-                        : "module " + headers.get(i));
-            }
+            setColumns(headers);
             table.setItemCount(rows.size());
             for (int r = 0; r < rows.size(); r++) {
                 TableItem it = table.getItem(r);
@@ -143,8 +129,6 @@ final class GridView {
                     it.setText(c + 1, c < rows.get(r).size() ? rows.get(r).get(c) : "");
                 }
             }
-            table.getColumn(headers.size() + 1).setText("");
-            table.getColumn(headers.size() + 1).setWidth(1);
             for (int i = 0; i <= headers.size(); i++) {
                 TableColumn c = table.getColumn(i);
                 c.pack();
@@ -158,6 +142,30 @@ final class GridView {
         } finally {
             table.setRedraw(true);
         }
+    }
+
+    /**
+     * The step numbers, a column per grid column, and an empty one that takes the room left
+     * (GTK stretches the last column; the last module's should look like the others).
+     */
+    private void setColumns(List<String> headers) {
+        while (table.getColumnCount() > headers.size() + 2) {
+            table.getColumn(table.getColumnCount() - 1).dispose();
+        }
+        while (table.getColumnCount() < headers.size() + 2) {
+            new TableColumn(table, SWT.RIGHT);
+        }
+        table.getColumn(0).setText("Step");
+        table.getColumn(0).setToolTipText("Row: the time step");
+        for (int i = 0; i < headers.size(); i++) {
+            String h = headers.get(i);
+            table.getColumn(i + 1).setText(h);
+            table.getColumn(i + 1).setToolTipText(i == 0 ? "times: the row's share of the period (relative duration)"
+                    : h.chars().allMatch(Character::isDigit) ? "module " + h : null);
+        }
+        TableColumn filler = table.getColumn(headers.size() + 1);
+        filler.setText("");
+        filler.setWidth(1);
     }
 
     private static int clamp(int v, int n) {
