@@ -5,6 +5,7 @@ import java.util.Map;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.custom.TableEditor;
 import org.eclipse.swt.graphics.Color;
+import org.eclipse.swt.graphics.GC;
 import org.eclipse.swt.graphics.Point;
 import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.widgets.Composite;
@@ -27,7 +28,9 @@ final class GridView {
     static final Color INVALID = new Color(0xF8, 0xC8, 0xC8);
     static final Color INVALID_SELECTED = new Color(0xE8, 0xB0, 0xC8);
     static final Color ABSENT = new Color(0xEE, 0xEE, 0xEE);
-    private static final int MIN_WIDTH = 34;
+    private static final int MIN_WIDTH = 30;
+    /** Room around a column's text: cell margins and the header's sort/resize area. */
+    private static final int PADDING = 12;
 
     /** What the grid asks its owner to do. */
     interface Actions {
@@ -129,11 +132,8 @@ final class GridView {
                     it.setText(c + 1, c < rows.get(r).size() ? rows.get(r).get(c) : "");
                 }
             }
-            for (int i = 0; i <= headers.size(); i++) {
-                TableColumn c = table.getColumn(i);
-                c.pack();
-                c.setWidth(Math.max(c.getWidth(), MIN_WIDTH));
-            }
+            fitColumns(headers, rows);
+            table.setToolTipText(null);
             focusRow = clamp(focusRow, rows.size());
             anchorRow = clamp(anchorRow, rows.size());
             focusCol = clamp(focusCol, headers.size());
@@ -141,6 +141,29 @@ final class GridView {
             paint();
         } finally {
             table.setRedraw(true);
+        }
+    }
+
+    /** Makes each column as wide as its widest text (header or cell), at least {@value #MIN_WIDTH} pixels. */
+    private void fitColumns(List<String> headers, List<List<String>> rows) {
+        GC gc = new GC(table);
+        try {
+            int[] w = new int[headers.size() + 1];
+            w[0] = gc.textExtent("Step").x;
+            for (int c = 0; c < headers.size(); c++) {
+                w[c + 1] = gc.textExtent(headers.get(c)).x;
+            }
+            for (int r = 0; r < rows.size(); r++) {
+                w[0] = Math.max(w[0], gc.textExtent(Integer.toString(r)).x);
+                for (int c = 0; c < Math.min(headers.size(), rows.get(r).size()); c++) {
+                    w[c + 1] = Math.max(w[c + 1], gc.textExtent(rows.get(r).get(c)).x);
+                }
+            }
+            for (int i = 0; i < w.length; i++) {
+                table.getColumn(i).setWidth(Math.max(MIN_WIDTH, w[i] + PADDING));
+            }
+        } finally {
+            gc.dispose();
         }
     }
 
@@ -165,7 +188,7 @@ final class GridView {
         }
         TableColumn filler = table.getColumn(headers.size() + 1);
         filler.setText("");
-        filler.setWidth(1);
+        filler.setWidth(12);
     }
 
     private static int clamp(int v, int n) {
