@@ -278,6 +278,16 @@ class GridGuiTest {
         ide.editor().run(ITextOperationTarget.UNDO);
         assertEquals(before, ide.editor().document().get(), "two Undos should restore the text");
         Gui.pump(() -> grid().widget().getItemCount() == 8, "the grid to show the 8 rows again");
+
+        click(3, 5, 0);
+        button("\u2212Cols").notifyListeners(SWT.Selection, new Event());
+        Gui.pump(() -> grid().table().width() == 11, "a module column fewer");
+        assertEquals(14, grid().widget().getColumnCount() - 1, "the 12 modules of the group stay as columns");
+        assertEquals("", grid().widget().getItem(0).getText(13), "module 12 has no entry now");
+        Gui.pump(() -> grid().status().contains("has 11 angles but group 'snake' has 12 modules"),
+                "the row-length error of the script under the grid; it says: " + grid().status());
+        ide.editor().run(ITextOperationTarget.UNDO);
+        assertEquals(before, ide.editor().document().get(), "Undo should restore the column");
     }
 
     @Test
