@@ -40,6 +40,8 @@ import org.parpe.gui.grid.TableEdits.At;
  */
 public final class GridPane implements GridView.Actions {
     private static final String TIMES = "times";
+    private static final int QUICK_CHARS = 200_000;
+    private static final int PAUSE_MS = 300;
     /** The background of a cell with a problem (not selected). */
     public static final org.eclipse.swt.graphics.Color INVALID = GridView.INVALID;
 
@@ -114,15 +116,26 @@ public final class GridPane implements GridView.Actions {
         commands.add(b);
     }
 
+    /**
+     * Reads the text again once the current event is handled; a text over
+     * {@value #QUICK_CHARS} characters (reading it takes longer than a keystroke should) is
+     * read {@value #PAUSE_MS} ms after a change, with the changes made meanwhile.
+     */
     private void refreshSoon() {
-        if (!pending && !box.isDisposed()) {
-            pending = true;
-            box.getDisplay().asyncExec(() -> {
-                pending = false;
-                if (!box.isDisposed()) {
-                    refresh();
-                }
-            });
+        if (pending || box.isDisposed()) {
+            return;
+        }
+        pending = true;
+        Runnable r = () -> {
+            pending = false;
+            if (!box.isDisposed()) {
+                refresh();
+            }
+        };
+        if (editor.document().getLength() > QUICK_CHARS) {
+            box.getDisplay().timerExec(PAUSE_MS, r);
+        } else {
+            box.getDisplay().asyncExec(r);
         }
     }
 
