@@ -19,7 +19,7 @@ import org.parpe.gui.grid.Fill.Selection;
 /**
  * The grid widget: an SWT table whose first column numbers the rows, then one column per grid
  * column (the times, then the modules). Cells are selected as a rectangle (click, shift-click,
- * drag, arrow keys with or without shift) and edited in place (double-click, Enter, F2 or simply
+ * drag, arrow keys with or without shift; a click on a step number takes the row's modules) and edited in place (double-click, Enter, F2 or simply
  * typing; Enter or Tab commits, Esc cancels). Cells with a problem are tinted and show the
  * problem as a tooltip. UI thread only.
  */
@@ -250,8 +250,18 @@ final class GridView {
     }
 
     private void mouseDown(Event e) {
+        if (e.button != 1) {
+            return;
+        }
+        TableItem item = table.getItem(new Point(e.x, e.y));
+        if (item != null && item.getBounds(0).contains(e.x, e.y) && columns() > 1) {
+            // The step number selects the row's module cells (shift: down to this row).
+            int row = table.indexOf(item);
+            select((e.stateMask & SWT.SHIFT) != 0 ? anchorRow : row, 1, row, columns() - 1);
+            return;
+        }
         Point cell = cellAt(e.x, e.y);
-        if (cell == null || e.button != 1) {
+        if (cell == null) {
             return;
         }
         if ((e.stateMask & SWT.SHIFT) != 0) {

@@ -270,8 +270,10 @@ class GridGuiTest {
         String after = ide.editor().document().get();
         assertEquals(before.substring(0, before.indexOf("<travel>")), after.substring(0, after.indexOf("<travel>")),
                 "the text before the table is unchanged");
-        click(0, 3, 0);
-        click(1, 3, SWT.SHIFT);
+        click(0, 0, 0);
+        click(1, 0, SWT.SHIFT);
+        assertEquals(new org.parpe.gui.grid.Fill.Selection(0, 1, 1, 12), grid().selection(),
+                "clicking step numbers selects the rows' module cells");
         button("\u2212Rows").notifyListeners(SWT.Selection, new Event());
         Gui.pump(() -> grid().widget().getItemCount() == 7, "two rows fewer");
         ide.editor().run(ITextOperationTarget.UNDO);
