@@ -122,7 +122,8 @@ public final class Automation {
                     + (grid.table() == null ? " (it has none)" : " (its first is '" + grid.table().name() + "')"));
             return;
         }
-        grid.select(0, 1, grid.table().rows().size() - 1, Math.max(1, grid.table().width()));
+        // Focus (and the entry selected in the text) on the first cell, the selection to the last.
+        grid.select(grid.table().rows().size() - 1, Math.max(1, grid.table().width()), 0, 1);
     }
 
     /** Stops a run that takes far longer than it should (a stuck plant) so that --exit always exits. */

@@ -40,6 +40,8 @@ import org.parpe.gui.grid.TableEdits.At;
  */
 public final class GridPane implements GridView.Actions {
     private static final String TIMES = "times";
+    private static final int QUICK_CHARS = 200_000;
+    private static final int PAUSE_MS = 300;
     /** The background of a cell with a problem (not selected). */
     public static final org.eclipse.swt.graphics.Color INVALID = GridView.INVALID;
 
@@ -114,15 +116,26 @@ public final class GridPane implements GridView.Actions {
         commands.add(b);
     }
 
+    /**
+     * Reads the text again once the current event is handled; a text over
+     * {@value #QUICK_CHARS} characters (reading it takes longer than a keystroke should) is
+     * read {@value #PAUSE_MS} ms after a change, with the changes made meanwhile.
+     */
     private void refreshSoon() {
-        if (!pending && !box.isDisposed()) {
-            pending = true;
-            box.getDisplay().asyncExec(() -> {
-                pending = false;
-                if (!box.isDisposed()) {
-                    refresh();
-                }
-            });
+        if (pending || box.isDisposed()) {
+            return;
+        }
+        pending = true;
+        Runnable r = () -> {
+            pending = false;
+            if (!box.isDisposed()) {
+                refresh();
+            }
+        };
+        if (editor.document().getLength() > QUICK_CHARS) {
+            box.getDisplay().timerExec(PAUSE_MS, r);
+        } else {
+            box.getDisplay().asyncExec(r);
         }
     }
 
@@ -314,11 +327,44 @@ public final class GridPane implements GridView.Actions {
 
     @Override
     public void edited(int row, int column, String value) {
-        apply(TableEdits.setCells(editor.document().get(), table, Map.of(at(row, column), value)));
+        int[] dropped = {0};
+        apply(TableEdits.setCells(editor.document().get(), table, single(Map.of(at(row, column), value), dropped)));
+        note(dropped[0], 0);
     }
 
     private static At at(int row, int column) {
         return column == 0 ? new At(TableEdits.TIMES, row) : new At(row, column - 1);
+    }
+
+    /**
+     * Drops the values that hold a top-level {@code ,} or {@code ;} (they would split the entry
+     * or the row: e.g. a decimal comma from a spreadsheet), counting them in {@code dropped}.
+     */
+    private static Map<At, String> single(Map<At, String> values, int[] dropped) {
+        Map<At, String> out = new LinkedHashMap<>();
+        for (var e : values.entrySet()) {
+            String v = e.getValue();
+            if (Split.parts(v, 0, v.length(), ',').size() > 1 || Split.parts(v, 0, v.length(), ';').size() > 1) {
+                dropped[0]++;
+            } else {
+                out.put(e.getKey(), v);
+            }
+        }
+        return out;
+    }
+
+    /** Adds to the status line what an edit left out. */
+    private void note(int dropped, int outside) {
+        String s = status.getText();
+        if (dropped > 0) {
+            s += "\n" + dropped + (dropped == 1 ? " entry was" : " entries were") + " left out: an entry cannot hold"
+                    + " ',' or ';' outside parentheses (write decimals with a point: 1.5).";
+        }
+        if (outside > 0) {
+            s += "\n" + outside + " pasted cell(s) fell outside the table and were left out.";
+        }
+        status.setText(s);
+        box.layout();
     }
 
     private void apply(Change ch) {
@@ -374,10 +420,9 @@ public final class GridPane implements GridView.Actions {
         Map<At, String> cells = new LinkedHashMap<>();
         Fill.paste(clip, grid.selection(), table.rows().size(), Math.max(1, table.width()) + 1, outside)
                 .forEach((at, v) -> cells.put(at(at.row(), at.column()), v));
-        apply(TableEdits.setCells(editor.document().get(), table, cells));
-        if (outside[0] > 0) {
-            status.setText(status.getText() + "\n" + outside[0] + " pasted cell(s) fell outside the table and were left out.");
-        }
+        int[] dropped = {0};
+        apply(TableEdits.setCells(editor.document().get(), table, single(cells, dropped)));
+        note(dropped[0], outside[0]);
         return outside[0];
     }
 

@@ -5,6 +5,7 @@ import java.util.Map;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.custom.TableEditor;
 import org.eclipse.swt.graphics.Color;
+import org.eclipse.swt.graphics.GC;
 import org.eclipse.swt.graphics.Point;
 import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.widgets.Composite;
@@ -18,7 +19,7 @@ import org.parpe.gui.grid.Fill.Selection;
 /**
  * The grid widget: an SWT table whose first column numbers the rows, then one column per grid
  * column (the times, then the modules). Cells are selected as a rectangle (click, shift-click,
- * drag, arrow keys with or without shift) and edited in place (double-click, Enter, F2 or simply
+ * drag, arrow keys with or without shift; a click on a step number takes the row's modules) and edited in place (double-click, Enter, F2 or simply
  * typing; Enter or Tab commits, Esc cancels). Cells with a problem are tinted and show the
  * problem as a tooltip. UI thread only.
  */
@@ -27,7 +28,9 @@ final class GridView {
     static final Color INVALID = new Color(0xF8, 0xC8, 0xC8);
     static final Color INVALID_SELECTED = new Color(0xE8, 0xB0, 0xC8);
     static final Color ABSENT = new Color(0xEE, 0xEE, 0xEE);
-    private static final int MIN_WIDTH = 34;
+    private static final int MIN_WIDTH = 30;
+    /** Room around a column's text: cell margins and the header's sort/resize area. */
+    private static final int PADDING = 12;
 
     /** What the grid asks its owner to do. */
     interface Actions {
@@ -56,6 +59,8 @@ final class GridView {
     private int focusRow;
     private int focusCol;
     private Text text;
+    private int editRow;
+    private int editCol;
 
     GridView(Composite parent, Actions actions) {
         this.actions = actions;
@@ -107,28 +112,18 @@ final class GridView {
      */
     void show(List<String> headers, List<List<String>> rows, Map<Long, String> problems, boolean[] absentColumns,
               boolean editable) {
-        cancelEdit();
+        // A cell being typed into stays open (a validation finishing must not drop the typing)
+        // unless its cell is gone.
+        if (!editable || editRow >= rows.size() || editCol >= headers.size()) {
+            cancelEdit();
+        }
         this.cells = rows;
         this.problems = problems;
         this.absent = absentColumns;
         this.editable = editable;
         table.setRedraw(false);
         try {
-            // The step numbers, a column per grid column, and an empty one that takes the room
-            // left (GTK stretches the last column; the last module's should look like the others).
-            while (table.getColumnCount() > headers.size() + 2) {
-                table.getColumn(table.getColumnCount() - 1).dispose();
-            }
-            while (table.getColumnCount() < headers.size() + 2) {
-                new TableColumn(table, SWT.RIGHT);
-            }
-            table.getColumn(0).setText("Step");
-            table.getColumn(0).setToolTipText("Row: the time step");
-            for (int i = 0; i < headers.size(); i++) {
-                table.getColumn(i + 1).setText(headers.get(i));
-                table.getColumn(i + 1).setToolTipText(i == 0 ? "times: the row's share of the period (relative duration)"
-                        : "module " + headers.get(i));
-            }
+            setColumns(headers);
             table.setItemCount(rows.size());
             for (int r = 0; r < rows.size(); r++) {
                 TableItem it = table.getItem(r);
@@ -137,13 +132,8 @@ final class GridView {
                     it.setText(c + 1, c < rows.get(r).size() ? rows.get(r).get(c) : "");
                 }
             }
-            table.getColumn(headers.size() + 1).setText("");
-            table.getColumn(headers.size() + 1).setWidth(1);
-            for (int i = 0; i <= headers.size(); i++) {
-                TableColumn c = table.getColumn(i);
-                c.pack();
-                c.setWidth(Math.max(c.getWidth(), MIN_WIDTH));
-            }
+            fitColumns(headers, rows);
+            table.setToolTipText(null);
             focusRow = clamp(focusRow, rows.size());
             anchorRow = clamp(anchorRow, rows.size());
             focusCol = clamp(focusCol, headers.size());
@@ -152,6 +142,53 @@ final class GridView {
         } finally {
             table.setRedraw(true);
         }
+    }
+
+    /** Makes each column as wide as its widest text (header or cell), at least {@value #MIN_WIDTH} pixels. */
+    private void fitColumns(List<String> headers, List<List<String>> rows) {
+        GC gc = new GC(table);
+        try {
+            int[] w = new int[headers.size() + 1];
+            w[0] = gc.textExtent("Step").x;
+            for (int c = 0; c < headers.size(); c++) {
+                w[c + 1] = gc.textExtent(headers.get(c)).x;
+            }
+            for (int r = 0; r < rows.size(); r++) {
+                w[0] = Math.max(w[0], gc.textExtent(Integer.toString(r)).x);
+                for (int c = 0; c < Math.min(headers.size(), rows.get(r).size()); c++) {
+                    w[c + 1] = Math.max(w[c + 1], gc.textExtent(rows.get(r).get(c)).x);
+                }
+            }
+            for (int i = 0; i < w.length; i++) {
+                table.getColumn(i).setWidth(Math.max(MIN_WIDTH, w[i] + PADDING));
+            }
+        } finally {
+            gc.dispose();
+        }
+    }
+
+    /**
+     * The step numbers, a column per grid column, and an empty one that takes the room left
+     * (GTK stretches the last column; the last module's should look like the others).
+     */
+    private void setColumns(List<String> headers) {
+        while (table.getColumnCount() > headers.size() + 2) {
+            table.getColumn(table.getColumnCount() - 1).dispose();
+        }
+        while (table.getColumnCount() < headers.size() + 2) {
+            new TableColumn(table, SWT.RIGHT);
+        }
+        table.getColumn(0).setText("Step");
+        table.getColumn(0).setToolTipText("Row: the time step");
+        for (int i = 0; i < headers.size(); i++) {
+            String h = headers.get(i);
+            table.getColumn(i + 1).setText(h);
+            table.getColumn(i + 1).setToolTipText(i == 0 ? "times: the row's share of the period (relative duration)"
+                    : h.chars().allMatch(Character::isDigit) ? "module " + h : null);
+        }
+        TableColumn filler = table.getColumn(headers.size() + 1);
+        filler.setText("");
+        filler.setWidth(12);
     }
 
     private static int clamp(int v, int n) {
@@ -213,8 +250,18 @@ final class GridView {
     }
 
     private void mouseDown(Event e) {
+        if (e.button != 1) {
+            return;
+        }
+        TableItem item = table.getItem(new Point(e.x, e.y));
+        if (item != null && item.getBounds(0).contains(e.x, e.y) && columns() > 1) {
+            // The step number selects the row's module cells (shift: down to this row).
+            int row = table.indexOf(item);
+            select((e.stateMask & SWT.SHIFT) != 0 ? anchorRow : row, 1, row, columns() - 1);
+            return;
+        }
         Point cell = cellAt(e.x, e.y);
-        if (cell == null || e.button != 1) {
+        if (cell == null) {
             return;
         }
         if ((e.stateMask & SWT.SHIFT) != 0) {
@@ -265,6 +312,8 @@ final class GridView {
         select(row, column, row, column);
         Text t = new Text(table, SWT.SINGLE | SWT.RIGHT);
         text = t;
+        editRow = row;
+        editCol = column;
         String old = column < cells.get(row).size() ? cells.get(row).get(column) : "";
         t.setText(initial != null ? initial : old);
         t.setSelection(initial != null ? t.getText().length() : 0, t.getText().length());

@@ -165,6 +165,9 @@ class GridGuiTest {
         Text cell = grid().cellEditor();
         assertNotNull(cell, "F2 opens the cell editor");
         cell.setText("$nowhere");
+        grid().setDiagnostics(ide.problems().shown());
+        assertTrue(cell == grid().cellEditor() && "$nowhere".equals(cell.getText()),
+                "a validation result arriving while a cell is typed into must not drop the typing");
         cell.notifyListeners(SWT.DefaultSelection, new Event());
         Gui.pump(() -> ide.problems().errorCount() > 0 && grid().widget().getItem(2).getBackground(5).equals(GridPane.INVALID),
                 "the bad cell to be tinted");
@@ -209,6 +212,10 @@ class GridGuiTest {
         grid().widget().notifyListeners(SWT.KeyDown, paste);
         Gui.pump(() -> "4".equals(grid().widget().getItem(7).getText(3)), "the pasted cells");
         assertEquals("1", grid().table().cell(6, 0).text());
+        assertEquals(0, grid().paste("1,5\t7"), "nothing falls outside");
+        assertEquals("7", grid().table().cell(6, 1).text());
+        assertEquals("1", grid().table().cell(6, 0).text(), "a decimal comma would split the entry: left out");
+        assertTrue(grid().status().contains("1 entry was left out"), grid().status());
         grid().select(0, 1, 7, 12);
         Gui.screenshot(ide.shell(), "grid-wave.png");
     }
@@ -263,14 +270,26 @@ class GridGuiTest {
         String after = ide.editor().document().get();
         assertEquals(before.substring(0, before.indexOf("<travel>")), after.substring(0, after.indexOf("<travel>")),
                 "the text before the table is unchanged");
-        click(0, 3, 0);
-        click(1, 3, SWT.SHIFT);
+        click(0, 0, 0);
+        click(1, 0, SWT.SHIFT);
+        assertEquals(new org.parpe.gui.grid.Fill.Selection(0, 1, 1, 12), grid().selection(),
+                "clicking step numbers selects the rows' module cells");
         button("\u2212Rows").notifyListeners(SWT.Selection, new Event());
         Gui.pump(() -> grid().widget().getItemCount() == 7, "two rows fewer");
         ide.editor().run(ITextOperationTarget.UNDO);
         ide.editor().run(ITextOperationTarget.UNDO);
         assertEquals(before, ide.editor().document().get(), "two Undos should restore the text");
         Gui.pump(() -> grid().widget().getItemCount() == 8, "the grid to show the 8 rows again");
+
+        click(3, 5, 0);
+        button("\u2212Cols").notifyListeners(SWT.Selection, new Event());
+        Gui.pump(() -> grid().table().width() == 11, "a module column fewer");
+        assertEquals(14, grid().widget().getColumnCount() - 1, "the 12 modules of the group stay as columns");
+        assertEquals("", grid().widget().getItem(0).getText(13), "module 12 has no entry now");
+        Gui.pump(() -> grid().status().contains("has 11 angles but group 'snake' has 12 modules"),
+                "the row-length error of the script under the grid; it says: " + grid().status());
+        ide.editor().run(ITextOperationTarget.UNDO);
+        assertEquals(before, ide.editor().document().get(), "Undo should restore the column");
     }
 
     @Test
