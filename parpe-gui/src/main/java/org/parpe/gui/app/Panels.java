@@ -5,7 +5,6 @@ import org.eclipse.swt.SWT;
 import org.eclipse.swt.custom.CTabFolder;
 import org.eclipse.swt.custom.CTabItem;
 import org.eclipse.swt.graphics.Color;
-import org.eclipse.swt.layout.FillLayout;
 import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Control;
 
@@ -35,12 +34,5 @@ final class Panels {
             folder.setSelection(it);
         }
         return it;
-    }
-
-    /** A plain composite filling its tab. */
-    static Composite fill(Composite parent) {
-        Composite c = new Composite(parent, SWT.NONE);
-        c.setLayout(new FillLayout());
-        return c;
     }
 }
