@@ -16,6 +16,7 @@
 
 typedef struct {
     double time;
+    int line;
     char text[80];
 } stimulus;
 
@@ -32,11 +33,14 @@ static int usage(const char *message)
 }
 
 /* Reads "TIME $NAME=VALUE" lines (# comments) into stimuli, sorted by time, stable. */
+static const char *stimulus_file = "";
+
 static int read_stimuli(const char *file)
 {
     char line[256];
     int number = 0;
     FILE *in = fopen(file, "r");
+    stimulus_file = file;
     if (in == NULL) {
         fprintf(stderr, "parpe: cannot read stimulus file '%s'\n", file);
         return 2;
@@ -62,7 +66,12 @@ static int read_stimuli(const char *file)
             continue;
         }
         t = strtod(body, &end);
-        if (end == body || !(t >= 0) || (*end != ' ' && *end != '\t') || stimulus_count == MAX_STIMULI) {
+        if (stimulus_count == MAX_STIMULI) {
+            fprintf(stderr, "%s:%d:1: error: more than %d stimuli\n", file, number, MAX_STIMULI);
+            fclose(in);
+            return 2;
+        }
+        if (end == body || !(t >= 0) || (*end != ' ' && *end != '\t')) {
             fprintf(stderr, "%s:%d:1: error: expected 'TIME $NAME=VALUE', got '%s'\n", file, number, body);
             fclose(in);
             return 2;
@@ -74,6 +83,7 @@ static int read_stimuli(const char *file)
             stimuli[i] = stimuli[i - 1];
         }
         stimuli[i].time = t;
+        stimuli[i].line = number;
         snprintf(stimuli[i].text, sizeof stimuli[i].text, "%s", end);
         stimulus_count++;
     }
@@ -126,7 +136,7 @@ int main(int argc, char **argv)
     for (i = 0; i < stimulus_count; i++) {
         char msg[120];
         if (parsl_assign(&probe, stimuli[i].text, msg, sizeof msg) != 0) {
-            fprintf(stderr, "stimulus: error: %s\n", msg);
+            fprintf(stderr, "%s:%d:1: error: %s\n", stimulus_file, stimuli[i].line, msg);
             return 2;
         }
     }
