@@ -24,7 +24,7 @@ import org.parpe.core.run.Channel;
  * per expression, and the main entries, instances (groups resolved as the interpreter's
  * {@code EntryPlan} does), automata and states as constant {@code int16_t} tables. Per-module
  * state is pooled: only one {@code <main>} entry runs at a time, so the RAM is sized by the
- * largest entry. Call {@link #of} after {@link ExportCheck} has accepted the program.
+ * largest entry. {@link CExport} builds it once the program has passed its checks.
  */
 public final class CProgram {
     private final Program program;
@@ -38,10 +38,10 @@ public final class CProgram {
     private int sensorCount;
     private final Tables t = new Tables();
     /** Sizes of the pooled state, taken over all entries. */
-    int maxInstances;
-    int maxPool;
-    int maxDurations;
-    int maxMacros;
+    private int maxInstances;
+    private int maxPool;
+    private int maxDurations;
+    private int maxMacros;
 
     private CProgram(Program program, double dt) {
         this.program = program;
