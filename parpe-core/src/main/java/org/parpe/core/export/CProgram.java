@@ -241,7 +241,8 @@ public final class CProgram {
         c.append(CText.PRELUDE);
         for (int i = 0; i < exprs.size(); i++) {
             Expression e = exprs.get(i);
-            c.append("/* ").append(comment(e.pos().toString())).append(": ").append(comment(e.text())).append(" */\n");
+            String where = e.pos().line() == 0 ? "default" : e.pos().toString();
+            c.append("/* ").append(comment(where)).append(": ").append(comment(e.text())).append(" */\n");
             c.append(CExpressions.function("x" + i, e.root(), sensorSlot)).append('\n');
         }
         c.append("double parsl_expr(parsl_rt *r, int16_t x)\n{\n    switch (x) {\n");
