@@ -110,7 +110,8 @@ public final class ExportCommand implements Callable<Integer> {
         if (sketch != null) {
             sketch.check(r.program(), diags);
         }
-        CExport.Result result = diags.hasErrors() ? null : CExport.export(r.program(), tick, b, diags);
+        long driverRam = sketch == null ? 0 : sketch.ramBytes(r.program().moduleIds().length);
+        CExport.Result result = diags.hasErrors() ? null : CExport.export(r.program(), tick, b, driverRam, diags);
         diags.all().forEach(d -> err.println(d.format()));
         if (result == null) {
             return 1;

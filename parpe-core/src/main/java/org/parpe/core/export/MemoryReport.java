@@ -10,16 +10,21 @@ import java.util.List;
  *
  * @param board      the board
  * @param stateBytes RAM of the runtime state
- * @param ramBytes   RAM with the board code's share
+ * @param boardBytes RAM of the board code around it (the board's own share plus the driver's buffers)
+ * @param ramBytes   RAM in all
  * @param flashBytes flash: runtime, expressions and tables
  */
-public record MemoryReport(Board board, long stateBytes, long ramBytes, long flashBytes) {
+public record MemoryReport(Board board, long stateBytes, long boardBytes, long ramBytes, long flashBytes) {
 
-    /** Estimates {@code p} on {@code board}; {@code codeLines} is the number of generated expression statements. */
-    public static MemoryReport of(CProgram p, Board board, long codeLines) {
+    /**
+     * Estimates {@code p} on {@code board}; {@code codeLines} is the number of generated expression
+     * statements, {@code driverRam} the RAM of the board code's servo driver (buffers, pin tables).
+     */
+    public static MemoryReport of(CProgram p, Board board, long codeLines, long driverRam) {
         long state = stateBytes(p, board);
         long flash = board.runtimeFlash() + p.tableBytes(board.doubleBytes()) + 14 * codeLines;
-        return new MemoryReport(board, state, state + board.boardRam(), flash);
+        long boardRam = board.boardRam() + driverRam;
+        return new MemoryReport(board, state, boardRam, state + boardRam, flash);
     }
 
     /** {@code sizeof(parsl_rt)}: the fields of {@code parsl_rt.h} in order, laid out as a C compiler does. */
@@ -74,7 +79,7 @@ public record MemoryReport(Board board, long stateBytes, long ramBytes, long fla
         List<String> out = new ArrayList<>();
         if (ramBytes > board.ram()) {
             out.add("the program needs about " + ramBytes + " bytes of RAM on " + board.word() + " (" + stateBytes
-                    + " for the scheduler's state, " + board.boardRam() + " for the board code), but it has "
+                    + " for the scheduler's state, " + boardBytes + " for the board code), but it has "
                     + board.ram() + "; use fewer modules or instances per <main> entry, or a board with more RAM (esp32)");
         }
         if (flashBytes > board.flash()) {
@@ -90,7 +95,7 @@ public record MemoryReport(Board board, long stateBytes, long ramBytes, long fla
             return "memory (host): " + stateBytes + " bytes of state, " + flashBytes + " bytes of code and tables (estimate)";
         }
         return "memory (" + board.word() + ", estimate): RAM " + ramBytes + " of " + board.ram() + " bytes (state "
-                + stateBytes + ", board code " + board.boardRam() + "), flash " + flashBytes + " of " + board.flash()
+                + stateBytes + ", board code " + boardBytes + "), flash " + flashBytes + " of " + board.flash()
                 + " bytes";
     }
 }
