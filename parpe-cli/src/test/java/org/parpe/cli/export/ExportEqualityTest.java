@@ -109,22 +109,12 @@ class ExportEqualityTest {
 
         Path dir = tmp.resolve("c");
         List<String> export = new ArrayList<>(List.of("export", c.script().toString(), "--target", "c", "--out", dir.toString()));
-        for (int i = 0; i < c.runArgs().size(); i++) {
-            if (List.of("--tick", "--param").contains(c.runArgs().get(i))) {
-                export.add(c.runArgs().get(i));
-                export.add(c.runArgs().get(i + 1));
-            }
-        }
+        export.addAll(options(c.runArgs(), "--tick", "--param"));
         Cli exported = Cli.run(export);
         assertEquals(0, exported.code, () -> "export: " + exported);
         HostCompiler.compile(dir);
         List<String> program = new ArrayList<>(List.of(dir.resolve("program").toString()));
-        for (int i = 0; i < c.runArgs().size(); i += 2) {
-            if (List.of("--duration", "--stimulus", "--seed").contains(c.runArgs().get(i))) {
-                program.add(c.runArgs().get(i));
-                program.add(c.runArgs().get(i + 1));
-            }
-        }
+        program.addAll(options(c.runArgs(), "--duration", "--stimulus", "--seed"));
         program.addAll(List.of("--trace", tmp.resolve("c.csv").toString()));
         HostCompiler.Result r = HostCompiler.run(dir, program, 60);
         assertEquals(interpreter.code, r.code(), () -> "exit code of the C program; its stderr: " + r.err()
@@ -135,6 +125,18 @@ class ExportEqualityTest {
             assertTrue(r.err().startsWith(place.substring(0, place.indexOf(": error: "))),
                     () -> "the C program names another place: " + r.err() + " vs " + place);
         }
+    }
+
+    /** The options {@code names} of {@code args} (pairs of option and value), in order. */
+    private static List<String> options(List<String> args, String... names) {
+        List<String> out = new ArrayList<>();
+        for (int i = 0; i + 1 < args.size(); i += 2) {
+            if (List.of(names).contains(args.get(i))) {
+                out.add(args.get(i));
+                out.add(args.get(i + 1));
+            }
+        }
+        return out;
     }
 
     private void refusedLikeCheck(Case c) {
