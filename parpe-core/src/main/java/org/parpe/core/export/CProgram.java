@@ -33,6 +33,8 @@ public final class CProgram {
     private final List<Expression> exprs = new ArrayList<>();
     private final List<SourcePos> places = new ArrayList<>();
     private final Map<String, Integer> files = new LinkedHashMap<>();
+    /** The {@code group} attribute of every instance row, as written (for the overlap warning). */
+    private final List<String> instGroups = new ArrayList<>();
     private final int[] ids;
     private final int[] sensorSlot;
     private int sensorCount;
@@ -174,6 +176,7 @@ public final class CProgram {
             int ns = t.aut.get(automaton)[0];
             t.inst.add(new int[] {automaton, mirror ? 1 : 0, group.size(), mod, cond, conds.size(), opt(i.phase()),
                 opt(i.offset()), opt(i.period()), opt(i.start()), opt(i.cycles()), pool[0], pool[1], place(i.pos())});
+            instGroups.add(i.group());
             pool[0] += group.size();
             pool[1] += ns;
         }
@@ -250,7 +253,8 @@ public final class CProgram {
             c.append("    case ").append(i).append(": return x").append(i).append("(r);\n");
         }
         c.append("    default: return 0;\n    }\n}\n\n");
-        new CTables(program, ids, sensorSlot, t, places, files, exprs.stream().map(Expression::text).toList()).append(c);
+        new CTables(program, ids, sensorSlot, t, places, files, exprs.stream().map(Expression::text).toList(),
+                instGroups).append(c);
         return c.toString();
     }
 

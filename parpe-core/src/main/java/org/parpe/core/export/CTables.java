@@ -17,10 +17,12 @@ final class CTables {
     private final List<SourcePos> places;
     private final Map<String, Integer> files;
     private final List<String> exprTexts;
+    private final List<String> instGroups;
 
     CTables(Program program, int[] ids, int[] sensorSlot, CProgram.Tables t, List<SourcePos> places,
-            Map<String, Integer> files, List<String> exprTexts) {
+            Map<String, Integer> files, List<String> exprTexts, List<String> instGroups) {
         this.exprTexts = exprTexts;
+        this.instGroups = instGroups;
         this.program = program;
         this.ids = ids;
         this.sensorSlot = sensorSlot;
@@ -125,7 +127,14 @@ final class CTables {
         if (exprTexts.isEmpty()) {
             c.append("\"\"");
         }
-        c.append("\n};\nconst char *const parsl_aut_names[] = {");
+        c.append("\n};\nconst char *const parsl_inst_groups[] = {");
+        for (int g = 0; g < instGroups.size(); g++) {
+            c.append(g == 0 ? "" : ", ").append('"').append(CText.escape(instGroups.get(g))).append('"');
+        }
+        if (instGroups.isEmpty()) {
+            c.append("\"\"");
+        }
+        c.append("};\nconst char *const parsl_aut_names[] = {");
         StringBuilder states = new StringBuilder("const char *const parsl_state_names[] = {");
         int s = 0;
         for (int a = 0; a < program.automata().size(); a++) {

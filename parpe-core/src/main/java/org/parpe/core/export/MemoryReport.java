@@ -33,8 +33,8 @@ public record MemoryReport(Board board, long stateBytes, long boardBytes, long r
         Layout l = new Layout(b);
         l.add(d, 4).add(2, 6);
         l.add(d, Math.max(1, p.controls())).add(d, p.macros()).add(d, 2L * Math.max(1, p.sensorReadings()));
-        l.add(8, 1).add(d, 2L * p.modules()).add(1, p.modules());
-        l.add(b.longBytes(), 3).add(2, 1).add(1, 1).add(b.pointerBytes(), 1);
+        l.add(8, 1).add(d, 2L * p.modules()).add(1, p.modules()).add(2, p.modules());
+        l.add(b.longBytes(), 3).add(2, 1).add(1, 1).add(b.pointerBytes(), 2);
         Layout inst = new Layout(b);
         inst.add(d, 3).add(2, 1).add(1, 3);
         l.add(inst.size(), b.align(d), p.instances());

@@ -13,6 +13,7 @@
 #include <string.h>
 
 #define MAX_STIMULI 4096
+#define MAX_WARNINGS 1024
 
 typedef struct {
     double time;
@@ -24,6 +25,35 @@ static parsl_rt rt;
 static parsl_rt probe;
 static stimulus stimuli[MAX_STIMULI];
 static int stimulus_count;
+
+static int16_t warned[MAX_WARNINGS][2];
+static int warned_count;
+
+/* The warning of parpe run, once per pair of instances: the later one wins. */
+static void report_overlap(parsl_rt *r, int16_t earlier, int16_t later, int16_t module)
+{
+    char t[64];
+    int i;
+    uint16_t at = PARSL_U16(parsl_inst[later], PARSL_I_POS);
+    for (i = 0; i < warned_count; i++) {
+        if (warned[i][0] == earlier && warned[i][1] == later) {
+            return;
+        }
+    }
+    if (warned_count == MAX_WARNINGS) {
+        return;
+    }
+    warned[warned_count][0] = earlier;
+    warned[warned_count++][1] = later;
+    parsl_format(t, r->time);
+    fprintf(stderr, "%s:%u:%u: warning: instances '%s' on group '%s' (line %u) and '%s' on group '%s' both drive"
+            " module %u at t=%s s; the later one wins\n", parsl_files[PARSL_U16(parsl_pos[at], 0)],
+            (unsigned) PARSL_U16(parsl_pos[at], 1), (unsigned) PARSL_U16(parsl_pos[at], 2),
+            parsl_aut_names[PARSL_I16(parsl_inst[earlier], PARSL_I_AUT)], parsl_inst_groups[earlier],
+            (unsigned) PARSL_U16(parsl_pos[PARSL_U16(parsl_inst[earlier], PARSL_I_POS)], 1),
+            parsl_aut_names[PARSL_I16(parsl_inst[later], PARSL_I_AUT)], parsl_inst_groups[later],
+            (unsigned) PARSL_U16(parsl_ids, module), t);
+}
 
 static int usage(const char *message)
 {
@@ -132,6 +162,7 @@ int main(int argc, char **argv)
         }
     }
     parsl_init(&rt, (uint64_t) seed, NULL);
+    rt.overlap = report_overlap;
     probe = rt;
     for (i = 0; i < stimulus_count; i++) {
         char msg[120];
