@@ -65,4 +65,5 @@ private:
 };
 
 extern ShimSerial Serial;
+extern ShimSerial Serial2;  // the ESP32's second UART
 #endif

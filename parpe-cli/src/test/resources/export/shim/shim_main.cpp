@@ -6,6 +6,7 @@
 
 unsigned long shim_micros = 0;
 ShimSerial Serial("serial");
+ShimSerial Serial2("serial2");
 ShimSerial *shim_console = nullptr;
 
 void setup();

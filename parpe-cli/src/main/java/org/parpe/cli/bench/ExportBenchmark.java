@@ -58,13 +58,18 @@ public final class ExportBenchmark implements Benchmark {
         }
     }
 
-    private static Path examples() {
-        for (Path p = Path.of("").toAbsolutePath(); p != null; p = p.getParent()) {
-            if (Files.isRegularFile(p.resolve("examples/hello-snake.xml"))) {
-                return p.resolve("examples");
+    /** The examples folder: above the working directory, or above the PARPE jar (parpe-cli/target/parpe.jar). */
+    private static Path examples() throws java.net.URISyntaxException {
+        Path jar = Path.of(ExportBenchmark.class.getProtectionDomain().getCodeSource().getLocation().toURI());
+        for (Path start : List.of(Path.of("").toAbsolutePath(), jar.toAbsolutePath())) {
+            for (Path p = start; p != null; p = p.getParent()) {
+                if (Files.isRegularFile(p.resolve("examples/hello-snake.xml"))) {
+                    return p.resolve("examples");
+                }
             }
         }
-        throw new IllegalStateException("run the benchmark inside the PARPE folder (examples/ not found)");
+        throw new IllegalStateException("the examples folder (examples/hello-snake.xml) was not found above "
+                + Path.of("").toAbsolutePath() + " or " + jar);
     }
 
     private static double javaTicksPerSecond(Program p) {

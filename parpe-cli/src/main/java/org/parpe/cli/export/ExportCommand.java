@@ -18,6 +18,7 @@ import org.parpe.core.export.CExport;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
 import org.parpe.core.model.Numbers;
+import org.parpe.core.model.Program;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -94,16 +95,7 @@ public final class ExportCommand implements Callable<Integer> {
             case "arduino" -> true;
             default -> throw new UsageException("--target must be c or arduino, got '" + target + "'");
         };
-        Board b = board == null ? (arduino ? Board.UNO : Board.HOST) : Board.of(board);
-        if (b == null) {
-            throw new UsageException("--board must be uno, nano, esp32 or host, got '" + board + "'");
-        }
-        if (arduino && b == Board.HOST) {
-            throw new UsageException("--board host is for --target c; an Arduino sketch runs on uno, nano or esp32");
-        }
-        if (!arduino && (!pins.isEmpty() || model != null || !servo.equals("pwm") || consoleSensors)) {
-            throw new UsageException("--servo, --pins, --model and --console-sensors are for --target arduino");
-        }
+        Board b = board(arduino);
         SketchOptions sketch = arduino ? SketchOptions.of(servo, pins, baud, model, consoleSensors) : null;
         LoadResult r = ScriptLoader.load(file, parseParams());
         r.diagnostics().forEach(d -> err.println(d.format()));
@@ -118,28 +110,49 @@ public final class ExportCommand implements Callable<Integer> {
         if (sketch != null) {
             sketch.check(r.program(), diags);
         }
-        CExport.Result result = diags.hasErrors() ? null : CExport.export(r.program(), tick, b, diags);
+        long driverRam = sketch == null ? 0 : sketch.ramBytes(r.program().moduleIds().length);
+        CExport.Result result = diags.hasErrors() ? null : CExport.export(r.program(), tick, b, driverRam, diags);
         diags.all().forEach(d -> err.println(d.format()));
         if (result == null) {
             return 1;
         }
-        Map<String, String> files = new LinkedHashMap<>(RuntimeFiles.runtime(!arduino));
+        write(r.program(), result, sketch);
+        return 0;
+    }
+
+    /** The board of {@code --board}, checked against the target and the target's other options. */
+    private Board board(boolean arduino) throws UsageException {
+        Board b = board == null ? (arduino ? Board.UNO : Board.HOST) : Board.of(board);
+        if (b == null) {
+            throw new UsageException("--board must be uno, nano, esp32 or host, got '" + board + "'");
+        }
+        if (arduino && b == Board.HOST) {
+            throw new UsageException("--board host is for --target c; an Arduino sketch runs on uno, nano or esp32");
+        }
+        if (!arduino && (!pins.isEmpty() || model != null || !servo.equals("pwm") || consoleSensors)) {
+            throw new UsageException("--servo, --pins, --model and --console-sensors are for --target arduino");
+        }
+        return b;
+    }
+
+    /** Writes the runtime, the program and (for a sketch) the .ino into the folder, and says what it did. */
+    private void write(Program program, CExport.Result result, SketchOptions sketch) throws IOException, UsageException {
+        Map<String, String> files = new LinkedHashMap<>(RuntimeFiles.runtime(sketch == null));
         files.putAll(result.files());
         Path dir = out;
         if (sketch != null) {
             String name = ArduinoSketch.sketchName(file);
             dir = out.resolve(name);
-            files.put(name + ".ino", ArduinoSketch.ino(r.program(), sketch, tick));
+            files.put(name + ".ino", ArduinoSketch.ino(program, sketch, tick));
             files.put("parsl_servo.h", ServoTables.header(sketch));
         }
         ExportFiles.write(dir, files);
         PrintWriter o = spec.commandLine().getOut();
         o.println(result.memory().format());
         o.println("wrote " + files.size() + " files to " + dir);
-        if (!arduino) {
+        if (sketch == null) {
             o.println("build: cc -std=c99 -O2 -o program " + dir + "/*.c -lm");
         }
-        return 0;
     }
 
     private Map<String, Double> parseParams() throws UsageException {

@@ -60,6 +60,15 @@ record SketchOptions(Driver driver, List<Integer> pins, int baud, ServoModel mod
     }
 
     /**
+     * RAM of the sketch's servo driver for {@code modules} modules: the packet buffer of a bus
+     * ({@code sketch.inc}: 16 + 2 × (ID + goal) per module, room for byte stuffing), or a Servo
+     * object and a pin per PWM servo.
+     */
+    long ramBytes(int modules) {
+        return driver == Driver.PWM ? 2L * modules : 16 + 2L * modules * (1 + model.registers().goalSize());
+    }
+
+    /**
      * Reports what the sketch cannot do: sensors it has no driver for (at their declaration),
      * more PWM servos than it can drive, module IDs that are no servo IDs (at the robot).
      */

@@ -45,20 +45,24 @@ class ArduinoSketchTest {
         HostCompiler.require("g++");
     }
 
+    /** Each driver on an Uno (bus on Serial, console on SoftwareSerial) and on an ESP32 (bus on Serial2). */
     @ParameterizedTest(name = "{0}")
-    @ValueSource(strings = {"pwm", "dxl", "sts"})
-    void sketchDrivesTheServosWithTheInterpretersSetpoints(String servo) throws Exception {
+    @ValueSource(strings = {"pwm uno", "dxl uno", "sts uno", "pwm esp32", "dxl esp32", "sts esp32"})
+    void sketchDrivesTheServosWithTheInterpretersSetpoints(String variant) throws Exception {
+        String servo = variant.split(" ")[0];
+        boolean esp32 = variant.endsWith("esp32");
         ExportEqualityTest.Cli export = ExportEqualityTest.Cli.run(List.of("export", SCRIPT.toString(), "--target",
-                "arduino", "--servo", servo, "--out", tmp.toString()));
+                "arduino", "--servo", servo, "--board", esp32 ? "esp32" : "uno", "--out", tmp.toString()));
         assertEquals(0, export.code, () -> "export: " + export);
-        assertTrue(export.out.contains("memory (uno, estimate): RAM "), export.out);
+        assertTrue(export.out.contains("memory (" + (esp32 ? "esp32" : "uno") + ", estimate): RAM "), export.out);
         Path sketch = tmp.resolve("teleop_dirwave");
         assertTrue(Files.readString(sketch.resolve("teleop_dirwave.ino")).startsWith(ExportFiles.MARK));
-        List<String> lines = runSketch(sketch, "direction=backward").lines().toList();
+        List<String> lines = runSketch(sketch, "direction=backward", esp32).lines().toList();
         List<double[]> expected = interpreter(TICKS + 1, "0.05 $direction=backward\n");
-        assertTrue(lines.contains(servo.equals("pwm") ? "serial: ok" : "console: ok"), () -> "the command was not"
-                + " accepted:\n" + String.join("\n", lines));
-        List<int[]> sent = servo.equals("pwm") ? pulses(lines, expected.get(0).length) : packets(lines, servo);
+        String console = servo.equals("pwm") || esp32 ? "serial: ok" : "console: ok";
+        assertTrue(lines.contains(console), () -> "the command was not accepted:\n" + String.join("\n", lines));
+        List<int[]> sent = servo.equals("pwm") ? pulses(lines, expected.get(0).length)
+                : packets(lines, servo, esp32 ? "serial2: " : "serial: ");
         assertEquals(TICKS, sent.size(), () -> "one write per tick:\n" + String.join("\n", lines));
         ServoModel model = ServoModel.named(servo.equals("dxl") ? "xl430-w250" : "sts3215");
         for (int t = 0; t < TICKS; t++) {
@@ -126,7 +130,7 @@ class ArduinoSketchTest {
     }
 
     /** Compiles the runtime as C and the sketch as C++ against the shim, then runs TICKS ticks. */
-    private String runSketch(Path sketch, String command) throws Exception {
+    private String runSketch(Path sketch, String command, boolean esp32) throws Exception {
         List<String> objects = new ArrayList<>();
         try (Stream<Path> s = Files.list(sketch)) {
             for (String c : s.map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".c")).sorted().toList()) {
@@ -138,8 +142,11 @@ class ArduinoSketchTest {
                 objects.add(c.replace(".c", ".o"));
             }
         }
-        List<String> link = new ArrayList<>(List.of("g++", "-std=c++17", "-Wall", "-Werror", "-O2", "-I.", "-I" + SHIM,
-                "-x", "c++", "teleop_dirwave.ino", "-x", "none", SHIM.resolve("shim_main.cpp").toString()));
+        List<String> link = new ArrayList<>(List.of("g++", "-std=c++17", "-Wall", "-Werror", "-O2", "-I.", "-I" + SHIM));
+        if (esp32) {
+            link.add("-DARDUINO_ARCH_ESP32");
+        }
+        link.addAll(List.of("-x", "c++", "teleop_dirwave.ino", "-x", "none", SHIM.resolve("shim_main.cpp").toString()));
         link.addAll(objects);
         link.addAll(List.of("-o", "sketch", "-lm"));
         HostCompiler.Result r = HostCompiler.run(sketch, link, 120);
@@ -173,11 +180,11 @@ class ArduinoSketchTest {
     }
 
     /** The goal positions of every SYNC WRITE on the bus, after checking each packet's CRC or checksum. */
-    private static List<int[]> packets(List<String> lines, String servo) {
+    private static List<int[]> packets(List<String> lines, String servo, String port) {
         List<int[]> out = new ArrayList<>();
         boolean dxl = servo.equals("dxl");
-        for (String l : lines.stream().filter(x -> x.startsWith("serial: ")).toList()) {
-            String[] hex = l.substring(8).trim().split(" ");
+        for (String l : lines.stream().filter(x -> x.startsWith(port) && !x.endsWith(": ok")).toList()) {
+            String[] hex = l.substring(port.length()).trim().split(" ");
             byte[] b = new byte[hex.length];
             for (int i = 0; i < hex.length; i++) {
                 b[i] = (byte) Integer.parseInt(hex[i], 16);

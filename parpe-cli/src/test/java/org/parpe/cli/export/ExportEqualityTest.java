@@ -14,8 +14,6 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.BeforeAll;
-import org.junit.jupiter.api.parallel.Execution;
-import org.junit.jupiter.api.parallel.ExecutionMode;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
@@ -26,8 +24,9 @@ import org.parpe.cli.Main;
  * own), every example and tutorial script, and scripts that fail at run time, the interpreter
  * runs in-process, the script is exported with {@code --target c}, compiled with gcc
  * ({@code -std=c99 -Wall -Werror -O2}), and run; its trace must equal the interpreter's byte for
- * byte, with the same exit code (3 at the same tick for a run-time error, with the same place).
- * Cases whose expected result is a load error: export refuses with the diagnostics of {@code check}.
+ * byte, with the same exit code (3 at the same tick for a run-time error, with the same place) and
+ * the same warnings of overlapping instances. Cases whose expected result is a load error: export
+ * refuses with the diagnostics of {@code check}. (About a second per case, mostly gcc's.)
  */
 class ExportEqualityTest {
     static final Path ROOT = Path.of("..").toAbsolutePath().normalize();
@@ -109,32 +108,35 @@ class ExportEqualityTest {
 
         Path dir = tmp.resolve("c");
         List<String> export = new ArrayList<>(List.of("export", c.script().toString(), "--target", "c", "--out", dir.toString()));
-        for (int i = 0; i < c.runArgs().size(); i++) {
-            if (List.of("--tick", "--param").contains(c.runArgs().get(i))) {
-                export.add(c.runArgs().get(i));
-                export.add(c.runArgs().get(i + 1));
-            }
-        }
+        export.addAll(options(c.runArgs(), "--tick", "--param"));
         Cli exported = Cli.run(export);
         assertEquals(0, exported.code, () -> "export: " + exported);
         HostCompiler.compile(dir);
         List<String> program = new ArrayList<>(List.of(dir.resolve("program").toString()));
-        for (int i = 0; i < c.runArgs().size(); i += 2) {
-            if (List.of("--duration", "--stimulus", "--seed").contains(c.runArgs().get(i))) {
-                program.add(c.runArgs().get(i));
-                program.add(c.runArgs().get(i + 1));
-            }
-        }
+        program.addAll(options(c.runArgs(), "--duration", "--stimulus", "--seed"));
         program.addAll(List.of("--trace", tmp.resolve("c.csv").toString()));
         HostCompiler.Result r = HostCompiler.run(dir, program, 60);
         assertEquals(interpreter.code, r.code(), () -> "exit code of the C program; its stderr: " + r.err()
                 + "\ninterpreter: " + interpreter);
         assertEquals(Files.readString(javaTrace), Files.readString(tmp.resolve("c.csv")), "trace of the C program");
+        assertEquals(overlapWarnings(interpreter.err), overlapWarnings(r.err()), "warnings of overlapping instances");
         if (interpreter.code == 3) {
             String place = interpreter.err.lines().filter(l -> l.contains(": error: ")).findFirst().orElseThrow();
             assertTrue(r.err().startsWith(place.substring(0, place.indexOf(": error: "))),
                     () -> "the C program names another place: " + r.err() + " vs " + place);
         }
+    }
+
+    /** The options {@code names} of {@code args} (pairs of option and value), in order. */
+    private static List<String> options(List<String> args, String... names) {
+        List<String> out = new ArrayList<>();
+        for (int i = 0; i + 1 < args.size(); i += 2) {
+            if (List.of(names).contains(args.get(i))) {
+                out.add(args.get(i));
+                out.add(args.get(i + 1));
+            }
+        }
+        return out;
     }
 
     private void refusedLikeCheck(Case c) {
@@ -144,6 +146,10 @@ class ExportEqualityTest {
         assertEquals(1, export.code, () -> "export: " + export);
         assertEquals(diagnostics(check.err), diagnostics(export.err));
         assertTrue(Files.notExists(tmp.resolve("c")), "nothing is written for a script with errors");
+    }
+
+    private static List<String> overlapWarnings(String err) {
+        return err.lines().filter(l -> l.contains(": warning: instances ")).toList();
     }
 
     private static List<String> diagnostics(String err) {

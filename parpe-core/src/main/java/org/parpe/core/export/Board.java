@@ -9,13 +9,17 @@ import java.util.Locale;
  */
 public enum Board {
     /** A PC: the trace program of the equality test; no limit. */
-    HOST(Long.MAX_VALUE, Long.MAX_VALUE, 8, 200, 0, 0),
-    /** Arduino Uno (ATmega328P): 2 KB RAM, 32 KB flash less the 0.5 KB bootloader. */
-    UNO(2048, 32256, 4, 23, 560, 9000),
-    /** Arduino Nano (ATmega328P), the Uno's chip. */
-    NANO(2048, 30720, 4, 23, 560, 9000),
+    HOST(Long.MAX_VALUE, Long.MAX_VALUE, 8, 200, 0, 0, 8, 8, 8),
+    /**
+     * Arduino Uno (ATmega328P): 2 KB RAM, 32 KB flash less the 0.5 KB bootloader. The runtime's
+     * share of flash (13.5 KB with the float library, avr-gcc 5.4 -Os) plus the Arduino core,
+     * Servo and serial code.
+     */
+    UNO(2048, 32256, 4, 23, 560, 17500, 4, 2, 1),
+    /** Arduino Nano (ATmega328P), the Uno's chip with a larger bootloader. */
+    NANO(2048, 30720, 4, 23, 560, 17500, 4, 2, 1),
     /** ESP32 (320 KB of data RAM, a 1.25 MB application partition). */
-    ESP32(327680, 1310720, 8, 68, 30000, 250000);
+    ESP32(327680, 1310720, 8, 68, 30000, 250000, 4, 4, 8);
 
     private final long ram;
     private final long flash;
@@ -23,14 +27,36 @@ public enum Board {
     private final int jmpBuf;
     private final int boardRam;
     private final int runtimeFlash;
+    private final int longBytes;
+    private final int pointerBytes;
+    private final int maxAlign;
 
-    Board(long ram, long flash, int doubleBytes, int jmpBuf, int boardRam, int runtimeFlash) {
+    Board(long ram, long flash, int doubleBytes, int jmpBuf, int boardRam, int runtimeFlash, int longBytes,
+          int pointerBytes, int maxAlign) {
         this.ram = ram;
         this.flash = flash;
         this.doubleBytes = doubleBytes;
         this.jmpBuf = jmpBuf;
         this.boardRam = boardRam;
         this.runtimeFlash = runtimeFlash;
+        this.longBytes = longBytes;
+        this.pointerBytes = pointerBytes;
+        this.maxAlign = maxAlign;
+    }
+
+    /** Bytes of a C {@code long}. */
+    public int longBytes() {
+        return longBytes;
+    }
+
+    /** Bytes of a pointer. */
+    public int pointerBytes() {
+        return pointerBytes;
+    }
+
+    /** The alignment of a type of {@code size} bytes (AVR aligns nothing). */
+    public int align(int size) {
+        return Math.min(size, maxAlign);
     }
 
     /** The board called {@code name} ({@code uno}, {@code nano}, {@code esp32}, {@code host}), or {@code null}. */

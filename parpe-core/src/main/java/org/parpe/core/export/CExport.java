@@ -29,6 +29,14 @@ public final class CExport {
 
     /** Exports {@code program} run with tick {@code dt} for {@code board}; {@code null} after reporting errors. */
     public static Result export(Program program, double dt, Board board, DiagnosticSink diags) {
+        return export(program, dt, board, 0, diags);
+    }
+
+    /**
+     * Exports {@code program} for {@code board} whose board code adds {@code driverRam} bytes of
+     * RAM (servo buffers, pin tables); {@code null} after reporting errors.
+     */
+    public static Result export(Program program, double dt, Board board, long driverRam, DiagnosticSink diags) {
         SourcePos root = new SourcePos(program.file(), 1, 1);
         if (program.main() == null) {
             diags.error(root, "the program has no <main>; an exported program needs one to run");
@@ -49,7 +57,7 @@ public final class CExport {
         files.put("parsl_program.h", c.header());
         String source = c.source();
         files.put("parsl_program.c", source);
-        MemoryReport m = MemoryReport.of(c, board, statements(source));
+        MemoryReport m = MemoryReport.of(c, board, statements(source), driverRam);
         for (String problem : m.problems()) {
             diags.error(program.robot().pos(), problem);
         }
@@ -62,7 +70,7 @@ public final class CExport {
      */
     public static MemoryReport estimate(Program program, double dt, Board board) {
         CProgram c = CProgram.of(program, dt);
-        return MemoryReport.of(c, board, statements(c.source()));
+        return MemoryReport.of(c, board, statements(c.source()), 0);
     }
 
     /** Generated statements (indented lines), the measure of expression code for the flash estimate. */

@@ -37,7 +37,11 @@ final class CExpressions implements ExprTree.Visitor<String> {
             }
             out.append(";\n");
         }
-        out.append(c.body).append("    (void) r;\n    return ").append(result).append(";\n}\n");
+        out.append(c.body);
+        if (c.body.indexOf("r->") < 0 && c.body.indexOf("(r,") < 0 && c.body.indexOf("(r)") < 0) {
+            out.append("    (void) r;\n");
+        }
+        out.append("    return ").append(result).append(";\n}\n");
         return out.toString();
     }
 

@@ -24,7 +24,7 @@ import org.parpe.core.run.Channel;
  * per expression, and the main entries, instances (groups resolved as the interpreter's
  * {@code EntryPlan} does), automata and states as constant {@code int16_t} tables. Per-module
  * state is pooled: only one {@code <main>} entry runs at a time, so the RAM is sized by the
- * largest entry. Call {@link #of} after {@link ExportCheck} has accepted the program.
+ * largest entry. {@link CExport} builds it once the program has passed its checks.
  */
 public final class CProgram {
     private final Program program;
@@ -33,15 +33,17 @@ public final class CProgram {
     private final List<Expression> exprs = new ArrayList<>();
     private final List<SourcePos> places = new ArrayList<>();
     private final Map<String, Integer> files = new LinkedHashMap<>();
+    /** The {@code group} attribute of every instance row, as written (for the overlap warning). */
+    private final List<String> instGroups = new ArrayList<>();
     private final int[] ids;
     private final int[] sensorSlot;
     private int sensorCount;
     private final Tables t = new Tables();
     /** Sizes of the pooled state, taken over all entries. */
-    int maxInstances;
-    int maxPool;
-    int maxDurations;
-    int maxMacros;
+    private int maxInstances;
+    private int maxPool;
+    private int maxDurations;
+    private int maxMacros;
 
     private CProgram(Program program, double dt) {
         this.program = program;
@@ -174,6 +176,7 @@ public final class CProgram {
             int ns = t.aut.get(automaton)[0];
             t.inst.add(new int[] {automaton, mirror ? 1 : 0, group.size(), mod, cond, conds.size(), opt(i.phase()),
                 opt(i.offset()), opt(i.period()), opt(i.start()), opt(i.cycles()), pool[0], pool[1], place(i.pos())});
+            instGroups.add(i.group());
             pool[0] += group.size();
             pool[1] += ns;
         }
@@ -241,7 +244,8 @@ public final class CProgram {
         c.append(CText.PRELUDE);
         for (int i = 0; i < exprs.size(); i++) {
             Expression e = exprs.get(i);
-            c.append("/* ").append(comment(e.pos().toString())).append(": ").append(comment(e.text())).append(" */\n");
+            String where = e.pos().line() == 0 ? "default" : e.pos().toString();
+            c.append("/* ").append(comment(where)).append(": ").append(comment(e.text())).append(" */\n");
             c.append(CExpressions.function("x" + i, e.root(), sensorSlot)).append('\n');
         }
         c.append("double parsl_expr(parsl_rt *r, int16_t x)\n{\n    switch (x) {\n");
@@ -249,7 +253,8 @@ public final class CProgram {
             c.append("    case ").append(i).append(": return x").append(i).append("(r);\n");
         }
         c.append("    default: return 0;\n    }\n}\n\n");
-        new CTables(program, ids, sensorSlot, t, places, files, exprs.stream().map(Expression::text).toList()).append(c);
+        new CTables(program, ids, sensorSlot, t, places, files, exprs.stream().map(Expression::text).toList(),
+                instGroups).append(c);
         return c.toString();
     }
 

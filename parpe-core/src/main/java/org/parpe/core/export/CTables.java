@@ -17,10 +17,12 @@ final class CTables {
     private final List<SourcePos> places;
     private final Map<String, Integer> files;
     private final List<String> exprTexts;
+    private final List<String> instGroups;
 
     CTables(Program program, int[] ids, int[] sensorSlot, CProgram.Tables t, List<SourcePos> places,
-            Map<String, Integer> files, List<String> exprTexts) {
+            Map<String, Integer> files, List<String> exprTexts, List<String> instGroups) {
         this.exprTexts = exprTexts;
+        this.instGroups = instGroups;
         this.program = program;
         this.ids = ids;
         this.sensorSlot = sensorSlot;
@@ -30,16 +32,27 @@ final class CTables {
     }
 
     void append(StringBuilder c) {
+        c.append("/* module IDs, ascending: the order of r->commanded and of the trace columns */\n");
         list(c, "const uint16_t parsl_ids[]", java.util.Arrays.stream(ids).boxed().toList());
+        c.append("/* sensor reading of (module index, channel) in r->sens, -1: not carried */\n");
         list(c, "const int16_t parsl_slot[]", java.util.Arrays.stream(sensorSlot).boxed().toList());
         controls(c);
+        c.append("\n/* <main> entries: first instance, instances, time, exit, first macro value, macro values */\n");
         rows(c, "const int16_t parsl_entry[][PARSL_ENTRY_COLS]", t.entry, 6);
+        c.append("/* expression-valued macros: slot, expression */\n");
         rows(c, "const int16_t parsl_varg[][2]", t.varg, 2);
+        c.append("/* instances: automaton, mirror, modules, first module, first condition, conditions, phase, offset,\n"
+                + "   period, start, cycles (expressions, -1: none), state pool, duration pool, place */\n");
         rows(c, "const int16_t parsl_inst[][PARSL_INST_COLS]", t.inst, 14);
+        c.append("/* module indices of each instance's group, in group order */\n");
         list(c, "const int16_t parsl_inst_mod[]", t.mod);
+        c.append("/* <if> conditions of each instance, outermost first */\n");
         list(c, "const int16_t parsl_cond[]", t.cond);
+        c.append("/* automata: states, first state, whether durations depend on the module */\n");
         rows(c, "const int16_t parsl_aut[][PARSL_AUT_COLS]", t.aut, 3);
+        c.append("/* states: profile (0 linear, 1 step, 2 smooth), angles, first angle, duration, exit (-1: none) */\n");
         rows(c, "const int16_t parsl_state[][PARSL_STATE_COLS]", t.state, 5);
+        c.append("/* target angle expressions: one for the group, or one per position */\n");
         list(c, "const int16_t parsl_angle[]", t.angle);
         positions(c);
         names(c);
@@ -114,7 +127,14 @@ final class CTables {
         if (exprTexts.isEmpty()) {
             c.append("\"\"");
         }
-        c.append("\n};\nconst char *const parsl_aut_names[] = {");
+        c.append("\n};\nconst char *const parsl_inst_groups[] = {");
+        for (int g = 0; g < instGroups.size(); g++) {
+            c.append(g == 0 ? "" : ", ").append('"').append(CText.escape(instGroups.get(g))).append('"');
+        }
+        if (instGroups.isEmpty()) {
+            c.append("\"\"");
+        }
+        c.append("};\nconst char *const parsl_aut_names[] = {");
         StringBuilder states = new StringBuilder("const char *const parsl_state_names[] = {");
         int s = 0;
         for (int a = 0; a < program.automata().size(); a++) {

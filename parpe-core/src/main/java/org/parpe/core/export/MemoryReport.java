@@ -10,24 +10,63 @@ import java.util.List;
  *
  * @param board      the board
  * @param stateBytes RAM of the runtime state
- * @param ramBytes   RAM with the board code's share
+ * @param boardBytes RAM of the board code around it (the board's own share plus the driver's buffers)
+ * @param ramBytes   RAM in all
  * @param flashBytes flash: runtime, expressions and tables
  */
-public record MemoryReport(Board board, long stateBytes, long ramBytes, long flashBytes) {
+public record MemoryReport(Board board, long stateBytes, long boardBytes, long ramBytes, long flashBytes) {
 
-    /** Estimates {@code p} on {@code board}; {@code codeLines} is the number of generated expression statements. */
-    public static MemoryReport of(CProgram p, Board board, long codeLines) {
-        int d = board.doubleBytes();
-        long context = 4L * d + 7 * 2 + 8;
-        long inputs = (long) d * (p.controls() == 0 ? 1 : p.controls()) + (long) d * p.macros() + 2L * d * Math.max(1, p.sensorReadings());
-        long modules = (2L * d + 1) * p.modules();
-        long scheduler = 3L * 4 + 2 + 1 + 2;
-        long instances = (3L * d + 5) * p.instances();
-        long pool = (8L * d + 3) * p.moduleStates() + (long) d * p.durations();
-        long error = board.jmpBuf() + 6 + 2L * d;
-        long state = context + inputs + modules + scheduler + instances + pool + error;
-        long flash = board.runtimeFlash() + p.tableBytes(d) + 14 * codeLines;
-        return new MemoryReport(board, state, state + board.boardRam(), flash);
+    /**
+     * Estimates {@code p} on {@code board}; {@code codeLines} is the number of generated expression
+     * statements, {@code driverRam} the RAM of the board code's servo driver (buffers, pin tables).
+     */
+    public static MemoryReport of(CProgram p, Board board, long codeLines, long driverRam) {
+        long state = stateBytes(p, board);
+        long flash = board.runtimeFlash() + p.tableBytes(board.doubleBytes()) + 14 * codeLines;
+        long boardRam = board.boardRam() + driverRam;
+        return new MemoryReport(board, state, boardRam, state + boardRam, flash);
+    }
+
+    /** {@code sizeof(parsl_rt)}: the fields of {@code parsl_rt.h} in order, laid out as a C compiler does. */
+    static long stateBytes(CProgram p, Board b) {
+        int d = b.doubleBytes();
+        Layout l = new Layout(b);
+        l.add(d, 4).add(2, 6);
+        l.add(d, Math.max(1, p.controls())).add(d, p.macros()).add(d, 2L * Math.max(1, p.sensorReadings()));
+        l.add(8, 1).add(d, 2L * p.modules()).add(1, p.modules()).add(2, p.modules());
+        l.add(b.longBytes(), 3).add(2, 1).add(1, 1).add(b.pointerBytes(), 2);
+        Layout inst = new Layout(b);
+        inst.add(d, 3).add(2, 1).add(1, 3);
+        l.add(inst.size(), b.align(d), p.instances());
+        l.add(2, p.moduleStates()).add(1, p.moduleStates()).add(d, 8L * p.moduleStates()).add(d, p.durations());
+        l.add(b.jmpBuf(), b.align(8), 1).add(2, 3).add(d, 2);
+        return l.size();
+    }
+
+    /** Lays out C struct fields: each aligned to its type, the whole padded to the largest alignment. */
+    private static final class Layout {
+        private final Board board;
+        private long offset;
+        private int maxAlign = 1;
+
+        Layout(Board board) {
+            this.board = board;
+        }
+
+        /** {@code count} fields (or one array) of a scalar type of {@code size} bytes. */
+        Layout add(int size, long count) {
+            return add(size, board.align(size), count);
+        }
+
+        Layout add(long size, int align, long count) {
+            offset = (offset + align - 1) / align * align + size * count;
+            maxAlign = Math.max(maxAlign, align);
+            return this;
+        }
+
+        long size() {
+            return (offset + maxAlign - 1) / maxAlign * maxAlign;
+        }
     }
 
     /** Whether the program fits the board. */
@@ -40,7 +79,7 @@ public record MemoryReport(Board board, long stateBytes, long ramBytes, long fla
         List<String> out = new ArrayList<>();
         if (ramBytes > board.ram()) {
             out.add("the program needs about " + ramBytes + " bytes of RAM on " + board.word() + " (" + stateBytes
-                    + " for the scheduler's state, " + board.boardRam() + " for the board code), but it has "
+                    + " for the scheduler's state, " + boardBytes + " for the board code), but it has "
                     + board.ram() + "; use fewer modules or instances per <main> entry, or a board with more RAM (esp32)");
         }
         if (flashBytes > board.flash()) {
@@ -56,7 +95,7 @@ public record MemoryReport(Board board, long stateBytes, long ramBytes, long fla
             return "memory (host): " + stateBytes + " bytes of state, " + flashBytes + " bytes of code and tables (estimate)";
         }
         return "memory (" + board.word() + ", estimate): RAM " + ramBytes + " of " + board.ram() + " bytes (state "
-                + stateBytes + ", board code " + board.boardRam() + "), flash " + flashBytes + " of " + board.flash()
+                + stateBytes + ", board code " + boardBytes + "), flash " + flashBytes + " of " + board.flash()
                 + " bytes";
     }
 }

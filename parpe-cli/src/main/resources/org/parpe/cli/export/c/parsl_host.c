@@ -13,9 +13,11 @@
 #include <string.h>
 
 #define MAX_STIMULI 4096
+#define MAX_WARNINGS 1024
 
 typedef struct {
     double time;
+    int line;
     char text[80];
 } stimulus;
 
@@ -23,6 +25,35 @@ static parsl_rt rt;
 static parsl_rt probe;
 static stimulus stimuli[MAX_STIMULI];
 static int stimulus_count;
+
+static int16_t warned[MAX_WARNINGS][2];
+static int warned_count;
+
+/* The warning of parpe run, once per pair of instances: the later one wins. */
+static void report_overlap(parsl_rt *r, int16_t earlier, int16_t later, int16_t module)
+{
+    char t[64];
+    int i;
+    uint16_t at = PARSL_U16(parsl_inst[later], PARSL_I_POS);
+    for (i = 0; i < warned_count; i++) {
+        if (warned[i][0] == earlier && warned[i][1] == later) {
+            return;
+        }
+    }
+    if (warned_count == MAX_WARNINGS) {
+        return;
+    }
+    warned[warned_count][0] = earlier;
+    warned[warned_count++][1] = later;
+    parsl_format(t, r->time);
+    fprintf(stderr, "%s:%u:%u: warning: instances '%s' on group '%s' (line %u) and '%s' on group '%s' both drive"
+            " module %u at t=%s s; the later one wins\n", parsl_files[PARSL_U16(parsl_pos[at], 0)],
+            (unsigned) PARSL_U16(parsl_pos[at], 1), (unsigned) PARSL_U16(parsl_pos[at], 2),
+            parsl_aut_names[PARSL_I16(parsl_inst[earlier], PARSL_I_AUT)], parsl_inst_groups[earlier],
+            (unsigned) PARSL_U16(parsl_pos[PARSL_U16(parsl_inst[earlier], PARSL_I_POS)], 1),
+            parsl_aut_names[PARSL_I16(parsl_inst[later], PARSL_I_AUT)], parsl_inst_groups[later],
+            (unsigned) PARSL_U16(parsl_ids, module), t);
+}
 
 static int usage(const char *message)
 {
@@ -32,11 +63,14 @@ static int usage(const char *message)
 }
 
 /* Reads "TIME $NAME=VALUE" lines (# comments) into stimuli, sorted by time, stable. */
+static const char *stimulus_file = "";
+
 static int read_stimuli(const char *file)
 {
     char line[256];
     int number = 0;
     FILE *in = fopen(file, "r");
+    stimulus_file = file;
     if (in == NULL) {
         fprintf(stderr, "parpe: cannot read stimulus file '%s'\n", file);
         return 2;
@@ -62,7 +96,12 @@ static int read_stimuli(const char *file)
             continue;
         }
         t = strtod(body, &end);
-        if (end == body || !(t >= 0) || (*end != ' ' && *end != '\t') || stimulus_count == MAX_STIMULI) {
+        if (stimulus_count == MAX_STIMULI) {
+            fprintf(stderr, "%s:%d:1: error: more than %d stimuli\n", file, number, MAX_STIMULI);
+            fclose(in);
+            return 2;
+        }
+        if (end == body || !(t >= 0) || (*end != ' ' && *end != '\t')) {
             fprintf(stderr, "%s:%d:1: error: expected 'TIME $NAME=VALUE', got '%s'\n", file, number, body);
             fclose(in);
             return 2;
@@ -74,6 +113,7 @@ static int read_stimuli(const char *file)
             stimuli[i] = stimuli[i - 1];
         }
         stimuli[i].time = t;
+        stimuli[i].line = number;
         snprintf(stimuli[i].text, sizeof stimuli[i].text, "%s", end);
         stimulus_count++;
     }
@@ -122,11 +162,12 @@ int main(int argc, char **argv)
         }
     }
     parsl_init(&rt, (uint64_t) seed, NULL);
+    rt.overlap = report_overlap;
     probe = rt;
     for (i = 0; i < stimulus_count; i++) {
         char msg[120];
         if (parsl_assign(&probe, stimuli[i].text, msg, sizeof msg) != 0) {
-            fprintf(stderr, "stimulus: error: %s\n", msg);
+            fprintf(stderr, "%s:%d:1: error: %s\n", stimulus_file, stimuli[i].line, msg);
             return 2;
         }
     }

@@ -9,9 +9,37 @@
 #include <stdlib.h>
 #include <stdio.h>
 
-static const char *const CHANNEL_NAMES[PARSL_CHANNELS] = {
-    "angle", "accel_x", "accel_y", "accel_z", "touch_left", "touch_right"
-};
+/* Texts stay in flash on AVR, where string literals would otherwise be copied to RAM. */
+#if defined(__AVR__)
+#define TXT(s) PSTR(s)
+#define SAME(s, word) (strcmp_P((s), PSTR(word)) == 0)
+#define FORMAT(buf, n, fmt, ...) snprintf_P((buf), (n), PSTR(fmt), __VA_ARGS__)
+#define TEXT_ARG "%S"
+#else
+#define TXT(s) (s)
+#define SAME(s, word) (strcmp((s), (word)) == 0)
+#define FORMAT(buf, n, fmt, ...) snprintf((buf), (n), fmt, __VA_ARGS__)
+#define TEXT_ARG "%s"
+#endif
+
+/* The channel named by a sensor reference's suffix ("touch_left"), or PARSL_CHANNELS. */
+static int16_t channel_of(const char *c)
+{
+    if (SAME(c, "angle")) {
+        return PARSL_ANGLE;
+    } else if (SAME(c, "accel_x")) {
+        return PARSL_ACCEL_X;
+    } else if (SAME(c, "accel_y")) {
+        return PARSL_ACCEL_Y;
+    } else if (SAME(c, "accel_z")) {
+        return PARSL_ACCEL_Z;
+    } else if (SAME(c, "touch_left")) {
+        return PARSL_TOUCH_LEFT;
+    } else if (SAME(c, "touch_right")) {
+        return PARSL_TOUCH_RIGHT;
+    }
+    return PARSL_CHANNELS;
+}
 
 #ifndef PARSL_NO_NAMES
 /* One-argument functions, in the order of org.parpe.core.export.CExpressions.FUNCTIONS. */
@@ -24,7 +52,7 @@ static const char *const FUNCTIONS[] = {
 static int fail(char *msg, size_t n, const char *what, const char *name)
 {
     if (msg != NULL && n > 0) {
-        snprintf(msg, n, "%s '%s'", what, name);
+        FORMAT(msg, n, TEXT_ARG " '%s'", what, name);
     }
     return -1;
 }
@@ -60,17 +88,16 @@ static int sensor(parsl_rt *r, const char *name, const char *value, char *msg, s
     for (; *c >= '0' && *c <= '9'; c++) {
         id = id * 10 + (*c - '0');
         if (id > 65535) {
-            return fail(msg, n, "no module", name);
+            return fail(msg, n, TXT("no module"), name);
         }
     }
     if (c == name || *c != '_') {
-        return fail(msg, n, "unknown control or sensor", name);
+        return fail(msg, n, TXT("unknown control or sensor"), name);
     }
     c++;
-    for (ch = 0; ch < PARSL_CHANNELS && strcmp(c, CHANNEL_NAMES[ch]) != 0; ch++) {
-    }
+    ch = channel_of(c);
     if (ch == PARSL_CHANNELS) {
-        return fail(msg, n, "not a sensor reading (angle, accel_x|y|z, touch_left|right)", name);
+        return fail(msg, n, TXT("not a sensor reading (angle, accel_x|y|z, touch_left|right)"), name);
     }
     while (lo <= hi) {
         int16_t mid = (int16_t) ((lo + hi) / 2);
@@ -78,10 +105,10 @@ static int sensor(parsl_rt *r, const char *name, const char *value, char *msg, s
         if (at == id) {
             int16_t slot = PARSL_I16(parsl_slot, mid * PARSL_CHANNELS + ch);
             if (slot < 0) {
-                return fail(msg, n, "the module does not carry this sensor", name);
+                return fail(msg, n, TXT("the module does not carry this sensor"), name);
             }
             if (number(value, &v) != 0) {
-                return fail(msg, n, "the value must be a number, got", value);
+                return fail(msg, n, TXT("the value must be a number, got"), value);
             }
             r->over[slot] = v;
             return 0;
@@ -92,7 +119,7 @@ static int sensor(parsl_rt *r, const char *name, const char *value, char *msg, s
             hi = (int16_t) (mid - 1);
         }
     }
-    return fail(msg, n, "the robot has no module", name);
+    return fail(msg, n, TXT("the robot has no module"), name);
 }
 
 int parsl_assign(parsl_rt *r, const char *text, char *msg, size_t n)
@@ -107,7 +134,7 @@ int parsl_assign(parsl_rt *r, const char *text, char *msg, size_t n)
         text++;
     }
     if (eq == NULL || eq == text || (size_t) (eq - text) >= sizeof name) {
-        return fail(msg, n, "expected '$NAME=VALUE', got", text);
+        return fail(msg, n, TXT("expected '$NAME=VALUE', got"), text);
     }
     len = (size_t) (eq - text);
     while (len > 0 && (text[len - 1] == ' ' || text[len - 1] == '\t')) {
@@ -133,14 +160,14 @@ int parsl_assign(parsl_rt *r, const char *text, char *msg, size_t n)
                 return 0;
             }
         }
-        return fail(msg, n, "the radio control has no such word", value);
+        return fail(msg, n, TXT("the radio control has no such word"), value);
     }
     if (number(value, &v) != 0) {
-        return fail(msg, n, "the value must be a number, got", value);
+        return fail(msg, n, TXT("the value must be a number, got"), value);
     }
     if (PARSL_I16(parsl_control[c], PARSL_C_TYPE) == PARSL_CT_SLIDER
             && (v < PARSL_DBL(parsl_control_range[c], 0) || v > PARSL_DBL(parsl_control_range[c], 1))) {
-        return fail(msg, n, "the value is outside the slider's range", value);
+        return fail(msg, n, TXT("the value is outside the slider's range"), value);
     }
     r->controls[c] = v;
     return 0;
@@ -196,7 +223,7 @@ int parsl_format(char *buf, double v)
 const char *parsl_error_text(const parsl_rt *r, char *msg, size_t n)
 {
 #ifdef PARSL_NO_NAMES
-    snprintf(msg, n, "run-time error %d", (int) r->err_code);
+    FORMAT(msg, n, "run-time error %d", (int) r->err_code);
 #else
     const char *aut = r->err_code >= PARSL_E_PERIOD && r->err_code != PARSL_E_NEGATIVE ? parsl_aut_names[r->err_what] : "";
     switch (r->err_code) {

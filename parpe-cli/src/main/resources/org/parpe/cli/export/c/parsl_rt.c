@@ -117,7 +117,11 @@ void parsl_set_reading(parsl_rt *r, int16_t i, int16_t channel, double value)
 static void drive(parsl_rt *r, const inst_view *v, int16_t k)
 {
     int16_t m = parsl_module_of(v, k);
+    if (r->driven[m] && r->driver[m] != v->row && r->overlap != NULL) {
+        r->overlap(r, r->driver[m], v->row, m);
+    }
     r->driven[m] = 1;
+    r->driver[m] = v->row;
     r->next[m] = r->out[v->pool + k];
 }
 

@@ -61,6 +61,11 @@ typedef struct {
 struct parsl_rt;
 /* Reads the board's sensors for this tick with parsl_set_reading. */
 typedef void (*parsl_read_fn)(struct parsl_rt *r);
+/*
+ * Told when two instances under <if> drive the same module in one tick (the later one wins):
+ * instance table rows `earlier` and `later`, the module index. May be NULL.
+ */
+typedef void (*parsl_overlap_fn)(struct parsl_rt *r, int16_t earlier, int16_t later, int16_t module);
 
 /* The whole run-time state: one static object, sized by parsl_program.h. */
 typedef struct parsl_rt {
@@ -84,12 +89,14 @@ typedef struct parsl_rt {
     double commanded[PARSL_N];
     double next[PARSL_N];
     uint8_t driven[PARSL_N];
+    int16_t driver[PARSL_N];
     long tick;
     long entry_start;
     long main_cycle;
     int16_t entry;
     uint8_t ended;
     parsl_read_fn read;
+    parsl_overlap_fn overlap;
     /* instances of the running entry (InstanceRun), pooled across entries */
     parsl_inst_state inst[PARSL_NI1];
     int16_t st[PARSL_POOL1];
@@ -168,6 +175,7 @@ extern PARSL_ROM const uint16_t parsl_pos[][3];
 extern const char *const parsl_files[];
 extern const char *const parsl_expr_text[];
 extern const char *const parsl_aut_names[];
+extern const char *const parsl_inst_groups[];
 extern const char *const parsl_state_names[];
 #endif
 
