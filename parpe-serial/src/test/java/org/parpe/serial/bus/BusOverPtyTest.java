@@ -91,6 +91,16 @@ class BusOverPtyTest {
     }
 
     Discovery startBus(int[] ids) throws Exception {
+        // The first frames of a fresh emulator load its classes, which on a loaded machine can
+        // outlast discovery's retries: wait until it answers before the bus looks.
+        try (org.parpe.serial.servo.ServoBus warm = org.parpe.serial.servo.host.ServoBuses.open(
+                org.parpe.serial.servo.ServoProtocol.G1, LinkOpener.serial(pty.a().toString(), 115200),
+                BusConfig.defaults())) {
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
+            while (warm.ping(emulator.moduleIds()[0], 1) < 0) {
+                assertTrue(System.nanoTime() < deadline, "the emulator did not answer in 5 s");
+            }
+        }
         bus = HardwareBus.open(LinkOpener.serial(pty.a().toString(), 115200), BusConfig.defaults(), BusReport.lines(m -> {
             reportTimes.add(System.nanoTime());
             reports.add(m);
