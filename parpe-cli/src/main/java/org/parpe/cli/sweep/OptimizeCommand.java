@@ -72,15 +72,21 @@ public final class OptimizeCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         PrintWriter err = spec.commandLine().getErr();
-        try {
-            return execute(spec.commandLine().getOut(), err);
+        Cancellation cancel = new Cancellation();
+        // Held until the script and the plot are written, so that Ctrl-C still leaves the best so far.
+        try (StopOnInterrupt hook = new StopOnInterrupt(cancel)) {
+            int code = execute(spec.commandLine().getOut(), err, cancel);
+            if (hook.interrupted()) {
+                err.println("parpe: interrupted (Ctrl-C): kept the best found so far");
+            }
+            return code;
         } catch (UsageException | SweepException e) {
             err.println("parpe: " + e.getMessage());
             return 2;
         }
     }
 
-    private int execute(PrintWriter stdout, PrintWriter err) throws Exception {
+    private int execute(PrintWriter stdout, PrintWriter err, Cancellation cancel) throws Exception {
         Objective goal = Objective.byId(objective);
         if (goal == null) {
             throw new UsageException("--objective must be one of " + Objective.ids() + ", got '" + objective + "'");
@@ -100,18 +106,19 @@ public final class OptimizeCommand implements Callable<Integer> {
         OutputFile xml = OutputFile.of("--out", script, inputs);
         String base = script.toLowerCase(Locale.ROOT).endsWith(".xml") ? script.substring(0, script.length() - 4) : script;
         OutputFile png = OutputFile.of("--plot", plot != null ? plot : base + "-convergence.png", inputs);
-        Cancellation cancel = new Cancellation();
-        OptimizationResult result;
-        try (StopOnInterrupt hook = new StopOnInterrupt(cancel)) {
-            ProgressBar bar = new ProgressBar(err, SweepListener.NONE);
-            result = optimizer.run(options.jobs(), bar, cancel);
-            bar.clear();
-            if (hook.interrupted()) {
-                err.println("parpe: interrupted (Ctrl-C): keeping what is finished");
-            }
+        ProgressBar bar = new ProgressBar(err, SweepListener.NONE);
+        OptimizationResult result = optimizer.run(options.jobs(), bar, cancel);
+        bar.clear();
+        if (result.evaluations().isEmpty()) {
+            return 0;
         }
         String title = file.getFileName() + " on " + options.sim + ": CMA-ES, " + result.evaluations().size()
                 + " simulations of " + Numbers.format(options.duration) + " s";
+        if (cancel.cancelled()) {
+            // AWT cannot start while the JVM shuts down (Ctrl-C): the script is written, the plot is not.
+            err.println("parpe: interrupted: no convergence plot drawn");
+            return report(stdout, err, result, goal, ev, xml, null);
+        }
         png.write(o -> Plots.convergence(o, title, result));
         return report(stdout, err, result, goal, ev, xml, png);
     }
@@ -124,7 +131,9 @@ public final class OptimizeCommand implements Callable<Integer> {
             err.println("parpe: no simulation met the constraints" + result.bestIgnoringConstraints()
                     .map(e -> String.format(Locale.ROOT, " (the best without them: %s %.4f, max tilt %.1f°)", goal.id(),
                             e.score(), e.row().maxTiltDeg())).orElse("") + "; no script written");
-            err.println("parpe: convergence plot in " + png);
+            if (png != null) {
+                err.println("parpe: convergence plot in " + png);
+            }
             return 1;
         }
         Evaluation best = result.best().get();
@@ -140,7 +149,8 @@ public final class OptimizeCommand implements Callable<Integer> {
                 best.row().distance(), best.row().forward(), best.row().maxTiltDeg(), best.row().fell() ? "yes" : "no"));
         stdout.flush();
         xml.write(ParameterDefaults.rewrite(file, ev.text(), ev.parameters(), best.row().values()));
-        err.println("parpe: wrote " + xml + " (the best values as defaults) and the convergence plot " + png);
+        err.println("parpe: wrote " + xml + " (the best values as defaults)"
+                + (png == null ? "" : " and the convergence plot " + png));
         return 0;
     }
 

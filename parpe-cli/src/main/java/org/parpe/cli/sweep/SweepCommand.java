@@ -77,15 +77,21 @@ public final class SweepCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         PrintWriter err = spec.commandLine().getErr();
-        try {
-            return execute(spec.commandLine().getOut(), err);
+        Cancellation cancel = new Cancellation();
+        // Held until every output is written, so that Ctrl-C still leaves the finished rows and the plot.
+        try (StopOnInterrupt hook = new StopOnInterrupt(cancel)) {
+            int code = execute(spec.commandLine().getOut(), err, cancel);
+            if (hook.interrupted()) {
+                err.println("parpe: interrupted (Ctrl-C): kept what was finished");
+            }
+            return code;
         } catch (UsageException | SweepException e) {
             err.println("parpe: " + e.getMessage());
             return 2;
         }
     }
 
-    private int execute(PrintWriter stdout, PrintWriter err) throws Exception {
+    private int execute(PrintWriter stdout, PrintWriter err, Cancellation cancel) throws Exception {
         Objective goal = objective();
         int[] share = shard();
         Evaluator ev = options.evaluator(file, err);
@@ -109,8 +115,17 @@ public final class SweepCommand implements Callable<Integer> {
         List<Path> inputs = new ArrayList<>(List.of(file));
         options.addInputs(inputs);
         OutputFile csv = OutputFile.ofOptional("--out", out, inputs);
-        OutputFile png = plotFile(inputs, share != null);
-        SweepResult result = write(sweep, range, csv, stdout, err);
+        OutputFile plotTarget = plotFile(inputs, share != null);
+        if (cancel.cancelled()) {
+            return 0;
+        }
+        SweepResult result = write(sweep, range, csv, stdout, err, cancel);
+        OutputFile png = plotTarget;
+        if (png != null && cancel.cancelled()) {
+            // AWT cannot start while the JVM shuts down (Ctrl-C): the rows are safe, the plot is not drawn.
+            err.println("parpe: interrupted: no plot drawn");
+            png = null;
+        }
         if (png != null) {
             String title = file.getFileName() + " on " + options.sim + ", " + Numbers.format(options.duration) + " s, "
                     + result.rows().size() + " runs";
@@ -121,13 +136,12 @@ public final class SweepCommand implements Callable<Integer> {
     }
 
     /** Runs the sweep's share {@code range}, writing the header and each row as it comes. */
-    private SweepResult write(Sweep sweep, int[] range, OutputFile csv, PrintWriter stdout, PrintWriter err)
-            throws UsageException {
+    private SweepResult write(Sweep sweep, int[] range, OutputFile csv, PrintWriter stdout, PrintWriter err,
+                              Cancellation cancel) throws UsageException {
         int total = sweep.spec().size();
         int jobs = options.jobs();
-        Cancellation cancel = new Cancellation();
         SweepResult result;
-        try (Writer w = csv == null ? null : csv.openWriter(); StopOnInterrupt hook = new StopOnInterrupt(cancel)) {
+        try (Writer w = csv == null ? null : csv.openWriter()) {
             Writer target = w != null ? w : stdout;
             target.write(SweepCsv.header(sweep.spec().axes()) + "\n");
             ProgressBar bar = new ProgressBar(err, new SweepListener() {
@@ -142,9 +156,6 @@ public final class SweepCommand implements Callable<Integer> {
             });
             result = sweep.run(range[0], range[1], jobs, bar, cancel);
             bar.clear();
-            if (hook.interrupted()) {
-                err.println("parpe: interrupted (Ctrl-C): keeping what is finished");
-            }
             target.flush();
         } catch (java.io.UncheckedIOException | IOException e) {
             throw new UsageException("cannot write --out file '" + out + "': " + e.getMessage());

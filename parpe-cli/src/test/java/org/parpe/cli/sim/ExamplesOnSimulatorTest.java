@@ -66,7 +66,7 @@ class ExamplesOnSimulatorTest {
     @ParameterizedTest
     @CsvSource({"hello-snake.xml, snake", "wheel.xml, wheel", "centipede-walk.xml, centipede",
         "gait-table-12.xml, snake", "standup-walk.xml, centipede", "teleop-dirwave.xml, snake:axes=alternate",
-        "param-loop.xml, loop", "sensor-exit.xml, snake", "race-snake-optimised.xml, snake:n=8"})
+        "param-loop.xml, loop", "sensor-exit.xml, snake"})
     void tenSimulatedMinutesStaySane(String file, String spec) {
         Program p = program(file);
         try (Simulator s = simulator(spec, p)) {

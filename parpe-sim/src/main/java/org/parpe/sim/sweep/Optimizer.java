@@ -67,7 +67,7 @@ public final class Optimizer {
                 }
             }
         };
-        Sweep.runOn(Math.max(1, Math.min(jobs, n)), worker);
+        Sweep.runOn(Math.max(1, Math.min(jobs, n)), worker, cancellation);
         return new OptimizationResult(spec.objective(), results, cancellation.cancelled());
     }
 

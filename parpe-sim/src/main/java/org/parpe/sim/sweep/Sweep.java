@@ -48,7 +48,6 @@ public final class Sweep {
         }
         Ordered ordered = new Ordered(from, to, listener);
         AtomicInteger next = new AtomicInteger(from);
-        AtomicReference<Throwable> failure = new AtomicReference<>();
         Runnable worker = () -> {
             try (Evaluator.Worker w = evaluator.worker()) {
                 for (int i = next.getAndIncrement(); i < to && !cancellation.cancelled(); i = next.getAndIncrement()) {
@@ -57,33 +56,35 @@ public final class Sweep {
                         ordered.add(row);
                     }
                 }
+            }
+        };
+        runOn(Math.min(jobs, Math.max(1, to - from)), worker, cancellation);
+        List<SweepRow> rows = ordered.rows();
+        return new SweepResult(rows, rows.size() < to - from);
+    }
+
+    /**
+     * Runs {@code worker} on {@code n} threads (the calling thread is one of them) and waits for
+     * all; the first failure of a worker cancels the others and is rethrown on the calling thread.
+     */
+    static void runOn(int n, Runnable worker, Cancellation cancellation) {
+        AtomicReference<Throwable> failure = new AtomicReference<>();
+        Runnable guarded = () -> {
+            try {
+                worker.run();
             } catch (RuntimeException | Error e) {
                 failure.compareAndSet(null, e);
                 cancellation.cancel();
             }
         };
-        runOn(Math.min(jobs, Math.max(1, to - from)), worker);
-        Throwable t = failure.get();
-        if (t instanceof RuntimeException r) {
-            throw r;
-        }
-        if (t instanceof Error e) {
-            throw e;
-        }
-        List<SweepRow> rows = ordered.rows();
-        return new SweepResult(rows, rows.size() < to - from);
-    }
-
-    /** Runs {@code worker} on {@code n} threads (the calling thread is one of them) and waits for all. */
-    static void runOn(int n, Runnable worker) {
         List<Thread> threads = new ArrayList<>();
         for (int i = 1; i < n; i++) {
-            Thread t = new Thread(worker, "parpe-sweep-" + i);
+            Thread t = new Thread(guarded, "parpe-sweep-" + i);
             t.setDaemon(true);
             t.start();
             threads.add(t);
         }
-        worker.run();
+        guarded.run();
         boolean interrupted = false;
         for (Thread t : threads) {
             while (t.isAlive()) {
@@ -96,6 +97,13 @@ public final class Sweep {
         }
         if (interrupted) {
             Thread.currentThread().interrupt();
+        }
+        Throwable t = failure.get();
+        if (t instanceof RuntimeException r) {
+            throw r;
+        }
+        if (t instanceof Error e) {
+            throw e;
         }
     }
 
