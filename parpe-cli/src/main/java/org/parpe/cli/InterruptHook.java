@@ -2,22 +2,27 @@ package org.parpe.cli;
 
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
-import org.parpe.core.run.Run;
 
 /**
- * Ctrl-C during a run: asks the run to stop at the next tick and holds the JVM's shutdown for
- * up to three seconds so the run can end properly (emergency stop on the bus, trace flushed).
+ * Ctrl-C during a command that must end properly (a run: emergency stop on the bus, trace
+ * flushed; a sweep: the finished rows written): asks the work to stop and holds the JVM's
+ * shutdown for a few seconds until {@link #close()} says the work has ended.
  */
-final class InterruptHook implements AutoCloseable {
+public final class InterruptHook implements AutoCloseable {
     private final CountDownLatch done = new CountDownLatch(1);
     private final Thread hook;
+    private volatile boolean interrupted;
 
-    /** Installs the hook for {@code run}; {@link #close()} removes it when the run is over. */
-    InterruptHook(Run run) {
+    /**
+     * Installs the hook: on Ctrl-C, {@code stop} runs (it must only set a flag), then shutdown
+     * waits up to {@code holdSeconds} for {@link #close()}.
+     */
+    public InterruptHook(Runnable stop, int holdSeconds) {
         hook = new Thread(() -> {
-            run.requestStop();
+            interrupted = true;
+            stop.run();
             try {
-                done.await(3, TimeUnit.SECONDS);
+                done.await(holdSeconds, TimeUnit.SECONDS);
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
             }
@@ -25,6 +30,12 @@ final class InterruptHook implements AutoCloseable {
         Runtime.getRuntime().addShutdownHook(hook);
     }
 
+    /** Whether Ctrl-C was pressed. */
+    public boolean interrupted() {
+        return interrupted;
+    }
+
+    /** The work has ended: shutdown may go on, and without Ctrl-C the hook is removed. */
     @Override
     public void close() {
         done.countDown();

@@ -9,7 +9,6 @@ import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -19,7 +18,6 @@ import org.parpe.cli.sim.SimOptions;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
-import org.parpe.core.model.Numbers;
 import org.parpe.core.model.Program;
 import org.parpe.core.run.Pacer;
 import org.parpe.core.run.Run;
@@ -93,7 +91,7 @@ final class RunCommand implements Callable<Integer> {
         if (stimulus != null) {
             Inputs.check(stimulus);
         }
-        LoadResult r = ScriptLoader.load(file, parseParams());
+        LoadResult r = ScriptLoader.load(file, ParamValues.parse(params));
         for (Diagnostic d : r.diagnostics()) {
             err.println(d.format());
         }
@@ -143,7 +141,7 @@ final class RunCommand implements Callable<Integer> {
         builder.pacer(sim.realtime() || builder.realtimeRequired() ? new WallClockPacer(1) : Pacer.NONE);
         Run run = builder.build();
         RunOutcome outcome;
-        try (InterruptHook hook = new InterruptHook(run)) {
+        try (InterruptHook hook = new InterruptHook(run::requestStop, 3)) {
             outcome = run.execute();
             if (out != null && !toStdout) {
                 out.close(); // replaces the trace file, also after a run-time error (its rows are kept)
@@ -160,23 +158,6 @@ final class RunCommand implements Callable<Integer> {
             err.println("parpe: stopped at t=" + String.format(Locale.ROOT, "%.3f", outcome.time()) + " s");
         }
         return sim.outputsWritten(outcome.status() == RunOutcome.Status.ERROR ? 3 : 0);
-    }
-
-    private Map<String, Double> parseParams() throws UsageException {
-        Map<String, Double> out = new LinkedHashMap<>();
-        for (String p : params) {
-            int eq = p.indexOf('=');
-            if (eq <= 0) {
-                throw new UsageException("--param expects NAME=VALUE, got '" + p + "'");
-            }
-            String name = p.substring(0, eq).trim();
-            Double v = Numbers.parsePlain(p.substring(eq + 1));
-            if (v == null) {
-                throw new UsageException("parameter '" + name + "' must be a number, got '" + p.substring(eq + 1) + "'");
-            }
-            out.put(name, v);
-        }
-        return out;
     }
 
     private List<Stimulus> stimuli(Program program) throws UsageException {

@@ -10,6 +10,7 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import org.parpe.cli.ClockOptions;
 import org.parpe.cli.Inputs;
+import org.parpe.cli.ParamValues;
 import org.parpe.cli.UsageException;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.DiagnosticList;
@@ -17,7 +18,6 @@ import org.parpe.core.export.Board;
 import org.parpe.core.export.CExport;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
-import org.parpe.core.model.Numbers;
 import org.parpe.core.model.Program;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -97,7 +97,7 @@ public final class ExportCommand implements Callable<Integer> {
         };
         Board b = board(arduino);
         SketchOptions sketch = arduino ? SketchOptions.of(servo, pins, baud, model, consoleSensors) : null;
-        LoadResult r = ScriptLoader.load(file, parseParams());
+        LoadResult r = ScriptLoader.load(file, ParamValues.parse(params));
         r.diagnostics().forEach(d -> err.println(d.format()));
         if (r.program() == null) {
             return 1;
@@ -153,23 +153,6 @@ public final class ExportCommand implements Callable<Integer> {
         if (sketch == null) {
             o.println("build: cc -std=c99 -O2 -o program " + dir + "/*.c -lm");
         }
-    }
-
-    private Map<String, Double> parseParams() throws UsageException {
-        Map<String, Double> values = new LinkedHashMap<>();
-        for (String p : params) {
-            int eq = p.indexOf('=');
-            if (eq <= 0) {
-                throw new UsageException("--param expects NAME=VALUE, got '" + p + "'");
-            }
-            Double v = Numbers.parsePlain(p.substring(eq + 1));
-            if (v == null) {
-                throw new UsageException("parameter '" + p.substring(0, eq).trim() + "' must be a number, got '"
-                        + p.substring(eq + 1) + "'");
-            }
-            values.put(p.substring(0, eq).trim(), v);
-        }
-        return values;
     }
 
     /** For messages: a diagnostic list as lines. */

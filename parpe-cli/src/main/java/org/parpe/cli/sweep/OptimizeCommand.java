@@ -71,19 +71,8 @@ public final class OptimizeCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        PrintWriter err = spec.commandLine().getErr();
-        Cancellation cancel = new Cancellation();
         // Held until the script and the plot are written, so that Ctrl-C still leaves the best so far.
-        try (StopOnInterrupt hook = new StopOnInterrupt(cancel)) {
-            int code = execute(spec.commandLine().getOut(), err, cancel);
-            if (hook.interrupted()) {
-                err.println("parpe: interrupted (Ctrl-C): kept the best found so far");
-            }
-            return code;
-        } catch (UsageException | SweepException e) {
-            err.println("parpe: " + e.getMessage());
-            return 2;
-        }
+        return Interruptible.call(spec, "kept the best found so far", this::execute);
     }
 
     private int execute(PrintWriter stdout, PrintWriter err, Cancellation cancel) throws Exception {

@@ -4,15 +4,14 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.parpe.cli.ClockOptions;
 import org.parpe.cli.Inputs;
+import org.parpe.cli.ParamValues;
 import org.parpe.cli.UsageException;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
-import org.parpe.core.model.Numbers;
 import org.parpe.core.xml.InputFiles;
 import org.parpe.sim.SimTarget;
 import org.parpe.sim.sweep.Evaluator;
@@ -74,7 +73,7 @@ public class SimSweepOptions {
             throw new UsageException("--fall-tilt must be within [0, 180] degrees, got " + fallTilt);
         }
         Inputs.check(file);
-        Map<String, Double> fixed = fixed();
+        Map<String, Double> fixed = ParamValues.parse(params);
         LoadResult r = ScriptLoader.load(file, fixed);
         r.diagnostics().forEach(d -> err.println(d.format()));
         if (r.program() == null) {
@@ -103,22 +102,5 @@ public class SimSweepOptions {
         } catch (java.nio.file.InvalidPathException notAFile) {
             // a generator spec such as snake:n=8 need not be a valid path
         }
-    }
-
-    private Map<String, Double> fixed() throws UsageException {
-        Map<String, Double> out = new LinkedHashMap<>();
-        for (String p : params) {
-            int eq = p.indexOf('=');
-            if (eq <= 0) {
-                throw new UsageException("--param expects NAME=VALUE, got '" + p + "'");
-            }
-            String name = p.substring(0, eq).trim();
-            Double v = Numbers.parsePlain(p.substring(eq + 1));
-            if (v == null) {
-                throw new UsageException("parameter '" + name + "' must be a number, got '" + p.substring(eq + 1) + "'");
-            }
-            out.put(name, v);
-        }
-        return out;
     }
 }

@@ -17,7 +17,6 @@ import org.parpe.sim.sweep.Evaluator;
 import org.parpe.sim.sweep.Objective;
 import org.parpe.sim.sweep.Sweep;
 import org.parpe.sim.sweep.SweepCsv;
-import org.parpe.sim.sweep.SweepException;
 import org.parpe.sim.sweep.SweepListener;
 import org.parpe.sim.sweep.SweepResult;
 import org.parpe.sim.sweep.SweepRow;
@@ -76,19 +75,8 @@ public final class SweepCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        PrintWriter err = spec.commandLine().getErr();
-        Cancellation cancel = new Cancellation();
         // Held until every output is written, so that Ctrl-C still leaves the finished rows and the plot.
-        try (StopOnInterrupt hook = new StopOnInterrupt(cancel)) {
-            int code = execute(spec.commandLine().getOut(), err, cancel);
-            if (hook.interrupted()) {
-                err.println("parpe: interrupted (Ctrl-C): kept what was finished");
-            }
-            return code;
-        } catch (UsageException | SweepException e) {
-            err.println("parpe: " + e.getMessage());
-            return 2;
-        }
+        return Interruptible.call(spec, "kept what was finished", this::execute);
     }
 
     private int execute(PrintWriter stdout, PrintWriter err, Cancellation cancel) throws Exception {
