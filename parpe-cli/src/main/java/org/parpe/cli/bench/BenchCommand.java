@@ -44,11 +44,11 @@ public final class BenchCommand implements Callable<Integer> {
         }
         List<Benchmark> chosen = all.stream().filter(b -> only.isEmpty() || only.contains(b.name())).toList();
         for (Benchmark b : chosen) {
-            if (noFork || chosen.size() == 1) {
+            if (noFork || chosen.size() == 1 && b.jvmOptions().isEmpty()) {
                 out.println("# " + b.name());
                 b.run(out);
                 out.flush();
-            } else if (fork(b.name()) != 0) {
+            } else if (fork(b) != 0) {
                 spec.commandLine().getErr().println("parpe: benchmark '" + b.name() + "' failed");
                 return org.parpe.cli.Main.INTERNAL_ERROR;
             }
@@ -56,11 +56,16 @@ public final class BenchCommand implements Callable<Integer> {
         return 0;
     }
 
-    /** Runs one benchmark in a fresh JVM with the same class path, passing its output through. */
-    private static int fork(String name) throws Exception {
+    /**
+     * Runs one benchmark in a fresh JVM with the same class path and the benchmark's JVM options,
+     * passing its output through.
+     */
+    private static int fork(Benchmark b) throws Exception {
         String java = ProcessHandle.current().info().command().orElse("java");
-        ProcessBuilder pb = new ProcessBuilder(java, "-cp", System.getProperty("java.class.path"),
-                "org.parpe.cli.Main", "bench", "--only", name).inheritIO();
-        return pb.start().waitFor();
+        List<String> command = new java.util.ArrayList<>(List.of(java));
+        command.addAll(b.jvmOptions());
+        command.addAll(List.of("-Djava.awt.headless=true", "-cp", System.getProperty("java.class.path"),
+                "org.parpe.cli.Main", "bench", "--only", b.name(), "--no-fork"));
+        return new ProcessBuilder(command).inheritIO().start().waitFor();
     }
 }

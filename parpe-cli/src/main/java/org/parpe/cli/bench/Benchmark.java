@@ -1,6 +1,7 @@
 package org.parpe.cli.bench;
 
 import java.io.PrintStream;
+import java.util.List;
 
 /**
  * One group of measurements printed by {@code parpe bench} as {@code name=value} lines.
@@ -13,4 +14,12 @@ public interface Benchmark {
 
     /** Runs the measurements and prints {@code name=value} lines to {@code out}. */
     void run(PrintStream out) throws Exception;
+
+    /**
+     * Options of the JVM the measurements must run in, such as the garbage collector the command
+     * being measured runs with; when not empty the benchmark always gets a JVM of its own.
+     */
+    default List<String> jvmOptions() {
+        return List.of();
+    }
 }

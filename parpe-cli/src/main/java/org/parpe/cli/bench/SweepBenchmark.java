@@ -24,13 +24,17 @@ import org.parpe.sim.sweep.SweepSpec;
  * Sweep figures: simulations per second (wall clock) of the 8-module snake and the 55-module
  * centipede with one job and with every core, and the best forward speed that {@code optimize}
  * finds on the snake with a budget of 300 runs against the best of a 300-point random sweep
- * over the same bounds (lesson 10's race snake, 6 s per run). The machine's load
+ * over the same bounds (lesson 10's race snake, 6 s per run). Throughput is measured after three
+ * warm-up passes (each worker's classes are compiled by the JIT on their own), as the median of
+ * three interleaved rounds, in a JVM with the collector {@code parpe sweep} runs with. The machine's load
  * average is printed too: with other processes on the cores, the wall-clock speed-up of more
  * jobs shrinks while the CPU time per simulation ({@code cpu_s_per_sim}) shows the overhead.
  */
 public final class SweepBenchmark implements Benchmark {
     private static final int BUDGET = 300;
     private static final double RACE_SECONDS = 6;
+    private static final int WARM_UP_PASSES = 3;
+    private static final int ROUNDS = 3;
 
     /** Lesson 10's race snake: a travelling wave with bend, period and phase to tune. */
     static final String SNAKE = "<program><robot><structure><body elements=\"0..7\"/></structure></robot>"
@@ -63,13 +67,19 @@ public final class SweepBenchmark implements Benchmark {
         return "sweep";
     }
 
+    /** The collector {@code parpe sweep} and {@code parpe optimize} run with (the launcher's default). */
+    @Override
+    public List<String> jvmOptions() {
+        return List.of("-XX:+UseSerialGC");
+    }
+
     @Override
     public void run(PrintStream out) throws SweepException {
         int cores = Runtime.getRuntime().availableProcessors();
         out.printf(Locale.ROOT, "sweep.cores=%d%n", cores);
         out.printf(Locale.ROOT, "sweep.load_average_before=%.2f%n", OS.getSystemLoadAverage());
-        throughput(out, "snake8", evaluator("bench-snake.xml", SNAKE, "snake:n=8", 5), "bend", 20, cores);
-        throughput(out, "centipede55", evaluator("bench-centipede.xml", CENTIPEDE, "centipede", 3), "period", 8, cores);
+        throughput(out, "snake8", evaluator("bench-snake.xml", SNAKE, "snake:n=8", 5), "bend", 60, cores);
+        throughput(out, "centipede55", evaluator("bench-centipede.xml", CENTIPEDE, "centipede", 3), "period", 16, cores);
         optimiseVersusRandom(out, cores);
     }
 
@@ -85,15 +95,41 @@ public final class SweepBenchmark implements Benchmark {
                 .orElseThrow().max(), runs);
         Sweep sweep = new Sweep(ev, SweepSpec.grid(List.of(axis), 1, 0));
         // Every worker simulates in its own copy of the classes, compiled by the JIT on its own:
-        // one whole pass on every core first, so that both measurements see compiled code.
-        sweep.run(cores, SweepListener.NONE, new Cancellation());
-        double[] one = rate(sweep, 1);
-        double[] all = rate(sweep, cores);
+        // whole passes on every core first, until the JIT has finished with them (its threads
+        // would otherwise use the second core while one job is measured, and take it from the
+        // second job), so that both measurements see the steady state of a long sweep.
+        for (int pass = 0; pass < WARM_UP_PASSES; pass++) {
+            sweep.run(cores, SweepListener.NONE, new Cancellation());
+        }
+        // Rounds of one job then every core, interleaved so that a drift of the machine's speed
+        // touches both; the medians are printed.
+        double[][] ones = new double[ROUNDS][];
+        double[][] alls = new double[ROUNDS][];
+        for (int round = 0; round < ROUNDS; round++) {
+            ones[round] = rate(sweep, 1);
+            alls[round] = rate(sweep, cores);
+        }
+        double[] one = median(ones);
+        double[] all = median(alls);
         out.printf(Locale.ROOT, "sweep.%s.sims_per_s.jobs1=%.2f%n", label, one[0]);
         out.printf(Locale.ROOT, "sweep.%s.sims_per_s.jobs%d=%.2f%n", label, cores, all[0]);
         out.printf(Locale.ROOT, "sweep.%s.speedup=%.2f%n", label, all[0] / one[0]);
         out.printf(Locale.ROOT, "sweep.%s.cpu_s_per_sim.jobs1=%.3f%n", label, one[1]);
         out.printf(Locale.ROOT, "sweep.%s.cpu_s_per_sim.jobs%d=%.3f%n", label, cores, all[1]);
+    }
+
+    /** The median of each column. */
+    private static double[] median(double[][] rows) {
+        double[] m = new double[rows[0].length];
+        for (int c = 0; c < m.length; c++) {
+            double[] col = new double[rows.length];
+            for (int r = 0; r < rows.length; r++) {
+                col[r] = rows[r][c];
+            }
+            java.util.Arrays.sort(col);
+            m[c] = col[col.length / 2];
+        }
+        return m;
     }
 
     /** Simulations per wall-clock second and CPU seconds (all threads of this process) per simulation. */
