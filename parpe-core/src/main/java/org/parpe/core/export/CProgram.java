@@ -156,16 +156,9 @@ public final class CProgram {
                 continue;
             }
             Instance i = (Instance) item;
-            String g = i.group();
-            boolean mirror = g.startsWith("!");
-            String base = mirror ? g.substring(1).trim() : g;
-            for (MainEntry.MacroArg a : e.macros()) {
-                if (a.name().equals(base) && a.group() != null) {
-                    base = a.group();
-                    mirror ^= a.mirror();
-                }
-            }
-            List<Integer> group = program.group(base).orElseThrow().modules();
+            MainEntry.GroupRef ref = e.groupOf(i);
+            boolean mirror = ref.mirror();
+            List<Integer> group = program.group(ref.name()).orElseThrow().modules();
             int automaton = program.automata().indexOf(program.automaton(i.automaton()).orElseThrow());
             int mod = t.mod.size();
             for (int id : group) {

@@ -21,6 +21,30 @@ public record MainEntry(String behavior, Expression time, Expression exit, List<
     }
 
     /**
+     * The group an instance drives in this entry, with the instance's {@code !} and a
+     * group-valued macro's {@code !} combined: mirrored when exactly one of them mirrors.
+     *
+     * @param name   the group's name
+     * @param mirror whether every target angle is negated
+     */
+    public record GroupRef(String name, boolean mirror) {
+    }
+
+    /** The group {@code instance} drives when this entry runs it. */
+    public GroupRef groupOf(Instance instance) {
+        String g = instance.group();
+        boolean mirror = g.startsWith("!");
+        String base = mirror ? g.substring(1).trim() : g;
+        for (MacroArg a : macros) {
+            if (a.name().equals(base) && a.group() != null) {
+                base = a.group();
+                mirror ^= a.mirror();
+            }
+        }
+        return new GroupRef(base, mirror);
+    }
+
+    /**
      * A macro's value for this entry.
      *
      * @param name   the macro

@@ -47,16 +47,9 @@ final class EntryPlan {
                 continue;
             }
             Instance i = (Instance) item;
-            String g = i.group();
-            boolean mirror = g.startsWith("!");
-            String base = mirror ? g.substring(1).trim() : g;
-            for (MainEntry.MacroArg a : entry.macros()) {
-                if (a.name().equals(base) && a.group() != null) {
-                    base = a.group();
-                    mirror ^= a.mirror();
-                }
-            }
-            Group group = program.group(base).orElseThrow();
+            MainEntry.GroupRef ref = entry.groupOf(i);
+            boolean mirror = ref.mirror();
+            Group group = program.group(ref.name()).orElseThrow();
             int[] ids = group.modules().stream().mapToInt(Integer::intValue).toArray();
             int[] mod = new int[ids.length];
             for (int k = 0; k < ids.length; k++) {

@@ -12,14 +12,14 @@ import org.eclipse.swt.widgets.Display;
 import org.eclipse.swt.widgets.Shell;
 
 /** What the GUI tests share: the display, bounded waits, examples and screenshots as evidence. */
-final class Gui {
+public final class Gui {
     static final long WAIT_MS = 30_000;
 
     private Gui() {
     }
 
     /** The display; fails with a hint when there is no X server. */
-    static Display display() {
+    public static Display display() {
         String x = System.getenv("DISPLAY");
         if (x == null || x.isBlank()) {
             fail("No X display (DISPLAY is not set). The GUI tests need one: run them under xvfb-run, as ./test-all does.");
@@ -29,11 +29,16 @@ final class Gui {
 
     /** Runs the event loop until {@code done} holds; fails after {@link #WAIT_MS}. */
     static void pump(BooleanSupplier done, String what) {
+        pump(done, what, WAIT_MS);
+    }
+
+    /** Runs the event loop until {@code done} holds; fails after {@code waitMs}. */
+    public static void pump(BooleanSupplier done, String what, long waitMs) {
         Display display = Display.getDefault();
-        long until = System.currentTimeMillis() + WAIT_MS;
+        long until = System.currentTimeMillis() + waitMs;
         while (!done.getAsBoolean()) {
             if (System.currentTimeMillis() > until) {
-                fail("timed out after " + WAIT_MS / 1000 + " s waiting for " + what);
+                fail("timed out after " + waitMs / 1000 + " s waiting for " + what);
             }
             if (!display.readAndDispatch()) {
                 try {
@@ -47,7 +52,7 @@ final class Gui {
     }
 
     /** Handles events for a moment, so that layouts and paints (GTK draws on its frame clock) are done. */
-    static void settle() {
+    public static void settle() {
         Display display = Display.getDefault();
         long until = System.currentTimeMillis() + 300;
         while (System.currentTimeMillis() < until) {

@@ -1,7 +1,6 @@
 package org.parpe.gui.sweep;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assertions.fail;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -13,6 +12,7 @@ import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Display;
 import org.eclipse.swt.widgets.Event;
 import org.eclipse.swt.widgets.Shell;
+import org.parpe.gui.app.Gui;
 import org.parpe.gui.app.Screenshot;
 
 /** What the sweep dialog's GUI tests share: the display, bounded waits, clicks and screenshots. */
@@ -24,46 +24,17 @@ final class Ui {
 
     /** The display; fails with a hint when there is no X server. */
     static Display display() {
-        String x = System.getenv("DISPLAY");
-        if (x == null || x.isBlank()) {
-            fail("No X display (DISPLAY is not set). The GUI tests need one: run them under xvfb-run, as ./test-all does.");
-        }
-        return Display.getDefault();
+        return Gui.display();
     }
 
     /** Runs the event loop until {@code done} holds; fails after {@link #WAIT_MS}. */
     static void pump(BooleanSupplier done, String what) {
-        Display display = Display.getDefault();
-        long until = System.currentTimeMillis() + WAIT_MS;
-        while (!done.getAsBoolean()) {
-            if (System.currentTimeMillis() > until) {
-                fail("timed out after " + WAIT_MS / 1000 + " s waiting for " + what);
-            }
-            if (!display.readAndDispatch()) {
-                sleep();
-            }
-        }
+        Gui.pump(done, what, WAIT_MS);
     }
 
     /** Handles events for a moment, so that layouts and paints are done. */
     static void settle() {
-        Display display = Display.getDefault();
-        long until = System.currentTimeMillis() + 300;
-        while (System.currentTimeMillis() < until) {
-            if (!display.readAndDispatch()) {
-                display.update();
-                sleep();
-            }
-        }
-    }
-
-    private static void sleep() {
-        try {
-            Thread.sleep(5);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            fail("interrupted");
-        }
+        Gui.settle();
     }
 
     /** Presses {@code b} as a click would: its selection listeners run on the UI thread. */
