@@ -100,6 +100,8 @@ public final class SweepBenchmark implements Benchmark {
         // second job), so that both measurements see the steady state of a long sweep.
         for (int pass = 0; pass < WARM_UP_PASSES; pass++) {
             sweep.run(cores, SweepListener.NONE, new Cancellation());
+            // One job runs on the calling thread's own copy of the classes: warm it up as well.
+            sweep.run(1, SweepListener.NONE, new Cancellation());
         }
         // Rounds of one job then every core, interleaved so that a drift of the machine's speed
         // touches both; the medians are printed.
