@@ -71,20 +71,7 @@ class ServoProfileGuiTest {
     }
 
     private static void pump(BooleanSupplier done, String what) {
-        long until = System.currentTimeMillis() + WAIT_MS;
-        while (!done.getAsBoolean()) {
-            if (System.currentTimeMillis() > until) {
-                fail("timed out after " + WAIT_MS / 1000 + " s waiting for " + what);
-            }
-            if (!display.readAndDispatch()) {
-                try {
-                    Thread.sleep(5);
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                    fail("interrupted");
-                }
-            }
-        }
+        Gui.pump(done, what, WAIT_MS);
     }
 
     private static void open() throws Exception {

@@ -91,20 +91,7 @@ class TutorialScreenshotsTest {
 
     /** Runs the event loop until {@code done} holds; fails after {@code ms}. */
     private static void pump(BooleanSupplier done, String what, long ms) {
-        long until = System.currentTimeMillis() + ms;
-        while (!done.getAsBoolean()) {
-            if (System.currentTimeMillis() > until) {
-                fail("timed out after " + ms / 1000 + " s waiting for " + what);
-            }
-            if (!display.readAndDispatch()) {
-                try {
-                    Thread.sleep(5);
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                    fail("interrupted");
-                }
-            }
-        }
+        Gui.pump(done, what, ms);
     }
 
     /** Lets the views catch up (the 3D view and the plots redraw on timers). */
