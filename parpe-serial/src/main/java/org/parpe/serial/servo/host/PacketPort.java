@@ -88,12 +88,7 @@ final class PacketPort {
                 heldBytes = 0;
                 throw e;
             }
-            if (heldBytes + codec.bufferSize() > out.length) {
-                flushHeld();
-            }
-            int n = codec.instruction(packet, id, instruction, params, len);
-            System.arraycopy(packet, 0, out, heldBytes, n);
-            n += heldBytes;
+            int n = append(id, instruction, params, len);
             heldBytes = 0;
             link.write(out, 0, n);
             packetsSent++;
@@ -108,14 +103,22 @@ final class PacketPort {
      */
     void hold(int id, int instruction, byte[] params, int len) throws IOException {
         synchronized (writeLock) {
-            if (heldBytes + codec.bufferSize() > out.length) {
-                flushHeld();
-            }
-            int n = codec.instruction(packet, id, instruction, params, len);
-            System.arraycopy(packet, 0, out, heldBytes, n);
-            heldBytes += n;
+            heldBytes = append(id, instruction, params, len);
             packetsSent++;
         }
+    }
+
+    /**
+     * Encodes a packet after the held ones (writing those first when there is no room), with
+     * {@link #writeLock} held; returns the bytes of {@link #out} in use.
+     */
+    private int append(int id, int instruction, byte[] params, int len) throws IOException {
+        if (heldBytes + codec.bufferSize() > out.length) {
+            flushHeld();
+        }
+        int n = codec.instruction(packet, id, instruction, params, len);
+        System.arraycopy(packet, 0, out, heldBytes, n);
+        return heldBytes + n;
     }
 
     /** Writes the held packets on their own, with {@link #writeLock} held. */
