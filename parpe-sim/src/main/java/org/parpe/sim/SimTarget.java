@@ -1,6 +1,7 @@
 package org.parpe.sim;
 
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Locale;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.DiagnosticList;
@@ -12,6 +13,7 @@ import org.parpe.core.run.RunTarget;
 import org.parpe.core.run.TargetException;
 import org.parpe.sim.config.RobotConfig;
 import org.parpe.sim.config.RobotConfigs;
+import org.parpe.sim.internal.Assembly;
 
 /**
  * The physics simulator as a run target: builds the robot named by a specification
@@ -57,6 +59,19 @@ public final class SimTarget implements RunTarget {
      * throws, carrying the located errors.
      */
     public static Simulator create(String spec, int[] moduleIds, DiagnosticSink diags) throws TargetException {
+        Blueprint b = blueprint(spec, moduleIds);
+        for (Diagnostic d : b.warnings()) {
+            diags.report(d);
+        }
+        return b.simulator();
+    }
+
+    /**
+     * The robot for {@code spec} and {@code moduleIds}, resolved, checked and assembled once, from
+     * which {@link Blueprint#simulator()} builds fresh simulators: for many runs of one robot
+     * (a sweep), which then build only the physics world each. Throws as {@link #create} does.
+     */
+    public static Blueprint blueprint(String spec, int[] moduleIds) throws TargetException {
         DiagnosticList found = new DiagnosticList();
         RobotConfig config = RobotConfigs.resolve(spec, moduleIds, found);
         if (config != null) {
@@ -67,10 +82,33 @@ public final class SimTarget implements RunTarget {
             throw new TargetException("cannot build the simulated robot '" + spec + "' (" + n + " error"
                     + (n == 1 ? "" : "s") + ")", found.all());
         }
-        for (Diagnostic d : found.all()) {
-            diags.report(d);
+        return new Blueprint(config, Simulator.assemble(config), List.copyOf(found.all()));
+    }
+
+    /**
+     * A resolved and assembled robot (immutable, so usable from any thread), and the warnings
+     * its resolution gave.
+     */
+    public static final class Blueprint {
+        private final RobotConfig config;
+        private final Assembly assembly;
+        private final List<Diagnostic> warnings;
+
+        private Blueprint(RobotConfig config, Assembly assembly, List<Diagnostic> warnings) {
+            this.config = config;
+            this.assembly = assembly;
+            this.warnings = warnings;
         }
-        return new Simulator(config);
+
+        /** Modules of the script that the robot lacks, and the like. */
+        public List<Diagnostic> warnings() {
+            return warnings;
+        }
+
+        /** A fresh simulator of the robot, in its initial pose. */
+        public Simulator simulator() {
+            return new Simulator(config, assembly);
+        }
     }
 
     /**

@@ -50,13 +50,23 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
 
     /** A simulator of {@code config}; throws {@link IllegalArgumentException} if it is not valid. */
     public Simulator(RobotConfig config) {
-        this.config = config;
+        this(config, assemble(config));
+    }
+
+    /** {@code config}'s pieces placed in their initial pose; throws {@link IllegalArgumentException} if it is not valid. */
+    static Assembly assemble(RobotConfig config) {
         DiagnosticList diags = new DiagnosticList();
         Assembly assembly = Assembly.build(config, diags);
         if (assembly == null) {
             throw new IllegalArgumentException("invalid robot configuration '" + config.name() + "':\n"
                     + diags.all().stream().map(Object::toString).collect(Collectors.joining("\n")));
         }
+        return assembly;
+    }
+
+    /** A simulator of {@code config}, already assembled (immutable, shared by many simulators). */
+    Simulator(RobotConfig config, Assembly assembly) {
+        this.config = config;
         world = new PhysicsWorld(assembly, PhysicsParams.defaults());
         hingeIds = assembly.hinges().stream().mapToInt(Assembly.Hinge::moduleId).toArray();
         limpRequests = new AtomicIntegerArray(hingeIds.length);

@@ -24,17 +24,20 @@ import org.parpe.sim.sweep.SweepSpec;
  * Sweep figures: simulations per second (wall clock) of the 8-module snake and the 55-module
  * centipede with one job and with every core, and the best forward speed that {@code optimize}
  * finds on the snake with a budget of 300 runs against the best of a 300-point random sweep
- * over the same bounds (lesson 10's race snake, 6 s per run). Throughput is measured after three
- * warm-up passes (each worker's classes are compiled by the JIT on their own), as the median of
- * three interleaved rounds, in a JVM with the collector {@code parpe sweep} runs with. The machine's load
+ * over the same bounds (lesson 10's race snake, 6 s per run). Throughput is that of a long sweep:
+ * measured after warm-up passes until the JIT has finished (each worker's classes are compiled
+ * on their own), as the median of eleven interleaved rounds, in a JVM with the collector
+ * {@code parpe sweep} runs with. The machine's load
  * average is printed too: with other processes on the cores, the wall-clock speed-up of more
  * jobs shrinks while the CPU time per simulation ({@code cpu_s_per_sim}) shows the overhead.
  */
 public final class SweepBenchmark implements Benchmark {
     private static final int BUDGET = 300;
     private static final double RACE_SECONDS = 6;
-    private static final int WARM_UP_PASSES = 3;
-    private static final int ROUNDS = 3;
+    private static final int MIN_WARM_UP_PASSES = 3;
+    private static final int MAX_WARM_UP_PASSES = 30;
+    private static final int QUIET_PASSES = 3;
+    private static final int ROUNDS = 11;
 
     /** Lesson 10's race snake: a travelling wave with bend, period and phase to tune. */
     static final String SNAKE = "<program><robot><structure><body elements=\"0..7\"/></structure></robot>"
@@ -59,6 +62,8 @@ public final class SweepBenchmark implements Benchmark {
             + "<states><reach angles=\"25\"/><push angles=\"-25\"/><raise angles=\"20\"/>"
             + "<lower angles=\"-60\"/><stance angles=\"-60\"/></states></program>";
 
+    private static final java.lang.management.CompilationMXBean JIT =
+            java.lang.management.ManagementFactory.getCompilationMXBean();
     private static final com.sun.management.OperatingSystemMXBean OS =
             (com.sun.management.OperatingSystemMXBean) java.lang.management.ManagementFactory.getOperatingSystemMXBean();
 
@@ -87,37 +92,65 @@ public final class SweepBenchmark implements Benchmark {
         return Evaluator.load(new Evaluator.Settings(Path.of(name), text, Map.of(), robot, seconds, 0.01, 90));
     }
 
-    /** Simulations per second for {@code runs} runs with one job, then with every core (after a warm-up pass). */
+    /**
+     * Simulations per second for {@code runs} runs with one job and with every core, in the
+     * steady state of a long sweep: after warm-up passes until the JIT is done, the median of
+     * interleaved rounds.
+     */
     private static void throughput(PrintStream out, String label, Evaluator ev, String param, int runs, int cores)
             throws SweepException {
         Axis axis = Axis.even(param, ev.parameters().stream().filter(p -> p.name().equals(param)).findFirst()
                 .orElseThrow().min(), ev.parameters().stream().filter(p -> p.name().equals(param)).findFirst()
                 .orElseThrow().max(), runs);
         Sweep sweep = new Sweep(ev, SweepSpec.grid(List.of(axis), 1, 0));
-        // Every worker simulates in its own copy of the classes, compiled by the JIT on its own:
-        // whole passes on every core first, until the JIT has finished with them (its threads
-        // would otherwise use the second core while one job is measured, and take it from the
-        // second job), so that both measurements see the steady state of a long sweep.
-        for (int pass = 0; pass < WARM_UP_PASSES; pass++) {
+        // Each worker simulates in its own copy of the physics classes, compiled by the JIT on its
+        // own, and each run loads its script and builds its physics world afresh: code that runs
+        // once per run and so reaches its compiled form only after hundreds of runs. Until then
+        // the compiler threads take CPU time, which is free for one job (the spare core) but comes
+        // out of the simulations when every core is busy. So: whole passes of both until three
+        // passes in a row spend under 2 % of their time compiling (a long sweep's steady state).
+        int passes = 0;
+        int quiet = 0;
+        while (passes < MAX_WARM_UP_PASSES && (passes < MIN_WARM_UP_PASSES || quiet < QUIET_PASSES)) {
+            long jit0 = JIT.getTotalCompilationTime();
+            long t0 = System.nanoTime();
             sweep.run(cores, SweepListener.NONE, new Cancellation());
-            // One job runs on the calling thread's own copy of the classes: warm it up as well.
             sweep.run(1, SweepListener.NONE, new Cancellation());
+            double compiling = (JIT.getTotalCompilationTime() - jit0) / ((System.nanoTime() - t0) / 1e6);
+            quiet = compiling < 0.02 ? quiet + 1 : 0;
+            passes++;
         }
         // Rounds of one job then every core, interleaved so that a drift of the machine's speed
-        // touches both; the medians are printed.
+        // touches both; the medians are printed (on a virtual machine single rounds scatter by
+        // a tenth and more, with the host's other guests).
         double[][] ones = new double[ROUNDS][];
         double[][] alls = new double[ROUNDS][];
+        long jit0 = JIT.getTotalCompilationTime();
+        long t0 = System.nanoTime();
         for (int round = 0; round < ROUNDS; round++) {
             ones[round] = rate(sweep, 1);
             alls[round] = rate(sweep, cores);
         }
+        double jitShare = (JIT.getTotalCompilationTime() - jit0) / ((System.nanoTime() - t0) / 1e6);
         double[] one = median(ones);
         double[] all = median(alls);
+        // The speed-up of each round (one job, then every core, a few seconds apart) and their
+        // median: pairing cancels a drift of the machine's speed between rounds.
+        double[][] ratios = new double[ROUNDS][1];
+        StringBuilder each = new StringBuilder();
+        for (int round = 0; round < ROUNDS; round++) {
+            ratios[round][0] = alls[round][0] / ones[round][0];
+            each.append(round == 0 ? "" : ",").append(String.format(Locale.ROOT, "%.2f", ratios[round][0]));
+        }
+        out.printf(Locale.ROOT, "sweep.%s.warm_up_passes=%d%n", label, passes);
         out.printf(Locale.ROOT, "sweep.%s.sims_per_s.jobs1=%.2f%n", label, one[0]);
         out.printf(Locale.ROOT, "sweep.%s.sims_per_s.jobs%d=%.2f%n", label, cores, all[0]);
-        out.printf(Locale.ROOT, "sweep.%s.speedup=%.2f%n", label, all[0] / one[0]);
+        out.printf(Locale.ROOT, "sweep.%s.speedup=%.2f%n", label, median(ratios)[0]);
+        out.printf(Locale.ROOT, "sweep.%s.speedup_of_medians=%.2f%n", label, all[0] / one[0]);
+        out.printf(Locale.ROOT, "sweep.%s.speedup_per_round=%s%n", label, each);
         out.printf(Locale.ROOT, "sweep.%s.cpu_s_per_sim.jobs1=%.3f%n", label, one[1]);
         out.printf(Locale.ROOT, "sweep.%s.cpu_s_per_sim.jobs%d=%.3f%n", label, cores, all[1]);
+        out.printf(Locale.ROOT, "sweep.%s.jit_share_while_measuring=%.3f%n", label, jitShare);
     }
 
     /** The median of each column. */

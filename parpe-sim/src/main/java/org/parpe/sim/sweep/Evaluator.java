@@ -32,8 +32,14 @@ public final class Evaluator {
     private final double tick;
     private final double fallTiltDeg;
     private final Program base;
+    /** The robot of the last run, built once for all runs with the same modules. */
+    private volatile Robot robotBuilt;
 
-    private Evaluator(Settings s, Program base) {
+    /** A robot assembled for a script's modules. */
+    private record Robot(int[] moduleIds, SimTarget.Blueprint blueprint) {
+    }
+
+    private Evaluator(Settings s, Program base, Robot robot) {
         this.script = s.script();
         this.text = s.text();
         this.fixed = Map.copyOf(s.fixed());
@@ -42,6 +48,7 @@ public final class Evaluator {
         this.tick = s.tick();
         this.fallTiltDeg = s.fallTiltDeg();
         this.base = base;
+        this.robotBuilt = robot;
     }
 
     /**
@@ -81,12 +88,14 @@ public final class Evaluator {
             throw new SweepException(s.script() + ": the script has no <main>, so it would not move the robot");
         }
         String spec = SimTarget.AUTO.equals(s.robot()) ? SimTarget.autoSpec(r.program()) : s.robot();
-        try (Simulator sim = SimTarget.create(spec, r.program().moduleIds(), d -> { })) {
-            sim.moduleIds();
+        Robot robot;
+        try {
+            robot = new Robot(r.program().moduleIds(), SimTarget.blueprint(spec, r.program().moduleIds()));
+            robot.blueprint().simulator().close();
         } catch (TargetException e) {
             throw new SweepException(e.diagnostics().isEmpty() ? e.getMessage() : e.diagnostics().get(0).format());
         }
-        return new Evaluator(s, r.program());
+        return new Evaluator(s, r.program(), robot);
     }
 
     /** The script's parameters (with their bounds), in file order. */
@@ -125,8 +134,7 @@ public final class Evaluator {
         DiagnosticSink quiet = d -> { };
         Simulator sim;
         try {
-            sim = SimTarget.create(SimTarget.AUTO.equals(robot) ? SimTarget.autoSpec(program) : robot,
-                    program.moduleIds(), quiet);
+            sim = robotFor(program).simulator();
         } catch (TargetException e) {
             return failed(point, e.diagnostics().isEmpty() ? e.getMessage() : e.diagnostics().get(0).format());
         }
@@ -154,6 +162,22 @@ public final class Evaluator {
         return new SweepRow(point, time, m.distance(), m.dx(), time > 0 ? m.dx() / time : 0, m.speed(),
                 m.maxTiltDeg(), travel.total(), m.maxTiltDeg() > fallTiltDeg,
                 outcome.status() == RunOutcome.Status.ERROR ? outcome.message() : "");
+    }
+
+    /**
+     * The robot for {@code program}'s modules: the last one when they are the same (parameter
+     * values rarely change which modules a script has), so that a run builds only its physics
+     * world and not the robot's configuration and initial pose again.
+     */
+    private SimTarget.Blueprint robotFor(Program program) throws TargetException {
+        int[] ids = program.moduleIds();
+        Robot built = robotBuilt;
+        if (built == null || !java.util.Arrays.equals(built.moduleIds(), ids)) {
+            String spec = SimTarget.AUTO.equals(robot) ? SimTarget.autoSpec(program) : robot;
+            built = new Robot(ids, SimTarget.blueprint(spec, ids));
+            robotBuilt = built;
+        }
+        return built.blueprint();
     }
 
     /**

@@ -14,8 +14,14 @@ import java.util.function.Function;
  * generator with which its solver shuffles constraints in one static field, and the simulator
  * reseeds it before every step to stay reproducible; two simulations on two threads of one
  * class loader would draw from each other's sequence, and their results would depend on timing.
- * A class loader of its own gives each worker its own ODE4j and so its own generator. Loaders
- * are kept for the next sweep (their classes stay compiled) and lent to one thread at a time.
+ * A class loader of its own gives each worker its own ODE4j and so its own generator. Only ODE4j
+ * and the simulator (which links to it) are private; the script loader, scheduler and XML and
+ * expression libraries come from the application's loader, so there is one copy of them for
+ * every worker, which the JIT compiles once and which every worker's runs warm up together
+ * (each run loads its script afresh, code that runs once per run and would otherwise reach its
+ * compiled form slowly, once per worker, while the compiler threads take CPU time from the
+ * simulations). Loaders are kept for the next sweep (their classes stay compiled) and lent to
+ * one thread at a time.
  */
 final class Lanes {
     private static final ConcurrentLinkedQueue<ClassLoader> FREE = new ConcurrentLinkedQueue<>();
@@ -58,7 +64,39 @@ final class Lanes {
                 }
             }
         }
-        // The platform loader as parent: only the JDK is shared, PARPE and its libraries are not.
-        return new URLClassLoader("parpe-sweep-lane", urls.toArray(new URL[0]), ClassLoader.getPlatformClassLoader());
+        return new LaneLoader(urls.toArray(new URL[0]), Lanes.class.getClassLoader());
+    }
+
+    /** Whether class {@code name} has a copy of its own in each lane. */
+    static boolean privateToLane(String name) {
+        return name.startsWith("org.ode4j.") || name.startsWith("org.parpe.sim.");
+    }
+
+    /** Loads the physics library and the simulator itself, everything else from its parent. */
+    private static final class LaneLoader extends URLClassLoader {
+        static {
+            ClassLoader.registerAsParallelCapable();
+        }
+
+        LaneLoader(URL[] urls, ClassLoader parent) {
+            super("parpe-sweep-lane", urls, parent);
+        }
+
+        @Override
+        protected Class<?> loadClass(String name, boolean resolve) throws ClassNotFoundException {
+            if (!privateToLane(name)) {
+                return super.loadClass(name, resolve);
+            }
+            synchronized (getClassLoadingLock(name)) {
+                Class<?> c = findLoadedClass(name);
+                if (c == null) {
+                    c = findClass(name);
+                }
+                if (resolve) {
+                    resolveClass(c);
+                }
+                return c;
+            }
+        }
     }
 }
