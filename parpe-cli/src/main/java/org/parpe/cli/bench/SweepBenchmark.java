@@ -75,7 +75,7 @@ public final class SweepBenchmark implements Benchmark {
     /** The collector {@code parpe sweep} and {@code parpe optimize} run with (the launcher's default). */
     @Override
     public List<String> jvmOptions() {
-        return List.of("-XX:+UseSerialGC");
+        return List.of("-XX:+UseParallelGC");
     }
 
     @Override
