@@ -24,6 +24,7 @@ import org.eclipse.swt.widgets.Control;
 import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.Table;
 import org.parpe.core.diag.Diagnostic;
+import org.parpe.core.load.ListItem;
 import org.parpe.core.model.Program;
 import org.parpe.gui.editor.ParslEditor;
 import org.parpe.gui.grid.Fill.Selection;
@@ -344,7 +345,7 @@ public final class GridPane implements GridView.Actions {
         Map<At, String> out = new LinkedHashMap<>();
         for (var e : values.entrySet()) {
             String v = e.getValue();
-            if (Split.parts(v, 0, v.length(), ',').size() > 1 || Split.parts(v, 0, v.length(), ';').size() > 1) {
+            if (ListItem.ranges(v, 0, v.length(), ',').size() > 1 || ListItem.ranges(v, 0, v.length(), ';').size() > 1) {
                 dropped[0]++;
             } else {
                 out.put(e.getKey(), v);

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.diag.SourcePos;
+import org.parpe.core.load.ListItem;
 import org.parpe.core.xml.SourceText;
 import org.parpe.core.xml.XElement;
 import org.parpe.core.xml.XText;
@@ -106,6 +107,6 @@ public final class TableText {
 
     /** The parts of {@code [from, to)} between top-level separators (not in parentheses or strings). */
     private List<int[]> split(int from, int to, char separator) {
-        return Split.parts(text, from, to, separator);
+        return ListItem.ranges(text, from, to, separator);
     }
 }
