@@ -15,6 +15,7 @@ import org.parpe.core.load.ScriptLoader;
 import org.parpe.core.xml.InputFiles;
 import org.parpe.sim.SimTarget;
 import org.parpe.sim.sweep.Evaluator;
+import org.parpe.sim.sweep.Objective;
 import org.parpe.sim.sweep.SweepException;
 import picocli.CommandLine.Option;
 
@@ -47,6 +48,15 @@ public class SimSweepOptions {
 
     static {
         System.setProperty("parpe.cores", Integer.toString(Runtime.getRuntime().availableProcessors()));
+    }
+
+    /** The objective named by {@code --objective}. */
+    static Objective objective(String id) throws UsageException {
+        Objective o = Objective.byId(id);
+        if (o == null) {
+            throw new UsageException("--objective must be one of " + Objective.ids() + ", got '" + id + "'");
+        }
+        return o;
     }
 
     /** The number of threads: {@code --jobs}, or every core. */

@@ -80,7 +80,7 @@ public final class SweepCommand implements Callable<Integer> {
     }
 
     private int execute(PrintWriter stdout, PrintWriter err, Cancellation cancel) throws Exception {
-        Objective goal = objective();
+        Objective goal = SimSweepOptions.objective(objective);
         int[] share = shard();
         Evaluator ev = options.evaluator(file, err);
         if (ev == null) {
@@ -168,14 +168,6 @@ public final class SweepCommand implements Callable<Integer> {
         List<String> parts = new ArrayList<>();
         row.values().forEach((k, v) -> parts.add(k + "=" + Numbers.format(v)));
         return String.join(" ", parts);
-    }
-
-    private Objective objective() throws UsageException {
-        Objective o = Objective.byId(objective);
-        if (o == null) {
-            throw new UsageException("--objective must be one of " + Objective.ids() + ", got '" + objective + "'");
-        }
-        return o;
     }
 
     private int[] shard() throws UsageException {
