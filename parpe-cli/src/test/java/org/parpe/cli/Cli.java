@@ -1,15 +1,15 @@
-package org.parpe.cli.hw;
+package org.parpe.cli;
 
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
-import org.parpe.cli.Main;
+import java.util.List;
 
-/** Runs the command line in-process and keeps its output. */
-final class Cli {
-    final int code;
-    final String out;
-    final String err;
+/** Runs the command line in-process and keeps its exit code and output, for the tests of every command. */
+public final class Cli {
+    public final int code;
+    public final String out;
+    public final String err;
 
     private Cli(int code, String out, String err) {
         this.code = code;
@@ -17,7 +17,13 @@ final class Cli {
         this.err = err;
     }
 
-    static Cli run(String... args) {
+    /** Runs {@code parpe ARGS}. */
+    public static Cli run(List<String> args) {
+        return run(args.toArray(new String[0]));
+    }
+
+    /** Runs {@code parpe ARGS}. */
+    public static Cli run(String... args) {
         ByteArrayOutputStream o = new ByteArrayOutputStream();
         ByteArrayOutputStream e = new ByteArrayOutputStream();
         int code = Main.execute(args, new PrintStream(o, true, StandardCharsets.UTF_8),

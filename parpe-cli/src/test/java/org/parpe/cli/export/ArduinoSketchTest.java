@@ -14,6 +14,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
+import org.parpe.cli.Cli;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
 import org.parpe.core.model.Program;
@@ -51,7 +52,7 @@ class ArduinoSketchTest {
     void sketchDrivesTheServosWithTheInterpretersSetpoints(String variant) throws Exception {
         String servo = variant.split(" ")[0];
         boolean esp32 = variant.endsWith("esp32");
-        ExportEqualityTest.Cli export = ExportEqualityTest.Cli.run(List.of("export", SCRIPT.toString(), "--target",
+        Cli export = Cli.run(List.of("export", SCRIPT.toString(), "--target",
                 "arduino", "--servo", servo, "--board", esp32 ? "esp32" : "uno", "--out", tmp.toString()));
         assertEquals(0, export.code, () -> "export: " + export);
         assertTrue(export.out.contains("memory (" + (esp32 ? "esp32" : "uno") + ", estimate): RAM "), export.out);
@@ -83,16 +84,16 @@ class ArduinoSketchTest {
                 + "<behaviors><go><wave group=\"body\" phase=\"1/$count\"/></go></behaviors>\n"
                 + "<automata><wave states=\"up, down\"/></automata><states><up angles=\"30\"/><down angles=\"-30\"/></states>"
                 + "</program>\n");
-        ExportEqualityTest.Cli fits = ExportEqualityTest.Cli.run(List.of("export", script.toString(), "--target", "arduino",
+        Cli fits = Cli.run(List.of("export", script.toString(), "--target", "arduino",
                 "--servo", "dxl", "--out", tmp.resolve("fits").toString()));
         assertEquals(0, fits.code, () -> "10 modules fit: " + fits);
-        ExportEqualityTest.Cli export = ExportEqualityTest.Cli.run(List.of("export", script.toString(), "--target",
+        Cli export = Cli.run(List.of("export", script.toString(), "--target",
                 "arduino", "--servo", "dxl", "--param", "N=60", "--out", tmp.resolve("big").toString()));
         assertEquals(1, export.code, () -> "export: " + export);
         assertTrue(export.err.matches("(?s)[^\\n]*long-snake\\.xml:2:\\d+: error: the program needs about \\d+ bytes of RAM"
                 + " on uno .*but it has 2048.*"), export.err);
         assertTrue(Files.notExists(tmp.resolve("big")), "nothing is written when it does not fit");
-        ExportEqualityTest.Cli esp = ExportEqualityTest.Cli.run(List.of("export", script.toString(), "--target",
+        Cli esp = Cli.run(List.of("export", script.toString(), "--target",
                 "arduino", "--servo", "dxl", "--param", "N=60", "--board", "esp32", "--out", tmp.resolve("esp").toString()));
         assertEquals(0, esp.code, () -> "an ESP32 holds 60 modules: " + esp);
     }
@@ -100,14 +101,14 @@ class ArduinoSketchTest {
     @Test
     void sensorsTheSketchCannotReadAreRefusedAtTheirDeclaration() {
         String script = ExportEqualityTest.ROOT.resolve("examples/sensor-exit.xml").toString();
-        ExportEqualityTest.Cli refused = ExportEqualityTest.Cli.run(List.of("export", script, "--target", "arduino",
+        Cli refused = Cli.run(List.of("export", script, "--target", "arduino",
                 "--out", tmp.resolve("a").toString()));
         assertEquals(1, refused.code, () -> "export: " + refused);
         assertTrue(refused.err.contains("sensor-exit.xml:12:8: error: an Arduino sketch cannot read 'touch' sensors"),
                 refused.err);
         assertTrue(refused.err.contains("sensor-exit.xml:13:8: error: an Arduino sketch cannot read 'accel' sensors"),
                 refused.err);
-        ExportEqualityTest.Cli accepted = ExportEqualityTest.Cli.run(List.of("export", script, "--target", "arduino",
+        Cli accepted = Cli.run(List.of("export", script, "--target", "arduino",
                 "--console-sensors", "--out", tmp.resolve("b").toString()));
         assertEquals(0, accepted.code, () -> "export: " + accepted);
     }
@@ -122,7 +123,7 @@ class ArduinoSketchTest {
                 List.of("--target", "arduino", "--pins", "2,3"), List.of("--tick", "0"))) {
             List<String> cmd = new ArrayList<>(List.of("export", script, "--out", out));
             cmd.addAll(args);
-            ExportEqualityTest.Cli r = ExportEqualityTest.Cli.run(cmd);
+            Cli r = Cli.run(cmd);
             int want = args.contains("--pins") ? 1 : 2;
             assertEquals(want, r.code, () -> args + ": " + r);
             assertTrue(r.err.lines().count() >= 1 && !r.err.contains("Exception"), () -> args + ": " + r.err);

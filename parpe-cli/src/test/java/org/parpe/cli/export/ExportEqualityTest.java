@@ -3,10 +3,7 @@ package org.parpe.cli.export;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -17,7 +14,7 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
-import org.parpe.cli.Main;
+import org.parpe.cli.Cli;
 
 /**
  * The proof of equality of issue 13: for every conformance case (the shared suite and PARPE's
@@ -154,31 +151,5 @@ class ExportEqualityTest {
 
     private static List<String> diagnostics(String err) {
         return err.lines().filter(l -> l.contains(": error: ") || l.contains(": warning: ")).toList();
-    }
-
-    /** The command line run in-process. */
-    static final class Cli {
-        final int code;
-        final String out;
-        final String err;
-
-        private Cli(int code, String out, String err) {
-            this.code = code;
-            this.out = out;
-            this.err = err;
-        }
-
-        static Cli run(List<String> args) {
-            ByteArrayOutputStream o = new ByteArrayOutputStream();
-            ByteArrayOutputStream e = new ByteArrayOutputStream();
-            int code = Main.execute(args.toArray(new String[0]), new PrintStream(o, true, StandardCharsets.UTF_8),
-                    new PrintStream(e, true, StandardCharsets.UTF_8));
-            return new Cli(code, o.toString(StandardCharsets.UTF_8), e.toString(StandardCharsets.UTF_8));
-        }
-
-        @Override
-        public String toString() {
-            return "exit " + code + "\nstdout:\n" + out + "\nstderr:\n" + err;
-        }
     }
 }

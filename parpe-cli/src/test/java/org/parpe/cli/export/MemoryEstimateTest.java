@@ -12,6 +12,7 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
+import org.parpe.cli.Cli;
 
 /**
  * The RAM estimate printed by {@code parpe export} is the real size of the runtime's state: for
@@ -32,7 +33,7 @@ class MemoryEstimateTest {
     @ParameterizedTest(name = "{0}")
     @ValueSource(strings = {"hello-snake", "centipede-walk", "teleop-dirwave", "sensor-exit", "standup-walk"})
     void stateEstimateEqualsSizeofParslRt(String example) throws Exception {
-        ExportEqualityTest.Cli export = ExportEqualityTest.Cli.run(List.of("export",
+        Cli export = Cli.run(List.of("export",
                 ExportEqualityTest.ROOT.resolve("examples/" + example + ".xml").toString(), "--out", tmp.toString()));
         assertEquals(0, export.code, () -> "export: " + export);
         Matcher m = STATE.matcher(export.out);

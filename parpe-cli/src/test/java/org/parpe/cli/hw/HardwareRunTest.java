@@ -12,6 +12,7 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
+import org.parpe.cli.Cli;
 import org.parpe.serial.emu.EmulatorOptions;
 import org.parpe.serial.link.PtyPair;
 

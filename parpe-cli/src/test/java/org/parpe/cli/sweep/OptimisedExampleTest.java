@@ -9,6 +9,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
+import org.parpe.cli.Cli;
 import org.parpe.cli.sim.SimRun;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.load.LoadResult;
@@ -29,12 +30,12 @@ class OptimisedExampleTest {
 
     @Test
     void theOptimisedGaitBeatsTheHandWrittenOneInTheRace() {
-        SweepCommandTest.Result r = SweepCommandTest.cli("race", "../examples/tutorial/10-race-snake.xml",
+        Cli r = Cli.run("race", "../examples/tutorial/10-race-snake.xml",
                 EXAMPLE.toString(), "--sim", "snake:n=8", "--duration", "30");
-        assertEquals(0, r.code(), r.err());
-        List<String> lines = r.out().lines().toList();
-        assertTrue(lines.get(1).startsWith("1     ../examples/race-snake-optimised.xml"), r.out());
-        assertTrue(lines.get(2).startsWith("2     ../examples/tutorial/10-race-snake.xml"), r.out());
+        assertEquals(0, r.code, r.err);
+        List<String> lines = r.out.lines().toList();
+        assertTrue(lines.get(1).startsWith("1     ../examples/race-snake-optimised.xml"), r.out);
+        assertTrue(lines.get(2).startsWith("2     ../examples/tutorial/10-race-snake.xml"), r.out);
         double optimised = forward(lines.get(1));
         double handWritten = forward(lines.get(2));
         assertTrue(optimised > 3 * handWritten, optimised + " m vs " + handWritten + " m");

@@ -12,6 +12,7 @@ import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.parpe.cli.Cli;
 
 /**
  * {@code scripts/sweep.slurm} run with bash and the variables Slurm would set for each task of
@@ -48,10 +49,10 @@ class SlurmArrayTest {
         Path script = dir.resolve("snake.xml");
         Files.writeString(script, SweepCommandTest.SNAKE);
         Path whole = dir.resolve("whole.csv");
-        SweepCommandTest.Result one = SweepCommandTest.cli("sweep", script.toString(), "--sim", "snake:n=6",
+        Cli one = Cli.run("sweep", script.toString(), "--sim", "snake:n=6",
                 "--duration", "1", "--vary", "bend=20..40:3", "--vary", "period=1,2", "--param", "phase=0.2",
                 "--seed", "9", "--out", whole.toString());
-        assertEquals(0, one.code(), one.err());
+        assertEquals(0, one.code, one.err);
         // An array numbered from 0 with MIN/MAX only (older Slurm), tasks in reverse order.
         Path out = dir.resolve("shards");
         for (int id = 3; id >= 0; id--) {
@@ -71,8 +72,8 @@ class SlurmArrayTest {
         java.util.Collections.reverse(reversed);
         args.addAll(reversed);
         args.addAll(List.of("--out", merged.toString()));
-        SweepCommandTest.Result m = SweepCommandTest.cli(args.toArray(new String[0]));
-        assertEquals(0, m.code(), m.err());
+        Cli m = Cli.run(args.toArray(new String[0]));
+        assertEquals(0, m.code, m.err);
         assertEquals(Files.readAllLines(whole), Files.readAllLines(merged));
         assertEquals(7, Files.readAllLines(merged).size());
     }
@@ -97,15 +98,15 @@ class SlurmArrayTest {
     void mergeRefusesAnIncompleteSetOfShards() throws Exception {
         Path a = dir.resolve("a.csv");
         Files.writeString(a, "run,runs,combination,repeat,seed,bend,duration_s\n0,3,0,0,1,5,1.0\n2,3,2,0,1,7,1.0\n");
-        SweepCommandTest.Result r = SweepCommandTest.cli("merge", a.toString());
-        assertEquals(1, r.code());
+        Cli r = Cli.run("merge", a.toString());
+        assertEquals(1, r.code);
         assertEquals("parpe: runs are missing: 1 of 3 (the first is run 1); is a shard missing or unfinished?",
-                r.err().strip());
+                r.err.strip());
         Path b = dir.resolve("b.csv");
         Files.writeString(b, "time,m0\n0,1\n");
-        SweepCommandTest.Result bad = SweepCommandTest.cli("merge", a.toString(), b.toString());
-        assertEquals(1, bad.code());
-        assertTrue(bad.err().startsWith(b + ":1: error: not a sweep result"), bad.err());
+        Cli bad = Cli.run("merge", a.toString(), b.toString());
+        assertEquals(1, bad.code);
+        assertTrue(bad.err.startsWith(b + ":1: error: not a sweep result"), bad.err);
         assertTrue(new File(a.toString()).exists());
     }
 }

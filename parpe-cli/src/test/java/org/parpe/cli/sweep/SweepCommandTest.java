@@ -5,9 +5,6 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
-import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -19,7 +16,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
-import org.parpe.cli.Main;
+import org.parpe.cli.Cli;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
 
@@ -44,17 +41,6 @@ class SweepCommandTest {
     Path dir;
     Path script;
 
-    record Result(int code, String out, String err) {
-    }
-
-    static Result cli(String... args) {
-        ByteArrayOutputStream o = new ByteArrayOutputStream();
-        ByteArrayOutputStream e = new ByteArrayOutputStream();
-        int code = Main.execute(args, new PrintStream(o, true, StandardCharsets.UTF_8),
-                new PrintStream(e, true, StandardCharsets.UTF_8));
-        return new Result(code, o.toString(StandardCharsets.UTF_8), e.toString(StandardCharsets.UTF_8));
-    }
-
     @BeforeEach
     void writeScript() throws Exception {
         script = dir.resolve("snake.xml");
@@ -72,21 +58,21 @@ class SweepCommandTest {
     void theSameSeedGivesTheSameCsvWhateverTheJobs() throws Exception {
         Path a = dir.resolve("a.csv");
         Path b = dir.resolve("b.csv");
-        Result ra = cli("sweep", script.toString(), "--sim", "snake:n=6", "--duration", "1", "--random", "5",
+        Cli ra = Cli.run("sweep", script.toString(), "--sim", "snake:n=6", "--duration", "1", "--random", "5",
                 "--seed", "3", "--jobs", "1", "--out", a.toString());
-        Result rb = cli("sweep", script.toString(), "--sim", "snake:n=6", "--duration", "1", "--random", "5",
+        Cli rb = Cli.run("sweep", script.toString(), "--sim", "snake:n=6", "--duration", "1", "--random", "5",
                 "--seed", "3", "--jobs", "2", "--out", b.toString());
-        assertEquals(0, ra.code(), ra.err());
-        assertEquals(0, rb.code(), rb.err());
+        assertEquals(0, ra.code, ra.err);
+        assertEquals(0, rb.code, rb.err);
         List<String> lines = Files.readAllLines(a);
         assertEquals(lines, Files.readAllLines(b));
         assertEquals(6, lines.size());
         assertEquals("run,runs,combination,repeat,seed,bend,period,phase,duration_s,distance_m,forward_m,"
                 + "forward_speed_mps,speed_mps,max_tilt_deg,joint_travel_deg,fell,error", lines.get(0));
         assertTrue(lines.get(1).startsWith("0,5,0,0,3,"), lines.get(1));
-        Result other = cli("sweep", script.toString(), "--sim", "snake:n=6", "--duration", "1", "--random", "5",
+        Cli other = Cli.run("sweep", script.toString(), "--sim", "snake:n=6", "--duration", "1", "--random", "5",
                 "--seed", "4", "--out", dir.resolve("c.csv").toString());
-        assertEquals(0, other.code(), other.err());
+        assertEquals(0, other.code, other.err);
         assertFalse(Files.readAllLines(dir.resolve("c.csv")).get(1).equals(lines.get(1)));
         BufferedImage plot = ImageIO.read(dir.resolve("a.png").toFile());
         assertTrue(plot.getWidth() >= 800 && plot.getHeight() >= 3 * 250, plot.getWidth() + "x" + plot.getHeight());
@@ -94,16 +80,16 @@ class SweepCommandTest {
 
     @Test
     void gridRowsAreInCombinationOrderAndTheBestIsReported() throws Exception {
-        Result r = cli(sweepArgs("-"));
-        assertEquals(0, r.code(), r.err());
-        List<String> lines = r.out().lines().toList();
+        Cli r = Cli.run(sweepArgs("-"));
+        assertEquals(0, r.code, r.err);
+        List<String> lines = r.out.lines().toList();
         assertEquals(7, lines.size());
         for (int i = 1; i <= 6; i++) {
             assertTrue(lines.get(i).startsWith((i - 1) + ",6,"), lines.get(i));
         }
         assertTrue(lines.get(3).startsWith("2,6,2,0,0,30,1,"), lines.get(3));
-        assertTrue(r.err().contains("parpe: 6 of 6 runs; 0 with errors"), r.err());
-        assertTrue(r.err().contains("parpe: best forward-speed "), r.err());
+        assertTrue(r.err.contains("parpe: 6 of 6 runs; 0 with errors"), r.err);
+        assertTrue(r.err.contains("parpe: best forward-speed "), r.err);
     }
 
     @ParameterizedTest
@@ -116,47 +102,47 @@ class SweepCommandTest {
         "bend|parpe: --vary 'bend': expected NAME=A..B, NAME=A..B:K or NAME=V1,V2,...",
     })
     void badVarySpecsGetOneLineAndExitCode2(String vary, String message) {
-        Result r = cli("sweep", script.toString(), "--sim", "snake:n=6", "--vary", vary, "--out", "-");
-        assertEquals(2, r.code(), r.err());
-        assertEquals(message, r.err().strip());
-        assertEquals("", r.out());
+        Cli r = Cli.run("sweep", script.toString(), "--sim", "snake:n=6", "--vary", vary, "--out", "-");
+        assertEquals(2, r.code, r.err);
+        assertEquals(message, r.err.strip());
+        assertEquals("", r.out);
     }
 
     @Test
     void badShardsAndObjectivesAreUsageErrors() {
-        Result shard = cli(sweepArgs("-", "--shard", "4/3"));
-        assertEquals(2, shard.code());
-        assertEquals("parpe: --shard 4/3: K must be within [1, N] and N >= 1", shard.err().strip());
-        Result goal = cli(sweepArgs("-", "--objective", "fast"));
-        assertEquals(2, goal.code());
+        Cli shard = Cli.run(sweepArgs("-", "--shard", "4/3"));
+        assertEquals(2, shard.code);
+        assertEquals("parpe: --shard 4/3: K must be within [1, N] and N >= 1", shard.err.strip());
+        Cli goal = Cli.run(sweepArgs("-", "--objective", "fast"));
+        assertEquals(2, goal.code);
         assertEquals("parpe: --objective must be one of forward-speed, speed, forward, distance, got 'fast'",
-                goal.err().strip());
+                goal.err.strip());
     }
 
     @Test
     void optimizeWritesANewScriptWithTheBestValuesAsDefaults() throws Exception {
-        Result r = cli("optimize", script.toString(), "--sim", "snake:n=6", "--duration", "2", "--budget", "12",
+        Cli r = Cli.run("optimize", script.toString(), "--sim", "snake:n=6", "--duration", "2", "--budget", "12",
                 "--starts", "2", "--seed", "5");
-        assertEquals(0, r.code(), r.err());
+        assertEquals(0, r.code, r.err);
         Path written = dir.resolve("snake-optimised.xml");
-        assertTrue(Files.exists(dir.resolve("snake-optimised-convergence.png")), r.err());
+        assertTrue(Files.exists(dir.resolve("snake-optimised-convergence.png")), r.err);
         assertEquals(SNAKE, Files.readString(script));
         LoadResult loaded = ScriptLoader.load(written, Map.of());
         assertTrue(loaded.ok(), loaded.diagnostics().toString());
         for (var p : loaded.program().parameters()) {
-            assertTrue(r.out().contains("  " + p.name() + " = " + org.parpe.core.model.Numbers.format(p.value())),
-                    p + "\n" + r.out());
+            assertTrue(r.out.contains("  " + p.name() + " = " + org.parpe.core.model.Numbers.format(p.value())),
+                    p + "\n" + r.out);
         }
-        assertTrue(r.out().startsWith("best forward-speed: "), r.out());
-        assertTrue(r.out().contains("the script's own values: "), r.out());
+        assertTrue(r.out.startsWith("best forward-speed: "), r.out);
+        assertTrue(r.out.contains("the script's own values: "), r.out);
     }
 
     @Test
     void optimizeNeverOverwritesTheScript() throws Exception {
-        Result r = cli("optimize", script.toString(), "--sim", "snake:n=6", "--budget", "4", "--starts", "1",
+        Cli r = Cli.run("optimize", script.toString(), "--sim", "snake:n=6", "--budget", "4", "--starts", "1",
                 "--out", script.toString());
-        assertEquals(2, r.code());
-        assertTrue(r.err().startsWith("parpe: cannot write --out file '" + script + "': it is the input file"), r.err());
+        assertEquals(2, r.code);
+        assertTrue(r.err.startsWith("parpe: cannot write --out file '" + script + "': it is the input file"), r.err);
         assertEquals(SNAKE, Files.readString(script));
     }
 }
