@@ -4,7 +4,6 @@ import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;
 import java.awt.Graphics2D;
-import java.awt.RenderingHints;
 import java.awt.Stroke;
 import java.awt.geom.Path2D;
 import java.awt.image.BufferedImage;
@@ -14,6 +13,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import javax.imageio.ImageIO;
+import org.parpe.cli.Canvas;
 
 /**
  * Draws {@code --plot}: one panel per moving module (at most {@value #MAX_PANELS}), commanded
@@ -39,15 +39,11 @@ final class PlotWriter {
     }
 
     void write(OutputStream out) throws IOException {
-        System.setProperty("java.awt.headless", "true");
         List<Integer> shown = chooseModules();
         int height = TOP + shown.size() * (PANEL + GAP) + BOTTOM;
-        BufferedImage img = new BufferedImage(WIDTH, height, BufferedImage.TYPE_INT_RGB);
-        Graphics2D g = img.createGraphics();
-        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
-        g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
-        g.setColor(Color.WHITE);
-        g.fillRect(0, 0, WIDTH, height);
+        Canvas canvas = Canvas.white(WIDTH, height);
+        BufferedImage img = canvas.image();
+        Graphics2D g = canvas.graphics();
         header(g, shown.size());
         double tEnd = data.samples() == 0 ? 1 : Math.max(data.time(data.samples() - 1), data.dt());
         for (int p = 0; p < shown.size(); p++) {

@@ -9,6 +9,7 @@ import java.io.OutputStream;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
+import org.parpe.cli.Canvas;
 import org.parpe.sim.sweep.Axis;
 import org.parpe.sim.sweep.Evaluation;
 import org.parpe.sim.sweep.Objective;
@@ -35,8 +36,9 @@ final class Plots {
     static void sweep(OutputStream out, String title, List<Axis> axes, List<SweepRow> rows, Objective objective)
             throws IOException {
         int height = TOP + axes.size() * (PANEL + GAP);
-        BufferedImage img = Chart.image(WIDTH, height);
-        Graphics2D g = img.createGraphics();
+        Canvas canvas = Canvas.white(WIDTH, height);
+        BufferedImage img = canvas.image();
+        Graphics2D g = canvas.graphics();
         title(g, title);
         double[] scores = rows.stream().mapToDouble(r -> r.ok() ? objective.of(r) : Double.NaN).toArray();
         for (int a = 0; a < axes.size(); a++) {
@@ -66,8 +68,9 @@ final class Plots {
 
     /** Every evaluation's score and the best feasible score so far, over the evaluations. */
     static void convergence(OutputStream out, String title, OptimizationResult result) throws IOException {
-        BufferedImage img = Chart.image(WIDTH, TOP + PANEL + GAP + 20);
-        Graphics2D g = img.createGraphics();
+        Canvas canvas = Canvas.white(WIDTH, TOP + PANEL + GAP + 20);
+        BufferedImage img = canvas.image();
+        Graphics2D g = canvas.graphics();
         title(g, title);
         List<Evaluation> all = result.evaluations();
         double[] n = new double[all.size()];
