@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
+import org.parpe.core.model.Parameter;
 import org.parpe.sim.sweep.Axis;
 import org.parpe.sim.sweep.Cancellation;
 import org.parpe.sim.sweep.Constraints;
@@ -99,9 +100,8 @@ public final class SweepBenchmark implements Benchmark {
      */
     private static void throughput(PrintStream out, String label, Evaluator ev, String param, int runs, int cores)
             throws SweepException {
-        Axis axis = Axis.even(param, ev.parameters().stream().filter(p -> p.name().equals(param)).findFirst()
-                .orElseThrow().min(), ev.parameters().stream().filter(p -> p.name().equals(param)).findFirst()
-                .orElseThrow().max(), runs);
+        Parameter p = ev.parameters().stream().filter(q -> q.name().equals(param)).findFirst().orElseThrow();
+        Axis axis = Axis.even(param, p.min(), p.max(), runs);
         Sweep sweep = new Sweep(ev, SweepSpec.grid(List.of(axis), 1, 0));
         // Each worker simulates in its own copy of the physics classes, compiled by the JIT on its
         // own, and each run loads its script and builds its physics world afresh: code that runs
