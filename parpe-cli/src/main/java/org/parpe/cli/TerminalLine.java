@@ -39,6 +39,11 @@ public final class TerminalLine {
         }
     }
 
+    /** Whether standard error is a terminal (else {@link #due} is never true). */
+    public boolean terminal() {
+        return enabled;
+    }
+
     /** Whether a redraw at {@code now} (System.nanoTime) is due; {@code force} skips the rate limit. */
     public boolean due(long now, boolean force) {
         if (!enabled || !force && now - last < MIN_GAP_NANOS) {

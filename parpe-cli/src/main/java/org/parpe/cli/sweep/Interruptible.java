@@ -8,7 +8,7 @@ import org.parpe.sim.sweep.SweepException;
 import picocli.CommandLine.Model.CommandSpec;
 
 /**
- * How {@code sweep} and {@code optimize} run: Ctrl-C cancels the work (the runs in progress stop
+ * How {@code sweep} and {@code optimize} run: Ctrl-C or SIGTERM cancels the work (the runs in progress stop
  * at their next tick) and waits until the outputs are written; usage and sweep errors are one
  * line and exit code 2.
  */
@@ -28,7 +28,7 @@ final class Interruptible {
         try (InterruptHook hook = new InterruptHook(cancel::cancel, 5)) {
             int code = work.execute(spec.commandLine().getOut(), err, cancel);
             if (hook.interrupted()) {
-                err.println("parpe: interrupted (Ctrl-C): " + kept);
+                err.println("parpe: " + hook.cause() + ": " + kept);
             }
             return code;
         } catch (UsageException | SweepException e) {

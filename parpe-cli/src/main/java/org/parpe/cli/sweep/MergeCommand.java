@@ -2,18 +2,29 @@ package org.parpe.cli.sweep;
 
 import java.io.IOException;
 import java.io.PrintWriter;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
+import java.util.TreeSet;
 import java.util.concurrent.Callable;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
 import org.parpe.cli.Inputs;
 import org.parpe.cli.OutputFile;
 import org.parpe.cli.UsageException;
 import org.parpe.core.xml.InputFiles;
+import org.parpe.sim.sweep.Axis;
+import org.parpe.sim.sweep.IncompleteSweepException;
+import org.parpe.sim.sweep.Objective;
 import org.parpe.sim.sweep.SweepCsv;
+import org.parpe.sim.sweep.SweepCsv.Shard;
 import org.parpe.sim.sweep.SweepException;
+import org.parpe.sim.sweep.SweepResult;
+import org.parpe.sim.sweep.SweepRow;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -22,7 +33,8 @@ import picocli.CommandLine.Spec;
 
 /**
  * {@code parpe merge}: joins the CSV files of the shards of one sweep ({@code sweep --shard K/N})
- * into the file one machine would have written, checking that no run is missing or doubled.
+ * into the file one machine would have written, checking that no run is missing or doubled and
+ * that every shard ran to its end; names the shards to run again, and can draw the sweep's plot.
  */
 @Command(name = "merge", mixinStandardHelpOptions = true, description = "Join the CSV files of the shards of one sweep"
         + " (parpe sweep --shard K/N) into one, in run order; refuses missing, doubled or foreign runs.")
@@ -33,8 +45,72 @@ public final class MergeCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "FILE.csv|-", defaultValue = "-", description = "The merged file (default: standard output).")
     String out;
 
+    @Option(names = "--plot", paramLabel = "FILE.png", description = "Also draw the plot a one-machine sweep draws.")
+    String plot;
+
+    @Option(names = "--objective", paramLabel = "NAME", defaultValue = "forward-speed",
+            description = "What the plot ranks by: forward-speed, speed, forward, distance (default ${DEFAULT-VALUE}).")
+    String objective;
+
     @Spec
     CommandSpec spec;
+
+    /** Reports missing and unfinished shards, where their unfinished rows are, and how to rerun them. */
+    private void incomplete(PrintWriter err, IncompleteSweepException e) {
+        e.getMessage().lines().forEach(l -> err.println(l.startsWith("error: ") ? "parpe: " + l.substring(7) : l));
+        for (Path partial : partialsBeside()) {
+            Shard s = firstLine(partial);
+            if (s != null && s.n() == e.of() && e.rerun().contains(s.k())) {
+                err.println("parpe: " + partial + " holds what shard " + s.k() + "/" + s.n()
+                        + " finished before its task was stopped");
+            }
+        }
+        String ks = e.rerun().stream().map(String::valueOf).collect(Collectors.joining(","));
+        err.println("parpe: rerun shard" + (e.rerun().size() > 1 ? "s " : " ") + ks + " of " + e.of()
+                + " (parpe sweep ... --shard K/" + e.of() + " with the sweep's options; with scripts/sweep.slurm:"
+                + " PARPE_SHARDS=" + e.of() + " sbatch --array=" + ks + " scripts/sweep.slurm OUTDIR SCRIPT OPTIONS...),"
+                + " then merge again; see docs/cluster.md");
+    }
+
+    /** The {@code *.partial} files in the folders of the given shards that were not given themselves. */
+    private List<Path> partialsBeside() {
+        Set<Path> given = new TreeSet<>();
+        Set<Path> dirs = new TreeSet<>();
+        for (Path f : files) {
+            Path abs = f.toAbsolutePath().normalize();
+            given.add(abs);
+            dirs.add(abs.getParent());
+        }
+        List<Path> found = new ArrayList<>();
+        for (Path dir : dirs) {
+            try (Stream<Path> list = Files.list(dir)) {
+                list.filter(p -> p.getFileName().toString().endsWith(".partial") && !given.contains(p)).sorted()
+                        .forEach(found::add);
+            } catch (IOException e) {
+                // a folder we cannot list has nothing to show
+            }
+        }
+        return found;
+    }
+
+    private static Shard firstLine(Path file) {
+        try (Stream<String> lines = Files.lines(file)) {
+            return lines.findFirst().map(SweepCsv::shardOf).orElse(null);
+        } catch (IOException | java.io.UncheckedIOException e) {
+            return null;
+        }
+    }
+
+    /** The varied parameters of merged rows, each with the values found. */
+    private static List<Axis> axes(List<SweepRow> rows) {
+        List<Axis> axes = new ArrayList<>();
+        if (!rows.isEmpty()) {
+            for (String name : rows.get(0).values().keySet()) {
+                axes.add(Axis.list(name, rows.stream().map(r -> r.values().get(name)).distinct().sorted().toList()));
+            }
+        }
+        return axes;
+    }
 
     @Override
     public Integer call() {
@@ -48,15 +124,22 @@ public final class MergeCommand implements Callable<Integer> {
                 }
                 shards.put(f.toString(), InputFiles.readText(f).lines().toList());
             }
+            Objective goal = SimSweepOptions.objective(objective);
+            OutputFile target = OutputFile.ofOptional("--out", out, files);
+            OutputFile png = plot == null ? null : OutputFile.of("--plot", plot, files);
             List<String> merged;
+            SweepResult result;
             try {
                 merged = SweepCsv.merge(shards);
+                result = png == null ? null : SweepCsv.read(merged);
+            } catch (IncompleteSweepException e) {
+                incomplete(err, e);
+                return 1;
             } catch (SweepException e) {
                 err.println(e.getMessage().contains(": error: ") ? e.getMessage() : "parpe: " + e.getMessage());
                 return 1;
             }
             String text = String.join("\n", merged) + "\n";
-            OutputFile target = OutputFile.ofOptional("--out", out, files);
             if (target == null) {
                 PrintWriter o = spec.commandLine().getOut();
                 o.print(text);
@@ -65,6 +148,11 @@ public final class MergeCommand implements Callable<Integer> {
                 target.write(text);
             }
             err.println("parpe: merged " + (merged.size() - 1) + " runs from " + files.size() + " files");
+            if (png != null) {
+                png.write(o -> Plots.sweep(o, (out.equals("-") ? "merged sweep" : Path.of(out).getFileName()) + ", "
+                        + result.rows().size() + " runs", axes(result.rows()), result.rows(), goal));
+                err.println("parpe: plot in " + png);
+            }
             return 0;
         } catch (UsageException e) {
             err.println("parpe: " + e.getMessage());

@@ -107,7 +107,7 @@ public final class SweepCommand implements Callable<Integer> {
         if (cancel.cancelled()) {
             return 0;
         }
-        SweepResult result = write(sweep, range, csv, stdout, err, cancel);
+        SweepResult result = write(sweep, share, range, csv, stdout, err, cancel);
         OutputFile png = plotTarget;
         if (png != null && cancel.cancelled()) {
             // AWT cannot start while the JVM shuts down (Ctrl-C): the rows are safe, the plot is not drawn.
@@ -123,30 +123,52 @@ public final class SweepCommand implements Callable<Integer> {
         return 0;
     }
 
-    /** Runs the sweep's share {@code range}, writing the header and each row as it comes. */
-    private SweepResult write(Sweep sweep, int[] range, OutputFile csv, PrintWriter stdout, PrintWriter err,
-                              Cancellation cancel) throws UsageException {
+    /**
+     * Runs the sweep's share {@code range}, writing the header and each row as it comes; a
+     * shard ({@code share}) is framed and written through a {@link ShardFile}.
+     */
+    private SweepResult write(Sweep sweep, int[] share, int[] range, OutputFile csv, PrintWriter stdout,
+                              PrintWriter err, Cancellation cancel) throws UsageException {
         int total = sweep.spec().size();
-        int jobs = options.jobs();
+        ShardFile shardFile = share != null && csv != null ? ShardFile.of(out) : null;
         SweepResult result;
-        try (Writer w = csv == null ? null : csv.openWriter()) {
+        try (Writer w = shardFile != null ? shardFile.open() : csv != null ? csv.openWriter() : null) {
             Writer target = w != null ? w : stdout;
+            if (share != null) {
+                target.write(SweepCsv.shardStart(share[0], share[1], range[0], range[1], total) + "\n");
+            }
             target.write(SweepCsv.header(sweep.spec().axes()) + "\n");
             ProgressBar bar = new ProgressBar(err, new SweepListener() {
                 @Override
                 public void row(SweepRow row) {
                     try {
                         target.write(SweepCsv.line(row, total) + "\n");
+                        if (share != null) {
+                            target.flush(); // each finished row reaches the file: a killed task keeps it
+                        }
                     } catch (IOException e) {
                         throw new java.io.UncheckedIOException(e);
                     }
                 }
             });
-            result = sweep.run(range[0], range[1], jobs, bar, cancel);
+            result = sweep.run(range[0], range[1], options.jobs(), bar, cancel);
             bar.clear();
+            if (share != null && !result.cancelled()) {
+                target.write(SweepCsv.shardEnd(share[0], share[1]) + "\n");
+            }
             target.flush();
         } catch (java.io.UncheckedIOException | IOException e) {
             throw new UsageException("cannot write --out file '" + out + "': " + e.getMessage());
+        }
+        if (shardFile != null && result.cancelled()) {
+            err.println("parpe: shard " + share[0] + "/" + share[1] + " is unfinished: its " + result.rows().size()
+                    + " finished runs are in " + shardFile.partial() + "; run the shard again to complete it");
+        } else if (shardFile != null) {
+            try {
+                shardFile.commit();
+            } catch (IOException e) {
+                throw new UsageException("cannot write --out file '" + out + "': " + e.getMessage());
+            }
         }
         return result;
     }

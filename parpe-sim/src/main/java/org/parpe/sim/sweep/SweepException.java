@@ -5,7 +5,7 @@ package org.parpe.sim.sweep;
  * parameter, a value outside a parameter's bounds, a script that does not load. The message is
  * one line meant for the user.
  */
-public final class SweepException extends Exception {
+public class SweepException extends Exception {
     private static final long serialVersionUID = 1L;
 
     /** An exception with a one-line message for the user. */

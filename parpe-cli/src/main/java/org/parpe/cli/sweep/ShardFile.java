@@ -1,0 +1,66 @@
+package org.parpe.cli.sweep;
+
+import java.io.IOException;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import org.parpe.cli.UsageException;
+import org.parpe.sim.sweep.SweepCsv;
+
+/**
+ * The file of one shard ({@code sweep --shard K/N --out FILE}), written for clusters whose tasks
+ * may be cancelled, run out of time or be killed: the rows go to a visible {@code FILE.partial}
+ * as each one finishes (a killed task keeps them), framed by {@link SweepCsv#shardStart}; only a
+ * shard that ran to its end gets its last line and is renamed to {@code FILE}. So a shard under
+ * its proper name is always whole, and {@code parpe merge} can name what is missing.
+ */
+final class ShardFile {
+    private final Path target;
+    private final Path partial;
+
+    private ShardFile(Path target) {
+        this.target = target;
+        this.partial = target.resolveSibling(target.getFileName() + ".partial");
+    }
+
+    /** The shard file {@code out} (already checked as an output target). */
+    static ShardFile of(String out) throws UsageException {
+        ShardFile f = new ShardFile(Path.of(out).toAbsolutePath().normalize());
+        // A .partial file that is not a shard's is someone else's: never overwrite it.
+        if (Files.exists(f.partial)) {
+            String first;
+            try (var lines = Files.lines(f.partial, StandardCharsets.UTF_8)) {
+                first = lines.findFirst().orElse("");
+            } catch (IOException | java.io.UncheckedIOException e) {
+                first = "";
+            }
+            if (SweepCsv.shardOf(first) == null && !first.isEmpty()) {
+                throw new UsageException("cannot write the unfinished shard to '" + out + ".partial': the file exists"
+                        + " and is not a shard's; move it away");
+            }
+        }
+        return f;
+    }
+
+    /** Opens {@code FILE.partial} (replacing an unfinished shard's) for writing. */
+    Writer open() throws IOException {
+        return Files.newBufferedWriter(partial, StandardCharsets.UTF_8);
+    }
+
+    /** The shard ran to its end and its writer is closed: it takes its proper name. */
+    void commit() throws IOException {
+        try {
+            Files.move(partial, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+        } catch (AtomicMoveNotSupportedException e) {
+            Files.move(partial, target, StandardCopyOption.REPLACE_EXISTING);
+        }
+    }
+
+    /** Where the rows of an unfinished shard are. */
+    Path partial() {
+        return partial;
+    }
+}
