@@ -87,11 +87,68 @@ class SlurmArrayTest {
                 "SLURM_ARRAY_TASK_COUNT", "2"));
         assertEquals(0, code, Files.readString(dir.resolve("task.log")));
         List<String> rows = Files.readAllLines(out.resolve("shard-2-of-2.csv"));
-        assertEquals(4, rows.size());
-        assertTrue(rows.get(1).startsWith("3,6,"), rows.get(1));
+        assertEquals(List.of("# parpe sweep shard 2/2: 3 runs from run 3 of 6", "# parpe sweep shard 2/2: complete"),
+                List.of(rows.get(0), rows.get(rows.size() - 1)));
+        assertEquals(6, rows.size());
+        assertTrue(rows.get(2).startsWith("3,6,"), rows.get(2));
         // without Slurm's variables the script refuses to guess
         assertEquals(1, task(dir.resolve("none"), script, Map.of()));
         assertTrue(Files.readString(dir.resolve("task.log")).contains("not an array task"));
+    }
+
+    /** Issue 26, item 2: a lost shard can be run again on its own, as the merge and the docs say. */
+    @Test
+    void parpeShardsRerunsOneShardOfTheSplit() throws Exception {
+        Path script = dir.resolve("snake.xml");
+        Files.writeString(script, SweepCommandTest.SNAKE);
+        Path out = dir.resolve("shards");
+        // sbatch --array=3 sets MIN = MAX = ID = 3 and COUNT = 1
+        int code = task(out, script, Map.of("PARPE_SHARDS", "4", "SLURM_ARRAY_TASK_ID", "3", "SLURM_ARRAY_TASK_MIN", "3",
+                "SLURM_ARRAY_TASK_MAX", "3", "SLURM_ARRAY_TASK_COUNT", "1"));
+        assertEquals(0, code, Files.readString(dir.resolve("task.log")));
+        List<String> rows = Files.readAllLines(out.resolve("shard-3-of-4.csv"));
+        assertEquals("# parpe sweep shard 3/4: 1 runs from run 3 of 6", rows.get(0));
+        assertEquals(0, task(out, script, Map.of("PARPE_SHARDS", "4", "SLURM_ARRAY_TASK_ID", "4")),
+                Files.readString(dir.resolve("task.log")));
+        assertEquals(2, task(out, script, Map.of("PARPE_SHARDS", "4", "SLURM_ARRAY_TASK_ID", "5")));
+        assertTrue(Files.readString(dir.resolve("task.log")).contains("task 5 is not a shard of 4"));
+    }
+
+    /** Issue 26, items 2 and 6: arrays whose shards would not cover the sweep are refused, not run. */
+    @Test
+    void gappedArraysAndBareSingleTasksAreRefused() throws Exception {
+        Path script = dir.resolve("snake.xml");
+        Files.writeString(script, SweepCommandTest.SNAKE);
+        Path out = dir.resolve("shards");
+        // --array=1-5:2
+        assertEquals(2, task(out, script, Map.of("SLURM_ARRAY_TASK_ID", "3", "SLURM_ARRAY_TASK_MIN", "1",
+                "SLURM_ARRAY_TASK_MAX", "5", "SLURM_ARRAY_TASK_COUNT", "3", "SLURM_ARRAY_TASK_STEP", "2")));
+        assertTrue(Files.readString(dir.resolve("task.log")).contains("must be a step-1 range"),
+                Files.readString(dir.resolve("task.log")));
+        // --array=1,2,7
+        assertEquals(2, task(out, script, Map.of("SLURM_ARRAY_TASK_ID", "2", "SLURM_ARRAY_TASK_MIN", "1",
+                "SLURM_ARRAY_TASK_MAX", "7", "SLURM_ARRAY_TASK_COUNT", "3", "SLURM_ARRAY_TASK_STEP", "1")));
+        assertTrue(Files.readString(dir.resolve("task.log")).contains("must be a step-1 range"));
+        // --array=4 without PARPE_SHARDS: once the whole sweep as shard 1/1
+        assertEquals(2, task(out, script, Map.of("SLURM_ARRAY_TASK_ID", "4", "SLURM_ARRAY_TASK_MIN", "4",
+                "SLURM_ARRAY_TASK_MAX", "4", "SLURM_ARRAY_TASK_COUNT", "1")));
+        assertTrue(Files.readString(dir.resolve("task.log")).contains("would run the whole sweep as shard 1/1"));
+        assertTrue(!Files.exists(out) || Files.list(out).findAny().isEmpty(), "a refused task wrote a shard");
+    }
+
+    /** Issue 26, item 6: a folder reused with another number of shards fails at the start, not at the merge. */
+    @Test
+    void aFolderWithShardsOfAnotherSplitIsRefused() throws Exception {
+        Path script = dir.resolve("snake.xml");
+        Files.writeString(script, SweepCommandTest.SNAKE);
+        Path out = dir.resolve("shards");
+        Files.createDirectories(out);
+        Files.writeString(out.resolve("shard-1-of-8.csv"), "old\n");
+        assertEquals(2, task(out, script, Map.of("SLURM_ARRAY_TASK_ID", "1", "SLURM_ARRAY_TASK_MIN", "1",
+                "SLURM_ARRAY_TASK_MAX", "2")));
+        assertTrue(Files.readString(dir.resolve("task.log")).contains("already holds shards of a sweep split into 8"),
+                Files.readString(dir.resolve("task.log")));
+        assertEquals(List.of("old"), Files.readAllLines(out.resolve("shard-1-of-8.csv")));
     }
 
     @Test
