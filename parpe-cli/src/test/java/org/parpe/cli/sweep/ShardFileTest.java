@@ -10,7 +10,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.parpe.cli.Cli;
@@ -24,19 +23,16 @@ import org.parpe.cli.Cli;
 class ShardFileTest {
     @TempDir
     Path dir;
-    Path script;
 
-    @BeforeEach
-    void writeScript() throws Exception {
-        script = dir.resolve("snake.xml");
-        Files.writeString(script, SweepCommandTest.SNAKE);
+    private Path script() throws Exception {
+        return Files.exists(dir.resolve("snake.xml")) ? dir.resolve("snake.xml") : SweepCommandTest.snakeIn(dir);
     }
 
     /** {@code parpe sweep} of 6 runs as shard K/3 in a process of its own, stderr to a log. */
     private Process shard(int k, String duration, Path log) throws Exception {
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
         List<String> cmd = new ArrayList<>(List.of(java, "-cp", System.getProperty("java.class.path"),
-                "org.parpe.cli.Main", "sweep", script.toString(), "--sim", "snake:n=6", "--duration", duration,
+                "org.parpe.cli.Main", "sweep", script().toString(), "--sim", "snake:n=6", "--duration", duration,
                 "--vary", "bend=20..40:3", "--vary", "period=1,2", "--param", "phase=0.2", "--seed", "9",
                 "--jobs", "1", "--shard", k + "/3", "--out", dir.resolve("shard-" + k + ".csv").toString()));
         return new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(log.toFile()).start();
@@ -141,7 +137,7 @@ class ShardFileTest {
     @Test
     void mergeDrawsThePlotAndWritesTheOneMachineFile() throws Exception {
         Path whole = dir.resolve("whole.csv");
-        Cli one = Cli.run("sweep", script.toString(), "--sim", "snake:n=6", "--duration", "1", "--vary",
+        Cli one = Cli.run("sweep", script().toString(), "--sim", "snake:n=6", "--duration", "1", "--vary",
                 "bend=20..40:3", "--vary", "period=1,2", "--param", "phase=0.2", "--seed", "9", "--out",
                 whole.toString(), "--plot", dir.resolve("whole.png").toString());
         assertEquals(0, one.code, one.err);

@@ -46,8 +46,7 @@ class SlurmArrayTest {
     @Test
     void mergedArrayShardsEqualTheOneMachineSweep() throws Exception {
         assertTrue(!System.getProperty("java.class.path").contains(" "), "the class path has a space");
-        Path script = dir.resolve("snake.xml");
-        Files.writeString(script, SweepCommandTest.SNAKE);
+        Path script = SweepCommandTest.snakeIn(dir);
         Path whole = dir.resolve("whole.csv");
         Cli one = Cli.run("sweep", script.toString(), "--sim", "snake:n=6",
                 "--duration", "1", "--vary", "bend=20..40:3", "--vary", "period=1,2", "--param", "phase=0.2",
@@ -80,8 +79,7 @@ class SlurmArrayTest {
 
     @Test
     void anArrayNumberedFromOneWithACountUsesEveryTask() throws Exception {
-        Path script = dir.resolve("snake.xml");
-        Files.writeString(script, SweepCommandTest.SNAKE);
+        Path script = SweepCommandTest.snakeIn(dir);
         Path out = dir.resolve("shards");
         int code = task(out, script, Map.of("SLURM_ARRAY_TASK_ID", "2", "SLURM_ARRAY_TASK_MIN", "1",
                 "SLURM_ARRAY_TASK_COUNT", "2"));
@@ -99,8 +97,7 @@ class SlurmArrayTest {
     /** Issue 26, item 2: a lost shard can be run again on its own, as the merge and the docs say. */
     @Test
     void parpeShardsRerunsOneShardOfTheSplit() throws Exception {
-        Path script = dir.resolve("snake.xml");
-        Files.writeString(script, SweepCommandTest.SNAKE);
+        Path script = SweepCommandTest.snakeIn(dir);
         Path out = dir.resolve("shards");
         // sbatch --array=3 sets MIN = MAX = ID = 3 and COUNT = 1
         int code = task(out, script, Map.of("PARPE_SHARDS", "4", "SLURM_ARRAY_TASK_ID", "3", "SLURM_ARRAY_TASK_MIN", "3",
@@ -117,8 +114,7 @@ class SlurmArrayTest {
     /** Issue 26, items 2 and 6: arrays whose shards would not cover the sweep are refused, not run. */
     @Test
     void gappedArraysAndBareSingleTasksAreRefused() throws Exception {
-        Path script = dir.resolve("snake.xml");
-        Files.writeString(script, SweepCommandTest.SNAKE);
+        Path script = SweepCommandTest.snakeIn(dir);
         Path out = dir.resolve("shards");
         // --array=1-5:2
         assertEquals(2, task(out, script, Map.of("SLURM_ARRAY_TASK_ID", "3", "SLURM_ARRAY_TASK_MIN", "1",
@@ -139,8 +135,7 @@ class SlurmArrayTest {
     /** Issue 26, item 6: a folder reused with another number of shards fails at the start, not at the merge. */
     @Test
     void aFolderWithShardsOfAnotherSplitIsRefused() throws Exception {
-        Path script = dir.resolve("snake.xml");
-        Files.writeString(script, SweepCommandTest.SNAKE);
+        Path script = SweepCommandTest.snakeIn(dir);
         Path out = dir.resolve("shards");
         Files.createDirectories(out);
         Files.writeString(out.resolve("shard-1-of-8.csv"), "old\n");

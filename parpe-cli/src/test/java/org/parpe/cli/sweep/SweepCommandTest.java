@@ -43,8 +43,12 @@ class SweepCommandTest {
 
     @BeforeEach
     void writeScript() throws Exception {
-        script = dir.resolve("snake.xml");
-        Files.writeString(script, SNAKE);
+        script = snakeIn(dir);
+    }
+
+    /** {@link #SNAKE} written to {@code snake.xml} in {@code dir}. */
+    static Path snakeIn(Path dir) throws java.io.IOException {
+        return Files.writeString(dir.resolve("snake.xml"), SNAKE);
     }
 
     private String[] sweepArgs(String out, String... more) {
