@@ -71,7 +71,7 @@ chmod 755 "$work/munge" # the socket must be reachable by the job's user
 host=$(hostname -s)
 cat >"$work/slurm.conf" <<EOF
 ClusterName=parpetest
-SlurmctldHost=$host
+SlurmctldHost=$host(127.0.0.1)
 SlurmctldPort=16817
 SlurmdPort=16818
 AuthType=auth/munge
@@ -94,7 +94,7 @@ DefMemPerCPU=700
 KillWait=20
 MpiDefault=none
 ReturnToService=2
-NodeName=$host CPUs=2 RealMemory=3000 State=UNKNOWN
+NodeName=$host NodeAddr=127.0.0.1 CPUs=2 RealMemory=3000 State=UNKNOWN
 PartitionName=test Nodes=$host Default=YES MaxTime=INFINITE State=UP
 EOF
 export SLURM_CONF=$work/slurm.conf
