@@ -60,6 +60,54 @@ class SweepTest {
     }
 
     @Test
+    void readingTheCsvGivesRowsThatPrintTheSameLines() throws Exception {
+        Sweep sweep = grid();
+        List<String> lines = new ArrayList<>();
+        lines.add(SweepCsv.header(sweep.spec().axes()));
+        lines.addAll(csv(sweep, 0, 6, 1));
+        // a run that could not start: empty measurements, an error with a comma and a quote
+        lines.add("6,7,6,0,7,50,2,,,,,,,,0,\"bend 50 > max, \"\"60\"\"\"");
+        SweepResult read = SweepCsv.read(lines);
+        assertEquals(lines.subList(1, 7), read.rows().subList(0, 6).stream().map(r -> SweepCsv.line(r, 6)).toList());
+        SweepRow failed = read.rows().get(6);
+        assertEquals("bend 50 > max, \"60\"", failed.error());
+        assertTrue(Double.isNaN(failed.forwardSpeed()) && !failed.ok());
+        assertEquals(lines.get(7), SweepCsv.line(failed, 7));
+        assertThrows(SweepException.class, () -> SweepCsv.read(List.of(lines.get(0), "0,6,0,0,7,20")));
+    }
+
+    /** Issue 26, item 3: a shard's framing lines are checked and dropped; an unfinished shard is named. */
+    @Test
+    void framedShardsMergeAndAnUnfinishedOneIsNamed() throws Exception {
+        Sweep sweep = grid();
+        List<String> whole = csv(sweep, 0, 6, 2);
+        Map<String, List<String>> shards = new LinkedHashMap<>();
+        for (int k = 1; k <= 2; k++) {
+            int[] range = SweepSpec.shard(6, k, 2);
+            List<String> lines = new ArrayList<>();
+            lines.add(SweepCsv.shardStart(k, 2, range[0], range[1], 6));
+            lines.add(SweepCsv.header(sweep.spec().axes()));
+            lines.addAll(whole.subList(range[0], range[1]));
+            lines.add(SweepCsv.shardEnd(k, 2));
+            shards.put("s" + k, lines);
+        }
+        List<String> expected = new ArrayList<>();
+        expected.add(SweepCsv.header(sweep.spec().axes()));
+        expected.addAll(whole);
+        assertEquals(expected, SweepCsv.merge(shards));
+        List<String> cut = new ArrayList<>(shards.get("s2").subList(0, 3)); // the task stopped after one run
+        shards.put("s2", cut);
+        IncompleteSweepException e = assertThrows(IncompleteSweepException.class, () -> SweepCsv.merge(shards));
+        assertEquals("s2: error: shard 2/2 is unfinished: it holds 1 of its 3 runs (runs 3..5); its task was stopped"
+                + " or killed before the end", e.getMessage());
+        assertEquals(List.of(2), e.rerun());
+        assertEquals(2, e.of());
+        shards.remove("s2");
+        assertEquals("error: shard 2/2 is missing (runs 3..5)",
+                assertThrows(IncompleteSweepException.class, () -> SweepCsv.merge(shards)).getMessage());
+    }
+
+    @Test
     void shardsTogetherAreTheWholeSweep() throws Exception {
         Sweep sweep = grid();
         List<String> whole = csv(sweep, 0, 6, 2);
