@@ -9,10 +9,10 @@ import java.util.concurrent.Callable;
 import javax.imageio.ImageIO;
 import org.parpe.cli.ClockOptions;
 import org.parpe.cli.Inputs;
+import org.parpe.cli.LoadReport;
 import org.parpe.cli.OutputFile;
 import org.parpe.cli.ParamValues;
 import org.parpe.cli.UsageException;
-import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diagram.Diagrams;
 import org.parpe.core.diagram.Gait;
 import org.parpe.core.diagram.Layouts;
@@ -42,6 +42,9 @@ import picocli.CommandLine.Model.CommandSpec;
         + " the <main> program lane, a behavior's swimlanes, an automaton ring, a phase wheel or the gait diagram,"
         + " as SVG or PNG (by the --out file's extension).")
 public final class DiagramCommand implements Callable<Integer> {
+    /** The most ticks a gait diagram records: far more than its width in pixels. */
+    static final int MAX_GAIT_TICKS = 100_000;
+
     /** The views. */
     enum View { program, lanes, ring, phase, gait }
 
@@ -98,18 +101,16 @@ public final class DiagramCommand implements Callable<Integer> {
         }
         if (view == View.gait) {
             ClockOptions.check(tick, duration);
+            if (duration / tick > MAX_GAIT_TICKS) {
+                throw new UsageException("--duration " + duration + " at --tick " + tick + " is more than "
+                        + MAX_GAIT_TICKS + " ticks, more than a gait diagram can show; draw a shorter time");
+            }
         }
         Inputs.check(file);
         LoadResult r = ScriptLoader.load(file, ParamValues.parse(params));
-        for (Diagnostic d : r.diagnostics()) {
-            err.println(d.format());
-        }
-        if (r.program() == null) {
-            return 1;
-        }
-        if (!r.parameterErrors().isEmpty()) {
-            r.parameterErrors().forEach(d -> err.println(d.format()));
-            return 2;
+        int refused = LoadReport.exitCode(r, err::println);
+        if (refused != 0) {
+            return refused;
         }
         OutputFile target = OutputFile.of("--out", out, r.files());
         Scene scene;

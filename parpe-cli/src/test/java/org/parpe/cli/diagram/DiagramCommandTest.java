@@ -99,6 +99,10 @@ class DiagramCommandTest {
                 "--out", out.toString());
         assertEquals(2, inst.code, inst::toString);
         assertTrue(inst.err.contains("--instance must be in 0..3"), inst.err);
+        Cli longGait = Cli.run("diagram", "../examples/centipede-walk.xml", "--view", "gait", "--duration", "1e6",
+                "--out", out.toString());
+        assertEquals(2, longGait.code, longGait::toString);
+        assertTrue(longGait.err.contains("more than 100000 ticks"), longGait.err);
         assertFalse(Files.exists(out));
         Path input = dir.resolve("in.xml");
         Files.copy(Path.of("../examples/hello-snake.xml"), input);
