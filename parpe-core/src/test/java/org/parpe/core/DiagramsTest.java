@@ -80,6 +80,7 @@ class DiagramsTest {
         assertEquals(2 / 6.0, r.arcs().get(1).to(), 1e-12);
         assertEquals(1.0, r.arcs().get(2).to(), 1e-12);
         assertEquals("stance", r.arcs().get(2).state());
+        assertEquals(List.of("-press"), r.arcs().get(2).angles());
         assertTrue(r.islands().isEmpty());
         Ring exit = Diagrams.ring(load("sensor-exit.xml").automata().get(0));
         assertTrue(exit.arcs().stream().anyMatch(a -> a.exit() != null), "sensor-exit has an exit condition");

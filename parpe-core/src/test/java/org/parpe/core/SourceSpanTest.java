@@ -118,6 +118,18 @@ class SourceSpanTest {
     }
 
     @Test
+    void aSpanIsNoPartOfAPlacesEquality() throws Exception {
+        String text = "<program>\n  <a x=\"1\"/>\n</program>";
+        XElement a = XmlReader.read(new SourceText("t.xml", text), new DiagnosticList()).children().get(0);
+        SourcePos plain = new SourcePos("t.xml", 2, 4);
+        assertNotNull(a.pos().span());
+        assertEquals(plain, a.pos());
+        assertEquals(plain.hashCode(), a.pos().hashCode());
+        assertEquals("t.xml:2:4", a.pos().toString());
+        assertTrue(!plain.equals(new SourcePos("t.xml", 2, 5)) && !plain.equals(new SourcePos("u.xml", 2, 4)));
+    }
+
+    @Test
     void entitiesAndOtherQuotesAreCoveredByTheRawRange() throws Exception {
         String text = "<program>\n  <a x='1 &lt; 2' y=\"&#65;b\"\n     z = \"q\" />\n  <b>t</b>\n</program>";
         XElement root = XmlReader.read(new SourceText("t.xml", text), new DiagnosticList());

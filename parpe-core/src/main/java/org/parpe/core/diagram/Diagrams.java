@@ -152,7 +152,8 @@ public final class Diagrams {
         for (int i = 0; i < n; i++) {
             double share = total > 0 ? len[i] / total : 1.0 / n;
             Timing t = a.times().get(i);
-            arcs.add(new Ring.Arc(i, a.states().get(i).name(), t.duration().text(), text(t.exit()), seconds[i], at,
+            List<String> angles = a.states().get(i).angles().stream().map(Expression::text).toList();
+            arcs.add(new Ring.Arc(i, a.states().get(i).name(), t.duration().text(), text(t.exit()), angles, seconds[i], at,
                     i == n - 1 ? 1.0 : at + share, a.states().get(i).pos()));
             at += share;
         }

@@ -209,6 +209,9 @@ public final class Layouts {
             double[] p = Scene.onCircle(cx, cy, (r0 + r1) / 2, (a.from() + a.to()) / 2);
             sc.add(new Scene.Text(p[0], p[1] - 2, a.state(), 13, 0, INK, true));
             sc.add(new Scene.Text(p[0], p[1] + 14, "T = " + a.duration(), 11, 0, INK, false));
+            String angles = String.join(", ", a.angles());
+            sc.add(new Scene.Text(p[0], p[1] + 27, (angles.length() > 22 ? angles.substring(0, 21) + "…" : angles) + "°", 10, 0,
+                    0x444444, false));
             double[] e0 = Scene.onCircle(cx, cy, r1 + 6, a.to());
             double[] e1 = Scene.onCircle(cx, cy, r0 - 6, a.to());
             sc.add(new Scene.Line(e0[0], e0[1], e1[0], e1[1], INK, 2, 0));

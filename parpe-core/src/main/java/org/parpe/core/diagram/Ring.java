@@ -27,12 +27,17 @@ public record Ring(String automaton, boolean table, List<Arc> arcs, List<TextIsl
      * @param state    its name
      * @param duration its duration as written
      * @param exit     its exit condition as written, or {@code null}
+     * @param angles   its target angles as written (one for the whole group, or one per module)
      * @param seconds  its duration in seconds, or {@code NaN} when it is not a constant
      * @param from     where the arc starts, as a fraction of the circle (0 at the top, clockwise)
      * @param to       where it ends
      * @param pos      the state's definition
      */
-    public record Arc(int index, String state, String duration, String exit, double seconds, double from, double to,
-                      SourcePos pos) {
+    public record Arc(int index, String state, String duration, String exit, List<String> angles, double seconds,
+                      double from, double to, SourcePos pos) {
+
+        public Arc {
+            angles = List.copyOf(angles);
+        }
     }
 }
