@@ -2,7 +2,6 @@ package org.parpe.core.diagram;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 
 /**
  * A drawing made of a few primitives (rectangles, lines, annular sectors, text) in pixels,
@@ -155,7 +154,13 @@ public final class Scene {
 
     /** {@code #rrggbb}. */
     public static String color(int rgb) {
-        return String.format(Locale.ROOT, "#%06x", rgb & 0xffffff);
+        // by hand: String.format took a fifth of the time of a 10 000-module gait diagram
+        char[] c = new char[7];
+        c[0] = '#';
+        for (int i = 0; i < 6; i++) {
+            c[6 - i] = Character.forDigit(rgb >> (4 * i) & 0xf, 16);
+        }
+        return new String(c);
     }
 
     private static String n(double v) {
