@@ -27,6 +27,7 @@ import picocli.CommandLine.Command;
             org.parpe.cli.hw.ScanCommand.class,
             org.parpe.cli.hw.CalibrateCommand.class,
             org.parpe.cli.export.ExportCommand.class,
+            org.parpe.cli.diagram.DiagramCommand.class,
             CommandLine.HelpCommand.class
         },
         footer = {"", "  gui [FILE] [--run-for S] [--screenshot F.png] [--exit]",

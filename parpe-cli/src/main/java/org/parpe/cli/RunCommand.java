@@ -15,7 +15,6 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import org.parpe.cli.hw.HardwareOptions;
 import org.parpe.cli.sim.SimOptions;
-import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
 import org.parpe.core.model.Program;
@@ -92,15 +91,9 @@ final class RunCommand implements Callable<Integer> {
             Inputs.check(stimulus);
         }
         LoadResult r = ScriptLoader.load(file, ParamValues.parse(params));
-        for (Diagnostic d : r.diagnostics()) {
-            err.println(d.format());
-        }
-        if (r.program() == null) {
-            return 1;
-        }
-        if (!r.parameterErrors().isEmpty()) {
-            r.parameterErrors().forEach(d -> err.println(d.format()));
-            return 2;
+        int refused = LoadReport.exitCode(r, err::println);
+        if (refused != 0) {
+            return refused;
         }
         Program program = r.program();
         if (program.main() == null) {

@@ -98,13 +98,9 @@ public final class ExportCommand implements Callable<Integer> {
         Board b = board(arduino);
         SketchOptions sketch = arduino ? SketchOptions.of(servo, pins, baud, model, consoleSensors) : null;
         LoadResult r = ScriptLoader.load(file, ParamValues.parse(params));
-        r.diagnostics().forEach(d -> err.println(d.format()));
-        if (r.program() == null) {
-            return 1;
-        }
-        if (!r.parameterErrors().isEmpty()) {
-            r.parameterErrors().forEach(d -> err.println(d.format()));
-            return 2;
+        int refused = org.parpe.cli.LoadReport.exitCode(r, err::println);
+        if (refused != 0) {
+            return refused;
         }
         DiagnosticList diags = new DiagnosticList();
         if (sketch != null) {

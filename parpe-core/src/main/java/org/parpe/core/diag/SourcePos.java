@@ -2,13 +2,22 @@ package org.parpe.core.diag;
 
 /**
  * A place in a source file: 1-based line and column. Every model node and every diagnostic
- * carries one so that messages can be printed as {@code FILE:LINE:COL}.
+ * carries one so that messages can be printed as {@code FILE:LINE:COL}. The place of an
+ * element read from a file also carries the element's {@link SourceSpan}, so that an editor
+ * can rewrite one attribute of the node exactly; the span is extra knowledge about the same
+ * place and takes no part in equality.
  *
  * @param file   the file as the user named it (relative paths stay relative)
  * @param line   1-based line
  * @param column 1-based column
+ * @param span   the element's offsets in its file's text, or {@code null} when unknown
  */
-public record SourcePos(String file, int line, int column) {
+public record SourcePos(String file, int line, int column, SourceSpan span) {
+
+    /** A place without a span. */
+    public SourcePos(String file, int line, int column) {
+        this(file, line, column, null);
+    }
 
     /** A position for things that come from no file (command line, generated code). */
     public static final SourcePos NONE = new SourcePos("", 0, 0);
@@ -25,6 +34,22 @@ public record SourcePos(String file, int line, int column) {
     /** The position {@code delta} columns to the right on the same line. */
     public SourcePos shift(int delta) {
         return new SourcePos(file, line, column + delta);
+    }
+
+    /** This place with the element's span. */
+    public SourcePos withSpan(SourceSpan s) {
+        return new SourcePos(file, line, column, s);
+    }
+
+    /** Equal when file, line and column are: the span does not make another place. */
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof SourcePos p && p.line == line && p.column == column && p.file.equals(file);
+    }
+
+    @Override
+    public int hashCode() {
+        return (file.hashCode() * 31 + line) * 31 + column;
     }
 
     @Override

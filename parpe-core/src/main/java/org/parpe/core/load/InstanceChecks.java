@@ -22,7 +22,7 @@ final class InstanceChecks {
     private final Robot robot;
     private final Map<String, Automaton> automata;
     private final Map<String, List<ExprCompiler.LocalUse>> locals;
-    private final Map<String, java.util.BitSet> members = new java.util.HashMap<>();
+    private final GroupOverlap overlap = new GroupOverlap();
     private final Map<String, java.util.Set<Integer>> carried = new java.util.HashMap<>();
 
     InstanceChecks(DiagnosticSink d, Robot robot, Map<String, Automaton> automata,
@@ -66,7 +66,7 @@ final class InstanceChecks {
                 boolean relevant = args == null ? !later.macroGroup() && !earlier.macroGroup()
                         : later.macroGroup() || earlier.macroGroup();
                 Group h = relevant && !earlier.conditional() ? group(earlier, args) : null;
-                Integer shared = h == null ? null : shared(g, h);
+                Integer shared = h == null ? null : overlap.shared(g, h);
                 if (shared != null) {
                     d.error(later.model().pos(), "group '" + g.name() + "' overlaps group '" + h.name()
                             + "' of an earlier instance (module " + shared + ")" + note
@@ -87,20 +87,6 @@ final class InstanceChecks {
             name = a.group();
         }
         return robot.group(name).orElse(null);
-    }
-
-    private Integer shared(Group a, Group b) {
-        java.util.BitSet x = (java.util.BitSet) bits(a).clone();
-        x.and(bits(b));
-        return x.isEmpty() ? null : x.nextSetBit(0);
-    }
-
-    private java.util.BitSet bits(Group g) {
-        return members.computeIfAbsent(g.name(), k -> {
-            java.util.BitSet b = new java.util.BitSet();
-            g.modules().forEach(b::set);
-            return b;
-        });
     }
 
     private void shape(BehaviorResolver.InstanceInfo info, Group g, String note) {

@@ -207,7 +207,12 @@ public final class ProgramPrinter {
     }
 
     private static String attr(String name, String value) {
-        return " " + name + "=\"" + escape(value).replace("\"", "&quot;") + "\"";
+        return " " + name + "=\"" + attributeText(value) + "\"";
+    }
+
+    /** {@code value} written inside a double-quoted attribute: {@code & < > "} as entities. */
+    public static String attributeText(String value) {
+        return escape(value).replace("\"", "&quot;");
     }
 
     private static String escape(String s) {

@@ -35,6 +35,8 @@ public final class Engine implements Evaluator {
     private final double[] next;
     private final boolean[] driven;
     private final int[] driverOf;
+    /** The module's position in the group of the instance that drove it. */
+    private final int[] driverPos;
     private final SensorTable sensors;
     private final EvalContext ctx = new EvalContext();
     private final Inputs inputs;
@@ -61,6 +63,7 @@ public final class Engine implements Evaluator {
         this.next = new double[ids.length];
         this.driven = new boolean[ids.length];
         this.driverOf = new int[ids.length];
+        this.driverPos = new int[ids.length];
         this.sensors = new SensorTable(ids);
         ctx.sensors = sensors;
         ctx.random = new SplittableRandom(options.seed());
@@ -192,6 +195,26 @@ public final class Engine implements Evaluator {
         }
         String name = entry >= 0 && entry < plans.length ? plans[entry].behavior.name() : "";
         return new EngineStatus(tick, time(), name, entry, mainCycle, d, ended);
+    }
+
+    /**
+     * Which automaton state each module was in at the last tick (engine thread; fills the
+     * caller's arrays and allocates nothing, so a live view may call it at every tick). For the
+     * module at index {@code m} of {@link #moduleIds()}: {@code instanceOut[m]} is the document
+     * position, within the current {@code <main>} entry's behavior, of the instance that drove
+     * it, and {@code stateOut[m]} that instance's state index; both are −1 for a module not
+     * driven at the last tick.
+     */
+    public void moduleStates(int[] instanceOut, int[] stateOut) {
+        for (int m = 0; m < ids.length; m++) {
+            if (driven[m] && entry >= 0 && entry < plans.length) {
+                instanceOut[m] = driverOf[m];
+                stateOut[m] = plans[entry].runs[driverOf[m]].st[driverPos[m]];
+            } else {
+                instanceOut[m] = -1;
+                stateOut[m] = -1;
+            }
+        }
     }
 
     /**
@@ -343,6 +366,7 @@ public final class Engine implements Evaluator {
         }
         driven[m] = true;
         driverOf[m] = r.docIndex;
+        driverPos[m] = k;
         next[m] = r.out[k];
     }
 

@@ -1,5 +1,7 @@
 package org.parpe.core.xml;
 
+import org.parpe.core.diag.SourceSpan;
+
 
 /** Finds attribute values and text in the raw file text, decoding entities with positions. */
 final class TagScanner {
@@ -10,12 +12,13 @@ final class TagScanner {
     static XElement element(SourceText src, int offset, String name) {
         String s = src.text();
         int i = offset + 1;
-        XElement e = new XElement(name, src.pos(i), src);
+        XElement e = new XElement(name, src.pos(i), src, offset);
         i += name.length();
         while (i < s.length()) {
             i = skipSpace(s, i);
             char c = s.charAt(i);
             if (c == '>' || c == '/') {
+                e.tagEnd(i);
                 break;
             }
             int nameStart = i;
@@ -29,7 +32,8 @@ final class TagScanner {
             int valueStart = i + 1;
             int valueEnd = s.indexOf(quote, valueStart);
             XText value = decode(src, valueStart, valueEnd, true);
-            e.addAttribute(new XElement.XAttr(attrName, src.pos(nameStart), value));
+            e.addAttribute(new XElement.XAttr(attrName, src.pos(nameStart), value),
+                    new SourceSpan.Range(valueStart, valueEnd - valueStart));
             i = valueEnd + 1;
         }
         return e;

@@ -63,7 +63,7 @@ public final class XmlReader {
                 }
                 open.push(e);
             } else if (ev == XMLStreamConstants.END_ELEMENT) {
-                open.pop();
+                open.pop().close(offset);
             } else if ((ev == XMLStreamConstants.CHARACTERS || ev == XMLStreamConstants.CDATA)
                     && !open.isEmpty() && !r.getText().isBlank()) {
                 open.peek().addText(TagScanner.text(source, offset, r.getText()));

@@ -1,0 +1,126 @@
+package org.parpe.cli.diagram;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.Stream;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+import org.parpe.cli.Cli;
+
+/**
+ * {@code parpe diagram}: SVG snapshots of each view, compared byte for byte with the golden files
+ * in {@code src/test/resources/diagrams} (drawn, rendered and looked at when they were made; run
+ * with {@code -Dparpe.updateGolden=true} to write them again, and with them the pictures of
+ * docs/diagrams.md), and the command's errors.
+ */
+class DiagramCommandTest {
+    private static final Path GOLDEN = Path.of("src/test/resources/diagrams");
+    private static final Path DOCS = Path.of("../docs/images/diagrams");
+    private static final boolean UPDATE = Boolean.getBoolean("parpe.updateGolden");
+
+    /** A snapshot: its name and the command's arguments after the script. */
+    record Snapshot(String name, String script, List<String> args) {
+        @Override
+        public String toString() {
+            return name;
+        }
+    }
+
+    static Stream<Snapshot> snapshots() {
+        String centipede = "../examples/centipede-walk.xml";
+        return Stream.of(
+                new Snapshot("centipede-program", centipede, List.of("--view", "program")),
+                new Snapshot("centipede-lanes", centipede, List.of("--view", "lanes")),
+                new Snapshot("centipede-ring-step", centipede, List.of("--view", "ring", "--automaton", "step")),
+                new Snapshot("centipede-phase-rightswing", centipede, List.of("--view", "phase", "--instance", "1")),
+                new Snapshot("centipede-gait", centipede, List.of("--view", "gait", "--duration", "6")),
+                new Snapshot("standup-walk-program", "../examples/standup-walk.xml", List.of()),
+                new Snapshot("sensor-exit-ring", "../examples/sensor-exit.xml", List.of("--view", "ring")),
+                new Snapshot("teleop-lanes", "../examples/teleop-dirwave.xml", List.of("--view", "lanes")),
+                new Snapshot("gait-table-12-gait", "../examples/gait-table-12.xml", List.of("--view", "gait", "--duration", "4")),
+                new Snapshot("hello-snake-phase", "../examples/hello-snake.xml", List.of("--view", "phase")),
+                new Snapshot("island-ring", "src/test/resources/diagrams/island.xml", List.of("--view", "ring")),
+                new Snapshot("island-phase", "src/test/resources/diagrams/island.xml", List.of("--view", "phase")));
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("snapshots")
+    void eachViewDrawsItsGoldenSvg(Snapshot s, @TempDir Path dir) throws Exception {
+        Path out = dir.resolve(s.name() + ".svg");
+        List<String> args = new ArrayList<>(List.of("diagram", s.script(), "--out", out.toString()));
+        args.addAll(s.args());
+        Cli r = Cli.run(args);
+        assertEquals(0, r.code, r::toString);
+        String svg = Files.readString(out);
+        Path golden = GOLDEN.resolve(s.name() + ".svg");
+        if (UPDATE) {
+            Files.writeString(golden, svg);
+            List<String> png = new ArrayList<>(args);
+            png.set(3, DOCS.resolve(s.name() + ".png").toString());
+            Files.createDirectories(DOCS);
+            assertEquals(0, Cli.run(png).code);
+        }
+        assertEquals(Files.readString(golden), svg, "differs from " + golden + "; look at both, then update");
+    }
+
+    @Test
+    void aPngHasTheSceneSizeAndIsDrawn(@TempDir Path dir) throws Exception {
+        Path out = dir.resolve("ring.png");
+        Cli r = Cli.run("diagram", "../examples/centipede-walk.xml", "--view", "ring", "--out", out.toString());
+        assertEquals(0, r.code, r::toString);
+        BufferedImage img = ImageIO.read(out.toFile());
+        assertEquals(600, img.getWidth());
+        // the first arc (reach, orange 0xe69f00) lies right of the top of the ring
+        assertEquals(0xe69f00, img.getRGB(300 + 100, 290 - 100) & 0xffffff);
+        assertEquals(0xffffff, img.getRGB(300, 290) & 0xffffff, "the centre is empty");
+    }
+
+    @Test
+    void badRequestsAreUsageErrorsThatWriteNothing(@TempDir Path dir) throws Exception {
+        Path out = dir.resolve("x.svg");
+        Cli ext = Cli.run("diagram", "../examples/centipede-walk.xml", "--out", dir.resolve("x.pdf").toString());
+        assertEquals(2, ext.code, ext::toString);
+        assertTrue(ext.err.contains("--out must name a .svg or .png file"), ext.err);
+        Cli beh = Cli.run("diagram", "../examples/centipede-walk.xml", "--view", "lanes", "--behavior", "wlak",
+                "--out", out.toString());
+        assertEquals(2, beh.code, beh::toString);
+        assertTrue(beh.err.contains("no behavior 'wlak'") && beh.err.contains("walk"), beh.err);
+        Cli inst = Cli.run("diagram", "../examples/centipede-walk.xml", "--view", "phase", "--instance", "9",
+                "--out", out.toString());
+        assertEquals(2, inst.code, inst::toString);
+        assertTrue(inst.err.contains("--instance must be in 0..3"), inst.err);
+        Cli longGait = Cli.run("diagram", "../examples/centipede-walk.xml", "--view", "gait", "--duration", "1e6",
+                "--out", out.toString());
+        assertEquals(2, longGait.code, longGait::toString);
+        assertTrue(longGait.err.contains("more than 100000 ticks"), longGait.err);
+        assertFalse(Files.exists(out));
+        Path input = dir.resolve("in.xml");
+        Files.copy(Path.of("../examples/hello-snake.xml"), input);
+        Cli same = Cli.run("diagram", input.toString(), "--out", input.toString().replace(".xml", ".svg"));
+        assertEquals(0, same.code, same::toString);
+        Cli clobber = Cli.run("diagram", input.toString(), "--out", input.toString());
+        assertEquals(2, clobber.code, clobber::toString);
+        assertEquals(Files.readString(Path.of("../examples/hello-snake.xml")), Files.readString(input), "the script is kept");
+    }
+
+    @Test
+    void aScriptWithErrorsIsReportedAtItsPlace(@TempDir Path dir) throws Exception {
+        Path bad = dir.resolve("bad.xml");
+        Files.writeString(bad, "<program>\n  <robot><structure><b elements=\"0\"/></structure></robot>\n"
+                + "  <main><nothing/></main>\n</program>\n");
+        Cli r = Cli.run("diagram", bad.toString(), "--out", dir.resolve("x.svg").toString());
+        assertEquals(1, r.code, r::toString);
+        assertTrue(r.err.contains(bad + ":3:"), r.err);
+        assertFalse(Files.exists(dir.resolve("x.svg")));
+    }
+}

@@ -1,0 +1,368 @@
+package org.parpe.core.diagram;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Locale;
+import org.parpe.core.model.Numbers;
+
+/**
+ * Lays the diagrams out as {@link Scene}s: fixed sizes and a fixed palette, so that the same
+ * program always gives the same drawing (snapshot tests compare them byte for byte). Text
+ * islands are listed under each drawing with the line they open.
+ */
+public final class Layouts {
+    /** Colours of states, in order (a colour-blind-safe qualitative palette, Okabe–Ito). */
+    static final int[] PALETTE = {0xe69f00, 0x56b4e9, 0x009e73, 0xf0e442, 0x0072b2, 0xd55e00, 0xcc79a7, 0x999999};
+    static final int INK = 0x222222;
+    static final int GREY = 0x888888;
+    static final int LIGHT = 0xeeeeee;
+    static final int RED = 0xcc0000;
+    private static final double CHAR = 0.6;
+
+    private Layouts() {
+    }
+
+    private static double width(String s, double size) {
+        return s.length() * size * CHAR;
+    }
+
+    /** The {@code <main>} lane: one box per entry, left to right, with the repeat arrow under them. */
+    public static Scene program(ProgramLane lane) {
+        List<List<String>> boxes = new ArrayList<>();
+        double total = 40;
+        List<Double> widths = new ArrayList<>();
+        for (ProgramLane.Step s : lane.steps()) {
+            List<String> lines = new ArrayList<>();
+            lines.add(s.behavior());
+            lines.add(s.time() == null ? "until its automata end" : "time " + s.time() + " s");
+            if (s.exit() != null) {
+                lines.add("exit when " + s.exit());
+            }
+            s.macros().forEach(lines::add);
+            boxes.add(lines);
+            double w = 24;
+            for (String l : lines) {
+                w = Math.max(w, width(l, 13) + 24);
+            }
+            widths.add(w);
+            total += w + 40;
+        }
+        int maxLines = boxes.stream().mapToInt(List::size).max().orElse(1);
+        double boxH = 22 + maxLines * 18;
+        Scene sc = new Scene((int) Math.max(360, total), (int) (boxH + 110));
+        sc.add(new Scene.Text(20, 28, "<main>  cycles " + lane.cycles(), 15, -1, INK, true));
+        double x = 40;
+        double y = 50;
+        for (int i = 0; i < boxes.size(); i++) {
+            double w = widths.get(i);
+            if (i > 0) {
+                arrow(sc, x - 40, y + boxH / 2, x, y + boxH / 2);
+            }
+            sc.add(new Scene.Rect(x, y, w, boxH, PALETTE[i % PALETTE.length], INK, 1.5, lane.steps().get(i).pos()));
+            sc.add(new Scene.Rect(x + 3, y + 3, w - 6, boxH - 6, 0xffffff, Scene.NONE, 0, null));
+            List<String> lines = boxes.get(i);
+            for (int k = 0; k < lines.size(); k++) {
+                sc.add(new Scene.Text(x + 12, y + 24 + k * 18, lines.get(k), 13, -1, INK, k == 0));
+            }
+            x += w + 40;
+        }
+        if (!boxes.isEmpty()) {
+            double back = y + boxH + 25;
+            sc.add(new Scene.Line(x - 40, y + boxH / 2, x - 20, y + boxH / 2, INK, 1.5, 0));
+            sc.add(new Scene.Line(x - 20, y + boxH / 2, x - 20, back, INK, 1.5, 0));
+            sc.add(new Scene.Line(x - 20, back, 20, back, INK, 1.5, 0));
+            sc.add(new Scene.Line(20, back, 20, y + boxH / 2, INK, 1.5, 0));
+            arrow(sc, 20, y + boxH / 2, 40, y + boxH / 2);
+            sc.add(new Scene.Text((x - 20 + 20) / 2, back + 18, lane.cycles().equals("1") ? "runs once" : "runs " + lane.cycles() + (lane.cycles().equals("forever") ? "" : " times"), 12, 0, GREY, false));
+        }
+        return sc;
+    }
+
+    private static void arrow(Scene sc, double x1, double y1, double x2, double y2) {
+        sc.add(new Scene.Line(x1, y1, x2, y2, INK, 1.5, 0));
+        double a = Math.atan2(y2 - y1, x2 - x1);
+        for (double d : new double[] {-0.45, 0.45}) {
+            sc.add(new Scene.Line(x2, y2, x2 - 9 * Math.cos(a + d), y2 - 9 * Math.sin(a + d), INK, 1.5, 0));
+        }
+    }
+
+    /** The swimlanes: a lane per group, each instance a bar over the behavior's time. */
+    public static Scene lanes(Swimlanes s) {
+        double labelW = 200;
+        double plotW = 700;
+        double horizon = 1;
+        for (Swimlanes.Lane l : s.lanes()) {
+            for (Swimlanes.Bar b : l.bars()) {
+                double start = num(b.start(), 0);
+                double period = num(b.period(), 1);
+                double cycles = num(b.cycles(), Double.POSITIVE_INFINITY);
+                horizon = Math.max(horizon, Double.isInfinite(cycles) ? start + 2 * period : start + cycles * period);
+            }
+        }
+        int rows = s.lanes().stream().mapToInt(l -> l.bars().size()).sum();
+        double barH = 34;
+        double top = 60;
+        double h = top + rows * (barH + 8) + s.lanes().size() * 12 + 40 + s.islands().size() * 18;
+        Scene sc = new Scene(width((int) (labelW + plotW + 40), s.islands()), (int) h);
+        sc.add(new Scene.Text(20, 28, "behavior " + s.behavior() + (s.entry() >= 0 ? "  (as <main> entry " + s.entry()
+                + " runs it)" : ""), 15, -1, INK, true));
+        double scale = plotW / horizon;
+        double y = top;
+        for (double t = 0; t <= horizon + 1e-9; t += step(horizon)) {
+            double x = labelW + t * scale;
+            sc.add(new Scene.Line(x, top - 8, x, h - 30 - s.islands().size() * 18, LIGHT, 1, 0));
+            sc.add(new Scene.Text(x, top - 12, Numbers.format(Math.round(t * 100) / 100.0) + " s", 10, 0, GREY, false));
+        }
+        for (Swimlanes.Lane l : s.lanes()) {
+            double laneH = l.bars().size() * (barH + 8) + 4;
+            sc.add(new Scene.Rect(10, y - 2, labelW + plotW + 20, laneH, Scene.NONE, 0xcccccc, 1, null));
+            sc.add(new Scene.Text(20, y + 18, l.group(), 13, -1, INK, true));
+            sc.add(new Scene.Text(20, y + 34, l.modules().isEmpty() ? "(macro group)" : modules(l.modules()), 10, -1, GREY,
+                    false));
+            for (Swimlanes.Bar b : l.bars()) {
+                bar(sc, b, labelW, y + 2, barH, scale, plotW);
+                y += barH + 8;
+            }
+            y += 12;
+        }
+        islands(sc, s.islands(), h - s.islands().size() * 18 - 8);
+        return sc;
+    }
+
+    private static void bar(Scene sc, Swimlanes.Bar b, double x0, double y, double barH, double scale, double plotW) {
+        double start = num(b.start(), 0);
+        double period = num(b.period(), 1);
+        double cycles = num(b.cycles(), Double.POSITIVE_INFINITY);
+        double x = x0 + start * scale;
+        double w = Double.isInfinite(cycles) ? x0 + plotW - x : Math.max(4, cycles * period * scale);
+        boolean red = !b.overlaps().isEmpty();
+        int fill = red ? 0xf6c6c6 : b.conditions().isEmpty() ? 0xdce9f5 : 0xf3ead2;
+        sc.add(new Scene.Rect(x, y, w, barH, fill, red ? RED : b.mirrored() ? 0x7a3db8 : 0x4a6f94, red ? 2.5 : 1.2,
+                b.pos()));
+        if (period > 0 && !Double.isInfinite(period) && b.period() != null) {
+            for (double t = start + period; t < start + (Double.isInfinite(cycles) ? 1e9 : cycles * period) - 1e-9
+                    && x0 + t * scale < x0 + plotW; t += period) {
+                sc.add(new Scene.Line(x0 + t * scale, y + barH - 6, x0 + t * scale, y + barH, GREY, 1, 0));
+            }
+        }
+        StringBuilder label = new StringBuilder((b.mirrored() ? "!" : "") + b.automaton());
+        attr(label, "phase", b.phase());
+        attr(label, "offset", b.offset());
+        attr(label, "period", b.period());
+        attr(label, "start", b.start());
+        attr(label, "cycles", b.cycles());
+        sc.add(new Scene.Text(x + 6, y + 14, label.toString(), 11, -1, INK, false));
+        StringBuilder note = new StringBuilder();
+        if (b.mirrored()) {
+            note.append("mirrored (!)  ");
+        }
+        if (!b.conditions().isEmpty()) {
+            note.append("if ").append(String.join(" and ", b.conditions())).append("  ");
+        }
+        if (red) {
+            note.append("may drive module ").append(b.shared()).append(" twice (with instance ")
+                    .append(b.overlaps().get(0)).append(")");
+        }
+        if (note.length() > 0) {
+            sc.add(new Scene.Text(x + 6, y + 28, note.toString().trim(), 10, -1, red ? RED : 0x555555, red));
+        }
+        if (Double.isInfinite(cycles)) {
+            sc.add(new Scene.Text(x0 + plotW - 4, y + 28, "…", 12, 1, GREY, false));
+        }
+    }
+
+    private static void attr(StringBuilder s, String name, String value) {
+        if (value != null) {
+            s.append("  ").append(name).append(' ').append(value);
+        }
+    }
+
+    private static String modules(List<Integer> ids) {
+        String all = ids.size() + (ids.size() == 1 ? " module: " : " modules: ");
+        String list = ids.size() <= 5 ? ids.toString() : ids.subList(0, 4) + "…";
+        return all + list.replace("[", "").replace("]", "");
+    }
+
+    private static double step(double horizon) {
+        double raw = horizon / 8;
+        double p = Math.pow(10, Math.floor(Math.log10(raw)));
+        return raw <= p ? p : raw <= 2 * p ? 2 * p : raw <= 5 * p ? 5 * p : 10 * p;
+    }
+
+    private static double num(String text, double fallback) {
+        Double d = text == null ? null : Numbers.parsePlain(text);
+        return d == null ? fallback : d;
+    }
+
+    /** The automaton ring: each state an arc proportional to its duration, exits on the edges. */
+    public static Scene ring(Ring r) {
+        double cx = 300;
+        double cy = 290;
+        double r0 = 110;
+        double r1 = 170;
+        Scene sc = new Scene(width(600, r.islands()), (int) (600 + r.islands().size() * 18));
+        sc.add(new Scene.Text(20, 28, (r.table() ? "gait table " : "automaton ") + r.automaton(), 15, -1, INK, true));
+        for (Ring.Arc a : r.arcs()) {
+            sc.add(new Scene.Sector(cx, cy, r0, r1, a.from(), a.to(), PALETTE[a.index() % PALETTE.length], 0xffffff, a.pos()));
+            double[] p = Scene.onCircle(cx, cy, (r0 + r1) / 2, (a.from() + a.to()) / 2);
+            sc.add(new Scene.Text(p[0], p[1] - 2, a.state(), 13, 0, INK, true));
+            sc.add(new Scene.Text(p[0], p[1] + 14, "T = " + a.duration(), 11, 0, INK, false));
+            String angles = String.join(", ", a.angles());
+            sc.add(new Scene.Text(p[0], p[1] + 27, (angles.length() > 22 ? angles.substring(0, 21) + "…" : angles) + "°", 10, 0,
+                    0x444444, false));
+            double[] e0 = Scene.onCircle(cx, cy, r1 + 6, a.to());
+            double[] e1 = Scene.onCircle(cx, cy, r0 - 6, a.to());
+            sc.add(new Scene.Line(e0[0], e0[1], e1[0], e1[1], INK, 2, 0));
+            if (a.exit() != null) {
+                double[] q = Scene.onCircle(cx, cy, r1 + 26, a.to());
+                sc.add(new Scene.Text(q[0], q[1] + 4, "exit when " + a.exit(), 11, q[0] < cx - 5 ? 1 : q[0] > cx + 5 ? -1 : 0,
+                        RED, true));
+            }
+        }
+        sc.add(new Scene.Text(cx, cy + 24, "clockwise from the top", 10, 0, GREY, false));
+        double total = 0;
+        boolean known = true;
+        for (Ring.Arc a : r.arcs()) {
+            known &= !Double.isNaN(a.seconds());
+            total += Double.isNaN(a.seconds()) ? 0 : Math.max(0, a.seconds());
+        }
+        sc.add(new Scene.Text(cx, cy + 5, known ? "ΣT = " + Numbers.format(Math.round(total * 1000) / 1000.0) + " s" : "ΣT varies",
+                13, 0, GREY, false));
+        islands(sc, r.islands(), 560);
+        return sc;
+    }
+
+    /** The phase wheel: a tick per module at its phase delay, module numbers outside. */
+    public static Scene wheel(PhaseWheel w) {
+        double cx = 300;
+        double cy = 300;
+        double r = 170;
+        Scene sc = new Scene(width(600, w.islands()), (int) (620 + w.islands().size() * 18));
+        sc.add(new Scene.Text(20, 28, w.automaton() + " on " + w.group(), 15, -1, INK, true));
+        sc.add(new Scene.Text(20, 48, "phase " + Numbers.format(w.phase()) + ", offset " + Numbers.format(w.offset())
+                + ": module i lags by offset + i·phase cycles", 12, -1, GREY, false));
+        sc.add(new Scene.Sector(cx, cy, r - 1, r + 1, 0, 1, INK, Scene.NONE, null));
+        for (int k = 0; k < 4; k++) {
+            double[] p = Scene.onCircle(cx, cy, r - 22, k / 4.0);
+            sc.add(new Scene.Text(p[0], p[1] + 4, Numbers.format(k / 4.0), 10, 0, GREY, false));
+        }
+        int n = w.ticks().size();
+        Map<Long, List<PhaseWheel.Tick>> byDelay = new LinkedHashMap<>();
+        for (PhaseWheel.Tick t : w.ticks()) {
+            double[] a = Scene.onCircle(cx, cy, r - 10, t.delay());
+            double[] b = Scene.onCircle(cx, cy, r + 14, t.delay());
+            int c = t.position() == 0 ? RED : PALETTE[4];
+            sc.add(new Scene.Line(a[0], a[1], b[0], b[1], c, t.position() == 0 ? 3 : 2, 0));
+            byDelay.computeIfAbsent(Math.round(t.delay() * 1e6), k -> new ArrayList<>()).add(t);
+        }
+        // modules at one delay share one label; with many delays only every few are named
+        int every = Math.max(1, (int) Math.ceil(byDelay.size() / 36.0));
+        int k = 0;
+        for (List<PhaseWheel.Tick> same : byDelay.values()) {
+            PhaseWheel.Tick t = same.get(0);
+            if (k++ % every != 0 && t.position() != 0) {
+                continue;
+            }
+            String ids = same.size() <= 3 ? String.join(", ", same.stream().map(u -> Integer.toString(u.module())).toList())
+                    : same.get(0).module() + ", " + same.get(1).module() + " … " + same.get(same.size() - 1).module()
+                    + " (" + same.size() + ")";
+            double[] l = Scene.onCircle(cx, cy, r + 34, t.delay());
+            int anchor = l[0] < cx - 5 ? 1 : l[0] > cx + 5 ? -1 : 0;
+            sc.add(new Scene.Text(l[0], l[1] + 4, ids, 11, anchor, t.position() == 0 ? RED : PALETTE[4], t.position() == 0));
+        }
+        if (n > 1 && Math.abs(w.ticks().get(1).delay() - w.ticks().get(0).delay()) > 1e-9) {
+            double[] h = Scene.onCircle(cx, cy, r - 40, w.ticks().get(1).delay());
+            double[] z = Scene.onCircle(cx, cy, r - 40, w.ticks().get(0).delay());
+            sc.add(new Scene.Line(cx, cy, z[0], z[1], GREY, 1, 4));
+            sc.add(new Scene.Line(cx, cy, h[0], h[1], RED, 2, 0));
+            sc.add(new Scene.Text(h[0], h[1] - 6, "phase", 11, 0, RED, true));
+        }
+        islands(sc, w.islands(), 600);
+        return sc;
+    }
+
+    /** The gait diagram: a row per module, time to the right, coloured by state (Fig. 4 of the paper). */
+    public static Scene gait(GaitDiagram g) {
+        int n = g.moduleIds().length;
+        double rowH = Math.max(1, Math.min(16, 480.0 / Math.max(1, n)));
+        double left = 70;
+        double plotW = 760;
+        double top = 50;
+        Map<String, Integer> colors = new LinkedHashMap<>();
+        List<String> names = new ArrayList<>();
+        for (int e = 0; e < g.legend().size(); e++) {
+            for (int i = 0; i < g.legend().get(e).size(); i++) {
+                GaitDiagram.Instance in = g.legend().get(e).get(i);
+                for (int s = 0; s < in.states().size(); s++) {
+                    String key = e + "/" + i + "/" + s;
+                    String state = in.states().get(s);
+                    String name = state.startsWith(in.automaton() + "[") ? state : in.automaton() + "." + state;
+                    int k = names.indexOf(name);
+                    if (k < 0) {
+                        names.add(name);
+                        k = names.size() - 1;
+                    }
+                    colors.put(key, k);
+                }
+            }
+        }
+        int legendRows = Math.min(names.size(), 24);
+        double h = top + n * rowH + 50 + ((legendRows + 3) / 4) * 18 + 20;
+        Scene sc = new Scene((int) (left + plotW + 30), (int) h);
+        double seconds = g.ticks() * g.dt();
+        sc.add(new Scene.Text(20, 28, "gait: module × time, coloured by state (" + Numbers.format(Math.round((g.ticks() - 1)
+                * g.dt() * 1000) / 1000.0) + " s, tick "
+                + Numbers.format(g.dt()) + " s)", 15, -1, INK, true));
+        sc.add(new Scene.Rect(left, top, plotW, n * rowH, LIGHT, Scene.NONE, 0, null));
+        double scale = plotW / g.ticks();
+        for (GaitDiagram.Segment s : g.segments()) {
+            int k = colors.getOrDefault(s.entry() + "/" + s.instance() + "/" + s.state(), 0);
+            sc.add(new Scene.Rect(left + s.from() * scale, top + s.row() * rowH, (s.to() - s.from()) * scale, rowH,
+                    PALETTE[k % PALETTE.length], Scene.NONE, 0, null));
+        }
+        int labelEvery = (int) Math.ceil(12 / rowH);
+        for (int m = 0; m < n; m += labelEvery) {
+            sc.add(new Scene.Text(left - 6, top + m * rowH + Math.min(rowH, 12) - 1, Integer.toString(g.moduleIds()[m]),
+                    Math.min(11, Math.max(8, rowH)), 1, INK, false));
+        }
+        double axis = top + n * rowH;
+        for (double t = 0; t <= seconds + 1e-9; t += step(seconds)) {
+            double x = left + t / g.dt() * scale;
+            sc.add(new Scene.Line(x, axis, x, axis + 5, INK, 1, 0));
+            sc.add(new Scene.Text(x, axis + 18, String.format(Locale.ROOT, "%s s", Numbers.format(Math.round(t * 100) / 100.0)),
+                    10, 0, INK, false));
+        }
+        sc.add(new Scene.Text(12, top + 10, "module", 10, -1, GREY, false));
+        double ly = axis + 44;
+        for (int i = 0; i < legendRows; i++) {
+            double x = left + (i % 4) * 190;
+            double y = ly + (i / 4) * 18;
+            sc.add(new Scene.Rect(x, y - 10, 12, 12, PALETTE[i % PALETTE.length], Scene.NONE, 0, null));
+            sc.add(new Scene.Text(x + 18, y, names.get(i), 11, -1, INK, false));
+        }
+        if (names.size() > legendRows) {
+            sc.add(new Scene.Text(left, ly + ((legendRows + 3) / 4) * 18, "… and " + (names.size() - legendRows)
+                    + " more states (colours repeat)", 11, -1, GREY, false));
+        }
+        return sc;
+    }
+
+    /** At least {@code min}, and wide enough for every island's line. */
+    private static int width(int min, List<TextIsland> islands) {
+        double w = min;
+        for (TextIsland t : islands) {
+            w = Math.max(w, 50 + width(t.pos() + ": " + t.text(), 11));
+        }
+        return (int) Math.ceil(w);
+    }
+
+    private static void islands(Scene sc, List<TextIsland> islands, double y) {
+        for (TextIsland t : islands) {
+            sc.add(new Scene.Rect(16, y - 12, 10, 14, 0xfff3b0, GREY, 1, t.pos()));
+            sc.add(new Scene.Text(32, y, t.pos() + ": " + t.text(), 11, -1, 0x555555, false));
+            y += 18;
+        }
+    }
+}
