@@ -10,6 +10,7 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import org.parpe.cli.Inputs;
 import org.parpe.cli.OutputFile;
+import org.parpe.core.io.CsvCells;
 import org.parpe.cli.UsageException;
 import org.parpe.core.xml.InputFiles;
 import org.parpe.sim.sweep.SweepCsv;
@@ -55,12 +56,16 @@ public final class MergeCommand implements Callable<Integer> {
                 err.println(e.getMessage().contains(": error: ") ? e.getMessage() : "parpe: " + e.getMessage());
                 return 1;
             }
-            String text = String.join("\n", merged) + "\n";
-            OutputFile target = OutputFile.ofOptional("--out", out, files);
+            // foreign cells are copied: a shard may hold text a spreadsheet would run as a formula
+            String text = String.join("\n", merged.stream().map(CsvCells::safeLine).toList()) + "\n";
+            OutputFile target = OutputFile.ofOptional(OutputFile.plan(files), "--out", out);
             if (target == null) {
                 PrintWriter o = spec.commandLine().getOut();
                 o.print(text);
-                o.flush();
+                if (o.checkError()) {
+                    err.println("parpe: cannot write to standard output: it is closed or its pipe is broken");
+                    return 2;
+                }
             } else {
                 target.write(text);
             }

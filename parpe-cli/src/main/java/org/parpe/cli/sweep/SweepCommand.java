@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.parpe.cli.OutputFile;
+import org.parpe.core.io.OutputPlan;
 import org.parpe.cli.UsageException;
 import org.parpe.core.model.Numbers;
 import org.parpe.sim.sweep.Axis;
@@ -102,8 +103,9 @@ public final class SweepCommand implements Callable<Integer> {
         int[] range = share == null ? new int[] {0, total} : SweepSpec.shard(total, share[0], share[1]);
         List<Path> inputs = new ArrayList<>(List.of(file));
         options.addInputs(inputs);
-        OutputFile csv = OutputFile.ofOptional("--out", out, inputs);
-        OutputFile plotTarget = plotFile(inputs, share != null);
+        OutputPlan plan = OutputFile.plan(inputs);
+        OutputFile csv = OutputFile.ofOptional(plan, "--out", out);
+        OutputFile plotTarget = plotFile(plan, share != null);
         if (cancel.cancelled()) {
             return 0;
         }
@@ -124,6 +126,8 @@ public final class SweepCommand implements Callable<Integer> {
     }
 
     /** Runs the sweep's share {@code range}, writing the header and each row as it comes. */
+    private static final String STDOUT_CLOSED = "it is closed or its pipe is broken";
+
     private SweepResult write(Sweep sweep, int[] range, OutputFile csv, PrintWriter stdout, PrintWriter err,
                               Cancellation cancel) throws UsageException {
         int total = sweep.spec().size();
@@ -137,6 +141,9 @@ public final class SweepCommand implements Callable<Integer> {
                 public void row(SweepRow row) {
                     try {
                         target.write(SweepCsv.line(row, total) + "\n");
+                        if (w == null && stdout.checkError()) {
+                            throw new IOException(STDOUT_CLOSED);
+                        }
                     } catch (IOException e) {
                         throw new java.io.UncheckedIOException(e);
                     }
@@ -145,8 +152,12 @@ public final class SweepCommand implements Callable<Integer> {
             result = sweep.run(range[0], range[1], jobs, bar, cancel);
             bar.clear();
             target.flush();
+            if (w == null && stdout.checkError()) {
+                throw new IOException(STDOUT_CLOSED);
+            }
         } catch (java.io.UncheckedIOException | IOException e) {
-            throw new UsageException("cannot write --out file '" + out + "': " + e.getMessage());
+            String why = e instanceof java.io.UncheckedIOException u ? u.getCause().getMessage() : e.getMessage();
+            throw new UsageException(csv == null ? "cannot write to standard output: " + why : why);
         }
         return result;
     }
@@ -186,14 +197,14 @@ public final class SweepCommand implements Callable<Integer> {
         return new int[] {k, n};
     }
 
-    private OutputFile plotFile(List<Path> inputs, boolean sharded) throws UsageException {
+    private OutputFile plotFile(OutputPlan plan, boolean sharded) throws UsageException {
         if (plot != null) {
-            return OutputFile.of("--plot", plot, inputs);
+            return OutputFile.of(plan, "--plot", plot);
         }
         if (sharded || out.equals("-")) {
             return null;
         }
         String base = out.toLowerCase(Locale.ROOT).endsWith(".csv") ? out.substring(0, out.length() - 4) : out;
-        return OutputFile.of("--plot", base + ".png", inputs);
+        return OutputFile.of(plan, "--plot", base + ".png");
     }
 }
