@@ -103,6 +103,11 @@ public final class OutputPlan {
         return o;
     }
 
+    /** Whether {@code a} and {@code b} name one file (links followed, hard links and other spellings included). */
+    public static boolean sameFile(Path a, Path b) {
+        return identity(a).equals(identity(b));
+    }
+
     /**
      * What a path is as a file: the file system's key of an existing file (equal for links and
      * hard links to one file), otherwise the real folder and the name.
