@@ -4,16 +4,10 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
-import java.io.ByteArrayOutputStream;
-import java.io.PipedInputStream;
-import java.io.PipedOutputStream;
-import java.io.PrintWriter;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.util.List;
-import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -23,7 +17,6 @@ import org.parpe.cli.Cli;
 import org.parpe.serial.emu.EmulatorOptions;
 import org.parpe.serial.link.PtyPair;
 import org.parpe.serial.servo.ServoModel;
-import picocli.CommandLine;
 
 /**
  * How {@code calibrate} and {@code scan} write a hardware profile (issue 18, items 1, 3 and 7):
@@ -41,25 +34,12 @@ class ProfileOutputTest {
         assumeTrue(PtyPair.available(), "socat is not installed (./test-all installs it)");
     }
 
-    /** Runs calibrate on {@code profile} with servo 1 posed at {@code posed}°; returns the exit code and the log. */
+    /** Runs calibrate with servo 1 posed at {@code posed}°; returns the exit code and the log. */
     private static String[] calibrate(EmulatedServos s, double posed, String... args) throws Exception {
-        PipedOutputStream keys = new PipedOutputStream();
-        CalibrateCommand cmd = new CalibrateCommand();
-        cmd.input = new PipedInputStream(keys);
-        ByteArrayOutputStream err = new ByteArrayOutputStream();
-        CommandLine cl = new CommandLine(cmd);
-        cl.setErr(new PrintWriter(err, true, StandardCharsets.UTF_8));
-        CompletableFuture<Integer> code = CompletableFuture.supplyAsync(() -> cl.execute(args));
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-        while (!s.emulator.isLimp(1)) {
-            assertTrue(System.nanoTime() < deadline, "the servo never went limp: " + err);
-            Thread.sleep(10);
-        }
+        CalibrateSession calibrate = new CalibrateSession(s, new int[] {1}, args);
         assertTrue(s.emulator.backDrive(1, posed));
-        keys.write('\n');
-        keys.flush();
-        int c = code.get(20, TimeUnit.SECONDS);
-        return new String[] {Integer.toString(c), err.toString(StandardCharsets.UTF_8)};
+        int code = calibrate.enter();
+        return new String[] {Integer.toString(code), calibrate.log()};
     }
 
     @Test
