@@ -98,4 +98,22 @@ class DiskChangeGuiTest {
         assertTrue(ide.files().save(), "a file saved since is not asked about");
         assertEquals(2, asked.size());
     }
+
+    @Test
+    void theHardwareDialogNeverWritesItsProfileOverTheOpenScript() throws Exception {
+        Path script = openScript();
+        String text = Files.readString(script);
+        Path link = Files.createSymbolicLink(dir.resolve("link.xml"), script);
+        HardwareDialog d = HardwareDialog.open(ide);
+        try {
+            for (Path over : List.of(script, link)) {
+                d.saveProfile(over);
+                Gui.settle();
+                assertTrue(d.message().contains("it is the script open in the editor"), d.message());
+            }
+        } finally {
+            d.shell().dispose();
+        }
+        assertEquals(text, Files.readString(script));
+    }
 }
