@@ -97,8 +97,8 @@ public final class AtomicFiles {
         Path real = resolve(target);
         checkReplaceable(real);
         Path dir = real.getParent();
-        if (dir == null) {
-            throw new IOException("it has no folder");
+        if (dir == null || !Files.isDirectory(dir)) {
+            throw new IOException("directory " + dir + " does not exist");
         }
         for (int attempt = 0; ; attempt++) {
             byte[] r = new byte[8];
