@@ -133,7 +133,8 @@ public final class SweepCommand implements Callable<Integer> {
         int total = sweep.spec().size();
         int jobs = options.jobs();
         SweepResult result;
-        try (Writer w = csv == null ? null : csv.openWriter()) {
+        Writer w = csv == null ? null : csv.openWriter();
+        try {
             Writer target = w != null ? w : stdout;
             target.write(SweepCsv.header(sweep.spec().axes()) + "\n");
             ProgressBar bar = new ProgressBar(err, new SweepListener() {
@@ -155,9 +156,14 @@ public final class SweepCommand implements Callable<Integer> {
             if (w == null && stdout.checkError()) {
                 throw new IOException(STDOUT_CLOSED);
             }
+            if (w != null) {
+                w.close(); // puts the file in place, also after Ctrl-C (with the rows finished in order)
+            }
         } catch (java.io.UncheckedIOException | IOException e) {
             String why = e instanceof java.io.UncheckedIOException u ? u.getCause().getMessage() : e.getMessage();
             throw new UsageException(csv == null ? "cannot write to standard output: " + why : why);
+        } finally {
+            OutputFile.abort(w); // after a failure (a full disk, or of PARPE itself) the old file stays, no temporary one
         }
         return result;
     }
