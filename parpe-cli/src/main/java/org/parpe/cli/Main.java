@@ -8,6 +8,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import org.parpe.cli.bench.BenchCommand;
 import org.parpe.core.expr.Names;
+import org.parpe.core.io.AtomicFiles;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
@@ -102,8 +103,8 @@ public final class Main implements Runnable {
         ex.printStackTrace(new PrintWriter(trace));
         String where;
         try {
-            Path f = Files.createTempFile("parpe-crash-", ".txt");
-            Files.writeString(f, "PARPE 0.1.0 internal error\n" + trace);
+            Path f = Files.createTempFile("parpe-crash-", ".txt"); // a new name of its own, then the output rules
+            AtomicFiles.write(f, "PARPE 0.1.0 internal error\n" + trace);
             where = f.toString();
         } catch (IOException io) {
             where = "(could not write a crash file: " + io.getMessage() + ")";

@@ -15,6 +15,7 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import org.parpe.cli.hw.HardwareOptions;
 import org.parpe.cli.sim.SimOptions;
+import org.parpe.core.io.OutputPlan;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
 import org.parpe.core.model.Program;
@@ -146,6 +147,8 @@ final class RunCommand implements Callable<Integer> {
             throw new UsageException(e.getCause().getMessage());
         } catch (IOException e) {
             throw new UsageException(e.getMessage());
+        } finally {
+            OutputFile.abort(out); // after a failure of PARPE itself no temporary trace file is left; after close, nothing
         }
         if (outcome.status() == RunOutcome.Status.STOPPED) {
             err.println("parpe: stopped at t=" + String.format(Locale.ROOT, "%.3f", outcome.time()) + " s");
@@ -177,8 +180,10 @@ final class RunCommand implements Callable<Integer> {
             inputs.add(stimulus);
         }
         sim.addInputs(inputs);
-        traceFile = OutputFile.ofOptional("--trace", trace, inputs);
-        sim.checkOutputs(inputs);
+        hardware.addInputs(inputs);
+        OutputPlan plan = OutputFile.plan(inputs);
+        traceFile = OutputFile.ofOptional(plan, "--trace", trace);
+        sim.checkOutputs(plan);
     }
 
     private Writer traceWriter() throws UsageException {

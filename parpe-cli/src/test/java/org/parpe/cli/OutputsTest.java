@@ -77,7 +77,7 @@ class OutputsTest {
     void aFailedWriteLeavesTheOldFileAndNoTemporaryFile() throws Exception {
         Path target = dir.resolve("m.json");
         Files.writeString(target, "old");
-        OutputFile f = OutputFile.of("--metrics", target.toString(), List.of());
+        OutputFile f = OutputFile.of(OutputFile.plan(List.of()), "--metrics", target.toString());
         UsageException e = assertThrows(UsageException.class, () -> f.write(out -> {
             out.write("half".getBytes());
             throw new IOException("No space left on device");

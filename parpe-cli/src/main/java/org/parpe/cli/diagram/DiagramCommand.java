@@ -112,7 +112,7 @@ public final class DiagramCommand implements Callable<Integer> {
         if (refused != 0) {
             return refused;
         }
-        OutputFile target = OutputFile.of("--out", out, r.files());
+        OutputFile target = OutputFile.of(OutputFile.plan(r.files()), "--out", out);
         Scene scene;
         try {
             scene = scene(r.program());

@@ -58,14 +58,16 @@ public final class CalibrateCommand implements Callable<Integer> {
     }
 
     private int calibrate(PrintWriter err) throws UsageException, IOException {
-        HardwareProfile profile;
+        HardwareProfile saved;
         try {
-            profile = Profiles.load(hardware, port);
+            saved = Profiles.load(hardware, null);
         } catch (TargetException e) {
             StringBuilder b = new StringBuilder(e.getMessage() + ":");
             e.diagnostics().forEach(d -> b.append('\n').append(d.format()));
             throw new UsageException(b.toString());
         }
+        // --port is for this session: the profile keeps the port it names
+        HardwareProfile profile = port == null ? saved : saved.withPort(port);
         if (profile.port() == null) {
             throw new UsageException("no serial port: give --port or a port attribute in " + hardware);
         }
@@ -77,14 +79,14 @@ public final class CalibrateCommand implements Callable<Integer> {
             throw new UsageException(e.getMessage());
         }
         try {
-            return calibrate(profile, new PoseRecorder(bus, profile.servos()), err);
+            return calibrate(profile, saved, new PoseRecorder(bus, profile.servos()), err);
         } finally {
             bus.close();
         }
     }
 
-    private int calibrate(HardwareProfile profile, PoseRecorder servos, PrintWriter err) throws UsageException,
-            IOException {
+    private int calibrate(HardwareProfile profile, HardwareProfile saved, PoseRecorder servos, PrintWriter err)
+            throws UsageException, IOException {
         List<Integer> missing = servos.missing();
         if (!missing.isEmpty()) {
             throw new UsageException("the servos of modules " + missing + " do not answer on " + profile.port() + " ("
@@ -110,17 +112,41 @@ public final class CalibrateCommand implements Callable<Integer> {
             servos.end();
         }
         List<ServoMapping> calibrated = new ArrayList<>();
+        List<String> unreachable = new ArrayList<>();
         for (int i = 0; i < servo.length; i++) {
             ServoMapping m = profile.servos().get(i);
             ServoMapping c = m.withZero(Math.round(servo[i] * 100) / 100.0);
+            if (c.reachable().min() > c.reachable().max()) {
+                unreachable.add(String.format(Locale.ROOT, "calibrate: module %d cannot reach %s..%s° with zero %.2f°:"
+                        + " pose it again", m.module(), num(m.min()), num(m.max()), c.zero()));
+            }
             calibrated.add(c.reachable());
-            err.println(String.format(Locale.ROOT, "calibrate: module %d (servo %d): zero %.2f° (was %.2f°)%s",
-                    m.module(), m.servo(), c.zero(), m.zero(), c.reachable().equals(c) ? ""
-                            : String.format(Locale.ROOT, "; limits narrowed to %.2f..%.2f° to stay in the servo's range",
-                            c.reachable().min(), c.reachable().max())));
         }
-        ProfileWriter.write(profile.withServos(calibrated), hardware, "calibrated by parpe calibrate");
+        if (!unreachable.isEmpty()) {
+            // checked before anything is written: a profile with min > max is one nothing can load
+            unreachable.forEach(err::println);
+            err.println("calibrate: " + hardware + " unchanged");
+            return 1;
+        }
+        for (int i = 0; i < servo.length; i++) {
+            ServoMapping m = profile.servos().get(i);
+            ServoMapping c = calibrated.get(i);
+            err.println(String.format(Locale.ROOT, "calibrate: module %d (servo %d): zero %.2f° (was %.2f°)%s",
+                    m.module(), m.servo(), c.zero(), m.zero(), c.min() == m.min() && c.max() == m.max() ? ""
+                            : String.format(Locale.ROOT, "; limits narrowed to %.2f..%.2f° to stay in the servo's range",
+                            c.min(), c.max())));
+        }
+        try {
+            ProfileWriter.write(saved.withServos(calibrated), hardware, "calibrated by parpe calibrate");
+        } catch (IOException e) {
+            throw new UsageException("cannot write --hardware file '" + hardware + "': " + e.getMessage()
+                    + "; it is unchanged");
+        }
         err.println("calibrate: zero offsets written to " + hardware + "; the servos hold where they are");
         return 0;
+    }
+
+    private static String num(double d) {
+        return d == Math.rint(d) ? Long.toString((long) d) : String.format(Locale.ROOT, "%.2f", d);
     }
 }

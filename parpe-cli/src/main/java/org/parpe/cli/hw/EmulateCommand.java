@@ -1,19 +1,20 @@
 package org.parpe.cli.hw;
 
 import java.io.BufferedReader;
-import java.io.BufferedWriter;
 import java.io.IOException;
 import java.io.InputStreamReader;
 import java.io.PrintWriter;
+import java.io.Writer;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.function.Function;
+import org.parpe.cli.OutputFile;
 import org.parpe.cli.UsageException;
 import org.parpe.serial.emu.BusEmulator;
 import org.parpe.serial.emu.EmulatorListener;
@@ -233,19 +234,21 @@ public final class EmulateCommand implements Callable<Integer> {
 
     /** The CSV log of received setpoints. */
     static final class SetpointLog {
-        private final BufferedWriter out;
+        private final Writer out;
         private final StringBuilder row = new StringBuilder();
 
-        private SetpointLog(BufferedWriter out) {
+        private SetpointLog(Writer out) {
             this.out = out;
         }
 
+        /** Opens the log through the output rules (docs/cli.md): it replaces {@code file} when the emulator stops. */
         static SetpointLog open(Path file, int[] ids) throws UsageException {
             if (file == null) {
                 return new SetpointLog(null);
             }
+            OutputFile target = OutputFile.of(OutputFile.plan(List.of()), "--log", file.toString());
+            Writer w = target.openWriter();
             try {
-                BufferedWriter w = Files.newBufferedWriter(file, StandardCharsets.UTF_8);
                 StringBuilder h = new StringBuilder("seq");
                 for (int id : ids) {
                     h.append(",m").append(id);
@@ -253,7 +256,8 @@ public final class EmulateCommand implements Callable<Integer> {
                 w.write(h.append('\n').toString());
                 return new SetpointLog(w);
             } catch (IOException e) {
-                throw new UsageException("cannot write --log file '" + file + "': " + e.getMessage());
+                OutputFile.abort(w);
+                throw new UsageException(e.getMessage());
             }
         }
 
@@ -282,7 +286,9 @@ public final class EmulateCommand implements Callable<Integer> {
                     out.close();
                 }
             } catch (IOException e) {
-                // Nothing more can be done about a log that cannot be closed.
+                // Nothing more can be done about a log that cannot be closed: what was there stays.
+            } finally {
+                OutputFile.abort(out);
             }
         }
     }

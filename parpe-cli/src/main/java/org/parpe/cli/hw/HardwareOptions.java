@@ -2,6 +2,7 @@ package org.parpe.cli.hw;
 
 import java.io.PrintStream;
 import java.nio.file.Path;
+import java.util.List;
 import org.parpe.cli.UsageException;
 import org.parpe.core.run.Run;
 import org.parpe.core.run.SensorSource;
@@ -39,6 +40,13 @@ public class HardwareOptions {
     BusOptions bus = new BusOptions();
 
     /** Attaches the bus to {@code run} when {@code --port} was given (after the simulator, for {@code --diverge}). */
+    /** Adds the hardware profile, a file the run reads, to {@code inputs}. */
+    public void addInputs(List<Path> inputs) {
+        if (hardware != null) {
+            inputs.add(hardware);
+        }
+    }
+
     public void configure(Run.Builder run, PrintStream err) throws UsageException, TargetException {
         if (hardware != null) {
             configureProfile(run, err);

@@ -140,7 +140,14 @@ public final class RecordCommand implements Callable<Integer> {
                         + "' is a reserved word of PARSL (a function, constant or keyword)");
             }
         }
-        outFile = OutputFile.of("--out", out.toString(), source.script == null ? List.of() : List.of(source.script));
+        List<Path> inputs = new java.util.ArrayList<>();
+        if (source.script != null) {
+            inputs.add(source.script);
+        }
+        if (hardware != null) {
+            inputs.add(hardware);
+        }
+        outFile = OutputFile.of(OutputFile.plan(inputs), "--out", out.toString());
     }
 
     private int record(PrintWriter err) throws UsageException, IOException, InterruptedException {

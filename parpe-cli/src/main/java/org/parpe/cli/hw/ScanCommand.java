@@ -2,12 +2,13 @@ package org.parpe.cli.hw;
 
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import org.parpe.cli.OutputFile;
 import org.parpe.cli.UsageException;
+import org.parpe.core.io.OutputPlan;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.ServoProtocol;
 import org.parpe.serial.servo.host.ServoScanner;
@@ -65,9 +66,9 @@ public final class ScanCommand implements Callable<Integer> {
     private int scan(PrintWriter stdout, PrintWriter err) throws UsageException {
         List<ServoProtocol> protocols = protocols();
         int[] wanted = ModuleList.sorted(ModuleList.parse(ids, "--ids"));
-        if (Files.exists(out) && !force) {
-            throw new UsageException("'" + out + "' exists; choose another --out or add --force");
-        }
+        // checked before scanning; --force replaces a regular file only, never a device, FIFO or link to nothing
+        OutputFile.of(OutputFile.plan(List.of()), "--out", out.toString(), force ? OutputPlan.Existing.REPLACE
+                : OutputPlan.Existing.KEEP, "choose another --out or add --force");
         ServoScanner.Result r;
         try {
             r = ServoScanner.scan(port, protocols, baud, wanted, (p, rate) -> err.println(String.format(Locale.ROOT,
@@ -114,7 +115,7 @@ public final class ScanCommand implements Callable<Integer> {
             ProfileWriter.write(profile, out, "written by parpe scan: one module per servo, in ID order; set module, "
                     + "direction and limits, then run parpe calibrate");
         } catch (IOException e) {
-            throw new UsageException("cannot write '" + out + "': " + e.getMessage());
+            throw new UsageException("cannot write --out file '" + out + "': " + e.getMessage());
         }
         err.println("scan: starter profile written to " + out + " (modules 0.." + (servos - 1)
                 + "); next: parpe calibrate --hardware " + out);

@@ -6,6 +6,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import org.parpe.cli.OutputFile;
+import org.parpe.core.io.OutputPlan;
 import org.parpe.cli.UsageException;
 import org.parpe.core.run.Run;
 import org.parpe.core.run.RunOutcome;
@@ -95,9 +96,9 @@ public class SimOptions {
     }
 
     /** Checks the {@code --metrics} and {@code --plot} targets before the run starts. */
-    public void checkOutputs(List<Path> inputs) throws UsageException {
-        metricsFile = OutputFile.ofOptional("--metrics", metrics, inputs);
-        plotFile = plot == null ? null : OutputFile.of("--plot", plot.toString(), inputs);
+    public void checkOutputs(OutputPlan plan) throws UsageException {
+        metricsFile = OutputFile.ofOptional(plan, "--metrics", metrics);
+        plotFile = plot == null ? null : OutputFile.of(plan, "--plot", plot.toString());
     }
 
     /** {@code code}, or 2 (a usage or I/O error) if writing the metrics or the plot failed. */

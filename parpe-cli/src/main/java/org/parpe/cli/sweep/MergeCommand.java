@@ -15,6 +15,8 @@ import java.util.stream.Collectors;
 import java.util.stream.Stream;
 import org.parpe.cli.Inputs;
 import org.parpe.cli.OutputFile;
+import org.parpe.core.io.CsvCells;
+import org.parpe.core.io.OutputPlan;
 import org.parpe.cli.UsageException;
 import org.parpe.core.xml.InputFiles;
 import org.parpe.sim.sweep.Axis;
@@ -125,8 +127,9 @@ public final class MergeCommand implements Callable<Integer> {
                 shards.put(f.toString(), InputFiles.readText(f).lines().toList());
             }
             Objective goal = SimSweepOptions.objective(objective);
-            OutputFile target = OutputFile.ofOptional("--out", out, files);
-            OutputFile png = plot == null ? null : OutputFile.of("--plot", plot, files);
+            OutputPlan plan = OutputFile.plan(files);
+            OutputFile target = OutputFile.ofOptional(plan, "--out", out);
+            OutputFile png = plot == null ? null : OutputFile.of(plan, "--plot", plot);
             List<String> merged;
             SweepResult result;
             try {
@@ -139,11 +142,15 @@ public final class MergeCommand implements Callable<Integer> {
                 err.println(e.getMessage().contains(": error: ") ? e.getMessage() : "parpe: " + e.getMessage());
                 return 1;
             }
-            String text = String.join("\n", merged) + "\n";
+            // foreign cells are copied: a shard may hold text a spreadsheet would run as a formula
+            String text = String.join("\n", merged.stream().map(CsvCells::safeLine).toList()) + "\n";
             if (target == null) {
                 PrintWriter o = spec.commandLine().getOut();
                 o.print(text);
-                o.flush();
+                if (o.checkError()) {
+                    err.println("parpe: cannot write to standard output: it is closed or its pipe is broken");
+                    return 2;
+                }
             } else {
                 target.write(text);
             }

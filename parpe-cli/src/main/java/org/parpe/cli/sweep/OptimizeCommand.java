@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.parpe.cli.OutputFile;
+import org.parpe.core.io.OutputPlan;
 import org.parpe.cli.UsageException;
 import org.parpe.core.model.Numbers;
 import org.parpe.sim.sweep.Cancellation;
@@ -60,6 +61,9 @@ public final class OptimizeCommand implements Callable<Integer> {
             + " beside FILE; never FILE itself).")
     String out;
 
+    @Option(names = "--force", description = "Replace an existing FILE-optimised.xml (the default --out).")
+    boolean force;
+
     @Option(names = "--plot", paramLabel = "FILE.png", description = "The convergence plot (default: --out with -convergence.png).")
     String plot;
 
@@ -89,9 +93,12 @@ public final class OptimizeCommand implements Callable<Integer> {
         List<Path> inputs = new ArrayList<>(List.of(file));
         options.addInputs(inputs);
         String script = out != null ? out : sibling(file, "-optimised.xml");
-        OutputFile xml = OutputFile.of("--out", script, inputs);
+        OutputPlan plan = OutputFile.plan(inputs);
+        // a name PARPE chose replaces nothing unless the user says so: it may be a hand-edited earlier result
+        OutputFile xml = OutputFile.of(plan, "--out", script, out != null || force ? OutputPlan.Existing.REPLACE
+                : OutputPlan.Existing.KEEP, "name the file with --out, or add --force to replace it");
         String base = script.toLowerCase(Locale.ROOT).endsWith(".xml") ? script.substring(0, script.length() - 4) : script;
-        OutputFile png = OutputFile.of("--plot", plot != null ? plot : base + "-convergence.png", inputs);
+        OutputFile png = OutputFile.of(plan, "--plot", plot != null ? plot : base + "-convergence.png");
         ProgressBar bar = new ProgressBar(err, SweepListener.NONE);
         OptimizationResult result = optimizer.run(options.jobs(), bar, cancel);
         bar.clear();

@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.parpe.cli.OutputFile;
+import org.parpe.core.io.OutputPlan;
 import org.parpe.cli.UsageException;
 import org.parpe.core.model.Numbers;
 import org.parpe.sim.sweep.Axis;
@@ -102,8 +103,9 @@ public final class SweepCommand implements Callable<Integer> {
         int[] range = share == null ? new int[] {0, total} : SweepSpec.shard(total, share[0], share[1]);
         List<Path> inputs = new ArrayList<>(List.of(file));
         options.addInputs(inputs);
-        OutputFile csv = OutputFile.ofOptional("--out", out, inputs);
-        OutputFile plotTarget = plotFile(inputs, share != null);
+        OutputPlan plan = OutputFile.plan(inputs);
+        OutputFile csv = OutputFile.ofOptional(plan, "--out", out);
+        OutputFile plotTarget = plotFile(plan, share != null);
         if (cancel.cancelled()) {
             return 0;
         }
@@ -123,6 +125,8 @@ public final class SweepCommand implements Callable<Integer> {
         return 0;
     }
 
+    private static final String STDOUT_CLOSED = "it is closed or its pipe is broken";
+
     /**
      * Runs the sweep's share {@code range}, writing the header and each row as it comes; a
      * shard ({@code share}) is framed and written through a {@link ShardFile}.
@@ -132,12 +136,15 @@ public final class SweepCommand implements Callable<Integer> {
         int total = sweep.spec().size();
         ShardFile shardFile = share != null && csv != null ? ShardFile.of(out) : null;
         SweepResult result;
-        try (Writer w = shardFile != null ? shardFile.open() : csv != null ? csv.openWriter() : null) {
+        Writer w = null;
+        try {
+            w = shardFile != null ? shardFile.open() : csv != null ? csv.openWriter() : null;
             Writer target = w != null ? w : stdout;
             if (share != null) {
                 target.write(SweepCsv.shardStart(share[0], share[1], range[0], range[1], total) + "\n");
             }
             target.write(SweepCsv.header(sweep.spec().axes()) + "\n");
+            final Writer file = w;
             ProgressBar bar = new ProgressBar(err, new SweepListener() {
                 @Override
                 public void row(SweepRow row) {
@@ -145,6 +152,9 @@ public final class SweepCommand implements Callable<Integer> {
                         target.write(SweepCsv.line(row, total) + "\n");
                         if (share != null) {
                             target.flush(); // each finished row reaches the file: a killed task keeps it
+                        }
+                        if (file == null && stdout.checkError()) {
+                            throw new IOException(STDOUT_CLOSED);
                         }
                     } catch (IOException e) {
                         throw new java.io.UncheckedIOException(e);
@@ -157,8 +167,18 @@ public final class SweepCommand implements Callable<Integer> {
                 target.write(SweepCsv.shardEnd(share[0], share[1]) + "\n");
             }
             target.flush();
+            if (w == null && stdout.checkError()) {
+                throw new IOException(STDOUT_CLOSED);
+            }
+            if (w != null) {
+                w.close(); // puts the file in place, also after Ctrl-C (with the rows finished in order)
+            }
         } catch (java.io.UncheckedIOException | IOException e) {
-            throw new UsageException("cannot write --out file '" + out + "': " + e.getMessage());
+            String why = e instanceof java.io.UncheckedIOException u ? u.getCause().getMessage() : e.getMessage();
+            throw new UsageException(csv == null ? "cannot write to standard output: " + why
+                    : shardFile != null ? "cannot write --out file '" + out + "': " + why : why);
+        } finally {
+            OutputFile.abort(w); // after a failure (a full disk, or of PARPE itself) the old file stays, no temporary one
         }
         if (shardFile != null && result.cancelled()) {
             err.println("parpe: shard " + share[0] + "/" + share[1] + " is unfinished: its " + result.rows().size()
@@ -208,14 +228,14 @@ public final class SweepCommand implements Callable<Integer> {
         return new int[] {k, n};
     }
 
-    private OutputFile plotFile(List<Path> inputs, boolean sharded) throws UsageException {
+    private OutputFile plotFile(OutputPlan plan, boolean sharded) throws UsageException {
         if (plot != null) {
-            return OutputFile.of("--plot", plot, inputs);
+            return OutputFile.of(plan, "--plot", plot);
         }
         if (sharded || out.equals("-")) {
             return null;
         }
         String base = out.toLowerCase(Locale.ROOT).endsWith(".csv") ? out.substring(0, out.length() - 4) : out;
-        return OutputFile.of("--plot", base + ".png", inputs);
+        return OutputFile.of(plan, "--plot", base + ".png");
     }
 }

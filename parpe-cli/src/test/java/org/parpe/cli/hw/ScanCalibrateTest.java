@@ -5,16 +5,10 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
-import java.io.ByteArrayOutputStream;
-import java.io.PipedInputStream;
-import java.io.PipedOutputStream;
-import java.io.PrintWriter;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -27,7 +21,6 @@ import org.parpe.serial.link.PtyPair;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.profile.HardwareProfile;
 import org.parpe.serial.servo.profile.ProfileReader;
-import picocli.CommandLine;
 
 /** {@code parpe scan} and {@code parpe calibrate} against emulated servos over a socat pty pair. */
 @Timeout(value = 120, unit = TimeUnit.SECONDS)
@@ -101,25 +94,11 @@ class ScanCalibrateTest {
                       <servo module="1" id="2" model="xm430-w210" direction="-1" min="-90" max="90"/>
                     </hardware>
                     """.formatted(s.port()));
-            PipedOutputStream keys = new PipedOutputStream();
-            CalibrateCommand cmd = new CalibrateCommand();
-            cmd.input = new PipedInputStream(keys);
-            ByteArrayOutputStream err = new ByteArrayOutputStream();
-            CommandLine cl = new CommandLine(cmd);
-            cl.setErr(new PrintWriter(err, true, StandardCharsets.UTF_8));
-            CompletableFuture<Integer> code = CompletableFuture.supplyAsync(() -> cl.execute("--hardware",
-                    profile.toString()));
-            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-            while (!(s.emulator.isLimp(1) && s.emulator.isLimp(2))) {
-                assertTrue(System.nanoTime() < deadline, "the servos never went limp: " + err);
-                Thread.sleep(10);
-            }
+            CalibrateSession calibrate = new CalibrateSession(s, new int[] {1, 2}, "--hardware", profile.toString());
             assertTrue(s.emulator.backDrive(1, 12.3));
             assertTrue(s.emulator.backDrive(2, -100));
-            keys.write('\n');
-            keys.flush();
-            assertEquals(0, code.get(20, TimeUnit.SECONDS), err.toString(StandardCharsets.UTF_8));
-            String log = err.toString(StandardCharsets.UTF_8);
+            assertEquals(0, calibrate.enter(), calibrate.log());
+            String log = calibrate.log();
             assertTrue(log.contains("pose the robot with every joint at 0°"), log);
             assertTrue(log.contains("limits narrowed to"), log);
             HardwareProfile p = read(profile);

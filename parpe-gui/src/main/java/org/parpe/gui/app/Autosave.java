@@ -7,7 +7,6 @@ import java.nio.channels.OverlappingFileLockException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
 import java.security.MessageDigest;
 import java.security.NoSuchAlgorithmException;
@@ -20,6 +19,7 @@ import java.util.Set;
 import java.util.UUID;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.stream.Stream;
+import org.parpe.core.io.AtomicFiles;
 
 /**
  * Copies of unsaved editor text in {@code ~/.parpe/autosave/}, so that nothing is lost when an
@@ -28,8 +28,8 @@ import java.util.stream.Stream;
  * the file's absolute path, or {@code untitled-N}. An instance deletes only its own copies; a
  * copy in a folder whose lock nobody holds belongs to an IDE that is gone and is offered for
  * recovery ({@link #orphans}); recovering it moves it into the recovering instance's folder
- * ({@link #adopt}), so it stays on disk until that document is saved or discarded. Writes are
- * atomic (temporary file, then move).
+ * ({@link #adopt}), so it stays on disk until that document is saved or discarded. Writes go
+ * through the output rules ({@link AtomicFiles}: whole or not at all).
  */
 public final class Autosave implements AutoCloseable {
     /** Lock files held by this JVM: probing them through another channel would drop the OS lock. */
@@ -95,15 +95,8 @@ public final class Autosave implements AutoCloseable {
         Files.createDirectories(mine);
         Properties meta = new Properties();
         meta.setProperty("file", file == null ? "" : file.toAbsolutePath().normalize().toString());
-        Path tmp = mine.resolve(slot + ".xml.tmp");
-        Files.writeString(tmp, text, StandardCharsets.UTF_8);
-        Files.move(tmp, mine.resolve(slot + ".xml"), StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-        Path metaTmp = mine.resolve(slot + ".properties.tmp");
-        try (var out = Files.newOutputStream(metaTmp)) {
-            meta.store(out, "PARPE autosave");
-        }
-        Files.move(metaTmp, mine.resolve(slot + ".properties"), StandardCopyOption.REPLACE_EXISTING,
-                StandardCopyOption.ATOMIC_MOVE);
+        AtomicFiles.write(mine.resolve(slot + ".xml"), text);
+        AtomicFiles.write(mine.resolve(slot + ".properties"), out -> meta.store(out, "PARPE autosave"));
     }
 
     /** Removes this instance's copy in {@code slot} (the text was saved, or the user discarded it). */

@@ -77,6 +77,21 @@ final class FileActions {
     private boolean loading;
     private Questions questions;
     private SaveTarget saveTarget;
+    /** The file as it was on disk when it was opened or saved (time, size, file): a change means another program wrote it. */
+    private DiskStamp disk;
+
+    /** What tells that a file was written since: its modification time, size and identity. */
+    private record DiskStamp(Object modified, long size, Object key) {
+        static DiskStamp of(Path p) {
+            try {
+                java.nio.file.attribute.BasicFileAttributes a = Files.readAttributes(p,
+                        java.nio.file.attribute.BasicFileAttributes.class);
+                return new DiskStamp(a.lastModifiedTime(), a.size(), a.fileKey());
+            } catch (IOException e) {
+                return new DiskStamp(null, -1, null); // gone
+            }
+        }
+    }
 
     /**
      * {@code changed} runs after the file, the text or the dirty state changed, {@code switched}
@@ -94,6 +109,8 @@ final class FileActions {
         this.questions = (title, text, buttons) -> new MessageDialog(shell, title, null, text, MessageDialog.QUESTION,
                 buttons, 0).open();
         this.saveTarget = (folder, name) -> SafeSave.ask(shell, folder, name);
+        // another program (or another part of PARPE) may have written the file while the window was in the background
+        shell.addListener(SWT.Activate, e -> noticeDiskChange());
         shell.addListener(SWT.Dispose, e -> {
             autosave.close();
             reader.shutdownNow();
@@ -116,6 +133,11 @@ final class FileActions {
     /** The file edited, or null for an untitled document. */
     Path file() {
         return file;
+    }
+
+    /** The files open in the editor (none for an untitled document): what other saves of the IDE must not replace. */
+    java.util.List<Path> openFiles() {
+        return file == null ? java.util.List.of() : java.util.List.of(file);
     }
 
     /** The path given to the loader: the file, or an untitled name in the working directory. */
@@ -282,6 +304,7 @@ final class FileActions {
             loading = false;
         }
         file = p;
+        disk = p == null ? null : DiskStamp.of(p);
         savedText = saved;
         recovered = recoveredSlot != null;
         slot = recovered ? recoveredSlot : p == null ? autosave.untitledSlot() : Autosave.slotFor(p);
@@ -291,7 +314,59 @@ final class FileActions {
     }
 
     boolean save() {
+        if (file != null && changedOnDisk()) {
+            int a = questions.ask("File changed on disk", name() + " was changed on disk by another program since it was"
+                    + " opened or saved. Replace it with the text in the editor?", "Replace", "Cancel");
+            if (a != 0) {
+                return false;
+            }
+        }
         return file == null ? saveAs() : write(file);
+    }
+
+    /** Whether the file on disk differs from what was opened or last saved (not just touched). */
+    private boolean changedOnDisk() {
+        if (file == null || disk == null || DiskStamp.of(file).equals(disk)) {
+            return false;
+        }
+        return !savedText.equals(readOrNull(file));
+    }
+
+    private static String readOrNull(Path p) {
+        try {
+            return Files.readString(p, StandardCharsets.UTF_8);
+        } catch (IOException | RuntimeException e) {
+            return null;
+        }
+    }
+
+    /**
+     * When the window comes to the front: if another program changed the file, offers to reload
+     * it; if the user keeps the editor's text (or the file is gone), that text is marked unsaved,
+     * so that it is autosaved and quitting asks before it is lost. Asks once per change.
+     */
+    void noticeDiskChange() {
+        if (reading || !changedOnDisk()) {
+            return;
+        }
+        disk = DiskStamp.of(file);
+        String now = readOrNull(file);
+        if (now == null) {
+            savedText = "\u0000"; // nothing on disk equals the editor's text: it is unsaved
+            message.accept(name() + " was deleted or moved by another program; Save writes it again.");
+            changed.run();
+            return;
+        }
+        String why = name() + " was changed on disk by another program.";
+        int a = questions.ask("File changed on disk", dirty() ? why + " Reload it and lose the changes in the editor,"
+                + " or keep the editor's text?" : why + " Reload it, or keep the editor's text?", "Reload", "Keep Editor Text");
+        if (a == 0) {
+            show(file, now, now, null);
+            message.accept("Reloaded " + name() + " from disk.");
+        } else {
+            savedText = now; // the editor's text no longer is what is on disk: it is unsaved
+            changed.run();
+        }
     }
 
     boolean saveAs() {
@@ -335,6 +410,7 @@ final class FileActions {
         try {
             SafeSave.write(target, text);
             savedText = text;
+            disk = DiskStamp.of(target);
             recovered = false;
             autosave.clear(slot);
             slot = Autosave.slotFor(target);

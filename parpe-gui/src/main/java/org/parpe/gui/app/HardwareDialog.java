@@ -18,6 +18,7 @@ import org.eclipse.swt.widgets.Slider;
 import org.eclipse.swt.widgets.Table;
 import org.eclipse.swt.widgets.TableColumn;
 import org.eclipse.swt.widgets.TableItem;
+import org.parpe.core.io.OutputPlan;
 import org.parpe.serial.link.SerialLink;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.ServoProtocol;
@@ -260,6 +261,13 @@ final class HardwareDialog {
 
     /** Writes the starter profile (on the bus thread) and selects it in the tool bar's Profile box. */
     void saveProfile(Path file) {
+        for (Path open : ide.files().openFiles()) {
+            if (OutputPlan.sameFile(open, file)) {
+                show("Cannot write the profile over " + file.getFileName() + ": it is the script open in the editor;"
+                        + " choose another name.", true);
+                return;
+            }
+        }
         session.saveProfile(file, f -> ui(() -> ide.toolbar().setHardwareProfile(f.toString())));
     }
 

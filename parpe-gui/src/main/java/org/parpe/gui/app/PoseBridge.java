@@ -58,6 +58,11 @@ final class PoseBridge implements PoseHost {
     }
 
     @Override
+    public java.util.List<Path> openFiles() {
+        return ide.files().openFiles();
+    }
+
+    @Override
     public Path scriptPath() {
         return ide.files().pathForLoading();
     }

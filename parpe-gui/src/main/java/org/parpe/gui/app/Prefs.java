@@ -2,13 +2,12 @@ package org.parpe.gui.app;
 
 import java.io.IOException;
 import java.io.InputStream;
-import java.io.OutputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Properties;
+import org.parpe.core.io.AtomicFiles;
 
 /**
  * The IDE's remembered settings (recent files, last parameter values, run target, speed),
@@ -93,12 +92,7 @@ public final class Prefs {
     private void save() {
         try {
             Files.createDirectories(home);
-            Path tmp = home.resolve("ide.properties.tmp");
-            try (OutputStream out = Files.newOutputStream(tmp)) {
-                props.store(out, "PARPE IDE settings");
-            }
-            Files.move(tmp, home.resolve("ide.properties"), StandardCopyOption.REPLACE_EXISTING,
-                    StandardCopyOption.ATOMIC_MOVE);
+            AtomicFiles.write(home.resolve("ide.properties"), out -> props.store(out, "PARPE IDE settings"));
         } catch (IOException e) {
             // Settings are a convenience: a read-only home must not stop the IDE.
         }

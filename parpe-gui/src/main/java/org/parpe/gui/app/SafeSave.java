@@ -1,23 +1,17 @@
 package org.parpe.gui.app;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
-import java.nio.file.StandardOpenOption;
-import java.nio.file.attribute.PosixFilePermission;
-import java.util.Set;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.FileDialog;
 import org.eclipse.swt.widgets.Shell;
+import org.parpe.core.io.AtomicFiles;
 
 /**
- * Writes a script so that a failure never leaves it half written and the file stays what it
- * was: an existing file is replaced atomically by a copy written beside it, which first gets
- * the file's POSIX permissions (the copy is created private, and an executable or group-writable
- * script must stay so); a new file is created with the system's default permissions (umask).
- * Also the Save As dialog that chooses the file.
+ * Writes a script by the output rules ({@link AtomicFiles}): whole or not at all, keeping the
+ * file's permissions, through a symbolic link to its target, never over anything but a regular
+ * file; a new file gets the system's default permissions (umask). Also the Save As dialog that
+ * chooses the file.
  */
 final class SafeSave {
     private SafeSave() {
@@ -25,22 +19,7 @@ final class SafeSave {
 
     /** Writes {@code text} (UTF-8) to {@code target}. */
     static void write(Path target, String text) throws IOException {
-        if (!Files.exists(target)) {
-            Files.writeString(target, text, StandardCharsets.UTF_8, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
-            return;
-        }
-        Set<PosixFilePermission> perms = permissions(target);
-        Path dir = target.toAbsolutePath().getParent();
-        Path tmp = Files.createTempFile(dir, "." + target.getFileName(), ".tmp");
-        try {
-            Files.writeString(tmp, text, StandardCharsets.UTF_8);
-            if (perms != null) {
-                Files.setPosixFilePermissions(tmp, perms);
-            }
-            Files.move(tmp, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-        } finally {
-            Files.deleteIfExists(tmp);
-        }
+        AtomicFiles.write(target, text);
     }
 
     /** The Save As dialog, starting in {@code folder} with {@code name}; the chosen file, or {@code null}. */
@@ -52,14 +31,5 @@ final class SafeSave {
         d.setFilterPath(folder.toString());
         String p = d.open();
         return p == null ? null : Path.of(p);
-    }
-
-    /** The file's POSIX permissions, or {@code null} where the file system has none (Windows). */
-    private static Set<PosixFilePermission> permissions(Path p) throws IOException {
-        try {
-            return Files.getPosixFilePermissions(p);
-        } catch (UnsupportedOperationException e) {
-            return null;
-        }
     }
 }

@@ -11,6 +11,7 @@ import org.eclipse.swt.graphics.ImageLoader;
 import org.eclipse.swt.graphics.Rectangle;
 import org.eclipse.swt.widgets.Display;
 import org.eclipse.swt.widgets.Shell;
+import org.parpe.core.io.AtomicFiles;
 
 /** Saves a PNG picture of a window, as the screen shows it. */
 public final class Screenshot {
@@ -62,7 +63,7 @@ public final class Screenshot {
         ImageLoader loader = new ImageLoader();
         loader.data = new ImageData[] {data};
         try {
-            loader.save(abs.toString(), SWT.IMAGE_PNG);
+            AtomicFiles.write(abs, out -> loader.save(out, SWT.IMAGE_PNG)); // the output rules: whole or not at all
         } catch (org.eclipse.swt.SWTException e) {
             throw new IOException("cannot write " + abs + ": " + e.getMessage(), e);
         }

@@ -30,6 +30,9 @@ public interface PoseHost {
     /** The editor's document (edits through it are undoable). */
     IDocument document();
 
+    /** The files open in the IDE's editors (none for an untitled script): a save never writes over one of them. */
+    java.util.List<Path> openFiles();
+
     /** The path scripts in the editor are loaded relative to. */
     Path scriptPath();
 

@@ -1,9 +1,7 @@
 package org.parpe.gui.pose;
 
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.function.Consumer;
 import org.eclipse.jface.text.BadLocationException;
 import org.eclipse.jface.text.IDocument;
@@ -17,6 +15,8 @@ import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.FileDialog;
 import org.eclipse.swt.widgets.Label;
 import org.parpe.core.diag.Diagnostic;
+import org.parpe.core.io.AtomicFiles;
+import org.parpe.core.io.OutputPlan;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.model.Program;
 import org.parpe.core.run.RunOutcome;
@@ -151,23 +151,27 @@ final class PoseOutput {
         }
     }
 
-    /** Writes the poses as a §12 recording to {@code file}, replacing it atomically; false (and a message) on failure. */
+    /**
+     * Writes the poses as a §12 recording to {@code file} by the output rules; refuses the script
+     * open in the editor. False (and a message) on failure.
+     */
     boolean save(Path file) {
         PoseList l = poses();
         if (l == null) {
             return false;
         }
+        for (Path open : host.openFiles()) {
+            if (OutputPlan.sameFile(open, file)) {
+                // replacing it on disk would leave the editor with the old text, not even marked modified
+                host.status("Cannot save the poses over " + file.getFileName() + ": it is the script open in the editor."
+                        + " Choose another name, or use \"Use on another group\u2026\" to put the poses into the script.");
+                return false;
+            }
+        }
         String origin = "recorded in the PARPE IDE's Pose panel from " + host.scriptPath().getFileName();
         String text = RecordingWriter.toParsl(l.toRecording(), origin);
         try {
-            Path abs = file.toAbsolutePath();
-            Path tmp = Files.createTempFile(abs.getParent(), ".parpe-", ".xml");
-            try {
-                Files.writeString(tmp, text);
-                Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-            } finally {
-                Files.deleteIfExists(tmp);
-            }
+            AtomicFiles.write(file, text);
         } catch (IOException | RuntimeException e) {
             host.status("Cannot save " + file + ": " + e.getMessage());
             return false;

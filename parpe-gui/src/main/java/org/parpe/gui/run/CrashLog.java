@@ -7,6 +7,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
+import org.parpe.core.io.AtomicFiles;
 import org.parpe.gui.app.Prefs;
 
 /**
@@ -25,7 +26,7 @@ public final class CrashLog {
             Path dir = Prefs.defaultHome().resolve("crash");
             Files.createDirectories(dir);
             Path f = dir.resolve("parpe-" + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss-SSS")) + ".txt");
-            Files.writeString(f, "PARPE IDE internal error while " + doing + "\n"
+            AtomicFiles.write(f, "PARPE IDE internal error while " + doing + "\n"
                     + "java " + System.getProperty("java.version") + ", " + System.getProperty("os.name") + "\n\n" + sw);
             return f.toString();
         } catch (IOException io) {

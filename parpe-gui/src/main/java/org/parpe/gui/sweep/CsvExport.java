@@ -2,20 +2,21 @@ package org.parpe.gui.sweep;
 
 import java.io.BufferedWriter;
 import java.io.IOException;
+import java.io.OutputStreamWriter;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import org.eclipse.swt.SWTException;
 import org.eclipse.swt.widgets.Display;
+import org.parpe.core.io.AtomicFiles;
 import org.parpe.sim.sweep.Axis;
 import org.parpe.sim.sweep.SweepCsv;
 import org.parpe.sim.sweep.SweepRow;
 
 /**
  * "Save CSV…": the rows in the engine's CSV form ({@link SweepCsv}, the same columns as
- * {@code parpe sweep --out}), written to a temporary file beside the target and moved over it,
+ * {@code parpe sweep --out}), written by the output rules ({@link AtomicFiles}),
  * so that a failed write never leaves half a file.
  */
 final class CsvExport {
@@ -33,21 +34,16 @@ final class CsvExport {
 
     /** Writes {@code rows} (of a sweep of {@code runs} runs over {@code axes}) to {@code file}. */
     static void write(Path file, List<Axis> axes, List<SweepRow> rows, int runs) throws IOException {
-        Path dir = file.toAbsolutePath().getParent();
-        Path tmp = Files.createTempFile(dir, "." + file.getFileName(), ".tmp");
-        try {
-            try (BufferedWriter w = Files.newBufferedWriter(tmp, StandardCharsets.UTF_8)) {
-                w.write(SweepCsv.header(axes));
+        AtomicFiles.write(file, out -> {
+            BufferedWriter w = new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8));
+            w.write(SweepCsv.header(axes));
+            w.write('\n');
+            for (SweepRow r : rows) {
+                w.write(SweepCsv.line(r, runs));
                 w.write('\n');
-                for (SweepRow r : rows) {
-                    w.write(SweepCsv.line(r, runs));
-                    w.write('\n');
-                }
             }
-            Files.move(tmp, file, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
-        } finally {
-            Files.deleteIfExists(tmp);
-        }
+            w.flush();
+        });
     }
 
     /** What became of a save: whether it worked, and a line to show. */

@@ -17,6 +17,7 @@ import org.eclipse.swt.widgets.ProgressBar;
 import org.eclipse.swt.widgets.Shell;
 import org.eclipse.swt.widgets.TabFolder;
 import org.eclipse.swt.widgets.TabItem;
+import org.parpe.core.io.OutputPlan;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
 import org.parpe.core.model.Parameter;
@@ -320,6 +321,10 @@ public final class SweepDialog {
 
     /** Writes the rows to {@code file} off the UI thread and says when it is done. */
     void saveCsv(Path file) {
+        if (OutputPlan.sameFile(host.script().get(), file)) {
+            error("Cannot save the rows over " + file.getFileName() + ": it is the script being swept; choose another name.");
+            return;
+        }
         List<SweepRow> rows = List.copyOf(results.rows());
         CsvExport.inBackground(shell.getDisplay(), file, CsvExport.axes(results.parameters()), rows, total, (ok, said) -> {
             if (shell.isDisposed()) {

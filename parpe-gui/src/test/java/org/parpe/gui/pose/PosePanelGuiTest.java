@@ -2,6 +2,7 @@ package org.parpe.gui.pose;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -235,6 +236,15 @@ class PosePanelGuiTest {
         for (int i = 0; i < poses.size(); i++) {
             assertArrayEquals(poses.get(i).angles(), panel.poses().get(had + i).angles(), 1e-9);
         }
+        // Issue 18 item 4: "Save recording..." over the script open in the editor (or a link to it)
+        // replaced it on disk behind the editor's back; it is refused and the script stays.
+        String open = Files.readString(saved);
+        Path link = Files.createSymbolicLink(dir.resolve("link-to-open.xml"), saved);
+        for (Path over : List.of(saved, link)) {
+            assertFalse(panel.output().save(over), "saved over the open script through " + over);
+            assertTrue(IdeAccess.status(ide).contains("it is the script open in the editor"), IdeAccess.status(ide));
+        }
+        assertEquals(open, Files.readString(saved));
     }
 
     /**

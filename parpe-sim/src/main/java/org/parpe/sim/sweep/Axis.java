@@ -28,25 +28,24 @@ public record Axis(String name, Kind kind, double lo, double hi, List<Double> va
     }
 
     public Axis {
-        values = List.copyOf(values);
+        values = values instanceof Computed ? values : List.copyOf(values);
     }
 
-    /** Every integer from {@code lo} to {@code hi}. */
+    /** Every integer from {@code lo} to {@code hi} (computed when asked: a range may hold 10^12 of them). */
     public static Axis integers(String name, long lo, long hi) {
-        List<Double> v = new java.util.ArrayList<>();
-        for (long i = lo; i <= hi; i++) {
-            v.add((double) i);
-        }
-        return new Axis(name, Kind.INTEGERS, lo, hi, v);
+        long count = hi - lo + 1;
+        return new Axis(name, Kind.INTEGERS, lo, hi, new Computed(count, i -> (double) (lo + i)));
     }
 
     /** {@code k} evenly spaced values from {@code lo} to {@code hi} (ends included; {@code k = 1}: {@code lo}). */
     public static Axis even(String name, double lo, double hi, int k) {
-        List<Double> v = new java.util.ArrayList<>();
-        for (int i = 0; i < k; i++) {
-            v.add(i == k - 1 && k > 1 ? hi : lo + (hi - lo) * i / Math.max(1, k - 1));
-        }
-        return new Axis(name, Kind.EVEN, lo, hi, v);
+        return new Axis(name, Kind.EVEN, lo, hi,
+                new Computed(k, i -> i == k - 1 && k > 1 ? hi : lo + (hi - lo) * i / Math.max(1, k - 1)));
+    }
+
+    /** How many values a grid has on this axis (0 for {@link Kind#CONTINUOUS}); may exceed {@code values().size()}. */
+    public long count() {
+        return values instanceof Computed c ? c.count : values.size();
     }
 
     /** The given values. */
@@ -71,6 +70,41 @@ public record Axis(String name, Kind kind, double lo, double hi, List<Double> va
         if (kind == Kind.CONTINUOUS) {
             return lo == hi ? lo : lo + (hi - lo) * random.nextDouble();
         }
-        return values.get(random.nextInt(values.size()));
+        long n = count();
+        return n <= Integer.MAX_VALUE ? values.get(random.nextInt((int) n)) : lo + random.nextLong(n);
+    }
+
+    /**
+     * The values of a range, computed from their index instead of stored, so that a sweep too
+     * big to run is refused by its count instead of filling the memory first. Lists longer
+     * than {@code Integer.MAX_VALUE} report that size; {@link #count()} is exact.
+     */
+    private static final class Computed extends java.util.AbstractList<Double> implements java.util.RandomAccess {
+        private final long count;
+        private final java.util.function.LongToDoubleFunction value;
+
+        Computed(long count, java.util.function.LongToDoubleFunction value) {
+            this.count = count;
+            this.value = value;
+        }
+
+        @Override
+        public Double get(int index) {
+            if (index < 0 || index >= size()) {
+                throw new IndexOutOfBoundsException(index);
+            }
+            return value.applyAsDouble(index);
+        }
+
+        @Override
+        public int size() {
+            return (int) Math.min(count, Integer.MAX_VALUE);
+        }
+
+        @Override
+        public String toString() {
+            return count <= 20 ? super.toString() : "[" + get(0) + ", ..., " + value.applyAsDouble(count - 1) + "] ("
+                    + count + " values)";
+        }
     }
 }

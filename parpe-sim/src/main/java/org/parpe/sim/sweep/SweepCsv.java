@@ -7,6 +7,7 @@ import java.util.Map;
 import java.util.TreeMap;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import org.parpe.core.io.CsvCells;
 import org.parpe.core.model.Numbers;
 
 /**
@@ -15,7 +16,8 @@ import org.parpe.core.model.Numbers;
  * shard), {@code combination}, {@code repeat}, {@code seed}, one column per varied parameter,
  * then {@code duration_s}, {@code distance_m}, {@code forward_m}, {@code forward_speed_mps},
  * {@code speed_mps}, {@code max_tilt_deg}, {@code joint_travel_deg} (the energy proxy),
- * {@code fell} (0/1) and {@code error} (quoted; empty when the run went well). Measurements
+ * {@code fell} (0/1) and {@code error} (quoted, made safe for spreadsheets by {@link CsvCells#safe}; empty when the
+ * run went well). Measurements
  * are printed with {@code %.6f} in every locale, parameter values as the shortest exact decimal;
  * a run that could not start has empty measurements.
  *
@@ -98,7 +100,8 @@ public final class SweepCsv {
         }
         b.append(',').append(row.fell() ? 1 : 0).append(',');
         if (!row.error().isEmpty()) {
-            b.append('"').append(row.error().replaceAll("[\\r\\n]+", " ").replace("\"", "\"\"")).append('"');
+            String error = CsvCells.safe(row.error().replaceAll("[\\r\\n]+", " "));
+            b.append('"').append(error.replace("\"", "\"\"")).append('"');
         }
         return b.toString();
     }

@@ -84,9 +84,10 @@ public record SweepSpec(List<Axis> axes, int randomCount, long seed, int repeat)
         if (randomCount < 0) {
             throw new SweepException("--random must be >= 1, got " + randomCount);
         }
-        if (combinations() * repeat > MAX_RUNS) {
-            throw new SweepException("the sweep has " + combinations() * repeat + " runs, more than " + MAX_RUNS
-                    + "; use fewer values or --random COUNT");
+        long runs = saturated(combinations(), repeat);
+        if (runs > MAX_RUNS) {
+            throw new SweepException("the sweep has " + (runs == Long.MAX_VALUE ? "more than 9.2e18" : runs)
+                    + " runs, more than the " + MAX_RUNS + " one sweep may have; use fewer values or --random COUNT");
         }
     }
 
@@ -97,12 +98,14 @@ public record SweepSpec(List<Axis> axes, int randomCount, long seed, int repeat)
         }
         long n = 1;
         for (Axis a : axes) {
-            n *= a.values().size();
-            if (n > MAX_RUNS) {
-                return MAX_RUNS + 1L;
-            }
+            n = saturated(n, a.count());
         }
         return n;
+    }
+
+    /** {@code a * b}, or {@code Long.MAX_VALUE} where that overflows (both >= 0). */
+    private static long saturated(long a, long b) {
+        return Math.multiplyHigh(a, b) != 0 || a * b < 0 ? Long.MAX_VALUE : a * b;
     }
 
     /** The number of runs: combinations × repeat (after {@link #check()}). */

@@ -1,11 +1,9 @@
 package org.parpe.serial.servo.profile;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.Locale;
+import org.parpe.core.io.AtomicFiles;
 
 /** Writes a hardware profile (atomically: a crash never leaves half a file). */
 public final class ProfileWriter {
@@ -32,16 +30,13 @@ public final class ProfileWriter {
         return b.append("</hardware>\n").toString();
     }
 
-    /** Writes {@code p} to {@code file} through a temporary file in the same directory. */
+    /**
+     * Writes {@code p} to {@code file} by the output rules ({@link AtomicFiles}): whole or not at
+     * all, through a symbolic link to its target, keeping the file's permissions, and never over
+     * anything but a regular file.
+     */
     public static void write(HardwareProfile p, Path file, String comment) throws IOException {
-        Path abs = file.toAbsolutePath();
-        Path tmp = Files.createTempFile(abs.getParent(), ".profile-", ".tmp");
-        try {
-            Files.writeString(tmp, toXml(p, comment), StandardCharsets.UTF_8);
-            Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-        } finally {
-            Files.deleteIfExists(tmp);
-        }
+        AtomicFiles.write(file, toXml(p, comment));
     }
 
     private static String num(double d) {
