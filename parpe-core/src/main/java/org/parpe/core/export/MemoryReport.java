@@ -15,15 +15,20 @@ import java.util.List;
  * @param flashBytes flash: runtime, expressions and tables
  */
 public record MemoryReport(Board board, long stateBytes, long boardBytes, long ramBytes, long flashBytes) {
+    /** Flash of one generated expression statement (see {@link #of}). */
+    static final int FLASH_PER_STATEMENT = 3;
 
     /**
      * Estimates {@code p} on {@code board}; {@code codeLines} is the number of generated expression
-     * statements, {@code driverRam} the RAM of the board code's servo driver (buffers, pin tables).
+     * statements, {@code driver} what the board code's servo driver adds. Each generated statement
+     * is taken as {@value #FLASH_PER_STATEMENT} bytes of AVR code: avr-gcc -Os with LTO made
+     * 2–3 bytes of most (constants folded into their callers), up to 8 of calls and controls.
      */
-    public static MemoryReport of(CProgram p, Board board, long codeLines, long driverRam) {
+    public static MemoryReport of(CProgram p, Board board, long codeLines, DriverCost driver) {
         long state = stateBytes(p, board);
-        long flash = board.runtimeFlash() + p.tableBytes(board.doubleBytes()) + 14 * codeLines;
-        long boardRam = board.boardRam() + driverRam;
+        long flash = board.runtimeFlash() + p.tableBytes(board.doubleBytes()) + FLASH_PER_STATEMENT * codeLines
+                + driver.flash();
+        long boardRam = board.boardRam() + driver.ram();
         return new MemoryReport(board, state, boardRam, state + boardRam, flash);
     }
 
