@@ -2,10 +2,12 @@
  * uno_probe: runs an Arduino Uno sketch (an ELF built with the Arduino AVR core) on simavr's
  * ATmega328P at 16 MHz and prints what the board does, for the export tests (SimulatedUnoTest):
  *
- *   P pin rise width     a high pulse on a watched pin (CPU cycles at its rising edge, its width in cycles)
+ *   P pin rise width     a high pulse on a watched pin (CPU cycles at its rising edge, its width in
+ *                        cycles); the first pulse of each pin is always printed
  *   E pin cycle level    an edge of a pin watched as a serial line (the SoftwareSerial console)
  *   U cycle byte         a byte the hardware UART sent
- *   R end stack          at the end: the cycle count and the deepest stack use in bytes
+ *   R end stack state busy   at the end: the cycle count, the deepest stack use in bytes,
+ *                        simavr's CPU state and the cycles the CPU was awake (not sleeping)
  *
  * usage: uno_probe ELF SECONDS FROM_SECONDS END_OF_BSS_HEX [p:PIN | e:PIN]...
  * Pulses, edges and bytes before FROM_SECONDS are not printed (a long run prints only its end).
@@ -19,6 +21,7 @@
 #include <simavr/sim_elf.h>
 #include <simavr/avr_ioport.h>
 #include <simavr/avr_uart.h>
+#include <simavr/avr_extint.h>
 
 #define PAINT 0xA5
 #define FREQ 16000000ULL
@@ -26,6 +29,7 @@
 static avr_t *avr;
 static avr_cycle_count_t from;
 static avr_cycle_count_t rise[20];
+static int pulses[20];
 
 static int pulse_pin(int pin, char *port, int *bit)
 {
@@ -50,7 +54,7 @@ static void on_pulse(struct avr_irq_t *irq, uint32_t value, void *param)
     (void) irq;
     if (value) {
         rise[pin] = avr->cycle;
-    } else if (rise[pin] != 0 && rise[pin] >= from) {
+    } else if (rise[pin] != 0 && (rise[pin] >= from || pulses[pin]++ == 0)) {
         printf("P %d %llu %llu\n", pin, (unsigned long long) rise[pin], (unsigned long long) (avr->cycle - rise[pin]));
     }
 }
@@ -86,6 +90,7 @@ int main(int argc, char **argv)
     uint16_t bss_end;
     int i;
     int state = cpu_Running;
+    avr_cycle_count_t busy = 0;
     static char buf[1 << 16];
     setvbuf(stdout, buf, _IOFBF, sizeof buf);
     if (argc < 5) {
@@ -110,6 +115,9 @@ int main(int argc, char **argv)
     avr_load_firmware(avr, &f);
     avr->log = 0;
     avr->sleep = no_wait;
+    /* simavr polls INT0/INT1 every cycle while their pins are low (pin 2 is); the sketch does not use them */
+    avr_extint_set_strict_lvl_trig(avr, 0, 0);
+    avr_extint_set_strict_lvl_trig(avr, 1, 0);
     {
         uint32_t flags = 0;   /* no stdio echo, no sleeping while the UART is polled */
         avr_ioctl(avr, AVR_IOCTL_UART_SET_FLAGS('0'), &flags);
@@ -130,10 +138,15 @@ int main(int argc, char **argv)
         avr->data[i] = PAINT;
     }
     while (avr->cycle < end && state != cpu_Done && state != cpu_Crashed) {
+        avr_cycle_count_t before = avr->cycle;
+        int awake = avr->state == cpu_Running;
         state = avr_run(avr);
+        if (awake) {
+            busy += avr->cycle - before;
+        }
     }
     for (i = bss_end; i <= avr->ramend && avr->data[i] == PAINT; i++) {
     }
-    printf("R %llu %d %d\n", (unsigned long long) avr->cycle, avr->ramend + 1 - i, state);
+    printf("R %llu %d %d %llu\n", (unsigned long long) avr->cycle, avr->ramend + 1 - i, state, (unsigned long long) busy);
     return 0;
 }

@@ -66,14 +66,15 @@ record SketchOptions(Driver driver, List<Integer> pins, int baud, ServoModel mod
      * PWM servo its pulse width, port and pin mask (5 bytes); on a bus the packet buffer
      * ({@code sketch.inc}: 16 + 2 × (ID + goal) per module, room for byte stuffing) plus the
      * SoftwareSerial console (its object and 64-byte receive buffer: 106 bytes). Flash: the bus
-     * code (CRC or checksum, packets, SoftwareSerial) over the PWM timer code.
+     * code (CRC or checksum, packets, SoftwareSerial) over the PWM timer code. Time: a pulse width
+     * per PWM servo (about 600 cycles), a packet entry sent and waited for on a bus (3 000).
      */
     DriverCost cost(int modules) {
         if (driver == Driver.PWM) {
-            return new DriverCost(5L * modules, 0);
+            return new DriverCost(5L * modules, 0, 600L * modules);
         }
         return new DriverCost(16 + 2L * modules * (1 + model.registers().goalSize()) + 106,
-                driver == Driver.DXL ? 1300 : 1150);
+                driver == Driver.DXL ? 1300 : 1150, 3000L * modules);
     }
 
     /**

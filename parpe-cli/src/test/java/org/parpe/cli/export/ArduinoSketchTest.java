@@ -1,6 +1,7 @@
 package org.parpe.cli.export;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
@@ -104,6 +105,12 @@ class ArduinoSketchTest {
         assertTrue(export.err.matches("(?s)[^\\n]*long-snake\\.xml:2:\\d+: error: the program needs about \\d+ bytes of RAM"
                 + " on uno .*but it has 2048.*"), export.err);
         assertTrue(Files.notExists(tmp.resolve("big")), "nothing is written when it does not fit");
+        assertFalse(fits.err.contains("warning"), fits.err);
+        Cli slow = Cli.run(List.of("export", script.toString(), "--target", "arduino", "--servo", "dxl", "--param",
+                "N=16", "--out", tmp.resolve("slow").toString()));
+        assertEquals(0, slow.code, () -> "16 modules fit: " + slow);
+        assertTrue(slow.err.matches("(?s)[^\\n]*long-snake\\.xml:2:\\d+: warning: a tick may take about 1\\d\\.\\d ms to"
+                + " compute on uno \\(estimate\\), longer than the tick of 10\\.0 ms.*use --tick 0\\.0\\d+ or more.*"), slow.err);
         Cli esp = Cli.run(List.of("export", script.toString(), "--target",
                 "arduino", "--servo", "dxl", "--param", "N=60", "--board", "esp32", "--out", tmp.resolve("esp").toString()));
         assertEquals(0, esp.code, () -> "an ESP32 holds 60 modules: " + esp);

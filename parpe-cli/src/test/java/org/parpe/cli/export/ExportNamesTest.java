@@ -43,7 +43,7 @@ class ExportNamesTest {
             for (String line : Files.readAllLines(out.resolve(f))) {
                 assertFalse(line.startsWith("#error") || line.startsWith("/") && !line.startsWith("/*"), f + ": " + line);
                 if (line.startsWith("/*")) {
-                    assertTrue(line.matches("/\\*[ -~&&[^\\\\?]]*\\*/"), () -> f + ": a comment with more than printable"
+                    assertTrue(line.matches("/\\*[ -~&&[^\\\\?]]*"), () -> f + ": a comment with more than printable"
                             + " ASCII without \\ and ?: " + line);
                 }
             }
@@ -59,6 +59,24 @@ class ExportNamesTest {
         assertTrue(first.startsWith(ExportFiles.MARK) && first.contains("x_#error injected through a file name_.xml"),
                 first);
         assertFalse(Files.readString(ino).lines().anyMatch(l -> l.startsWith("#error")), "no line of the name in the .ino");
+    }
+
+    /** The host program names a script in a non-ASCII folder as parpe run does (UTF-8, not one byte per char). */
+    @Test
+    void nonAsciiPathsAreWrittenAsParpeRunWritesThem() throws Exception {
+        Path script = Files.createDirectories(tmp.resolve("schlange-ä-蛇")).resolve("divide-by-zero.xml");
+        Files.copy(Path.of("src/test/resources/export/divide-by-zero.xml"), script);
+        Cli run = Cli.run(List.of("run", script.toString(), "--duration", "3", "--trace", tmp.resolve("j.csv").toString()));
+        assertEquals(3, run.code, () -> "run: " + run);
+        Path out = tmp.resolve("c");
+        Cli export = Cli.run(List.of("export", script.toString(), "--target", "c", "--out", out.toString()));
+        assertEquals(0, export.code, () -> "export: " + export);
+        HostCompiler.compile(out);
+        HostCompiler.Result r = HostCompiler.run(out, List.of("./program", "--duration", "3", "--trace",
+                tmp.resolve("c.csv").toString()), 60);
+        assertEquals(3, r.code(), r.err());
+        String place = run.err.lines().filter(l -> l.contains(": error: ")).findFirst().orElseThrow();
+        assertTrue(r.err().startsWith(place.substring(0, place.indexOf(": error: "))), () -> r.err() + " vs " + place);
     }
 
     @Test

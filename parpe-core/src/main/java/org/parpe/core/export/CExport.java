@@ -1,6 +1,10 @@
 package org.parpe.core.export;
 
+import java.math.BigDecimal;
+import java.math.MathContext;
+import java.math.RoundingMode;
 import java.util.LinkedHashMap;
+import java.util.Locale;
 import java.util.Map;
 import java.util.stream.Stream;
 import org.parpe.core.diag.DiagnosticSink;
@@ -73,6 +77,16 @@ public final class CExport {
         for (String problem : m.problems()) {
             diags.error(program.robot().pos(), problem);
         }
+        if (board.cyclesPerSecond() > 0) {
+            double seconds = tickCycles(c, driver) / (double) board.cyclesPerSecond();
+            if (seconds > dt) {
+                diags.warning(program.robot().pos(), String.format(Locale.ROOT, "a tick may take about %.1f ms to"
+                        + " compute on %s (estimate), longer than the tick of %.1f ms: the robot would move slower than"
+                        + " the script says (the sketch reports overruns on its console); use --tick %s or more, or"
+                        + " fewer modules", seconds * 1e3, board.word(), dt * 1e3,
+                        BigDecimal.valueOf(seconds * 1.2).round(new MathContext(2, RoundingMode.UP)).toPlainString()));
+            }
+        }
         return m.fits() ? new Result(files, m) : null;
     }
 
@@ -83,6 +97,16 @@ public final class CExport {
     public static MemoryReport estimate(Program program, double dt, Board board) {
         CProgram c = CProgram.of(program, dt);
         return MemoryReport.of(c, board, statements(c.source()), DriverCost.NONE);
+    }
+
+    /**
+     * Cycles an AVR board takes for one tick of {@code c}: about 9 500 per module (advancing its
+     * automaton and evaluating its state's angle in 32-bit software floating point), 4 000 for
+     * the scheduler, plus the driver's. Measured by SimulatedUnoTest on simavr (the cycles the CPU
+     * is awake per tick: 30 000–120 000 for the examples); an estimate for a warning, not a bound.
+     */
+    static long tickCycles(CProgram c, DriverCost driver) {
+        return 4000 + 9500L * c.modules() + driver.cycles();
     }
 
     /** Generated statements (indented lines), the measure of expression code for the flash estimate. */

@@ -28,15 +28,17 @@ public final class CText {
 
     /**
      * {@code s} made safe for a C comment or a {@code //} line: only printable ASCII, without
-     * {@code \\} (a line splice), {@code ?} (trigraphs such as {@code ??/}) and {@code * /} pairs;
+     * {@code \\} (a line splice), {@code ?} (trigraphs such as {@code ??/}), and no {@code *} next
+     * to a {@code /} (which would end the comment or open one inside it);
      * everything else, line breaks included, becomes {@code _}. File and folder names go into
      * comments through this only, so no name can end a comment or splice the next line into it.
      */
     public static String comment(String s) {
         StringBuilder b = new StringBuilder();
         for (char c : s.toCharArray()) {
-            boolean ok = c >= 32 && c <= 126 && c != '\\' && c != '?' && !(c == '/' && b.length() > 0
-                    && b.charAt(b.length() - 1) == '*');
+            char prev = b.length() == 0 ? ' ' : b.charAt(b.length() - 1);
+            boolean ok = c >= 32 && c <= 126 && c != '\\' && c != '?' && !(c == '/' && prev == '*')
+                    && !(c == '*' && prev == '/');
             b.append(ok ? c : '_');
         }
         return b.toString();
