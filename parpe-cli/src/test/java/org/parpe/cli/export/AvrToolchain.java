@@ -48,7 +48,7 @@ final class AvrToolchain {
     static AvrToolchain require(Path dir) throws IOException, InterruptedException {
         List<String> missing = new ArrayList<>();
         for (String tool : List.of("avr-gcc", "avr-g++", "avr-gcc-ar", "avr-size", "avr-nm", "gcc")) {
-            if (!runs(tool)) {
+            if (!HostCompiler.installed(tool)) {
                 missing.add(tool);
             }
         }
@@ -71,21 +71,12 @@ final class AvrToolchain {
         try (Stream<Path> s = Files.list(CORE.resolve("cores/arduino"))) {
             for (Path src : s.sorted().toList()) {
                 String n = src.getFileName().toString();
-                List<String> cmd;
-                if (n.endsWith(".c")) {
-                    cmd = new ArrayList<>(List.of("avr-gcc", "-c", "-std=gnu11"));
-                } else if (n.endsWith(".cpp")) {
-                    cmd = new ArrayList<>(List.of("avr-g++", "-c"));
-                    cmd.addAll(CPP);
-                } else if (n.endsWith(".S")) {
-                    cmd = new ArrayList<>(List.of("avr-gcc", "-c", "-x", "assembler-with-cpp"));
-                } else {
-                    continue;
+                List<String> cmd = compiler(n);
+                if (cmd != null) {
+                    cmd.addAll(List.of(src.toString(), "-o", n + ".o"));
+                    check(core, cmd);
+                    objects.add(n + ".o");
                 }
-                cmd.addAll(FLAGS);
-                cmd.addAll(List.of(src.toString(), "-o", n + ".o"));
-                check(core, cmd);
-                objects.add(n + ".o");
             }
         }
         List<String> ar = new ArrayList<>(List.of("avr-gcc-ar", "rcs", "core.a"));
@@ -107,25 +98,15 @@ final class AvrToolchain {
         try (Stream<Path> s = Files.list(sketch)) {
             for (Path src : s.sorted().toList()) {
                 String n = src.getFileName().toString();
-                List<String> cmd;
-                if (n.endsWith(".c")) {
-                    cmd = new ArrayList<>(List.of("avr-gcc", "-c", "-std=gnu11"));
-                } else if (n.endsWith(".ino")) {
-                    cmd = new ArrayList<>(List.of("avr-g++", "-c"));
-                    cmd.addAll(CPP);
-                    cmd.addAll(List.of("-x", "c++"));
-                } else {
-                    continue;
+                List<String> cmd = compiler(n);
+                if (cmd != null) {
+                    cmd.addAll(List.of("-I" + sketch, src.toString(), "-o", n + ".o"));
+                    check(obj, cmd);
+                    objects.add(n + ".o");
                 }
-                cmd.addAll(FLAGS);
-                cmd.addAll(List.of("-I" + sketch, src.toString(), "-o", n + ".o"));
-                check(obj, cmd);
-                objects.add(n + ".o");
             }
         }
-        List<String> ss = new ArrayList<>(List.of("avr-g++", "-c"));
-        ss.addAll(CPP);
-        ss.addAll(FLAGS);
+        List<String> ss = compiler("SoftwareSerial.cpp");
         ss.addAll(List.of(CORE.resolve("libraries/SoftwareSerial/src/SoftwareSerial.cpp").toString(), "-o", "ss.o"));
         check(obj, ss);
         objects.add("ss.o");
@@ -152,6 +133,24 @@ final class AvrToolchain {
         return check(elf.file().getParent(), cmd).out().lines().toList();
     }
 
+    /** The compiler command for a source of the core or the sketch (by its extension), or {@code null} for another file. */
+    private static List<String> compiler(String name) {
+        List<String> cmd;
+        if (name.endsWith(".c")) {
+            cmd = new ArrayList<>(List.of("avr-gcc", "-c", "-std=gnu11"));
+        } else if (name.endsWith(".cpp") || name.endsWith(".ino")) {
+            cmd = new ArrayList<>(List.of("avr-g++", "-c"));
+            cmd.addAll(CPP);
+            cmd.addAll(name.endsWith(".ino") ? List.of("-x", "c++") : List.of());
+        } else if (name.endsWith(".S")) {
+            cmd = new ArrayList<>(List.of("avr-gcc", "-c", "-x", "assembler-with-cpp"));
+        } else {
+            return null;
+        }
+        cmd.addAll(FLAGS);
+        return cmd;
+    }
+
     private static long section(String sizeA, String name) {
         return sizeA.lines().filter(l -> l.startsWith(name + " ")).mapToLong(l -> Long.parseLong(l.trim().split("\\s+")[1]))
                 .findFirst().orElse(0);
@@ -161,18 +160,5 @@ final class AvrToolchain {
         HostCompiler.Result r = HostCompiler.run(in, cmd, 600);
         assertEquals(0, r.code(), () -> String.join(" ", cmd) + ":\n" + r.err());
         return r;
-    }
-
-    private static boolean runs(String tool) {
-        try {
-            Process p = new ProcessBuilder(tool, "--version").redirectErrorStream(true).start();
-            p.getInputStream().readAllBytes();
-            return p.waitFor() == 0;
-        } catch (IOException e) {
-            return false;
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            return false;
-        }
     }
 }
