@@ -20,7 +20,10 @@ import org.parpe.serial.servo.ServoProtocol;
  * @param consoleSensors whether {@code accel} and {@code touch} readings may come from console commands
  */
 record SketchOptions(Driver driver, List<Integer> pins, int baud, ServoModel model, boolean consoleSensors) {
-    /** The Servo library drives at most 12 servos on an ATmega328P (one timer). */
+    /**
+     * The most PWM servos a sketch drives: on an AVR its Timer1 pulses them one after another, and 12
+     * pulses of up to 2.5 ms stretch the 20 ms frame to 30 ms, as the Arduino Servo library allows.
+     */
     static final int MAX_PWM = 12;
 
     /** The servo drivers of a sketch. */

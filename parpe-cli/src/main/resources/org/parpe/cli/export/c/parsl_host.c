@@ -14,12 +14,13 @@
 #include <string.h>
 
 #define MAX_STIMULI 4096
+#define MAX_STIMULUS_LINE 256   /* characters of a stimulus line (a longer comment is cut, a longer assignment refused) */
 #define MAX_WARNINGS 1024
 
 typedef struct {
     double time;
     int line;
-    char text[80];
+    char text[MAX_STIMULUS_LINE];
 } stimulus;
 
 static parsl_rt rt;
@@ -115,7 +116,7 @@ static const char *stimulus_file = "";
 
 static int read_stimuli(const char *file)
 {
-    char line[256];
+    char line[MAX_STIMULUS_LINE];
     int number = 0;
     int c = 0;
     FILE *in = fopen(file, "r");
