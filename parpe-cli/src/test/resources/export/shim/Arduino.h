@@ -16,6 +16,7 @@
 
 extern unsigned long shim_micros;
 inline unsigned long micros() { return shim_micros; }
+inline unsigned long millis() { return shim_micros / 1000; }
 inline void pinMode(uint8_t, uint8_t) {}
 inline void digitalWrite(uint8_t, uint8_t) {}
 
@@ -45,6 +46,7 @@ public:
     void print(long v) { start(); printf("%ld", v); }
     void print(int v) { print((long) v); }
     void print(unsigned int v) { print((long) v); }
+    void print(unsigned long v) { start(); printf("%lu", v); }
     void println(const char *s) { print(s); end(); }
 private:
     void start() {

@@ -6,7 +6,7 @@
 
 class Servo {
 public:
-    uint8_t attach(int pin) { pin_ = pin; return 0; }
+    uint8_t attach(int pin, int min, int max) { pin_ = pin; printf("attach %d %d %d\n", pin, min, max); return 0; }
     void writeMicroseconds(int us) { printf("servo %d %d\n", pin_, us); }
 private:
     int pin_ = -1;

@@ -2,6 +2,8 @@ package org.parpe.cli.export;
 
 import java.nio.file.Path;
 import java.util.Locale;
+import org.parpe.cli.UsageException;
+import org.parpe.core.export.CText;
 import org.parpe.core.model.Program;
 
 /**
@@ -22,13 +24,28 @@ final class ArduinoSketch {
         return Character.isDigit(n.charAt(0)) ? "parsl_" + n : n;
     }
 
-    static String ino(Program p, SketchOptions s, double tick) {
+    /**
+     * The tick in whole microseconds, as the sketch counts it with {@code micros()}; a tick that is
+     * not a whole number of microseconds would make the board's clock run fast or slow against the
+     * script's {@code $time}, so it is refused.
+     */
+    static long tickMicros(double tick) throws UsageException {
+        double us = tick * 1e6;
+        long whole = Math.round(us);
+        if (Math.abs(us - whole) > 1e-9 * us) {
+            throw new UsageException("--tick for an Arduino sketch must be a whole number of microseconds (the board"
+                    + " counts time with micros()), got " + tick + " s = " + us + " us; use " + whole / 1e6 + " s");
+        }
+        return whole;
+    }
+
+    static String ino(Program p, SketchOptions s, double tick) throws UsageException {
         StringBuilder b = new StringBuilder(ExportFiles.MARK).append(" from ")
-                .append(Path.of(p.file()).getFileName()).append(" (")
+                .append(CText.comment(Path.of(p.file()).getFileName().toString())).append(" (")
                 .append(s.driver().name().toLowerCase(Locale.ROOT)).append(" servos, tick ").append(tick).append(" s).\n");
         b.append("// Board code may be added below the generated part; parpe export then refuses to overwrite this file.\n");
         b.append("#include <Arduino.h>\n#include \"parsl_servo.h\"\n");
-        b.append("#define PARSL_TICK_US ").append(Math.round(tick * 1e6)).append("UL\n");
+        b.append("#define PARSL_TICK_US ").append(tickMicros(tick)).append("UL\n");
         if (s.driver() == SketchOptions.Driver.PWM) {
             b.append("static const uint8_t PARSL_PINS[] = {");
             int n = p.moduleIds().length;

@@ -16,6 +16,7 @@ import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.export.Board;
 import org.parpe.core.export.CExport;
+import org.parpe.core.export.DriverCost;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
 import org.parpe.core.model.Program;
@@ -96,6 +97,9 @@ public final class ExportCommand implements Callable<Integer> {
             default -> throw new UsageException("--target must be c or arduino, got '" + target + "'");
         };
         Board b = board(arduino);
+        if (arduino) {
+            ArduinoSketch.tickMicros(tick);
+        }
         SketchOptions sketch = arduino ? SketchOptions.of(servo, pins, baud, model, consoleSensors) : null;
         LoadResult r = ScriptLoader.load(file, ParamValues.parse(params));
         int refused = org.parpe.cli.LoadReport.exitCode(r, err::println);
@@ -106,8 +110,8 @@ public final class ExportCommand implements Callable<Integer> {
         if (sketch != null) {
             sketch.check(r.program(), diags);
         }
-        long driverRam = sketch == null ? 0 : sketch.ramBytes(r.program().moduleIds().length);
-        CExport.Result result = diags.hasErrors() ? null : CExport.export(r.program(), tick, b, driverRam, diags);
+        DriverCost driver = sketch == null ? DriverCost.NONE : sketch.cost(r.program().moduleIds().length);
+        CExport.Result result = diags.hasErrors() ? null : CExport.export(r.program(), tick, b, driver, diags);
         diags.all().forEach(d -> err.println(d.format()));
         if (result == null) {
             return 1;

@@ -3,6 +3,7 @@ package org.parpe.cli.export;
 import java.util.List;
 import org.parpe.cli.UsageException;
 import org.parpe.core.diag.DiagnosticSink;
+import org.parpe.core.export.DriverCost;
 import org.parpe.core.model.Program;
 import org.parpe.core.model.SensorDecl;
 import org.parpe.serial.servo.ServoModel;
@@ -19,7 +20,10 @@ import org.parpe.serial.servo.ServoProtocol;
  * @param consoleSensors whether {@code accel} and {@code touch} readings may come from console commands
  */
 record SketchOptions(Driver driver, List<Integer> pins, int baud, ServoModel model, boolean consoleSensors) {
-    /** The Servo library drives at most 12 servos on an ATmega328P (one timer). */
+    /**
+     * The most PWM servos a sketch drives: on an AVR its Timer1 pulses them one after another, and 12
+     * pulses of up to 2.5 ms stretch the 20 ms frame to 30 ms, as the Arduino Servo library allows.
+     */
     static final int MAX_PWM = 12;
 
     /** The servo drivers of a sketch. */
@@ -60,12 +64,20 @@ record SketchOptions(Driver driver, List<Integer> pins, int baud, ServoModel mod
     }
 
     /**
-     * RAM of the sketch's servo driver for {@code modules} modules: the packet buffer of a bus
-     * ({@code sketch.inc}: 16 + 2 × (ID + goal) per module, room for byte stuffing), or a Servo
-     * object and a pin per PWM servo.
+     * What the sketch's servo driver adds for {@code modules} modules on an AVR board, measured
+     * with avr-gcc 5.4 and Debian 12's Arduino core (SimulatedUnoTest prints the figures). RAM: per
+     * PWM servo its pulse width, port and pin mask (5 bytes); on a bus the packet buffer
+     * ({@code sketch.inc}: 16 + 2 × (ID + goal) per module, room for byte stuffing) plus the
+     * SoftwareSerial console (its object and 64-byte receive buffer: 106 bytes). Flash: the bus
+     * code (CRC or checksum, packets, SoftwareSerial) over the PWM timer code. Time: a pulse width
+     * per PWM servo (about 600 cycles), a packet entry sent and waited for on a bus (3 000).
      */
-    long ramBytes(int modules) {
-        return driver == Driver.PWM ? 2L * modules : 16 + 2L * modules * (1 + model.registers().goalSize());
+    DriverCost cost(int modules) {
+        if (driver == Driver.PWM) {
+            return new DriverCost(5L * modules, 0, 600L * modules);
+        }
+        return new DriverCost(16 + 2L * modules * (1 + model.registers().goalSize()) + 106,
+                driver == Driver.DXL ? 1300 : 1150, 3000L * modules);
     }
 
     /**

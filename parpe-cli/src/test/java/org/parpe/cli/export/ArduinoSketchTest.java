@@ -1,6 +1,7 @@
 package org.parpe.cli.export;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
@@ -62,6 +63,17 @@ class ArduinoSketchTest {
         List<double[]> expected = interpreter(TICKS + 1, "0.05 $direction=backward\n");
         String console = servo.equals("pwm") || esp32 ? "serial: ok" : "console: ok";
         assertTrue(lines.contains(console), () -> "the command was not accepted:\n" + String.join("\n", lines));
+        if (servo.equals("pwm")) {
+            // attached (500-2500 us) with its first pulse, not before the first pose: no jump to 0 degrees
+            List<String> attach = lines.stream().filter(l -> l.startsWith("attach ")).toList();
+            assertEquals(expected.get(0).length, attach.size(), () -> "one attach per servo:\n" + String.join("\n", lines));
+            for (String a : attach) {
+                String[] f = a.split(" ");
+                assertEquals("500 2500", f[2] + " " + f[3], a);
+                assertTrue(lines.get(lines.indexOf(a) + 1).startsWith("servo " + f[1] + " "),
+                        () -> a + " right before its first pulse:\n" + String.join("\n", lines));
+            }
+        }
         List<int[]> sent = servo.equals("pwm") ? pulses(lines, expected.get(0).length)
                 : packets(lines, servo, esp32 ? "serial2: " : "serial: ");
         assertEquals(TICKS, sent.size(), () -> "one write per tick:\n" + String.join("\n", lines));
@@ -69,7 +81,7 @@ class ArduinoSketchTest {
         for (int t = 0; t < TICKS; t++) {
             double[] angles = expected.get(t);
             for (int i = 0; i < angles.length; i++) {
-                int want = servo.equals("pwm") ? (int) Math.max(500, Math.min(2500, 1500 + angles[i] * (1000.0 / 90.0)))
+                int want = servo.equals("pwm") ? ((int) (SimulatedUnoTest.pulseUs(angles[i]) * 2 + 0.5) + 1) / 2
                         : model.ticks(angles[i]);
                 assertEquals(want, sent.get(t)[i], "tick " + t + ", module " + i + " (" + angles[i] + " degrees)");
             }
@@ -93,6 +105,12 @@ class ArduinoSketchTest {
         assertTrue(export.err.matches("(?s)[^\\n]*long-snake\\.xml:2:\\d+: error: the program needs about \\d+ bytes of RAM"
                 + " on uno .*but it has 2048.*"), export.err);
         assertTrue(Files.notExists(tmp.resolve("big")), "nothing is written when it does not fit");
+        assertFalse(fits.err.contains("warning"), fits.err);
+        Cli slow = Cli.run(List.of("export", script.toString(), "--target", "arduino", "--servo", "dxl", "--param",
+                "N=16", "--out", tmp.resolve("slow").toString()));
+        assertEquals(0, slow.code, () -> "16 modules fit: " + slow);
+        assertTrue(slow.err.matches("(?s)[^\\n]*long-snake\\.xml:2:\\d+: warning: a tick may take about 1\\d\\.\\d ms to"
+                + " compute on uno \\(estimate\\), longer than the tick of 10\\.0 ms.*use --tick 0\\.0\\d+ or more.*"), slow.err);
         Cli esp = Cli.run(List.of("export", script.toString(), "--target",
                 "arduino", "--servo", "dxl", "--param", "N=60", "--board", "esp32", "--out", tmp.resolve("esp").toString()));
         assertEquals(0, esp.code, () -> "an ESP32 holds 60 modules: " + esp);
@@ -120,7 +138,8 @@ class ArduinoSketchTest {
         for (List<String> args : List.of(List.of("--target", "fpga"), List.of("--target", "arduino", "--servo", "can"),
                 List.of("--target", "arduino", "--board", "host"), List.of("--servo", "dxl"),
                 List.of("--target", "arduino", "--servo", "dxl", "--model", "sts3215"),
-                List.of("--target", "arduino", "--pins", "2,3"), List.of("--tick", "0"))) {
+                List.of("--target", "arduino", "--pins", "2,3"), List.of("--tick", "0"),
+                List.of("--target", "arduino", "--tick", "0.0033333"))) {
             List<String> cmd = new ArrayList<>(List.of("export", script, "--out", out));
             cmd.addAll(args);
             Cli r = Cli.run(cmd);

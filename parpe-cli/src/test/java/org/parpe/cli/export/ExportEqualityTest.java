@@ -82,7 +82,7 @@ class ExportEqualityTest {
                 }
             }
         }
-        for (String n : List.of("functions", "divide-by-zero", "negative-duration", "period-zero")) {
+        for (String n : List.of("functions", "divide-by-zero", "negative-duration", "period-zero", "huge-angles")) {
             out.add(new Case(n, Path.of("src/test/resources/export/" + n + ".xml").toAbsolutePath(),
                     List.of("--duration", "3", "--seed", "7"), false));
         }

@@ -22,19 +22,25 @@ final class HostCompiler {
 
     /** Fails the test with a clear message when {@code tool} ({@code gcc}, {@code g++}) is missing. */
     static void require(String tool) {
-        try {
-            Process p = new ProcessBuilder(tool, "--version").redirectErrorStream(true).start();
-            p.getInputStream().readAllBytes();
-            if (p.waitFor(30, TimeUnit.SECONDS) && p.exitValue() == 0) {
-                return;
-            }
-        } catch (IOException e) {
-            // reported below
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
+        if (installed(tool)) {
+            return;
         }
         fail(tool + " is not installed: the export tests compile the generated C with the host compiler;"
                 + " install it with 'sudo apt-get install " + tool + "' (./test-all installs it)");
+    }
+
+    /** Whether {@code tool --version} runs and succeeds. */
+    static boolean installed(String tool) {
+        try {
+            Process p = new ProcessBuilder(tool, "--version").redirectErrorStream(true).start();
+            p.getInputStream().readAllBytes();
+            return p.waitFor(30, TimeUnit.SECONDS) && p.exitValue() == 0;
+        } catch (IOException e) {
+            return false;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return false;
+        }
     }
 
     /** The finished process's exit code and output. */

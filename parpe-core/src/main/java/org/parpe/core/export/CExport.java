@@ -1,9 +1,15 @@
 package org.parpe.core.export;
 
+import java.math.BigDecimal;
+import java.math.MathContext;
+import java.math.RoundingMode;
 import java.util.LinkedHashMap;
+import java.util.Locale;
 import java.util.Map;
+import java.util.stream.Stream;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
+import org.parpe.core.model.Control;
 import org.parpe.core.model.Program;
 
 /**
@@ -29,14 +35,14 @@ public final class CExport {
 
     /** Exports {@code program} run with tick {@code dt} for {@code board}; {@code null} after reporting errors. */
     public static Result export(Program program, double dt, Board board, DiagnosticSink diags) {
-        return export(program, dt, board, 0, diags);
+        return export(program, dt, board, DriverCost.NONE, diags);
     }
 
     /**
-     * Exports {@code program} for {@code board} whose board code adds {@code driverRam} bytes of
-     * RAM (servo buffers, pin tables); {@code null} after reporting errors.
+     * Exports {@code program} for {@code board} whose board code's servo driver costs {@code driver};
+     * {@code null} after reporting errors.
      */
-    public static Result export(Program program, double dt, Board board, long driverRam, DiagnosticSink diags) {
+    public static Result export(Program program, double dt, Board board, DriverCost driver, DiagnosticSink diags) {
         SourcePos root = new SourcePos(program.file(), 1, 1);
         if (program.main() == null) {
             diags.error(root, "the program has no <main>; an exported program needs one to run");
@@ -45,6 +51,16 @@ public final class CExport {
         if (!(dt > 0) || !Double.isFinite(dt)) {
             diags.error(root, "the tick must be > 0 s, got " + dt);
             return null;
+        }
+        for (Control k : program.controls()) {
+            for (String name : Stream.concat(Stream.of(k.name()), k.words().stream()).toList()) {
+                if (name.length() > CText.MAX_LITERAL) {
+                    diags.error(k.pos(), "the control name or word '" + name.substring(0, 20) + "…' has " + name.length()
+                            + " characters; an exported program compares names as C strings of at most "
+                            + CText.MAX_LITERAL);
+                    return null;
+                }
+            }
         }
         CProgram c = CProgram.of(program, dt);
         if (c.largestTableValue() > TABLE_LIMIT || c.modules() > TABLE_LIMIT / 6) {
@@ -57,9 +73,19 @@ public final class CExport {
         files.put("parsl_program.h", c.header());
         String source = c.source();
         files.put("parsl_program.c", source);
-        MemoryReport m = MemoryReport.of(c, board, statements(source), driverRam);
+        MemoryReport m = MemoryReport.of(c, board, statements(source), driver);
         for (String problem : m.problems()) {
             diags.error(program.robot().pos(), problem);
+        }
+        if (board.cyclesPerSecond() > 0) {
+            double seconds = tickCycles(c, driver) / (double) board.cyclesPerSecond();
+            if (seconds > dt) {
+                diags.warning(program.robot().pos(), String.format(Locale.ROOT, "a tick may take about %.1f ms to"
+                        + " compute on %s (estimate), longer than the tick of %.1f ms: the robot would move slower than"
+                        + " the script says (the sketch reports overruns on its console); use --tick %s or more, or"
+                        + " fewer modules", seconds * 1e3, board.word(), dt * 1e3,
+                        BigDecimal.valueOf(seconds * 1.2).round(new MathContext(2, RoundingMode.UP)).toPlainString()));
+            }
         }
         return m.fits() ? new Result(files, m) : null;
     }
@@ -70,7 +96,17 @@ public final class CExport {
      */
     public static MemoryReport estimate(Program program, double dt, Board board) {
         CProgram c = CProgram.of(program, dt);
-        return MemoryReport.of(c, board, statements(c.source()), 0);
+        return MemoryReport.of(c, board, statements(c.source()), DriverCost.NONE);
+    }
+
+    /**
+     * Cycles an AVR board takes for one tick of {@code c}: about 9 500 per module (advancing its
+     * automaton and evaluating its state's angle in 32-bit software floating point), 4 000 for
+     * the scheduler, plus the driver's. Measured by SimulatedUnoTest on simavr (the cycles the CPU
+     * is awake per tick: 30 000–120 000 for the examples); an estimate for a warning, not a bound.
+     */
+    static long tickCycles(CProgram c, DriverCost driver) {
+        return 4000 + 9500L * c.modules() + driver.cycles();
     }
 
     /** Generated statements (indented lines), the measure of expression code for the flash estimate. */

@@ -118,18 +118,18 @@ final class CTables {
         }
         int i = 0;
         for (String f : files.keySet()) {
-            c.append(i++ == 0 ? "" : ", ").append('"').append(CText.escape(f)).append('"');
+            c.append(i++ == 0 ? "" : ", ").append(CText.literal(f));
         }
         c.append("};\nconst char *const parsl_expr_text[] = {");
         for (int e = 0; e < exprTexts.size(); e++) {
-            c.append(e == 0 ? "\n    \"" : ",\n    \"").append(CText.escape(exprTexts.get(e))).append('"');
+            c.append(e == 0 ? "\n    " : ",\n    ").append(CText.literal(exprTexts.get(e)));
         }
         if (exprTexts.isEmpty()) {
             c.append("\"\"");
         }
         c.append("\n};\nconst char *const parsl_inst_groups[] = {");
         for (int g = 0; g < instGroups.size(); g++) {
-            c.append(g == 0 ? "" : ", ").append('"').append(CText.escape(instGroups.get(g))).append('"');
+            c.append(g == 0 ? "" : ", ").append(CText.literal(instGroups.get(g)));
         }
         if (instGroups.isEmpty()) {
             c.append("\"\"");
@@ -139,9 +139,9 @@ final class CTables {
         int s = 0;
         for (int a = 0; a < program.automata().size(); a++) {
             Automaton au = program.automata().get(a);
-            c.append(a == 0 ? "" : ", ").append('"').append(CText.escape(au.name())).append('"');
+            c.append(a == 0 ? "" : ", ").append(CText.literal(au.name()));
             for (StateDef st : au.states()) {
-                states.append(s++ == 0 ? "" : ", ").append('"').append(CText.escape(st.name())).append('"');
+                states.append(s++ == 0 ? "" : ", ").append(CText.literal(st.name()));
             }
         }
         if (program.automata().isEmpty()) {

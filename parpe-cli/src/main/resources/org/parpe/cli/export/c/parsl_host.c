@@ -7,18 +7,20 @@
  * exit codes as parpe run: 0 success, 2 usage errors, 3 run-time error.
  */
 #include "parsl_rt.h"
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #define MAX_STIMULI 4096
+#define MAX_STIMULUS_LINE 256   /* characters of a stimulus line (a longer comment is cut, a longer assignment refused) */
 #define MAX_WARNINGS 1024
 
 typedef struct {
     double time;
     int line;
-    char text[80];
+    char text[MAX_STIMULUS_LINE];
 } stimulus;
 
 static parsl_rt rt;
@@ -32,7 +34,7 @@ static int warned_count;
 /* The warning of parpe run, once per pair of instances: the later one wins. */
 static void report_overlap(parsl_rt *r, int16_t earlier, int16_t later, int16_t module)
 {
-    char t[64];
+    char t[PARSL_FORMAT_MAX];
     int i;
     uint16_t at = PARSL_U16(parsl_inst[later], PARSL_I_POS);
     for (i = 0; i < warned_count; i++) {
@@ -62,26 +64,94 @@ static int usage(const char *message)
     return 2;
 }
 
+/*
+ * A plain decimal number as parpe run reads times (org.parpe.core.model.Numbers.parsePlain):
+ * [+-]digits[.digits][e[+-]digits] or [+-].digits[...], finite; no hex, inf, nan or trailing text.
+ */
+static int parse_plain(const char *s, double *v)
+{
+    const char *p = s;
+    int digits = 0;
+    char *end;
+    if (*p == '+' || *p == '-') {
+        p++;
+    }
+    while (*p >= '0' && *p <= '9') {
+        p++;
+        digits++;
+    }
+    if (*p == '.') {
+        p++;
+        while (*p >= '0' && *p <= '9') {
+            p++;
+            digits++;
+        }
+    }
+    if (digits == 0) {
+        return -1;
+    }
+    if (*p == 'e' || *p == 'E') {
+        int exp_digits = 0;
+        p++;
+        if (*p == '+' || *p == '-') {
+            p++;
+        }
+        while (*p >= '0' && *p <= '9') {
+            p++;
+            exp_digits++;
+        }
+        if (exp_digits == 0) {
+            return -1;
+        }
+    }
+    if (*p != '\0') {
+        return -1;
+    }
+    *v = strtod(s, &end);
+    return *end == '\0' && isfinite(*v) ? 0 : -1;
+}
+
 /* Reads "TIME $NAME=VALUE" lines (# comments) into stimuli, sorted by time, stable. */
 static const char *stimulus_file = "";
 
 static int read_stimuli(const char *file)
 {
-    char line[256];
+    char line[MAX_STIMULUS_LINE];
     int number = 0;
+    int c = 0;
     FILE *in = fopen(file, "r");
     stimulus_file = file;
     if (in == NULL) {
         fprintf(stderr, "parpe: cannot read stimulus file '%s'\n", file);
         return 2;
     }
-    while (fgets(line, sizeof line, in) != NULL) {
-        char *hash = strchr(line, '#');
+    while (c != EOF) {
+        char *hash;
         char *body = line;
         char *end;
+        char *space;
         double t;
         int i;
+        size_t used = 0;
+        /* one whole line, however long: the rest of a long comment is dropped, a longer assignment refused */
+        while ((c = getc(in)) != EOF && c != '\n') {
+            if (used + 1 < sizeof line) {
+                line[used] = (char) c;
+            }
+            used++;
+        }
+        if (c == EOF && used == 0) {
+            break;
+        }
         number++;
+        line[used + 1 > sizeof line ? sizeof line - 1 : used] = '\0';
+        if (used + 1 > sizeof line && strchr(line, '#') == NULL) {
+            fprintf(stderr, "%s:%d:1: error: a stimulus assignment may have at most %d characters\n", file, number,
+                    (int) sizeof line - 1);
+            fclose(in);
+            return 2;
+        }
+        hash = strchr(line, '#');
         if (hash != NULL) {
             *hash = '\0';
         }
@@ -95,13 +165,29 @@ static int read_stimuli(const char *file)
         if (*body == '\0') {
             continue;
         }
-        t = strtod(body, &end);
+        for (space = body; *space != '\0' && *space != ' ' && *space != '\t'; space++) {
+        }
+        end = space;
+        if (*space != '\0') {
+            char keep = *space;
+            *space = '\0';
+            if (parse_plain(body, &t) != 0 || !(t >= 0)) {
+                *space = keep;
+                fprintf(stderr, "%s:%d:1: error: time must be a number of seconds >= 0, got '%.*s'\n", file, number,
+                        (int) (space - body), body);
+                fclose(in);
+                return 2;
+            }
+            *space = keep;
+        } else {
+            t = -1;
+        }
         if (stimulus_count == MAX_STIMULI) {
             fprintf(stderr, "%s:%d:1: error: more than %d stimuli\n", file, number, MAX_STIMULI);
             fclose(in);
             return 2;
         }
-        if (end == body || !(t >= 0) || (*end != ' ' && *end != '\t')) {
+        if (t < 0) {
             fprintf(stderr, "%s:%d:1: error: expected 'TIME $NAME=VALUE', got '%s'\n", file, number, body);
             fclose(in);
             return 2;
@@ -123,7 +209,7 @@ static int read_stimuli(const char *file)
 
 static void row(FILE *out)
 {
-    char buf[64];
+    char buf[PARSL_FORMAT_MAX];
     int i;
     parsl_format(buf, rt.time);
     fputs(buf, out);
@@ -148,9 +234,19 @@ int main(int argc, char **argv)
         if (i + 1 >= argc) {
             return usage("an option needs a value");
         } else if (strcmp(argv[i], "--duration") == 0) {
-            duration = strtod(argv[++i], NULL);
+            /* as parpe run: a number >= 0 of at most 1e9 ticks */
+            if (parse_plain(argv[++i], &duration) != 0 || !(duration >= 0) || duration / PARSL_DT > 1e9) {
+                return usage("--duration must be a number of seconds >= 0 and of at most 1e9 ticks");
+            }
         } else if (strcmp(argv[i], "--seed") == 0) {
-            seed = strtoull(argv[++i], NULL, 10);
+            char *end;
+            long long s;
+            errno = 0;
+            s = strtoll(argv[++i], &end, 10);
+            if (end == argv[i] || *end != '\0' || errno != 0 || argv[i][0] == ' ' || argv[i][0] == '\t') {
+                return usage("--seed must be a whole number");
+            }
+            seed = (unsigned long long) s;
         } else if (strcmp(argv[i], "--stimulus") == 0) {
             if (read_stimuli(argv[++i]) != 0) {
                 return 2;

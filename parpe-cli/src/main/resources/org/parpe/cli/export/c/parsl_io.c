@@ -186,7 +186,7 @@ int parsl_format(char *buf, double v)
     char digits[24];
     int nd = 0;
     if (!(a < 0x1p63)) {
-        return snprintf(buf, 64, "%.6f", v);
+        return snprintf(buf, PARSL_FORMAT_MAX, "%.6f", v);
     }
     ip = (long long) a;
     f = a - (double) ip;

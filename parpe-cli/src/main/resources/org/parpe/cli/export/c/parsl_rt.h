@@ -130,7 +130,10 @@ void parsl_set_reading(parsl_rt *r, int16_t i, int16_t channel, double value);
  * or a sensor override "$3_touch_left=1". Returns 0, or -1 with a message in msg (size n).
  */
 int parsl_assign(parsl_rt *r, const char *text, char *msg, size_t n);
-/* Writes v as C's "%.6f" with the trace rules of PARSL.md section 13 rule 23 and -0 as 0; returns the length. */
+/* Room for any finite double written by parsl_format ("%.6f" of -1.8e308: 318 characters and the NUL). */
+#define PARSL_FORMAT_MAX 320
+/* Writes v as C's "%.6f" with the trace rules of PARSL.md section 13 rule 23 and -0 as 0 into buf
+   (PARSL_FORMAT_MAX bytes); returns the length. */
 int parsl_format(char *buf, double v);
 /* Describes the error that stopped the run (without its place); returns msg. */
 const char *parsl_error_text(const parsl_rt *r, char *msg, size_t n);
