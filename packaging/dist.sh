@@ -55,7 +55,7 @@ echo "dist.sh: runtime modules $modules" >&2
 
 common=(--name parpe-ide --app-version "$version" --vendor "PARPE"
         --description "PolyKinetic Phase Automata Robot Programming Environment")
-icon=packaging/parpe.png
+icon=parpe-gui/src/main/resources/org/parpe/gui/parpe.png
 echo "dist.sh: app image for $os $arch" >&2
 jpackage --type app-image "${common[@]}" --dest "$out" --input "$input" \
     --main-jar parpe-gui.jar --main-class org.parpe.gui.Main \

@@ -26,7 +26,7 @@ ln -s ../../opt/parpe/bin/parpe "$pkg/usr/bin/parpe"
 ln -s ../../opt/parpe/bin/parpe-ide "$pkg/usr/bin/parpe-ide"
 install -m 644 "$here/parpe.desktop" "$pkg/usr/share/applications/parpe.desktop"
 install -m 644 "$here/parpe-mime.xml" "$pkg/usr/share/mime/packages/parpe.xml"
-install -m 644 "$here/../parpe.png" "$pkg/usr/share/icons/hicolor/256x256/apps/parpe.png"
+install -m 644 "$here/../../parpe-gui/src/main/resources/org/parpe/gui/parpe.png" "$pkg/usr/share/icons/hicolor/256x256/apps/parpe.png"
 
 # Depends: the packages of the shared libraries the runtime's native code links to, and GTK 3
 # for SWT (which loads it at run time, so ldd cannot see it). No versions: Ubuntu 24.04's

@@ -295,7 +295,7 @@ final class FileActions {
     }
 
     boolean saveAs() {
-        Path chosen = saveTarget.ask(saveFolder(file, Examples.folder(), Path.of(System.getProperty("user.home"))), fileName());
+        Path chosen = saveTarget.ask(saveFolder(file, Examples.bundled(), Path.of(System.getProperty("user.home"))), fileName());
         if (chosen == null) {
             return false;
         }
