@@ -31,14 +31,13 @@ install -m 644 "$here/../../parpe-gui/src/main/resources/org/parpe/gui/parpe.png
 # Depends: the packages of the shared libraries the runtime's native code links to, and GTK 3
 # for SWT (which loads it at run time, so ldd cannot see it). No versions: Ubuntu 24.04's
 # renamed t64 libraries provide these names.
-depends=$( { echo libgtk-3-0
-    find "$pkg/opt/parpe" -type f \( -name '*.so' -o -path '*/bin/*' \) -exec ldd {} + 2>/dev/null \
-        | sed -n 's|.*=> \(/[^ ]*\) .*|\1|p' | sort -u | while read -r lib; do
-            case "$lib" in "$pkg"/*) continue ;; esac
-            real=$(readlink -f "$lib")
-            { dpkg -S "$lib" 2>/dev/null || dpkg -S "$real" 2>/dev/null || dpkg -S "${real#/usr}" 2>/dev/null \
-                || dpkg -S "/usr$real" 2>/dev/null || echo "deb.sh: no package owns $lib" >&2; } | head -n 1 | cut -d: -f1
-        done; } | sort -u | paste -sd, | sed 's/,/, /g')
+libs=$(find "$pkg/opt/parpe" -type f \( -name '*.so' -o -path '*/bin/*' \) -exec ldd {} + 2>/dev/null \
+    | sed -n 's|.*=> \(/[^ ]*\) .*|\1|p' | grep -v "^$pkg/" | sort -u)
+# One dpkg -S for all (it reads every package's file list); with the merged /usr, a library is
+# owned under /lib or /usr/lib, so both spellings are asked.
+owners=$(for l in $libs; do r=$(readlink -f "$l"); echo "$l"; echo "$r"; echo "${r#/usr}"; done | sort -u \
+    | { xargs dpkg -S 2>/dev/null || true; } | cut -d: -f1 | sed 's/, /\n/g' | sort -u)
+depends=$( { echo libgtk-3-0; echo "$owners"; } | sort -u | paste -sd, | sed 's/,/, /g')
 size=$(du -sk "$pkg" | cut -f1)
 sed -e "s/@VERSION@/$version/" -e "s/@ARCH@/$arch/" -e "s/@SIZE@/$size/" -e "s/@DEPENDS@/$depends/" \
     "$here/control" > "$pkg/DEBIAN/control"
