@@ -34,8 +34,8 @@ echo "test-deb-install: $(basename "$deb") into a fresh Debian 12 root from $mir
 TMPDIR=$out mmdebstrap --variant=apt --quiet \
     --customize-hook="upload '$deb' /tmp/parpe.deb" \
     --customize-hook="upload '$root/packaging/linux/deb-test-inside.sh' /tmp/inside.sh" \
-    --customize-hook="chroot \"\$1\" env DISPLAY=:$n sh /tmp/inside.sh > '$out/inside.log' 2>&1; echo \$? > '$out/inside.rc'" \
-    --customize-hook="if [ -e \"\$1/tmp/ide.png\" ]; then download /tmp/ide.png '$out/ide.png'; fi" \
+    --customize-hook="chroot \"\$1\" env DISPLAY=:$n sh /tmp/inside.sh > '$out/inside.log' 2>&1; echo \$? > '$out/inside.rc'; touch \"\$1/tmp/ide.png\"" \
+    --customize-hook="download /tmp/ide.png '$out/ide.png'" \
     bookworm "$out/root" "deb $mirror bookworm main" < /dev/null
 rm -rf "$out/root"
 grep -E '^(ok|FAIL|the \.deb)' "$out/inside.log" >&2
