@@ -30,8 +30,11 @@ install -m 644 "$here/../../parpe-gui/src/main/resources/org/parpe/gui/parpe.png
 
 # Depends: the packages of the shared libraries the runtime's native code links to, and GTK 3
 # for SWT (which loads it at run time, so ldd cannot see it). No versions: Ubuntu 24.04's
-# renamed t64 libraries provide these names.
-libs=$(find "$pkg/opt/parpe" -type f \( -name '*.so' -o -path '*/bin/*' \) -exec ldd {} + 2>/dev/null \
+# renamed t64 libraries provide these names. Left out: the natives of what PARPE never uses
+# (the splash screen, javax.sound, JPEG images), which would add libjpeg62-turbo, libgif7,
+# libpng16-16 and libasound2 (Debian's names; Ubuntu's JPEG library has another).
+libs=$(find "$pkg/opt/parpe" -type f \( -name '*.so' -o -path '*/bin/*' \) \
+        ! -name libsplashscreen.so ! -name libjsound.so ! -name libjavajpeg.so -exec ldd {} + 2>/dev/null \
     | sed -n 's|.*=> \(/[^ ]*\) .*|\1|p' | grep -v "^$pkg/" | sort -u)
 # One dpkg -S for all (it reads every package's file list); with the merged /usr, a library is
 # owned under /lib or /usr/lib, so both spellings are asked.
