@@ -42,8 +42,9 @@ final class Ide {
         try {
             main = Class.forName(MAIN);
         } catch (ClassNotFoundException e) {
-            err.println("parpe: the IDE is not part of this command-line jar; open it with the ./parpe launcher: "
-                    + "./parpe gui " + String.join(" ", args.length > 0 && args[0].equals("gui")
+            // the command-line jar of a source checkout: its launcher starts the IDE's own jar
+            err.println("parpe: the IDE is not in this jar; to open the script in the IDE, run: ./parpe gui "
+                    + String.join(" ", args.length > 0 && args[0].equals("gui")
                     ? java.util.Arrays.copyOfRange(args, 1, args.length) : args));
             return 2;
         }
