@@ -56,7 +56,7 @@ as_student timeout 180 parpe-ide $examples/tutorial/03-hello-snake.xml --run-for
 as_student sh -c "cd /home/student/PARPE/examples/tutorial && timeout 180 parpe 04-waves-snake.xml --exit" \
     > /tmp/open.log 2>&1 && ok "parpe FILE.xml opens the IDE" || { cat /tmp/open.log; fail "parpe FILE.xml"; }
 # Lesson 11 in the student's folder: optimize writes its result beside the script.
-as_student sh -c "cd /home/student/PARPE && parpe optimize examples/tutorial/10-race-snake.xml --sim snake:n=8 --duration 2 --budget 6 --seed 1" \
+as_student sh -c "cd /home/student/PARPE && parpe optimize examples/tutorial/10-race-snake.xml --sim snake:n=8 --duration 1 --budget 8 --seed 1" \
     > /tmp/opt.log 2>&1 || { cat /tmp/opt.log; fail "lesson 11's optimize in ~/PARPE"; }
 [ -f /home/student/PARPE/examples/tutorial/10-race-snake-optimised.xml ] && ok "lesson 11's optimize wrote its script" \
     || fail "lesson 11's optimize wrote no script"
