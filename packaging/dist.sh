@@ -43,14 +43,17 @@ mvn -q -B -DskipTests -Dexec.skip=true -pl parpe-cli,parpe-gui -am package \
     -DincludeScope=runtime -Dmdep.stripVersion=true -DoutputDirectory="$input"
 cp parpe-cli/target/parpe-cli-*.jar "$input/parpe-cli.jar"
 cp parpe-gui/target/parpe-gui-*.jar "$input/parpe-gui.jar"
-jars=("$input"/*.jar)
 cp -r examples docs "$input/"
 [ -d spec ] && cp -r spec "$input/"
 cp README.md "$input/"
 
-# The Java runtime holds only the modules the jars use (jdeps), not the whole JDK.
-modules=$(jdeps --print-module-deps --ignore-missing-deps --multi-release 17 \
-    --class-path "$(IFS=:; echo "${jars[*]}")" "${jars[@]}" 2>/dev/null | tail -n 1)
+# The Java runtime holds only the modules the jars use (jdeps), not the whole JDK. Relative
+# names, and the system's class-path separator, so that Windows' jdeps understands them.
+sep=:
+[ "$os" = windows ] && sep=';'
+modules=$(cd "$input" && jdeps --print-module-deps --ignore-missing-deps --multi-release 17 \
+    --class-path "$(ls ./*.jar | paste -sd "$sep")" ./*.jar 2>/dev/null | tail -n 1)
+case "$modules" in java.base*) ;; *) echo "dist.sh: jdeps found no modules ('$modules')" >&2; exit 1 ;; esac
 echo "dist.sh: runtime modules $modules" >&2
 
 common=(--name parpe-ide --app-version "$version" --vendor "PARPE"
