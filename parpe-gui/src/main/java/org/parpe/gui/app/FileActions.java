@@ -173,8 +173,8 @@ final class FileActions {
             return;
         }
         FileDialog d = new FileDialog(shell, SWT.OPEN);
-        d.setFilterExtensions(new String[] {"*.xml", "*"});
-        d.setFilterNames(new String[] {"PARSL scripts (*.xml)", "All files"});
+        d.setFilterExtensions(new String[] {"*.xml;*.parsl", "*"});
+        d.setFilterNames(new String[] {"PARSL scripts (*.xml, *.parsl)", "All files"});
         if (file != null && file.getParent() != null) {
             d.setFilterPath(file.getParent().toString());
         }
