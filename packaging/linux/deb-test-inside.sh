@@ -35,6 +35,12 @@ apt-get check -q > /dev/null 2>&1 && ok "apt-get check" || fail "apt-get check a
 [ "$(command -v parpe-ide)" = /usr/bin/parpe-ide ] && ok "parpe-ide on PATH" || fail "parpe-ide is not /usr/bin/parpe-ide"
 as_student parpe --version || fail "parpe --version"
 
+# Size and memory: a trimmed runtime and each library once (179 MB before); a bounded heap.
+size=$(du -sm /opt/parpe | cut -f1)
+[ "$size" -le 100 ] && ok "installed size $size MB" || fail "installed size $size MB, more than 100 MB"
+grep -q -- '-Xmx' /opt/parpe/lib/app/parpe.cfg && ok "parpe's heap is bounded: $(grep -o -- '-Xmx[0-9a-z]*' /opt/parpe/lib/app/parpe.cfg)" \
+    || fail "parpe's heap is not bounded (/opt/parpe/lib/app/parpe.cfg)"
+
 # 3. Every installed example and lesson checks, from PATH.
 as_student sh -c "cd /tmp && parpe check $examples/*.xml $examples/tutorial/*.xml" > /tmp/check.log 2>&1 \
     && ok "parpe check: $(grep -c ': ok$' /tmp/check.log) scripts" || { cat /tmp/check.log; fail "parpe check on the installed examples"; }
