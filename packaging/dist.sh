@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Builds PARPE's installable image for the operating system it runs on, with jpackage (JDK 17),
 # into target/dist/. The image has its own Java runtime: no JDK or Maven is needed to run it.
-#   Linux:   target/dist/parpe-ide/ (app image), parpe-VERSION-linux-ARCH.tar.gz and a .deb
-#            (desktop entry, icon, .parsl/.xml file associations)
-#   Windows: target/dist/parpe-ide/ and an .msi (run from Git Bash; needs the WiX toolset 3)
+#   Linux:   target/dist/parpe-ide/ (app image), parpe-VERSION-linux-ARCH.tar.gz and
+#            parpe_VERSION_DEBARCH.deb (packaging/linux/deb.sh: menu entry, icon, .parsl files)
+#   Windows: target/dist/parpe-ide/ and a per-user .msi (run from Git Bash; needs the WiX toolset 3)
 #   macOS:   target/dist/parpe-ide.app and a .dmg
 # The image holds two programs: parpe-ide (the IDE) and parpe (the command line), plus the
 # examples, the documentation and the PARSL specification.
@@ -30,51 +30,63 @@ case "$(uname -s)" in
 esac
 arch=$(uname -m)
 
-cli_jar=parpe-cli/target/parpe.jar
-gui_jar=parpe-gui/target/parpe-gui.jar
-if [ ! -f "$cli_jar" ] || [ ! -f "$gui_jar" ]; then
-    echo "dist.sh: building the jars" >&2
-    mvn -q -B -DskipTests -Dexec.skip=true package
-fi
-
 out=$root/target/dist
 input=$out/input
 rm -rf "$out"
 mkdir -p "$input"
-cp "$cli_jar" "$gui_jar" "$input/"
+
+# The jars: each module's own jar and each library once (not two fat jars that both carry the
+# libraries), all on the one class path of both launchers.
+echo "dist.sh: building the jars" >&2
+mvn -q -B -DskipTests -Dexec.skip=true -pl parpe-cli,parpe-gui -am package \
+    org.apache.maven.plugins:maven-dependency-plugin:3.7.1:copy-dependencies \
+    -DincludeScope=runtime -Dmdep.stripVersion=true -DoutputDirectory="$input"
+cp parpe-cli/target/parpe-cli-*.jar "$input/parpe-cli.jar"
+cp parpe-gui/target/parpe-gui-*.jar "$input/parpe-gui.jar"
 cp -r examples docs "$input/"
 [ -d spec ] && cp -r spec "$input/"
 cp README.md "$input/"
 
+# The Java runtime holds only the modules the jars use (jdeps), not the whole JDK. Relative
+# names, and the system's class-path separator, so that Windows' jdeps understands them.
+sep=:
+[ "$os" = windows ] && sep=';'
+modules=$(cd "$input" && jdeps --print-module-deps --ignore-missing-deps --multi-release 17 \
+    --class-path "$(ls ./*.jar | paste -sd "$sep")" ./*.jar 2>/dev/null | tail -n 1)
+case "$modules" in java.base*) ;; *) echo "dist.sh: jdeps found no modules ('$modules')" >&2; exit 1 ;; esac
+echo "dist.sh: runtime modules $modules" >&2
+
 common=(--name parpe-ide --app-version "$version" --vendor "PARPE"
         --description "PolyKinetic Phase Automata Robot Programming Environment")
-icon=packaging/parpe.png
+icon=parpe-gui/src/main/resources/org/parpe/gui/parpe.png
 echo "dist.sh: app image for $os $arch" >&2
-jpackage --type app-image "${common[@]}" --dest "$out" --input "$input" --main-jar parpe-gui.jar \
+jpackage --type app-image "${common[@]}" --dest "$out" --input "$input" \
+    --main-jar parpe-gui.jar --main-class org.parpe.gui.Main \
     --java-options '-Dparpe.examples=$APPDIR/examples' \
     --add-launcher parpe=packaging/parpe-cli.properties \
-    --jlink-options '--strip-debug --no-man-pages --no-header-files' \
+    --add-modules "$modules" \
+    --jlink-options '--strip-debug --no-man-pages --no-header-files --strip-native-commands --compress=2' \
     $( [ "$os" = linux ] && echo --icon "$icon" )
 
 case "$os" in
     linux)
         image=$out/parpe-ide
         tar -czf "$out/parpe-$version-linux-$arch.tar.gz" -C "$out" parpe-ide
-        if [ "$installer" = 1 ]; then
-            jpackage --type deb "${common[@]}" --dest "$out" --app-image "$image" \
-                --linux-shortcut --linux-menu-group Education --linux-app-category education \
-                --icon "$icon" --file-associations packaging/parsl-files.properties \
-                --file-associations packaging/xml-files.properties
-        fi
+        [ "$installer" = 1 ] && packaging/linux/deb.sh "$image" "$version" "$out"
         cli=$image/bin/parpe ;;
     windows)
+        # Per-user: installs into the user's own programs folder, so that lab PCs without
+        # administrator rights can install it. The upgrade code makes a newer .msi replace this one.
         image=$out/parpe-ide
         [ "$installer" = 1 ] && jpackage --type msi "${common[@]}" --dest "$out" --app-image "$image" \
-            --win-menu --win-shortcut --win-dir-chooser --file-associations packaging/parsl-files.properties
+            --win-per-user-install --win-menu --win-menu-group PARPE --win-shortcut \
+            --win-upgrade-uuid 6f1b9a52-7f0e-4c4e-9b1e-5a7d2c3e8f10 \
+            --file-associations packaging/parsl-files.properties
         cli=$image/parpe.exe ;;
     macos)
         image=$out/parpe-ide.app
         [ "$installer" = 1 ] && jpackage --type dmg "${common[@]}" --dest "$out" --app-image "$image" \
+            --mac-package-identifier org.parpe.ide --mac-package-name PARPE \
             --file-associations packaging/parsl-files.properties
         cli=$image/Contents/MacOS/parpe ;;
 esac

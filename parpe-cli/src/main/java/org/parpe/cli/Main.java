@@ -13,7 +13,7 @@ import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
 /** The {@code parpe} command line: checks and runs PARSL scripts headless. */
-@Command(name = "parpe", mixinStandardHelpOptions = true, version = "PARPE 0.1.0",
+@Command(name = "parpe", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
         description = "PolyKinetic Phase Automata Robot Programming Environment: check and run PARSL scripts.",
         subcommands = {
             CheckCommand.class,
@@ -32,7 +32,8 @@ import picocli.CommandLine.Command;
             CommandLine.HelpCommand.class
         },
         footer = {"", "  gui [FILE] [--run-for S] [--screenshot F.png] [--exit]",
-                  "          Open the IDE (./parpe with no arguments does the same).",
+                  "          Open the IDE (parpe with no arguments, or with just a .xml or .parsl",
+                  "          file, does the same).",
                   "", "Exit codes: 0 success, 1 script errors, 2 usage errors, 3 run-time error,",
                   "            4 internal error."})
 public final class Main implements Runnable {
@@ -58,8 +59,20 @@ public final class Main implements Runnable {
         System.exit(execute(args, System.out, System.err));
     }
 
+    /** {@code --version}: PARPE's version from the build. */
+    static final class Version implements CommandLine.IVersionProvider {
+        @Override
+        public String[] getVersion() {
+            return new String[] {"PARPE " + org.parpe.core.Version.NUMBER};
+        }
+    }
+
     /** Runs the command line with the given streams; returns the exit code. */
     public static int execute(String[] args, PrintStream out, PrintStream err) {
+        // Without the IDE (the command-line jar alone), `parpe` with no arguments prints the usage.
+        if (Ide.wanted(args) && (args.length > 0 || Ide.present())) {
+            return Ide.open(args, err);
+        }
         CommandLine cl = new CommandLine(new Main());
         cl.setOut(new PrintWriter(out, true));
         cl.setErr(new PrintWriter(err, true));
@@ -104,7 +117,7 @@ public final class Main implements Runnable {
         String where;
         try {
             Path f = Files.createTempFile("parpe-crash-", ".txt"); // a new name of its own, then the output rules
-            AtomicFiles.write(f, "PARPE 0.1.0 internal error\n" + trace);
+            AtomicFiles.write(f, "PARPE " + org.parpe.core.Version.NUMBER + " internal error\n" + trace);
             where = f.toString();
         } catch (IOException io) {
             where = "(could not write a crash file: " + io.getMessage() + ")";

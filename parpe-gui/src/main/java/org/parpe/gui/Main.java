@@ -64,6 +64,8 @@ public final class Main {
     }
 
     private static int loop(Display display, LaunchOptions options) {
+        // The installed PARPE copies its examples to the user's own folder on first use.
+        org.parpe.gui.app.Examples.folder();
         IdeWindow ide = new IdeWindow(display, new Prefs(Prefs.defaultHome()));
         ide.open(options.file(), options.automated());
         Automation auto = options.automated() ? Automation.start(ide, options) : null;

@@ -14,13 +14,68 @@ import org.parpe.gui.Main;
  * {@code parpe.examples}, else {@code examples/} beside the repository root found by walking
  * up from the jar (the launcher runs {@code parpe-gui/target/parpe-gui.jar}), else
  * {@code ./examples}.
+ *
+ * <p>The installed PARPE (its examples are not in a source checkout) copies them to the user's
+ * own {@code ~/PARPE/examples} on first use and uses that copy, so that lessons that write files
+ * beside a script (lesson 11's {@code parpe optimize}) work and a student's changes are kept.
  */
 public final class Examples {
     private Examples() {
     }
 
-    /** The examples folder, or {@code null} if none is found. */
+    private static volatile Path folder;
+
+    /** The examples folder, or {@code null} if none is found: the user's copy where PARPE is installed. */
     public static Path folder() {
+        Path f = folder;
+        if (f == null) {
+            Path bundled = bundled();
+            f = bundled == null || !installed(bundled) ? bundled
+                    : copyForUser(bundled, Path.of(System.getProperty("user.home")));
+            folder = f;
+        }
+        return f;
+    }
+
+    /** Whether this is an installed PARPE (its examples are not in a source checkout). */
+    public static boolean installed() {
+        Path bundled = bundled();
+        return bundled != null && installed(bundled);
+    }
+
+    /** Whether {@code bundled} is an installed PARPE's examples rather than a source checkout's. */
+    static boolean installed(Path bundled) {
+        return !Files.exists(bundled.resolveSibling("pom.xml"));
+    }
+
+    /**
+     * Copies the files of {@code bundled} that {@code home}/PARPE/examples lacks into it (a
+     * student's own changes are never overwritten; examples new in an update appear) and returns
+     * that folder; returns {@code bundled} when the home folder cannot be written.
+     */
+    static Path copyForUser(Path bundled, Path home) {
+        Path copy = home.resolve("PARPE").resolve("examples");
+        try (Stream<Path> all = Files.walk(bundled)) {
+            for (Path p : (Iterable<Path>) all::iterator) {
+                Path target = copy.resolve(bundled.relativize(p).toString());
+                if (Files.isDirectory(p)) {
+                    Files.createDirectories(target);
+                } else if (!Files.exists(target)) {
+                    Files.copy(p, target);
+                    // the installed files are read-only; the student's copy is theirs to change
+                    target.toFile().setWritable(true, true);
+                }
+            }
+            return copy;
+        } catch (IOException | SecurityException e) {
+            System.err.println("parpe gui: cannot copy the examples to " + copy + " (" + e.getMessage()
+                    + "); using the installed ones, which open as copies");
+            return bundled;
+        }
+    }
+
+    /** The examples that come with PARPE, or {@code null} if none is found. */
+    static Path bundled() {
         String prop = System.getProperty("parpe.examples");
         if (prop != null && Files.isDirectory(Path.of(prop))) {
             return Path.of(prop).toAbsolutePath().normalize();
@@ -62,9 +117,9 @@ public final class Examples {
         }
     }
 
-    /** The tutorial's folder, {@code docs/tutorial} beside the examples folder, or {@code null}. */
+    /** The tutorial's folder, {@code docs/tutorial} beside the bundled examples folder, or {@code null}. */
     public static Path tutorialFolder() {
-        Path examples = folder();
+        Path examples = bundled();
         Path t = examples == null ? null : examples.getParent().resolve("docs").resolve("tutorial");
         return t != null && Files.isDirectory(t) ? t : null;
     }

@@ -195,8 +195,8 @@ final class FileActions {
             return;
         }
         FileDialog d = new FileDialog(shell, SWT.OPEN);
-        d.setFilterExtensions(new String[] {"*.xml", "*"});
-        d.setFilterNames(new String[] {"PARSL scripts (*.xml)", "All files"});
+        d.setFilterExtensions(new String[] {"*.xml;*.parsl", "*"});
+        d.setFilterNames(new String[] {"PARSL scripts (*.xml, *.parsl)", "All files"});
         if (file != null && file.getParent() != null) {
             d.setFilterPath(file.getParent().toString());
         }
@@ -370,7 +370,7 @@ final class FileActions {
     }
 
     boolean saveAs() {
-        Path chosen = saveTarget.ask(saveFolder(file, Examples.folder(), Path.of(System.getProperty("user.home"))), fileName());
+        Path chosen = saveTarget.ask(saveFolder(file, Examples.bundled(), Path.of(System.getProperty("user.home"))), fileName());
         if (chosen == null) {
             return false;
         }

@@ -18,7 +18,7 @@ final class HelpText {
             "3D view: drag to rotate, right-drag to pan, wheel to zoom, double-click to reframe.",
             "The full language is specified in PARSL.md.");
     static final String ABOUT = String.join("\n",
-            "PARPE: PolyKinetic Phase Automata Robot Programming Environment",
+            "PARPE " + org.parpe.core.Version.NUMBER + ": PolyKinetic Phase Automata Robot Programming Environment",
             "",
             "An open reimplementation of PARC's PolyKinetic environment for PolyBot modular robots:",
             "write PARSL, run it in the simulator or on the robot, steer it live.",

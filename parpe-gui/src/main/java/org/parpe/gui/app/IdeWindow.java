@@ -69,6 +69,8 @@ public final class IdeWindow {
         this.prefs = prefs;
         shell = new Shell(display, SWT.SHELL_TRIM);
         shell.setText("PARPE");
+        shell.setImage(icon(display));
+        shell.addDisposeListener(e -> shell.getImage().dispose());
         shell.setLayout(grid(1, 0));
         runs = new RunActions(this);
         toolbar = new RunToolBar(shell, runs, prefs);
@@ -489,5 +491,17 @@ public final class IdeWindow {
     /** The last program that loaded, or null. */
     public Program program() {
         return program;
+    }
+
+    /** PARPE's icon (the one the desktop menu shows), for the window's title bar and task bar. */
+    static org.eclipse.swt.graphics.Image icon(Display display) {
+        try (java.io.InputStream in = IdeWindow.class.getResourceAsStream("/org/parpe/gui/parpe.png")) {
+            if (in == null) {
+                throw new IllegalStateException("parpe.png is missing from the build of parpe-gui");
+            }
+            return new org.eclipse.swt.graphics.Image(display, in);
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
     }
 }

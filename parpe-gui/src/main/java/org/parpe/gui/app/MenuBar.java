@@ -222,6 +222,8 @@ final class MenuBar {
                     + " examples. It is also online with the PARPE sources, in docs/tutorial/index.md.");
             return;
         }
-        new TutorialWindow(ide.shell(), folder, p -> ide.files().openExample(p)).open();
+        TutorialWindow tutorial = new TutorialWindow(ide.shell(), folder, p -> ide.files().openExample(p));
+        tutorial.showInstalledCommands(Examples.installed());
+        tutorial.open();
     }
 }

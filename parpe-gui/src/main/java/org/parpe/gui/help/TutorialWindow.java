@@ -46,6 +46,7 @@ public final class TutorialWindow {
     private final List<Image> images = new ArrayList<>();
     private final Consumer<Path> openScript;
     private Path script;
+    private boolean installed;
 
     /**
      * A tutorial window over {@code folder} (holding {@code index.md}, the numbered lessons and
@@ -104,6 +105,11 @@ public final class TutorialWindow {
         return b;
     }
 
+    /** Shows commands as the installed PARPE runs them ({@code parpe …}, see {@link CommandNames}); call before {@link #open}. */
+    public void showInstalledCommands(boolean installed) {
+        this.installed = installed;
+    }
+
     /** Opens the window on the first page. */
     public void open() {
         shell.open();
@@ -137,7 +143,7 @@ public final class TutorialWindow {
         index.setSelection(i);
         Markdown.Page page;
         try {
-            page = Markdown.parse(Files.readString(pages.get(i), StandardCharsets.UTF_8));
+            page = Markdown.parse(CommandNames.forInstall(Files.readString(pages.get(i), StandardCharsets.UTF_8), installed));
         } catch (IOException | RuntimeException e) {
             text.setText("Cannot read " + pages.get(i) + ": " + e.getMessage());
             return;
