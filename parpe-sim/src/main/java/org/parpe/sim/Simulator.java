@@ -16,6 +16,7 @@ import org.parpe.sim.internal.Assembly;
 import org.parpe.sim.internal.PhysicsParams;
 import org.parpe.sim.internal.PhysicsWorld;
 import org.parpe.sim.internal.SnapshotBuffer;
+import org.parpe.sim.world.World;
 
 /**
  * A PolyBot simulated with rigid-body physics (ODE4j) on a flat floor. As a {@link JointSink}
@@ -47,10 +48,20 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
     private int[] programIds = new int[0];
     private double dt = DEFAULT_TICK;
     private final double[] traceValues;
+    private final World scene;
+    private final Referee referee;
 
     /** A simulator of {@code config}; throws {@link IllegalArgumentException} if it is not valid. */
     public Simulator(RobotConfig config) {
         this(config, assemble(config));
+    }
+
+    /**
+     * A simulator of {@code config} in {@code scene}, the robot at the world's start (null: on
+     * the flat floor); throws {@link IllegalArgumentException} if the configuration is not valid.
+     */
+    public Simulator(RobotConfig config, World scene) {
+        this(config, assemble(config), scene);
     }
 
     /** {@code config}'s pieces placed in their initial pose; throws {@link IllegalArgumentException} if it is not valid. */
@@ -66,13 +77,40 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
 
     /** A simulator of {@code config}, already assembled (immutable, shared by many simulators). */
     Simulator(RobotConfig config, Assembly assembly) {
+        this(config, assembly, null);
+    }
+
+    /** A simulator of {@code config}, already assembled, in {@code scene} (null: the flat floor). */
+    Simulator(RobotConfig config, Assembly assembly, World scene) {
         this.config = config;
-        world = new PhysicsWorld(assembly, PhysicsParams.defaults());
+        World.Start s = scene == null ? null : scene.start();
+        world = new PhysicsWorld(s == null ? assembly : assembly.startingAt(s.x(), s.y(), s.z(), s.yaw(), s.pitch()),
+                PhysicsParams.defaults(), scene);
+        this.scene = scene;
         hingeIds = assembly.hinges().stream().mapToInt(Assembly.Hinge::moduleId).toArray();
         limpRequests = new AtomicIntegerArray(hingeIds.length);
         progress = new Progress(world);
         snapshots = new SnapshotBuffer(world);
         traceValues = new double[hingeIds.length + 3];
+        referee = scene == null ? null : new Referee(world, scene);
+        if (referee != null) {
+            referee.reset(progress.com());
+        }
+    }
+
+    /** The world the robot is in, or null on the flat floor. */
+    public World world() {
+        return scene;
+    }
+
+    /** How far lever {@code i} of the world is turned from rest, degrees. */
+    public double leverAngle(int i) {
+        return Math.toDegrees(world.leverAngle(i));
+    }
+
+    /** Writes the centre of mass of the world's movable object {@code i} into {@code out[0..2]} (tests). */
+    public void objectCentre(int i, double[] out) {
+        world.objectCentre(i, out);
     }
 
     /** The configuration simulated. */
@@ -90,6 +128,9 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
         dt = info.dt();
         bind(info.moduleIds());
         progress.reset();
+        if (referee != null) {
+            referee.reset(progress.com());
+        }
     }
 
     /** Maps the program's module order onto the simulated hinges (−1 where the robot has no such module). */
@@ -111,6 +152,9 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
         }
         captureTrace();
         progress.mark();
+        if (referee != null) {
+            referee.mark();
+        }
         advance(1);
     }
 
@@ -124,6 +168,9 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
             applyLimpRequests();
             world.advance(dt);
             progress.update();
+            if (referee != null) {
+                referee.update(progress.com(), progress.maxTilt());
+            }
             snapshots.publish();
         }
     }
@@ -239,7 +286,7 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
      * after {@link #step} without a run, to the current state.
      */
     public SimMetrics metrics() {
-        return progress.metrics();
+        return referee == null ? progress.metrics() : progress.metrics().withScore(referee.score());
     }
 
     /** Simulated time, s. */
