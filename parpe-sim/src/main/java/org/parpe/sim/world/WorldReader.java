@@ -57,6 +57,9 @@ public final class WorldReader {
             r.element(e);
         }
         World.Scoring scoring = new ScoringReader(r, r.zones, r.scenery).read(r.scoreElements);
+        if (scoring.leaveArena() && r.arena == null) {
+            xml.error(xml.root(), "<disqualify leave-arena=\"true\"> needs an <arena>");
+        }
         if (!xml.ok()) {
             return null;
         }
