@@ -9,7 +9,9 @@ import org.parpe.sim.world.WorldScore;
  * robot's centre of mass first enters the goal zone, its best progress along the path from the
  * start through the checkpoints in order, lever presses (each one must go back below half of
  * the press angle before the next counts), objects in their zones; disqualification when the
- * root tilts too far or the centre of mass leaves the arena. Does not allocate per tick.
+ * root tilts too far or the centre of mass leaves the arena before the robot reached the goal
+ * zone (a robot that finished is not judged on what it does afterwards). Does not allocate per
+ * tick.
  */
 final class Referee {
     private final PhysicsWorld world;
@@ -73,7 +75,10 @@ final class Referee {
         }
         double x = com[0];
         double y = com[1];
-        if (!Double.isNaN(rules.maxTiltDeg()) && Math.toDegrees(maxTilt) > rules.maxTiltDeg()) {
+        boolean finished = rules.goal() != null && !Double.isNaN(timeToZone);
+        if (finished) {
+            // past the finish nothing is judged any more but the levers and objects
+        } else if (!Double.isNaN(rules.maxTiltDeg()) && Math.toDegrees(maxTilt) > rules.maxTiltDeg()) {
             disqualified = "tilt";
         } else if (rules.leaveArena() && scene.arena() != null && !scene.arena().contains(x, y)) {
             disqualified = "arena";

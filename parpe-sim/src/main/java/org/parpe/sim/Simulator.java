@@ -49,6 +49,7 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
     private double dt = DEFAULT_TICK;
     private final double[] traceValues;
     private final World scene;
+    private final double[] objectCentre = new double[3];
     private final Referee referee;
 
     /** A simulator of {@code config}; throws {@link IllegalArgumentException} if it is not valid. */
@@ -91,7 +92,7 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
         limpRequests = new AtomicIntegerArray(hingeIds.length);
         progress = new Progress(world);
         snapshots = new SnapshotBuffer(world);
-        traceValues = new double[hingeIds.length + 3];
+        traceValues = new double[hingeIds.length + 3 + 2 * world.objectCount()];
         referee = scene == null ? null : new Referee(world, scene);
         if (referee != null) {
             referee.reset(progress.com());
@@ -231,12 +232,15 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
         return t;
     }
 
-    /** Trace columns {@code a<ID>} for the program's simulated modules and {@code com_x,com_y,com_z}. */
+    /**
+     * Trace columns {@code a<ID>} for the program's simulated modules, {@code com_x,com_y,com_z},
+     * and in a world {@code NAME_x,NAME_y} for each movable object.
+     */
     public TraceColumns traceColumns() {
         return new TraceColumns() {
             @Override
             public String[] names() {
-                String[] names = new String[measuredCount() + 3];
+                String[] names = new String[measuredCount() + 3 + 2 * world.objectCount()];
                 int k = 0;
                 for (int i = 0; i < programHinge.length; i++) {
                     if (programHinge[i] >= 0) {
@@ -245,13 +249,17 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
                 }
                 names[k++] = "com_x";
                 names[k++] = "com_y";
-                names[k] = "com_z";
+                names[k++] = "com_z";
+                for (int i = 0; i < world.objectCount(); i++) {
+                    names[k++] = scene.objects().get(i).name() + "_x";
+                    names[k++] = scene.objects().get(i).name() + "_y";
+                }
                 return names;
             }
 
             @Override
             public void values(double[] out) {
-                System.arraycopy(traceValues, 0, out, 0, measuredCount() + 3);
+                System.arraycopy(traceValues, 0, out, 0, measuredCount() + 3 + 2 * world.objectCount());
             }
         };
     }
@@ -273,6 +281,12 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
             }
         }
         progress.centerOfMass(traceValues, k);
+        k += 3;
+        for (int i = 0; i < world.objectCount(); i++) {
+            world.objectCentre(i, objectCentre);
+            traceValues[k++] = objectCentre[0];
+            traceValues[k++] = objectCentre[1];
+        }
     }
 
     /** The latest published snapshot; safe from any thread. */

@@ -76,7 +76,7 @@ public final class OptimizeCommand implements Callable<Integer> {
     }
 
     private int execute(PrintWriter stdout, PrintWriter err, Cancellation cancel) throws Exception {
-        Objective goal = SimSweepOptions.objective(objective);
+        Objective goal = options.objective(objective);
         if (maxTilt != null && !(maxTilt >= 0 && maxTilt <= 180)) {
             throw new UsageException("--max-tilt must be within [0, 180] degrees, got " + maxTilt);
         }

@@ -80,7 +80,7 @@ public final class SweepCommand implements Callable<Integer> {
     }
 
     private int execute(PrintWriter stdout, PrintWriter err, Cancellation cancel) throws Exception {
-        Objective goal = SimSweepOptions.objective(objective);
+        Objective goal = options.objective(objective);
         int[] share = shard();
         Evaluator ev = options.evaluator(file, err);
         if (ev == null) {
@@ -131,12 +131,13 @@ public final class SweepCommand implements Callable<Integer> {
         SweepResult result;
         try (Writer w = csv == null ? null : csv.openWriter()) {
             Writer target = w != null ? w : stdout;
-            target.write(SweepCsv.header(sweep.spec().axes()) + "\n");
+            boolean scored = options.world != null;
+            target.write(SweepCsv.header(sweep.spec().axes(), scored) + "\n");
             ProgressBar bar = new ProgressBar(err, new SweepListener() {
                 @Override
                 public void row(SweepRow row) {
                     try {
-                        target.write(SweepCsv.line(row, total) + "\n");
+                        target.write(SweepCsv.line(row, total, scored) + "\n");
                     } catch (IOException e) {
                         throw new java.io.UncheckedIOException(e);
                     }

@@ -31,6 +31,16 @@ public final class SweepCsv {
                 .toString();
     }
 
+    /** The header line for a sweep of {@code axes}; {@code scored}: with a last column {@code score} (a sweep in a world). */
+    public static String header(List<Axis> axes, boolean scored) {
+        return header(axes) + (scored ? ",score" : "");
+    }
+
+    /** The line of {@code row} in a sweep of {@code runs} runs; {@code scored}: with its score last. */
+    public static String line(SweepRow row, int runs, boolean scored) {
+        return line(row, runs) + (!scored ? "" : Double.isNaN(row.score()) ? "," : String.format(Locale.ROOT, ",%.6f", row.score()));
+    }
+
     /** The line of {@code row} in a sweep of {@code runs} runs. */
     public static String line(SweepRow row, int runs) {
         Point p = row.point();
