@@ -30,8 +30,8 @@ class WorldCommandLineTest {
 
     /** Each example world with its script. */
     static Stream<Arguments> worlds() {
-        return Stream.of(Arguments.of("race-track", "race-track-snake"), Arguments.of("rubble", "rubble-snake"),
-                Arguments.of("slot-machine", "slot-machine-snake"));
+        return Stream.of(Arguments.of("race-track", "race-track-snake"), Arguments.of("rubble", "../tutorial/12-rubble-snake"),
+                Arguments.of("slot-machine", "../tutorial/13-slot-machine-snake"));
     }
 
     private byte[] trace(String world, String script, String name) throws IOException {
@@ -77,7 +77,7 @@ class WorldCommandLineTest {
     @Test
     void theSlotMachineScriptDeliversTheChipAndPressesTheLever() throws IOException {
         Path m = tmp.resolve("m.json");
-        Cli r = Cli.run("run", WORLDS + "slot-machine-snake.xml", "--sim", "snake:n=8", "--world",
+        Cli r = Cli.run("run", "../examples/tutorial/13-slot-machine-snake.xml", "--sim", "snake:n=8", "--world",
                 WORLDS + "slot-machine.xml", "--metrics", m.toString());
         assertEquals(0, r.code, r.toString());
         String json = Files.readString(m);
