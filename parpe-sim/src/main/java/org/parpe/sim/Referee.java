@@ -129,10 +129,16 @@ final class Referee {
      */
     void mark() {
         marked = true;
-        tally();
+        tPoints = tally(true);
     }
 
-    private void tally() {
+    /** The points now, for a live display. */
+    double livePoints() {
+        return tally(false);
+    }
+
+    /** The points now (the score if the run ended here); {@code keep}: also keeps the parts. */
+    private double tally(boolean keep) {
         int delivered = 0;
         double points = 0;
         for (World.Delivery d : rules.deliveries()) {
@@ -155,19 +161,21 @@ final class Referee {
             points += rules.goal().points() + rules.goal().perSecondLeft() * Math.max(0, scene.timeLimit() - timeToZone);
         }
         points += rules.pathPerMetre() * best;
-        tPoints = disqualified.isEmpty() ? points : 0;
-        tDelivered = delivered;
-        tPresses = presses;
-        tTimeToZone = timeToZone;
-        tBest = best;
-        tCheckpoints = nextCheckpoint;
-        tDisqualified = disqualified;
+        if (keep) {
+            tDelivered = delivered;
+            tPresses = presses;
+            tTimeToZone = timeToZone;
+            tBest = best;
+            tCheckpoints = nextCheckpoint;
+            tDisqualified = disqualified;
+        }
+        return disqualified.isEmpty() ? points : 0;
     }
 
     /** The score at the last marked tick, or now when no tick was marked (stepped by hand). */
     WorldScore score() {
         if (!marked) {
-            tally();
+            tPoints = tally(true);
         }
         return new WorldScore(tPoints, tTimeToZone, tBest, tCheckpoints, tDelivered, tPresses, tDisqualified);
     }

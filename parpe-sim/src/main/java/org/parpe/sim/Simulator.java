@@ -50,6 +50,7 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
     private final double[] traceValues;
     private final World scene;
     private final double[] objectCentre = new double[3];
+    private volatile double liveScore = Double.NaN;
     private final Referee referee;
 
     /** A simulator of {@code config}; throws {@link IllegalArgumentException} if it is not valid. */
@@ -107,6 +108,11 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
     /** How far lever {@code i} of the world is turned from rest, degrees. */
     public double leverAngle(int i) {
         return Math.toDegrees(world.leverAngle(i));
+    }
+
+    /** The score so far in the world, after the last tick (any thread; NaN on the flat floor). */
+    public double liveScore() {
+        return liveScore;
     }
 
     /** Writes the centre of mass of the world's movable object {@code i} into {@code out[0..2]} (tests). */
@@ -171,6 +177,7 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
             progress.update();
             if (referee != null) {
                 referee.update(progress.com(), progress.maxTilt());
+                liveScore = referee.livePoints();
             }
             snapshots.publish();
         }
