@@ -40,7 +40,7 @@ public final class OptimizeCommand implements Callable<Integer> {
     Path file;
 
     @Option(names = "--objective", paramLabel = "NAME", defaultValue = "forward-speed",
-            description = "What to maximise: forward-speed, speed, forward, distance (default ${DEFAULT-VALUE}).")
+            description = "What to maximise: forward-speed, speed, forward, distance, score (with --world) (default ${DEFAULT-VALUE}).")
     String objective;
 
     @Option(names = "--budget", paramLabel = "RUNS", defaultValue = "500", description = "The most simulations (default ${DEFAULT-VALUE}).")

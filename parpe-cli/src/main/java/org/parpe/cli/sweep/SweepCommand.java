@@ -60,7 +60,7 @@ public final class SweepCommand implements Callable<Integer> {
     String plot;
 
     @Option(names = "--objective", paramLabel = "NAME", defaultValue = "forward-speed",
-            description = "What the plot and the summary rank by: forward-speed, speed, forward, distance (default ${DEFAULT-VALUE}).")
+            description = "What the plot and the summary rank by: forward-speed, speed, forward, distance, score (with --world) (default ${DEFAULT-VALUE}).")
     String objective;
 
     @Option(names = "--shard", paramLabel = "K/N", description = "Run only the K-th of N equal shares of the runs (1 <= K <= N);"

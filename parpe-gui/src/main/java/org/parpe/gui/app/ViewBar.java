@@ -33,7 +33,7 @@ final class ViewBar {
         this.prefs = prefs;
         Composite bar = new Composite(parent, SWT.NONE);
         bar.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
-        GridLayout gl = new GridLayout(7, false);
+        GridLayout gl = new GridLayout(8, false);
         gl.marginHeight = 2;
         bar.setLayout(gl);
         new Label(bar, SWT.NONE).setText("Robot:");
@@ -59,6 +59,10 @@ final class ViewBar {
         ids.setSelection(Boolean.parseBoolean(prefs.get("view.ids", "false")));
         reset = new Button(bar, SWT.PUSH);
         reset.setText("Reset view");
+        Button cameraButton = new Button(bar, SWT.PUSH);
+        cameraButton.setText("Camera\u2026");
+        cameraButton.setToolTipText("What a camera on one module sees (for driving through rubble)");
+        cameraButton.addListener(SWT.Selection, e -> ModuleCameraWindow.open(ide));
         reset.setToolTipText("Frame the whole robot again (or double-click the view). Drag: rotate; right-drag: pan; wheel: zoom");
         track.addListener(SWT.Selection, e -> prefs.put("view.track", Boolean.toString(track.getSelection())));
         ids.addListener(SWT.Selection, e -> prefs.put("view.ids", Boolean.toString(ids.getSelection())));

@@ -20,7 +20,8 @@ import org.parpe.sim.world.World;
 /**
  * The world picker beside the robot picker: each example world chosen in the IDE is what the
  * robot runs in, and the 3D view draws its scenery and objects (screenshots
- * {@code world-NAME.png} in the test artefacts).
+ * {@code world-NAME.png} in the test artefacts); the module camera shows the world from the
+ * snake's head ({@code camera-NAME.png}).
  */
 class WorldGuiTest {
     @TempDir
@@ -65,5 +66,15 @@ class WorldGuiTest {
         assertEquals(pieces, s.scenery().size() - solids, "and its objects' pieces");
         assertTrue(s.centerOfMass().x() > 0.4, "the robot started at the world's start and moved: " + s.centerOfMass());
         Gui.screenshot(ide.shell(), "world-" + world + ".png");
+        ModuleCameraWindow camera = ModuleCameraWindow.open(ide);
+        try {
+            camera.shell().setSize(720, 520);
+            camera.setModule(7);
+            Gui.settle();
+            // the head's camera looks along the snake, at the world ahead of it
+            Gui.screenshot(camera.shell(), "camera-" + world + ".png");
+        } finally {
+            camera.shell().dispose();
+        }
     }
 }

@@ -92,27 +92,10 @@ public final class PhysicsWorld implements AutoCloseable {
         total.setZero();
         for (Assembly.PlacedPiece p : pieces) {
             if (p.cluster() == cluster) {
-                DMass m = OdeHelper.createMass();
-                if (p.def().shape() instanceof BodyShape.Box b) {
-                    m.setBoxTotal(p.def().mass(), 2 * b.hx(), 2 * b.hy(), 2 * b.hz());
-                } else if (p.def().shape() instanceof BodyShape.Cylinder cy) {
-                    m.setCylinderTotal(p.def().mass(), 3, cy.radius(), cy.length());
-                } else {
-                    m.setSphereTotal(p.def().mass(), ((BodyShape.Sphere) p.def().shape()).radius());
-                }
-                m.rotate(WorldBodies.ode(p.rotation()));
-                m.translate(p.position().x(), p.position().y(), p.position().z());
-                total.add(m);
+                total.add(WorldBodies.pieceMass(p.def().shape(), p.def().mass(), p.rotation(), p.position()));
             }
         }
-        DVector3C c = total.getC();
-        double cx = c.get0();
-        double cy = c.get1();
-        double cz = c.get2();
-        total.translate(-cx, -cy, -cz);
-        DBody body = OdeHelper.createBody(world);
-        body.setPosition(cx, cy, cz);
-        body.setMass(total);
+        DBody body = WorldBodies.bodyAtCentre(world, total);
         bodies[cluster] = body;
         for (int i = 0; i < pieces.size(); i++) {
             Assembly.PlacedPiece p = pieces.get(i);

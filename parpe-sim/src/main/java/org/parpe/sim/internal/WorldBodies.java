@@ -74,28 +74,10 @@ final class WorldBodies {
         DMass total = OdeHelper.createMass();
         total.setZero();
         for (World.Piece p : o.pieces()) {
-            DMass m = OdeHelper.createMass();
-            double share = o.mass() * volume(p.shape()) / volume;
-            if (p.shape() instanceof BodyShape.Box b) {
-                m.setBoxTotal(share, 2 * b.hx(), 2 * b.hy(), 2 * b.hz());
-            } else if (p.shape() instanceof BodyShape.Cylinder c) {
-                m.setCylinderTotal(share, 3, c.radius(), c.length());
-            } else {
-                m.setSphereTotal(share, ((BodyShape.Sphere) p.shape()).radius());
-            }
-            m.rotate(ode(Geo.mul(o.rotation(), p.rotation())));
-            Vec3 at = Geo.add(o.position(), Geo.mul(o.rotation(), p.offset()));
-            m.translate(at.x(), at.y(), at.z());
-            total.add(m);
+            total.add(pieceMass(p.shape(), o.mass() * volume(p.shape()) / volume, Geo.mul(o.rotation(), p.rotation()),
+                    Geo.add(o.position(), Geo.mul(o.rotation(), p.offset()))));
         }
-        DVector3C c = total.getC();
-        double cx = c.get0();
-        double cy = c.get1();
-        double cz = c.get2();
-        total.translate(-cx, -cy, -cz);
-        DBody body = OdeHelper.createBody(world);
-        body.setPosition(cx, cy, cz);
-        body.setMass(total);
+        DBody body = bodyAtCentre(world, total);
         bodies[index] = body;
         geoms[index] = new DGeom[o.pieces().size()];
         for (int k = 0; k < o.pieces().size(); k++) {
@@ -108,6 +90,34 @@ final class WorldBodies {
             g.setOffsetWorldRotation(ode(Geo.mul(o.rotation(), p.rotation())));
             geoms[index][k] = g;
         }
+    }
+
+    /** The mass {@code mass} of a solid {@code shape} turned by {@code rotation} with its centre at {@code at}. */
+    static DMass pieceMass(BodyShape shape, double mass, Mat3 rotation, Vec3 at) {
+        DMass m = OdeHelper.createMass();
+        if (shape instanceof BodyShape.Box b) {
+            m.setBoxTotal(mass, 2 * b.hx(), 2 * b.hy(), 2 * b.hz());
+        } else if (shape instanceof BodyShape.Cylinder c) {
+            m.setCylinderTotal(mass, 3, c.radius(), c.length());
+        } else {
+            m.setSphereTotal(mass, ((BodyShape.Sphere) shape).radius());
+        }
+        m.rotate(ode(rotation));
+        m.translate(at.x(), at.y(), at.z());
+        return m;
+    }
+
+    /** A body of mass {@code total} (given about the world origin), placed at its centre of mass. */
+    static DBody bodyAtCentre(DWorld world, DMass total) {
+        DVector3C c = total.getC();
+        double cx = c.get0();
+        double cy = c.get1();
+        double cz = c.get2();
+        total.translate(-cx, -cy, -cz);
+        DBody body = OdeHelper.createBody(world);
+        body.setPosition(cx, cy, cz);
+        body.setMass(total);
+        return body;
     }
 
     private static double volume(BodyShape s) {
