@@ -196,7 +196,9 @@ final class RunActions implements ControlPanel.Target {
         controller.setSpeed(ide.toolbar().speed());
         Run.Builder run = Run.builder(program, RunOptions.defaults(), ide::runProblemLater);
         World world = target.sim() ? ide.viewBar().world().world() : null; // read on the UI thread
-        controller.start(run, b -> attach(b, target, spec, world, port, profile, recorder), runFor, outcome -> {
+        // a world's challenge lasts its time limit, as on the command line
+        double limit = world != null && runFor < 0 ? world.timeLimit() : runFor;
+        controller.start(run, b -> attach(b, target, spec, world, port, profile, recorder), limit, outcome -> {
             if (ide.shell().isDisposed()) {
                 return; // the window closed while the run was ending
             }
@@ -282,7 +284,8 @@ final class RunActions implements ControlPanel.Target {
         lastMetrics = null;
         String travelled = m == null || outcome.status() == RunOutcome.Status.ERROR ? ""
                 : String.format(java.util.Locale.ROOT, "; the robot travelled %.3f m (%.3f m/s, forward %+.3f m)",
-                        m.distance(), m.speed(), m.dx());
+                        m.distance(), m.speed(), m.dx())
+                + (m.score() == null ? "" : String.format(java.util.Locale.ROOT, "; score %.1f", m.score().score()));
         switch (outcome.status()) {
             case COMPLETED -> {
                 ide.log("Run completed at t = " + t + travelled);
