@@ -102,6 +102,9 @@ final class RunCommand implements Callable<Integer> {
             return 0;
         }
         checkOutputs(r);
+        if (duration == null && sim.world(err) != null) {
+            duration = sim.world(err).timeLimit(); // a world's challenge lasts its time limit
+        }
         if (duration == null) {
             err.println("parpe: no --duration: the run lasts until <main> ends or Ctrl-C; use --duration SECONDS"
                     + " to bound it");

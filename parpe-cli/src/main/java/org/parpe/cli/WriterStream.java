@@ -6,11 +6,11 @@ import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 
 /** Adapts picocli's error writer to the {@link java.io.PrintStream} the run targets use. */
-final class WriterStream extends OutputStream {
+public final class WriterStream extends OutputStream {
     private final PrintWriter out;
     private final java.io.ByteArrayOutputStream line = new java.io.ByteArrayOutputStream();
 
-    WriterStream(PrintWriter out) {
+    public WriterStream(PrintWriter out) {
         this.out = out;
     }
 

@@ -11,5 +11,9 @@ public enum PartKind {
     /** A passive foot pad. */
     FOOT,
     /** A passive wheel hub with connection plates round its rim. */
-    HUB
+    HUB,
+    /** A fixed solid of the world (box, ramp, step, wall, pillar, rubble). */
+    SCENERY,
+    /** A piece of a movable object of the world (chip, ball, cup, lever arm). */
+    OBJECT
 }

@@ -42,6 +42,16 @@ final class Progress {
         maxTilt = Math.max(maxTilt, Math.acos(Math.max(-1, Math.min(1, z))));
     }
 
+    /** The current centre of mass (a live buffer: read, do not keep). */
+    double[] com() {
+        return com;
+    }
+
+    /** The largest tilt of the root so far, radians. */
+    double maxTilt() {
+        return maxTilt;
+    }
+
     /** Copies the current centre of mass into {@code out[at..at+2]}. */
     void centerOfMass(double[] out, int at) {
         System.arraycopy(com, 0, out, at, 3);

@@ -18,12 +18,24 @@ import java.util.TreeSet;
  * @param measuredAngles joint angle of every segment, degrees, by logical module ID
  * @param targetAngles   the angle each servo is driving to, degrees, by logical module ID
  * @param limpModules    the modules whose servo is limp (back-drivable)
+ * @param scenery        the world's fixed solids ({@link PartKind#SCENERY}, module −1, part the
+ *                       element) and the pieces of its movable objects ({@link PartKind#OBJECT},
+ *                       part the object's name); empty on the flat floor
  */
 public record SimSnapshot(double time, List<SimBody> bodies, List<SimContact> contacts,
                           Vec3 centerOfMass, SortedMap<Integer, Double> measuredAngles,
-                          SortedMap<Integer, Double> targetAngles, SortedSet<Integer> limpModules) {
+                          SortedMap<Integer, Double> targetAngles, SortedSet<Integer> limpModules,
+                          List<SimBody> scenery) {
+
+    /** A snapshot on the flat floor (no scenery). */
+    public SimSnapshot(double time, List<SimBody> bodies, List<SimContact> contacts, Vec3 centerOfMass,
+                       SortedMap<Integer, Double> measuredAngles, SortedMap<Integer, Double> targetAngles,
+                       SortedSet<Integer> limpModules) {
+        this(time, bodies, contacts, centerOfMass, measuredAngles, targetAngles, limpModules, List.of());
+    }
 
     public SimSnapshot {
+        scenery = List.copyOf(scenery);
         bodies = List.copyOf(bodies);
         contacts = List.copyOf(contacts);
         measuredAngles = Collections.unmodifiableSortedMap(new TreeMap<>(measuredAngles));

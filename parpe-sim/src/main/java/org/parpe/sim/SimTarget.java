@@ -14,6 +14,7 @@ import org.parpe.core.run.TargetException;
 import org.parpe.sim.config.RobotConfig;
 import org.parpe.sim.config.RobotConfigs;
 import org.parpe.sim.internal.Assembly;
+import org.parpe.sim.world.World;
 
 /**
  * The physics simulator as a run target: builds the robot named by a specification
@@ -29,18 +30,25 @@ public final class SimTarget implements RunTarget {
     public static final String AUTO = "auto";
 
     private final String spec;
+    private final World world;
     private Simulator simulator;
 
     /** The simulator for {@code spec}; {@value #AUTO} guesses from the script when attached. */
     public SimTarget(String spec) {
+        this(spec, null);
+    }
+
+    /** The simulator for {@code spec} in {@code world} (null: the flat floor). */
+    public SimTarget(String spec, World world) {
         this.spec = spec;
+        this.world = world;
     }
 
     @Override
     public void attach(Run.Builder run) throws TargetException {
         Program program = run.program();
         String resolved = AUTO.equals(spec) ? autoSpec(program) : spec;
-        Simulator s = create(resolved, program.moduleIds(), run.diagnostics());
+        Simulator s = create(resolved, program.moduleIds(), run.diagnostics(), world);
         run.closeAtEnd(s);
         run.plant(s);
         run.sensorSource("sim", s, PRIORITY);
@@ -59,7 +67,13 @@ public final class SimTarget implements RunTarget {
      * throws, carrying the located errors.
      */
     public static Simulator create(String spec, int[] moduleIds, DiagnosticSink diags) throws TargetException {
-        Blueprint b = blueprint(spec, moduleIds);
+        return create(spec, moduleIds, diags, null);
+    }
+
+    /** As {@link #create(String, int[], DiagnosticSink)}, the robot at the start of {@code world} (null: the flat floor). */
+    public static Simulator create(String spec, int[] moduleIds, DiagnosticSink diags, World world)
+            throws TargetException {
+        Blueprint b = blueprint(spec, moduleIds, world);
         for (Diagnostic d : b.warnings()) {
             diags.report(d);
         }
@@ -72,6 +86,11 @@ public final class SimTarget implements RunTarget {
      * (a sweep), which then build only the physics world each. Throws as {@link #create} does.
      */
     public static Blueprint blueprint(String spec, int[] moduleIds) throws TargetException {
+        return blueprint(spec, moduleIds, null);
+    }
+
+    /** As {@link #blueprint(String, int[])}, for simulators in {@code world} (null: the flat floor). */
+    public static Blueprint blueprint(String spec, int[] moduleIds, World world) throws TargetException {
         DiagnosticList found = new DiagnosticList();
         RobotConfig config = RobotConfigs.resolve(spec, moduleIds, found);
         if (config != null) {
@@ -82,7 +101,7 @@ public final class SimTarget implements RunTarget {
             throw new TargetException("cannot build the simulated robot '" + spec + "' (" + n + " error"
                     + (n == 1 ? "" : "s") + ")", found.all());
         }
-        return new Blueprint(config, Simulator.assemble(config), List.copyOf(found.all()));
+        return new Blueprint(config, Simulator.assemble(config), world, List.copyOf(found.all()));
     }
 
     /**
@@ -92,11 +111,13 @@ public final class SimTarget implements RunTarget {
     public static final class Blueprint {
         private final RobotConfig config;
         private final Assembly assembly;
+        private final World world;
         private final List<Diagnostic> warnings;
 
-        private Blueprint(RobotConfig config, Assembly assembly, List<Diagnostic> warnings) {
+        private Blueprint(RobotConfig config, Assembly assembly, World world, List<Diagnostic> warnings) {
             this.config = config;
             this.assembly = assembly;
+            this.world = world;
             this.warnings = warnings;
         }
 
@@ -107,7 +128,7 @@ public final class SimTarget implements RunTarget {
 
         /** A fresh simulator of the robot, in its initial pose. */
         public Simulator simulator() {
-            return new Simulator(config, assembly);
+            return new Simulator(config, assembly, world);
         }
     }
 

@@ -16,6 +16,7 @@ import org.parpe.sim.internal.Assembly;
 import org.parpe.sim.internal.PhysicsParams;
 import org.parpe.sim.internal.PhysicsWorld;
 import org.parpe.sim.internal.SnapshotBuffer;
+import org.parpe.sim.world.World;
 
 /**
  * A PolyBot simulated with rigid-body physics (ODE4j) on a flat floor. As a {@link JointSink}
@@ -47,10 +48,22 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
     private int[] programIds = new int[0];
     private double dt = DEFAULT_TICK;
     private final double[] traceValues;
+    private final World scene;
+    private final double[] objectCentre = new double[3];
+    private volatile double liveScore = Double.NaN;
+    private final Referee referee;
 
     /** A simulator of {@code config}; throws {@link IllegalArgumentException} if it is not valid. */
     public Simulator(RobotConfig config) {
         this(config, assemble(config));
+    }
+
+    /**
+     * A simulator of {@code config} in {@code scene}, the robot at the world's start (null: on
+     * the flat floor); throws {@link IllegalArgumentException} if the configuration is not valid.
+     */
+    public Simulator(RobotConfig config, World scene) {
+        this(config, assemble(config), scene);
     }
 
     /** {@code config}'s pieces placed in their initial pose; throws {@link IllegalArgumentException} if it is not valid. */
@@ -66,13 +79,45 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
 
     /** A simulator of {@code config}, already assembled (immutable, shared by many simulators). */
     Simulator(RobotConfig config, Assembly assembly) {
+        this(config, assembly, null);
+    }
+
+    /** A simulator of {@code config}, already assembled, in {@code scene} (null: the flat floor). */
+    Simulator(RobotConfig config, Assembly assembly, World scene) {
         this.config = config;
-        world = new PhysicsWorld(assembly, PhysicsParams.defaults());
+        World.Start s = scene == null ? null : scene.start();
+        world = new PhysicsWorld(s == null ? assembly : assembly.startingAt(s.x(), s.y(), s.z(), s.yaw(), s.pitch()),
+                PhysicsParams.defaults(), scene);
+        this.scene = scene;
         hingeIds = assembly.hinges().stream().mapToInt(Assembly.Hinge::moduleId).toArray();
         limpRequests = new AtomicIntegerArray(hingeIds.length);
         progress = new Progress(world);
         snapshots = new SnapshotBuffer(world);
-        traceValues = new double[hingeIds.length + 3];
+        traceValues = new double[hingeIds.length + 3 + 2 * world.objectCount()];
+        referee = scene == null ? null : new Referee(world, scene);
+        if (referee != null) {
+            referee.reset(progress.com());
+        }
+    }
+
+    /** The world the robot is in, or null on the flat floor. */
+    public World world() {
+        return scene;
+    }
+
+    /** How far lever {@code i} of the world is turned from rest, degrees. */
+    public double leverAngle(int i) {
+        return Math.toDegrees(world.leverAngle(i));
+    }
+
+    /** The score so far in the world, after the last tick (any thread; NaN on the flat floor). */
+    public double liveScore() {
+        return liveScore;
+    }
+
+    /** Writes the centre of mass of the world's movable object {@code i} into {@code out[0..2]} (tests). */
+    public void objectCentre(int i, double[] out) {
+        world.objectCentre(i, out);
     }
 
     /** The configuration simulated. */
@@ -90,6 +135,9 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
         dt = info.dt();
         bind(info.moduleIds());
         progress.reset();
+        if (referee != null) {
+            referee.reset(progress.com());
+        }
     }
 
     /** Maps the program's module order onto the simulated hinges (−1 where the robot has no such module). */
@@ -111,6 +159,9 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
         }
         captureTrace();
         progress.mark();
+        if (referee != null) {
+            referee.mark();
+        }
         advance(1);
     }
 
@@ -124,6 +175,10 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
             applyLimpRequests();
             world.advance(dt);
             progress.update();
+            if (referee != null) {
+                referee.update(progress.com(), progress.maxTilt());
+                liveScore = referee.livePoints();
+            }
             snapshots.publish();
         }
     }
@@ -184,12 +239,15 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
         return t;
     }
 
-    /** Trace columns {@code a<ID>} for the program's simulated modules and {@code com_x,com_y,com_z}. */
+    /**
+     * Trace columns {@code a<ID>} for the program's simulated modules, {@code com_x,com_y,com_z},
+     * and in a world {@code NAME_x,NAME_y} for each movable object.
+     */
     public TraceColumns traceColumns() {
         return new TraceColumns() {
             @Override
             public String[] names() {
-                String[] names = new String[measuredCount() + 3];
+                String[] names = new String[measuredCount() + 3 + 2 * world.objectCount()];
                 int k = 0;
                 for (int i = 0; i < programHinge.length; i++) {
                     if (programHinge[i] >= 0) {
@@ -198,13 +256,17 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
                 }
                 names[k++] = "com_x";
                 names[k++] = "com_y";
-                names[k] = "com_z";
+                names[k++] = "com_z";
+                for (int i = 0; i < world.objectCount(); i++) {
+                    names[k++] = scene.objects().get(i).name() + "_x";
+                    names[k++] = scene.objects().get(i).name() + "_y";
+                }
                 return names;
             }
 
             @Override
             public void values(double[] out) {
-                System.arraycopy(traceValues, 0, out, 0, measuredCount() + 3);
+                System.arraycopy(traceValues, 0, out, 0, measuredCount() + 3 + 2 * world.objectCount());
             }
         };
     }
@@ -226,6 +288,12 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
             }
         }
         progress.centerOfMass(traceValues, k);
+        k += 3;
+        for (int i = 0; i < world.objectCount(); i++) {
+            world.objectCentre(i, objectCentre);
+            traceValues[k++] = objectCentre[0];
+            traceValues[k++] = objectCentre[1];
+        }
     }
 
     /** The latest published snapshot; safe from any thread. */
@@ -239,7 +307,7 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
      * after {@link #step} without a run, to the current state.
      */
     public SimMetrics metrics() {
-        return progress.metrics();
+        return referee == null ? progress.metrics() : progress.metrics().withScore(referee.score());
     }
 
     /** Simulated time, s. */

@@ -1,6 +1,8 @@
 package org.parpe.cli.bench;
 
 import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.List;
 
 /**
@@ -21,5 +23,19 @@ public interface Benchmark {
      */
     default List<String> jvmOptions() {
         return List.of();
+    }
+
+    /** The examples folder: above the working directory, or above the PARPE jar (parpe-cli/target/parpe.jar). */
+    static Path examples() throws java.net.URISyntaxException {
+        Path jar = Path.of(Benchmark.class.getProtectionDomain().getCodeSource().getLocation().toURI());
+        for (Path start : List.of(Path.of("").toAbsolutePath(), jar.toAbsolutePath())) {
+            for (Path p = start; p != null; p = p.getParent()) {
+                if (Files.isRegularFile(p.resolve("examples/hello-snake.xml"))) {
+                    return p.resolve("examples");
+                }
+            }
+        }
+        throw new IllegalStateException("the examples folder (examples/hello-snake.xml) was not found above "
+                + Path.of("").toAbsolutePath() + " or " + jar);
     }
 }

@@ -44,7 +44,7 @@ public final class ExportBenchmark implements Benchmark {
         out.printf(Locale.ROOT, "export.java_ticks_per_s=%.0f%n", java);
         out.printf(Locale.ROOT, "export.c_over_java=%.2f%n", c / java);
         for (String example : List.of("hello-snake", "centipede-walk")) {
-            Path file = examples().resolve(example + ".xml");
+            Path file = Benchmark.examples().resolve(example + ".xml");
             Program p = load(file, Files.readString(file));
             for (Board b : List.of(Board.UNO, Board.ESP32, Board.HOST)) {
                 MemoryReport m = CExport.estimate(p, 0.01, b);
@@ -56,20 +56,6 @@ public final class ExportBenchmark implements Benchmark {
                 }
             }
         }
-    }
-
-    /** The examples folder: above the working directory, or above the PARPE jar (parpe-cli/target/parpe.jar). */
-    private static Path examples() throws java.net.URISyntaxException {
-        Path jar = Path.of(ExportBenchmark.class.getProtectionDomain().getCodeSource().getLocation().toURI());
-        for (Path start : List.of(Path.of("").toAbsolutePath(), jar.toAbsolutePath())) {
-            for (Path p = start; p != null; p = p.getParent()) {
-                if (Files.isRegularFile(p.resolve("examples/hello-snake.xml"))) {
-                    return p.resolve("examples");
-                }
-            }
-        }
-        throw new IllegalStateException("the examples folder (examples/hello-snake.xml) was not found above "
-                + Path.of("").toAbsolutePath() + " or " + jar);
     }
 
     private static double javaTicksPerSecond(Program p) {

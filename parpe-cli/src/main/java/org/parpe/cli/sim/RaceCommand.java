@@ -18,6 +18,8 @@ import org.parpe.core.run.RunOutcome;
 import org.parpe.sim.SimMetrics;
 import org.parpe.sim.SimTarget;
 import org.parpe.sim.Simulator;
+import org.parpe.sim.world.World;
+import org.parpe.sim.world.WorldScore;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -27,10 +29,11 @@ import picocli.CommandLine.Spec;
 /**
  * {@code parpe race}: runs several scripts on the simulator, each on a fresh robot of its own
  * kind (or the one {@code --sim} names), and ranks them by how far the centre of mass went
- * forwards (+x, the way every standard robot faces).
+ * forwards (+x, the way every standard robot faces), or in a world ({@code --world}) by score.
  */
 @Command(name = "race", mixinStandardHelpOptions = true, description = "Run scripts on the simulator, each on a fresh"
-        + " robot, and rank them by how far their robot's centre of mass went forwards (+x).")
+        + " robot, and rank them by how far their robot's centre of mass went forwards (+x), or with --world by"
+        + " the world's score.")
 public final class RaceCommand implements Callable<Integer> {
     @Parameters(arity = "1..*", paramLabel = "FILE", description = "PARSL scripts to race.")
     List<Path> files = new ArrayList<>();
@@ -40,9 +43,13 @@ public final class RaceCommand implements Callable<Integer> {
                     + " robot, as the IDE's 'auto' picks it: a wheel script races as a wheel, a snake as a snake).")
     String sim;
 
-    @Option(names = "--duration", paramLabel = "SECONDS", defaultValue = "20",
-            description = "Simulated seconds per script (default ${DEFAULT-VALUE}).")
-    double duration;
+    @Option(names = "--duration", paramLabel = "SECONDS",
+            description = "Simulated seconds per script (default: the world's time limit, or 20).")
+    Double duration;
+
+    @Option(names = "--world", paramLabel = "WORLD.xml",
+            description = "Race in this world (examples/worlds), each robot from the world's start, ranked by score.")
+    Path world;
 
     @Option(names = "--tick", paramLabel = "SECONDS", defaultValue = "0.01", description = "Scheduler tick (default ${DEFAULT-VALUE}).")
     double tick;
@@ -58,7 +65,14 @@ public final class RaceCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         List<Entry> entries = new ArrayList<>();
+        java.io.PrintStream errStream = new java.io.PrintStream(new org.parpe.cli.WriterStream(err), true,
+                java.nio.charset.StandardCharsets.UTF_8);
+        World scene;
         try {
+            scene = world == null ? null : SimOptions.readWorld(world, errStream);
+            if (duration == null) {
+                duration = scene == null ? 20 : scene.timeLimit();
+            }
             if (!(duration > 0)) {
                 throw new UsageException("--duration must be > 0 seconds, got " + duration);
             }
@@ -67,21 +81,23 @@ public final class RaceCommand implements Callable<Integer> {
                 Inputs.check(f);
             }
             for (Path f : files) {
-                entries.add(race(f, err));
+                entries.add(race(f, err, errStream, scene));
             }
         } catch (UsageException u) {
             err.println("parpe: " + u.getMessage());
             return 2;
         }
-        // The standard robots all head towards +x: ranked by how far they got that way.
+        // The standard robots all head towards +x: ranked by how far they got that way (in a world
+        // by score first).
         entries.sort(Comparator.comparing((Entry e) -> e.metrics() == null)
+                .thenComparing(e -> e.metrics() == null || e.metrics().score() == null ? 0 : -e.metrics().score().score())
                 .thenComparing(e -> e.metrics() == null ? 0 : -e.metrics().dx()));
-        print(out, entries);
+        print(out, entries, scene != null);
         out.flush();
         return entries.stream().anyMatch(e -> e.metrics() == null) ? 1 : 0;
     }
 
-    private Entry race(Path file, PrintWriter err) throws UsageException {
+    private Entry race(Path file, PrintWriter err, java.io.PrintStream errStream, World scene) throws UsageException {
         LoadResult r = ScriptLoader.load(file, Map.of());
         for (Diagnostic d : r.diagnostics()) {
             err.println(d.format());
@@ -89,14 +105,8 @@ public final class RaceCommand implements Callable<Integer> {
         if (r.program() == null || r.program().main() == null) {
             return new Entry(file.toString(), "", null, r.program() == null ? "script errors" : "no <main>");
         }
-        java.io.PrintStream errStream = new java.io.PrintStream(new java.io.OutputStream() {
-            @Override
-            public void write(int b) {
-                err.write(b);
-            }
-        }, true, java.nio.charset.StandardCharsets.UTF_8);
         String robot = sim != null ? sim : SimTarget.autoSpec(r.program());
-        try (Simulator s = SimOptions.create(robot, r.program().moduleIds(), errStream)) {
+        try (Simulator s = SimOptions.create(robot, r.program().moduleIds(), errStream, scene)) {
             RunOutcome outcome = SimRun.run(r.program(), s, duration, tick, d -> err.println(d.format()));
             if (outcome.status() == RunOutcome.Status.ERROR) {
                 return new Entry(file.toString(), robot, null, "run-time error");
@@ -105,12 +115,12 @@ public final class RaceCommand implements Callable<Integer> {
         }
     }
 
-    private static void print(PrintWriter out, List<Entry> entries) {
+    private static void print(PrintWriter out, List<Entry> entries, boolean scored) {
         int width = Math.max(6, entries.stream().mapToInt(e -> e.script().length()).max().orElse(6));
         int robotWidth = Math.max(5, entries.stream().mapToInt(e -> e.robot().length()).max().orElse(5));
         String columns = "%-4s  %-" + width + "s  %-" + robotWidth + "s  %11s  %12s  %11s  %13s";
         out.println(String.format(Locale.ROOT, columns, "rank", "script", "robot", "forward (m)", "distance (m)",
-                "speed (m/s)", "max tilt (°)"));
+                "speed (m/s)", "max tilt (°)") + (scored ? String.format(Locale.ROOT, "  %10s  %s", "score", "parts") : ""));
         int rank = 1;
         for (Entry e : entries) {
             if (e.metrics() == null) {
@@ -119,8 +129,31 @@ public final class RaceCommand implements Callable<Integer> {
             } else {
                 out.println(String.format(Locale.ROOT, "%-4d  %-" + width + "s  %-" + robotWidth
                         + "s  %11.3f  %12.3f  %11.4f  %13.1f", rank++, e.script(), e.robot(), e.metrics().dx(),
-                        e.metrics().distance(), e.metrics().speed(), e.metrics().maxTiltDeg()));
+                        e.metrics().distance(), e.metrics().speed(), e.metrics().maxTiltDeg())
+                        + (scored ? String.format(Locale.ROOT, "  %10.1f  %s", e.metrics().score().score(),
+                                parts(e.metrics().score())) : ""));
             }
         }
+    }
+
+    /** The parts of a score that count, in words: "zone 31.2 s, path 1.40 m, 1 delivered, 2 presses, disqualified (tilt)". */
+    private static String parts(WorldScore s) {
+        List<String> p = new ArrayList<>();
+        if (!Double.isNaN(s.timeToZone())) {
+            p.add(String.format(Locale.ROOT, "zone %.1f s", s.timeToZone()));
+        }
+        if (s.pathDistance() > 0) {
+            p.add(String.format(Locale.ROOT, "path %.2f m", s.pathDistance()));
+        }
+        if (s.delivered() > 0) {
+            p.add(s.delivered() + " delivered");
+        }
+        if (s.presses() > 0) {
+            p.add(s.presses() + (s.presses() == 1 ? " press" : " presses"));
+        }
+        if (!s.disqualified().isEmpty()) {
+            p.add("disqualified (" + s.disqualified() + ")");
+        }
+        return p.isEmpty() ? "-" : String.join(", ", p);
     }
 }

@@ -1,6 +1,7 @@
 package org.parpe.cli.sim;
 
 import java.io.PrintStream;
+import java.nio.file.Path;
 import java.lang.management.ManagementFactory;
 import java.util.List;
 import java.util.Locale;
@@ -10,12 +11,15 @@ import org.parpe.cli.bench.Benchmark;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.model.Program;
 import org.parpe.sim.Simulator;
+import org.parpe.sim.world.World;
+import org.parpe.sim.world.WorldReader;
 import org.parpe.sim.config.RobotConfigs;
 
 /**
  * Simulator figures: real-time factor (simulated seconds per wall-clock second, one thread) of
  * an 8-module snake, the paper's 55-module centipede walking (goal ≥ 25) and a 200-module
- * snake, plus bytes allocated per tick. Each case warms up, then runs for 3 s of its thread's CPU
+ * snake, the centipede in the rubble world (goal ≥ 15) and the 8-module snake in the race world
+ * (goal ≥ 100), plus bytes allocated per tick. Each case warms up, then runs for 3 s of its thread's CPU
  * time; {@code realtime_factor} divides simulated time by that CPU time (one core, unaffected by
  * other processes), {@code realtime_factor_wall} by the elapsed wall-clock time.
  */
@@ -30,10 +34,23 @@ public final class SimBenchmark implements Benchmark {
     }
 
     @Override
-    public void run(PrintStream out) {
-        measure(out, "snake8", "snake:n=8", snakeScript(8));
-        measure(out, "centipede55", "centipede", centipedeScript());
-        measure(out, "snake200", "snake:n=200", snakeScript(200));
+    public void run(PrintStream out) throws Exception {
+        measure(out, "snake8", "snake:n=8", snakeScript(8), null);
+        measure(out, "centipede55", "centipede", centipedeScript(), null);
+        measure(out, "snake200", "snake:n=200", snakeScript(200), null);
+        measure(out, "centipede55_rubble", "centipede", centipedeScript(), world("rubble.xml"));
+        measure(out, "snake8_race_track", "snake:n=8", snakeScript(8), world("race-track.xml"));
+    }
+
+    /** An example world of {@code examples/worlds}. */
+    private static World world(String name) throws Exception {
+        Path file = Benchmark.examples().resolve("worlds").resolve(name);
+        DiagnosticList found = new DiagnosticList();
+        World w = WorldReader.read(file, found);
+        if (w == null) {
+            throw new IllegalStateException("the benchmark world " + file + " does not load: " + found.all());
+        }
+        return w;
     }
 
     /** A travelling wave over every module of an {@code n}-module snake. */
@@ -60,10 +77,10 @@ public final class SimBenchmark implements Benchmark {
                 + "<lower angles=\"-60\"/><stance angles=\"-60\"/></states></program>";
     }
 
-    private static void measure(PrintStream out, String label, String spec, String script) {
+    private static void measure(PrintStream out, String label, String spec, String script, World world) {
         Program program = SimRun.load("bench-" + label + ".xml", script);
         DiagnosticList diags = new DiagnosticList();
-        try (Simulator sim = new Simulator(RobotConfigs.resolve(spec, program.moduleIds(), diags))) {
+        try (Simulator sim = new Simulator(RobotConfigs.resolve(spec, program.moduleIds(), diags), world)) {
             Engine engine = new Engine(program, new RunOptions(DT, 0, List.of()));
             engine.addPlant(sim);
             engine.setSensorSource(sim);

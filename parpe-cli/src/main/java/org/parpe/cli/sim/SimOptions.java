@@ -5,15 +5,19 @@ import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import org.parpe.cli.Inputs;
 import org.parpe.cli.OutputFile;
 import org.parpe.core.io.OutputPlan;
 import org.parpe.cli.UsageException;
+import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.run.Run;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.core.run.TargetException;
 import org.parpe.sim.SimMetrics;
 import org.parpe.sim.SimTarget;
 import org.parpe.sim.Simulator;
+import org.parpe.sim.world.World;
+import org.parpe.sim.world.WorldReader;
 import picocli.CommandLine.Option;
 
 /** The simulator options of {@code parpe run} ({@code --sim}, {@code --metrics}, {@code --plot}, {@code --realtime}). */
@@ -25,8 +29,16 @@ public class SimOptions {
     String sim;
 
     @Option(names = "--metrics", paramLabel = "FILE|-",
-            description = "With --sim: write distance, speed and tilt as JSON to FILE or '-' for standard output.")
+            description = "With --sim: write distance, speed and tilt (and in a world the score and its parts) as"
+                    + " JSON to FILE or '-' for standard output.")
     String metrics;
+
+    @Option(names = "--world", paramLabel = "WORLD.xml",
+            description = "With --sim: put the robot in this world (examples/worlds) at its start; the run lasts the"
+                    + " world's time limit unless --duration says otherwise, and --metrics gains the score.")
+    Path world;
+
+    private World loadedWorld;
 
     @Option(names = "--plot", paramLabel = "FILE.png",
             description = "With --sim: draw commanded and measured joint angles over time into a PNG image.")
@@ -52,12 +64,12 @@ public class SimOptions {
      */
     public void configure(Run.Builder run, double duration, PrintStream err) throws UsageException, TargetException {
         if (sim == null) {
-            if (metrics != null || plot != null || realtime) {
-                throw new UsageException("--metrics, --plot and --realtime need --sim");
+            if (metrics != null || plot != null || realtime || world != null) {
+                throw new UsageException("--metrics, --plot, --realtime and --world need --sim");
             }
             return;
         }
-        SimTarget target = new SimTarget(sim);
+        SimTarget target = new SimTarget(sim, world(err));
         run.attach(target);
         Simulator simulator = target.simulator();
         if (plot != null) {
@@ -72,12 +84,35 @@ public class SimOptions {
     }
 
     /**
+     * The world of {@code --world}, read once (null without it); its problems are printed to
+     * {@code err} and make a usage error.
+     */
+    public World world(PrintStream err) throws UsageException {
+        if (world != null && loadedWorld == null) {
+            loadedWorld = readWorld(world, err);
+        }
+        return loadedWorld;
+    }
+
+    /** Reads the world file {@code file}, printing its problems to {@code err}; with problems a usage error. */
+    static World readWorld(Path file, PrintStream err) throws UsageException {
+        Inputs.check(file);
+        DiagnosticList found = new DiagnosticList();
+        World w = WorldReader.read(file, found);
+        found.all().forEach(d -> err.println(d.format()));
+        if (w == null) {
+            throw new UsageException("the world file '" + file + "' has errors (above)");
+        }
+        return w;
+    }
+
+    /**
      * Builds the simulator for {@code spec} outside a run ({@code race}), printing located
      * problems to {@code err}; a bad spec or configuration file is a usage error.
      */
-    static Simulator create(String spec, int[] moduleIds, PrintStream err) throws UsageException {
+    static Simulator create(String spec, int[] moduleIds, PrintStream err, World inWorld) throws UsageException {
         try {
-            return SimTarget.create(spec, moduleIds, d -> err.println(d.format()));
+            return SimTarget.create(spec, moduleIds, d -> err.println(d.format()), inWorld);
         } catch (TargetException e) {
             e.diagnostics().forEach(d -> err.println(d.format()));
             throw new UsageException(e.getMessage() + " above");
@@ -86,6 +121,9 @@ public class SimOptions {
 
     /** Adds the robot configuration file of {@code --sim}, if it names one, to the run's inputs. */
     public void addInputs(List<Path> inputs) {
+        if (world != null) {
+            inputs.add(world);
+        }
         try {
             if (sim != null && Files.isRegularFile(Path.of(sim.trim()))) {
                 inputs.add(Path.of(sim.trim()));

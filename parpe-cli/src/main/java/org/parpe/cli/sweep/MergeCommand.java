@@ -126,7 +126,7 @@ public final class MergeCommand implements Callable<Integer> {
                 }
                 shards.put(f.toString(), InputFiles.readText(f).lines().toList());
             }
-            Objective goal = SimSweepOptions.objective(objective);
+            Objective goal = SimSweepOptions.objective(objective, true);
             OutputPlan plan = OutputFile.plan(files);
             OutputFile target = OutputFile.ofOptional(plan, "--out", out);
             OutputFile png = plot == null ? null : OutputFile.of(plan, "--plot", plot);
@@ -134,6 +134,9 @@ public final class MergeCommand implements Callable<Integer> {
             SweepResult result;
             try {
                 merged = SweepCsv.merge(shards);
+                if (goal == Objective.SCORE && !merged.get(0).endsWith(",score")) {
+                    throw new UsageException("--objective score needs the shards of a sweep in a world (with a score column)");
+                }
                 result = png == null ? null : SweepCsv.read(merged);
             } catch (IncompleteSweepException e) {
                 incomplete(err, e);

@@ -41,7 +41,7 @@ public final class OptimizeCommand implements Callable<Integer> {
     Path file;
 
     @Option(names = "--objective", paramLabel = "NAME", defaultValue = "forward-speed",
-            description = "What to maximise: forward-speed, speed, forward, distance (default ${DEFAULT-VALUE}).")
+            description = "What to maximise: forward-speed, speed, forward, distance, score (with --world) (default ${DEFAULT-VALUE}).")
     String objective;
 
     @Option(names = "--budget", paramLabel = "RUNS", defaultValue = "500", description = "The most simulations (default ${DEFAULT-VALUE}).")
@@ -80,7 +80,7 @@ public final class OptimizeCommand implements Callable<Integer> {
     }
 
     private int execute(PrintWriter stdout, PrintWriter err, Cancellation cancel) throws Exception {
-        Objective goal = SimSweepOptions.objective(objective);
+        Objective goal = options.objective(objective);
         if (maxTilt != null && !(maxTilt >= 0 && maxTilt <= 180)) {
             throw new UsageException("--max-tilt must be within [0, 180] degrees, got " + maxTilt);
         }

@@ -42,6 +42,10 @@ public class SimSweepOptions {
     @Option(names = "--seed", paramLabel = "N", defaultValue = "0", description = "Seed of the random draws and of rand() (default ${DEFAULT-VALUE}).")
     long seed;
 
+    @Option(names = "--world", paramLabel = "WORLD.xml",
+            description = "Run every run in this world (examples/worlds) and record its score (objective 'score').")
+    Path world;
+
     @Option(names = "--fall-tilt", paramLabel = "DEGREES", defaultValue = "90",
             description = "A robot whose tilt passes this angle has fallen over (default ${DEFAULT-VALUE}).")
     double fallTilt;
@@ -50,11 +54,19 @@ public class SimSweepOptions {
         System.setProperty("parpe.cores", Integer.toString(Runtime.getRuntime().availableProcessors()));
     }
 
-    /** The objective named by {@code --objective}. */
-    static Objective objective(String id) throws UsageException {
+    /** The objective named by {@code --objective}; {@code score} needs {@code --world}. */
+    Objective objective(String id) throws UsageException {
+        return objective(id, world != null);
+    }
+
+    /** The objective named by {@code --objective}; {@code score} only where runs are {@code scored} (in a world). */
+    static Objective objective(String id, boolean scored) throws UsageException {
         Objective o = Objective.byId(id);
         if (o == null) {
             throw new UsageException("--objective must be one of " + Objective.ids() + ", got '" + id + "'");
+        }
+        if (o == Objective.SCORE && !scored) {
+            throw new UsageException("--objective score needs --world WORLD.xml: only a world scores a run");
         }
         return o;
     }
@@ -83,6 +95,9 @@ public class SimSweepOptions {
             throw new UsageException("--fall-tilt must be within [0, 180] degrees, got " + fallTilt);
         }
         Inputs.check(file);
+        if (world != null) {
+            Inputs.check(world);
+        }
         Map<String, Double> fixed = ParamValues.parse(params);
         LoadResult r = ScriptLoader.load(file, fixed);
         r.diagnostics().forEach(d -> err.println(d.format()));
@@ -95,7 +110,8 @@ public class SimSweepOptions {
         }
         try {
             String text = InputFiles.readText(file);
-            return Evaluator.load(new Evaluator.Settings(file, text, fixed, sim.trim(), duration, tick, fallTilt));
+            return Evaluator.load(new Evaluator.Settings(file, text, fixed, sim.trim(), duration, tick, fallTilt,
+                    world));
         } catch (IOException e) {
             throw new UsageException("cannot read '" + file + "': " + e.getMessage());
         } catch (SweepException e) {
@@ -105,6 +121,9 @@ public class SimSweepOptions {
 
     /** The input files besides the script: a robot configuration file named by {@code --sim}. */
     void addInputs(List<Path> inputs) {
+        if (world != null) {
+            inputs.add(world);
+        }
         try {
             if (Files.isRegularFile(Path.of(sim.trim()))) {
                 inputs.add(Path.of(sim.trim()));

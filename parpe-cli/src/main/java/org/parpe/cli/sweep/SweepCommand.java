@@ -61,7 +61,7 @@ public final class SweepCommand implements Callable<Integer> {
     String plot;
 
     @Option(names = "--objective", paramLabel = "NAME", defaultValue = "forward-speed",
-            description = "What the plot and the summary rank by: forward-speed, speed, forward, distance (default ${DEFAULT-VALUE}).")
+            description = "What the plot and the summary rank by: forward-speed, speed, forward, distance, score (with --world) (default ${DEFAULT-VALUE}).")
     String objective;
 
     @Option(names = "--shard", paramLabel = "K/N", description = "Run only the K-th of N equal shares of the runs (1 <= K <= N);"
@@ -81,7 +81,7 @@ public final class SweepCommand implements Callable<Integer> {
     }
 
     private int execute(PrintWriter stdout, PrintWriter err, Cancellation cancel) throws Exception {
-        Objective goal = SimSweepOptions.objective(objective);
+        Objective goal = options.objective(objective);
         int[] share = shard();
         Evaluator ev = options.evaluator(file, err);
         if (ev == null) {
@@ -143,13 +143,14 @@ public final class SweepCommand implements Callable<Integer> {
             if (share != null) {
                 target.write(SweepCsv.shardStart(share[0], share[1], range[0], range[1], total) + "\n");
             }
-            target.write(SweepCsv.header(sweep.spec().axes()) + "\n");
+            boolean scored = options.world != null;
+            target.write(SweepCsv.header(sweep.spec().axes(), scored) + "\n");
             final Writer file = w;
             ProgressBar bar = new ProgressBar(err, new SweepListener() {
                 @Override
                 public void row(SweepRow row) {
                     try {
-                        target.write(SweepCsv.line(row, total) + "\n");
+                        target.write(SweepCsv.line(row, total, scored) + "\n");
                         if (share != null) {
                             target.flush(); // each finished row reaches the file: a killed task keeps it
                         }

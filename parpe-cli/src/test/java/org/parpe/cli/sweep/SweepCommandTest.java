@@ -119,7 +119,7 @@ class SweepCommandTest {
         assertEquals("parpe: --shard 4/3: K must be within [1, N] and N >= 1", shard.err.strip());
         Cli goal = Cli.run(sweepArgs("-", "--objective", "fast"));
         assertEquals(2, goal.code);
-        assertEquals("parpe: --objective must be one of forward-speed, speed, forward, distance, got 'fast'",
+        assertEquals("parpe: --objective must be one of forward-speed, speed, forward, distance, score, got 'fast'",
                 goal.err.strip());
     }
 

@@ -148,7 +148,8 @@ public final class IdeWindow {
             var st = runs.controller().status();
             String entry = st == null || st.entry().isEmpty() || !runs.running() ? "" : "   behavior: " + st.entry();
             var snap = runs.snapshot();
-            return String.format(java.util.Locale.ROOT, "t = %.2f s%s", snap == null ? 0 : snap.time(), entry);
+            return String.format(java.util.Locale.ROOT, "t = %.2f s%s", snap == null ? 0 : snap.time(), entry)
+                    + runs.scoreText();
         });
         view.startAnimation();
         editor.widget().addCaretListener(e -> {

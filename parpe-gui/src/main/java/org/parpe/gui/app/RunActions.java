@@ -40,6 +40,7 @@ import org.parpe.serial.servo.run.ServoTarget;
 import org.parpe.sim.SimSnapshot;
 import org.parpe.sim.SimTarget;
 import org.parpe.sim.Simulator;
+import org.parpe.sim.world.World;
 import org.parpe.sim.config.RobotConfig;
 import org.parpe.sim.config.RobotConfigs;
 
@@ -194,7 +195,10 @@ final class RunActions implements ControlPanel.Target {
                 + (target.hardware() ? " (port " + port + (profile == null ? "" : ", profile " + profile) + ")" : ""));
         controller.setSpeed(ide.toolbar().speed());
         Run.Builder run = Run.builder(program, RunOptions.defaults(), ide::runProblemLater);
-        controller.start(run, b -> attach(b, target, spec, port, profile, recorder), runFor, outcome -> {
+        World world = target.sim() ? ide.viewBar().world().world() : null; // read on the UI thread
+        // a world's challenge lasts its time limit, as on the command line
+        double limit = world != null && runFor < 0 ? world.timeLimit() : runFor;
+        controller.start(run, b -> attach(b, target, spec, world, port, profile, recorder), limit, outcome -> {
             if (ide.shell().isDisposed()) {
                 return; // the window closed while the run was ending
             }
@@ -215,7 +219,7 @@ final class RunActions implements ControlPanel.Target {
      * Attaches the run's targets on the engine thread, as the command line does (opening the
      * bus and building the simulated robot take time), and the plots' recorder.
      */
-    private void attach(Run.Builder run, Target target, String spec, String port, String profile,
+    private void attach(Run.Builder run, Target target, String spec, World world, String port, String profile,
                         AngleRecorder recorder) throws TargetException {
         if (target.hardware() && profile != null) {
             attachServos(run, profile, port);
@@ -234,7 +238,7 @@ final class RunActions implements ControlPanel.Target {
             });
         }
         if (target.sim()) {
-            SimTarget st = new SimTarget(spec);
+            SimTarget st = new SimTarget(spec, world);
             run.attach(st);
             Simulator s = st.simulator();
             sim = s;
@@ -280,7 +284,8 @@ final class RunActions implements ControlPanel.Target {
         lastMetrics = null;
         String travelled = m == null || outcome.status() == RunOutcome.Status.ERROR ? ""
                 : String.format(java.util.Locale.ROOT, "; the robot travelled %.3f m (%.3f m/s, forward %+.3f m)",
-                        m.distance(), m.speed(), m.dx());
+                        m.distance(), m.speed(), m.dx())
+                + (m.score() == null ? "" : String.format(java.util.Locale.ROOT, "; score %.1f", m.score().score()));
         switch (outcome.status()) {
             case COMPLETED -> {
                 ide.log("Run completed at t = " + t + travelled);
@@ -391,7 +396,8 @@ final class RunActions implements ControlPanel.Target {
         }
         String spec = robotSpec(program);
         int[] ids = program.moduleIds();
-        String key = spec + java.util.Arrays.toString(ids);
+        World world = ide.viewBar().world().world();
+        String key = spec + java.util.Arrays.toString(ids) + ide.viewBar().world().file();
         if (key.equals(previewKey)) {
             return;
         }
@@ -401,12 +407,22 @@ final class RunActions implements ControlPanel.Target {
             if (config == null) {
                 return;
             }
-            try (Simulator s = new Simulator(config)) {
+            try (Simulator s = new Simulator(config, world)) {
                 preview = s.snapshot();
             } catch (RuntimeException e) {
                 ide.logLater("cannot show the robot '" + spec + "': " + e.getMessage());
             }
         });
+    }
+
+    /** "   score 45.0 of the world's 60 s" while a run in a world goes on, else empty (UI thread). */
+    String scoreText() {
+        Simulator s = sim;
+        if (s == null || s.world() == null) {
+            return "";
+        }
+        return String.format(java.util.Locale.ROOT, "   score %.1f   (time limit %.0f s)", s.liveScore(),
+                s.world().timeLimit());
     }
 
     /** Drops the robot shown for the previous script. */

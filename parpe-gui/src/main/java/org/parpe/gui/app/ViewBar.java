@@ -14,13 +14,14 @@ import org.parpe.sim.config.RobotConfigs;
 
 /**
  * The bar above the 3D view: the simulated robot (automatic, one of the simulator's generators,
- * or a configuration file), TrackRobot, module IDs and a reset of the camera.
+ * or a configuration file), the world it runs in, TrackRobot, module IDs and a reset of the camera.
  */
 final class ViewBar {
     private static final String BROWSE = "Configuration file\u2026";
 
     private final IdeWindow ide;
     private final Combo robot;
+    private final WorldPicker world;
     private final Button track;
     private final Button ids;
     private final Button reset;
@@ -32,7 +33,7 @@ final class ViewBar {
         this.prefs = prefs;
         Composite bar = new Composite(parent, SWT.NONE);
         bar.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
-        GridLayout gl = new GridLayout(5, false);
+        GridLayout gl = new GridLayout(8, false);
         gl.marginHeight = 2;
         bar.setLayout(gl);
         new Label(bar, SWT.NONE).setText("Robot:");
@@ -49,6 +50,7 @@ final class ViewBar {
         robot.select(at >= 0 ? at : 0);
         robot.setToolTipText("The simulated robot; 'auto' picks a standard robot that fits the script");
         robot.addListener(SWT.Selection, e -> chosen());
+        world = new WorldPicker(bar, ide, prefs, this::worldChosen);
         track = new Button(bar, SWT.CHECK);
         track.setText("TrackRobot");
         track.setSelection(Boolean.parseBoolean(prefs.get("view.track", "true")));
@@ -57,6 +59,10 @@ final class ViewBar {
         ids.setSelection(Boolean.parseBoolean(prefs.get("view.ids", "false")));
         reset = new Button(bar, SWT.PUSH);
         reset.setText("Reset view");
+        Button cameraButton = new Button(bar, SWT.PUSH);
+        cameraButton.setText("Camera\u2026");
+        cameraButton.setToolTipText("What a camera on one module sees (for driving through rubble)");
+        cameraButton.addListener(SWT.Selection, e -> ModuleCameraWindow.open(ide));
         reset.setToolTipText("Frame the whole robot again (or double-click the view). Drag: rotate; right-drag: pan; wheel: zoom");
         track.addListener(SWT.Selection, e -> prefs.put("view.track", Boolean.toString(track.getSelection())));
         ids.addListener(SWT.Selection, e -> prefs.put("view.ids", Boolean.toString(ids.getSelection())));
@@ -93,6 +99,19 @@ final class ViewBar {
             ide.runs().updatePreview(ide.program());
         }
         ide.view().resetView();
+    }
+
+    private void worldChosen() {
+        ide.runs().invalidatePreview();
+        if (ide.program() != null) {
+            ide.runs().updatePreview(ide.program());
+        }
+        ide.view().resetView();
+    }
+
+    /** The world picker. */
+    WorldPicker world() {
+        return world;
     }
 
     /** {@code auto}, a generator name, or a configuration file path. */

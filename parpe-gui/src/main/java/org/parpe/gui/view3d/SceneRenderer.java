@@ -47,20 +47,27 @@ final class SceneRenderer {
         }
         gc.setAlpha(255);
         faces.clear();
+        for (SimBody b : snap.scenery()) {
+            solid(cam, b, baseColor(b, style.highlighted()));
+        }
         for (SimBody b : snap.bodies()) {
-            int rgb = baseColor(b, style.highlighted());
-            BodyShape shape = b.shape();
-            if (shape instanceof BodyShape.Box box) {
-                box(cam, b.position(), b.rotation(), box, rgb);
-            } else if (shape instanceof BodyShape.Cylinder c) {
-                cylinder(cam, b.position(), b.rotation(), c, rgb);
-            } else if (shape instanceof BodyShape.Sphere s) {
-                sphere(cam, b.position(), s, rgb);
-            }
+            solid(cam, b, baseColor(b, style.highlighted()));
         }
         paintFaces(gc);
         if (style.labels()) {
             labels(gc, cam, snap);
+        }
+    }
+
+    /** Adds the faces of {@code b} in colour {@code rgb}. */
+    private void solid(Camera cam, SimBody b, int rgb) {
+        BodyShape shape = b.shape();
+        if (shape instanceof BodyShape.Box box) {
+            box(cam, b.position(), b.rotation(), box, rgb);
+        } else if (shape instanceof BodyShape.Cylinder c) {
+            cylinder(cam, b.position(), b.rotation(), c, rgb);
+        } else if (shape instanceof BodyShape.Sphere s) {
+            sphere(cam, b.position(), s, rgb);
         }
     }
 
@@ -220,6 +227,8 @@ final class SceneRenderer {
             case NODE -> 0x8A8F99;
             case FOOT -> 0x4A4D55;
             case HUB -> 0xA7ACB5;
+            case SCENERY -> 0xB9A88C;
+            case OBJECT -> 0xD9B43B;
         };
     }
 

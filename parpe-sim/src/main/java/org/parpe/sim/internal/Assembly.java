@@ -152,19 +152,45 @@ public final class Assembly {
             }
         }
         hinges.sort((a, b) -> Integer.compare(a.moduleId(), b.moduleId()));
-        double lift = height - lowest(placed);
-        List<PlacedPiece> lifted = new ArrayList<>();
-        Vec3 up = new Vec3(0, 0, lift);
-        for (PlacedPiece pp : placed) {
-            lifted.add(new PlacedPiece(pp.part(), pp.def(), Geo.add(pp.position(), up), pp.rotation(), pp.cluster()));
-        }
-        List<Hinge> liftedHinges = new ArrayList<>();
-        for (Hinge h : hinges) {
-            liftedHinges.add(new Hinge(h.moduleId(), h.base(), h.arm(), Geo.add(h.anchor(), up), h.axis(),
-                    h.angle(), h.limp()));
-        }
         int clusters = Arrays.stream(cluster).max().orElse(-1) + 1;
-        return new Assembly(lifted, liftedHinges, clusters, first[placement.rootIndex()]);
+        Assembly a = new Assembly(placed, hinges, clusters, first[placement.rootIndex()]);
+        return a.moved(Mat3.IDENTITY, Vec3.ZERO, new Vec3(0, 0, height - lowest(placed)));
+    }
+
+    /**
+     * This robot turned by {@code turn} about {@code pivot}, then shifted by {@code shift}
+     * (the same parts, clusters and joint angles).
+     */
+    private Assembly moved(Mat3 turn, Vec3 pivot, Vec3 shift) {
+        List<PlacedPiece> out = new ArrayList<>();
+        for (PlacedPiece pp : pieces) {
+            out.add(new PlacedPiece(pp.part(), pp.def(), movedPoint(pp.position(), turn, pivot, shift),
+                    Geo.mul(turn, pp.rotation()), pp.cluster()));
+        }
+        List<Hinge> outHinges = new ArrayList<>();
+        for (Hinge h : hinges) {
+            outHinges.add(new Hinge(h.moduleId(), h.base(), h.arm(), movedPoint(h.anchor(), turn, pivot, shift),
+                    Geo.mul(turn, h.axis()), h.angle(), h.limp()));
+        }
+        return new Assembly(out, outHinges, clusterCount, rootPiece);
+    }
+
+    private static Vec3 movedPoint(Vec3 p, Mat3 turn, Vec3 pivot, Vec3 shift) {
+        return Geo.add(Geo.add(pivot, Geo.mul(turn, Geo.sub(p, pivot))), shift);
+    }
+
+    /**
+     * This robot placed at a world's start: turned about its root piece by {@code pitchDeg}
+     * (nose up, about its own y) and then {@code yawDeg} (about the vertical), the root piece
+     * moved to ({@code x}, {@code y}), and the whole lowered or raised so that its lowest point
+     * rests {@code z} above the floor (plus the usual clearance).
+     */
+    public Assembly startingAt(double x, double y, double z, double yawDeg, double pitchDeg) {
+        Mat3 turn = Geo.rollPitchYaw(0, -pitchDeg, yawDeg);
+        Vec3 root = pieces.get(rootPiece).position();
+        Assembly turned = moved(turn, root, new Vec3(x - root.x(), y - root.y(), 0));
+        return turned.moved(Mat3.IDENTITY, Vec3.ZERO,
+                new Vec3(0, 0, z + org.parpe.sim.config.RootPose.RESTING - lowest(turned.pieces)));
     }
 
     /** The lowest z of any piece. */

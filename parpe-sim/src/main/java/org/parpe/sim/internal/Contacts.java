@@ -86,22 +86,48 @@ final class Contacts implements DGeom.DNearCallback {
         if (p1 >= 0 && p2 >= 0 && (clusterOf[p1] == clusterOf[p2] || jointed[clusterOf[p1]][clusterOf[p2]])) {
             return;
         }
+        DBody b1 = g1.getBody();
+        DBody b2 = g2.getBody();
+        if (b1 == null && b2 == null || b1 == b2) {
+            return; // two fixed things (the floor and a wall), or two pieces of one object
+        }
         int n = Math.min(used, OdeHelper.collide(g1, g2, PER_PAIR, buffer.getGeomBuffer()));
-        boolean ground = p1 < 0 || p2 < 0;
+        double mu = friction(p1, g1, p2, g2);
         for (int i = 0; i < n; i++) {
             DContact c = buffer.get(i);
             c.surface.mode = OdeConstants.dContactApprox1 | OdeConstants.dContactSoftERP | OdeConstants.dContactSoftCFM;
-            c.surface.mu = ground ? params.groundFriction() : params.selfFriction();
+            c.surface.mu = mu;
             c.surface.soft_erp = params.softErp();
             c.surface.soft_cfm = params.softCfm();
-            DBody b1 = g1.getBody();
-            DBody b2 = g2.getBody();
             OdeHelper.createContactJoint(world, group, c).attach(b1, b2);
             DContactGeom cg = c.geom;
             sense(p1, g1, cg.pos);
             sense(p2, g2, cg.pos);
-            keep(cg, p1, p2);
+            if (p1 >= 0 || p2 >= 0) {
+                keep(cg, p1, p2);
+            }
         }
+    }
+
+    /**
+     * Friction of a contact: the robot's parts on each other {@code selfFriction}; a part on the
+     * floor or the scenery that surface's own; two scenery objects the geometric mean of theirs.
+     */
+    private double friction(int p1, DGeom g1, int p2, DGeom g2) {
+        if (p1 >= 0 && p2 >= 0) {
+            return params.selfFriction();
+        }
+        if (p1 >= 0) {
+            return surface(g2);
+        }
+        if (p2 >= 0) {
+            return surface(g1);
+        }
+        return Math.sqrt(surface(g1) * surface(g2));
+    }
+
+    private double surface(DGeom g) {
+        return g.getData() instanceof WorldBodies.Surface s ? s.friction() : params.groundFriction();
     }
 
     private static int pieceOf(DGeom g) {

@@ -1,12 +1,10 @@
 package org.parpe.sim.internal;
 
 import java.util.List;
-import org.ode4j.math.DMatrix3;
 import org.ode4j.math.DMatrix3C;
 import org.ode4j.math.DVector3C;
 import org.ode4j.ode.DBody;
 import org.ode4j.ode.DGeom;
-import org.ode4j.ode.DHashSpace;
 import org.ode4j.ode.DHingeJoint;
 import org.ode4j.ode.DJointGroup;
 import org.ode4j.ode.DMass;
@@ -15,8 +13,8 @@ import org.ode4j.ode.DSpace;
 import org.ode4j.ode.DWorld;
 import org.ode4j.ode.OdeHelper;
 import org.parpe.sim.BodyShape;
-import org.parpe.sim.Mat3;
 import org.parpe.sim.Vec3;
+import org.parpe.sim.world.World;
 
 /**
  * The ODE4j world of one assembled robot on a flat floor: one body per rigid cluster, one
@@ -44,11 +42,17 @@ public final class PhysicsWorld implements AutoCloseable {
     private final boolean[] limp;
     private final Contacts contacts;
     private final double totalMass;
+    private final WorldBodies scenery;
     private double time;
     private long stepCount;
 
-    /** Builds the world for {@code assembly}. */
+    /** Builds the world for {@code assembly} on a flat floor. */
     public PhysicsWorld(Assembly assembly, PhysicsParams params) {
+        this(assembly, params, null);
+    }
+
+    /** Builds the world for {@code assembly} in {@code scene} (null: a flat floor with {@code params}' friction). */
+    public PhysicsWorld(Assembly assembly, PhysicsParams params, World scene) {
         this.assembly = assembly;
         this.params = params;
         world = OdeHelper.createWorld();
@@ -61,7 +65,8 @@ public final class PhysicsWorld implements AutoCloseable {
         world.setAutoDisableFlag(false);
         space = OdeHelper.createSapSpace(org.ode4j.ode.DSapSpace.AXES.XYZ);
         contactGroup = OdeHelper.createJointGroup();
-        OdeHelper.createPlane(space, 0, 0, 1, 0);
+        OdeHelper.createPlane(space, 0, 0, 1, 0)
+                .setData(new WorldBodies.Surface(scene == null ? params.groundFriction() : scene.floorFriction()));
         bodies = new DBody[assembly.clusterCount()];
         geoms = new DGeom[assembly.pieces().size()];
         double mass = 0;
@@ -78,6 +83,7 @@ public final class PhysicsWorld implements AutoCloseable {
             createHinge(h, assembly.hinges().get(h));
         }
         contacts = new Contacts(world, contactGroup, params, assembly);
+        scenery = scene == null ? null : new WorldBodies(scene, world, space);
     }
 
     private double createBody(int cluster) {
@@ -86,50 +92,23 @@ public final class PhysicsWorld implements AutoCloseable {
         total.setZero();
         for (Assembly.PlacedPiece p : pieces) {
             if (p.cluster() == cluster) {
-                DMass m = OdeHelper.createMass();
-                if (p.def().shape() instanceof BodyShape.Box b) {
-                    m.setBoxTotal(p.def().mass(), 2 * b.hx(), 2 * b.hy(), 2 * b.hz());
-                } else if (p.def().shape() instanceof BodyShape.Cylinder cy) {
-                    m.setCylinderTotal(p.def().mass(), 3, cy.radius(), cy.length());
-                } else {
-                    m.setSphereTotal(p.def().mass(), ((BodyShape.Sphere) p.def().shape()).radius());
-                }
-                m.rotate(toOde(p.rotation()));
-                m.translate(p.position().x(), p.position().y(), p.position().z());
-                total.add(m);
+                total.add(WorldBodies.pieceMass(p.def().shape(), p.def().mass(), p.rotation(), p.position()));
             }
         }
-        DVector3C c = total.getC();
-        double cx = c.get0();
-        double cy = c.get1();
-        double cz = c.get2();
-        total.translate(-cx, -cy, -cz);
-        DBody body = OdeHelper.createBody(world);
-        body.setPosition(cx, cy, cz);
-        body.setMass(total);
+        DBody body = WorldBodies.bodyAtCentre(world, total);
         bodies[cluster] = body;
         for (int i = 0; i < pieces.size(); i++) {
             Assembly.PlacedPiece p = pieces.get(i);
             if (p.cluster() == cluster) {
-                DGeom g = createGeom(p.def().shape());
+                DGeom g = WorldBodies.geom(space, p.def().shape());
                 g.setData(Integer.valueOf(i));
                 g.setBody(body);
                 g.setOffsetWorldPosition(p.position().x(), p.position().y(), p.position().z());
-                g.setOffsetWorldRotation(toOde(p.rotation()));
+                g.setOffsetWorldRotation(WorldBodies.ode(p.rotation()));
                 geoms[i] = g;
             }
         }
         return total.getMass();
-    }
-
-    private DGeom createGeom(BodyShape shape) {
-        if (shape instanceof BodyShape.Box b) {
-            return OdeHelper.createBox(space, 2 * b.hx(), 2 * b.hy(), 2 * b.hz());
-        }
-        if (shape instanceof BodyShape.Cylinder c) {
-            return OdeHelper.createCylinder(space, c.radius(), c.length());
-        }
-        return OdeHelper.createSphere(space, ((BodyShape.Sphere) shape).radius());
     }
 
     private void createHinge(int h, Assembly.Hinge def) {
@@ -145,10 +124,6 @@ public final class PhysicsWorld implements AutoCloseable {
         j.setParamLoStop(-G1.JOINT_RANGE - def.angle());
         j.setParamHiStop(G1.JOINT_RANGE - def.angle());
         hinges[h] = j;
-    }
-
-    private static DMatrix3 toOde(Mat3 m) {
-        return new DMatrix3(m.m00(), m.m01(), m.m02(), m.m10(), m.m11(), m.m12(), m.m20(), m.m21(), m.m22());
     }
 
     /** Sets the angle hinge {@code h} drives to, radians (clamped to the joint range). */
@@ -179,6 +154,10 @@ public final class PhysicsWorld implements AutoCloseable {
             driveServos();
             contacts.clearKept();
             space.collide(null, contacts);
+            if (scenery != null) {
+                scenery.springs();
+                OdeHelper.spaceCollide2(space, scenery.fixedSpace(), null, contacts);
+            }
             // QuickStep reorders constraints with ODE's global random generator; seeding it from
             // this world's own step count keeps runs reproducible whatever else uses ODE.
             DMisc.dRandSetSeed(stepCount++);
@@ -323,8 +302,39 @@ public final class PhysicsWorld implements AutoCloseable {
         return new Vec3(p.get0(), p.get1(), p.get2());
     }
 
+    /** The world the robot is in, or null on the flat floor. */
+    public World scene() {
+        return scenery == null ? null : scenery.scene();
+    }
+
+    /** Number of movable objects of the world. */
+    public int objectCount() {
+        return scenery == null ? 0 : scenery.objectCount();
+    }
+
+    /** Writes the centre of mass of movable object {@code i} into {@code out[0..2]}. */
+    public void objectCentre(int i, double[] out) {
+        DVector3C p = scenery.objectPosition(i);
+        out[0] = p.get0();
+        out[1] = p.get1();
+        out[2] = p.get2();
+    }
+
+    /** The geoms of movable object {@code i}, in the order of its pieces (snapshots). */
+    DGeom[] objectGeoms(int i) {
+        return scenery.objectGeoms(i);
+    }
+
+    /** How far lever {@code i} is turned from its rest stop, radians. */
+    public double leverAngle(int i) {
+        return scenery.leverAngle(i);
+    }
+
     @Override
     public void close() {
+        if (scenery != null) {
+            scenery.destroy();
+        }
         contactGroup.destroy();
         space.destroy();
         world.destroy();

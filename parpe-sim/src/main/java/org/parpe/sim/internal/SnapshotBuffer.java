@@ -8,7 +8,9 @@ import java.util.TreeMap;
 import java.util.TreeSet;
 import org.ode4j.math.DMatrix3C;
 import org.ode4j.math.DVector3C;
+import org.ode4j.ode.DGeom;
 import org.parpe.sim.Mat3;
+import org.parpe.sim.PartKind;
 import org.parpe.sim.SimBody;
 import org.parpe.sim.SimContact;
 import org.parpe.sim.SimSnapshot;
@@ -21,6 +23,8 @@ import org.parpe.sim.Vec3;
  */
 public final class SnapshotBuffer {
     private final PhysicsWorld world;
+    /** The world's fixed solids, the same in every snapshot. */
+    private final List<SimBody> fixedScenery;
     private final Object lock = new Object();
     private State front;
     private State back;
@@ -30,6 +34,7 @@ public final class SnapshotBuffer {
 
     public SnapshotBuffer(PhysicsWorld world) {
         this.world = world;
+        fixedScenery = fixedScenery(world);
         front = new State(world);
         back = new State(world);
         back.capture(world);
@@ -51,16 +56,27 @@ public final class SnapshotBuffer {
     public SimSnapshot snapshot() {
         synchronized (lock) {
             if (builtVersion != version) {
-                built = front.build(world.assembly());
+                built = front.build(world, fixedScenery);
                 builtVersion = version;
             }
             return built;
         }
     }
 
+    private static List<SimBody> fixedScenery(PhysicsWorld w) {
+        List<SimBody> out = new ArrayList<>();
+        if (w.scene() != null) {
+            for (org.parpe.sim.world.World.Solid s : w.scene().solids()) {
+                out.add(new SimBody(-1, s.kind(), PartKind.SCENERY, s.shape(), s.position(), s.rotation()));
+            }
+        }
+        return List.copyOf(out);
+    }
+
     /** One copy of everything a snapshot shows, in flat arrays. */
     private static final class State {
         final double[] pose;
+        final double[] objectPose;
         final double[] angles;
         final double[] targets;
         final boolean[] limp;
@@ -72,6 +88,11 @@ public final class SnapshotBuffer {
 
         State(PhysicsWorld w) {
             pose = new double[w.pieceCount() * 12];
+            int objectPieces = 0;
+            for (int i = 0; i < w.objectCount(); i++) {
+                objectPieces += w.objectGeoms(i).length;
+            }
+            objectPose = new double[objectPieces * 12];
             angles = new double[w.hingeCount()];
             targets = new double[w.hingeCount()];
             limp = new boolean[w.hingeCount()];
@@ -80,14 +101,13 @@ public final class SnapshotBuffer {
         void capture(PhysicsWorld w) {
             time = w.time();
             for (int i = 0; i < w.pieceCount(); i++) {
-                DVector3C p = w.piecePosition(i);
-                DMatrix3C r = w.pieceRotation(i);
-                int k = i * 12;
-                pose[k] = p.get0();
-                pose[k + 1] = p.get1();
-                pose[k + 2] = p.get2();
-                for (int j = 0; j < 9; j++) {
-                    pose[k + 3 + j] = r.get(j / 3, j % 3);
+                copyPose(w.piecePosition(i), w.pieceRotation(i), pose, i * 12);
+            }
+            int k = 0;
+            for (int i = 0; i < w.objectCount(); i++) {
+                for (DGeom g : w.objectGeoms(i)) {
+                    copyPose(g.getPosition(), g.getRotation(), objectPose, k);
+                    k += 12;
                 }
             }
             for (int h = 0; h < angles.length; h++) {
@@ -102,15 +122,31 @@ public final class SnapshotBuffer {
             System.arraycopy(c.keptPieces, 0, contactPieces, 0, contactCount * 2);
         }
 
-        SimSnapshot build(Assembly a) {
+        private static void copyPose(DVector3C p, DMatrix3C r, double[] out, int k) {
+            out[k] = p.get0();
+            out[k + 1] = p.get1();
+            out[k + 2] = p.get2();
+            for (int j = 0; j < 9; j++) {
+                out[k + 3 + j] = r.get(j / 3, j % 3);
+            }
+        }
+
+        private static Vec3 position(double[] pose, int k) {
+            return new Vec3(pose[k], pose[k + 1], pose[k + 2]);
+        }
+
+        private static Mat3 rotation(double[] pose, int k) {
+            return new Mat3(pose[k + 3], pose[k + 4], pose[k + 5], pose[k + 6], pose[k + 7], pose[k + 8],
+                    pose[k + 9], pose[k + 10], pose[k + 11]);
+        }
+
+        SimSnapshot build(PhysicsWorld w, List<SimBody> fixed) {
+            Assembly a = w.assembly();
             List<SimBody> bodies = new ArrayList<>();
             for (int i = 0; i < a.pieces().size(); i++) {
                 Assembly.PlacedPiece p = a.pieces().get(i);
-                int k = i * 12;
-                Mat3 r = new Mat3(pose[k + 3], pose[k + 4], pose[k + 5], pose[k + 6], pose[k + 7], pose[k + 8],
-                        pose[k + 9], pose[k + 10], pose[k + 11]);
                 bodies.add(new SimBody(p.part().moduleId(), p.part().name(), p.def().kind(), p.def().shape(),
-                        new Vec3(pose[k], pose[k + 1], pose[k + 2]), r));
+                        position(pose, i * 12), rotation(pose, i * 12)));
             }
             List<SimContact> cs = new ArrayList<>();
             for (int i = 0; i < contactCount; i++) {
@@ -132,7 +168,18 @@ public final class SnapshotBuffer {
                     limpSet.add(id);
                 }
             }
-            return new SimSnapshot(time, bodies, cs, new Vec3(com[0], com[1], com[2]), measured, target, limpSet);
+            List<SimBody> scenery = new ArrayList<>(fixed);
+            int k = 0;
+            for (int i = 0; i < w.objectCount(); i++) {
+                org.parpe.sim.world.World.MovableObject o = w.scene().objects().get(i);
+                for (org.parpe.sim.world.World.Piece p : o.pieces()) {
+                    scenery.add(new SimBody(-1, o.name(), PartKind.OBJECT, p.shape(), position(objectPose, k),
+                            rotation(objectPose, k)));
+                    k += 12;
+                }
+            }
+            return new SimSnapshot(time, bodies, cs, new Vec3(com[0], com[1], com[2]), measured, target, limpSet,
+                    scenery);
         }
     }
 }

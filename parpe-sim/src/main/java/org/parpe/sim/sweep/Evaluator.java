@@ -1,5 +1,8 @@
 package org.parpe.sim.sweep;
 
+import org.parpe.core.diag.DiagnosticList;
+import org.parpe.sim.world.World;
+import org.parpe.sim.world.WorldReader;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -31,6 +34,8 @@ public final class Evaluator {
     private final double duration;
     private final double tick;
     private final double fallTiltDeg;
+    private final Path worldFile;
+    private final World world;
     private final Program base;
     /** The robot of the last run, built once for all runs with the same modules. */
     private volatile Robot robotBuilt;
@@ -39,7 +44,9 @@ public final class Evaluator {
     private record Robot(int[] moduleIds, SimTarget.Blueprint blueprint) {
     }
 
-    private Evaluator(Settings s, Program base, Robot robot) {
+    private Evaluator(Settings s, World world, Program base, Robot robot) {
+        this.worldFile = s.world();
+        this.world = world;
         this.script = s.script();
         this.text = s.text();
         this.fixed = Map.copyOf(s.fixed());
@@ -62,9 +69,21 @@ public final class Evaluator {
      * @param duration    simulated seconds per run, > 0
      * @param tick        the scheduler's tick, s
      * @param fallTiltDeg the tilt beyond which the robot counts as fallen over, degrees
+     * @param world       the world file every run is in and scored by, or null for the flat floor
      */
     public record Settings(Path script, String text, Map<String, Double> fixed, String robot, double duration,
-                           double tick, double fallTiltDeg) {
+                           double tick, double fallTiltDeg, Path world) {
+
+        /** Settings for runs on the flat floor. */
+        public Settings(Path script, String text, Map<String, Double> fixed, String robot, double duration,
+                        double tick, double fallTiltDeg) {
+            this(script, text, fixed, robot, duration, tick, fallTiltDeg, null);
+        }
+    }
+
+    /** Whether the runs are in a world, so that their rows have a score. */
+    public boolean scored() {
+        return world != null;
     }
 
     /**
@@ -87,15 +106,25 @@ public final class Evaluator {
         if (r.program().main() == null) {
             throw new SweepException(s.script() + ": the script has no <main>, so it would not move the robot");
         }
+        World world = null;
+        if (s.world() != null) {
+            DiagnosticList found = new DiagnosticList();
+            world = WorldReader.read(s.world(), found);
+            if (world == null) {
+                List<Diagnostic> problems = found.all();
+                throw new SweepException(problems.get(0).format()
+                        + (problems.size() > 1 ? " (and " + (problems.size() - 1) + " more)" : ""));
+            }
+        }
         String spec = SimTarget.AUTO.equals(s.robot()) ? SimTarget.autoSpec(r.program()) : s.robot();
         Robot robot;
         try {
-            robot = new Robot(r.program().moduleIds(), SimTarget.blueprint(spec, r.program().moduleIds()));
+            robot = new Robot(r.program().moduleIds(), SimTarget.blueprint(spec, r.program().moduleIds(), world));
             robot.blueprint().simulator().close();
         } catch (TargetException e) {
             throw new SweepException(e.diagnostics().isEmpty() ? e.getMessage() : e.diagnostics().get(0).format());
         }
-        return new Evaluator(s, r.program(), robot);
+        return new Evaluator(s, world, r.program(), robot);
     }
 
     /** The script's parameters (with their bounds), in file order. */
@@ -161,7 +190,8 @@ public final class Evaluator {
         double time = m.duration();
         return new SweepRow(point, time, m.distance(), m.dx(), time > 0 ? m.dx() / time : 0, m.speed(),
                 m.maxTiltDeg(), travel.total(), m.maxTiltDeg() > fallTiltDeg,
-                outcome.status() == RunOutcome.Status.ERROR ? outcome.message() : "");
+                outcome.status() == RunOutcome.Status.ERROR ? outcome.message() : "",
+                m.score() == null ? Double.NaN : m.score().score());
     }
 
     /**
@@ -174,7 +204,7 @@ public final class Evaluator {
         Robot built = robotBuilt;
         if (built == null || !java.util.Arrays.equals(built.moduleIds(), ids)) {
             String spec = SimTarget.AUTO.equals(robot) ? SimTarget.autoSpec(program) : robot;
-            built = new Robot(ids, SimTarget.blueprint(spec, ids));
+            built = new Robot(ids, SimTarget.blueprint(spec, ids, world));
             robotBuilt = built;
         }
         return built.blueprint();
@@ -207,7 +237,7 @@ public final class Evaluator {
             };
         }
         Object[] loaded = far.apply(new Object[] {"load", script.toString(), text, new java.util.HashMap<>(fixed),
-            robot, duration, tick, fallTiltDeg});
+            robot, duration, tick, fallTiltDeg, worldFile == null ? null : worldFile.toString()});
         if (loaded != null) {
             Lanes.release(loader);
             throw new IllegalStateException("the worker's copy of the script does not load: " + loaded[0]);

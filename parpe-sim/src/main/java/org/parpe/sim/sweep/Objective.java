@@ -11,7 +11,9 @@ public enum Objective {
     /** How far it went forwards (+x), m. */
     FORWARD("forward", "forward (m)"),
     /** How far it went in any direction, m. */
-    DISTANCE("distance", "distance (m)");
+    DISTANCE("distance", "distance (m)"),
+    /** The score of the run in its world (sweeps with a world only). */
+    SCORE("score", "score (points)");
 
     private final String id;
     private final String label;
@@ -38,6 +40,7 @@ public enum Objective {
             case SPEED -> row.speed();
             case FORWARD -> row.forward();
             case DISTANCE -> row.distance();
+            case SCORE -> row.score();
         };
     }
 

@@ -85,6 +85,16 @@ public final class SweepCsv {
                 .toString();
     }
 
+    /** The header line for a sweep of {@code axes}; {@code scored}: with a last column {@code score} (a sweep in a world). */
+    public static String header(List<Axis> axes, boolean scored) {
+        return header(axes) + (scored ? ",score" : "");
+    }
+
+    /** The line of {@code row} in a sweep of {@code runs} runs; {@code scored}: with its score last. */
+    public static String line(SweepRow row, int runs, boolean scored) {
+        return line(row, runs) + (!scored ? "" : Double.isNaN(row.score()) ? "," : String.format(Locale.ROOT, ",%.6f", row.score()));
+    }
+
     /** The line of {@code row} in a sweep of {@code runs} runs. */
     public static String line(SweepRow row, int runs) {
         Point p = row.point();
@@ -112,15 +122,24 @@ public final class SweepCsv {
      */
     public static SweepResult read(List<String> lines) throws SweepException {
         String[] head = lines.get(0).split(",", -1);
-        int params = head.length - 14;
+        boolean scored = head.length > 0 && head[head.length - 1].equals("score");
+        int params = head.length - 14 - (scored ? 1 : 0);
         int columns = params + 14;
         List<SweepRow> rows = new ArrayList<>();
-        for (String text : lines.subList(1, lines.size())) {
-            String[] f = text.split(",", columns);
-            if (params < 0 || f.length != columns) {
-                throw new SweepException("not a row of " + columns + " columns: '" + text + "'");
-            }
+        for (String line : lines.subList(1, lines.size())) {
+            String text = line;
+            double score = Double.NaN;
             try {
+                if (scored) { // the score follows the quoted error, which may hold commas
+                    int last = text.lastIndexOf(',');
+                    String s = last < 0 ? "" : text.substring(last + 1);
+                    score = s.isEmpty() ? Double.NaN : Double.parseDouble(s);
+                    text = last < 0 ? text : text.substring(0, last);
+                }
+                String[] f = text.split(",", columns);
+                if (params < 0 || f.length != columns) {
+                    throw new SweepException("not a row of " + (columns + (scored ? 1 : 0)) + " columns: '" + line + "'");
+                }
                 Map<String, Double> values = new java.util.LinkedHashMap<>();
                 for (int a = 0; a < params; a++) {
                     values.put(head[5 + a], Double.valueOf(f[5 + a]));
@@ -136,9 +155,10 @@ public final class SweepCsv {
                 }
                 Point p = new Point(Integer.parseInt(f[0]), Integer.parseInt(f[2]), Integer.parseInt(f[3]), values,
                         Long.parseLong(f[4]));
-                rows.add(new SweepRow(p, m[0], m[1], m[2], m[3], m[4], m[5], m[6], f[columns - 2].equals("1"), error));
+                rows.add(new SweepRow(p, m[0], m[1], m[2], m[3], m[4], m[5], m[6], f[columns - 2].equals("1"), error,
+                        score));
             } catch (NumberFormatException e) {
-                throw new SweepException("a column that should be a number is not, in '" + text + "'");
+                throw new SweepException("a column that should be a number is not, in '" + line + "'");
             }
         }
         return new SweepResult(rows, false);

@@ -17,9 +17,18 @@ import java.util.Map;
  * @param fell           whether the robot fell over (its tilt passed the sweep's limit)
  * @param error          the run-time error (or the reason the run could not start), empty if none;
  *                       the numbers are NaN when the run could not start
+ * @param score          the world's score of the run, NaN without a world
  */
 public record SweepRow(Point point, double duration, double distance, double forward, double forwardSpeed,
-                       double speed, double maxTiltDeg, double jointTravelDeg, boolean fell, String error) {
+                       double speed, double maxTiltDeg, double jointTravelDeg, boolean fell, String error,
+                       double score) {
+
+    /** A row of a run on the flat floor (no score). */
+    public SweepRow(Point point, double duration, double distance, double forward, double forwardSpeed,
+                    double speed, double maxTiltDeg, double jointTravelDeg, boolean fell, String error) {
+        this(point, duration, distance, forward, forwardSpeed, speed, maxTiltDeg, jointTravelDeg, fell, error,
+                Double.NaN);
+    }
 
     /** The varied parameters' values. */
     public Map<String, Double> values() {

@@ -76,6 +76,22 @@ class SweepTest {
         assertThrows(SweepException.class, () -> SweepCsv.read(List.of(lines.get(0), "0,6,0,0,7,20")));
     }
 
+    /** A sweep in a world has a last {@code score} column after the quoted error: it reads back too (merge --plot). */
+    @Test
+    void aScoredCsvReadsBackWithItsScores() throws Exception {
+        Point p = new Point(0, 0, 0, Map.of("bend", 20.0), 7);
+        SweepRow ok = new SweepRow(p, 5, 1, 0.9, 0.18, 0.2, 12, 300, false, "", 42.5);
+        SweepRow failed = new SweepRow(new Point(1, 1, 0, Map.of("bend", 50.0), 7), Double.NaN, Double.NaN, Double.NaN,
+                Double.NaN, Double.NaN, Double.NaN, Double.NaN, false, "bend 50 > max, \"60\"", Double.NaN);
+        List<String> lines = List.of(SweepCsv.header(List.of(Axis.list("bend", List.of(20.0, 50.0))), true),
+                SweepCsv.line(ok, 2, true), SweepCsv.line(failed, 2, true));
+        assertTrue(lines.get(0).endsWith(",error,score"), lines.get(0));
+        SweepResult read = SweepCsv.read(lines);
+        assertEquals(42.5, read.rows().get(0).score());
+        assertEquals("bend 50 > max, \"60\"", read.rows().get(1).error());
+        assertEquals(lines.subList(1, 3), read.rows().stream().map(r -> SweepCsv.line(r, 2, true)).toList());
+    }
+
     /** Issue 26, item 3: a shard's framing lines are checked and dropped; an unfinished shard is named. */
     @Test
     void framedShardsMergeAndAnUnfinishedOneIsNamed() throws Exception {

@@ -1,0 +1,72 @@
+package org.parpe.gui.app;
+
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.layout.GridData;
+import org.eclipse.swt.layout.GridLayout;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Label;
+import org.eclipse.swt.widgets.Shell;
+import org.eclipse.swt.widgets.Spinner;
+import org.parpe.gui.view3d.ModuleCameraView;
+
+/**
+ * A small window beside the IDE with the camera of a chosen module (the paper's snake carried a
+ * CCD camera for teleoperation through the rubble): the module ID to look from, and the view,
+ * redrawn from the IDE's snapshots about 20 times a second while the window is open.
+ */
+final class ModuleCameraWindow {
+    private static final int FRAME_MS = 50;
+
+    private final Shell shell;
+    private final Spinner id;
+    private final ModuleCameraView view;
+
+    private ModuleCameraWindow(IdeWindow ide) {
+        shell = new Shell(ide.shell(), SWT.SHELL_TRIM | SWT.TOOL);
+        shell.setText("Module camera");
+        shell.setLayout(new GridLayout(1, false));
+        Composite row = new Composite(shell, SWT.NONE);
+        row.setLayout(new GridLayout(2, false));
+        new Label(row, SWT.NONE).setText("Camera on module:");
+        id = new Spinner(row, SWT.BORDER);
+        id.setValues(0, 0, 999, 0, 1, 10);
+        id.setToolTipText("The module whose front face carries the camera (the head of a snake is its last module)");
+        view = new ModuleCameraView(shell);
+        view.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
+        view.setSource(ide.runs()::snapshot);
+        id.addListener(SWT.Selection, e -> view.setModule(id.getSelection()));
+        if (ide.program() != null && ide.program().moduleIds().length > 0) {
+            int[] ids = ide.program().moduleIds();
+            id.setSelection(ids[ids.length - 1]);
+        }
+        view.setModule(id.getSelection());
+        shell.setSize(480, 400);
+    }
+
+    /** Opens the window for {@code ide}, looking from the script's last module. */
+    static ModuleCameraWindow open(IdeWindow ide) {
+        ModuleCameraWindow w = new ModuleCameraWindow(ide);
+        w.shell.open();
+        w.tick();
+        return w;
+    }
+
+    private void tick() {
+        if (shell.isDisposed()) {
+            return;
+        }
+        view.control().redraw();
+        shell.getDisplay().timerExec(FRAME_MS, this::tick);
+    }
+
+    /** The window. */
+    Shell shell() {
+        return shell;
+    }
+
+    /** Looks from module {@code module}. */
+    void setModule(int module) {
+        id.setSelection(module);
+        view.setModule(module);
+    }
+}

@@ -1,0 +1,81 @@
+package org.parpe.gui.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.util.concurrent.atomic.AtomicReference;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+import org.parpe.core.run.RunOutcome;
+import org.parpe.gui.run.Speed;
+import org.parpe.gui.run.Target;
+import org.parpe.sim.PartKind;
+import org.parpe.sim.SimSnapshot;
+import org.parpe.sim.world.World;
+
+/**
+ * The world picker beside the robot picker: each example world chosen in the IDE is what the
+ * robot runs in, and the 3D view draws its scenery and objects (screenshots
+ * {@code world-NAME.png} in the test artefacts); the module camera shows the world from the
+ * snake's head ({@code camera-NAME.png}).
+ */
+class WorldGuiTest {
+    @TempDir
+    static Path home;
+    static IdeWindow ide;
+
+    @BeforeAll
+    static void open() {
+        ide = Gui.openIde(home);
+        ide.shell().setSize(1480, 920);
+    }
+
+    @AfterAll
+    static void close() {
+        Gui.closeIde(ide);
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @CsvSource({"race-track, worlds/race-track-snake.xml", "rubble, tutorial/12-rubble-snake.xml",
+        "slot-machine, tutorial/13-slot-machine-snake.xml"})
+    void aChosenWorldIsRunAndDrawn(String world, String script) throws Exception {
+        Gui.open(ide, Gui.example(script));
+        ide.viewBar().world().choose(Gui.example("worlds/" + world + ".xml"));
+        World w = ide.viewBar().world().world();
+        assertTrue(w != null, world + " did not load");
+        ide.runs().invalidatePreview();
+        ide.runs().updatePreview(ide.program());
+        // the preview (the robot at the world's start) is built in the background: wait for it
+        Gui.pump(() -> ide.runs().snapshot() != null && ide.runs().snapshot().scenery().size() > 0,
+                "the preview in " + world);
+        ide.toolbar().setTarget(Target.SIMULATOR);
+        ide.toolbar().setSpeed(Speed.MAX);
+        AtomicReference<RunOutcome> end = new AtomicReference<>();
+        ide.runs().run(false, 12, end::set);
+        Gui.pump(() -> end.get() != null, "the run in " + world);
+        Gui.settle();
+        SimSnapshot s = ide.runs().snapshot();
+        assertTrue(s.time() > 11.9, "the view shows the end of the run, t = " + s.time() + "; " + end.get() + "; " + ide.status().message());
+        long solids = s.scenery().stream().filter(b -> b.kind() == PartKind.SCENERY).count();
+        long pieces = w.objects().stream().mapToLong(o -> o.pieces().size()).sum();
+        assertEquals(w.solids().size(), solids, "the world's solids are in the snapshot the view draws");
+        assertEquals(pieces, s.scenery().size() - solids, "and its objects' pieces");
+        assertTrue(s.centerOfMass().x() > 0.4, "the robot started at the world's start and moved: " + s.centerOfMass());
+        assertTrue(ide.status().message().contains("; score "), "the status gives the score: " + ide.status().message());
+        Gui.screenshot(ide.shell(), "world-" + world + ".png");
+        ModuleCameraWindow camera = ModuleCameraWindow.open(ide);
+        try {
+            camera.shell().setSize(720, 520);
+            camera.setModule(7);
+            Gui.settle();
+            // the head's camera looks along the snake, at the world ahead of it
+            Gui.screenshot(camera.shell(), "camera-" + world + ".png");
+        } finally {
+            camera.shell().dispose();
+        }
+    }
+}

@@ -1,0 +1,192 @@
+package org.parpe.sim.world;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import org.parpe.core.diag.DiagnosticSink;
+import org.parpe.core.diag.SourcePos;
+import org.parpe.core.xml.FlatXmlFile;
+import org.parpe.sim.BodyShape;
+import org.parpe.sim.Mat3;
+import org.parpe.sim.Vec3;
+import org.parpe.sim.internal.Geo;
+
+/**
+ * Reads a world file (format in {@code docs/simulator.md}) with the project's flat XML reader,
+ * so its input limits and {@code FILE:LINE:COL} messages are those of robot configurations.
+ * Reports every problem it finds; then returns {@code null}.
+ */
+public final class WorldReader {
+    /** Largest coordinate or length accepted, m. */
+    static final double FAR = 1000;
+    private static final String CHILDREN = "<start>, <arena>, <box>, <step>, <ramp>, <wall>, <cylinder>, <rubble>,"
+            + " <chip>, <ball>, <cup>, <lever>, <zone>, <checkpoint>, <goal>, <path-score>, <deliver>, <press>"
+            + " or <disqualify>";
+
+    private final FlatXmlFile xml;
+    private final Scenery scenery;
+    private final List<World.Region> zones = new ArrayList<>();
+    private final List<World.Region> checkpoints = new ArrayList<>();
+    private final List<Map.Entry<FlatXmlFile.Element, String>> scoreElements = new ArrayList<>();
+    private final Set<String> names = new HashSet<>();
+    private World.Start start;
+    private World.Region arena;
+    private double floorFriction;
+
+    private WorldReader(FlatXmlFile xml) {
+        this.xml = xml;
+        this.scenery = new Scenery(this);
+    }
+
+    /** Reads {@code path}; returns {@code null} after reporting errors to {@code diags}. */
+    public static World read(Path path, DiagnosticSink diags) {
+        FlatXmlFile xml = FlatXmlFile.read(path, "world file", "world",
+                "a <world> element with <box>, <ramp>, <zone> and other elements", diags);
+        if (xml.root() == null) {
+            return null;
+        }
+        WorldReader r = new WorldReader(xml);
+        Map<String, String> ra = xml.rootAttributes();
+        xml.known(ra, Set.of("time-limit", "floor-friction"), "world", xml.root());
+        double timeLimit = xml.number(ra, "time-limit", 30, xml.root(), false, 0.01, 1e6);
+        r.floorFriction = r.num(ra, "floor-friction", World.DEFAULT_FLOOR_FRICTION, xml.root(), 0, 10);
+        for (FlatXmlFile.Element e : xml.children()) {
+            r.element(e);
+        }
+        World.Scoring scoring = new ScoringReader(r, r.zones, r.scenery).read(r.scoreElements);
+        if (scoring.leaveArena() && r.arena == null) {
+            xml.error(xml.root(), "<disqualify leave-arena=\"true\"> needs an <arena>");
+        }
+        if (!xml.ok()) {
+            return null;
+        }
+        return new World(path.toString(), r.floorFriction, timeLimit, r.start == null ? World.Start.ORIGIN : r.start,
+                r.arena, r.scenery.solids(), r.scenery.objects(), r.scenery.levers(), r.zones, r.checkpoints, scoring);
+    }
+
+    private void element(FlatXmlFile.Element e) {
+        Map<String, String> a = e.attributes();
+        SourcePos at = e.at();
+        switch (e.name()) {
+            case "start" -> start(a, at);
+            case "arena" -> {
+                if (arena != null) {
+                    error(at, "<arena> is given twice");
+                } else if (known(a, at, "arena", "x0", "y0", "x1", "y1")) {
+                    arena = region("arena", a, at);
+                }
+            }
+            case "zone" -> {
+                if (known(a, at, "zone", "name", "x0", "y0", "x1", "y1") && required(a, at, "zone", "name")
+                        && unique(a.get("name"), at)) {
+                    zones.add(region(a.get("name"), a, at));
+                }
+            }
+            case "checkpoint" -> {
+                if (known(a, at, "checkpoint", "name", "x0", "y0", "x1", "y1")) {
+                    checkpoints.add(region(a.getOrDefault("name", "checkpoint " + (checkpoints.size() + 1)), a, at));
+                }
+            }
+            case "box", "step", "ramp", "wall", "cylinder", "rubble" -> scenery.solid(e.name(), a, at);
+            case "chip", "ball", "cup", "lever" -> scenery.movable(e.name(), a, at);
+            case "goal", "path-score", "deliver", "press", "disqualify" -> scoreElements.add(Map.entry(e, e.name()));
+            default -> error(at, "unknown element <" + e.name() + ">; expected " + CHILDREN);
+        }
+    }
+
+    private void start(Map<String, String> a, SourcePos at) {
+        if (start != null) {
+            error(at, "<start> is given twice");
+            return;
+        }
+        if (known(a, at, "start", "x", "y", "z", "yaw", "pitch")) {
+            start = new World.Start(coord(a, "x", 0, at), coord(a, "y", 0, at), num(a, "z", 0, at, 0, FAR),
+                    num(a, "yaw", 0, at, -360, 360), num(a, "pitch", 0, at, -90, 90));
+        }
+    }
+
+    /** A rectangle from x0, y0, x1, y1 (all required, x0 < x1, y0 < y1). */
+    World.Region region(String name, Map<String, String> a, SourcePos at) {
+        String element = name.equals("arena") ? "arena" : "zone";
+        required(a, at, element, "x0", "y0", "x1", "y1");
+        double x0 = coord(a, "x0", 0, at);
+        double y0 = coord(a, "y0", 0, at);
+        double x1 = coord(a, "x1", 0, at);
+        double y1 = coord(a, "y1", 0, at);
+        if (a.containsKey("x1") && a.containsKey("y1") && (!(x0 < x1) || !(y0 < y1))) {
+            error(at, "a region needs x0 < x1 and y0 < y1, got x0=" + a.get("x0") + " x1=" + a.get("x1")
+                    + " y0=" + a.get("y0") + " y1=" + a.get("y1"));
+        }
+        return new World.Region(name, x0, y0, x1, y1, at);
+    }
+
+    /** Whether {@code name} is not yet the name of a zone or object (else an error). */
+    boolean unique(String name, SourcePos at) {
+        if (!names.add(name)) {
+            error(at, "the name '" + name + "' is used twice");
+            return false;
+        }
+        return true;
+    }
+
+    boolean known(Map<String, String> a, SourcePos at, String element, String... allowed) {
+        return xml.known(a, Set.of(allowed), element, at);
+    }
+
+    boolean required(Map<String, String> a, SourcePos at, String element, String... keys) {
+        return xml.required(a, at, element, keys);
+    }
+
+    /** A coordinate within ±{@value #FAR} m. */
+    double coord(Map<String, String> a, String key, double fallback, SourcePos at) {
+        return num(a, key, fallback, at, -FAR, FAR);
+    }
+
+    /** A length, &gt; 0 and at most {@value #FAR} m. */
+    double length(Map<String, String> a, String key, double fallback, SourcePos at) {
+        double v = num(a, key, fallback, at, 0, FAR);
+        if (a.containsKey(key) && v == 0) {
+            error(at, key + " must be > 0 m, got " + a.get(key));
+            return fallback;
+        }
+        return v;
+    }
+
+    /** The attribute {@code friction}, 0…10; the floor's when not given. */
+    double friction(Map<String, String> a, SourcePos at) {
+        return num(a, "friction", floorFriction, at, 0, 10);
+    }
+
+    double floorFriction() {
+        return floorFriction;
+    }
+
+    double num(Map<String, String> a, String key, double fallback, SourcePos at, double lo, double hi) {
+        return xml.number(a, key, fallback, at, false, lo, hi);
+    }
+
+    long whole(Map<String, String> a, String key, long fallback, SourcePos at, long lo, long hi) {
+        return (long) xml.number(a, key, fallback, at, true, lo, hi);
+    }
+
+    void error(SourcePos at, String message) {
+        xml.error(at, message);
+    }
+
+    /** A box with half extents {@code hx, hy, hz}. */
+    static BodyShape.Box box(double hx, double hy, double hz) {
+        return new BodyShape.Box(hx, hy, hz);
+    }
+
+    /** Rotation by {@code yawDeg} about z. */
+    static Mat3 yaw(double yawDeg) {
+        return Geo.clean(Geo.rollPitchYaw(0, 0, yawDeg));
+    }
+
+    static Vec3 v(double x, double y, double z) {
+        return new Vec3(x, y, z);
+    }
+}
