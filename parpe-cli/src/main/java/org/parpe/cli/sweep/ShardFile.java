@@ -1,13 +1,16 @@
 package org.parpe.cli.sweep;
 
+import java.io.BufferedWriter;
 import java.io.IOException;
+import java.io.OutputStreamWriter;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
 import org.parpe.cli.UsageException;
+import org.parpe.core.io.AtomicFiles;
 import org.parpe.sim.sweep.SweepCsv;
 
 /**
@@ -45,18 +48,25 @@ final class ShardFile {
         return f;
     }
 
-    /** Opens {@code FILE.partial} (replacing an unfinished shard's) for writing. */
+    /**
+     * Opens {@code FILE.partial} (replacing an unfinished shard's) for writing; a link, device or
+     * FIFO planted at that name is refused, never followed.
+     */
     Writer open() throws IOException {
-        return Files.newBufferedWriter(partial, StandardCharsets.UTF_8);
+        if (Files.exists(partial, LinkOption.NOFOLLOW_LINKS) && !Files.isRegularFile(partial, LinkOption.NOFOLLOW_LINKS)) {
+            throw new IOException("'" + partial + "' exists and is not a regular file; move it away");
+        }
+        return new BufferedWriter(new OutputStreamWriter(Files.newOutputStream(partial, StandardOpenOption.CREATE,
+                StandardOpenOption.TRUNCATE_EXISTING, StandardOpenOption.WRITE, LinkOption.NOFOLLOW_LINKS),
+                StandardCharsets.UTF_8));
     }
 
-    /** The shard ran to its end and its writer is closed: it takes its proper name. */
+    /**
+     * The shard ran to its end and its writer is closed: it takes its proper name, put in place
+     * by the output policy (through a link, over a regular file only, keeping its mode).
+     */
     void commit() throws IOException {
-        try {
-            Files.move(partial, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-        } catch (AtomicMoveNotSupportedException e) {
-            Files.move(partial, target, StandardCopyOption.REPLACE_EXISTING);
-        }
+        AtomicFiles.moveIntoPlace(partial, target);
     }
 
     /** Where the rows of an unfinished shard are. */

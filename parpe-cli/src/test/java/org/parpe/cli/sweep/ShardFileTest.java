@@ -162,4 +162,33 @@ class ShardFileTest {
         assertEquals(javax.imageio.ImageIO.read(dir.resolve("whole.png").toFile()).getHeight(),
                 javax.imageio.ImageIO.read(png.toFile()).getHeight());
     }
+    /**
+     * Issue 18 (the output policy) for shards: a shard named through a link is written through
+     * it (the link stays, its file gets the rows and keeps its mode), and a link planted at the
+     * {@code .partial} name is refused, never followed.
+     */
+    @Test
+    void aShardIsPutInPlaceByTheOutputPolicy() throws Exception {
+        Path elsewhere = Files.createDirectory(dir.resolve("results"));
+        Path real = Files.writeString(elsewhere.resolve("shard-1.csv"), "old\n");
+        Files.setPosixFilePermissions(real, java.nio.file.attribute.PosixFilePermissions.fromString("rw-rw-r--"));
+        Files.createSymbolicLink(dir.resolve("shard-1.csv"), real);
+        Process p = shard(1, "0.2", dir.resolve("one.log"));
+        assertTrue(p.waitFor(120, TimeUnit.SECONDS));
+        assertEquals(0, p.exitValue(), Files.readString(dir.resolve("one.log")));
+        assertTrue(Files.isSymbolicLink(dir.resolve("shard-1.csv")), "the link was replaced by a file");
+        List<String> rows = Files.readAllLines(real);
+        assertTrue(rows.get(rows.size() - 1).endsWith("complete"), rows.toString());
+        assertEquals("rw-rw-r--", java.nio.file.attribute.PosixFilePermissions.toString(Files.getPosixFilePermissions(real)));
+
+        // looks like an unfinished shard, so only the refusal to follow a link protects it
+        String shardLike = "# parpe sweep shard 3/3: 2 runs from run 4 of 6\nkeep me\n";
+        Path victim = Files.writeString(dir.resolve("victim.txt"), shardLike);
+        Files.createSymbolicLink(dir.resolve("shard-3.csv.partial"), victim);
+        Process q = shard(3, "0.2", dir.resolve("three.log"));
+        assertTrue(q.waitFor(120, TimeUnit.SECONDS));
+        assertTrue(q.exitValue() != 0, Files.readString(dir.resolve("three.log")));
+        assertEquals(shardLike, Files.readString(victim));
+        assertFalse(Files.exists(dir.resolve("shard-3.csv")));
+    }
 }

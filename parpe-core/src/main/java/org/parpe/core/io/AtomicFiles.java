@@ -115,6 +115,34 @@ public final class AtomicFiles {
         }
     }
 
+    /**
+     * Moves the complete file {@code written} (beside the target, in the same folder) over
+     * {@code target} atomically, as every write of this class ends: through a link to the file
+     * it points to, only over a regular file, keeping the permissions of the file it replaces.
+     * For a writer that must keep its own visible file while it works (a cluster shard's
+     * {@code .partial}), so that it too ends the one way.
+     */
+    public static void moveIntoPlace(Path written, Path target) throws IOException {
+        place(written, resolve(target));
+    }
+
+    private static void place(Path tmp, Path real) throws IOException {
+        checkReplaceable(real);
+        if (Files.exists(real)) {
+            try {
+                Set<PosixFilePermission> perms = Files.getPosixFilePermissions(real);
+                Files.setPosixFilePermissions(tmp, perms);
+            } catch (UnsupportedOperationException e) {
+                // no POSIX permissions here (Windows): nothing to keep
+            }
+        }
+        try {
+            Files.move(tmp, real, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+        } catch (AtomicMoveNotSupportedException e) {
+            Files.move(tmp, real, StandardCopyOption.REPLACE_EXISTING);
+        }
+    }
+
     /** Refuses a target that exists and is not a regular file (a directory, device, FIFO or socket). */
     private static void checkReplaceable(Path real) throws IOException {
         if (Files.isDirectory(real, LinkOption.NOFOLLOW_LINKS)) {
@@ -179,30 +207,12 @@ public final class AtomicFiles {
             }
             try {
                 finish();
-                checkReplaceable(target);
-                if (Files.exists(target)) {
-                    keepPermissions();
-                }
-                try {
-                    Files.move(tmp, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-                } catch (AtomicMoveNotSupportedException e) {
-                    Files.move(tmp, target, StandardCopyOption.REPLACE_EXISTING);
-                }
+                place(tmp, target);
                 done = true;
             } catch (IOException | RuntimeException e) {
                 abort();
                 throw e;
             }
-        }
-
-        private void keepPermissions() throws IOException {
-            Set<PosixFilePermission> perms;
-            try {
-                perms = Files.getPosixFilePermissions(target);
-            } catch (UnsupportedOperationException e) {
-                return; // no POSIX permissions here (Windows): nothing to keep
-            }
-            Files.setPosixFilePermissions(tmp, perms);
         }
 
         /** Discards the temporary file unless the file was put in place. */
