@@ -40,6 +40,13 @@ public interface ServoBus extends AutoCloseable {
     /** Turns the torque of servos {@code ids[0…n)} on (holding) or off (limp, back-drivable). */
     void torque(int[] ids, ServoModel[] models, int n, boolean on) throws IOException;
 
+    /**
+     * Reads back whether servo {@code id}'s torque is on: 1 on, 0 off (limp), {@link #NO_REPLY}
+     * when it did not answer in {@code attempts} tries. A bus without a register to read it from
+     * answers 1.
+     */
+    int torqueState(int id, ServoModel model, int attempts) throws IOException;
+
     /** Sends goal positions ({@code ticks[i]} for {@code ids[i]}) to servos {@code 0…n) at once. */
     void writeGoals(int[] ids, ServoModel[] models, int[] ticks, int n) throws IOException;
 

@@ -120,6 +120,12 @@ public final class ControlTableBus implements ServoBus {
     }
 
     @Override
+    public int torqueState(int id, ServoModel model, int attempts) throws IOException {
+        int v = read(id, model.registers().torque(), 1, attempts);
+        return v == Integer.MIN_VALUE ? NO_REPLY : v == 0 ? 0 : 1;
+    }
+
+    @Override
     public void writeGoals(int[] ids, ServoModel[] models, int[] ticks, int n) throws IOException {
         for (Registers r : layouts(models, n)) {
             syncWrite(r.goal(), r.goalSize(), ids, models, ticks, 0, n, r, false);

@@ -47,6 +47,8 @@ public final class ServoDriver extends BusThread {
     private long watchdogResumes;
     private long lastWatchdogCheck;
     private int watchdogCursor;
+    private final List<Integer> answeredOther = new ArrayList<>();
+    private final List<Integer> limp = new ArrayList<>();
 
     private ServoDriver(LinkOpener opener, ServoBus bus, BusConfig config, HardwareProfile profile, int[] runModules,
                         BusReport report) {
@@ -74,23 +76,39 @@ public final class ServoDriver extends BusThread {
     }
 
     /**
-     * Pings every mapped servo of the run, sets the servos' watchdog and turns the found ones'
-     * torque on, holding where they are. Returns the modules whose servo answered.
+     * Pings every mapped servo of the run and makes the found ones hold where they are, within
+     * their limits, with their torque on (read back); {@link #limp} lists those whose torque did
+     * not come on. The servos' watchdog is armed by {@link #start}, when traffic begins: armed
+     * here, it would trip during whatever the run sets up in between. Returns the modules whose
+     * servo answered as the model the profile says.
      */
     public List<Integer> discover() throws IOException {
         List<Integer> found = new ArrayList<>();
+        answeredOther.clear();
         for (int j = 0; j < set.size(); j++) {
             ServoMapping m = set.mapping(j);
             int model = bus.ping(m.servo(), Math.max(5, config.retries() + 1));
             set.driven[j] = model >= 0 && compatible(m, model);
             if (set.driven[j]) {
                 found.add(m.module());
+            } else if (model >= 0) {
+                answeredOther.add(m.module());
             }
         }
         if (!found.isEmpty()) {
             setUp();
         }
         return found;
+    }
+
+    /** Modules whose servo answered discovery as another model than the profile's, and is not driven. */
+    public List<Integer> answeredAsOtherModel() {
+        return List.copyOf(answeredOther);
+    }
+
+    /** Modules whose servo answered but stayed limp (torque off, or its position unknown) after set-up. */
+    public List<Integer> limp() {
+        return List.copyOf(limp);
     }
 
     /**
@@ -113,14 +131,64 @@ public final class ServoDriver extends BusThread {
         return same;
     }
 
-    /** Watchdog, torque on, first positions; the servos hold where they are until setpoints come. */
+    /**
+     * Present positions (retried until each servo has answered), goals that hold each servo
+     * there clamped into its limits, torque on, and torque read back: a servo whose torque does
+     * not come on is limp while the run drives it, which the user must hear about.
+     */
     private void setUp() throws IOException {
+        int n = set.pack();
+        int attempts = Math.max(5, config.retries() + 1);
+        boolean[] known = new boolean[n];
+        for (int a = 0, left = n; a < attempts && left > 0; a++) {
+            bus.readPositions(set.ids, set.models, n, set.degrees, set.errors);
+            set.storeReadings(n, bus, this::fault);
+            for (int k = 0; k < n; k++) {
+                if (!known[k] && set.errors[k] != ServoBus.NO_REPLY) {
+                    known[k] = true;
+                    left--;
+                }
+            }
+        }
+        limp.clear();
+        int[] one = new int[1];
+        ServoModel[] oneModel = new ServoModel[1];
+        int[] oneGoal = new int[1];
+        for (int k = 0; k < n; k++) {
+            ServoMapping m = set.mappingAt(k);
+            if (!known[k]) {
+                limp.add(m.module());
+                report.problem(String.format(Locale.ROOT, "bus: servo %d (module %d) answered the ping but not %d "
+                        + "reads of its position; its torque stays off and it will not follow the run", m.servo(),
+                        m.module(), attempts));
+                continue;
+            }
+            one[0] = m.servo();
+            oneModel[0] = m.model();
+            oneGoal[0] = set.holdTicks(k);
+            int state = 0;
+            for (int a = 0; a < attempts && state != 1; a++) {
+                // The goal before torque on (no jump to an old goal) and again after (a servo that
+                // takes its present position as goal at torque on still comes inside its limits).
+                bus.writeGoals(one, oneModel, oneGoal, 1);
+                bus.torque(one, oneModel, 1, true);
+                bus.writeGoals(one, oneModel, oneGoal, 1);
+                state = bus.torqueState(m.servo(), m.model(), 2);
+            }
+            if (state != 1) {
+                limp.add(m.module());
+                report.problem(String.format(Locale.ROOT, "bus: servo %d (module %d) did not turn its torque on "
+                        + "(Torque Enable %s after %d tries); it is limp and will not follow the run", m.servo(),
+                        m.module(), state == 0 ? "read back 0" : "could not be read back", attempts));
+            }
+        }
+    }
+
+    /** Arms the servos' own watchdog, the last step of set-up, just before traffic keeps it fed. */
+    private void armWatchdog() throws IOException {
         int n = set.pack();
         report.note("bus: " + bus.watchdog(set.ids, set.models, n, profile.watchdogMs(),
                 profile.onFault() == SafeMode.LIMP));
-        bus.readPositions(set.ids, set.models, n, set.degrees, set.errors);
-        set.storeReadings(n, bus, this::fault);
-        bus.holdHere(set.ids, set.models, n);
     }
 
     /** Modules of the run without a servo in the profile. */
@@ -130,6 +198,11 @@ public final class ServoDriver extends BusThread {
 
     @Override
     public void start(RunInfo info) {
+        try {
+            armWatchdog();
+        } catch (IOException e) {
+            report.problem("bus: could not arm the servos' watchdog: " + e.getMessage());
+        }
         lastAnswer = System.nanoTime();
         startThread("servo bus " + bus.name());
     }
@@ -296,6 +369,7 @@ public final class ServoDriver extends BusThread {
         for (int i = 0; i < n; i++) {
             if (bus.ping(set.ids[i], 1) >= 0) {
                 setUp();
+                armWatchdog();
                 lastAnswer = System.nanoTime();
                 failedReads = 0;
                 double away = resumed();
