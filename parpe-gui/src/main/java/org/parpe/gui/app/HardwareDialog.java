@@ -204,7 +204,7 @@ final class HardwareDialog {
         ide.toolbar().setPort(p);
         setServos(List.of());
         show(proto == null || rate == null ? "Scanning " + p + "\u2026" : "Connecting\u2026", false);
-        session.connect(p, proto, rate, IntStream.rangeClosed(0, 253).toArray());
+        session.connect(p, proto, rate, null);
     }
 
     private void onSelected(java.util.function.IntConsumer action) {

@@ -69,6 +69,7 @@ final class HardwareSession {
     /**
      * Closes any bus held, then looks for servos {@code ids} on {@code port}: with {@code p} and
      * {@code rate} when given, else every protocol and common baud rate; keeps the bus open.
+     * {@code ids} null: every ID the protocol allows.
      */
     void connect(String port, ServoProtocol p, Integer rate, int[] ids) {
         submit(() -> {
@@ -88,7 +89,7 @@ final class HardwareSession {
             if (p != null && rate != null) {
                 listener.message(String.format(Locale.ROOT, "Looking for %s servos on %s at %d baud\u2026", p.key(), port,
                         rate), false);
-                found = new ServoScanner.Result(p, rate, ServoScanner.scanOne(port, p, rate, ids));
+                found = new ServoScanner.Result(p, rate, ServoScanner.scanOne(port, p, rate, ServoScanner.idsFor(p, ids)));
             } else {
                 found = ServoScanner.scan(port, p == null ? ServoScanner.allProtocols() : List.of(p), rate, ids,
                         (q, r) -> listener.message(String.format(Locale.ROOT, "Scanning: %s at %d baud\u2026", q.key(), r),

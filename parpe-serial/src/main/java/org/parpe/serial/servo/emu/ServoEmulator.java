@@ -93,9 +93,10 @@ public final class ServoEmulator extends ServedLine {
                 throw new IllegalArgumentException("servos of one protocol other than G1 needed, got " + m.label());
             }
         }
+        int maxId = models[0].protocol().maxId();
         for (int id : options.modules()) {
-            if (id >= PacketCodec.BROADCAST) {
-                throw new IllegalArgumentException("servo IDs are 0..253, got " + id);
+            if (id > maxId) {
+                throw new IllegalArgumentException(models[0].protocol().key() + " servo IDs are 0.." + maxId + ", got " + id);
             }
         }
         ServoEmulator e = new ServoEmulator(opener, opener.open(), models, options, listener);
