@@ -22,6 +22,8 @@ import org.parpe.serial.servo.wire.PacketDecoder;
 final class PacketPort {
     private static final long LINGER_MS = 50;
     private static final long IDLE_GAP_NANOS = 5_000_000;
+    /** The longest Return Delay Time a servo can be set to: 254 × 2 µs (Dynamixel and Feetech alike). */
+    private static final long MAX_RETURN_DELAY_NANOS = 508_000;
 
     private final ByteLink link;
     private final PacketCodec codec;
@@ -181,7 +183,8 @@ final class PacketPort {
             return;
         }
         long perRequest = TimeUnit.MILLISECONDS.toNanos(timeoutMs)
-                + (long) (codec.packetLength(len) + codec.packetLength(8)) * 10_000_000_000L / baud;
+                + (long) (codec.packetLength(len) + codec.packetLength(8)) * 10_000_000_000L / baud
+                + MAX_RETURN_DELAY_NANOS;
         lock.lock();
         try {
             expected = 0;
@@ -315,8 +318,9 @@ final class PacketPort {
             forget();
             throw e;
         }
-        // Room for every reply on the wire (10 bits a byte) on top of the read timeout.
-        long wire = (long) replies * codec.packetLength(8) * 10_000_000_000L / baud;
+        // Room for every reply on the wire (10 bits a byte) and each servo's longest Return Delay
+        // Time on top of the read timeout: servos answer one after the other.
+        long wire = replies * ((long) codec.packetLength(8) * 10_000_000_000L / baud + MAX_RETURN_DELAY_NANOS);
         long left = listenNanos >= 0 ? listenNanos : TimeUnit.MILLISECONDS.toNanos(timeoutMs) + wire;
         lock.lock();
         try {
