@@ -119,10 +119,18 @@ public interface ServoBus extends AutoCloseable {
             }
         }
         if (m > 0) {
-            writeGoals(held, heldModels, ticks, m);
-            torque(held, heldModels, m, true);
+            holdAt(held, heldModels, ticks, m);
         }
         return m;
+    }
+
+    /**
+     * Makes servos {@code 0…n)} hold at goals {@code ticks}: the goals first, then torque on, so
+     * that no servo jumps to an old goal when its torque comes on.
+     */
+    default void holdAt(int[] ids, ServoModel[] models, int[] ticks, int n) throws IOException {
+        writeGoals(ids, models, ticks, n);
+        torque(ids, models, n, true);
     }
 
     /** Bytes queued but not yet on the wire. */

@@ -147,6 +147,19 @@ public final class ServoEmulator extends ServedLine {
         }
     }
 
+    /**
+     * Sets every servo's Return Delay Time to {@code micros} (rounded to its 2 µs units), as a
+     * user does with the maker's tool for a fast bus; the factory setting of Dynamixel servos is
+     * 500 µs.
+     */
+    public void returnDelay(int micros) {
+        synchronized (lock) {
+            for (EmulatedServo s : servos) {
+                s.table[s.ct.named("Return Delay Time").addr()] = (byte) Math.max(0, Math.min(254, micros / 2));
+            }
+        }
+    }
+
     /** Moves a limp servo by hand (posing); false, and nothing moves, when its torque is on. */
     public boolean backDrive(int id, double degrees) {
         synchronized (lock) {

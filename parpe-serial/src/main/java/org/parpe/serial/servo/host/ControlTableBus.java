@@ -84,8 +84,8 @@ public final class ControlTableBus implements ServoBus {
      * Input is flushed first (an interrupted run's replies must not read as servos). On
      * Dynamixel 2.0 a broadcast Ping, which every servo answers in the order of its ID after its
      * Return Delay Time (e-Manual, Protocol 2.0, Ping), listened to for as long as ROBOTIS's SDK
-     * does ({@link #broadcastPingNanos}); a second one when the first found servos, merging the
-     * answers. Feetech servos are pinged one by one.
+     * does ({@link #broadcastPingNanos}), twice (a reply lost to noise is not a missing servo),
+     * merging the answers. Feetech servos are pinged one by one.
      */
     @Override
     public int[] scan(int[] ids) throws IOException {
@@ -100,13 +100,11 @@ public final class ControlTableBus implements ServoBus {
             highest = Math.max(highest, id);
         }
         long listen = broadcastPingNanos(baud, ids.length, highest);
-        boolean any = false;
-        for (int pass = 0; pass < 2 && (pass == 0 || any); pass++) {
+        for (int pass = 0; pass < 2; pass++) {
             port.requestAll(PacketCodec.BROADCAST, PacketCodec.PING, params, 0, ids, ids.length, listen);
             for (int i = 0; i < ids.length; i++) {
                 if (port.got(ids[i]) && pingReply(ids[i]) && models[i] < 0) {
                     models[i] = port.value(ids[i]) & 0xFFFF;
-                    any = true;
                 }
             }
         }
@@ -163,6 +161,18 @@ public final class ControlTableBus implements ServoBus {
     public int torqueState(int id, ServoModel model, int attempts) throws IOException {
         int v = read(id, model.registers().torque(), 1, attempts);
         return v == Integer.MIN_VALUE ? NO_REPLY : v == 0 ? 0 : 1;
+    }
+
+    /**
+     * The goals, torque on, and the goals again: a servo that takes its present position as its
+     * goal when its torque comes on (as the emulator's X series do) still ends at the goal given,
+     * inside its limits.
+     */
+    @Override
+    public void holdAt(int[] ids, ServoModel[] models, int[] ticks, int n) throws IOException {
+        writeGoals(ids, models, ticks, n);
+        torque(ids, models, n, true);
+        writeGoals(ids, models, ticks, n);
     }
 
     @Override

@@ -168,11 +168,7 @@ public final class ServoDriver extends BusThread {
             oneGoal[0] = set.holdTicks(k);
             int state = 0;
             for (int a = 0; a < attempts && state != 1; a++) {
-                // The goal before torque on (no jump to an old goal) and again after (a servo that
-                // takes its present position as goal at torque on still comes inside its limits).
-                bus.writeGoals(one, oneModel, oneGoal, 1);
-                bus.torque(one, oneModel, 1, true);
-                bus.writeGoals(one, oneModel, oneGoal, 1);
+                bus.holdAt(one, oneModel, oneGoal, 1);
                 state = bus.torqueState(m.servo(), m.model(), 2);
             }
             if (state != 1) {
