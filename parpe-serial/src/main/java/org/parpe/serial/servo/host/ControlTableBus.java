@@ -254,7 +254,7 @@ public final class ControlTableBus implements ServoBus {
     @Override
     public String describeFault(int id, ServoModel model, int statusError) throws IOException {
         int bits = read(id, model.registers().error(), 1, 2);
-        return bits == Integer.MIN_VALUE ? null : Faults.describe(protocol, statusError, bits);
+        return bits == Integer.MIN_VALUE ? null : Faults.describe(model, statusError, bits);
     }
 
     @Override
