@@ -12,6 +12,7 @@ import org.parpe.serial.servo.ServoProtocol;
  * (present voltage and temperature, firmware version) the value is PARPE's choice and says so.
  */
 final class ControlTable {
+    private static final String INDIRECT_DATA = "Indirect Data ";
     /** Range bound meaning "no range given". */
     static final long ANY = Long.MIN_VALUE;
 
@@ -36,6 +37,8 @@ final class ControlTable {
     final String source;
     final int length;
     private final Item[] byAddress;
+    /** For an X-series Indirect Data address, the address of its Indirect Address item; else −1. */
+    private final int[] indirectSlot;
     private final List<Item> items;
 
     private ControlTable(String source, int length, List<Item> items) {
@@ -43,11 +46,25 @@ final class ControlTable {
         this.length = length;
         this.items = List.copyOf(items);
         this.byAddress = new Item[length];
+        this.indirectSlot = new int[length];
+        java.util.Arrays.fill(indirectSlot, -1);
         for (Item i : items) {
             for (int a = i.addr; a < i.addr + i.size; a++) {
                 byAddress[a] = i;
             }
+            if (i.name.startsWith(INDIRECT_DATA)) {
+                int k = Integer.parseInt(i.name.substring(INDIRECT_DATA.length()));
+                indirectSlot[i.addr] = k <= 28 ? 168 + 2 * (k - 1) : 578 + 2 * (k - 29);
+            }
         }
+    }
+
+    /**
+     * The address of the Indirect Address item that says where Indirect Data at {@code addr}
+     * reads and writes (e-Manual, X series, Indirect Address and Indirect Data); −1 for others.
+     */
+    int indirectSlot(int addr) {
+        return addr >= 0 && addr < length ? indirectSlot[addr] : -1;
     }
 
     /** The item that holds address {@code addr}, or null (reserved or beyond the table). */
@@ -189,13 +206,13 @@ final class ControlTable {
             x.rw("Indirect Address " + (k + 1), 168 + 2 * k, 2, 224 + k, 64, 661);
         }
         for (int k = 0; k < 28; k++) {
-            x.rw("Indirect Data " + (k + 1), 224 + k, 1, 0, 0, 255);
+            x.rw(INDIRECT_DATA + (k + 1), 224 + k, 1, 0, 0, 255);
         }
         for (int k = 0; k < 28; k++) {
             x.rw("Indirect Address " + (k + 29), 578 + 2 * k, 2, 634 + k, 64, 661);
         }
         for (int k = 0; k < 28; k++) {
-            x.rw("Indirect Data " + (k + 29), 634 + k, 1, 0, 0, 255);
+            x.rw(INDIRECT_DATA + (k + 29), 634 + k, 1, 0, 0, 255);
         }
         X_SERIES = new ControlTable("ROBOTIS e-Manual, XL430-W250, Control Table", 662, x.items);
 

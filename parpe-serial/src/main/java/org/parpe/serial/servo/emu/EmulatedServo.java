@@ -286,12 +286,10 @@ final class EmulatedServo {
 
     /** Address {@code a}, or the address an X-series Indirect Data item stands for. */
     private int indirect(int a) {
-        ControlTable.Item i = ct.at(a);
-        if (i == null || !i.name().startsWith("Indirect Data ")) {
+        int slot = ct.indirectSlot(a);
+        if (slot < 0) {
             return a;
         }
-        int k = Integer.parseInt(i.name().substring("Indirect Data ".length()));
-        int slot = k <= 28 ? 168 + 2 * (k - 1) : 578 + 2 * (k - 29);
         int target = get(slot, 2);
         return target >= 0 && target < ct.length ? target : a;
     }

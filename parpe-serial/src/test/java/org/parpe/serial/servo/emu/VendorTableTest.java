@@ -126,6 +126,18 @@ class VendorTableTest {
     }
 
     @Test
+    void indirectDataStandsForTheAddressItsIndirectAddressNames() {
+        // ROBOTIS e-Manual, X series, Indirect Address and Indirect Data: Indirect Address 1(168)
+        // set to 132 makes Indirect Data 1(224) read Present Position's first byte.
+        servos("xl430-w250", 1);
+        assertEquals(0, write(1, 168, 2, 132));
+        assertEquals(read(1, 132, 1).le(0, 1), read(1, 224, 1).le(0, 1));
+        assertEquals(0, write(1, 168, 2, 65));
+        assertEquals(0, write(1, 224, 1, 1));
+        assertEquals(1, read(1, 65, 1).le(0, 1), "LED set through Indirect Data 1");
+    }
+
+    @Test
     void xl320RegistersAreItsOwnTable() {
         // ROBOTIS e-Manual, XL-320, Control Table: Model Number 350, Return Delay Time(5) 250,
         // CW/CCW Angle Limit(6, 8) 0/1023, Status Return Level(17) 2, Torque Enable(24).
