@@ -26,6 +26,10 @@ import org.parpe.serial.servo.profile.ProfileWriter;
  */
 final class HardwareSession {
     static final int POLL_MS = 200;
+    /** Jog speed limit, degrees per second of the servo. */
+    static final double JOG_DEG_PER_S = 30;
+    /** Time between two jog goals. */
+    static final int JOG_TICK_MS = 20;
     private static final int READ_TIMEOUT_MS = 20;
 
     /** One servo as the dialog shows it; immutable snapshot. */
@@ -56,6 +60,10 @@ final class HardwareSession {
     private volatile boolean closing;
     // Confined to the worker thread:
     private ServoBus bus;
+    private int jogRow = -1;
+    private double jogGoal = Double.NaN;
+    private double jogTarget;
+    private java.util.concurrent.ScheduledFuture<?> jogTask;
     private ServoProtocol protocol;
     private int baud;
     private String port;
@@ -133,6 +141,9 @@ final class HardwareSession {
                 ids[i] = servos.get(rows[i]).id();
                 models[i] = servos.get(rows[i]).model();
             }
+            // Limp or hold ends a jog; the next one starts again from where the servo is.
+            stopJog();
+            jogGoal = Double.NaN;
             if (on) {
                 bus.holdHere(ids, models, ids.length);
             } else {
@@ -147,24 +158,70 @@ final class HardwareSession {
         });
     }
 
-    /** Goal position {@code degrees} (servo degrees, clamped to the model's range) for servo {@code row}. */
+    /**
+     * Moves servo {@code row} toward {@code degrees} (servo degrees, kept within the model's range)
+     * at no more than {@value #JOG_DEG_PER_S} °/s: goals a step apart every {@value #JOG_TICK_MS}
+     * ms, from where the servo is. A limp servo first holds where it is. A new target replaces the
+     * old one; the move goes on from the goal reached.
+     */
     void jog(int row, double degrees) {
         submit(() -> {
             if (bus == null || row < 0 || row >= servos.size() || servos.get(row).model() == null) {
                 return;
             }
             Servo s = servos.get(row);
-            int[] ids = {s.id()};
-            ServoModel[] models = {s.model()};
+            ServoModel m = s.model();
+            if (row != jogRow || Double.isNaN(jogGoal)) {
+                if (Double.isNaN(s.degrees())) {
+                    listener.message("Servo " + s.id() + "'s position is not known yet; wait for a reading.", true);
+                    return;
+                }
+                stopJog();
+                jogRow = row;
+                jogGoal = s.degrees();
+            }
             if (!Boolean.TRUE.equals(s.torque())) {
-                // Torque first: a servo may take "torque on" as "hold where you are", which would undo the goal.
-                bus.torque(ids, models, 1, true);
+                // Hold where it is first: the move starts from the present position, not an old goal.
+                bus.holdHere(new int[] {s.id()}, new ServoModel[] {m}, 1);
                 Servo[] next = servos.toArray(new Servo[0]);
                 next[row] = s.with(s.degrees(), true, s.status());
                 servos = List.of(next);
+                jogGoal = s.degrees();
             }
-            bus.writeGoals(ids, models, new int[] {s.model().ticks(degrees)}, 1);
+            jogTarget = Math.max(m.minDegrees(), Math.min(m.maxDegrees(), degrees));
+            if (jogTask == null) {
+                jogTask = worker.scheduleAtFixedRate(this::jogStep, 0, JOG_TICK_MS, TimeUnit.MILLISECONDS);
+            }
         });
+    }
+
+    /** One step of the jog: the goal moves at most {@value #JOG_DEG_PER_S} °/s toward the target. */
+    private void jogStep() {
+        if (bus == null || closing || jogRow < 0 || jogRow >= servos.size()) {
+            stopJog();
+            return;
+        }
+        Servo s = servos.get(jogRow);
+        double max = JOG_DEG_PER_S * JOG_TICK_MS / 1000.0;
+        double d = jogTarget - jogGoal;
+        jogGoal = Math.abs(d) <= max ? jogTarget : jogGoal + Math.copySign(max, d);
+        try {
+            bus.writeGoals(new int[] {s.id()}, new ServoModel[] {s.model()}, new int[] {s.model().ticks(jogGoal)}, 1);
+        } catch (IOException e) {
+            stopJog();
+            lost(e);
+            return;
+        }
+        if (jogGoal == jogTarget) {
+            stopJog();
+        }
+    }
+
+    private void stopJog() {
+        if (jogTask != null) {
+            jogTask.cancel(false);
+            jogTask = null;
+        }
     }
 
     /** Writes a starter profile of the servos connected to {@code file}; {@code done} gets the file on success. */
@@ -251,6 +308,9 @@ final class HardwareSession {
     }
 
     private void disconnect() {
+        stopJog();
+        jogRow = -1;
+        jogGoal = Double.NaN;
         if (bus != null) {
             bus.close();
             bus = null;

@@ -103,7 +103,7 @@ class ServoProfileGuiTest {
         assertEquals(RunOutcome.Status.ERROR, o.status());
         List<Diagnostic> errors = ide.problems().shown().stream().filter(d -> d.severity() == Severity.ERROR).toList();
         assertTrue(errors.stream().anyMatch(d -> d.pos().file().equals(profile.toString()) && d.pos().line() == 2
-                && d.message().equals("id must be in 0..253, got 999")), errors.toString());
+                && d.message().equals("id must be in 0..252, got 999")), errors.toString());
     }
 
     @Test
