@@ -147,19 +147,39 @@ final class HardwareDialog {
     }
 
     /**
-     * Over the IDE's upper half, centred across it and inside the screen: not at the screen's
-     * corner over the menu, and clear of the bottom panels (the Pose panel's Capture button) as
-     * far as the window's height allows.
+     * Over the IDE window, never at the screen's corner over the menu, and where it covers as
+     * little as possible of the bottom panels (the Pose panel and its Capture button, used while
+     * the dialog stays open): of the window's four corners and its top centre, inside the screen,
+     * the place that overlaps them least.
      */
     private void place() {
         org.eclipse.swt.graphics.Rectangle owner = ide.shell().getBounds();
         org.eclipse.swt.graphics.Rectangle screen = ide.shell().getMonitor().getClientArea();
         org.eclipse.swt.graphics.Point size = shell.getSize();
-        int x = owner.x + (owner.width - size.x) / 2;
-        int y = owner.y + Math.max(40, owner.height / 10);
-        x = Math.max(screen.x, Math.min(x, screen.x + screen.width - size.x));
-        y = Math.max(screen.y, Math.min(y, screen.y + screen.height - size.y));
-        shell.setLocation(x, y);
+        org.eclipse.swt.widgets.Control panels = ide.pose().control().getParent();
+        org.eclipse.swt.graphics.Rectangle avoid = ide.shell().getDisplay().map(panels.getParent(), null,
+                panels.getBounds());
+        int top = owner.y + Math.max(40, owner.height / 12);
+        int[][] candidates = {
+            {owner.x + (owner.width - size.x) / 2, top},
+            {owner.x + owner.width - size.x - 20, top},
+            {owner.x + 20, top},
+            {owner.x + owner.width - size.x - 20, owner.y + owner.height - size.y - 20},
+            {owner.x + 20, owner.y + owner.height - size.y - 20}};
+        org.eclipse.swt.graphics.Rectangle best = null;
+        long bestOverlap = Long.MAX_VALUE;
+        for (int[] c : candidates) {
+            int x = Math.max(screen.x, Math.min(c[0], screen.x + screen.width - size.x));
+            int y = Math.max(screen.y, Math.min(c[1], screen.y + screen.height - size.y));
+            org.eclipse.swt.graphics.Rectangle r = new org.eclipse.swt.graphics.Rectangle(x, y, size.x, size.y);
+            org.eclipse.swt.graphics.Rectangle i = r.intersection(avoid);
+            long overlap = (long) Math.max(0, i.width) * Math.max(0, i.height);
+            if (overlap < bestOverlap) {
+                best = r;
+                bestOverlap = overlap;
+            }
+        }
+        shell.setLocation(best.x, best.y);
     }
 
     /** Fills the port list, keeping what is typed; with no adapter found the dialog says so. */

@@ -100,6 +100,9 @@ class HardwareDialogGuiTest {
                         }
                     })) {
             assertTrue(emu.backDrive(3, 25));
+            // Posing by hand with the dialog open: the Pose panel is shown.
+            ide.showPosePanel();
+            Gui.settle();
             HardwareDialog d = HardwareDialog.open(ide);
             assertTrue(d == HardwareDialog.open(ide), "a second Run > Hardware… brings the same dialog");
             d.portBox().setText(pty.a().toString());
@@ -113,6 +116,12 @@ class HardwareDialogGuiTest {
             // Placed over the IDE window, not at the screen's corner over the menu.
             assertTrue(d.shell().getLocation().x > ide.shell().getLocation().x
                     && d.shell().getLocation().y > ide.shell().getLocation().y, d.shell().getLocation().toString());
+            // Kept open, it leaves the Pose panel's Capture button free.
+            Button capture = button((Composite) ide.pose().control(), "&Capture");
+            assertNotNull(capture);
+            org.eclipse.swt.graphics.Rectangle at = capture.getDisplay().map(capture.getParent(), null, capture.getBounds());
+            assertTrue(at.width > 0 && at.height > 0, "the Capture button is laid out: " + at);
+            assertFalse(d.shell().getBounds().intersects(at), d.shell().getBounds() + " covers Capture at " + at);
             d.protocolBox().select(d.protocolBox().indexOf("dxl2"));
             d.baudBox().setText("1000000");
             click(d, "Connect");
