@@ -38,6 +38,8 @@ public final class ServoDriver extends BusThread {
     private volatile ServoBus bus;
     private final ServoSet set;
     private long lastAnswer = System.nanoTime();
+    /** Wall-clock time of the last answer, for messages and the IDE's alarm. */
+    private volatile long lastAnswerMillis = System.currentTimeMillis();
     private long lastSend;
     private int failedReads;
     private int busyCycles;
@@ -192,6 +194,25 @@ public final class ServoDriver extends BusThread {
         return set.unmapped();
     }
 
+    private void answeredNow() {
+        lastAnswer = System.nanoTime();
+        lastAnswerMillis = System.currentTimeMillis();
+    }
+
+    /**
+     * Since when (wall-clock milliseconds) no servo has answered, while the bus is silent; −1 while
+     * the servos answer. The IDE shows it as an alarm.
+     */
+    public long notAnsweringSince() {
+        return lost() ? lastAnswerMillis : -1;
+    }
+
+    /** A wall-clock time of day, for messages: {@code 21:27:41}. */
+    static String clock(long millis) {
+        return java.time.LocalTime.ofInstant(java.time.Instant.ofEpochMilli(millis), java.time.ZoneId.systemDefault())
+                .withNano(0).toString();
+    }
+
     @Override
     public void start(RunInfo info) {
         try {
@@ -199,7 +220,7 @@ public final class ServoDriver extends BusThread {
         } catch (IOException e) {
             report.problem("bus: could not arm the servos' watchdog: " + e.getMessage());
         }
-        lastAnswer = System.nanoTime();
+        answeredNow();
         startThread("servo bus " + bus.name());
     }
 
@@ -242,11 +263,19 @@ public final class ServoDriver extends BusThread {
     public void emergencyStop() {
         emergencyStopping();
         boolean limp = profile.onFault() == SafeMode.LIMP;
+        long since = notAnsweringSince();
         try {
             bus.emergencyStop(set.ids, set.models, set.pack(), limp);
-            report.note("bus: emergency stop sent; servos " + (limp ? "limp (torque off)" : "hold where they are"));
+            if (since >= 0) {
+                // Sent into a silent bus: nothing says the servos got it.
+                report.problem("bus: emergency stop sent but not confirmed: no servo has answered since "
+                        + clock(since) + "; switch the servo supply off");
+            } else {
+                report.note("bus: emergency stop sent; servos " + (limp ? "limp (torque off)" : "hold where they are"));
+            }
         } catch (IOException e) {
-            report.problem("bus: emergency stop could not be sent (" + e.getMessage() + ")");
+            report.problem("bus: emergency stop could not be sent (" + e.getMessage() + ")"
+                    + (since >= 0 ? "; no servo has answered since " + clock(since) + ": switch the servo supply off" : ""));
         }
     }
 
@@ -284,7 +313,7 @@ public final class ServoDriver extends BusThread {
                     : bus.readPositions(set.ids, set.models, n, set.degrees, set.errors);
             reads++;
             if (answered > 0) {
-                lastAnswer = System.nanoTime();
+                answeredNow();
                 failedReads = 0;
                 faults += set.storeReadings(n, bus, this::fault);
                 checkWatchdog(n);
@@ -325,8 +354,9 @@ public final class ServoDriver extends BusThread {
     }
 
     private void silent() {
-        silent(String.format(Locale.ROOT, "bus: no reply from any servo on %s for %d ms; %s; waiting for them "
-                + "to come back", bus.name(), config.deadAfterMs(), safeStop()));
+        silent(String.format(Locale.ROOT, "bus: no reply from any servo on %s for %d ms (robot not responding since "
+                + "%s); %s; waiting for them to come back", bus.name(), config.deadAfterMs(), clock(lastAnswerMillis),
+                safeStop()));
     }
 
     /** What the servos do when the host loses them, and the torque-off attempt for limp. */
@@ -366,7 +396,7 @@ public final class ServoDriver extends BusThread {
             if (bus.ping(set.ids[i], 1) >= 0) {
                 setUp();
                 armWatchdog();
-                lastAnswer = System.nanoTime();
+                answeredNow();
                 failedReads = 0;
                 double away = resumed();
                 report.note(String.format(Locale.ROOT, "bus: servos back on %s after %.2f s; resuming", bus.name(),

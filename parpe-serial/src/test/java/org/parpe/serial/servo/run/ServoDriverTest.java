@@ -182,4 +182,20 @@ class ServoDriverTest {
         driver.finish(new RunOutcome(RunOutcome.Status.COMPLETED, 0, ""));
         assertTrue(reports.get(reports.size() - 1).contains("1 disconnects"), reports.toString());
     }
+
+    @Test
+    void anEmergencyStopIntoASilentBusIsNotReportedAsDone() throws Exception {
+        // A robot silent for a minute used to get "emergency stop sent" as if it had stopped.
+        start(SafeMode.HOLD);
+        driver.accept(0, 0, new double[] {10, 10, 10});
+        await(() -> Math.abs(emulator.angle(13) - 10) < 0.1, "servo 13 at 10°");
+        assertTrue(driver.notAnsweringSince() < 0, "answering");
+        emulator.close();
+        await(() -> reports.stream().anyMatch(r -> r.contains("robot not responding since")), "the silence reported");
+        assertTrue(driver.notAnsweringSince() > 0);
+        driver.emergencyStop();
+        assertTrue(reports.stream().anyMatch(r -> r.startsWith("bus: emergency stop sent but not confirmed: no servo "
+                + "has answered since ")), reports.toString());
+        assertFalse(reports.contains("bus: emergency stop sent; servos hold where they are"), reports.toString());
+    }
 }
