@@ -98,21 +98,22 @@ class VendorTableTest {
         return r.get(0).error() & 0x7F;
     }
 
+    /** Servo {@code id} reads {@code {address, size, value}} for each row of a transcribed table. */
+    void assertTable(int id, int[][] rows) {
+        for (int[] r : rows) {
+            assertEquals(r[2], read(id, r[0], r[1]).le(0, r[1]), "address " + r[0]);
+        }
+    }
+
     @Test
     void xSeriesRegistersAreTheEManualsInitialValues() {
         // ROBOTIS e-Manual, XL430-W250, "Control Table of EEPROM Area" and "of RAM Area":
         // Model Number 1,060; ID 1 (here the emulated ID); Baud Rate 1; Return Delay Time 250;
         // Operating Mode 3; Max/Min Position Limit 4,095/0; Status Return Level 2.
         servos("xl430-w250", 7);
-        assertEquals(1060, read(7, 0, 2).le(0, 2));
-        assertEquals(7, read(7, 7, 1).le(0, 1));
-        assertEquals(1, read(7, 8, 1).le(0, 1));
-        assertEquals(250, read(7, 9, 1).le(0, 1));
-        assertEquals(3, read(7, 11, 1).le(0, 1));
-        assertEquals(4095, read(7, 48, 4).le(0, 4));
-        assertEquals(0, read(7, 52, 4).le(0, 4));
-        assertEquals(2, read(7, 68, 1).le(0, 1));
-        assertEquals(72, read(7, 31, 1).le(0, 1), "Temperature Limit");
+        // {address, size, value}, as the e-Manual's table gives them (Temperature Limit(31) 72).
+        assertTable(7, new int[][] {{0, 2, 1060}, {7, 1, 7}, {8, 1, 1}, {9, 1, 250}, {11, 1, 3}, {48, 4, 4095},
+            {52, 4, 0}, {68, 1, 2}, {31, 1, 72}});
         assertTrue(read(7, 144, 2).le(0, 2) > 60, "a Present Input Voltage within the voltage limits");
         assertTrue(read(7, 146, 1).le(0, 1) > 0, "a Present Temperature");
         // Protocol 2.0, Ping: Parameter 3 is the firmware version, the same as Firmware Version(6).
@@ -142,10 +143,7 @@ class VendorTableTest {
         // ROBOTIS e-Manual, XL-320, Control Table: Model Number 350, Return Delay Time(5) 250,
         // CW/CCW Angle Limit(6, 8) 0/1023, Status Return Level(17) 2, Torque Enable(24).
         servos("xl-320", 2);
-        assertEquals(350, read(2, 0, 2).le(0, 2));
-        assertEquals(250, read(2, 5, 1).le(0, 1));
-        assertEquals(1023, read(2, 8, 2).le(0, 2));
-        assertEquals(2, read(2, 17, 1).le(0, 1));
+        assertTable(2, new int[][] {{0, 2, 350}, {5, 1, 250}, {6, 2, 0}, {8, 2, 1023}, {17, 1, 2}});
         assertEquals(0, write(2, 24, 1, 1));
         assertEquals(EmulatedServo.ACCESS_ERROR, write(2, 8, 2, 600));
         assertEquals(0, write(2, 24, 1, 0));
