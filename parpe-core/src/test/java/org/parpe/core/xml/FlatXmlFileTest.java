@@ -106,6 +106,11 @@ class FlatXmlFileTest {
         assertTrue(line.startsWith("3:"), line);
         assertFalse(line.contains("unknown-source") || line.contains("[row,col"), line);
         assertTrue(line.contains("nope"), line);
+        DiagnosticList root = new DiagnosticList();
+        read("<?xml version=\"1.0\"?>\n\n<things size=\"&big;\">\n</things>\n", root);
+        assertEquals(1, root.all().size(), lines(root).toString());
+        assertTrue(lines(root).get(0).startsWith("3:"), "an entity in the root's attribute at its line: " + lines(root));
+        assertFalse(lines(root).get(0).contains("[row,col"), lines(root).toString());
     }
 
     @Test
