@@ -60,9 +60,8 @@ final class HardwareSession {
     private volatile boolean closing;
     // Confined to the worker thread:
     private ServoBus bus;
-    private int jogRow = -1;
-    private double jogGoal = Double.NaN;
-    private double jogTarget;
+    /** Servos on the move: row → {goal sent, target}. */
+    private final java.util.Map<Integer, double[]> jogs = new java.util.LinkedHashMap<>();
     private java.util.concurrent.ScheduledFuture<?> jogTask;
     private ServoProtocol protocol;
     private int baud;
@@ -141,9 +140,8 @@ final class HardwareSession {
                 ids[i] = servos.get(rows[i]).id();
                 models[i] = servos.get(rows[i]).model();
             }
-            // Limp or hold ends a jog; the next one starts again from where the servo is.
-            stopJog();
-            jogGoal = Double.NaN;
+            // Limp or hold ends the jogs; the next one starts again from where the servo is.
+            stopJogs();
             if (on) {
                 bus.holdHere(ids, models, ids.length);
             } else {
@@ -162,7 +160,8 @@ final class HardwareSession {
      * Moves servo {@code row} toward {@code degrees} (servo degrees, kept within the model's range)
      * at no more than {@value #JOG_DEG_PER_S} °/s: goals a step apart every {@value #JOG_TICK_MS}
      * ms, from where the servo is. A limp servo first holds where it is. A new target replaces the
-     * old one; the move goes on from the goal reached.
+     * servo's old one and the move goes on from the goal reached; several servos move at once
+     * (the Pose panel's "Real robot follows"), their goals in one packet per step.
      */
     void jog(int row, double degrees) {
         submit(() -> {
@@ -171,53 +170,75 @@ final class HardwareSession {
             }
             Servo s = servos.get(row);
             ServoModel m = s.model();
-            if (row != jogRow || Double.isNaN(jogGoal)) {
+            double[] j = jogs.get(row);
+            if (j == null) {
                 if (Double.isNaN(s.degrees())) {
                     listener.message("Servo " + s.id() + "'s position is not known yet; wait for a reading.", true);
                     return;
                 }
-                stopJog();
-                jogRow = row;
-                jogGoal = s.degrees();
+                if (!Boolean.TRUE.equals(s.torque())) {
+                    // Hold where it is first: the move starts from the present position, not an old goal.
+                    bus.holdHere(new int[] {s.id()}, new ServoModel[] {m}, 1);
+                    Servo[] next = servos.toArray(new Servo[0]);
+                    next[row] = s.with(s.degrees(), true, s.status());
+                    servos = List.of(next);
+                }
+                j = new double[] {s.degrees(), s.degrees()};
+                jogs.put(row, j);
             }
-            if (!Boolean.TRUE.equals(s.torque())) {
-                // Hold where it is first: the move starts from the present position, not an old goal.
-                bus.holdHere(new int[] {s.id()}, new ServoModel[] {m}, 1);
-                Servo[] next = servos.toArray(new Servo[0]);
-                next[row] = s.with(s.degrees(), true, s.status());
-                servos = List.of(next);
-                jogGoal = s.degrees();
-            }
-            jogTarget = Math.max(m.minDegrees(), Math.min(m.maxDegrees(), degrees));
+            j[1] = Math.max(m.minDegrees(), Math.min(m.maxDegrees(), degrees));
             if (jogTask == null) {
                 jogTask = worker.scheduleAtFixedRate(this::jogStep, 0, JOG_TICK_MS, TimeUnit.MILLISECONDS);
             }
         });
     }
 
-    /** One step of the jog: the goal moves at most {@value #JOG_DEG_PER_S} °/s toward the target. */
+    /** One step of the jogs: each goal moves at most {@value #JOG_DEG_PER_S} °/s toward its target. */
     private void jogStep() {
-        if (bus == null || closing || jogRow < 0 || jogRow >= servos.size()) {
-            stopJog();
+        if (bus == null || closing) {
+            stopJogs();
             return;
         }
-        Servo s = servos.get(jogRow);
         double max = JOG_DEG_PER_S * JOG_TICK_MS / 1000.0;
-        double d = jogTarget - jogGoal;
-        jogGoal = Math.abs(d) <= max ? jogTarget : jogGoal + Math.copySign(max, d);
+        int n = jogs.size();
+        int[] ids = new int[n];
+        ServoModel[] models = new ServoModel[n];
+        int[] ticks = new int[n];
+        int k = 0;
+        for (java.util.Iterator<java.util.Map.Entry<Integer, double[]>> it = jogs.entrySet().iterator(); it.hasNext(); ) {
+            java.util.Map.Entry<Integer, double[]> e = it.next();
+            double[] j = e.getValue();
+            if (e.getKey() >= servos.size()) {
+                it.remove();
+                continue;
+            }
+            double d = j[1] - j[0];
+            j[0] = Math.abs(d) <= max ? j[1] : j[0] + Math.copySign(max, d);
+            Servo s = servos.get(e.getKey());
+            ids[k] = s.id();
+            models[k] = s.model();
+            ticks[k++] = s.model().ticks(j[0]);
+            if (j[0] == j[1]) {
+                // Reached: the servo holds its goal; a later jog starts from there.
+                it.remove();
+            }
+        }
         try {
-            bus.writeGoals(new int[] {s.id()}, new ServoModel[] {s.model()}, new int[] {s.model().ticks(jogGoal)}, 1);
+            if (k > 0) {
+                bus.writeGoals(ids, models, ticks, k);
+            }
         } catch (IOException e) {
-            stopJog();
+            stopJogs();
             lost(e);
             return;
         }
-        if (jogGoal == jogTarget) {
-            stopJog();
+        if (jogs.isEmpty()) {
+            stopJogs();
         }
     }
 
-    private void stopJog() {
+    private void stopJogs() {
+        jogs.clear();
         if (jogTask != null) {
             jogTask.cancel(false);
             jogTask = null;
@@ -308,9 +329,7 @@ final class HardwareSession {
     }
 
     private void disconnect() {
-        stopJog();
-        jogRow = -1;
-        jogGoal = Double.NaN;
+        stopJogs();
         if (bus != null) {
             bus.close();
             bus = null;
