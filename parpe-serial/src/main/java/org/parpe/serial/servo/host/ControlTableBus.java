@@ -22,8 +22,11 @@ public final class ControlTableBus implements ServoBus {
     private static final int WATCHDOG_TRIPPED = 0xFF;
     /** Bytes of a Dynamixel 2.0 Ping status packet (header 4, ID, length 2, instruction, error, 3 parameters, CRC 2). */
     private static final int PING_STATUS_BYTES = 14;
-    /** A scan first waits for the line to be quiet this long (at most {@link #FLUSH_MAX_MS}). */
-    private static final long FLUSH_QUIET_MS = 20;
+    /**
+     * A scan first waits for the line to be quiet this long (at most {@link #FLUSH_MAX_MS}): far
+     * longer than servos take to finish answering requests already sent.
+     */
+    private static final long FLUSH_QUIET_MS = 50;
     private static final long FLUSH_MAX_MS = 500;
 
     private final ServoProtocol protocol;

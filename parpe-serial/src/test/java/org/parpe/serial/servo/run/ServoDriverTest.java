@@ -83,12 +83,16 @@ class ServoDriverTest {
     }
 
     void open(SafeMode onFault, double limit) throws Exception {
+        open(onFault, limit, HardwareProfile.DEFAULT_WATCHDOG_MS);
+    }
+
+    void open(SafeMode onFault, double limit, int watchdogMs) throws Exception {
         List<ServoMapping> servos = new ArrayList<>();
         for (int m : MODULES) {
             servos.add(new ServoMapping(m, 11 + m, XL430, 0, 1, -limit, limit, SourcePos.NONE));
         }
         HardwareProfile profile = new HardwareProfile("test", ServoProtocol.DXL2, pty.a().toString(), 1_000_000,
-                onFault, HardwareProfile.DEFAULT_WATCHDOG_MS, servos);
+                onFault, watchdogMs, servos);
         driver = ServoDriver.open(LinkOpener.serial(pty.a().toString(), 1_000_000),
                 BusConfig.defaults().withBaud(1_000_000), profile, MODULES, BusReport.lines(reports::add));
     }
@@ -110,10 +114,11 @@ class ServoDriverTest {
     @Test
     void theWatchdogIsArmedWhenTrafficStartsNotAtDiscovery() throws Exception {
         // Between discovery and the run's start the program sets up (world, other targets); the Bus
-        // Watchdog (60 ms here) armed at discovery tripped on every servo then. Failed before.
-        open(SafeMode.HOLD, 90);
+        // Watchdog armed at discovery tripped on every servo then. Failed before. A 300 ms watchdog
+        // and a 1 s pause: the run's own traffic keeps far closer than 300 ms even on a loaded machine.
+        open(SafeMode.HOLD, 90, 300);
         assertEquals(List.of(0, 1, 2), driver.discover());
-        Thread.sleep(400);
+        Thread.sleep(1000);
         driver.start(new RunInfo(null, MODULES, 0.01));
         driver.accept(0, 0, new double[] {20, 20, 20});
         await(() -> Math.abs(emulator.angle(13) - 20) < 0.1, "servo 13 at 20°");
