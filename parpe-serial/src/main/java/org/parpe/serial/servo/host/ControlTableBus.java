@@ -131,7 +131,9 @@ public final class ControlTableBus implements ServoBus {
     public int read(int id, int addr, int size, int attempts) throws IOException {
         for (int a = 0; a < attempts; a++) {
             int n = putAddress(0, addr, size);
-            if (port.request(id, PacketCodec.READ, params, n, id) && port.size(id) >= size) {
+            // Exactly the bytes asked for: a late reply to another request (a position read that
+            // timed out) must not pass for this one.
+            if (port.request(id, PacketCodec.READ, params, n, id) && port.size(id) == size) {
                 return port.value(id);
             }
         }
@@ -235,7 +237,7 @@ public final class ControlTableBus implements ServoBus {
         for (int i = 0; i < n; i++) {
             int id = ids[i];
             int size = models[i].registers().presentSize();
-            if (!port.got(id) || port.size(id) < size) {
+            if (!port.got(id) || port.size(id) != size) {
                 errors[i] = NO_REPLY;
             } else {
                 degrees[i] = models[i].degrees(port.value(id), size);

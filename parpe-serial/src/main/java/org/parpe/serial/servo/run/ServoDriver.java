@@ -239,7 +239,7 @@ public final class ServoDriver extends BusThread {
         return set.measured(index);
     }
 
-    /** Sends the last goals (three times: no reply), turns the watchdog off so the servos keep holding, reports. */
+    /** Turns the watchdog off so the servos keep holding, sends the last goals (three times: no reply), reports. */
     @Override
     public void finish(RunOutcome outcome) {
         stopThread();
@@ -247,10 +247,12 @@ public final class ServoDriver extends BusThread {
         if (connected() && b.linkError() == null) {
             try {
                 int n = set.pack();
+                // Watchdog off first: writing 0 also clears a Bus Watchdog error, which a pause at
+                // the run's end may have caused and which would refuse the final goals.
+                b.watchdog(set.ids, set.models, n, 0, false);
                 for (int i = 0; i < 3 && set.takeGoals(true); i++) {
                     b.writeGoals(set.ids, set.models, set.goals, n);
                 }
-                b.watchdog(set.ids, set.models, n, 0, false);
             } catch (IOException e) {
                 report.problem("bus: could not send the final goals: " + e.getMessage());
             }

@@ -69,6 +69,9 @@ class ServoBusOverPtyTest {
         bus = ServoBuses.open(models[0].protocol(), LinkOpener.serial(pty.a().toString(), 1_000_000),
                 BusConfig.defaults().withBaud(1_000_000));
         awaitAnswer(bus, o.modules()[o.modules().length - 1]);
+        // And one read of every servo: the emulator's first multi-reply request loads its code.
+        int n = o.modules().length;
+        bus.readPositions(o.modules(), models, n, new double[n], new int[n]);
     }
 
     /**
@@ -305,6 +308,37 @@ class ServoBusOverPtyTest {
             assertTrue(java.util.Arrays.stream(found).allMatch(m -> m < 0), java.util.Arrays.toString(found));
         } finally {
             stale.join();
+            servoSide.close();
+        }
+    }
+
+    @Test
+    void aLateReplyToAnotherRequestIsNotTakenForARead() throws Exception {
+        // A position read that timed out is answered late, while the host reads servo 3's one-byte
+        // Hardware Error Status: the 4-byte position reply used to pass for it, and a servo's
+        // overload was reported as "input voltage out of range, electrical shock".
+        org.parpe.serial.link.ByteLink servoSide = org.parpe.serial.link.SerialLink.open(pty.b().toString(), 1_000_000);
+        ControlTableBus b = new ControlTableBus(ServoProtocol.DXL2, LinkOpener.serial(pty.a().toString(), 1_000_000)
+                .open(), 1_000_000, 20);
+        bus = b;
+        org.parpe.serial.servo.wire.Dxl2Codec codec = new org.parpe.serial.servo.wire.Dxl2Codec();
+        Thread late = new Thread(() -> {
+            byte[] in = new byte[256];
+            byte[] out = new byte[64];
+            try {
+                while (servoSide.read(in) == 0) {
+                    Thread.onSpinWait();
+                }
+                servoSide.write(out, 0, codec.status(out, 3, 0, new byte[] {0x13, 0x08, 0, 0}, 4));
+            } catch (Exception e) {
+                throw new AssertionError(e);
+            }
+        });
+        late.start();
+        try {
+            assertEquals(Integer.MIN_VALUE, b.read(3, 70, 1, 1));
+        } finally {
+            late.join();
             servoSide.close();
         }
     }
