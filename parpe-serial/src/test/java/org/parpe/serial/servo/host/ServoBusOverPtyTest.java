@@ -69,9 +69,6 @@ class ServoBusOverPtyTest {
         bus = ServoBuses.open(models[0].protocol(), LinkOpener.serial(pty.a().toString(), 1_000_000),
                 BusConfig.defaults().withBaud(1_000_000));
         awaitAnswer(bus, o.modules()[o.modules().length - 1]);
-        // And one read of every servo: the emulator's first multi-reply request loads its code.
-        int n = o.modules().length;
-        bus.readPositions(o.modules(), models, n, new double[n], new int[n]);
     }
 
     /**
