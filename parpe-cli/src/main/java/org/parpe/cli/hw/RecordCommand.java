@@ -175,8 +175,11 @@ public final class RecordCommand implements Callable<Integer> {
                         + " (" + protocol.key() + ", " + rate + " baud); nothing was made limp");
             }
             recorder.begin();
+            // A servo recording plays back through its profile; a G1 one through the port.
+            String playWith = hardware == null ? "--port " + device
+                    : "--hardware " + hardware + (port == null ? "" : " --port " + port);
             RecordingSession session = new RecordingSession(recorder, new PoseRecording(group, ids), outFile,
-                    "recorded from " + device, err);
+                    "recorded from " + device, playWith, err);
             SerialLink.beforePortsClose(session::end);
             return session.run(every, count, new BufferedReader(new InputStreamReader(input, StandardCharsets.UTF_8)));
         } finally {

@@ -20,16 +20,20 @@ final class RecordingSession {
     private final PoseRecording recording;
     private final OutputFile out;
     private final String origin;
+    private final String playWith;
     private final PrintWriter err;
     private final AtomicBoolean ended = new AtomicBoolean();
     private final long start = System.nanoTime();
     private long last = start;
 
-    RecordingSession(PoseRecorder recorder, PoseRecording recording, OutputFile out, String origin, PrintWriter err) {
+    /** {@code playWith}: the options that play the recording back on the same robot ({@code --hardware P}). */
+    RecordingSession(PoseRecorder recorder, PoseRecording recording, OutputFile out, String origin, String playWith,
+                     PrintWriter err) {
         this.recorder = recorder;
         this.recording = recording;
         this.out = out;
         this.origin = origin;
+        this.playWith = playWith;
         this.err = err;
     }
 
@@ -90,7 +94,7 @@ final class RecordingSession {
                 err.println("record: no pose captured; " + out + " not written");
             } else {
                 err.println("record: " + recording.size() + " poses saved in " + out + "; play them with: parpe run "
-                        + out + " --port PATH");
+                        + out + " " + playWith);
             }
             err.flush();
         }

@@ -37,8 +37,8 @@ public final class ScanCommand implements Callable<Integer> {
     @Option(names = "--baud", paramLabel = "N", description = "Only this line speed.")
     Integer baud;
 
-    @Option(names = "--ids", defaultValue = "0..253", paramLabel = "IDS",
-            description = "Servo IDs to ping (default ${DEFAULT-VALUE}).")
+    @Option(names = "--ids", paramLabel = "IDS",
+            description = "Servo IDs to ping (default: every ID the protocol allows, dxl2 0..252, sts and scs 0..253, g1 0..254).")
     String ids;
 
     @Option(names = "--out", defaultValue = "hardware.xml", paramLabel = "FILE.xml",
@@ -65,22 +65,23 @@ public final class ScanCommand implements Callable<Integer> {
 
     private int scan(PrintWriter stdout, PrintWriter err) throws UsageException {
         List<ServoProtocol> protocols = protocols();
-        int[] wanted = ModuleList.sorted(ModuleList.parse(ids, "--ids"));
+        int[] wanted = ids == null ? null : ModuleList.sorted(ModuleList.parse(ids, "--ids"));
         // checked before scanning; --force replaces a regular file only, never a device, FIFO or link to nothing
         OutputFile.of(OutputFile.plan(List.of()), "--out", out.toString(), force ? OutputPlan.Existing.REPLACE
                 : OutputPlan.Existing.KEEP, "choose another --out or add --force");
         ServoScanner.Result r;
         try {
             r = ServoScanner.scan(port, protocols, baud, wanted, (p, rate) -> err.println(String.format(Locale.ROOT,
-                    "scan: %s at %d baud, IDs %s ...", p.key(), rate, ModuleList.format(wanted))), () -> false);
+                    "scan: %s at %d baud, IDs %s ...", p.key(), rate, ModuleList.format(ServoScanner.idsFor(p, wanted)))),
+                    () -> false);
         } catch (IOException | IllegalArgumentException e) {
             throw new UsageException(e.getMessage());
         }
         if (r != null) {
-            report(r.protocol(), r.baud(), r.servos(), stdout, err);
-            return 0;
+            return report(r.protocol(), r.baud(), r.servos(), stdout, err);
         }
-        err.println("scan: no servo answers on " + port + " (is the robot powered? is the adapter for this bus?)");
+        err.println("scan: no usable servos found on " + port + ": no servo answers (is the robot powered? is the "
+                + "adapter for this bus?)");
         return 1;
     }
 
@@ -95,7 +96,8 @@ public final class ScanCommand implements Callable<Integer> {
         return List.of(p);
     }
 
-    private void report(ServoProtocol p, int rate, List<Found> found, PrintWriter stdout, PrintWriter err)
+    /** Lists the servos found and writes the starter profile; 1, and no file, when none is of a known model. */
+    private int report(ServoProtocol p, int rate, List<Found> found, PrintWriter stdout, PrintWriter err)
             throws UsageException {
         stdout.println(String.format(Locale.ROOT, "%d %s servo%s on %s at %d baud:", found.size(), p.key(),
                 found.size() == 1 ? "" : "s", port, rate));
@@ -111,6 +113,11 @@ public final class ScanCommand implements Callable<Integer> {
         }
         HardwareProfile profile = ServoScanner.starterProfile(out.toString(), p, port, rate, found);
         int servos = profile.servos().size();
+        if (servos == 0) {
+            err.println("scan: no usable servos found on " + port + ": none of a model PARPE knows (" + ServoModel.names(p)
+                    + "); " + out + " not written");
+            return 1;
+        }
         try {
             ProfileWriter.write(profile, out, "written by parpe scan: one module per servo, in ID order; set module, "
                     + "direction and limits, then run parpe calibrate");
@@ -119,5 +126,6 @@ public final class ScanCommand implements Callable<Integer> {
         }
         err.println("scan: starter profile written to " + out + " (modules 0.." + (servos - 1)
                 + "); next: parpe calibrate --hardware " + out);
+        return 0;
     }
 }

@@ -38,6 +38,21 @@ final class EmulatedServos implements AutoCloseable {
             pty.close();
             throw e;
         }
+        warmUp(model, options.modules()[options.modules().length - 1]);
+    }
+
+    /**
+     * Waits until servo {@code id} answers a ping: the first packets of a fresh emulator load its
+     * classes, which on a loaded machine takes longer than a scan's two 10 ms tries.
+     */
+    private void warmUp(ServoModel model, int id) throws IOException {
+        try (org.parpe.serial.servo.ServoBus b = org.parpe.serial.servo.host.ServoBuses.open(model.protocol(),
+                LinkOpener.serial(port(), 1_000_000), org.parpe.serial.bus.BusConfig.defaults().withBaud(1_000_000))) {
+            long deadline = System.nanoTime() + 5_000_000_000L;
+            while (b.ping(id, 1) < 0 && System.nanoTime() < deadline) {
+                Thread.onSpinWait();
+            }
+        }
     }
 
     String port() {

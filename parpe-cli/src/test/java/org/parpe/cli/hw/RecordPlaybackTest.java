@@ -217,6 +217,9 @@ class RecordPlaybackTest {
             }
             keys.close();
             assertEquals(0, code.get(20, TimeUnit.SECONDS), err.toString(StandardCharsets.UTF_8));
+            // A servo recording plays back through its profile; it used to suggest "--port PATH".
+            assertTrue(err.toString(StandardCharsets.UTF_8).contains("play them with: parpe run " + rec + " --hardware "
+                    + profile + " --port " + bus.port()), err.toString(StandardCharsets.UTF_8));
             assertTrue(!bus.emulator.isLimp(12), "the servos hold after recording");
             for (int k = 0; k < 3; k++) {
                 bus.emulator.backDrive(servos[k], 0);

@@ -78,9 +78,35 @@ class ScanCalibrateTest {
             Cli r = Cli.run("scan", "--port", pty.a().toString(), "--protocol", "sts", "--baud", "1000000",
                     "--ids", "0..3", "--out", dir.resolve("x.xml").toString());
             assertEquals(1, r.code, r.toString());
-            assertTrue(r.err.contains("no servo answers on"), r.err);
+            assertTrue(r.err.contains("no usable servos found on"), r.err);
+            assertTrue(r.err.contains("no servo answers"), r.err);
             assertTrue(!Files.exists(dir.resolve("x.xml")));
         }
+    }
+
+    @Test
+    void scanOfServosOfUnknownModelsWritesNoProfileAndFails() throws Exception {
+        // Before, a bus of only unknown models wrote an empty profile "modules 0..-1" and exited 0.
+        ServoModel unknown = new ServoModel(org.parpe.serial.servo.ServoProtocol.DXL2, 4242, "mystery", 4096, 360,
+                2048, 0, 4095, -1, org.parpe.serial.servo.Registers.DXL_X);
+        try (EmulatedServos s = new EmulatedServos(dir, unknown, EmulatorOptions.of(1, 2))) {
+            Path out = dir.resolve("none.xml");
+            Cli r = Cli.run("scan", "--port", s.port(), "--protocol", "dxl2", "--baud", "57600", "--ids", "0..4",
+                    "--out", out.toString());
+            assertEquals(1, r.code, r.toString());
+            assertTrue(r.out.contains("unknown (4242)"), r.out);
+            assertTrue(r.err.contains("scan: no usable servos found on " + s.port()), r.err);
+            assertTrue(!Files.exists(out), "no empty profile written");
+        }
+    }
+
+    @Test
+    void dynamixelId253IsRefused() throws Exception {
+        // e-Manual, Protocol 2.0, Packet ID: 0 ~ 252; 253 (0xFD) is not used.
+        Cli r = Cli.run("scan", "--port", dir.resolve("none").toString(), "--protocol", "dxl2", "--ids", "250..253",
+                "--out", dir.resolve("x.xml").toString());
+        assertEquals(2, r.code, r.toString());
+        assertTrue(r.err.contains("--ids: dxl2 servo IDs are 0..252, got 253"), r.err);
     }
 
     @Test

@@ -98,7 +98,11 @@ class ServoRunTest {
         try (EmulatedServos s = new EmulatedServos(dir, ServoModel.named("xm430-w210"), EmulatorOptions.of(1, 2, 3, 4))) {
             Thread faulter = new Thread(() -> {
                 try {
-                    Thread.sleep(500);
+                    // After set-up: a servo faulty at the start stays limp, which stops the run.
+                    while (s.emulator.isLimp(1) || s.emulator.isLimp(4)) {
+                        Thread.sleep(5);
+                    }
+                    Thread.sleep(300);
                     s.emulator.fault(3, 0x20);
                 } catch (InterruptedException e) {
                     Thread.currentThread().interrupt();
@@ -192,7 +196,10 @@ class ServoRunTest {
             assertTrue(r.err.contains("servo 1 (module 0) is an xl-320 (350), the profile says xl430-w250 (1060) at "),
                     r.err);
             assertTrue(r.err.contains("it will not move (correct the model in the profile)"), r.err);
-            assertTrue(r.err.contains("error: no servo answers"), r.err);
+            // They answer, so "is the robot powered?" would send the user the wrong way.
+            assertTrue(r.err.contains("error: the servos on " + s.port() + " answer, but not as the model the profile "
+                    + "says (modules 0..3"), r.err);
+            assertTrue(r.err.contains("0 of 4 servos answer; 4 more answer as another model"), r.err);
         }
     }
 

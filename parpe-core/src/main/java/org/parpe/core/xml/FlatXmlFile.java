@@ -40,12 +40,17 @@ public final class FlatXmlFile {
     public record Element(String name, Map<String, String> attributes, SourcePos at) {
     }
 
+    /** The place the StAX parser writes into its messages. */
+    private static final java.util.regex.Pattern PARSER_PLACE =
+            java.util.regex.Pattern.compile("\\s*at \\[row,col[^\\]]*\\]: \\[(-?\\d+),(-?\\d+)\\]");
+
     private final String file;
     private final DiagnosticSink diags;
     private final Map<String, String> rootAttributes = new LinkedHashMap<>();
     private final List<Element> children = new ArrayList<>();
     private SourcePos rootAt;
     private boolean ok = true;
+    private int errors;
 
     private FlatXmlFile(String file, DiagnosticSink diags) {
         this.file = file;
@@ -64,14 +69,33 @@ public final class FlatXmlFile {
              JsonParser p = new XmlFactory().createParser(in)) {
             f.document(p, what, root, expected);
         } catch (JsonProcessingException e) {
-            JsonLocation l = e.getLocation();
-            f.error(l == null ? f.start() : f.pos(l), "not well-formed XML: " + e.getOriginalMessage());
+            f.notWellFormed(e);
             f.rootAt = null;
         } catch (IOException e) {
             f.error(f.start(), "cannot read the " + what + ": " + e.getMessage());
             f.rootAt = null;
         }
         return f;
+    }
+
+    /**
+     * A parse error at its place, in the parser's words without its own note of the place
+     * ("at [row,col {unknown-source}]: [3,18]"), which also gives the place when the exception
+     * carries none.
+     */
+    private void notWellFormed(JsonProcessingException e) {
+        String message = e.getOriginalMessage() == null ? "" : e.getOriginalMessage();
+        java.util.regex.Matcher m = PARSER_PLACE.matcher(message);
+        SourcePos at = null;
+        if (m.find()) {
+            at = new SourcePos(file, Math.max(1, Integer.parseInt(m.group(1))), Math.max(1, Integer.parseInt(m.group(2))));
+            message = (message.substring(0, m.start()) + message.substring(m.end())).trim();
+        }
+        JsonLocation l = e.getLocation();
+        if (l != null && l.getLineNr() > 0) {
+            at = pos(l);
+        }
+        error(at == null ? start() : at, "not well-formed XML: " + message);
     }
 
     /** Where the root element starts; null when the file could not be read or has another root. */
@@ -103,6 +127,12 @@ public final class FlatXmlFile {
     public void error(SourcePos at, String message) {
         diags.error(at, message);
         ok = false;
+        errors++;
+    }
+
+    /** How many problems were reported so far (a reader compares counts to tell whether a step failed). */
+    public int errors() {
+        return errors;
     }
 
     /** Whether every attribute of {@code a} is in {@code allowed}; each other one is an error. */
@@ -171,16 +201,19 @@ public final class FlatXmlFile {
             return;
         }
         rootAt = at;
+        rootAttributes.putAll(staxAttributes(p));
+        JsonLocation after = p.currentLocation();
         while (p.nextToken() == JsonToken.FIELD_NAME) {
             String name = p.currentName();
             SourcePos here = pos(p.currentTokenLocation());
             boolean element = isElement(p, name);
+            Map<String, String> attrs = element ? staxAttributes(p) : null;
             JsonToken t = p.nextToken();
             if (t == JsonToken.START_OBJECT) {
-                children.add(new Element(name, attributes(p, name), here));
+                children.add(new Element(name, attributes(p, name, attrs), here));
             } else if (name.isEmpty()) {
                 if (!p.getText().isBlank()) {
-                    error(here, "<" + root + "> may not contain text");
+                    error(textStart(after, p.getText()), "<" + root + "> may not contain text");
                 }
             } else if (t == JsonToken.START_ARRAY) {
                 error(here, "<" + name + "> may not contain elements");
@@ -191,10 +224,43 @@ public final class FlatXmlFile {
                     error(here, "<" + name + "> may not contain text");
                 }
                 children.add(new Element(name, Map.of(), here));
-            } else {
-                rootAttributes.put(name, p.getText() == null ? "" : p.getText().trim());
+            }
+            // Other fields are the root's attributes, taken from the StAX reader above.
+            after = p.currentLocation();
+        }
+    }
+
+    /**
+     * The attributes of the element the StAX reader stands on, values trimmed; one of another
+     * namespace keeps its prefix ({@code x:protocol}), so that it cannot stand in for ours.
+     */
+    private static Map<String, String> staxAttributes(JsonParser p) {
+        Map<String, String> attrs = new LinkedHashMap<>();
+        if (p instanceof FromXmlParser x && x.getStaxReader().getEventType() == XMLStreamConstants.START_ELEMENT) {
+            XMLStreamReader r = x.getStaxReader();
+            for (int i = 0; i < r.getAttributeCount(); i++) {
+                String prefix = r.getAttributePrefix(i);
+                String local = r.getAttributeLocalName(i);
+                attrs.put(prefix == null || prefix.isEmpty() ? local : prefix + ":" + local,
+                        r.getAttributeValue(i).trim());
             }
         }
+        return attrs;
+    }
+
+    /** Where the first non-blank character of {@code text}, which began at {@code from}, stands. */
+    private SourcePos textStart(JsonLocation from, String text) {
+        int line = Math.max(1, from.getLineNr());
+        int col = Math.max(1, from.getColumnNr());
+        for (int i = 0; i < text.length() && Character.isWhitespace(text.charAt(i)); i++) {
+            if (text.charAt(i) == '\n') {
+                line++;
+                col = 1;
+            } else {
+                col++;
+            }
+        }
+        return new SourcePos(file, line, col);
     }
 
     /** Whether the field just read is a child element (an empty one looks like an attribute otherwise). */
@@ -206,9 +272,8 @@ public final class FlatXmlFile {
         return r.getEventType() == XMLStreamConstants.START_ELEMENT && name.equals(r.getLocalName());
     }
 
-    /** The attributes of the current element; nested elements and text are errors. */
-    private Map<String, String> attributes(JsonParser p, String element) throws IOException {
-        Map<String, String> attrs = new LinkedHashMap<>();
+    /** The current element's {@code attrs} (read from StAX); nested elements and text are errors. */
+    private Map<String, String> attributes(JsonParser p, String element, Map<String, String> attrs) throws IOException {
         while (p.nextToken() == JsonToken.FIELD_NAME) {
             String key = p.currentName();
             SourcePos at = pos(p.currentTokenLocation());
@@ -217,9 +282,7 @@ public final class FlatXmlFile {
             if (nested || t == JsonToken.START_OBJECT || t == JsonToken.START_ARRAY) {
                 error(at, "<" + element + "> may not contain <" + key + ">");
                 p.skipChildren();
-            } else if (!key.isEmpty()) {
-                attrs.put(key, p.getText() == null ? "" : p.getText().trim());
-            } else if (!p.getText().isBlank()) {
+            } else if (key.isEmpty() && !p.getText().isBlank()) {
                 error(at, "<" + element + "> may not contain text");
             }
         }

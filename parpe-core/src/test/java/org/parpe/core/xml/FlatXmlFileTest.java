@@ -88,4 +88,38 @@ class FlatXmlFileTest {
                 "1:1 y must be in 0..600, got 700", "1:1 <thing> has no attribute 'q'; it takes m, n",
                 "1:1 <thing> needs the attribute 'n'"), lines(d));
     }
+
+    @Test
+    void textInTheRootIsPlacedWhereItStandsNotAtTheNextElement() throws Exception {
+        DiagnosticList d = new DiagnosticList();
+        read("<things>\n  <thing a=\"1\"/>\n  stray words\n\n  <thing a=\"2\"/>\n</things>\n", d);
+        assertEquals(List.of("3:3 <things> may not contain text"), lines(d));
+    }
+
+    @Test
+    void anUndefinedEntityIsPlacedWhereItStandsWithoutTheParsersInternals() throws Exception {
+        DiagnosticList d = new DiagnosticList();
+        FlatXmlFile f = read("<things>\n  <thing a=\"1\"/>\n  <thing a=\"&nope;\"/>\n</things>\n", d);
+        assertNull(f.root());
+        assertEquals(1, d.all().size(), lines(d).toString());
+        String line = lines(d).get(0);
+        assertTrue(line.startsWith("3:"), line);
+        assertFalse(line.contains("unknown-source") || line.contains("[row,col"), line);
+        assertTrue(line.contains("nope"), line);
+        DiagnosticList root = new DiagnosticList();
+        read("<?xml version=\"1.0\"?>\n\n<things size=\"&big;\">\n</things>\n", root);
+        assertEquals(1, root.all().size(), lines(root).toString());
+        assertTrue(lines(root).get(0).startsWith("3:"), "an entity in the root's attribute at its line: " + lines(root));
+        assertFalse(lines(root).get(0).contains("[row,col"), lines(root).toString());
+    }
+
+    @Test
+    void attributesOfAnotherNamespaceDoNotStandInForOurs() throws Exception {
+        DiagnosticList d = new DiagnosticList();
+        FlatXmlFile f = read("<things xmlns:x=\"urn:other\" size=\"3\" x:size=\"9\">\n  <thing x:a=\"7\" a=\"1\"/>\n"
+                + "</things>\n", d);
+        assertEquals("3", f.rootAttributes().get("size"));
+        assertEquals("9", f.rootAttributes().get("x:size"));
+        assertEquals(Map.of("x:a", "7", "a", "1"), f.children().get(0).attributes());
+    }
 }

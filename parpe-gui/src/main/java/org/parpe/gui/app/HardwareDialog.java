@@ -3,7 +3,6 @@ package org.parpe.gui.app;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
-import java.util.stream.IntStream;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.layout.GridLayout;
@@ -14,7 +13,7 @@ import org.eclipse.swt.widgets.Display;
 import org.eclipse.swt.widgets.FileDialog;
 import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.Shell;
-import org.eclipse.swt.widgets.Slider;
+import org.eclipse.swt.widgets.Spinner;
 import org.eclipse.swt.widgets.Table;
 import org.eclipse.swt.widgets.TableColumn;
 import org.eclipse.swt.widgets.TableItem;
@@ -25,7 +24,8 @@ import org.parpe.serial.servo.ServoProtocol;
 
 /**
  * Run → Hardware…: connect to a servo bus (port, protocol, baud) or scan for one, see the servos
- * with their positions and faults, make them limp or hold, jog one with a slider, and save a
+ * with their positions and faults, make them limp or hold, jog one (a number box that starts at
+ * the servo's position and moves it 1° an arrow click, 5° a page, at a limited speed), and save a
  * starter hardware profile that becomes the tool bar's profile. The bus belongs to a
  * {@link HardwareSession} (its own thread); this class only touches widgets, on the UI thread.
  * Closing the dialog closes the bus.
@@ -33,8 +33,11 @@ import org.parpe.serial.servo.ServoProtocol;
 final class HardwareDialog {
     private static final String ANY = "any";
     private static final int[] BAUDS = {57_600, 115_200, 1_000_000, 2_000_000, 3_000_000, 4_000_000, 500_000, 9_600};
-    /** The slider counts tenths of a degree. */
+    /** The jog box counts tenths of a degree. */
     private static final int STEPS_PER_DEG = 10;
+    /** One arrow click or arrow key of the jog box: 1°; Page Up/Down: 5°. */
+    private static final int JOG_STEP = STEPS_PER_DEG;
+    private static final int JOG_PAGE = 5 * STEPS_PER_DEG;
 
     private final IdeWindow ide;
     private final Shell shell;
@@ -42,11 +45,13 @@ final class HardwareDialog {
     private final Combo protocol;
     private final Combo baud;
     private final Table table;
-    private final Slider slider;
+    private final Spinner jogBox;
     private final Label jogValue;
     private final Label message;
     private final HardwareSession session;
     private List<HardwareSession.Servo> servos = List.of();
+    /** The row the jog box was set up for (−1: none). */
+    private int jogRow = -1;
 
     private HardwareDialog(IdeWindow ide) {
         this.ide = ide;
@@ -59,14 +64,9 @@ final class HardwareDialog {
         label(top, "Port:");
         port = new Combo(top, SWT.DROP_DOWN);
         port.setLayoutData(width(170));
-        port.setItems(SerialLink.availablePorts().toArray(new String[0]));
         port.setText(ide.toolbar().port());
         port.setToolTipText("Serial device of the servo bus (type a path, or pick one)");
-        port.addListener(SWT.MouseDown, e -> {
-            String typed = port.getText();
-            port.setItems(SerialLink.availablePorts().toArray(new String[0]));
-            port.setText(typed);
-        });
+        port.addListener(SWT.MouseDown, e -> listPorts());
         label(top, "Protocol:");
         protocol = new Combo(top, SWT.READ_ONLY);
         protocol.add(ANY);
@@ -111,14 +111,17 @@ final class HardwareDialog {
                 () -> onSelected(r -> session.torque(r, true)));
 
         Composite jog = row(3);
-        label(jog, "Jog selected:");
-        slider = new Slider(jog, SWT.HORIZONTAL);
-        slider.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
-        slider.setEnabled(false);
-        slider.setToolTipText("Goal position of the selected servo (its torque comes on), within the model's range");
-        slider.addListener(SWT.Selection, e -> jog());
+        label(jog, "Jog selected to:");
+        jogBox = new Spinner(jog, SWT.BORDER);
+        jogBox.setLayoutData(width(90));
+        jogBox.setEnabled(false);
+        jogBox.setToolTipText("Goal of the selected servo in degrees: starts at its position; the arrows (or Up/Down) "
+                + "move it 1°, Page Up/Down 5°, or type an angle and press Enter. Its torque comes on; it moves at "
+                + "most " + (int) HardwareSession.JOG_DEG_PER_S + "°/s, within the model's range");
+        jogBox.addListener(SWT.Selection, e -> jog());
+        jogBox.addListener(SWT.DefaultSelection, e -> jog());
         jogValue = new Label(jog, SWT.NONE);
-        jogValue.setLayoutData(width(80));
+        jogValue.setLayoutData(width(260));
 
         message = new Label(shell, SWT.WRAP);
         GridData md = new GridData(SWT.FILL, SWT.CENTER, true, false);
@@ -135,11 +138,65 @@ final class HardwareDialog {
         shell.addListener(SWT.Dispose, e -> {
             session.close();
             ide.setHardwareHeld(null);
+            ide.pose().hardwareGone();
         });
+        listPorts();
         shell.pack();
         shell.setSize(Math.max(760, shell.getSize().x), Math.max(520, shell.getSize().y));
+        place();
         shell.open();
     }
+
+    /**
+     * Over the IDE window, never at the screen's corner over the menu, and where it covers as
+     * little as possible of the bottom panels (the Pose panel and its Capture button, used while
+     * the dialog stays open): of the window's four corners and its top centre, inside the screen,
+     * the place that overlaps them least.
+     */
+    private void place() {
+        org.eclipse.swt.graphics.Rectangle owner = ide.shell().getBounds();
+        org.eclipse.swt.graphics.Rectangle screen = ide.shell().getMonitor().getClientArea();
+        org.eclipse.swt.graphics.Point size = shell.getSize();
+        org.eclipse.swt.widgets.Control panels = ide.pose().control().getParent();
+        org.eclipse.swt.graphics.Rectangle avoid = ide.shell().getDisplay().map(panels.getParent(), null,
+                panels.getBounds());
+        int top = owner.y + Math.max(40, owner.height / 12);
+        int[][] candidates = {
+            {owner.x + (owner.width - size.x) / 2, top},
+            {owner.x + owner.width - size.x - 20, top},
+            {owner.x + 20, top},
+            {owner.x + owner.width - size.x - 20, owner.y + owner.height - size.y - 20},
+            {owner.x + 20, owner.y + owner.height - size.y - 20}};
+        org.eclipse.swt.graphics.Rectangle best = null;
+        long bestOverlap = Long.MAX_VALUE;
+        for (int[] c : candidates) {
+            int x = Math.max(screen.x, Math.min(c[0], screen.x + screen.width - size.x));
+            int y = Math.max(screen.y, Math.min(c[1], screen.y + screen.height - size.y));
+            org.eclipse.swt.graphics.Rectangle r = new org.eclipse.swt.graphics.Rectangle(x, y, size.x, size.y);
+            org.eclipse.swt.graphics.Rectangle i = r.intersection(avoid);
+            long overlap = (long) Math.max(0, i.width) * Math.max(0, i.height);
+            if (overlap < bestOverlap) {
+                best = r;
+                bestOverlap = overlap;
+            }
+        }
+        shell.setLocation(best.x, best.y);
+    }
+
+    /** Fills the port list, keeping what is typed; with no adapter found the dialog says so. */
+    private void listPorts() {
+        String typed = port.getText();
+        List<String> found = SerialLink.availablePorts();
+        port.setItems(found.toArray(new String[0]));
+        port.setText(typed);
+        if (found.isEmpty() && message != null && servos.isEmpty()) {
+            show(NO_ADAPTER, false);
+        }
+    }
+
+    /** What the dialog says when the system lists no serial port. */
+    static final String NO_ADAPTER = "No serial adapters found: plug in the USB adapter of the servo bus (U2D2, "
+            + "Bus Servo Adapter, …), or type the device's path (e.g. /dev/ttyUSB0 or COM3).";
 
     /** Opens the dialog, or brings the open one to the front. */
     static HardwareDialog open(IdeWindow ide) {
@@ -205,7 +262,7 @@ final class HardwareDialog {
         ide.toolbar().setPort(p);
         setServos(List.of());
         show(proto == null || rate == null ? "Scanning " + p + "\u2026" : "Connecting\u2026", false);
-        session.connect(p, proto, rate, IntStream.rangeClosed(0, 253).toArray());
+        session.connect(p, proto, rate, null);
     }
 
     private void onSelected(java.util.function.IntConsumer action) {
@@ -217,34 +274,35 @@ final class HardwareDialog {
         action.accept(r);
     }
 
+    /**
+     * A servo was selected: the jog box takes its present position and the model's range (rounded
+     * inwards to tenths), and stays off while the position is not known.
+     */
     private void selected() {
         int r = table.getSelectionIndex();
         ServoModel m = r < 0 || r >= servos.size() ? null : servos.get(r).model();
-        slider.setEnabled(m != null);
-        if (m == null) {
-            jogValue.setText("");
+        double deg = m == null ? Double.NaN : servos.get(r).degrees();
+        jogBox.setEnabled(m != null && !Double.isNaN(deg));
+        jogRow = m == null ? -1 : r;
+        if (m == null || Double.isNaN(deg)) {
+            jogValue.setText(m == null ? "" : "position not known yet");
             return;
         }
-        slider.setValues(0, 0, (int) Math.round((m.maxDegrees() - m.minDegrees()) * STEPS_PER_DEG) + 1, 1, 1,
-                STEPS_PER_DEG * 5);
-        double deg = servos.get(r).degrees();
-        if (!Double.isNaN(deg)) {
-            slider.setSelection((int) Math.round((deg - m.minDegrees()) * STEPS_PER_DEG));
-        }
-        jogValue.setText(degrees(sliderDegrees(m)));
-    }
-
-    private double sliderDegrees(ServoModel m) {
-        return m.minDegrees() + (double) slider.getSelection() / STEPS_PER_DEG;
+        int lo = (int) Math.ceil(m.minDegrees() * STEPS_PER_DEG - 1e-9);
+        int hi = (int) Math.floor(m.maxDegrees() * STEPS_PER_DEG + 1e-9);
+        int at = (int) Math.max(lo, Math.min(hi, Math.round(deg * STEPS_PER_DEG)));
+        jogBox.setValues(at, lo, hi, 1, JOG_STEP, JOG_PAGE);
+        jogValue.setText(String.format(Locale.ROOT, "range %s..%s", degrees(lo / (double) STEPS_PER_DEG),
+                degrees(hi / (double) STEPS_PER_DEG)));
     }
 
     private void jog() {
         int r = table.getSelectionIndex();
-        if (r < 0 || r >= servos.size() || servos.get(r).model() == null) {
+        if (r < 0 || r != jogRow || r >= servos.size() || servos.get(r).model() == null || !jogBox.isEnabled()) {
             return;
         }
-        double deg = sliderDegrees(servos.get(r).model());
-        jogValue.setText(degrees(deg));
+        double deg = jogBox.getSelection() / (double) STEPS_PER_DEG;
+        jogValue.setText("moving to " + degrees(deg));
         session.jog(r, deg);
     }
 
@@ -297,6 +355,9 @@ final class HardwareDialog {
             selected();
         } else if (sel >= 0) {
             table.setSelection(sel);
+            if (!jogBox.isEnabled() && sel == jogRow) {
+                selected();
+            }
         }
     }
 
@@ -332,6 +393,11 @@ final class HardwareDialog {
         public void connected(List<HardwareSession.Servo> list, ServoProtocol p, int rate, String device) {
             ui(() -> {
                 setServos(list);
+                if (!list.isEmpty()) {
+                    // After a scan the boxes say what was found, so Connect and Save use it.
+                    protocol.select(protocol.indexOf(p.key()));
+                    baud.setText(String.valueOf(rate));
+                }
                 ide.setHardwareHeld(list.isEmpty() ? null : String.format(Locale.ROOT,
                         "Hardware: %d servo%s connected (%s, %s)", list.size(), list.size() == 1 ? "" : "s",
                         p.key().toUpperCase(Locale.ROOT), device));
@@ -368,8 +434,8 @@ final class HardwareDialog {
         return table;
     }
 
-    Slider slider() {
-        return slider;
+    Spinner jogBox() {
+        return jogBox;
     }
 
     String message() {

@@ -26,6 +26,10 @@ import org.parpe.serial.servo.profile.ProfileWriter;
  */
 final class HardwareSession {
     static final int POLL_MS = 200;
+    /** Jog speed limit, degrees per second of the servo. */
+    static final double JOG_DEG_PER_S = 30;
+    /** Time between two jog goals. */
+    static final int JOG_TICK_MS = 20;
     private static final int READ_TIMEOUT_MS = 20;
 
     /** One servo as the dialog shows it; immutable snapshot. */
@@ -56,6 +60,9 @@ final class HardwareSession {
     private volatile boolean closing;
     // Confined to the worker thread:
     private ServoBus bus;
+    /** Servos on the move: row → {goal sent, target}. */
+    private final java.util.Map<Integer, double[]> jogs = new java.util.LinkedHashMap<>();
+    private java.util.concurrent.ScheduledFuture<?> jogTask;
     private ServoProtocol protocol;
     private int baud;
     private String port;
@@ -69,6 +76,7 @@ final class HardwareSession {
     /**
      * Closes any bus held, then looks for servos {@code ids} on {@code port}: with {@code p} and
      * {@code rate} when given, else every protocol and common baud rate; keeps the bus open.
+     * {@code ids} null: every ID the protocol allows.
      */
     void connect(String port, ServoProtocol p, Integer rate, int[] ids) {
         submit(() -> {
@@ -88,7 +96,7 @@ final class HardwareSession {
             if (p != null && rate != null) {
                 listener.message(String.format(Locale.ROOT, "Looking for %s servos on %s at %d baud\u2026", p.key(), port,
                         rate), false);
-                found = new ServoScanner.Result(p, rate, ServoScanner.scanOne(port, p, rate, ids));
+                found = new ServoScanner.Result(p, rate, ServoScanner.scanOne(port, p, rate, ServoScanner.idsFor(p, ids)));
             } else {
                 found = ServoScanner.scan(port, p == null ? ServoScanner.allProtocols() : List.of(p), rate, ids,
                         (q, r) -> listener.message(String.format(Locale.ROOT, "Scanning: %s at %d baud\u2026", q.key(), r),
@@ -132,6 +140,8 @@ final class HardwareSession {
                 ids[i] = servos.get(rows[i]).id();
                 models[i] = servos.get(rows[i]).model();
             }
+            // Limp or hold ends the jogs; the next one starts again from where the servo is.
+            stopJogs();
             if (on) {
                 bus.holdHere(ids, models, ids.length);
             } else {
@@ -146,24 +156,93 @@ final class HardwareSession {
         });
     }
 
-    /** Goal position {@code degrees} (servo degrees, clamped to the model's range) for servo {@code row}. */
+    /**
+     * Moves servo {@code row} toward {@code degrees} (servo degrees, kept within the model's range)
+     * at no more than {@value #JOG_DEG_PER_S} °/s: goals a step apart every {@value #JOG_TICK_MS}
+     * ms, from where the servo is. A limp servo first holds where it is. A new target replaces the
+     * servo's old one and the move goes on from the goal reached; several servos move at once
+     * (the Pose panel's "Real robot follows"), their goals in one packet per step.
+     */
     void jog(int row, double degrees) {
         submit(() -> {
             if (bus == null || row < 0 || row >= servos.size() || servos.get(row).model() == null) {
                 return;
             }
             Servo s = servos.get(row);
-            int[] ids = {s.id()};
-            ServoModel[] models = {s.model()};
-            if (!Boolean.TRUE.equals(s.torque())) {
-                // Torque first: a servo may take "torque on" as "hold where you are", which would undo the goal.
-                bus.torque(ids, models, 1, true);
-                Servo[] next = servos.toArray(new Servo[0]);
-                next[row] = s.with(s.degrees(), true, s.status());
-                servos = List.of(next);
+            ServoModel m = s.model();
+            double[] j = jogs.get(row);
+            if (j == null) {
+                if (Double.isNaN(s.degrees())) {
+                    listener.message("Servo " + s.id() + "'s position is not known yet; wait for a reading.", true);
+                    return;
+                }
+                if (!Boolean.TRUE.equals(s.torque())) {
+                    // Hold where it is first: the move starts from the present position, not an old goal.
+                    bus.holdHere(new int[] {s.id()}, new ServoModel[] {m}, 1);
+                    Servo[] next = servos.toArray(new Servo[0]);
+                    next[row] = s.with(s.degrees(), true, s.status());
+                    servos = List.of(next);
+                }
+                j = new double[] {s.degrees(), s.degrees()};
+                jogs.put(row, j);
             }
-            bus.writeGoals(ids, models, new int[] {s.model().ticks(degrees)}, 1);
+            j[1] = Math.max(m.minDegrees(), Math.min(m.maxDegrees(), degrees));
+            if (jogTask == null) {
+                jogTask = worker.scheduleAtFixedRate(this::jogStep, 0, JOG_TICK_MS, TimeUnit.MILLISECONDS);
+            }
         });
+    }
+
+    /** One step of the jogs: each goal moves at most {@value #JOG_DEG_PER_S} °/s toward its target. */
+    private void jogStep() {
+        if (bus == null || closing) {
+            stopJogs();
+            return;
+        }
+        double max = JOG_DEG_PER_S * JOG_TICK_MS / 1000.0;
+        int n = jogs.size();
+        int[] ids = new int[n];
+        ServoModel[] models = new ServoModel[n];
+        int[] ticks = new int[n];
+        int k = 0;
+        for (java.util.Iterator<java.util.Map.Entry<Integer, double[]>> it = jogs.entrySet().iterator(); it.hasNext(); ) {
+            java.util.Map.Entry<Integer, double[]> e = it.next();
+            double[] j = e.getValue();
+            if (e.getKey() >= servos.size()) {
+                it.remove();
+                continue;
+            }
+            double d = j[1] - j[0];
+            j[0] = Math.abs(d) <= max ? j[1] : j[0] + Math.copySign(max, d);
+            Servo s = servos.get(e.getKey());
+            ids[k] = s.id();
+            models[k] = s.model();
+            ticks[k++] = s.model().ticks(j[0]);
+            if (j[0] == j[1]) {
+                // Reached: the servo holds its goal; a later jog starts from there.
+                it.remove();
+            }
+        }
+        try {
+            if (k > 0) {
+                bus.writeGoals(ids, models, ticks, k);
+            }
+        } catch (IOException e) {
+            stopJogs();
+            lost(e);
+            return;
+        }
+        if (jogs.isEmpty()) {
+            stopJogs();
+        }
+    }
+
+    private void stopJogs() {
+        jogs.clear();
+        if (jogTask != null) {
+            jogTask.cancel(false);
+            jogTask = null;
+        }
     }
 
     /** Writes a starter profile of the servos connected to {@code file}; {@code done} gets the file on success. */
@@ -250,6 +329,7 @@ final class HardwareSession {
     }
 
     private void disconnect() {
+        stopJogs();
         if (bus != null) {
             bus.close();
             bus = null;

@@ -202,7 +202,8 @@ public final class IdeWindow {
                     : "Simulator: idle";
             status.setSim(simState);
             String held = hardwareHeld;
-            status.setHardware(held != null && !running ? held : runs.hardwareState());
+            status.setHardware(held != null && !running ? held : runs.hardwareState(),
+                    running && runs.hardwareSilentSince() >= 0);
             if (st != null) {
                 status.setTime(st.time());
             }

@@ -108,7 +108,15 @@ final class RunActions implements ControlPanel.Target {
     }
 
     String hardwareState() {
-        return hardwareState;
+        long since = hardwareSilentSince();
+        return since < 0 ? hardwareState : "Hardware: robot not responding since " + java.time.LocalTime.ofInstant(
+                java.time.Instant.ofEpochMilli(since), java.time.ZoneId.systemDefault()).withNano(0);
+    }
+
+    /** Since when (wall-clock ms) the run's servos have not answered; −1 while they do or none are driven. */
+    long hardwareSilentSince() {
+        ServoDriver d = servos;
+        return d == null ? -1 : d.notAnsweringSince();
     }
 
     /**

@@ -14,6 +14,7 @@ public final class StatusBar {
     private final Label hardware;
     private final Label time;
     private final Label caret;
+    private boolean hardwareAlarm;
 
     public StatusBar(Composite parent) {
         bar = new Composite(parent, SWT.NONE);
@@ -72,7 +73,31 @@ public final class StatusBar {
     }
 
     public void setHardware(String text) {
-        hardware.setText(text);
+        setHardware(text, false);
+    }
+
+    /**
+     * The hardware field; {@code alarm} (the robot stopped answering) shows it white on red, so
+     * that it is seen from across a classroom, and repeats it in the message field.
+     */
+    public void setHardware(String text, boolean alarm) {
+        if (!text.equals(hardware.getText())) {
+            hardware.setText(text);
+            hardware.setToolTipText(text);
+        }
+        if (alarm != hardwareAlarm) {
+            hardwareAlarm = alarm;
+            hardware.setBackground(alarm ? bar.getDisplay().getSystemColor(SWT.COLOR_RED) : null);
+            hardware.setForeground(alarm ? bar.getDisplay().getSystemColor(SWT.COLOR_WHITE) : null);
+            if (alarm) {
+                setMessage(text.replaceFirst("^Hardware: r", "R") + ": check the servo supply and the cable");
+            }
+        }
+    }
+
+    /** Whether the hardware field shows the alarm. */
+    public boolean hardwareAlarm() {
+        return hardwareAlarm;
     }
 
     public String hardware() {

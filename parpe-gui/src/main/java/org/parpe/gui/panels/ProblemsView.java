@@ -35,6 +35,9 @@ public final class ProblemsView {
     private List<Diagnostic> load = List.of();
     private List<Diagnostic> run = List.of();
     private List<Diagnostic> shown = List.of();
+    /** How many equal run diagnostics each row of {@link #shown} stands for (1: itself alone). */
+    private int[] repeats = new int[0];
+    private final java.util.Map<Diagnostic, Integer> counts = new java.util.HashMap<>();
 
     /**
      * Creates the view.
@@ -76,7 +79,7 @@ public final class ProblemsView {
         it.setText(0, (isRun(d) ? "run " : "") + d.severity().word());
         it.setForeground(0, table.getDisplay().getSystemColor(err ? SWT.COLOR_RED : SWT.COLOR_DARK_YELLOW));
         it.setText(1, location(d.pos()));
-        it.setText(2, d.message());
+        it.setText(2, repeats[i] > 1 ? d.message() + "  (\u00d7" + repeats[i] + ")" : d.message());
     }
 
     /** Whether {@code d} came from the run (identity: an equal load diagnostic is a different row). */
@@ -121,12 +124,37 @@ public final class ProblemsView {
         }
     }
 
+    /**
+     * Load and run diagnostics by place; equal run diagnostics (a bus warning said again and
+     * again) fold into one row with their count.
+     */
     private void refresh() {
-        List<Diagnostic> all = new ArrayList<>(load.size() + run.size());
+        java.util.Map<Diagnostic, int[]> folded = new java.util.LinkedHashMap<>();
+        for (Diagnostic d : run) {
+            folded.computeIfAbsent(d, k -> new int[1])[0]++;
+        }
+        List<Diagnostic> all = new ArrayList<>(load.size() + folded.size());
         all.addAll(load);
-        all.addAll(run);
+        List<Diagnostic> runRows = new ArrayList<>();
+        for (Diagnostic d : run) {
+            // The first of each run of equal ones stands for all (identity tells run rows apart).
+            int[] n = folded.get(d);
+            if (n[0] > 0) {
+                runRows.add(d);
+                counts.put(d, n[0]);
+                n[0] = 0;
+            }
+        }
+        all.addAll(runRows);
         all.sort(BY_PLACE);
         shown = List.copyOf(all);
+        repeats = new int[shown.size()];
+        for (int i = 0; i < shown.size(); i++) {
+            Diagnostic d = shown.get(i);
+            Integer n = isRun(d) ? counts.get(d) : null;
+            repeats[i] = n == null ? 1 : n;
+        }
+        counts.clear();
         table.setRedraw(false);
         table.clearAll();
         table.setItemCount(shown.size());

@@ -366,6 +366,22 @@ public final class PosePanel {
                         + "Use on another group\u2026). Close and lose them?");
     }
 
+    /**
+     * The robot is gone (the Hardware dialog closed its bus): posing by hand falls back to the
+     * simulator, and the panel says so, rather than showing "Robot (limp)" with nothing connected.
+     */
+    public void hardwareGone() {
+        if (!box.isDisposed() && source.getSelectionIndex() == 1) {
+            source.select(0);
+            say("The robot was disconnected (Run > Hardware… closed); posing with the simulator.");
+        }
+    }
+
+    /** Whether "Robot (limp)" is the pose source (tests). */
+    public boolean posingTheRobot() {
+        return source.getSelectionIndex() == 1;
+    }
+
     /** Whether the posed robot is built and shown (the 3D view follows the sliders). */
     public boolean posingReady() {
         return posing() && sim.ready();

@@ -65,18 +65,44 @@ class HardwareDialogGuiTest {
         return null;
     }
 
+    private static org.eclipse.swt.widgets.Combo combo(Control parent, String item) {
+        if (parent instanceof org.eclipse.swt.widgets.Combo c && c.indexOf(item) >= 0) {
+            return c;
+        }
+        if (parent instanceof Composite k) {
+            for (Control c : k.getChildren()) {
+                org.eclipse.swt.widgets.Combo found = combo(c, item);
+                if (found != null) {
+                    return found;
+                }
+            }
+        }
+        return null;
+    }
+
     private static void click(HardwareDialog d, String text) {
         Button b = button(d.shell(), text);
         assertNotNull(b, "no button " + text);
         b.notifyListeners(SWT.Selection, new Event());
     }
 
+    private static final java.util.List<double[]> goals = new java.util.concurrent.CopyOnWriteArrayList<>();
+
     @Test
     void findLimpJogAndSaveServos() throws Exception {
         assumeTrue(PtyPair.available(), "socat is not installed");
         try (PtyPair pty = PtyPair.start(dir.resolve("a"), dir.resolve("b"));
              ServoEmulator emu = ServoEmulator.start(LinkOpener.serial(pty.b().toString(), 1_000_000),
-                     ServoModel.named("xl430-w250"), EmulatorOptions.of(1, 2, 3), new EmulatorListener() { })) {
+                     ServoModel.named("xl430-w250"), EmulatorOptions.of(1, 2, 3), new EmulatorListener() {
+                        @Override
+                        public void onSetpoints(int seq, double[] angles) {
+                            goals.add(angles.clone());
+                        }
+                    })) {
+            assertTrue(emu.backDrive(3, 25));
+            // Posing by hand with the dialog open: the Pose panel is shown.
+            ide.showPosePanel();
+            Gui.settle();
             HardwareDialog d = HardwareDialog.open(ide);
             assertTrue(d == HardwareDialog.open(ide), "a second Run > Hardware… brings the same dialog");
             d.portBox().setText(pty.a().toString());
@@ -84,6 +110,18 @@ class HardwareDialogGuiTest {
             click(d, "Scan");
             Gui.pump(() -> d.table().getItemCount() == 3, "the scan to find three servos");
             assertTrue(d.message().contains("dxl2 at 57600 baud"), d.message());
+            // After the scan the boxes say what it found (they used to stay "any").
+            assertEquals("dxl2", d.protocolBox().getText());
+            assertEquals("57600", d.baudBox().getText());
+            // Placed over the IDE window, not at the screen's corner over the menu.
+            assertTrue(d.shell().getLocation().x > ide.shell().getLocation().x
+                    && d.shell().getLocation().y > ide.shell().getLocation().y, d.shell().getLocation().toString());
+            // Kept open, it leaves the Pose panel's Capture button free.
+            Button capture = button((Composite) ide.pose().control(), "&Capture");
+            assertNotNull(capture);
+            org.eclipse.swt.graphics.Rectangle at = capture.getDisplay().map(capture.getParent(), null, capture.getBounds());
+            assertTrue(at.width > 0 && at.height > 0, "the Capture button is laid out: " + at);
+            assertFalse(d.shell().getBounds().intersects(at), d.shell().getBounds() + " covers Capture at " + at);
             d.protocolBox().select(d.protocolBox().indexOf("dxl2"));
             d.baudBox().setText("1000000");
             click(d, "Connect");
@@ -101,12 +139,32 @@ class HardwareDialogGuiTest {
 
             d.table().setSelection(2);
             d.table().notifyListeners(SWT.Selection, new Event());
-            assertTrue(d.slider().isEnabled());
-            // The slider counts tenths of a degree from the model's lowest angle (−180°): 30° is 2100.
-            d.slider().setSelection(2100);
-            d.slider().notifyListeners(SWT.Selection, new Event());
-            Gui.pump(() -> Math.abs(emu.angle(3) - 30) < 0.2, "servo 3 to reach the jogged 30°");
-            Gui.pump(() -> d.table().getItem(2).getText(2).equals("30.0\u00b0"), "the table to show 30.0° for servo 3");
+            Gui.pump(() -> d.jogBox().isEnabled(), "the jog box for servo 3");
+            // The jog box starts at the servo's position (25°), not at 0° or the range's end: the
+            // old slider started at 0° and one click on its trough drove a servo from 25° to 81.8°.
+            assertEquals(250, d.jogBox().getSelection());
+            assertEquals(10, d.jogBox().getIncrement(), "one arrow click: 1°");
+            // One arrow click: 26°.
+            d.jogBox().setSelection(d.jogBox().getSelection() + d.jogBox().getIncrement());
+            d.jogBox().notifyListeners(SWT.Selection, new Event());
+            Gui.pump(() -> Math.abs(emu.angle(3) - 26) < 0.2, "servo 3 to move 1° to 26°");
+            // A typed 81.8° is reached at a limited speed: goals a small step apart, never a jump.
+            goals.clear();
+            d.jogBox().setSelection(818);
+            d.jogBox().notifyListeners(SWT.DefaultSelection, new Event());
+            Gui.pump(() -> Math.abs(emu.angle(3) - 81.8) < 0.2, "servo 3 to reach the typed 81.8°");
+            double previous = 26;
+            for (double[] g : goals) {
+                if (!Double.isNaN(g[2])) {
+                    assertTrue(Math.abs(g[2] - previous) <= HardwareSession.JOG_DEG_PER_S
+                            * HardwareSession.JOG_TICK_MS / 1000.0 + 0.1, "a goal step from " + previous + " to " + g[2]);
+                    previous = g[2];
+                }
+            }
+            assertEquals(81.8, previous, 0.1);
+            // The number box keeps to the model's range, rounded inwards: tick 4095 is 179.91°.
+            assertEquals(1799, d.jogBox().getMaximum());
+            Gui.pump(() -> d.table().getItem(2).getText(2).equals("81.8\u00b0"), "the table to show 81.8° for servo 3");
             Gui.settle();
             Gui.screenshot(d.shell(), "hardware-dialog.png");
 
@@ -131,8 +189,15 @@ class HardwareDialogGuiTest {
             assertEquals(RunOutcome.Status.ERROR, outcome.get().status());
             assertTrue(outcome.get().message().contains("Hardware dialog holds the bus"), outcome.get().message());
 
+            org.eclipse.swt.widgets.Combo source = combo(ide.pose().control(), "Robot (limp)");
+            assertNotNull(source, "the Pose panel's source box");
+            source.select(1);
+            source.notifyListeners(SWT.Selection, new Event());
+            assertTrue(ide.pose().posingTheRobot(), "posing the connected robot");
             click(d, "Close");
             Gui.pump(() -> d.shell().isDisposed(), "the dialog to close");
+            // It used to stay on "Robot (limp)" with nothing connected.
+            assertFalse(ide.pose().posingTheRobot(), "the Pose panel no longer poses a robot that is gone");
             assertTrue(ide.hardwareDialog().sessionForTest().awaitClosed(5000), "the bus thread ends");
             Gui.pump(() -> !ide.status().hardware().contains("connected ("), "the status bar to drop the dialog's bus");
         }

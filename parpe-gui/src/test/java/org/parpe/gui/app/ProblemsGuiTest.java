@@ -50,6 +50,21 @@ class ProblemsGuiTest {
     }
 
     @Test
+    void repeatedRunWarningsFoldIntoOneRowWithACount() throws Exception {
+        // A bus that keeps failing used to fill Problems with identical warnings.
+        Diagnostic again = new Diagnostic(Severity.WARNING, new SourcePos("bus /dev/ttyUSB0", 0, 0),
+                "servo 4 had stopped on its watchdog; resuming it");
+        ide.showRunDiagnostics(List.of(again, again, at(Severity.WARNING, 3, 5, "overlap"), again));
+        Gui.pump(() -> ide.problems().runDiagnostics().size() == 4, "the run diagnostics to be shown");
+        ProblemsView view = ide.problems();
+        long rows = view.shown().stream().filter(d -> d.message().equals(again.message())).count();
+        assertEquals(1, rows, view.shown().toString());
+        int row = view.shown().indexOf(again);
+        Gui.settle();
+        assertEquals(again.message() + "  (\u00d73)", view.cell(row, 2));
+    }
+
+    @Test
     void sortedWithAVisibleLocationColumnAndDoubleClickJumps() throws Exception {
         String text = Files.readString(script);
         int before = ide.validations();

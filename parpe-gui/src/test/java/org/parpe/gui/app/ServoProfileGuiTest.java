@@ -1,6 +1,7 @@
 package org.parpe.gui.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
@@ -103,7 +104,7 @@ class ServoProfileGuiTest {
         assertEquals(RunOutcome.Status.ERROR, o.status());
         List<Diagnostic> errors = ide.problems().shown().stream().filter(d -> d.severity() == Severity.ERROR).toList();
         assertTrue(errors.stream().anyMatch(d -> d.pos().file().equals(profile.toString()) && d.pos().line() == 2
-                && d.message().equals("id must be in 0..253, got 999")), errors.toString());
+                && d.message().equals("id must be in 0..252, got 999")), errors.toString());
     }
 
     @Test
@@ -125,6 +126,39 @@ class ServoProfileGuiTest {
             Thread.sleep(300);
             assertEquals(40, emu.angle(5), 0.1, "module 0 at 30° through zero 10");
             assertEquals(-30, emu.angle(6), 0.1, "module 1 at 30° turned the other way");
+        }
+    }
+
+    @Test
+    void aRobotThatStopsAnsweringRaisesTheAlarm() throws Exception {
+        // The status bar used to keep saying all was well while the servos had been silent for a
+        // minute, and Stop reported "emergency stop sent" into the silence.
+        assumeTrue(PtyPair.available(), "socat is not installed");
+        open();
+        try (PtyPair pty = PtyPair.start(dir.resolve("c"), dir.resolve("d"))) {
+            ServoEmulator emu = ServoEmulator.start(LinkOpener.serial(pty.b().toString(), 1_000_000),
+                    ServoModel.named("xl430-w250"), EmulatorOptions.of(5, 6), new EmulatorListener() { });
+            Path profile = dir.resolve("alarm.xml");
+            Files.writeString(profile, "<hardware protocol=\"dxl2\" baud=\"1000000\">\n"
+                    + "  <servo module=\"0\" id=\"5\"/>\n  <servo module=\"1\" id=\"6\"/>\n</hardware>\n");
+            ide.toolbar().setTarget(Target.HARDWARE);
+            ide.toolbar().setHardwareProfile(profile.toString());
+            ide.toolbar().setPort(pty.a().toString());
+            AtomicReference<RunOutcome> outcome = new AtomicReference<>();
+            ide.runs().run(false, 600, outcome::set);
+            pump(() -> ide.status().hardware().startsWith("Hardware: " + pty.a()), "the run to drive the servos");
+            assertFalse(ide.status().hardwareAlarm());
+            emu.close();
+            pump(() -> ide.status().hardwareAlarm(), "the hardware alarm");
+            assertTrue(ide.status().hardware().matches("Hardware: robot not responding since \\d\\d:\\d\\d:\\d\\d"),
+                    ide.status().hardware());
+            assertTrue(ide.status().message().startsWith("Robot not responding since "), ide.status().message());
+            Gui.screenshot(ide.shell(), "hardware-alarm.png");
+            ide.runs().stop();
+            pump(() -> outcome.get() != null, "the run to stop");
+            pump(() -> ide.problems().shown().stream().anyMatch(d ->
+                    d.message().startsWith("emergency stop sent but not confirmed")), "the stop said unconfirmed");
+            pump(() -> !ide.status().hardwareAlarm(), "the alarm to end with the run");
         }
     }
 }

@@ -83,6 +83,11 @@ public abstract class BusThread implements HostPlant, AutoCloseable {
         return !estopped && state == State.CONNECTED;
     }
 
+    /** Whether the modules are silent or the device is gone (the thread is looking for them). */
+    protected final boolean lost() {
+        return state != State.CONNECTED;
+    }
+
     /** All modules fell silent: {@code problem} is reported and the thread looks for them. */
     protected final void silent(String problem) {
         state = State.SILENT;

@@ -72,10 +72,31 @@ public final class SerialLink implements ByteLink {
         port.setFlowControl(SerialPort.FLOW_CONTROL_DISABLED);
         port.setComPortTimeouts(SerialPort.TIMEOUT_NONBLOCKING, 0, 0);
         if (!port.openPort()) {
-            throw new LinkException("cannot open serial device " + path + " (error " + port.getLastErrorCode()
-                    + "; is another program using it?)");
+            throw new LinkException(openFailure(path, port.getLastErrorCode()));
         }
         return new SerialLink(port, path);
+    }
+
+    /**
+     * Why {@code path} would not open, from the system's error number: on Linux and macOS 25
+     * (ENOTTY) is a device that is no serial port, 16 (EBUSY) one another program holds, 13
+     * (EACCES) one without permission; other numbers are given as they are.
+     */
+    static String openFailure(String path, int errno) {
+        String os = System.getProperty("os.name", "").toLowerCase(java.util.Locale.ROOT);
+        if (!os.startsWith("windows")) {
+            switch (errno) {
+                case 25:
+                    return path + " is not a serial device (error 25: it does not take serial port settings)";
+                case 16:
+                    return "cannot open serial device " + path + " (error 16: another program is using it)";
+                case 13:
+                    return "no permission to open " + path + " (add yourself to the group that owns it, e.g. dialout)";
+                default:
+                    break;
+            }
+        }
+        return "cannot open serial device " + path + " (error " + errno + "; is another program using it?)";
     }
 
     /**

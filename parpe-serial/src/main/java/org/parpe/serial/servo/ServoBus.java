@@ -40,6 +40,13 @@ public interface ServoBus extends AutoCloseable {
     /** Turns the torque of servos {@code ids[0…n)} on (holding) or off (limp, back-drivable). */
     void torque(int[] ids, ServoModel[] models, int n, boolean on) throws IOException;
 
+    /**
+     * Reads back whether servo {@code id}'s torque is on: 1 on, 0 off (limp), {@link #NO_REPLY}
+     * when it did not answer in {@code attempts} tries. A bus without a register to read it from
+     * answers 1.
+     */
+    int torqueState(int id, ServoModel model, int attempts) throws IOException;
+
     /** Sends goal positions ({@code ticks[i]} for {@code ids[i]}) to servos {@code 0…n) at once. */
     void writeGoals(int[] ids, ServoModel[] models, int[] ticks, int n) throws IOException;
 
@@ -112,10 +119,18 @@ public interface ServoBus extends AutoCloseable {
             }
         }
         if (m > 0) {
-            writeGoals(held, heldModels, ticks, m);
-            torque(held, heldModels, m, true);
+            holdAt(held, heldModels, ticks, m);
         }
         return m;
+    }
+
+    /**
+     * Makes servos {@code 0…n)} hold at goals {@code ticks}: the goals first, then torque on, so
+     * that no servo jumps to an old goal when its torque comes on.
+     */
+    default void holdAt(int[] ids, ServoModel[] models, int[] ticks, int n) throws IOException {
+        writeGoals(ids, models, ticks, n);
+        torque(ids, models, n, true);
     }
 
     /** Bytes queued but not yet on the wire. */

@@ -33,7 +33,8 @@ public record ServoModel(ServoProtocol protocol, int number, String name, int re
             dxlX(1070, "xc430-w150"),
             new ServoModel(ServoProtocol.DXL2, 350, "xl-320", 1024, 300, 512, 0, 1023, -1, Registers.DXL_XL320),
             new ServoModel(ServoProtocol.STS, 777, "sts3215", 4096, 360, 2048, 0, 4095, 15, Registers.FEETECH),
-            new ServoModel(ServoProtocol.SCS, 1284, "scs0009", 1024, 200, 512, 0, 1023, -1, Registers.FEETECH),
+            // Feetech rates the SCS0009 at 300° over 1024 steps (0.293°/step), like the XL-320.
+            new ServoModel(ServoProtocol.SCS, 1284, "scs0009", 1024, 300, 512, 0, 1023, -1, Registers.FEETECH),
             new ServoModel(ServoProtocol.G1, 1, "g1-segment", 100, 1, 0, -9000, 9000, -1, null));
 
     private static ServoModel dxlX(int number, String name) {
@@ -108,8 +109,23 @@ public record ServoModel(ServoProtocol protocol, int number, String name, int re
      * wire (sign and magnitude where the model uses it).
      */
     public int ticks(double degrees) {
+        return encode(nearestTick(degrees));
+    }
+
+    /** The tick nearest to servo angle {@code degrees}, within {@link #minTick}…{@link #maxTick}, not encoded. */
+    public int nearestTick(double degrees) {
         long t = Math.round(centre + degrees / degreesPerTick());
-        int v = (int) Math.max(minTick, Math.min(maxTick, t));
+        return (int) Math.max(minTick, Math.min(maxTick, t));
+    }
+
+    /** The servo angle of tick {@code t} (not encoded). */
+    public double tickDegrees(int t) {
+        return (t - centre) * degreesPerTick();
+    }
+
+    /** Tick {@code t} (within {@link #minTick}…{@link #maxTick}) as the wire carries it. */
+    public int encode(int t) {
+        int v = Math.max(minTick, Math.min(maxTick, t));
         return signBit >= 0 && v < 0 ? (1 << signBit) | -v : v;
     }
 

@@ -8,25 +8,36 @@ import java.util.List;
  */
 public enum ServoProtocol {
     /** PARPE's reconstructed PolyBot G1 module bus (docs/hardware-protocol.md). */
-    G1("g1", List.of(115_200, 1_000_000, 57_600, 9_600)),
+    G1("g1", 254, List.of(115_200, 1_000_000, 57_600, 9_600)),
     /** Dynamixel Protocol 2.0 (X series: XL330, XL430, XM430, …). */
-    DXL2("dxl2", List.of(57_600, 1_000_000, 115_200, 2_000_000, 3_000_000, 4_000_000, 9_600)),
+    DXL2("dxl2", 252, List.of(57_600, 1_000_000, 115_200, 2_000_000, 3_000_000, 4_000_000, 9_600)),
     /** Feetech STS series (STS3215, …): little-endian control table. */
-    STS("sts", List.of(1_000_000, 500_000, 115_200, 57_600, 250_000, 128_000, 76_800, 38_400)),
+    STS("sts", 253, List.of(1_000_000, 500_000, 115_200, 57_600, 250_000, 128_000, 76_800, 38_400)),
     /** Feetech SCS series (SCS15, SCS0009, …): big-endian control table. */
-    SCS("scs", List.of(1_000_000, 500_000, 115_200, 57_600, 250_000, 128_000, 76_800, 38_400));
+    SCS("scs", 253, List.of(1_000_000, 500_000, 115_200, 57_600, 250_000, 128_000, 76_800, 38_400));
 
     private final String key;
+    private final int maxId;
     private final List<Integer> scanBauds;
 
-    ServoProtocol(String key, List<Integer> scanBauds) {
+    ServoProtocol(String key, int maxId, List<Integer> scanBauds) {
         this.key = key;
+        this.maxId = maxId;
         this.scanBauds = scanBauds;
     }
 
     /** The name on the command line and in profiles: g1, dxl2, sts, scs. */
     public String key() {
         return key;
+    }
+
+    /**
+     * The highest servo ID: 252 on Dynamixel 2.0 (e-Manual, Protocol 2.0, Packet ID: 0–252; 253
+     * and 255 would look like header bytes, 254 is broadcast), 253 on Feetech (254 is broadcast),
+     * 254 on G1.
+     */
+    public int maxId() {
+        return maxId;
     }
 
     /** Baud rates a scan tries, most common (the factory default) first. */

@@ -2,8 +2,11 @@ package org.parpe.serial.servo;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
+import org.parpe.core.diag.SourcePos;
+import org.parpe.serial.servo.profile.ServoMapping;
 
 /** Ticks and degrees of the models in the table. */
 class ServoModelTest {
@@ -34,8 +37,27 @@ class ServoModelTest {
     void xl320AndScsHave1024Ticks() {
         assertEquals(0.0, ServoModel.of(ServoProtocol.DXL2, 350).degrees(512, 2), 1e-9);
         ServoModel scs = ServoModel.defaultFor(ServoProtocol.SCS);
-        assertEquals(200.0 / 1024, scs.degreesPerTick(), 1e-12);
-        assertEquals(-100.0, scs.minDegrees(), 1e-9);
+        // Feetech SCS0009 (sold as Waveshare SC09): "Rotation angle: 300° (0~1023)", "0.293°
+        // (300°/1024)" (SC09 servo user guide, Specification). Was 200°: every angle off by ×1.5.
+        assertEquals(300.0 / 1024, scs.degreesPerTick(), 1e-12);
+        assertEquals(-150.0, scs.minDegrees(), 1e-9);
+        assertEquals(512 + 307, scs.ticks(90), "a 90° command lands at 90°, not 135°");
+    }
+
+    @Test
+    void goalsAreRoundedInwardsOfTheLimits() {
+        // XL-320, 300° over 1024 ticks: the nearest tick to 45° is 154 above centre, 45.117°,
+        // beyond a 45° limit; the goal must be the tick inside it (44.82°). Failed before: 666.
+        ServoModel xl320 = ServoModel.named("xl-320");
+        ServoMapping m = new ServoMapping(0, 1, xl320, 0, 1, -45, 45, SourcePos.NONE);
+        assertEquals(512 + 153, m.goalTicks(45));
+        assertEquals(512 - 153, m.goalTicks(-45));
+        ServoMapping reversed = new ServoMapping(0, 1, xl320, 10, -1, -45, 45, SourcePos.NONE);
+        for (double joint : new double[] {-45, 45}) {
+            double back = reversed.jointAngle(xl320.degrees(reversed.goalTicks(joint), 2));
+            assertTrue(back >= -45 && back <= 45, joint + "° sent as " + back + "°");
+        }
+        assertEquals(512 + 20, m.goalTicks(5.86), "inside the limits the nearest tick");
     }
 
     @Test

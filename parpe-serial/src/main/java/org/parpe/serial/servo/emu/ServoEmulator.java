@@ -46,6 +46,9 @@ public final class ServoEmulator extends ServedLine {
     /** Status packets of the request being answered, back to back; packet i ends at outEnds[i]. */
     private final byte[] outBuf = new byte[64 * 1024];
     private final int[] outEnds = new int[256];
+    /** When packet i leaves: {@code outWait[i]} ns after the one before, or after the request when {@code outFromRequest[i]}. */
+    private final long[] outWait = new long[256];
+    private final boolean[] outFromRequest = new boolean[256];
     private int outCount;
     private long packets;
     private long replies;
@@ -60,7 +63,7 @@ public final class ServoEmulator extends ServedLine {
         for (int i = 0; i < ids.length; i++) {
             servos[i] = new EmulatedServo(ids[i], models[i]);
         }
-        Arrays.sort(servos, (a, b) -> Integer.compare(a.id, b.id));
+        Arrays.sort(servos, (a, b) -> Integer.compare(a.id(), b.id()));
         scratch = new byte[codec.bufferSize() * 2];
         responder = new ServoResponder(protocol, codec, servos, this::reply, listener);
         wire = codec.decoder(this::onWirePacket);
@@ -93,9 +96,10 @@ public final class ServoEmulator extends ServedLine {
                 throw new IllegalArgumentException("servos of one protocol other than G1 needed, got " + m.label());
             }
         }
+        int maxId = models[0].protocol().maxId();
         for (int id : options.modules()) {
-            if (id >= PacketCodec.BROADCAST) {
-                throw new IllegalArgumentException("servo IDs are 0..253, got " + id);
+            if (id > maxId) {
+                throw new IllegalArgumentException(models[0].protocol().key() + " servo IDs are 0.." + maxId + ", got " + id);
             }
         }
         ServoEmulator e = new ServoEmulator(opener, opener.open(), models, options, listener);
@@ -105,7 +109,7 @@ public final class ServoEmulator extends ServedLine {
 
     /** The emulated servo IDs, ascending. */
     public int[] servoIds() {
-        return Arrays.stream(servos).mapToInt(s -> s.id).toArray();
+        return Arrays.stream(servos).mapToInt(EmulatedServo::id).toArray();
     }
 
     /** The servo angle of servo {@code id}, degrees (0 at the model's centre tick). */
@@ -143,6 +147,19 @@ public final class ServoEmulator extends ServedLine {
         }
     }
 
+    /**
+     * Sets every servo's Return Delay Time to {@code micros} (rounded to its 2 µs units), as a
+     * user does with the maker's tool for a fast bus; the factory setting of Dynamixel servos is
+     * 500 µs.
+     */
+    public void returnDelay(int micros) {
+        synchronized (lock) {
+            for (EmulatedServo s : servos) {
+                s.table[s.ct.named("Return Delay Time").addr()] = (byte) Math.max(0, Math.min(254, micros / 2));
+            }
+        }
+    }
+
     /** Moves a limp servo by hand (posing); false, and nothing moves, when its torque is on. */
     public boolean backDrive(int id, double degrees) {
         synchronized (lock) {
@@ -160,7 +177,7 @@ public final class ServoEmulator extends ServedLine {
 
     private EmulatedServo servo(int id) {
         for (EmulatedServo s : servos) {
-            if (s.id == id) {
+            if (s.id() == id) {
                 return s;
             }
         }
@@ -196,23 +213,28 @@ public final class ServoEmulator extends ServedLine {
     }
 
     private void onServoPacket(Packet p) {
+        long received = System.nanoTime();
         synchronized (lock) {
             packets++;
             outCount = 0;
-            responder.execute(p, System.nanoTime());
+            responder.execute(p, received);
         }
-        // Replies leave outside the lock: a reply latency must not stall the motors.
+        // Replies leave outside the lock, each at its time (Return Delay Time, reply slot): a
+        // reply's wait must not stall the motors.
+        long last = received;
         for (int i = 0; i < outCount; i++) {
-            if (options.latencyMs() > 0) {
-                LockSupport.parkNanos((long) (options.latencyMs() * 1e6));
+            long due = (outFromRequest[i] ? received : last) + outWait[i] + (long) (options.latencyMs() * 1e6);
+            for (long left; (left = due - System.nanoTime()) > 0; ) {
+                LockSupport.parkNanos(left);
             }
             int from = i == 0 ? 0 : outEnds[i - 1];
             send(outBuf, from, outEnds[i] - from);
+            last = System.nanoTime();
         }
     }
 
     /** Queues a status packet (called by the responder with {@link #lock} held); faults apply here. */
-    private void reply(byte[] packet, int len) {
+    private void reply(byte[] packet, int len, long wait, boolean fromRequest) {
         if (lose()) {
             return;
         }
@@ -222,6 +244,8 @@ public final class ServoEmulator extends ServedLine {
         }
         System.arraycopy(packet, 0, outBuf, from, len);
         maybeCorrupt(outBuf, from, len);
+        outWait[outCount] = wait;
+        outFromRequest[outCount] = fromRequest;
         outEnds[outCount++] = from + len;
         replies++;
     }
@@ -231,7 +255,7 @@ public final class ServoEmulator extends ServedLine {
         synchronized (lock) {
             for (EmulatedServo s : servos) {
                 if (s.step(now, dt, options.speedDegPerS())) {
-                    listener.onSafeStop(s.id, now, "bus watchdog");
+                    listener.onSafeStop(s.id(), now, "bus watchdog");
                 }
             }
         }

@@ -9,24 +9,35 @@ import org.parpe.serial.servo.wire.PacketCodec;
 
 /**
  * Executes instruction packets on the emulated servos as the manuals describe: Ping, Read, Write,
- * Sync Write, Sync Read, and on Dynamixel 2.0 Bulk Read and Reboot. Servos answer Sync Read and
- * Bulk Read one after the other in the order of the request; nothing answers a broadcast
- * otherwise (except a Dynamixel broadcast Ping). Not thread-safe: the emulator holds its lock.
+ * Reg Write and Action, Sync Write, Sync Read (not on SCS, which has none), and on Dynamixel 2.0
+ * Bulk Read, Bulk Write and Reboot. Each status packet leaves after the servo's Return Delay Time
+ * (e-Manual, X series, Return Delay Time(9)); servos answer Sync Read and Bulk Read one after the
+ * other in the order of the request, each its Return Delay Time after the one before, and a
+ * broadcast Ping in the order of their IDs, servo ID k in the k-th reply slot of {@link #SLOT_NANOS}
+ * (e-Manual, Protocol 2.0, Ping: "All devices send their Status Packet according to their arranged
+ * order"). Status Return Level is honoured; nothing answers a broadcast otherwise. Not
+ * thread-safe: the emulator holds its lock.
  */
 final class ServoResponder {
-    /** Sends one status packet. */
+    /** Sends one status packet {@code wait} ns after the one before (or, when {@code fromRequest}, after the request). */
     @FunctionalInterface
     interface Sender {
-        void send(byte[] packet, int len);
+        void send(byte[] packet, int len, long wait, boolean fromRequest);
     }
 
-    /** Dynamixel firmware version reported by Ping. */
-    private static final int FIRMWARE = 46;
+    /** Reply slot per ID after a broadcast Ping: the time ROBOTIS's DynamixelSDK allows each ID (3 ms). */
+    static final long SLOT_NANOS = 3_000_000;
+    /** Instructions this responder knows beyond those in {@link PacketCodec}. */
+    static final int REG_WRITE = 0x04;
+    static final int ACTION = 0x05;
+    static final int BULK_WRITE = 0x93;
 
     private final PacketCodec codec;
     private final EmulatedServo[] servos;
+    private final EmulatedServo[] byId;
     private final Sender sender;
     private final EmulatorListener listener;
+    private final ServoProtocol protocol;
     private final boolean dxl;
     private final int addrBytes;
     private final byte[] out;
@@ -38,8 +49,10 @@ final class ServoResponder {
                    EmulatorListener listener) {
         this.codec = codec;
         this.servos = servos;
+        this.byId = servos.clone();
         this.sender = sender;
         this.listener = listener;
+        this.protocol = protocol;
         this.dxl = protocol == ServoProtocol.DXL2;
         this.addrBytes = dxl ? 2 : 1;
         this.out = new byte[codec.bufferSize()];
@@ -62,31 +75,26 @@ final class ServoResponder {
             }
         }
         switch (p.code) {
-            case PacketCodec.PING -> ping(target, broadcast);
+            case PacketCodec.PING -> ping(target);
             case PacketCodec.READ -> {
-                if (target != null && p.length >= 2 * addrBytes) {
-                    readReply(target, p.le(0, addrBytes), p.le(addrBytes, addrBytes));
+                if (target != null && p.length >= 2 * addrBytes && target.answers(false, true)) {
+                    readReply(target, p.le(0, addrBytes), p.le(addrBytes, addrBytes), true);
                 }
             }
-            case PacketCodec.WRITE -> write(p, target, broadcast);
+            case PacketCodec.WRITE, REG_WRITE -> write(p, target, p.code == REG_WRITE);
+            case ACTION -> action(target);
             case PacketCodec.SYNC_WRITE -> syncWrite(p);
-            case PacketCodec.SYNC_READ -> syncRead(p);
-            case PacketCodec.BULK_READ -> bulkRead(p);
-            case PacketCodec.REBOOT -> {
-                if (dxl) {
-                    for (EmulatedServo s : servos) {
-                        if (broadcast || s == target) {
-                            if (!broadcast) {
-                                status(s, 0, 0);
-                            }
-                            s.reboot();
-                        }
-                    }
+            case PacketCodec.SYNC_READ -> {
+                if (protocol != ServoProtocol.SCS) {
+                    syncRead(p);
                 }
             }
+            case PacketCodec.BULK_READ -> bulkRead(p);
+            case BULK_WRITE -> bulkWrite(p);
+            case PacketCodec.REBOOT -> reboot(target);
             default -> {
                 if (target != null && dxl) {
-                    status(target, Dxl2Codec.ERROR_INSTRUCTION, 0);
+                    status(target, EmulatedServo.INSTRUCTION_ERROR, 0, target.returnDelayNanos(), true);
                 }
             }
         }
@@ -94,58 +102,105 @@ final class ServoResponder {
 
     private EmulatedServo find(int id) {
         for (EmulatedServo s : servos) {
-            if (s.id == id) {
+            if (s.id() == id) {
                 return s;
             }
         }
         return null;
     }
 
-    private void ping(EmulatedServo target, boolean broadcast) {
-        for (EmulatedServo s : servos) {
-            if (s == target || broadcast && dxl) {
-                if (dxl) {
-                    PacketCodec.putLe(data, 0, 2, s.model.number());
-                    data[2] = (byte) FIRMWARE;
-                    status(s, 0, 3);
-                } else {
-                    status(s, 0, 0);
-                }
-            }
+    /**
+     * A Ping: the servo named answers; to a broadcast Ping every Dynamixel and STS servo answers,
+     * in the order of their IDs, each in its reply slot.
+     */
+    private void ping(EmulatedServo target) {
+        if (target != null) {
+            pingReply(target, target.returnDelayNanos());
+            return;
+        }
+        if (protocol == ServoProtocol.SCS) {
+            return;
+        }
+        java.util.Arrays.sort(byId, (a, b) -> Integer.compare(a.id(), b.id()));
+        for (EmulatedServo s : byId) {
+            pingReply(s, s.returnDelayNanos() + s.id() * SLOT_NANOS);
         }
     }
 
-    private void write(Packet p, EmulatedServo target, boolean broadcast) {
+    private void pingReply(EmulatedServo s, long at) {
+        if (dxl) {
+            // Model number (2 bytes) and firmware version, read from the servo's own table.
+            s.read(0, 2, data);
+            data[2] = s.table[s.ct.named("Firmware Version").addr()];
+            status(s, 0, 3, at, true);
+        } else {
+            status(s, 0, 0, at, true);
+        }
+    }
+
+    private void write(Packet p, EmulatedServo target, boolean registered) {
         if (p.length <= addrBytes) {
             return;
         }
         int addr = p.le(0, addrBytes);
+        int len = p.length - addrBytes;
         for (EmulatedServo s : servos) {
-            if (broadcast || s == target) {
-                boolean ok = s.write(addr, p.params, addrBytes, p.length - addrBytes);
-                if (!broadcast) {
-                    status(s, ok ? 0 : Dxl2Codec.ERROR_ACCESS, 0);
+            if (target == null || s == target) {
+                int e = registered ? s.register(addr, p.params, addrBytes, len) : s.write(addr, p.params, addrBytes, len);
+                if (target != null && s.answers(false, false)) {
+                    status(s, e, 0, s.returnDelayNanos(), true);
                 }
             }
         }
     }
 
+    private void action(EmulatedServo target) {
+        for (EmulatedServo s : servos) {
+            if (target == null || s == target) {
+                boolean done = s.action();
+                if (target != null && s.answers(false, false)) {
+                    status(s, done || !dxl ? 0 : EmulatedServo.INSTRUCTION_ERROR, 0, s.returnDelayNanos(), true);
+                }
+            }
+        }
+    }
+
+    private void reboot(EmulatedServo target) {
+        if (!dxl) {
+            return;
+        }
+        for (EmulatedServo s : servos) {
+            if (target == null || s == target) {
+                if (target != null) {
+                    status(s, 0, 0, s.returnDelayNanos(), true);
+                }
+                s.reboot();
+            }
+        }
+    }
+
+    /**
+     * Sync Write: {@code addr, len}, then {@code id, data…} per servo. The listener hears the
+     * goals (read back from each servo's table, so in its own byte order) when the written range
+     * holds the goal position, whatever address it starts at.
+     */
     private void syncWrite(Packet p) {
         if (p.length < 2 * addrBytes) {
             return;
         }
         int addr = p.le(0, addrBytes);
         int len = p.le(addrBytes, addrBytes);
-        boolean goal = servos.length > 0 && addr == servos[0].model.registers().goal();
-        Arrays.fill(view, Double.NaN);
+        boolean goal = false;
+        java.util.Arrays.fill(view, Double.NaN);
         for (int off = 2 * addrBytes; off + 1 + len <= p.length; off += 1 + len) {
             int id = p.params[off] & 0xFF;
             for (int i = 0; i < servos.length; i++) {
                 EmulatedServo s = servos[i];
-                if (s.id == id) {
+                if (s.id() == id) {
                     s.heard(System.nanoTime());
-                    if (s.write(addr, p.params, off + 1, len) && goal) {
-                        view[i] = s.model.degrees(p.le(off + 1, len), len);
+                    if (s.write(addr, p.params, off + 1, len) == EmulatedServo.OK && s.setsGoal(addr, len)) {
+                        view[i] = s.goalDegrees();
+                        goal = true;
                     }
                 }
             }
@@ -155,16 +210,37 @@ final class ServoResponder {
         }
     }
 
+    /** Dynamixel Bulk Write: {@code id, addr (2), len (2), data…} per servo. */
+    private void bulkWrite(Packet p) {
+        if (!dxl) {
+            return;
+        }
+        for (int off = 0; off + 5 <= p.length; ) {
+            int len = p.le(off + 3, 2);
+            if (off + 5 + len > p.length) {
+                return;
+            }
+            EmulatedServo s = find(p.params[off] & 0xFF);
+            if (s != null) {
+                s.heard(System.nanoTime());
+                s.write(p.le(off + 1, 2), p.params, off + 5, len);
+            }
+            off += 5 + len;
+        }
+    }
+
     private void syncRead(Packet p) {
         if (p.length < 2 * addrBytes) {
             return;
         }
         int addr = p.le(0, addrBytes);
         int len = p.le(addrBytes, addrBytes);
+        boolean first = true;
         for (int off = 2 * addrBytes; off < p.length; off++) {
             EmulatedServo s = find(p.params[off] & 0xFF);
-            if (s != null) {
-                readReply(s, addr, len);
+            if (s != null && s.answers(false, true)) {
+                readReply(s, addr, len, first);
+                first = false;
             }
         }
     }
@@ -173,27 +249,29 @@ final class ServoResponder {
         if (!dxl) {
             return;
         }
+        boolean first = true;
         for (int off = 0; off + 5 <= p.length; off += 5) {
             EmulatedServo s = find(p.params[off] & 0xFF);
-            if (s != null) {
-                readReply(s, p.le(off + 1, 2), p.le(off + 3, 2));
+            if (s != null && s.answers(false, true)) {
+                readReply(s, p.le(off + 1, 2), p.le(off + 3, 2), first);
+                first = false;
             }
         }
     }
 
-    private void readReply(EmulatedServo s, int addr, int len) {
-        if (addr < 0 || len < 0 || addr + len > s.table.length) {
-            status(s, dxl ? Dxl2Codec.ERROR_ACCESS : 0, 0);
+    private void readReply(EmulatedServo s, int addr, int len, boolean first) {
+        int e = len <= data.length ? s.read(addr, len, data) : EmulatedServo.ACCESS_ERROR;
+        if (e != EmulatedServo.OK) {
+            status(s, dxl ? e : 0, 0, s.returnDelayNanos(), first);
             return;
         }
-        System.arraycopy(s.table, addr, data, 0, len);
-        status(s, 0, len);
+        status(s, 0, len, s.returnDelayNanos(), first);
     }
 
     /** A status packet from {@code s} with {@code errorNumber} (Dynamixel) and {@code data[0…len)}. */
-    private void status(EmulatedServo s, int errorNumber, int len) {
+    private void status(EmulatedServo s, int errorNumber, int len, long wait, boolean fromRequest) {
         int error = dxl ? (s.hardwareError() != 0 ? Dxl2Codec.ERROR_ALERT : 0) | errorNumber : s.hardwareError();
-        int n = codec.status(out, s.id, error, data, len);
-        sender.send(out, n);
+        int n = codec.status(out, s.id(), error, data, len);
+        sender.send(out, n, wait, fromRequest);
     }
 }

@@ -20,8 +20,17 @@ import org.parpe.serial.servo.wire.PacketCodec;
 public final class ControlTableBus implements ServoBus {
     /** Bus Watchdog after it tripped: −1 in one byte. */
     private static final int WATCHDOG_TRIPPED = 0xFF;
+    /** Bytes of a Dynamixel 2.0 Ping status packet (header 4, ID, length 2, instruction, error, 3 parameters, CRC 2). */
+    private static final int PING_STATUS_BYTES = 14;
+    /**
+     * A scan first waits for the line to be quiet this long (at most {@link #FLUSH_MAX_MS}): far
+     * longer than servos take to finish answering requests already sent.
+     */
+    private static final long FLUSH_QUIET_MS = 50;
+    private static final long FLUSH_MAX_MS = 500;
 
     private final ServoProtocol protocol;
+    private final int baud;
     private final boolean bigEndian;
     private final PacketPort port;
     private final byte[] params = new byte[Packet.MAX_PARAMS];
@@ -34,6 +43,7 @@ public final class ControlTableBus implements ServoBus {
             throw new IllegalArgumentException("G1 is not a control-table protocol; use G1Bus");
         }
         this.protocol = protocol;
+        this.baud = baud;
         this.bigEndian = protocol == ServoProtocol.SCS;
         PacketCodec codec = protocol == ServoProtocol.DXL2 ? new Dxl2Codec() : new FeetechCodec();
         this.port = new PacketPort(link, codec, protocol == ServoProtocol.DXL2, bigEndian, baud, timeoutMs);
@@ -52,10 +62,9 @@ public final class ControlTableBus implements ServoBus {
     @Override
     public int ping(int id, int attempts) throws IOException {
         for (int a = 0; a < attempts; a++) {
-            if (port.request(id, PacketCodec.PING, params, 0, id)) {
+            if (port.request(id, PacketCodec.PING, params, 0, id) && pingReply(id)) {
                 if (protocol == ServoProtocol.DXL2) {
-                    // The status of a Dynamixel ping carries the model number (2 bytes) and firmware version.
-                    return port.size(id) >= 3 ? port.value(id) & 0xFFFF : 0;
+                    return port.value(id) & 0xFFFF;
                 }
                 int model = read(id, Registers.FEETECH.model(), 2, attempts - a);
                 return model == Integer.MIN_VALUE ? 0 : model;
@@ -65,32 +74,66 @@ public final class ControlTableBus implements ServoBus {
     }
 
     /**
-     * On Dynamixel 2.0 a broadcast Ping, which every servo answers in turn (twice, merging the
-     * answers); Feetech servos are pinged one by one.
+     * Whether servo {@code id}'s last status packet has the shape of a reply to Ping: on
+     * Dynamixel 2.0 exactly model number (2 bytes) and firmware version (e-Manual, Protocol 2.0,
+     * Ping: Parameters 1–3), on Feetech no parameter. Anything else is a late reply to another
+     * request (an interrupted run's position read) and says nothing about the servo's model.
+     */
+    private boolean pingReply(int id) {
+        return port.size(id) == (protocol == ServoProtocol.DXL2 ? 3 : 0);
+    }
+
+    /**
+     * Input is flushed first (an interrupted run's replies must not read as servos). On
+     * Dynamixel 2.0 a broadcast Ping, which every servo answers in the order of its ID after its
+     * Return Delay Time (e-Manual, Protocol 2.0, Ping), listened to for as long as ROBOTIS's SDK
+     * does ({@link #broadcastPingNanos}), twice (a reply lost to noise is not a missing servo),
+     * merging the answers. Feetech servos are pinged one by one.
      */
     @Override
     public int[] scan(int[] ids) throws IOException {
+        port.flushInput(FLUSH_QUIET_MS, FLUSH_MAX_MS);
         if (protocol != ServoProtocol.DXL2) {
             return ServoBus.super.scan(ids);
         }
         int[] models = new int[ids.length];
         java.util.Arrays.fill(models, -1);
+        int highest = 0;
+        for (int id : ids) {
+            highest = Math.max(highest, id);
+        }
+        long listen = broadcastPingNanos(baud, ids.length, highest);
         for (int pass = 0; pass < 2; pass++) {
-            port.requestAll(PacketCodec.BROADCAST, PacketCodec.PING, params, 0, ids, ids.length);
+            port.requestAll(PacketCodec.BROADCAST, PacketCodec.PING, params, 0, ids, ids.length, listen);
             for (int i = 0; i < ids.length; i++) {
-                if (port.got(ids[i]) && models[i] < 0) {
-                    models[i] = port.size(ids[i]) >= 3 ? port.value(ids[i]) & 0xFFFF : 0;
+                if (port.got(ids[i]) && pingReply(ids[i]) && models[i] < 0) {
+                    models[i] = port.value(ids[i]) & 0xFFFF;
                 }
             }
         }
         return models;
     }
 
+    /**
+     * How long to listen after a broadcast Ping for {@code n} servos up to ID {@code highest}:
+     * every Ping status (14 bytes) on the wire, plus one reply slot per ID up to the highest
+     * (the servos answer in ID order), plus 16 ms, as ROBOTIS's DynamixelSDK does
+     * (protocol2_packet_handler broadcastPing: 3 ms per ID). A slot is 3 ms or, on slow lines,
+     * the longest Return Delay Time (508 µs) plus one status packet, whichever is longer.
+     */
+    static long broadcastPingNanos(int baud, int n, int highest) {
+        long perByte = 10_000_000_000L / baud;
+        long slot = Math.max(3_000_000L, 508_000L + PING_STATUS_BYTES * perByte);
+        return PING_STATUS_BYTES * perByte * n + slot * (highest + 1) + 16_000_000L;
+    }
+
     /** Reads {@code size} bytes at {@code addr} of servo {@code id}: the value, or {@link Integer#MIN_VALUE}. */
     public int read(int id, int addr, int size, int attempts) throws IOException {
         for (int a = 0; a < attempts; a++) {
             int n = putAddress(0, addr, size);
-            if (port.request(id, PacketCodec.READ, params, n, id) && port.size(id) >= size) {
+            // Exactly the bytes asked for: a late reply to another request (a position read that
+            // timed out) must not pass for this one.
+            if (port.request(id, PacketCodec.READ, params, n, id) && port.size(id) == size) {
                 return port.value(id);
             }
         }
@@ -117,6 +160,24 @@ public final class ControlTableBus implements ServoBus {
         for (Registers r : layouts(models, n)) {
             syncWrite(r.torque(), 1, ids, models, null, on ? 1 : 0, n, r, false);
         }
+    }
+
+    @Override
+    public int torqueState(int id, ServoModel model, int attempts) throws IOException {
+        int v = read(id, model.registers().torque(), 1, attempts);
+        return v == Integer.MIN_VALUE ? NO_REPLY : v == 0 ? 0 : 1;
+    }
+
+    /**
+     * The goals, torque on, and the goals again: a servo that takes its present position as its
+     * goal when its torque comes on (as the emulator's X series do) still ends at the goal given,
+     * inside its limits.
+     */
+    @Override
+    public void holdAt(int[] ids, ServoModel[] models, int[] ticks, int n) throws IOException {
+        writeGoals(ids, models, ticks, n);
+        torque(ids, models, n, true);
+        writeGoals(ids, models, ticks, n);
     }
 
     @Override
@@ -176,7 +237,7 @@ public final class ControlTableBus implements ServoBus {
         for (int i = 0; i < n; i++) {
             int id = ids[i];
             int size = models[i].registers().presentSize();
-            if (!port.got(id) || port.size(id) < size) {
+            if (!port.got(id) || port.size(id) != size) {
                 errors[i] = NO_REPLY;
             } else {
                 degrees[i] = models[i].degrees(port.value(id), size);
@@ -198,7 +259,7 @@ public final class ControlTableBus implements ServoBus {
     @Override
     public String describeFault(int id, ServoModel model, int statusError) throws IOException {
         int bits = read(id, model.registers().error(), 1, 2);
-        return bits == Integer.MIN_VALUE ? null : Faults.describe(protocol, statusError, bits);
+        return bits == Integer.MIN_VALUE ? null : Faults.describe(model, statusError, bits);
     }
 
     @Override

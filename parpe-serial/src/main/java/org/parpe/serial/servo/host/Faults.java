@@ -2,14 +2,22 @@ package org.parpe.serial.servo.host;
 
 import java.util.ArrayList;
 import java.util.List;
+import org.parpe.serial.servo.Registers;
+import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.ServoProtocol;
 import org.parpe.serial.servo.wire.Dxl2Codec;
 
 /** Error bytes and error registers of the servo protocols in words, for messages. */
 final class Faults {
-    /** Dynamixel X Hardware Error Status (address 70), bit by bit (e-Manual). */
+    /** Dynamixel X Hardware Error Status (address 70), bit by bit (e-Manual, X series, Shutdown(63)). */
     private static final String[] DXL_HARDWARE = {"input voltage out of range", null, "overheating",
         "motor encoder fault", "electrical shock", "overload", null, null};
+    /**
+     * Dynamixel XL-320 Hardware Error Status (address 50), bit by bit (e-Manual, XL-320,
+     * Shutdown(18): bit 0 overload, bit 1 overheating, bit 2 input voltage).
+     */
+    private static final String[] XL320_HARDWARE = {"overload", "overheating", "input voltage out of range", null,
+        null, null, null, null};
     /** Feetech servo status (address 65), bit by bit. */
     private static final String[] FEETECH = {"input voltage out of range", "magnetic sensor fault", "overheating",
         "overcurrent", "goal outside the angle limits", "overload", null, null};
@@ -20,9 +28,11 @@ final class Faults {
     private Faults() {
     }
 
-    /** The fault of a servo: its error register's bits and, on Dynamixel, the status error number. */
-    static String describe(ServoProtocol protocol, int statusError, int bits) {
-        String[] names = protocol == ServoProtocol.DXL2 ? DXL_HARDWARE : FEETECH;
+    /** The fault of a servo of {@code model}: its error register's bits and, on Dynamixel, the status error number. */
+    static String describe(ServoModel model, int statusError, int bits) {
+        ServoProtocol protocol = model.protocol();
+        String[] names = model.registers() == Registers.DXL_XL320 ? XL320_HARDWARE
+                : protocol == ServoProtocol.DXL2 ? DXL_HARDWARE : FEETECH;
         List<String> words = new ArrayList<>();
         for (int b = 0; b < 8; b++) {
             if ((bits & 1 << b) != 0) {

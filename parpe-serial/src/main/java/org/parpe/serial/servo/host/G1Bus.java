@@ -58,6 +58,12 @@ public final class G1Bus implements ServoBus {
         }
     }
 
+    /** G1 modules have no register to read the torque state from; their RESUME and HOLD frames are sent twice. */
+    @Override
+    public int torqueState(int id, ServoModel model, int attempts) {
+        return 1;
+    }
+
     @Override
     public void writeGoals(int[] ids, ServoModel[] models, int[] ticks, int n) throws IOException {
         if (n == 0) {

@@ -7,6 +7,7 @@ import java.util.concurrent.locks.LockSupport;
 import java.util.concurrent.locks.ReentrantLock;
 import org.parpe.serial.link.ByteLink;
 import org.parpe.serial.link.ReadLoop;
+import org.parpe.serial.link.StreamDecoder;
 import org.parpe.serial.servo.wire.Packet;
 import org.parpe.serial.servo.wire.PacketCodec;
 import org.parpe.serial.servo.wire.PacketDecoder;
@@ -21,6 +22,8 @@ import org.parpe.serial.servo.wire.PacketDecoder;
 final class PacketPort {
     private static final long LINGER_MS = 50;
     private static final long IDLE_GAP_NANOS = 5_000_000;
+    /** The longest Return Delay Time a servo can be set to: 254 × 2 µs (Dynamixel and Feetech alike). */
+    private static final long MAX_RETURN_DELAY_NANOS = 508_000;
 
     private final ByteLink link;
     private final PacketCodec codec;
@@ -57,6 +60,8 @@ final class PacketPort {
     private volatile boolean running = true;
     private volatile IOException linkError;
     private volatile long lastWriteNanos;
+    /** When the reader last got a byte (at first: when the port opened, so a flush waits a full quiet time). */
+    private volatile long lastReadNanos = System.nanoTime();
     private long packetsSent;
     private long timeouts;
     private long stray;
@@ -140,12 +145,21 @@ final class PacketPort {
         } finally {
             lock.unlock();
         }
-        await(id, instruction, params, len, 1);
+        await(id, instruction, params, len, 1, -1);
         return got[replyId];
     }
 
     /** A request answered by each of servos {@code replyIds[0…n)} in turn. */
     void requestAll(int id, int instruction, byte[] params, int len, int[] replyIds, int n) throws IOException {
+        requestAll(id, instruction, params, len, replyIds, n, -1);
+    }
+
+    /**
+     * Like {@link #requestAll(int, int, byte[], int, int[], int)}, listening for at most
+     * {@code listenNanos} (−1: the read timeout plus every reply's wire time).
+     */
+    void requestAll(int id, int instruction, byte[] params, int len, int[] replyIds, int n, long listenNanos)
+            throws IOException {
         lock.lock();
         try {
             expected = 0;
@@ -155,7 +169,7 @@ final class PacketPort {
         } finally {
             lock.unlock();
         }
-        await(id, instruction, params, len, n);
+        await(id, instruction, params, len, n, listenNanos);
     }
 
     /**
@@ -169,7 +183,8 @@ final class PacketPort {
             return;
         }
         long perRequest = TimeUnit.MILLISECONDS.toNanos(timeoutMs)
-                + (long) (codec.packetLength(len) + codec.packetLength(8)) * 10_000_000_000L / baud;
+                + (long) (codec.packetLength(len) + codec.packetLength(8)) * 10_000_000_000L / baud
+                + MAX_RETURN_DELAY_NANOS;
         lock.lock();
         try {
             expected = 0;
@@ -295,16 +310,18 @@ final class PacketPort {
         waitingCount++;
     }
 
-    private void await(int id, int instruction, byte[] params, int len, int replies) throws IOException {
+    private void await(int id, int instruction, byte[] params, int len, int replies, long listenNanos)
+            throws IOException {
         try {
             send(id, instruction, params, len);
         } catch (IOException e) {
             forget();
             throw e;
         }
-        // Room for every reply on the wire (10 bits a byte) on top of the read timeout.
-        long wire = (long) replies * codec.packetLength(8) * 10_000_000_000L / baud;
-        long left = TimeUnit.MILLISECONDS.toNanos(timeoutMs) + wire;
+        // Room for every reply on the wire (10 bits a byte) and each servo's longest Return Delay
+        // Time on top of the read timeout: servos answer one after the other.
+        long wire = replies * ((long) codec.packetLength(8) * 10_000_000_000L / baud + MAX_RETURN_DELAY_NANOS);
+        long left = listenNanos >= 0 ? listenNanos : TimeUnit.MILLISECONDS.toNanos(timeoutMs) + wire;
         lock.lock();
         try {
             while (waitingCount > 0 && left > 0 && linkError == null) {
@@ -335,8 +352,46 @@ final class PacketPort {
         }
     }
 
+    /**
+     * Discards what is still arriving from before (the replies of an interrupted run, a servo
+     * still answering an earlier request): waits until the line has been quiet for
+     * {@code quietMs} (at most {@code maxMs}), then drops any unfinished packet. What was
+     * decoded meanwhile nobody waited for, so it counts as stray.
+     */
+    void flushInput(long quietMs, long maxMs) {
+        long quiet = TimeUnit.MILLISECONDS.toNanos(quietMs);
+        long end = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(maxMs);
+        long now;
+        while ((now = System.nanoTime()) - lastReadNanos < quiet && now < end && linkError == null) {
+            LockSupport.parkNanos(Math.max(100_000, quiet / 4));
+        }
+        lock.lock();
+        try {
+            rx.idle();
+        } finally {
+            lock.unlock();
+        }
+    }
+
     private void readLoop() {
-        ReadLoop.run(link, () -> running, lock, rx, IDLE_GAP_NANOS, 2048, e -> {
+        StreamDecoder watched = new StreamDecoder() {
+            @Override
+            public void feed(byte[] data, int off, int len) {
+                lastReadNanos = System.nanoTime();
+                rx.feed(data, off, len);
+            }
+
+            @Override
+            public int pending() {
+                return rx.pending();
+            }
+
+            @Override
+            public void idle() {
+                rx.idle();
+            }
+        };
+        ReadLoop.run(link, () -> running, lock, watched, IDLE_GAP_NANOS, 2048, e -> {
             linkError = e;
             replied.signalAll();
         });

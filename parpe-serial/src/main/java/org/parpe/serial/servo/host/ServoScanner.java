@@ -53,26 +53,42 @@ public final class ServoScanner {
 
     /**
      * Tries {@code protocols} at {@code baud} (null: each protocol's common rates) until servos
-     * answer, or until {@code cancelled}. Returns null when none answered.
+     * answer, or until {@code cancelled}. {@code ids} (sorted; null for every ID) are pinged
+     * where the protocol allows them. Returns null when none answered.
      *
      * @throws IOException with a user message when the device cannot be opened
      * @throws IllegalArgumentException with a user message for an ID or baud rate out of range
      */
     public static Result scan(String port, List<ServoProtocol> protocols, Integer baud, int[] ids, Progress progress,
                               BooleanSupplier cancelled) throws IOException {
+        if (protocols.size() == 1 && ids != null) {
+            checkIds(protocols.get(0), ids);
+        }
         for (ServoProtocol p : protocols) {
+            int[] mine = idsFor(p, ids);
+            if (mine.length == 0) {
+                continue;
+            }
             for (int rate : baud == null ? p.scanBauds() : List.of(baud)) {
                 if (cancelled.getAsBoolean()) {
                     return null;
                 }
                 progress.trying(p, rate);
-                List<Found> found = scanOne(port, p, rate, ids);
+                List<Found> found = scanOne(port, p, rate, mine);
                 if (!found.isEmpty()) {
                     return new Result(p, rate, found);
                 }
             }
         }
         return null;
+    }
+
+    /** Of {@code ids} (sorted; null for all) those {@code p} allows. */
+    public static int[] idsFor(ServoProtocol p, int[] ids) {
+        if (ids == null) {
+            return java.util.stream.IntStream.rangeClosed(0, p.maxId()).toArray();
+        }
+        return java.util.Arrays.stream(ids).filter(id -> id >= 0 && id <= p.maxId()).toArray();
     }
 
     /** The servos {@code ids} (sorted) that answer {@code p} at {@code rate} on {@code port}. */
@@ -86,9 +102,8 @@ public final class ServoScanner {
 
     /** Throws when an ID is beyond what {@code p} allows; {@code ids} sorted. */
     public static void checkIds(ServoProtocol p, int[] ids) {
-        int max = p == ServoProtocol.G1 ? 254 : 253;
-        if (ids.length > 0 && ids[ids.length - 1] > max) {
-            throw new IllegalArgumentException("--ids: " + p.key() + " servo IDs are 0.." + max + ", got "
+        if (ids.length > 0 && ids[ids.length - 1] > p.maxId()) {
+            throw new IllegalArgumentException("--ids: " + p.key() + " servo IDs are 0.." + p.maxId() + ", got "
                     + ids[ids.length - 1]);
         }
     }

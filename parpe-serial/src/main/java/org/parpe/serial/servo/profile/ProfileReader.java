@@ -12,7 +12,6 @@ import org.parpe.core.xml.FlatXmlFile;
 import org.parpe.serial.bus.SafeMode;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.ServoProtocol;
-import org.parpe.serial.servo.wire.PacketCodec;
 
 /**
  * Reads a hardware profile (docs/hardware-profile.md) through {@link FlatXmlFile}, which keeps
@@ -28,6 +27,12 @@ public final class ProfileReader {
 
     private final FlatXmlFile xml;
     private final List<ServoMapping> servos = new ArrayList<>();
+    private final Map<Integer, SourcePos> byModule = new java.util.HashMap<>();
+    private final Map<Integer, Placed> byId = new java.util.HashMap<>();
+
+    /** The module a servo ID drives and where. */
+    private record Placed(int module, SourcePos where) {
+    }
     private final Map<String, String> root;
     private final SourcePos rootPos;
 
@@ -75,32 +80,38 @@ public final class ProfileReader {
         if (port != null && port.isEmpty()) {
             error(rootPos, "port is empty; give the serial device (e.g. /dev/ttyUSB0) or leave the attribute out");
         }
-        if (protocol != null) {
-            for (FlatXmlFile.Element e : servoElements) {
-                servo(protocol, e.attributes(), e.at());
-            }
-            if (servoElements.isEmpty()) {
-                error(rootPos, "the profile maps no module: add <servo module=\"0\" id=\"1\"/> elements");
-            }
+        // With an unknown protocol the servos are still checked, as far as they can be without one.
+        for (FlatXmlFile.Element e : servoElements) {
+            servo(protocol, e.attributes(), e.at());
+        }
+        if (servoElements.isEmpty()) {
+            error(rootPos, "the profile maps no module: add <servo module=\"0\" id=\"1\"/> elements");
         }
         return xml.ok() ? new HardwareProfile(file, protocol, port, baud, fault.equals("limp") ? SafeMode.LIMP : SafeMode.HOLD,
                 watchdog, servos) : null;
     }
 
+    /**
+     * One {@code <servo>}; {@code protocol} null when the profile's is unknown (then model and ID
+     * range are not checked). A servo with a bad module or ID is not kept, so that it cannot
+     * clash with the others (a fallback ID would make every bad line a duplicate of every other).
+     */
     private void servo(ServoProtocol protocol, Map<String, String> a, SourcePos at) {
         if (!xml.known(a, SERVO_ATTRS, "servo", at) || !xml.required(a, at, "servo", "module", "id")) {
             return;
         }
-        int maxId = protocol == ServoProtocol.G1 ? 254 : PacketCodec.BROADCAST - 1;
+        int before = xml.errors();
+        int maxId = protocol == null ? ServoProtocol.G1.maxId() : protocol.maxId();
         int module = (int) number(a, "module", 0, at, 0, 65_535);
         int id = (int) number(a, "id", 0, at, 0, maxId);
-        ServoModel model = ServoModel.defaultFor(protocol);
-        if (a.containsKey("model")) {
+        boolean placed = xml.errors() == before;
+        ServoModel model = protocol == null ? null : ServoModel.defaultFor(protocol);
+        if (protocol != null && a.containsKey("model")) {
             model = ServoModel.named(a.get("model"));
             if (model == null || model.protocol() != protocol) {
                 error(at, "unknown " + protocol.key() + " servo model '" + a.get("model") + "'; expected one of "
                         + ServoModel.names(protocol));
-                return;
+                model = null;
             }
         }
         double zero = number(a, "zero", 0, at, -360, 360);
@@ -110,28 +121,37 @@ public final class ProfileReader {
         }
         double min = number(a, "min", -DEFAULT_LIMIT, at, -360, 360);
         double max = number(a, "max", DEFAULT_LIMIT, at, -360, 360);
-        if (min >= max) {
+        boolean limits = min < max;
+        if (!limits) {
             error(at, String.format(Locale.ROOT, "min must be below max, got min %s and max %s", fmt(min), fmt(max)));
+        }
+        ServoMapping m = model == null || !limits ? null
+                : new ServoMapping(module, id, model, zero, direction == -1 ? -1 : 1, min, max, at);
+        if (m != null) {
+            for (double joint : new double[] {min, max}) {
+                double s = m.servoAngle(joint);
+                if (s < model.minDegrees() - 1e-9 || s > model.maxDegrees() + 1e-9) {
+                    error(at, String.format(Locale.ROOT, "joint angle %s° is servo angle %s°, outside the %s's range "
+                            + "%s..%s°; narrow min/max or change zero", fmt(joint), fmt(s), model.name(),
+                            fmt(model.minDegrees()), fmt(model.maxDegrees())));
+                }
+            }
+        }
+        if (!placed) {
             return;
         }
-        ServoMapping m = new ServoMapping(module, id, model, zero, (int) direction, min, max, at);
-        for (double joint : new double[] {min, max}) {
-            double s = m.servoAngle(joint);
-            if (s < model.minDegrees() - 1e-9 || s > model.maxDegrees() + 1e-9) {
-                error(at, String.format(Locale.ROOT, "joint angle %s° is servo angle %s°, outside the %s's range %s..%s°;"
-                        + " narrow min/max or change zero", fmt(joint), fmt(s), model.name(), fmt(model.minDegrees()),
-                        fmt(model.maxDegrees())));
-            }
+        SourcePos firstOfModule = byModule.putIfAbsent(module, at);
+        if (firstOfModule != null) {
+            error(at, "module " + module + " is mapped twice; first at " + firstOfModule);
         }
-        for (ServoMapping other : servos) {
-            if (other.module() == module) {
-                error(at, "module " + module + " is mapped twice; first at " + other.where());
-            } else if (other.servo() == id) {
-                error(at, "servo ID " + id + " drives two modules (" + other.module() + " at " + other.where()
-                        + " and " + module + ")");
-            }
+        Placed sameId = byId.putIfAbsent(id, new Placed(module, at));
+        if (sameId != null) {
+            error(at, "servo ID " + id + " drives two modules (" + sameId.module() + " at " + sameId.where()
+                    + " and " + module + ")");
         }
-        servos.add(m);
+        if (m != null && firstOfModule == null && sameId == null) {
+            servos.add(m);
+        }
     }
 
     /** A number attribute within {@code lo…hi}; whole for IDs, baud and watchdog. */

@@ -17,6 +17,8 @@ import org.parpe.serial.servo.ServoModel;
  */
 public record ServoMapping(int module, int servo, ServoModel model, double zero, int direction, double min, double max,
                            SourcePos where) {
+    /** Degrees a tick may lie beyond a limit through floating-point rounding alone. */
+    private static final double LIMIT_SLACK = 1e-9;
 
     /** The joint angle clamped to {@link #min}…{@link #max}. */
     public double clamp(double joint) {
@@ -33,9 +35,20 @@ public record ServoMapping(int module, int servo, ServoModel model, double zero,
         return (servoAngle - zero) * direction;
     }
 
-    /** The goal position, in the model's ticks, of a joint angle already clamped. */
+    /**
+     * The goal position, in the model's ticks as the wire carries them, of a joint angle already
+     * clamped: the nearest tick, or the next one inwards when the nearest lies beyond
+     * {@link #min} or {@link #max} (half a tick can be a large angle on a 1024-step servo).
+     */
     public int goalTicks(double joint) {
-        return model.ticks(servoAngle(joint));
+        int t = model.nearestTick(servoAngle(joint));
+        double at = jointAngle(model.tickDegrees(t));
+        if (at > max + LIMIT_SLACK) {
+            t -= direction;
+        } else if (at < min - LIMIT_SLACK) {
+            t += direction;
+        }
+        return model.encode(t);
     }
 
     /**

@@ -38,6 +38,8 @@ public final class ServoDriver extends BusThread {
     private volatile ServoBus bus;
     private final ServoSet set;
     private long lastAnswer = System.nanoTime();
+    /** Wall-clock time of the last answer, for messages and the IDE's alarm. */
+    private volatile long lastAnswerMillis = System.currentTimeMillis();
     private long lastSend;
     private int failedReads;
     private int busyCycles;
@@ -47,6 +49,8 @@ public final class ServoDriver extends BusThread {
     private long watchdogResumes;
     private long lastWatchdogCheck;
     private int watchdogCursor;
+    private final List<Integer> answeredOther = new ArrayList<>();
+    private final List<Integer> limp = new ArrayList<>();
 
     private ServoDriver(LinkOpener opener, ServoBus bus, BusConfig config, HardwareProfile profile, int[] runModules,
                         BusReport report) {
@@ -74,23 +78,39 @@ public final class ServoDriver extends BusThread {
     }
 
     /**
-     * Pings every mapped servo of the run, sets the servos' watchdog and turns the found ones'
-     * torque on, holding where they are. Returns the modules whose servo answered.
+     * Pings every mapped servo of the run and makes the found ones hold where they are, within
+     * their limits, with their torque on (read back); {@link #limp} lists those whose torque did
+     * not come on. The servos' watchdog is armed by {@link #start}, when traffic begins: armed
+     * here, it would trip during whatever the run sets up in between. Returns the modules whose
+     * servo answered as the model the profile says.
      */
     public List<Integer> discover() throws IOException {
         List<Integer> found = new ArrayList<>();
+        answeredOther.clear();
         for (int j = 0; j < set.size(); j++) {
             ServoMapping m = set.mapping(j);
             int model = bus.ping(m.servo(), Math.max(5, config.retries() + 1));
             set.driven[j] = model >= 0 && compatible(m, model);
             if (set.driven[j]) {
                 found.add(m.module());
+            } else if (model >= 0) {
+                answeredOther.add(m.module());
             }
         }
         if (!found.isEmpty()) {
             setUp();
         }
         return found;
+    }
+
+    /** Modules whose servo answered discovery as another model than the profile's, and is not driven. */
+    public List<Integer> answeredAsOtherModel() {
+        return List.copyOf(answeredOther);
+    }
+
+    /** Modules whose servo answered but stayed limp (torque off, or its position unknown) after set-up. */
+    public List<Integer> limp() {
+        return List.copyOf(limp);
     }
 
     /**
@@ -113,14 +133,60 @@ public final class ServoDriver extends BusThread {
         return same;
     }
 
-    /** Watchdog, torque on, first positions; the servos hold where they are until setpoints come. */
+    /**
+     * Present positions (retried until each servo has answered), goals that hold each servo
+     * there clamped into its limits, torque on, and torque read back: a servo whose torque does
+     * not come on is limp while the run drives it, which the user must hear about.
+     */
     private void setUp() throws IOException {
+        int n = set.pack();
+        int attempts = Math.max(5, config.retries() + 1);
+        boolean[] known = new boolean[n];
+        for (int a = 0, left = n; a < attempts && left > 0; a++) {
+            bus.readPositions(set.ids, set.models, n, set.degrees, set.errors);
+            set.storeReadings(n, bus, this::fault);
+            for (int k = 0; k < n; k++) {
+                if (!known[k] && set.errors[k] != ServoBus.NO_REPLY) {
+                    known[k] = true;
+                    left--;
+                }
+            }
+        }
+        limp.clear();
+        int[] one = new int[1];
+        ServoModel[] oneModel = new ServoModel[1];
+        int[] oneGoal = new int[1];
+        for (int k = 0; k < n; k++) {
+            ServoMapping m = set.mappingAt(k);
+            if (!known[k]) {
+                limp.add(m.module());
+                report.problem(String.format(Locale.ROOT, "bus: servo %d (module %d) answered the ping but not %d "
+                        + "reads of its position; its torque stays off and it will not follow the run", m.servo(),
+                        m.module(), attempts));
+                continue;
+            }
+            one[0] = m.servo();
+            oneModel[0] = m.model();
+            oneGoal[0] = set.holdTicks(k);
+            int state = 0;
+            for (int a = 0; a < attempts && state != 1; a++) {
+                bus.holdAt(one, oneModel, oneGoal, 1);
+                state = bus.torqueState(m.servo(), m.model(), 2);
+            }
+            if (state != 1) {
+                limp.add(m.module());
+                report.problem(String.format(Locale.ROOT, "bus: servo %d (module %d) did not turn its torque on "
+                        + "(Torque Enable %s after %d tries); it is limp and will not follow the run", m.servo(),
+                        m.module(), state == 0 ? "read back 0" : "could not be read back", attempts));
+            }
+        }
+    }
+
+    /** Arms the servos' own watchdog, the last step of set-up, just before traffic keeps it fed. */
+    private void armWatchdog() throws IOException {
         int n = set.pack();
         report.note("bus: " + bus.watchdog(set.ids, set.models, n, profile.watchdogMs(),
                 profile.onFault() == SafeMode.LIMP));
-        bus.readPositions(set.ids, set.models, n, set.degrees, set.errors);
-        set.storeReadings(n, bus, this::fault);
-        bus.holdHere(set.ids, set.models, n);
     }
 
     /** Modules of the run without a servo in the profile. */
@@ -128,9 +194,33 @@ public final class ServoDriver extends BusThread {
         return set.unmapped();
     }
 
+    private void answeredNow() {
+        lastAnswer = System.nanoTime();
+        lastAnswerMillis = System.currentTimeMillis();
+    }
+
+    /**
+     * Since when (wall-clock milliseconds) no servo has answered, while the bus is silent; −1 while
+     * the servos answer. The IDE shows it as an alarm.
+     */
+    public long notAnsweringSince() {
+        return lost() ? lastAnswerMillis : -1;
+    }
+
+    /** A wall-clock time of day, for messages: {@code 21:27:41}. */
+    static String clock(long millis) {
+        return java.time.LocalTime.ofInstant(java.time.Instant.ofEpochMilli(millis), java.time.ZoneId.systemDefault())
+                .withNano(0).toString();
+    }
+
     @Override
     public void start(RunInfo info) {
-        lastAnswer = System.nanoTime();
+        try {
+            armWatchdog();
+        } catch (IOException e) {
+            report.problem("bus: could not arm the servos' watchdog: " + e.getMessage());
+        }
+        answeredNow();
         startThread("servo bus " + bus.name());
     }
 
@@ -149,7 +239,7 @@ public final class ServoDriver extends BusThread {
         return set.measured(index);
     }
 
-    /** Sends the last goals (three times: no reply), turns the watchdog off so the servos keep holding, reports. */
+    /** Turns the watchdog off so the servos keep holding, sends the last goals (three times: no reply), reports. */
     @Override
     public void finish(RunOutcome outcome) {
         stopThread();
@@ -157,10 +247,12 @@ public final class ServoDriver extends BusThread {
         if (connected() && b.linkError() == null) {
             try {
                 int n = set.pack();
+                // Watchdog off first: writing 0 also clears a Bus Watchdog error, which a pause at
+                // the run's end may have caused and which would refuse the final goals.
+                b.watchdog(set.ids, set.models, n, 0, false);
                 for (int i = 0; i < 3 && set.takeGoals(true); i++) {
                     b.writeGoals(set.ids, set.models, set.goals, n);
                 }
-                b.watchdog(set.ids, set.models, n, 0, false);
             } catch (IOException e) {
                 report.problem("bus: could not send the final goals: " + e.getMessage());
             }
@@ -173,11 +265,19 @@ public final class ServoDriver extends BusThread {
     public void emergencyStop() {
         emergencyStopping();
         boolean limp = profile.onFault() == SafeMode.LIMP;
+        long since = notAnsweringSince();
         try {
             bus.emergencyStop(set.ids, set.models, set.pack(), limp);
-            report.note("bus: emergency stop sent; servos " + (limp ? "limp (torque off)" : "hold where they are"));
+            if (since >= 0) {
+                // Sent into a silent bus: nothing says the servos got it.
+                report.problem("bus: emergency stop sent but not confirmed: no servo has answered since "
+                        + clock(since) + "; switch the servo supply off");
+            } else {
+                report.note("bus: emergency stop sent; servos " + (limp ? "limp (torque off)" : "hold where they are"));
+            }
         } catch (IOException e) {
-            report.problem("bus: emergency stop could not be sent (" + e.getMessage() + ")");
+            report.problem("bus: emergency stop could not be sent (" + e.getMessage() + ")"
+                    + (since >= 0 ? "; no servo has answered since " + clock(since) + ": switch the servo supply off" : ""));
         }
     }
 
@@ -215,7 +315,7 @@ public final class ServoDriver extends BusThread {
                     : bus.readPositions(set.ids, set.models, n, set.degrees, set.errors);
             reads++;
             if (answered > 0) {
-                lastAnswer = System.nanoTime();
+                answeredNow();
                 failedReads = 0;
                 faults += set.storeReadings(n, bus, this::fault);
                 checkWatchdog(n);
@@ -256,8 +356,9 @@ public final class ServoDriver extends BusThread {
     }
 
     private void silent() {
-        silent(String.format(Locale.ROOT, "bus: no reply from any servo on %s for %d ms; %s; waiting for them "
-                + "to come back", bus.name(), config.deadAfterMs(), safeStop()));
+        silent(String.format(Locale.ROOT, "bus: no reply from any servo on %s for %d ms (robot not responding since "
+                + "%s); %s; waiting for them to come back", bus.name(), config.deadAfterMs(), clock(lastAnswerMillis),
+                safeStop()));
     }
 
     /** What the servos do when the host loses them, and the torque-off attempt for limp. */
@@ -296,7 +397,8 @@ public final class ServoDriver extends BusThread {
         for (int i = 0; i < n; i++) {
             if (bus.ping(set.ids[i], 1) >= 0) {
                 setUp();
-                lastAnswer = System.nanoTime();
+                armWatchdog();
+                answeredNow();
                 failedReads = 0;
                 double away = resumed();
                 report.note(String.format(Locale.ROOT, "bus: servos back on %s after %.2f s; resuming", bus.name(),

@@ -89,6 +89,20 @@ final class ServoSet {
         return out;
     }
 
+    /** The mapping of the servo at packed index {@code k}. */
+    ServoMapping mappingAt(int k) {
+        return mappings[packed[k]];
+    }
+
+    /**
+     * The goal that holds the servo at packed index {@code k} where it was last measured, clamped
+     * into its limits (a servo resting beyond them is brought just inside).
+     */
+    synchronized int holdTicks(int k) {
+        ServoMapping m = mappings[packed[k]];
+        return m.goalTicks(m.clamp(measured[packed[k]]));
+    }
+
     /** Packs the driven servos into {@link #ids} and {@link #models}; returns how many. */
     synchronized int pack() {
         int k = 0;

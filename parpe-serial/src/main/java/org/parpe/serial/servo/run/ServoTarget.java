@@ -72,21 +72,34 @@ public final class ServoTarget implements RunTarget {
             throw new TargetException(where, "the bus failed while looking for servos: " + HostPlant.message(e));
         }
         int mapped = ids.length - unmapped.size();
+        List<Integer> other = d.answeredAsOtherModel();
         notes.accept("bus " + port + " (" + profile.protocol().key() + ", " + profile.baud() + " baud): " + found.size()
-                + " of " + mapped + " servos answer" + (found.isEmpty() ? "" : " (modules " + Discovery.format(found) + ")"));
-        if (found.size() < mapped) {
-            List<Integer> missing = new java.util.ArrayList<>();
-            for (int id : ids) {
-                if (!unmapped.contains(id) && !found.contains(id)) {
-                    missing.add(id);
-                }
+                + " of " + mapped + " servos answer" + (found.isEmpty() ? "" : " (modules "
+                + Discovery.format(found) + ")") + (other.isEmpty() ? "" : "; " + other.size() + " more answer as another model"));
+        List<Integer> missing = new java.util.ArrayList<>();
+        for (int id : ids) {
+            if (!unmapped.contains(id) && !found.contains(id) && !other.contains(id)) {
+                missing.add(id);
             }
+        }
+        if (!missing.isEmpty()) {
             diags.warning(where, "the servos of modules " + Discovery.format(missing) + " do not answer; they will not move");
+        }
+        if (found.isEmpty() && !other.isEmpty()) {
+            throw new TargetException(where, "the servos on " + port + " answer, but not as the model the profile "
+                    + "says (modules " + Discovery.format(other) + "; see the warnings above): correct model= in "
+                    + profile.file() + ", or run parpe scan");
         }
         if (found.isEmpty()) {
             throw new TargetException(where, "no servo answers on " + port + " at " + profile.baud() + " baud ("
                     + profile.protocol().key() + "; is the robot powered, and are protocol and baud rate right? "
                     + "parpe scan finds them)");
+        }
+        List<Integer> limp = d.limp();
+        if (!limp.isEmpty()) {
+            throw new TargetException(where, "the servos of modules " + Discovery.format(limp) + " answer but their "
+                    + "torque did not come on (see the warnings above); they would stay limp while the run drives "
+                    + "the others, so it does not start");
         }
         HostPlant.attachTo(run, d, ids);
         driver = d;

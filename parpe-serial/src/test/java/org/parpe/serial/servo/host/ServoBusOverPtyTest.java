@@ -62,6 +62,10 @@ class ServoBusOverPtyTest {
     void start(ServoModel[] models, EmulatorOptions o) throws Exception {
         emulator = ServoEmulator.start(LinkOpener.serial(pty.b().toString(), 1_000_000), models, o,
                 new EmulatorListener() { });
+        // These tests count replies to single requests: Return Delay Time 0, as a bus tuned for
+        // speed has it, keeps a loaded machine's scheduling out of them (VendorTableTest covers the
+        // factory 500 µs; the broadcast Ping's reply slots are there either way).
+        emulator.returnDelay(0);
         bus = ServoBuses.open(models[0].protocol(), LinkOpener.serial(pty.a().toString(), 1_000_000),
                 BusConfig.defaults().withBaud(1_000_000));
         awaitAnswer(bus, o.modules()[o.modules().length - 1]);
@@ -251,6 +255,88 @@ class ServoBusOverPtyTest {
             bus.close();
             bus = null;
             g1.close();
+        }
+    }
+
+    @Test
+    void aBroadcastPingListensLongEnoughForHighIds() throws Exception {
+        // Servos answer a broadcast Ping in the order of their IDs, each in its slot after its
+        // Return Delay Time (e-Manual, Protocol 2.0, Ping); the emulator does so. The scan used to
+        // listen about 58 ms at 1 Mbaud: IDs 200 and 252, answering 0.6 and 0.76 s after the
+        // Ping, were missed. It now listens as long as DynamixelSDK does (3 ms per ID + 16 ms).
+        ServoModel xl430 = ServoModel.named("xl430-w250");
+        start(models(xl430, 3), EmulatorOptions.of(3, 200, 252));
+        int[] ids = java.util.stream.IntStream.rangeClosed(0, 252).toArray();
+        int[] found = bus.scan(ids);
+        assertEquals(1060, found[3]);
+        assertEquals(1060, found[200]);
+        assertEquals(1060, found[252]);
+        assertEquals(3, java.util.Arrays.stream(found).filter(m -> m >= 0).count());
+    }
+
+    @Test
+    void aScanTakesNeitherStaleRepliesNorOtherStatusPacketsForServos() throws Exception {
+        // After an interrupted run the line still carries replies: position reads (4 parameters)
+        // and, here, even Ping-shaped ones, for 150 ms after the scan opens the port. The scan
+        // flushes its input until the line is quiet and takes only real Ping replies; before, every
+        // status packet with 3 or more parameters counted ("unknown (2048)").
+        org.parpe.serial.link.ByteLink servoSide = org.parpe.serial.link.SerialLink.open(pty.b().toString(), 1_000_000);
+        bus = ServoBuses.open(ServoProtocol.DXL2, LinkOpener.serial(pty.a().toString(), 1_000_000),
+                BusConfig.defaults().withBaud(1_000_000).withReads(10, 0));
+        org.parpe.serial.servo.wire.Dxl2Codec codec = new org.parpe.serial.servo.wire.Dxl2Codec();
+        Thread stale = new Thread(() -> {
+            byte[] out = new byte[64];
+            byte[] position = {0, 8, 0, 0};
+            byte[] ping = {0x24, 0x04, 46};
+            long end = System.nanoTime() + 150_000_000L;
+            try {
+                while (System.nanoTime() < end) {
+                    servoSide.write(out, 0, codec.status(out, 5, 0, position, 4));
+                    servoSide.write(out, 0, codec.status(out, 6, 0, ping, 3));
+                    Thread.sleep(1);
+                }
+            } catch (Exception e) {
+                throw new AssertionError(e);
+            }
+        });
+        stale.start();
+        try {
+            int[] found = bus.scan(new int[] {0, 1, 2, 3, 4, 5, 6, 7});
+            assertTrue(java.util.Arrays.stream(found).allMatch(m -> m < 0), java.util.Arrays.toString(found));
+        } finally {
+            stale.join();
+            servoSide.close();
+        }
+    }
+
+    @Test
+    void aLateReplyToAnotherRequestIsNotTakenForARead() throws Exception {
+        // A position read that timed out is answered late, while the host reads servo 3's one-byte
+        // Hardware Error Status: the 4-byte position reply used to pass for it, and a servo's
+        // overload was reported as "input voltage out of range, electrical shock".
+        org.parpe.serial.link.ByteLink servoSide = org.parpe.serial.link.SerialLink.open(pty.b().toString(), 1_000_000);
+        ControlTableBus b = new ControlTableBus(ServoProtocol.DXL2, LinkOpener.serial(pty.a().toString(), 1_000_000)
+                .open(), 1_000_000, 20);
+        bus = b;
+        org.parpe.serial.servo.wire.Dxl2Codec codec = new org.parpe.serial.servo.wire.Dxl2Codec();
+        Thread late = new Thread(() -> {
+            byte[] in = new byte[256];
+            byte[] out = new byte[64];
+            try {
+                while (servoSide.read(in) == 0) {
+                    Thread.onSpinWait();
+                }
+                servoSide.write(out, 0, codec.status(out, 3, 0, new byte[] {0x13, 0x08, 0, 0}, 4));
+            } catch (Exception e) {
+                throw new AssertionError(e);
+            }
+        });
+        late.start();
+        try {
+            assertEquals(Integer.MIN_VALUE, b.read(3, 70, 1, 1));
+        } finally {
+            late.join();
+            servoSide.close();
         }
     }
 }

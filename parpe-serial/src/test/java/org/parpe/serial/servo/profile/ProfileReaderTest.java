@@ -90,7 +90,7 @@ class ProfileReaderTest {
                 "F:1:1: error: <hardware> has no attribute 'speed'; it takes baud, on-fault, port, protocol, watchdog",
                 "F:2:3: error: unknown dxl2 servo model 'sts3215'; expected one of xl430-w250, 2xl430-w250, xl330-m077, "
                         + "xl330-m288, xm430-w350, xm430-w210, xc430-w150, xl-320",
-                "F:3:3: error: id must be in 0..253, got 300",
+                "F:3:3: error: id must be in 0..252, got 300",
                 "F:4:3: error: direction must be in -1..1, got 2",
                 "F:5:3: error: module 2 is mapped twice; first at F:4:3",
                 "F:6:3: error: servo ID 3 drives two modules (2 at F:5:3 and 4)",
@@ -131,5 +131,54 @@ class ProfileReaderTest {
         assertNull(read("<hardware protocol=\"can\"><servo module=\"0\" id=\"1\"/>"));
         assertEquals(1, diags.size());
         assertEquals(true, messages().get(0).startsWith("F:1:"), messages().toString());
+    }
+
+    @Test
+    void dynamixelId253IsRefused() throws Exception {
+        // e-Manual, Protocol 2.0, Packet ID: "Range: 0 ~ 252"; 253 (0xFD) is not used, it would
+        // look like a header byte. Feetech IDs go to 253 (254 is their broadcast).
+        assertNull(read("<hardware protocol=\"dxl2\">\n  <servo module=\"0\" id=\"253\"/>\n</hardware>\n"));
+        assertEquals(List.of("F:2:3: error: id must be in 0..252, got 253"), messages());
+        diags.clear();
+        assertNotNull(read("<hardware protocol=\"sts\">\n  <servo module=\"0\" id=\"253\"/>\n</hardware>\n"),
+                messages().toString());
+    }
+
+    @Test
+    void badIdsDoNotCascadeIntoDuplicates() throws Exception {
+        // Before, each bad ID fell back to 0 and clashed with every earlier one: 2 000 bad lines
+        // gave about 2 million errors.
+        StringBuilder xml = new StringBuilder("<hardware protocol=\"dxl2\">\n");
+        for (int i = 0; i < 2000; i++) {
+            xml.append("  <servo module=\"").append(i).append("\" id=\"999\"/>\n");
+        }
+        assertNull(read(xml.append("</hardware>\n").toString()));
+        assertEquals(2000, diags.size());
+        assertEquals("F:2:3: error: id must be in 0..252, got 999", messages().get(0));
+    }
+
+    @Test
+    void withAnUnknownProtocolTheServosAreStillChecked() throws Exception {
+        assertNull(read("""
+                <hardware protocol="can">
+                  <servo module="0" id="1" min="10" max="5"/>
+                  <servo module="0" id="2"/>
+                </hardware>
+                """));
+        assertEquals(List.of(
+                "F:1:1: error: unknown protocol 'can'; expected one of g1, dxl2, sts, scs",
+                "F:2:3: error: min must be below max, got min 10 and max 5",
+                "F:3:3: error: module 0 is mapped twice; first at F:2:3"), sorted(messages()));
+    }
+
+    @Test
+    void anAttributeOfAnotherNamespaceDoesNotOverrideProtocol() throws Exception {
+        assertNull(read("""
+                <hardware xmlns:x="urn:elsewhere" protocol="sts" x:protocol="dxl2">
+                  <servo module="0" id="1"/>
+                </hardware>
+                """));
+        assertEquals(List.of("F:1:1: error: <hardware> has no attribute 'x:protocol'; it takes baud, on-fault, port, "
+                + "protocol, watchdog"), messages());
     }
 }

@@ -77,16 +77,68 @@ class ServoDriverTest {
     }
 
     void start(SafeMode onFault) throws Exception {
-        List<ServoMapping> servos = new ArrayList<>();
-        for (int m : MODULES) {
-            servos.add(new ServoMapping(m, 11 + m, XL430, 0, 1, -90, 90, SourcePos.NONE));
-        }
-        HardwareProfile profile = new HardwareProfile("test", ServoProtocol.DXL2, pty.a().toString(), 1_000_000,
-                onFault, HardwareProfile.DEFAULT_WATCHDOG_MS, servos);
-        driver = ServoDriver.open(LinkOpener.serial(pty.a().toString(), 1_000_000),
-                BusConfig.defaults().withBaud(1_000_000), profile, MODULES, BusReport.lines(reports::add));
+        open(onFault, 90);
         assertEquals(List.of(0, 1, 2), driver.discover());
         driver.start(new RunInfo(null, MODULES, 0.01));
+    }
+
+    void open(SafeMode onFault, double limit) throws Exception {
+        open(onFault, limit, HardwareProfile.DEFAULT_WATCHDOG_MS);
+    }
+
+    void open(SafeMode onFault, double limit, int watchdogMs) throws Exception {
+        List<ServoMapping> servos = new ArrayList<>();
+        for (int m : MODULES) {
+            servos.add(new ServoMapping(m, 11 + m, XL430, 0, 1, -limit, limit, SourcePos.NONE));
+        }
+        HardwareProfile profile = new HardwareProfile("test", ServoProtocol.DXL2, pty.a().toString(), 1_000_000,
+                onFault, watchdogMs, servos);
+        driver = ServoDriver.open(LinkOpener.serial(pty.a().toString(), 1_000_000),
+                BusConfig.defaults().withBaud(1_000_000), profile, MODULES, BusReport.lines(reports::add));
+    }
+
+    @Test
+    void aServoWhoseTorqueDoesNotComeOnIsReportedLimp() throws Exception {
+        // An X-series servo with a Hardware Error Status bit set refuses Torque Enable = 1 (e-Manual,
+        // XL430-W250 control table, Hardware Error Status 70: "Torque Enable is cleared"). Before, the
+        // driver sent torque on without reading it back and the run drove a limp servo.
+        emulator.fault(12, 0x04);
+        open(SafeMode.HOLD, 90);
+        assertEquals(List.of(0, 1, 2), driver.discover());
+        assertEquals(List.of(1), driver.limp());
+        assertTrue(reports.stream().anyMatch(r -> r.startsWith("bus: servo 12 (module 1) did not turn its torque on")),
+                reports.toString());
+        assertFalse(emulator.isLimp(11) || emulator.isLimp(13), "the others hold");
+    }
+
+    @Test
+    void theWatchdogIsArmedWhenTrafficStartsNotAtDiscovery() throws Exception {
+        // Between discovery and the run's start the program sets up (world, other targets); the Bus
+        // Watchdog armed at discovery tripped on every servo then. Failed before. A 300 ms watchdog
+        // and a 1 s pause: the run's own traffic keeps far closer than 300 ms even on a loaded machine.
+        open(SafeMode.HOLD, 90, 300);
+        assertEquals(List.of(0, 1, 2), driver.discover());
+        Thread.sleep(1000);
+        driver.start(new RunInfo(null, MODULES, 0.01));
+        driver.accept(0, 0, new double[] {20, 20, 20});
+        await(() -> Math.abs(emulator.angle(13) - 20) < 0.1, "servo 13 at 20°");
+        for (int id = 11; id <= 13; id++) {
+            assertFalse(emulator.watchdogTripped(id), "servo " + id + " tripped its watchdog");
+        }
+        driver.finish(new RunOutcome(RunOutcome.Status.COMPLETED, 0, ""));
+        assertFalse(reports.stream().anyMatch(r -> r.contains("had stopped on its watchdog")), reports.toString());
+    }
+
+    @Test
+    void theStartHoldIsClampedIntoTheLimits() throws Exception {
+        // A servo resting at 50° with limits ±30°: the hold at start used to be its present
+        // position, outside the limits; now it is the limit, rounded inwards.
+        assertTrue(emulator.backDrive(12, 50));
+        open(SafeMode.HOLD, 30);
+        assertEquals(List.of(0, 1, 2), driver.discover());
+        await(() -> Math.abs(emulator.angle(12) - 30) < 0.1, "servo 12 brought to its 30° limit");
+        assertTrue(emulator.angle(12) <= 30, "never beyond it: " + emulator.angle(12));
+        assertFalse(emulator.isLimp(12));
     }
 
     static void await(BooleanSupplier c, String what) throws InterruptedException {
@@ -134,5 +186,21 @@ class ServoDriverTest {
         await(() -> Math.abs(emulator.angle(13) + 30) < 0.1, "servo 13 following again");
         driver.finish(new RunOutcome(RunOutcome.Status.COMPLETED, 0, ""));
         assertTrue(reports.get(reports.size() - 1).contains("1 disconnects"), reports.toString());
+    }
+
+    @Test
+    void anEmergencyStopIntoASilentBusIsNotReportedAsDone() throws Exception {
+        // A robot silent for a minute used to get "emergency stop sent" as if it had stopped.
+        start(SafeMode.HOLD);
+        driver.accept(0, 0, new double[] {10, 10, 10});
+        await(() -> Math.abs(emulator.angle(13) - 10) < 0.1, "servo 13 at 10°");
+        assertTrue(driver.notAnsweringSince() < 0, "answering");
+        emulator.close();
+        await(() -> reports.stream().anyMatch(r -> r.contains("robot not responding since")), "the silence reported");
+        assertTrue(driver.notAnsweringSince() > 0);
+        driver.emergencyStop();
+        assertTrue(reports.stream().anyMatch(r -> r.startsWith("bus: emergency stop sent but not confirmed: no servo "
+                + "has answered since ")), reports.toString());
+        assertFalse(reports.contains("bus: emergency stop sent; servos hold where they are"), reports.toString());
     }
 }
