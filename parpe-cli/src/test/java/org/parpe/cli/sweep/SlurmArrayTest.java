@@ -161,4 +161,24 @@ class SlurmArrayTest {
         assertTrue(bad.err.startsWith(b + ":1: error: not a sweep result"), bad.err);
         assertTrue(new File(a.toString()).exists());
     }
+    /**
+     * Issue 26, item 4, for the app image's launcher, which cannot read Slurm's variables:
+     * sweep.slurm gives the JVM 60 % of the task's memory through JAVA_TOOL_OPTIONS, and leaves
+     * a heap the user set alone.
+     */
+    @Test
+    void theTasksHeapIsSizedFromItsMemoryForAnyLauncher() throws Exception {
+        Path seen = dir.resolve("seen.txt");
+        Path fake = Files.writeString(dir.resolve("fake-parpe"), "#!/bin/sh\nprintf '%s' \"$JAVA_TOOL_OPTIONS\" > " + seen + "\n");
+        fake.toFile().setExecutable(true);
+        Path script = SweepCommandTest.snakeIn(dir);
+        Map<String, String> env = new java.util.HashMap<>(Map.of("SLURM_ARRAY_TASK_ID", "1", "SLURM_ARRAY_TASK_MIN", "1",
+                "SLURM_ARRAY_TASK_MAX", "2", "SLURM_MEM_PER_NODE", "1000", "PARPE", fake.toString()));
+        env.put("JAVA_TOOL_OPTIONS", "");
+        assertEquals(0, task(dir.resolve("a"), script, env), Files.readString(dir.resolve("task.log")));
+        assertEquals("-Xmx600m", Files.readString(seen));
+        env.put("JAVA_TOOL_OPTIONS", "-Xmx2g");
+        assertEquals(0, task(dir.resolve("b"), script, env), Files.readString(dir.resolve("task.log")));
+        assertEquals("-Xmx2g", Files.readString(seen));
+    }
 }
