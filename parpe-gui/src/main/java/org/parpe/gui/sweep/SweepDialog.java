@@ -256,7 +256,7 @@ public final class SweepDialog {
             SweepRow best = results.best();
             String head = cancelled ? "Stopped after " + all.size() + " of " + total + " runs. "
                     : "Finished " + all.size() + " runs. ";
-            info(head + (best == null ? "No run was acceptable (see the error and fell columns)."
+            info(head + (best == null ? noBest(all)
                     : "Best: run " + results.number(best) + ", " + Results.describe(best.values()) + ": "
                     + results.objective().label() + " " + ResultsTable.number(results.objective().of(best))
                     + (best.fell() ? " (its robot fell over)" : "")));
@@ -269,6 +269,19 @@ public final class SweepDialog {
                 host.problems().accept(problems);
             }
         }
+    }
+
+    /** Why no run of {@code all} can be the best, with the counts the table's columns show. */
+    private String noBest(List<SweepRow> all) {
+        if (all.isEmpty()) {
+            return "No run finished.";
+        }
+        long failed = all.stream().filter(r -> !r.ok()).count();
+        long fell = all.stream().filter(r -> r.ok() && r.fell()).count();
+        return results.mode() == Results.Mode.SWEEP
+                ? String.format(Locale.ROOT, "No best run: %d fell over and %d failed (see the fell and error columns);"
+                        + " a run whose robot fell over is never the best.", fell, failed)
+                : "No run met the constraints (see the max tilt, fell and error columns).";
     }
 
     private void stop() {
