@@ -16,6 +16,14 @@ import java.util.Locale;
 public record SimMetrics(double duration, double distance, double dx, double dy, double speed,
                          double maxTiltDeg) {
 
+    /** The tilt beyond which a robot counts as fallen over unless told otherwise, degrees (a sweep's {@code --fall-tilt}). */
+    public static final double FALL_TILT_DEG = 90;
+
+    /** Whether the robot tilted past {@link #FALL_TILT_DEG}: it fell over. */
+    public boolean fell() {
+        return maxTiltDeg > FALL_TILT_DEG;
+    }
+
     /** The metrics as one JSON object, numbers with 6 decimals. */
     public String toJson() {
         return String.format(Locale.ROOT,

@@ -40,6 +40,7 @@ public final class IdeWindow {
     static final int RUN_PROBLEM_LIMIT = 500;
 
     private final Prefs prefs;
+    private final RunChoices choices;
     private final ParslEditor editor;
     private final GridPane gaitGrid;
     private final CTabItem editorTab;
@@ -67,6 +68,7 @@ public final class IdeWindow {
 
     public IdeWindow(Display display, Prefs prefs) {
         this.prefs = prefs;
+        choices = new RunChoices(prefs);
         shell = new Shell(display, SWT.SHELL_TRIM);
         shell.setText("PARPE");
         shell.setLayout(grid(1, 0));
@@ -233,6 +235,12 @@ public final class IdeWindow {
 
     /** A different file is in the editor: forget what belonged to the previous one. */
     void fileSwitched() {
+        choices.switchTo(files.pathForLoading());
+        viewBar.show(choices.robot());
+        if (!runs.running()) {
+            toolbar.setTarget(choices.target());
+        }
+        runs.invalidatePreview();
         program = null;
         gaitGrid.setProgram(null);
         outline.show(null);
@@ -464,6 +472,16 @@ public final class IdeWindow {
 
     String robotChoice() {
         return viewBar.robot();
+    }
+
+    /** The user picked {@code robot} for the file in the editor. */
+    void robotChosen(String robot) {
+        choices.robotChosen(robot);
+    }
+
+    /** The user picked {@code target} for the file in the editor. */
+    void targetChosen(org.parpe.gui.run.Target target) {
+        choices.targetChosen(target);
     }
 
     ViewBar viewBar() {

@@ -101,6 +101,11 @@ final class RunActions implements ControlPanel.Target {
         return out;
     }
 
+    /** The user picked {@code t} in the tool bar for the file in the editor. */
+    void targetChosen(Target t) {
+        ide.targetChosen(t);
+    }
+
     /** Opens the Hardware dialog (Run > Hardware…). */
     void openHardware() {
         HardwareDialog.open(ide);
@@ -162,7 +167,26 @@ final class RunActions implements ControlPanel.Target {
     }
 
     private void start(Program program, double runFor, Consumer<RunOutcome> onEnd) {
-        start(program, ide.toolbar().target(), robotSpec(program), runFor, onEnd);
+        Target target = ide.toolbar().target();
+        start(program, target, robotSpec(program), runFor, onEnd);
+        String misfit = target.sim() ? misfit(program, ide.robotChoice()) : null;
+        if (misfit != null) {
+            ide.runProblemLater(new Diagnostic(Severity.WARNING, SourcePos.origin("Robot " + ide.robotChoice()), misfit));
+        }
+    }
+
+    /**
+     * Why the robot {@code choice} does not fit {@code program}, or null: a standard robot other than
+     * the one {@code auto} picks for the script (a snake lesson run on the humanoid after a
+     * humanoid lesson). A configuration file is the user's own choice and is not second-guessed.
+     */
+    static String misfit(Program program, String choice) {
+        if (SimTarget.AUTO.equals(choice) || !RobotConfigs.generatorNames().contains(choice)) {
+            return null;
+        }
+        String fits = SimTarget.autoSpec(program);
+        return fits.equals(choice) ? null : "this script is written for the " + fits + " (Robot: auto picks it), but it runs"
+                + " on the " + choice + "; choose auto in Robot above the 3D view unless you mean it";
     }
 
     /**
@@ -281,6 +305,14 @@ final class RunActions implements ControlPanel.Target {
         String travelled = m == null || outcome.status() == RunOutcome.Status.ERROR ? ""
                 : String.format(java.util.Locale.ROOT, "; the robot travelled %.3f m (%.3f m/s, forward %+.3f m)",
                         m.distance(), m.speed(), m.dx());
+        if (m != null && m.fell()) {
+            String choice = ide.robotChoice();
+            ide.runProblemLater(new Diagnostic(Severity.WARNING, SourcePos.origin("Robot " + choice), String.format(
+                    java.util.Locale.ROOT, "the robot fell over (it tilted %.0f\u00b0, more than %.0f\u00b0)%s", m.maxTiltDeg(),
+                    SimMetrics.FALL_TILT_DEG, SimTarget.AUTO.equals(choice) ? "" : "; is the " + choice + " the robot"
+                            + " this script is written for? Robot: auto picks the one that fits")));
+            travelled += "; it fell over (see Problems)";
+        }
         switch (outcome.status()) {
             case COMPLETED -> {
                 ide.log("Run completed at t = " + t + travelled);

@@ -55,9 +55,12 @@ final class RunToolBar {
         for (Target t : Target.values()) {
             target.add(t.label());
         }
-        target.select(index(Target.values(), prefs.get("run.target", Target.SIMULATOR.name()), Target::name));
+        // Every session starts on the simulator; each file keeps its own target (RunChoices).
+        target.select(Target.SIMULATOR.ordinal());
+        target.setToolTipText("Where this file runs: the simulator, the robot on the serial port, or both"
+                + " (each file keeps its own; every session starts on the simulator)");
         target.addListener(SWT.Selection, e -> {
-            prefs.put("run.target", target().name());
+            actions.targetChosen(target());
             updatePort();
         });
         Label portLabel = new Label(bar, SWT.NONE);
@@ -160,6 +163,12 @@ final class RunToolBar {
     void setTarget(Target t) {
         target.select(t.ordinal());
         updatePort();
+    }
+
+    /** Picks a target as the user does in the tool bar: the file in the editor keeps it (tests). */
+    void chooseTarget(Target t) {
+        target.select(t.ordinal());
+        target.notifyListeners(SWT.Selection, new org.eclipse.swt.widgets.Event());
     }
 
     /** Selects a speed without remembering it (automation). */

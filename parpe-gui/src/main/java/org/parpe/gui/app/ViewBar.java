@@ -44,9 +44,8 @@ final class ViewBar {
             robot.add(file);
         }
         robot.add(BROWSE);
-        String saved = prefs.get("view.robot", SimTarget.AUTO);
-        int at = robot.indexOf(saved);
-        robot.select(at >= 0 ? at : 0);
+        // Each file has its own robot (RunChoices): auto until the file is shown.
+        robot.select(0);
         robot.setToolTipText("The simulated robot; 'auto' picks a standard robot that fits the script");
         robot.addListener(SWT.Selection, e -> chosen());
         track = new Button(bar, SWT.CHECK);
@@ -87,7 +86,7 @@ final class ViewBar {
             }
             useFile(p);
         }
-        prefs.put("view.robot", robot());
+        ide.robotChosen(robot());
         ide.runs().invalidatePreview();
         if (ide.program() != null) {
             ide.runs().updatePreview(ide.program());
@@ -118,11 +117,28 @@ final class ViewBar {
         ide.view().setTrackRobot(on);
     }
 
-    /** Selects a robot by generator name (automation, tests). */
+    /**
+     * Shows {@code choice} ({@code auto}, a generator name or a configuration file) as the robot,
+     * as chosen for the file now in the editor; an unknown name shows {@code auto}.
+     */
+    void show(String choice) {
+        if (SimTarget.AUTO.equals(choice)) {
+            robot.select(0);
+        } else if (robot.indexOf(choice) >= 0) {
+            robot.select(robot.indexOf(choice));
+        } else if (java.nio.file.Files.isRegularFile(java.nio.file.Path.of(choice))) {
+            useFile(choice);
+        } else {
+            robot.select(0);
+        }
+    }
+
+    /** Picks a robot by generator name as the user does in the picker (automation, tests). */
     void select(String name) {
         int at = robot.indexOf(name);
         if (at >= 0) {
             robot.select(at);
+            robot.notifyListeners(SWT.Selection, new org.eclipse.swt.widgets.Event());
         }
     }
 }

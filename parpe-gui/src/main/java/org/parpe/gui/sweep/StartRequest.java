@@ -32,7 +32,7 @@ record StartRequest(Path file, String text, String robot, String duration, int j
     /** The scheduler's tick, as the IDE's runs and {@code parpe sweep} use. */
     static final double TICK = 0.01;
     /** The tilt beyond which a robot counts as fallen over, as {@code parpe sweep} counts it. */
-    static final double FALL_TILT = 90;
+    static final double FALL_TILT = org.parpe.sim.SimMetrics.FALL_TILT_DEG;
 
     /** A started sweep or optimisation. */
     record Started(Results results, SweepRunner runner, int total) {
