@@ -167,7 +167,11 @@ public final class IdeWindow {
         runStateChanged();
     }
 
-    /** Esc stops everything; control keys steer while the focus is not in a text field. */
+    /**
+     * Esc stops everything. During a run the keys bound to controls steer the robot wherever the
+     * focus is in this window, the script editor and the gait table included (a steering key never
+     * edits the script), except in a box that takes a typed value; the status bar says so.
+     */
     private final class Listener implements org.eclipse.swt.widgets.Listener {
         @Override
         public void handleEvent(Event e) {
@@ -181,12 +185,22 @@ public final class IdeWindow {
                 return;
             }
             var focus = e.display.getFocusControl();
-            boolean typing = focus instanceof StyledText || focus instanceof org.eclipse.swt.widgets.Text
-                    || focus instanceof org.eclipse.swt.widgets.Combo || gaitGrid.hasFocus();
-            if (runs.running() && !typing && e.stateMask == 0 && controls.key(e)) {
+            if (focus == null || focus.getShell() != shell || !runs.running() || (e.stateMask & SWT.MODIFIER_MASK) != 0) {
+                return;
+            }
+            boolean valueBox = (focus instanceof org.eclipse.swt.widgets.Text || focus instanceof org.eclipse.swt.widgets.Combo
+                    || focus instanceof org.eclipse.swt.widgets.Spinner) && !gaitGrid.hasFocus();
+            if (!valueBox && controls.key(e)) {
+                // Neither the editor's nor the table's key handling sees it: the text stays as it was.
                 e.doit = false;
+                e.type = SWT.None;
             }
         }
+    }
+
+    /** The keys the program binds to its controls, as the status bar names them during a run. */
+    private static String steeringKeys(Program p) {
+        return p == null ? "" : String.join(" ", p.controls().stream().flatMap(c -> c.keys().stream()).distinct().toList());
     }
 
     private void tickStatus() {
@@ -371,6 +385,8 @@ public final class IdeWindow {
         }
         wasRunning = running;
         toolbar.update(running, running && runs.controller().paused());
+        String keys = running ? steeringKeys(runs.controller().engine() == null ? program : runs.controller().engine().program()) : "";
+        status.setKeys(keys.isEmpty() ? "" : "\u2328 " + keys + ": steer the robot");
         plots.refresh();
         if (!running && program != null) {
             controls.show(program);

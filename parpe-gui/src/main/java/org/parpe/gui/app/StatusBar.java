@@ -6,10 +6,14 @@ import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Label;
 
-/** The status bar: a message, the simulator's state, the hardware's state, simulated time and the caret position. */
+/**
+ * The status bar: a message, where the steering keys go during a run, the simulator's state, the
+ * hardware's state, simulated time and the caret position.
+ */
 public final class StatusBar {
     private final Composite bar;
     private final Label message;
+    private final Label keys;
     private final Label sim;
     private final Label hardware;
     private final Label time;
@@ -17,11 +21,14 @@ public final class StatusBar {
 
     public StatusBar(Composite parent) {
         bar = new Composite(parent, SWT.NONE);
-        GridLayout gl = new GridLayout(9, false);
+        GridLayout gl = new GridLayout(10, false);
         gl.marginHeight = 2;
         gl.marginWidth = 6;
         bar.setLayout(gl);
         message = field(SWT.DEFAULT, true);
+        keys = field(SWT.DEFAULT, false);
+        keys.setToolTipText("During a run these keys steer the robot, even in the editor (they never type into the script);"
+                + " in a box for a value they type. Esc stops the run.");
         separator();
         sim = field(230, false);
         separator();
@@ -61,6 +68,18 @@ public final class StatusBar {
 
     public String message() {
         return message.getText();
+    }
+
+    /** Where the steering keys go ("⌨ w s: steer the robot"), or empty when no run takes keys. */
+    public void setKeys(String text) {
+        if (!text.equals(keys.getText())) {
+            keys.setText(text);
+            bar.layout(true);
+        }
+    }
+
+    public String keys() {
+        return keys.getText();
     }
 
     public void setSim(String text) {
