@@ -39,6 +39,7 @@ public final class IdeWindow {
     /** Problems one run may add to the view; more are logged only. */
     static final int RUN_PROBLEM_LIMIT = 500;
 
+    private static final String MAXIMISED = "window.maximised";
     private final Prefs prefs;
     private final RunChoices choices;
     private final ParslEditor editor;
@@ -232,6 +233,9 @@ public final class IdeWindow {
         int w = Math.min(1480, screen.width);
         int h = Math.min(920, screen.height);
         shell.setBounds(screen.x + (screen.width - w) / 2, screen.y + (screen.height - h) / 2, w, h);
+        // A window the user maximised opens maximised again (a 1366x768 laptop needs every pixel).
+        shell.setMaximized(Boolean.parseBoolean(prefs.get(MAXIMISED, "false")));
+        shell.addListener(SWT.Close, e -> prefs.put(MAXIMISED, Boolean.toString(shell.getMaximized())));
         shell.open();
         boolean recovered = !automated && files.offerRecovery();
         if (!recovered) {

@@ -2,7 +2,6 @@ package org.parpe.gui.app;
 
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.GridData;
-import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
@@ -25,16 +24,15 @@ final class ViewBar {
     private final Button ids;
     private final Button reset;
     private final Prefs prefs;
+    private final Composite bar;
     private String file;
 
     ViewBar(Composite parent, IdeWindow ide, Prefs prefs) {
         this.ide = ide;
         this.prefs = prefs;
-        Composite bar = new Composite(parent, SWT.NONE);
+        // In a narrow 3D pane the check boxes and Reset view go behind a chevron (») instead of off the edge.
+        bar = new org.parpe.gui.panels.OverflowBar(parent).control();
         bar.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
-        GridLayout gl = new GridLayout(5, false);
-        gl.marginHeight = 2;
-        bar.setLayout(gl);
         new Label(bar, SWT.NONE).setText("Robot:");
         robot = new Combo(bar, SWT.READ_ONLY);
         robot.add(SimTarget.AUTO + " (from the script)");
@@ -59,6 +57,11 @@ final class ViewBar {
         reset.setToolTipText("Frame the whole robot again (or double-click the view). Drag: rotate; right-drag: pan; wheel: zoom");
         track.addListener(SWT.Selection, e -> prefs.put("view.track", Boolean.toString(track.getSelection())));
         ids.addListener(SWT.Selection, e -> prefs.put("view.ids", Boolean.toString(ids.getSelection())));
+    }
+
+    /** The bar (tests). */
+    Composite control() {
+        return bar;
     }
 
     /** Connects the check boxes to {@code view}. */

@@ -16,7 +16,6 @@ import org.eclipse.swt.dnd.TextTransfer;
 import org.eclipse.swt.dnd.Transfer;
 import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.layout.GridLayout;
-import org.eclipse.swt.layout.RowLayout;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
@@ -50,6 +49,7 @@ public final class GridPane implements GridView.Actions {
     private final Control text;
     private final ParslEditor editor;
     private final Composite box;
+    private final Composite bar;
     private final Combo choice;
     private final GridView grid;
     private final Label status;
@@ -76,8 +76,8 @@ public final class GridPane implements GridView.Actions {
         gl.marginWidth = 2;
         gl.marginHeight = 2;
         box.setLayout(gl);
-        Composite bar = new Composite(box, SWT.NONE);
-        bar.setLayout(new RowLayout(SWT.HORIZONTAL));
+        // One row whatever the width: the buttons that do not fit go behind a chevron (»), they never wrap.
+        bar = new org.parpe.gui.panels.OverflowBar(box).control();
         bar.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         new Label(bar, SWT.NONE).setText("Gait table:");
         choice = new Combo(bar, SWT.READ_ONLY);
@@ -263,7 +263,12 @@ public final class GridPane implements GridView.Actions {
         return table;
     }
 
-    /** Whether the grid is shown beside the text. */
+    /** The bar of the table's buttons (tests). */
+    public Composite toolBar() {
+        return bar;
+    }
+
+    /** Whether the grid is shown beside the editor. */
     public boolean visible() {
         return table != null && sash.getMaximizedControl() == null;
     }

@@ -34,7 +34,7 @@ public final class PlotView {
     public PlotView(Composite parent) {
         sash = new SashForm(parent, SWT.HORIZONTAL);
         chooser = new List(sash, SWT.MULTI | SWT.V_SCROLL | SWT.BORDER);
-        chooser.setToolTipText("Modules to plot (Ctrl+click for several)");
+        chooser.setToolTipText("Modules to plot: m3 is module 3 (Ctrl+click for several)");
         chooser.addListener(SWT.Selection, e -> refresh());
         chart = new Canvas(sash, SWT.DOUBLE_BUFFERED | SWT.NO_BACKGROUND);
         chart.addListener(SWT.Paint, this::paint);
@@ -57,7 +57,8 @@ public final class PlotView {
         ids = moduleIds.clone();
         chooser.removeAll();
         for (int id : ids) {
-            chooser.add("module " + id);
+            // As the chart's legend names them: short enough to be read in a narrow list.
+            chooser.add("m" + id);
         }
         chooser.setSelection(0, Math.min(2, ids.length - 1));
         chart.redraw();

@@ -154,6 +154,11 @@ public final class View3D {
         canvas.redraw();
     }
 
+    /** Whether the module IDs are shown. */
+    public boolean showIds() {
+        return labels;
+    }
+
     /** Forgets the robot drawn (another script was opened). */
     public void clear() {
         last = null;
