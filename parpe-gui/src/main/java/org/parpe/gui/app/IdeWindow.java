@@ -66,6 +66,7 @@ public final class IdeWindow {
     private Program program;
     private int validations;
     private boolean wasRunning;
+    private int zoom;
 
     public IdeWindow(Display display, Prefs prefs) {
         this.prefs = prefs;
@@ -186,6 +187,11 @@ public final class IdeWindow {
                 return;
             }
             var focus = e.display.getFocusControl();
+            if ((e.stateMask & SWT.MOD1) != 0 && focus != null && focus.getShell() == shell && zoomKey(e)) {
+                e.doit = false;
+                e.type = SWT.None;
+                return;
+            }
             if (focus == null || focus.getShell() != shell || !runs.running() || (e.stateMask & SWT.MODIFIER_MASK) != 0) {
                 return;
             }
@@ -197,6 +203,27 @@ public final class IdeWindow {
                 e.type = SWT.None;
             }
         }
+    }
+
+    /** Ctrl + / Ctrl − / Ctrl 0: larger, smaller, normal text in the editor, the log and the gait table (a projector). */
+    private boolean zoomKey(Event e) {
+        int step = e.character == '+' || e.character == '=' || e.keyCode == SWT.KEYPAD_ADD ? 1
+                : e.character == '-' || e.keyCode == SWT.KEYPAD_SUBTRACT ? -1 : e.character == '0' || e.keyCode == '0' ? 0 : 2;
+        if (step == 2) {
+            return false;
+        }
+        zoom = step == 0 ? 0 : Math.max(-4, Math.min(12, zoom + step));
+        org.parpe.gui.panels.Zoom.apply(editor.widget(), org.eclipse.jface.resource.JFaceResources.getTextFont(), zoom);
+        org.parpe.gui.panels.Zoom.apply(log, org.eclipse.jface.resource.JFaceResources.getTextFont(), zoom);
+        org.parpe.gui.panels.Zoom.apply(gaitGrid.widget(), shell.getDisplay().getSystemFont(), zoom);
+        status.setMessage(zoom == 0 ? "Text at its normal size (Ctrl+0)" : "Text " + (zoom > 0 ? "+" : "") + zoom * 2
+                + " points (Ctrl+plus, Ctrl+minus; Ctrl+0: normal)");
+        return true;
+    }
+
+    /** How many steps of 2 points the text is zoomed in (negative: out). */
+    int zoom() {
+        return zoom;
     }
 
     /** The keys the program binds to its controls, as the status bar names them during a run. */

@@ -10,7 +10,7 @@ import org.eclipse.swt.widgets.Control;
 
 /** Small helpers that give every pane the same framed, titled look. */
 final class Panels {
-    static final Color SELECTED = new Color(0xDC, 0xE6, 0xF4);
+    static final Color SELECTED = org.parpe.gui.panels.Theme.pick(0xDCE6F4, 0x2F4A6E);
 
     private Panels() {
     }

@@ -68,9 +68,9 @@ final class ResultsPlot {
     private void paint(Event e) {
         GC gc = e.gc;
         Rectangle area = canvas.getClientArea();
-        gc.setBackground(gc.getDevice().getSystemColor(SWT.COLOR_WHITE));
+        gc.setBackground(org.parpe.gui.panels.Theme.paper());
         gc.fillRectangle(area);
-        gc.setForeground(gc.getDevice().getSystemColor(SWT.COLOR_DARK_GRAY));
+        gc.setForeground(org.parpe.gui.panels.Theme.ink());
         List<SweepRow> rows = results == null ? List.of() : results.rows();
         if (rows.isEmpty() || area.width < LEFT + RIGHT + 40 || area.height < TOP + BOTTOM + 40) {
             gc.drawText(results == null ? "Start a sweep or an optimisation to plot its objective here."
@@ -199,7 +199,7 @@ final class ResultsPlot {
         void draw(GC gc, String title, String legend, String xLabel) {
             int bottom = area.height - BOTTOM;
             int right = area.width - RIGHT;
-            gc.setForeground(gc.getDevice().getSystemColor(SWT.COLOR_GRAY));
+            gc.setForeground(org.parpe.gui.panels.Theme.faint());
             for (double v : ticks(yr[0], yr[1])) {
                 gc.drawLine(LEFT, py(v), right, py(v));
                 String s = label(v);
@@ -211,7 +211,7 @@ final class ResultsPlot {
                 gc.drawText(s, px(v) - gc.textExtent(s).x / 2, bottom + 5, true);
             }
             gc.drawRectangle(LEFT, TOP, right - LEFT, bottom - TOP);
-            gc.setForeground(gc.getDevice().getSystemColor(SWT.COLOR_DARK_GRAY));
+            gc.setForeground(org.parpe.gui.panels.Theme.ink());
             gc.drawText(title, LEFT, 4, true);
             gc.drawText(legend, 4, area.height - gc.textExtent(legend).y - 2, true);
             gc.drawText(xLabel, right - gc.textExtent(xLabel).x, area.height - gc.textExtent(xLabel).y - 2, true);
