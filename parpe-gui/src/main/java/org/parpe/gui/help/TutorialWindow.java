@@ -29,7 +29,9 @@ import org.eclipse.swt.widgets.Shell;
 /**
  * Help → Tutorial: a window with the lessons of {@code docs/tutorial} on the left and the chosen
  * lesson on the right, rendered from its Markdown with its pictures. "Open the lesson's script"
- * puts the lesson's example in the editor (through the IDE's usual unsaved-text check).
+ * puts the lesson's example in the editor (through the IDE's usual unsaved-text check). A normal
+ * window, not one pinned above the IDE: it can go behind the editor and the 3D view, and it is
+ * sized to fit on the screen beside them (a 1366×768 laptop); it closes with the IDE.
  */
 public final class TutorialWindow {
     private static final int IMAGE_WIDTH = 720;
@@ -55,7 +57,13 @@ public final class TutorialWindow {
         this.folder = folder;
         this.openScript = openScript;
         this.pages = pages(folder);
-        shell = new Shell(parent, SWT.SHELL_TRIM);
+        // A top-level window (no parent): one transient for the IDE stays above it and hides the editor.
+        shell = new Shell(parent.getDisplay(), SWT.SHELL_TRIM);
+        parent.addListener(SWT.Dispose, e -> {
+            if (!shell.isDisposed()) {
+                shell.dispose();
+            }
+        });
         shell.setText("PARPE tutorial");
         shell.setLayout(new GridLayout(1, false));
         SashForm sash = new SashForm(shell, SWT.HORIZONTAL);
@@ -94,7 +102,17 @@ public final class TutorialWindow {
             disposeImages();
             heading.dispose();
         });
-        shell.setSize(1100, 800);
+        fitTo(parent.getMonitor().getClientArea());
+    }
+
+    /**
+     * At most 1100×800 and never past the screen's working area; on the right of it, so that the
+     * IDE's editor on the left stays in sight.
+     */
+    private void fitTo(org.eclipse.swt.graphics.Rectangle area) {
+        int w = Math.min(1100, Math.max(480, area.width * 45 / 100));
+        int h = Math.min(800, area.height);
+        shell.setBounds(area.x + area.width - w, area.y, w, h);
     }
 
     private static Button button(Composite parent, String label, Runnable action) {
@@ -208,15 +226,17 @@ public final class TutorialWindow {
         text.setStyleRanges(styles.toArray(new StyleRange[0]));
     }
 
-    /** The picture at {@code p}, scaled to at most {@value #IMAGE_WIDTH} pixels wide, or null. */
+    /** The picture at {@code p}, scaled to at most {@value #IMAGE_WIDTH} pixels and the text's width, or null. */
     private Image image(Path p) {
         if (!p.startsWith(folder) || !Files.isRegularFile(p)) {
             return null;
         }
         try {
             ImageData d = new ImageData(p.toString());
-            if (d.width > IMAGE_WIDTH) {
-                d = d.scaledTo(IMAGE_WIDTH, Math.max(1, d.height * IMAGE_WIDTH / d.width));
+            int room = text.getClientArea().width - 40;
+            int max = room > 200 ? Math.min(IMAGE_WIDTH, room) : IMAGE_WIDTH;
+            if (d.width > max) {
+                d = d.scaledTo(max, Math.max(1, d.height * max / d.width));
             }
             Image img = new Image(shell.getDisplay(), d);
             images.add(img);

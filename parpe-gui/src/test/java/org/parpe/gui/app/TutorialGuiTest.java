@@ -2,6 +2,7 @@ package org.parpe.gui.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
@@ -49,6 +50,32 @@ class TutorialGuiTest {
                     "the lesson's script in the editor");
         } finally {
             w.shell().dispose();
+        }
+    }
+
+    /**
+     * Issue 23, item 2: the tutorial was transient for the IDE (pinned above it, covering the
+     * editor and the 3D view) and ran past the bottom of the screen. Now it is a window of its own
+     * that fits the screen's working area, at 1366×768 too, and closes with the IDE.
+     */
+    @Test
+    void theTutorialIsANormalWindowThatFitsOnTheScreen() throws Exception {
+        IdeWindow small = Gui.openIde(Files.createTempDirectory("parpe-tutorial-small"));
+        try {
+            small.shell().setBounds(0, 0, 1366, 768);
+            TutorialWindow w = new TutorialWindow(small.shell(), Examples.tutorialFolder(), p -> { });
+            w.open();
+            Gui.settle();
+            assertNull(w.shell().getParent(), "the tutorial is not pinned above the IDE");
+            org.eclipse.swt.graphics.Rectangle area = small.shell().getMonitor().getClientArea();
+            org.eclipse.swt.graphics.Rectangle b = w.shell().getBounds();
+            assertTrue(area.contains(b.x, b.y) && b.x + b.width <= area.x + area.width && b.y + b.height <= area.y + area.height,
+                    "the tutorial " + b + " runs past the screen " + area);
+            assertTrue(b.width <= area.width / 2 + 1 || b.width <= 1100, "it leaves room for the editor: " + b);
+            small.shell().dispose();
+            assertTrue(w.shell().isDisposed(), "the tutorial closes with the IDE");
+        } finally {
+            Gui.closeIde(small);
         }
     }
 }
