@@ -318,15 +318,46 @@ public final class IdeWindow {
             plots.setModules(program.moduleIds());
             runs.updatePreview(program);
         }
-        long errors = problems.errorCount();
         if (!runs.running()) {
-            status.setMessage((errors == 0 ? "No problems" : errors + " error(s): see Problems")
+            status.setMessage(problemCounts()
                     + (editor.plain() ? "   \u2014   no colouring: the file is over " + ParslEditor.COLOUR_LIMIT / 1_000_000 + " MB" : ""));
+        }
+    }
+
+    /**
+     * What Problems holds, in words: "No problems" only when it is empty. The status bar says this
+     * after each check of the text and whenever Problems changes, so the two never disagree.
+     */
+    String problemCounts() {
+        long errors = problems.errorCount();
+        long warnings = problems.shown().size() - errors;
+        if (errors == 0 && warnings == 0) {
+            return "No problems";
+        }
+        return (errors == 0 ? "" : errors + (errors == 1 ? " error" : " errors")) + (errors > 0 && warnings > 0 ? ", " : "")
+                + (warnings == 0 ? "" : warnings + (warnings == 1 ? " warning" : " warnings")) + ": see Problems";
+    }
+
+    /** Whether Problems is the tab in front below the editor (tests). */
+    boolean problemsInFront() {
+        return bottom.getSelectionIndex() == 0;
+    }
+
+    /** Brings Problems to the front (a refused Run: what to fix is there). */
+    void showProblems() {
+        bottom.setSelection(0);
+        if (editorSplit.getWeights()[1] < 150) {
+            editorSplit.setWeights(72, 28);
         }
     }
 
     /** The Problems view changed: mark this file's problems in the editor. */
     private void markProblems() {
+        String now = status.message();
+        if (now.equals("No problems") || now.endsWith(": see Problems") || now.contains(": see Problems   ")) {
+            status.setMessage(problemCounts());
+        }
+        status.setProblems(problems.errorCount(), problems.shown().size() - problems.errorCount());
         Path mine = files.pathForLoading().toAbsolutePath().normalize();
         List<Diagnostic> mineOnly = problems.shown().stream().filter(d -> sameFile(d.pos(), mine))
                 .limit(ParslEditor.MARKER_LIMIT).toList();

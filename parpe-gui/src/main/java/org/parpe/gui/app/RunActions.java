@@ -143,6 +143,7 @@ final class RunActions implements ControlPanel.Target {
         ide.showValidation(first);
         if (first.program() == null) {
             ide.status().setMessage("Cannot run: fix the " + first.errors().size() + " error(s) listed in Problems first.");
+            ide.showProblems();
             ide.shell().getDisplay().beep();
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, "script has errors"));
             return;
@@ -160,6 +161,7 @@ final class RunActions implements ControlPanel.Target {
             String why = loaded.parameterErrors().isEmpty() ? "the script has errors with these parameter values"
                     : loaded.parameterErrors().get(0).message();
             ide.status().setMessage("Cannot run: " + why);
+            ide.showProblems();
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, why));
             return;
         }

@@ -14,6 +14,7 @@ public final class StatusBar {
     private final Composite bar;
     private final Label message;
     private final Label keys;
+    private final Label counts;
     private final Label sim;
     private final Label hardware;
     private final Label time;
@@ -21,12 +22,16 @@ public final class StatusBar {
 
     public StatusBar(Composite parent) {
         bar = new Composite(parent, SWT.NONE);
-        GridLayout gl = new GridLayout(10, false);
+        GridLayout gl = new GridLayout(12, false);
         gl.marginHeight = 2;
         gl.marginWidth = 6;
         bar.setLayout(gl);
         message = field(SWT.DEFAULT, true);
         keys = field(SWT.DEFAULT, false);
+        separator();
+        counts = field(SWT.DEFAULT, false);
+        counts.setText("\u2716 0  \u26a0 0");
+        counts.setToolTipText("Errors and warnings in Problems");
         keys.setToolTipText("During a run these keys steer the robot, even in the editor (they never type into the script);"
                 + " in a box for a value they type. Esc stops the run.");
         separator();
@@ -80,6 +85,20 @@ public final class StatusBar {
 
     public String keys() {
         return keys.getText();
+    }
+
+    /** The numbers of errors and warnings in Problems, always as Problems shows them. */
+    public void setProblems(long errors, long warnings) {
+        String t = "\u2716 " + errors + "  \u26a0 " + warnings;
+        if (!t.equals(counts.getText())) {
+            counts.setText(t);
+            counts.setToolTipText(errors + " error(s) and " + warnings + " warning(s) in Problems");
+            bar.layout(true);
+        }
+    }
+
+    public String problems() {
+        return counts.getText();
     }
 
     public void setSim(String text) {
