@@ -72,6 +72,8 @@ final class FileActions {
     private Path example;
     private String savedText = "";
     private String autosavedText;
+    /** The text the user chose not to save ("Don't Save"), or null: not copied unless edited again. */
+    private String discardedText;
     private String slot;
     private boolean recovered;
     private boolean loading;
@@ -275,6 +277,7 @@ final class FileActions {
     private void show(Path p, String text, String saved, String recoveredSlot, Path exampleOf) {
         stopReading();
         example = exampleOf;
+        discardedText = null;
         loading = true;
         try {
             editor.setText(text);
@@ -366,7 +369,10 @@ final class FileActions {
             case 1 -> {
                 if (!recovered) {
                     autosave.clear(slot);
-                    autosavedText = null; // copied again if the text stays after all (Open cancelled)
+                    autosavedText = null;
+                    // Not copied again while another question is open (the timer runs on): only
+                    // when the text stays after all and is edited (Open cancelled).
+                    discardedText = editor.document().get();
                 }
                 yield true;
             }
@@ -381,7 +387,7 @@ final class FileActions {
      */
     boolean offerRecovery() {
         for (Autosave.Copy c : autosave.orphans()) {
-            String where = c.file() == null ? "an untitled script" : c.file().getFileName().toString();
+            String where = c.describe();
             int answer = questions.ask("Recover unsaved work", "A PARPE window closed without saving " + where
                     + ". Recover its unsaved text?", "Recover", "Discard", "Not Now");
             if (answer == 1) {
@@ -411,7 +417,7 @@ final class FileActions {
                 saved = "";
             }
         }
-        show(c.file(), c.text(), saved, adopted);
+        show(c.file(), c.text(), saved, adopted, c.file() == null ? c.example() : null);
         return true;
     }
 
@@ -428,11 +434,20 @@ final class FileActions {
     /** Writes the autosave copy if the text is unsaved and changed since the last copy. */
     void autosaveNow() {
         String text = editor.document().get();
-        if (!dirty() || text.equals(autosavedText)) {
+        if (!dirty()) {
+            if (autosavedText != null) {
+                // Undone back to the saved text: a copy of it would be offered after a crash for nothing.
+                autosave.clear(slot);
+                autosavedText = null;
+            }
             return;
         }
+        if (text.equals(autosavedText) || text.equals(discardedText)) {
+            return;
+        }
+        discardedText = null;
         try {
-            autosave.write(slot, file, text);
+            autosave.write(slot, file, file == null ? example : null, text);
             autosavedText = text;
         } catch (IOException e) {
             // Keep editing; the next attempt may succeed (disk full, folder removed).
