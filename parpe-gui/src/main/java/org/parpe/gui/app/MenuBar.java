@@ -222,6 +222,15 @@ final class MenuBar {
                     + " examples. It is also online with the PARPE sources, in docs/tutorial/index.md.");
             return;
         }
-        new TutorialWindow(ide.shell(), folder, p -> ide.files().openExample(p)).open();
+        new TutorialWindow(ide.shell(), folder, p -> ide.files().openExample(p), code -> {
+            // At the caret, on a line of its own, as one change that Edit > Undo takes back.
+            var w = ide.editor().widget();
+            int at = w.getCaretOffset();
+            String line = at > 0 && !ide.editor().document().get().substring(0, at).endsWith("\n") ? "\n" : "";
+            w.replaceTextRange(at, 0, line + code + "\n");
+            ide.shell().forceActive();
+            ide.status().setMessage("The lesson's code is in the editor at line " + (w.getLineAtOffset(at) + 1)
+                    + " (Edit > Undo takes it back).");
+        }).open();
     }
 }

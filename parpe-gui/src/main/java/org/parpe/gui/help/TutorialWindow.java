@@ -47,6 +47,8 @@ public final class TutorialWindow {
     private final Font code;
     private final List<Image> images = new ArrayList<>();
     private final Consumer<Path> openScript;
+    private final Consumer<String> insertCode;
+    private final List<Target> links = new ArrayList<>();
     private Path script;
 
     /**
@@ -54,8 +56,17 @@ public final class TutorialWindow {
      * {@code teachers.md}); {@code openScript} opens a lesson's script in the editor.
      */
     public TutorialWindow(Shell parent, Path folder, Consumer<Path> openScript) {
+        this(parent, folder, openScript, null);
+    }
+
+    /**
+     * As {@link #TutorialWindow(Shell, Path, Consumer)}; {@code insertCode} (may be null) puts a
+     * lesson's XML into the editor, offered under each XML code block.
+     */
+    public TutorialWindow(Shell parent, Path folder, Consumer<Path> openScript, Consumer<String> insertCode) {
         this.folder = folder;
         this.openScript = openScript;
+        this.insertCode = insertCode;
         this.pages = pages(folder);
         // A top-level window (no parent): one transient for the IDE stays above it and hides the editor.
         shell = new Shell(parent.getDisplay(), SWT.SHELL_TRIM);
@@ -75,6 +86,19 @@ public final class TutorialWindow {
         FontData fd = text.getFont().getFontData()[0];
         heading = new Font(shell.getDisplay(), fd.getName(), Math.round(fd.getHeight() * 1.35f), SWT.BOLD);
         code = JFaceResources.getTextFont();
+        text.addListener(SWT.MouseUp, e -> {
+            if (e.button == 1 && text.getSelectionCount() == 0) {
+                int at = text.getOffsetAtPoint(new org.eclipse.swt.graphics.Point(e.x, e.y));
+                if (at >= 0) {
+                    click(at);
+                }
+            }
+        });
+        text.addListener(SWT.MouseMove, e -> {
+            int at = text.getOffsetAtPoint(new org.eclipse.swt.graphics.Point(e.x, e.y));
+            boolean over = at >= 0 && links.stream().anyMatch(t -> at >= t.start() && at < t.start() + t.length());
+            text.setCursor(over ? text.getDisplay().getSystemCursor(SWT.CURSOR_HAND) : null);
+        });
         text.addPaintObjectListener(e -> {
             Object data = e.style.data;
             if (data instanceof Image img && !img.isDisposed()) {
@@ -174,7 +198,10 @@ public final class TutorialWindow {
         disposeImages();
         StringBuilder all = new StringBuilder();
         List<StyleRange> styles = new ArrayList<>();
+        List<int[]> tables = new ArrayList<>();
+        links.clear();
         Color codeBack = shell.getDisplay().getSystemColor(SWT.COLOR_WIDGET_LIGHT_SHADOW);
+        Color link = shell.getDisplay().getSystemColor(SWT.COLOR_LINK_FOREGROUND);
         for (Markdown.Block b : page.blocks()) {
             int start = all.length();
             String indent = b.kind() == Markdown.Kind.ITEM ? "    ".repeat(Math.max(0, b.level() - 1)) + "  " : "";
@@ -199,6 +226,14 @@ public final class TutorialWindow {
                     StyleRange r = new StyleRange(start, b.text().length(), null, codeBack);
                     r.font = code;
                     styles.add(r);
+                    if (insertCode != null && b.text().strip().startsWith("<")) {
+                        // A lesson's XML goes to the editor with one click (inserted at the caret, one undo).
+                        String action = "\n\u25b6 Insert this code into the editor";
+                        int at = all.length() + 1;
+                        all.append(action);
+                        links.add(new Target(at, action.length() - 1, null, b.text()));
+                        styles.add(linkStyle(at, action.length() - 1, link));
+                    }
                 }
                 default -> {
                     all.append(indent).append(b.text());
@@ -207,15 +242,14 @@ public final class TutorialWindow {
                         StyleRange r = new StyleRange(start, b.text().length(), null, null);
                         r.font = heading;
                         styles.add(r);
-                    } else {
-                        for (Markdown.Span s : b.spans()) {
-                            StyleRange r = new StyleRange(base + s.start(), s.length(), null, null);
-                            if (s.code()) {
-                                r.font = code;
-                            } else {
-                                r.fontStyle = SWT.BOLD;
-                            }
-                            styles.add(r);
+                    }
+                    if (b.kind() == Markdown.Kind.TABLE) {
+                        tables.add(new int[] {start, b.text().split("\n", -1).length});
+                    }
+                    for (Markdown.Span s : b.spans()) {
+                        styles.add(span(base + s.start(), s, link));
+                        if (s.style() == Markdown.Style.LINK) {
+                            links.add(new Target(base + s.start(), s.length(), s.target(), null));
                         }
                     }
                 }
@@ -223,7 +257,131 @@ public final class TutorialWindow {
             all.append("\n\n");
         }
         text.setText(all.toString());
-        text.setStyleRanges(styles.toArray(new StyleRange[0]));
+        styles.sort(java.util.Comparator.comparingInt(r -> r.start));
+        text.setStyleRanges(merge(styles));
+        for (int[] t : tables) {
+            tabStops(t[0], t[1]);
+        }
+    }
+
+    private StyleRange span(int at, Markdown.Span s, Color link) {
+        StyleRange r = new StyleRange(at, s.length(), null, null);
+        switch (s.style()) {
+            case CODE -> r.font = code;
+            case BOLD -> r.fontStyle = SWT.BOLD;
+            case ITALIC -> r.fontStyle = SWT.ITALIC;
+            case LINK -> {
+                return linkStyle(at, s.length(), link);
+            }
+        }
+        return r;
+    }
+
+    private static StyleRange linkStyle(int at, int length, Color link) {
+        StyleRange r = new StyleRange(at, length, link, null);
+        r.underline = true;
+        r.underlineStyle = SWT.UNDERLINE_LINK;
+        return r;
+    }
+
+    /**
+     * Style ranges that never overlap (StyledText refuses overlapping ones): where a run lies
+     * inside another (bold inside a link), the inner one is kept with the outer one's font.
+     */
+    private static StyleRange[] merge(List<StyleRange> sorted) {
+        List<StyleRange> out = new ArrayList<>();
+        int end = 0;
+        for (StyleRange r : sorted) {
+            if (r.start >= end) {
+                out.add(r);
+                end = r.start + r.length;
+            } else if (r.underline && !out.isEmpty()) {
+                // A link around code: the code keeps its font and looks like a link too.
+                StyleRange kept = out.get(out.size() - 1);
+                kept.underline = true;
+                kept.underlineStyle = r.underlineStyle;
+                kept.foreground = r.foreground;
+            }
+        }
+        return out.toArray(new StyleRange[0]);
+    }
+
+    /** Tab stops for a table's {@code lines} lines from {@code offset}: each column as wide as its widest cell. */
+    private void tabStops(int offset, int lines) {
+        int first = text.getLineAtOffset(offset);
+        org.eclipse.swt.graphics.GC gc = new org.eclipse.swt.graphics.GC(text);
+        try {
+            List<Integer> widths = new ArrayList<>();
+            for (int l = first; l < first + lines; l++) {
+                String[] cells = text.getLine(l).split("\t", -1);
+                for (int c = 0; c < cells.length; c++) {
+                    int w = gc.textExtent(cells[c]).x + 24;
+                    if (widths.size() <= c) {
+                        widths.add(w);
+                    } else {
+                        widths.set(c, Math.max(widths.get(c), w));
+                    }
+                }
+            }
+            int[] stops = new int[Math.max(1, widths.size() - 1)];
+            int x = 0;
+            for (int c = 0; c < stops.length && c < widths.size(); c++) {
+                x += widths.get(c);
+                stops[c] = x;
+            }
+            text.setLineTabStops(first, lines, stops);
+        } finally {
+            gc.dispose();
+        }
+    }
+
+    /** A clickable run: a link's target, or code to put into the editor. */
+    private record Target(int start, int length, String link, String code) {
+    }
+
+    /** Follows the link or sends the code under {@code offset}, if any. */
+    private void click(int offset) {
+        for (Target t : links) {
+            if (offset >= t.start() && offset < t.start() + t.length()) {
+                if (t.code() != null) {
+                    insertCode.accept(t.code());
+                } else {
+                    follow(t.link());
+                }
+                return;
+            }
+        }
+    }
+
+    private void follow(String target) {
+        if (target.startsWith("http://") || target.startsWith("https://")) {
+            org.eclipse.swt.program.Program.launch(target);
+            return;
+        }
+        Path page = pages.isEmpty() ? null : pages.get(index.getSelectionIndex() < 0 ? 0 : index.getSelectionIndex()).getParent();
+        String file = target.replaceFirst("#.*$", "");
+        Path p = page == null || file.isEmpty() ? null : page.resolve(file).normalize();
+        if (p == null) {
+            return;
+        }
+        int i = pages.indexOf(p);
+        if (i >= 0) {
+            show(i);
+        } else if (file.endsWith(".xml") && Files.isRegularFile(p)) {
+            openScript.accept(p);
+        } else if (Files.exists(p)) {
+            org.eclipse.swt.program.Program.launch(p.toString());
+        }
+    }
+
+    /** The clickable runs of the page shown: [start, length] each (tests). */
+    public List<int[]> clickable() {
+        return links.stream().map(t -> new int[] {t.start(), t.length()}).toList();
+    }
+
+    /** Clicks the text at {@code offset} (tests). */
+    public void clickAt(int offset) {
+        click(offset);
     }
 
     /** The picture at {@code p}, scaled to at most {@value #IMAGE_WIDTH} pixels and the text's width, or null. */

@@ -78,4 +78,38 @@ class TutorialGuiTest {
             Gui.closeIde(small);
         }
     }
+
+    /**
+     * Issue 23, item 11: the tutorial's tables were runs of words, italics kept their asterisks,
+     * links could not be clicked, and a lesson's code could not be sent to the editor.
+     */
+    @Test
+    void tablesItalicsLinksAndCodeForTheEditor() throws Exception {
+        java.util.List<String> sent = new java.util.ArrayList<>();
+        java.util.List<Path> opened = new java.util.ArrayList<>();
+        TutorialWindow w = new TutorialWindow(ide.shell(), Examples.tutorialFolder(), opened::add, sent::add);
+        w.open();
+        try {
+            int lesson11 = java.util.Arrays.asList(w.titles()).indexOf(
+                    java.util.Arrays.stream(w.titles()).filter(t -> t.startsWith("Lesson 11")).findFirst().orElseThrow());
+            w.show(lesson11);
+            Gui.settle();
+            assertTrue(w.shownText().contains("\t"), "a table's cells are in columns (tab stops)");
+            assertTrue(!w.shownText().contains("*"), "no literal asterisks of italics or bold");
+            assertTrue(w.shownText().contains("\u25b6 Insert this code into the editor"), "XML code can go to the editor");
+            int insert = w.shownText().indexOf("\u25b6 Insert this code into the editor");
+            w.clickAt(insert + 3);
+            assertEquals(1, sent.size());
+            assertTrue(sent.get(0).strip().startsWith("<"), sent.get(0));
+            // A link to a script opens it; a link to another lesson shows it.
+            String text = w.shownText();
+            int[] script = w.clickable().stream().filter(c -> text.substring(c[0], c[0] + c[1]).endsWith(".xml"))
+                    .findFirst().orElseThrow(() -> new AssertionError("lesson 11 links no script"));
+            w.clickAt(script[0]);
+            assertEquals(1, opened.size(), "the linked script was not opened");
+            Gui.screenshot(w.shell(), "tutorial-lesson-11.png");
+        } finally {
+            w.shell().dispose();
+        }
+    }
 }
