@@ -48,6 +48,8 @@ public final class GridPane implements GridView.Actions {
     private final SashForm sash;
     private final Control text;
     private final ParslEditor editor;
+    /** The widest table the grid shows (each column is a widget made on the UI thread). */
+    public static final int MAX_COLUMNS = 400;
     private final Composite box;
     private final Composite bar;
     private final Combo choice;
@@ -170,6 +172,18 @@ public final class GridPane implements GridView.Actions {
         List<Integer> modules = Modules.of(program, table.name());
         int width = table.width();
         int columns = width == 1 && modules != null ? 1 : Math.max(width, modules == null ? 0 : modules.size());
+        if (columns > MAX_COLUMNS) {
+            // A row of thousands of entries would make as many table columns on the UI thread (minutes):
+            // the grid says so and the text stays the place to edit it.
+            grid.show(List.of(TIMES), List.of(), Map.of(), new boolean[] {true}, false);
+            for (Button b : commands) {
+                b.setEnabled(false);
+            }
+            status.setText(table.name() + ": " + table.rows().size() + " rows \u00d7 " + columns + " columns, more than the "
+                    + MAX_COLUMNS + " the grid shows: edit this table in the text.");
+            box.layout();
+            return;
+        }
         List<String> headers = new ArrayList<>();
         headers.add(TIMES);
         for (int c = 0; c < columns; c++) {
