@@ -30,13 +30,7 @@ class Lesson11IdeSweepTest {
 
     @AfterEach
     void close() {
-        if (dialog != null && !dialog.shell().isDisposed()) {
-            if (dialog.running()) {
-                Ui.click(dialog.stopButton());
-                Ui.pump(() -> !dialog.running(), "the sweep to stop");
-            }
-            dialog.shell().dispose();
-        }
+        Ui.close(dialog);
         if (window != null) {
             window.dispose();
         }
@@ -58,8 +52,8 @@ class Lesson11IdeSweepTest {
         dialog = SweepDialog.open(new SweepHost(window, editor, () -> file, () -> "auto", d -> { }));
         dialog.setJobs(2);
         dialog.setDuration("30");
-        vary("bend", "10", "70", 7);
-        vary("period", "1", "2", 3);
+        Ui.vary(dialog, "bend", "10", "70", 7);
+        Ui.vary(dialog, "period", "1", "2", 3);
         SweepTab.Line phase = dialog.sweepTab().line("phase");
         phase.hold().setText("0.125");
         Ui.click(dialog.startButton());
@@ -77,14 +71,5 @@ class Lesson11IdeSweepTest {
         // The run column of the table says the same number as the CSV's.
         assertEquals(said.group(4), dialog.table().cell(Integer.parseInt(said.group(4)), 0));
         Ui.screenshot(dialog.shell(), "sweep-dialog-lesson11.png");
-    }
-
-    private void vary(String name, String from, String to, int values) {
-        SweepTab.Line l = dialog.sweepTab().line(name);
-        assertNotNull(l, "no line for parameter " + name);
-        l.vary().setSelection(true);
-        l.from().setText(from);
-        l.to().setText(to);
-        l.values().setSelection(values);
     }
 }

@@ -76,23 +76,12 @@ class SweepDialogGuiTest {
 
     @AfterEach
     void close() {
-        if (dialog != null && !dialog.shell().isDisposed()) {
-            if (dialog.running()) {
-                Ui.click(dialog.stopButton());
-                Ui.pump(() -> !dialog.running(), "the sweep to stop");
-            }
-            dialog.shell().dispose();
-        }
+        Ui.close(dialog);
         window.dispose();
     }
 
     private void vary(String name, String from, String to, int values) {
-        SweepTab.Line l = dialog.sweepTab().line(name);
-        assertNotNull(l, "no line for parameter " + name);
-        l.vary().setSelection(true);
-        l.from().setText(from);
-        l.to().setText(to);
-        l.values().setSelection(values);
+        Ui.vary(dialog, name, from, to, values);
     }
 
     private void runToEnd() {
