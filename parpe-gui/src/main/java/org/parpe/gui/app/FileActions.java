@@ -22,6 +22,7 @@ import org.parpe.gui.editor.ParslEditor;
 final class FileActions {
     static final String TEMPLATE = String.join("\n",
             "<?xml version=\"1.0\"?>",
+            "<!-- New to PARPE? Help > Tutorial teaches it step by step, from a first pose to a race. -->",
             "<program>",
             "  <robot>",
             "    <structure>",
@@ -175,11 +176,11 @@ final class FileActions {
             return;
         }
         FileDialog d = new FileDialog(shell, SWT.OPEN);
+        d.setText("Open a PARSL script");
         d.setFilterExtensions(new String[] {"*.xml", "*"});
         d.setFilterNames(new String[] {"PARSL scripts (*.xml)", "All files"});
-        if (file != null && file.getParent() != null) {
-            d.setFilterPath(file.getParent().toString());
-        }
+        // Where Save As would start: the script's folder, else Documents (never the process's folder).
+        d.setFilterPath(saveFolder(file, Examples.folder(), Path.of(System.getProperty("user.home"))).toString());
         String p = d.open();
         if (p != null) {
             openPath(Path.of(p));

@@ -40,7 +40,9 @@ public final class IdeWindow {
     static final int RUN_PROBLEM_LIMIT = 500;
 
     private static final String MAXIMISED = "window.maximised";
+    private static final String FIRST_START = "tutorial.offered";
     private final Prefs prefs;
+    private final MenuBar menus;
     private final RunChoices choices;
     private final ParslEditor editor;
     private final GridPane gaitGrid;
@@ -122,7 +124,8 @@ public final class IdeWindow {
         status = new StatusBar(shell);
         status.control().setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         files = new FileActions(shell, editor, prefs, this::documentChanged, this::fileSwitched, status::setMessage);
-        new MenuBar(this).install();
+        menus = new MenuBar(this);
+        menus.install();
         wire(display);
         // After wire(): the panel shows its posed robot in the 3D view, and the run's otherwise.
         pose = new PosePanel(bottom, new PoseBridge(this));
@@ -276,6 +279,11 @@ public final class IdeWindow {
             status.setMessage("Recovered unsaved text; " + file.getFileName() + " was not opened (File > Open it when ready).");
         }
         editor.widget().setFocus();
+        if (!automated && prefs.get(FIRST_START, null) == null) {
+            // Someone who has never used PARPE (a student who has never programmed) meets the tutorial first.
+            prefs.put(FIRST_START, "done");
+            menus.openTutorial();
+        }
     }
 
     /** A different file is in the editor: forget what belonged to the previous one. */

@@ -215,7 +215,7 @@ final class MenuBar {
     }
 
     /** Help → Tutorial: the lessons beside the examples ({@code docs/tutorial}), in their own window. */
-    private void openTutorial() {
+    void openTutorial() {
         Path folder = Examples.tutorialFolder();
         if (folder == null) {
             MessageDialog.openInformation(ide.shell(), "Tutorial", "The tutorial (docs/tutorial) was not found next to the"

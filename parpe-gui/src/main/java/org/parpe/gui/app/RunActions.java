@@ -63,6 +63,8 @@ final class RunActions implements ControlPanel.Target {
     private volatile String hardwareState = "Hardware: not connected";
     private String previewKey = "";
     private RunOutcome lastOutcome;
+    /** Whether the run going on was ended by the emergency stop. */
+    private boolean emergency;
     private volatile SimMetrics lastMetrics;
 
     RunActions(IdeWindow ide) {
@@ -301,6 +303,8 @@ final class RunActions implements ControlPanel.Target {
 
     private void ended(RunOutcome outcome) {
         lastOutcome = outcome;
+        boolean emergency = this.emergency;
+        this.emergency = false;
         String t = String.format(java.util.Locale.ROOT, "%.2f s", outcome.time());
         SimMetrics m = lastMetrics;
         lastMetrics = null;
@@ -321,8 +325,10 @@ final class RunActions implements ControlPanel.Target {
                 ide.status().setMessage("Run completed at t = " + t + travelled);
             }
             case STOPPED -> {
-                ide.log("Run stopped at t = " + t + travelled);
-                ide.status().setMessage("Run stopped at t = " + t + travelled);
+                // An emergency stop is not an ordinary stop: the log and the status bar say which it was.
+                String how = emergency ? "Emergency stop at t = " : "Run stopped at t = ";
+                ide.log(how + t + travelled);
+                ide.status().setMessage(how + t + travelled);
             }
             case ERROR -> {
                 ide.log("Run failed: " + outcome.message());
@@ -384,6 +390,7 @@ final class RunActions implements ControlPanel.Target {
             s.emergencyStop();
         }
         if (controller.running()) {
+            emergency = true;
             ide.log("EMERGENCY STOP");
             ide.status().setMessage("Emergency stop");
         }

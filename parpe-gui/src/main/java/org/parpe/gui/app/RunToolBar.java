@@ -88,6 +88,7 @@ final class RunToolBar {
         browse.setToolTipText("Choose a hardware profile");
         browse.addListener(SWT.Selection, e -> {
             FileDialog d = new FileDialog(bar.getShell(), SWT.OPEN);
+            d.setText("Hardware profile");
             d.setFilterExtensions(new String[] {"*.xml", "*"});
             String chosen = d.open();
             if (chosen != null) {

@@ -59,6 +59,7 @@ public final class SweepDialog {
     private Results results;
     private SweepRunner runner;
     private int total;
+    private long startedAt;
     /** Counts the starts, so that news of an earlier one can never reach the later one's table. */
     private int generation;
 
@@ -82,7 +83,7 @@ public final class SweepDialog {
         progress.setMaximum(1000);
         progress.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         counts = new Label(bar, SWT.NONE);
-        counts.setLayoutData(new GridData(200, SWT.DEFAULT));
+        counts.setLayoutData(new GridData(280, SWT.DEFAULT));
         message = new Label(shell, SWT.WRAP);
         GridData wrap = new GridData(SWT.FILL, SWT.CENTER, true, false);
         wrap.widthHint = 300;
@@ -208,6 +209,7 @@ public final class SweepDialog {
         pane.show(results);
         progress.setSelection(0);
         counts.setText("0 of " + total + " runs");
+        startedAt = System.nanoTime();
         info(String.format(Locale.ROOT, "Running %d simulation(s) of %s s on %d thread(s)\u2026", total,
                 settings.duration().trim(), settings.jobs()));
         setRunning(true);
@@ -233,7 +235,7 @@ public final class SweepDialog {
             rows.forEach(results::add);
             pane.refresh();
             progress.setSelection(of == 0 ? 0 : (int) (1000L * done / of));
-            counts.setText(done + " of " + of + " runs");
+            counts.setText(done + " of " + of + " runs" + timeLeft(done, of));
             apply.setEnabled(results.best() != null);
         }
 
@@ -269,6 +271,17 @@ public final class SweepDialog {
                 host.problems().accept(problems);
             }
         }
+    }
+
+    /** ", about 1 min 20 s left" from the pace so far, or empty before the first run is done. */
+    private String timeLeft(int done, int of) {
+        if (done <= 0 || done >= of) {
+            return "";
+        }
+        double left = (System.nanoTime() - startedAt) / 1e9 / done * (of - done);
+        long s = Math.round(left);
+        return ", about " + (s >= 3600 ? s / 3600 + " h " + s % 3600 / 60 + " min"
+                : s >= 60 ? s / 60 + " min " + s % 60 + " s" : s + " s") + " left";
     }
 
     /** Why no run of {@code all} can be the best, with the counts the table's columns show. */
@@ -321,6 +334,8 @@ public final class SweepDialog {
 
     private void saveCsv() {
         FileDialog d = new FileDialog(shell, SWT.SAVE);
+        d.setText("Save the runs as CSV");
+        d.setFilterPath(csvFolder(host.script().get(), Path.of(System.getProperty("user.home"))).toString());
         d.setFilterExtensions(new String[] {"*.csv", "*"});
         d.setOverwrite(true);
         String name = host.script().get().getFileName().toString().replaceFirst("\\.xml$", "");
@@ -329,6 +344,19 @@ public final class SweepDialog {
         if (p != null) {
             saveCsv(Path.of(p));
         }
+    }
+
+    /**
+     * Where Save CSV… starts: beside the script when that folder can be written (not the examples'
+     * install folder), else Documents, else the home folder; never the process's working folder.
+     */
+    static Path csvFolder(Path script, Path home) {
+        Path parent = script == null ? null : script.toAbsolutePath().normalize().getParent();
+        if (parent != null && java.nio.file.Files.isWritable(parent)) {
+            return parent;
+        }
+        Path documents = home.resolve("Documents");
+        return java.nio.file.Files.isDirectory(documents) ? documents : home;
     }
 
     /** Writes the rows to {@code file} off the UI thread and says when it is done. */
