@@ -192,9 +192,13 @@ public final class GridPane implements GridView.Actions {
         }
         List<List<String>> rows = new ArrayList<>();
         List<String> times = table.timeTexts();
+        // Without times="…" every row gets an equal share of the period: show it in seconds (lesson 2's
+        // 0.5 s), not a bare "1" that reads as one second.
+        Double share = times == null ? Modules.secondsPerRow(program, table.name(), table.rows().size()) : null;
+        String equal = share == null ? "equal" : org.parpe.core.model.Numbers.format(share) + " s";
         for (int r = 0; r < table.rows().size(); r++) {
             List<String> row = new ArrayList<>();
-            row.add(times == null ? "1" : r < times.size() ? times.get(r) : "");
+            row.add(times == null ? equal : r < times.size() ? times.get(r) : "");
             row.addAll(table.texts().get(r));
             rows.add(row);
         }
