@@ -249,16 +249,21 @@ public final class SweepDialog {
                 error(StartRequest.words(error));
                 return;
             }
-            results.replace(all);
+            // Stopped: the engine keeps only the runs finished in order; the table keeps every run that
+            // finished (they were shown as they came), so Stop never throws finished work away.
+            if (!cancelled || all.size() >= results.rows().size()) {
+                results.replace(all);
+            }
+            List<SweepRow> kept = results.rows();
             pane.refresh();
-            counts.setText(all.size() + " of " + total + " runs");
+            counts.setText(kept.size() + " of " + total + " runs");
             if (!cancelled) {
                 progress.setSelection(1000);
             }
             SweepRow best = results.best();
-            String head = cancelled ? "Stopped after " + all.size() + " of " + total + " runs. "
-                    : "Finished " + all.size() + " runs. ";
-            info(head + (best == null ? noBest(all)
+            String head = cancelled ? "Stopped after " + kept.size() + " of " + total + " runs. "
+                    : "Finished " + kept.size() + " runs. ";
+            info(head + (best == null ? noBest(kept)
                     : "Best: run " + results.number(best) + ", " + Results.describe(best.values()) + ": "
                     + results.objective().label() + " " + ResultsTable.number(results.objective().of(best))
                     + (best.fell() ? " (its robot fell over)" : "")));

@@ -180,9 +180,12 @@ class SweepDialogGuiTest {
         Ui.pump(() -> dialog.table().control().getItemCount() > 0 || !dialog.running(), "the first row");
         assertTrue(dialog.running(), "the sweep ended before Stop: " + dialog.message());
         assertEquals(dialog.results().rows().get(0), dialog.table().rowAt(0));
+        int shown = dialog.results().rows().size();
         Ui.click(dialog.stopButton());
         Ui.pump(() -> !dialog.running(), "Stop to end the sweep");
         assertTrue(dialog.message().startsWith("Stopped after "), dialog.message());
+        assertTrue(dialog.results().rows().size() >= shown, "Stop threw finished runs away (issue 23, item 13)");
+        assertFalse(dialog.message().contains("No run was acceptable"), dialog.message());
         assertTrue(dialog.results().rows().size() < 40);
         assertTrue(dialog.startButton().isEnabled());
 
