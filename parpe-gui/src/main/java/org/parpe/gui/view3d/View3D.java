@@ -168,6 +168,8 @@ public final class View3D {
 
     /** Frames the robot again on the next snapshot. */
     public void resetView() {
+        // The angle too: after a drag that went wrong, Reset view gives back the usual view.
+        camera.resetAngles();
         framedFor = null;
         canvas.redraw();
     }
