@@ -209,8 +209,7 @@ final class MenuBar {
 
     private void helpMenu(Menu m) {
         item(m, "&Tutorial", 0, this::openTutorial);
-        item(m, "PARSL &Quick Reference", SWT.F1, () -> MessageDialog.openInformation(ide.shell(), "PARSL quick reference",
-                HelpText.QUICK_REFERENCE));
+        item(m, "PARSL &Quick Reference", SWT.F1, () -> QuickReference.open(ide.shell()));
         item(m, "&About PARPE", 0, () -> MessageDialog.openInformation(ide.shell(), "About PARPE", HelpText.ABOUT));
     }
 

@@ -73,4 +73,24 @@ class FirstStartGuiTest {
         Files.createDirectories(home.resolve("Documents"));
         assertEquals(home.resolve("Documents"), org.parpe.gui.sweep.SweepDialogAccess.csvFolder(home.resolve("gone/none.xml"), home));
     }
+
+    @Test
+    void theQuickReferenceIsInTheFixedWidthFontSoItsColumnsLineUp() throws Exception {
+        ide = Gui.openIde(Files.createTempDirectory("parpe-help"));
+        org.eclipse.swt.widgets.Shell help = QuickReference.open(ide.shell());
+        try {
+            org.eclipse.swt.widgets.Text t = Arrays.stream(help.getChildren()).filter(c -> c instanceof org.eclipse.swt.widgets.Text)
+                    .map(c -> (org.eclipse.swt.widgets.Text) c).findFirst().orElseThrow();
+            assertEquals(HelpText.QUICK_REFERENCE, t.getText());
+            assertEquals(org.eclipse.jface.resource.JFaceResources.getTextFont(), t.getFont());
+            org.eclipse.swt.graphics.GC gc = new org.eclipse.swt.graphics.GC(t);
+            try {
+                assertEquals(gc.textExtent("iiii").x, gc.textExtent("MMMM").x, "the font is not fixed-width");
+            } finally {
+                gc.dispose();
+            }
+        } finally {
+            help.dispose();
+        }
+    }
 }
