@@ -63,6 +63,7 @@ public final class IdeWindow {
     private final PosePanel pose;
     private final CTabItem poseTab;
     private final SashForm editorSplit;
+    private SashForm mainSash;
     private HardwareDialog hardwareDialog;
     private volatile String hardwareHeld;
     private Program program;
@@ -120,6 +121,11 @@ public final class IdeWindow {
         right.setWeights(54, 18, 28);
         main.setWeights(15, 43, 42);
         gaitGrid.onShown(v -> main.setWeights(v ? new int[] {11, 61, 28} : new int[] {15, 43, 42}));
+        // Sane minimums at 1366x768: the outline, the editor, the 3D view's tools, Problems and the plots stay usable.
+        Panels.keepMinimum(main, 120, 420, 300);
+        Panels.keepMinimum(middle, 160, 90);
+        Panels.keepMinimum(right, 150, 70, 100);
+        this.mainSash = main;
 
         status = new StatusBar(shell);
         status.control().setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
@@ -344,6 +350,11 @@ public final class IdeWindow {
         }
         return (errors == 0 ? "" : errors + (errors == 1 ? " error" : " errors")) + (errors > 0 && warnings > 0 ? ", " : "")
                 + (warnings == 0 ? "" : warnings + (warnings == 1 ? " warning" : " warnings")) + ": see Problems";
+    }
+
+    /** The outline | editor | 3D view split (tests). */
+    SashForm mainSash() {
+        return mainSash;
     }
 
     /** Whether Problems is the tab in front below the editor (tests). */
