@@ -63,7 +63,9 @@ class RunChoicesGuiTest {
         AtomicReference<RunOutcome> outcome = new AtomicReference<>();
         ide.runs().run(false, 5, outcome::set);
         Gui.pump(() -> outcome.get() != null, "5 s of the snake lesson on the humanoid");
-        Gui.settle();
+        // Both warnings reach Problems through the event queue.
+        Gui.pump(() -> ide.problems().shown().stream().filter(d -> d.severity() == Severity.WARNING).count() >= 2,
+                "the two warnings in Problems: " + ide.problems().shown());
         List<String> warnings = ide.problems().shown().stream().filter(d -> d.severity() == Severity.WARNING)
                 .map(Diagnostic::message).toList();
         assertTrue(warnings.stream().anyMatch(m -> m.startsWith("this script is written for the snake")), warnings.toString());
