@@ -31,6 +31,15 @@ class DiagnosticsTest {
     static Stream<Arguments> cases() {
         return Stream.of(
             c("malformed XML", "<robot><structure><g elements=\"0\"/></structure></robot>\n<main><b></main> <!--E-->\n", "malformed XML"),
+            // Issue 23, item 12: beginners' mistakes get what to type instead.
+            c("unquoted attribute value", ROBOT + "<parameters>\n<period value=1/> <!--E-->\n</parameters>" + REST,
+                    "an attribute's value goes in quotes: write value=\"1\""),
+            c("letter O for zero", ROBOT + "<main><b/></main>\n<behaviors><b>\n<w group=\"g\" period=\"3O\"/> <!--E-->\n"
+                    + "</b></behaviors>\n<automata><w states=\"s\"/></automata>\n<states><s angles=\"10\"/></states>\n",
+                    "missing operator before 'O': is it the letter O where the digit 0 (zero) is meant? Write 30"),
+            c("decimal comma", ROBOT + "<main><b/></main>\n<behaviors><b>\n<w group=\"g\" period=\"0,25\"/> <!--E-->\n"
+                    + "</b></behaviors>\n<automata><w states=\"s\"/></automata>\n<states><s angles=\"10\"/></states>\n",
+                    "a decimal number takes a point: write 0.25, not 0,25"),
             c("unknown section", ROBOT + REST + "<behaviours/> <!--E-->", "did you mean <behaviors>"),
             c("duplicate section", ROBOT + REST + "<states/> <!--E-->", "appears twice"),
             c("root attribute", null, "takes no attributes"),

@@ -28,6 +28,14 @@ public record SimMetrics(double duration, double distance, double dx, double dy,
         return new SimMetrics(duration, distance, dx, dy, speed, maxTiltDeg, worldScore);
     }
 
+    /** The tilt beyond which a robot counts as fallen over unless told otherwise, degrees (a sweep's {@code --fall-tilt}). */
+    public static final double FALL_TILT_DEG = 90;
+
+    /** Whether the robot tilted past {@link #FALL_TILT_DEG}: it fell over. */
+    public boolean fell() {
+        return maxTiltDeg > FALL_TILT_DEG;
+    }
+
     /** The metrics as one JSON object, numbers with 6 decimals; in a world with the score and its parts. */
     public String toJson() {
         return String.format(Locale.ROOT,

@@ -123,6 +123,15 @@ final class Chart {
         }
     }
 
+    /** A hollow ring at ({@code x}, {@code y}): a point set apart from the dots. */
+    void ring(double x, double y, Color c, int size) {
+        if (Double.isFinite(x) && Double.isFinite(y)) {
+            g.setColor(c);
+            g.setStroke(new BasicStroke(1.5f));
+            g.drawOval(px(x) - size / 2, py(y) - size / 2, size, size);
+        }
+    }
+
     /** A polyline through the finite points. */
     void line(double[] xs, double[] ys, Color c, float width) {
         g.setColor(c);

@@ -51,8 +51,12 @@ public final class MergeCommand implements Callable<Integer> {
     String plot;
 
     @Option(names = "--objective", paramLabel = "NAME", defaultValue = "forward-speed",
-            description = "What the plot ranks by: forward-speed, speed, forward, distance (default ${DEFAULT-VALUE}).")
+            description = "What the plot ranks by: forward-speed, speed, forward, distance, score (default ${DEFAULT-VALUE}).")
     String objective;
+
+    @Option(names = "--count-fallen", description = "Let a run whose robot fell over be the best on the plot, as sweep"
+            + " --count-fallen does (by default it never is).")
+    boolean countFallen;
 
     @Spec
     CommandSpec spec;
@@ -160,7 +164,7 @@ public final class MergeCommand implements Callable<Integer> {
             err.println("parpe: merged " + (merged.size() - 1) + " runs from " + files.size() + " files");
             if (png != null) {
                 png.write(o -> Plots.sweep(o, (out.equals("-") ? "merged sweep" : Path.of(out).getFileName()) + ", "
-                        + result.rows().size() + " runs", axes(result.rows()), result.rows(), goal));
+                        + result.rows().size() + " runs", axes(result.rows()), result.rows(), goal, countFallen));
                 err.println("parpe: plot in " + png);
             }
             return 0;

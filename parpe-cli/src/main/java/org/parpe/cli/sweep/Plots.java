@@ -9,16 +9,19 @@ import java.io.OutputStream;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
+import java.util.function.Predicate;
 import org.parpe.cli.Canvas;
 import org.parpe.sim.sweep.Axis;
 import org.parpe.sim.sweep.Evaluation;
 import org.parpe.sim.sweep.Objective;
 import org.parpe.sim.sweep.OptimizationResult;
+import org.parpe.sim.sweep.SweepResult;
 import org.parpe.sim.sweep.SweepRow;
 
 /**
  * The PNG plots of the sweep commands: the objective over each varied parameter (every run a
- * grey dot, the best run at each value joined by a line), and an optimisation's convergence
+ * grey dot, a run whose robot fell over a hollow red ring, the best run at each value joined by a
+ * line, under the same rule as the summary's best), and an optimisation's convergence
  * (every evaluation a dot, the best so far a line).
  */
 final class Plots {
@@ -33,8 +36,9 @@ final class Plots {
     }
 
     /** One panel per axis: {@code objective} of every run over the axis's values. */
-    static void sweep(OutputStream out, String title, List<Axis> axes, List<SweepRow> rows, Objective objective)
-            throws IOException {
+    static void sweep(OutputStream out, String title, List<Axis> axes, List<SweepRow> rows, Objective objective,
+                      boolean countFallen) throws IOException {
+        Predicate<SweepRow> rule = SweepResult.rule(countFallen);
         int height = TOP + axes.size() * (PANEL + GAP);
         Canvas canvas = Canvas.white(WIDTH, height);
         BufferedImage img = canvas.image();
@@ -49,8 +53,12 @@ final class Plots {
             c.axes(name, objective.label());
             Map<Double, Double> best = new TreeMap<>();
             for (int i = 0; i < xs.length; i++) {
-                c.dot(xs[i], scores[i], Chart.GREY, 6);
-                if (Double.isFinite(scores[i])) {
+                if (rows.get(i).fell()) {
+                    c.ring(xs[i], scores[i], Chart.RED, 8);
+                } else {
+                    c.dot(xs[i], scores[i], Chart.GREY, 6);
+                }
+                if (SweepResult.contender(rows.get(i), objective, rule)) {
                     best.merge(xs[i], scores[i], Math::max);
                 }
             }
@@ -61,7 +69,7 @@ final class Plots {
                 c.dot(bx[i], by[i], Chart.BLUE, 7);
             }
         }
-        legend(g, "each run", "best run at this value", Chart.BLUE);
+        fallenLegend(g, legend(g, "each run", "best run at this value", Chart.BLUE), countFallen);
         g.dispose();
         Chart.write(img, out);
     }
@@ -98,7 +106,17 @@ final class Plots {
         g.drawString(title, LEFT, 28);
     }
 
-    private static void legend(Graphics2D g, String dots, String line, Color lineColor) {
+    /** The key of the fallen runs' rings, from {@code x} on the legend's line. */
+    private static void fallenLegend(Graphics2D g, int x, boolean counted) {
+        g.setColor(Chart.RED);
+        g.setStroke(new java.awt.BasicStroke(1.5f));
+        g.drawOval(x + 24, 40, 7, 7);
+        g.setColor(Color.DARK_GRAY);
+        g.drawString(counted ? "fell over" : "fell over (never best)", x + 36, 48);
+    }
+
+    /** Draws the legend of the dots and the line; returns the x where it ends. */
+    private static int legend(Graphics2D g, String dots, String line, Color lineColor) {
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
         int x = LEFT + 420;
         g.setColor(Chart.GREY);
@@ -110,5 +128,6 @@ final class Plots {
         g.fillRect(x, 43, 20, 3);
         g.setColor(Color.DARK_GRAY);
         g.drawString(line, x + 26, 48);
+        return x + 26 + g.getFontMetrics().stringWidth(line);
     }
 }

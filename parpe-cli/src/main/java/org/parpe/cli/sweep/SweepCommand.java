@@ -64,6 +64,10 @@ public final class SweepCommand implements Callable<Integer> {
             description = "What the plot and the summary rank by: forward-speed, speed, forward, distance, score (with --world) (default ${DEFAULT-VALUE}).")
     String objective;
 
+    @Option(names = "--count-fallen", description = "Let a run whose robot fell over (see --fall-tilt) be the best;"
+            + " by default a fallen run is never the best, in the summary or in the plot.")
+    boolean countFallen;
+
     @Option(names = "--shard", paramLabel = "K/N", description = "Run only the K-th of N equal shares of the runs (1 <= K <= N);"
             + " join the shards' files with 'parpe merge'.")
     String shard;
@@ -119,7 +123,7 @@ public final class SweepCommand implements Callable<Integer> {
         if (png != null) {
             String title = file.getFileName() + " on " + options.sim + ", " + Numbers.format(options.duration) + " s, "
                     + result.rows().size() + " runs";
-            png.write(o -> Plots.sweep(o, title, sweep.spec().axes(), result.rows(), goal));
+            png.write(o -> Plots.sweep(o, title, sweep.spec().axes(), result.rows(), goal, countFallen));
         }
         summary(err, result, range[1] - range[0], goal, png);
         return 0;
@@ -200,8 +204,12 @@ public final class SweepCommand implements Callable<Integer> {
         long fell = rows.stream().filter(SweepRow::fell).count();
         err.println(String.format(Locale.ROOT, "parpe: %d of %d runs%s; %d with errors, %d fell over", rows.size(),
                 expected, result.cancelled() ? " (stopped: the file holds the runs finished in order)" : "", failed, fell));
-        result.best(goal).ifPresent(b -> err.println(String.format(Locale.ROOT, "parpe: best %s %.4f with %s (run %d)",
-                goal.id(), goal.of(b), values(b), b.point().index())));
+        java.util.Optional<SweepRow> best = SweepResult.best(rows, goal, SweepResult.rule(countFallen));
+        best.ifPresent(b -> err.println(String.format(Locale.ROOT, "parpe: best %s %.4f with %s (run %d%s)",
+                goal.id(), goal.of(b), values(b), b.point().index(), b.fell() ? ", fell over" : "")));
+        if (best.isEmpty() && !rows.isEmpty()) {
+            err.println("parpe: no best run: every run failed" + (countFallen ? "" : " or fell over (--count-fallen lets fallen runs count)"));
+        }
         if (png != null) {
             err.println("parpe: plot in " + png);
         }

@@ -70,12 +70,13 @@ final class Syntax {
                     }
                 } else if (t.type() == Type.COMMA) {
                     if (frames.isEmpty() || !frames.peek().call()) {
-                        return new Problem("',' is only allowed between function arguments", t.start());
+                        return new Problem("',' is only allowed between function arguments" + decimalComma(tokens.get(i - 1), t, next),
+                                t.start());
                     }
                     frames.peek().args()[1]++;
                     expectOperand = true;
                 } else {
-                    return new Problem("missing operator before '" + t.text() + "'", t.start());
+                    return new Problem("missing operator before '" + t.text() + "'" + letterO(tokens.get(i - 1), t), t.start());
                 }
             }
         }
@@ -87,6 +88,32 @@ final class Syntax {
             return new Problem("missing ')' to close the '(' here", frames.peek().open().start());
         }
         return null;
+    }
+
+    /**
+     * What to type instead when {@code comma} is a decimal comma, {@code 0,25} (half of Europe
+     * writes decimals so): a number, the comma and a number, with nothing between them.
+     */
+    private static String decimalComma(Token before, Token comma, Token after) {
+        if (before.type() == Type.NUMBER && after != null && after.type() == Type.NUMBER && before.end() == comma.start()
+                && after.start() == comma.end() && !before.text().contains(".")) {
+            return "; a decimal number takes a point: write " + before.text() + "." + after.text() + ", not "
+                    + before.text() + "," + after.text();
+        }
+        return "";
+    }
+
+    /**
+     * What to type instead when {@code name} right after a number is made of the letter O where
+     * the digit 0 (zero) was meant, as in {@code 3O}.
+     */
+    private static String letterO(Token before, Token name) {
+        if (before.type() == Type.NUMBER && name.type() == Type.NAME && before.end() == name.start()
+                && name.text().matches("[oO][0-9oO]*")) {
+            return ": is it the letter O where the digit 0 (zero) is meant? Write " + before.text()
+                    + name.text().replace('o', '0').replace('O', '0');
+        }
+        return "";
     }
 
     private static Problem close(Frame f, int[] argCounts, Token at, boolean empty) {

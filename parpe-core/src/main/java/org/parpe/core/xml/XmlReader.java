@@ -85,6 +85,55 @@ public final class XmlReader {
             msg = msg.substring(msg.indexOf("Message:") + 8).trim();
         }
         diags.error(loc == null ? source.pos(0) : source.pos(loc.getLineNumber(), loc.getColumnNumber()),
-                "malformed XML: " + msg);
+                "malformed XML: " + msg + (loc == null ? "" : unquoted(source.text(), loc.getLineNumber(), loc.getColumnNumber(), msg)));
+    }
+
+    /**
+     * What to type instead when the parser wanted a quote: an attribute value without quotes, as
+     * {@code period=1}; empty otherwise.
+     */
+    static String unquoted(String text, int line, int column, String msg) {
+        if (!msg.contains("Expected a quote")) {
+            return "";
+        }
+        int at = 0;
+        for (int l = 1; l < line && at >= 0; l++) {
+            at = text.indexOf('\n', at) + 1;
+            if (at == 0) {
+                return "";
+            }
+        }
+        int end = Math.min(text.length(), at + Math.max(0, column - 1));
+        // The parser stops at the value's first character or just after it: go back to the '='.
+        int eq = text.lastIndexOf('=', end);
+        if (eq < 0 || eq < text.lastIndexOf('<', end)) {
+            return "";
+        }
+        int nameEnd = eq;
+        while (nameEnd > 0 && Character.isWhitespace(text.charAt(nameEnd - 1))) {
+            nameEnd--;
+        }
+        int nameStart = nameEnd;
+        while (nameStart > 0 && isNameChar(text.charAt(nameStart - 1))) {
+            nameStart--;
+        }
+        int valueStart = eq + 1;
+        while (valueStart < text.length() && Character.isWhitespace(text.charAt(valueStart))) {
+            valueStart++;
+        }
+        int valueEnd = valueStart;
+        while (valueEnd < text.length() && !Character.isWhitespace(text.charAt(valueEnd)) && text.charAt(valueEnd) != '>'
+                && !(text.charAt(valueEnd) == '/' && valueEnd + 1 < text.length() && text.charAt(valueEnd + 1) == '>')) {
+            valueEnd++;
+        }
+        if (nameStart == nameEnd || valueStart == valueEnd) {
+            return "";
+        }
+        String name = text.substring(nameStart, nameEnd);
+        return "; an attribute's value goes in quotes: write " + name + "=\"" + text.substring(valueStart, valueEnd) + "\"";
+    }
+
+    private static boolean isNameChar(char c) {
+        return Character.isLetterOrDigit(c) || c == '_' || c == '-' || c == '.' || c == ':';
     }
 }

@@ -42,8 +42,16 @@ public final class Autosave implements AutoCloseable {
     private final FileLock lock;
     private int untitled;
 
-    /** A copy of unsaved text: its owner's folder, its slot, the file it belongs to (null: untitled), its text. */
-    public record Copy(Path owner, String slot, Path file, String text, long modified) {
+    /**
+     * A copy of unsaved text: its owner's folder, its slot, the file it belongs to (null: untitled),
+     * the example it is an unsaved copy of (null: none), its text.
+     */
+    public record Copy(Path owner, String slot, Path file, Path example, String text, long modified) {
+        /** How the user knows the document: the file's name, "a copy of the example NAME", or an untitled script. */
+        public String describe() {
+            return file != null ? file.getFileName().toString()
+                    : example != null ? "your copy of the example " + example.getFileName() : "an untitled script";
+        }
     }
 
     /**
@@ -92,9 +100,15 @@ public final class Autosave implements AutoCloseable {
 
     /** Writes {@code text}, the unsaved content of {@code file} (null: untitled), into this instance's {@code slot}. */
     public void write(String slot, Path file, String text) throws IOException {
+        write(slot, file, null, text);
+    }
+
+    /** As {@link #write(String, Path, String)} for an untitled copy of the example {@code example} (null: none). */
+    public void write(String slot, Path file, Path example, String text) throws IOException {
         Files.createDirectories(mine);
         Properties meta = new Properties();
         meta.setProperty("file", file == null ? "" : file.toAbsolutePath().normalize().toString());
+        meta.setProperty("example", example == null ? "" : example.toAbsolutePath().normalize().toString());
         AtomicFiles.write(mine.resolve(slot + ".xml"), text);
         AtomicFiles.write(mine.resolve(slot + ".properties"), out -> meta.store(out, "PARPE autosave"));
     }
@@ -144,7 +158,7 @@ public final class Autosave implements AutoCloseable {
             throw new IOException("the copy belongs to a running IDE");
         }
         String slot = c.file() == null ? untitledSlot() : slotFor(c.file());
-        write(slot, c.file(), c.text());
+        write(slot, c.file(), c.example(), c.text());
         delete(c.owner(), c.slot());
         removeIfEmpty(c.owner());
         return slot;
@@ -230,7 +244,9 @@ public final class Autosave implements AutoCloseable {
                 }
             }
             String f = meta.getProperty("file", "");
-            return new Copy(dir, slot, f.isEmpty() ? null : Path.of(f), text, Files.getLastModifiedTime(buf).toMillis());
+            String ex = meta.getProperty("example", "");
+            return new Copy(dir, slot, f.isEmpty() ? null : Path.of(f), ex.isEmpty() ? null : Path.of(ex), text,
+                    Files.getLastModifiedTime(buf).toMillis());
         } catch (IOException | IllegalArgumentException e) {
             return null;
         }

@@ -22,6 +22,7 @@ import org.parpe.gui.editor.ParslEditor;
 final class FileActions {
     static final String TEMPLATE = String.join("\n",
             "<?xml version=\"1.0\"?>",
+            "<!-- New to PARPE? Help > Tutorial teaches it step by step, from a first pose to a race. -->",
             "<program>",
             "  <robot>",
             "    <structure>",
@@ -72,6 +73,8 @@ final class FileActions {
     private Path example;
     private String savedText = "";
     private String autosavedText;
+    /** The text the user chose not to save ("Don't Save"), or null: not copied unless edited again. */
+    private String discardedText;
     private String slot;
     private boolean recovered;
     private boolean loading;
@@ -195,11 +198,11 @@ final class FileActions {
             return;
         }
         FileDialog d = new FileDialog(shell, SWT.OPEN);
+        d.setText("Open a PARSL script");
         d.setFilterExtensions(new String[] {"*.xml;*.parsl", "*"});
         d.setFilterNames(new String[] {"PARSL scripts (*.xml, *.parsl)", "All files"});
-        if (file != null && file.getParent() != null) {
-            d.setFilterPath(file.getParent().toString());
-        }
+        // Where Save As would start: the script's folder, else Documents (never the process's folder).
+        d.setFilterPath(saveFolder(file, Examples.folder(), Path.of(System.getProperty("user.home"))).toString());
         String p = d.open();
         if (p != null) {
             openPath(Path.of(p));
@@ -297,6 +300,7 @@ final class FileActions {
     private void show(Path p, String text, String saved, String recoveredSlot, Path exampleOf) {
         stopReading();
         example = exampleOf;
+        discardedText = null;
         loading = true;
         try {
             editor.setText(text);
@@ -442,7 +446,10 @@ final class FileActions {
             case 1 -> {
                 if (!recovered) {
                     autosave.clear(slot);
-                    autosavedText = null; // copied again if the text stays after all (Open cancelled)
+                    autosavedText = null;
+                    // Not copied again while another question is open (the timer runs on): only
+                    // when the text stays after all and is edited (Open cancelled).
+                    discardedText = editor.document().get();
                 }
                 yield true;
             }
@@ -457,7 +464,7 @@ final class FileActions {
      */
     boolean offerRecovery() {
         for (Autosave.Copy c : autosave.orphans()) {
-            String where = c.file() == null ? "an untitled script" : c.file().getFileName().toString();
+            String where = c.describe();
             int answer = questions.ask("Recover unsaved work", "A PARPE window closed without saving " + where
                     + ". Recover its unsaved text?", "Recover", "Discard", "Not Now");
             if (answer == 1) {
@@ -487,7 +494,7 @@ final class FileActions {
                 saved = "";
             }
         }
-        show(c.file(), c.text(), saved, adopted);
+        show(c.file(), c.text(), saved, adopted, c.file() == null ? c.example() : null);
         return true;
     }
 
@@ -504,11 +511,20 @@ final class FileActions {
     /** Writes the autosave copy if the text is unsaved and changed since the last copy. */
     void autosaveNow() {
         String text = editor.document().get();
-        if (!dirty() || text.equals(autosavedText)) {
+        if (!dirty()) {
+            if (autosavedText != null) {
+                // Undone back to the saved text: a copy of it would be offered after a crash for nothing.
+                autosave.clear(slot);
+                autosavedText = null;
+            }
             return;
         }
+        if (text.equals(autosavedText) || text.equals(discardedText)) {
+            return;
+        }
+        discardedText = null;
         try {
-            autosave.write(slot, file, text);
+            autosave.write(slot, file, file == null ? example : null, text);
             autosavedText = text;
         } catch (IOException e) {
             // Keep editing; the next attempt may succeed (disk full, folder removed).

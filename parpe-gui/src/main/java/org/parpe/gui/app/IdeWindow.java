@@ -39,7 +39,11 @@ public final class IdeWindow {
     /** Problems one run may add to the view; more are logged only. */
     static final int RUN_PROBLEM_LIMIT = 500;
 
+    private static final String MAXIMISED = "window.maximised";
+    private static final String FIRST_START = "tutorial.offered";
     private final Prefs prefs;
+    private final MenuBar menus;
+    private final RunChoices choices;
     private final ParslEditor editor;
     private final GridPane gaitGrid;
     private final CTabItem editorTab;
@@ -59,14 +63,17 @@ public final class IdeWindow {
     private final PosePanel pose;
     private final CTabItem poseTab;
     private final SashForm editorSplit;
+    private SashForm mainSash;
     private HardwareDialog hardwareDialog;
     private volatile String hardwareHeld;
     private Program program;
     private int validations;
     private boolean wasRunning;
+    private int zoom;
 
     public IdeWindow(Display display, Prefs prefs) {
         this.prefs = prefs;
+        choices = new RunChoices(prefs);
         shell = new Shell(display, SWT.SHELL_TRIM);
         shell.setText("PARPE");
         shell.setImage(icon(display));
@@ -116,11 +123,17 @@ public final class IdeWindow {
         right.setWeights(54, 18, 28);
         main.setWeights(15, 43, 42);
         gaitGrid.onShown(v -> main.setWeights(v ? new int[] {11, 61, 28} : new int[] {15, 43, 42}));
+        // Sane minimums at 1366x768: the outline, the editor, the 3D view's tools, Problems and the plots stay usable.
+        Panels.keepMinimum(main, 120, 420, 300);
+        Panels.keepMinimum(middle, 160, 90);
+        Panels.keepMinimum(right, 150, 70, 100);
+        this.mainSash = main;
 
         status = new StatusBar(shell);
         status.control().setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         files = new FileActions(shell, editor, prefs, this::documentChanged, this::fileSwitched, status::setMessage);
-        new MenuBar(this).install();
+        menus = new MenuBar(this);
+        menus.install();
         wire(display);
         // After wire(): the panel shows its posed robot in the 3D view, and the run's otherwise.
         pose = new PosePanel(bottom, new PoseBridge(this));
@@ -168,7 +181,11 @@ public final class IdeWindow {
         runStateChanged();
     }
 
-    /** Esc stops everything; control keys steer while the focus is not in a text field. */
+    /**
+     * Esc stops everything. During a run the keys bound to controls steer the robot wherever the
+     * focus is in this window, the script editor and the gait table included (a steering key never
+     * edits the script), except in a box that takes a typed value; the status bar says so.
+     */
     private final class Listener implements org.eclipse.swt.widgets.Listener {
         @Override
         public void handleEvent(Event e) {
@@ -182,12 +199,48 @@ public final class IdeWindow {
                 return;
             }
             var focus = e.display.getFocusControl();
-            boolean typing = focus instanceof StyledText || focus instanceof org.eclipse.swt.widgets.Text
-                    || focus instanceof org.eclipse.swt.widgets.Combo || gaitGrid.hasFocus();
-            if (runs.running() && !typing && e.stateMask == 0 && controls.key(e)) {
+            if ((e.stateMask & SWT.MOD1) != 0 && focus != null && focus.getShell() == shell && zoomKey(e)) {
                 e.doit = false;
+                e.type = SWT.None;
+                return;
+            }
+            if (focus == null || focus.getShell() != shell || !runs.running() || (e.stateMask & SWT.MODIFIER_MASK) != 0) {
+                return;
+            }
+            boolean valueBox = (focus instanceof org.eclipse.swt.widgets.Text || focus instanceof org.eclipse.swt.widgets.Combo
+                    || focus instanceof org.eclipse.swt.widgets.Spinner) && !gaitGrid.hasFocus();
+            if (!valueBox && controls.key(e)) {
+                // Neither the editor's nor the table's key handling sees it: the text stays as it was.
+                e.doit = false;
+                e.type = SWT.None;
             }
         }
+    }
+
+    /** Ctrl + / Ctrl − / Ctrl 0: larger, smaller, normal text in the editor, the log and the gait table (a projector). */
+    private boolean zoomKey(Event e) {
+        int step = e.character == '+' || e.character == '=' || e.keyCode == SWT.KEYPAD_ADD ? 1
+                : e.character == '-' || e.keyCode == SWT.KEYPAD_SUBTRACT ? -1 : e.character == '0' || e.keyCode == '0' ? 0 : 2;
+        if (step == 2) {
+            return false;
+        }
+        zoom = step == 0 ? 0 : Math.max(-4, Math.min(12, zoom + step));
+        org.parpe.gui.panels.Zoom.apply(editor.widget(), org.eclipse.jface.resource.JFaceResources.getTextFont(), zoom);
+        org.parpe.gui.panels.Zoom.apply(log, org.eclipse.jface.resource.JFaceResources.getTextFont(), zoom);
+        org.parpe.gui.panels.Zoom.apply(gaitGrid.widget(), shell.getDisplay().getSystemFont(), zoom);
+        status.setMessage(zoom == 0 ? "Text at its normal size (Ctrl+0)" : "Text " + (zoom > 0 ? "+" : "") + zoom * 2
+                + " points (Ctrl+plus, Ctrl+minus; Ctrl+0: normal)");
+        return true;
+    }
+
+    /** How many steps of 2 points the text is zoomed in (negative: out). */
+    int zoom() {
+        return zoom;
+    }
+
+    /** The keys the program binds to its controls, as the status bar names them during a run. */
+    private static String steeringKeys(Program p) {
+        return p == null ? "" : String.join(" ", p.controls().stream().flatMap(c -> c.keys().stream()).distinct().toList());
     }
 
     private void tickStatus() {
@@ -220,6 +273,9 @@ public final class IdeWindow {
         int w = Math.min(1480, screen.width);
         int h = Math.min(920, screen.height);
         shell.setBounds(screen.x + (screen.width - w) / 2, screen.y + (screen.height - h) / 2, w, h);
+        // A window the user maximised opens maximised again (a 1366x768 laptop needs every pixel).
+        shell.setMaximized(Boolean.parseBoolean(prefs.get(MAXIMISED, "false")));
+        shell.addListener(SWT.Close, e -> prefs.put(MAXIMISED, Boolean.toString(shell.getMaximized())));
         shell.open();
         boolean recovered = !automated && files.offerRecovery();
         if (!recovered) {
@@ -233,10 +289,21 @@ public final class IdeWindow {
             status.setMessage("Recovered unsaved text; " + file.getFileName() + " was not opened (File > Open it when ready).");
         }
         editor.widget().setFocus();
+        if (!automated && prefs.get(FIRST_START, null) == null) {
+            // Someone who has never used PARPE (a student who has never programmed) meets the tutorial first.
+            prefs.put(FIRST_START, "done");
+            menus.openTutorial();
+        }
     }
 
     /** A different file is in the editor: forget what belonged to the previous one. */
     void fileSwitched() {
+        choices.switchTo(files.pathForLoading());
+        viewBar.show(choices.robot());
+        if (!runs.running()) {
+            toolbar.setTarget(choices.target());
+        }
+        runs.invalidatePreview();
         program = null;
         gaitGrid.setProgram(null);
         outline.show(null);
@@ -269,15 +336,51 @@ public final class IdeWindow {
             plots.setModules(program.moduleIds());
             runs.updatePreview(program);
         }
-        long errors = problems.errorCount();
         if (!runs.running()) {
-            status.setMessage((errors == 0 ? "No problems" : errors + " error(s): see Problems")
+            status.setMessage(problemCounts()
                     + (editor.plain() ? "   \u2014   no colouring: the file is over " + ParslEditor.COLOUR_LIMIT / 1_000_000 + " MB" : ""));
+        }
+    }
+
+    /**
+     * What Problems holds, in words: "No problems" only when it is empty. The status bar says this
+     * after each check of the text and whenever Problems changes, so the two never disagree.
+     */
+    String problemCounts() {
+        long errors = problems.errorCount();
+        long warnings = problems.shown().size() - errors;
+        if (errors == 0 && warnings == 0) {
+            return "No problems";
+        }
+        return (errors == 0 ? "" : errors + (errors == 1 ? " error" : " errors")) + (errors > 0 && warnings > 0 ? ", " : "")
+                + (warnings == 0 ? "" : warnings + (warnings == 1 ? " warning" : " warnings")) + ": see Problems";
+    }
+
+    /** The outline | editor | 3D view split (tests). */
+    SashForm mainSash() {
+        return mainSash;
+    }
+
+    /** Whether Problems is the tab in front below the editor (tests). */
+    boolean problemsInFront() {
+        return bottom.getSelectionIndex() == 0;
+    }
+
+    /** Brings Problems to the front (a refused Run: what to fix is there). */
+    void showProblems() {
+        bottom.setSelection(0);
+        if (editorSplit.getWeights()[1] < 150) {
+            editorSplit.setWeights(72, 28);
         }
     }
 
     /** The Problems view changed: mark this file's problems in the editor. */
     private void markProblems() {
+        String now = status.message();
+        if (now.equals("No problems") || now.endsWith(": see Problems") || now.contains(": see Problems   ")) {
+            status.setMessage(problemCounts());
+        }
+        status.setProblems(problems.errorCount(), problems.shown().size() - problems.errorCount());
         Path mine = files.pathForLoading().toAbsolutePath().normalize();
         List<Diagnostic> mineOnly = problems.shown().stream().filter(d -> sameFile(d.pos(), mine))
                 .limit(ParslEditor.MARKER_LIMIT).toList();
@@ -367,6 +470,8 @@ public final class IdeWindow {
         }
         wasRunning = running;
         toolbar.update(running, running && runs.controller().paused());
+        String keys = running ? steeringKeys(runs.controller().engine() == null ? program : runs.controller().engine().program()) : "";
+        status.setKeys(keys.isEmpty() ? "" : "\u2328 " + keys + ": steer the robot");
         plots.refresh();
         if (!running && program != null) {
             controls.show(program);
@@ -468,6 +573,16 @@ public final class IdeWindow {
 
     String robotChoice() {
         return viewBar.robot();
+    }
+
+    /** The user picked {@code robot} for the file in the editor. */
+    void robotChosen(String robot) {
+        choices.robotChosen(robot);
+    }
+
+    /** The user picked {@code target} for the file in the editor. */
+    void targetChosen(org.parpe.gui.run.Target target) {
+        choices.targetChosen(target);
     }
 
     ViewBar viewBar() {

@@ -209,20 +209,28 @@ final class MenuBar {
 
     private void helpMenu(Menu m) {
         item(m, "&Tutorial", 0, this::openTutorial);
-        item(m, "PARSL &Quick Reference", SWT.F1, () -> MessageDialog.openInformation(ide.shell(), "PARSL quick reference",
-                HelpText.QUICK_REFERENCE));
+        item(m, "PARSL &Quick Reference", SWT.F1, () -> QuickReference.open(ide.shell()));
         item(m, "&About PARPE", 0, () -> MessageDialog.openInformation(ide.shell(), "About PARPE", HelpText.ABOUT));
     }
 
     /** Help → Tutorial: the lessons beside the examples ({@code docs/tutorial}), in their own window. */
-    private void openTutorial() {
+    void openTutorial() {
         Path folder = Examples.tutorialFolder();
         if (folder == null) {
             MessageDialog.openInformation(ide.shell(), "Tutorial", "The tutorial (docs/tutorial) was not found next to the"
                     + " examples. It is also online with the PARPE sources, in docs/tutorial/index.md.");
             return;
         }
-        TutorialWindow tutorial = new TutorialWindow(ide.shell(), folder, p -> ide.files().openExample(p));
+        TutorialWindow tutorial = new TutorialWindow(ide.shell(), folder, p -> ide.files().openExample(p), code -> {
+            // At the caret, on a line of its own, as one change that Edit > Undo takes back.
+            var w = ide.editor().widget();
+            int at = w.getCaretOffset();
+            String line = at > 0 && !ide.editor().document().get().substring(0, at).endsWith("\n") ? "\n" : "";
+            w.replaceTextRange(at, 0, line + code + "\n");
+            ide.shell().forceActive();
+            ide.status().setMessage("The lesson's code is in the editor at line " + (w.getLineAtOffset(at) + 1)
+                    + " (Edit > Undo takes it back).");
+        });
         tutorial.showInstalledCommands(Examples.installed());
         tutorial.open();
     }

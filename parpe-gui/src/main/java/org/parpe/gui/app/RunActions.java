@@ -64,6 +64,8 @@ final class RunActions implements ControlPanel.Target {
     private volatile String hardwareState = "Hardware: not connected";
     private String previewKey = "";
     private RunOutcome lastOutcome;
+    /** Whether the run going on was ended by the emergency stop. */
+    private boolean emergency;
     private volatile SimMetrics lastMetrics;
 
     RunActions(IdeWindow ide) {
@@ -100,6 +102,11 @@ final class RunActions implements ControlPanel.Target {
             out.add(id);
         }
         return out;
+    }
+
+    /** The user picked {@code t} in the tool bar for the file in the editor. */
+    void targetChosen(Target t) {
+        ide.targetChosen(t);
     }
 
     /** Opens the Hardware dialog (Run > Hardware…). */
@@ -147,6 +154,7 @@ final class RunActions implements ControlPanel.Target {
         ide.showValidation(first);
         if (first.program() == null) {
             ide.status().setMessage("Cannot run: fix the " + first.errors().size() + " error(s) listed in Problems first.");
+            ide.showProblems();
             ide.shell().getDisplay().beep();
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, "script has errors"));
             return;
@@ -164,6 +172,7 @@ final class RunActions implements ControlPanel.Target {
             String why = loaded.parameterErrors().isEmpty() ? "the script has errors with these parameter values"
                     : loaded.parameterErrors().get(0).message();
             ide.status().setMessage("Cannot run: " + why);
+            ide.showProblems();
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, why));
             return;
         }
@@ -171,7 +180,26 @@ final class RunActions implements ControlPanel.Target {
     }
 
     private void start(Program program, double runFor, Consumer<RunOutcome> onEnd) {
-        start(program, ide.toolbar().target(), robotSpec(program), runFor, onEnd);
+        Target target = ide.toolbar().target();
+        start(program, target, robotSpec(program), runFor, onEnd);
+        String misfit = target.sim() ? misfit(program, ide.robotChoice()) : null;
+        if (misfit != null) {
+            ide.runProblemLater(new Diagnostic(Severity.WARNING, SourcePos.origin("Robot " + ide.robotChoice()), misfit));
+        }
+    }
+
+    /**
+     * Why the robot {@code choice} does not fit {@code program}, or null: a standard robot other than
+     * the one {@code auto} picks for the script (a snake lesson run on the humanoid after a
+     * humanoid lesson). A configuration file is the user's own choice and is not second-guessed.
+     */
+    static String misfit(Program program, String choice) {
+        if (SimTarget.AUTO.equals(choice) || !RobotConfigs.generatorNames().contains(choice)) {
+            return null;
+        }
+        String fits = SimTarget.autoSpec(program);
+        return fits.equals(choice) ? null : "this script is written for the " + fits + " (Robot: auto picks it), but it runs"
+                + " on the " + choice + "; choose auto in Robot above the 3D view unless you mean it";
     }
 
     /**
@@ -287,6 +315,8 @@ final class RunActions implements ControlPanel.Target {
 
     private void ended(RunOutcome outcome) {
         lastOutcome = outcome;
+        boolean emergency = this.emergency;
+        this.emergency = false;
         String t = String.format(java.util.Locale.ROOT, "%.2f s", outcome.time());
         SimMetrics m = lastMetrics;
         lastMetrics = null;
@@ -294,14 +324,24 @@ final class RunActions implements ControlPanel.Target {
                 : String.format(java.util.Locale.ROOT, "; the robot travelled %.3f m (%.3f m/s, forward %+.3f m)",
                         m.distance(), m.speed(), m.dx())
                 + (m.score() == null ? "" : String.format(java.util.Locale.ROOT, "; score %.1f", m.score().score()));
+        if (m != null && m.fell()) {
+            String choice = ide.robotChoice();
+            ide.runProblemLater(new Diagnostic(Severity.WARNING, SourcePos.origin("Robot " + choice), String.format(
+                    java.util.Locale.ROOT, "the robot fell over (it tilted %.0f\u00b0, more than %.0f\u00b0)%s", m.maxTiltDeg(),
+                    SimMetrics.FALL_TILT_DEG, SimTarget.AUTO.equals(choice) ? "" : "; is the " + choice + " the robot"
+                            + " this script is written for? Robot: auto picks the one that fits")));
+            travelled += "; it fell over (see Problems)";
+        }
         switch (outcome.status()) {
             case COMPLETED -> {
                 ide.log("Run completed at t = " + t + travelled);
                 ide.status().setMessage("Run completed at t = " + t + travelled);
             }
             case STOPPED -> {
-                ide.log("Run stopped at t = " + t + travelled);
-                ide.status().setMessage("Run stopped at t = " + t + travelled);
+                // An emergency stop is not an ordinary stop: the log and the status bar say which it was.
+                String how = emergency ? "Emergency stop at t = " : "Run stopped at t = ";
+                ide.log(how + t + travelled);
+                ide.status().setMessage(how + t + travelled);
             }
             case ERROR -> {
                 ide.log("Run failed: " + outcome.message());
@@ -363,6 +403,7 @@ final class RunActions implements ControlPanel.Target {
             s.emergencyStop();
         }
         if (controller.running()) {
+            emergency = true;
             ide.log("EMERGENCY STOP");
             ide.status().setMessage("Emergency stop");
         }

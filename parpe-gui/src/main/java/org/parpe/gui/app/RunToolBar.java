@@ -3,7 +3,6 @@ package org.parpe.gui.app;
 import java.util.List;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.GridData;
-import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.graphics.Image;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Combo;
@@ -13,6 +12,7 @@ import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.ToolBar;
 import org.eclipse.swt.widgets.ToolItem;
 import org.parpe.gui.panels.Icons;
+import org.parpe.gui.panels.OverflowBar;
 import org.parpe.gui.run.Speed;
 import org.parpe.gui.run.Target;
 import org.parpe.serial.link.SerialLink;
@@ -31,11 +31,11 @@ final class RunToolBar {
     private final Button browse;
 
     RunToolBar(Composite parent, RunActions actions, Prefs prefs) {
-        bar = new Composite(parent, SWT.NONE);
-        GridLayout gl = new GridLayout(12, false);
-        gl.marginHeight = 2;
-        bar.setLayout(gl);
+        // At 1366 pixels the port, profile and Hardware… go behind a chevron (») instead of off the edge.
+        OverflowBar overflow = new OverflowBar(parent);
+        bar = overflow.control();
         ToolBar tb = new ToolBar(bar, SWT.FLAT | SWT.RIGHT);
+        overflow.pin(tb);
         Icons icons = Icons.of(parent.getDisplay());
         run = item(tb, icons.run, "Run", "Run the script (F5)", () -> actions.run(true, -1, null));
         pause = item(tb, icons.pause, "Pause", "Pause or resume the run (F6)", actions::pause);
@@ -55,9 +55,12 @@ final class RunToolBar {
         for (Target t : Target.values()) {
             target.add(t.label());
         }
-        target.select(index(Target.values(), prefs.get("run.target", Target.SIMULATOR.name()), Target::name));
+        // Every session starts on the simulator; each file keeps its own target (RunChoices).
+        target.select(Target.SIMULATOR.ordinal());
+        target.setToolTipText("Where this file runs: the simulator, the robot on the serial port, or both"
+                + " (each file keeps its own; every session starts on the simulator)");
         target.addListener(SWT.Selection, e -> {
-            prefs.put("run.target", target().name());
+            actions.targetChosen(target());
             updatePort();
         });
         Label portLabel = new Label(bar, SWT.NONE);
@@ -85,6 +88,7 @@ final class RunToolBar {
         browse.setToolTipText("Choose a hardware profile");
         browse.addListener(SWT.Selection, e -> {
             FileDialog d = new FileDialog(bar.getShell(), SWT.OPEN);
+            d.setText("Hardware profile");
             d.setFilterExtensions(new String[] {"*.xml", "*"});
             String chosen = d.open();
             if (chosen != null) {
@@ -160,6 +164,12 @@ final class RunToolBar {
     void setTarget(Target t) {
         target.select(t.ordinal());
         updatePort();
+    }
+
+    /** Picks a target as the user does in the tool bar: the file in the editor keeps it (tests). */
+    void chooseTarget(Target t) {
+        target.select(t.ordinal());
+        target.notifyListeners(SWT.Selection, new org.eclipse.swt.widgets.Event());
     }
 
     /** Selects a speed without remembering it (automation). */

@@ -25,6 +25,7 @@ final class SafeSave {
     /** The Save As dialog, starting in {@code folder} with {@code name}; the chosen file, or {@code null}. */
     static Path ask(Shell shell, Path folder, String name) {
         FileDialog d = new FileDialog(shell, SWT.SAVE);
+        d.setText("Save the script as");
         d.setFilterExtensions(new String[] {"*.xml", "*"});
         d.setOverwrite(true);
         d.setFileName(name);

@@ -6,10 +6,15 @@ import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Label;
 
-/** The status bar: a message, the simulator's state, the hardware's state, simulated time and the caret position. */
+/**
+ * The status bar: a message, where the steering keys go during a run, the simulator's state, the
+ * hardware's state, simulated time and the caret position.
+ */
 public final class StatusBar {
     private final Composite bar;
     private final Label message;
+    private final Label keys;
+    private final Label counts;
     private final Label sim;
     private final Label hardware;
     private final Label time;
@@ -18,11 +23,18 @@ public final class StatusBar {
 
     public StatusBar(Composite parent) {
         bar = new Composite(parent, SWT.NONE);
-        GridLayout gl = new GridLayout(9, false);
+        GridLayout gl = new GridLayout(12, false);
         gl.marginHeight = 2;
         gl.marginWidth = 6;
         bar.setLayout(gl);
         message = field(SWT.DEFAULT, true);
+        keys = field(SWT.DEFAULT, false);
+        separator();
+        counts = field(SWT.DEFAULT, false);
+        counts.setText("\u2716 0  \u26a0 0");
+        counts.setToolTipText("Errors and warnings in Problems");
+        keys.setToolTipText("During a run these keys steer the robot, even in the editor (they never type into the script);"
+                + " in a box for a value they type. Esc stops the run.");
         separator();
         sim = field(230, false);
         separator();
@@ -62,6 +74,32 @@ public final class StatusBar {
 
     public String message() {
         return message.getText();
+    }
+
+    /** Where the steering keys go ("⌨ w s: steer the robot"), or empty when no run takes keys. */
+    public void setKeys(String text) {
+        if (!text.equals(keys.getText())) {
+            keys.setText(text);
+            bar.layout(true);
+        }
+    }
+
+    public String keys() {
+        return keys.getText();
+    }
+
+    /** The numbers of errors and warnings in Problems, always as Problems shows them. */
+    public void setProblems(long errors, long warnings) {
+        String t = "\u2716 " + errors + "  \u26a0 " + warnings;
+        if (!t.equals(counts.getText())) {
+            counts.setText(t);
+            counts.setToolTipText(errors + " error(s) and " + warnings + " warning(s) in Problems");
+            bar.layout(true);
+        }
+    }
+
+    public String problems() {
+        return counts.getText();
     }
 
     public void setSim(String text) {

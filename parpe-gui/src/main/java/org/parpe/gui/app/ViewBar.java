@@ -2,7 +2,6 @@ package org.parpe.gui.app;
 
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.GridData;
-import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
@@ -26,16 +25,15 @@ final class ViewBar {
     private final Button ids;
     private final Button reset;
     private final Prefs prefs;
+    private final Composite bar;
     private String file;
 
     ViewBar(Composite parent, IdeWindow ide, Prefs prefs) {
         this.ide = ide;
         this.prefs = prefs;
-        Composite bar = new Composite(parent, SWT.NONE);
+        // In a narrow 3D pane the check boxes and Reset view go behind a chevron (») instead of off the edge.
+        bar = new org.parpe.gui.panels.OverflowBar(parent).control();
         bar.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
-        GridLayout gl = new GridLayout(8, false);
-        gl.marginHeight = 2;
-        bar.setLayout(gl);
         new Label(bar, SWT.NONE).setText("Robot:");
         robot = new Combo(bar, SWT.READ_ONLY);
         robot.add(SimTarget.AUTO + " (from the script)");
@@ -45,9 +43,8 @@ final class ViewBar {
             robot.add(file);
         }
         robot.add(BROWSE);
-        String saved = prefs.get("view.robot", SimTarget.AUTO);
-        int at = robot.indexOf(saved);
-        robot.select(at >= 0 ? at : 0);
+        // Each file has its own robot (RunChoices): auto until the file is shown.
+        robot.select(0);
         robot.setToolTipText("The simulated robot; 'auto' picks a standard robot that fits the script");
         robot.addListener(SWT.Selection, e -> chosen());
         world = new WorldPicker(bar, ide, prefs, this::worldChosen);
@@ -66,6 +63,11 @@ final class ViewBar {
         reset.setToolTipText("Frame the whole robot again (or double-click the view). Drag: rotate; right-drag: pan; wheel: zoom");
         track.addListener(SWT.Selection, e -> prefs.put("view.track", Boolean.toString(track.getSelection())));
         ids.addListener(SWT.Selection, e -> prefs.put("view.ids", Boolean.toString(ids.getSelection())));
+    }
+
+    /** The bar (tests). */
+    Composite control() {
+        return bar;
     }
 
     /** Connects the check boxes to {@code view}. */
@@ -93,7 +95,7 @@ final class ViewBar {
             }
             useFile(p);
         }
-        prefs.put("view.robot", robot());
+        ide.robotChosen(robot());
         ide.runs().invalidatePreview();
         if (ide.program() != null) {
             ide.runs().updatePreview(ide.program());
@@ -137,11 +139,28 @@ final class ViewBar {
         ide.view().setTrackRobot(on);
     }
 
-    /** Selects a robot by generator name (automation, tests). */
+    /**
+     * Shows {@code choice} ({@code auto}, a generator name or a configuration file) as the robot,
+     * as chosen for the file now in the editor; an unknown name shows {@code auto}.
+     */
+    void show(String choice) {
+        if (SimTarget.AUTO.equals(choice)) {
+            robot.select(0);
+        } else if (robot.indexOf(choice) >= 0) {
+            robot.select(robot.indexOf(choice));
+        } else if (java.nio.file.Files.isRegularFile(java.nio.file.Path.of(choice))) {
+            useFile(choice);
+        } else {
+            robot.select(0);
+        }
+    }
+
+    /** Picks a robot by generator name as the user does in the picker (automation, tests). */
     void select(String name) {
         int at = robot.indexOf(name);
         if (at >= 0) {
             robot.select(at);
+            robot.notifyListeners(SWT.Selection, new org.eclipse.swt.widgets.Event());
         }
     }
 }

@@ -41,8 +41,8 @@ import org.parpe.core.diag.Diagnostic;
  */
 public final class ParslEditor {
     private static final String SQUIGGLE = "org.parpe.gui.squiggle";
-    private static final Color LINE_BG = new Color(0xF2, 0xF6, 0xFC);
-    private static final Color RULER_FG = new Color(0x90, 0x98, 0xA8);
+    private static final Color LINE_BG = org.parpe.gui.panels.Theme.pick(0xF2F6FC, 0x383D47);
+    private static final Color RULER_FG = org.parpe.gui.panels.Theme.pick(0x9098A8, 0x8890A0);
     /** Texts longer than this (characters) are not coloured. */
     public static final int COLOUR_LIMIT = 1_000_000;
     /** At most this many problems are marked in the text and the ruler (Problems lists them all). */
@@ -99,6 +99,17 @@ public final class ParslEditor {
     }
 
     /** The text widget. */
+    /** The syntax colours, the current line's background and the line numbers' colour (tests check their contrast). */
+    public static java.util.List<Color> colours() {
+        return java.util.List.of(XmlScanners.ELEMENT, XmlScanners.ATTRIBUTE, XmlScanners.VALUE, XmlScanners.COMMENT_COLOR,
+                XmlScanners.PUNCT, XmlScanners.NUMBER);
+    }
+
+    /** The background of the line with the caret. */
+    public static Color currentLine() {
+        return LINE_BG;
+    }
+
     public StyledText widget() {
         return viewer.getTextWidget();
     }

@@ -15,6 +15,7 @@ import org.eclipse.jface.text.rules.Token;
 import org.eclipse.jface.text.rules.WhitespaceRule;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.graphics.Color;
+import org.parpe.gui.panels.Theme;
 
 /**
  * The XML colouring of the PARSL editor: a partition scanner that splits the document into
@@ -30,12 +31,13 @@ public final class XmlScanners {
     /** The partitions besides the default (text content). */
     public static final String[] TYPES = {COMMENT, PROLOG, TAG};
 
-    static final Color ELEMENT = new Color(0x1F, 0x4E, 0x9C);
-    static final Color ATTRIBUTE = new Color(0x7A, 0x2E, 0x8E);
-    static final Color VALUE = new Color(0x1B, 0x7F, 0x3B);
-    static final Color COMMENT_COLOR = new Color(0x80, 0x80, 0x80);
-    static final Color PUNCT = new Color(0x50, 0x50, 0x60);
-    static final Color NUMBER = new Color(0xB0, 0x5A, 0x00);
+    // Light and dark variants, chosen by the GTK theme (Theme).
+    static final Color ELEMENT = Theme.pick(0x1F4E9C, 0x82B1FF);
+    static final Color ATTRIBUTE = Theme.pick(0x7A2E8E, 0xD7A1E8);
+    static final Color VALUE = Theme.pick(0x1B7F3B, 0x8FD49F);
+    static final Color COMMENT_COLOR = Theme.pick(0x808080, 0x9A9A9A);
+    static final Color PUNCT = Theme.pick(0x505060, 0xB8B8C8);
+    static final Color NUMBER = Theme.pick(0xB05A00, 0xF2A65A);
 
     private XmlScanners() {
     }

@@ -16,7 +16,6 @@ import org.eclipse.swt.dnd.TextTransfer;
 import org.eclipse.swt.dnd.Transfer;
 import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.layout.GridLayout;
-import org.eclipse.swt.layout.RowLayout;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
@@ -49,7 +48,10 @@ public final class GridPane implements GridView.Actions {
     private final SashForm sash;
     private final Control text;
     private final ParslEditor editor;
+    /** The widest table the grid shows (each column is a widget made on the UI thread). */
+    public static final int MAX_COLUMNS = 400;
     private final Composite box;
+    private final Composite bar;
     private final Combo choice;
     private final GridView grid;
     private final Label status;
@@ -76,8 +78,8 @@ public final class GridPane implements GridView.Actions {
         gl.marginWidth = 2;
         gl.marginHeight = 2;
         box.setLayout(gl);
-        Composite bar = new Composite(box, SWT.NONE);
-        bar.setLayout(new RowLayout(SWT.HORIZONTAL));
+        // One row whatever the width: the buttons that do not fit go behind a chevron (»), they never wrap.
+        bar = new org.parpe.gui.panels.OverflowBar(box).control();
         bar.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         new Label(bar, SWT.NONE).setText("Gait table:");
         choice = new Combo(bar, SWT.READ_ONLY);
@@ -170,6 +172,18 @@ public final class GridPane implements GridView.Actions {
         List<Integer> modules = Modules.of(program, table.name());
         int width = table.width();
         int columns = width == 1 && modules != null ? 1 : Math.max(width, modules == null ? 0 : modules.size());
+        if (columns > MAX_COLUMNS) {
+            // A row of thousands of entries would make as many table columns on the UI thread (minutes):
+            // the grid says so and the text stays the place to edit it.
+            grid.show(List.of(TIMES), List.of(), Map.of(), new boolean[] {true}, false);
+            for (Button b : commands) {
+                b.setEnabled(false);
+            }
+            status.setText(table.name() + ": " + table.rows().size() + " rows \u00d7 " + columns + " columns, more than the "
+                    + MAX_COLUMNS + " the grid shows: edit this table in the text.");
+            box.layout();
+            return;
+        }
         List<String> headers = new ArrayList<>();
         headers.add(TIMES);
         for (int c = 0; c < columns; c++) {
@@ -178,9 +192,13 @@ public final class GridPane implements GridView.Actions {
         }
         List<List<String>> rows = new ArrayList<>();
         List<String> times = table.timeTexts();
+        // Without times="…" every row gets an equal share of the period: show it in seconds (lesson 2's
+        // 0.5 s), not a bare "1" that reads as one second.
+        Double share = times == null ? Modules.secondsPerRow(program, table.name(), table.rows().size()) : null;
+        String equal = share == null ? "equal" : org.parpe.core.model.Numbers.format(share) + " s";
         for (int r = 0; r < table.rows().size(); r++) {
             List<String> row = new ArrayList<>();
-            row.add(times == null ? "1" : r < times.size() ? times.get(r) : "");
+            row.add(times == null ? equal : r < times.size() ? times.get(r) : "");
             row.addAll(table.texts().get(r));
             rows.add(row);
         }
@@ -263,7 +281,12 @@ public final class GridPane implements GridView.Actions {
         return table;
     }
 
-    /** Whether the grid is shown beside the text. */
+    /** The bar of the table's buttons (tests). */
+    public Composite toolBar() {
+        return bar;
+    }
+
+    /** Whether the grid is shown beside the editor. */
     public boolean visible() {
         return table != null && sash.getMaximizedControl() == null;
     }

@@ -24,10 +24,10 @@ import org.parpe.gui.grid.Fill.Selection;
  * problem as a tooltip. UI thread only.
  */
 final class GridView {
-    static final Color SELECTED = new Color(0xC8, 0xDA, 0xF4);
-    static final Color INVALID = new Color(0xF8, 0xC8, 0xC8);
-    static final Color INVALID_SELECTED = new Color(0xE8, 0xB0, 0xC8);
-    static final Color ABSENT = new Color(0xEE, 0xEE, 0xEE);
+    static final Color SELECTED = org.parpe.gui.panels.Theme.pick(0xC8DAF4, 0x2F4A6E);
+    static final Color INVALID = org.parpe.gui.panels.Theme.pick(0xF8C8C8, 0x6E2F2F);
+    static final Color INVALID_SELECTED = org.parpe.gui.panels.Theme.pick(0xE8B0C8, 0x6E2F55);
+    static final Color ABSENT = org.parpe.gui.panels.Theme.pick(0xEEEEEE, 0x3A3A3A);
     private static final int MIN_WIDTH = 30;
     /** Room around a column's text: cell margins and the header's sort/resize area. */
     private static final int PADDING = 12;

@@ -26,6 +26,38 @@ final class Modules {
         return null;
     }
 
+    /**
+     * The seconds each row of the table {@code automaton} lasts when the rows share the period
+     * equally (no {@code times}): the constant period of the first instance that plays it over
+     * {@code rows}, or null when it is played nowhere or with a period that changes.
+     */
+    static Double secondsPerRow(Program p, String automaton, int rows) {
+        if (p == null || rows <= 0) {
+            return null;
+        }
+        for (var b : p.behaviors()) {
+            Instance i = instance(b.items(), automaton);
+            if (i != null) {
+                return i.period() != null && i.period().isConstant() ? i.period().eval(null) / rows : null;
+            }
+        }
+        return null;
+    }
+
+    private static Instance instance(List<BehaviorItem> items, String automaton) {
+        for (BehaviorItem item : items) {
+            if (item instanceof Instance i && i.automaton().equals(automaton)) {
+                return i;
+            } else if (item instanceof Conditional c) {
+                Instance i = instance(c.items(), automaton);
+                if (i != null) {
+                    return i;
+                }
+            }
+        }
+        return null;
+    }
+
     private static List<Integer> in(Program p, List<BehaviorItem> items, String automaton) {
         for (BehaviorItem item : items) {
             if (item instanceof Instance i && i.automaton().equals(automaton)) {

@@ -38,13 +38,15 @@ final class WaveDialog extends Dialog {
         Composite c = (Composite) super.createDialogArea(parent);
         c.setLayout(new GridLayout(2, false));
         Label about = new Label(c, SWT.WRAP);
-        about.setText("Fills " + target + " with A\u00b7sin(2\u03c0(r/rows + c\u00b7\u03c6)), r and c counted from the"
-                + " top-left selected cell, rounded to 0.1\u00b0.");
+        about.setText("Fills " + target + " with a wave: every module swings from +A to \u2212A degrees and back once"
+                + " over the rows, each module a step \u03c6 of a swing later than the one before it. \u03c6 = 1/6 makes"
+                + " a wave 6 modules long; \u22121/6 the same wave going the other way. (For the curious:"
+                + " A\u00b7sin(2\u03c0(r/rows + c\u00b7\u03c6)), rounded to 0.1\u00b0.)");
         GridData wide = new GridData(SWT.FILL, SWT.TOP, true, false, 2, 1);
         wide.widthHint = 380;
         about.setLayoutData(wide);
         amplitudeText = field(c, "Amplitude A (degrees):", amplitude);
-        phaseText = field(c, "Phase step \u03c6 (cycles per module):", phaseStep);
+        phaseText = field(c, "Step \u03c6 from module to module (a fraction of a swing, e.g. \u22121/6):", phaseStep);
         error = new Label(c, SWT.NONE);
         error.setLayoutData(new GridData(SWT.FILL, SWT.TOP, true, false, 2, 1));
         error.setForeground(parent.getDisplay().getSystemColor(SWT.COLOR_DARK_RED));
@@ -74,9 +76,16 @@ final class WaveDialog extends Dialog {
         super.okPressed();
     }
 
-    private static Double number(String s) {
+    /**
+     * The number typed: a decimal ({@code 2.5}, or {@code 2,5} with a decimal comma) or a fraction
+     * ({@code -1/6}, as lesson 2 writes it, with a typographic minus too); null if it is none.
+     */
+    static Double number(String s) {
+        String t = s.trim().replace('\u2212', '-').replace(',', '.');
+        int slash = t.indexOf('/');
         try {
-            double v = Double.parseDouble(s.trim());
+            double v = slash < 0 ? Double.parseDouble(t)
+                    : Double.parseDouble(t.substring(0, slash).trim()) / Double.parseDouble(t.substring(slash + 1).trim());
             return Double.isFinite(v) ? v : null;
         } catch (NumberFormatException e) {
             return null;

@@ -29,7 +29,9 @@ import org.eclipse.swt.widgets.Shell;
 /**
  * Help → Tutorial: a window with the lessons of {@code docs/tutorial} on the left and the chosen
  * lesson on the right, rendered from its Markdown with its pictures. "Open the lesson's script"
- * puts the lesson's example in the editor (through the IDE's usual unsaved-text check).
+ * puts the lesson's example in the editor (through the IDE's usual unsaved-text check). A normal
+ * window, not one pinned above the IDE: it can go behind the editor and the 3D view, and it is
+ * sized to fit on the screen beside them (a 1366×768 laptop); it closes with the IDE.
  */
 public final class TutorialWindow {
     private static final int IMAGE_WIDTH = 720;
@@ -45,6 +47,8 @@ public final class TutorialWindow {
     private final Font code;
     private final List<Image> images = new ArrayList<>();
     private final Consumer<Path> openScript;
+    private final Consumer<String> insertCode;
+    private final List<Target> links = new ArrayList<>();
     private Path script;
     private boolean installed;
 
@@ -53,10 +57,25 @@ public final class TutorialWindow {
      * {@code teachers.md}); {@code openScript} opens a lesson's script in the editor.
      */
     public TutorialWindow(Shell parent, Path folder, Consumer<Path> openScript) {
+        this(parent, folder, openScript, null);
+    }
+
+    /**
+     * As {@link #TutorialWindow(Shell, Path, Consumer)}; {@code insertCode} (may be null) puts a
+     * lesson's XML into the editor, offered under each XML code block.
+     */
+    public TutorialWindow(Shell parent, Path folder, Consumer<Path> openScript, Consumer<String> insertCode) {
         this.folder = folder;
         this.openScript = openScript;
+        this.insertCode = insertCode;
         this.pages = pages(folder);
-        shell = new Shell(parent, SWT.SHELL_TRIM);
+        // A top-level window (no parent): one transient for the IDE stays above it and hides the editor.
+        shell = new Shell(parent.getDisplay(), SWT.SHELL_TRIM);
+        parent.addListener(SWT.Dispose, e -> {
+            if (!shell.isDisposed()) {
+                shell.dispose();
+            }
+        });
         shell.setText("PARPE tutorial");
         shell.setLayout(new GridLayout(1, false));
         SashForm sash = new SashForm(shell, SWT.HORIZONTAL);
@@ -68,6 +87,19 @@ public final class TutorialWindow {
         FontData fd = text.getFont().getFontData()[0];
         heading = new Font(shell.getDisplay(), fd.getName(), Math.round(fd.getHeight() * 1.35f), SWT.BOLD);
         code = JFaceResources.getTextFont();
+        text.addListener(SWT.MouseUp, e -> {
+            if (e.button == 1 && text.getSelectionCount() == 0) {
+                int at = text.getOffsetAtPoint(new org.eclipse.swt.graphics.Point(e.x, e.y));
+                if (at >= 0) {
+                    click(at);
+                }
+            }
+        });
+        text.addListener(SWT.MouseMove, e -> {
+            int at = text.getOffsetAtPoint(new org.eclipse.swt.graphics.Point(e.x, e.y));
+            boolean over = at >= 0 && links.stream().anyMatch(t -> at >= t.start() && at < t.start() + t.length());
+            text.setCursor(over ? text.getDisplay().getSystemCursor(SWT.CURSOR_HAND) : null);
+        });
         text.addPaintObjectListener(e -> {
             Object data = e.style.data;
             if (data instanceof Image img && !img.isDisposed()) {
@@ -95,7 +127,17 @@ public final class TutorialWindow {
             disposeImages();
             heading.dispose();
         });
-        shell.setSize(1100, 800);
+        fitTo(parent.getMonitor().getClientArea());
+    }
+
+    /**
+     * At most 1100×800 and never past the screen's working area; on the right of it, so that the
+     * IDE's editor on the left stays in sight.
+     */
+    private void fitTo(org.eclipse.swt.graphics.Rectangle area) {
+        int w = Math.min(1100, Math.max(480, area.width * 45 / 100));
+        int h = Math.min(800, area.height);
+        shell.setBounds(area.x + area.width - w, area.y, w, h);
     }
 
     private static Button button(Composite parent, String label, Runnable action) {
@@ -162,7 +204,10 @@ public final class TutorialWindow {
         disposeImages();
         StringBuilder all = new StringBuilder();
         List<StyleRange> styles = new ArrayList<>();
+        List<int[]> tables = new ArrayList<>();
+        links.clear();
         Color codeBack = shell.getDisplay().getSystemColor(SWT.COLOR_WIDGET_LIGHT_SHADOW);
+        Color link = shell.getDisplay().getSystemColor(SWT.COLOR_LINK_FOREGROUND);
         for (Markdown.Block b : page.blocks()) {
             int start = all.length();
             String indent = b.kind() == Markdown.Kind.ITEM ? "    ".repeat(Math.max(0, b.level() - 1)) + "  " : "";
@@ -187,6 +232,14 @@ public final class TutorialWindow {
                     StyleRange r = new StyleRange(start, b.text().length(), null, codeBack);
                     r.font = code;
                     styles.add(r);
+                    if (insertCode != null && b.text().strip().startsWith("<")) {
+                        // A lesson's XML goes to the editor with one click (inserted at the caret, one undo).
+                        String action = "\n\u25b6 Insert this code into the editor";
+                        int at = all.length() + 1;
+                        all.append(action);
+                        links.add(new Target(at, action.length() - 1, null, b.text()));
+                        styles.add(linkStyle(at, action.length() - 1, link));
+                    }
                 }
                 default -> {
                     all.append(indent).append(b.text());
@@ -195,15 +248,14 @@ public final class TutorialWindow {
                         StyleRange r = new StyleRange(start, b.text().length(), null, null);
                         r.font = heading;
                         styles.add(r);
-                    } else {
-                        for (Markdown.Span s : b.spans()) {
-                            StyleRange r = new StyleRange(base + s.start(), s.length(), null, null);
-                            if (s.code()) {
-                                r.font = code;
-                            } else {
-                                r.fontStyle = SWT.BOLD;
-                            }
-                            styles.add(r);
+                    }
+                    if (b.kind() == Markdown.Kind.TABLE) {
+                        tables.add(new int[] {start, b.text().split("\n", -1).length});
+                    }
+                    for (Markdown.Span s : b.spans()) {
+                        styles.add(span(base + s.start(), s, link));
+                        if (s.style() == Markdown.Style.LINK) {
+                            links.add(new Target(base + s.start(), s.length(), s.target(), null));
                         }
                     }
                 }
@@ -211,18 +263,144 @@ public final class TutorialWindow {
             all.append("\n\n");
         }
         text.setText(all.toString());
-        text.setStyleRanges(styles.toArray(new StyleRange[0]));
+        styles.sort(java.util.Comparator.comparingInt(r -> r.start));
+        text.setStyleRanges(merge(styles));
+        for (int[] t : tables) {
+            tabStops(t[0], t[1]);
+        }
     }
 
-    /** The picture at {@code p}, scaled to at most {@value #IMAGE_WIDTH} pixels wide, or null. */
+    private StyleRange span(int at, Markdown.Span s, Color link) {
+        StyleRange r = new StyleRange(at, s.length(), null, null);
+        switch (s.style()) {
+            case CODE -> r.font = code;
+            case BOLD -> r.fontStyle = SWT.BOLD;
+            case ITALIC -> r.fontStyle = SWT.ITALIC;
+            case LINK -> {
+                return linkStyle(at, s.length(), link);
+            }
+        }
+        return r;
+    }
+
+    private static StyleRange linkStyle(int at, int length, Color link) {
+        StyleRange r = new StyleRange(at, length, link, null);
+        r.underline = true;
+        r.underlineStyle = SWT.UNDERLINE_LINK;
+        return r;
+    }
+
+    /**
+     * Style ranges that never overlap (StyledText refuses overlapping ones): where a run lies
+     * inside another (bold inside a link), the inner one is kept with the outer one's font.
+     */
+    private static StyleRange[] merge(List<StyleRange> sorted) {
+        List<StyleRange> out = new ArrayList<>();
+        int end = 0;
+        for (StyleRange r : sorted) {
+            if (r.start >= end) {
+                out.add(r);
+                end = r.start + r.length;
+            } else if (r.underline && !out.isEmpty()) {
+                // A link around code: the code keeps its font and looks like a link too.
+                StyleRange kept = out.get(out.size() - 1);
+                kept.underline = true;
+                kept.underlineStyle = r.underlineStyle;
+                kept.foreground = r.foreground;
+            }
+        }
+        return out.toArray(new StyleRange[0]);
+    }
+
+    /** Tab stops for a table's {@code lines} lines from {@code offset}: each column as wide as its widest cell. */
+    private void tabStops(int offset, int lines) {
+        int first = text.getLineAtOffset(offset);
+        org.eclipse.swt.graphics.GC gc = new org.eclipse.swt.graphics.GC(text);
+        try {
+            List<Integer> widths = new ArrayList<>();
+            for (int l = first; l < first + lines; l++) {
+                String[] cells = text.getLine(l).split("\t", -1);
+                for (int c = 0; c < cells.length; c++) {
+                    int w = gc.textExtent(cells[c]).x + 24;
+                    if (widths.size() <= c) {
+                        widths.add(w);
+                    } else {
+                        widths.set(c, Math.max(widths.get(c), w));
+                    }
+                }
+            }
+            int[] stops = new int[Math.max(1, widths.size() - 1)];
+            int x = 0;
+            for (int c = 0; c < stops.length && c < widths.size(); c++) {
+                x += widths.get(c);
+                stops[c] = x;
+            }
+            text.setLineTabStops(first, lines, stops);
+        } finally {
+            gc.dispose();
+        }
+    }
+
+    /** A clickable run: a link's target, or code to put into the editor. */
+    private record Target(int start, int length, String link, String code) {
+    }
+
+    /** Follows the link or sends the code under {@code offset}, if any. */
+    private void click(int offset) {
+        for (Target t : links) {
+            if (offset >= t.start() && offset < t.start() + t.length()) {
+                if (t.code() != null) {
+                    insertCode.accept(t.code());
+                } else {
+                    follow(t.link());
+                }
+                return;
+            }
+        }
+    }
+
+    private void follow(String target) {
+        if (target.startsWith("http://") || target.startsWith("https://")) {
+            org.eclipse.swt.program.Program.launch(target);
+            return;
+        }
+        Path page = pages.isEmpty() ? null : pages.get(index.getSelectionIndex() < 0 ? 0 : index.getSelectionIndex()).getParent();
+        String file = target.replaceFirst("#.*$", "");
+        Path p = page == null || file.isEmpty() ? null : page.resolve(file).normalize();
+        if (p == null) {
+            return;
+        }
+        int i = pages.indexOf(p);
+        if (i >= 0) {
+            show(i);
+        } else if (file.endsWith(".xml") && Files.isRegularFile(p)) {
+            openScript.accept(p);
+        } else if (Files.exists(p)) {
+            org.eclipse.swt.program.Program.launch(p.toString());
+        }
+    }
+
+    /** The clickable runs of the page shown: [start, length] each (tests). */
+    public List<int[]> clickable() {
+        return links.stream().map(t -> new int[] {t.start(), t.length()}).toList();
+    }
+
+    /** Clicks the text at {@code offset} (tests). */
+    public void clickAt(int offset) {
+        click(offset);
+    }
+
+    /** The picture at {@code p}, scaled to at most {@value #IMAGE_WIDTH} pixels and the text's width, or null. */
     private Image image(Path p) {
         if (!p.startsWith(folder) || !Files.isRegularFile(p)) {
             return null;
         }
         try {
             ImageData d = new ImageData(p.toString());
-            if (d.width > IMAGE_WIDTH) {
-                d = d.scaledTo(IMAGE_WIDTH, Math.max(1, d.height * IMAGE_WIDTH / d.width));
+            int room = text.getClientArea().width - 40;
+            int max = room > 200 ? Math.min(IMAGE_WIDTH, room) : IMAGE_WIDTH;
+            if (d.width > max) {
+                d = d.scaledTo(max, Math.max(1, d.height * max / d.width));
             }
             Image img = new Image(shell.getDisplay(), d);
             images.add(img);

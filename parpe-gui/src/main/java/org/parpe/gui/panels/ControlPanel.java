@@ -70,7 +70,8 @@ public final class ControlPanel {
                 rows.add(ControlRow.create(body, c, program, target));
             }
             Label hint = new Label(body, SWT.WRAP);
-            hint.setText("Keys steer while the editor does not have the focus (click the 3D view). Esc stops the run.");
+            hint.setText("During a run the keys \u2328 steer the robot, even in the editor (they never type into the"
+                    + " script while it runs). Esc stops the run.");
             hint.setForeground(body.getDisplay().getSystemColor(SWT.COLOR_DARK_GRAY));
             hint.setLayoutData(new GridData(SWT.FILL, SWT.TOP, true, false, 3, 1));
         }

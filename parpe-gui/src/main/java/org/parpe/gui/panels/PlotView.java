@@ -34,7 +34,7 @@ public final class PlotView {
     public PlotView(Composite parent) {
         sash = new SashForm(parent, SWT.HORIZONTAL);
         chooser = new List(sash, SWT.MULTI | SWT.V_SCROLL | SWT.BORDER);
-        chooser.setToolTipText("Modules to plot (Ctrl+click for several)");
+        chooser.setToolTipText("Modules to plot: m3 is module 3 (Ctrl+click for several)");
         chooser.addListener(SWT.Selection, e -> refresh());
         chart = new Canvas(sash, SWT.DOUBLE_BUFFERED | SWT.NO_BACKGROUND);
         chart.addListener(SWT.Paint, this::paint);
@@ -57,7 +57,8 @@ public final class PlotView {
         ids = moduleIds.clone();
         chooser.removeAll();
         for (int id : ids) {
-            chooser.add("module " + id);
+            // As the chart's legend names them: short enough to be read in a narrow list.
+            chooser.add("m" + id);
         }
         chooser.setSelection(0, Math.min(2, ids.length - 1));
         chart.redraw();
@@ -79,7 +80,7 @@ public final class PlotView {
     private void paint(Event e) {
         GC gc = e.gc;
         Rectangle r = chart.getClientArea();
-        gc.setBackground(gc.getDevice().getSystemColor(SWT.COLOR_WHITE));
+        gc.setBackground(org.parpe.gui.panels.Theme.paper());
         gc.fillRectangle(r);
         int left = 44, right = r.width - 10, top = 10, bottom = r.height - 22;
         if (right - left < 20 || bottom - top < 20) {
@@ -111,7 +112,7 @@ public final class PlotView {
             gc.drawText("m" + ids[sel[k]], left + 8 + 48 * k, top + 2, true);
         }
         gc.setLineWidth(1);
-        gc.setForeground(gc.getDevice().getSystemColor(SWT.COLOR_DARK_GRAY));
+        gc.setForeground(org.parpe.gui.panels.Theme.ink());
         String legend = recorder == null ? "Run a script to see joint angles" : "solid: commanded, dotted: measured (\u00b0)";
         gc.drawText(legend, right - gc.textExtent(legend).x - 4, bottom - gc.textExtent(legend).y - 2, true);
     }
@@ -128,7 +129,7 @@ public final class PlotView {
     }
 
     private void axes(GC gc, Frame f) {
-        gc.setForeground(gc.getDevice().getSystemColor(SWT.COLOR_GRAY));
+        gc.setForeground(org.parpe.gui.panels.Theme.faint());
         for (int v = -90; v <= 90; v += 45) {
             gc.drawLine(f.left, f.y(v), f.right, f.y(v));
             gc.drawText(Integer.toString(v), 4, f.y(v) - 8, true);

@@ -52,10 +52,20 @@ public final class ProblemsView {
         table = new Table(box, SWT.VIRTUAL | SWT.FULL_SELECTION | SWT.SINGLE | SWT.V_SCROLL | SWT.H_SCROLL);
         table.setHeaderVisible(true);
         table.setLinesVisible(true);
-        column("", 110);
+        column("Severity", 110);
         column("Location", 190);
         column("Description", 700);
         table.addListener(SWT.SetData, this::fill);
+        // The description fills the rest of the width; a cut one is read whole in the tooltip.
+        table.addListener(SWT.Resize, e -> {
+            int rest = table.getClientArea().width - table.getColumn(0).getWidth() - table.getColumn(1).getWidth();
+            table.getColumn(2).setWidth(Math.max(300, rest));
+        });
+        table.addListener(SWT.MouseHover, e -> {
+            TableItem it = table.getItem(new org.eclipse.swt.graphics.Point(e.x, e.y));
+            int i = it == null ? -1 : table.indexOf(it);
+            table.setToolTipText(i < 0 || i >= shown.size() ? null : tip(shown.get(i)));
+        });
         table.addListener(SWT.Selection, e -> pick(jump));
         table.addListener(SWT.DefaultSelection, e -> pick(jump));
     }
@@ -162,9 +172,20 @@ public final class ProblemsView {
         changed.run();
     }
 
-    /** {@code FILE:LINE:COL} with the file's name only; the file alone for a diagnostic with no line. */
+    /** The tooltip of a row: the whole message and where. */
+    static String tip(Diagnostic d) {
+        return d.severity().word() + " at " + location(d.pos()) + ":\n" + d.message();
+    }
+
+    /**
+     * {@code FILE:LINE:COL} with the file's name only; the file alone for a diagnostic with no
+     * line; a place that is not a file ({@code bus /dev/ttyUSB0}, {@code Robot humanoid}) whole.
+     */
     public static String location(SourcePos p) {
         String f = p.file();
+        if (p.line() <= 0 && f.contains(" ")) {
+            return f;
+        }
         String name = f.substring(Math.max(f.lastIndexOf('/'), f.lastIndexOf('\\')) + 1);
         return p.line() <= 0 ? name : name + ":" + p.line() + ":" + p.column();
     }

@@ -7,7 +7,9 @@ import java.util.List;
 import java.util.Map;
 import org.parpe.core.model.Numbers;
 import org.parpe.sim.sweep.Constraints;
+import java.util.function.Predicate;
 import org.parpe.sim.sweep.Objective;
+import org.parpe.sim.sweep.SweepResult;
 import org.parpe.sim.sweep.SweepRow;
 
 /**
@@ -69,31 +71,35 @@ final class Results {
         rows.addAll(all);
     }
 
-    /** Whether {@code row} counts for "best": it ran without error and, when optimising, met the constraints. */
+    /**
+     * The rule of "best": a sweep's is {@code parpe sweep}'s ({@link SweepResult#STANDING}: a run
+     * whose robot fell over never counts); an optimisation's is its constraints.
+     */
+    private Predicate<SweepRow> rule() {
+        return mode == Mode.SWEEP ? SweepResult.STANDING : r -> constraints.violation(r) == 0;
+    }
+
+    /** Whether {@code row} may be the best: it ran without error, has a measurement and meets {@link #rule}. */
     boolean acceptable(SweepRow row) {
-        return row.ok() && !Double.isNaN(objective.of(row))
-                && (mode == Mode.SWEEP || constraints.violation(row) == 0);
+        return SweepResult.contender(row, objective, rule());
     }
 
     /** The acceptable row with the highest objective, the earliest among equals, or null. */
     SweepRow best() {
-        SweepRow best = null;
-        for (SweepRow r : rows) {
-            if (acceptable(r) && (best == null || objective.of(r) > objective.of(best))) {
-                best = r;
-            }
-        }
-        return best;
+        return SweepResult.best(rows, objective, rule()).orElse(null);
     }
 
-    /** The number of {@code row} in the engine's order, from 1 (0 when it is not one of these rows). */
+    /**
+     * The number of {@code row} in the engine's order, from 0 as {@code parpe sweep}'s {@code run}
+     * column counts (-1 when it is not one of these rows).
+     */
     int number(SweepRow row) {
         for (int i = 0; i < rows.size(); i++) {
             if (rows.get(i) == row) {
-                return i + 1;
+                return i;
             }
         }
-        return 0;
+        return -1;
     }
 
     /** The parameter values of the best row, or an empty map. */

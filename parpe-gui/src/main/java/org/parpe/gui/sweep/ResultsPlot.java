@@ -17,13 +17,14 @@ import org.parpe.sim.sweep.SweepRow;
  * objective of every run over one varied parameter (filled dots; hollow red ones for runs
  * whose robot fell over) with a line through the best run at each value; for an
  * optimisation, the convergence: every evaluation's objective (blue when it met the
- * constraints, orange when not) and the best acceptable objective so far.
+ * constraints, orange when not) and the best acceptable objective so far in red, as the
+ * command line's plots draw them. Which run may be the best is {@link Results#acceptable}'s rule,
+ * the command line's.
  */
 final class ResultsPlot {
     private static final Color BLUE = new Color(0x1F, 0x77, 0xB4);
     private static final Color RED = new Color(0xD6, 0x27, 0x28);
     private static final Color ORANGE = new Color(0xFF, 0x7F, 0x0E);
-    private static final Color GREEN = new Color(0x2C, 0xA0, 0x2C);
     private static final int LEFT = 64;
     private static final int RIGHT = 14;
     private static final int TOP = 24;
@@ -67,9 +68,9 @@ final class ResultsPlot {
     private void paint(Event e) {
         GC gc = e.gc;
         Rectangle area = canvas.getClientArea();
-        gc.setBackground(gc.getDevice().getSystemColor(SWT.COLOR_WHITE));
+        gc.setBackground(org.parpe.gui.panels.Theme.paper());
         gc.fillRectangle(area);
-        gc.setForeground(gc.getDevice().getSystemColor(SWT.COLOR_DARK_GRAY));
+        gc.setForeground(org.parpe.gui.panels.Theme.ink());
         List<SweepRow> rows = results == null ? List.of() : results.rows();
         if (rows.isEmpty() || area.width < LEFT + RIGHT + 40 || area.height < TOP + BOTTOM + 40) {
             gc.drawText(results == null ? "Start a sweep or an optimisation to plot its objective here."
@@ -108,8 +109,8 @@ final class ResultsPlot {
 
     private String legend() {
         return results.mode() == Results.Mode.OPTIMISE
-                ? "blue: meets the constraints, orange: does not; green: best so far"
-                : "dots: runs (hollow red: fell over or failed); line: best at each value";
+                ? "blue: meets the constraints, orange: does not; red line: best so far"
+                : "dots: runs (hollow red: fell over or failed, never the best); line: best at each value";
     }
 
     /** A range that is never empty: a single value gets a margin around it. */
@@ -131,7 +132,7 @@ final class ResultsPlot {
             if (!Double.isFinite(xv) || !Double.isFinite(yv)) {
                 continue;
             }
-            if (r.ok()) {
+            if (results.acceptable(r)) {
                 best.merge(xv, yv, Math::max);
             }
             dot(gc, a.px(xv), a.py(yv), r.fell() || !r.ok() ? RED : BLUE, !r.fell() && r.ok());
@@ -163,7 +164,7 @@ final class ResultsPlot {
             }
             if (!Double.isNaN(bestSoFar)) {
                 int[] p = {a.px(i + 1), a.py(bestSoFar)};
-                gc.setForeground(GREEN);
+                gc.setForeground(RED);
                 gc.setLineWidth(2);
                 if (last != null) {
                     gc.drawLine(last[0], last[1], p[0], last[1]);
@@ -198,7 +199,7 @@ final class ResultsPlot {
         void draw(GC gc, String title, String legend, String xLabel) {
             int bottom = area.height - BOTTOM;
             int right = area.width - RIGHT;
-            gc.setForeground(gc.getDevice().getSystemColor(SWT.COLOR_GRAY));
+            gc.setForeground(org.parpe.gui.panels.Theme.faint());
             for (double v : ticks(yr[0], yr[1])) {
                 gc.drawLine(LEFT, py(v), right, py(v));
                 String s = label(v);
@@ -210,7 +211,7 @@ final class ResultsPlot {
                 gc.drawText(s, px(v) - gc.textExtent(s).x / 2, bottom + 5, true);
             }
             gc.drawRectangle(LEFT, TOP, right - LEFT, bottom - TOP);
-            gc.setForeground(gc.getDevice().getSystemColor(SWT.COLOR_DARK_GRAY));
+            gc.setForeground(org.parpe.gui.panels.Theme.ink());
             gc.drawText(title, LEFT, 4, true);
             gc.drawText(legend, 4, area.height - gc.textExtent(legend).y - 2, true);
             gc.drawText(xLabel, right - gc.textExtent(xLabel).x, area.height - gc.textExtent(xLabel).y - 2, true);

@@ -54,9 +54,10 @@ final class ResultsTable {
         columns.clear();
         sortedBy = null;
         table.setSortColumn(null);
-        // The run's place in the engine's order: a sweep's run number, an optimisation's evaluation
-        // number (the point's own index restarts with each independent search).
-        columns.add(new Column("run", row -> Integer.toString(place.get(row) + 1), Comparator.comparingInt(place::get)));
+        // The run's place in the engine's order, from 0 as the CSV's and parpe sweep's run column: a
+        // sweep's run number, an optimisation's evaluation number (the point's own index restarts
+        // with each independent search).
+        columns.add(new Column("run", row -> Integer.toString(place.get(row)), Comparator.comparingInt(place::get)));
         for (String p : r.parameters()) {
             columns.add(new Column(p, row -> value(row.values().get(p)),
                     Comparator.comparingDouble(row -> nanLast(row.values().get(p)))));

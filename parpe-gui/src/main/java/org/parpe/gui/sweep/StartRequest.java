@@ -32,25 +32,25 @@ record StartRequest(Path file, String text, String robot, String duration, int j
     /** The scheduler's tick, as the IDE's runs and {@code parpe sweep} use. */
     static final double TICK = 0.01;
     /** The tilt beyond which a robot counts as fallen over, as {@code parpe sweep} counts it. */
-    static final double FALL_TILT = 90;
+    static final double FALL_TILT = org.parpe.sim.SimMetrics.FALL_TILT_DEG;
 
     /** A started sweep or optimisation. */
     record Started(Results results, SweepRunner runner, int total) {
     }
 
-    private Evaluator.Settings settings() throws SweepException {
+    private Evaluator.Settings settings(Map<String, Double> held) throws SweepException {
         Double seconds = Numbers.parsePlain(duration);
         if (seconds == null || !(seconds > 0) || seconds.isInfinite() || seconds < TICK) {
             throw new SweepException("the seconds per run must be a number >= " + Numbers.format(TICK) + ", got '"
                     + duration.trim() + "'");
         }
-        return new Evaluator.Settings(file, text, Map.of(), robot, seconds, TICK, FALL_TILT);
+        return new Evaluator.Settings(file, text, held, robot, seconds, TICK, FALL_TILT);
     }
 
     /** Starts the sweep the Sweep tab describes. */
     Started sweep(List<Parameter> parameters, SweepTab tab, Display display, SweepRunner.Events events)
             throws SweepException {
-        Evaluator.Settings s = settings();
+        Evaluator.Settings s = settings(tab.held());
         SweepSpec spec = tab.spec(parameters);
         List<String> names = spec.axes().stream().map(Axis::name).toList();
         Results results = new Results(file, Results.Mode.SWEEP, names, objective, Constraints.NONE);
@@ -60,7 +60,7 @@ record StartRequest(Path file, String text, String robot, String duration, int j
     /** Starts the optimisation the Optimise tab describes. */
     Started optimise(List<Parameter> parameters, OptimiseTab tab, Display display, SweepRunner.Events events)
             throws SweepException {
-        Evaluator.Settings s = settings();
+        Evaluator.Settings s = settings(Map.of());
         OptimizeSpec spec = tab.spec(objective);
         SearchSpace space = new SearchSpace(parameters, Set.of());
         if (space.dimension() == 0) {

@@ -60,6 +60,7 @@ public final class SweepDialog {
     private Results results;
     private SweepRunner runner;
     private int total;
+    private long startedAt;
     /** Counts the starts, so that news of an earlier one can never reach the later one's table. */
     private int generation;
 
@@ -83,7 +84,7 @@ public final class SweepDialog {
         progress.setMaximum(1000);
         progress.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         counts = new Label(bar, SWT.NONE);
-        counts.setLayoutData(new GridData(200, SWT.DEFAULT));
+        counts.setLayoutData(new GridData(280, SWT.DEFAULT));
         message = new Label(shell, SWT.WRAP);
         GridData wrap = new GridData(SWT.FILL, SWT.CENTER, true, false);
         wrap.widthHint = 300;
@@ -209,6 +210,7 @@ public final class SweepDialog {
         pane.show(results);
         progress.setSelection(0);
         counts.setText("0 of " + total + " runs");
+        startedAt = System.nanoTime();
         info(String.format(Locale.ROOT, "Running %d simulation(s) of %s s on %d thread(s)\u2026", total,
                 settings.duration().trim(), settings.jobs()));
         setRunning(true);
@@ -234,7 +236,7 @@ public final class SweepDialog {
             rows.forEach(results::add);
             pane.refresh();
             progress.setSelection(of == 0 ? 0 : (int) (1000L * done / of));
-            counts.setText(done + " of " + of + " runs");
+            counts.setText(done + " of " + of + " runs" + timeLeft(done, of));
             apply.setEnabled(results.best() != null);
         }
 
@@ -248,16 +250,21 @@ public final class SweepDialog {
                 error(StartRequest.words(error));
                 return;
             }
-            results.replace(all);
+            // Stopped: the engine keeps only the runs finished in order; the table keeps every run that
+            // finished (they were shown as they came), so Stop never throws finished work away.
+            if (!cancelled || all.size() >= results.rows().size()) {
+                results.replace(all);
+            }
+            List<SweepRow> kept = results.rows();
             pane.refresh();
-            counts.setText(all.size() + " of " + total + " runs");
+            counts.setText(kept.size() + " of " + total + " runs");
             if (!cancelled) {
                 progress.setSelection(1000);
             }
             SweepRow best = results.best();
-            String head = cancelled ? "Stopped after " + all.size() + " of " + total + " runs. "
-                    : "Finished " + all.size() + " runs. ";
-            info(head + (best == null ? "No run was acceptable (see the error and fell columns)."
+            String head = cancelled ? "Stopped after " + kept.size() + " of " + total + " runs. "
+                    : "Finished " + kept.size() + " runs. ";
+            info(head + (best == null ? noBest(kept)
                     : "Best: run " + results.number(best) + ", " + Results.describe(best.values()) + ": "
                     + results.objective().label() + " " + ResultsTable.number(results.objective().of(best))
                     + (best.fell() ? " (its robot fell over)" : "")));
@@ -270,6 +277,30 @@ public final class SweepDialog {
                 host.problems().accept(problems);
             }
         }
+    }
+
+    /** ", about 1 min 20 s left" from the pace so far, or empty before the first run is done. */
+    private String timeLeft(int done, int of) {
+        if (done <= 0 || done >= of) {
+            return "";
+        }
+        double left = (System.nanoTime() - startedAt) / 1e9 / done * (of - done);
+        long s = Math.round(left);
+        return ", about " + (s >= 3600 ? s / 3600 + " h " + s % 3600 / 60 + " min"
+                : s >= 60 ? s / 60 + " min " + s % 60 + " s" : s + " s") + " left";
+    }
+
+    /** Why no run of {@code all} can be the best, with the counts the table's columns show. */
+    private String noBest(List<SweepRow> all) {
+        if (all.isEmpty()) {
+            return "No run finished.";
+        }
+        long failed = all.stream().filter(r -> !r.ok()).count();
+        long fell = all.stream().filter(r -> r.ok() && r.fell()).count();
+        return results.mode() == Results.Mode.SWEEP
+                ? String.format(Locale.ROOT, "No best run: %d fell over and %d failed (see the fell and error columns);"
+                        + " a run whose robot fell over is never the best.", fell, failed)
+                : "No run met the constraints (see the max tilt, fell and error columns).";
     }
 
     private void stop() {
@@ -309,6 +340,8 @@ public final class SweepDialog {
 
     private void saveCsv() {
         FileDialog d = new FileDialog(shell, SWT.SAVE);
+        d.setText("Save the runs as CSV");
+        d.setFilterPath(csvFolder(host.script().get(), Path.of(System.getProperty("user.home"))).toString());
         d.setFilterExtensions(new String[] {"*.csv", "*"});
         d.setOverwrite(true);
         String name = host.script().get().getFileName().toString().replaceFirst("\\.xml$", "");
@@ -317,6 +350,19 @@ public final class SweepDialog {
         if (p != null) {
             saveCsv(Path.of(p));
         }
+    }
+
+    /**
+     * Where Save CSV… starts: beside the script when that folder can be written (not the examples'
+     * install folder), else Documents, else the home folder; never the process's working folder.
+     */
+    static Path csvFolder(Path script, Path home) {
+        Path parent = script == null ? null : script.toAbsolutePath().normalize().getParent();
+        if (parent != null && java.nio.file.Files.isWritable(parent)) {
+            return parent;
+        }
+        Path documents = home.resolve("Documents");
+        return java.nio.file.Files.isDirectory(documents) ? documents : home;
     }
 
     /** Writes the rows to {@code file} off the UI thread and says when it is done. */

@@ -22,12 +22,13 @@ import org.parpe.sim.sweep.SweepSpec;
 import org.parpe.sim.sweep.VarySpec;
 
 /**
- * The Sweep tab: one line per script parameter (vary it or not, from, to, number of values;
- * its bounds beside), a grid or a random draw with its count, runs per combination and the
+ * The Sweep tab: one line per script parameter (vary it or not, from, to, number of values; the
+ * value it is held at when it is not varied, as {@code parpe sweep --param}; its bounds beside), a grid or a random draw with its count, runs per combination and the
  * seed. {@link #spec} turns the boxes into the engine's {@link SweepSpec} with the engine's
  * own checks and messages ({@link VarySpec}).
  */
 final class SweepTab {
+    private static final String[] COLUMNS = {"Vary", "Parameter", "From", "To", "Values", "Hold at", "Bounds (default)"};
     private final Composite root;
     private final Composite lines;
     private final ScrolledComposite scroller;
@@ -39,7 +40,7 @@ final class SweepTab {
     private final Text seed;
 
     /** The widgets of one parameter. */
-    record Line(Parameter parameter, Button vary, Text from, Text to, Spinner values) {
+    record Line(Parameter parameter, Button vary, Text from, Text to, Spinner values, Text hold) {
     }
 
     SweepTab(Composite parent) {
@@ -50,7 +51,7 @@ final class SweepTab {
         scroller.setExpandHorizontal(true);
         lines = new Composite(scroller, SWT.NONE);
         scroller.setContent(lines);
-        lines.setLayout(new GridLayout(6, false));
+        lines.setLayout(new GridLayout(COLUMNS.length, false));
         Composite how = new Composite(root, SWT.NONE);
         how.setLayout(new GridLayout(8, false));
         grid = new Button(how, SWT.RADIO);
@@ -86,12 +87,12 @@ final class SweepTab {
     void setParameters(List<Parameter> parameters) {
         Map<String, String[]> typed = new LinkedHashMap<>();
         byName.forEach((n, l) -> typed.put(n, new String[] {Boolean.toString(l.vary().getSelection()), l.from().getText(),
-            l.to().getText(), Integer.toString(l.values().getSelection())}));
+            l.to().getText(), Integer.toString(l.values().getSelection()), l.hold().getText()}));
         for (Control c : lines.getChildren()) {
             c.dispose();
         }
         byName.clear();
-        for (String h : new String[] {"Vary", "Parameter", "From", "To", "Values", "Bounds (default)"}) {
+        for (String h : COLUMNS) {
             Label l = new Label(lines, SWT.NONE);
             l.setText(h);
         }
@@ -103,13 +104,14 @@ final class SweepTab {
                 line.from().setText(before[1]);
                 line.to().setText(before[2]);
                 line.values().setSelection(Integer.parseInt(before[3]));
+                line.hold().setText(before[4]);
             }
             byName.put(p.name(), line);
         }
         if (parameters.isEmpty()) {
             Label none = new Label(lines, SWT.WRAP);
             none.setText("The script has no <parameters>: declare some (with min and max) to sweep them.");
-            none.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false, 6, 1));
+            none.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false, COLUMNS.length, 1));
         }
         lines.setSize(lines.computeSize(SWT.DEFAULT, SWT.DEFAULT));
         // The same size as before would not lay the new lines out by itself.
@@ -128,11 +130,16 @@ final class SweepTab {
         to.setLayoutData(new GridData(70, SWT.DEFAULT));
         Spinner values = spinner(lines, 1, 1_000_000, 3);
         values.setToolTipText("How many evenly spaced values from From to To (grid)");
+        Text hold = new Text(lines, SWT.BORDER);
+        hold.setText(Numbers.format(p.value()));
+        hold.setLayoutData(new GridData(70, SWT.DEFAULT));
+        hold.setToolTipText("The value of " + p.name() + " in every run when Vary is not ticked (the script's own: "
+                + Numbers.format(p.value()) + ")");
         Label bounds = new Label(lines, SWT.NONE);
         bounds.setText((p.min() == null ? "-\u221e" : Numbers.format(p.min())) + " \u2026 "
                 + (p.max() == null ? "+\u221e" : Numbers.format(p.max())) + "   (" + Numbers.format(p.value()) + ")");
         bounds.setForeground(lines.getDisplay().getSystemColor(SWT.COLOR_DARK_GRAY));
-        return new Line(p, vary, from, to, values);
+        return new Line(p, vary, from, to, values, hold);
     }
 
     /** The line of parameter {@code name}, or null (tests, automation). */
@@ -177,6 +184,27 @@ final class SweepTab {
                 : SweepSpec.grid(axes, repeat.getSelection(), s.longValue());
         spec.check();
         return spec;
+    }
+
+    /**
+     * The values the parameters that are not varied are held at, as {@code --param NAME=VALUE}
+     * gives them; a box that is not a number throws with one line naming the parameter.
+     */
+    Map<String, Double> held() throws SweepException {
+        Map<String, Double> out = new LinkedHashMap<>();
+        for (Line l : byName.values()) {
+            if (l.vary().getSelection()) {
+                continue;
+            }
+            Double v = Numbers.parsePlain(l.hold().getText());
+            if (v == null || !Double.isFinite(v)) {
+                throw new SweepException("hold " + l.parameter().name() + " at a number, got '" + l.hold().getText().trim() + "'");
+            }
+            if (v != l.parameter().value()) {
+                out.put(l.parameter().name(), v);
+            }
+        }
+        return out;
     }
 
     /** Whether {@code p} counts something: its default and bounds are whole numbers. */

@@ -7,11 +7,15 @@ package org.parpe.gui.view3d;
  * points to camera coordinates (x right, y up, z depth).
  */
 public final class Camera {
-    private static final double MIN_PITCH = Math.toRadians(3);
+    // Not lower than 10°: a drag that misses the robot must not end in a ground-level view
+    // where the robot is a line.
+    private static final double MIN_PITCH = Math.toRadians(10);
+    static final double HOME_YAW = Math.toRadians(-60);
+    static final double HOME_PITCH = Math.toRadians(30);
     private static final double MAX_PITCH = Math.toRadians(89);
 
-    double yaw = Math.toRadians(-60);
-    double pitch = Math.toRadians(30);
+    double yaw = HOME_YAW;
+    double pitch = HOME_PITCH;
     double distance = 1.6;
     final double[] target = {0, 0, 0.05};
     private final double fov = Math.toRadians(45);
@@ -23,6 +27,12 @@ public final class Camera {
     private double focal;
     private double cx;
     private double cy;
+
+    /** Back to the angle the view starts with (Reset view, double-click). */
+    public void resetAngles() {
+        yaw = HOME_YAW;
+        pitch = HOME_PITCH;
+    }
 
     /** Orbits by the given angles, radians. */
     public void rotate(double dYaw, double dPitch) {

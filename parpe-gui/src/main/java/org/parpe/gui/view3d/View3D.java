@@ -154,6 +154,11 @@ public final class View3D {
         canvas.redraw();
     }
 
+    /** Whether the module IDs are shown. */
+    public boolean showIds() {
+        return labels;
+    }
+
     /** Forgets the robot drawn (another script was opened). */
     public void clear() {
         last = null;
@@ -163,6 +168,8 @@ public final class View3D {
 
     /** Frames the robot again on the next snapshot. */
     public void resetView() {
+        // The angle too: after a drag that went wrong, Reset view gives back the usual view.
+        camera.resetAngles();
         framedFor = null;
         canvas.redraw();
     }

@@ -63,6 +63,8 @@ class IdeGuiTest {
         ide.runs().run(false, -1, outcome::set);
         Gui.pump(() -> engineTime() >= 1.0, "1 s of simulated time");
         assertFalse(ide.runs().driven().isEmpty(), "the wave should drive modules while direction = forward");
+        // The view draws on its own timer (about 30 frames a second): at x10 the engine may pass 1 s first.
+        Gui.pump(() -> ide.view().lastSnapshot() != null, "the 3D view to draw the robot");
         assertNotNull(ide.view().lastSnapshot(), "the 3D view has drawn no robot");
         assertFalse(ide.view().lastSnapshot().bodies().isEmpty());
 

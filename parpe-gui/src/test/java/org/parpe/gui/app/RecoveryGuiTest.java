@@ -21,6 +21,7 @@ class RecoveryGuiTest {
     Path dir;
     private IdeWindow ide;
     private final List<String> asked = new ArrayList<>();
+    private final List<String> messages = new ArrayList<>();
 
     @AfterEach
     void closeWindow() {
@@ -35,6 +36,7 @@ class RecoveryGuiTest {
         int[] next = {0};
         w.files().answerWith((title, message, buttons) -> {
             asked.add(title);
+            messages.add(message);
             return next[0] < answers.length ? answers[next[0]++] : 2;
         });
         w.open(null, false);
@@ -95,5 +97,54 @@ class RecoveryGuiTest {
         ide = open(home, 1); // Discard
         ide.shell().dispose();
         assertEquals(List.of(), orphanTexts(home));
+    }
+
+    // Issue 23, item 8.
+
+    @Test
+    void aLessonCopyIsOfferedAndRecoveredByItsName() throws Exception {
+        Path home = dir.resolve("home3");
+        Path lesson = Gui.example("tutorial/02-gait-table-snake.xml");
+        Autosave crashed = new Autosave(home);
+        crashed.write(crashed.untitledSlot(), null, lesson, "<program/>");
+        crashed.close();
+        ide = open(home, 0); // Recover
+        assertTrue(messages.get(0).contains("your copy of the example 02-gait-table-snake.xml"), messages.get(0));
+        assertEquals("02-gait-table-snake.xml (example copy)", ide.files().name(), "not *untitled.xml");
+        assertTrue(ide.shell().getText().startsWith("*02-gait-table-snake.xml"), ide.shell().getText());
+    }
+
+    @Test
+    void textDiscardedWithDontSaveIsNotCopiedAgainWhileAnotherQuestionIsOpen() throws Exception {
+        Path home = dir.resolve("home4");
+        Path script = dir.resolve("mine.xml");
+        Files.writeString(script, Files.readString(Gui.example("hello-snake.xml")));
+        ide = open(home, 1); // "Don't Save"
+        Gui.open(ide, script);
+        ide.editor().document().set(ide.editor().document().get() + "\n<!-- edited -->\n");
+        ide.files().autosaveNow();
+        assertEquals(1, ide.files().autosave().own().size());
+        assertTrue(ide.files().confirmDiscard());
+        // The autosave timer fires while, say, the Pose panel asks about its poses before quitting.
+        ide.files().autosaveNow();
+        assertEquals(List.of(), ide.files().autosave().own(), "the discarded text was copied again");
+        ide.shell().dispose();
+        assertEquals(List.of(), orphanTexts(home), "the discarded text is offered at the next start");
+    }
+
+    @Test
+    void aDocumentUndoneBackToItsSavedTextLeavesNoCopy() throws Exception {
+        Path home = dir.resolve("home5");
+        Path script = dir.resolve("undo.xml");
+        String original = Files.readString(Gui.example("hello-snake.xml"));
+        Files.writeString(script, original);
+        ide = open(home);
+        Gui.open(ide, script);
+        ide.editor().document().set(original + "\n<!-- edited -->\n");
+        ide.files().autosaveNow();
+        assertEquals(1, ide.files().autosave().own().size());
+        ide.editor().document().set(original);
+        ide.files().autosaveNow();
+        assertEquals(List.of(), ide.files().autosave().own(), "a clean document's copy would be offered after a crash");
     }
 }

@@ -2,6 +2,7 @@ package org.parpe.gui.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
@@ -47,6 +48,66 @@ class TutorialGuiTest {
             ide.files().openConfirmed(script);
             Gui.pump(() -> !ide.files().reading() && script.toAbsolutePath().normalize().equals(ide.files().file()),
                     "the lesson's script in the editor");
+        } finally {
+            w.shell().dispose();
+        }
+    }
+
+    /**
+     * Issue 23, item 2: the tutorial was transient for the IDE (pinned above it, covering the
+     * editor and the 3D view) and ran past the bottom of the screen. Now it is a window of its own
+     * that fits the screen's working area, at 1366×768 too, and closes with the IDE.
+     */
+    @Test
+    void theTutorialIsANormalWindowThatFitsOnTheScreen() throws Exception {
+        IdeWindow small = Gui.openIde(Files.createTempDirectory("parpe-tutorial-small"));
+        try {
+            small.shell().setBounds(0, 0, 1366, 768);
+            TutorialWindow w = new TutorialWindow(small.shell(), Examples.tutorialFolder(), p -> { });
+            w.open();
+            Gui.settle();
+            assertNull(w.shell().getParent(), "the tutorial is not pinned above the IDE");
+            org.eclipse.swt.graphics.Rectangle area = small.shell().getMonitor().getClientArea();
+            org.eclipse.swt.graphics.Rectangle b = w.shell().getBounds();
+            assertTrue(area.contains(b.x, b.y) && b.x + b.width <= area.x + area.width && b.y + b.height <= area.y + area.height,
+                    "the tutorial " + b + " runs past the screen " + area);
+            assertTrue(b.width <= area.width / 2 + 1 || b.width <= 1100, "it leaves room for the editor: " + b);
+            small.shell().dispose();
+            assertTrue(w.shell().isDisposed(), "the tutorial closes with the IDE");
+        } finally {
+            Gui.closeIde(small);
+        }
+    }
+
+    /**
+     * Issue 23, item 11: the tutorial's tables were runs of words, italics kept their asterisks,
+     * links could not be clicked, and a lesson's code could not be sent to the editor.
+     */
+    @Test
+    void tablesItalicsLinksAndCodeForTheEditor() throws Exception {
+        java.util.List<String> sent = new java.util.ArrayList<>();
+        java.util.List<Path> opened = new java.util.ArrayList<>();
+        TutorialWindow w = new TutorialWindow(ide.shell(), Examples.tutorialFolder(), opened::add, sent::add);
+        w.open();
+        try {
+            int lesson11 = java.util.Arrays.asList(w.titles()).indexOf(
+                    java.util.Arrays.stream(w.titles()).filter(t -> t.startsWith("Lesson 11")).findFirst().orElseThrow());
+            w.show(lesson11);
+            Gui.settle();
+            assertTrue(w.shownText().contains("\t"), "a table's cells are in columns (tab stops)");
+            assertTrue(!w.shownText().contains("*"), "no literal asterisks of italics or bold");
+            assertTrue(w.shownText().contains("\u25b6 Insert this code into the editor"), "XML code can go to the editor");
+            int insert = w.shownText().indexOf("\u25b6 Insert this code into the editor");
+            w.clickAt(insert + 3);
+            assertEquals(1, sent.size());
+            assertTrue(sent.get(0).strip().startsWith("<"), sent.get(0));
+            // A link to a script opens it; a link to another lesson shows it.
+            String text = w.shownText();
+            int[] script = w.clickable().stream().filter(c -> text.substring(c[0], c[0] + c[1]).endsWith(".xml"))
+                    .findFirst().orElseThrow(() -> new AssertionError("lesson 11 links no script"));
+            w.clickAt(script[0]);
+            assertEquals(1, opened.size(), "the linked script was not opened");
+            Gui.screenshot(w.shell(), "tutorial-lesson-11.png");
         } finally {
             w.shell().dispose();
         }

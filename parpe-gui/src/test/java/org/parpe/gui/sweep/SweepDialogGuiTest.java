@@ -76,23 +76,12 @@ class SweepDialogGuiTest {
 
     @AfterEach
     void close() {
-        if (dialog != null && !dialog.shell().isDisposed()) {
-            if (dialog.running()) {
-                Ui.click(dialog.stopButton());
-                Ui.pump(() -> !dialog.running(), "the sweep to stop");
-            }
-            dialog.shell().dispose();
-        }
+        Ui.close(dialog);
         window.dispose();
     }
 
     private void vary(String name, String from, String to, int values) {
-        SweepTab.Line l = dialog.sweepTab().line(name);
-        assertNotNull(l, "no line for parameter " + name);
-        l.vary().setSelection(true);
-        l.from().setText(from);
-        l.to().setText(to);
-        l.values().setSelection(values);
+        Ui.vary(dialog, name, from, to, values);
     }
 
     private void runToEnd() {
@@ -125,7 +114,7 @@ class SweepDialogGuiTest {
         assertEquals(4, dialog.table().control().getItemCount());
         for (int i = 0; i < 4; i++) {
             SweepRow e = expected.get(i);
-            assertEquals(Integer.toString(i + 1), dialog.table().cell(i, 0));
+            assertEquals(Integer.toString(i), dialog.table().cell(i, 0), "runs are numbered from 0, as in the CSV");
             assertEquals(Numbers.format(e.values().get("amp")), dialog.table().cell(i, 1));
             assertEquals(Numbers.format(e.values().get("period")), dialog.table().cell(i, 2));
             assertEquals(String.format(java.util.Locale.ROOT, "%.4f", e.forwardSpeed()), dialog.table().cell(i, 3));
@@ -136,7 +125,7 @@ class SweepDialogGuiTest {
         // A click on the forward-speed header sorts by it, best first.
         dialog.table().control().getColumn(3).notifyListeners(SWT.Selection, new org.eclipse.swt.widgets.Event());
         SweepRow best = expected.stream().max(java.util.Comparator.comparingDouble(SweepRow::forwardSpeed)).orElseThrow();
-        assertEquals(Integer.toString(best.point().index() + 1), dialog.table().cell(0, 0));
+        assertEquals(Integer.toString(best.point().index()), dialog.table().cell(0, 0));
 
         Path csv = Files.createTempDirectory("parpe-sweep-csv").resolve("out.csv");
         dialog.saveCsv(csv);
@@ -191,9 +180,12 @@ class SweepDialogGuiTest {
         Ui.pump(() -> dialog.table().control().getItemCount() > 0 || !dialog.running(), "the first row");
         assertTrue(dialog.running(), "the sweep ended before Stop: " + dialog.message());
         assertEquals(dialog.results().rows().get(0), dialog.table().rowAt(0));
+        int shown = dialog.results().rows().size();
         Ui.click(dialog.stopButton());
         Ui.pump(() -> !dialog.running(), "Stop to end the sweep");
         assertTrue(dialog.message().startsWith("Stopped after "), dialog.message());
+        assertTrue(dialog.results().rows().size() >= shown, "Stop threw finished runs away (issue 23, item 13)");
+        assertFalse(dialog.message().contains("No run was acceptable"), dialog.message());
         assertTrue(dialog.results().rows().size() < 40);
         assertTrue(dialog.startButton().isEnabled());
 
@@ -297,7 +289,7 @@ class SweepDialogGuiTest {
         assertEquals(6, dialog.table().control().getItemCount());
         assertEquals("N", dialog.table().control().getColumn(1).getText());
         for (int i = 0; i < 6; i++) {
-            assertEquals(Integer.toString(i + 1), dialog.table().cell(i, 0), "evaluations are numbered in the engine's order");
+            assertEquals(Integer.toString(i), dialog.table().cell(i, 0), "evaluations are numbered in the engine's order");
         }
         Ui.settle();
         Ui.screenshot(dialog.shell(), "sweep-dialog-optimise.png");

@@ -54,4 +54,25 @@ final class Ui {
         assertTrue(Screenshot.distinctColours(d, 64) >= 64, "screenshot " + f + " looks blank");
         return f;
     }
+
+    /** Ticks Vary for parameter {@code name} of {@code dialog}'s Sweep tab with its range and number of values. */
+    static void vary(SweepDialog dialog, String name, String from, String to, int values) {
+        SweepTab.Line l = dialog.sweepTab().line(name);
+        org.junit.jupiter.api.Assertions.assertNotNull(l, "no line for parameter " + name);
+        l.vary().setSelection(true);
+        l.from().setText(from);
+        l.to().setText(to);
+        l.values().setSelection(values);
+    }
+
+    /** Stops {@code dialog}'s runs, if any, and closes it. */
+    static void close(SweepDialog dialog) {
+        if (dialog != null && !dialog.shell().isDisposed()) {
+            if (dialog.running()) {
+                click(dialog.stopButton());
+                pump(() -> !dialog.running(), "the sweep to stop");
+            }
+            dialog.shell().dispose();
+        }
+    }
 }

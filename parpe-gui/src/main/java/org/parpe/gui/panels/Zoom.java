@@ -1,0 +1,48 @@
+package org.parpe.gui.panels;
+
+import org.eclipse.swt.graphics.Font;
+import org.eclipse.swt.graphics.FontData;
+import org.eclipse.swt.widgets.Control;
+
+/**
+ * Larger or smaller text for a projector (Ctrl + / Ctrl − / Ctrl 0): a control's font is its
+ * normal font grown by 2 points a step. The fonts made here are disposed with their control.
+ */
+public final class Zoom {
+    private static final String KEY = "parpe.zoomFont";
+
+    private Zoom() {
+    }
+
+    /** Shows {@code c} in {@code normal} grown by {@code steps} × 2 points (0: {@code normal} itself). */
+    public static void apply(Control c, Font normal, int steps) {
+        if (c == null || c.isDisposed()) {
+            return;
+        }
+        Font before = (Font) c.getData(KEY);
+        Font now = normal;
+        if (steps != 0) {
+            FontData[] fd = normal.getFontData();
+            for (FontData d : fd) {
+                d.setHeight(Math.max(6, d.getHeight() + 2 * steps));
+            }
+            now = new Font(c.getDisplay(), fd);
+            if (before == null) {
+                c.addListener(org.eclipse.swt.SWT.Dispose, e -> {
+                    Font f = (Font) c.getData(KEY);
+                    if (f != null) {
+                        f.dispose();
+                    }
+                });
+            }
+        }
+        c.setFont(now);
+        c.setData(KEY, steps == 0 ? null : now);
+        if (before != null) {
+            before.dispose();
+        }
+        if (c.getParent() != null) {
+            c.getParent().layout(true, true);
+        }
+    }
+}

@@ -1,0 +1,125 @@
+package org.parpe.gui.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.util.Arrays;
+import java.util.List;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.graphics.Rectangle;
+import org.eclipse.swt.widgets.Button;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Control;
+import org.eclipse.swt.widgets.Menu;
+import org.eclipse.swt.widgets.MenuItem;
+import org.eclipse.swt.widgets.ToolBar;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Issue 23, item 4: at 1366×768, the common classroom laptop, Hardware… and the profile fell off
+ * the run tool bar, the 3D bar lost Module IDs and Reset view, the grid buttons wrapped and the
+ * joint list showed "module" without numbers. Now what does not fit goes behind a chevron (»)
+ * whose menu still reaches it, nothing is drawn past a bar's edge, and the window remembers being
+ * maximised. Real widgets under Xvfb, in a window of exactly 1366×768.
+ */
+class SmallScreenGuiTest {
+    private IdeWindow ide;
+
+    @AfterEach
+    void close() {
+        Gui.closeIde(ide);
+    }
+
+    private static List<String> texts(Menu m) {
+        return Arrays.stream(m.getItems()).map(MenuItem::getText).toList();
+    }
+
+    /** Every visible child of {@code bar} lies inside it. */
+    private static void inside(Composite bar) {
+        Rectangle area = bar.getClientArea();
+        for (Control c : bar.getChildren()) {
+            Rectangle b = c.getBounds();
+            assertTrue(!c.getVisible() || b.x >= 0 && b.x + b.width <= area.width,
+                    c + " is drawn past the edge of its bar: " + b + " in " + area);
+        }
+    }
+
+    @Test
+    void atLaptopSizeNothingFallsOffTheBarsAndTheChevronReachesIt() throws Exception {
+        ide = Gui.openIde(Files.createTempDirectory("parpe-1366"));
+        ide.shell().setBounds(0, 0, 1366, 768);
+        Gui.open(ide, Gui.example("tutorial/02-gait-table-snake.xml"));
+        Gui.pump(() -> ide.program() != null, "the lesson to load");
+        assertTrue(ide.grid().showTable("travel"));
+        Gui.settle();
+
+        var run = (Composite) ide.toolbar().control();
+        var overflow = (org.parpe.gui.panels.OverflowBar) run.getData(org.parpe.gui.panels.OverflowBar.KEY);
+        inside(run);
+        assertTrue(overflow.overflowing(), "at 1366 pixels the run tool bar does not hold everything");
+        assertTrue(Arrays.stream(run.getChildren()).anyMatch(c -> c instanceof ToolBar && c.getVisible()),
+                "Run, Stop and the emergency stop stay in sight");
+        Menu more = overflow.menu();
+        assertTrue(texts(more).contains("Hardware\u2026"), "Hardware… is in the chevron's menu: " + texts(more));
+        more.dispose();
+
+        var view = (Composite) ide.viewBar().control();
+        var viewOverflow = (org.parpe.gui.panels.OverflowBar) view.getData(org.parpe.gui.panels.OverflowBar.KEY);
+        inside(view);
+        if (viewOverflow.overflowing()) {
+            Menu m = viewOverflow.menu();
+            MenuItem ids = Arrays.stream(m.getItems()).filter(i -> i.getText().equals("Module IDs")).findFirst().orElseThrow(
+                    () -> new AssertionError("Module IDs is neither in the 3D bar nor behind its chevron: " + texts(m)));
+            ids.setSelection(true);
+            ids.notifyListeners(SWT.Selection, new org.eclipse.swt.widgets.Event());
+            assertTrue(ide.view().showIds(), "the menu's Module IDs turns the labels on");
+            m.dispose();
+        }
+
+        Composite gridBar = ide.grid().toolBar();
+        inside(gridBar);
+        int rowHeight = Arrays.stream(gridBar.getChildren()).filter(c -> c instanceof Button).mapToInt(c -> c.getSize().y)
+                .max().orElse(0);
+        assertTrue(gridBar.getSize().y < 2 * rowHeight, "the grid's buttons are one row, not wrapped: " + gridBar.getSize());
+
+        org.eclipse.swt.widgets.List modules = Arrays.stream(((Composite) ide.plots().control()).getChildren())
+                .filter(c -> c instanceof org.eclipse.swt.widgets.List).map(c -> (org.eclipse.swt.widgets.List) c)
+                .findFirst().orElseThrow();
+        assertEquals("m0", modules.getItem(0), "the joint list names modules as the chart's legend does");
+        assertTrue(modules.getSize().x >= modules.computeSize(SWT.DEFAULT, SWT.DEFAULT).x - 20,
+                "the joint list is wide enough for its names");
+        Gui.screenshot(ide.shell(), "ide-1366x768.png");
+    }
+
+    @Test
+    void theWindowRemembersBeingMaximised() throws Exception {
+        var home = Files.createTempDirectory("parpe-max");
+        ide = Gui.openIde(home);
+        ide.shell().setMaximized(true);
+        Gui.settle();
+        assertTrue(ide.closeRequested());
+        ide.shell().close();
+        assertEquals("true", new Prefs(home).get("window.maximised", "false"));
+        ide = Gui.openIde(home);
+        assertTrue(ide.shell().getMaximized(), "the window opens maximised again");
+        assertFalse(ide.shell().isDisposed());
+    }
+
+    @Test
+    void panesKeepTheirMinimumWhenSqueezed() throws Exception {
+        ide = Gui.openIde(Files.createTempDirectory("parpe-panes"));
+        ide.shell().setBounds(0, 0, 1366, 768);
+        Gui.settle();
+        ide.mainSash().setWeights(1, 98, 1);
+        Gui.pump(() -> ide.mainSash().getChildren()[0].getSize().x >= 115, "the outline to grow back to its minimum");
+        Gui.settle();
+        Control[] panes = Arrays.stream(ide.mainSash().getChildren()).filter(c -> !(c instanceof org.eclipse.swt.widgets.Sash))
+                .toArray(Control[]::new);
+        assertTrue(panes[0].getSize().x >= 115, "outline " + panes[0].getSize());
+        assertTrue(panes[2].getSize().x >= 295, "3D view " + panes[2].getSize());
+        assertTrue(panes[1].getSize().x >= 415, "editor " + panes[1].getSize());
+    }
+}
