@@ -40,12 +40,6 @@ public final class ExprCompiler {
     private ExprCompiler() {
     }
 
-    /** Names that no script may define: functions and constants of §8 and the keywords. */
-    public static boolean isReserved(String name) {
-        return NameResolver.CONSTANTS.contains(name) || name.equals("forever") || name.equals("all")
-                || Functions.arity(name) != -1 && name.equals(name.toLowerCase(Locale.ROOT));
-    }
-
     /** Compiles {@code src} in {@code scope}; returns {@code null} after reporting errors. */
     public static Result compile(XText src, Scope scope, DiagnosticSink diags) {
         String text = src.value();

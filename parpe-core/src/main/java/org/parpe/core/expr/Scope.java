@@ -1,6 +1,5 @@
 package org.parpe.core.expr;
 
-import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.parpe.core.run.Channel;
@@ -66,6 +65,4 @@ public record Scope(Kind kind, Map<String, Double> parameters, Map<String, Integ
             default: return false;
         }
     }
-
-    static final List<String> LOGICAL = List.of("time", "btime", "index", "count", "id", "phase", "cycle");
 }

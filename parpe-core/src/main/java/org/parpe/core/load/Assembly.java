@@ -11,6 +11,8 @@ import java.util.Set;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.expr.Names;
+import org.parpe.core.lang.Vocabulary;
+import org.parpe.core.lang.Vocabulary.Element;
 import org.parpe.core.xml.InputFiles;
 import org.parpe.core.xml.SourceText;
 import org.parpe.core.xml.XElement;
@@ -22,8 +24,6 @@ import org.parpe.core.xml.XmlReader;
  * order, the content of an include standing where its {@code <include>} is.
  */
 final class Assembly {
-    static final List<String> SECTIONS = List.of("robot", "parameters", "controls", "main", "behaviors",
-            "automata", "states");
     /** How deep includes may nest: far beyond real use, and the assembly recurses once per level. */
     static final int MAX_INCLUDE_DEPTH = 64;
     private static final List<String> MERGED = List.of("parameters", "controls", "states", "automata", "behaviors");
@@ -68,7 +68,7 @@ final class Assembly {
             return;
         }
         this.root = root;
-        Attrs.allow(root, diags, List.of());
+        Attrs.allow(root, diags, Element.PROGRAM.attributes());
         Attrs.noText(root, diags);
         stack.push(key(file));
         done.add(key(file));
@@ -84,14 +84,14 @@ final class Assembly {
         Set<String> seen = new HashSet<>();
         for (XElement s : root.children()) {
             String name = s.name();
-            if (name.equals("include")) {
+            if (name.equals(Vocabulary.INCLUDE)) {
                 include(s, file, anchor == null ? s.pos() : anchor);
                 continue;
             }
-            if (!SECTIONS.contains(name)) {
-                String best = Names.closest(name, SECTIONS);
+            if (!Vocabulary.SECTIONS.contains(name)) {
+                String best = Names.closest(name, Vocabulary.SECTIONS);
                 diags.error(s.pos(), "unknown section <" + name + ">" + (best != null ? " (did you mean <" + best + ">?)"
-                        : " (sections are " + String.join(", ", SECTIONS) + " and include)"));
+                        : " (sections are " + String.join(", ", Vocabulary.SECTIONS) + " and include)"));
                 continue;
             }
             if (!seen.add(name)) {
@@ -110,7 +110,7 @@ final class Assembly {
     }
 
     private void include(XElement inc, Path from, SourcePos anchor) {
-        Attrs.allow(inc, diags, List.of("file"));
+        Attrs.allow(inc, diags, Element.INCLUDE.attributes());
         Attrs.noChildren(inc, diags);
         Attrs.noText(inc, diags);
         XText rel = Attrs.require(inc, "file", diags);

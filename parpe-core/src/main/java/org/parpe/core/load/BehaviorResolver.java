@@ -11,6 +11,8 @@ import org.parpe.core.expr.ExprCompiler;
 import org.parpe.core.expr.Expression;
 import org.parpe.core.expr.Names;
 import org.parpe.core.expr.Scope;
+import org.parpe.core.lang.Vocabulary;
+import org.parpe.core.lang.Vocabulary.Element;
 import org.parpe.core.model.Behavior;
 import org.parpe.core.model.BehaviorItem;
 import org.parpe.core.model.Conditional;
@@ -21,7 +23,7 @@ import org.parpe.core.xml.XText;
 
 /** Resolves {@code <behaviors>} (PARSL.md §7) and the static checks on their instances. */
 final class BehaviorResolver {
-    static final List<String> INSTANCE_ATTRS = List.of("group", "phase", "offset", "period", "start", "cycles");
+    private static final List<String> INSTANCE_ATTRS = Element.INSTANCE.attributes();
 
     /** What the checks need to know of an instance. */
     record InstanceInfo(Instance model, boolean conditional, String base, boolean mirror, boolean macroGroup) {
@@ -71,7 +73,7 @@ final class BehaviorResolver {
 
     void behaviors(List<Assembly.Section> sections) {
         for (Assembly.Section s : sections) {
-            Attrs.allow(s.element(), d, List.of());
+            Attrs.allow(s.element(), d, Element.SECTION.attributes());
             Attrs.noText(s.element(), d);
             int index = 0;
             for (XElement e : s.element().children()) {
@@ -81,7 +83,7 @@ final class BehaviorResolver {
     }
 
     private void behavior(XElement e, Assembly.Section s, int index) {
-        Attrs.allow(e, d, List.of("macros"));
+        Attrs.allow(e, d, Element.BEHAVIOR.attributes());
         Attrs.noText(e, d);
         String name = e.name();
         if (!Attrs.validName(name, "behavior", e.pos(), d)) {
@@ -140,14 +142,14 @@ final class BehaviorResolver {
     private static void collectGroupMacros(XElement e, List<String> macros, Set<String> out) {
         for (XElement c : e.children()) {
             XElement.XAttr g = c.attr("group");
-            if (!c.name().equals("if") && g != null) {
+            if (!c.name().equals(Vocabulary.IF) && g != null) {
                 String base = g.value().value().trim();
                 base = base.startsWith("!") ? base.substring(1).trim() : base;
                 if (macros.contains(base)) {
                     out.add(base);
                 }
             }
-            if (c.name().equals("if")) {
+            if (c.name().equals(Vocabulary.IF)) {
                 collectGroupMacros(c, macros, out);
             }
         }
@@ -157,8 +159,8 @@ final class BehaviorResolver {
                                      Set<String> groupMacros, List<InstanceInfo> infos) {
         List<BehaviorItem> out = new ArrayList<>();
         for (XElement c : parent.children()) {
-            if (c.name().equals("if")) {
-                Attrs.allow(c, d, List.of("cond"));
+            if (c.name().equals(Vocabulary.IF)) {
+                Attrs.allow(c, d, Element.CONDITIONAL.attributes());
                 Attrs.noText(c, d);
                 XText cond = Attrs.require(c, "cond", d);
                 ExprCompiler.Result r = cond == null ? null

@@ -10,6 +10,8 @@ import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.Severity;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.expr.Names;
+import org.parpe.core.lang.Vocabulary;
+import org.parpe.core.lang.Vocabulary.Element;
 import org.parpe.core.model.Control;
 import org.parpe.core.model.Control.ControlType;
 import org.parpe.core.model.Numbers;
@@ -19,8 +21,6 @@ import org.parpe.core.xml.XText;
 
 /** Resolves {@code <parameters>} (PARSL.md §3) and {@code <controls>} (§4). */
 final class Declarations {
-    private static final Set<String> CONTROL_RESERVED = Set.of("time", "btime", "index", "count", "id", "phase", "cycle");
-    private static final Set<String> KEYS = keyNames();
 
     final List<Parameter> parameters = new ArrayList<>();
     final Map<String, Double> values = new LinkedHashMap<>();
@@ -36,20 +36,9 @@ final class Declarations {
         this.names = names;
     }
 
-    private static Set<String> keyNames() {
-        Set<String> k = new java.util.HashSet<>(List.of("Up", "Down", "Left", "Right", "space"));
-        for (char c = 'a'; c <= 'z'; c++) {
-            k.add(String.valueOf(c));
-        }
-        for (char c = '0'; c <= '9'; c++) {
-            k.add(String.valueOf(c));
-        }
-        return k;
-    }
-
     void parameters(List<Assembly.Section> sections, Map<String, Double> overrides) {
         for (Assembly.Section s : sections) {
-            Attrs.allow(s.element(), d, List.of());
+            Attrs.allow(s.element(), d, Element.SECTION.attributes());
             Attrs.noText(s.element(), d);
             int i = 0;
             for (XElement e : s.element().children()) {
@@ -75,7 +64,7 @@ final class Declarations {
     }
 
     private void parameter(XElement e, Assembly.Section s, int index) {
-        Attrs.allow(e, d, List.of("type", "value", "min", "max", "label"));
+        Attrs.allow(e, d, Element.PARAMETER.attributes());
         Attrs.noText(e, d);
         Attrs.noChildren(e, d);
         String name = e.name();
@@ -142,7 +131,7 @@ final class Declarations {
 
     void controls(List<Assembly.Section> sections) {
         for (Assembly.Section s : sections) {
-            Attrs.allow(s.element(), d, List.of());
+            Attrs.allow(s.element(), d, Element.SECTION.attributes());
             Attrs.noText(s.element(), d);
             int i = 0;
             for (XElement e : s.element().children()) {
@@ -156,7 +145,7 @@ final class Declarations {
         Attrs.noChildren(e, d);
         String name = e.name();
         boolean ok = Attrs.validName(name, "control", e.pos(), d);
-        if (CONTROL_RESERVED.contains(name)) {
+        if (Vocabulary.LOGICAL_VARIABLES.contains(name)) {
             d.error(e.pos(), "a control cannot be named '" + name + "' ($" + name + " is a logical variable)");
             ok = false;
         }
@@ -184,7 +173,7 @@ final class Declarations {
     }
 
     private Control slider(XElement e, String name) {
-        Attrs.allow(e, d, List.of("type", "min", "max", "value", "step", "label", "keys"));
+        Attrs.allow(e, d, Element.SLIDER.attributes());
         String what = "slider '" + name + "'";
         Double min = number(e, "min", true, what);
         Double max = number(e, "max", true, what);
@@ -202,14 +191,14 @@ final class Declarations {
     }
 
     private Control text(XElement e, String name) {
-        Attrs.allow(e, d, List.of("type", "value", "label"));
+        Attrs.allow(e, d, Element.TEXT_CONTROL.attributes());
         Double value = number(e, "value", true, "control '" + name + "'");
         return value == null ? null
                 : new Control(name, ControlType.TEXT, value, null, null, null, label(e), List.of(), List.of(), e.pos());
     }
 
     private Control radio(XElement e, String name, Assembly.Section s, int index) {
-        Attrs.allow(e, d, List.of("type", "values", "value", "label", "keys"));
+        Attrs.allow(e, d, Element.RADIO.attributes());
         XText values = Attrs.require(e, "values", d);
         if (values == null) {
             return null;
@@ -257,7 +246,7 @@ final class Declarations {
         }
         List<String> keys = new ArrayList<>();
         for (XText k : ListItem.split(t, ',')) {
-            if (!KEYS.contains(k.value())) {
+            if (!Vocabulary.keyNames().contains(k.value())) {
                 d.error(k.pos(), "unknown key '" + k.value() + "' (keys are a-z, 0-9, Up, Down, Left, Right, space)");
                 return null;
             }

@@ -10,6 +10,8 @@ import org.parpe.core.expr.ExprCompiler;
 import org.parpe.core.expr.Expression;
 import org.parpe.core.expr.Names;
 import org.parpe.core.expr.Scope;
+import org.parpe.core.lang.Vocabulary;
+import org.parpe.core.lang.Vocabulary.Element;
 import org.parpe.core.model.Behavior;
 import org.parpe.core.model.MainDef;
 import org.parpe.core.model.MainEntry;
@@ -34,7 +36,7 @@ final class MainResolver {
     }
 
     MainDef resolve(XElement main, Map<String, Double> params) {
-        Attrs.allow(main, d, List.of("cycles"));
+        Attrs.allow(main, d, Element.MAIN.attributes());
         Attrs.noText(main, d);
         XText cyclesText = Attrs.optional(main, "cycles");
         long cycles = cyclesText == null ? 1 : cycles(cyclesText);
@@ -49,7 +51,7 @@ final class MainResolver {
     }
 
     private long cycles(XText t) {
-        if (t.value().trim().equals("forever")) {
+        if (t.value().trim().equals(Vocabulary.FOREVER)) {
             return MainDef.FOREVER;
         }
         ExprCompiler.Result r = ExprCompiler.compile(t, scopes.scope(Scope.Kind.PARAMETERS_ONLY, Map.of(), Set.of()), d);
@@ -77,7 +79,7 @@ final class MainResolver {
             return null;
         }
         Behavior b = info.model();
-        List<String> allowed = new ArrayList<>(List.of("time", "exit"));
+        List<String> allowed = new ArrayList<>(Element.ENTRY.attributes());
         allowed.addAll(b.macros());
         Attrs.allow(e, d, allowed);
         Scope scope = scopes.scope(Scope.Kind.ENTRY, Map.of(), Set.of());

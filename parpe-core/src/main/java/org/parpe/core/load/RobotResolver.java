@@ -12,6 +12,8 @@ import org.parpe.core.expr.ExprCompiler;
 import org.parpe.core.expr.Expression;
 import org.parpe.core.expr.Names;
 import org.parpe.core.expr.Scope;
+import org.parpe.core.lang.Vocabulary;
+import org.parpe.core.lang.Vocabulary.Element;
 import org.parpe.core.model.Group;
 import org.parpe.core.model.Numbers;
 import org.parpe.core.model.Robot;
@@ -26,7 +28,6 @@ import org.parpe.core.xml.XmlReader;
 final class RobotResolver {
     /** The largest module ID a script may use. */
     static final int MAX_ID = 65_535;
-    private static final List<String> SENSOR_TYPES = List.of("angle", "accel", "touch");
 
     private final DiagnosticSink d;
     private final NameRegistry names;
@@ -51,7 +52,7 @@ final class RobotResolver {
             d.error(rootPos, "the program has no <robot> section (it is required)");
             return null;
         }
-        Attrs.allow(robot, d, List.of("file"));
+        Attrs.allow(robot, d, Element.ROBOT.attributes());
         Attrs.noText(robot, d);
         XText file = Attrs.optional(robot, "file");
         XElement body = robot;
@@ -78,7 +79,7 @@ final class RobotResolver {
                 d.error(body.pos(), "a robot file's root element must be <robot>, got <" + body.name() + ">");
                 return null;
             }
-            Attrs.allow(body, d, List.of());
+            Attrs.allow(body, d, Element.SECTION.attributes());
             Attrs.noText(body, d);
             fileName = file.value().trim();
         }
@@ -123,13 +124,13 @@ final class RobotResolver {
             d.error(c.pos(), "<" + c.name() + "> appears twice in <robot>");
             return previous;
         }
-        Attrs.allow(c, d, List.of());
+        Attrs.allow(c, d, Element.ROBOT_PART.attributes());
         Attrs.noText(c, d);
         return c;
     }
 
     private void actuators(XElement a) {
-        Attrs.allow(a, d, List.of());
+        Attrs.allow(a, d, Element.ROBOT_PART.attributes());
         Attrs.noText(a, d);
         for (XElement c : a.children()) {
             d.error(c.pos(), "actuator '" + c.name() + "' is not implemented (no actuator types are available)");
@@ -140,7 +141,7 @@ final class RobotResolver {
         int index = 0;
         for (XElement g : s.children()) {
             index++;
-            Attrs.allow(g, d, List.of("elements"));
+            Attrs.allow(g, d, Element.GROUP.attributes());
             Attrs.noText(g, d);
             Attrs.noChildren(g, d);
             String name = g.name();
@@ -283,11 +284,11 @@ final class RobotResolver {
         for (XElement e : s.children()) {
             Attrs.noText(e, d);
             Attrs.noChildren(e, d);
-            if (!SENSOR_TYPES.contains(e.name())) {
+            if (!Vocabulary.SENSOR_TYPES.contains(e.name())) {
                 d.error(e.pos(), "sensor '" + e.name() + "' is not implemented; available: angle, accel, touch");
                 continue;
             }
-            Attrs.allow(e, d, List.of("elements"));
+            Attrs.allow(e, d, Element.SENSOR.attributes());
             if (!seen.add(e.name())) {
                 d.error(e.pos(), "sensor '" + e.name() + "' is declared twice in <sensors>");
                 continue;

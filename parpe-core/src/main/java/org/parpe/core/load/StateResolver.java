@@ -10,6 +10,7 @@ import org.parpe.core.expr.ExprCompiler;
 import org.parpe.core.expr.Expression;
 import org.parpe.core.expr.Names;
 import org.parpe.core.expr.Scope;
+import org.parpe.core.lang.Vocabulary.Element;
 import org.parpe.core.model.Automaton;
 import org.parpe.core.model.Interp;
 import org.parpe.core.model.StateDef;
@@ -37,7 +38,7 @@ final class StateResolver {
 
     void states(List<Assembly.Section> sections) {
         for (Assembly.Section s : sections) {
-            Attrs.allow(s.element(), d, List.of());
+            Attrs.allow(s.element(), d, Element.SECTION.attributes());
             Attrs.noText(s.element(), d);
             for (XElement e : s.element().children()) {
                 state(e, s);
@@ -46,7 +47,7 @@ final class StateResolver {
     }
 
     private void state(XElement e, Assembly.Section s) {
-        Attrs.allow(e, d, List.of("angles", "interp"));
+        Attrs.allow(e, d, Element.STATE.attributes());
         Attrs.noText(e, d);
         Attrs.noChildren(e, d);
         String name = e.name();
@@ -101,7 +102,7 @@ final class StateResolver {
 
     void automata(List<Assembly.Section> sections) {
         for (Assembly.Section s : sections) {
-            Attrs.allow(s.element(), d, List.of());
+            Attrs.allow(s.element(), d, Element.SECTION.attributes());
             Attrs.noText(s.element(), d);
             for (XElement e : s.element().children()) {
                 automaton(e, s);
@@ -110,7 +111,7 @@ final class StateResolver {
     }
 
     private void automaton(XElement e, Assembly.Section s) {
-        Attrs.allow(e, d, List.of("states", "times"));
+        Attrs.allow(e, d, Element.AUTOMATON.attributes());
         Attrs.noChildren(e, d);
         String name = e.name();
         if (!Attrs.validName(name, "automaton", e.pos(), d)) {
