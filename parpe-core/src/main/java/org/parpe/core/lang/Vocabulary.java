@@ -60,7 +60,7 @@ public final class Vocabulary {
     public enum Element {
         /** {@code <program>}. */
         PROGRAM,
-        /** A section without attributes ({@code <parameters>}, {@code <states>}, …). */
+        /** A section without attributes ({@code <parameters>}, {@code <states>}, …), and a robot file's root. */
         SECTION,
         /** {@code <robot>} in a program. */
         ROBOT("file"),
@@ -68,7 +68,7 @@ public final class Vocabulary {
         INCLUDE("file"),
         /** {@code <main>}. */
         MAIN("cycles"),
-        /** {@code <structure>}, {@code <sensors>}, {@code <actuators>}, and a robot file's root. */
+        /** {@code <structure>}, {@code <sensors>}, {@code <actuators>}. */
         ROBOT_PART,
         /** A group of {@code <structure>}. */
         GROUP("elements"),
