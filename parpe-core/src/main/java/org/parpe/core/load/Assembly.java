@@ -42,25 +42,58 @@ final class Assembly {
         }
     }
 
-    final List<Section> sections = new ArrayList<>();
-    /** The main file and every included file read, in the order read. */
-    final List<Path> files = new ArrayList<>();
-    XElement robot;
-    int robotOrder;
-    XElement main;
-    /** The root element of the main file, or {@code null} if it did not parse. */
-    XElement root;
+    /**
+     * What reading a main file and its includes gave.
+     *
+     * @param sections   the merged sections ({@code parameters}, {@code controls}, {@code states},
+     *                   {@code automata}, {@code behaviors}) in document order
+     * @param files      the main file and every included file read, in the order read
+     * @param root       the root element of the main file, or {@code null} if it did not parse
+     * @param robot      the main file's {@code <robot>}, or {@code null}
+     * @param robotOrder the robot's place in the merged document order
+     * @param main       the main file's {@code <main>}, or {@code null}
+     */
+    record Assembled(List<Section> sections, List<Path> files, XElement root, XElement robot, int robotOrder,
+                     XElement main) {
+        Assembled {
+            sections = List.copyOf(sections);
+            files = List.copyOf(files);
+        }
+
+        /** The sections of one kind, in document order. */
+        List<Section> of(String kind) {
+            return sections.stream().filter(s -> s.element().name().equals(kind)).toList();
+        }
+
+        /** Whether nothing of a program was found (the main file did not parse). */
+        boolean nothing() {
+            return robot == null && sections.isEmpty() && main == null;
+        }
+    }
+
+    private final List<Section> sections = new ArrayList<>();
+    private final List<Path> files = new ArrayList<>();
+    private XElement robot;
+    private int robotOrder;
+    private XElement main;
+    private XElement root;
     private final DiagnosticSink diags;
     private final Deque<Path> stack = new ArrayDeque<>();
     private final Set<Path> done = new HashSet<>();
     private int order;
 
-    Assembly(DiagnosticSink diags) {
+    private Assembly(DiagnosticSink diags) {
         this.diags = diags;
     }
 
-    /** The main file: its text is given (it may come from an editor). */
-    void addMain(Path file, String text) {
+    /** Reads the main file {@code file}, whose text is given (it may come from an editor), and its includes. */
+    static Assembled read(Path file, String text, DiagnosticSink diags) {
+        Assembly a = new Assembly(diags);
+        a.addMain(file, text);
+        return new Assembled(a.sections, a.files, a.root, a.robot, a.robotOrder, a.main);
+    }
+
+    private void addMain(Path file, String text) {
         files.add(file);
         SourceText src = new SourceText(file.toString(), text);
         XElement root = XmlReader.read(src, diags);
@@ -156,10 +189,5 @@ final class Assembly {
         Path parent = from.getParent();
         Path p = parent == null ? Path.of(rel) : parent.resolve(rel);
         return p.normalize();
-    }
-
-    /** The sections of one kind, in document order. */
-    List<Section> of(String kind) {
-        return sections.stream().filter(s -> s.element().name().equals(kind)).toList();
     }
 }

@@ -33,7 +33,20 @@ final class BehaviorResolver {
     record Info(Behavior model, Set<String> groupMacros, List<InstanceInfo> instances) {
     }
 
-    final Map<String, Info> behaviors = new LinkedHashMap<>();
+    /**
+     * The resolved behaviors.
+     *
+     * @param behaviors the behaviors in document order, by name
+     * @param broken    behaviors defined with errors: entries that invoke them are not reported again
+     */
+    record Resolved(Map<String, Info> behaviors, Set<String> broken) {
+        Resolved {
+            behaviors = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(behaviors));
+            broken = Set.copyOf(broken);
+        }
+    }
+
+    private final Map<String, Info> behaviors = new LinkedHashMap<>();
     private final DiagnosticSink d;
     private final NameRegistry names;
     private final Robot robot;
@@ -42,10 +55,8 @@ final class BehaviorResolver {
     private final ScopeFactory scopes;
     private final Map<String, ?> automata;
     private final Set<String> brokenAutomata;
-    /** Behaviors defined with errors: entries that invoke them are not reported again. */
-    final Set<String> broken = new java.util.HashSet<>();
-    /** Groups defined with errors. */
-    Set<String> brokenGroups = Set.of();
+    private final Set<String> broken = new java.util.HashSet<>();
+    private final Set<String> brokenGroups;
 
     /** Makes scopes for behavior expressions. */
     interface ScopeFactory {
@@ -55,9 +66,10 @@ final class BehaviorResolver {
 
     private int errorCount;
 
-    BehaviorResolver(DiagnosticSink d, NameRegistry names, Robot robot, Map<String, ?> automata,
-                     Set<String> brokenAutomata, InstanceChecks checks, ScopeFactory scopes) {
-        this.brokenAutomata = brokenAutomata;
+    private BehaviorResolver(DiagnosticSink d, NameRegistry names, RobotResolver.Resolved robot,
+                             StateResolver.Resolved states, InstanceChecks checks, ScopeFactory scopes) {
+        this.brokenAutomata = states.broken();
+        this.brokenGroups = robot.broken();
         this.d = diag -> {
             if (diag.severity() == org.parpe.core.diag.Severity.ERROR) {
                 errorCount++;
@@ -65,13 +77,25 @@ final class BehaviorResolver {
             d.report(diag);
         };
         this.names = names;
-        this.robot = robot;
-        this.automata = automata;
+        this.robot = robot.robot();
+        this.automata = states.automata();
         this.checks = checks;
         this.scopes = scopes;
     }
 
-    void behaviors(List<Assembly.Section> sections) {
+    /**
+     * Resolves the {@code <behaviors>} sections of a program whose robot, states and automata
+     * are resolved; {@code checks} checks their instances, {@code scopes} makes their scopes.
+     */
+    static Resolved resolve(DiagnosticSink d, NameRegistry names, RobotResolver.Resolved robot,
+                            StateResolver.Resolved states, InstanceChecks checks, ScopeFactory scopes,
+                            List<Assembly.Section> sections) {
+        BehaviorResolver r = new BehaviorResolver(d, names, robot, states, checks, scopes);
+        r.behaviors(sections);
+        return new Resolved(r.behaviors, r.broken);
+    }
+
+    private void behaviors(List<Assembly.Section> sections) {
         for (Assembly.Section s : sections) {
             Attrs.allow(s.element(), d, Element.SECTION.attributes());
             Attrs.noText(s.element(), d);

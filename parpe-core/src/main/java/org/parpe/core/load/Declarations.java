@@ -1,6 +1,7 @@
 package org.parpe.core.load;
 
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -21,22 +22,66 @@ import org.parpe.core.xml.XText;
 
 /** Resolves {@code <parameters>} (PARSL.md §3) and {@code <controls>} (§4). */
 final class Declarations {
+    /**
+     * The parameters of a program.
+     *
+     * @param list   the parameters in document order
+     * @param values the value of each parameter by name: its default, or the value given from outside
+     * @param errors problems with the values given from outside (see {@link LoadResult#parameterErrors})
+     */
+    record Parameters(List<Parameter> list, Map<String, Double> values, List<Diagnostic> errors) {
+        Parameters {
+            list = List.copyOf(list);
+            values = Collections.unmodifiableMap(new LinkedHashMap<>(values));
+            errors = List.copyOf(errors);
+        }
+    }
 
-    final List<Parameter> parameters = new ArrayList<>();
-    final Map<String, Double> values = new LinkedHashMap<>();
-    final List<Diagnostic> parameterErrors = new ArrayList<>();
-    final List<Control> controls = new ArrayList<>();
-    final Map<String, Integer> controlIndex = new LinkedHashMap<>();
-    final Map<String, Integer> radioWords = new LinkedHashMap<>();
+    /**
+     * The controls of a program.
+     *
+     * @param list       the controls in document order
+     * @param index      each control's index in {@code list} by name
+     * @param radioWords the symbol code of every radio word
+     */
+    record Controls(List<Control> list, Map<String, Integer> index, Map<String, Integer> radioWords) {
+        Controls {
+            list = List.copyOf(list);
+            index = Collections.unmodifiableMap(new LinkedHashMap<>(index));
+            radioWords = Collections.unmodifiableMap(new LinkedHashMap<>(radioWords));
+        }
+    }
+
+    private final List<Parameter> parameters = new ArrayList<>();
+    private final Map<String, Double> values = new LinkedHashMap<>();
+    private final List<Diagnostic> parameterErrors = new ArrayList<>();
+    private final List<Control> controls = new ArrayList<>();
+    private final Map<String, Integer> controlIndex = new LinkedHashMap<>();
+    private final Map<String, Integer> radioWords = new LinkedHashMap<>();
     private final DiagnosticSink d;
     private final NameRegistry names;
 
-    Declarations(DiagnosticSink d, NameRegistry names) {
+    private Declarations(DiagnosticSink d, NameRegistry names) {
         this.d = d;
         this.names = names;
     }
 
-    void parameters(List<Assembly.Section> sections, Map<String, Double> overrides) {
+    /** Resolves the {@code <parameters>} sections, with the values given from outside ({@code overrides}). */
+    static Parameters parameters(List<Assembly.Section> sections, Map<String, Double> overrides, DiagnosticSink d,
+                                 NameRegistry names) {
+        Declarations decl = new Declarations(d, names);
+        decl.readParameters(sections, overrides);
+        return new Parameters(decl.parameters, decl.values, decl.parameterErrors);
+    }
+
+    /** Resolves the {@code <controls>} sections. */
+    static Controls controls(List<Assembly.Section> sections, DiagnosticSink d, NameRegistry names) {
+        Declarations decl = new Declarations(d, names);
+        decl.readControls(sections);
+        return new Controls(decl.controls, decl.controlIndex, decl.radioWords);
+    }
+
+    private void readParameters(List<Assembly.Section> sections, Map<String, Double> overrides) {
         for (Assembly.Section s : sections) {
             Attrs.allow(s.element(), d, Element.SECTION.attributes());
             Attrs.noText(s.element(), d);
@@ -129,7 +174,7 @@ final class Declarations {
         return true;
     }
 
-    void controls(List<Assembly.Section> sections) {
+    private void readControls(List<Assembly.Section> sections) {
         for (Assembly.Section s : sections) {
             Attrs.allow(s.element(), d, Element.SECTION.attributes());
             Attrs.noText(s.element(), d);

@@ -23,11 +23,12 @@ import org.parpe.core.xml.XText;
 final class MainResolver {
     private final DiagnosticSink d;
     private final ScriptLoader.Scopes scopes;
-    private final BehaviorResolver behaviors;
+    private final BehaviorResolver.Resolved behaviors;
     private final InstanceChecks checks;
     private final Robot robot;
 
-    MainResolver(DiagnosticSink d, ScriptLoader.Scopes scopes, BehaviorResolver behaviors, InstanceChecks checks, Robot robot) {
+    MainResolver(DiagnosticSink d, ScriptLoader.Scopes scopes, BehaviorResolver.Resolved behaviors, InstanceChecks checks,
+                 Robot robot) {
         this.d = d;
         this.scopes = scopes;
         this.behaviors = behaviors;
@@ -69,13 +70,13 @@ final class MainResolver {
     private MainEntry entry(XElement e) {
         Attrs.noText(e, d);
         Attrs.noChildren(e, d);
-        BehaviorResolver.Info info = behaviors.behaviors.get(e.name());
-        if (info == null && behaviors.broken.contains(e.name())) {
+        BehaviorResolver.Info info = behaviors.behaviors().get(e.name());
+        if (info == null && behaviors.broken().contains(e.name())) {
             return null;
         }
         if (info == null) {
             d.error(e.pos(), "behavior '" + e.name() + "' is not defined in <behaviors>"
-                    + Names.suggest(e.name(), behaviors.behaviors.keySet()));
+                    + Names.suggest(e.name(), behaviors.behaviors().keySet()));
             return null;
         }
         Behavior b = info.model();

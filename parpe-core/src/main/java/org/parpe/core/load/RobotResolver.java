@@ -35,19 +35,40 @@ final class RobotResolver {
     private final Map<String, Group> groups = new LinkedHashMap<>();
     private final TreeSet<Integer> modules = new TreeSet<>();
     private final List<SensorDecl> sensors = new ArrayList<>();
-    /** Groups defined with errors: uses of them are not reported again. */
-    final java.util.Set<String> broken = new java.util.HashSet<>();
-    /** The robot file read for {@code <robot file=...>}, or {@code null}. */
-    Path file;
+    private final java.util.Set<String> broken = new java.util.HashSet<>();
+    private Path file;
 
-    RobotResolver(DiagnosticSink d, NameRegistry names, Scope paramScope) {
+    /**
+     * A resolved robot.
+     *
+     * @param robot  the robot, or {@code null} if it is absent or could not be resolved
+     * @param broken groups defined with errors: uses of them are not reported again
+     * @param file   the robot file read for {@code <robot file=...>}, or {@code null}
+     */
+    record Resolved(Robot robot, java.util.Set<String> broken, Path file) {
+        Resolved {
+            broken = java.util.Set.copyOf(broken);
+        }
+    }
+
+    private RobotResolver(DiagnosticSink d, NameRegistry names, Scope paramScope) {
         this.d = d;
         this.names = names;
         this.paramScope = paramScope;
     }
 
-    /** Resolves the robot section of {@code main} (or its file); returns {@code null} if absent. */
-    Robot resolve(XElement robot, int order, Path mainFile, SourcePos rootPos) {
+    /**
+     * Resolves the robot section {@code robot} of {@code mainFile} (or its file), whose groups'
+     * ranges may use the parameters of {@code paramScope}; reports a missing one at {@code rootPos}.
+     */
+    static Resolved resolve(DiagnosticSink d, NameRegistry names, Scope paramScope, XElement robot, int order,
+                            Path mainFile, SourcePos rootPos) {
+        RobotResolver r = new RobotResolver(d, names, paramScope);
+        Robot resolved = r.resolve(robot, order, mainFile, rootPos);
+        return new Resolved(resolved, r.broken, r.file);
+    }
+
+    private Robot resolve(XElement robot, int order, Path mainFile, SourcePos rootPos) {
         if (robot == null) {
             d.error(rootPos, "the program has no <robot> section (it is required)");
             return null;
