@@ -15,7 +15,7 @@ import net.objecthunter.exp4j.tokenizer.Token;
 import net.objecthunter.exp4j.tokenizer.VariableToken;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.expr.Lexer.Type;
-import org.parpe.core.run.Channel;
+import org.parpe.core.sensor.Channel;
 import org.parpe.core.xml.XText;
 
 /**

@@ -11,7 +11,7 @@ import java.util.regex.Pattern;
 import net.objecthunter.exp4j.function.Function;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.lang.Vocabulary;
-import org.parpe.core.run.Channel;
+import org.parpe.core.sensor.Channel;
 import org.parpe.core.xml.XText;
 
 /**

@@ -2,7 +2,7 @@ package org.parpe.core.expr;
 
 import java.util.Map;
 import java.util.Set;
-import org.parpe.core.run.Channel;
+import org.parpe.core.sensor.Channel;
 
 /**
  * What names an expression may use where it is written (PARSL.md §13 rule 12), and how they

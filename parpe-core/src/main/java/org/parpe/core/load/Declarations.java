@@ -15,7 +15,7 @@ import org.parpe.core.lang.Vocabulary;
 import org.parpe.core.lang.Vocabulary.Element;
 import org.parpe.core.model.Control;
 import org.parpe.core.model.Control.ControlType;
-import org.parpe.core.model.Numbers;
+import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.Parameter;
 import org.parpe.core.xml.XElement;
 import org.parpe.core.xml.XText;

@@ -15,7 +15,7 @@ import org.parpe.core.expr.Scope;
 import org.parpe.core.lang.Vocabulary;
 import org.parpe.core.lang.Vocabulary.Element;
 import org.parpe.core.model.Group;
-import org.parpe.core.model.Numbers;
+import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.Robot;
 import org.parpe.core.model.SensorDecl;
 import org.parpe.core.xml.InputFiles;

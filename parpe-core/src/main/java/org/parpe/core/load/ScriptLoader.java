@@ -15,8 +15,8 @@ import org.parpe.core.model.Group;
 import org.parpe.core.model.MainDef;
 import org.parpe.core.model.Program;
 import org.parpe.core.model.Robot;
-import org.parpe.core.run.Channel;
-import org.parpe.core.run.SensorTable;
+import org.parpe.core.sensor.Channel;
+import org.parpe.core.sensor.SensorTable;
 import org.parpe.core.xml.InputFiles;
 
 /**
