@@ -35,6 +35,8 @@ public final class Vocabulary {
     public static final List<String> PARAMETER_TYPES = List.of("text");
     /** The word of {@code <main cycles>} that repeats until stopped. */
     public static final String FOREVER = "forever";
+    /** Written before a group's name, it mirrors the group: every target angle is negated (PARSL.md §7). */
+    public static final String MIRROR = "!";
     /** The group every robot has: all its modules. */
     public static final String ALL = "all";
     /** The logical variables, written with {@code $} (PARSL.md §8); their order is their index. */

@@ -17,6 +17,7 @@ import org.parpe.core.model.Behavior;
 import org.parpe.core.model.BehaviorItem;
 import org.parpe.core.model.Conditional;
 import org.parpe.core.model.Instance;
+import org.parpe.core.model.MainEntry;
 import org.parpe.core.model.Robot;
 import org.parpe.core.xml.XElement;
 import org.parpe.core.xml.XText;
@@ -167,8 +168,7 @@ final class BehaviorResolver {
         for (XElement c : e.children()) {
             XElement.XAttr g = c.attr("group");
             if (!c.name().equals(Vocabulary.IF) && g != null) {
-                String base = g.value().value().trim();
-                base = base.startsWith("!") ? base.substring(1).trim() : base;
+                String base = MainEntry.GroupRef.parse(g.value().value()).name();
                 if (macros.contains(base)) {
                     out.add(base);
                 }
@@ -219,9 +219,9 @@ final class BehaviorResolver {
         String base = null;
         boolean mirror = false;
         if (group != null) {
-            String g = group.value().trim();
-            mirror = g.startsWith("!");
-            base = mirror ? g.substring(1).trim() : g;
+            MainEntry.GroupRef written = MainEntry.GroupRef.parse(group.value());
+            mirror = written.mirror();
+            base = written.name();
             if (!groupMacros.contains(base) && (robot == null || brokenGroups.contains(base))) {
                 ok = false;
             } else if (!groupMacros.contains(base) && robot.group(base).isEmpty()) {

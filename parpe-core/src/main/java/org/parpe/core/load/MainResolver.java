@@ -120,8 +120,9 @@ final class MainResolver {
 
     private MainEntry.MacroArg groupArg(String macro, XElement.XAttr a) {
         String v = a.value().value().trim();
-        boolean mirror = v.startsWith("!");
-        String base = mirror ? v.substring(1).trim() : v;
+        MainEntry.GroupRef written = MainEntry.GroupRef.parse(v);
+        boolean mirror = written.mirror();
+        String base = written.name();
         if (robot != null && robot.group(base).isEmpty()) {
             List<String> known = robot.groups().stream().map(g -> g.name()).toList();
             d.error(a.value().pos(), "macro '" + macro + "' names a group, but '" + base + "' is not a group"

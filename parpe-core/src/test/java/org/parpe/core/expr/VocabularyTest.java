@@ -16,6 +16,7 @@ import org.parpe.core.diag.SourcePos;
 import org.parpe.core.lang.Vocabulary;
 import org.parpe.core.model.Control;
 import org.parpe.core.model.Interp;
+import org.parpe.core.model.MainEntry;
 import org.parpe.core.xml.XText;
 
 /** The vocabulary names what the expression compiler and the model implement, no more, no less. */
@@ -65,5 +66,11 @@ class VocabularyTest {
         for (String type : Vocabulary.CONTROL_TYPES) {
             assertNotNull(Vocabulary.Element.control(type), type);
         }
+    }
+
+    @Test
+    void aMirroredGroupIsWrittenWithTheMirrorSign() {
+        assertEquals(new MainEntry.GroupRef("legs", true), MainEntry.GroupRef.parse(" ! legs "));
+        assertEquals(new MainEntry.GroupRef("legs", false), MainEntry.GroupRef.parse("legs "));
     }
 }
