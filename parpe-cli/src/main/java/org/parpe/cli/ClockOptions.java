@@ -1,6 +1,6 @@
 package org.parpe.cli;
 
-import org.parpe.core.model.Numbers;
+import org.parpe.core.lang.Numbers;
 
 /**
  * Bounds of {@code --tick} and {@code --duration}, shared by {@code run} and {@code race}: a tick

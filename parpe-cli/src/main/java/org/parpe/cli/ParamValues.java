@@ -3,7 +3,7 @@ package org.parpe.cli;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import org.parpe.core.model.Numbers;
+import org.parpe.core.lang.Numbers;
 
 /** The {@code --param NAME=VALUE} options of run, sweep, optimize and export. */
 public final class ParamValues {

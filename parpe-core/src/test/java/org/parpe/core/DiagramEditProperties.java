@@ -82,7 +82,7 @@ class DiagramEditProperties {
         LoadResult r = ScriptLoader.loadText(f, text, Map.of());
         Program p = r.program();
         String here = f.toString();
-        String value = org.parpe.core.model.Numbers.format(c.value() / 1000.0);
+        String value = org.parpe.core.lang.Numbers.format(c.value() / 1000.0);
         String api;
         String hand;
         switch (c.kind()) {

@@ -3,8 +3,8 @@ package org.parpe.sim;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import org.junit.jupiter.api.Test;
-import org.parpe.core.run.Channel;
-import org.parpe.core.run.SensorTable;
+import org.parpe.core.sensor.Channel;
+import org.parpe.core.sensor.SensorTable;
 import org.parpe.sim.config.PartSpec;
 import org.parpe.sim.config.RobotConfig;
 import org.parpe.sim.config.RootPose;

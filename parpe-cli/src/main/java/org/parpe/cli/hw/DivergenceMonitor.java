@@ -2,12 +2,12 @@ package org.parpe.cli.hw;
 
 import java.io.PrintStream;
 import java.util.Locale;
-import org.parpe.core.run.Channel;
+import org.parpe.core.sensor.Channel;
 import org.parpe.core.run.JointSink;
 import org.parpe.core.run.RunInfo;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.core.run.SensorSource;
-import org.parpe.core.run.SensorTable;
+import org.parpe.core.sensor.SensorTable;
 
 /**
  * Compares the measured angles of the hardware and the simulator every tick (a sink added after

@@ -16,28 +16,28 @@ import org.parpe.cli.Inputs;
 import org.parpe.cli.OutputFile;
 import org.parpe.cli.UsageException;
 import org.parpe.core.diag.Diagnostic;
-import org.parpe.core.expr.ExprCompiler;
+import org.parpe.core.diag.SourcePos;
+import org.parpe.core.lang.Vocabulary;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
 import org.parpe.core.model.Group;
-import org.parpe.core.diag.SourcePos;
 import org.parpe.core.run.TargetException;
 import org.parpe.serial.bus.BusConfig;
 import org.parpe.serial.link.LinkOpener;
 import org.parpe.serial.link.SerialLink;
+import org.parpe.serial.record.PoseRecorder;
+import org.parpe.serial.record.PoseRecording;
 import org.parpe.serial.servo.ServoBus;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.ServoProtocol;
 import org.parpe.serial.servo.host.ServoBuses;
 import org.parpe.serial.servo.profile.HardwareProfile;
 import org.parpe.serial.servo.profile.ServoMapping;
-import org.parpe.serial.record.PoseRecorder;
-import org.parpe.serial.record.PoseRecording;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
-import picocli.CommandLine.Model.CommandSpec;
 
 /**
  * {@code parpe record}: posable programming from hardware (PARSL.md §12). Makes a group limp,
@@ -135,7 +135,7 @@ public final class RecordCommand implements Callable<Integer> {
         }
         // the recording defines the group, the automaton rec_GROUP and the behavior play_GROUP
         for (String name : new String[] {group, "rec_" + group, "play_" + group}) {
-            if (ExprCompiler.isReserved(name) && !name.equals("all")) {
+            if (Vocabulary.isReserved(name) && !name.equals("all")) {
                 throw new UsageException("--group '" + group + "' cannot be used: '" + name
                         + "' is a reserved word of PARSL (a function, constant or keyword)");
             }

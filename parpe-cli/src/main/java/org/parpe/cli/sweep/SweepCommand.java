@@ -11,7 +11,7 @@ import java.util.concurrent.Callable;
 import org.parpe.cli.OutputFile;
 import org.parpe.core.io.OutputPlan;
 import org.parpe.cli.UsageException;
-import org.parpe.core.model.Numbers;
+import org.parpe.core.lang.Numbers;
 import org.parpe.sim.sweep.Axis;
 import org.parpe.sim.sweep.Cancellation;
 import org.parpe.sim.sweep.Evaluator;

@@ -134,7 +134,7 @@ class SweepCommandTest {
         LoadResult loaded = ScriptLoader.load(written, Map.of());
         assertTrue(loaded.ok(), loaded.diagnostics().toString());
         for (var p : loaded.program().parameters()) {
-            assertTrue(r.out.contains("  " + p.name() + " = " + org.parpe.core.model.Numbers.format(p.value())),
+            assertTrue(r.out.contains("  " + p.name() + " = " + org.parpe.core.lang.Numbers.format(p.value())),
                     p + "\n" + r.out);
         }
         assertTrue(r.out.startsWith("best forward-speed: "), r.out);

@@ -91,7 +91,7 @@ public final class Diagrams {
                 }
             }
             Instance in = x.instance;
-            String lane = g == null ? in.group().replace("!", "").trim() : g.name();
+            String lane = g == null ? MainEntry.GroupRef.parse(in.group()).name() : g.name();
             modules.putIfAbsent(lane, g == null ? List.of() : g.modules());
             bars.computeIfAbsent(lane, k -> new ArrayList<>()).add(new Swimlanes.Bar(i, in.automaton(), mirrors.get(i),
                     text(in.phase()), text(in.offset()), text(in.period()), text(in.start()), text(in.cycles()),

@@ -5,7 +5,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Locale;
-import org.parpe.core.model.Numbers;
+import org.parpe.core.lang.Numbers;
 
 /**
  * Lays the diagrams out as {@link Scene}s: fixed sizes and a fixed palette, so that the same

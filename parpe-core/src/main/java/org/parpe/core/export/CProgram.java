@@ -17,7 +17,7 @@ import org.parpe.core.model.MainEntry;
 import org.parpe.core.model.Program;
 import org.parpe.core.model.StateDef;
 import org.parpe.core.model.Timing;
-import org.parpe.core.run.Channel;
+import org.parpe.core.sensor.Channel;
 
 /**
  * A loaded program as the C tables of the embedded runtime ({@code parsl_rt.h}): one C function

@@ -1,7 +1,7 @@
 package org.parpe.core.expr;
 
 import java.util.SplittableRandom;
-import org.parpe.core.run.SensorTable;
+import org.parpe.core.sensor.SensorTable;
 
 /**
  * The mutable values compiled expressions read: clock, controls, macros, sensors and the

@@ -15,7 +15,7 @@ import net.objecthunter.exp4j.tokenizer.Token;
 import net.objecthunter.exp4j.tokenizer.VariableToken;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.expr.Lexer.Type;
-import org.parpe.core.run.Channel;
+import org.parpe.core.sensor.Channel;
 import org.parpe.core.xml.XText;
 
 /**
@@ -38,12 +38,6 @@ public final class ExprCompiler {
     private static final EvalContext FOLD = new EvalContext();
 
     private ExprCompiler() {
-    }
-
-    /** Names that no script may define: functions and constants of §8 and the keywords. */
-    public static boolean isReserved(String name) {
-        return NameResolver.CONSTANTS.contains(name) || name.equals("forever") || name.equals("all")
-                || Functions.arity(name) != -1 && name.equals(name.toLowerCase(Locale.ROOT));
     }
 
     /** Compiles {@code src} in {@code scope}; returns {@code null} after reporting errors. */

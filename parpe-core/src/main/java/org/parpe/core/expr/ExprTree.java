@@ -2,6 +2,7 @@ package org.parpe.core.expr;
 
 import java.util.List;
 import java.util.Locale;
+import org.parpe.core.lang.Vocabulary;
 
 /**
  * A read-only view of a compiled expression tree for code generators (the C export): each
@@ -61,14 +62,12 @@ public final class ExprTree {
         R random();
     }
 
-    private static final String[] VARIABLES = {"time", "btime", "index", "count", "id", "phase", "cycle"};
-
     /** Hands {@code n} to the matching method of {@code v}. */
     public static <R> R visit(Node n, Visitor<R> v) {
         if (n instanceof Nodes.Const c) {
             return v.constant(c.value);
         } else if (n instanceof Nodes.Var x) {
-            return v.variable(VARIABLES[x.which]);
+            return v.variable(Vocabulary.LOGICAL_VARIABLES.get(x.which));
         } else if (n instanceof Nodes.ControlRef c) {
             return v.control(c.index);
         } else if (n instanceof Nodes.MacroRef m) {

@@ -2,7 +2,10 @@ package org.parpe.core.expr;
 
 import java.util.Locale;
 
-/** The function library of PARSL.md §8 (JEP names and meanings, radians). */
+/**
+ * The function library of PARSL.md §8 (JEP names and meanings, radians); the names and
+ * arities are those of {@link org.parpe.core.lang.Vocabulary}.
+ */
 final class Functions {
     private Functions() {
     }
@@ -62,23 +65,6 @@ final class Functions {
                 case MIN: return Math.min(a, b);
                 default: return Math.max(a, b);
             }
-        }
-    }
-
-    /** Arity of a function name, or −1 if unknown; {@code sum} is 0 (one or more). */
-    static int arity(String name) {
-        switch (name) {
-            case "atan2": case "mod": case "min": case "max": return 2;
-            case "if": return 3;
-            case "rand": return 0;
-            case "sum": return -2;
-            default:
-                try {
-                    F1.valueOf(name.toUpperCase(Locale.ROOT));
-                    return 1;
-                } catch (IllegalArgumentException e) {
-                    return -1;
-                }
         }
     }
 }

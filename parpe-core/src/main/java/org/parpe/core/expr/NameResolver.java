@@ -10,7 +10,8 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import net.objecthunter.exp4j.function.Function;
 import org.parpe.core.diag.DiagnosticSink;
-import org.parpe.core.run.Channel;
+import org.parpe.core.lang.Vocabulary;
+import org.parpe.core.sensor.Channel;
 import org.parpe.core.xml.XText;
 
 /**
@@ -21,7 +22,6 @@ import org.parpe.core.xml.XText;
 final class NameResolver {
     static final Pattern GLOBAL = Pattern.compile("(\\d+)_([A-Za-z]+)(?:_([A-Za-z0-9]+))?");
     static final Pattern LOCAL = Pattern.compile("_(\\d+|self|prev|next)_([A-Za-z]+)(?:_([A-Za-z0-9]+))?");
-    static final Set<String> CONSTANTS = Set.of("pi", "e", "true", "false");
 
     final XText src;
     final Scope scope;
@@ -47,9 +47,9 @@ final class NameResolver {
 
     String function(Lexer.Token t, int args, Map<String, Function> functions) {
         String name = t.text();
-        int arity = Functions.arity(name);
+        int arity = Vocabulary.arity(name);
         if (arity == -1 || !name.equals(name.toLowerCase(Locale.ROOT))) {
-            error(t, "unknown function '" + name + "()'" + Names.suggest(name, Names.FUNCTIONS));
+            error(t, "unknown function '" + name + "()'" + Names.suggest(name, Vocabulary.functions()));
             return "rand";
         }
         String key = arity == -2 ? "sum" + args : name;
@@ -117,13 +117,13 @@ final class NameResolver {
             error(t, "'" + name + "' is a group; groups cannot be used in expressions");
         } else if (scope.controls().containsKey(name)) {
             error(t, "control '" + name + "' is written '$" + name + "' in expressions");
-        } else if (Functions.arity(name) != -1) {
+        } else if (Vocabulary.arity(name) != -1) {
             error(t, "'" + name + "' is a function; call it as " + name + "(...)");
         } else {
             List<String> known = new ArrayList<>(scope.parameters().keySet());
             known.addAll(scope.macros().keySet());
             known.addAll(scope.radioWords().keySet());
-            known.addAll(CONSTANTS);
+            known.addAll(Vocabulary.CONSTANTS);
             String where = scope.kind() == Scope.Kind.PARAMETERS_ONLY ? " (only parameters are allowed here)" : "";
             error(t, "unknown name '" + name + "'" + where + Names.suggest(name, known));
         }
@@ -132,12 +132,12 @@ final class NameResolver {
 
     private Node dollar(Lexer.Token t) {
         String name = t.text();
-        if (Scope.LOGICAL.contains(name)) {
+        if (Vocabulary.LOGICAL_VARIABLES.contains(name)) {
             if (!scope.sees(name)) {
                 error(t, "'$" + name + "' is not available here" + logicalWhere(name));
                 return null;
             }
-            int which = Scope.LOGICAL.indexOf(name);
+            int which = Vocabulary.LOGICAL_VARIABLES.indexOf(name);
             perModule |= which == Nodes.Var.INDEX || which == Nodes.Var.ID || which == Nodes.Var.PHASE
                     || which == Nodes.Var.CYCLE;
             return new Nodes.Var(which);
@@ -161,13 +161,13 @@ final class NameResolver {
         }
         List<String> known = new ArrayList<>();
         scope.controls().keySet().forEach(c -> known.add(c));
-        known.addAll(Scope.LOGICAL);
+        known.addAll(Vocabulary.LOGICAL_VARIABLES);
         error(t, "unknown control or variable '$" + name + "'" + Names.suggest(name, known, "$"));
         return null;
     }
 
     private Channel channel(Lexer.Token t, String sensor, String arg) {
-        if (!List.of("angle", "accel", "touch").contains(sensor)) {
+        if (!Vocabulary.SENSOR_TYPES.contains(sensor)) {
             error(t, "sensor '" + sensor + "' is not implemented; available: angle, accel, touch");
             return null;
         }

@@ -1,15 +1,9 @@
 package org.parpe.core.expr;
 
 import java.util.Collection;
-import java.util.List;
 
 /** "Did you mean" suggestions by edit distance. */
 public final class Names {
-    /** The function names of PARSL.md §8. */
-    public static final List<String> FUNCTIONS = List.of("sin", "cos", "tan", "asin", "acos", "atan",
-            "atan2", "sinh", "cosh", "tanh", "asinh", "acosh", "atanh", "log", "ln", "exp", "sqrt", "abs",
-            "mod", "rand", "sum", "if", "round", "floor", "ceil", "min", "max", "rad", "deg");
-
     private Names() {
     }
 

@@ -120,7 +120,7 @@ final class Nodes {
             } else {
                 p = position;
             }
-            return c.sensors.getSlot(c.group[p] * org.parpe.core.run.Channel.count() + channel);
+            return c.sensors.getSlot(c.group[p] * org.parpe.core.sensor.Channel.count() + channel);
         }
     }
 
@@ -177,7 +177,7 @@ final class Nodes {
                 case POW:
                     double pw = Math.pow(a, b);
                     if (!Double.isFinite(pw)) {
-                        throw new EvalException(org.parpe.core.model.Numbers.brief(a) + "^" + org.parpe.core.model.Numbers.brief(b)
+                        throw new EvalException(org.parpe.core.lang.Numbers.brief(a) + "^" + org.parpe.core.lang.Numbers.brief(b)
                                 + " is not a finite number");
                     }
                     return pw;
@@ -248,7 +248,7 @@ final class Nodes {
             if (Double.isFinite(v)) {
                 return v;
             }
-            throw new EvalException(f.label() + " of " + org.parpe.core.model.Numbers.brief(x) + " is not a finite number");
+            throw new EvalException(f.label() + " of " + org.parpe.core.lang.Numbers.brief(x) + " is not a finite number");
         }
     }
 
@@ -297,7 +297,7 @@ final class Nodes {
     }
 
     static int slot(int moduleIndex, int channel) {
-        return moduleIndex * org.parpe.core.run.Channel.count() + channel;
+        return moduleIndex * org.parpe.core.sensor.Channel.count() + channel;
     }
 
 }

@@ -1,9 +1,8 @@
 package org.parpe.core.expr;
 
-import java.util.List;
 import java.util.Map;
 import java.util.Set;
-import org.parpe.core.run.Channel;
+import org.parpe.core.sensor.Channel;
 
 /**
  * What names an expression may use where it is written (PARSL.md §13 rule 12), and how they
@@ -66,6 +65,4 @@ public record Scope(Kind kind, Map<String, Double> parameters, Map<String, Integ
             default: return false;
         }
     }
-
-    static final List<String> LOGICAL = List.of("time", "btime", "index", "count", "id", "phase", "cycle");
 }

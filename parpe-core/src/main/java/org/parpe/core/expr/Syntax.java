@@ -5,6 +5,7 @@ import java.util.Deque;
 import java.util.List;
 import org.parpe.core.expr.Lexer.Token;
 import org.parpe.core.expr.Lexer.Type;
+import org.parpe.core.lang.Vocabulary;
 
 /**
  * Checks the token sequence of an expression (operand/operator alternation, parentheses,
@@ -119,7 +120,7 @@ final class Syntax {
     private static Problem close(Frame f, int[] argCounts, Token at, boolean empty) {
         int n = empty ? 0 : f.args()[1] + 1;
         argCounts[f.args()[0]] = n;
-        int arity = Functions.arity(f.function());
+        int arity = Vocabulary.arity(f.function());
         if (arity == -1) {
             return null; // an unknown function is reported by name resolution
         }

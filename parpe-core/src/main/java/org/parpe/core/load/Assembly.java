@@ -11,6 +11,8 @@ import java.util.Set;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.expr.Names;
+import org.parpe.core.lang.Vocabulary;
+import org.parpe.core.lang.Vocabulary.Element;
 import org.parpe.core.xml.InputFiles;
 import org.parpe.core.xml.SourceText;
 import org.parpe.core.xml.XElement;
@@ -22,8 +24,6 @@ import org.parpe.core.xml.XmlReader;
  * order, the content of an include standing where its {@code <include>} is.
  */
 final class Assembly {
-    static final List<String> SECTIONS = List.of("robot", "parameters", "controls", "main", "behaviors",
-            "automata", "states");
     /** How deep includes may nest: far beyond real use, and the assembly recurses once per level. */
     static final int MAX_INCLUDE_DEPTH = 64;
     private static final List<String> MERGED = List.of("parameters", "controls", "states", "automata", "behaviors");
@@ -42,25 +42,58 @@ final class Assembly {
         }
     }
 
-    final List<Section> sections = new ArrayList<>();
-    /** The main file and every included file read, in the order read. */
-    final List<Path> files = new ArrayList<>();
-    XElement robot;
-    int robotOrder;
-    XElement main;
-    /** The root element of the main file, or {@code null} if it did not parse. */
-    XElement root;
+    /**
+     * What reading a main file and its includes gave.
+     *
+     * @param sections   the merged sections ({@code parameters}, {@code controls}, {@code states},
+     *                   {@code automata}, {@code behaviors}) in document order
+     * @param files      the main file and every included file read, in the order read
+     * @param root       the root element of the main file, or {@code null} if it did not parse
+     * @param robot      the main file's {@code <robot>}, or {@code null}
+     * @param robotOrder the robot's place in the merged document order
+     * @param main       the main file's {@code <main>}, or {@code null}
+     */
+    record Assembled(List<Section> sections, List<Path> files, XElement root, XElement robot, int robotOrder,
+                     XElement main) {
+        Assembled {
+            sections = List.copyOf(sections);
+            files = List.copyOf(files);
+        }
+
+        /** The sections of one kind, in document order. */
+        List<Section> of(String kind) {
+            return sections.stream().filter(s -> s.element().name().equals(kind)).toList();
+        }
+
+        /** Whether nothing of a program was found (the main file did not parse). */
+        boolean nothing() {
+            return robot == null && sections.isEmpty() && main == null;
+        }
+    }
+
+    private final List<Section> sections = new ArrayList<>();
+    private final List<Path> files = new ArrayList<>();
+    private XElement robot;
+    private int robotOrder;
+    private XElement main;
+    private XElement root;
     private final DiagnosticSink diags;
     private final Deque<Path> stack = new ArrayDeque<>();
     private final Set<Path> done = new HashSet<>();
     private int order;
 
-    Assembly(DiagnosticSink diags) {
+    private Assembly(DiagnosticSink diags) {
         this.diags = diags;
     }
 
-    /** The main file: its text is given (it may come from an editor). */
-    void addMain(Path file, String text) {
+    /** Reads the main file {@code file}, whose text is given (it may come from an editor), and its includes. */
+    static Assembled read(Path file, String text, DiagnosticSink diags) {
+        Assembly a = new Assembly(diags);
+        a.addMain(file, text);
+        return new Assembled(a.sections, a.files, a.root, a.robot, a.robotOrder, a.main);
+    }
+
+    private void addMain(Path file, String text) {
         files.add(file);
         SourceText src = new SourceText(file.toString(), text);
         XElement root = XmlReader.read(src, diags);
@@ -68,7 +101,7 @@ final class Assembly {
             return;
         }
         this.root = root;
-        Attrs.allow(root, diags, List.of());
+        Attrs.allow(root, diags, Element.PROGRAM.attributes());
         Attrs.noText(root, diags);
         stack.push(key(file));
         done.add(key(file));
@@ -84,14 +117,14 @@ final class Assembly {
         Set<String> seen = new HashSet<>();
         for (XElement s : root.children()) {
             String name = s.name();
-            if (name.equals("include")) {
+            if (name.equals(Vocabulary.INCLUDE)) {
                 include(s, file, anchor == null ? s.pos() : anchor);
                 continue;
             }
-            if (!SECTIONS.contains(name)) {
-                String best = Names.closest(name, SECTIONS);
+            if (!Vocabulary.SECTIONS.contains(name)) {
+                String best = Names.closest(name, Vocabulary.SECTIONS);
                 diags.error(s.pos(), "unknown section <" + name + ">" + (best != null ? " (did you mean <" + best + ">?)"
-                        : " (sections are " + String.join(", ", SECTIONS) + " and include)"));
+                        : " (sections are " + String.join(", ", Vocabulary.SECTIONS) + " and include)"));
                 continue;
             }
             if (!seen.add(name)) {
@@ -110,7 +143,7 @@ final class Assembly {
     }
 
     private void include(XElement inc, Path from, SourcePos anchor) {
-        Attrs.allow(inc, diags, List.of("file"));
+        Attrs.allow(inc, diags, Element.INCLUDE.attributes());
         Attrs.noChildren(inc, diags);
         Attrs.noText(inc, diags);
         XText rel = Attrs.require(inc, "file", diags);
@@ -156,10 +189,5 @@ final class Assembly {
         Path parent = from.getParent();
         Path p = parent == null ? Path.of(rel) : parent.resolve(rel);
         return p.normalize();
-    }
-
-    /** The sections of one kind, in document order. */
-    List<Section> of(String kind) {
-        return sections.stream().filter(s -> s.element().name().equals(kind)).toList();
     }
 }

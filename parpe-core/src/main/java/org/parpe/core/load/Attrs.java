@@ -3,8 +3,8 @@ package org.parpe.core.load;
 import java.util.List;
 import java.util.regex.Pattern;
 import org.parpe.core.diag.DiagnosticSink;
-import org.parpe.core.expr.ExprCompiler;
 import org.parpe.core.expr.Names;
+import org.parpe.core.lang.Vocabulary;
 import org.parpe.core.xml.XElement;
 import org.parpe.core.xml.XText;
 
@@ -71,7 +71,7 @@ final class Attrs {
                     + ": names are letters, digits and '_', not starting with a digit");
             return false;
         }
-        if (ExprCompiler.isReserved(name) && !(kind.equals("group") && name.equals("all"))) {
+        if (Vocabulary.isReserved(name) && !(kind.equals("group") && name.equals("all"))) {
             d.error(pos, "'" + name + "' is a reserved word and cannot name a " + kind);
             return false;
         }

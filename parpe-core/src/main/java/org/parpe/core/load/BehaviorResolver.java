@@ -11,17 +11,20 @@ import org.parpe.core.expr.ExprCompiler;
 import org.parpe.core.expr.Expression;
 import org.parpe.core.expr.Names;
 import org.parpe.core.expr.Scope;
+import org.parpe.core.lang.Vocabulary;
+import org.parpe.core.lang.Vocabulary.Element;
 import org.parpe.core.model.Behavior;
 import org.parpe.core.model.BehaviorItem;
 import org.parpe.core.model.Conditional;
 import org.parpe.core.model.Instance;
+import org.parpe.core.model.MainEntry;
 import org.parpe.core.model.Robot;
 import org.parpe.core.xml.XElement;
 import org.parpe.core.xml.XText;
 
 /** Resolves {@code <behaviors>} (PARSL.md §7) and the static checks on their instances. */
 final class BehaviorResolver {
-    static final List<String> INSTANCE_ATTRS = List.of("group", "phase", "offset", "period", "start", "cycles");
+    private static final List<String> INSTANCE_ATTRS = Element.INSTANCE.attributes();
 
     /** What the checks need to know of an instance. */
     record InstanceInfo(Instance model, boolean conditional, String base, boolean mirror, boolean macroGroup) {
@@ -31,7 +34,20 @@ final class BehaviorResolver {
     record Info(Behavior model, Set<String> groupMacros, List<InstanceInfo> instances) {
     }
 
-    final Map<String, Info> behaviors = new LinkedHashMap<>();
+    /**
+     * The resolved behaviors.
+     *
+     * @param behaviors the behaviors in document order, by name
+     * @param broken    behaviors defined with errors: entries that invoke them are not reported again
+     */
+    record Resolved(Map<String, Info> behaviors, Set<String> broken) {
+        Resolved {
+            behaviors = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(behaviors));
+            broken = Set.copyOf(broken);
+        }
+    }
+
+    private final Map<String, Info> behaviors = new LinkedHashMap<>();
     private final DiagnosticSink d;
     private final NameRegistry names;
     private final Robot robot;
@@ -40,10 +56,8 @@ final class BehaviorResolver {
     private final ScopeFactory scopes;
     private final Map<String, ?> automata;
     private final Set<String> brokenAutomata;
-    /** Behaviors defined with errors: entries that invoke them are not reported again. */
-    final Set<String> broken = new java.util.HashSet<>();
-    /** Groups defined with errors. */
-    Set<String> brokenGroups = Set.of();
+    private final Set<String> broken = new java.util.HashSet<>();
+    private final Set<String> brokenGroups;
 
     /** Makes scopes for behavior expressions. */
     interface ScopeFactory {
@@ -53,9 +67,10 @@ final class BehaviorResolver {
 
     private int errorCount;
 
-    BehaviorResolver(DiagnosticSink d, NameRegistry names, Robot robot, Map<String, ?> automata,
-                     Set<String> brokenAutomata, InstanceChecks checks, ScopeFactory scopes) {
-        this.brokenAutomata = brokenAutomata;
+    private BehaviorResolver(DiagnosticSink d, NameRegistry names, RobotResolver.Resolved robot,
+                             StateResolver.Resolved states, InstanceChecks checks, ScopeFactory scopes) {
+        this.brokenAutomata = states.broken();
+        this.brokenGroups = robot.broken();
         this.d = diag -> {
             if (diag.severity() == org.parpe.core.diag.Severity.ERROR) {
                 errorCount++;
@@ -63,15 +78,27 @@ final class BehaviorResolver {
             d.report(diag);
         };
         this.names = names;
-        this.robot = robot;
-        this.automata = automata;
+        this.robot = robot.robot();
+        this.automata = states.automata();
         this.checks = checks;
         this.scopes = scopes;
     }
 
-    void behaviors(List<Assembly.Section> sections) {
+    /**
+     * Resolves the {@code <behaviors>} sections of a program whose robot, states and automata
+     * are resolved; {@code checks} checks their instances, {@code scopes} makes their scopes.
+     */
+    static Resolved resolve(DiagnosticSink d, NameRegistry names, RobotResolver.Resolved robot,
+                            StateResolver.Resolved states, InstanceChecks checks, ScopeFactory scopes,
+                            List<Assembly.Section> sections) {
+        BehaviorResolver r = new BehaviorResolver(d, names, robot, states, checks, scopes);
+        r.behaviors(sections);
+        return new Resolved(r.behaviors, r.broken);
+    }
+
+    private void behaviors(List<Assembly.Section> sections) {
         for (Assembly.Section s : sections) {
-            Attrs.allow(s.element(), d, List.of());
+            Attrs.allow(s.element(), d, Element.SECTION.attributes());
             Attrs.noText(s.element(), d);
             int index = 0;
             for (XElement e : s.element().children()) {
@@ -81,7 +108,7 @@ final class BehaviorResolver {
     }
 
     private void behavior(XElement e, Assembly.Section s, int index) {
-        Attrs.allow(e, d, List.of("macros"));
+        Attrs.allow(e, d, Element.BEHAVIOR.attributes());
         Attrs.noText(e, d);
         String name = e.name();
         if (!Attrs.validName(name, "behavior", e.pos(), d)) {
@@ -140,14 +167,13 @@ final class BehaviorResolver {
     private static void collectGroupMacros(XElement e, List<String> macros, Set<String> out) {
         for (XElement c : e.children()) {
             XElement.XAttr g = c.attr("group");
-            if (!c.name().equals("if") && g != null) {
-                String base = g.value().value().trim();
-                base = base.startsWith("!") ? base.substring(1).trim() : base;
+            if (!c.name().equals(Vocabulary.IF) && g != null) {
+                String base = MainEntry.GroupRef.parse(g.value().value()).name();
                 if (macros.contains(base)) {
                     out.add(base);
                 }
             }
-            if (c.name().equals("if")) {
+            if (c.name().equals(Vocabulary.IF)) {
                 collectGroupMacros(c, macros, out);
             }
         }
@@ -157,8 +183,8 @@ final class BehaviorResolver {
                                      Set<String> groupMacros, List<InstanceInfo> infos) {
         List<BehaviorItem> out = new ArrayList<>();
         for (XElement c : parent.children()) {
-            if (c.name().equals("if")) {
-                Attrs.allow(c, d, List.of("cond"));
+            if (c.name().equals(Vocabulary.IF)) {
+                Attrs.allow(c, d, Element.CONDITIONAL.attributes());
                 Attrs.noText(c, d);
                 XText cond = Attrs.require(c, "cond", d);
                 ExprCompiler.Result r = cond == null ? null
@@ -193,9 +219,9 @@ final class BehaviorResolver {
         String base = null;
         boolean mirror = false;
         if (group != null) {
-            String g = group.value().trim();
-            mirror = g.startsWith("!");
-            base = mirror ? g.substring(1).trim() : g;
+            MainEntry.GroupRef written = MainEntry.GroupRef.parse(group.value());
+            mirror = written.mirror();
+            base = written.name();
             if (!groupMacros.contains(base) && (robot == null || brokenGroups.contains(base))) {
                 ok = false;
             } else if (!groupMacros.contains(base) && robot.group(base).isEmpty()) {

@@ -1,6 +1,7 @@
 package org.parpe.core.load;
 
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -10,46 +11,79 @@ import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.Severity;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.expr.Names;
+import org.parpe.core.lang.Vocabulary;
+import org.parpe.core.lang.Vocabulary.Element;
 import org.parpe.core.model.Control;
 import org.parpe.core.model.Control.ControlType;
-import org.parpe.core.model.Numbers;
+import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.Parameter;
 import org.parpe.core.xml.XElement;
 import org.parpe.core.xml.XText;
 
 /** Resolves {@code <parameters>} (PARSL.md §3) and {@code <controls>} (§4). */
 final class Declarations {
-    private static final Set<String> CONTROL_RESERVED = Set.of("time", "btime", "index", "count", "id", "phase", "cycle");
-    private static final Set<String> KEYS = keyNames();
+    /**
+     * The parameters of a program.
+     *
+     * @param list   the parameters in document order
+     * @param values the value of each parameter by name: its default, or the value given from outside
+     * @param errors problems with the values given from outside (see {@link LoadResult#parameterErrors})
+     */
+    record Parameters(List<Parameter> list, Map<String, Double> values, List<Diagnostic> errors) {
+        Parameters {
+            list = List.copyOf(list);
+            values = Collections.unmodifiableMap(new LinkedHashMap<>(values));
+            errors = List.copyOf(errors);
+        }
+    }
 
-    final List<Parameter> parameters = new ArrayList<>();
-    final Map<String, Double> values = new LinkedHashMap<>();
-    final List<Diagnostic> parameterErrors = new ArrayList<>();
-    final List<Control> controls = new ArrayList<>();
-    final Map<String, Integer> controlIndex = new LinkedHashMap<>();
-    final Map<String, Integer> radioWords = new LinkedHashMap<>();
+    /**
+     * The controls of a program.
+     *
+     * @param list       the controls in document order
+     * @param index      each control's index in {@code list} by name
+     * @param radioWords the symbol code of every radio word
+     */
+    record Controls(List<Control> list, Map<String, Integer> index, Map<String, Integer> radioWords) {
+        Controls {
+            list = List.copyOf(list);
+            index = Collections.unmodifiableMap(new LinkedHashMap<>(index));
+            radioWords = Collections.unmodifiableMap(new LinkedHashMap<>(radioWords));
+        }
+    }
+
+    private final List<Parameter> parameters = new ArrayList<>();
+    private final Map<String, Double> values = new LinkedHashMap<>();
+    private final List<Diagnostic> parameterErrors = new ArrayList<>();
+    private final List<Control> controls = new ArrayList<>();
+    private final Map<String, Integer> controlIndex = new LinkedHashMap<>();
+    private final Map<String, Integer> radioWords = new LinkedHashMap<>();
     private final DiagnosticSink d;
     private final NameRegistry names;
 
-    Declarations(DiagnosticSink d, NameRegistry names) {
+    private Declarations(DiagnosticSink d, NameRegistry names) {
         this.d = d;
         this.names = names;
     }
 
-    private static Set<String> keyNames() {
-        Set<String> k = new java.util.HashSet<>(List.of("Up", "Down", "Left", "Right", "space"));
-        for (char c = 'a'; c <= 'z'; c++) {
-            k.add(String.valueOf(c));
-        }
-        for (char c = '0'; c <= '9'; c++) {
-            k.add(String.valueOf(c));
-        }
-        return k;
+    /** Resolves the {@code <parameters>} sections, with the values given from outside ({@code overrides}). */
+    static Parameters parameters(List<Assembly.Section> sections, Map<String, Double> overrides, DiagnosticSink d,
+                                 NameRegistry names) {
+        Declarations decl = new Declarations(d, names);
+        decl.readParameters(sections, overrides);
+        return new Parameters(decl.parameters, decl.values, decl.parameterErrors);
     }
 
-    void parameters(List<Assembly.Section> sections, Map<String, Double> overrides) {
+    /** Resolves the {@code <controls>} sections. */
+    static Controls controls(List<Assembly.Section> sections, DiagnosticSink d, NameRegistry names) {
+        Declarations decl = new Declarations(d, names);
+        decl.readControls(sections);
+        return new Controls(decl.controls, decl.controlIndex, decl.radioWords);
+    }
+
+    private void readParameters(List<Assembly.Section> sections, Map<String, Double> overrides) {
         for (Assembly.Section s : sections) {
-            Attrs.allow(s.element(), d, List.of());
+            Attrs.allow(s.element(), d, Element.SECTION.attributes());
             Attrs.noText(s.element(), d);
             int i = 0;
             for (XElement e : s.element().children()) {
@@ -75,7 +109,7 @@ final class Declarations {
     }
 
     private void parameter(XElement e, Assembly.Section s, int index) {
-        Attrs.allow(e, d, List.of("type", "value", "min", "max", "label"));
+        Attrs.allow(e, d, Element.PARAMETER.attributes());
         Attrs.noText(e, d);
         Attrs.noChildren(e, d);
         String name = e.name();
@@ -140,9 +174,9 @@ final class Declarations {
         return true;
     }
 
-    void controls(List<Assembly.Section> sections) {
+    private void readControls(List<Assembly.Section> sections) {
         for (Assembly.Section s : sections) {
-            Attrs.allow(s.element(), d, List.of());
+            Attrs.allow(s.element(), d, Element.SECTION.attributes());
             Attrs.noText(s.element(), d);
             int i = 0;
             for (XElement e : s.element().children()) {
@@ -156,7 +190,7 @@ final class Declarations {
         Attrs.noChildren(e, d);
         String name = e.name();
         boolean ok = Attrs.validName(name, "control", e.pos(), d);
-        if (CONTROL_RESERVED.contains(name)) {
+        if (Vocabulary.LOGICAL_VARIABLES.contains(name)) {
             d.error(e.pos(), "a control cannot be named '" + name + "' ($" + name + " is a logical variable)");
             ok = false;
         }
@@ -184,7 +218,7 @@ final class Declarations {
     }
 
     private Control slider(XElement e, String name) {
-        Attrs.allow(e, d, List.of("type", "min", "max", "value", "step", "label", "keys"));
+        Attrs.allow(e, d, Element.SLIDER.attributes());
         String what = "slider '" + name + "'";
         Double min = number(e, "min", true, what);
         Double max = number(e, "max", true, what);
@@ -202,14 +236,14 @@ final class Declarations {
     }
 
     private Control text(XElement e, String name) {
-        Attrs.allow(e, d, List.of("type", "value", "label"));
+        Attrs.allow(e, d, Element.TEXT_CONTROL.attributes());
         Double value = number(e, "value", true, "control '" + name + "'");
         return value == null ? null
                 : new Control(name, ControlType.TEXT, value, null, null, null, label(e), List.of(), List.of(), e.pos());
     }
 
     private Control radio(XElement e, String name, Assembly.Section s, int index) {
-        Attrs.allow(e, d, List.of("type", "values", "value", "label", "keys"));
+        Attrs.allow(e, d, Element.RADIO.attributes());
         XText values = Attrs.require(e, "values", d);
         if (values == null) {
             return null;
@@ -257,7 +291,7 @@ final class Declarations {
         }
         List<String> keys = new ArrayList<>();
         for (XText k : ListItem.split(t, ',')) {
-            if (!KEYS.contains(k.value())) {
+            if (!Vocabulary.keyNames().contains(k.value())) {
                 d.error(k.pos(), "unknown key '" + k.value() + "' (keys are a-z, 0-9, Up, Down, Left, Right, space)");
                 return null;
             }

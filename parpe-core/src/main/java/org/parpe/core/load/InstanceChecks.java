@@ -9,7 +9,7 @@ import org.parpe.core.model.Group;
 import org.parpe.core.model.MainEntry;
 import org.parpe.core.model.Robot;
 import org.parpe.core.model.StateDef;
-import org.parpe.core.run.Channel;
+import org.parpe.core.sensor.Channel;
 
 /**
  * The checks made where an automaton meets a group (PARSL.md §7, §13 rule 13): overlapping

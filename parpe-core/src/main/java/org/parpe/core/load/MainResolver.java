@@ -10,6 +10,8 @@ import org.parpe.core.expr.ExprCompiler;
 import org.parpe.core.expr.Expression;
 import org.parpe.core.expr.Names;
 import org.parpe.core.expr.Scope;
+import org.parpe.core.lang.Vocabulary;
+import org.parpe.core.lang.Vocabulary.Element;
 import org.parpe.core.model.Behavior;
 import org.parpe.core.model.MainDef;
 import org.parpe.core.model.MainEntry;
@@ -21,11 +23,12 @@ import org.parpe.core.xml.XText;
 final class MainResolver {
     private final DiagnosticSink d;
     private final ScriptLoader.Scopes scopes;
-    private final BehaviorResolver behaviors;
+    private final BehaviorResolver.Resolved behaviors;
     private final InstanceChecks checks;
     private final Robot robot;
 
-    MainResolver(DiagnosticSink d, ScriptLoader.Scopes scopes, BehaviorResolver behaviors, InstanceChecks checks, Robot robot) {
+    MainResolver(DiagnosticSink d, ScriptLoader.Scopes scopes, BehaviorResolver.Resolved behaviors, InstanceChecks checks,
+                 Robot robot) {
         this.d = d;
         this.scopes = scopes;
         this.behaviors = behaviors;
@@ -34,7 +37,7 @@ final class MainResolver {
     }
 
     MainDef resolve(XElement main, Map<String, Double> params) {
-        Attrs.allow(main, d, List.of("cycles"));
+        Attrs.allow(main, d, Element.MAIN.attributes());
         Attrs.noText(main, d);
         XText cyclesText = Attrs.optional(main, "cycles");
         long cycles = cyclesText == null ? 1 : cycles(cyclesText);
@@ -49,7 +52,7 @@ final class MainResolver {
     }
 
     private long cycles(XText t) {
-        if (t.value().trim().equals("forever")) {
+        if (t.value().trim().equals(Vocabulary.FOREVER)) {
             return MainDef.FOREVER;
         }
         ExprCompiler.Result r = ExprCompiler.compile(t, scopes.scope(Scope.Kind.PARAMETERS_ONLY, Map.of(), Set.of()), d);
@@ -67,17 +70,17 @@ final class MainResolver {
     private MainEntry entry(XElement e) {
         Attrs.noText(e, d);
         Attrs.noChildren(e, d);
-        BehaviorResolver.Info info = behaviors.behaviors.get(e.name());
-        if (info == null && behaviors.broken.contains(e.name())) {
+        BehaviorResolver.Info info = behaviors.behaviors().get(e.name());
+        if (info == null && behaviors.broken().contains(e.name())) {
             return null;
         }
         if (info == null) {
             d.error(e.pos(), "behavior '" + e.name() + "' is not defined in <behaviors>"
-                    + Names.suggest(e.name(), behaviors.behaviors.keySet()));
+                    + Names.suggest(e.name(), behaviors.behaviors().keySet()));
             return null;
         }
         Behavior b = info.model();
-        List<String> allowed = new ArrayList<>(List.of("time", "exit"));
+        List<String> allowed = new ArrayList<>(Element.ENTRY.attributes());
         allowed.addAll(b.macros());
         Attrs.allow(e, d, allowed);
         Scope scope = scopes.scope(Scope.Kind.ENTRY, Map.of(), Set.of());
@@ -117,8 +120,9 @@ final class MainResolver {
 
     private MainEntry.MacroArg groupArg(String macro, XElement.XAttr a) {
         String v = a.value().value().trim();
-        boolean mirror = v.startsWith("!");
-        String base = mirror ? v.substring(1).trim() : v;
+        MainEntry.GroupRef written = MainEntry.GroupRef.parse(v);
+        boolean mirror = written.mirror();
+        String base = written.name();
         if (robot != null && robot.group(base).isEmpty()) {
             List<String> known = robot.groups().stream().map(g -> g.name()).toList();
             d.error(a.value().pos(), "macro '" + macro + "' names a group, but '" + base + "' is not a group"

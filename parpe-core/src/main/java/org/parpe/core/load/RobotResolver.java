@@ -12,8 +12,10 @@ import org.parpe.core.expr.ExprCompiler;
 import org.parpe.core.expr.Expression;
 import org.parpe.core.expr.Names;
 import org.parpe.core.expr.Scope;
+import org.parpe.core.lang.Vocabulary;
+import org.parpe.core.lang.Vocabulary.Element;
 import org.parpe.core.model.Group;
-import org.parpe.core.model.Numbers;
+import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.Robot;
 import org.parpe.core.model.SensorDecl;
 import org.parpe.core.xml.InputFiles;
@@ -26,7 +28,6 @@ import org.parpe.core.xml.XmlReader;
 final class RobotResolver {
     /** The largest module ID a script may use. */
     static final int MAX_ID = 65_535;
-    private static final List<String> SENSOR_TYPES = List.of("angle", "accel", "touch");
 
     private final DiagnosticSink d;
     private final NameRegistry names;
@@ -34,24 +35,45 @@ final class RobotResolver {
     private final Map<String, Group> groups = new LinkedHashMap<>();
     private final TreeSet<Integer> modules = new TreeSet<>();
     private final List<SensorDecl> sensors = new ArrayList<>();
-    /** Groups defined with errors: uses of them are not reported again. */
-    final java.util.Set<String> broken = new java.util.HashSet<>();
-    /** The robot file read for {@code <robot file=...>}, or {@code null}. */
-    Path file;
+    private final java.util.Set<String> broken = new java.util.HashSet<>();
+    private Path file;
 
-    RobotResolver(DiagnosticSink d, NameRegistry names, Scope paramScope) {
+    /**
+     * A resolved robot.
+     *
+     * @param robot  the robot, or {@code null} if it is absent or could not be resolved
+     * @param broken groups defined with errors: uses of them are not reported again
+     * @param file   the robot file read for {@code <robot file=...>}, or {@code null}
+     */
+    record Resolved(Robot robot, java.util.Set<String> broken, Path file) {
+        Resolved {
+            broken = java.util.Set.copyOf(broken);
+        }
+    }
+
+    private RobotResolver(DiagnosticSink d, NameRegistry names, Scope paramScope) {
         this.d = d;
         this.names = names;
         this.paramScope = paramScope;
     }
 
-    /** Resolves the robot section of {@code main} (or its file); returns {@code null} if absent. */
-    Robot resolve(XElement robot, int order, Path mainFile, SourcePos rootPos) {
+    /**
+     * Resolves the robot section {@code robot} of {@code mainFile} (or its file), whose groups'
+     * ranges may use the parameters of {@code paramScope}; reports a missing one at {@code rootPos}.
+     */
+    static Resolved resolve(DiagnosticSink d, NameRegistry names, Scope paramScope, XElement robot, int order,
+                            Path mainFile, SourcePos rootPos) {
+        RobotResolver r = new RobotResolver(d, names, paramScope);
+        Robot resolved = r.resolve(robot, order, mainFile, rootPos);
+        return new Resolved(resolved, r.broken, r.file);
+    }
+
+    private Robot resolve(XElement robot, int order, Path mainFile, SourcePos rootPos) {
         if (robot == null) {
             d.error(rootPos, "the program has no <robot> section (it is required)");
             return null;
         }
-        Attrs.allow(robot, d, List.of("file"));
+        Attrs.allow(robot, d, Element.ROBOT.attributes());
         Attrs.noText(robot, d);
         XText file = Attrs.optional(robot, "file");
         XElement body = robot;
@@ -78,7 +100,7 @@ final class RobotResolver {
                 d.error(body.pos(), "a robot file's root element must be <robot>, got <" + body.name() + ">");
                 return null;
             }
-            Attrs.allow(body, d, List.of());
+            Attrs.allow(body, d, Element.SECTION.attributes());
             Attrs.noText(body, d);
             fileName = file.value().trim();
         }
@@ -123,13 +145,13 @@ final class RobotResolver {
             d.error(c.pos(), "<" + c.name() + "> appears twice in <robot>");
             return previous;
         }
-        Attrs.allow(c, d, List.of());
+        Attrs.allow(c, d, Element.ROBOT_PART.attributes());
         Attrs.noText(c, d);
         return c;
     }
 
     private void actuators(XElement a) {
-        Attrs.allow(a, d, List.of());
+        Attrs.allow(a, d, Element.ROBOT_PART.attributes());
         Attrs.noText(a, d);
         for (XElement c : a.children()) {
             d.error(c.pos(), "actuator '" + c.name() + "' is not implemented (no actuator types are available)");
@@ -140,7 +162,7 @@ final class RobotResolver {
         int index = 0;
         for (XElement g : s.children()) {
             index++;
-            Attrs.allow(g, d, List.of("elements"));
+            Attrs.allow(g, d, Element.GROUP.attributes());
             Attrs.noText(g, d);
             Attrs.noChildren(g, d);
             String name = g.name();
@@ -283,11 +305,11 @@ final class RobotResolver {
         for (XElement e : s.children()) {
             Attrs.noText(e, d);
             Attrs.noChildren(e, d);
-            if (!SENSOR_TYPES.contains(e.name())) {
+            if (!Vocabulary.SENSOR_TYPES.contains(e.name())) {
                 d.error(e.pos(), "sensor '" + e.name() + "' is not implemented; available: angle, accel, touch");
                 continue;
             }
-            Attrs.allow(e, d, List.of("elements"));
+            Attrs.allow(e, d, Element.SENSOR.attributes());
             if (!seen.add(e.name())) {
                 d.error(e.pos(), "sensor '" + e.name() + "' is declared twice in <sensors>");
                 continue;

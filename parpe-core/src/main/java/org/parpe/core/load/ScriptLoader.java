@@ -15,8 +15,8 @@ import org.parpe.core.model.Group;
 import org.parpe.core.model.MainDef;
 import org.parpe.core.model.Program;
 import org.parpe.core.model.Robot;
-import org.parpe.core.run.Channel;
-import org.parpe.core.run.SensorTable;
+import org.parpe.core.sensor.Channel;
+import org.parpe.core.sensor.SensorTable;
 import org.parpe.core.xml.InputFiles;
 
 /**
@@ -46,58 +46,57 @@ public final class ScriptLoader {
      */
     public static LoadResult loadText(Path file, String text, Map<String, Double> parameters) {
         DiagnosticList d = new DiagnosticList();
-        Assembly a = new Assembly(d);
-        a.addMain(file, text);
-        if (d.hasErrors() && a.robot == null && a.sections.isEmpty() && a.main == null) {
-            return new LoadResult(null, d.all(), List.of(), a.files);
+        Assembly.Assembled a = Assembly.read(file, text, d);
+        if (d.hasErrors() && a.nothing()) {
+            return new LoadResult(null, d.all(), List.of(), a.files());
         }
         NameRegistry names = new NameRegistry();
-        Declarations decl = new Declarations(d, names);
-        decl.parameters(a.of("parameters"), parameters);
-        Scope paramScope = new Scope(Scope.Kind.PARAMETERS_ONLY, decl.values, Map.of(), Map.of(), Set.of(),
+        Declarations.Parameters params = Declarations.parameters(a.of("parameters"), parameters, d, names);
+        Scope paramScope = new Scope(Scope.Kind.PARAMETERS_ONLY, params.values(), Map.of(), Map.of(), Set.of(),
                 Map.of(), Set.of(), null);
-        RobotResolver robots = new RobotResolver(d, names, paramScope);
-        Robot robot = robots.resolve(a.robot, a.robotOrder, file,
-                a.root == null ? new SourcePos(file.toString(), 1, 1) : a.root.pos());
-        decl.controls(a.of("controls"));
-        Scopes scopes = new Scopes(decl, robot);
-        StateResolver states = new StateResolver(d, scopes.scope(Scope.Kind.MODULE, Map.of(), Set.of()));
-        states.states(a.of("states"));
-        states.automata(a.of("automata"));
-        InstanceChecks checks = new InstanceChecks(d, robot, states.automata, states.locals);
-        BehaviorResolver behaviors = new BehaviorResolver(d, names, robot, states.automata, states.broken, checks, scopes::scope);
-        behaviors.brokenGroups = robots.broken;
-        behaviors.behaviors(a.of("behaviors"));
-        MainDef main = a.main == null ? null
-                : new MainResolver(d, scopes, behaviors, checks, robot).resolve(a.main, decl.values);
+        RobotResolver.Resolved robot = RobotResolver.resolve(d, names, paramScope, a.robot(), a.robotOrder(), file,
+                a.root() == null ? new SourcePos(file.toString(), 1, 1) : a.root().pos());
+        Declarations.Controls controls = Declarations.controls(a.of("controls"), d, names);
+        Scopes scopes = new Scopes(params, controls, robot.robot());
+        StateResolver.Resolved states = StateResolver.resolve(d, scopes.scope(Scope.Kind.MODULE, Map.of(), Set.of()),
+                a.of("states"), a.of("automata"));
+        InstanceChecks checks = new InstanceChecks(d, robot.robot(), states.automata(), states.locals());
+        BehaviorResolver.Resolved behaviors = BehaviorResolver.resolve(d, names, robot, states, checks, scopes::scope,
+                a.of("behaviors"));
+        MainDef main = a.main() == null ? null
+                : new MainResolver(d, scopes, behaviors, checks, robot.robot()).resolve(a.main(), params.values());
         names.check(d);
-        if (robots.file != null) {
-            a.files.add(robots.file);
+        List<Path> files = new ArrayList<>(a.files());
+        if (robot.file() != null) {
+            files.add(robot.file());
         }
-        if (d.hasErrors() || robot == null) {
-            return new LoadResult(null, d.all(), decl.parameterErrors, a.files);
+        if (d.hasErrors() || robot.robot() == null) {
+            return new LoadResult(null, d.all(), params.errors(), files);
         }
         List<Behavior> bs = new ArrayList<>();
-        behaviors.behaviors.values().forEach(i -> bs.add(i.model()));
-        Program p = new Program(file.toString(), robot, decl.parameters, decl.values, decl.controls, decl.radioWords,
-                new ArrayList<>(states.states.values()), new ArrayList<>(states.automata.values()), bs, main);
-        return new LoadResult(p, d.all(), decl.parameterErrors, a.files);
+        behaviors.behaviors().values().forEach(i -> bs.add(i.model()));
+        Program p = new Program(file.toString(), robot.robot(), params.list(), params.values(), controls.list(),
+                controls.radioWords(), new ArrayList<>(states.states().values()),
+                new ArrayList<>(states.automata().values()), bs, main);
+        return new LoadResult(p, d.all(), params.errors(), files);
     }
 
     /** Builds the scopes of §13 rule 12 for this program. */
     static final class Scopes {
-        private final Declarations decl;
+        private final Declarations.Parameters params;
+        private final Declarations.Controls controls;
         private final Set<String> groups;
         private final Scope.SensorCatalog sensors;
 
-        Scopes(Declarations decl, Robot robot) {
-            this.decl = decl;
+        Scopes(Declarations.Parameters params, Declarations.Controls controls, Robot robot) {
+            this.params = params;
+            this.controls = controls;
             this.groups = robot == null ? Set.of() : Set.copyOf(robot.groups().stream().map(Group::name).toList());
             this.sensors = robot == null ? null : catalog(robot);
         }
 
         Scope scope(Scope.Kind kind, Map<String, Integer> macros, Set<String> groupMacros) {
-            return new Scope(kind, decl.values, decl.controlIndex, decl.radioWords, groups, macros, groupMacros,
+            return new Scope(kind, params.values(), controls.index(), controls.radioWords(), groups, macros, groupMacros,
                     sensors == null ? Scope.SensorCatalog.NONE : sensors);
         }
 

@@ -10,6 +10,7 @@ import org.parpe.core.expr.ExprCompiler;
 import org.parpe.core.expr.Expression;
 import org.parpe.core.expr.Names;
 import org.parpe.core.expr.Scope;
+import org.parpe.core.lang.Vocabulary.Element;
 import org.parpe.core.model.Automaton;
 import org.parpe.core.model.Interp;
 import org.parpe.core.model.StateDef;
@@ -19,25 +20,50 @@ import org.parpe.core.xml.XText;
 
 /** Resolves {@code <states>} (PARSL.md §5) and {@code <automata>} (§6). */
 final class StateResolver {
-    final Map<String, StateDef> states = new LinkedHashMap<>();
-    final Map<String, Automaton> automata = new LinkedHashMap<>();
-    /** Local sensor references of each automaton (its states' and times' expressions). */
-    final Map<String, List<ExprCompiler.LocalUse>> locals = new HashMap<>();
+    /**
+     * The resolved states and automata.
+     *
+     * @param states   the named states in document order
+     * @param automata the automata in document order
+     * @param locals   the local sensor references of each automaton (its states' and times' expressions)
+     * @param broken   states and automata defined with errors: uses of them are not reported again
+     */
+    record Resolved(Map<String, StateDef> states, Map<String, Automaton> automata,
+                    Map<String, List<ExprCompiler.LocalUse>> locals, java.util.Set<String> broken) {
+        Resolved {
+            states = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(states));
+            automata = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(automata));
+            locals = Map.copyOf(locals);
+            broken = java.util.Set.copyOf(broken);
+        }
+    }
+
+    private final Map<String, StateDef> states = new LinkedHashMap<>();
+    private final Map<String, Automaton> automata = new LinkedHashMap<>();
+    private final Map<String, List<ExprCompiler.LocalUse>> locals = new HashMap<>();
     private final Map<String, List<ExprCompiler.LocalUse>> stateLocals = new HashMap<>();
     private final Map<String, XElement> stateElements = new HashMap<>();
-    /** Names defined with errors: uses of them are not reported again. */
-    final java.util.Set<String> broken = new java.util.HashSet<>();
+    private final java.util.Set<String> broken = new java.util.HashSet<>();
     private final DiagnosticSink d;
     private final Scope scope;
 
-    StateResolver(DiagnosticSink d, Scope moduleScope) {
+    private StateResolver(DiagnosticSink d, Scope moduleScope) {
         this.d = d;
         this.scope = moduleScope;
     }
 
-    void states(List<Assembly.Section> sections) {
+    /** Resolves the {@code <states>} and then the {@code <automata>} sections, in {@code moduleScope}. */
+    static Resolved resolve(DiagnosticSink d, Scope moduleScope, List<Assembly.Section> stateSections,
+                            List<Assembly.Section> automataSections) {
+        StateResolver r = new StateResolver(d, moduleScope);
+        r.states(stateSections);
+        r.automata(automataSections);
+        return new Resolved(r.states, r.automata, r.locals, r.broken);
+    }
+
+    private void states(List<Assembly.Section> sections) {
         for (Assembly.Section s : sections) {
-            Attrs.allow(s.element(), d, List.of());
+            Attrs.allow(s.element(), d, Element.SECTION.attributes());
             Attrs.noText(s.element(), d);
             for (XElement e : s.element().children()) {
                 state(e, s);
@@ -46,7 +72,7 @@ final class StateResolver {
     }
 
     private void state(XElement e, Assembly.Section s) {
-        Attrs.allow(e, d, List.of("angles", "interp"));
+        Attrs.allow(e, d, Element.STATE.attributes());
         Attrs.noText(e, d);
         Attrs.noChildren(e, d);
         String name = e.name();
@@ -99,9 +125,9 @@ final class StateResolver {
         return ok ? out : null;
     }
 
-    void automata(List<Assembly.Section> sections) {
+    private void automata(List<Assembly.Section> sections) {
         for (Assembly.Section s : sections) {
-            Attrs.allow(s.element(), d, List.of());
+            Attrs.allow(s.element(), d, Element.SECTION.attributes());
             Attrs.noText(s.element(), d);
             for (XElement e : s.element().children()) {
                 automaton(e, s);
@@ -110,7 +136,7 @@ final class StateResolver {
     }
 
     private void automaton(XElement e, Assembly.Section s) {
-        Attrs.allow(e, d, List.of("states", "times"));
+        Attrs.allow(e, d, Element.AUTOMATON.attributes());
         Attrs.noChildren(e, d);
         String name = e.name();
         if (!Attrs.validName(name, "automaton", e.pos(), d)) {

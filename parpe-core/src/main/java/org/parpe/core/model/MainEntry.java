@@ -3,6 +3,7 @@ package org.parpe.core.model;
 import java.util.List;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.expr.Expression;
+import org.parpe.core.lang.Vocabulary;
 
 /**
  * One behavior invocation in {@code <main>}.
@@ -28,13 +29,19 @@ public record MainEntry(String behavior, Expression time, Expression exit, List<
      * @param mirror whether every target angle is negated
      */
     public record GroupRef(String name, boolean mirror) {
+        /** The reference written {@code name} or {@code !name} (spaces around either part ignored). */
+        public static GroupRef parse(String written) {
+            String g = written.trim();
+            boolean mirror = g.startsWith(Vocabulary.MIRROR);
+            return new GroupRef(mirror ? g.substring(Vocabulary.MIRROR.length()).trim() : g, mirror);
+        }
     }
 
     /** The group {@code instance} drives when this entry runs it. */
     public GroupRef groupOf(Instance instance) {
-        String g = instance.group();
-        boolean mirror = g.startsWith("!");
-        String base = mirror ? g.substring(1).trim() : g;
+        GroupRef written = GroupRef.parse(instance.group());
+        String base = written.name();
+        boolean mirror = written.mirror();
         for (MacroArg a : macros) {
             if (a.name().equals(base) && a.group() != null) {
                 base = a.group();

@@ -1,6 +1,7 @@
 package org.parpe.core.model;
 
 import org.parpe.core.diag.SourcePos;
+import org.parpe.core.lang.Numbers;
 
 /**
  * A run-time parameter (PARSL.md §3).

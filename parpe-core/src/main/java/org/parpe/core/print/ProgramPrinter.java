@@ -13,7 +13,7 @@ import org.parpe.core.model.Instance;
 import org.parpe.core.model.Interp;
 import org.parpe.core.model.MainDef;
 import org.parpe.core.model.MainEntry;
-import org.parpe.core.model.Numbers;
+import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.Parameter;
 import org.parpe.core.model.Program;
 import org.parpe.core.model.SensorDecl;

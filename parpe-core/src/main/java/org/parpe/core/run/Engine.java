@@ -15,6 +15,8 @@ import org.parpe.core.model.Conditional;
 import org.parpe.core.model.MainDef;
 import org.parpe.core.model.MainEntry;
 import org.parpe.core.model.Program;
+import org.parpe.core.sensor.Channel;
+import org.parpe.core.sensor.SensorTable;
 
 /**
  * The PARSL scheduler (PARSL.md §7, §11, §13). Stepped one tick at a time by whoever owns the

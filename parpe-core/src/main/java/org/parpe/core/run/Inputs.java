@@ -7,6 +7,8 @@ import java.util.concurrent.ConcurrentLinkedQueue;
 import org.parpe.core.expr.EvalContext;
 import org.parpe.core.model.Control;
 import org.parpe.core.model.Program;
+import org.parpe.core.sensor.Channel;
+import org.parpe.core.sensor.SensorTable;
 
 /**
  * What flows into the scheduler at step 1 of a tick (PARSL.md §11): control changes queued by

@@ -7,7 +7,7 @@ import org.parpe.core.model.Automaton;
 import org.parpe.core.model.Conditional;
 import org.parpe.core.model.Instance;
 import org.parpe.core.model.Interp;
-import org.parpe.core.model.Numbers;
+import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.StateDef;
 
 /**

@@ -1,5 +1,7 @@
 package org.parpe.core.run;
 
+import org.parpe.core.sensor.SensorTable;
+
 /**
  * Supplies measured sensor readings (simulator, hardware). Called once per tick, at step 1
  * of PARSL.md §11, after the plant has reached {@code time}. Without a source, {@code angle}

@@ -4,9 +4,11 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.Control;
-import org.parpe.core.model.Numbers;
 import org.parpe.core.model.Program;
+import org.parpe.core.sensor.Channel;
+import org.parpe.core.sensor.SensorTable;
 
 /**
  * Reads a stimulus file (PARSL.md §11): one {@code TIME NAME=VALUE} per line, {@code #}

@@ -19,7 +19,7 @@ import javax.xml.stream.XMLStreamConstants;
 import javax.xml.stream.XMLStreamReader;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
-import org.parpe.core.model.Numbers;
+import org.parpe.core.lang.Numbers;
 
 /**
  * A small XML file made of one root element whose child elements carry only attributes (robot

@@ -14,7 +14,7 @@ import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.diag.Severity;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.load.LoadResult;
-import org.parpe.core.model.Numbers;
+import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.Parameter;
 import org.parpe.core.model.Program;
 import org.parpe.core.run.Engine;

@@ -8,11 +8,14 @@ import java.util.Map;
 import java.util.Set;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import org.parpe.core.lang.Vocabulary;
+import org.parpe.core.model.Program;
 
 /**
  * The names a script defines (groups, parameters, controls, radio words, states, automata,
- * behaviors and their macros), read by a forgiving scan of the text so that completion keeps
- * working while the script has errors.
+ * behaviors and their macros): taken from the loader's result ({@link #of(Program)}), which
+ * also knows the names of included files, or read by a forgiving scan of the text
+ * ({@link #of(String)}) so that completion keeps working while the script has errors.
  */
 public final class NameIndex {
     private static final Pattern TAG = Pattern.compile("<(/?)([A-Za-z_][\\w.-]*)((?:[^>\"']|\"[^\"]*\"|'[^']*')*?)(/?)>|<!--.*?-->",
@@ -49,7 +52,43 @@ public final class NameIndex {
                 path.add(name);
             }
         }
-        idx.groups.add("all");
+        idx.groups.add(Vocabulary.ALL);
+        return idx;
+    }
+
+    /** The names of a loaded program, its includes' names among them. */
+    public static NameIndex of(Program p) {
+        NameIndex idx = new NameIndex();
+        p.robot().groups().forEach(g -> idx.groups.add(g.name()));
+        p.parameters().forEach(x -> idx.parameters.add(x.name()));
+        p.controls().forEach(c -> {
+            idx.controls.add(c.name());
+            idx.radioWords.addAll(c.words());
+        });
+        p.states().forEach(x -> idx.states.add(x.name()));
+        p.automata().forEach(x -> idx.automata.add(x.name()));
+        p.behaviors().forEach(b -> idx.behaviors.put(b.name(), b.macros()));
+        return idx;
+    }
+
+    /**
+     * The names of this index and of {@code other} (which may be {@code null}); for a behavior
+     * both know, this index's macros.
+     */
+    public NameIndex with(NameIndex other) {
+        if (other == null) {
+            return this;
+        }
+        NameIndex idx = new NameIndex();
+        for (NameIndex n : List.of(this, other)) {
+            idx.groups.addAll(n.groups);
+            idx.parameters.addAll(n.parameters);
+            idx.controls.addAll(n.controls);
+            idx.radioWords.addAll(n.radioWords);
+            idx.states.addAll(n.states);
+            idx.automata.addAll(n.automata);
+            n.behaviors.forEach(idx.behaviors::putIfAbsent);
+        }
         return idx;
     }
 
@@ -63,24 +102,20 @@ public final class NameIndex {
     }
 
     private void define(List<String> path, String name, Map<String, String> attrs) {
-        if (path.size() != 2 && !(path.size() == 3 && path.get(1).equals("robot"))) {
+        Vocabulary.Element kind = Vocabulary.elementAt(path, name);
+        if (kind == null) {
             return;
         }
-        String section = path.get(path.size() - 1);
-        switch (section) {
-            case "structure" -> groups.add(name);
-            case "parameters" -> parameters.add(name);
-            case "controls" -> {
+        switch (kind) {
+            case GROUP -> groups.add(name);
+            case PARAMETER -> parameters.add(name);
+            case TEXT_CONTROL -> {
                 controls.add(name);
-                for (String w : attrs.getOrDefault("values", "").split(",")) {
-                    if (!w.isBlank()) {
-                        radioWords.add(w.trim());
-                    }
-                }
+                radioWords.addAll(list(attrs.getOrDefault("values", "")));
             }
-            case "states" -> states.add(name);
-            case "automata" -> automata.add(name);
-            case "behaviors" -> behaviors.put(name, list(attrs.getOrDefault("macros", "")));
+            case STATE -> states.add(name);
+            case AUTOMATON -> automata.add(name);
+            case BEHAVIOR -> behaviors.put(name, list(attrs.getOrDefault("macros", "")));
             default -> {
             }
         }

@@ -132,6 +132,7 @@ public final class ParslEditor {
             document.setDocumentPartitioner(null);
         }
         annotations.removeAllAnnotations();
+        backgroundNames = NameIndex.of("");
         document.set(text);
         if (!big && plain) {
             plain = false;
@@ -144,14 +145,19 @@ public final class ParslEditor {
     }
 
     /**
-     * The names {@code text} defines, for completion: scanned now, or for a text over
-     * {@link #COLOUR_LIMIT} (a scan takes about a second at 10 MB) the last background scan.
+     * The names {@code text} defines, for completion: scanned now and joined with the names of
+     * the last program the {@link Validator} loaded (which knows the included files' names), or
+     * for a text over {@link #COLOUR_LIMIT} (a scan takes about a second at 10 MB) only the
+     * latter.
      */
     public NameIndex names(String text) {
-        return text.length() > COLOUR_LIMIT ? backgroundNames : NameIndex.of(text);
+        return text.length() > COLOUR_LIMIT ? backgroundNames : NameIndex.of(text).with(backgroundNames);
     }
 
-    /** Keeps the names of a large text, scanned off the UI thread (by the {@link Validator}). */
+    /**
+     * Keeps the names found off the UI thread by the {@link Validator}: those of the program
+     * it loaded, or for a large text that did not load, those of a scan.
+     */
     public void setNames(NameIndex names) {
         backgroundNames = names;
     }

@@ -36,7 +36,10 @@ public final class Validator implements AutoCloseable {
     private final AtomicLong generation = new AtomicLong();
     private final Consumer<NameIndex> names;
 
-    /** {@code names} receives, on the UI thread, the names of each text too large to scan at a keystroke. */
+    /**
+     * {@code names} receives, on the UI thread, the names of each program that loaded, and of
+     * each text that did not load and is too large to scan at a keystroke.
+     */
     public Validator(Display display, Consumer<NameIndex> names) {
         this.display = display;
         this.names = names;
@@ -60,7 +63,8 @@ public final class Validator implements AutoCloseable {
                     return;
                 }
                 LoadResult r = load(file, text, Map.of());
-                NameIndex index = text.length() > ParslEditor.COLOUR_LIMIT ? NameIndex.of(text) : null;
+                NameIndex index = r.program() != null ? NameIndex.of(r.program())
+                        : text.length() > ParslEditor.COLOUR_LIMIT ? NameIndex.of(text) : null;
                 if (!display.isDisposed()) {
                     display.asyncExec(() -> {
                         if (gen == generation.get()) {

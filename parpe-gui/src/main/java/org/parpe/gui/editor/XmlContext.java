@@ -2,6 +2,7 @@ package org.parpe.gui.editor;
 
 import java.util.ArrayList;
 import java.util.List;
+import org.parpe.core.lang.Vocabulary;
 
 /**
  * Where the caret is in a PARSL document, as far as completion cares: the chain of open
@@ -120,7 +121,7 @@ public record XmlContext(List<String> path, Kind kind, String element, String at
             j--;
         }
         String p = value.substring(j);
-        return p.startsWith("!") ? p.substring(1) : p;
+        return p.startsWith(Vocabulary.MIRROR) ? p.substring(Vocabulary.MIRROR.length()) : p;
     }
 
     private static String wordBefore(String text, int offset) {

@@ -195,7 +195,7 @@ public final class GridPane implements GridView.Actions {
         // Without times="…" every row gets an equal share of the period: show it in seconds (lesson 2's
         // 0.5 s), not a bare "1" that reads as one second.
         Double share = times == null ? Modules.secondsPerRow(program, table.name(), table.rows().size()) : null;
-        String equal = share == null ? "equal" : org.parpe.core.model.Numbers.format(share) + " s";
+        String equal = share == null ? "equal" : org.parpe.core.lang.Numbers.format(share) + " s";
         for (int r = 0; r < table.rows().size(); r++) {
             List<String> row = new ArrayList<>();
             row.add(times == null ? equal : r < times.size() ? times.get(r) : "");

@@ -74,7 +74,7 @@ public final class OutlineView {
         if (!p.parameters().isEmpty()) {
             TreeItem s = section("Parameters", null);
             for (Parameter x : p.parameters()) {
-                node(s, x.name() + " = " + org.parpe.core.model.Numbers.format(p.parameterValues().getOrDefault(x.name(), x.value())), x.pos());
+                node(s, x.name() + " = " + org.parpe.core.lang.Numbers.format(p.parameterValues().getOrDefault(x.name(), x.value())), x.pos());
             }
         }
         if (!p.controls().isEmpty()) {

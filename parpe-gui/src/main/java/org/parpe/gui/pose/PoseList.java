@@ -146,7 +146,7 @@ public final class PoseList {
 
     /** Parses a time typed by the user; null if it is not a number in range. */
     public static Double parseInterval(String text) {
-        Double v = org.parpe.core.model.Numbers.parsePlain(text.trim().replaceFirst("\\s*s$", ""));
+        Double v = org.parpe.core.lang.Numbers.parsePlain(text.trim().replaceFirst("\\s*s$", ""));
         return v != null && v >= MIN_INTERVAL && v <= MAX_INTERVAL ? v : null;
     }
 

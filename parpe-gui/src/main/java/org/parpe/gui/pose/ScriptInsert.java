@@ -7,7 +7,7 @@ import java.util.Locale;
 import java.util.Set;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import org.parpe.core.expr.ExprCompiler;
+import org.parpe.core.lang.Vocabulary;
 import org.parpe.core.model.Automaton;
 import org.parpe.core.model.Behavior;
 import org.parpe.core.model.Group;
@@ -214,7 +214,7 @@ final class ScriptInsert {
 
     private static String unique(String base, Set<String> taken) {
         String name = base;
-        for (int k = 2; taken.contains(name) || ExprCompiler.isReserved(name); k++) {
+        for (int k = 2; taken.contains(name) || Vocabulary.isReserved(name); k++) {
             name = base + "_" + k;
         }
         return name;

@@ -13,7 +13,7 @@ import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.Shell;
 import org.eclipse.swt.widgets.Text;
 import org.parpe.core.model.Group;
-import org.parpe.core.model.Numbers;
+import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.Program;
 import org.parpe.serial.record.PoseRecording;
 import org.parpe.serial.record.RecordingWriter;

@@ -1,10 +1,10 @@
 package org.parpe.gui.run;
 
 import java.util.Arrays;
-import org.parpe.core.run.Channel;
+import org.parpe.core.sensor.Channel;
 import org.parpe.core.run.JointSink;
 import org.parpe.core.run.RunInfo;
-import org.parpe.core.run.SensorTable;
+import org.parpe.core.sensor.SensorTable;
 
 /**
  * Records commanded and measured joint angles of every module for the live plots: an observer of

@@ -5,7 +5,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import org.parpe.core.model.Numbers;
+import org.parpe.core.lang.Numbers;
 import org.parpe.sim.sweep.Constraints;
 import java.util.function.Predicate;
 import org.parpe.sim.sweep.Objective;

@@ -5,7 +5,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.eclipse.swt.widgets.Display;
-import org.parpe.core.model.Numbers;
+import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.Parameter;
 import org.parpe.sim.sweep.Axis;
 import org.parpe.sim.sweep.Constraints;

@@ -20,7 +20,7 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.parpe.core.diag.Diagnostic;
-import org.parpe.core.model.Numbers;
+import org.parpe.core.lang.Numbers;
 import org.parpe.gui.editor.ParslEditor;
 import org.parpe.sim.sweep.Cancellation;
 import org.parpe.sim.sweep.Constraints;

@@ -9,7 +9,7 @@ import org.parpe.core.run.JointSink;
 import org.parpe.core.run.RunInfo;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.core.run.SensorSource;
-import org.parpe.core.run.SensorTable;
+import org.parpe.core.sensor.SensorTable;
 import org.parpe.serial.link.LinkOpener;
 import org.parpe.serial.protocol.Protocol;
 

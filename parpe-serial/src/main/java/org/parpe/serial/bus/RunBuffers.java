@@ -1,8 +1,8 @@
 package org.parpe.serial.bus;
 
 import java.util.function.Consumer;
-import org.parpe.core.run.Channel;
-import org.parpe.core.run.SensorTable;
+import org.parpe.core.sensor.Channel;
+import org.parpe.core.sensor.SensorTable;
 import org.parpe.serial.protocol.Protocol;
 
 /**

@@ -1,8 +1,8 @@
 package org.parpe.sim.sweep;
 
-import org.parpe.core.run.Channel;
+import org.parpe.core.sensor.Channel;
 import org.parpe.core.run.SensorSource;
-import org.parpe.core.run.SensorTable;
+import org.parpe.core.sensor.SensorTable;
 
 /**
  * The energy proxy of a run: the summed absolute change of every measured joint angle, tick to

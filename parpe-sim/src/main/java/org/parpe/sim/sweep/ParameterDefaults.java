@@ -5,7 +5,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import org.parpe.core.model.Numbers;
+import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.Parameter;
 
 /**

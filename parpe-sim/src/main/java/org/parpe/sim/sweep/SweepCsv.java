@@ -8,7 +8,7 @@ import java.util.TreeMap;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.parpe.core.io.CsvCells;
-import org.parpe.core.model.Numbers;
+import org.parpe.core.lang.Numbers;
 
 /**
  * The CSV form of sweep rows: a header, then one line per run in combination order. Columns:

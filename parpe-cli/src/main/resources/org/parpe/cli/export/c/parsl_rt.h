@@ -33,7 +33,7 @@ extern "C" {
 #define PARSL_DBL(a, i) ((a)[i])
 #endif
 
-/* Sensor channels, in the order of org.parpe.core.run.Channel. */
+/* Sensor channels, in the order of org.parpe.core.sensor.Channel. */
 enum { PARSL_ANGLE, PARSL_ACCEL_X, PARSL_ACCEL_Y, PARSL_ACCEL_Z, PARSL_TOUCH_LEFT, PARSL_TOUCH_RIGHT,
        PARSL_CHANNELS };
 

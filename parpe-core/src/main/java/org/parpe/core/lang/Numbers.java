@@ -1,8 +1,11 @@
-package org.parpe.core.model;
+package org.parpe.core.lang;
 
 import java.math.BigDecimal;
 
-/** Number formatting shared by messages and the printer. */
+/**
+ * How PARSL writes numbers: the plain numbers of attributes, and the formatting shared by
+ * messages and the printer.
+ */
 public final class Numbers {
     private Numbers() {
     }

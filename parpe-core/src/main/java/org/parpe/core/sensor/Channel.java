@@ -1,4 +1,4 @@
-package org.parpe.core.run;
+package org.parpe.core.sensor;
 
 /**
  * One sensor reading of a module (PARSL.md §2, §10). The sensor reference

@@ -1,11 +1,11 @@
-package org.parpe.core.run;
+package org.parpe.core.sensor;
 
 import java.util.Arrays;
 
 /**
  * The sensor readings of every module for the current tick: a flat, reused array indexed by
  * module index (position of the module ID in ascending order) and {@link Channel}. A
- * {@link SensorSource} writes measured values into it at step 1 of every tick; the scheduler
+ * sensor source of the scheduler writes measured values into it at step 1 of every tick; the scheduler
  * then applies stimulus overrides and reads it while evaluating expressions.
  */
 public final class SensorTable {

@@ -1,0 +1,53 @@
+package org.parpe.cli;
+
+import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.noClasses;
+import static com.tngtech.archunit.library.Architectures.layeredArchitecture;
+import static com.tngtech.archunit.library.dependencies.SlicesRuleDefinition.slices;
+
+import com.tngtech.archunit.core.importer.ImportOption;
+import com.tngtech.archunit.junit.AnalyzeClasses;
+import com.tngtech.archunit.junit.ArchTest;
+import com.tngtech.archunit.lang.ArchRule;
+
+/**
+ * The module layering of STYLE.md ("One direction of dependencies"), over every module this one
+ * sees: {@code parpe-cli} → {@code parpe-sim}, {@code parpe-serial} → {@code parpe-core}, the
+ * simulator and the serial bus independent of each other, and each library kept to its module.
+ * (The IDE sits beside the CLI; Maven's module graph keeps the two apart.)
+ */
+@AnalyzeClasses(packages = "org.parpe", importOptions = ImportOption.DoNotIncludeTests.class)
+class ModuleLayersTest {
+    @ArchTest
+    static final ArchRule MODULES_DEPEND_DOWNWARDS = layeredArchitecture().consideringOnlyDependenciesInLayers()
+            .layer("core").definedBy("org.parpe.core..")
+            .layer("sim").definedBy("org.parpe.sim..")
+            .layer("serial").definedBy("org.parpe.serial..")
+            .layer("cli").definedBy("org.parpe.cli..")
+            .whereLayer("cli").mayNotBeAccessedByAnyLayer()
+            .whereLayer("sim").mayOnlyBeAccessedByLayers("cli")
+            .whereLayer("serial").mayOnlyBeAccessedByLayers("cli")
+            .whereLayer("core").mayOnlyBeAccessedByLayers("sim", "serial", "cli");
+
+    @ArchTest
+    static final ArchRule ONLY_THE_SIMULATOR_USES_ODE4J = noClasses().that().resideOutsideOfPackage("org.parpe.sim..")
+            .and().resideInAPackage("org.parpe..")
+            .should().dependOnClassesThat().resideInAPackage("org.ode4j..");
+
+    @ArchTest
+    static final ArchRule ONLY_THE_SERIAL_BUS_USES_JSERIALCOMM = noClasses()
+            .that().resideOutsideOfPackage("org.parpe.serial..").and().resideInAPackage("org.parpe..")
+            .should().dependOnClassesThat().resideInAPackage("com.fazecast..");
+
+    @ArchTest
+    static final ArchRule SERIAL_PACKAGES_FORM_NO_CYCLE = slices().matching("org.parpe.serial.(*)..").should()
+            .beFreeOfCycles();
+
+    /** The simulator's packages are left out: its {@code config} and {@code internal} still use each other. */
+    @ArchTest
+    static final ArchRule CLI_PACKAGES_FORM_NO_CYCLE = slices().matching("org.parpe.cli.(*)..").should()
+            .beFreeOfCycles();
+
+    @ArchTest
+    static final ArchRule NO_SWT_BELOW_THE_IDE = noClasses().that().resideInAPackage("org.parpe..")
+            .should().dependOnClassesThat().resideInAPackage("org.eclipse..");
+}
