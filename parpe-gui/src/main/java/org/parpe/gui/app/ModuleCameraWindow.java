@@ -43,6 +43,11 @@ final class ModuleCameraWindow {
         shell.setSize(480, 400);
     }
 
+    /** The camera's view (tests). */
+    ModuleCameraView view() {
+        return view;
+    }
+
     /** Opens the window for {@code ide}, looking from the script's last module. */
     static ModuleCameraWindow open(IdeWindow ide) {
         ModuleCameraWindow w = new ModuleCameraWindow(ide);

@@ -8,7 +8,7 @@ import org.eclipse.swt.graphics.GC;
  * the near plane and a spacing that grows with the viewing distance.
  */
 final class GridPainter {
-    private static final double NEAR = 0.02;
+    private static final double NEAR = SceneRenderer.NEAR_VIEW;
     private static final Color SKY_TOP = new Color(0xE9, 0xEF, 0xF7);
     private static final Color SKY_BOTTOM = new Color(0xC9, 0xD4, 0xE3);
     private static final Color LINE = new Color(0xA9, 0xB4, 0xC4);

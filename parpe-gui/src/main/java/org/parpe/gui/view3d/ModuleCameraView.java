@@ -25,7 +25,10 @@ public final class ModuleCameraView {
 
     private final Canvas canvas;
     private final Camera camera = new Camera();
-    private final SceneRenderer renderer = new SceneRenderer();
+    /** The lens's near plane, m: a module's camera sees what it touches (the view's 2 cm would hide it). */
+    static final double NEAR = 0.002;
+
+    private final SceneRenderer renderer = new SceneRenderer(NEAR);
     private Supplier<SimSnapshot> source = () -> null;
     private int module;
 

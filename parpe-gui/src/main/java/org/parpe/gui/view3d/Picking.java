@@ -14,7 +14,7 @@ import org.parpe.sim.Vec3;
 final class Picking {
     /** A click this close to a small piece still picks it, pixels. */
     private static final double MIN_RADIUS_PX = 8;
-    private static final double NEAR = 0.02;
+    private static final double NEAR = SceneRenderer.NEAR_VIEW;
 
     private Picking() {
     }

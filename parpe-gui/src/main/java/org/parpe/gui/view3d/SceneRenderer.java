@@ -20,7 +20,8 @@ import org.parpe.sim.Vec3;
  * far to near (painter's algorithm) over a ground grid and soft ground shadows.
  */
 final class SceneRenderer {
-    private static final double NEAR = 0.02;
+    /** The orbiting view's near plane, m: nothing closer to the eye is drawn. */
+    static final double NEAR_VIEW = 0.02;
     private static final int CYL_SIDES = 14;
     private static final double[] LIGHT = normalized(0.35, -0.45, 0.82);
 
@@ -29,6 +30,22 @@ final class SceneRenderer {
     private final Map<Integer, Color> colors = new HashMap<>();
     private final double[] tmp = new double[3];
     private final double[] corners = new double[3 * 2 * CYL_SIDES];
+    private final double[] inCamera = new double[3 * 2 * CYL_SIDES];
+    private final double[] clipped = new double[3 * (2 * CYL_SIDES + 1)];
+    private final double near;
+
+    /** A renderer for the orbiting view (near plane {@link #NEAR_VIEW}). */
+    SceneRenderer() {
+        this(NEAR_VIEW);
+    }
+
+    /**
+     * A renderer whose near plane is {@code near} m from the eye: a camera carried on a module
+     * needs a short one, or a wall it touches (the slot machine at 1.6 cm) vanishes.
+     */
+    SceneRenderer(double near) {
+        this.near = near;
+    }
 
     /** Which modules to highlight, and whether to label module IDs. */
     record Style(Set<Integer> highlighted, boolean labels) {
@@ -135,7 +152,7 @@ final class SceneRenderer {
 
     private void sphere(Camera cam, Vec3 pos, BodyShape.Sphere s, int rgb) {
         cam.toCamera(pos.x(), pos.y(), pos.z(), tmp);
-        if (tmp[2] < NEAR) {
+        if (tmp[2] < near) {
             return;
         }
         int rad = (int) Math.max(1, Math.round(s.radius() * cam.scale(tmp[2])));
@@ -153,33 +170,59 @@ final class SceneRenderer {
         emit(cam, rgb, sign * r.get(0, axis), sign * r.get(1, axis), sign * r.get(2, axis), idx);
     }
 
-    /** Adds the face through the given corners if it faces the camera and lies in front of it. */
+    /**
+     * Adds the face through the given corners if it faces the camera, cut at the near plane: the
+     * part in front of the eye is drawn (a wall the camera nearly touches, seen at an angle, has
+     * corners behind the eye and must not vanish whole).
+     */
     private void emit(Camera cam, int rgb, double nx, double ny, double nz, int... idx) {
         double[] eye = cam.eye();
         int c0 = 3 * idx[0];
         if ((corners[c0] - eye[0]) * nx + (corners[c0 + 1] - eye[1]) * ny + (corners[c0 + 2] - eye[2]) * nz >= 0) {
             return;
         }
-        int[] pts = new int[2 * idx.length];
-        double depth = 0;
-        for (int j = 0; j < idx.length; j++) {
+        int n = idx.length;
+        for (int j = 0; j < n; j++) {
             int c = 3 * idx[j];
             cam.toCamera(corners[c], corners[c + 1], corners[c + 2], tmp);
-            if (tmp[2] < NEAR) {
-                return;
-            }
-            pts[2 * j] = (int) Math.round(cam.screenX(tmp[0], tmp[2]));
-            pts[2 * j + 1] = (int) Math.round(cam.screenY(tmp[1], tmp[2]));
-            depth += tmp[2];
+            System.arraycopy(tmp, 0, inCamera, 3 * j, 3);
         }
-        faces.add(pts, depth / idx.length, shade(rgb, nx, ny, nz), 0);
+        int m = 0; // Sutherland-Hodgman against the one plane z = near
+        for (int j = 0; j < n; j++) {
+            int a = 3 * j;
+            int b = 3 * ((j + 1) % n);
+            boolean aIn = inCamera[a + 2] >= near;
+            boolean bIn = inCamera[b + 2] >= near;
+            if (aIn) {
+                System.arraycopy(inCamera, a, clipped, 3 * m++, 3);
+            }
+            if (aIn != bIn) {
+                double t = (near - inCamera[a + 2]) / (inCamera[b + 2] - inCamera[a + 2]);
+                for (int k = 0; k < 3; k++) {
+                    clipped[3 * m + k] = inCamera[a + k] + t * (inCamera[b + k] - inCamera[a + k]);
+                }
+                m++;
+            }
+        }
+        if (m < 3) {
+            return;
+        }
+        int[] pts = new int[2 * m];
+        double depth = 0;
+        for (int j = 0; j < m; j++) {
+            double z = Math.max(near, clipped[3 * j + 2]);
+            pts[2 * j] = (int) Math.round(cam.screenX(clipped[3 * j], z));
+            pts[2 * j + 1] = (int) Math.round(cam.screenY(clipped[3 * j + 1], z));
+            depth += z;
+        }
+        faces.add(pts, depth / m, shade(rgb, nx, ny, nz), 0);
     }
 
     private void shadow(GC gc, Camera cam, SimBody b) {
         Vec3 p = b.position();
         double size = extent(b.shape());
         cam.toCamera(p.x(), p.y(), 0, tmp);
-        if (tmp[2] < NEAR || p.z() > 1.0) {
+        if (tmp[2] < near || p.z() > 1.0) {
             return;
         }
         double px = size * cam.scale(tmp[2]) * 1.1;
@@ -206,7 +249,7 @@ final class SceneRenderer {
             }
             Vec3 p = b.position();
             cam.toCamera(p.x(), p.y(), p.z(), tmp);
-            if (tmp[2] < NEAR) {
+            if (tmp[2] < near) {
                 continue;
             }
             String t = Integer.toString(b.moduleId());

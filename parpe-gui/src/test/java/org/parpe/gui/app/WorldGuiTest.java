@@ -5,6 +5,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
 import java.util.concurrent.atomic.AtomicReference;
+import org.eclipse.swt.graphics.GC;
+import org.eclipse.swt.graphics.Image;
+import org.eclipse.swt.graphics.ImageData;
+import org.eclipse.swt.widgets.Display;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.io.TempDir;
@@ -13,6 +17,7 @@ import org.junit.jupiter.params.provider.CsvSource;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.gui.run.Speed;
 import org.parpe.gui.run.Target;
+import org.parpe.gui.view3d.ModuleCameraView;
 import org.parpe.sim.PartKind;
 import org.parpe.sim.SimSnapshot;
 import org.parpe.sim.world.World;
@@ -27,6 +32,35 @@ class WorldGuiTest {
     @TempDir
     static Path home;
     static IdeWindow ide;
+
+    /** The least share of the module camera's picture that the world ahead of the head covers. */
+    private static final double MIN_WORLD_IN_CAMERA = 0.10;
+
+    private static ImageData render(ModuleCameraView view, SimSnapshot snap) {
+        Image img = new Image(Display.getCurrent(), 320, 240);
+        GC gc = new GC(img);
+        try {
+            view.setSource(() -> snap);
+            view.render(gc, 320, 240);
+            return img.getImageData();
+        } finally {
+            gc.dispose();
+            img.dispose();
+            view.setSource(ide.runs()::snapshot);
+        }
+    }
+
+    private static double differing(ImageData a, ImageData b) {
+        int n = 0;
+        for (int y = 0; y < a.height; y++) {
+            for (int x = 0; x < a.width; x++) {
+                if (a.getPixel(x, y) != b.getPixel(x, y)) {
+                    n++;
+                }
+            }
+        }
+        return (double) n / (a.width * a.height);
+    }
 
     @BeforeAll
     static void open() {
@@ -74,6 +108,13 @@ class WorldGuiTest {
             Gui.settle();
             // the head's camera looks along the snake, at the world ahead of it
             Gui.screenshot(camera.shell(), "camera-" + world + ".png");
+            // and sees it: drawn without the world's solids and objects, the picture changes
+            // (the slot machine's front, 1.6 cm from the head's lens, once vanished behind a 2 cm near plane)
+            SimSnapshot bare = new SimSnapshot(s.time(), s.bodies(), s.contacts(), s.centerOfMass(), s.measuredAngles(),
+                    s.targetAngles(), s.limpModules());
+            double seen = differing(render(camera.view(), s), render(camera.view(), bare));
+            System.out.printf("camera %s: %.3f of the picture is the world%n", world, seen);
+            assertTrue(seen > MIN_WORLD_IN_CAMERA, "the camera in " + world + " hardly sees the world: " + seen);
         } finally {
             camera.shell().dispose();
         }
