@@ -1,0 +1,365 @@
+package org.parpe.gui.diagram;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Supplier;
+import org.eclipse.jface.text.BadLocationException;
+import org.eclipse.jface.text.DocumentEvent;
+import org.eclipse.jface.text.IDocumentListener;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.graphics.Point;
+import org.eclipse.swt.layout.GridData;
+import org.eclipse.swt.layout.GridLayout;
+import org.eclipse.swt.layout.RowData;
+import org.eclipse.swt.layout.RowLayout;
+import org.eclipse.swt.widgets.Combo;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Control;
+import org.eclipse.swt.widgets.Label;
+import org.eclipse.swt.widgets.Text;
+import org.parpe.core.diag.SourcePos;
+import org.parpe.core.diag.SourceSpan;
+import org.parpe.core.diagram.TextEdit;
+import org.parpe.gui.diagram.Projection.View;
+import org.parpe.gui.editor.ParslEditor;
+
+/**
+ * The Diagram pane: one view of the open document (program lane, swimlanes, automaton ring,
+ * phase wheel, gait diagram) drawn from the text, never stored anywhere else. It is made again
+ * a moment after the text changes (off the UI thread: the script is loaded, and for the gait
+ * the engine run, on a worker), only while the pane is shown. Clicking a node selects its
+ * element in the editor; the caret in the text selects the node whose element holds it; a text
+ * island opens the text at its line. The selected node's values (a state's duration, an
+ * instance's phase and offset, an entry's time) are fields: Enter writes the value through
+ * {@link org.parpe.core.diagram.DiagramEdits} as one replacement of the document, so Edit →
+ * Undo takes it back in one step. UI thread only.
+ */
+public final class DiagramPane {
+    private static final int QUICK_CHARS = 200_000;
+    private static final int PAUSE_MS = 300;
+
+    private final ParslEditor editor;
+    private final Supplier<Path> file;
+    private final Composite box;
+    private final Combo viewChoice;
+    private final Combo subjectChoice;
+    private final Composite fields;
+    private final Label message;
+    private final SceneCanvas canvas;
+    private final ExecutorService worker = Executors.newSingleThreadExecutor(r -> {
+        Thread t = new Thread(r, "parpe-diagram");
+        t.setDaemon(true);
+        return t;
+    });
+    private final AtomicLong generation = new AtomicLong();
+    private View view = View.PROGRAM;
+    private String subject;
+    private Projection shown;
+    private SourcePos selected;
+    private boolean following;
+    private boolean pending;
+    private boolean stale = true;
+
+    /** The pane in {@code parent}, showing {@code editor}'s document as the file {@code file} names. */
+    public DiagramPane(Composite parent, ParslEditor editor, Supplier<Path> file) {
+        this.editor = editor;
+        this.file = file;
+        box = new Composite(parent, SWT.NONE);
+        GridLayout gl = new GridLayout(1, false);
+        gl.marginWidth = 2;
+        gl.marginHeight = 2;
+        box.setLayout(gl);
+        Composite bar = new Composite(box, SWT.NONE);
+        RowLayout rl = new RowLayout(SWT.HORIZONTAL);
+        rl.center = true;
+        bar.setLayout(rl);
+        bar.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        new Label(bar, SWT.NONE).setText("View:");
+        viewChoice = new Combo(bar, SWT.READ_ONLY);
+        for (View v : View.values()) {
+            viewChoice.add(v.label);
+        }
+        viewChoice.select(0);
+        viewChoice.addListener(SWT.Selection, e -> setView(View.values()[viewChoice.getSelectionIndex()]));
+        subjectChoice = new Combo(bar, SWT.READ_ONLY);
+        subjectChoice.setLayoutData(new RowData(260, SWT.DEFAULT));
+        subjectChoice.addListener(SWT.Selection, e -> {
+            subject = subjectChoice.getText();
+            relayout();
+        });
+        fields = new Composite(box, SWT.NONE);
+        RowLayout fl = new RowLayout(SWT.HORIZONTAL);
+        fl.center = true;
+        fields.setLayout(fl);
+        fields.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        message = new Label(box, SWT.WRAP);
+        message.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        canvas = new SceneCanvas(box, this::clicked);
+        canvas.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
+        showFields();
+        editor.widget().addCaretListener(e -> caretAt(e.caretOffset));
+        editor.document().addDocumentListener(new IDocumentListener() {
+            @Override
+            public void documentAboutToBeChanged(DocumentEvent event) {
+            }
+
+            @Override
+            public void documentChanged(DocumentEvent event) {
+                stale = true;
+                relayoutSoon();
+            }
+        });
+        box.addListener(SWT.Show, e -> relayoutSoon());
+        box.addListener(SWT.Dispose, e -> {
+            generation.incrementAndGet();
+            worker.shutdownNow();
+        });
+    }
+
+    /** The pane's control (the host puts it in a tab). */
+    public Control control() {
+        return box;
+    }
+
+    /** Shows view {@code v} of the document. */
+    public void setView(View v) {
+        view = v;
+        viewChoice.select(v.ordinal());
+        subject = null;
+        selected = null;
+        relayout();
+    }
+
+    /** Shows view {@code v} on {@code label} (a behavior, automaton or instance as the subject chooser names it). */
+    public void setView(View v, String label) {
+        setView(v);
+        subject = label;
+        relayout();
+    }
+
+    /**
+     * Makes the view again once the current event is handled; a text over
+     * {@value #QUICK_CHARS} characters is read {@value #PAUSE_MS} ms after a change, with the
+     * changes made meanwhile (as the grid editor does).
+     */
+    private void relayoutSoon() {
+        if (pending || box.isDisposed()) {
+            return;
+        }
+        pending = true;
+        Runnable r = () -> {
+            pending = false;
+            if (!box.isDisposed()) {
+                relayout();
+            }
+        };
+        if (editor.document().getLength() > QUICK_CHARS) {
+            box.getDisplay().timerExec(PAUSE_MS, r);
+        } else {
+            box.getDisplay().asyncExec(r);
+        }
+    }
+
+    /** Projects the current text on the worker if the pane is shown; the newest request wins. */
+    private void relayout() {
+        if (box.isDisposed() || !box.isVisible()) {
+            return;
+        }
+        long gen = generation.incrementAndGet();
+        String text = editor.document().get();
+        Path f = file.get();
+        View v = view;
+        String s = subject;
+        var display = box.getDisplay();
+        worker.execute(() -> {
+            if (gen != generation.get()) {
+                return;
+            }
+            Projection p = Projection.of(text, f, v, s);
+            if (!display.isDisposed()) {
+                display.asyncExec(() -> {
+                    if (gen == generation.get() && !box.isDisposed()) {
+                        show(p);
+                    }
+                });
+            }
+        });
+    }
+
+    private void show(Projection p) {
+        shown = p;
+        stale = !p.text().equals(editor.document().get());
+        subject = p.subject();
+        List<String> items = p.subjects();
+        if (!items.equals(List.of(subjectChoice.getItems()))) {
+            subjectChoice.setItems(items.toArray(String[]::new));
+        }
+        subjectChoice.setEnabled(!items.isEmpty());
+        if (p.subject() != null) {
+            subjectChoice.select(items.indexOf(p.subject()));
+        }
+        if (p.view() == View.PHASE && p.targets().size() == 1) {
+            selected = p.targets().keySet().iterator().next();
+        } else if (selected != null && !p.targets().containsKey(selected) && canvas.centre(selected) == null) {
+            selected = null;
+        }
+        canvas.show(p.scene() == null ? new org.parpe.core.diagram.Scene(1, 1) : p.scene());
+        canvas.select(selected);
+        message.setText(p.message().isEmpty() && p.scene() != null
+                ? "Click a box, an arc or a bar to select its text and edit its values." : p.message());
+        showFields();
+        box.layout(true, true);
+    }
+
+    /** The projection shown, or {@code null} before the first. */
+    public Projection shown() {
+        return shown;
+    }
+
+    /** Whether the diagram shows the editor's current text. */
+    public boolean current() {
+        return shown != null && !stale && shown.text().equals(editor.document().get());
+    }
+
+    /** The node selected, or {@code null}. */
+    public SourcePos selected() {
+        return selected;
+    }
+
+    /** The canvas, for tests that click on it. */
+    public org.eclipse.swt.widgets.Canvas canvas() {
+        return canvas.control();
+    }
+
+    /** Where on the canvas {@code node} is drawn (a click there selects it), or {@code null}. */
+    public Point where(SourcePos node) {
+        return canvas.centre(node);
+    }
+
+    /** The line under the view chooser: what the view cannot show or why it is empty. */
+    public String message() {
+        return message.getText();
+    }
+
+    /** The value fields of the selected node, by name. */
+    public java.util.Map<String, Text> fields() {
+        java.util.Map<String, Text> out = new java.util.LinkedHashMap<>();
+        for (Control c : fields.getChildren()) {
+            if (c instanceof Text t) {
+                out.put((String) t.getData("field"), t);
+            }
+        }
+        return out;
+    }
+
+    /** A click on the canvas: select the node's element, or open an island's text at its line. */
+    private void clicked(SourcePos node) {
+        if (node == null || shown == null) {
+            return;
+        }
+        selected = node;
+        canvas.select(node);
+        showFields();
+        if (node.span() != null && node.file().equals(shown.file().toString()) && current()) {
+            SourceSpan s = node.span();
+            following = true;
+            try {
+                editor.viewer().setSelectedRange(s.start(), s.end() - s.start());
+                editor.viewer().revealRange(s.start(), s.end() - s.start());
+            } finally {
+                following = false;
+            }
+        } else if (node.line() > 0 && node.file().equals(shown.file().toString())) {
+            editor.reveal(node.line(), node.column());
+        }
+    }
+
+    /** The caret moved in the text: select the innermost drawn node whose element holds it. */
+    private void caretAt(int offset) {
+        if (following || shown == null || shown.scene() == null || !current()) {
+            return;
+        }
+        SourcePos best = null;
+        for (var s : shown.scene().shapes()) {
+            SourcePos p = s instanceof org.parpe.core.diagram.Scene.Rect r ? r.source()
+                    : s instanceof org.parpe.core.diagram.Scene.Sector c ? c.source() : null;
+            if (p != null && p.span() != null && p.file().equals(shown.file().toString()) && offset >= p.span().start()
+                    && offset <= p.span().end()
+                    && (best == null || p.span().end() - p.span().start() < best.span().end() - best.span().start())) {
+                best = p;
+            }
+        }
+        if (best != null && !best.equals(selected)) {
+            selected = best;
+            canvas.select(best);
+            showFields();
+        }
+    }
+
+    /** The edit row: the selected node's values as fields; Enter in one writes it. */
+    private void showFields() {
+        for (Control c : fields.getChildren()) {
+            c.dispose();
+        }
+        Projection.Target t = shown == null || selected == null ? null : shown.targets().get(selected);
+        Label title = new Label(fields, SWT.NONE);
+        title.setText(t == null ? "" : t.title());
+        for (Projection.Field f : t == null ? List.<Projection.Field>of() : t.fields()) {
+            new Label(fields, SWT.NONE).setText(f.name() + ":");
+            Text field = new Text(fields, SWT.BORDER | SWT.SINGLE);
+            field.setData("field", f.name());
+            field.setText(f.value());
+            field.setLayoutData(new RowData(Math.max(60, 9 * (f.value().length() + 2)), SWT.DEFAULT));
+            field.setToolTipText("Enter writes the new " + f.name() + " into the text (one Undo step)");
+            field.addListener(SWT.DefaultSelection, e -> write(f, field.getText()));
+        }
+        fields.layout(true);
+        box.layout(true, true);
+    }
+
+    /**
+     * Writes {@code value} as field {@code f} of the selected node: the edit's replacements
+     * become one replacement of the document (one Undo step). Refused, with a message, when the
+     * text has changed since the diagram was made.
+     */
+    private void write(Projection.Field f, String value) {
+        if (!current()) {
+            message.setText("The text has changed since the diagram was drawn; try again in a moment.");
+            return;
+        }
+        if (value.equals(f.value())) {
+            return;
+        }
+        TextEdit edit;
+        try {
+            edit = f.edit().apply(value.trim());
+        } catch (IllegalArgumentException e) {
+            message.setText(e.getMessage());
+            box.layout(true, true);
+            return;
+        }
+        apply(edit);
+    }
+
+    /** Applies {@code edit} to the document as one replacement spanning all of its ranges. */
+    private void apply(TextEdit edit) {
+        List<TextEdit.Replacement> rs = new ArrayList<>(edit.replacements());
+        if (rs.isEmpty()) {
+            return;
+        }
+        String text = shown.text();
+        int from = rs.get(0).offset();
+        int to = rs.get(rs.size() - 1).end();
+        String after = edit.apply(text);
+        String middle = after.substring(from, after.length() - (text.length() - to));
+        try {
+            editor.document().replace(from, to - from, middle);
+        } catch (BadLocationException e) {
+            message.setText("The text changed meanwhile; try again (" + e.getMessage() + ").");
+        }
+    }
+}

@@ -1,0 +1,219 @@
+package org.parpe.gui.diagram;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.eclipse.jface.text.ITextOperationTarget;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.custom.CTabFolder;
+import org.eclipse.swt.custom.CTabItem;
+import org.eclipse.swt.graphics.Point;
+import org.eclipse.swt.widgets.Event;
+import org.eclipse.swt.widgets.Text;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.parpe.core.diag.SourcePos;
+import org.parpe.gui.app.IdeAccess;
+import org.parpe.gui.app.IdeWindow;
+import org.parpe.gui.app.Screenshot;
+import org.parpe.gui.diagram.Projection.View;
+
+/**
+ * The Diagram pane with real widgets on a copy of {@code examples/centipede-walk.xml}: every
+ * view draws; a click on a node selects exactly its element in the editor and the caret in the
+ * text selects its node; a value typed into a node's field and confirmed with Enter changes the
+ * text exactly as the same edit made by hand (written out here, not computed by the code under
+ * test) and one Undo brings back the original byte for byte. Saves a picture of the window with
+ * each view at 1366×768 to {@code docs/images/ide/diagram-VIEW.png} (folder: system property
+ * {@code parpe.ideImages}) for docs/ide.md.
+ */
+class DiagramGuiTest {
+    private static IdeWindow ide;
+    private static String original;
+
+    @BeforeAll
+    static void openWindow() throws Exception {
+        Path home = Files.createTempDirectory("parpe-diagram-test");
+        Path example = Path.of(System.getProperty("parpe.examples", "../examples"), "centipede-walk.xml");
+        Path copy = Files.createDirectories(home.resolve("scripts")).resolve("centipede-walk.xml");
+        Files.copy(example, copy);
+        original = Files.readString(copy);
+        ide = IdeAccess.openIde(home);
+        ide.shell().setSize(1366, 768);
+        IdeAccess.open(ide, copy);
+        CTabFolder folder = (CTabFolder) pane().control().getParent();
+        for (CTabItem item : folder.getItems()) {
+            if (item.getControl() == pane().control()) {
+                folder.setSelection(item);
+                folder.notifyListeners(SWT.Selection, new Event());
+                assertEquals("Diagram", item.getText());
+            }
+        }
+        IdeAccess.pump(() -> pane().current(), "the first diagram");
+    }
+
+    @AfterAll
+    static void closeWindow() {
+        IdeAccess.closeIde(ide);
+    }
+
+    @AfterEach
+    void textIsBackToTheExample() {
+        assertEquals(original, text(), "each test leaves the text as it found it");
+    }
+
+    private static DiagramPane pane() {
+        return ide.diagram();
+    }
+
+    private static String text() {
+        return ide.editor().document().get();
+    }
+
+    private static void show(View v, String subject) {
+        if (subject == null) {
+            pane().setView(v);
+        } else {
+            pane().setView(v, subject);
+        }
+        IdeAccess.pump(() -> pane().current() && pane().shown().view() == v
+                && (subject == null || subject.equals(pane().shown().subject())), v + " view of the text");
+    }
+
+    /** A left click on the canvas where {@code node} is drawn, as the mouse sends it. */
+    private static void click(SourcePos node) {
+        Point p = pane().where(node);
+        assertNotNull(p, node + " is not drawn");
+        Event e = new Event();
+        e.button = 1;
+        e.x = p.x;
+        e.y = p.y;
+        pane().canvas().notifyListeners(SWT.MouseDown, e);
+    }
+
+    /** The node whose element starts on the line that holds {@code needle}. */
+    private static SourcePos node(String needle) {
+        int line = lineOf(needle);
+        return pane().shown().targets().keySet().stream().filter(p -> p.line() == line).findFirst()
+                .orElseThrow(() -> new AssertionError("no editable node on line " + line + " (" + needle + ")"));
+    }
+
+    private static int lineOf(String needle) {
+        String[] lines = text().split("\n", -1);
+        for (int i = 0; i < lines.length; i++) {
+            if (lines[i].contains(needle)) {
+                return i + 1;
+            }
+        }
+        throw new AssertionError("no line holds " + needle);
+    }
+
+    /** Types {@code value} into the selected node's field {@code name} and presses Enter. */
+    private static void type(String name, String value) {
+        Text field = pane().fields().get(name);
+        assertNotNull(field, "no field '" + name + "' for the selected node; fields: " + pane().fields().keySet());
+        field.setText(value);
+        field.notifyListeners(SWT.DefaultSelection, new Event());
+    }
+
+    private static void undoRestoresTheOriginal() {
+        ide.editor().run(ITextOperationTarget.UNDO);
+        assertEquals(original, text(), "one Undo restores the text byte for byte");
+        IdeAccess.pump(() -> pane().current(), "the diagram of the restored text");
+    }
+
+    private static void picture(View v) throws Exception {
+        IdeAccess.settle();
+        Path dir = Path.of(System.getProperty("parpe.ideImages", "../docs/images/ide"));
+        Files.createDirectories(dir);
+        Path png = dir.resolve("diagram-" + v.name().toLowerCase(java.util.Locale.ROOT) + ".png");
+        Screenshot.save(ide.shell(), png);
+        var d = new org.eclipse.swt.graphics.ImageLoader().load(png.toString())[0];
+        assertEquals(1366, d.width, "picture width");
+        assertTrue(Screenshot.distinctColours(d, 64) >= 64, png + " looks blank");
+    }
+
+    @Test
+    void everyViewDrawsTheOpenDocument() throws Exception {
+        show(View.PROGRAM, null);
+        picture(View.PROGRAM);
+        show(View.LANES, "walk");
+        assertEquals(4, pane().shown().targets().size(), "a bar per instance of walk");
+        picture(View.LANES);
+        show(View.RING, "step");
+        assertEquals(java.util.List.of("swing", "step"), pane().shown().subjects());
+        picture(View.RING);
+        show(View.PHASE, "walk #1: swing on rightSwing");
+        assertEquals(lineOf("<swing group=\"rightSwing\""), pane().selected().line(), "the phase view selects its instance");
+        picture(View.PHASE);
+        show(View.GAIT, null);
+        picture(View.GAIT);
+        assertTrue(pane().message().startsWith("Click a box"), "nothing left out of the gait: " + pane().message());
+    }
+
+    @Test
+    void clickingABarSelectsItsElementAndTheCaretSelectsTheNode() {
+        show(View.LANES, "walk");
+        SourcePos bar = node("<swing group=\"rightSwing\"");
+        click(bar);
+        Point sel = ide.editor().viewer().getSelectedRange();
+        assertEquals(new Point(bar.span().start(), bar.span().end() - bar.span().start()), sel);
+        assertEquals("<swing group=\"rightSwing\" offset=\"0.5\" phase=\"0.75\" period=\"3\"/>",
+                text().substring(sel.x, sel.x + sel.y));
+        assertEquals(bar, pane().selected());
+        assertEquals("0.75", pane().fields().get("phase").getText());
+
+        int inStep = text().indexOf("rightLift\"  offset");
+        ide.editor().widget().setSelection(inStep);
+        IdeAccess.settle();
+        assertEquals(lineOf("<step  group=\"rightLift\""), pane().selected().line(), "the caret's instance is selected");
+        assertEquals("0.5", pane().fields().get("offset").getText());
+    }
+
+    @Test
+    void retimingAStateIsOneUndoableEdit() {
+        show(View.RING, "step");
+        int lower = text().indexOf("<lower");
+        ide.editor().widget().setSelection(lower + 3);
+        IdeAccess.settle();
+        assertEquals(lineOf("<lower  angles"), pane().selected().line(), "the caret in <lower> selects its arc");
+        assertEquals("0.5", pane().fields().get("duration").getText());
+        type("duration", "0.75");
+        assertEquals(original.replace("<step  states=\"raise, lower, stance\" times=\"0.5, 0.5, 2\"/>",
+                "<step  states=\"raise, lower, stance\" times=\"0.5, 0.75, 2\"/>"), text());
+        IdeAccess.pump(() -> pane().current(), "the ring of the new text");
+        assertEquals("0.75", pane().fields().get("duration").getText(), "the arc stays selected with its new time");
+        undoRestoresTheOriginal();
+    }
+
+    @Test
+    void changingAPhaseAndAnOffsetAreOneUndoableEditEach() {
+        show(View.PHASE, "walk #2: step on leftLift");
+        type("offset", "0.25");
+        assertEquals(original.replace("<step  group=\"leftLift\"   offset=\"0\"   phase",
+                "<step  group=\"leftLift\"   offset=\"0.25\"   phase"), text());
+        undoRestoresTheOriginal();
+
+        show(View.LANES, "walk");
+        click(node("<swing group=\"!leftSwing\""));
+        type("phase", "-0.25");
+        assertEquals(original.replace("<swing group=\"!leftSwing\" offset=\"0\"   phase=\"0.75\"",
+                "<swing group=\"!leftSwing\" offset=\"0\"   phase=\"-0.25\""), text());
+        undoRestoresTheOriginal();
+    }
+
+    @Test
+    void anEntryGetsATimeItDidNotHave() {
+        show(View.PROGRAM, null);
+        click(node("<walk/>"));
+        assertEquals("", pane().fields().get("time").getText());
+        type("time", "4");
+        assertEquals(original.replace("<main>\n    <walk/>", "<main>\n    <walk time=\"4\"/>"), text());
+        undoRestoresTheOriginal();
+    }
+}
