@@ -63,6 +63,7 @@ public final class DiagramPane {
     private boolean following;
     private boolean pending;
     private boolean stale = true;
+    private Point dragFrom;
 
     /** The pane in {@code parent}, showing {@code editor}'s document as the file {@code file} names. */
     public DiagramPane(Composite parent, ParslEditor editor, Supplier<Path> file) {
@@ -101,6 +102,18 @@ public final class DiagramPane {
         canvas = new SceneCanvas(box, this::clicked);
         canvas.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
         showFields();
+        canvas.control().addListener(SWT.MouseDown, e -> dragFrom = e.button == 1 && wheel() != null ? new Point(e.x, e.y) : null);
+        canvas.control().addListener(SWT.MouseMove, e -> {
+            if (dragFrom != null && dragged(e.x, e.y)) {
+                message.setText("Release to set phase=\"" + phaseAt(e.x, e.y) + "\" (module 1's tick goes where you release)");
+            }
+        });
+        canvas.control().addListener(SWT.MouseUp, e -> {
+            if (dragFrom != null && dragged(e.x, e.y)) {
+                dropPhase(e.x, e.y);
+            }
+            dragFrom = null;
+        });
         editor.widget().addCaretListener(e -> caretAt(e.caretOffset));
         editor.document().addDocumentListener(new IDocumentListener() {
             @Override
@@ -298,6 +311,64 @@ public final class DiagramPane {
             canvas.select(best);
             showFields();
         }
+    }
+
+    /** The wheel's circle (centre and radius, in scene units) while a phase wheel is shown, else {@code null}. */
+    private double[] wheel() {
+        if (shown == null || shown.wheel() == null || shown.scene() == null) {
+            return null;
+        }
+        for (var s : shown.scene().shapes()) {
+            if (s instanceof org.parpe.core.diagram.Scene.Sector c && c.source() == null && c.from() == 0 && c.to() == 1) {
+                return new double[] {c.cx(), c.cy(), c.r1()};
+            }
+        }
+        return null;
+    }
+
+    private boolean dragged(int x, int y) {
+        return Math.abs(x - dragFrom.x) + Math.abs(y - dragFrom.y) > 3;
+    }
+
+    /**
+     * The phase that puts module 1's tick at canvas pixel {@code x, y}: its angle on the wheel
+     * less the offset, in [0, 1) (in (−1, 0] when the phase was negative), to 0.01 of a cycle.
+     */
+    private String phaseAt(int x, int y) {
+        double[] c = wheel();
+        double[] p = canvas.toScene(x, y);
+        double f = Math.atan2(p[0] - c[0], -(p[1] - c[1])) / (2 * Math.PI);
+        double phase = f - shown.wheel().offset();
+        phase -= Math.floor(phase);
+        if (shown.wheel().phase() < 0 && phase > 0) {
+            phase -= 1;
+        }
+        return org.parpe.core.model.Numbers.format(Math.round(phase * 100) / 100.0);
+    }
+
+    /** A drag on the phase wheel ended at {@code x, y}: write the phase it sets. */
+    private void dropPhase(int x, int y) {
+        Projection.Target t = shown.targets().get(shown.wheel().pos());
+        if (t == null) {
+            message.setText("This instance is not in the open file; edit its phase there.");
+            return;
+        }
+        String value = phaseAt(x, y);
+        for (Projection.Field f : t.fields()) {
+            if (f.name().equals("phase")) {
+                write(f, value);
+            }
+        }
+    }
+
+    /** Where on the canvas the phase wheel's point at fraction {@code f} of a turn is, or {@code null}. */
+    public Point onWheel(double f) {
+        double[] c = wheel();
+        if (c == null) {
+            return null;
+        }
+        double[] p = org.parpe.core.diagram.Scene.onCircle(c[0], c[1], c[2], f);
+        return canvas.toCanvas(p[0], p[1]);
     }
 
     /** The edit row: the selected node's values as fields; Enter in one writes it. */

@@ -43,9 +43,16 @@ import org.parpe.gui.editor.Validator;
  * @param scene    the drawing, or {@code null} when there is none (see {@code message})
  * @param targets  the editable nodes
  * @param message  why there is no drawing, or what the drawing leaves out; empty if nothing
+ * @param wheel    the phase wheel drawn (its handle can be dragged), or {@code null}
  */
 record Projection(String text, Path file, View view, List<String> subjects, String subject, Scene scene,
-                  Map<SourcePos, Target> targets, String message) {
+                  Map<SourcePos, Target> targets, String message, PhaseWheel wheel) {
+
+    /** A projection that is not a phase wheel. */
+    Projection(String text, Path file, View view, List<String> subjects, String subject, Scene scene,
+               Map<SourcePos, Target> targets, String message) {
+        this(text, file, view, subjects, subject, scene, targets, message, null);
+    }
 
     /** The views, in the chooser's order. */
     enum View {
@@ -196,7 +203,7 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
             targets.put(in.pos(), instanceTarget(text, chosen, in.pos(), in.phase() == null ? null : in.phase().text(),
                     in.offset() == null ? null : in.offset().text()));
         }
-        return new Projection(text, file, View.PHASE, labels, chosen, sc, targets, islands(w.islands().size()));
+        return new Projection(text, file, View.PHASE, labels, chosen, sc, targets, islands(w.islands().size()), w);
     }
 
     private static String islands(int n) {

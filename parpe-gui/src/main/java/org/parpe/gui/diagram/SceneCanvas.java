@@ -37,8 +37,8 @@ final class SceneCanvas {
         canvas.addListener(SWT.Paint, e -> paint(e.gc));
         canvas.addListener(SWT.MouseDown, e -> {
             if (e.button == 1) {
-                double[] f = fit();
-                clicked.accept(hit((e.x - f[1]) / f[0], (e.y - f[2]) / f[0]));
+                double[] p = toScene(e.x, e.y);
+                clicked.accept(hit(p[0], p[1]));
             }
         });
         canvas.addListener(SWT.Resize, e -> canvas.redraw());
@@ -64,6 +64,18 @@ final class SceneCanvas {
         double k = Math.min(1, Math.min(a.width / (double) scene.width(), a.height / (double) scene.height()));
         k = k > 0 ? k : 1;
         return new double[] {k, Math.max(0, (a.width - scene.width() * k) / 2), 0};
+    }
+
+    /** The scene point under canvas pixel {@code x, y}. */
+    double[] toScene(int x, int y) {
+        double[] f = fit();
+        return new double[] {(x - f[1]) / f[0], (y - f[2]) / f[0]};
+    }
+
+    /** The canvas pixel of scene point {@code x, y}. */
+    Point toCanvas(double x, double y) {
+        double[] f = fit();
+        return new Point((int) Math.round(x * f[0] + f[1]), (int) Math.round(y * f[0] + f[2]));
     }
 
     Scene scene() {
@@ -94,9 +106,8 @@ final class SceneCanvas {
 
     /** Where on the canvas the first shape of {@code node} is, or {@code null}: a click there selects it. */
     Point centre(SourcePos node) {
-        double[] f = fit();
         double[] at = at(node);
-        return at == null ? null : new Point((int) Math.round(at[0] * f[0] + f[1]), (int) Math.round(at[1] * f[0] + f[2]));
+        return at == null ? null : toCanvas(at[0], at[1]);
     }
 
     private double[] at(SourcePos node) {

@@ -35,12 +35,14 @@ import org.parpe.gui.diagram.Projection.View;
 class DiagramGuiTest {
     private static IdeWindow ide;
     private static String original;
+    private static Path copy;
+    private static Path home;
 
     @BeforeAll
     static void openWindow() throws Exception {
-        Path home = Files.createTempDirectory("parpe-diagram-test");
+        home = Files.createTempDirectory("parpe-diagram-test");
         Path example = Path.of(System.getProperty("parpe.examples", "../examples"), "centipede-walk.xml");
-        Path copy = Files.createDirectories(home.resolve("scripts")).resolve("centipede-walk.xml");
+        copy = Files.createDirectories(home.resolve("scripts")).resolve("centipede-walk.xml");
         Files.copy(example, copy);
         original = Files.readString(copy);
         ide = IdeAccess.openIde(home);
@@ -214,6 +216,59 @@ class DiagramGuiTest {
         assertEquals("", pane().fields().get("time").getText());
         type("time", "4");
         assertEquals(original.replace("<main>\n    <walk/>", "<main>\n    <walk time=\"4\"/>"), text());
+        undoRestoresTheOriginal();
+    }
+
+    @Test
+    void whatTheRingCannotDrawIsATextIslandThatOpensItsLine() throws Exception {
+        // a duration set by a slider is known only while running (as in parpe-cli's island.xml)
+        Path island = home.resolve("scripts").resolve("island.xml");
+        Files.writeString(island, """
+                <?xml version="1.0"?>
+                <program>
+                  <robot><structure><body elements="0..5"/></structure></robot>
+                  <controls><hold type="slider" min="0.5" max="3" value="1"/></controls>
+                  <main><go/></main>
+                  <behaviors><go><wave group="body" phase="0.1" period="2"/></go></behaviors>
+                  <automata>
+                    <wave states="up, down, rest"
+                          times="1, 1, $hold"/>
+                  </automata>
+                  <states><up angles="30"/><down angles="-30"/><rest angles="0"/></states>
+                </program>
+                """);
+        try {
+            IdeAccess.open(ide, island);
+            show(View.RING, "wave");
+            assertTrue(pane().message().contains("1 thing the view cannot draw"), pane().message());
+            SourcePos at = pane().shown().scene().shapes().stream()
+                    .map(s -> s instanceof org.parpe.core.diagram.Scene.Rect r ? r.source() : null)
+                    .filter(p -> p != null && p.span() == null).findFirst().orElseThrow();
+            click(at);
+            int caretLine = ide.editor().widget().getLineAtOffset(ide.editor().viewer().getSelectedRange().x) + 1;
+            assertEquals(lineOf("times=\"1, 1, $hold\""), caretLine, "the island opens the text at its line");
+        } finally {
+            IdeAccess.open(ide, copy);
+            IdeAccess.pump(() -> pane().current(), "the centipede again");
+        }
+    }
+
+    @Test
+    void draggingOnThePhaseWheelSetsThePhase() {
+        show(View.PHASE, "walk #1: swing on rightSwing");
+        // offset 0.5: module 1's tick goes to 0.6 of a turn when the phase is 0.1
+        Point from = pane().onWheel(0.25);
+        Point to = pane().onWheel(0.6);
+        for (int[] step : new int[][] {{SWT.MouseDown, from.x, from.y}, {SWT.MouseMove, (from.x + to.x) / 2, (from.y + to.y) / 2},
+                {SWT.MouseMove, to.x, to.y}, {SWT.MouseUp, to.x, to.y}}) {
+            Event e = new Event();
+            e.button = 1;
+            e.x = step[1];
+            e.y = step[2];
+            pane().canvas().notifyListeners(step[0], e);
+        }
+        assertEquals(original.replace("<swing group=\"rightSwing\" offset=\"0.5\" phase=\"0.75\"",
+                "<swing group=\"rightSwing\" offset=\"0.5\" phase=\"0.1\""), text());
         undoRestoresTheOriginal();
     }
 }
