@@ -122,6 +122,7 @@ public final class IdeWindow {
         files = new FileActions(shell, editor, prefs, this::documentChanged, this::fileSwitched, status::setMessage);
         diagram = new DiagramPane(viewFolder, editor, files::pathForLoading);
         Panels.tab(viewFolder, "Diagram", diagram.control());
+        diagram.follow(runs.controller().live(), runs::running);
         viewFolder.addListener(SWT.Selection, e -> {
             boolean d = viewFolder.getSelection().getControl() == diagram.control();
             right.setWeights(d ? new int[] {84, 4, 12} : new int[] {54, 18, 28});

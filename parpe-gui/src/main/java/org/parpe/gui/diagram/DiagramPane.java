@@ -222,7 +222,7 @@ public final class DiagramPane {
         }
         canvas.show(p.scene() == null ? new org.parpe.core.diagram.Scene(1, 1) : p.scene());
         canvas.select(selected);
-        message.setText(p.message().isEmpty() && p.scene() != null
+        message.setText(p.message().isEmpty() && !p.targets().isEmpty()
                 ? "Click a box, an arc or a bar to select its text and edit its values." : p.message());
         showFields();
         box.layout(true, true);
@@ -311,6 +311,87 @@ public final class DiagramPane {
             canvas.select(best);
             showFields();
         }
+    }
+
+    /** How often the live overlay looks for new states: 30 frames per second at most. */
+    private static final int LIVE_MS = 33;
+
+    /**
+     * Follows runs: while {@code running} holds and the ring is shown, each state's arc is marked
+     * with the number of modules in it, from what the engine thread published in {@code live}
+     * (copied out here, on the UI thread; the engine never waits for the view).
+     */
+    public void follow(org.parpe.gui.run.LiveStates live, java.util.function.BooleanSupplier running) {
+        box.getDisplay().timerExec(LIVE_MS, new Runnable() {
+            private long seen = -1;
+
+            @Override
+            public void run() {
+                if (box.isDisposed()) {
+                    return;
+                }
+                if (box.isVisible() && shown != null && shown.ring() != null && running.getAsBoolean()) {
+                    var frame = live.since(seen);
+                    if (frame != null && frame.tick() >= 0) {
+                        seen = frame.version();
+                        overlay(frame);
+                    }
+                } else if (liveCounts != null) {
+                    liveCounts = null;
+                    canvas.overlay(List.of());
+                }
+                box.getDisplay().timerExec(LIVE_MS, this);
+            }
+        });
+    }
+
+    private int[] liveCounts;
+    private long liveTick = -1;
+
+    /** Marks each arc of the ring with the modules in its state at {@code f}'s tick. */
+    private void overlay(org.parpe.gui.run.LiveStates.Frame f) {
+        var ring = shown.ring();
+        int[] counts = new int[ring.arcs().size()];
+        List<String> automata = f.entry() >= 0 && f.entry() < shown.automata().size() ? shown.automata().get(f.entry()) : List.of();
+        for (int m = 0; m < f.instance().length; m++) {
+            int i = f.instance()[m];
+            int k = f.state()[m];
+            if (i >= 0 && i < automata.size() && automata.get(i).equals(ring.automaton()) && k >= 0 && k < counts.length) {
+                counts[k]++;
+            }
+        }
+        liveCounts = counts;
+        liveTick = f.tick();
+        List<org.parpe.core.diagram.Scene.Shape> marks = new ArrayList<>();
+        for (var s : shown.scene().shapes()) {
+            if (s instanceof org.parpe.core.diagram.Scene.Sector c && c.source() != null) {
+                for (var arc : ring.arcs()) {
+                    if (arc.from() == c.from() && arc.to() == c.to() && counts[arc.index()] > 0) {
+                        marks.add(new org.parpe.core.diagram.Scene.Sector(c.cx(), c.cy(), c.r0() - 10, c.r0() - 2, c.from(),
+                                c.to(), 0x222222, org.parpe.core.diagram.Scene.NONE, null));
+                        double[] p = org.parpe.core.diagram.Scene.onCircle(c.cx(), c.cy(), c.r0() - 22, (c.from() + c.to()) / 2);
+                        marks.add(new org.parpe.core.diagram.Scene.Text(p[0], p[1] + 4, Integer.toString(counts[arc.index()]),
+                                12, 0, 0x222222, true));
+                    }
+                }
+            }
+        }
+        marks.add(new org.parpe.core.diagram.Scene.Text(20, 48, "live: tick " + f.tick() + " (dark band: modules in the state)",
+                11, -1, 0x222222, false));
+        canvas.overlay(marks);
+    }
+
+    /**
+     * The live overlay's modules per state of the ring shown, at {@link #liveTick()}, or
+     * {@code null} when there is no overlay.
+     */
+    public int[] liveCounts() {
+        return liveCounts == null ? null : liveCounts.clone();
+    }
+
+    /** The engine tick of the live overlay shown, or −1. */
+    public long liveTick() {
+        return liveCounts == null ? -1 : liveTick;
     }
 
     /** The wheel's circle (centre and radius, in scene units) while a phase wheel is shown, else {@code null}. */

@@ -44,14 +44,18 @@ import org.parpe.gui.editor.Validator;
  * @param targets  the editable nodes
  * @param message  why there is no drawing, or what the drawing leaves out; empty if nothing
  * @param wheel    the phase wheel drawn (its handle can be dragged), or {@code null}
+ * @param ring     the ring drawn (the live overlay marks its states), or {@code null}
+ * @param automata per {@code <main>} entry, the automaton of each instance of its behavior in
+ *                 document order (how the engine numbers them), for the live overlay
  */
 record Projection(String text, Path file, View view, List<String> subjects, String subject, Scene scene,
-                  Map<SourcePos, Target> targets, String message, PhaseWheel wheel) {
+                  Map<SourcePos, Target> targets, String message, PhaseWheel wheel, Ring ring,
+                  List<List<String>> automata) {
 
-    /** A projection that is not a phase wheel. */
+    /** A projection without a wheel or ring. */
     Projection(String text, Path file, View view, List<String> subjects, String subject, Scene scene,
                Map<SourcePos, Target> targets, String message) {
-        this(text, file, view, subjects, subject, scene, targets, message, null);
+        this(text, file, view, subjects, subject, scene, targets, message, null, null, List.of());
     }
 
     /** The views, in the chooser's order. */
@@ -164,7 +168,7 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
             return new Projection(text, file, View.RING, names, null, null, targets, "The script has no automata.");
         }
         String chosen = names.contains(subject) ? subject : names.get(0);
-        Automaton a = p.automaton(chosen).orElseThrow();
+        final Automaton a = p.automaton(chosen).orElseThrow();
         Ring r = Diagrams.ring(a);
         if (mine(a.pos(), file)) {
             for (Ring.Arc arc : r.arcs()) {
@@ -172,7 +176,15 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
                         List.of(new Field("duration", arc.duration(), v -> DiagramEdits.retime(text, a, arc.index(), v)))));
             }
         }
-        return new Projection(text, file, View.RING, names, chosen, Layouts.ring(r), targets, islands(r.islands().size()));
+        List<List<String>> automata = new ArrayList<>();
+        if (p.main() != null) {
+            for (var e : p.main().entries()) {
+                automata.add(p.behavior(e.behavior()).map(b -> b.instances().stream().map(Instance::automaton).toList())
+                        .orElse(List.of()));
+            }
+        }
+        return new Projection(text, file, View.RING, names, chosen, Layouts.ring(r), targets, islands(r.islands().size()),
+                null, r, automata);
     }
 
     private static Projection phase(String text, Path file, Program p, String subject, Map<SourcePos, Target> targets) {
@@ -203,7 +215,7 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
             targets.put(in.pos(), instanceTarget(text, chosen, in.pos(), in.phase() == null ? null : in.phase().text(),
                     in.offset() == null ? null : in.offset().text()));
         }
-        return new Projection(text, file, View.PHASE, labels, chosen, sc, targets, islands(w.islands().size()), w);
+        return new Projection(text, file, View.PHASE, labels, chosen, sc, targets, islands(w.islands().size()), w, null, List.of());
     }
 
     private static String islands(int n) {

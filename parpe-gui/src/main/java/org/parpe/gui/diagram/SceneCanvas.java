@@ -30,6 +30,7 @@ final class SceneCanvas {
     private final Map<Long, Font> fonts = new HashMap<>();
     private Scene scene = new Scene(1, 1);
     private SourcePos selected;
+    private List<Scene.Shape> overlay = List.of();
 
     /** A canvas in {@code parent}; {@code clicked} learns the place under a left click (or {@code null}). */
     SceneCanvas(Composite parent, Consumer<SourcePos> clicked) {
@@ -55,6 +56,7 @@ final class SceneCanvas {
     /** Shows {@code s}. */
     void show(Scene s) {
         scene = s;
+        overlay = List.of();
         canvas.redraw();
     }
 
@@ -80,6 +82,12 @@ final class SceneCanvas {
 
     Scene scene() {
         return scene;
+    }
+
+    /** Draws {@code shapes} over the scene (the live overlay); empty for none. */
+    void overlay(List<Scene.Shape> shapes) {
+        overlay = List.copyOf(shapes);
+        canvas.redraw();
     }
 
     /** Outlines the shapes of {@code node} ({@code null}: none). */
@@ -156,7 +164,13 @@ final class SceneCanvas {
     }
 
     private void shapes(GC gc) {
-        for (Scene.Shape s : scene.shapes()) {
+        draw(gc, scene.shapes());
+        draw(gc, overlay);
+        outline(gc);
+    }
+
+    private void draw(GC gc, List<Scene.Shape> shapes) {
+        for (Scene.Shape s : shapes) {
             if (s instanceof Scene.Rect r) {
                 rect(gc, r);
             } else if (s instanceof Scene.Line l) {
@@ -172,6 +186,9 @@ final class SceneCanvas {
                 text(gc, (Scene.Text) s);
             }
         }
+    }
+
+    private void outline(GC gc) {
         if (selected != null) {
             for (Scene.Shape s : scene.shapes()) {
                 if (s instanceof Scene.Rect r && selected.equals(r.source())) {
