@@ -8,8 +8,6 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Supplier;
 import org.eclipse.jface.text.BadLocationException;
-import org.eclipse.jface.text.DocumentEvent;
-import org.eclipse.jface.text.IDocumentListener;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.graphics.Point;
 import org.eclipse.swt.layout.GridData;
@@ -25,12 +23,13 @@ import org.parpe.core.diag.SourcePos;
 import org.parpe.core.diag.SourceSpan;
 import org.parpe.core.diagram.TextEdit;
 import org.parpe.gui.diagram.Projection.View;
+import org.parpe.gui.editor.AfterChange;
 import org.parpe.gui.editor.ParslEditor;
 
 /**
  * The Diagram pane: one view of the open document (program lane, swimlanes, automaton ring,
  * phase wheel, gait diagram) drawn from the text, never stored anywhere else. It is made again
- * a moment after the text changes (off the UI thread: the script is loaded, and for the gait
+ * a moment after the text changes ({@link AfterChange}, as the grid editor) (off the UI thread: the script is loaded, and for the gait
  * the engine run, on a worker), only while the pane is shown. Clicking a node selects its
  * element in the editor; the caret in the text selects the node whose element holds it; a text
  * island opens the text at its line. The selected node's values (a state's duration, an
@@ -39,8 +38,6 @@ import org.parpe.gui.editor.ParslEditor;
  * Undo takes it back in one step. UI thread only.
  */
 public final class DiagramPane {
-    private static final int QUICK_CHARS = 200_000;
-    private static final int PAUSE_MS = 300;
 
     private final ParslEditor editor;
     private final Supplier<Path> file;
@@ -61,8 +58,6 @@ public final class DiagramPane {
     private Projection shown;
     private SourcePos selected;
     private boolean following;
-    private boolean pending;
-    private boolean stale = true;
     private Point dragFrom;
 
     /** The pane in {@code parent}, showing {@code editor}'s document as the file {@code file} names. */
@@ -115,18 +110,8 @@ public final class DiagramPane {
             dragFrom = null;
         });
         editor.widget().addCaretListener(e -> caretAt(e.caretOffset));
-        editor.document().addDocumentListener(new IDocumentListener() {
-            @Override
-            public void documentAboutToBeChanged(DocumentEvent event) {
-            }
-
-            @Override
-            public void documentChanged(DocumentEvent event) {
-                stale = true;
-                relayoutSoon();
-            }
-        });
-        box.addListener(SWT.Show, e -> relayoutSoon());
+        AfterChange soon = new AfterChange(box, editor.document(), this::relayout);
+        box.addListener(SWT.Show, e -> soon.schedule());
         box.addListener(SWT.Dispose, e -> {
             generation.incrementAndGet();
             worker.shutdownNow();
@@ -152,29 +137,6 @@ public final class DiagramPane {
         setView(v);
         subject = label;
         relayout();
-    }
-
-    /**
-     * Makes the view again once the current event is handled; a text over
-     * {@value #QUICK_CHARS} characters is read {@value #PAUSE_MS} ms after a change, with the
-     * changes made meanwhile (as the grid editor does).
-     */
-    private void relayoutSoon() {
-        if (pending || box.isDisposed()) {
-            return;
-        }
-        pending = true;
-        Runnable r = () -> {
-            pending = false;
-            if (!box.isDisposed()) {
-                relayout();
-            }
-        };
-        if (editor.document().getLength() > QUICK_CHARS) {
-            box.getDisplay().timerExec(PAUSE_MS, r);
-        } else {
-            box.getDisplay().asyncExec(r);
-        }
     }
 
     /** Projects the current text on the worker if the pane is shown; the newest request wins. */
@@ -205,7 +167,6 @@ public final class DiagramPane {
 
     private void show(Projection p) {
         shown = p;
-        stale = !p.text().equals(editor.document().get());
         subject = p.subject();
         List<String> items = p.subjects();
         if (!items.equals(List.of(subjectChoice.getItems()))) {
@@ -235,7 +196,7 @@ public final class DiagramPane {
 
     /** Whether the diagram shows the editor's current text. */
     public boolean current() {
-        return shown != null && !stale && shown.text().equals(editor.document().get());
+        return shown != null && shown.text().equals(editor.document().get());
     }
 
     /** The node selected, or {@code null}. */
