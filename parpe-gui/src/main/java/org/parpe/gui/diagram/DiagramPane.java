@@ -97,15 +97,21 @@ public final class DiagramPane {
         canvas = new SceneCanvas(box, this::clicked);
         canvas.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
         showFields();
-        canvas.control().addListener(SWT.MouseDown, e -> dragFrom = e.button == 1 && wheel() != null ? new Point(e.x, e.y) : null);
+        canvas.control().addListener(SWT.MouseDown, e -> dragFrom = e.button == 1 && (wheel() != null || movable(e.x, e.y) != null)
+                ? new Point(e.x, e.y) : null);
         canvas.control().addListener(SWT.MouseMove, e -> {
             if (dragFrom != null && dragged(e.x, e.y)) {
-                message.setText("Release to set phase=\"" + phaseAt(e.x, e.y) + "\" (module 1's tick goes where you release)");
+                message.setText(wheel() != null ? "Release to set phase=\"" + phaseAt(e.x, e.y)
+                        + "\" (module 1's tick goes where you release)" : "Release on another entry to move this one there");
             }
         });
         canvas.control().addListener(SWT.MouseUp, e -> {
             if (dragFrom != null && dragged(e.x, e.y)) {
-                dropPhase(e.x, e.y);
+                if (wheel() != null) {
+                    dropPhase(e.x, e.y);
+                } else {
+                    dropEntry(movable(dragFrom.x, dragFrom.y), movable(e.x, e.y));
+                }
             }
             dragFrom = null;
         });
@@ -353,6 +359,28 @@ public final class DiagramPane {
     /** The engine tick of the live overlay shown, or −1. */
     public long liveTick() {
         return liveCounts == null ? -1 : liveTick;
+    }
+
+    /** The node at canvas pixel {@code x, y} if it can be moved by dragging, else {@code null}. */
+    private Projection.Target movable(int x, int y) {
+        if (shown == null) {
+            return null;
+        }
+        double[] p = canvas.toScene(x, y);
+        Projection.Target t = shown.targets().get(canvas.hit(p[0], p[1]));
+        return t != null && t.moveTo() != null ? t : null;
+    }
+
+    /** An entry was dragged onto another: move it to that one's place (one Undo step). */
+    private void dropEntry(Projection.Target from, Projection.Target onto) {
+        if (from == null || onto == null || from.index() == onto.index()) {
+            return;
+        }
+        if (!current()) {
+            message.setText("The text has changed since the diagram was drawn; try again in a moment.");
+            return;
+        }
+        apply(from.moveTo().apply(onto.index()));
     }
 
     /** The wheel's circle (centre and radius, in scene units) while a phase wheel is shown, else {@code null}. */

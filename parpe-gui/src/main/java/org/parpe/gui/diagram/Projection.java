@@ -78,8 +78,15 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
      *
      * @param title  what the node is, for the edit row
      * @param fields its fields, in order
+     * @param index  its place among the nodes it can be moved between (a {@code <main>} entry's), or −1
+     * @param moveTo the text edit that moves it to another place, or {@code null} when it cannot move
      */
-    record Target(String title, List<Field> fields) {
+    record Target(String title, List<Field> fields, int index, java.util.function.IntFunction<TextEdit> moveTo) {
+
+        /** A node that does not move. */
+        Target(String title, List<Field> fields) {
+            this(title, fields, -1, null);
+        }
     }
 
     /**
@@ -131,7 +138,8 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
             if (mine(s.pos(), file)) {
                 targets.put(s.pos(), new Target("<main> entry " + s.index() + ": " + s.behavior(), List.of(
                         new Field("time", s.time() == null ? "" : s.time(),
-                                v -> DiagramEdits.setAttribute(text, s.pos(), "time", v)))));
+                                v -> DiagramEdits.setAttribute(text, s.pos(), "time", v))), s.index(),
+                        to -> DiagramEdits.moveEntry(text, p.mainDef().orElseThrow(), s.index(), to)));
             }
         }
         return new Projection(text, file, View.PROGRAM, List.of(), null, Layouts.program(lane.get()), targets, "");

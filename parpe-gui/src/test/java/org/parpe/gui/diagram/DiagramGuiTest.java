@@ -314,4 +314,31 @@ class DiagramGuiTest {
         }
         IdeAccess.pump(() -> pane().liveCounts() == null, "the overlay to go when the run ends");
     }
+
+    @Test
+    void draggingAnEntryOntoAnotherReordersMain() throws Exception {
+        Path standup = home.resolve("scripts").resolve("standup-walk.xml");
+        Files.copy(Path.of(System.getProperty("parpe.examples", "../examples"), "standup-walk.xml"), standup);
+        String before = Files.readString(standup);
+        try {
+            IdeAccess.open(ide, standup);
+            show(View.PROGRAM, null);
+            Point from = pane().where(node("<standup time=\"10\"/>"));
+            Point to = pane().where(node("<walk/>"));
+            for (int[] step : new int[][] {{SWT.MouseDown, from.x, from.y}, {SWT.MouseMove, to.x, to.y}, {SWT.MouseUp, to.x, to.y}}) {
+                Event e = new Event();
+                e.button = 1;
+                e.x = step[1];
+                e.y = step[2];
+                pane().canvas().notifyListeners(step[0], e);
+            }
+            assertEquals(before.replace("<main>\n    <standup time=\"10\"/>\n    <walk/>", "<main>\n    <walk/>\n    <standup time=\"10\"/>"),
+                    text());
+            ide.editor().run(ITextOperationTarget.UNDO);
+            assertEquals(before, text(), "one Undo restores the order byte for byte");
+        } finally {
+            IdeAccess.open(ide, copy);
+            IdeAccess.pump(() -> pane().current(), "the centipede again");
+        }
+    }
 }
