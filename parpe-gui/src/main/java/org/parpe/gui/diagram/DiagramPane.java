@@ -59,6 +59,7 @@ public final class DiagramPane {
     private SourcePos selected;
     private boolean following;
     private Point dragFrom;
+    private Projection.Target dragged;
 
     /** The pane in {@code parent}, showing {@code editor}'s document as the file {@code file} names. */
     public DiagramPane(Composite parent, ParslEditor editor, Supplier<Path> file) {
@@ -91,14 +92,21 @@ public final class DiagramPane {
         RowLayout fl = new RowLayout(SWT.HORIZONTAL);
         fl.center = true;
         fields.setLayout(fl);
-        fields.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        GridData fd = new GridData(SWT.FILL, SWT.CENTER, true, false);
+        // as tall with fields as without, so that the drawing does not move when a node is selected
+        Text probe = new Text(fields, SWT.BORDER | SWT.SINGLE);
+        fd.heightHint = probe.computeSize(SWT.DEFAULT, SWT.DEFAULT).y + 6;
+        probe.dispose();
+        fields.setLayoutData(fd);
         message = new Label(box, SWT.WRAP);
         message.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         canvas = new SceneCanvas(box, this::clicked);
         canvas.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
         showFields();
-        canvas.control().addListener(SWT.MouseDown, e -> dragFrom = e.button == 1 && (wheel() != null || movable(e.x, e.y) != null)
-                ? new Point(e.x, e.y) : null);
+        canvas.control().addListener(SWT.MouseDown, e -> {
+            dragged = e.button == 1 ? movable(e.x, e.y) : null;
+            dragFrom = e.button == 1 && (wheel() != null || dragged != null) ? new Point(e.x, e.y) : null;
+        });
         canvas.control().addListener(SWT.MouseMove, e -> {
             if (dragFrom != null && dragged(e.x, e.y)) {
                 message.setText(wheel() != null ? "Release to set phase=\"" + phaseAt(e.x, e.y)
@@ -110,7 +118,7 @@ public final class DiagramPane {
                 if (wheel() != null) {
                     dropPhase(e.x, e.y);
                 } else {
-                    dropEntry(movable(dragFrom.x, dragFrom.y), movable(e.x, e.y));
+                    dropEntry(dragged, movable(e.x, e.y));
                 }
             }
             dragFrom = null;
@@ -238,7 +246,16 @@ public final class DiagramPane {
 
     /** A click on the canvas: select the node's element, or open an island's text at its line. */
     private void clicked(SourcePos node) {
-        if (node == null || shown == null) {
+        if (shown == null) {
+            return;
+        }
+        if (node == null) {
+            if (shown.view() == View.PHASE) {
+                return;
+            }
+            selected = null;
+            canvas.select(null);
+            showFields();
             return;
         }
         selected = node;
@@ -446,7 +463,8 @@ public final class DiagramPane {
         for (Control c : fields.getChildren()) {
             c.dispose();
         }
-        Projection.Target t = shown == null || selected == null ? null : shown.targets().get(selected);
+        Projection.Target t = shown == null ? null : selected != null ? shown.targets().get(selected)
+                : shown.ring() != null ? shown.targets().get(shown.ring().pos()) : null;
         Label title = new Label(fields, SWT.NONE);
         title.setText(t == null ? "" : t.title());
         for (Projection.Field f : t == null ? List.<Projection.Field>of() : t.fields()) {

@@ -179,6 +179,10 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         final Automaton a = p.automaton(chosen).orElseThrow();
         Ring r = Diagrams.ring(a);
         if (mine(a.pos(), file)) {
+            if (!a.table()) {
+                targets.put(a.pos(), new Target("automaton " + a.name() + " (click an arc for a state)", List.of(
+                        new Field("add state", "", v -> DiagramEdits.addState(text, p, a, v, "1")))));
+            }
             for (Ring.Arc arc : r.arcs()) {
                 targets.putIfAbsent(arc.pos(), new Target("state " + arc.index() + " of " + a.name() + ": " + arc.state(),
                         List.of(new Field("duration", arc.duration(), v -> DiagramEdits.retime(text, a, arc.index(), v)))));

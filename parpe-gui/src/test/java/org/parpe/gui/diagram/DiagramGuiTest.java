@@ -130,6 +130,8 @@ class DiagramGuiTest {
     }
 
     private static void picture(View v) throws Exception {
+        // no blinking caret in the editor: the same picture on every run
+        pane().canvas().setFocus();
         IdeAccess.settle();
         Path dir = Path.of(System.getProperty("parpe.ideImages", "../docs/images/ide"));
         Files.createDirectories(dir);
@@ -340,5 +342,20 @@ class DiagramGuiTest {
             IdeAccess.open(ide, copy);
             IdeAccess.pump(() -> pane().current(), "the centipede again");
         }
+    }
+
+    @Test
+    void aStateAddedOnTheRingIsDefinedAndTimedInOneUndoableEdit() {
+        show(View.RING, "swing");
+        Event e = new Event();
+        e.button = 1;
+        pane().canvas().notifyListeners(SWT.MouseDown, e);
+        assertEquals(null, pane().selected(), "a click on no node selects none: the automaton's fields show");
+        type("add state", "hop");
+        assertEquals(original.replace("<swing states=\"reach, push\" times=\"1, 2\"/>",
+                "<swing states=\"reach, push, hop\" times=\"1, 2, 1\"/>").replace("<stance angles=\"-press\"/>",
+                "<stance angles=\"-press\"/>\n    <hop angles=\"0\"/>"), text());
+        IdeAccess.pump(() -> pane().current() && pane().shown().ring().arcs().size() == 3, "the ring with three states");
+        undoRestoresTheOriginal();
     }
 }
