@@ -282,7 +282,7 @@ class DiagramGuiTest {
         IdeAccess.run(ide, org.parpe.gui.run.Target.SIMULATOR, 600, end::set);
         try {
             long last = -1;
-            for (int frame = 0; frame < 3; frame++) {
+            for (int frame = 0; frame < 10; frame++) {
                 long after = last;
                 IdeAccess.pump(() -> pane().liveCounts() != null && pane().liveTick() > Math.max(0, after) || end.get() != null,
                         "a new frame of the live overlay");
@@ -293,7 +293,7 @@ class DiagramGuiTest {
                 // The same program's engine, run headless to that tick: which state is each leg's lift in?
                 org.parpe.core.run.Engine e = new org.parpe.core.run.Engine(ide.program(), org.parpe.core.run.RunOptions.defaults());
                 e.start();
-                for (long t = 0; t < tick; t++) {
+                while (e.tick() < tick) {
                     e.step();
                 }
                 int n = e.moduleIds().length;
