@@ -301,8 +301,8 @@ public final class DiagramPane {
     private static final int LIVE_MS = 33;
 
     /**
-     * Follows runs: while {@code running} holds and the ring is shown, each state's arc is marked
-     * with the number of modules in it, from what the engine thread published in {@code live}
+     * Follows runs: while {@code running} holds and the ring or the lanes are shown, each state's
+     * arc is marked with the number of modules in it, or each bar with the modules it drives, from what the engine thread published in {@code live}
      * (copied out here, on the UI thread; the engine never waits for the view).
      */
     public void follow(org.parpe.gui.run.LiveStates live, java.util.function.BooleanSupplier running) {
@@ -314,7 +314,7 @@ public final class DiagramPane {
                 if (box.isDisposed()) {
                     return;
                 }
-                if (box.isVisible() && shown != null && shown.ring() != null && running.getAsBoolean()) {
+                if (box.isVisible() && shown != null && (shown.ring() != null || shown.lanes() != null) && running.getAsBoolean()) {
                     var frame = live.since(seen);
                     if (frame != null && frame.tick() >= 0) {
                         seen = frame.version();
@@ -332,8 +332,45 @@ public final class DiagramPane {
     private int[] liveCounts;
     private long liveTick = -1;
 
+    /** Marks each bar of the lanes with the modules it drives at {@code f}'s tick. */
+    private void lanesOverlay(org.parpe.gui.run.LiveStates.Frame f) {
+        var lanes = shown.lanes();
+        List<org.parpe.core.diagram.Swimlanes.Bar> bars = new ArrayList<>();
+        lanes.lanes().forEach(l -> bars.addAll(l.bars()));
+        int[] counts = new int[bars.size()];
+        if (f.entry() == lanes.entry()) {
+            for (int m = 0; m < f.instance().length; m++) {
+                int i = f.instance()[m];
+                if (i >= 0 && i < counts.length) {
+                    counts[i]++;
+                }
+            }
+        }
+        liveCounts = counts;
+        liveTick = f.tick();
+        List<org.parpe.core.diagram.Scene.Shape> marks = new ArrayList<>();
+        for (var s : shown.scene().shapes()) {
+            for (var b : bars) {
+                if (s instanceof org.parpe.core.diagram.Scene.Rect r && b.pos().equals(r.source()) && counts[b.index()] > 0) {
+                    marks.add(new org.parpe.core.diagram.Scene.Rect(r.x() - 3, r.y() - 3, r.w() + 6, r.h() + 6,
+                            org.parpe.core.diagram.Scene.NONE, 0x009e73, 3, null));
+                    marks.add(new org.parpe.core.diagram.Scene.Text(r.x() + r.w() - 8, r.y() + 14, counts[b.index()]
+                            + " driven now", 11, 1, 0x009e73, true));
+                }
+            }
+        }
+        marks.add(new org.parpe.core.diagram.Scene.Text(shown.scene().width() - 12, 28, "live: tick " + f.tick()
+                + (f.entry() == lanes.entry() ? " (green: bars driving modules)" : " (another <main> entry is running)"), 11, 1,
+                0x222222, false));
+        canvas.overlay(marks);
+    }
+
     /** Marks each arc of the ring with the modules in its state at {@code f}'s tick. */
     private void overlay(org.parpe.gui.run.LiveStates.Frame f) {
+        if (shown.lanes() != null) {
+            lanesOverlay(f);
+            return;
+        }
         var ring = shown.ring();
         int[] counts = new int[ring.arcs().size()];
         List<String> automata = f.entry() >= 0 && f.entry() < shown.automata().size() ? shown.automata().get(f.entry()) : List.of();
@@ -360,14 +397,14 @@ public final class DiagramPane {
                 }
             }
         }
-        marks.add(new org.parpe.core.diagram.Scene.Text(20, 48, "live: tick " + f.tick() + " (dark band: modules in the state)",
-                11, -1, 0x222222, false));
+        marks.add(new org.parpe.core.diagram.Scene.Text(shown.scene().width() - 12, 28, "live: tick " + f.tick()
+                + " (dark band: modules in the state)", 11, 1, 0x222222, false));
         canvas.overlay(marks);
     }
 
     /**
-     * The live overlay's modules per state of the ring shown, at {@link #liveTick()}, or
-     * {@code null} when there is no overlay.
+     * The live overlay's modules per state of the ring shown, or per bar of the lanes shown (in
+     * instance order), at {@link #liveTick()}; {@code null} when there is no overlay.
      */
     public int[] liveCounts() {
         return liveCounts == null ? null : liveCounts.clone();

@@ -47,15 +47,16 @@ import org.parpe.gui.editor.Validator;
  * @param ring     the ring drawn (the live overlay marks its states), or {@code null}
  * @param automata per {@code <main>} entry, the automaton of each instance of its behavior in
  *                 document order (how the engine numbers them), for the live overlay
+ * @param lanes    the swimlanes drawn (the live overlay marks the bars driving modules), or {@code null}
  */
 record Projection(String text, Path file, View view, List<String> subjects, String subject, Scene scene,
                   Map<SourcePos, Target> targets, String message, PhaseWheel wheel, Ring ring,
-                  List<List<String>> automata) {
+                  List<List<String>> automata, Swimlanes lanes) {
 
     /** A projection without a wheel or ring. */
     Projection(String text, Path file, View view, List<String> subjects, String subject, Scene scene,
                Map<SourcePos, Target> targets, String message) {
-        this(text, file, view, subjects, subject, scene, targets, message, null, null, List.of());
+        this(text, file, view, subjects, subject, scene, targets, message, null, null, List.of(), null);
     }
 
     /** The views, in the chooser's order. */
@@ -161,7 +162,8 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
                 }
             }
         }
-        return new Projection(text, file, View.LANES, names, chosen, Layouts.lanes(s), targets, islands(s.islands().size()));
+        return new Projection(text, file, View.LANES, names, chosen, Layouts.lanes(s), targets, islands(s.islands().size()),
+                null, null, List.of(), s);
     }
 
     private static Target instanceTarget(String text, String title, SourcePos pos, String phase, String offset) {
@@ -196,7 +198,7 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
             }
         }
         return new Projection(text, file, View.RING, names, chosen, Layouts.ring(r), targets, islands(r.islands().size()),
-                null, r, automata);
+                null, r, automata, null);
     }
 
     private static Projection phase(String text, Path file, Program p, String subject, Map<SourcePos, Target> targets) {
@@ -227,7 +229,7 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
             targets.put(in.pos(), instanceTarget(text, chosen, in.pos(), in.phase() == null ? null : in.phase().text(),
                     in.offset() == null ? null : in.offset().text()));
         }
-        return new Projection(text, file, View.PHASE, labels, chosen, sc, targets, islands(w.islands().size()), w, null, List.of());
+        return new Projection(text, file, View.PHASE, labels, chosen, sc, targets, islands(w.islands().size()), w, null, List.of(), null);
     }
 
     private static String islands(int n) {

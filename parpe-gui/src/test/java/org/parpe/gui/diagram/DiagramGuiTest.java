@@ -275,8 +275,22 @@ class DiagramGuiTest {
     }
 
     @Test
-    void theLiveOverlayShowsTheStatesTheEngineIsIn() {
-        show(View.RING, "step");
+    void theLiveOverlayShowsTheStatesTheEngineIsIn() throws Exception {
+        live(View.RING, "step");
+    }
+
+    @Test
+    void theLiveOverlayShowsTheBarsDrivingModules() throws Exception {
+        live(View.LANES, "walk");
+    }
+
+    /**
+     * Runs the centipede and checks ten frames of the overlay on {@code view} against the same
+     * program's engine run headless to each frame's tick: on the ring of step, the lift modules
+     * per state; on the lanes of walk, the modules each instance drives.
+     */
+    private static void live(View view, String subject) throws Exception {
+        show(view, subject);
         assertEquals(null, pane().liveCounts(), "no overlay while nothing runs");
         java.util.concurrent.atomic.AtomicReference<org.parpe.core.run.RunOutcome> end = new java.util.concurrent.atomic.AtomicReference<>();
         IdeAccess.run(ide, org.parpe.gui.run.Target.SIMULATOR, 600, end::set);
@@ -300,17 +314,22 @@ class DiagramGuiTest {
                 int[] inst = new int[n];
                 int[] state = new int[n];
                 e.moduleStates(inst, state);
-                int[] expected = new int[3];
+                int[] expected = new int[view == View.RING ? 3 : 4];
                 for (int m = 0; m < n; m++) {
-                    // instances 2 and 3 of walk run "step" (on leftLift and rightLift)
-                    if (inst[m] == 2 || inst[m] == 3) {
+                    if (view == View.LANES && inst[m] >= 0) {
+                        expected[inst[m]]++;
+                    } else if (inst[m] == 2 || inst[m] == 3) {
+                        // instances 2 and 3 of walk run "step" (on leftLift and rightLift)
                         expected[state[m]]++;
                     }
                 }
-                assertEquals(14, expected[0] + expected[1] + expected[2], "the 14 lift modules run step");
+                assertEquals(view == View.RING ? 14 : 28, java.util.Arrays.stream(expected).sum(),
+                        view == View.RING ? "the 14 lift modules run step" : "the 28 leg modules are driven");
                 assertEquals(java.util.Arrays.toString(expected), java.util.Arrays.toString(counts), "modules per state at tick " + tick);
                 last = tick;
             }
+            // evidence (not a doc picture: it changes from run to run)
+            IdeAccess.screenshot(ide.shell(), "diagram-live-" + view.name().toLowerCase(java.util.Locale.ROOT) + ".png");
         } finally {
             IdeAccess.endRun(ide);
         }
