@@ -91,11 +91,24 @@ class DiagramGuiTest {
     private static void click(SourcePos node) {
         Point p = pane().where(node);
         assertNotNull(p, node + " is not drawn");
+        mouse(SWT.MouseDown, p);
+    }
+
+    /** A left-button mouse event of {@code type} at {@code at} on the canvas. */
+    private static void mouse(int type, Point at) {
         Event e = new Event();
         e.button = 1;
-        e.x = p.x;
-        e.y = p.y;
-        pane().canvas().notifyListeners(SWT.MouseDown, e);
+        e.x = at.x;
+        e.y = at.y;
+        pane().canvas().notifyListeners(type, e);
+    }
+
+    /** Drags with the left button from {@code from} to {@code to}, as the mouse does. */
+    private static void drag(Point from, Point to) {
+        mouse(SWT.MouseDown, from);
+        mouse(SWT.MouseMove, new Point((from.x + to.x) / 2, (from.y + to.y) / 2));
+        mouse(SWT.MouseMove, to);
+        mouse(SWT.MouseUp, to);
     }
 
     /** The node whose element starts on the line that holds {@code needle}. */
@@ -261,14 +274,7 @@ class DiagramGuiTest {
         // offset 0.5: module 1's tick goes to 0.6 of a turn when the phase is 0.1
         Point from = pane().onWheel(0.25);
         Point to = pane().onWheel(0.6);
-        for (int[] step : new int[][] {{SWT.MouseDown, from.x, from.y}, {SWT.MouseMove, (from.x + to.x) / 2, (from.y + to.y) / 2},
-                {SWT.MouseMove, to.x, to.y}, {SWT.MouseUp, to.x, to.y}}) {
-            Event e = new Event();
-            e.button = 1;
-            e.x = step[1];
-            e.y = step[2];
-            pane().canvas().notifyListeners(step[0], e);
-        }
+        drag(from, to);
         assertEquals(original.replace("<swing group=\"rightSwing\" offset=\"0.5\" phase=\"0.75\"",
                 "<swing group=\"rightSwing\" offset=\"0.5\" phase=\"0.1\""), text());
         undoRestoresTheOriginal();
@@ -346,13 +352,7 @@ class DiagramGuiTest {
             show(View.PROGRAM, null);
             Point from = pane().where(node("<standup time=\"10\"/>"));
             Point to = pane().where(node("<walk/>"));
-            for (int[] step : new int[][] {{SWT.MouseDown, from.x, from.y}, {SWT.MouseMove, to.x, to.y}, {SWT.MouseUp, to.x, to.y}}) {
-                Event e = new Event();
-                e.button = 1;
-                e.x = step[1];
-                e.y = step[2];
-                pane().canvas().notifyListeners(step[0], e);
-            }
+            drag(from, to);
             assertEquals(before.replace("<main>\n    <standup time=\"10\"/>\n    <walk/>", "<main>\n    <walk/>\n    <standup time=\"10\"/>"),
                     text());
             ide.editor().run(ITextOperationTarget.UNDO);
@@ -366,9 +366,7 @@ class DiagramGuiTest {
     @Test
     void aStateAddedOnTheRingIsDefinedAndTimedInOneUndoableEdit() {
         show(View.RING, "swing");
-        Event e = new Event();
-        e.button = 1;
-        pane().canvas().notifyListeners(SWT.MouseDown, e);
+        mouse(SWT.MouseDown, new Point(0, 0));
         assertEquals(null, pane().selected(), "a click on no node selects none: the automaton's fields show");
         type("add state", "hop");
         assertEquals(original.replace("<swing states=\"reach, push\" times=\"1, 2\"/>",
