@@ -23,7 +23,6 @@ import org.parpe.core.load.ScriptLoader;
 import org.parpe.core.model.Behavior;
 import org.parpe.core.model.Group;
 import org.parpe.core.model.Instance;
-import org.parpe.core.model.MainEntry;
 import org.parpe.core.model.Program;
 import org.parpe.core.run.RunOptions;
 import org.parpe.core.run.ScriptRuntimeError;
@@ -178,11 +177,8 @@ public final class DiagramCommand implements Callable<Integer> {
                     + "', got " + instance);
         }
         Instance i = all.get(instance);
-        MainEntry entry = p.main() == null ? null
-                : p.main().entries().stream().filter(e -> e.behavior().equals(b.name())).findFirst().orElse(null);
-        String name = entry != null ? entry.groupOf(i).name() : i.group().replace("!", "").trim();
-        Group g = p.group(name).orElseThrow(() -> new UsageException("the group of instance " + instance + " of '"
-                + b.name() + "' is the macro '" + name + "', which no <main> entry gives a value"));
+        Group g = Diagrams.groupOf(p, b, i).orElseThrow(() -> new UsageException("the group of instance " + instance
+                + " of '" + b.name() + "' is the macro '" + i.group().replace("!", "").trim() + "', which no <main> entry gives a value"));
         return Layouts.wheel(Diagrams.wheel(i, g));
     }
 }

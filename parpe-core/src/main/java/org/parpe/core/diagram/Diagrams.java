@@ -176,6 +176,18 @@ public final class Diagrams {
         return new PhaseWheel(instance.automaton(), instance.group(), phase, offset, ticks, islands, instance.pos());
     }
 
+    /**
+     * The group {@code instance} of {@code behavior} runs on: a macro group resolved with the
+     * macro values of the first {@code <main>} entry that invokes the behavior; empty when no
+     * entry gives the macro a value.
+     */
+    public static Optional<Group> groupOf(Program p, Behavior behavior, Instance instance) {
+        MainEntry entry = p.main() == null ? null
+                : p.main().entries().stream().filter(e -> e.behavior().equals(behavior.name())).findFirst().orElse(null);
+        String name = entry != null ? entry.groupOf(instance).name() : instance.group().replace("!", "").trim();
+        return p.group(name);
+    }
+
     private static double cycles(Expression e, String what, List<TextIsland> islands) {
         if (e == null) {
             return 0;

@@ -19,6 +19,7 @@ import org.parpe.core.diag.Severity;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.model.Program;
+import org.parpe.gui.diagram.DiagramPane;
 import org.parpe.gui.editor.ParslEditor;
 import org.parpe.gui.editor.Validator;
 import org.parpe.gui.grid.GridPane;
@@ -46,6 +47,7 @@ public final class IdeWindow {
     private final RunChoices choices;
     private final ParslEditor editor;
     private final GridPane gaitGrid;
+    private final DiagramPane diagram;
     private final CTabItem editorTab;
     private final ProblemsView problems;
     private final CTabFolder bottom;
@@ -132,6 +134,14 @@ public final class IdeWindow {
         status = new StatusBar(shell);
         status.control().setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         files = new FileActions(shell, editor, prefs, this::documentChanged, this::fileSwitched, status::setMessage);
+        diagram = new DiagramPane(viewFolder, editor, files::pathForLoading);
+        Panels.tab(viewFolder, "Diagram", diagram.control());
+        diagram.follow(runs.controller().live(), runs::running);
+        viewFolder.addListener(SWT.Selection, e -> {
+            boolean d = viewFolder.getSelection().getControl() == diagram.control();
+            right.setWeights(d ? new int[] {84, 4, 12} : new int[] {54, 18, 28});
+            main.setWeights(d ? new int[] {10, 38, 52} : new int[] {15, 43, 42});
+        });
         menus = new MenuBar(this);
         menus.install();
         wire(display);
@@ -509,6 +519,11 @@ public final class IdeWindow {
 
     public ParslEditor editor() {
         return editor;
+    }
+
+    /** The Diagram pane beside the 3D view. */
+    public DiagramPane diagram() {
+        return diagram;
     }
 
     /** The gait-table grid beside the editor. */

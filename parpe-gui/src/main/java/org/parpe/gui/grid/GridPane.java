@@ -6,8 +6,6 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.eclipse.jface.text.BadLocationException;
-import org.eclipse.jface.text.DocumentEvent;
-import org.eclipse.jface.text.IDocumentListener;
 import org.eclipse.jface.window.Window;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.custom.SashForm;
@@ -25,6 +23,7 @@ import org.eclipse.swt.widgets.Table;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.load.ListItem;
 import org.parpe.core.model.Program;
+import org.parpe.gui.editor.AfterChange;
 import org.parpe.gui.editor.ParslEditor;
 import org.parpe.gui.grid.Fill.Selection;
 import org.parpe.gui.grid.TableEdits.At;
@@ -40,8 +39,6 @@ import org.parpe.gui.grid.TableEdits.At;
  */
 public final class GridPane implements GridView.Actions {
     private static final String TIMES = "times";
-    private static final int QUICK_CHARS = 200_000;
-    private static final int PAUSE_MS = 300;
     /** The background of a cell with a problem (not selected). */
     public static final org.eclipse.swt.graphics.Color INVALID = GridView.INVALID;
 
@@ -60,7 +57,6 @@ public final class GridPane implements GridView.Actions {
     private GaitTable table;
     private String chosen;
     private boolean stale;
-    private boolean pending;
     private boolean following;
     private Program program;
     private List<Diagnostic> diagnostics = List.of();
@@ -99,16 +95,7 @@ public final class GridPane implements GridView.Actions {
         sash.setWeights(40, 60);
         sash.setMaximizedControl(text);
         editor.widget().addCaretListener(e -> caretAt(e.caretOffset));
-        editor.document().addDocumentListener(new IDocumentListener() {
-            @Override
-            public void documentAboutToBeChanged(DocumentEvent event) {
-            }
-
-            @Override
-            public void documentChanged(DocumentEvent event) {
-                refreshSoon();
-            }
-        });
+        new AfterChange(box, editor.document(), this::refresh);
     }
 
     private void command(Composite bar, String label, String tip, Runnable action) {
@@ -117,29 +104,6 @@ public final class GridPane implements GridView.Actions {
         b.setToolTipText(tip);
         b.addListener(SWT.Selection, e -> action.run());
         commands.add(b);
-    }
-
-    /**
-     * Reads the text again once the current event is handled; a text over
-     * {@value #QUICK_CHARS} characters (reading it takes longer than a keystroke should) is
-     * read {@value #PAUSE_MS} ms after a change, with the changes made meanwhile.
-     */
-    private void refreshSoon() {
-        if (pending || box.isDisposed()) {
-            return;
-        }
-        pending = true;
-        Runnable r = () -> {
-            pending = false;
-            if (!box.isDisposed()) {
-                refresh();
-            }
-        };
-        if (editor.document().getLength() > QUICK_CHARS) {
-            box.getDisplay().timerExec(PAUSE_MS, r);
-        } else {
-            box.getDisplay().asyncExec(r);
-        }
     }
 
     /** Reads the tables from the text again and shows the chosen one. */

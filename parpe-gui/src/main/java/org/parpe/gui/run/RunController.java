@@ -25,6 +25,7 @@ public final class RunController {
     private final WallClockPacer pacer = new WallClockPacer(Speed.REAL_TIME.factor());
     private volatile Speed speed = Speed.REAL_TIME;
     private volatile EngineStatus status;
+    private final LiveStates live = new LiveStates();
     private volatile Thread thread;
     private volatile Engine engine;
     private volatile boolean hardwarePaced;
@@ -133,6 +134,7 @@ public final class RunController {
 
         StatusPublisher(Engine e) {
             this.e = e;
+            live.start(e);
         }
 
         @Override
@@ -140,6 +142,7 @@ public final class RunController {
             long now = System.nanoTime();
             if (now - last > STATUS_EVERY_NS) {
                 status = e.status();
+                live.publish(e, tick, status.entryIndex());
                 last = now;
             }
         }
@@ -179,6 +182,11 @@ public final class RunController {
 
     public Speed speed() {
         return speed;
+    }
+
+    /** Each module's state as the run last published it (with the status), for live views. */
+    public LiveStates live() {
+        return live;
     }
 
     /** The latest published status, or null before the first tick. */

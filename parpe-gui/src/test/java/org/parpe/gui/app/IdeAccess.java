@@ -54,6 +54,11 @@ public final class IdeAccess {
         ide.runs().run(false, seconds, onEnd);
     }
 
+    /** Stops the run, if any, and waits until its end has reached the window. */
+    public static void endRun(IdeWindow ide) {
+        Gui.endRun(ide);
+    }
+
     /** The status bar's message. */
     public static String status(IdeWindow ide) {
         return ide.status().message();

@@ -1,0 +1,561 @@
+package org.parpe.gui.diagram;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Supplier;
+import org.eclipse.jface.text.BadLocationException;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.graphics.Point;
+import org.eclipse.swt.layout.GridData;
+import org.eclipse.swt.layout.GridLayout;
+import org.eclipse.swt.layout.RowData;
+import org.eclipse.swt.layout.RowLayout;
+import org.eclipse.swt.widgets.Combo;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Control;
+import org.eclipse.swt.widgets.Label;
+import org.eclipse.swt.widgets.Text;
+import org.parpe.core.diag.SourcePos;
+import org.parpe.core.diag.SourceSpan;
+import org.parpe.core.diagram.TextEdit;
+import org.parpe.gui.diagram.Projection.View;
+import org.parpe.gui.editor.AfterChange;
+import org.parpe.gui.editor.ParslEditor;
+
+/**
+ * The Diagram pane: one view of the open document (program lane, swimlanes, automaton ring,
+ * phase wheel, gait diagram) drawn from the text, never stored anywhere else. It is made again
+ * a moment after the text changes ({@link AfterChange}, as the grid editor) (off the UI thread: the script is loaded, and for the gait
+ * the engine run, on a worker), only while the pane is shown. Clicking a node selects its
+ * element in the editor; the caret in the text selects the node whose element holds it; a text
+ * island opens the text at its line. The selected node's values (a state's duration, an
+ * instance's phase and offset, an entry's time) are fields: Enter writes the value through
+ * {@link org.parpe.core.diagram.DiagramEdits} as one replacement of the document, so Edit →
+ * Undo takes it back in one step. UI thread only.
+ */
+public final class DiagramPane {
+
+    private final ParslEditor editor;
+    private final Supplier<Path> file;
+    private final Composite box;
+    private final Combo viewChoice;
+    private final Combo subjectChoice;
+    private final Composite fields;
+    private final Label message;
+    private final SceneCanvas canvas;
+    private final ExecutorService worker = Executors.newSingleThreadExecutor(r -> {
+        Thread t = new Thread(r, "parpe-diagram");
+        t.setDaemon(true);
+        return t;
+    });
+    private final AtomicLong generation = new AtomicLong();
+    private View view = View.PROGRAM;
+    private String subject;
+    private Projection shown;
+    private SourcePos selected;
+    private boolean following;
+    private Point dragFrom;
+    private Projection.Target dragged;
+
+    /** The pane in {@code parent}, showing {@code editor}'s document as the file {@code file} names. */
+    public DiagramPane(Composite parent, ParslEditor editor, Supplier<Path> file) {
+        this.editor = editor;
+        this.file = file;
+        box = new Composite(parent, SWT.NONE);
+        GridLayout gl = new GridLayout(1, false);
+        gl.marginWidth = 2;
+        gl.marginHeight = 2;
+        box.setLayout(gl);
+        Composite bar = new Composite(box, SWT.NONE);
+        RowLayout rl = new RowLayout(SWT.HORIZONTAL);
+        rl.center = true;
+        bar.setLayout(rl);
+        bar.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        new Label(bar, SWT.NONE).setText("View:");
+        viewChoice = new Combo(bar, SWT.READ_ONLY);
+        for (View v : View.values()) {
+            viewChoice.add(v.label);
+        }
+        viewChoice.select(0);
+        viewChoice.addListener(SWT.Selection, e -> setView(View.values()[viewChoice.getSelectionIndex()]));
+        subjectChoice = new Combo(bar, SWT.READ_ONLY);
+        subjectChoice.setLayoutData(new RowData(260, SWT.DEFAULT));
+        subjectChoice.addListener(SWT.Selection, e -> {
+            subject = subjectChoice.getText();
+            relayout();
+        });
+        fields = new Composite(box, SWT.NONE);
+        RowLayout fl = new RowLayout(SWT.HORIZONTAL);
+        fl.center = true;
+        fields.setLayout(fl);
+        GridData fd = new GridData(SWT.FILL, SWT.CENTER, true, false);
+        // as tall with fields as without, so that the drawing does not move when a node is selected
+        Text probe = new Text(fields, SWT.BORDER | SWT.SINGLE);
+        fd.heightHint = probe.computeSize(SWT.DEFAULT, SWT.DEFAULT).y + 6;
+        probe.dispose();
+        fields.setLayoutData(fd);
+        message = new Label(box, SWT.WRAP);
+        message.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        canvas = new SceneCanvas(box, this::clicked);
+        canvas.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
+        showFields();
+        canvas.control().addListener(SWT.MouseDown, e -> {
+            dragged = e.button == 1 ? movable(e.x, e.y) : null;
+            dragFrom = e.button == 1 && (wheel() != null || dragged != null) ? new Point(e.x, e.y) : null;
+        });
+        canvas.control().addListener(SWT.MouseMove, e -> {
+            if (dragFrom != null && dragged(e.x, e.y)) {
+                message.setText(wheel() != null ? "Release to set phase=\"" + phaseAt(e.x, e.y)
+                        + "\" (module 1's tick goes where you release)" : "Release on another entry to move this one there");
+            }
+        });
+        canvas.control().addListener(SWT.MouseUp, e -> {
+            if (dragFrom != null && dragged(e.x, e.y)) {
+                if (wheel() != null) {
+                    dropPhase(e.x, e.y);
+                } else {
+                    dropEntry(dragged, movable(e.x, e.y));
+                }
+            }
+            dragFrom = null;
+        });
+        editor.widget().addCaretListener(e -> caretAt(e.caretOffset));
+        AfterChange soon = new AfterChange(box, editor.document(), this::relayout);
+        box.addListener(SWT.Show, e -> soon.schedule());
+        box.addListener(SWT.Dispose, e -> {
+            generation.incrementAndGet();
+            worker.shutdownNow();
+        });
+    }
+
+    /** The pane's control (the host puts it in a tab). */
+    public Control control() {
+        return box;
+    }
+
+    /** Shows view {@code v} of the document. */
+    public void setView(View v) {
+        view = v;
+        viewChoice.select(v.ordinal());
+        subject = null;
+        selected = null;
+        relayout();
+    }
+
+    /** Shows view {@code v} on {@code label} (a behavior, automaton or instance as the subject chooser names it). */
+    public void setView(View v, String label) {
+        setView(v);
+        subject = label;
+        relayout();
+    }
+
+    /** Projects the current text on the worker if the pane is shown; the newest request wins. */
+    private void relayout() {
+        if (box.isDisposed() || !box.isVisible()) {
+            return;
+        }
+        long gen = generation.incrementAndGet();
+        String text = editor.document().get();
+        Path f = file.get();
+        View v = view;
+        String s = subject;
+        var display = box.getDisplay();
+        worker.execute(() -> {
+            if (gen != generation.get()) {
+                return;
+            }
+            Projection p = Projection.of(text, f, v, s);
+            if (!display.isDisposed()) {
+                display.asyncExec(() -> {
+                    if (gen == generation.get() && !box.isDisposed()) {
+                        show(p);
+                    }
+                });
+            }
+        });
+    }
+
+    private void show(Projection p) {
+        shown = p;
+        subject = p.subject();
+        List<String> items = p.subjects();
+        if (!items.equals(List.of(subjectChoice.getItems()))) {
+            subjectChoice.setItems(items.toArray(String[]::new));
+        }
+        subjectChoice.setEnabled(!items.isEmpty());
+        if (p.subject() != null) {
+            subjectChoice.select(items.indexOf(p.subject()));
+        }
+        if (p.view() == View.PHASE && p.targets().size() == 1) {
+            selected = p.targets().keySet().iterator().next();
+        } else if (selected != null && !p.targets().containsKey(selected) && canvas.centre(selected) == null) {
+            selected = null;
+        }
+        canvas.show(p.scene() == null ? new org.parpe.core.diagram.Scene(1, 1) : p.scene());
+        canvas.select(selected);
+        message.setText(p.message().isEmpty() && !p.targets().isEmpty()
+                ? "Click a box, an arc or a bar to select its text and edit its values." : p.message());
+        showFields();
+        box.layout(true, true);
+    }
+
+    /** The projection shown, or {@code null} before the first. */
+    public Projection shown() {
+        return shown;
+    }
+
+    /** Whether the diagram shows the editor's current text. */
+    public boolean current() {
+        return shown != null && shown.text().equals(editor.document().get());
+    }
+
+    /** The node selected, or {@code null}. */
+    public SourcePos selected() {
+        return selected;
+    }
+
+    /** The canvas, for tests that click on it. */
+    public org.eclipse.swt.widgets.Canvas canvas() {
+        return canvas.control();
+    }
+
+    /** Where on the canvas {@code node} is drawn (a click there selects it), or {@code null}. */
+    public Point where(SourcePos node) {
+        return canvas.centre(node);
+    }
+
+    /** The line under the view chooser: what the view cannot show or why it is empty. */
+    public String message() {
+        return message.getText();
+    }
+
+    /** The value fields of the selected node, by name. */
+    public java.util.Map<String, Text> fields() {
+        java.util.Map<String, Text> out = new java.util.LinkedHashMap<>();
+        for (Control c : fields.getChildren()) {
+            if (c instanceof Text t) {
+                out.put((String) t.getData("field"), t);
+            }
+        }
+        return out;
+    }
+
+    /** A click on the canvas: select the node's element, or open an island's text at its line. */
+    private void clicked(SourcePos node) {
+        if (shown == null) {
+            return;
+        }
+        if (node == null) {
+            if (shown.view() == View.PHASE) {
+                return;
+            }
+            selected = null;
+            canvas.select(null);
+            showFields();
+            return;
+        }
+        selected = node;
+        canvas.select(node);
+        showFields();
+        if (node.span() != null && node.file().equals(shown.file().toString()) && current()) {
+            SourceSpan s = node.span();
+            following = true;
+            try {
+                editor.viewer().setSelectedRange(s.start(), s.end() - s.start());
+                editor.viewer().revealRange(s.start(), s.end() - s.start());
+            } finally {
+                following = false;
+            }
+        } else if (node.line() > 0 && node.file().equals(shown.file().toString())) {
+            editor.reveal(node.line(), node.column());
+        }
+    }
+
+    /** The caret moved in the text: select the innermost drawn node whose element holds it. */
+    private void caretAt(int offset) {
+        if (following || shown == null || shown.scene() == null || !current()) {
+            return;
+        }
+        SourcePos best = null;
+        for (var s : shown.scene().shapes()) {
+            SourcePos p = s instanceof org.parpe.core.diagram.Scene.Rect r ? r.source()
+                    : s instanceof org.parpe.core.diagram.Scene.Sector c ? c.source() : null;
+            if (p != null && p.span() != null && p.file().equals(shown.file().toString()) && offset >= p.span().start()
+                    && offset <= p.span().end()
+                    && (best == null || p.span().end() - p.span().start() < best.span().end() - best.span().start())) {
+                best = p;
+            }
+        }
+        if (best != null && !best.equals(selected)) {
+            selected = best;
+            canvas.select(best);
+            showFields();
+        }
+    }
+
+    /** How often the live overlay looks for new states: 30 frames per second at most. */
+    private static final int LIVE_MS = 33;
+
+    /**
+     * Follows runs: while {@code running} holds and the ring or the lanes are shown, each state's
+     * arc is marked with the number of modules in it, or each bar with the modules it drives, from what the engine thread published in {@code live}
+     * (copied out here, on the UI thread; the engine never waits for the view).
+     */
+    public void follow(org.parpe.gui.run.LiveStates live, java.util.function.BooleanSupplier running) {
+        box.getDisplay().timerExec(LIVE_MS, new Runnable() {
+            private long seen = -1;
+
+            @Override
+            public void run() {
+                if (box.isDisposed()) {
+                    return;
+                }
+                if (box.isVisible() && shown != null && (shown.ring() != null || shown.lanes() != null) && running.getAsBoolean()) {
+                    var frame = live.since(seen);
+                    if (frame != null && frame.tick() >= 0) {
+                        seen = frame.version();
+                        overlay(frame);
+                    }
+                } else if (liveCounts != null) {
+                    liveCounts = null;
+                    canvas.overlay(List.of());
+                }
+                box.getDisplay().timerExec(LIVE_MS, this);
+            }
+        });
+    }
+
+    private int[] liveCounts;
+    private long liveTick = -1;
+
+    /** Marks each bar of the lanes with the modules it drives at {@code f}'s tick. */
+    private void lanesOverlay(org.parpe.gui.run.LiveStates.Frame f) {
+        var lanes = shown.lanes();
+        List<org.parpe.core.diagram.Swimlanes.Bar> bars = new ArrayList<>();
+        lanes.lanes().forEach(l -> bars.addAll(l.bars()));
+        int[] counts = new int[bars.size()];
+        if (f.entry() == lanes.entry()) {
+            for (int m = 0; m < f.instance().length; m++) {
+                int i = f.instance()[m];
+                if (i >= 0 && i < counts.length) {
+                    counts[i]++;
+                }
+            }
+        }
+        liveCounts = counts;
+        liveTick = f.tick();
+        List<org.parpe.core.diagram.Scene.Shape> marks = new ArrayList<>();
+        for (var s : shown.scene().shapes()) {
+            for (var b : bars) {
+                if (s instanceof org.parpe.core.diagram.Scene.Rect r && b.pos().equals(r.source()) && counts[b.index()] > 0) {
+                    marks.add(new org.parpe.core.diagram.Scene.Rect(r.x() - 3, r.y() - 3, r.w() + 6, r.h() + 6,
+                            org.parpe.core.diagram.Scene.NONE, 0x009e73, 3, null));
+                    marks.add(new org.parpe.core.diagram.Scene.Text(r.x() + r.w() - 8, r.y() + 14, counts[b.index()]
+                            + " driven now", 11, 1, 0x009e73, true));
+                }
+            }
+        }
+        marks.add(new org.parpe.core.diagram.Scene.Text(shown.scene().width() - 12, 28, "live: tick " + f.tick()
+                + (f.entry() == lanes.entry() ? " (green: bars driving modules)" : " (another <main> entry is running)"), 11, 1,
+                0x222222, false));
+        canvas.overlay(marks);
+    }
+
+    /** Marks each arc of the ring with the modules in its state at {@code f}'s tick. */
+    private void overlay(org.parpe.gui.run.LiveStates.Frame f) {
+        if (shown.lanes() != null) {
+            lanesOverlay(f);
+            return;
+        }
+        var ring = shown.ring();
+        int[] counts = new int[ring.arcs().size()];
+        List<String> automata = f.entry() >= 0 && f.entry() < shown.automata().size() ? shown.automata().get(f.entry()) : List.of();
+        for (int m = 0; m < f.instance().length; m++) {
+            int i = f.instance()[m];
+            int k = f.state()[m];
+            if (i >= 0 && i < automata.size() && automata.get(i).equals(ring.automaton()) && k >= 0 && k < counts.length) {
+                counts[k]++;
+            }
+        }
+        liveCounts = counts;
+        liveTick = f.tick();
+        List<org.parpe.core.diagram.Scene.Shape> marks = new ArrayList<>();
+        for (var s : shown.scene().shapes()) {
+            if (s instanceof org.parpe.core.diagram.Scene.Sector c && c.source() != null) {
+                for (var arc : ring.arcs()) {
+                    if (arc.from() == c.from() && arc.to() == c.to() && counts[arc.index()] > 0) {
+                        marks.add(new org.parpe.core.diagram.Scene.Sector(c.cx(), c.cy(), c.r0() - 10, c.r0() - 2, c.from(),
+                                c.to(), 0x222222, org.parpe.core.diagram.Scene.NONE, null));
+                        double[] p = org.parpe.core.diagram.Scene.onCircle(c.cx(), c.cy(), c.r0() - 22, (c.from() + c.to()) / 2);
+                        marks.add(new org.parpe.core.diagram.Scene.Text(p[0], p[1] + 4, Integer.toString(counts[arc.index()]),
+                                12, 0, 0x222222, true));
+                    }
+                }
+            }
+        }
+        marks.add(new org.parpe.core.diagram.Scene.Text(shown.scene().width() - 12, 28, "live: tick " + f.tick()
+                + " (dark band: modules in the state)", 11, 1, 0x222222, false));
+        canvas.overlay(marks);
+    }
+
+    /**
+     * The live overlay's modules per state of the ring shown, or per bar of the lanes shown (in
+     * instance order), at {@link #liveTick()}; {@code null} when there is no overlay.
+     */
+    public int[] liveCounts() {
+        return liveCounts == null ? null : liveCounts.clone();
+    }
+
+    /** The engine tick of the live overlay shown, or −1. */
+    public long liveTick() {
+        return liveCounts == null ? -1 : liveTick;
+    }
+
+    /** The node at canvas pixel {@code x, y} if it can be moved by dragging, else {@code null}. */
+    private Projection.Target movable(int x, int y) {
+        if (shown == null) {
+            return null;
+        }
+        double[] p = canvas.toScene(x, y);
+        Projection.Target t = shown.targets().get(canvas.hit(p[0], p[1]));
+        return t != null && t.moveTo() != null ? t : null;
+    }
+
+    /** An entry was dragged onto another: move it to that one's place (one Undo step). */
+    private void dropEntry(Projection.Target from, Projection.Target onto) {
+        if (from == null || onto == null || from.index() == onto.index()) {
+            return;
+        }
+        if (!current()) {
+            message.setText("The text has changed since the diagram was drawn; try again in a moment.");
+            return;
+        }
+        apply(from.moveTo().apply(onto.index()));
+    }
+
+    /** The wheel's circle (centre and radius, in scene units) while a phase wheel is shown, else {@code null}. */
+    private double[] wheel() {
+        if (shown == null || shown.wheel() == null || shown.scene() == null) {
+            return null;
+        }
+        for (var s : shown.scene().shapes()) {
+            if (s instanceof org.parpe.core.diagram.Scene.Sector c && c.source() == null && c.from() == 0 && c.to() == 1) {
+                return new double[] {c.cx(), c.cy(), c.r1()};
+            }
+        }
+        return null;
+    }
+
+    private boolean dragged(int x, int y) {
+        return Math.abs(x - dragFrom.x) + Math.abs(y - dragFrom.y) > 3;
+    }
+
+    /**
+     * The phase that puts module 1's tick at canvas pixel {@code x, y}: its angle on the wheel
+     * less the offset, in [0, 1) (in (−1, 0] when the phase was negative), to 0.01 of a cycle.
+     */
+    private String phaseAt(int x, int y) {
+        double[] c = wheel();
+        double[] p = canvas.toScene(x, y);
+        double f = Math.atan2(p[0] - c[0], -(p[1] - c[1])) / (2 * Math.PI);
+        double phase = f - shown.wheel().offset();
+        phase -= Math.floor(phase);
+        if (shown.wheel().phase() < 0 && phase > 0) {
+            phase -= 1;
+        }
+        return org.parpe.core.lang.Numbers.format(Math.round(phase * 100) / 100.0);
+    }
+
+    /** A drag on the phase wheel ended at {@code x, y}: write the phase it sets. */
+    private void dropPhase(int x, int y) {
+        Projection.Target t = shown.targets().get(shown.wheel().pos());
+        if (t == null) {
+            message.setText("This instance is not in the open file; edit its phase there.");
+            return;
+        }
+        String value = phaseAt(x, y);
+        for (Projection.Field f : t.fields()) {
+            if (f.name().equals("phase")) {
+                write(f, value);
+            }
+        }
+    }
+
+    /** Where on the canvas the phase wheel's point at fraction {@code f} of a turn is, or {@code null}. */
+    public Point onWheel(double f) {
+        double[] c = wheel();
+        if (c == null) {
+            return null;
+        }
+        double[] p = org.parpe.core.diagram.Scene.onCircle(c[0], c[1], c[2], f);
+        return canvas.toCanvas(p[0], p[1]);
+    }
+
+    /** The edit row: the selected node's values as fields; Enter in one writes it. */
+    private void showFields() {
+        for (Control c : fields.getChildren()) {
+            c.dispose();
+        }
+        Projection.Target t = shown == null ? null : selected != null ? shown.targets().get(selected)
+                : shown.ring() != null ? shown.targets().get(shown.ring().pos()) : null;
+        Label title = new Label(fields, SWT.NONE);
+        title.setText(t == null ? "" : t.title());
+        for (Projection.Field f : t == null ? List.<Projection.Field>of() : t.fields()) {
+            new Label(fields, SWT.NONE).setText(f.name() + ":");
+            Text field = new Text(fields, SWT.BORDER | SWT.SINGLE);
+            field.setData("field", f.name());
+            field.setText(f.value());
+            field.setLayoutData(new RowData(Math.max(60, 9 * (f.value().length() + 2)), SWT.DEFAULT));
+            field.setToolTipText("Enter writes the new " + f.name() + " into the text (one Undo step)");
+            field.addListener(SWT.DefaultSelection, e -> write(f, field.getText()));
+        }
+        fields.layout(true);
+        box.layout(true, true);
+    }
+
+    /**
+     * Writes {@code value} as field {@code f} of the selected node: the edit's replacements
+     * become one replacement of the document (one Undo step). Refused, with a message, when the
+     * text has changed since the diagram was made.
+     */
+    private void write(Projection.Field f, String value) {
+        if (!current()) {
+            message.setText("The text has changed since the diagram was drawn; try again in a moment.");
+            return;
+        }
+        if (value.equals(f.value())) {
+            return;
+        }
+        TextEdit edit;
+        try {
+            edit = f.edit().apply(value.trim());
+        } catch (IllegalArgumentException e) {
+            message.setText(e.getMessage());
+            box.layout(true, true);
+            return;
+        }
+        apply(edit);
+    }
+
+    /** Applies {@code edit} to the document as one replacement spanning all of its ranges. */
+    private void apply(TextEdit edit) {
+        List<TextEdit.Replacement> rs = new ArrayList<>(edit.replacements());
+        if (rs.isEmpty()) {
+            return;
+        }
+        String text = shown.text();
+        int from = rs.get(0).offset();
+        int to = rs.get(rs.size() - 1).end();
+        String after = edit.apply(text);
+        String middle = after.substring(from, after.length() - (text.length() - to));
+        try {
+            editor.document().replace(from, to - from, middle);
+        } catch (BadLocationException e) {
+            message.setText("The text changed meanwhile; try again (" + e.getMessage() + ").");
+        }
+    }
+}

@@ -1,0 +1,239 @@
+package org.parpe.gui.diagram;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Function;
+import org.parpe.core.diag.Diagnostic;
+import org.parpe.core.diag.Severity;
+import org.parpe.core.diag.SourcePos;
+import org.parpe.core.diagram.DiagramEdits;
+import org.parpe.core.diagram.Diagrams;
+import org.parpe.core.diagram.Gait;
+import org.parpe.core.diagram.Layouts;
+import org.parpe.core.diagram.PhaseWheel;
+import org.parpe.core.diagram.ProgramLane;
+import org.parpe.core.diagram.Ring;
+import org.parpe.core.diagram.Scene;
+import org.parpe.core.diagram.Swimlanes;
+import org.parpe.core.diagram.TextEdit;
+import org.parpe.core.load.LoadResult;
+import org.parpe.core.model.Automaton;
+import org.parpe.core.model.Behavior;
+import org.parpe.core.model.Group;
+import org.parpe.core.model.Instance;
+import org.parpe.core.model.Program;
+import org.parpe.core.run.RunOptions;
+import org.parpe.core.run.ScriptRuntimeError;
+import org.parpe.gui.editor.Validator;
+
+/**
+ * One view of one text: the script loaded from exactly that text, the view's {@link Scene}, the
+ * subjects the view can show (behaviors, automata or instances) and, for each node that can be
+ * edited here, its fields, each turning a new value into a {@link TextEdit} of that same text
+ * through {@link DiagramEdits}. Made off the UI thread; holds no widget.
+ *
+ * @param text     the text the projection was made from
+ * @param file     the file it was loaded as
+ * @param view     the view
+ * @param subjects what the view can show, by label (empty for program and gait)
+ * @param subject  the label of the one shown, or {@code null}
+ * @param scene    the drawing, or {@code null} when there is none (see {@code message})
+ * @param targets  the editable nodes
+ * @param message  why there is no drawing, or what the drawing leaves out; empty if nothing
+ * @param wheel    the phase wheel drawn (its handle can be dragged), or {@code null}
+ * @param ring     the ring drawn (the live overlay marks its states), or {@code null}
+ * @param automata per {@code <main>} entry, the automaton of each instance of its behavior in
+ *                 document order (how the engine numbers them), for the live overlay
+ * @param lanes    the swimlanes drawn (the live overlay marks the bars driving modules), or {@code null}
+ */
+record Projection(String text, Path file, View view, List<String> subjects, String subject, Scene scene,
+                  Map<SourcePos, Target> targets, String message, PhaseWheel wheel, Ring ring,
+                  List<List<String>> automata, Swimlanes lanes) {
+
+    /** A projection without a wheel or ring. */
+    Projection(String text, Path file, View view, List<String> subjects, String subject, Scene scene,
+               Map<SourcePos, Target> targets, String message) {
+        this(text, file, view, subjects, subject, scene, targets, message, null, null, List.of(), null);
+    }
+
+    /** The views, in the chooser's order. */
+    enum View {
+        PROGRAM("Program"), LANES("Lanes"), RING("Ring"), PHASE("Phase"), GAIT("Gait");
+
+        final String label;
+
+        View(String label) {
+            this.label = label;
+        }
+    }
+
+    /** Seconds the gait diagram runs the engine for, and its tick (as {@code parpe diagram}'s defaults). */
+    static final double GAIT_SECONDS = 6;
+    static final double GAIT_TICK = 0.01;
+
+    /**
+     * A node that can be edited: what it is, and its fields.
+     *
+     * @param title  what the node is, for the edit row
+     * @param fields its fields, in order
+     * @param index  its place among the nodes it can be moved between (a {@code <main>} entry's), or −1
+     * @param moveTo the text edit that moves it to another place, or {@code null} when it cannot move
+     */
+    record Target(String title, List<Field> fields, int index, java.util.function.IntFunction<TextEdit> moveTo) {
+
+        /** A node that does not move. */
+        Target(String title, List<Field> fields) {
+            this(title, fields, -1, null);
+        }
+    }
+
+    /**
+     * One value of a node.
+     *
+     * @param name  the attribute or quantity
+     * @param value its text as written ({@code ""} when absent)
+     * @param edit  the text edit that sets it to a new value (may throw IllegalArgumentException)
+     */
+    record Field(String name, String value, Function<String, TextEdit> edit) {
+    }
+
+    /** Loads {@code text} as {@code file} and projects view {@code view} on {@code subject} (null: the default). */
+    static Projection of(String text, Path file, View view, String subject) {
+        LoadResult r = Validator.load(file, text, Map.of());
+        Program p = r.program();
+        if (p == null) {
+            String first = r.diagnostics().stream().filter(d -> d.severity() == Severity.ERROR).findFirst()
+                    .map(Diagnostic::format).orElse("");
+            return new Projection(text, file, view, List.of(), null, null, Map.of(),
+                    "The script does not load; the diagram shows it again once it does. " + first);
+        }
+        Map<SourcePos, Target> targets = new LinkedHashMap<>();
+        try {
+            return switch (view) {
+                case PROGRAM -> program(text, file, p, targets);
+                case LANES -> lanes(text, file, p, subject, targets);
+                case RING -> ring(text, file, p, subject, targets);
+                case PHASE -> phase(text, file, p, subject, targets);
+                case GAIT -> new Projection(text, file, view, List.of(), null,
+                        Layouts.gait(Gait.record(p, new RunOptions(GAIT_TICK, 0, List.of()), GAIT_SECONDS)), targets, "");
+            };
+        } catch (ScriptRuntimeError e) {
+            return new Projection(text, file, view, List.of(), null, null, Map.of(), e.diagnostic().format());
+        }
+    }
+
+    private static boolean mine(SourcePos pos, Path file) {
+        return pos != null && pos.span() != null && pos.file().equals(file.toString());
+    }
+
+    private static Projection program(String text, Path file, Program p, Map<SourcePos, Target> targets) {
+        var lane = Diagrams.program(p);
+        if (lane.isEmpty()) {
+            return new Projection(text, file, View.PROGRAM, List.of(), null, null, targets,
+                    "The script has no <main>: see the Lanes, Ring or Phase view.");
+        }
+        for (ProgramLane.Step s : lane.get().steps()) {
+            if (mine(s.pos(), file)) {
+                targets.put(s.pos(), new Target("<main> entry " + s.index() + ": " + s.behavior(), List.of(
+                        new Field("time", s.time() == null ? "" : s.time(),
+                                v -> DiagramEdits.setAttribute(text, s.pos(), "time", v))), s.index(),
+                        to -> DiagramEdits.moveEntry(text, p.mainDef().orElseThrow(), s.index(), to)));
+            }
+        }
+        return new Projection(text, file, View.PROGRAM, List.of(), null, Layouts.program(lane.get()), targets, "");
+    }
+
+    private static Projection lanes(String text, Path file, Program p, String subject, Map<SourcePos, Target> targets) {
+        List<String> names = p.behaviors().stream().map(Behavior::name).toList();
+        if (names.isEmpty()) {
+            return new Projection(text, file, View.LANES, names, null, null, targets, "The script has no behaviors.");
+        }
+        String chosen = names.contains(subject) ? subject
+                : p.main() != null && !p.main().entries().isEmpty() ? p.main().entries().get(0).behavior() : names.get(0);
+        Swimlanes s = Diagrams.swimlanes(p, p.behavior(chosen).orElseThrow());
+        for (Swimlanes.Lane l : s.lanes()) {
+            for (Swimlanes.Bar b : l.bars()) {
+                if (mine(b.pos(), file)) {
+                    targets.put(b.pos(), instanceTarget(text, "instance " + b.index() + ": " + b.automaton() + " on "
+                            + (b.mirrored() ? "!" : "") + l.group(), b.pos(), b.phase(), b.offset()));
+                }
+            }
+        }
+        return new Projection(text, file, View.LANES, names, chosen, Layouts.lanes(s), targets, islands(s.islands().size()),
+                null, null, List.of(), s);
+    }
+
+    private static Target instanceTarget(String text, String title, SourcePos pos, String phase, String offset) {
+        return new Target(title, List.of(
+                new Field("phase", phase == null ? "" : phase, v -> DiagramEdits.setAttribute(text, pos, "phase", v)),
+                new Field("offset", offset == null ? "" : offset, v -> DiagramEdits.setAttribute(text, pos, "offset", v))));
+    }
+
+    private static Projection ring(String text, Path file, Program p, String subject, Map<SourcePos, Target> targets) {
+        List<String> names = p.automata().stream().map(Automaton::name).toList();
+        if (names.isEmpty()) {
+            return new Projection(text, file, View.RING, names, null, null, targets, "The script has no automata.");
+        }
+        String chosen = names.contains(subject) ? subject : names.get(0);
+        final Automaton a = p.automaton(chosen).orElseThrow();
+        Ring r = Diagrams.ring(a);
+        if (mine(a.pos(), file)) {
+            if (!a.table()) {
+                targets.put(a.pos(), new Target("automaton " + a.name() + " (click an arc for a state)", List.of(
+                        new Field("add state", "", v -> DiagramEdits.addState(text, p, a, v, "1")))));
+            }
+            for (Ring.Arc arc : r.arcs()) {
+                targets.putIfAbsent(arc.pos(), new Target("state " + arc.index() + " of " + a.name() + ": " + arc.state(),
+                        List.of(new Field("duration", arc.duration(), v -> DiagramEdits.retime(text, a, arc.index(), v)))));
+            }
+        }
+        List<List<String>> automata = new ArrayList<>();
+        if (p.main() != null) {
+            for (var e : p.main().entries()) {
+                automata.add(p.behavior(e.behavior()).map(b -> b.instances().stream().map(Instance::automaton).toList())
+                        .orElse(List.of()));
+            }
+        }
+        return new Projection(text, file, View.RING, names, chosen, Layouts.ring(r), targets, islands(r.islands().size()),
+                null, r, automata, null);
+    }
+
+    private static Projection phase(String text, Path file, Program p, String subject, Map<SourcePos, Target> targets) {
+        Map<String, Instance> all = new LinkedHashMap<>();
+        Map<String, Behavior> of = new LinkedHashMap<>();
+        for (Behavior b : p.behaviors()) {
+            List<Instance> list = b.instances();
+            for (int i = 0; i < list.size(); i++) {
+                String label = b.name() + " #" + i + ": " + list.get(i).automaton() + " on " + list.get(i).group();
+                all.put(label, list.get(i));
+                of.put(label, b);
+            }
+        }
+        List<String> labels = new ArrayList<>(all.keySet());
+        if (labels.isEmpty()) {
+            return new Projection(text, file, View.PHASE, labels, null, null, targets, "The script has no automaton instances.");
+        }
+        String chosen = all.containsKey(subject) ? subject : labels.get(0);
+        Instance in = all.get(chosen);
+        Group g = Diagrams.groupOf(p, of.get(chosen), in).orElse(null);
+        if (g == null) {
+            return new Projection(text, file, View.PHASE, labels, chosen, null, targets, "The group of " + chosen
+                    + " is a macro that no <main> entry gives a value.");
+        }
+        PhaseWheel w = Diagrams.wheel(in, g);
+        Scene sc = Layouts.wheel(w);
+        if (mine(in.pos(), file)) {
+            targets.put(in.pos(), instanceTarget(text, chosen, in.pos(), in.phase() == null ? null : in.phase().text(),
+                    in.offset() == null ? null : in.offset().text()));
+        }
+        return new Projection(text, file, View.PHASE, labels, chosen, sc, targets, islands(w.islands().size()), w, null, List.of(), null);
+    }
+
+    private static String islands(int n) {
+        return n == 0 ? "" : n + (n == 1 ? " thing" : " things") + " the view cannot draw: listed under it (click one to open"
+                + " its text).";
+    }
+}
