@@ -182,9 +182,16 @@ class ServoBusOverPtyTest {
         bus.torque(IDS, ms, 4, true);
         int[] ticks = {xl430.ticks(20), xl320.ticks(-20), xl430.ticks(30), xl320.ticks(-30)};
         bus.writeGoals(IDS, ms, ticks, 4);
-        // every servo must have arrived, not only the last one: they move at different speeds
-        await(() -> Math.abs(emulator.angle(1) - 20) < 0.1 && Math.abs(emulator.angle(2) + 20) < 0.3
-                && Math.abs(emulator.angle(3) - 30) < 0.1 && Math.abs(emulator.angle(4) + 30) < 0.3);
+        // every servo must have arrived at its goal tick, not only the last one: they move at
+        // different speeds (near the goal, a servo still moving can read one tick short)
+        await(() -> {
+            for (int i = 0; i < 4; i++) {
+                if (Math.abs(emulator.angle(IDS[i]) - ms[i].tickDegrees(ticks[i])) > 1e-6) {
+                    return false;
+                }
+            }
+            return true;
+        });
         double[] deg = new double[4];
         int[] err = new int[4];
         assertEquals(4, bus.readPositions(IDS, ms, 4, deg, err));
