@@ -17,10 +17,14 @@ import org.eclipse.swt.widgets.Spinner;
 import org.eclipse.swt.widgets.Table;
 import org.eclipse.swt.widgets.TableColumn;
 import org.eclipse.swt.widgets.TableItem;
+import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.io.OutputPlan;
 import org.parpe.serial.link.SerialLink;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.ServoProtocol;
+import org.parpe.serial.servo.profile.HardwareProfile;
+import org.parpe.serial.servo.profile.ProfileReader;
+import org.parpe.serial.servo.profile.ServoMapping;
 
 /**
  * Run → Hardware…: connect to a servo bus (port, protocol, baud) or scan for one, see the servos
@@ -52,6 +56,8 @@ final class HardwareDialog {
     private List<HardwareSession.Servo> servos = List.of();
     /** The row the jog box was set up for (−1: none). */
     private int jogRow = -1;
+    /** The selected servo's position is not known yet: the jog box is set up when it is. */
+    private boolean jogAwaitsPosition;
 
     private HardwareDialog(IdeWindow ide) {
         this.ide = ide;
@@ -275,25 +281,64 @@ final class HardwareDialog {
     }
 
     /**
-     * A servo was selected: the jog box takes its present position and the model's range (rounded
-     * inwards to tenths), and stays off while the position is not known.
+     * A servo was selected: the jog box takes its present position and the model's range, narrowed
+     * to the joint limits of the tool bar's hardware profile when it maps this servo (rounded
+     * inwards to tenths), and stays off while the position is not known or no angle is allowed.
      */
     private void selected() {
         int r = table.getSelectionIndex();
         ServoModel m = r < 0 || r >= servos.size() ? null : servos.get(r).model();
         double deg = m == null ? Double.NaN : servos.get(r).degrees();
-        jogBox.setEnabled(m != null && !Double.isNaN(deg));
         jogRow = m == null ? -1 : r;
+        jogAwaitsPosition = m != null && Double.isNaN(deg);
         if (m == null || Double.isNaN(deg)) {
+            jogBox.setEnabled(false);
             jogValue.setText(m == null ? "" : "position not known yet");
             return;
         }
-        int lo = (int) Math.ceil(m.minDegrees() * STEPS_PER_DEG - 1e-9);
-        int hi = (int) Math.floor(m.maxDegrees() * STEPS_PER_DEG + 1e-9);
+        double min = m.minDegrees();
+        double max = m.maxDegrees();
+        String whose = "range";
+        ServoMapping limits = profileLimits(servos.get(r).id(), m);
+        if (limits != null) {
+            double a = limits.servoAngle(limits.min());
+            double b = limits.servoAngle(limits.max());
+            min = Math.max(min, Math.min(a, b));
+            max = Math.min(max, Math.max(a, b));
+            whose = "module " + limits.module() + "'s limits";
+        }
+        int lo = (int) Math.ceil(min * STEPS_PER_DEG - 1e-9);
+        int hi = (int) Math.floor(max * STEPS_PER_DEG + 1e-9);
+        jogBox.setEnabled(lo <= hi);
+        if (lo > hi) {
+            jogValue.setText("no angle within " + whose);
+            return;
+        }
         int at = (int) Math.max(lo, Math.min(hi, Math.round(deg * STEPS_PER_DEG)));
         jogBox.setValues(at, lo, hi, 1, JOG_STEP, JOG_PAGE);
-        jogValue.setText(String.format(Locale.ROOT, "range %s..%s", degrees(lo / (double) STEPS_PER_DEG),
+        jogValue.setText(String.format(Locale.ROOT, "%s %s..%s", whose, degrees(lo / (double) STEPS_PER_DEG),
                 degrees(hi / (double) STEPS_PER_DEG)));
+    }
+
+    /**
+     * The mapping of servo {@code id} (of {@code model}'s protocol) in the tool bar's hardware
+     * profile, or null when there is no profile, it does not load, or it does not map the servo.
+     */
+    private ServoMapping profileLimits(int id, ServoModel model) {
+        String file = ide.toolbar().hardwareProfile();
+        if (file == null) {
+            return null;
+        }
+        HardwareProfile p = ProfileReader.read(Path.of(file), new DiagnosticList());
+        if (p == null || p.protocol() != model.protocol()) {
+            return null;
+        }
+        for (ServoMapping s : p.servos()) {
+            if (s.servo() == id) {
+                return s;
+            }
+        }
+        return null;
     }
 
     private void jog() {
@@ -355,7 +400,7 @@ final class HardwareDialog {
             selected();
         } else if (sel >= 0) {
             table.setSelection(sel);
-            if (!jogBox.isEnabled() && sel == jogRow) {
+            if (jogAwaitsPosition && sel == jogRow) {
                 selected();
             }
         }
@@ -434,6 +479,11 @@ final class HardwareDialog {
         return table;
     }
 
+    String jogValueText() {
+        return jogValue.getText();
+    }
+
+    /** The jog box (tests). */
     Spinner jogBox() {
         return jogBox;
     }

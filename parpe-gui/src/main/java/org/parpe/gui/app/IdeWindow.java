@@ -43,6 +43,7 @@ public final class IdeWindow {
     private static final String MAXIMISED = "window.maximised";
     private static final String FIRST_START = "tutorial.offered";
     private final Prefs prefs;
+    private final AlarmBanner alarm;
     private final MenuBar menus;
     private final RunChoices choices;
     private final ParslEditor editor;
@@ -84,6 +85,7 @@ public final class IdeWindow {
         runs = new RunActions(this);
         toolbar = new RunToolBar(shell, runs, prefs);
         toolbar.control().setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        alarm = new AlarmBanner(shell);
 
         SashForm main = new SashForm(shell, SWT.HORIZONTAL);
         main.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
@@ -265,8 +267,11 @@ public final class IdeWindow {
                     : "Simulator: idle";
             status.setSim(simState);
             String held = hardwareHeld;
-            status.setHardware(held != null && !running ? held : runs.hardwareState(),
-                    running && runs.hardwareSilentSince() >= 0);
+            boolean silent = running && runs.hardwareSilentSince() >= 0;
+            String hardware = held != null && !running ? held : runs.hardwareState();
+            status.setHardware(hardware, silent);
+            alarm.show(silent ? hardware.replaceFirst("^Hardware: r", "R")
+                    + ". Check the servo supply and the cable; Esc stops the run." : null);
             if (st != null) {
                 status.setTime(st.time());
             }
@@ -275,6 +280,11 @@ public final class IdeWindow {
             }
             tickStatus();
         });
+    }
+
+    /** The red banner under the tool bar while the robot does not answer (tests). */
+    AlarmBanner alarm() {
+        return alarm;
     }
 
     /** Opens the window; then {@code file} if given, else recovers or starts a new script. */

@@ -180,6 +180,22 @@ class HardwareDialogGuiTest {
             assertEquals(3, p.servos().size());
             assertEquals(3, p.servos().get(2).servo());
 
+            // Issue 20, item 10: with a profile on the tool bar the jog keeps to the joint's limits
+            // (servo angle = zero + direction * joint), not only to the model's range.
+            Path limited = dir.resolve("limited.xml");
+            Files.writeString(limited, "<hardware protocol=\"dxl2\" port=\"" + pty.a() + "\" baud=\"1000000\">\n"
+                    + "  <servo module=\"0\" id=\"3\" model=\"xl430-w250\" zero=\"10\" direction=\"-1\" min=\"-60\" max=\"5\"/>\n"
+                    + "</hardware>\n");
+            ide.toolbar().setHardwareProfile(limited.toString());
+            d.table().setSelection(2);
+            d.table().notifyListeners(SWT.Selection, new Event());
+            Gui.pump(() -> d.jogBox().isEnabled(), "the jog box for servo 3 again");
+            assertEquals(50, d.jogBox().getMinimum(), "servo angle of joint max 5°: 10 - 5 = 5°");
+            assertEquals(700, d.jogBox().getMaximum(), "servo angle of joint min -60°: 10 + 60 = 70°");
+            assertEquals(700, d.jogBox().getSelection(), "servo 3 at 81.8° shows the nearest allowed angle");
+            assertTrue(d.jogValueText().startsWith("module 0's limits 5"), d.jogValueText());
+            ide.toolbar().setHardwareProfile(profile.toString());
+
             Gui.open(ide, Gui.example("hello-snake.xml"));
             ide.toolbar().setTarget(Target.HARDWARE);
             AtomicReference<RunOutcome> outcome = new AtomicReference<>();

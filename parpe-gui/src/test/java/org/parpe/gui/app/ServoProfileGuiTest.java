@@ -2,6 +2,7 @@ package org.parpe.gui.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
@@ -153,12 +154,19 @@ class ServoProfileGuiTest {
             assertTrue(ide.status().hardware().matches("Hardware: robot not responding since \\d\\d:\\d\\d:\\d\\d"),
                     ide.status().hardware());
             assertTrue(ide.status().message().startsWith("Robot not responding since "), ide.status().message());
+            // and a banner across the window says it, to be seen from across a classroom
+            String banner = ide.alarm().shown();
+            assertNotNull(banner, "no banner while the robot does not answer");
+            assertTrue(banner.startsWith("Robot not responding since "), banner);
+            Gui.settle();
+            Gui.screenshot(ide.shell(), "robot-not-responding.png");
             Gui.screenshot(ide.shell(), "hardware-alarm.png");
             ide.runs().stop();
             pump(() -> outcome.get() != null, "the run to stop");
             pump(() -> ide.problems().shown().stream().anyMatch(d ->
                     d.message().startsWith("emergency stop sent but not confirmed")), "the stop said unconfirmed");
             pump(() -> !ide.status().hardwareAlarm(), "the alarm to end with the run");
+            pump(() -> ide.alarm().shown() == null, "the banner to go with the alarm");
         }
     }
 }
