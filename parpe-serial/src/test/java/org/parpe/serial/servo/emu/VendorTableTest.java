@@ -274,6 +274,21 @@ class VendorTableTest {
     }
 
     @Test
+    void feetechStsEepromRegistersAreTheMemoryTablesInitialValues() {
+        // FEETECH magnetic-encoder STS servo memory table ("STS Servo - Memory Table Analysis",
+        // 2.2 EPROM Configuration, little-endian): ID(5) 1, Baud Rate(6) 0 (1 000 000),
+        // Response Status Level(8) 1, Minimum Angle Limit(9) 0, Maximum Angle Limit(11) 4095,
+        // Maximum Temperature Limit(13) 70.
+        servos("sts3215", 1);
+        int[][] rows = {{5, 1, 1}, {6, 1, 0}, {8, 1, 1}, {9, 2, 0}, {11, 2, 4095}, {13, 1, 70}};
+        for (int[] r : rows) {
+            List<Reply> got = send(1, PacketCodec.READ, r[0], r[1]);
+            assertEquals(1, got.size(), "one reply to a read of address " + r[0]);
+            assertEquals(r[2], got.get(0).le(0, r[1]), "address " + r[0]);
+        }
+    }
+
+    @Test
     void feetechStsAnswersABroadcastPingAndScsHasNoSyncRead() {
         // Feetech's SCServo library: SMS_STS servos have Sync Read; SCSCL (SCS series) has none,
         // so an SCS servo must not answer one.
