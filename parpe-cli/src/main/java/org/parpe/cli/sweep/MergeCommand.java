@@ -138,7 +138,7 @@ public final class MergeCommand implements Callable<Integer> {
             SweepResult result;
             try {
                 merged = SweepCsv.merge(shards);
-                if (goal == Objective.SCORE && !merged.get(0).endsWith(",score")) {
+                if (goal == Objective.SCORE && !SweepCsv.scored(merged.get(0))) {
                     throw new UsageException("--objective score needs the shards of a sweep in a world (with a score column)");
                 }
                 result = png == null ? null : SweepCsv.read(merged);

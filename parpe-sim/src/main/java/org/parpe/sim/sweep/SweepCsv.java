@@ -27,6 +27,8 @@ import org.parpe.core.lang.Numbers;
  * the last row says that it holds them all. {@link #merge} checks both and drops them.
  */
 public final class SweepCsv {
+    /** The last column of a sweep in a world. */
+    private static final String SCORE = "score";
     private static final Pattern SHARD_START =
             Pattern.compile("# parpe sweep shard (\\d{1,6})/(\\d{1,6}): (\\d{1,9}) runs from run (\\d{1,9}) of (\\d{1,9})");
     private static final String SHARD_END = "# parpe sweep shard %d/%d: complete";
@@ -87,7 +89,12 @@ public final class SweepCsv {
 
     /** The header line for a sweep of {@code axes}; {@code scored}: with a last column {@code score} (a sweep in a world). */
     public static String header(List<Axis> axes, boolean scored) {
-        return header(axes) + (scored ? ",score" : "");
+        return header(axes) + (scored ? "," + SCORE : "");
+    }
+
+    /** Whether {@code header} is that of a sweep in a world: its last column is the score. */
+    public static boolean scored(String header) {
+        return header.endsWith("," + SCORE);
     }
 
     /** The line of {@code row} in a sweep of {@code runs} runs; {@code scored}: with its score last. */
@@ -122,7 +129,7 @@ public final class SweepCsv {
      */
     public static SweepResult read(List<String> lines) throws SweepException {
         String[] head = lines.get(0).split(",", -1);
-        boolean scored = head.length > 0 && head[head.length - 1].equals("score");
+        boolean scored = scored(lines.get(0));
         int params = head.length - 14 - (scored ? 1 : 0);
         int columns = params + 14;
         List<SweepRow> rows = new ArrayList<>();
