@@ -1,14 +1,16 @@
 package org.parpe.gui;
 
+import org.parpe.gui.automation.LaunchOptions;
+
 import java.util.Arrays;
 import java.util.List;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.SWTError;
 import org.eclipse.swt.widgets.Display;
-import org.parpe.gui.app.Automation;
-import org.parpe.gui.app.Bench;
+import org.parpe.gui.automation.Automation;
+import org.parpe.gui.automation.Bench;
 import org.parpe.gui.app.IdeWindow;
-import org.parpe.gui.app.Prefs;
+import org.parpe.gui.prefs.Prefs;
 import org.parpe.gui.run.CrashLog;
 
 /**
@@ -65,7 +67,7 @@ public final class Main {
 
     private static int loop(Display display, LaunchOptions options) {
         // The installed PARPE copies its examples to the user's own folder on first use.
-        org.parpe.gui.app.Examples.folder();
+        org.parpe.gui.files.Examples.folder();
         IdeWindow ide = new IdeWindow(display, new Prefs(Prefs.defaultHome()));
         ide.open(options.file(), options.automated());
         Automation auto = options.automated() ? Automation.start(ide, options) : null;

@@ -1,5 +1,12 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.prefs.Prefs;
+
+import org.parpe.gui.files.FileActions;
+import org.parpe.gui.hardware.HardwareDialog;
+import org.parpe.gui.hardware.HardwareHost;
+import org.parpe.gui.view3d.ModuleCameraWindow;
+
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -35,7 +42,7 @@ import org.parpe.gui.view3d.View3D;
  * plots, with the menu bar, the run tool bar and the status bar. Owns the wiring between them;
  * UI thread only (other threads use {@link #logLater}).
  */
-public final class IdeWindow {
+public final class IdeWindow implements HardwareHost {
     private final Shell shell;
     /** Problems one run may add to the view; more are logged only. */
     static final int RUN_PROBLEM_LIMIT = 500;
@@ -519,6 +526,7 @@ public final class IdeWindow {
         post(() -> log(line));
     }
 
+    @Override
     public Shell shell() {
         return shell;
     }
@@ -541,20 +549,56 @@ public final class IdeWindow {
         return gaitGrid;
     }
 
-    FileActions files() {
+    public FileActions files() {
         return files;
     }
 
-    RunActions runs() {
+    public RunActions runs() {
         return runs;
     }
 
-    /** The open Hardware dialog, or null. */
-    HardwareDialog hardwareDialog() {
+    @Override
+    public String port() {
+        return toolbar().port();
+    }
+
+    @Override
+    public void setPort(String port) {
+        toolbar().setPort(port);
+    }
+
+    @Override
+    public String hardwareProfile() {
+        return toolbar().hardwareProfile();
+    }
+
+    @Override
+    public void setHardwareProfile(String file) {
+        toolbar().setHardwareProfile(file);
+    }
+
+    @Override
+    public void hardwareGone() {
+        pose().hardwareGone();
+    }
+
+    @Override
+    public org.eclipse.swt.widgets.Control posePanel() {
+        return pose().control();
+    }
+
+    @Override
+    public java.util.List<java.nio.file.Path> openFiles() {
+        return files().openFiles();
+    }
+
+    @Override
+    public HardwareDialog hardwareDialog() {
         return hardwareDialog;
     }
 
-    void setHardwareDialog(HardwareDialog d) {
+    @Override
+    public void setHardwareDialog(HardwareDialog d) {
         hardwareDialog = d;
     }
 
@@ -563,16 +607,16 @@ public final class IdeWindow {
         return hardwareHeld;
     }
 
-    /** What the status bar says while the Hardware dialog holds a bus; null when it holds none. */
-    void setHardwareHeld(String state) {
+    @Override
+    public void setHardwareHeld(String state) {
         hardwareHeld = state;
     }
 
-    StatusBar status() {
+    public StatusBar status() {
         return status;
     }
 
-    RunToolBar toolbar() {
+    public RunToolBar toolbar() {
         return toolbar;
     }
 
@@ -610,7 +654,7 @@ public final class IdeWindow {
         choices.targetChosen(target);
     }
 
-    ViewBar viewBar() {
+    public ViewBar viewBar() {
         return viewBar;
     }
 
@@ -631,6 +675,11 @@ public final class IdeWindow {
     }
 
     /** The last program that loaded, or null. */
+    /** Opens a module camera window on the run, looking from the script's last module. */
+    public ModuleCameraWindow openModuleCamera() {
+        return ModuleCameraWindow.open(shell(), runs::snapshot, program != null ? program.moduleIds() : new int[0]);
+    }
+
     public Program program() {
         return program;
     }

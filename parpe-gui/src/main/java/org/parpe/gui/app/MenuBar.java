@@ -1,5 +1,12 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.editor.FindReplaceDialog;
+import org.parpe.gui.files.Examples;
+import org.parpe.gui.files.FileActions;
+import org.parpe.gui.hardware.HardwareDialog;
+import org.parpe.gui.help.HelpText;
+import org.parpe.gui.help.QuickReference;
+
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;

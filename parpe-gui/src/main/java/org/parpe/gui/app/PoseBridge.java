@@ -1,5 +1,8 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.hardware.DialogHardware;
+import org.parpe.gui.hardware.HardwareDialog;
+
 import java.nio.file.Path;
 import java.util.Map;
 import java.util.function.Consumer;

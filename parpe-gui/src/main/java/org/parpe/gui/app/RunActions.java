@@ -1,5 +1,7 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.hardware.HardwareDialog;
+
 import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.HashSet;
@@ -49,7 +51,7 @@ import org.parpe.sim.config.RobotConfigs;
  * simulator, serial bus, plot recorder) and keeps the robot preview of the 3D view. The
  * engine runs on the {@link RunController}'s thread; everything here runs on the UI thread.
  */
-final class RunActions implements ControlPanel.Target {
+public final class RunActions implements ControlPanel.Target {
     private final IdeWindow ide;
     private final RunController controller;
     private final ExecutorService previewer = Executors.newSingleThreadExecutor(r -> {
@@ -77,7 +79,7 @@ final class RunActions implements ControlPanel.Target {
         return controller;
     }
 
-    boolean running() {
+    public boolean running() {
         return controller.running();
     }
 
@@ -86,7 +88,7 @@ final class RunActions implements ControlPanel.Target {
     }
 
     /** The picture for the 3D view: the running simulator's, else the preview. */
-    SimSnapshot snapshot() {
+    public SimSnapshot snapshot() {
         Simulator s = sim;
         return s != null ? s.snapshot() : preview;
     }
@@ -133,7 +135,7 @@ final class RunActions implements ControlPanel.Target {
      * @param runFor      simulated seconds to run, or negative for until the program ends
      * @param onEnd       also told the outcome (automation), may be null
      */
-    void run(boolean interactive, double runFor, Consumer<RunOutcome> onEnd) {
+    public void run(boolean interactive, double runFor, Consumer<RunOutcome> onEnd) {
         if (controller.running()) {
             if (controller.paused()) {
                 pause();
@@ -387,7 +389,7 @@ final class RunActions implements ControlPanel.Target {
         }
     }
 
-    void stop() {
+    public void stop() {
         controller.stop();
     }
 

@@ -1,5 +1,7 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.prefs.Prefs;
+
 import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.Map;

@@ -1,5 +1,7 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.prefs.Prefs;
+
 import java.util.List;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.GridData;
@@ -18,7 +20,7 @@ import org.parpe.gui.run.Target;
 import org.parpe.serial.link.SerialLink;
 
 /** The run tool bar: Run, Pause, Stop, emergency stop, speed, target, serial port and hardware profile. */
-final class RunToolBar {
+public final class RunToolBar {
     private final Composite bar;
     private final ToolItem run;
     private final ToolItem pause;
@@ -161,7 +163,7 @@ final class RunToolBar {
     }
 
     /** Selects a target (automation runs in the simulator). */
-    void setTarget(Target t) {
+    public void setTarget(Target t) {
         target.select(t.ordinal());
         updatePort();
     }
@@ -173,7 +175,7 @@ final class RunToolBar {
     }
 
     /** Selects a speed without remembering it (automation). */
-    void setSpeed(Speed s) {
+    public void setSpeed(Speed s) {
         speed.select(s.ordinal());
     }
 
@@ -182,23 +184,23 @@ final class RunToolBar {
         return estop;
     }
 
-    String port() {
+    public String port() {
         return port.getText().trim();
     }
 
     /** The hardware profile chosen, or null for G1 modules without one. */
-    String hardwareProfile() {
+    public String hardwareProfile() {
         String p = profile.getText().trim();
         return p.isEmpty() ? null : p;
     }
 
     /** Types a hardware profile into the profile box (automation, tests). */
-    void setHardwareProfile(String p) {
+    public void setHardwareProfile(String p) {
         profile.setText(p);
     }
 
     /** Types a serial port into the port box (automation, tests). */
-    void setPort(String p) {
+    public void setPort(String p) {
         port.setText(p);
     }
 

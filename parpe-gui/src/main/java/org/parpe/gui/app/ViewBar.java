@@ -1,5 +1,8 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.prefs.Prefs;
+
+
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.widgets.Button;
@@ -15,7 +18,7 @@ import org.parpe.sim.config.RobotConfigs;
  * The bar above the 3D view: the simulated robot (automatic, one of the simulator's generators,
  * or a configuration file), the world it runs in, TrackRobot, module IDs and a reset of the camera.
  */
-final class ViewBar {
+public final class ViewBar {
     private static final String BROWSE = "Configuration file\u2026";
 
     private final IdeWindow ide;
@@ -59,7 +62,7 @@ final class ViewBar {
         Button cameraButton = new Button(bar, SWT.PUSH);
         cameraButton.setText("Camera\u2026");
         cameraButton.setToolTipText("What a camera on one module sees (for driving through rubble)");
-        cameraButton.addListener(SWT.Selection, e -> ModuleCameraWindow.open(ide));
+        cameraButton.addListener(SWT.Selection, e -> ide.openModuleCamera());
         reset.setToolTipText("Frame the whole robot again (or double-click the view). Drag: rotate; right-drag: pan; wheel: zoom");
         track.addListener(SWT.Selection, e -> prefs.put("view.track", Boolean.toString(track.getSelection())));
         ids.addListener(SWT.Selection, e -> prefs.put("view.ids", Boolean.toString(ids.getSelection())));
@@ -134,7 +137,7 @@ final class ViewBar {
     }
 
     /** Turns TrackRobot on or off for now (automation framing a group), without changing the preference. */
-    void trackRobot(boolean on) {
+    public void trackRobot(boolean on) {
         track.setSelection(on);
         ide.view().setTrackRobot(on);
     }

@@ -1,5 +1,9 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.prefs.Prefs;
+
+import org.parpe.gui.files.Examples;
+
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;

@@ -1,2 +1,2 @@
-/** The IDE window: menus, tool bar, status bar, files, autosave, examples, automation and benchmarks. */
+/** The IDE window: its parts, menus, tool bars, status bar and alarm banner, and the run actions they trigger. */
 package org.parpe.gui.app;

@@ -8,7 +8,7 @@ import java.nio.file.Path;
 import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
 import org.parpe.core.io.AtomicFiles;
-import org.parpe.gui.app.Prefs;
+import org.parpe.gui.prefs.Prefs;
 
 /**
  * Writes internal failures to a file under {@code ~/.parpe/crash/} so that the user sees one

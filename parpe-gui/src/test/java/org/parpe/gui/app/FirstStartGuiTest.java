@@ -1,5 +1,10 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.prefs.Prefs;
+
+import org.parpe.gui.help.HelpText;
+import org.parpe.gui.help.QuickReference;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 

@@ -1,5 +1,10 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.prefs.Prefs;
+
+import org.parpe.gui.automation.Screenshot;
+import org.parpe.gui.files.Examples;
+
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
 
@@ -76,20 +81,20 @@ public final class Gui {
     }
 
     /** Opens {@code file} in {@code ide} and waits until it is in the editor (files are read in the background). */
-    static void open(IdeWindow ide, Path file) {
+    public static void open(IdeWindow ide, Path file) {
         Path abs = file.toAbsolutePath().normalize();
         ide.files().openPath(abs);
         pump(() -> !ide.files().reading() && abs.equals(ide.files().file()), "opening " + file.getFileName());
     }
 
-    static Path example(String name) {
+    public static Path example(String name) {
         Path p = Examples.folder() == null ? null : Examples.folder().resolve(name);
         assertTrue(p != null && Files.isRegularFile(p), "example " + name + " not found (parpe.examples=" + System.getProperty("parpe.examples") + ")");
         return p;
     }
 
     /** Saves a screenshot of {@code shell} under the artefacts folder and checks it is not blank. */
-    static void screenshot(Shell shell, String name) throws Exception {
+    public static void screenshot(Shell shell, String name) throws Exception {
         Path dir = Path.of(System.getProperty("parpe.artefacts", "target/gui-test-artefacts"));
         Files.createDirectories(dir);
         Path f = dir.resolve(name);
@@ -100,7 +105,7 @@ public final class Gui {
     }
 
     /** A new IDE window, automated (no recovery offered), with its settings in {@code home}, after its first validation. */
-    static IdeWindow openIde(Path home) {
+    public static IdeWindow openIde(Path home) {
         IdeWindow ide = new IdeWindow(display(), new Prefs(home));
         ide.open(null, true);
         pump(() -> ide.validations() > 0, "the first validation");
@@ -108,7 +113,7 @@ public final class Gui {
     }
 
     /** Ends any run of {@code ide} and closes its window (for {@code @AfterAll}). */
-    static void closeIde(IdeWindow ide) {
+    public static void closeIde(IdeWindow ide) {
         if (ide != null && !ide.shell().isDisposed()) {
             endRun(ide);
             ide.shell().dispose();

@@ -1,5 +1,8 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.hardware.HardwareDialog;
+import org.parpe.gui.hardware.HardwareSession;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;

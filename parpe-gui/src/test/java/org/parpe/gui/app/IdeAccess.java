@@ -1,5 +1,7 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.hardware.HardwareDialog;
+
 import java.nio.file.Path;
 import java.util.function.BooleanSupplier;
 import java.util.function.Consumer;

@@ -1,5 +1,9 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.prefs.Prefs;
+
+import org.parpe.gui.files.Autosave;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;

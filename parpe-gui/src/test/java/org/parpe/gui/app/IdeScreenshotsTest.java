@@ -1,5 +1,7 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.automation.Screenshot;
+
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 

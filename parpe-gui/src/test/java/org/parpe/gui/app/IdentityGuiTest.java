@@ -1,5 +1,7 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.help.HelpText;
+
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 

@@ -1,5 +1,7 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.prefs.Prefs;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 

@@ -1,5 +1,10 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.prefs.Prefs;
+
+import org.parpe.gui.automation.Screenshot;
+import org.parpe.gui.files.Examples;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;

@@ -1,5 +1,7 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.view3d.ModuleCameraWindow;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -101,7 +103,7 @@ class WorldGuiTest {
         assertTrue(s.centerOfMass().x() > 0.4, "the robot started at the world's start and moved: " + s.centerOfMass());
         assertTrue(ide.status().message().contains("; score "), "the status gives the score: " + ide.status().message());
         Gui.screenshot(ide.shell(), "world-" + world + ".png");
-        ModuleCameraWindow camera = ModuleCameraWindow.open(ide);
+        ModuleCameraWindow camera = ide.openModuleCamera();
         try {
             camera.shell().setSize(720, 520);
             camera.setModule(7);

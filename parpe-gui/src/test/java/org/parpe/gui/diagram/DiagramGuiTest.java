@@ -20,7 +20,7 @@ import org.junit.jupiter.api.Test;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.gui.app.IdeAccess;
 import org.parpe.gui.app.IdeWindow;
-import org.parpe.gui.app.Screenshot;
+import org.parpe.gui.automation.Screenshot;
 import org.parpe.gui.diagram.Projection.View;
 
 /**

@@ -7,7 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import org.parpe.gui.LaunchOptions;
+import org.parpe.gui.automation.LaunchOptions;
 
 /** {@code parpe gui FILE --grid NAME}, the option that shows a table in the grid for screenshots. */
 class GridOptionTest {

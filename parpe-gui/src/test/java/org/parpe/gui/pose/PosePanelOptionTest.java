@@ -5,7 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import org.parpe.gui.LaunchOptions;
+import org.parpe.gui.automation.LaunchOptions;
 
 /** {@code parpe gui FILE --pose-panel}: the option is parsed, documented, and makes the launch automated. */
 class PosePanelOptionTest {

@@ -14,7 +14,7 @@ import org.eclipse.swt.widgets.MenuItem;
 import org.eclipse.swt.widgets.Shell;
 import org.junit.jupiter.api.Test;
 import org.parpe.gui.app.IdeWindow;
-import org.parpe.gui.app.Prefs;
+import org.parpe.gui.prefs.Prefs;
 
 /** Run → Sweep / Optimise… in the IDE window opens the dialog on the editor's script, once. */
 class SweepMenuGuiTest {

@@ -13,7 +13,7 @@ import org.eclipse.swt.widgets.Display;
 import org.eclipse.swt.widgets.Event;
 import org.eclipse.swt.widgets.Shell;
 import org.parpe.gui.app.Gui;
-import org.parpe.gui.app.Screenshot;
+import org.parpe.gui.automation.Screenshot;
 
 /** What the sweep dialog's GUI tests share: the display, bounded waits, clicks and screenshots. */
 final class Ui {

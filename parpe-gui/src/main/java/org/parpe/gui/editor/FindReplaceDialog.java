@@ -1,4 +1,4 @@
-package org.parpe.gui.app;
+package org.parpe.gui.editor;
 
 import org.eclipse.jface.dialogs.Dialog;
 import org.eclipse.jface.text.IFindReplaceTarget;
@@ -18,7 +18,7 @@ import org.eclipse.swt.widgets.Text;
  * A modeless Find/Replace dialog over the editor's {@link IFindReplaceTarget}: find next or
  * previous, replace, replace all, with case and whole-word options; wraps around at the ends.
  */
-final class FindReplaceDialog extends Dialog {
+public final class FindReplaceDialog extends Dialog {
     private final IFindReplaceTarget target;
     private final Runnable refocus;
     private Text find;
@@ -27,7 +27,7 @@ final class FindReplaceDialog extends Dialog {
     private Button wholeWord;
     private Label status;
 
-    FindReplaceDialog(Shell parent, IFindReplaceTarget target, Runnable refocus) {
+    public FindReplaceDialog(Shell parent, IFindReplaceTarget target, Runnable refocus) {
         super(parent);
         this.target = target;
         this.refocus = refocus;

@@ -1,4 +1,5 @@
-package org.parpe.gui.app;
+package org.parpe.gui.view3d;
+
 
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.GridData;
@@ -14,15 +15,15 @@ import org.parpe.gui.view3d.ModuleCameraView;
  * CCD camera for teleoperation through the rubble): the module ID to look from, and the view,
  * redrawn from the IDE's snapshots about 20 times a second while the window is open.
  */
-final class ModuleCameraWindow {
+public final class ModuleCameraWindow {
     private static final int FRAME_MS = 50;
 
     private final Shell shell;
     private final Spinner id;
     private final ModuleCameraView view;
 
-    private ModuleCameraWindow(IdeWindow ide) {
-        shell = new Shell(ide.shell(), SWT.SHELL_TRIM | SWT.TOOL);
+    private ModuleCameraWindow(Shell parent, java.util.function.Supplier<org.parpe.sim.SimSnapshot> source, int[] ids) {
+        shell = new Shell(parent, SWT.SHELL_TRIM | SWT.TOOL);
         shell.setText("Module camera");
         shell.setLayout(new GridLayout(1, false));
         Composite row = new Composite(shell, SWT.NONE);
@@ -33,10 +34,9 @@ final class ModuleCameraWindow {
         id.setToolTipText("The module whose front face carries the camera (the head of a snake is its last module)");
         view = new ModuleCameraView(shell);
         view.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
-        view.setSource(ide.runs()::snapshot);
+        view.setSource(source);
         id.addListener(SWT.Selection, e -> view.setModule(id.getSelection()));
-        if (ide.program() != null && ide.program().moduleIds().length > 0) {
-            int[] ids = ide.program().moduleIds();
+        if (ids.length > 0) {
             id.setSelection(ids[ids.length - 1]);
         }
         view.setModule(id.getSelection());
@@ -44,13 +44,16 @@ final class ModuleCameraWindow {
     }
 
     /** The camera's view (tests). */
-    ModuleCameraView view() {
+    public ModuleCameraView view() {
         return view;
     }
 
-    /** Opens the window for {@code ide}, looking from the script's last module. */
-    static ModuleCameraWindow open(IdeWindow ide) {
-        ModuleCameraWindow w = new ModuleCameraWindow(ide);
+    /**
+     * Opens the window over {@code parent}, showing what {@code source} gives at each frame, looking from
+     * the last of the script's modules {@code ids} (module 0 when there are none).
+     */
+    public static ModuleCameraWindow open(Shell parent, java.util.function.Supplier<org.parpe.sim.SimSnapshot> source, int[] ids) {
+        ModuleCameraWindow w = new ModuleCameraWindow(parent, source, ids);
         w.shell.open();
         w.tick();
         return w;
@@ -65,12 +68,12 @@ final class ModuleCameraWindow {
     }
 
     /** The window. */
-    Shell shell() {
+    public Shell shell() {
         return shell;
     }
 
     /** Looks from module {@code module}. */
-    void setModule(int module) {
+    public void setModule(int module) {
         id.setSelection(module);
         view.setModule(module);
     }

@@ -1,4 +1,5 @@
-package org.parpe.gui.app;
+package org.parpe.gui.hardware;
+
 
 import java.nio.file.Path;
 import java.util.List;
@@ -34,7 +35,7 @@ import org.parpe.serial.servo.profile.ServoMapping;
  * {@link HardwareSession} (its own thread); this class only touches widgets, on the UI thread.
  * Closing the dialog closes the bus.
  */
-final class HardwareDialog {
+public final class HardwareDialog {
     private static final String ANY = "any";
     private static final int[] BAUDS = {57_600, 115_200, 1_000_000, 2_000_000, 3_000_000, 4_000_000, 500_000, 9_600};
     /** The jog box counts tenths of a degree. */
@@ -43,7 +44,7 @@ final class HardwareDialog {
     private static final int JOG_STEP = STEPS_PER_DEG;
     private static final int JOG_PAGE = 5 * STEPS_PER_DEG;
 
-    private final IdeWindow ide;
+    private final HardwareHost ide;
     private final Shell shell;
     private final Combo port;
     private final Combo protocol;
@@ -59,7 +60,7 @@ final class HardwareDialog {
     /** The selected servo's position is not known yet: the jog box is set up when it is. */
     private boolean jogAwaitsPosition;
 
-    private HardwareDialog(IdeWindow ide) {
+    private HardwareDialog(HardwareHost ide) {
         this.ide = ide;
         shell = new Shell(ide.shell(), SWT.DIALOG_TRIM | SWT.RESIZE);
         shell.setText("Hardware");
@@ -70,7 +71,7 @@ final class HardwareDialog {
         label(top, "Port:");
         port = new Combo(top, SWT.DROP_DOWN);
         port.setLayoutData(width(170));
-        port.setText(ide.toolbar().port());
+        port.setText(ide.port());
         port.setToolTipText("Serial device of the servo bus (type a path, or pick one)");
         port.addListener(SWT.MouseDown, e -> listPorts());
         label(top, "Protocol:");
@@ -144,7 +145,7 @@ final class HardwareDialog {
         shell.addListener(SWT.Dispose, e -> {
             session.close();
             ide.setHardwareHeld(null);
-            ide.pose().hardwareGone();
+            ide.hardwareGone();
         });
         listPorts();
         shell.pack();
@@ -163,7 +164,7 @@ final class HardwareDialog {
         org.eclipse.swt.graphics.Rectangle owner = ide.shell().getBounds();
         org.eclipse.swt.graphics.Rectangle screen = ide.shell().getMonitor().getClientArea();
         org.eclipse.swt.graphics.Point size = shell.getSize();
-        org.eclipse.swt.widgets.Control panels = ide.pose().control().getParent();
+        org.eclipse.swt.widgets.Control panels = ide.posePanel().getParent();
         org.eclipse.swt.graphics.Rectangle avoid = ide.shell().getDisplay().map(panels.getParent(), null,
                 panels.getBounds());
         int top = owner.y + Math.max(40, owner.height / 12);
@@ -205,7 +206,7 @@ final class HardwareDialog {
             + "Bus Servo Adapter, …), or type the device's path (e.g. /dev/ttyUSB0 or COM3).";
 
     /** Opens the dialog, or brings the open one to the front. */
-    static HardwareDialog open(IdeWindow ide) {
+    public static HardwareDialog open(HardwareHost ide) {
         HardwareDialog d = ide.hardwareDialog();
         if (d != null && !d.shell.isDisposed()) {
             d.shell.setActive();
@@ -265,7 +266,7 @@ final class HardwareDialog {
                 return;
             }
         }
-        ide.toolbar().setPort(p);
+        ide.setPort(p);
         setServos(List.of());
         show(proto == null || rate == null ? "Scanning " + p + "\u2026" : "Connecting\u2026", false);
         session.connect(p, proto, rate, null);
@@ -325,7 +326,7 @@ final class HardwareDialog {
      * profile, or null when there is no profile, it does not load, or it does not map the servo.
      */
     private ServoMapping profileLimits(int id, ServoModel model) {
-        String file = ide.toolbar().hardwareProfile();
+        String file = ide.hardwareProfile();
         if (file == null) {
             return null;
         }
@@ -363,15 +364,15 @@ final class HardwareDialog {
     }
 
     /** Writes the starter profile (on the bus thread) and selects it in the tool bar's Profile box. */
-    void saveProfile(Path file) {
-        for (Path open : ide.files().openFiles()) {
+    public void saveProfile(Path file) {
+        for (Path open : ide.openFiles()) {
             if (OutputPlan.sameFile(open, file)) {
                 show("Cannot write the profile over " + file.getFileName() + ": it is the script open in the editor;"
                         + " choose another name.", true);
                 return;
             }
         }
-        session.saveProfile(file, f -> ui(() -> ide.toolbar().setHardwareProfile(f.toString())));
+        session.saveProfile(file, f -> ui(() -> ide.setHardwareProfile(f.toString())));
     }
 
     private void show(String text, boolean error) {
@@ -456,51 +457,51 @@ final class HardwareDialog {
     }
 
     /** The servos as last read (positions polled every few hundred ms); empty when none is connected. */
-    List<HardwareSession.Servo> servos() {
+    public List<HardwareSession.Servo> servos() {
         return servos;
     }
 
     /** The bus session (the Pose panel makes servos limp, reads and moves them through it). */
-    HardwareSession session() {
+    public HardwareSession session() {
         return session;
     }
 
     // For tests: the widgets as a user sees them.
 
-    Shell shell() {
+    public Shell shell() {
         return shell;
     }
 
-    HardwareSession sessionForTest() {
+    public HardwareSession sessionForTest() {
         return session;
     }
 
-    Table table() {
+    public Table table() {
         return table;
     }
 
-    String jogValueText() {
+    public String jogValueText() {
         return jogValue.getText();
     }
 
     /** The jog box (tests). */
-    Spinner jogBox() {
+    public Spinner jogBox() {
         return jogBox;
     }
 
-    String message() {
+    public String message() {
         return message.getText();
     }
 
-    Combo portBox() {
+    public Combo portBox() {
         return port;
     }
 
-    Combo protocolBox() {
+    public Combo protocolBox() {
         return protocol;
     }
 
-    Combo baudBox() {
+    public Combo baudBox() {
         return baud;
     }
 }

@@ -1,4 +1,8 @@
-package org.parpe.gui.app;
+package org.parpe.gui.automation;
+
+import org.parpe.gui.app.IdeWindow;
+import org.parpe.gui.prefs.Prefs;
+import org.parpe.gui.files.Examples;
 
 import java.lang.management.ManagementFactory;
 import java.nio.file.Files;
@@ -89,7 +93,7 @@ public final class Bench {
     }
 
     /** A valid script of about {@code chars} characters: a snake wave and many extra states. */
-    static String largeScript(int chars) {
+    public static String largeScript(int chars) {
         StringBuilder sb = new StringBuilder(String.join("\n", "<?xml version=\"1.0\" ?>", "<program>",
                 "  <robot><structure><group1 elements=\"0,2,4,6\" /></structure></robot>",
                 "  <main><simpleWave /></main>",

@@ -1,4 +1,4 @@
-package org.parpe.gui.app;
+package org.parpe.gui.files;
 
 import java.io.IOException;
 import java.net.URISyntaxException;
@@ -7,7 +7,6 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
-import org.parpe.gui.Main;
 
 /**
  * Finds the bundled example scripts: the folder named by the system property
@@ -81,7 +80,7 @@ public final class Examples {
             return Path.of(prop).toAbsolutePath().normalize();
         }
         try {
-            Path p = Path.of(Main.class.getProtectionDomain().getCodeSource().getLocation().toURI());
+            Path p = Path.of(Examples.class.getProtectionDomain().getCodeSource().getLocation().toURI());
             for (Path d = p; d != null; d = d.getParent()) {
                 if (Files.isDirectory(d.resolve("examples")) && Files.exists(d.resolve("pom.xml"))) {
                     return d.resolve("examples");

@@ -1,4 +1,4 @@
-package org.parpe.gui.app;
+package org.parpe.gui.hardware;
 
 import java.util.List;
 import java.util.Locale;
@@ -13,11 +13,11 @@ import org.parpe.serial.servo.profile.ServoMapping;
  * the middle of the servo's range as joint angle 0. Limp, hold and moves go through the dialog's
  * {@link HardwareSession} (its own thread); angles are the dialog's last poll.
  */
-final class DialogHardware implements PoseHardware {
+public final class DialogHardware implements PoseHardware {
     private final HardwareDialog dialog;
     private final HardwareProfile profile;
 
-    DialogHardware(HardwareDialog dialog, HardwareProfile profile) {
+    public DialogHardware(HardwareDialog dialog, HardwareProfile profile) {
         this.dialog = dialog;
         this.profile = profile;
     }

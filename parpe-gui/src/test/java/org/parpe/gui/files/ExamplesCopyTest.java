@@ -1,4 +1,4 @@
-package org.parpe.gui.app;
+package org.parpe.gui.files;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;

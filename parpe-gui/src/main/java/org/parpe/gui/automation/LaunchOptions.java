@@ -1,4 +1,4 @@
-package org.parpe.gui;
+package org.parpe.gui.automation;
 
 import java.nio.file.Path;
 import java.util.List;

@@ -1,4 +1,4 @@
-package org.parpe.gui.app;
+package org.parpe.gui.hardware;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -24,12 +24,12 @@ import org.parpe.serial.servo.profile.ProfileWriter;
  * {@link Listener}, on that thread (the dialog moves them to the UI thread). Positions are read
  * every {@value #POLL_MS} ms while connected.
  */
-final class HardwareSession {
+public final class HardwareSession {
     static final int POLL_MS = 200;
     /** Jog speed limit, degrees per second of the servo. */
-    static final double JOG_DEG_PER_S = 30;
+    public static final double JOG_DEG_PER_S = 30;
     /** Time between two jog goals. */
-    static final int JOG_TICK_MS = 20;
+    public static final int JOG_TICK_MS = 20;
     private static final int READ_TIMEOUT_MS = 20;
 
     /** One servo as the dialog shows it; immutable snapshot. */
@@ -275,7 +275,7 @@ final class HardwareSession {
     }
 
     /** Waits up to {@code ms} for the bus to be closed (tests). */
-    boolean awaitClosed(long ms) throws InterruptedException {
+    public boolean awaitClosed(long ms) throws InterruptedException {
         return worker.awaitTermination(ms, TimeUnit.MILLISECONDS);
     }
 

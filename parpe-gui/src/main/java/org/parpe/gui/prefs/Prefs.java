@@ -1,4 +1,4 @@
-package org.parpe.gui.app;
+package org.parpe.gui.prefs;
 
 import java.io.IOException;
 import java.io.InputStream;

@@ -1,4 +1,6 @@
-package org.parpe.gui.app;
+package org.parpe.gui.files;
+
+import org.parpe.gui.prefs.Prefs;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -19,8 +21,8 @@ import org.parpe.gui.editor.ParslEditor;
  * the autosave folder every few seconds and offered back after a crash. Files are read on a
  * background thread, so opening a large one never freezes the window. UI thread only.
  */
-final class FileActions {
-    static final String TEMPLATE = String.join("\n",
+public final class FileActions {
+    public static final String TEMPLATE = String.join("\n",
             "<?xml version=\"1.0\"?>",
             "<!-- New to PARPE? Help > Tutorial teaches it step by step, from a first pose to a race. -->",
             "<program>",
@@ -50,7 +52,7 @@ final class FileActions {
 
     /** Asks a question with buttons and returns the index of the answer (-1: dialog closed); tests answer without a dialog. */
     @FunctionalInterface
-    interface Questions {
+    public interface Questions {
         int ask(String title, String message, String... buttons);
     }
 
@@ -100,7 +102,7 @@ final class FileActions {
      * {@code changed} runs after the file, the text or the dirty state changed, {@code switched}
      * when another document is shown; {@code message} shows a line in the status bar.
      */
-    FileActions(Shell shell, ParslEditor editor, Prefs prefs, Runnable changed, Runnable switched, Consumer<String> message) {
+    public FileActions(Shell shell, ParslEditor editor, Prefs prefs, Runnable changed, Runnable switched, Consumer<String> message) {
         this.message = message;
         this.switched = switched;
         this.shell = shell;
@@ -134,21 +136,21 @@ final class FileActions {
     }
 
     /** The file edited, or null for an untitled document. */
-    Path file() {
+    public Path file() {
         return file;
     }
 
     /** The files open in the editor (none for an untitled document): what other saves of the IDE must not replace. */
-    java.util.List<Path> openFiles() {
+    public java.util.List<Path> openFiles() {
         return file == null ? java.util.List.of() : java.util.List.of(file);
     }
 
     /** The path given to the loader: the file, or an untitled name in the working directory. */
-    Path pathForLoading() {
+    public Path pathForLoading() {
         return file != null ? file : example != null ? example : Path.of("untitled.xml").toAbsolutePath();
     }
 
-    String name() {
+    public String name() {
         return file == null && example != null ? fileName() + " (example copy)" : fileName();
     }
 
@@ -158,42 +160,42 @@ final class FileActions {
     }
 
     /** The example the untitled document is a copy of, or null. */
-    Path example() {
+    public Path example() {
         return example;
     }
 
     /** Whether the text is not saved: it differs from the file, or it was recovered and not saved since. */
-    boolean dirty() {
+    public boolean dirty() {
         return recovered || !editor.document().get().equals(savedText);
     }
 
     /** Asks where to save: the folder to start in and the name proposed; returns the chosen file or null (cancelled). */
     @FunctionalInterface
-    interface SaveTarget {
+    public interface SaveTarget {
         Path ask(Path folder, String name);
     }
 
     /** Chooses where to save with {@code t} instead of the file dialog (tests). */
-    void chooseSaveTargetWith(SaveTarget t) {
+    public void chooseSaveTargetWith(SaveTarget t) {
         saveTarget = t;
     }
 
     /** Answers the questions of this class with {@code q} instead of dialogs (tests). */
-    void answerWith(Questions q) {
+    public void answerWith(Questions q) {
         questions = q;
     }
 
-    Autosave autosave() {
+    public Autosave autosave() {
         return autosave;
     }
 
-    void newFile() {
+    public void newFile() {
         if (confirmDiscard()) {
             show(null, TEMPLATE, TEMPLATE, null);
         }
     }
 
-    void open() {
+    public void open() {
         if (!confirmDiscard()) {
             return;
         }
@@ -214,7 +216,7 @@ final class FileActions {
      * thread and then shown; meanwhile the window works and the editor is read-only. A message
      * if it cannot be read. A later open, New or recovery wins over one still being read.
      */
-    void openPath(Path p) {
+    public void openPath(Path p) {
         read(p, false);
     }
 
@@ -224,7 +226,7 @@ final class FileActions {
      * Documents folder), so the example itself is never written. The copy is loaded as if it
      * were at {@code p}, so that the files it names are found beside it.
      */
-    void openExample(Path p) {
+    public void openExample(Path p) {
         if (confirmDiscard()) {
             read(p, true);
         }
@@ -281,12 +283,12 @@ final class FileActions {
     }
 
     /** Whether a file is being read (the editor is read-only meanwhile). */
-    boolean reading() {
+    public boolean reading() {
         return reading;
     }
 
     /** Asks first if there are unsaved changes, then opens {@code p}. */
-    void openConfirmed(Path p) {
+    public void openConfirmed(Path p) {
         if (confirmDiscard()) {
             openPath(p);
         }
@@ -317,7 +319,7 @@ final class FileActions {
         changed.run();
     }
 
-    boolean save() {
+    public boolean save() {
         if (file != null && changedOnDisk()) {
             int a = questions.ask("File changed on disk", name() + " was changed on disk by another program since it was"
                     + " opened or saved. Replace it with the text in the editor?", "Replace", "Cancel");
@@ -373,7 +375,7 @@ final class FileActions {
         }
     }
 
-    boolean saveAs() {
+    public boolean saveAs() {
         Path chosen = saveTarget.ask(saveFolder(file, Examples.bundled(), Path.of(System.getProperty("user.home"))), fileName());
         if (chosen == null) {
             return false;
@@ -433,7 +435,7 @@ final class FileActions {
      * deletes the autosave copy of edited text, but keeps that of recovered text (it is offered
      * again at the next start): only saving it, or "Discard" when offered, removes it.
      */
-    boolean confirmDiscard() {
+    public boolean confirmDiscard() {
         if (!dirty()) {
             return true;
         }
@@ -462,7 +464,7 @@ final class FileActions {
      * recovered or the user says "Not Now"; "Discard" deletes a copy. True if one was recovered:
      * it is then in the editor as unsaved text.
      */
-    boolean offerRecovery() {
+    public boolean offerRecovery() {
         for (Autosave.Copy c : autosave.orphans()) {
             String where = c.describe();
             int answer = questions.ask("Recover unsaved work", "A PARPE window closed without saving " + where
@@ -509,7 +511,7 @@ final class FileActions {
     }
 
     /** Writes the autosave copy if the text is unsaved and changed since the last copy. */
-    void autosaveNow() {
+    public void autosaveNow() {
         String text = editor.document().get();
         if (!dirty()) {
             if (autosavedText != null) {

@@ -1,8 +1,8 @@
-package org.parpe.gui.app;
+package org.parpe.gui.help;
 
 /** The texts of the Help menu. */
-final class HelpText {
-    static final String QUICK_REFERENCE = String.join("\n",
+public final class HelpText {
+    public static final String QUICK_REFERENCE = String.join("\n",
             "A PARSL program has these sections (any order):",
             "",
             "  <robot>       groups of modules: <legs elements=\"0..5, 8\"/>; <sensors>",
@@ -17,7 +17,7 @@ final class HelpText {
             "Running: F5 runs, F6 pauses, Shift+F5 stops, Esc is the emergency stop.",
             "3D view: drag to rotate, right-drag to pan, wheel to zoom, double-click to reframe.",
             "The full language is specified in PARSL.md.");
-    static final String ABOUT = String.join("\n",
+    public static final String ABOUT = String.join("\n",
             "PARPE " + org.parpe.core.Version.NUMBER + ": PolyKinetic Phase Automata Robot Programming Environment",
             "",
             "An open reimplementation of PARC's PolyKinetic environment for PolyBot modular robots:",

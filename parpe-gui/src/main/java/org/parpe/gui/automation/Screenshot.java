@@ -1,4 +1,4 @@
-package org.parpe.gui.app;
+package org.parpe.gui.automation;
 
 import java.io.IOException;
 import java.nio.file.Files;

@@ -1,4 +1,4 @@
-package org.parpe.gui.app;
+package org.parpe.gui.help;
 
 import org.eclipse.jface.resource.JFaceResources;
 import org.eclipse.swt.SWT;
@@ -13,12 +13,12 @@ import org.eclipse.swt.widgets.Text;
  * can stay open beside the editor, in the fixed-width text font so that its columns line up (a
  * message box set them in a proportional font), and whose text can be selected and copied.
  */
-final class QuickReference {
+public final class QuickReference {
     private QuickReference() {
     }
 
     /** Opens the quick reference beside {@code parent}; returns its window. */
-    static Shell open(Shell parent) {
+    public static Shell open(Shell parent) {
         Shell shell = new Shell(parent, SWT.SHELL_TRIM | SWT.MODELESS);
         shell.setText("PARSL quick reference");
         shell.setLayout(new GridLayout(1, false));

@@ -1,10 +1,12 @@
-package org.parpe.gui.app;
+package org.parpe.gui.automation;
+
+import org.parpe.gui.app.IdeWindow;
 
 import java.io.IOException;
 import org.eclipse.swt.widgets.Display;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.run.RunOutcome;
-import org.parpe.gui.LaunchOptions;
+import org.parpe.gui.automation.LaunchOptions;
 import org.parpe.gui.run.Speed;
 import org.parpe.gui.run.Target;
 

@@ -1,0 +1,26 @@
+package org.parpe.gui;
+
+import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.noClasses;
+import static com.tngtech.archunit.library.dependencies.SlicesRuleDefinition.slices;
+
+import com.tngtech.archunit.core.importer.ImportOption;
+import com.tngtech.archunit.junit.AnalyzeClasses;
+import com.tngtech.archunit.junit.ArchTest;
+import com.tngtech.archunit.lang.ArchRule;
+
+/**
+ * The IDE's packages, each one concept (issue 19, item 9: {@code gui.app} was a grab-bag of twenty
+ * classes): they form no cycle, and only the window's own package, the command-line automation and
+ * {@code Main} know the window; the Hardware dialog reaches it through {@code HardwareHost}.
+ */
+@AnalyzeClasses(packages = "org.parpe.gui", importOptions = ImportOption.DoNotIncludeTests.class)
+class GuiPackagesTest {
+    @ArchTest
+    static final ArchRule IDE_PACKAGES_FORM_NO_CYCLE = slices().matching("org.parpe.gui.(*)..").should()
+            .beFreeOfCycles();
+
+    @ArchTest
+    static final ArchRule ONLY_THE_TOP_KNOWS_THE_WINDOW = noClasses().that().resideInAPackage("org.parpe.gui.(*)..")
+            .and().resideOutsideOfPackages("org.parpe.gui.app..", "org.parpe.gui.automation..")
+            .should().dependOnClassesThat().resideInAPackage("org.parpe.gui.app..");
+}
