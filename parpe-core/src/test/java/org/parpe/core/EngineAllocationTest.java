@@ -31,7 +31,7 @@ class EngineAllocationTest {
         LoadResult r = ScriptLoader.loadText(Path.of("alloc.xml"), script, Map.of());
         assertTrue(r.ok(), r.diagnostics()::toString);
         Engine e = new Engine(r.program(), new RunOptions(0.01, 1, List.of(
-                new Stimulus(2.5, 1, Stimulus.Target.SENSOR, 205 * 6 + 4, 1, "touch"))));
+                new Stimulus(2.5, 1, Stimulus.Kind.SENSOR, 205 * 6 + 4, 1, "touch"))));
         double[] sum = new double[1];
         e.addObserver((JointSink) (tick, time, commanded) -> sum[0] += commanded[0]);
         e.start();

@@ -92,7 +92,7 @@ final class Inputs {
         }
         while (nextStimulus < stimuli.length && stimuli[nextStimulus].time() <= ctx.time + EPS) {
             Stimulus s = stimuli[nextStimulus++];
-            if (s.target() == Stimulus.Target.CONTROL) {
+            if (s.target() == Stimulus.Kind.CONTROL) {
                 ctx.controls[s.index()] = s.value();
             } else {
                 overrides[s.index()] = s.value();

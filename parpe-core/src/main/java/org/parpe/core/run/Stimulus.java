@@ -10,8 +10,8 @@ package org.parpe.core.run;
  * @param value  the value (a radio word's symbol code for radio controls)
  * @param text   the assignment as written, for messages
  */
-public record Stimulus(double time, int line, Target target, int index, double value, String text) {
+public record Stimulus(double time, int line, Kind target, int index, double value, String text) {
 
     /** What a stimulus sets. */
-    public enum Target { CONTROL, SENSOR }
+    public enum Kind { CONTROL, SENSOR }
 }

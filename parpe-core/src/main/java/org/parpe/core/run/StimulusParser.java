@@ -61,7 +61,7 @@ public final class StimulusParser {
         for (int c = 0; c < controls.size(); c++) {
             Control ctl = controls.get(c);
             if (ctl.name().equals(name)) {
-                return new Stimulus(time, line, Stimulus.Target.CONTROL, c, controlValue(where, ctl, value, program), text);
+                return new Stimulus(time, line, Stimulus.Kind.CONTROL, c, controlValue(where, ctl, value, program), text);
             }
         }
         Matcher s = SENSOR.matcher(name);
@@ -85,7 +85,7 @@ public final class StimulusParser {
         if (v == null) {
             throw new StimulusException(where + "value of '$" + name + "' must be a number, got '" + value + "'");
         }
-        return new Stimulus(time, line, Stimulus.Target.SENSOR, SensorTable.slot(index, ch), v, text);
+        return new Stimulus(time, line, Stimulus.Kind.SENSOR, SensorTable.slot(index, ch), v, text);
     }
 
     private static double controlValue(String where, Control c, String value, Program program) throws StimulusException {

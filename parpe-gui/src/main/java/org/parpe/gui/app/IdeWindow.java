@@ -650,7 +650,7 @@ public final class IdeWindow implements HardwareHost {
     }
 
     /** The user picked {@code target} for the file in the editor. */
-    void targetChosen(org.parpe.gui.run.Target target) {
+    void targetChosen(org.parpe.gui.run.RunOn target) {
         choices.targetChosen(target);
     }
 

@@ -15,7 +15,7 @@ import org.parpe.core.run.RunOutcome;
 import org.parpe.gui.editor.Validator;
 import org.parpe.gui.pose.PoseHardware;
 import org.parpe.gui.pose.PoseHost;
-import org.parpe.gui.run.Target;
+import org.parpe.gui.run.RunOn;
 import org.parpe.gui.view3d.View3D;
 import org.parpe.serial.servo.profile.HardwareProfile;
 import org.parpe.serial.servo.profile.ProfileReader;
@@ -81,7 +81,7 @@ final class PoseBridge implements PoseHost {
     }
 
     @Override
-    public void play(Program program, Target target, String spec, Consumer<RunOutcome> onEnd) {
+    public void play(Program program, RunOn target, String spec, Consumer<RunOutcome> onEnd) {
         ide.runs().play(program, target, spec, onEnd);
     }
 

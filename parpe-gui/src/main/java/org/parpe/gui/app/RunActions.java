@@ -30,7 +30,7 @@ import org.parpe.gui.panels.ControlPanel;
 import org.parpe.gui.panels.ParametersDialog;
 import org.parpe.gui.run.AngleRecorder;
 import org.parpe.gui.run.RunController;
-import org.parpe.gui.run.Target;
+import org.parpe.gui.run.RunOn;
 import org.parpe.serial.bus.BusConfig;
 import org.parpe.serial.bus.BusTarget;
 import org.parpe.serial.bus.HardwareBus;
@@ -51,7 +51,7 @@ import org.parpe.sim.config.RobotConfigs;
  * simulator, serial bus, plot recorder) and keeps the robot preview of the 3D view. The
  * engine runs on the {@link RunController}'s thread; everything here runs on the UI thread.
  */
-public final class RunActions implements ControlPanel.Target {
+public final class RunActions implements ControlPanel.ControlSink {
     private final IdeWindow ide;
     private final RunController controller;
     private final ExecutorService previewer = Executors.newSingleThreadExecutor(r -> {
@@ -107,7 +107,7 @@ public final class RunActions implements ControlPanel.Target {
     }
 
     /** The user picked {@code t} in the tool bar for the file in the editor. */
-    void targetChosen(Target t) {
+    void targetChosen(RunOn t) {
         ide.targetChosen(t);
     }
 
@@ -182,7 +182,7 @@ public final class RunActions implements ControlPanel.Target {
     }
 
     private void start(Program program, double runFor, Consumer<RunOutcome> onEnd) {
-        Target target = ide.toolbar().target();
+        RunOn target = ide.toolbar().target();
         start(program, target, robotSpec(program), runFor, onEnd);
         String misfit = target.sim() ? misfit(program, ide.robotChoice()) : null;
         if (misfit != null) {
@@ -209,7 +209,7 @@ public final class RunActions implements ControlPanel.Target {
      * the robot {@code spec}, until it ends or is stopped; refused while a run is going on or
      * the Hardware dialog holds the bus a hardware target needs.
      */
-    void play(Program program, Target target, String spec, Consumer<RunOutcome> onEnd) {
+    void play(Program program, RunOn target, String spec, Consumer<RunOutcome> onEnd) {
         if (controller.running()) {
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, "a run is going on"));
             return;
@@ -222,7 +222,7 @@ public final class RunActions implements ControlPanel.Target {
         start(program, target, spec, -1, onEnd);
     }
 
-    private void start(Program program, Target target, String spec, double runFor, Consumer<RunOutcome> onEnd) {
+    private void start(Program program, RunOn target, String spec, double runFor, Consumer<RunOutcome> onEnd) {
         String port = ide.toolbar().port();
         String profile = ide.toolbar().hardwareProfile();
         AngleRecorder recorder = new AngleRecorder();
@@ -257,7 +257,7 @@ public final class RunActions implements ControlPanel.Target {
      * Attaches the run's targets on the engine thread, as the command line does (opening the
      * bus and building the simulated robot take time), and the plots' recorder.
      */
-    private void attach(Run.Builder run, Target target, String spec, World world, String port, String profile,
+    private void attach(Run.Builder run, RunOn target, String spec, World world, String port, String profile,
                         AngleRecorder recorder) throws TargetException {
         if (target.hardware() && profile != null) {
             attachServos(run, profile, port);

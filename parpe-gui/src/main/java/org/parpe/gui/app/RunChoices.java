@@ -5,7 +5,7 @@ import org.parpe.gui.prefs.Prefs;
 import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.Map;
-import org.parpe.gui.run.Target;
+import org.parpe.gui.run.RunOn;
 import org.parpe.sim.SimTarget;
 
 /**
@@ -19,7 +19,7 @@ final class RunChoices {
     private static final String ROBOT = "robot.";
 
     private final Prefs prefs;
-    private final Map<Path, Target> targets = new HashMap<>();
+    private final Map<Path, RunOn> targets = new HashMap<>();
     private Path current;
 
     RunChoices(Prefs prefs) {
@@ -37,8 +37,8 @@ final class RunChoices {
     }
 
     /** The target chosen for the current file in this session: the simulator unless another was chosen. */
-    Target target() {
-        return current == null ? Target.SIMULATOR : targets.getOrDefault(current, Target.SIMULATOR);
+    RunOn target() {
+        return current == null ? RunOn.SIMULATOR : targets.getOrDefault(current, RunOn.SIMULATOR);
     }
 
     void robotChosen(String robot) {
@@ -47,7 +47,7 @@ final class RunChoices {
         }
     }
 
-    void targetChosen(Target target) {
+    void targetChosen(RunOn target) {
         if (current != null) {
             targets.put(current, target);
         }

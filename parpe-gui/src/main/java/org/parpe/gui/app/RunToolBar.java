@@ -16,7 +16,7 @@ import org.eclipse.swt.widgets.ToolItem;
 import org.parpe.gui.panels.Icons;
 import org.parpe.gui.panels.OverflowBar;
 import org.parpe.gui.run.Speed;
-import org.parpe.gui.run.Target;
+import org.parpe.gui.run.RunOn;
 import org.parpe.serial.link.SerialLink;
 
 /** The run tool bar: Run, Pause, Stop, emergency stop, speed, target, serial port and hardware profile. */
@@ -53,12 +53,12 @@ public final class RunToolBar {
             actions.controller().setSpeed(speed());
             prefs.put("run.speed", speed().name());
         });
-        target = combo("Target:", 170);
-        for (Target t : Target.values()) {
+        target = combo("RunOn:", 170);
+        for (RunOn t : RunOn.values()) {
             target.add(t.label());
         }
         // Every session starts on the simulator; each file keeps its own target (RunChoices).
-        target.select(Target.SIMULATOR.ordinal());
+        target.select(RunOn.SIMULATOR.ordinal());
         target.setToolTipText("Where this file runs: the simulator, the robot on the serial port, or both"
                 + " (each file keeps its own; every session starts on the simulator)");
         target.addListener(SWT.Selection, e -> {
@@ -158,18 +158,18 @@ public final class RunToolBar {
         return Speed.values()[Math.max(0, speed.getSelectionIndex())];
     }
 
-    Target target() {
-        return Target.values()[Math.max(0, target.getSelectionIndex())];
+    RunOn target() {
+        return RunOn.values()[Math.max(0, target.getSelectionIndex())];
     }
 
     /** Selects a target (automation runs in the simulator). */
-    public void setTarget(Target t) {
+    public void setTarget(RunOn t) {
         target.select(t.ordinal());
         updatePort();
     }
 
     /** Picks a target as the user does in the tool bar: the file in the editor keeps it (tests). */
-    void chooseTarget(Target t) {
+    void chooseTarget(RunOn t) {
         target.select(t.ordinal());
         target.notifyListeners(SWT.Selection, new org.eclipse.swt.widgets.Event());
     }

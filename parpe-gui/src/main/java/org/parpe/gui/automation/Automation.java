@@ -8,7 +8,7 @@ import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.gui.automation.LaunchOptions;
 import org.parpe.gui.run.Speed;
-import org.parpe.gui.run.Target;
+import org.parpe.gui.run.RunOn;
 
 /**
  * What {@code --run-for}, {@code --screenshot} and {@code --exit} do once the window is up:
@@ -81,7 +81,7 @@ public final class Automation {
                 later(SETTLE_MS, this::shoot);
                 return;
             }
-            ide.toolbar().setTarget(Target.SIMULATOR);
+            ide.toolbar().setTarget(RunOn.SIMULATOR);
             ide.toolbar().setSpeed(Speed.MAX);
             ide.runs().run(false, options.runFor(), this::ran);
             watchdog();

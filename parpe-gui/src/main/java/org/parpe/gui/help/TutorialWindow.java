@@ -48,7 +48,7 @@ public final class TutorialWindow {
     private final List<Image> images = new ArrayList<>();
     private final Consumer<Path> openScript;
     private final Consumer<String> insertCode;
-    private final List<Target> links = new ArrayList<>();
+    private final List<LinkRange> links = new ArrayList<>();
     private Path script;
     private boolean installed;
 
@@ -237,7 +237,7 @@ public final class TutorialWindow {
                         String action = "\n\u25b6 Insert this code into the editor";
                         int at = all.length() + 1;
                         all.append(action);
-                        links.add(new Target(at, action.length() - 1, null, b.text()));
+                        links.add(new LinkRange(at, action.length() - 1, null, b.text()));
                         styles.add(linkStyle(at, action.length() - 1, link));
                     }
                 }
@@ -255,7 +255,7 @@ public final class TutorialWindow {
                     for (Markdown.Span s : b.spans()) {
                         styles.add(span(base + s.start(), s, link));
                         if (s.style() == Markdown.Style.LINK) {
-                            links.add(new Target(base + s.start(), s.length(), s.target(), null));
+                            links.add(new LinkRange(base + s.start(), s.length(), s.target(), null));
                         }
                     }
                 }
@@ -342,12 +342,12 @@ public final class TutorialWindow {
     }
 
     /** A clickable run: a link's target, or code to put into the editor. */
-    private record Target(int start, int length, String link, String code) {
+    private record LinkRange(int start, int length, String link, String code) {
     }
 
     /** Follows the link or sends the code under {@code offset}, if any. */
     private void click(int offset) {
-        for (Target t : links) {
+        for (LinkRange t : links) {
             if (offset >= t.start() && offset < t.start() + t.length()) {
                 if (t.code() != null) {
                     insertCode.accept(t.code());

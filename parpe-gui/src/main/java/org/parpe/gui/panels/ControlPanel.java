@@ -22,11 +22,11 @@ import org.parpe.core.model.Program;
 /**
  * The control panel generated from a script's {@code <controls>}: a slider, a set of radio
  * buttons or a number box per control, plus the keyboard bindings of {@code keys}. Every change
- * is sent at once to the running program through {@link Target}.
+ * is sent at once to the running program through {@link ControlSink}.
  */
 public final class ControlPanel {
     /** Where changes go (the run controller's command queue). */
-    public interface Target {
+    public interface ControlSink {
         void setControl(String name, double value);
 
         void setControlWord(String name, String word);
@@ -34,10 +34,10 @@ public final class ControlPanel {
 
     private final ScrolledComposite scroll;
     private final Composite body;
-    private final Target target;
+    private final ControlSink target;
     private final List<ControlRow> rows = new ArrayList<>();
 
-    public ControlPanel(Composite parent, Target target) {
+    public ControlPanel(Composite parent, ControlSink target) {
         this.target = target;
         scroll = new ScrolledComposite(parent, SWT.V_SCROLL);
         body = new Composite(scroll, SWT.NONE);
@@ -135,9 +135,9 @@ public final class ControlPanel {
     /** One generated row: label, input widget(s), value or key hint. */
     abstract static class ControlRow {
         final org.parpe.core.model.Control def;
-        final Target target;
+        final ControlSink target;
 
-        ControlRow(org.parpe.core.model.Control def, Target target) {
+        ControlRow(org.parpe.core.model.Control def, ControlSink target) {
             this.def = def;
             this.target = target;
         }
@@ -146,7 +146,7 @@ public final class ControlPanel {
             return def.name();
         }
 
-        static ControlRow create(Composite body, org.parpe.core.model.Control c, Program p, Target t) {
+        static ControlRow create(Composite body, org.parpe.core.model.Control c, Program p, ControlSink t) {
             Label l = new Label(body, SWT.NONE);
             l.setText(c.displayLabel());
             l.setToolTipText("$" + c.name());
@@ -173,7 +173,7 @@ public final class ControlPanel {
         private final Label value;
         private final double step;
 
-        SliderRow(Composite body, org.parpe.core.model.Control c, Target t) {
+        SliderRow(Composite body, org.parpe.core.model.Control c, ControlSink t) {
             super(c, t);
             Composite box = new Composite(body, SWT.NONE);
             box.setLayout(new GridLayout(2, false));
@@ -230,7 +230,7 @@ public final class ControlPanel {
     private static final class RadioRow extends ControlRow {
         private final List<Button> buttons = new ArrayList<>();
 
-        RadioRow(Composite body, org.parpe.core.model.Control c, Program p, Target t) {
+        RadioRow(Composite body, org.parpe.core.model.Control c, Program p, ControlSink t) {
             super(c, t);
             Composite box = new Composite(body, SWT.NONE);
             box.setLayout(new RowLayout(SWT.HORIZONTAL));
@@ -279,7 +279,7 @@ public final class ControlPanel {
     private static final class TextRow extends ControlRow {
         private final Text text;
 
-        TextRow(Composite body, org.parpe.core.model.Control c, Target t) {
+        TextRow(Composite body, org.parpe.core.model.Control c, ControlSink t) {
             super(c, t);
             text = new Text(body, SWT.BORDER | SWT.SINGLE);
             text.setText(Numbers.format(c.value()));

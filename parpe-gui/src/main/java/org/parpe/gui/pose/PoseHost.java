@@ -7,7 +7,7 @@ import org.eclipse.swt.widgets.Shell;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.model.Program;
 import org.parpe.core.run.RunOutcome;
-import org.parpe.gui.run.Target;
+import org.parpe.gui.run.RunOn;
 import org.parpe.gui.view3d.View3D;
 
 /** What the Pose panel needs from the IDE window; UI thread only. */
@@ -46,7 +46,7 @@ public interface PoseHost {
      * Runs {@code program} on {@code target} through the IDE's run pipeline (as Run does, with the
      * simulated robot {@code spec}); {@code onEnd} gets the outcome on the UI thread.
      */
-    void play(Program program, Target target, String spec, Consumer<RunOutcome> onEnd);
+    void play(Program program, RunOn target, String spec, Consumer<RunOutcome> onEnd);
 
     /** Stops the run at the next tick. */
     void stop();

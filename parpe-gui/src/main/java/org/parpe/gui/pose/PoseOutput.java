@@ -20,7 +20,7 @@ import org.parpe.core.io.OutputPlan;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.model.Program;
 import org.parpe.core.run.RunOutcome;
-import org.parpe.gui.run.Target;
+import org.parpe.gui.run.RunOn;
 import org.parpe.serial.record.RecordingWriter;
 
 /**
@@ -57,7 +57,7 @@ final class PoseOutput {
         loop.setToolTipText("Play the poses over and over until Stop; otherwise once");
         new Label(row, SWT.NONE).setText("on");
         target = new Combo(row, SWT.READ_ONLY);
-        for (Target t : Target.values()) {
+        for (RunOn t : RunOn.values()) {
             target.add(t.label());
         }
         target.select(0);
@@ -79,7 +79,7 @@ final class PoseOutput {
     }
 
     /** Chooses the rate, loop and target of the next playback (as a user would in the row's widgets). */
-    void choose(double playRate, boolean looped, Target on) {
+    void choose(double playRate, boolean looped, RunOn on) {
         for (int i = 0; i < RATES.length; i++) {
             if (RATES[i] == playRate) {
                 rate.select(i);
@@ -117,7 +117,7 @@ final class PoseOutput {
             host.status("Cannot play the poses: " + loaded.errors().stream().map(Diagnostic::message).findFirst().orElse("?"));
             return false;
         }
-        Target t = Target.values()[Math.max(0, target.getSelectionIndex())];
+        RunOn t = RunOn.values()[Math.max(0, target.getSelectionIndex())];
         host.play(loaded.program(), t, host.robotSpec(open), outcome -> {
             host.status("Playback " + (outcome.status() == RunOutcome.Status.ERROR ? "failed: " + outcome.message()
                     : "ended at t = " + String.format(java.util.Locale.ROOT, "%.2f s", outcome.time())));

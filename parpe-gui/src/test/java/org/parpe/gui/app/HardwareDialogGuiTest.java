@@ -22,7 +22,7 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.run.RunOutcome;
-import org.parpe.gui.run.Target;
+import org.parpe.gui.run.RunOn;
 import org.parpe.serial.emu.EmulatorListener;
 import org.parpe.serial.emu.EmulatorOptions;
 import org.parpe.serial.link.LinkOpener;
@@ -200,10 +200,10 @@ class HardwareDialogGuiTest {
             ide.toolbar().setHardwareProfile(profile.toString());
 
             Gui.open(ide, Gui.example("hello-snake.xml"));
-            ide.toolbar().setTarget(Target.HARDWARE);
+            ide.toolbar().setTarget(RunOn.HARDWARE);
             AtomicReference<RunOutcome> outcome = new AtomicReference<>();
             ide.runs().run(false, 1, outcome::set);
-            ide.toolbar().setTarget(Target.SIMULATOR);
+            ide.toolbar().setTarget(RunOn.SIMULATOR);
             assertNotNull(outcome.get(), "a hardware run is refused at once while the dialog holds the bus");
             assertEquals(RunOutcome.Status.ERROR, outcome.get().status());
             assertTrue(outcome.get().message().contains("Hardware dialog holds the bus"), outcome.get().message());

@@ -7,7 +7,7 @@ import java.util.function.BooleanSupplier;
 import java.util.function.Consumer;
 import org.eclipse.swt.widgets.Shell;
 import org.parpe.core.run.RunOutcome;
-import org.parpe.gui.run.Target;
+import org.parpe.gui.run.RunOn;
 
 /** {@link Gui}'s helpers and the window's package-private parts, for GUI tests of other packages. */
 public final class IdeAccess {
@@ -50,7 +50,7 @@ public final class IdeAccess {
     }
 
     /** Runs the editor's script on {@code target} for {@code seconds} of simulated time, as fast as possible. */
-    public static void run(IdeWindow ide, Target target, double seconds, Consumer<RunOutcome> onEnd) {
+    public static void run(IdeWindow ide, RunOn target, double seconds, Consumer<RunOutcome> onEnd) {
         ide.toolbar().setTarget(target);
         ide.toolbar().setSpeed(org.parpe.gui.run.Speed.MAX);
         ide.runs().run(false, seconds, onEnd);

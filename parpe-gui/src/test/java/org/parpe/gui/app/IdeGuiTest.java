@@ -22,7 +22,7 @@ import org.junit.jupiter.api.TestMethodOrder;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.gui.editor.ProblemAnnotation;
 import org.parpe.gui.run.Speed;
-import org.parpe.gui.run.Target;
+import org.parpe.gui.run.RunOn;
 
 /**
  * The IDE for real on an X display (Xvfb in CI): open an example, run it in the simulator,
@@ -61,7 +61,7 @@ class IdeGuiTest {
         int before = ide.validations();
         Gui.pump(() -> ide.validations() > before && ide.program() != null, "teleop-dirwave.xml to load");
         assertEquals(0, ide.problems().errorCount(), "example has errors: " + ide.problems().shown());
-        ide.toolbar().setTarget(Target.SIMULATOR);
+        ide.toolbar().setTarget(RunOn.SIMULATOR);
         ide.toolbar().setSpeed(Speed.TIMES_10);
         AtomicReference<RunOutcome> outcome = new AtomicReference<>();
         ide.runs().run(false, -1, outcome::set);

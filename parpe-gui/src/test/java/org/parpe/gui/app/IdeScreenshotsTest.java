@@ -16,7 +16,7 @@ import org.eclipse.swt.graphics.Rectangle;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.parpe.gui.run.Speed;
-import org.parpe.gui.run.Target;
+import org.parpe.gui.run.RunOn;
 
 /**
  * The pictures of the main window in docs/images, made by the IDE itself so that they never go
@@ -51,7 +51,7 @@ class IdeScreenshotsTest {
         Gui.open(ide, Gui.example("tutorial/02-gait-table-snake.xml"));
         Gui.pump(() -> ide.program() != null, "lesson 2 to load");
         assertTrue(ide.grid().showTable("travel"), "lesson 2 has its gait table 'travel'");
-        ide.toolbar().setTarget(Target.SIMULATOR);
+        ide.toolbar().setTarget(RunOn.SIMULATOR);
         ide.toolbar().setSpeed(Speed.MAX);
         ide.runs().run(false, -1, null);
         Gui.pump(() -> ide.runs().controller().status() != null && ide.runs().controller().status().time() >= 4,

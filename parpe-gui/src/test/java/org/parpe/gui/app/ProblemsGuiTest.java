@@ -21,7 +21,7 @@ import org.parpe.core.diag.Severity;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.gui.panels.ProblemsView;
 import org.parpe.gui.run.Speed;
-import org.parpe.gui.run.Target;
+import org.parpe.gui.run.RunOn;
 
 /**
  * Problems: sorted by file, line, column with a visible Location column; a double-click jumps;
@@ -121,7 +121,7 @@ class ProblemsGuiTest {
         Gui.pump(() -> ide.validations() > before, "revalidation");
         assertTrue(ide.problems().shown().contains(fault), "revalidating the text dropped the run diagnostic");
 
-        ide.toolbar().setTarget(Target.SIMULATOR);
+        ide.toolbar().setTarget(RunOn.SIMULATOR);
         ide.toolbar().setSpeed(Speed.TIMES_10);
         ide.runs().run(false, -1, null);
         Gui.pump(() -> ide.runs().running(), "the run to start");

@@ -13,7 +13,7 @@ import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.Severity;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.gui.run.Speed;
-import org.parpe.gui.run.Target;
+import org.parpe.gui.run.RunOn;
 
 /**
  * Issue 23, item 3: after one run on the humanoid every snake lesson ran on the humanoid and fell,
@@ -38,19 +38,19 @@ class RunChoicesGuiTest {
         Path snakeLesson = Gui.example("tutorial/03-hello-snake.xml");
         Gui.open(ide, humanoidLesson);
         ide.viewBar().select("humanoid");
-        ide.toolbar().chooseTarget(Target.HARDWARE);
+        ide.toolbar().chooseTarget(RunOn.HARDWARE);
         Gui.open(ide, snakeLesson);
         assertEquals("auto", ide.robotChoice(), "the snake lesson keeps its own robot");
-        assertEquals(Target.SIMULATOR, ide.toolbar().target(), "the snake lesson keeps its own target");
+        assertEquals(RunOn.SIMULATOR, ide.toolbar().target(), "the snake lesson keeps its own target");
         Gui.open(ide, humanoidLesson);
         assertEquals("humanoid", ide.robotChoice());
-        assertEquals(Target.HARDWARE, ide.toolbar().target());
+        assertEquals(RunOn.HARDWARE, ide.toolbar().target());
         ide.shell().dispose();
 
         ide = Gui.openIde(home);
         Gui.open(ide, humanoidLesson);
         assertEquals("humanoid", ide.robotChoice(), "the robot chosen for a file is remembered");
-        assertEquals(Target.SIMULATOR, ide.toolbar().target(), "every session starts on the simulator");
+        assertEquals(RunOn.SIMULATOR, ide.toolbar().target(), "every session starts on the simulator");
     }
 
     @Test

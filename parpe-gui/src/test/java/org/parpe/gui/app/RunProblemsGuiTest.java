@@ -16,7 +16,7 @@ import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.Severity;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.gui.run.Speed;
-import org.parpe.gui.run.Target;
+import org.parpe.gui.run.RunOn;
 
 /**
  * The IDE assembles runs as the command line does: what goes wrong while preparing or during a
@@ -40,7 +40,7 @@ class RunProblemsGuiTest {
 
     @AfterEach
     void backToTheSimulator() {
-        ide.toolbar().setTarget(Target.SIMULATOR);
+        ide.toolbar().setTarget(RunOn.SIMULATOR);
         ide.viewBar().select("auto (from the script)");
     }
 
@@ -80,7 +80,7 @@ class RunProblemsGuiTest {
     @Test
     void hardwareWithoutAPortIsAProblemToFixNotAnInternalError() throws Exception {
         open("hw.xml", snake("20"));
-        ide.toolbar().setTarget(Target.HARDWARE);
+        ide.toolbar().setTarget(RunOn.HARDWARE);
         ide.toolbar().setPort("");
         RunOutcome o = runToEnd(1);
         assertEquals(RunOutcome.Status.ERROR, o.status());

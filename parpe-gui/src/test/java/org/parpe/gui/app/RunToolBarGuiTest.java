@@ -12,7 +12,7 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.parpe.gui.run.Speed;
-import org.parpe.gui.run.Target;
+import org.parpe.gui.run.RunOn;
 
 /** The emergency stop is on the tool bar, visible and enabled, whatever the run is doing. */
 class RunToolBarGuiTest {
@@ -47,7 +47,7 @@ class RunToolBarGuiTest {
     @Test
     void emergencyStopIsShownIdleRunningAndPaused() throws Exception {
         assertEmergencyStopShown("while idle");
-        ide.toolbar().setTarget(Target.SIMULATOR);
+        ide.toolbar().setTarget(RunOn.SIMULATOR);
         ide.toolbar().setSpeed(Speed.TIMES_10);
         ide.runs().run(false, -1, null);
         Gui.pump(() -> ide.runs().controller().status() != null && ide.runs().controller().status().time() > 0.3,

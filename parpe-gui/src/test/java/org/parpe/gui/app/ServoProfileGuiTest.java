@@ -23,7 +23,7 @@ import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.Severity;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.gui.run.Speed;
-import org.parpe.gui.run.Target;
+import org.parpe.gui.run.RunOn;
 import org.parpe.serial.emu.EmulatorListener;
 import org.parpe.serial.emu.EmulatorOptions;
 import org.parpe.serial.link.LinkOpener;
@@ -71,7 +71,7 @@ class ServoProfileGuiTest {
     void backToTheSimulator() {
         ide.toolbar().setHardwareProfile("");
         ide.toolbar().setPort("");
-        ide.toolbar().setTarget(Target.SIMULATOR);
+        ide.toolbar().setTarget(RunOn.SIMULATOR);
     }
 
     private static void pump(BooleanSupplier done, String what) {
@@ -101,7 +101,7 @@ class ServoProfileGuiTest {
         Path profile = dir.resolve("bad-profile.xml");
         Files.writeString(profile, "<hardware protocol=\"dxl2\" port=\"/dev/null\">\n  <servo module=\"0\" id=\"999\"/>\n"
                 + "</hardware>\n");
-        ide.toolbar().setTarget(Target.HARDWARE);
+        ide.toolbar().setTarget(RunOn.HARDWARE);
         ide.toolbar().setHardwareProfile(profile.toString());
         RunOutcome o = runToEnd(1);
         assertEquals(RunOutcome.Status.ERROR, o.status());
@@ -121,7 +121,7 @@ class ServoProfileGuiTest {
             Files.writeString(profile, "<hardware protocol=\"dxl2\" baud=\"1000000\">\n"
                     + "  <servo module=\"0\" id=\"5\" zero=\"10\"/>\n  <servo module=\"1\" id=\"6\" direction=\"-1\"/>\n"
                     + "</hardware>\n");
-            ide.toolbar().setTarget(Target.HARDWARE);
+            ide.toolbar().setTarget(RunOn.HARDWARE);
             ide.toolbar().setHardwareProfile(profile.toString());
             ide.toolbar().setPort(pty.a().toString());
             RunOutcome o = runToEnd(1);
@@ -144,7 +144,7 @@ class ServoProfileGuiTest {
             Path profile = dir.resolve("alarm.xml");
             Files.writeString(profile, "<hardware protocol=\"dxl2\" baud=\"1000000\">\n"
                     + "  <servo module=\"0\" id=\"5\"/>\n  <servo module=\"1\" id=\"6\"/>\n</hardware>\n");
-            ide.toolbar().setTarget(Target.HARDWARE);
+            ide.toolbar().setTarget(RunOn.HARDWARE);
             ide.toolbar().setHardwareProfile(profile.toString());
             ide.toolbar().setPort(pty.a().toString());
             AtomicReference<RunOutcome> outcome = new AtomicReference<>();

@@ -10,7 +10,7 @@ import org.eclipse.swt.widgets.Event;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.parpe.gui.run.Speed;
-import org.parpe.gui.run.Target;
+import org.parpe.gui.run.RunOn;
 
 /**
  * Issue 23, item 6: an "s" pressed while the editor had the focus during a run went into the
@@ -42,7 +42,7 @@ class TeleopKeysGuiTest {
         Gui.open(ide, Gui.example("teleop-dirwave.xml"));
         Gui.pump(() -> ide.program() != null, "the example to load");
         String before = ide.editor().document().get();
-        ide.toolbar().setTarget(Target.SIMULATOR);
+        ide.toolbar().setTarget(RunOn.SIMULATOR);
         ide.toolbar().setSpeed(Speed.REAL_TIME);
         assertEquals("", ide.status().keys(), "no steering keys before a run");
         ide.runs().run(false, -1, null);

@@ -36,7 +36,7 @@ import org.parpe.core.model.MainEntry;
 import org.parpe.core.model.Program;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.gui.run.Speed;
-import org.parpe.gui.run.Target;
+import org.parpe.gui.run.RunOn;
 
 /**
  * The tutorial's pictures, made by the IDE itself so that they never go stale: for every
@@ -164,7 +164,7 @@ class TutorialScreenshotsTest {
                 name + " to load", WAIT_MS);
         assertEquals(0, ide.problems().errorCount(), name + " has errors: " + ide.problems().shown());
 
-        ide.toolbar().setTarget(Target.SIMULATOR);
+        ide.toolbar().setTarget(RunOn.SIMULATOR);
         ide.toolbar().setSpeed(Speed.MAX);
         AtomicReference<RunOutcome> outcome = new AtomicReference<>();
         Set<Integer> driven = moved(ide.program());

@@ -18,7 +18,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.gui.run.Speed;
-import org.parpe.gui.run.Target;
+import org.parpe.gui.run.RunOn;
 import org.parpe.gui.view3d.ModuleCameraView;
 import org.parpe.sim.PartKind;
 import org.parpe.sim.SimSnapshot;
@@ -88,7 +88,7 @@ class WorldGuiTest {
         // the preview (the robot at the world's start) is built in the background: wait for it
         Gui.pump(() -> ide.runs().snapshot() != null && ide.runs().snapshot().scenery().size() > 0,
                 "the preview in " + world);
-        ide.toolbar().setTarget(Target.SIMULATOR);
+        ide.toolbar().setTarget(RunOn.SIMULATOR);
         ide.toolbar().setSpeed(Speed.MAX);
         AtomicReference<RunOutcome> end = new AtomicReference<>();
         ide.runs().run(false, 12, end::set);

@@ -299,7 +299,7 @@ class DiagramGuiTest {
         show(view, subject);
         assertEquals(null, pane().liveCounts(), "no overlay while nothing runs");
         java.util.concurrent.atomic.AtomicReference<org.parpe.core.run.RunOutcome> end = new java.util.concurrent.atomic.AtomicReference<>();
-        IdeAccess.run(ide, org.parpe.gui.run.Target.SIMULATOR, 600, end::set);
+        IdeAccess.run(ide, org.parpe.gui.run.RunOn.SIMULATOR, 600, end::set);
         try {
             long last = -1;
             for (int frame = 0; frame < 10; frame++) {

@@ -26,7 +26,7 @@ import org.junit.jupiter.api.TestMethodOrder;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.gui.app.IdeAccess;
 import org.parpe.gui.app.IdeWindow;
-import org.parpe.gui.run.Target;
+import org.parpe.gui.run.RunOn;
 import org.parpe.gui.view3d.View3D;
 import org.parpe.serial.record.RecordingWriter;
 
@@ -195,7 +195,7 @@ class PosePanelGuiTest {
     @Test
     @Order(2)
     void playsThePosesInTheSimulatorAtTwiceTheRate() {
-        panel.output().choose(2, false, Target.SIMULATOR);
+        panel.output().choose(2, false, RunOn.SIMULATOR);
         AtomicReference<RunOutcome> outcome = new AtomicReference<>();
         assertTrue(panel.output().play(outcome::set), "playback did not start: " + IdeAccess.status(ide));
         IdeAccess.pump(() -> outcome.get() != null, "the playback to end");

@@ -1,7 +1,7 @@
 package org.parpe.gui.run;
 
 /** What a run drives. */
-public enum Target {
+public enum RunOn {
     SIMULATOR("Simulator", true, false),
     HARDWARE("Hardware", false, true),
     BOTH("Simulator + hardware", true, true);
@@ -10,7 +10,7 @@ public enum Target {
     private final boolean sim;
     private final boolean hardware;
 
-    Target(String label, boolean sim, boolean hardware) {
+    RunOn(String label, boolean sim, boolean hardware) {
         this.label = label;
         this.sim = sim;
         this.hardware = hardware;
