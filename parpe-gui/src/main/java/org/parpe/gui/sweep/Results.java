@@ -25,12 +25,15 @@ final class Results {
     private final List<String> parameters;
     private final Objective objective;
     private final Constraints constraints;
+    private final Map<String, Double> own;
     private final List<SweepRow> rows = new ArrayList<>();
 
-    Results(Path script, Mode mode, List<String> parameters, Objective objective, Constraints constraints) {
+    /** {@code own}: the script's own values of {@code parameters} (its {@code value}s), to tell a best run that is only them. */
+    Results(Path script, Mode mode, List<String> parameters, Map<String, Double> own, Objective objective, Constraints constraints) {
         this.script = script;
         this.mode = mode;
         this.parameters = List.copyOf(parameters);
+        this.own = Map.copyOf(own);
         this.objective = objective;
         this.constraints = constraints;
     }
@@ -100,6 +103,33 @@ final class Results {
             }
         }
         return -1;
+    }
+
+    /**
+     * Whether {@code row} ran with the script's own values of every varied parameter (an
+     * optimisation starts there): then nothing the sweep tried beat the script as it is.
+     */
+    boolean scriptsOwn(SweepRow row) {
+        if (parameters.isEmpty()) {
+            return false;
+        }
+        for (String p : parameters) {
+            Double v = row.values().get(p);
+            Double o = own.get(p);
+            if (v == null || o == null || Math.abs(v - o) > 1e-9 * Math.max(1, Math.abs(o))) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** The sentence that names the best row {@code best} after a finished or stopped sweep. */
+    String bestSentence(SweepRow best) {
+        String measured = objective.label() + " " + ResultsTable.number(objective.of(best)) + (best.fell() ? " (its robot fell over)" : "");
+        return scriptsOwn(best)
+                ? "Nothing beat the script's own values: the best is run " + number(best) + " with them (" + describe(best.values()) + "): " + measured
+                        + ". Widen the ranges or try other parameters."
+                : "Best: run " + number(best) + ", " + describe(best.values()) + ": " + measured;
     }
 
     /** The parameter values of the best row, or an empty map. */

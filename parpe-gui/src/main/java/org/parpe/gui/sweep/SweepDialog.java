@@ -264,10 +264,7 @@ public final class SweepDialog {
             SweepRow best = results.best();
             String head = cancelled ? "Stopped after " + kept.size() + " of " + total + " runs. "
                     : "Finished " + kept.size() + " runs. ";
-            info(head + (best == null ? noBest(kept)
-                    : "Best: run " + results.number(best) + ", " + Results.describe(best.values()) + ": "
-                    + results.objective().label() + " " + ResultsTable.number(results.objective().of(best))
-                    + (best.fell() ? " (its robot fell over)" : "")));
+            info(head + (best == null ? noBest(kept) : results.bestSentence(best)));
             apply.setEnabled(best != null);
         }
 
