@@ -231,12 +231,11 @@ public final class IdeWindow {
 
     /** Ctrl + / Ctrl − / Ctrl 0: larger, smaller, normal text in the editor, the log and the gait table (a projector). */
     private boolean zoomKey(Event e) {
-        int step = e.character == '+' || e.character == '=' || e.keyCode == SWT.KEYPAD_ADD ? 1
-                : e.character == '-' || e.keyCode == SWT.KEYPAD_SUBTRACT ? -1 : e.character == '0' || e.keyCode == '0' ? 0 : 2;
-        if (step == 2) {
+        int step = org.parpe.gui.panels.Zoom.step(e);
+        if (step == org.parpe.gui.panels.Zoom.NONE) {
             return false;
         }
-        zoom = step == 0 ? 0 : Math.max(-4, Math.min(12, zoom + step));
+        zoom = org.parpe.gui.panels.Zoom.next(zoom, step);
         org.parpe.gui.panels.Zoom.apply(editor.widget(), org.eclipse.jface.resource.JFaceResources.getTextFont(), zoom);
         org.parpe.gui.panels.Zoom.apply(log, org.eclipse.jface.resource.JFaceResources.getTextFont(), zoom);
         org.parpe.gui.panels.Zoom.apply(gaitGrid.widget(), shell.getDisplay().getSystemFont(), zoom);
