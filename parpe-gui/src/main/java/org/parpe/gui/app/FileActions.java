@@ -434,13 +434,18 @@ final class FileActions {
      * again at the next start): only saving it, or "Discard" when offered, removes it.
      */
     boolean confirmDiscard() {
+        return confirmDiscard(null);
+    }
+
+    /** As {@link #confirmDiscard()}, the question also saying {@code alsoLost} (what else quitting loses; null: nothing). */
+    boolean confirmDiscard(String alsoLost) {
         if (!dirty()) {
             return true;
         }
-        String message = recovered
+        String message = (recovered
                 ? name() + " holds recovered text that is not saved. Save it?\n\nIf you don't, the recovered copy is kept"
                         + " and offered again when PARPE starts."
-                : name() + " has unsaved changes. Save them?";
+                : name() + " has unsaved changes. Save them?") + (alsoLost == null ? "" : "\n\n" + alsoLost);
         return switch (questions.ask("Unsaved changes", message, "Save", "Don't Save", "Cancel")) {
             case 0 -> save();
             case 1 -> {

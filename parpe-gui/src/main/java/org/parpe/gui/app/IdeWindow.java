@@ -317,6 +317,9 @@ public final class IdeWindow {
 
     /** A different file is in the editor: forget what belonged to the previous one. */
     void fileSwitched() {
+        if (pose != null) {
+            pose.documentSwitched(files.file());
+        }
         choices.switchTo(files.pathForLoading());
         viewBar.show(choices.robot());
         if (!runs.running()) {
@@ -335,6 +338,9 @@ public final class IdeWindow {
     }
 
     private void documentChanged() {
+        if (pose != null && files.file() != null) {
+            pose.documentRenamed(files.file()); // Save As: the poses stay with the document
+        }
         String mark = files.dirty() ? "*" : "";
         editorTab.setText(mark + files.name());
         shell.setText(mark + files.name() + " \u2014 PARPE");
@@ -497,8 +503,9 @@ public final class IdeWindow {
         }
     }
 
+    /** One question before quitting: unsaved text and unsaved poses are asked about together. */
     boolean closeRequested() {
-        return files.confirmDiscard() && pose.confirmClose();
+        return files.dirty() ? files.confirmDiscard(pose.lossSentence()) : pose.confirmClose();
     }
 
     /** Appends a line to the Run log. */

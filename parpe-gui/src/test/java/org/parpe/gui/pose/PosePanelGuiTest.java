@@ -188,7 +188,7 @@ class PosePanelGuiTest {
         press("Up");
         assertArrayEquals(second, panel.poses().get(1).angles());
         assertTrue(panel.table().table().getItem(1).getText(1).equals("0.80"), "the list shows the new time");
-        assertEquals(List.of("3 poses of front"), panel.unsaved(), "closing the window would ask before losing them");
+        assertEquals(List.of("3 poses of front in pairs-centipede.xml"), panel.unsaved(), "closing the window would ask before losing them");
         IdeAccess.screenshot(ide.shell(), "pose-panel-posed.png");
     }
 
@@ -385,5 +385,48 @@ class PosePanelGuiTest {
         assertEquals(all.size() - 4, panel.table().selection(), "the first added pose is selected");
         assertTrue(panel.posingReady());
         assertEquals(-60, ide.view().lastSnapshot().angle(15), 6, "the posed robot stands in the first pose");
+    }
+
+    /**
+     * Issue 23, item 10: poses captured for one script followed into the next file opened, and
+     * quitting asked twice ("Unsaved changes", then the poses). Each script keeps its own poses;
+     * quitting asks one question that names both.
+     */
+    @Test
+    @Order(7)
+    void posesStayWithTheirScriptAndQuittingAsksOnce() throws Exception {
+        Path first = dir.resolve("first-centipede.xml");
+        Files.writeString(first, PAIRS);
+        openScript(first);
+        panel.chooseGroup("front");
+        IdeAccess.pump(() -> panel.posingReady() && panel.poses() != null && "front".equals(panel.poses().group()), "front to pose");
+        assertEquals(0, panel.poses().size(), "a script opened for the first time has no poses yet");
+        slide(0, -20);
+        press("Capture");
+        press("Capture");
+        assertEquals(2, panel.poses().size());
+        List<String> lost = panel.unsaved();
+        assertTrue(lost.contains("2 poses of front in first-centipede.xml"), lost.toString());
+
+        Path second = dir.resolve("second-centipede.xml");
+        Files.writeString(second, PAIRS);
+        openScript(second);
+        panel.chooseGroup("front");
+        IdeAccess.pump(() -> panel.posingReady() && panel.poses() != null, "front of the second script to pose");
+        assertEquals(0, panel.poses().size(), "the poses of first-centipede.xml followed into second-centipede.xml");
+        assertEquals(lost, panel.unsaved(), "the first script's poses are still its own");
+
+        openScript(first);
+        panel.chooseGroup("front");
+        IdeAccess.pump(() -> panel.posingReady() && panel.poses() != null, "front of the first script again");
+        assertEquals(2, panel.poses().size(), "the first script's poses are back with it");
+
+        ide.editor().document().replace(0, 0, "<!-- edited -->\n");
+        List<String> asked = new java.util.ArrayList<>();
+        assertTrue(IdeAccess.closeRequested(ide, asked, message -> 1), "Don't Save closes");
+        assertEquals(1, asked.size(), "one question before quitting: " + asked);
+        assertTrue(asked.get(0).contains("first-centipede.xml has unsaved changes")
+                && asked.get(0).contains("2 poses of front in first-centipede.xml"), asked.get(0));
+        ide.editor().document().replace(0, "<!-- edited -->\n".length(), "");
     }
 }
