@@ -225,8 +225,9 @@ final class PoseOutput {
             return null;
         }
         panel.markKept(panel.poses());
-        host.status("Added automaton " + r.automaton() + " and behavior " + r.behavior() + " playing it on "
-                + String.join(", ", request.targets()) + (r.mainAdded() ? ", run by <main>." : "; add it to <main> to run it."));
+        String said = r.said(request.targets());
+        host.status(said);
+        panel.say(said);
         return r;
     }
 }
