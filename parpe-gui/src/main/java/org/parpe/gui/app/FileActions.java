@@ -9,7 +9,6 @@ import java.util.concurrent.Executors;
 import java.util.function.Consumer;
 import org.eclipse.jface.dialogs.MessageDialog;
 import org.eclipse.swt.SWT;
-import org.eclipse.swt.widgets.FileDialog;
 import org.eclipse.swt.widgets.Shell;
 import org.parpe.gui.editor.ParslEditor;
 
@@ -197,15 +196,9 @@ final class FileActions {
         if (!confirmDiscard()) {
             return;
         }
-        FileDialog d = new FileDialog(shell, SWT.OPEN);
-        d.setText("Open a PARSL script");
-        d.setFilterExtensions(new String[] {"*.xml;*.parsl", "*"});
-        d.setFilterNames(new String[] {"PARSL scripts (*.xml, *.parsl)", "All files"});
-        // Where Save As would start: the script's folder, else Documents (never the process's folder).
-        d.setFilterPath(saveFolder(file, Examples.folder(), Path.of(System.getProperty("user.home"))).toString());
-        String p = d.open();
+        Path p = org.parpe.gui.panels.FileDialogs.ask(shell, SWT.OPEN, "Open a PARSL script", "*.xml;*.parsl", null, null);
         if (p != null) {
-            openPath(Path.of(p));
+            openPath(p);
         }
     }
 
@@ -374,7 +367,7 @@ final class FileActions {
     }
 
     boolean saveAs() {
-        Path chosen = saveTarget.ask(saveFolder(file, Examples.bundled(), Path.of(System.getProperty("user.home"))), fileName());
+        Path chosen = saveTarget.ask(org.parpe.gui.panels.FileDialogs.start(), fileName());
         if (chosen == null) {
             return false;
         }
@@ -392,21 +385,6 @@ final class FileActions {
             return true;
         }
         return false;
-    }
-
-    /**
-     * Where Save As starts: the folder of the file being edited, except for a new script or one of
-     * the bundled examples (in the install folder, which is no place for a student's work): then
-     * the user's Documents folder, or the home folder when there is none.
-     */
-    static Path saveFolder(Path file, Path examples, Path home) {
-        Path parent = file == null ? null : file.toAbsolutePath().normalize().getParent();
-        Path bundled = examples == null ? null : examples.toAbsolutePath().normalize().getParent();
-        if (parent != null && (bundled == null || !parent.startsWith(bundled))) {
-            return parent;
-        }
-        Path documents = home.resolve("Documents");
-        return Files.isDirectory(documents) ? documents : home;
     }
 
     private boolean write(Path target) {

@@ -136,6 +136,7 @@ public final class IdeWindow {
         status = new StatusBar(shell);
         status.control().setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         files = new FileActions(shell, editor, prefs, this::documentChanged, this::fileSwitched, status::setMessage);
+        org.parpe.gui.panels.FileDialogs.follow(files::file, Examples.bundled());
         diagram = new DiagramPane(viewFolder, editor, files::pathForLoading);
         Panels.tab(viewFolder, "Diagram", diagram.control());
         diagram.follow(runs.controller().live(), runs::running);

@@ -11,7 +11,6 @@ import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Composite;
-import org.eclipse.swt.widgets.FileDialog;
 import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.ProgressBar;
 import org.eclipse.swt.widgets.Shell;
@@ -336,30 +335,12 @@ public final class SweepDialog {
     }
 
     private void saveCsv() {
-        FileDialog d = new FileDialog(shell, SWT.SAVE);
-        d.setText("Save the runs as CSV");
-        d.setFilterPath(csvFolder(host.script().get(), Path.of(System.getProperty("user.home"))).toString());
-        d.setFilterExtensions(new String[] {"*.csv", "*"});
-        d.setOverwrite(true);
         String name = host.script().get().getFileName().toString().replaceFirst("\\.xml$", "");
-        d.setFileName(name + (results.mode() == Results.Mode.SWEEP ? "-sweep.csv" : "-optimise.csv"));
-        String p = d.open();
+        Path p = org.parpe.gui.panels.FileDialogs.ask(shell, SWT.SAVE, "Save the runs as CSV", "*.csv",
+                name + (results.mode() == Results.Mode.SWEEP ? "-sweep.csv" : "-optimise.csv"), null);
         if (p != null) {
-            saveCsv(Path.of(p));
+            saveCsv(p);
         }
-    }
-
-    /**
-     * Where Save CSV… starts: beside the script when that folder can be written (not the examples'
-     * install folder), else Documents, else the home folder; never the process's working folder.
-     */
-    static Path csvFolder(Path script, Path home) {
-        Path parent = script == null ? null : script.toAbsolutePath().normalize().getParent();
-        if (parent != null && java.nio.file.Files.isWritable(parent)) {
-            return parent;
-        }
-        Path documents = home.resolve("Documents");
-        return java.nio.file.Files.isDirectory(documents) ? documents : home;
     }
 
     /** Writes the rows to {@code file} off the UI thread and says when it is done. */
