@@ -42,6 +42,8 @@ public final class IdeWindow {
 
     private static final String MAXIMISED = "window.maximised";
     private static final String FIRST_START = "tutorial.offered";
+    /** The preference (Help > Open the Tutorial at Every Start) that opens the tutorial at each start, not only the first. */
+    static final String TUTORIAL_AT_START = "tutorial.atStart";
     private final Prefs prefs;
     private final AlarmBanner alarm;
     private final MenuBar menus;
@@ -309,11 +311,17 @@ public final class IdeWindow {
             status.setMessage("Recovered unsaved text; " + file.getFileName() + " was not opened (File > Open it when ready).");
         }
         editor.widget().setFocus();
-        if (!automated && prefs.get(FIRST_START, null) == null) {
-            // Someone who has never used PARPE (a student who has never programmed) meets the tutorial first.
+        if (!automated && (prefs.get(FIRST_START, null) == null || tutorialAtStart(prefs))) {
+            // Someone who has never used PARPE (a student who has never programmed) meets the tutorial first;
+            // a class that starts with a lesson every time can ask for it at each start.
             prefs.put(FIRST_START, "done");
             menus.openTutorial();
         }
+    }
+
+    /** Whether the tutorial opens at every start (Help > Open the Tutorial at Every Start). */
+    static boolean tutorialAtStart(Prefs prefs) {
+        return "yes".equals(prefs.get(TUTORIAL_AT_START, "no"));
     }
 
     /** A different file is in the editor: forget what belonged to the previous one. */

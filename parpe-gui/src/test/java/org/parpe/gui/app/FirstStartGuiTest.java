@@ -44,6 +44,31 @@ class FirstStartGuiTest {
         ide.open(null, false);
         Gui.settle();
         assertEquals(0, tutorials(), "only the first start opens it");
+        org.eclipse.swt.widgets.MenuItem atStart = menuItem(ide.shell().getMenuBar(), "Open the Tutorial at Every Start");
+        assertTrue(!atStart.getSelection(), "off unless asked for");
+        atStart.setSelection(true);
+        atStart.notifyListeners(org.eclipse.swt.SWT.Selection, new org.eclipse.swt.widgets.Event());
+        ide.shell().dispose();
+        ide = new IdeWindow(Gui.display(), new Prefs(home));
+        ide.open(null, false);
+        Gui.settle();
+        assertEquals(1, tutorials(), "the preference opens it at every start");
+        assertTrue(menuItem(ide.shell().getMenuBar(), "Open the Tutorial at Every Start").getSelection());
+    }
+
+    private static org.eclipse.swt.widgets.MenuItem menuItem(org.eclipse.swt.widgets.Menu menu, String text) {
+        for (org.eclipse.swt.widgets.MenuItem it : menu.getItems()) {
+            if (it.getText().replace("&", "").equals(text)) {
+                return it;
+            }
+            if (it.getMenu() != null) {
+                org.eclipse.swt.widgets.MenuItem in = menuItem(it.getMenu(), text);
+                if (in != null) {
+                    return in;
+                }
+            }
+        }
+        return null;
     }
 
     @Test
