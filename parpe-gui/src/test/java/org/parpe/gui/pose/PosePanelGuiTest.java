@@ -429,4 +429,52 @@ class PosePanelGuiTest {
                 && asked.get(0).contains("2 poses of front in first-centipede.xml"), asked.get(0));
         ide.editor().document().replace(0, "<!-- edited -->\n".length(), "");
     }
+
+    /**
+     * Issue 23, item 5: nothing told whether a drag would bend a joint or orbit, and the wheel
+     * zoomed on the body's centre rather than the group being posed.
+     */
+    @Test
+    @Order(8)
+    void hoverSaysWhatADragDoesAndTheWheelZoomsOnTheGroup() throws Exception {
+        openScript(script);
+        ide.showPosePanel();
+        panel.chooseGroup("front");
+        IdeAccess.pump(() -> panel.posingReady() && panel.poses() != null, "front to pose");
+        View3D view = ide.view();
+        view.focus(panel.posedModules());
+        IdeAccess.settle();
+        int id = grabbable(view, 1, 15, 0, 14);
+        assertTrue(id >= 0, "no module of the front pair can be grabbed in the 3D view");
+        Point p = view.screenPoint(id);
+        mouse(SWT.MouseMove, p.x, p.y, 0);
+        assertEquals(id, view.hovered(), "the module under the mouse is lit");
+        assertEquals("Drag up or down: bend the joint of m" + id, view.dragHint());
+        IdeAccess.screenshot(ide.shell(), "pose-panel-hover.png");
+        mouse(SWT.MouseMove, 3, view.control().getSize().y - 3, 0);
+        assertEquals(-1, view.hovered());
+        assertEquals("Drag: turn the view around", view.dragHint());
+
+        // Frame the whole robot, then one notch of the wheel: the view turns to the posed group.
+        view.resetView();
+        IdeAccess.settle();
+        java.util.Set<Integer> group = view.highlighted().get();
+        assertTrue(!group.isEmpty(), "the posed group is highlighted");
+        double x = 0, y = 0, z = 0;
+        int n = 0;
+        for (org.parpe.sim.SimBody b : view.lastSnapshot().bodies()) {
+            if (group.contains(b.moduleId())) {
+                x += b.position().x();
+                y += b.position().y();
+                z += b.position().z();
+                n++;
+            }
+        }
+        Event wheel = new Event();
+        wheel.count = 3;
+        view.control().notifyListeners(SWT.MouseVerticalWheel, wheel);
+        double[] t = view.target();
+        assertEquals(x / n, t[0], 0.02, "the wheel zooms on the group, not the body");
+        assertEquals(y / n, t[1], 0.02);
+    }
 }
