@@ -79,6 +79,10 @@ final class CsvExport {
         List<SweepRow> kept = results.complete() ? List.copyOf(results.rows()) : List.of();
         Path spilled = results.complete() ? null : results.spilled();
         int count = results.count();
+        if (!results.complete() && spilled == null) {
+            outcome.done(false, "Cannot save " + file + ": " + results.spillError());
+            return;
+        }
         Thread t = new Thread(() -> {
             boolean ok;
             String said;

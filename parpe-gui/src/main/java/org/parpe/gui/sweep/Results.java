@@ -42,6 +42,8 @@ final class Results {
     private int fell;
     private Path spill;
     private java.io.BufferedWriter spillOut;
+    /** Why the rows beyond {@link #KEEP} could not be kept for Save CSV… (a full disk), or null. */
+    private String spillError;
 
     /**
      * {@code own}: the script's own values of {@code parameters} (its {@code value}s), to tell a best
@@ -121,6 +123,9 @@ final class Results {
             rows.add(row);
             return;
         }
+        if (spillError != null) {
+            return;
+        }
         try {
             if (spillOut == null) {
                 spill = java.nio.file.Files.createTempFile("parpe-sweep-", ".csv");
@@ -134,13 +139,25 @@ final class Results {
             spillOut.write(org.parpe.sim.sweep.SweepCsv.line(row, runs));
             spillOut.write('\n');
         } catch (java.io.IOException e) {
-            throw new java.io.UncheckedIOException("cannot keep the rows in a temporary file: " + e.getMessage(), e);
+            lost(e);
         }
+    }
+
+    /** The temporary file could not be written: the rows beyond {@link #KEEP} cannot be saved; Save CSV… will say why. */
+    private void lost(java.io.IOException e) {
+        spillError = "the runs after the first " + keep + " could not be kept for Save CSV\u2026 (" + e.getMessage() + ")";
+        discard();
+    }
+
+    /** Why not every row can be saved (see {@link #spilled}), or null. */
+    String spillError() {
+        return spillError;
     }
 
     /** Replaces the rows with the engine's final list (the same runs, in its order; an optimisation's few). */
     void replace(List<SweepRow> all) {
         discard();
+        spillError = null;
         rows.clear();
         best = null;
         count = 0;
@@ -149,14 +166,17 @@ final class Results {
         all.forEach(this::add);
     }
 
-    /** The temporary file with every row's CSV line, complete up to now; null while {@link #complete}. */
+    /**
+     * The temporary file with every row's CSV line, complete up to now; null while {@link #complete},
+     * or when it could not be written ({@link #spillError}).
+     */
     Path spilled() {
         try {
             if (spillOut != null) {
                 spillOut.flush();
             }
         } catch (java.io.IOException e) {
-            throw new java.io.UncheckedIOException(e);
+            lost(e);
         }
         return spill;
     }
