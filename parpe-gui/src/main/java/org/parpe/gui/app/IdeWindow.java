@@ -49,6 +49,8 @@ public final class IdeWindow implements HardwareHost {
 
     private static final String MAXIMISED = "window.maximised";
     private static final String FIRST_START = "tutorial.offered";
+    /** The preference (Help > Open the Tutorial at Every Start) that opens the tutorial at each start, not only the first. */
+    static final String TUTORIAL_AT_START = "tutorial.atStart";
     private final Prefs prefs;
     private final AlarmBanner alarm;
     private final MenuBar menus;
@@ -143,6 +145,7 @@ public final class IdeWindow implements HardwareHost {
         status = new StatusBar(shell);
         status.control().setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         files = new FileActions(shell, editor, prefs, this::documentChanged, this::fileSwitched, status::setMessage);
+        org.parpe.gui.panels.FileDialogs.follow(files::file, org.parpe.gui.files.Examples.bundled());
         diagram = new DiagramPane(viewFolder, editor, files::pathForLoading);
         Panels.tab(viewFolder, "Diagram", diagram.control());
         diagram.follow(runs.controller().live(), runs::running);
@@ -238,12 +241,11 @@ public final class IdeWindow implements HardwareHost {
 
     /** Ctrl + / Ctrl − / Ctrl 0: larger, smaller, normal text in the editor, the log and the gait table (a projector). */
     private boolean zoomKey(Event e) {
-        int step = e.character == '+' || e.character == '=' || e.keyCode == SWT.KEYPAD_ADD ? 1
-                : e.character == '-' || e.keyCode == SWT.KEYPAD_SUBTRACT ? -1 : e.character == '0' || e.keyCode == '0' ? 0 : 2;
-        if (step == 2) {
+        int step = org.parpe.gui.panels.Zoom.step(e);
+        if (step == org.parpe.gui.panels.Zoom.NONE) {
             return false;
         }
-        zoom = step == 0 ? 0 : Math.max(-4, Math.min(12, zoom + step));
+        zoom = org.parpe.gui.panels.Zoom.next(zoom, step);
         org.parpe.gui.panels.Zoom.apply(editor.widget(), org.eclipse.jface.resource.JFaceResources.getTextFont(), zoom);
         org.parpe.gui.panels.Zoom.apply(log, org.eclipse.jface.resource.JFaceResources.getTextFont(), zoom);
         org.parpe.gui.panels.Zoom.apply(gaitGrid.widget(), shell.getDisplay().getSystemFont(), zoom);
@@ -316,15 +318,24 @@ public final class IdeWindow implements HardwareHost {
             status.setMessage("Recovered unsaved text; " + file.getFileName() + " was not opened (File > Open it when ready).");
         }
         editor.widget().setFocus();
-        if (!automated && prefs.get(FIRST_START, null) == null) {
-            // Someone who has never used PARPE (a student who has never programmed) meets the tutorial first.
+        if (!automated && (prefs.get(FIRST_START, null) == null || tutorialAtStart(prefs))) {
+            // Someone who has never used PARPE (a student who has never programmed) meets the tutorial first;
+            // a class that starts with a lesson every time can ask for it at each start.
             prefs.put(FIRST_START, "done");
             menus.openTutorial();
         }
     }
 
+    /** Whether the tutorial opens at every start (Help > Open the Tutorial at Every Start). */
+    static boolean tutorialAtStart(Prefs prefs) {
+        return "yes".equals(prefs.get(TUTORIAL_AT_START, "no"));
+    }
+
     /** A different file is in the editor: forget what belonged to the previous one. */
     void fileSwitched() {
+        if (pose != null) {
+            pose.documentSwitched(files.file());
+        }
         choices.switchTo(files.pathForLoading());
         viewBar.show(choices.robot());
         if (!runs.running()) {
@@ -343,6 +354,9 @@ public final class IdeWindow implements HardwareHost {
     }
 
     private void documentChanged() {
+        if (pose != null && files.file() != null) {
+            pose.documentRenamed(files.file()); // Save As: the poses stay with the document
+        }
         String mark = files.dirty() ? "*" : "";
         editorTab.setText(mark + files.name());
         shell.setText(mark + files.name() + " \u2014 PARPE");
@@ -505,8 +519,9 @@ public final class IdeWindow implements HardwareHost {
         }
     }
 
+    /** One question before quitting: unsaved text and unsaved poses are asked about together. */
     boolean closeRequested() {
-        return files.confirmDiscard() && pose.confirmClose();
+        return files.dirty() ? files.confirmDiscard(pose.lossSentence()) : pose.confirmClose();
     }
 
     /** Appends a line to the Run log. */

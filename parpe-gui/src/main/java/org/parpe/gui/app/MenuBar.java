@@ -216,6 +216,10 @@ final class MenuBar {
 
     private void helpMenu(Menu m) {
         item(m, "&Tutorial", 0, this::openTutorial);
+        MenuItem atStart = new MenuItem(m, SWT.CHECK);
+        atStart.setText("Open the Tutorial at &Every Start");
+        atStart.setSelection(IdeWindow.tutorialAtStart(ide.prefs()));
+        atStart.addListener(SWT.Selection, e -> ide.prefs().put(IdeWindow.TUTORIAL_AT_START, atStart.getSelection() ? "yes" : "no"));
         item(m, "PARSL &Quick Reference", SWT.F1, () -> QuickReference.open(ide.shell()));
         item(m, "&About PARPE", 0, () -> MessageDialog.openInformation(ide.shell(), "About PARPE", HelpText.ABOUT));
     }

@@ -1,6 +1,7 @@
 package org.parpe.gui.app;
 
 import org.parpe.gui.prefs.Prefs;
+import java.nio.file.Path;
 
 import java.util.List;
 import org.eclipse.swt.SWT;
@@ -8,7 +9,6 @@ import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.graphics.Image;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Combo;
-import org.eclipse.swt.widgets.FileDialog;
 import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.ToolBar;
@@ -89,12 +89,9 @@ public final class RunToolBar {
         browse.setText("\u2026");
         browse.setToolTipText("Choose a hardware profile");
         browse.addListener(SWT.Selection, e -> {
-            FileDialog d = new FileDialog(bar.getShell(), SWT.OPEN);
-            d.setText("Hardware profile");
-            d.setFilterExtensions(new String[] {"*.xml", "*"});
-            String chosen = d.open();
+            Path chosen = org.parpe.gui.panels.FileDialogs.ask(bar.getShell(), SWT.OPEN, "Hardware profile", "*.xml", null, null);
             if (chosen != null) {
-                profile.setText(chosen);
+                profile.setText(chosen.toString());
             }
         });
         Button hardware = new Button(bar, SWT.PUSH);

@@ -1,14 +1,12 @@
 package org.parpe.gui.app;
 
 import org.parpe.gui.prefs.Prefs;
-
-
+import java.nio.file.Path;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
-import org.eclipse.swt.widgets.FileDialog;
 import org.eclipse.swt.widgets.Label;
 import org.parpe.gui.view3d.View3D;
 import org.parpe.sim.SimTarget;
@@ -88,15 +86,12 @@ public final class ViewBar {
 
     private void chosen() {
         if (BROWSE.equals(robot.getText())) {
-            FileDialog d = new FileDialog(robot.getShell(), SWT.OPEN);
-            d.setFilterExtensions(new String[] {"*.xml", "*"});
-            d.setText("Robot configuration file");
-            String p = d.open();
+            Path p = org.parpe.gui.panels.FileDialogs.ask(robot.getShell(), SWT.OPEN, "Robot configuration file", "*.xml", null, null);
             if (p == null) {
                 robot.select(0);
                 return;
             }
-            useFile(p);
+            useFile(p.toString());
         }
         ide.robotChosen(robot());
         ide.runs().invalidatePreview();

@@ -13,7 +13,6 @@ import java.util.stream.Stream;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
-import org.eclipse.swt.widgets.FileDialog;
 import org.eclipse.swt.widgets.Label;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.sim.world.World;
@@ -81,15 +80,12 @@ final class WorldPicker {
     }
 
     private boolean browse() {
-        FileDialog d = new FileDialog(combo.getShell(), SWT.OPEN);
-        d.setFilterExtensions(new String[] {"*.xml", "*"});
-        d.setText("World file");
-        String p = d.open();
+        Path p = org.parpe.gui.panels.FileDialogs.ask(combo.getShell(), SWT.OPEN, "World file", "*.xml", null, null);
         if (p == null) {
             return false;
         }
-        choose(Path.of(p));
-        prefs.put("view.worldFile", p);
+        choose(p);
+        prefs.put("view.worldFile", p.toString());
         return true;
     }
 

@@ -74,7 +74,7 @@ public final class Examples {
     }
 
     /** The examples that come with PARPE, or {@code null} if none is found. */
-    static Path bundled() {
+    public static Path bundled() {
         String prop = System.getProperty("parpe.examples");
         if (prop != null && Files.isDirectory(Path.of(prop))) {
             return Path.of(prop).toAbsolutePath().normalize();

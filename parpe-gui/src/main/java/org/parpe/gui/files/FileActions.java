@@ -11,7 +11,6 @@ import java.util.concurrent.Executors;
 import java.util.function.Consumer;
 import org.eclipse.jface.dialogs.MessageDialog;
 import org.eclipse.swt.SWT;
-import org.eclipse.swt.widgets.FileDialog;
 import org.eclipse.swt.widgets.Shell;
 import org.parpe.gui.editor.ParslEditor;
 
@@ -199,15 +198,9 @@ public final class FileActions {
         if (!confirmDiscard()) {
             return;
         }
-        FileDialog d = new FileDialog(shell, SWT.OPEN);
-        d.setText("Open a PARSL script");
-        d.setFilterExtensions(new String[] {"*.xml;*.parsl", "*"});
-        d.setFilterNames(new String[] {"PARSL scripts (*.xml, *.parsl)", "All files"});
-        // Where Save As would start: the script's folder, else Documents (never the process's folder).
-        d.setFilterPath(saveFolder(file, Examples.folder(), Path.of(System.getProperty("user.home"))).toString());
-        String p = d.open();
+        Path p = org.parpe.gui.panels.FileDialogs.ask(shell, SWT.OPEN, "Open a PARSL script", "*.xml;*.parsl", null, null);
         if (p != null) {
-            openPath(Path.of(p));
+            openPath(p);
         }
     }
 
@@ -376,7 +369,7 @@ public final class FileActions {
     }
 
     public boolean saveAs() {
-        Path chosen = saveTarget.ask(saveFolder(file, Examples.bundled(), Path.of(System.getProperty("user.home"))), fileName());
+        Path chosen = saveTarget.ask(org.parpe.gui.panels.FileDialogs.start(), fileName());
         if (chosen == null) {
             return false;
         }
@@ -394,21 +387,6 @@ public final class FileActions {
             return true;
         }
         return false;
-    }
-
-    /**
-     * Where Save As starts: the folder of the file being edited, except for a new script or one of
-     * the bundled examples (in the install folder, which is no place for a student's work): then
-     * the user's Documents folder, or the home folder when there is none.
-     */
-    static Path saveFolder(Path file, Path examples, Path home) {
-        Path parent = file == null ? null : file.toAbsolutePath().normalize().getParent();
-        Path bundled = examples == null ? null : examples.toAbsolutePath().normalize().getParent();
-        if (parent != null && (bundled == null || !parent.startsWith(bundled))) {
-            return parent;
-        }
-        Path documents = home.resolve("Documents");
-        return Files.isDirectory(documents) ? documents : home;
     }
 
     private boolean write(Path target) {
@@ -436,13 +414,18 @@ public final class FileActions {
      * again at the next start): only saving it, or "Discard" when offered, removes it.
      */
     public boolean confirmDiscard() {
+        return confirmDiscard(null);
+    }
+
+    /** As {@link #confirmDiscard()}, the question also saying {@code alsoLost} (what else quitting loses; null: nothing). */
+    public boolean confirmDiscard(String alsoLost) {
         if (!dirty()) {
             return true;
         }
-        String message = recovered
+        String message = (recovered
                 ? name() + " holds recovered text that is not saved. Save it?\n\nIf you don't, the recovered copy is kept"
                         + " and offered again when PARPE starts."
-                : name() + " has unsaved changes. Save them?";
+                : name() + " has unsaved changes. Save them?") + (alsoLost == null ? "" : "\n\n" + alsoLost);
         return switch (questions.ask("Unsaved changes", message, "Save", "Don't Save", "Cancel")) {
             case 0 -> save();
             case 1 -> {

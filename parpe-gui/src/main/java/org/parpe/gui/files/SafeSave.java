@@ -3,7 +3,6 @@ package org.parpe.gui.files;
 import java.io.IOException;
 import java.nio.file.Path;
 import org.eclipse.swt.SWT;
-import org.eclipse.swt.widgets.FileDialog;
 import org.eclipse.swt.widgets.Shell;
 import org.parpe.core.io.AtomicFiles;
 
@@ -24,13 +23,6 @@ final class SafeSave {
 
     /** The Save As dialog, starting in {@code folder} with {@code name}; the chosen file, or {@code null}. */
     static Path ask(Shell shell, Path folder, String name) {
-        FileDialog d = new FileDialog(shell, SWT.SAVE);
-        d.setText("Save the script as");
-        d.setFilterExtensions(new String[] {"*.xml", "*"});
-        d.setOverwrite(true);
-        d.setFileName(name);
-        d.setFilterPath(folder.toString());
-        String p = d.open();
-        return p == null ? null : Path.of(p);
+        return org.parpe.gui.panels.FileDialogs.ask(shell, SWT.SAVE, "Save the script as", "*.xml", name, folder);
     }
 }

@@ -11,7 +11,6 @@ import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Display;
-import org.eclipse.swt.widgets.FileDialog;
 import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.Shell;
 import org.eclipse.swt.widgets.Spinner;
@@ -353,13 +352,9 @@ public final class HardwareDialog {
     }
 
     private void chooseProfileFile() {
-        FileDialog d = new FileDialog(shell, SWT.SAVE);
-        d.setFilterExtensions(new String[] {"*.xml", "*"});
-        d.setFileName("hardware.xml");
-        d.setOverwrite(true);
-        String f = d.open();
+        Path f = org.parpe.gui.panels.FileDialogs.ask(shell, SWT.SAVE, "Save the hardware profile", "*.xml", "hardware.xml", null);
         if (f != null) {
-            saveProfile(Path.of(f));
+            saveProfile(f);
         }
     }
 

@@ -5,13 +5,17 @@ import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.widgets.Button;
+import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.Shell;
-import org.eclipse.swt.widgets.Text;
+import org.eclipse.swt.widgets.Table;
+import org.eclipse.swt.widgets.TableColumn;
+import org.eclipse.swt.widgets.TableItem;
 
 /**
- * Help → PARSL Quick Reference (F1): {@link HelpText#QUICK_REFERENCE} in a window of its own that
- * can stay open beside the editor, in the fixed-width text font so that its columns line up (a
- * message box set them in a proportional font), and whose text can be selected and copied.
+ * Help → PARSL Quick Reference (F1): a window of its own that can stay open beside the editor,
+ * with the sections of a program in a real table (section, what it holds, an example in the
+ * editor's fixed-width font; a message box had set space-aligned columns in a proportional font),
+ * and the keys under it. Rows can be selected and copied with Ctrl+C.
  */
 public final class QuickReference {
     private QuickReference() {
@@ -22,10 +26,51 @@ public final class QuickReference {
         Shell shell = new Shell(parent, SWT.SHELL_TRIM | SWT.MODELESS);
         shell.setText("PARSL quick reference");
         shell.setLayout(new GridLayout(1, false));
-        Text text = new Text(shell, SWT.MULTI | SWT.READ_ONLY | SWT.V_SCROLL | SWT.H_SCROLL | SWT.BORDER);
-        text.setFont(JFaceResources.getTextFont());
-        text.setText(HelpText.QUICK_REFERENCE);
-        text.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
+        Label intro = new Label(shell, SWT.WRAP);
+        intro.setText(HelpText.NOTES[0]);
+        Table table = new Table(shell, SWT.BORDER | SWT.FULL_SELECTION | SWT.MULTI);
+        table.setHeaderVisible(true);
+        table.setLinesVisible(true);
+        table.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
+        for (String h : new String[] {"Section", "What it holds", "Example"}) {
+            new TableColumn(table, SWT.LEFT).setText(h);
+        }
+        for (String[] row : HelpText.SECTIONS) {
+            TableItem item = new TableItem(table, SWT.NONE);
+            item.setText(row);
+            item.setFont(0, JFaceResources.getTextFont());
+            item.setFont(2, JFaceResources.getTextFont());
+        }
+        // Each column as wide as its widest cell in that cell's font (pack() measures the table's font only).
+        org.eclipse.swt.graphics.GC gc = new org.eclipse.swt.graphics.GC(table);
+        try {
+            for (int c = 0; c < table.getColumnCount(); c++) {
+                TableColumn column = table.getColumn(c);
+                column.pack();
+                int width = column.getWidth();
+                for (TableItem item : table.getItems()) {
+                    gc.setFont(item.getFont(c));
+                    width = Math.max(width, gc.textExtent(item.getText(c)).x + 24);
+                }
+                column.setWidth(width);
+            }
+        } finally {
+            gc.dispose();
+        }
+        table.addListener(SWT.KeyDown, e -> {
+            if ((e.stateMask & SWT.MOD1) != 0 && (e.keyCode == 'c' || e.keyCode == SWT.INSERT)) {
+                StringBuilder b = new StringBuilder();
+                for (TableItem item : table.getSelection()) {
+                    b.append(item.getText(0)).append('\t').append(item.getText(1)).append('\t').append(item.getText(2)).append('\n');
+                }
+                org.eclipse.swt.dnd.Clipboard clip = new org.eclipse.swt.dnd.Clipboard(shell.getDisplay());
+                clip.setContents(new Object[] {b.toString()}, new org.eclipse.swt.dnd.Transfer[] {org.eclipse.swt.dnd.TextTransfer.getInstance()});
+                clip.dispose();
+            }
+        });
+        for (int i = 1; i < HelpText.NOTES.length; i++) {
+            new Label(shell, SWT.WRAP).setText(HelpText.NOTES[i]);
+        }
         Button close = new Button(shell, SWT.PUSH);
         close.setText("Close");
         close.setLayoutData(new GridData(SWT.END, SWT.CENTER, false, false));

@@ -43,8 +43,10 @@ public final class TutorialWindow {
     private final org.eclipse.swt.widgets.List index;
     private final StyledText text;
     private final Button open;
-    private final Font heading;
-    private final Font code;
+    private final Font normal;
+    private Font heading;
+    private Font code;
+    private int zoom;
     private final List<Image> images = new ArrayList<>();
     private final Consumer<Path> openScript;
     private final Consumer<String> insertCode;
@@ -84,9 +86,20 @@ public final class TutorialWindow {
         text = new StyledText(sash, SWT.BORDER | SWT.WRAP | SWT.V_SCROLL | SWT.READ_ONLY);
         text.setMargins(16, 12, 16, 12);
         sash.setWeights(new int[] {22, 78});
-        FontData fd = text.getFont().getFontData()[0];
-        heading = new Font(shell.getDisplay(), fd.getName(), Math.round(fd.getHeight() * 1.35f), SWT.BOLD);
-        code = JFaceResources.getTextFont();
+        normal = text.getFont();
+        fonts();
+        // Ctrl + / Ctrl − / Ctrl 0 as in the IDE's editor (a projector): anywhere in this window.
+        org.eclipse.swt.widgets.Listener keys = e -> {
+            var focus = e.display.getFocusControl();
+            if ((e.stateMask & SWT.MOD1) != 0 && focus != null && focus.getShell() == shell
+                    && org.parpe.gui.panels.Zoom.step(e) != org.parpe.gui.panels.Zoom.NONE) {
+                zoom(org.parpe.gui.panels.Zoom.step(e));
+                e.doit = false;
+                e.type = SWT.None;
+            }
+        };
+        shell.getDisplay().addFilter(SWT.KeyDown, keys);
+        shell.addListener(SWT.Dispose, e -> e.display.removeFilter(SWT.KeyDown, keys));
         text.addListener(SWT.MouseUp, e -> {
             if (e.button == 1 && text.getSelectionCount() == 0) {
                 int at = text.getOffsetAtPoint(new org.eclipse.swt.graphics.Point(e.x, e.y));
@@ -125,7 +138,7 @@ public final class TutorialWindow {
         index.addListener(SWT.Selection, e -> show(index.getSelectionIndex()));
         shell.addListener(SWT.Dispose, e -> {
             disposeImages();
-            heading.dispose();
+            disposeFonts();
         });
         fitTo(parent.getMonitor().getClientArea());
     }
@@ -175,6 +188,56 @@ public final class TutorialWindow {
     /** The script of the page shown, or null (tests). */
     public Path script() {
         return script;
+    }
+
+    /** The heading and code fonts for the zoom now; the body text's is set by {@link org.parpe.gui.panels.Zoom}. */
+    private void fonts() {
+        FontData fd = normal.getFontData()[0];
+        int points = fd.getHeight() + 2 * zoom;
+        heading = new Font(shell.getDisplay(), fd.getName(), Math.round(points * 1.35f), SWT.BOLD);
+        Font mono = JFaceResources.getTextFont();
+        if (zoom == 0) {
+            code = mono;
+        } else {
+            FontData[] cd = mono.getFontData();
+            for (FontData d : cd) {
+                d.setHeight(Math.max(6, d.getHeight() + 2 * zoom));
+            }
+            code = new Font(shell.getDisplay(), cd);
+        }
+    }
+
+    private void disposeFonts() {
+        heading.dispose();
+        if (code != JFaceResources.getTextFont()) {
+            code.dispose();
+        }
+    }
+
+    /**
+     * Larger ({@code step} 1), smaller (-1) or normal (0) text, as Ctrl + / Ctrl − / Ctrl 0 give it;
+     * the page stays where it was scrolled to.
+     */
+    public void zoom(int step) {
+        zoom = org.parpe.gui.panels.Zoom.next(zoom, step);
+        int top = text.getTopIndex();
+        Font oldHeading = heading;
+        Font oldCode = code;
+        fonts();
+        org.parpe.gui.panels.Zoom.apply(text, normal, zoom);
+        org.parpe.gui.panels.Zoom.apply(index, index.getDisplay().getSystemFont(), zoom);
+        show(Math.max(0, index.getSelectionIndex()));
+        text.setTopIndex(top);
+        // Only now: the page drawn before used them.
+        oldHeading.dispose();
+        if (oldCode != JFaceResources.getTextFont()) {
+            oldCode.dispose();
+        }
+    }
+
+    /** The size of the body text in points (tests). */
+    public int points() {
+        return text.getFont().getFontData()[0].getHeight();
     }
 
     /** Shows page {@code i} (ignored when out of range). */

@@ -14,6 +14,21 @@ public final class Zoom {
     private Zoom() {
     }
 
+    /** What a key pressed with Ctrl asks for: 1 larger, -1 smaller, 0 the normal size, or {@link #NONE}. */
+    public static int step(org.eclipse.swt.widgets.Event e) {
+        return e.character == '+' || e.character == '=' || e.keyCode == org.eclipse.swt.SWT.KEYPAD_ADD ? 1
+                : e.character == '-' || e.keyCode == org.eclipse.swt.SWT.KEYPAD_SUBTRACT ? -1
+                : e.character == '0' || e.keyCode == '0' ? 0 : NONE;
+    }
+
+    /** {@link #step} of a key that is not a zoom key. */
+    public static final int NONE = Integer.MIN_VALUE;
+
+    /** The zoom after {@code step} ({@link #step}) from {@code steps}: between 4 steps smaller and 12 larger. */
+    public static int next(int steps, int step) {
+        return step == 0 ? 0 : Math.max(-4, Math.min(12, steps + step));
+    }
+
     /** Shows {@code c} in {@code normal} grown by {@code steps} × 2 points (0: {@code normal} itself). */
     public static void apply(Control c, Font normal, int steps) {
         if (c == null || c.isDisposed()) {

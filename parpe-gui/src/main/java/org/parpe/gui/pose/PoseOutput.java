@@ -12,7 +12,6 @@ import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
-import org.eclipse.swt.widgets.FileDialog;
 import org.eclipse.swt.widgets.Label;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.io.AtomicFiles;
@@ -136,18 +135,10 @@ final class PoseOutput {
         if (poses() == null) {
             return;
         }
-        FileDialog d = new FileDialog(host.shell(), SWT.SAVE);
-        d.setText("Save the poses as a PARSL recording");
-        d.setFilterExtensions(new String[] {"*.xml", "*"});
-        d.setFileName(panel.poses().group() + "-poses.xml");
-        d.setOverwrite(true);
-        Path dir = host.scriptPath().toAbsolutePath().getParent();
-        if (dir != null) {
-            d.setFilterPath(dir.toString());
-        }
-        String chosen = d.open();
+        Path chosen = org.parpe.gui.panels.FileDialogs.ask(host.shell(), SWT.SAVE, "Save the poses as a PARSL recording", "*.xml",
+                panel.poses().group() + "-poses.xml", null);
         if (chosen != null) {
-            save(Path.of(chosen));
+            save(chosen);
         }
     }
 
@@ -225,8 +216,9 @@ final class PoseOutput {
             return null;
         }
         panel.markKept(panel.poses());
-        host.status("Added automaton " + r.automaton() + " and behavior " + r.behavior() + " playing it on "
-                + String.join(", ", request.targets()) + (r.mainAdded() ? ", run by <main>." : "; add it to <main> to run it."));
+        String said = r.said(request.targets());
+        host.status(said);
+        panel.say(said);
         return r;
     }
 }

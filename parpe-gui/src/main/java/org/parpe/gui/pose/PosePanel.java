@@ -44,7 +44,11 @@ public final class PosePanel {
     private final JointSliders sliders;
     private final PoseOutput output;
     private final PoseSim sim;
-    private final Map<String, PoseList> lists = new HashMap<>();
+    /** The lists of the document in the editor; each document has its own (issue 23, item 10). */
+    private Map<String, PoseList> lists = new HashMap<>();
+    /** Every document's lists, by its path (an untitled script: a key of its own). */
+    private final Map<Object, Map<String, PoseList>> byDocument = new java.util.LinkedHashMap<>();
+    private Object document = new Untitled();
     private final Set<Integer> picked = new TreeSet<>();
     private final Map<PoseList, List<PoseList.Pose>> kept = new java.util.IdentityHashMap<>();
     private Program program;
@@ -52,6 +56,14 @@ public final class PosePanel {
     private PoseList current;
     private long lastCapture;
     private volatile boolean shown;
+
+    /** The key of an untitled script's poses: each untitled script is a document of its own. */
+    private static final class Untitled {
+        @Override
+        public String toString() {
+            return "the untitled script";
+        }
+    }
 
     /** Creates the panel in {@code parent} and hooks it to the 3D view of {@code host}. */
     public PosePanel(Composite parent, PoseHost host) {
@@ -103,6 +115,7 @@ public final class PosePanel {
         sim = new PoseSim(msg -> runOnUi(() -> say(msg)));
         PoseInput.attach(this, host);
         box.addListener(SWT.Dispose, e -> sim.close());
+        byDocument.put(document, lists);
         poll();
     }
 
@@ -344,15 +357,62 @@ public final class PosePanel {
         kept.put(list, list.poses());
     }
 
-    /** Lists with poses that were changed since they were last saved or written into the script. */
+    /**
+     * Another document is in the editor ({@code file}, or null for a new untitled script): the
+     * panel shows that document's poses, and the poses captured for the one before stay with it
+     * (they are its poses, not the next file's). Save As keeps the document, so it is not a switch.
+     */
+    public void documentSwitched(java.nio.file.Path file) {
+        Object key = file == null ? new Untitled() : file.toAbsolutePath().normalize();
+        if (key.equals(document)) {
+            return;
+        }
+        if (document instanceof Untitled && lists.values().stream().allMatch(l -> l.size() == 0)) {
+            byDocument.remove(document); // an untitled script without poses leaves nothing behind
+        }
+        document = key;
+        lists = byDocument.computeIfAbsent(key, k -> new HashMap<>());
+        current = null;
+        program = null; // the next poll reads the new document's program and chooses its group
+        table.show(null);
+        pollNow();
+    }
+
+    /** The document a Save As gave a path to keeps its poses under that path. */
+    public void documentRenamed(java.nio.file.Path file) {
+        Object key = file.toAbsolutePath().normalize();
+        if (!key.equals(document)) {
+            byDocument.remove(document);
+            Map<String, PoseList> before = byDocument.put(key, lists);
+            if (before != null && before != lists) {
+                before.forEach(lists::putIfAbsent);
+            }
+            document = key;
+        }
+    }
+
+    /**
+     * Lists with poses that were changed since they were last saved or written into the script,
+     * of every document, as "3 poses of front in lesson.xml".
+     */
     public List<String> unsaved() {
         List<String> out = new ArrayList<>();
-        for (PoseList l : lists.values()) {
-            if (l.size() > 0 && !l.poses().equals(kept.get(l))) {
-                out.add(l.size() + " poses of " + l.group());
+        byDocument.forEach((doc, ls) -> {
+            for (PoseList l : ls.values()) {
+                if (l.size() > 0 && !l.poses().equals(kept.get(l))) {
+                    out.add(l.size() + " poses of " + l.group() + " in "
+                            + (doc instanceof java.nio.file.Path p ? p.getFileName().toString() : doc.toString()));
+                }
             }
-        }
+        });
         return out;
+    }
+
+    /** The sentence that says which poses quitting would lose ({@link #unsaved}), or null when none. */
+    public String lossSentence() {
+        List<String> lost = unsaved();
+        return lost.isEmpty() ? null : "The Pose panel's " + String.join(", ", lost) + " are not saved (Save recording\u2026 or "
+                + "Use on another group\u2026 keeps them) and would be lost.";
     }
 
     /**
@@ -360,10 +420,9 @@ public final class PosePanel {
      * script; true to close.
      */
     public boolean confirmClose() {
-        List<String> lost = unsaved();
-        return lost.isEmpty() || org.eclipse.jface.dialogs.MessageDialog.openQuestion(box.getShell(), "Unsaved poses",
-                "The Pose panel has " + String.join(", ", lost) + " that are not saved (Save recording\u2026 or "
-                        + "Use on another group\u2026). Close and lose them?");
+        String lost = lossSentence();
+        return lost == null || org.eclipse.jface.dialogs.MessageDialog.openQuestion(box.getShell(), "Unsaved poses",
+                lost + " Close and lose them?");
     }
 
     /**

@@ -26,12 +26,45 @@ import org.parpe.serial.record.RecordingWriter;
 final class ScriptInsert {
     private static final Pattern ROOT_END = Pattern.compile("</\\s*[A-Za-z_][\\w.-]*\\s*>\\s*$");
 
-    /** What to write. */
-    record Request(PoseRecording recording, List<String> targets, double period, double phase, double offset) {
+    /** How many cycles a behavior put first in a {@code <main>} that had entries plays before them. */
+    static final int FIRST_CYCLES = 3;
+
+    /**
+     * What to write; {@code playFirst}: when {@code <main>} has entries, put the new behavior first
+     * in it for {@value #FIRST_CYCLES} cycles (then the entries it had play); otherwise leave
+     * {@code <main>} as it is (the behavior does not play until it is added there).
+     */
+    record Request(PoseRecording recording, List<String> targets, double period, double phase, double offset, boolean playFirst) {
+        Request(PoseRecording recording, List<String> targets, double period, double phase, double offset) {
+            this(recording, targets, period, phase, offset, true);
+        }
     }
 
-    /** The new text and the names given to the automaton and the behavior. */
-    record Result(String text, String automaton, String behavior, boolean mainAdded) {
+    /** What became of {@code <main>}. */
+    enum Main {
+        /** {@code <main>} had no entries: now it plays the new behavior alone. */
+        ONLY,
+        /** The new behavior plays first, for {@link #FIRST_CYCLES} cycles, then the entries {@code <main>} had. */
+        FIRST,
+        /** {@code <main>} is unchanged: the new behavior does not play. */
+        UNCHANGED
+    }
+
+    /** The new text, the names given to the automaton and the behavior, and what became of {@code <main>}. */
+    record Result(String text, String automaton, String behavior, Main main, double firstSeconds) {
+        boolean mainAdded() {
+            return main != Main.UNCHANGED;
+        }
+
+        /** One sentence for the user: what was written and whether (and when) the script plays it. */
+        String said(List<String> targets) {
+            String head = "Added automaton " + automaton + " and behavior " + behavior + " playing it on " + String.join(", ", targets);
+            return head + switch (main) {
+                case ONLY -> "; <main> plays it.";
+                case FIRST -> "; <main> now plays it first, for " + number(firstSeconds) + " s, then the entries it had.";
+                case UNCHANGED -> ". It is not in <main>, so the script does not play it yet: add <" + behavior + "/> to <main>.";
+            };
+        }
     }
 
     private ScriptInsert() {
@@ -81,16 +114,28 @@ final class ScriptInsert {
         List<Edit> edits = new ArrayList<>();
         section(masked, "automata", automaton(auto, r.recording()), edits);
         section(masked, "behaviors", behavior(beh, auto, r), edits);
-        boolean mainAdded = program.mainDef().map(m -> m.entries().isEmpty()).orElse(true);
-        if (mainAdded) {
+        boolean emptyMain = program.mainDef().map(m -> m.entries().isEmpty()).orElse(true);
+        Main main = emptyMain ? Main.ONLY : r.playFirst() ? Main.FIRST : Main.UNCHANGED;
+        double first = FIRST_CYCLES * r.period();
+        if (main == Main.ONLY) {
             section(masked, "main", "<" + beh + "/>\n", edits);
+        } else if (main == Main.FIRST) {
+            first(masked, "<" + beh + " time=\"" + number(first) + "\"/>", edits);
         }
         edits.sort((a, b) -> Integer.compare(b.at, a.at));
         StringBuilder out = new StringBuilder(text);
         for (Edit e : edits) {
             out.replace(e.at, e.at + e.length, e.text);
         }
-        return new Result(out.toString(), auto, beh, mainAdded);
+        return new Result(out.toString(), auto, beh, main, main == Main.FIRST ? first : 0);
+    }
+
+    /** Puts {@code entry} first in the (non-empty) {@code <main>}, on its own line. */
+    private static void first(String masked, String entry, List<Edit> edits) {
+        Matcher open = Pattern.compile("<\\s*main(\\s[^>]*)?(?<!/)>").matcher(masked);
+        if (open.find()) {
+            edits.add(new Edit(open.end(), 0, "\n" + indentAt(masked, open.start()) + "  " + entry));
+        }
     }
 
     private record Edit(int at, int length, String text) {

@@ -33,6 +33,7 @@ final class UseOnGroupDialog extends Dialog {
     private Text phase;
     private Text offset;
     private Label problem;
+    private org.eclipse.swt.widgets.Button first;
     private ScriptInsert.Request request;
 
     UseOnGroupDialog(Shell parent, Program program, PoseList poses) {
@@ -76,6 +77,15 @@ final class UseOnGroupDialog extends Dialog {
                 "Seconds per cycle through all the poses");
         phase = field(area, "Phase (cycles):", "0", "Delay between successive modules of a group, in cycles");
         offset = field(area, "Offset (cycles):", "0.5", "Delay of each chosen group after the one before, in cycles");
+        // <main> plays its entries in turn: a behavior it does not name never plays (issue 23, item 10).
+        boolean mainHasEntries = program.mainDef().map(m -> !m.entries().isEmpty()).orElse(false);
+        first = new org.eclipse.swt.widgets.Button(area, SWT.CHECK);
+        first.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false, 2, 1));
+        first.setText(mainHasEntries ? "Play it first in <main> (" + ScriptInsert.FIRST_CYCLES + " cycles), then what <main> plays now"
+                : "<main> plays it (it has no entries yet)");
+        first.setToolTipText("Without this the behavior is written but <main> does not play it until you add it there");
+        first.setSelection(true);
+        first.setEnabled(mainHasEntries);
         problem = new Label(area, SWT.WRAP);
         problem.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false, 2, 1));
         problem.setForeground(area.getDisplay().getSystemColor(SWT.COLOR_DARK_RED));
@@ -104,7 +114,7 @@ final class UseOnGroupDialog extends Dialog {
                     + phase.getText().trim() + "', '" + offset.getText().trim() + "'.");
             return;
         }
-        ScriptInsert.Request r = new ScriptInsert.Request(recording, List.of(groups.getSelection()), p, ph, off);
+        ScriptInsert.Request r = new ScriptInsert.Request(recording, List.of(groups.getSelection()), p, ph, off, first.getSelection());
         String why = ScriptInsert.check(program, r);
         if (why != null) {
             problem.setText(why);

@@ -46,20 +46,50 @@ final class CsvExport {
         });
     }
 
+    /**
+     * Writes the header for {@code axes} and then the CSV lines already in {@code lines} (the
+     * rows {@link Results} did not keep went there as they came) to {@code file}.
+     */
+    static void write(Path file, List<Axis> axes, Path lines) throws IOException {
+        AtomicFiles.write(file, out -> {
+            out.write((SweepCsv.header(axes) + "\n").getBytes(StandardCharsets.UTF_8));
+            java.nio.file.Files.copy(lines, out);
+        });
+    }
+
+    /** The rows of {@code results} to {@code file}: from memory, or from its temporary file when it did not keep them all. */
+    static void write(Path file, Results results, List<SweepRow> kept, Path spilled, int runs) throws IOException {
+        if (spilled != null) {
+            write(file, axes(results.parameters()), spilled);
+        } else {
+            write(file, axes(results.parameters()), kept, runs);
+        }
+    }
+
     /** What became of a save: whether it worked, and a line to show. */
     interface Outcome {
         void done(boolean ok, String message);
     }
 
-    /** {@link #write} on its own thread; {@code outcome} is told on the UI thread of {@code display}. */
-    static void inBackground(Display display, Path file, List<Axis> axes, List<SweepRow> rows, int runs, Outcome outcome) {
+    /**
+     * Writes the rows of {@code results} (read here, on the UI thread) to {@code file} on a thread of
+     * its own; {@code outcome} is told on the UI thread of {@code display}.
+     */
+    static void inBackground(Display display, Path file, Results results, int runs, Outcome outcome) {
+        List<SweepRow> kept = results.complete() ? List.copyOf(results.rows()) : List.of();
+        Path spilled = results.complete() ? null : results.spilled();
+        int count = results.count();
+        if (!results.complete() && spilled == null) {
+            outcome.done(false, "Cannot save " + file + ": " + results.spillError());
+            return;
+        }
         Thread t = new Thread(() -> {
             boolean ok;
             String said;
             try {
-                write(file, axes, rows, runs);
+                write(file, results, kept, spilled, runs);
                 ok = true;
-                said = "Saved " + rows.size() + " rows to " + file;
+                said = "Saved " + count + " rows to " + file;
             } catch (IOException | RuntimeException e) {
                 ok = false;
                 said = "Cannot save " + file + ": " + e.getMessage();

@@ -14,9 +14,16 @@ import org.parpe.sim.sweep.SweepRow;
 
 /**
  * The rows of one sweep or optimisation as the dialog shows them, in the engine's order
- * (combination order for a sweep, evaluation order for an optimisation). UI thread only.
+ * (combination order for a sweep, evaluation order for an optimisation). Memory stays bounded
+ * whatever the number of runs (a million random runs took the IDE to 3.4 GB, issue 23 item 13):
+ * the table and the plot get the first {@link #KEEP} rows; the best row and the counts are kept
+ * as rows come; every row also goes, as its CSV line, to a temporary file once there are more
+ * than {@link #KEEP}, from which Save CSV… writes them all. UI thread only.
  */
 final class Results {
+    /** How many rows the table and the plot show at most. */
+    static final int KEEP = 20_000;
+
     /** Whether rows come from a sweep or from an optimisation. */
     enum Mode { SWEEP, OPTIMISE }
 
@@ -25,12 +32,32 @@ final class Results {
     private final List<String> parameters;
     private final Objective objective;
     private final Constraints constraints;
+    private final Map<String, Double> own;
+    private final int keep;
+    private final int runs;
     private final List<SweepRow> rows = new ArrayList<>();
+    private SweepRow best;
+    private int count;
+    private int failed;
+    private int fell;
+    private Path spill;
+    private java.io.BufferedWriter spillOut;
+    /** Why the rows beyond {@link #KEEP} could not be kept for Save CSV… (a full disk), or null. */
+    private String spillError;
 
-    Results(Path script, Mode mode, List<String> parameters, Objective objective, Constraints constraints) {
+    /**
+     * {@code own}: the script's own values of {@code parameters} (its {@code value}s), to tell a best
+     * run that is only them; {@code keep}: the rows kept for the table and the plot ({@link #KEEP});
+     * {@code runs}: how many runs there are to be (the CSV's {@code runs} column).
+     */
+    Results(Path script, Mode mode, List<String> parameters, Map<String, Double> own, Objective objective, Constraints constraints,
+            int keep, int runs) {
+        this.keep = keep;
+        this.runs = runs;
         this.script = script;
         this.mode = mode;
         this.parameters = List.copyOf(parameters);
+        this.own = Map.copyOf(own);
         this.objective = objective;
         this.constraints = constraints;
     }
@@ -57,18 +84,117 @@ final class Results {
         return constraints;
     }
 
+    /** The rows the table and the plot show: the first {@link #KEEP} (all of them unless there are more). */
     List<SweepRow> rows() {
-        return rows;
+        return java.util.Collections.unmodifiableList(rows);
+    }
+
+    /** How many rows came, kept or not. */
+    int count() {
+        return count;
+    }
+
+    /** How many rows came with an error. */
+    int failed() {
+        return failed;
+    }
+
+    /** How many rows came without an error but with a robot that fell over. */
+    int fell() {
+        return fell;
+    }
+
+    /** Whether every row is in {@link #rows} (else Save CSV… writes them from the temporary file). */
+    boolean complete() {
+        return count == rows.size();
     }
 
     void add(SweepRow row) {
-        rows.add(row);
+        count++;
+        if (!row.ok()) {
+            failed++;
+        } else if (row.fell()) {
+            fell++;
+        }
+        if (acceptable(row) && (best == null || objective.of(row) > objective.of(best))) {
+            best = row; // the first among equals, as SweepResult.best
+        }
+        if (rows.size() < keep) {
+            rows.add(row);
+            return;
+        }
+        if (spillError != null) {
+            return;
+        }
+        try {
+            if (spillOut == null) {
+                spill = java.nio.file.Files.createTempFile("parpe-sweep-", ".csv");
+                spill.toFile().deleteOnExit();
+                spillOut = java.nio.file.Files.newBufferedWriter(spill);
+                for (SweepRow r : rows) {
+                    spillOut.write(org.parpe.sim.sweep.SweepCsv.line(r, runs));
+                    spillOut.write('\n');
+                }
+            }
+            spillOut.write(org.parpe.sim.sweep.SweepCsv.line(row, runs));
+            spillOut.write('\n');
+        } catch (java.io.IOException e) {
+            lost(e);
+        }
     }
 
-    /** Replaces the rows with the engine's final list (the same runs, in its order). */
+    /** The temporary file could not be written: the rows beyond {@link #KEEP} cannot be saved; Save CSV… will say why. */
+    private void lost(java.io.IOException e) {
+        spillError = "the runs after the first " + keep + " could not be kept for Save CSV\u2026 (" + e.getMessage() + ")";
+        discard();
+    }
+
+    /** Why not every row can be saved (see {@link #spilled}), or null. */
+    String spillError() {
+        return spillError;
+    }
+
+    /** Replaces the rows with the engine's final list (the same runs, in its order; an optimisation's few). */
     void replace(List<SweepRow> all) {
+        discard();
+        spillError = null;
         rows.clear();
-        rows.addAll(all);
+        best = null;
+        count = 0;
+        failed = 0;
+        fell = 0;
+        all.forEach(this::add);
+    }
+
+    /**
+     * The temporary file with every row's CSV line, complete up to now; null while {@link #complete},
+     * or when it could not be written ({@link #spillError}).
+     */
+    Path spilled() {
+        try {
+            if (spillOut != null) {
+                spillOut.flush();
+            }
+        } catch (java.io.IOException e) {
+            lost(e);
+        }
+        return spill;
+    }
+
+    /** Deletes the temporary file, if any (the dialog closed, or another sweep began). */
+    void discard() {
+        try {
+            if (spillOut != null) {
+                spillOut.close();
+            }
+            if (spill != null) {
+                java.nio.file.Files.deleteIfExists(spill);
+            }
+        } catch (java.io.IOException e) {
+            // A temporary file left behind is deleted when the IDE exits (deleteOnExit).
+        }
+        spillOut = null;
+        spill = null;
     }
 
     /**
@@ -86,7 +212,7 @@ final class Results {
 
     /** The acceptable row with the highest objective, the earliest among equals, or null. */
     SweepRow best() {
-        return SweepResult.best(rows, objective, rule()).orElse(null);
+        return best;
     }
 
     /**
@@ -94,12 +220,42 @@ final class Results {
      * column counts (-1 when it is not one of these rows).
      */
     int number(SweepRow row) {
+        if (mode == Mode.SWEEP) {
+            return row.point().index();
+        }
         for (int i = 0; i < rows.size(); i++) {
             if (rows.get(i) == row) {
                 return i;
             }
         }
         return -1;
+    }
+
+    /**
+     * Whether {@code row} ran with the script's own values of every varied parameter (an
+     * optimisation starts there): then nothing the sweep tried beat the script as it is.
+     */
+    boolean scriptsOwn(SweepRow row) {
+        if (parameters.isEmpty()) {
+            return false;
+        }
+        for (String p : parameters) {
+            Double v = row.values().get(p);
+            Double o = own.get(p);
+            if (v == null || o == null || Math.abs(v - o) > 1e-9 * Math.max(1, Math.abs(o))) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** The sentence that names the best row {@code best} after a finished or stopped sweep. */
+    String bestSentence(SweepRow best) {
+        String measured = objective.label() + " " + ResultsTable.number(objective.of(best)) + (best.fell() ? " (its robot fell over)" : "");
+        return scriptsOwn(best)
+                ? "Nothing beat the script's own values: the best is run " + number(best) + " with them (" + describe(best.values()) + "): " + measured
+                        + ". Widen the ranges or try other parameters."
+                : "Best: run " + number(best) + ", " + describe(best.values()) + ": " + measured;
     }
 
     /** The parameter values of the best row, or an empty map. */

@@ -3,7 +3,6 @@ package org.parpe.gui.sweep;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
-import org.eclipse.swt.widgets.FileDialog;
 import org.parpe.sim.SimTarget;
 import org.parpe.sim.config.RobotConfigs;
 
@@ -44,14 +43,12 @@ final class RobotChoice {
             previous = combo.getText();
             return;
         }
-        FileDialog d = new FileDialog(combo.getShell(), SWT.OPEN);
-        d.setFilterExtensions(new String[] {"*.xml", "*"});
-        d.setText("Robot configuration file");
-        String p = d.open();
-        if (p == null) {
+        java.nio.file.Path chosen = org.parpe.gui.panels.FileDialogs.ask(combo.getShell(), SWT.OPEN, "Robot configuration file", "*.xml", null, null);
+        if (chosen == null) {
             combo.select(combo.indexOf(previous));
             return;
         }
+        String p = chosen.toString();
         useFile(p);
         previous = p;
     }

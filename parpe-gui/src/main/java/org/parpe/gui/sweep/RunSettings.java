@@ -30,8 +30,10 @@ final class RunSettings {
         duration.setToolTipText("Simulated seconds of each run");
         new Label(parent, SWT.NONE).setText("   Jobs:");
         jobs = new Spinner(parent, SWT.BORDER);
-        jobs.setValues(Runtime.getRuntime().availableProcessors(), 1, 1024, 0, 1, 4);
-        jobs.setToolTipText("Simulations at once (default: every core); the results do not depend on it");
+        // Each simulation at once holds a robot of its own: more than the cores only costs memory (1 024 took gigabytes).
+        int cores = Runtime.getRuntime().availableProcessors();
+        jobs.setValues(cores, 1, cores, 0, 1, 4);
+        jobs.setToolTipText("Simulations at once, at most one per core (" + cores + "); the results do not depend on it");
         new Label(parent, SWT.NONE).setText("   Objective:");
         objective = new Combo(parent, SWT.READ_ONLY);
         for (Objective o : Objective.values()) {

@@ -53,7 +53,8 @@ record StartRequest(Path file, String text, String robot, String duration, int j
         Evaluator.Settings s = settings(tab.held());
         SweepSpec spec = tab.spec(parameters);
         List<String> names = spec.axes().stream().map(Axis::name).toList();
-        Results results = new Results(file, Results.Mode.SWEEP, names, objective, Constraints.NONE);
+        Results results = new Results(file, Results.Mode.SWEEP, names, own(parameters, names), objective, Constraints.NONE,
+                Results.KEEP, spec.size());
         return new Started(results, SweepRunner.sweep(display, s, spec, jobs, events), spec.size());
     }
 
@@ -68,8 +69,20 @@ record StartRequest(Path file, String text, String robot, String duration, int j
                     + " has both a min and a max (with min < max)");
         }
         List<String> names = space.parameters().stream().map(Parameter::name).toList();
-        Results results = new Results(file, Results.Mode.OPTIMISE, names, objective, spec.constraints());
+        Results results = new Results(file, Results.Mode.OPTIMISE, names, own(parameters, names), objective, spec.constraints(),
+                Results.KEEP, spec.budget());
         return new Started(results, SweepRunner.optimise(display, s, spec, jobs, events), spec.budget());
+    }
+
+    /** The script's own values of the parameters {@code names}. */
+    private static Map<String, Double> own(List<Parameter> parameters, List<String> names) {
+        Map<String, Double> out = new java.util.LinkedHashMap<>();
+        for (Parameter p : parameters) {
+            if (names.contains(p.name())) {
+                out.put(p.name(), p.value());
+            }
+        }
+        return out;
     }
 
     /** The engine's option names, as the dialog's boxes call them. */

@@ -11,7 +11,6 @@ import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Composite;
-import org.eclipse.swt.widgets.FileDialog;
 import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.ProgressBar;
 import org.eclipse.swt.widgets.Shell;
@@ -136,6 +135,9 @@ public final class SweepDialog {
                 runner.stop();
             }
             host.editor().document().removeDocumentListener(edits);
+            if (results != null) {
+                results.discard();
+            }
         });
         setRunning(false);
     }
@@ -200,6 +202,9 @@ public final class SweepDialog {
             SweepRunner.Events events = new Events(++generation);
             StartRequest.Started s = sweeping ? req.sweep(now, sweepTab, shell.getDisplay(), events)
                     : req.optimise(now, optimiseTab, shell.getDisplay(), events);
+            if (results != null) {
+                results.discard();
+            }
             results = s.results();
             runner = s.runner();
             total = s.total();
@@ -250,24 +255,23 @@ public final class SweepDialog {
                 error(StartRequest.words(error));
                 return;
             }
-            // Stopped: the engine keeps only the runs finished in order; the table keeps every run that
-            // finished (they were shown as they came), so Stop never throws finished work away.
-            if (!cancelled || all.size() >= results.rows().size()) {
+            // An optimisation's final list is the engine's (its order); a sweep's rows all came through rows()
+            // in order. Stopped: the dialog keeps every run that finished, so Stop never throws finished work away.
+            if (all != null && (!cancelled || all.size() >= results.count())) {
                 results.replace(all);
             }
-            List<SweepRow> kept = results.rows();
+            int kept = results.count();
             pane.refresh();
-            counts.setText(kept.size() + " of " + total + " runs");
+            counts.setText(kept + " of " + total + " runs");
             if (!cancelled) {
                 progress.setSelection(1000);
             }
             SweepRow best = results.best();
-            String head = cancelled ? "Stopped after " + kept.size() + " of " + total + " runs. "
-                    : "Finished " + kept.size() + " runs. ";
-            info(head + (best == null ? noBest(kept)
-                    : "Best: run " + results.number(best) + ", " + Results.describe(best.values()) + ": "
-                    + results.objective().label() + " " + ResultsTable.number(results.objective().of(best))
-                    + (best.fell() ? " (its robot fell over)" : "")));
+            String head = cancelled ? "Stopped after " + kept + " of " + total + " runs. "
+                    : "Finished " + kept + " runs. ";
+            info(head + (best == null ? noBest() : results.bestSentence(best))
+                    + (results.complete() ? "" : " The table and the plot show the first " + results.rows().size()
+                    + " runs; Save CSV\u2026 writes all " + kept + "."));
             apply.setEnabled(best != null);
         }
 
@@ -290,13 +294,13 @@ public final class SweepDialog {
                 : s >= 60 ? s / 60 + " min " + s % 60 + " s" : s + " s") + " left";
     }
 
-    /** Why no run of {@code all} can be the best, with the counts the table's columns show. */
-    private String noBest(List<SweepRow> all) {
-        if (all.isEmpty()) {
+    /** Why no run can be the best, with the counts the table's columns show. */
+    private String noBest() {
+        if (results.count() == 0) {
             return "No run finished.";
         }
-        long failed = all.stream().filter(r -> !r.ok()).count();
-        long fell = all.stream().filter(r -> r.ok() && r.fell()).count();
+        int failed = results.failed();
+        int fell = results.fell();
         return results.mode() == Results.Mode.SWEEP
                 ? String.format(Locale.ROOT, "No best run: %d fell over and %d failed (see the fell and error columns);"
                         + " a run whose robot fell over is never the best.", fell, failed)
@@ -314,7 +318,7 @@ public final class SweepDialog {
     private void setRunning(boolean running) {
         start.setEnabled(!running);
         stop.setEnabled(running);
-        save.setEnabled(!running && results != null && !results.rows().isEmpty());
+        save.setEnabled(!running && results != null && results.count() > 0);
         apply.setEnabled(results != null && results.best() != null);
         tabs.setEnabled(!running);
         settings.setEnabled(!running);
@@ -339,30 +343,12 @@ public final class SweepDialog {
     }
 
     private void saveCsv() {
-        FileDialog d = new FileDialog(shell, SWT.SAVE);
-        d.setText("Save the runs as CSV");
-        d.setFilterPath(csvFolder(host.script().get(), Path.of(System.getProperty("user.home"))).toString());
-        d.setFilterExtensions(new String[] {"*.csv", "*"});
-        d.setOverwrite(true);
         String name = host.script().get().getFileName().toString().replaceFirst("\\.xml$", "");
-        d.setFileName(name + (results.mode() == Results.Mode.SWEEP ? "-sweep.csv" : "-optimise.csv"));
-        String p = d.open();
+        Path p = org.parpe.gui.panels.FileDialogs.ask(shell, SWT.SAVE, "Save the runs as CSV", "*.csv",
+                name + (results.mode() == Results.Mode.SWEEP ? "-sweep.csv" : "-optimise.csv"), null);
         if (p != null) {
-            saveCsv(Path.of(p));
+            saveCsv(p);
         }
-    }
-
-    /**
-     * Where Save CSV… starts: beside the script when that folder can be written (not the examples'
-     * install folder), else Documents, else the home folder; never the process's working folder.
-     */
-    static Path csvFolder(Path script, Path home) {
-        Path parent = script == null ? null : script.toAbsolutePath().normalize().getParent();
-        if (parent != null && java.nio.file.Files.isWritable(parent)) {
-            return parent;
-        }
-        Path documents = home.resolve("Documents");
-        return java.nio.file.Files.isDirectory(documents) ? documents : home;
     }
 
     /** Writes the rows to {@code file} off the UI thread and says when it is done. */
@@ -371,8 +357,7 @@ public final class SweepDialog {
             error("Cannot save the rows over " + file.getFileName() + ": it is the script being swept; choose another name.");
             return;
         }
-        List<SweepRow> rows = List.copyOf(results.rows());
-        CsvExport.inBackground(shell.getDisplay(), file, CsvExport.axes(results.parameters()), rows, total, (ok, said) -> {
+        CsvExport.inBackground(shell.getDisplay(), file, results, total, (ok, said) -> {
             if (shell.isDisposed()) {
                 return;
             }

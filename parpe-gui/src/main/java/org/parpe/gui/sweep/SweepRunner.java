@@ -40,8 +40,9 @@ final class SweepRunner {
         void rows(List<SweepRow> rows, int done, int total);
 
         /**
-         * The end: {@code all} is the engine's final list of rows (null when it failed),
-         * {@code cancelled} whether Stop ended it, {@code error} a one-line message or null.
+         * The end, after the last {@link #rows}: {@code all} is the engine's final list of rows
+         * for an optimisation, null for a sweep (its rows came in order through {@link #rows})
+         * or a failure; {@code cancelled} whether Stop ended it, {@code error} a one-line message or null.
          */
         void finished(List<SweepRow> all, boolean cancelled, String error);
 
@@ -69,8 +70,9 @@ final class SweepRunner {
         r.total = spec.size();
         r.start(() -> {
             r.checkRobot(settings);
-            SweepResult result = new Sweep(Evaluator.load(settings), spec).run(jobs, r.listener(), r.cancellation);
-            r.end(result.rows(), result.cancelled(), null);
+            // The dialog keeps what its table and plot need (Results); the engine lets each row go once it is handed over.
+            SweepResult result = new Sweep(Evaluator.load(settings), spec).run(0, spec.size(), jobs, r.listener(), r.cancellation, false);
+            r.end(null, result.cancelled(), null);
         });
         return r;
     }
@@ -164,6 +166,13 @@ final class SweepRunner {
 
     private void end(List<SweepRow> all, boolean cancelled, String error) {
         post(() -> {
+            List<SweepRow> last = new ArrayList<>();
+            for (SweepRow r = queue.poll(); r != null; r = queue.poll()) {
+                last.add(r);
+            }
+            if (!last.isEmpty()) {
+                events.rows(last, done, total);
+            }
             running = false;
             events.finished(all, cancelled || cancellation.cancelled(), error);
         });

@@ -3,6 +3,8 @@ package org.parpe.gui.sweep;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
+import java.text.DecimalFormatSymbols;
 import java.util.Map;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.custom.ScrolledComposite;
@@ -40,7 +42,40 @@ final class SweepTab {
     private final Text seed;
 
     /** The widgets of one parameter. */
-    record Line(Parameter parameter, Button vary, Text from, Text to, Spinner values, Text hold) {
+    record Line(Parameter parameter, Button vary, Text from, Text to, Text values, Text hold) {
+    }
+
+    /**
+     * What the Values box says: a whole number is how many evenly spaced values from From to To;
+     * anything else is the values themselves ({@code 2.5}, {@code 0.1; 0.2}), read with the decimal
+     * separator of {@code locale} too (a student in Germany types {@code 2,5}). A spin box took
+     * "2.5" as 25 (issue 23, item 13).
+     *
+     * @param count how many values from From to To, or 0 when {@code list} holds them
+     * @param list  the values typed, or empty
+     */
+    record Values(int count, List<Double> list) {
+        static Values read(String typed, Locale locale) throws SweepException {
+            String t = typed.trim();
+            if (t.matches("\\d{1,7}")) {
+                int n = Integer.parseInt(t);
+                if (n < 1) {
+                    throw new SweepException("Values: type how many values (1 or more) or the values themselves, got '" + t + "'");
+                }
+                return new Values(n, List.of());
+            }
+            boolean decimalComma = DecimalFormatSymbols.getInstance(locale).getDecimalSeparator() == ',';
+            List<Double> out = new ArrayList<>();
+            for (String token : t.split(decimalComma ? "[;\\s]+" : "[;,\\s]+")) {
+                Double v = token.isEmpty() ? null : Numbers.parsePlain(decimalComma ? token.replace(',', '.') : token);
+                if (v == null || !Double.isFinite(v)) {
+                    throw new SweepException("Values: type how many values (a whole number) or the values themselves"
+                            + " separated by ';', got '" + t + "'");
+                }
+                out.add(v);
+            }
+            return new Values(0, List.copyOf(out));
+        }
     }
 
     SweepTab(Composite parent) {
@@ -87,7 +122,7 @@ final class SweepTab {
     void setParameters(List<Parameter> parameters) {
         Map<String, String[]> typed = new LinkedHashMap<>();
         byName.forEach((n, l) -> typed.put(n, new String[] {Boolean.toString(l.vary().getSelection()), l.from().getText(),
-            l.to().getText(), Integer.toString(l.values().getSelection()), l.hold().getText()}));
+            l.to().getText(), l.values().getText(), l.hold().getText()}));
         for (Control c : lines.getChildren()) {
             c.dispose();
         }
@@ -103,7 +138,7 @@ final class SweepTab {
                 line.vary().setSelection(Boolean.parseBoolean(before[0]));
                 line.from().setText(before[1]);
                 line.to().setText(before[2]);
-                line.values().setSelection(Integer.parseInt(before[3]));
+                line.values().setText(before[3]);
                 line.hold().setText(before[4]);
             }
             byName.put(p.name(), line);
@@ -128,8 +163,11 @@ final class SweepTab {
         Text to = new Text(lines, SWT.BORDER);
         to.setText(Numbers.format(p.max() != null ? p.max() : p.value()));
         to.setLayoutData(new GridData(70, SWT.DEFAULT));
-        Spinner values = spinner(lines, 1, 1_000_000, 3);
-        values.setToolTipText("How many evenly spaced values from From to To (grid)");
+        Text values = new Text(lines, SWT.BORDER);
+        values.setText("3");
+        values.setLayoutData(new GridData(70, SWT.DEFAULT));
+        values.setToolTipText("How many evenly spaced values from From to To (a whole number), or the values"
+                + " themselves instead of From and To (2.5 is one value; 0.5; 1; 2 are three)");
         Text hold = new Text(lines, SWT.BORDER);
         hold.setText(Numbers.format(p.value()));
         hold.setLayoutData(new GridData(70, SWT.DEFAULT));
@@ -169,7 +207,10 @@ final class SweepTab {
             }
             String name = l.parameter().name();
             String range = l.from().getText().trim() + ".." + l.to().getText().trim();
-            Axis a = VarySpec.parse(name + "=" + range + (draw ? "" : ":" + l.values().getSelection()), parameters);
+            Values v = Values.read(l.values().getText(), Locale.getDefault());
+            String body = !v.list().isEmpty() ? String.join(",", v.list().stream().map(Numbers::format).toList())
+                    : range + (draw ? "" : ":" + v.count());
+            Axis a = VarySpec.parse(name + "=" + body, parameters);
             // A random sweep draws anywhere in the range unless the parameter counts something.
             axes.add(draw && a.kind() == Axis.Kind.INTEGERS && !whole(l.parameter()) ? Axis.continuous(name, a.lo(), a.hi()) : a);
         }

@@ -47,8 +47,11 @@ final class SceneRenderer {
         this.near = near;
     }
 
-    /** Which modules to highlight, and whether to label module IDs. */
-    record Style(Set<Integer> highlighted, boolean labels) {
+    /** Which modules to highlight, whether to label module IDs, and the module a drag would turn (−1: none). */
+    record Style(Set<Integer> highlighted, boolean labels, int hover) {
+        Style(Set<Integer> highlighted, boolean labels) {
+            this(highlighted, labels, -1);
+        }
     }
 
     void draw(GC gc, Camera cam, SimSnapshot snap, Style style, int width, int height) {
@@ -68,12 +71,38 @@ final class SceneRenderer {
             solid(cam, b, baseColor(b, style.highlighted()));
         }
         for (SimBody b : snap.bodies()) {
-            solid(cam, b, baseColor(b, style.highlighted()));
+            solid(cam, b, b.moduleId() >= 0 && b.moduleId() == style.hover() ? HOVER : baseColor(b, style.highlighted()));
         }
         paintFaces(gc);
         if (style.labels()) {
-            labels(gc, cam, snap);
+            labels(gc, cam, snap, style.highlighted());
         }
+    }
+
+    /** The colour of the module a drag would bend (the mouse is over it). */
+    private static final int HOVER = 0xFFD23F;
+
+    /** TrackRobot's trail: the path of the centre of mass on the floor since the run started. */
+    void trail(GC gc, Camera cam, java.util.List<Vec3> points) {
+        if (points.size() < 2) {
+            return;
+        }
+        gc.setForeground(color(0xE0602A));
+        gc.setLineWidth(2);
+        int[] xy = new int[points.size() * 2];
+        int n = 0;
+        for (Vec3 p : points) {
+            cam.toCamera(p.x(), p.y(), 0.002, tmp);
+            if (tmp[2] < near) {
+                continue;
+            }
+            xy[n++] = (int) cam.screenX(tmp[0], tmp[2]);
+            xy[n++] = (int) cam.screenY(tmp[1], tmp[2]);
+        }
+        if (n >= 4) {
+            gc.drawPolyline(java.util.Arrays.copyOf(xy, n));
+        }
+        gc.setLineWidth(1);
     }
 
     /** Adds the faces of {@code b} in colour {@code rgb}. */
@@ -241,8 +270,13 @@ final class SceneRenderer {
         return ((BodyShape.Sphere) shape).radius();
     }
 
-    private void labels(GC gc, Camera cam, SimSnapshot snap) {
-        gc.setForeground(color(0xFFFFFF));
+    /**
+     * Module IDs over their segments. A label that would overlap one already drawn is left out
+     * (on the centipede they ran into a blur): the highlighted modules' first, then the nearest
+     * to the eye, so what is left out is far away or behind; hover or zoom in to see it.
+     */
+    private void labels(GC gc, Camera cam, SimSnapshot snap, Set<Integer> first) {
+        java.util.List<Label> all = new java.util.ArrayList<>();
         for (SimBody b : snap.bodies()) {
             if (b.moduleId() < 0 || b.kind() != PartKind.SEGMENT_BASE) {
                 continue;
@@ -256,10 +290,40 @@ final class SceneRenderer {
             var ext = gc.textExtent(t);
             int x = (int) cam.screenX(tmp[0], tmp[2]) - ext.x / 2;
             int y = (int) cam.screenY(tmp[1], tmp[2]) - ext.y - 6;
-            gc.setBackground(color(0x1A2A44));
-            gc.fillRoundRectangle(x - 3, y - 1, ext.x + 6, ext.y + 2, 6, 6);
-            gc.drawText(t, x, y, true);
+            all.add(new Label(b.moduleId(), new org.eclipse.swt.graphics.Rectangle(x - 3, y - 1, ext.x + 6, ext.y + 2),
+                    first.contains(b.moduleId()) ? -1 : tmp[2]));
         }
+        all.sort(java.util.Comparator.comparingDouble(Label::depth));
+        shownLabels = place(all);
+        gc.setForeground(color(0xFFFFFF));
+        gc.setBackground(color(0x1A2A44));
+        for (Label l : shownLabels) {
+            var r = l.box();
+            gc.fillRoundRectangle(r.x, r.y, r.width, r.height, 6, 6);
+            gc.drawText(Integer.toString(l.id()), r.x + 3, r.y + 1, true);
+        }
+    }
+
+    /** A module ID's label: its box on the screen and its distance from the eye (−1: drawn first). */
+    record Label(int id, org.eclipse.swt.graphics.Rectangle box, double depth) {
+    }
+
+    /** The labels drawn last (tests). */
+    private java.util.List<Label> shownLabels = java.util.List.of();
+
+    java.util.List<Label> shownLabels() {
+        return shownLabels;
+    }
+
+    /** The labels of {@code ordered} that do not overlap one placed before them, in that order. */
+    static java.util.List<Label> place(java.util.List<Label> ordered) {
+        java.util.List<Label> out = new java.util.ArrayList<>();
+        for (Label l : ordered) {
+            if (out.stream().noneMatch(o -> o.box().intersects(l.box()))) {
+                out.add(l);
+            }
+        }
+        return out;
     }
 
     private static int baseColor(SimBody b, Set<Integer> highlighted) {

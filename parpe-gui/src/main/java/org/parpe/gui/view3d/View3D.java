@@ -40,6 +40,15 @@ public final class View3D {
     private long frames;
     private JointDrag jointDrag;
     private int turning = -1;
+    /** The module a left drag would turn now (the mouse is over it), or −1: a drag orbits. */
+    private int hover = -1;
+    private boolean hovering;
+    /** TrackRobot's readout: the centre of mass at the start of the run, and its path since. */
+    private Vec3 start;
+    private double lastTime = Double.NaN;
+    private final java.util.ArrayList<Vec3> trail = new java.util.ArrayList<>();
+    /** The most points of the trail kept (the oldest go first). */
+    static final int TRAIL_POINTS = 4000;
 
     /** Creates the view in {@code parent}. */
     public View3D(Composite parent) {
@@ -56,7 +65,15 @@ public final class View3D {
             turning = -1;
         });
         canvas.addListener(SWT.MouseMove, this::mouseMove);
+        canvas.addListener(SWT.MouseExit, e -> hoverAt(-1, -1));
         canvas.addListener(SWT.MouseVerticalWheel, e -> {
+            // Towards the group being posed (the Pose panel's), not the body's centre.
+            double[] c = centre(highlighted.get());
+            if (c != null) {
+                camera.lookAt(c[0], c[1], c[2]);
+                track = false;
+                framedFor = last;
+            }
             camera.zoom(e.count > 0 ? 0.88 : 1.0 / 0.88);
             canvas.redraw();
         });
@@ -163,6 +180,9 @@ public final class View3D {
     public void clear() {
         last = null;
         framedFor = null;
+        lastTime = Double.NaN;
+        start = null;
+        trail.clear();
         canvas.redraw();
     }
 
@@ -213,6 +233,7 @@ public final class View3D {
 
     private void mouseMove(Event e) {
         if (drag == null) {
+            hoverAt(e.x, e.y);
             return;
         }
         int dx = e.x - drag.x;
@@ -231,6 +252,111 @@ public final class View3D {
         canvas.redraw();
     }
 
+    /**
+     * The mouse is at (x, y) without a button down (−1, −1: it left): while posing, the module
+     * under it whose joint a drag would turn is lit and the cursor is the up-down arrow; anywhere
+     * else the cursor is the arrow and a drag orbits. The corner says which.
+     */
+    private void hoverAt(int x, int y) {
+        JointDrag d = jointDrag;
+        int id = d == null || x < 0 ? -1 : moduleAt(x, y);
+        int now = id >= 0 && d.canTurn(id) ? id : -1;
+        boolean over = d != null && x >= 0;
+        if (now != hover || over != hovering) {
+            hover = now;
+            hovering = over;
+            canvas.setCursor(now >= 0 ? canvas.getDisplay().getSystemCursor(SWT.CURSOR_SIZENS) : null);
+            canvas.redraw();
+        }
+    }
+
+    /** The module a left drag would turn now, or −1 (it would orbit). */
+    public int hovered() {
+        return hover;
+    }
+
+    /** What a left drag does now, as the corner of the view says it while posing ("" when not posing). */
+    public String dragHint() {
+        if (jointDrag == null || !hovering) {
+            return "";
+        }
+        return hover >= 0 ? "Drag up or down: bend the joint of m" + hover : "Drag: turn the view around";
+    }
+
+    /** The centre of modules {@code ids} in the last picture, or null when none is drawn. */
+    private double[] centre(Set<Integer> ids) {
+        SimSnapshot snap = last;
+        if (snap == null || ids.isEmpty()) {
+            return null;
+        }
+        double x = 0, y = 0, z = 0;
+        int n = 0;
+        for (SimBody b : snap.bodies()) {
+            if (ids.contains(b.moduleId())) {
+                x += b.position().x();
+                y += b.position().y();
+                z += b.position().z();
+                n++;
+            }
+        }
+        return n == 0 ? null : new double[] {x / n, y / n, z / n};
+    }
+
+    /** The renderer (tests). */
+    SceneRenderer renderer() {
+        return renderer;
+    }
+
+    /** Where the camera looks (x, y, z; tests). */
+    public double[] target() {
+        return camera.target.clone();
+    }
+
+    /** TrackRobot's distance of the centre of mass from where the run started, in metres (NaN before a run). */
+    public double distanceFromStart() {
+        SimSnapshot snap = last;
+        if (snap == null || start == null || !snap.centerOfMass().isFinite()) {
+            return Double.NaN;
+        }
+        Vec3 c = snap.centerOfMass();
+        return Math.hypot(c.x() - start.x(), c.y() - start.y());
+    }
+
+    /** The points of TrackRobot's trail (tests). */
+    public int trailPoints() {
+        return trail.size();
+    }
+
+    /**
+     * A new run (the time went back, or the first picture): the trail starts again, and the view
+     * frames the robot when it is not tracking it, so that a run never starts off the screen.
+     */
+    private void follow(SimSnapshot snap) {
+        if (snap.time() == lastTime) {
+            return;
+        }
+        boolean newRun = Double.isNaN(lastTime) || snap.time() < lastTime;
+        lastTime = snap.time();
+        Vec3 c = snap.centerOfMass();
+        if (!c.isFinite()) {
+            return;
+        }
+        if (newRun) {
+            start = c;
+            trail.clear();
+            if (!track) {
+                framedFor = null;
+            }
+        }
+        Vec3 end = trail.isEmpty() ? null : trail.get(trail.size() - 1);
+        if (end == null || Math.hypot(c.x() - end.x(), c.y() - end.y()) > 0.005) {
+            if (trail.size() == TRAIL_POINTS) {
+                trail.subList(0, TRAIL_POINTS / 4).clear();
+            }
+            trail.add(c);
+        }
+    }
+
     private void paint(Event e) {
         Rectangle r = canvas.getClientArea();
         render(e.gc, r.width, r.height);
@@ -244,6 +370,9 @@ public final class View3D {
             last = snap;
         }
         snap = last;
+        if (snap != null) {
+            follow(snap);
+        }
         if (snap != null && framedFor == null) {
             frame(snap);
         }
@@ -252,15 +381,30 @@ public final class View3D {
             camera.follow(c.x(), c.y(), Math.max(0.0, c.z()), 0.25);
         }
         gc.setAntialias(SWT.ON);
-        renderer.draw(gc, camera, snap, new SceneRenderer.Style(highlighted.get(), labels), width, height);
+        renderer.draw(gc, camera, snap, new SceneRenderer.Style(highlighted.get(), labels, hover), width, height);
+        if (snap != null && track) {
+            renderer.trail(gc, camera, trail);
+        }
         gc.setAntialias(SWT.DEFAULT);
         hud(gc, snap);
     }
 
     private void hud(GC gc, SimSnapshot snap) {
         gc.setForeground(renderer.color(0x2A3648));
+        gc.drawText(hudText(), 8, 6, true);
+        String hint = dragHint();
+        if (!hint.isEmpty()) {
+            gc.drawText(hint, 8, 6 + gc.getFontMetrics().getHeight() + 2, true);
+        }
+    }
+
+    /** The line of text in the corner now: the overlay (time), and with TrackRobot the distance from the start. */
+    public String hudText() {
+        SimSnapshot snap = last;
+        double d = distanceFromStart();
         String text = snap == null ? "No robot yet: open a script and press Run" : overlay.get();
-        gc.drawText(text, 8, 6, true);
+        return snap != null && track && !Double.isNaN(d)
+                ? text + String.format(java.util.Locale.ROOT, "%s%.2f m from the start", text.isEmpty() ? "" : "   ", d) : text;
     }
 
     /**

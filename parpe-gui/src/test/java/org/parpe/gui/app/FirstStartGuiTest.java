@@ -4,6 +4,7 @@ import org.parpe.gui.prefs.Prefs;
 
 import org.parpe.gui.help.HelpText;
 import org.parpe.gui.help.QuickReference;
+import org.parpe.gui.automation.Screenshot;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -11,6 +12,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
+import java.util.List;
 import java.util.concurrent.atomic.AtomicReference;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
@@ -48,6 +50,31 @@ class FirstStartGuiTest {
         ide.open(null, false);
         Gui.settle();
         assertEquals(0, tutorials(), "only the first start opens it");
+        org.eclipse.swt.widgets.MenuItem atStart = menuItem(ide.shell().getMenuBar(), "Open the Tutorial at Every Start");
+        assertTrue(!atStart.getSelection(), "off unless asked for");
+        atStart.setSelection(true);
+        atStart.notifyListeners(org.eclipse.swt.SWT.Selection, new org.eclipse.swt.widgets.Event());
+        ide.shell().dispose();
+        ide = new IdeWindow(Gui.display(), new Prefs(home));
+        ide.open(null, false);
+        Gui.settle();
+        assertEquals(1, tutorials(), "the preference opens it at every start");
+        assertTrue(menuItem(ide.shell().getMenuBar(), "Open the Tutorial at Every Start").getSelection());
+    }
+
+    private static org.eclipse.swt.widgets.MenuItem menuItem(org.eclipse.swt.widgets.Menu menu, String text) {
+        for (org.eclipse.swt.widgets.MenuItem it : menu.getItems()) {
+            if (it.getText().replace("&", "").equals(text)) {
+                return it;
+            }
+            if (it.getMenu() != null) {
+                org.eclipse.swt.widgets.MenuItem in = menuItem(it.getMenu(), text);
+                if (in != null) {
+                    return in;
+                }
+            }
+        }
+        return null;
     }
 
     @Test
@@ -70,30 +97,43 @@ class FirstStartGuiTest {
         assertTrue(ide.status().message().startsWith("Run stopped at t = "), ide.status().message());
     }
 
+    /**
+     * Help's quick reference was a message box with space-aligned columns in a proportional font:
+     * now a table whose columns show each cell whole, with the examples in the fixed-width font.
+     */
     @Test
-    void saveCsvStartsBesideTheScriptOrInDocuments() throws Exception {
-        Path home = Files.createTempDirectory("parpe-home");
-        Path work = Files.createDirectories(home.resolve("work"));
-        assertEquals(work, org.parpe.gui.sweep.SweepDialogAccess.csvFolder(work.resolve("a.xml"), home));
-        Files.createDirectories(home.resolve("Documents"));
-        assertEquals(home.resolve("Documents"), org.parpe.gui.sweep.SweepDialogAccess.csvFolder(home.resolve("gone/none.xml"), home));
-    }
-
-    @Test
-    void theQuickReferenceIsInTheFixedWidthFontSoItsColumnsLineUp() throws Exception {
+    void theQuickReferenceIsATableWhoseColumnsShowEveryCell() throws Exception {
         ide = Gui.openIde(Files.createTempDirectory("parpe-help"));
         org.eclipse.swt.widgets.Shell help = QuickReference.open(ide.shell());
         try {
-            org.eclipse.swt.widgets.Text t = Arrays.stream(help.getChildren()).filter(c -> c instanceof org.eclipse.swt.widgets.Text)
-                    .map(c -> (org.eclipse.swt.widgets.Text) c).findFirst().orElseThrow();
-            assertEquals(HelpText.QUICK_REFERENCE, t.getText());
-            assertEquals(org.eclipse.jface.resource.JFaceResources.getTextFont(), t.getFont());
-            org.eclipse.swt.graphics.GC gc = new org.eclipse.swt.graphics.GC(t);
-            try {
-                assertEquals(gc.textExtent("iiii").x, gc.textExtent("MMMM").x, "the font is not fixed-width");
-            } finally {
-                gc.dispose();
+            Gui.settle();
+            org.eclipse.swt.widgets.Table t = Arrays.stream(help.getChildren()).filter(c -> c instanceof org.eclipse.swt.widgets.Table)
+                    .map(c -> (org.eclipse.swt.widgets.Table) c).findFirst().orElseThrow(() -> new AssertionError("no table"));
+            assertTrue(t.getHeaderVisible());
+            assertEquals(List.of("Section", "What it holds", "Example"),
+                    Arrays.stream(t.getColumns()).map(org.eclipse.swt.widgets.TableColumn::getText).toList());
+            assertEquals(HelpText.SECTIONS.length, t.getItemCount());
+            for (int r = 0; r < t.getItemCount(); r++) {
+                org.eclipse.swt.widgets.TableItem item = t.getItem(r);
+                for (int c = 0; c < 3; c++) {
+                    assertEquals(HelpText.SECTIONS[r][c], item.getText(c));
+                    org.eclipse.swt.graphics.GC gc = new org.eclipse.swt.graphics.GC(t);
+                    try {
+                        gc.setFont(item.getFont(c));
+                        int need = gc.textExtent(item.getText(c)).x;
+                        assertTrue(t.getColumn(c).getWidth() >= need, "column " + c + " (" + t.getColumn(c).getWidth() + " px) cuts '" + item.getText(c) + "' (" + need + " px)");
+                    } finally {
+                        gc.dispose();
+                    }
+                }
+                assertEquals(org.eclipse.jface.resource.JFaceResources.getTextFont(), item.getFont(2), "examples are code");
             }
+            assertTrue(help.getBounds().width >= Arrays.stream(t.getColumns()).mapToInt(org.eclipse.swt.widgets.TableColumn::getWidth).sum(),
+                    "the window shows the whole table: " + help.getBounds());
+            Gui.settle();
+            java.nio.file.Path shots = java.nio.file.Path.of(System.getProperty("parpe.artefacts", "target/gui-test-artefacts"));
+            Files.createDirectories(shots);
+            Screenshot.save(help, shots.resolve("quick-reference.png"));
         } finally {
             help.dispose();
         }

@@ -19,6 +19,38 @@ public final class IdeAccess {
         return Gui.openIde(home);
     }
 
+    /**
+     * Asks what closing the window asks, without closing it: {@code answer} gets each question of
+     * the file's (title and message) and returns the button pressed; a message box of the Pose
+     * panel's is recorded in {@code asked} as well and closed. True when the window would close.
+     */
+    public static boolean closeRequested(IdeWindow ide, java.util.List<String> asked, java.util.function.ToIntFunction<String> answer) {
+        ide.files().answerWith((title, message, buttons) -> {
+            asked.add(title + ": " + message);
+            return answer.applyAsInt(message);
+        });
+        org.eclipse.swt.widgets.Display d = ide.shell().getDisplay();
+        boolean[] done = new boolean[1];
+        Runnable[] watch = new Runnable[1];
+        watch[0] = () -> {
+            for (Shell s : d.getShells()) {
+                if (!s.isDisposed() && s != ide.shell() && s.getText().startsWith("Unsaved")) {
+                    asked.add(s.getText());
+                    s.dispose();
+                }
+            }
+            if (!done[0]) {
+                d.timerExec(200, watch[0]);
+            }
+        };
+        d.timerExec(200, watch[0]);
+        try {
+            return ide.closeRequested();
+        } finally {
+            done[0] = true;
+        }
+    }
+
     /** Ends any run and closes the window. */
     public static void closeIde(IdeWindow ide) {
         Gui.closeIde(ide);

@@ -114,4 +114,34 @@ class TutorialGuiTest {
             w.shell().dispose();
         }
     }
+
+    /**
+     * Issue 23, item 7: Ctrl + / Ctrl − / Ctrl 0 did nothing in the tutorial (the editor zoomed, the
+     * lesson a class reads from the projector did not). Real key presses under Xvfb.
+     */
+    @Test
+    void ctrlPlusMinusAndZeroZoomTheTutorial() throws Exception {
+        TutorialWindow w = new TutorialWindow(ide.shell(), Examples.tutorialFolder(), p -> { });
+        w.open();
+        try {
+            w.show(3);
+            String shown = w.shownText();
+            int normal = w.points();
+            w.shell().forceActive();
+            Gui.pump(() -> w.shell().getDisplay().getFocusControl() != null
+                    && w.shell().getDisplay().getFocusControl().getShell() == w.shell(), "the tutorial to have the focus");
+            ZoomAndThemeGuiTest.chord(w.shell().getDisplay(), org.eclipse.swt.SWT.CTRL, '=');
+            Gui.pump(() -> w.points() == normal + 2, "Ctrl+= to make the lesson larger");
+            ZoomAndThemeGuiTest.chord(w.shell().getDisplay(), org.eclipse.swt.SWT.CTRL, '=');
+            Gui.pump(() -> w.points() == normal + 4, "a second Ctrl+=");
+            assertEquals(shown, w.shownText(), "the same lesson, larger");
+            Gui.screenshot(w.shell(), "tutorial-zoomed.png");
+            ZoomAndThemeGuiTest.chord(w.shell().getDisplay(), org.eclipse.swt.SWT.CTRL, '-');
+            Gui.pump(() -> w.points() == normal + 2, "Ctrl+- to make it smaller");
+            ZoomAndThemeGuiTest.chord(w.shell().getDisplay(), org.eclipse.swt.SWT.CTRL, '0');
+            Gui.pump(() -> w.points() == normal, "Ctrl+0 for the normal size");
+        } finally {
+            w.shell().dispose();
+        }
+    }
 }

@@ -27,7 +27,7 @@ class ZoomAndThemeGuiTest {
         Gui.closeIde(ide);
     }
 
-    private static void chord(Display d, int modifier, char c) {
+    static void chord(Display d, int modifier, char c) {
         Event down = new Event();
         down.type = SWT.KeyDown;
         down.keyCode = modifier;

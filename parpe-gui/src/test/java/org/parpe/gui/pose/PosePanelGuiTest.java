@@ -188,7 +188,7 @@ class PosePanelGuiTest {
         press("Up");
         assertArrayEquals(second, panel.poses().get(1).angles());
         assertTrue(panel.table().table().getItem(1).getText(1).equals("0.80"), "the list shows the new time");
-        assertEquals(List.of("3 poses of front"), panel.unsaved(), "closing the window would ask before losing them");
+        assertEquals(List.of("3 poses of front in pairs-centipede.xml"), panel.unsaved(), "closing the window would ask before losing them");
         IdeAccess.screenshot(ide.shell(), "pose-panel-posed.png");
     }
 
@@ -385,5 +385,96 @@ class PosePanelGuiTest {
         assertEquals(all.size() - 4, panel.table().selection(), "the first added pose is selected");
         assertTrue(panel.posingReady());
         assertEquals(-60, ide.view().lastSnapshot().angle(15), 6, "the posed robot stands in the first pose");
+    }
+
+    /**
+     * Issue 23, item 10: poses captured for one script followed into the next file opened, and
+     * quitting asked twice ("Unsaved changes", then the poses). Each script keeps its own poses;
+     * quitting asks one question that names both.
+     */
+    @Test
+    @Order(7)
+    void posesStayWithTheirScriptAndQuittingAsksOnce() throws Exception {
+        Path first = dir.resolve("first-centipede.xml");
+        Files.writeString(first, PAIRS);
+        openScript(first);
+        panel.chooseGroup("front");
+        IdeAccess.pump(() -> panel.posingReady() && panel.poses() != null && "front".equals(panel.poses().group()), "front to pose");
+        assertEquals(0, panel.poses().size(), "a script opened for the first time has no poses yet");
+        slide(0, -20);
+        press("Capture");
+        press("Capture");
+        assertEquals(2, panel.poses().size());
+        List<String> lost = panel.unsaved();
+        assertTrue(lost.contains("2 poses of front in first-centipede.xml"), lost.toString());
+
+        Path second = dir.resolve("second-centipede.xml");
+        Files.writeString(second, PAIRS);
+        openScript(second);
+        panel.chooseGroup("front");
+        IdeAccess.pump(() -> panel.posingReady() && panel.poses() != null, "front of the second script to pose");
+        assertEquals(0, panel.poses().size(), "the poses of first-centipede.xml followed into second-centipede.xml");
+        assertEquals(lost, panel.unsaved(), "the first script's poses are still its own");
+
+        openScript(first);
+        panel.chooseGroup("front");
+        IdeAccess.pump(() -> panel.posingReady() && panel.poses() != null, "front of the first script again");
+        assertEquals(2, panel.poses().size(), "the first script's poses are back with it");
+
+        ide.editor().document().replace(0, 0, "<!-- edited -->\n");
+        List<String> asked = new java.util.ArrayList<>();
+        assertTrue(IdeAccess.closeRequested(ide, asked, message -> 1), "Don't Save closes");
+        assertEquals(1, asked.size(), "one question before quitting: " + asked);
+        assertTrue(asked.get(0).contains("first-centipede.xml has unsaved changes")
+                && asked.get(0).contains("2 poses of front in first-centipede.xml"), asked.get(0));
+        ide.editor().document().replace(0, "<!-- edited -->\n".length(), "");
+    }
+
+    /**
+     * Issue 23, item 5: nothing told whether a drag would bend a joint or orbit, and the wheel
+     * zoomed on the body's centre rather than the group being posed.
+     */
+    @Test
+    @Order(8)
+    void hoverSaysWhatADragDoesAndTheWheelZoomsOnTheGroup() throws Exception {
+        openScript(script);
+        ide.showPosePanel();
+        panel.chooseGroup("front");
+        IdeAccess.pump(() -> panel.posingReady() && panel.poses() != null, "front to pose");
+        View3D view = ide.view();
+        view.focus(panel.posedModules());
+        IdeAccess.settle();
+        int id = grabbable(view, 1, 15, 0, 14);
+        assertTrue(id >= 0, "no module of the front pair can be grabbed in the 3D view");
+        Point p = view.screenPoint(id);
+        mouse(SWT.MouseMove, p.x, p.y, 0);
+        assertEquals(id, view.hovered(), "the module under the mouse is lit");
+        assertEquals("Drag up or down: bend the joint of m" + id, view.dragHint());
+        IdeAccess.screenshot(ide.shell(), "pose-panel-hover.png");
+        mouse(SWT.MouseMove, 3, view.control().getSize().y - 3, 0);
+        assertEquals(-1, view.hovered());
+        assertEquals("Drag: turn the view around", view.dragHint());
+
+        // Frame the whole robot, then one notch of the wheel: the view turns to the posed group.
+        view.resetView();
+        IdeAccess.settle();
+        java.util.Set<Integer> group = view.highlighted().get();
+        assertTrue(!group.isEmpty(), "the posed group is highlighted");
+        double x = 0, y = 0, z = 0;
+        int n = 0;
+        for (org.parpe.sim.SimBody b : view.lastSnapshot().bodies()) {
+            if (group.contains(b.moduleId())) {
+                x += b.position().x();
+                y += b.position().y();
+                z += b.position().z();
+                n++;
+            }
+        }
+        Event wheel = new Event();
+        wheel.count = 3;
+        view.control().notifyListeners(SWT.MouseVerticalWheel, wheel);
+        double[] t = view.target();
+        assertEquals(x / n, t[0], 0.02, "the wheel zooms on the group, not the body");
+        assertEquals(y / n, t[1], 0.02);
     }
 }

@@ -95,4 +95,37 @@ class ScriptInsertTest {
         String period = ScriptInsert.check(p, new ScriptInsert.Request(legPoses(), List.of("leftLeg"), 0, 0, 0));
         assertTrue(period != null && period.contains("period"), period);
     }
+
+    /**
+     * Issue 23, item 10: with entries in {@code <main>}, "Use on another group" wrote a behavior
+     * that {@code <main>} never played, and said so only as "add it to main". Now it plays first,
+     * for three cycles, then what {@code <main>} had; or, when asked not to, main is left alone and
+     * the sentence says that the script does not play it.
+     */
+    @Test
+    void aMainWithEntriesPlaysTheNewBehaviorFirstThenItsOwn() {
+        String text = LEGS.replace("<automata/>", "<automata>\n    <wave states=\"rec_leg\"/>\n  </automata>\n"
+                + "  <behaviors>\n    <still>\n      <wave group=\"leg\" period=\"1\"/>\n    </still>\n  </behaviors>\n"
+                + "  <main>\n    <still/>\n  </main>");
+        Program before = load(text);
+        ScriptInsert.Result r = ScriptInsert.insert(text, before, new ScriptInsert.Request(legPoses(), List.of("leftLeg"), 2, 0, 0));
+        assertEquals(ScriptInsert.Main.FIRST, r.main());
+        assertTrue(r.text().contains("<main>\n    <play_leg_2 time=\"6\"/>\n    <still/>\n  </main>"), r.text());
+        assertTrue(r.said(List.of("leftLeg")).endsWith("<main> now plays it first, for 6 s, then the entries it had."),
+                r.said(List.of("leftLeg")));
+        Traces t = Traces.run(load(r.text()), 8);
+        boolean moved = false;
+        for (double time = 0.5; time < 6; time += 0.5) {
+            moved |= t.at(2, time) != 0;
+        }
+        assertTrue(moved, "leftLeg plays the poses while <main>'s first entry runs");
+        assertEquals(t.at(2, 6.5), t.at(2, 7.5), 1e-9, "then <still> plays, which does not move leftLeg");
+
+        ScriptInsert.Result left = ScriptInsert.insert(text, before,
+                new ScriptInsert.Request(legPoses(), List.of("leftLeg"), 2, 0, 0, false));
+        assertEquals(ScriptInsert.Main.UNCHANGED, left.main());
+        assertTrue(left.text().contains("<main>\n    <still/>\n  </main>"), left.text());
+        assertTrue(left.said(List.of("leftLeg")).contains("the script does not play it yet: add <play_leg_2/> to <main>"),
+                left.said(List.of("leftLeg")));
+    }
 }

@@ -272,7 +272,7 @@ class SweepDialogGuiTest {
         SweepTab.Line amp = dialog.sweepTab().line("amp");
         assertTrue(amp.vary().getSelection());
         assertEquals("10", amp.from().getText());
-        assertEquals(4, amp.values().getSelection());
+        assertEquals("4", amp.values().getText());
     }
 
     @Test
@@ -303,6 +303,79 @@ class SweepDialogGuiTest {
         }
         editor.run(ITextOperationTarget.UNDO);
         assertEquals(original, editor.document().get());
+    }
+
+    /** Types {@code text} into {@code box} with real key presses, over what it held (Ctrl+A first). */
+    private static void typeInto(org.eclipse.swt.widgets.Control box, String text) {
+        box.getShell().forceActive();
+        box.setFocus();
+        Ui.pump(box::isFocusControl, "the box to have the focus");
+        org.eclipse.swt.widgets.Display d = box.getDisplay();
+        java.util.List<org.eclipse.swt.widgets.Event> keys = new ArrayList<>();
+        keys.add(key(SWT.KeyDown, SWT.CTRL, (char) 0));
+        keys.add(key(SWT.KeyDown, 'a', 'a'));
+        keys.add(key(SWT.KeyUp, 'a', 'a'));
+        keys.add(key(SWT.KeyUp, SWT.CTRL, (char) 0));
+        for (char c : text.toCharArray()) {
+            keys.add(key(SWT.KeyDown, c, c));
+            keys.add(key(SWT.KeyUp, c, c));
+        }
+        for (org.eclipse.swt.widgets.Event e : keys) {
+            assertTrue(d.post(e), "the key could not be posted");
+            Ui.settle();
+        }
+    }
+
+    private static org.eclipse.swt.widgets.Event key(int type, int code, char c) {
+        org.eclipse.swt.widgets.Event e = new org.eclipse.swt.widgets.Event();
+        e.type = type;
+        e.keyCode = code;
+        e.character = c;
+        return e;
+    }
+
+    /** Issue 23, item 13: "2.5" typed into Values ran 25 values (a spin box dropped the point); it is the one value 2.5. */
+    @Test
+    void aFractionTypedIntoValuesIsOneValueNotACount() {
+        dialog.setDuration("0.5");
+        vary("amp", "10", "60", 3);
+        typeInto(dialog.sweepTab().line("amp").values(), "2.5");
+        Ui.pump(() -> "2.5".equals(Ui.text(dialog.sweepTab().line("amp").values())), "the typed value");
+        runToEnd();
+        assertEquals(1, dialog.results().rows().size(), "runs of amp for Values '2.5': " + dialog.results().rows());
+        assertEquals(2.5, dialog.results().rows().get(0).values().get("amp"));
+    }
+
+    /** The Values box read in a locale with a decimal point and in one with a decimal comma. */
+    @Test
+    void valuesAreACountOrTheValuesInTheUsersLocale() throws Exception {
+        assertEquals(new SweepTab.Values(3, List.of()), SweepTab.Values.read("3", java.util.Locale.ENGLISH));
+        assertEquals(List.of(2.5), SweepTab.Values.read("2.5", java.util.Locale.ENGLISH).list());
+        assertEquals(List.of(2.5), SweepTab.Values.read(" 2,5 ", java.util.Locale.GERMANY).list());
+        assertEquals(List.of(2.5), SweepTab.Values.read("2.5", java.util.Locale.GERMANY).list());
+        assertEquals(List.of(0.5, 1.0, 2.0), SweepTab.Values.read("0.5; 1; 2", java.util.Locale.ENGLISH).list());
+        assertEquals(List.of(0.5, 1.0, 2.0), SweepTab.Values.read("0,5; 1; 2", java.util.Locale.FRANCE).list());
+        assertEquals(List.of(10.0, 20.0), SweepTab.Values.read("10,20", java.util.Locale.ENGLISH).list());
+        org.junit.jupiter.api.Assertions.assertThrows(org.parpe.sim.sweep.SweepException.class,
+                () -> SweepTab.Values.read("many", java.util.Locale.ENGLISH));
+        org.junit.jupiter.api.Assertions.assertThrows(org.parpe.sim.sweep.SweepException.class,
+                () -> SweepTab.Values.read("0", java.util.Locale.ENGLISH));
+    }
+
+    /** Issue 23, item 13: when no run beat the script's own values the dialog said only "Best: run 0". */
+    @Test
+    void whenNothingBeatsTheScriptsOwnValuesTheDialogSaysSo() {
+        dialog.setDuration("0.5");
+        vary("amp", "35", "35", 1);
+        runToEnd();
+        assertTrue(dialog.message().contains("Nothing beat the script's own values"), dialog.message());
+        assertTrue(dialog.message().contains("run 0"), dialog.message());
+        vary("amp", "30", "35", 2);
+        runToEnd();
+        SweepRow best = dialog.results().best();
+        assertNotNull(best);
+        assertEquals(best.values().get("amp") == 35.0, dialog.message().contains("Nothing beat the script's own values"),
+                dialog.message());
     }
 
     @Test

@@ -32,6 +32,11 @@ final class Ui {
         Gui.pump(done, what, WAIT_MS);
     }
 
+    /** What a text box or a spin box shows. */
+    static String text(org.eclipse.swt.widgets.Control box) {
+        return box instanceof org.eclipse.swt.widgets.Spinner s ? s.getText() : ((org.eclipse.swt.widgets.Text) box).getText();
+    }
+
     /** Handles events for a moment, so that layouts and paints are done. */
     static void settle() {
         Gui.settle();
@@ -62,7 +67,7 @@ final class Ui {
         l.vary().setSelection(true);
         l.from().setText(from);
         l.to().setText(to);
-        l.values().setSelection(values);
+        l.values().setText(Integer.toString(values));
     }
 
     /** Stops {@code dialog}'s runs, if any, and closes it. */

@@ -43,10 +43,20 @@ public final class Sweep {
      * in a run stops the others and is rethrown.
      */
     public SweepResult run(int from, int to, int jobs, SweepListener listener, Cancellation cancellation) {
+        return run(from, to, jobs, listener, cancellation, true);
+    }
+
+    /**
+     * As {@link #run(int, int, int, SweepListener, Cancellation)}; with {@code keep} false a row
+     * is let go once the listener has it, and the result holds no rows (only whether it was
+     * stopped): a caller that keeps what it needs itself (the IDE's dialog, a million runs) does
+     * not hold every row twice.
+     */
+    public SweepResult run(int from, int to, int jobs, SweepListener listener, Cancellation cancellation, boolean keep) {
         if (from < 0 || to > spec.size() || from > to || jobs < 1) {
             throw new IllegalArgumentException("runs " + from + ".." + to + " of " + spec.size() + " on " + jobs + " jobs");
         }
-        Ordered ordered = new Ordered(from, to, listener);
+        Ordered ordered = new Ordered(from, to, listener, keep);
         AtomicInteger next = new AtomicInteger(from);
         Runnable worker = () -> {
             try (Evaluator.Worker w = evaluator.worker()) {
@@ -59,8 +69,7 @@ public final class Sweep {
             }
         };
         runOn(Math.min(jobs, Math.max(1, to - from)), worker, cancellation);
-        List<SweepRow> rows = ordered.rows();
-        return new SweepResult(rows, rows.size() < to - from);
+        return new SweepResult(ordered.rows(), ordered.delivered() < to - from);
     }
 
     /**
@@ -113,14 +122,16 @@ public final class Sweep {
         private final int total;
         private final SweepRow[] done;
         private final SweepListener listener;
+        private final boolean keep;
         private int next;
         private int finished;
 
-        Ordered(int from, int to, SweepListener listener) {
+        Ordered(int from, int to, SweepListener listener, boolean keep) {
             this.from = from;
             this.total = to - from;
             this.done = new SweepRow[total];
             this.listener = listener;
+            this.keep = keep;
         }
 
         synchronized void add(SweepRow row) {
@@ -128,13 +139,22 @@ public final class Sweep {
             finished++;
             listener.progress(finished, total);
             while (next < total && done[next] != null) {
-                listener.row(done[next++]);
+                listener.row(done[next]);
+                if (!keep) {
+                    done[next] = null;
+                }
+                next++;
             }
+        }
+
+        /** How many rows the listener was given (in order). */
+        synchronized int delivered() {
+            return next;
         }
 
         synchronized List<SweepRow> rows() {
             List<SweepRow> rows = new ArrayList<>();
-            for (int i = 0; i < next; i++) {
+            for (int i = 0; keep && i < next; i++) {
                 rows.add(done[i]);
             }
             return rows;

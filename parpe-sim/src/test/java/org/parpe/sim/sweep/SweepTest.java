@@ -199,4 +199,24 @@ class SweepTest {
         assertEquals(1, r.rows().size());
         assertEquals(seen, r.rows());
     }
+
+    /**
+     * A caller that keeps what it needs itself (the IDE's dialog, issue 23 item 13) asks the sweep
+     * not to keep the rows: the listener gets the same rows in the same order, the result holds none.
+     */
+    @Test
+    void aSweepThatDoesNotKeepItsRowsHandsTheListenerTheSameRows() throws Exception {
+        List<String> kept = csv(grid(), 0, 6, 2);
+        Sweep sweep = grid();
+        List<String> streamed = new ArrayList<>();
+        SweepResult r = sweep.run(0, 6, 2, new SweepListener() {
+            @Override
+            public void row(SweepRow row) {
+                streamed.add(SweepCsv.line(row, sweep.spec().size()));
+            }
+        }, new Cancellation(), false);
+        assertEquals(kept, streamed);
+        assertEquals(List.of(), r.rows());
+        assertFalse(r.cancelled(), "every run was handed over");
+    }
 }
