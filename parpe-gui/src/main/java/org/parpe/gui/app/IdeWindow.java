@@ -229,7 +229,7 @@ public final class IdeWindow {
         }
     }
 
-    /** Ctrl + / Ctrl − / Ctrl 0: larger, smaller, normal text in the editor, the log and the gait table (a projector). */
+    /** Ctrl + / Ctrl − / Ctrl 0: larger, smaller, normal text in the editor, the log, the gait table and the plots (a projector). */
     private boolean zoomKey(Event e) {
         int step = e.character == '+' || e.character == '=' || e.keyCode == SWT.KEYPAD_ADD ? 1
                 : e.character == '-' || e.keyCode == SWT.KEYPAD_SUBTRACT ? -1 : e.character == '0' || e.keyCode == '0' ? 0 : 2;
@@ -240,6 +240,7 @@ public final class IdeWindow {
         org.parpe.gui.panels.Zoom.apply(editor.widget(), org.eclipse.jface.resource.JFaceResources.getTextFont(), zoom);
         org.parpe.gui.panels.Zoom.apply(log, org.eclipse.jface.resource.JFaceResources.getTextFont(), zoom);
         org.parpe.gui.panels.Zoom.apply(gaitGrid.widget(), shell.getDisplay().getSystemFont(), zoom);
+        org.parpe.gui.chart.ChartView.zoomAll(zoom);
         status.setMessage(zoom == 0 ? "Text at its normal size (Ctrl+0)" : "Text " + (zoom > 0 ? "+" : "") + zoom * 2
                 + " points (Ctrl+plus, Ctrl+minus; Ctrl+0: normal)");
         return true;

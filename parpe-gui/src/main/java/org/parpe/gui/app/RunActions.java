@@ -26,7 +26,7 @@ import org.parpe.core.run.TargetException;
 import org.parpe.gui.editor.Validator;
 import org.parpe.gui.panels.ControlPanel;
 import org.parpe.gui.panels.ParametersDialog;
-import org.parpe.gui.run.AngleRecorder;
+import org.parpe.core.plot.AngleRecorder;
 import org.parpe.gui.run.RunController;
 import org.parpe.gui.run.Target;
 import org.parpe.serial.bus.BusConfig;
@@ -223,7 +223,7 @@ final class RunActions implements ControlPanel.Target {
     private void start(Program program, Target target, String spec, double runFor, Consumer<RunOutcome> onEnd) {
         String port = ide.toolbar().port();
         String profile = ide.toolbar().hardwareProfile();
-        AngleRecorder recorder = new AngleRecorder();
+        AngleRecorder recorder = org.parpe.gui.panels.PlotView.newRecorder();
         ide.plots().setModules(program.moduleIds());
         ide.plots().setRecorder(recorder);
         ide.clearRunProblems();
@@ -284,8 +284,7 @@ final class RunActions implements ControlPanel.Target {
                 sim = null;
             });
         }
-        run.observer(recorder);
-        run.observeReadings(recorder::keepMeasured);
+        recorder.attachTo(run);
     }
 
     /** The servos of a hardware profile (any protocol); the port box, when filled, replaces the profile's port. */
