@@ -92,7 +92,7 @@ final class Plots {
         PngCharts.points(c, "misses a constraint", n, misses, PlotStyle.MISSES, false);
         double[] best = result.bestSoFar();
         if (java.util.Arrays.stream(best).anyMatch(Double::isFinite)) {
-            PngCharts.line(c, "best so far", n, best, Math.min(n.length, best.length), PlotStyle.BEST);
+            PngCharts.line(c, "best so far", n, best, Math.min(n.length, best.length), PlotStyle.BEST_SO_FAR);
         }
         PngCharts.write(List.of(c), out);
     }

@@ -9,15 +9,15 @@ public final class PlotStyle {
     /** The colours of the modules' curves, in the order the modules are shown. */
     private static final int[] SERIES = {0x1F77B4, 0xD62728, 0x2CA02C, 0x9467BD, 0xFF7F0E, 0x17BECF, 0x8C564B, 0xE377C2};
 
-    /** A run that counts: the dots of a sweep, an evaluation that meets the constraints. */
-    public static final int RUN = 0x1F77B4;
-    /** The line of the best runs (best at each value, best so far). */
+    /** The line through the best run at each value of a sweep. */
     public static final int BEST = 0x1F77B4;
+    /** The line of an optimisation's best acceptable objective so far. */
+    public static final int BEST_SO_FAR = 0xD62728;
     /** A run whose robot fell over or failed: a hollow ring, never the best. */
     public static final int FELL = 0xD62728;
     /** An evaluation that misses a constraint. */
     public static final int MISSES = 0xFF7F0E;
-    /** The ordinary runs of a sweep, behind the best line. */
+    /** A run that counts (a sweep's run, an evaluation that meets the constraints), behind the best line. */
     public static final int OTHER_RUN = 0xA0A0A0;
 
     /** Width of a curve, in points at normal size. */
