@@ -23,6 +23,14 @@ class AngleRecorderTest {
         return Run.builder(p, RunOptions.defaults(), new DiagnosticList()).duration(seconds);
     }
 
+    /** {@code r} after recording a run of {@code seconds} without a sensor source. */
+    private static AngleRecorder recorded(double seconds, AngleRecorder r) throws Exception {
+        Run.Builder b = run(seconds);
+        r.attachTo(b);
+        b.build().execute();
+        return r;
+    }
+
     @Test
     void measuredIsTheSensorReadingOfTheTickItIsPlottedAt() throws Exception {
         RunTest.TickPlant plant = new RunTest.TickPlant();
@@ -47,9 +55,7 @@ class AngleRecorderTest {
 
     @Test
     void withoutASensorSourceNothingIsMeasured() throws Exception {
-        Run.Builder b = run(0.03);
-        AngleRecorder r = AngleRecorder.latest(64, 0).attachTo(b);
-        b.build().execute();
+        AngleRecorder r = recorded(0.03, AngleRecorder.latest(64, 0));
         double[] t = new double[64];
         double[] cmd = new double[64];
         double[] meas = new double[64];
@@ -61,9 +67,7 @@ class AngleRecorderTest {
 
     @Test
     void aWholeRunKeepsItsBeginningAndEndEvenlySpacedWithinItsCapacity() throws Exception {
-        Run.Builder b = run(1.0);
-        AngleRecorder r = AngleRecorder.wholeRun(16).attachTo(b);
-        b.build().execute();
+        AngleRecorder r = recorded(1.0, AngleRecorder.wholeRun(16));
         double[] t = new double[16];
         int n = r.copy(0, t, new double[16], new double[16]);
         assertTrue(n >= 8 && n <= 16, "between half and all of the capacity, got " + n);
@@ -76,9 +80,7 @@ class AngleRecorderTest {
 
     @Test
     void aWindowKeepsTheNewestSamplesAtItsInterval() throws Exception {
-        Run.Builder b = run(1.0);
-        AngleRecorder r = AngleRecorder.latest(10, 0.05).attachTo(b);
-        b.build().execute();
+        AngleRecorder r = recorded(1.0, AngleRecorder.latest(10, 0.05));
         double[] t = new double[10];
         assertEquals(10, r.copy(0, t, new double[10], new double[10]));
         assertEquals(1.0, t[9], 1e-9, "the newest sample is the last tick");
