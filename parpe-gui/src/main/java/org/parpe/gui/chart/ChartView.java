@@ -254,9 +254,12 @@ public final class ChartView {
         private void axes() {
             int lineH = gc.getFontMetrics().getHeight();
             gc.setForeground(Theme.faint());
-            for (double v : NiceTicks.within(yRange[0], yRange[1], Math.max(2, (bottom - top) / (2 * lineH)))) {
+            // At least three intervals: a short plot still shows a scale, not a lone 0.
+            int yTicks = Math.max(3, (bottom - top) / (2 * lineH));
+            double yStep = NiceTicks.step(yRange[1] - yRange[0], yTicks);
+            for (double v : NiceTicks.within(yRange[0], yRange[1], yTicks)) {
                 gc.drawLine(left, py(v), right, py(v));
-                String s = NiceTicks.label(v, NiceTicks.step(yRange[1] - yRange[0], Math.max(2, (bottom - top) / (2 * lineH))));
+                String s = NiceTicks.label(v, yStep);
                 gc.setForeground(Theme.ink());
                 gc.drawText(s, left - 4 - gc.textExtent(s).x, py(v) - lineH / 2, true);
                 gc.setForeground(Theme.faint());
