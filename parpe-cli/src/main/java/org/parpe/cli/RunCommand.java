@@ -116,7 +116,7 @@ final class RunCommand implements Callable<Integer> {
         }
         Writer out;
         try {
-            sim.configure(builder, duration == null ? Double.POSITIVE_INFINITY : duration, err);
+            sim.configure(builder, err);
             hardware.configure(builder, err);
             out = traceWriter();
         } catch (TargetException e) {

@@ -33,15 +33,17 @@ class ArchitectureTest {
             .layer("run").definedBy("org.parpe.core.run..")
             .layer("export").definedBy("org.parpe.core.export..")
             .layer("diagram").definedBy("org.parpe.core.diagram..")
+            .layer("plot").definedBy("org.parpe.core.plot..")
+            .whereLayer("plot").mayNotBeAccessedByAnyLayer()
             .whereLayer("diagram").mayNotBeAccessedByAnyLayer()
             .whereLayer("export").mayNotBeAccessedByAnyLayer()
             .whereLayer("load").mayOnlyBeAccessedByLayers("diagram")
             .whereLayer("print").mayOnlyBeAccessedByLayers("diagram")
-            .whereLayer("run").mayOnlyBeAccessedByLayers("diagram", "export")
+            .whereLayer("run").mayOnlyBeAccessedByLayers("diagram", "export", "plot")
             .whereLayer("model").mayOnlyBeAccessedByLayers("load", "print", "run", "export", "diagram")
             .whereLayer("expr").mayOnlyBeAccessedByLayers("model", "load", "print", "run", "export", "diagram")
             .whereLayer("xml").mayOnlyBeAccessedByLayers("expr", "model", "load", "print", "run", "export", "diagram")
-            .whereLayer("sensor").mayOnlyBeAccessedByLayers("expr", "load", "run", "export", "diagram")
+            .whereLayer("sensor").mayOnlyBeAccessedByLayers("expr", "load", "run", "export", "diagram", "plot")
             .whereLayer("lang").mayOnlyBeAccessedByLayers("xml", "expr", "model", "load", "print", "run", "export",
                     "diagram");
 

@@ -1,5 +1,6 @@
 package org.parpe.cli.sim;
 
+import org.parpe.core.plot.AngleRecorder;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
@@ -59,10 +60,9 @@ public class SimOptions {
 
     /**
      * Attaches the simulator to {@code run} when {@code --sim} was given, with the plot and
-     * metrics it asks for ({@code duration}: the run's limit, for the plot's sampling; messages
-     * about the outputs go to {@code err}).
+     * metrics it asks for (messages about the outputs go to {@code err}).
      */
-    public void configure(Run.Builder run, double duration, PrintStream err) throws UsageException, TargetException {
+    public void configure(Run.Builder run, PrintStream err) throws UsageException, TargetException {
         if (sim == null) {
             if (metrics != null || plot != null || realtime || world != null) {
                 throw new UsageException("--metrics, --plot, --realtime and --world need --sim");
@@ -73,9 +73,7 @@ public class SimOptions {
         run.attach(target);
         Simulator simulator = target.simulator();
         if (plot != null) {
-            PlotRecorder recorder = new PlotRecorder(simulator, run.program().moduleIds(), duration,
-                    run.options().dt());
-            run.observer(recorder);
+            AngleRecorder recorder = AngleRecorder.wholeRun(PlotWriter.SAMPLES).attachTo(run);
             run.onFinish(o -> writePlot(recorder, err));
         }
         if (metrics != null) {
@@ -159,7 +157,7 @@ public class SimOptions {
         }
     }
 
-    private void writePlot(PlotRecorder recorder, PrintStream err) {
+    private void writePlot(AngleRecorder recorder, PrintStream err) {
         try {
             plotFile.write(new PlotWriter(recorder)::write);
         } catch (UsageException e) {

@@ -220,6 +220,7 @@ public final class Run {
         /**
          * Adds an observer of the readings: called each tick with the table the scheduler is
          * about to use (after the chosen source has filled it), e.g. for plots of measured angles.
+         * Without a sensor source it is never called: the table then holds no measurement.
          */
         public Builder observeReadings(SensorSource observer) {
             readingObservers.add(observer);
@@ -299,7 +300,7 @@ public final class Run {
         }
 
         private SensorSource readings() {
-            if (readingObservers.isEmpty()) {
+            if (readingObservers.isEmpty() || source == null) {
                 return source;
             }
             SensorSource chosen = source;

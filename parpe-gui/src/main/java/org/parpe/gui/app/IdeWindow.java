@@ -239,7 +239,7 @@ public final class IdeWindow implements HardwareHost {
         }
     }
 
-    /** Ctrl + / Ctrl − / Ctrl 0: larger, smaller, normal text in the editor, the log and the gait table (a projector). */
+    /** Ctrl + / Ctrl − / Ctrl 0: larger, smaller, normal text in the editor, the log, the gait table and the plots (a projector). */
     private boolean zoomKey(Event e) {
         int step = org.parpe.gui.panels.Zoom.step(e);
         if (step == org.parpe.gui.panels.Zoom.NONE) {
@@ -249,6 +249,7 @@ public final class IdeWindow implements HardwareHost {
         org.parpe.gui.panels.Zoom.apply(editor.widget(), org.eclipse.jface.resource.JFaceResources.getTextFont(), zoom);
         org.parpe.gui.panels.Zoom.apply(log, org.eclipse.jface.resource.JFaceResources.getTextFont(), zoom);
         org.parpe.gui.panels.Zoom.apply(gaitGrid.widget(), shell.getDisplay().getSystemFont(), zoom);
+        org.parpe.gui.panels.ChartView.zoomAll(zoom);
         status.setMessage(zoom == 0 ? "Text at its normal size (Ctrl+0)" : "Text " + (zoom > 0 ? "+" : "") + zoom * 2
                 + " points (Ctrl+plus, Ctrl+minus; Ctrl+0: normal)");
         return true;

@@ -28,7 +28,7 @@ import org.parpe.core.run.TargetException;
 import org.parpe.gui.editor.Validator;
 import org.parpe.gui.panels.ControlPanel;
 import org.parpe.gui.panels.ParametersDialog;
-import org.parpe.gui.run.AngleRecorder;
+import org.parpe.core.plot.AngleRecorder;
 import org.parpe.gui.run.RunController;
 import org.parpe.gui.run.RunOn;
 import org.parpe.serial.bus.BusConfig;
@@ -225,7 +225,7 @@ public final class RunActions implements ControlPanel.ControlSink {
     private void start(Program program, RunOn target, String spec, double runFor, Consumer<RunOutcome> onEnd) {
         String port = ide.toolbar().port();
         String profile = ide.toolbar().hardwareProfile();
-        AngleRecorder recorder = new AngleRecorder();
+        AngleRecorder recorder = org.parpe.gui.panels.PlotView.newRecorder();
         ide.plots().setModules(program.moduleIds());
         ide.plots().setRecorder(recorder);
         ide.clearRunProblems();
@@ -286,8 +286,7 @@ public final class RunActions implements ControlPanel.ControlSink {
                 sim = null;
             });
         }
-        run.observer(recorder);
-        run.observeReadings(recorder::keepMeasured);
+        recorder.attachTo(run);
     }
 
     /** The servos of a hardware profile (any protocol); the port box, when filled, replaces the profile's port. */

@@ -1,46 +1,46 @@
 package org.parpe.gui.sweep;
 
 import java.util.List;
-import java.util.Locale;
 import java.util.TreeMap;
 import org.eclipse.swt.SWT;
-import org.eclipse.swt.graphics.Color;
-import org.eclipse.swt.graphics.GC;
-import org.eclipse.swt.graphics.Rectangle;
 import org.eclipse.swt.widgets.Canvas;
 import org.eclipse.swt.widgets.Composite;
-import org.eclipse.swt.widgets.Event;
+import org.parpe.core.plot.PlotStyle;
+import org.parpe.gui.panels.ChartView;
 import org.parpe.sim.sweep.SweepRow;
 
 /**
- * The plot of a sweep or an optimisation, drawn with SWT's {@link GC}: for a sweep, the
- * objective of every run over one varied parameter (filled dots; hollow red ones for runs
- * whose robot fell over) with a line through the best run at each value; for an
- * optimisation, the convergence: every evaluation's objective (blue when it met the
- * constraints, orange when not) and the best acceptable objective so far in red, as the
- * command line's plots draw them. Which run may be the best is {@link Results#acceptable}'s rule,
- * the command line's.
+ * The plot of a sweep or an optimisation in the IDE's one {@link ChartView}: for a sweep, the
+ * objective of every run over one varied parameter (grey dots; hollow red rings for runs whose
+ * robot fell over or failed, never the best) with a line through the best run at each value; for
+ * an optimisation, the convergence: every evaluation's objective (grey when it met the
+ * constraints, orange when not) and the best acceptable objective so far, as the command line's
+ * plots draw them, in the one {@link PlotStyle}. Which run may be the best is
+ * {@link Results#acceptable}'s rule, the command line's.
  */
 final class ResultsPlot {
-    private static final Color BLUE = new Color(0x1F, 0x77, 0xB4);
-    private static final Color RED = new Color(0xD6, 0x27, 0x28);
-    private static final Color ORANGE = new Color(0xFF, 0x7F, 0x0E);
-    private static final int LEFT = 64;
-    private static final int RIGHT = 14;
-    private static final int TOP = 24;
-    private static final int BOTTOM = 44;
+    static final String RUNS = "runs";
+    static final String FELL = "fell over or failed (never the best)";
+    static final String BEST = "best at each value";
+    static final String MISSES = "misses a constraint";
+    static final String BEST_SO_FAR = "best so far";
 
-    private final Canvas canvas;
+    private final ChartView chart;
     private Results results;
     private String x;
 
     ResultsPlot(Composite parent) {
-        canvas = new Canvas(parent, SWT.DOUBLE_BUFFERED | SWT.NO_BACKGROUND | SWT.BORDER);
-        canvas.addListener(SWT.Paint, this::paint);
+        chart = new ChartView(parent, SWT.BORDER);
+        redraw();
     }
 
     Canvas control() {
-        return canvas;
+        return chart.control();
+    }
+
+    /** The chart (for tests). */
+    ChartView chart() {
+        return chart;
     }
 
     /** Plots {@code r} over parameter {@code over} (ignored when optimising). */
@@ -51,9 +51,37 @@ final class ResultsPlot {
     }
 
     void redraw() {
-        if (!canvas.isDisposed()) {
-            canvas.redraw();
+        if (chart.control().isDisposed()) {
+            return;
         }
+        List<SweepRow> rows = results == null ? List.of() : results.rows();
+        if (rows.isEmpty()) {
+            chart.message(results == null ? "Start a sweep or an optimisation to plot its objective here."
+                    : "Waiting for the first run\u2026");
+            return;
+        }
+        int n = rows.size();
+        double[] xs = new double[n];
+        double[] ys = new double[n];
+        for (int i = 0; i < n; i++) {
+            xs[i] = xOf(rows.get(i), i);
+            ys[i] = results.objective().of(rows.get(i));
+        }
+        double[] xr = range(xs, ys);
+        double[] yr = range(ys, xs);
+        if (!(xr[0] <= xr[1])) {
+            chart.message("No run has a measurement yet (see the error column).");
+            return;
+        }
+        boolean optimise = results.mode() == Results.Mode.OPTIMISE;
+        String title = results.objective().label() + (optimise ? " per evaluation" : " over " + x);
+        chart.show(title, optimise ? "evaluation" : x, pad(xr), pad(yr), f -> {
+            if (optimise) {
+                convergence(f, rows, xs, ys);
+            } else {
+                scatter(f, rows, xs, ys);
+            }
+        });
     }
 
     /** The value on the horizontal axis for row {@code i}, or NaN when it has none. */
@@ -65,175 +93,64 @@ final class ResultsPlot {
         return v == null ? Double.NaN : v;
     }
 
-    private void paint(Event e) {
-        GC gc = e.gc;
-        Rectangle area = canvas.getClientArea();
-        gc.setBackground(org.parpe.gui.panels.Theme.paper());
-        gc.fillRectangle(area);
-        gc.setForeground(org.parpe.gui.panels.Theme.ink());
-        List<SweepRow> rows = results == null ? List.of() : results.rows();
-        if (rows.isEmpty() || area.width < LEFT + RIGHT + 40 || area.height < TOP + BOTTOM + 40) {
-            gc.drawText(results == null ? "Start a sweep or an optimisation to plot its objective here."
-                    : "Waiting for the first run\u2026", 10, 10, true);
-            return;
-        }
-        double[] box = {Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY,
-            Double.NEGATIVE_INFINITY};
-        for (int i = 0; i < rows.size(); i++) {
-            double xv = xOf(rows.get(i), i);
-            double yv = results.objective().of(rows.get(i));
-            if (Double.isFinite(xv) && Double.isFinite(yv)) {
-                box[0] = Math.min(box[0], xv);
-                box[1] = Math.max(box[1], xv);
-                box[2] = Math.min(box[2], yv);
-                box[3] = Math.max(box[3], yv);
+    /** The range of the finite {@code v} whose partner in {@code other} is finite too ({lo, hi}; lo > hi when none). */
+    private static double[] range(double[] v, double[] other) {
+        double lo = Double.POSITIVE_INFINITY;
+        double hi = Double.NEGATIVE_INFINITY;
+        for (int i = 0; i < v.length; i++) {
+            if (Double.isFinite(v[i]) && Double.isFinite(other[i])) {
+                lo = Math.min(lo, v[i]);
+                hi = Math.max(hi, v[i]);
             }
         }
-        if (!(box[0] <= box[1])) {
-            gc.drawText("No run has a measurement yet (see the error column).", 10, 10, true);
-            return;
-        }
-        Axes a = new Axes(area, widen(box[0], box[1]), widen(box[2], box[3]));
-        a.draw(gc, title(), legend(), results.mode() == Results.Mode.OPTIMISE ? "evaluation" : x);
-        gc.setAntialias(SWT.ON);
-        if (results.mode() == Results.Mode.OPTIMISE) {
-            convergence(gc, a, rows);
-        } else {
-            scatter(gc, a, rows);
-        }
+        return new double[] {lo, hi};
     }
 
-    private String title() {
-        return results.objective().label() + (results.mode() == Results.Mode.OPTIMISE ? " per evaluation" : " over " + x);
+    private static double[] pad(double[] r) {
+        double m = (r[1] - r[0]) * 0.05;
+        return new double[] {r[0] - m, r[1] + m};
     }
 
-    private String legend() {
-        return results.mode() == Results.Mode.OPTIMISE
-                ? "blue: meets the constraints, orange: does not; red line: best so far"
-                : "dots: runs (hollow red: fell over or failed, never the best); line: best at each value";
-    }
-
-    /** A range that is never empty: a single value gets a margin around it. */
-    private static double[] widen(double lo, double hi) {
-        if (hi > lo) {
-            double pad = (hi - lo) * 0.05;
-            return new double[] {lo - pad, hi + pad};
-        }
-        double pad = lo == 0 ? 1 : Math.abs(lo) * 0.1;
-        return new double[] {lo - pad, hi + pad};
-    }
-
-    private void scatter(GC gc, Axes a, List<SweepRow> rows) {
+    private void scatter(ChartView.Frame f, List<SweepRow> rows, double[] xs, double[] ys) {
+        int n = rows.size();
+        double[] upY = new double[n];
+        double[] downY = new double[n];
         TreeMap<Double, Double> best = new TreeMap<>();
-        for (int i = 0; i < rows.size(); i++) {
+        for (int i = 0; i < n; i++) {
             SweepRow r = rows.get(i);
-            double xv = xOf(r, i);
-            double yv = results.objective().of(r);
-            if (!Double.isFinite(xv) || !Double.isFinite(yv)) {
-                continue;
+            boolean apart = r.fell() || !r.ok();
+            upY[i] = apart ? Double.NaN : ys[i];
+            downY[i] = apart ? ys[i] : Double.NaN;
+            if (Double.isFinite(xs[i]) && Double.isFinite(ys[i]) && results.acceptable(r)) {
+                best.merge(xs[i], ys[i], Math::max);
             }
-            if (results.acceptable(r)) {
-                best.merge(xv, yv, Math::max);
-            }
-            dot(gc, a.px(xv), a.py(yv), r.fell() || !r.ok() ? RED : BLUE, !r.fell() && r.ok());
         }
-        gc.setForeground(BLUE);
-        gc.setLineWidth(2);
-        int[] last = null;
-        for (var en : best.entrySet()) {
-            int[] p = {a.px(en.getKey()), a.py(en.getValue())};
-            if (last != null) {
-                gc.drawLine(last[0], last[1], p[0], p[1]);
-            }
-            last = p;
-        }
-        gc.setLineWidth(1);
-    }
-
-    private void convergence(GC gc, Axes a, List<SweepRow> rows) {
-        double bestSoFar = Double.NaN;
-        int[] last = null;
-        for (int i = 0; i < rows.size(); i++) {
-            SweepRow r = rows.get(i);
-            double yv = results.objective().of(r);
-            if (Double.isFinite(yv)) {
-                dot(gc, a.px(i + 1), a.py(yv), results.acceptable(r) ? BLUE : ORANGE, true);
-            }
-            if (results.acceptable(r) && (Double.isNaN(bestSoFar) || yv > bestSoFar)) {
-                bestSoFar = yv;
-            }
-            if (!Double.isNaN(bestSoFar)) {
-                int[] p = {a.px(i + 1), a.py(bestSoFar)};
-                gc.setForeground(RED);
-                gc.setLineWidth(2);
-                if (last != null) {
-                    gc.drawLine(last[0], last[1], p[0], last[1]);
-                    gc.drawLine(p[0], last[1], p[0], p[1]);
-                }
-                gc.setLineWidth(1);
-                last = p;
-            }
+        f.points(RUNS, xs, upY, n, PlotStyle.OTHER_RUN, false);
+        f.points(FELL, xs, downY, n, PlotStyle.FELL, true);
+        double[] bx = best.keySet().stream().mapToDouble(Double::doubleValue).toArray();
+        double[] by = best.values().stream().mapToDouble(Double::doubleValue).toArray();
+        if (bx.length > 0) {
+            f.line(BEST, bx, by, bx.length, PlotStyle.BEST, false);
         }
     }
 
-    private static void dot(GC gc, int px, int py, Color c, boolean filled) {
-        if (filled) {
-            gc.setBackground(c);
-            gc.fillOval(px - 3, py - 3, 7, 7);
-        } else {
-            gc.setForeground(c);
-            gc.drawOval(px - 3, py - 3, 6, 6);
-        }
-    }
-
-    /** The frame of the plot: data ranges mapped to pixels, gridlines and labels. */
-    private record Axes(Rectangle area, double[] xr, double[] yr) {
-        int px(double v) {
-            return LEFT + (int) Math.round((v - xr[0]) / (xr[1] - xr[0]) * (area.width - LEFT - RIGHT));
-        }
-
-        int py(double v) {
-            return area.height - BOTTOM - (int) Math.round((v - yr[0]) / (yr[1] - yr[0]) * (area.height - TOP - BOTTOM));
-        }
-
-        void draw(GC gc, String title, String legend, String xLabel) {
-            int bottom = area.height - BOTTOM;
-            int right = area.width - RIGHT;
-            gc.setForeground(org.parpe.gui.panels.Theme.faint());
-            for (double v : ticks(yr[0], yr[1])) {
-                gc.drawLine(LEFT, py(v), right, py(v));
-                String s = label(v);
-                gc.drawText(s, LEFT - 6 - gc.textExtent(s).x, py(v) - gc.textExtent(s).y / 2, true);
+    private void convergence(ChartView.Frame f, List<SweepRow> rows, double[] xs, double[] ys) {
+        int n = rows.size();
+        double[] ok = new double[n];
+        double[] misses = new double[n];
+        double[] bestSoFar = new double[n];
+        double best = Double.NaN;
+        for (int i = 0; i < n; i++) {
+            boolean acceptable = results.acceptable(rows.get(i));
+            ok[i] = acceptable ? ys[i] : Double.NaN;
+            misses[i] = acceptable ? Double.NaN : ys[i];
+            if (acceptable && Double.isFinite(ys[i]) && (Double.isNaN(best) || ys[i] > best)) {
+                best = ys[i];
             }
-            for (double v : ticks(xr[0], xr[1])) {
-                gc.drawLine(px(v), bottom, px(v), bottom + 4);
-                String s = label(v);
-                gc.drawText(s, px(v) - gc.textExtent(s).x / 2, bottom + 5, true);
-            }
-            gc.drawRectangle(LEFT, TOP, right - LEFT, bottom - TOP);
-            gc.setForeground(org.parpe.gui.panels.Theme.ink());
-            gc.drawText(title, LEFT, 4, true);
-            gc.drawText(legend, 4, area.height - gc.textExtent(legend).y - 2, true);
-            gc.drawText(xLabel, right - gc.textExtent(xLabel).x, area.height - gc.textExtent(xLabel).y - 2, true);
+            bestSoFar[i] = best;
         }
-
-        /** About five round values within {@code [lo, hi]}. */
-        static double[] ticks(double lo, double hi) {
-            double raw = (hi - lo) / 5;
-            double mag = Math.pow(10, Math.floor(Math.log10(raw)));
-            double step = raw / mag < 2 ? mag : raw / mag < 5 ? 2 * mag : 5 * mag;
-            double first = Math.ceil(lo / step) * step;
-            int n = (int) Math.floor((hi - first) / step) + 1;
-            double[] out = new double[Math.max(0, Math.min(n, 20))];
-            for (int i = 0; i < out.length; i++) {
-                out[i] = first + i * step;
-            }
-            return out;
-        }
-
-        static String label(double v) {
-            String s = String.format(Locale.ROOT, "%.4g", Math.abs(v) < 1e-12 ? 0 : v);
-            return s.contains("e") || !s.contains(".") ? s : s.replaceAll("0+$", "").replaceAll("\\.$", "");
-        }
+        f.points(RUNS, xs, ok, n, PlotStyle.OTHER_RUN, false);
+        f.points(MISSES, xs, misses, n, PlotStyle.MISSES, false);
+        f.line(BEST_SO_FAR, xs, bestSoFar, n, PlotStyle.BEST_SO_FAR, false);
     }
 }

@@ -45,6 +45,10 @@ class ZoomAndThemeGuiTest {
         d.post(up);
     }
 
+    private int plotPoints() {
+        return ide.plots().chart().control().getFont().getFontData()[0].getHeight();
+    }
+
     private int editorPoints() {
         return ide.editor().widget().getFont().getFontData()[0].getHeight();
     }
@@ -58,14 +62,17 @@ class ZoomAndThemeGuiTest {
         ide.shell().forceActive();
         ide.editor().widget().setFocus();
         Gui.pump(() -> ide.editor().widget().isFocusControl(), "the editor to have the focus");
+        int plotNormal = plotPoints();
         chord(ide.shell().getDisplay(), SWT.CTRL, '=');
         Gui.pump(() -> editorPoints() == normal + 2, "Ctrl+= to make the text larger");
+        Gui.pump(() -> plotPoints() == plotNormal + 2, "Ctrl+= to make the plot's text larger too");
         chord(ide.shell().getDisplay(), SWT.CTRL, '=');
         Gui.pump(() -> editorPoints() == normal + 4, "a second Ctrl+=");
         chord(ide.shell().getDisplay(), SWT.CTRL, '-');
         Gui.pump(() -> editorPoints() == normal + 2, "Ctrl+- to make it smaller");
         chord(ide.shell().getDisplay(), SWT.CTRL, '0');
         Gui.pump(() -> editorPoints() == normal, "Ctrl+0 for the normal size");
+        Gui.pump(() -> plotPoints() == plotNormal, "Ctrl+0 for the plot's normal size");
         Gui.settle();
         assertEquals(text, ide.editor().document().get(), "the zoom keys typed into the script");
         assertReadable(ide);
