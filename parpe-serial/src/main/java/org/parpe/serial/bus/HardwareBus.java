@@ -52,7 +52,7 @@ public final class HardwareBus extends BusThread {
     private int moduleRxErrors;
 
     private HardwareBus(LinkOpener opener, BusMaster master, BusConfig config, BusReport report) {
-        super(config, report);
+        super(config, report, "module");
         this.opener = opener;
         this.master = master;
     }
@@ -120,6 +120,7 @@ public final class HardwareBus extends BusThread {
         if (buffers == null || !java.util.Arrays.equals(info.moduleIds(), buffers.ids)) {
             throw new IllegalStateException("discover() must be called with the run's module IDs before start");
         }
+        answeredNow();
         startThread("bus " + master.name());
     }
 
@@ -164,26 +165,17 @@ public final class HardwareBus extends BusThread {
     }
 
     /**
-     * Emergency stop: broadcasts ESTOP (three times, in case one is lost); every module stops in
-     * the safe mode and ignores setpoints until the next run. Safe to call from any thread.
+     * Broadcasts ESTOP (three times, in case one is lost); every module stops in the safe mode and
+     * ignores setpoints until the next run.
      */
     @Override
-    public void emergencyStop() {
-        // Stopping the bus thread also keeps a port closed at shutdown from being reported as an
-        // unplugged device.
-        emergencyStopping();
+    protected String sendEmergencyStop() throws IOException {
         BusMaster m = master;
-        try {
-            for (int i = 0; i < 3; i++) {
-                m.sendEmergencyStop(config.safeMode());
-            }
-            m.drain(100);
-            report.note("bus: emergency stop sent; modules " + config.safeMode().name().toLowerCase()
-                    + " until the next run");
-        } catch (IOException e) {
-            report.problem("bus: emergency stop could not be sent (" + e.getMessage()
-                    + "); modules stop on their watchdog within " + config.watchdogMs() + " ms");
+        for (int i = 0; i < 3; i++) {
+            m.sendEmergencyStop(config.safeMode());
         }
+        m.drain(100);
+        return "modules " + config.safeMode().name().toLowerCase() + " until the next run";
     }
 
     /** One line of counters for the end of a run. */
@@ -219,9 +211,10 @@ public final class HardwareBus extends BusThread {
         busyCycles = seq >= 0 ? busyCycles + 1 : 0;
         probeMissing(now);
         boolean read = (busyCycles == 0 || busyCycles % READ_EVERY_WHEN_BUSY == 0) && readOne();
-        if (consecutiveTimeouts > config.retries()
-                && System.nanoTime() - master.lastReplyNanos() > TimeUnit.MILLISECONDS.toNanos(config.deadAfterMs())) {
-            silent();
+        // A late reply, one that came after its read had timed out, still shows that the bus is alive.
+        answeredAt(master.lastReplyNanos());
+        if (consecutiveTimeouts > config.retries() && deadFor()) {
+            silent(master.name(), whileLost());
         } else if (seq < 0) {
             // Reads fill the gaps between ticks, at a bounded rate so the bus has room to spare.
             buffers.awaitFresh(read ? READ_GAP_MS : config.keepaliveMs());
@@ -242,6 +235,7 @@ public final class HardwareBus extends BusThread {
         }
         int id = buffers.ids[readCursor];
         if (master.read(id, reply, 1)) {
+            answeredNow();
             consecutiveTimeouts = 0;
             reads++;
             readsRetried += readAttempt > 0 ? 1 : 0;
@@ -249,8 +243,7 @@ public final class HardwareBus extends BusThread {
             moduleRxErrors = Math.max(moduleRxErrors, reply.rxErrors);
             if ((reply.flags & Protocol.FLAG_WATCHDOG) != 0) {
                 watchdogResumes++;
-                report.problem("bus: module " + id + " had stopped on its watchdog (a gap of more than "
-                        + config.watchdogMs() + " ms in the bus traffic); resuming it");
+                watchdogResumed(id, config.watchdogMs());
                 master.send(id, Protocol.RESUME);
             }
         } else {
@@ -280,6 +273,7 @@ public final class HardwareBus extends BusThread {
             int id = buffers.ids[probeCursor];
             if (!buffers.driven[probeCursor] && id <= Protocol.MAX_MODULE_ID) {
                 if (master.ping(id, reply, 1)) {
+                    answeredNow();
                     buffers.store(probeCursor, reply, false);
                     buffers.driven[probeCursor] = true;
                     master.send(id, Protocol.RESUME);
@@ -288,12 +282,6 @@ public final class HardwareBus extends BusThread {
                 return;
             }
         }
-    }
-
-    private void silent() {
-        silent(String.format(java.util.Locale.ROOT, "bus: no reply from any module on %s for %d ms; "
-                + "modules stop on their watchdog (%s) within %d ms; waiting for them to come back",
-                master.name(), config.deadAfterMs(), config.safeMode().name().toLowerCase(), config.watchdogMs()));
     }
 
     @Override
@@ -332,6 +320,7 @@ public final class HardwareBus extends BusThread {
         java.util.Arrays.fill(backoff, 0);
         readAttempt = 0;
         consecutiveTimeouts = 0;
+        answeredNow();
         double away = resumed();
         report.note(String.format(java.util.Locale.ROOT, "bus: modules back on %s after %.2f s (%d of %d answer%s); "
                 + "resuming", master.name(), away, d.found().size(),
