@@ -1,6 +1,8 @@
 package org.parpe.cli.hw;
 
 import java.util.Locale;
+import java.util.function.BiFunction;
+import java.util.function.Supplier;
 import org.parpe.serial.emu.BusEmulator;
 import org.parpe.serial.protocol.Protocol;
 
@@ -11,28 +13,24 @@ import org.parpe.serial.protocol.Protocol;
  */
 final class ConsoleCommands {
 
-    /** What one emulator offers the console. */
-    interface Console {
-        /** "module" or "servo". */
-        String unit();
-
-        /** Moves a limp device by hand; false, and nothing moves, while it is driven. */
+    /** Moves a limp device by hand; false, and nothing moves, while it is driven. */
+    interface Poser {
         boolean pose(int id, double degrees);
+    }
 
-        /** Why a driven device cannot be posed, after "module 3 ". */
-        String whyNotPosed();
-
-        /** The protocol's own command word ({@code touch}, {@code fault}). */
-        String word();
-
-        /** The usage line of {@link #word}. */
-        String usage();
-
-        /** Runs {@link #word} on device {@code id} with {@code arg}; returns the reply. */
-        String apply(int id, String arg);
-
-        /** One line per device. */
-        String status();
+    /**
+     * What one emulator offers the console.
+     *
+     * @param unit        "module" or "servo"
+     * @param poser       moves a limp device by hand
+     * @param whyNotPosed why a driven device cannot be posed, after "module 3 "
+     * @param word        the protocol's own command word ({@code touch}, {@code fault})
+     * @param usage       the usage line of {@code word}
+     * @param apply       runs {@code word} on a device ID with its argument; returns the reply
+     * @param status      one line per device
+     */
+    record Console(String unit, Poser poser, String whyNotPosed, String word, String usage,
+                   BiFunction<Integer, String, String> apply, Supplier<String> status) {
     }
 
     private ConsoleCommands() {
@@ -45,13 +43,13 @@ final class ConsoleCommands {
                 if (w.length != 3) {
                     return "usage: pose ID DEGREES";
                 }
-                return c.pose(Integer.parseInt(w[1]), Double.parseDouble(w[2]))
+                return c.poser().pose(Integer.parseInt(w[1]), Double.parseDouble(w[2]))
                         ? c.unit() + " " + w[1] + " posed at " + w[2] + "°"
                         : c.unit() + " " + w[1] + " " + c.whyNotPosed();
             } else if (w[0].equals(c.word())) {
-                return w.length != 3 ? "usage: " + c.usage() : c.apply(Integer.parseInt(w[1]), w[2]);
+                return w.length != 3 ? "usage: " + c.usage() : c.apply().apply(Integer.parseInt(w[1]), w[2]);
             } else if (w[0].equals("status")) {
-                return c.status();
+                return c.status().get();
             }
             return "unknown command '" + w[0] + "'; try pose, " + c.word() + ", status or quit";
         } catch (IllegalArgumentException e) {
@@ -61,48 +59,18 @@ final class ConsoleCommands {
 
     /** The console of emulated G1 modules: {@code touch ID left|right|both|none}. */
     static Console of(BusEmulator emu) {
-        return new Console() {
-            @Override
-            public String unit() {
-                return "module";
-            }
-
-            @Override
-            public boolean pose(int id, double degrees) {
-                return emu.backDrive(id, degrees);
-            }
-
-            @Override
-            public String whyNotPosed() {
-                return "is driven by its servo; it can be posed only while limp";
-            }
-
-            @Override
-            public String word() {
-                return "touch";
-            }
-
-            @Override
-            public String usage() {
-                return "touch ID left|right|both|none";
-            }
-
-            @Override
-            public String apply(int id, String side) {
-                emu.setTouch(id, touchBits(side));
-                return "module " + id + " touch " + side;
-            }
-
-            @Override
-            public String status() {
-                StringBuilder b = new StringBuilder();
-                for (int id : emu.moduleIds()) {
-                    b.append(String.format(Locale.ROOT, "module %d: %.2f°%s%s%n", id, emu.angle(id),
-                            emu.isLimp(id) ? " limp" : "", emu.isSafeStopped(id) ? " stopped" : ""));
-                }
-                return b.toString().stripTrailing();
-            }
-        };
+        return new Console("module", emu::backDrive, "is driven by its servo; it can be posed only while limp", "touch",
+                "touch ID left|right|both|none", (id, side) -> {
+                    emu.setTouch(id, touchBits(side));
+                    return "module " + id + " touch " + side;
+                }, () -> {
+                    StringBuilder b = new StringBuilder();
+                    for (int id : emu.moduleIds()) {
+                        b.append(String.format(Locale.ROOT, "module %d: %.2f°%s%s%n", id, emu.angle(id),
+                                emu.isLimp(id) ? " limp" : "", emu.isSafeStopped(id) ? " stopped" : ""));
+                    }
+                    return b.toString().stripTrailing();
+                });
     }
 
     private static int touchBits(String side) {

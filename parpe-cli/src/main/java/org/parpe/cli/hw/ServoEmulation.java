@@ -59,49 +59,19 @@ final class ServoEmulation {
 
     /** The console of emulated servos: {@code fault ID overload|overheat|voltage|none}. */
     static ConsoleCommands.Console console(ServoEmulator emu) {
-        return new ConsoleCommands.Console() {
-            @Override
-            public String unit() {
-                return "servo";
-            }
-
-            @Override
-            public boolean pose(int id, double degrees) {
-                return emu.backDrive(id, degrees);
-            }
-
-            @Override
-            public String whyNotPosed() {
-                return "has its torque on; it can be posed only while limp";
-            }
-
-            @Override
-            public String word() {
-                return "fault";
-            }
-
-            @Override
-            public String usage() {
-                return "fault ID overload|overheat|voltage|none";
-            }
-
-            @Override
-            public String apply(int id, String what) {
-                emu.fault(id, faultBits(what));
-                return "servo " + id + " fault " + what;
-            }
-
-            @Override
-            public String status() {
-                StringBuilder b = new StringBuilder();
-                for (int id : emu.servoIds()) {
-                    b.append(String.format(Locale.ROOT, "servo %d: %.2f°%s%s%s%n", id, emu.angle(id),
-                            emu.isLimp(id) ? " limp" : "", emu.watchdogTripped(id) ? " watchdog" : "",
-                            emu.hardwareError(id) != 0 ? String.format(" error 0x%02X", emu.hardwareError(id)) : ""));
-                }
-                return b.toString().stripTrailing();
-            }
-        };
+        return new ConsoleCommands.Console("servo", emu::backDrive, "has its torque on; it can be posed only while limp",
+                "fault", "fault ID overload|overheat|voltage|none", (id, what) -> {
+                    emu.fault(id, faultBits(what));
+                    return "servo " + id + " fault " + what;
+                }, () -> {
+                    StringBuilder b = new StringBuilder();
+                    for (int id : emu.servoIds()) {
+                        b.append(String.format(Locale.ROOT, "servo %d: %.2f°%s%s%s%n", id, emu.angle(id),
+                                emu.isLimp(id) ? " limp" : "", emu.watchdogTripped(id) ? " watchdog" : "",
+                                emu.hardwareError(id) != 0 ? String.format(" error 0x%02X", emu.hardwareError(id)) : ""));
+                    }
+                    return b.toString().stripTrailing();
+                });
     }
 
     /** The same bits on Dynamixel (Hardware Error Status) and Feetech (servo status). */
