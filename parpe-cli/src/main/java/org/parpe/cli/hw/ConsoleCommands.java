@@ -2,6 +2,7 @@ package org.parpe.cli.hw;
 
 import java.util.Locale;
 import java.util.function.BiFunction;
+import java.util.function.IntFunction;
 import java.util.function.Supplier;
 import org.parpe.serial.emu.BusEmulator;
 import org.parpe.serial.protocol.Protocol;
@@ -63,14 +64,17 @@ final class ConsoleCommands {
                 "touch ID left|right|both|none", (id, side) -> {
                     emu.setTouch(id, touchBits(side));
                     return "module " + id + " touch " + side;
-                }, () -> {
-                    StringBuilder b = new StringBuilder();
-                    for (int id : emu.moduleIds()) {
-                        b.append(String.format(Locale.ROOT, "module %d: %.2f°%s%s%n", id, emu.angle(id),
-                                emu.isLimp(id) ? " limp" : "", emu.isSafeStopped(id) ? " stopped" : ""));
-                    }
-                    return b.toString().stripTrailing();
-                });
+                }, () -> lines(emu.moduleIds(), id -> String.format(Locale.ROOT, "module %d: %.2f°%s%s", id,
+                        emu.angle(id), emu.isLimp(id) ? " limp" : "", emu.isSafeStopped(id) ? " stopped" : "")));
+    }
+
+    /** One line per device of {@code ids}, as {@code line} writes it. */
+    static String lines(int[] ids, IntFunction<String> line) {
+        StringBuilder b = new StringBuilder();
+        for (int id : ids) {
+            b.append(line.apply(id)).append(System.lineSeparator());
+        }
+        return b.toString().stripTrailing();
     }
 
     private static int touchBits(String side) {

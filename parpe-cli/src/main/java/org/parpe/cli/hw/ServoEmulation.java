@@ -63,15 +63,9 @@ final class ServoEmulation {
                 "fault", "fault ID overload|overheat|voltage|none", (id, what) -> {
                     emu.fault(id, faultBits(what));
                     return "servo " + id + " fault " + what;
-                }, () -> {
-                    StringBuilder b = new StringBuilder();
-                    for (int id : emu.servoIds()) {
-                        b.append(String.format(Locale.ROOT, "servo %d: %.2f°%s%s%s%n", id, emu.angle(id),
-                                emu.isLimp(id) ? " limp" : "", emu.watchdogTripped(id) ? " watchdog" : "",
-                                emu.hardwareError(id) != 0 ? String.format(" error 0x%02X", emu.hardwareError(id)) : ""));
-                    }
-                    return b.toString().stripTrailing();
-                });
+                }, () -> ConsoleCommands.lines(emu.servoIds(), id -> String.format(Locale.ROOT, "servo %d: %.2f°%s%s%s", id,
+                        emu.angle(id), emu.isLimp(id) ? " limp" : "", emu.watchdogTripped(id) ? " watchdog" : "",
+                        emu.hardwareError(id) != 0 ? String.format(" error 0x%02X", emu.hardwareError(id)) : "")));
     }
 
     /** The same bits on Dynamixel (Hardware Error Status) and Feetech (servo status). */
