@@ -42,8 +42,20 @@ public abstract class BusThread implements HostPlant, AutoCloseable {
     /** One cycle while connected: setpoints out, readings in. */
     protected abstract void cycle() throws IOException, InterruptedException;
 
-    /** While silent: pings; calls {@link #resumed} when a module answers. */
-    protected abstract void lookFor() throws IOException, InterruptedException;
+    /** The device's name, for messages. */
+    public abstract String name();
+
+    /** How many devices the bus looks for while silent. */
+    protected abstract int lookCount();
+
+    /** Whether device {@code i} (of {@link #lookCount}) answers one ping now. */
+    protected abstract boolean answers(int i) throws IOException;
+
+    /**
+     * A device answers again: the protocol's set-up after a silence (rediscovery, watchdog,
+     * resume); returns what to add to the "back" note, e.g. {@code " (5 of 5 answer)"}, or "".
+     */
+    protected abstract String setUpAgain() throws IOException;
 
     /** Opens the device again after it went away. */
     protected abstract void reopenDevice() throws IOException;
@@ -180,10 +192,27 @@ public abstract class BusThread implements HostPlant, AutoCloseable {
         report.problem(problem);
     }
 
-    /** Modules answer again: back to cycles. Returns the seconds the bus was silent or lost. */
-    protected final double resumed() {
-        state = State.CONNECTED;
-        return (System.nanoTime() - silentSince) / 1e9;
+    /**
+     * While silent: pings one device per interval (the reconnect interval spread over them); when
+     * one answers, sets up again, says how long they were away, and goes back to cycles.
+     */
+    private void lookFor() throws IOException, InterruptedException {
+        int n = lookCount();
+        for (int i = 0; i < n; i++) {
+            if (answers(i)) {
+                String detail = setUpAgain();
+                answeredNow();
+                state = State.CONNECTED;
+                double away = (System.nanoTime() - silentSince) / 1e9;
+                report.note(String.format(java.util.Locale.ROOT, "bus: %ss back on %s after %.2f s%s; resuming", unit,
+                        name(), away, detail));
+                return;
+            }
+            Thread.sleep(Math.max(1, config.reconnectMs() / n));
+        }
+        if (n == 0) {
+            Thread.sleep(config.reconnectMs());
+        }
     }
 
     /** How often the modules fell silent or the device went away. */

@@ -68,6 +68,7 @@ public final class HardwareBus extends BusThread {
     }
 
     /** The device's name. */
+    @Override
     public String name() {
         return master.name();
     }
@@ -300,19 +301,19 @@ public final class HardwareBus extends BusThread {
         master.close();
     }
 
-    /** While silent: ping one module per interval; when one answers, rediscover and resume. */
     @Override
-    protected void lookFor() throws IOException, InterruptedException {
-        for (int i = 0; i < buffers.ids.length; i++) {
-            if (buffers.ids[i] <= Protocol.MAX_MODULE_ID && master.ping(buffers.ids[i], reply, 1)) {
-                resume();
-                return;
-            }
-            Thread.sleep(Math.max(1, config.reconnectMs() / Math.max(1, buffers.ids.length)));
-        }
+    protected int lookCount() {
+        return buffers.ids.length;
     }
 
-    private void resume() throws IOException {
+    @Override
+    protected boolean answers(int i) throws IOException {
+        return buffers.ids[i] <= Protocol.MAX_MODULE_ID && master.ping(buffers.ids[i], reply, 1);
+    }
+
+    /** Pings every module again, re-sends CONFIG and RESUME, reads from the start. */
+    @Override
+    protected String setUpAgain() throws IOException {
         Discovery d = ping(master, buffers.ids);
         lastProbe = System.nanoTime();
         master.sendConfig(config.watchdogMs(), config.safeMode(), 0);
@@ -320,10 +321,7 @@ public final class HardwareBus extends BusThread {
         java.util.Arrays.fill(backoff, 0);
         readAttempt = 0;
         consecutiveTimeouts = 0;
-        answeredNow();
-        double away = resumed();
-        report.note(String.format(java.util.Locale.ROOT, "bus: modules back on %s after %.2f s (%d of %d answer%s); "
-                + "resuming", master.name(), away, d.found().size(),
-                buffers.ids.length, d.missing().isEmpty() ? "" : ", missing " + d.missing()));
+        return String.format(java.util.Locale.ROOT, " (%d of %d answer%s)", d.found().size(), buffers.ids.length,
+                d.missing().isEmpty() ? "" : ", missing " + d.missing());
     }
 }

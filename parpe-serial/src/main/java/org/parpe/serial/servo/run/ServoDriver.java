@@ -70,6 +70,7 @@ public final class ServoDriver extends BusThread {
     }
 
     /** The device's name. */
+    @Override
     public String name() {
         return bus.name();
     }
@@ -347,22 +348,22 @@ public final class ServoDriver extends BusThread {
         bus.close();
     }
 
-    /** While silent: ping one servo per interval; when one answers, set up again and resume. */
     @Override
-    protected void lookFor() throws IOException, InterruptedException {
-        int n = set.pack();
-        for (int i = 0; i < n; i++) {
-            if (bus.ping(set.ids[i], 1) >= 0) {
-                setUp();
-                armWatchdog();
-                answeredNow();
-                failedReads = 0;
-                double away = resumed();
-                report.note(String.format(Locale.ROOT, "bus: servos back on %s after %.2f s; resuming", bus.name(),
-                        away));
-                return;
-            }
-            Thread.sleep(Math.max(1, config.reconnectMs() / Math.max(1, n)));
-        }
+    protected int lookCount() {
+        return set.pack();
+    }
+
+    @Override
+    protected boolean answers(int i) throws IOException {
+        return bus.ping(set.ids[i], 1) >= 0;
+    }
+
+    /** The safe start again (present positions held, torque read back), then the watchdog. */
+    @Override
+    protected String setUpAgain() throws IOException {
+        setUp();
+        armWatchdog();
+        failedReads = 0;
+        return "";
     }
 }
