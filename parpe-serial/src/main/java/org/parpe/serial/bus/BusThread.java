@@ -1,6 +1,7 @@
 package org.parpe.serial.bus;
 
 import java.io.IOException;
+import org.parpe.core.run.RunOutcome;
 
 /**
  * The thread that owns the wire of a host driver, the same for G1 modules and for Dynamixel or
@@ -44,6 +45,35 @@ public abstract class BusThread implements HostPlant, AutoCloseable {
 
     /** The device's name, for messages. */
     public abstract String name();
+
+    /** One line of counters for the end of a run. */
+    public abstract String summary();
+
+    /** Why the link failed, or null while it works. */
+    protected abstract IOException linkError();
+
+    /**
+     * The end of a run: the last setpoints, several times where frames get no reply, and every
+     * device left holding with its watchdog off.
+     */
+    protected abstract void sendFinalHold() throws IOException;
+
+    /**
+     * Ends the run: unless the bus is lost or an emergency stop was sent, the devices get the last
+     * setpoints and hold there; then the counters are reported.
+     */
+    @Override
+    public final void finish(RunOutcome outcome) {
+        stopThread();
+        if (connected() && linkError() == null) {
+            try {
+                sendFinalHold();
+            } catch (IOException e) {
+                report.problem("bus: could not send the final setpoints and hold: " + e.getMessage());
+            }
+        }
+        report.note(summary());
+    }
 
     /** How many devices the bus looks for while silent. */
     protected abstract int lookCount();

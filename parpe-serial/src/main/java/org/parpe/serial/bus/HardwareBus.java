@@ -7,7 +7,6 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
 import org.parpe.core.run.JointSink;
 import org.parpe.core.run.RunInfo;
-import org.parpe.core.run.RunOutcome;
 import org.parpe.core.run.SensorSource;
 import org.parpe.core.sensor.SensorTable;
 import org.parpe.serial.link.LinkOpener;
@@ -140,29 +139,22 @@ public final class HardwareBus extends BusThread {
         return buffers.measuredAngle(index);
     }
 
-    /**
-     * Sends the last setpoints, then tells every module to finish its move and hold (watchdogs
-     * off), and reports the counters.
-     */
+    /** Sends the last setpoints, then tells every module to finish its move and hold (watchdogs off). */
     @Override
-    public void finish(RunOutcome outcome) {
-        stopThread();
-        BusMaster m = master;
-        if (connected() && m.linkError() == null) {
-            try {
-                // Three times: these frames get no reply, and a lost final HOLD would let the watchdogs trip.
-                int seq = buffers.take(wire, first, true);
-                for (int i = 0; i < 3; i++) {
-                    if (seq >= 0) {
-                        m.sendSetpoints(seq, first, wire, wire.length);
-                    }
-                    m.sendHold(Protocol.BROADCAST, true);
-                }
-            } catch (IOException e) {
-                report.problem("bus: could not send the final hold: " + e.getMessage());
+    protected void sendFinalHold() throws IOException {
+        // Three times: these frames get no reply, and a lost final HOLD would let the watchdogs trip.
+        int seq = buffers.take(wire, first, true);
+        for (int i = 0; i < 3; i++) {
+            if (seq >= 0) {
+                master.sendSetpoints(seq, first, wire, wire.length);
             }
+            master.sendHold(Protocol.BROADCAST, true);
         }
-        report.note(summary());
+    }
+
+    @Override
+    protected IOException linkError() {
+        return master.linkError();
     }
 
     /**
@@ -179,7 +171,7 @@ public final class HardwareBus extends BusThread {
         return "modules " + config.safeMode().name().toLowerCase() + " until the next run";
     }
 
-    /** One line of counters for the end of a run. */
+    @Override
     public String summary() {
         BusMaster.Counters c = master.counters();
         return String.format(java.util.Locale.ROOT, "bus %s: %d frames sent, %d reads (%d timeouts, %d retried ok, "

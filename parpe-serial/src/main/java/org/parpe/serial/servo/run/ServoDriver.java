@@ -8,7 +8,6 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
 import org.parpe.core.sensor.Channel;
 import org.parpe.core.run.RunInfo;
-import org.parpe.core.run.RunOutcome;
 import org.parpe.core.sensor.SensorTable;
 import org.parpe.serial.bus.BusConfig;
 import org.parpe.serial.bus.BusReport;
@@ -218,25 +217,21 @@ public final class ServoDriver extends BusThread {
         return set.measured(index);
     }
 
-    /** Turns the watchdog off so the servos keep holding, sends the last goals (three times: no reply), reports. */
+    /** Turns the watchdog off so the servos keep holding, sends the last goals (three times: no reply). */
     @Override
-    public void finish(RunOutcome outcome) {
-        stopThread();
-        ServoBus b = bus;
-        if (connected() && b.linkError() == null) {
-            try {
-                int n = set.pack();
-                // Watchdog off first: writing 0 also clears a Bus Watchdog error, which a pause at
-                // the run's end may have caused and which would refuse the final goals.
-                b.watchdog(set.ids, set.models, n, 0, false);
-                for (int i = 0; i < 3 && set.takeGoals(true); i++) {
-                    b.writeGoals(set.ids, set.models, set.goals, n);
-                }
-            } catch (IOException e) {
-                report.problem("bus: could not send the final goals: " + e.getMessage());
-            }
+    protected void sendFinalHold() throws IOException {
+        int n = set.pack();
+        // Watchdog off first: writing 0 also clears a Bus Watchdog error, which a pause at
+        // the run's end may have caused and which would refuse the final goals.
+        bus.watchdog(set.ids, set.models, n, 0, false);
+        for (int i = 0; i < 3 && set.takeGoals(true); i++) {
+            bus.writeGoals(set.ids, set.models, set.goals, n);
         }
-        report.note(summary());
+    }
+
+    @Override
+    protected IOException linkError() {
+        return bus.linkError();
     }
 
     /** Every driven servo stops in the profile's safe mode. */
@@ -247,7 +242,7 @@ public final class ServoDriver extends BusThread {
         return "servos " + (limp ? "limp (torque off)" : "hold where they are");
     }
 
-    /** One line of counters for the end of a run. */
+    @Override
     public String summary() {
         ServoBus.Counters c = bus.counters();
         return String.format(Locale.ROOT, "bus %s (%s): %d packets sent, %d position reads (%d servo timeouts, "
