@@ -1,6 +1,7 @@
 package org.parpe.cli.export;
 
 import java.util.Locale;
+import org.parpe.serial.protocol.Crc16;
 import org.parpe.serial.servo.Registers;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.wire.PacketCodec;
@@ -11,8 +12,8 @@ import org.parpe.serial.servo.wire.PacketCodec;
  * tables), and the wire constants of Dynamixel Protocol 2.0 and Feetech.
  */
 final class ServoTables {
-    /** Dynamixel 2.0 CRC-16 polynomial (as in Dxl2Crc, which keeps it private). */
-    static final int DXL_CRC_POLY = 0x8005;
+    /** Dynamixel 2.0 CRC-16 polynomial, the host's own. */
+    static final int DXL_CRC_POLY = Crc16.DXL2.polynomial();
 
     private ServoTables() {
     }

@@ -1,40 +1,80 @@
 package org.parpe.cli.hw;
 
 import java.util.Locale;
+import java.util.function.BiFunction;
+import java.util.function.IntFunction;
+import java.util.function.Supplier;
 import org.parpe.serial.emu.BusEmulator;
 import org.parpe.serial.protocol.Protocol;
 
-/** The emulator's console: posing limp modules by hand, touch sensors, status. */
+/**
+ * The emulator's console, the same for every protocol: {@code pose ID DEGREES} (move a limp device
+ * by hand), one protocol's own word ({@code touch} for G1 modules, {@code fault} for servos),
+ * {@code status}; {@code quit} is the caller's.
+ */
 final class ConsoleCommands {
+
+    /** Moves a limp device by hand; false, and nothing moves, while it is driven. */
+    interface Poser {
+        boolean pose(int id, double degrees);
+    }
+
+    /**
+     * What one emulator offers the console.
+     *
+     * @param unit        "module" or "servo"
+     * @param poser       moves a limp device by hand
+     * @param whyNotPosed why a driven device cannot be posed, after "module 3 "
+     * @param word        the protocol's own command word ({@code touch}, {@code fault})
+     * @param usage       the usage line of {@code word}
+     * @param apply       runs {@code word} on a device ID with its argument; returns the reply
+     * @param status      one line per device
+     */
+    record Console(String unit, Poser poser, String whyNotPosed, String word, String usage,
+                   BiFunction<Integer, String, String> apply, Supplier<String> status) {
+    }
 
     private ConsoleCommands() {
     }
 
     /** Applies one command line split into words; returns the reply to print. */
-    static String apply(BusEmulator emu, String[] w) {
+    static String apply(Console c, String[] w) {
         try {
-            switch (w[0]) {
-                case "pose":
-                    if (w.length != 3) {
-                        return "usage: pose ID DEGREES";
-                    }
-                    return emu.backDrive(Integer.parseInt(w[1]), Double.parseDouble(w[2]))
-                            ? "module " + w[1] + " posed at " + w[2] + "°"
-                            : "module " + w[1] + " is driven by its servo; it can be posed only while limp";
-                case "touch":
-                    if (w.length != 3) {
-                        return "usage: touch ID left|right|both|none";
-                    }
-                    emu.setTouch(Integer.parseInt(w[1]), touchBits(w[2]));
-                    return "module " + w[1] + " touch " + w[2];
-                case "status":
-                    return status(emu);
-                default:
-                    return "unknown command '" + w[0] + "'; try pose, touch, status or quit";
+            if (w[0].equals("pose")) {
+                if (w.length != 3) {
+                    return "usage: pose ID DEGREES";
+                }
+                return c.poser().pose(Integer.parseInt(w[1]), Double.parseDouble(w[2]))
+                        ? c.unit() + " " + w[1] + " posed at " + w[2] + "°"
+                        : c.unit() + " " + w[1] + " " + c.whyNotPosed();
+            } else if (w[0].equals(c.word())) {
+                return w.length != 3 ? "usage: " + c.usage() : c.apply().apply(Integer.parseInt(w[1]), w[2]);
+            } else if (w[0].equals("status")) {
+                return c.status().get();
             }
+            return "unknown command '" + w[0] + "'; try pose, " + c.word() + ", status or quit";
         } catch (IllegalArgumentException e) {
             return "error: " + e.getMessage();
         }
+    }
+
+    /** The console of emulated G1 modules: {@code touch ID left|right|both|none}. */
+    static Console of(BusEmulator emu) {
+        return new Console("module", emu::backDrive, "is driven by its servo; it can be posed only while limp", "touch",
+                "touch ID left|right|both|none", (id, side) -> {
+                    emu.setTouch(id, touchBits(side));
+                    return "module " + id + " touch " + side;
+                }, () -> lines(emu.moduleIds(), id -> String.format(Locale.ROOT, "module %d: %.2f°%s%s", id,
+                        emu.angle(id), emu.isLimp(id) ? " limp" : "", emu.isSafeStopped(id) ? " stopped" : "")));
+    }
+
+    /** One line per device of {@code ids}, as {@code line} writes it. */
+    static String lines(int[] ids, IntFunction<String> line) {
+        StringBuilder b = new StringBuilder();
+        for (int id : ids) {
+            b.append(line.apply(id)).append(System.lineSeparator());
+        }
+        return b.toString().stripTrailing();
     }
 
     private static int touchBits(String side) {
@@ -45,14 +85,5 @@ final class ConsoleCommands {
             case "none": return 0;
             default: throw new IllegalArgumentException("touch side must be left, right, both or none, got '" + side + "'");
         }
-    }
-
-    private static String status(BusEmulator emu) {
-        StringBuilder b = new StringBuilder();
-        for (int id : emu.moduleIds()) {
-            b.append(String.format(Locale.ROOT, "module %d: %.2f°%s%s%n", id, emu.angle(id),
-                    emu.isLimp(id) ? " limp" : "", emu.isSafeStopped(id) ? " stopped" : ""));
-        }
-        return b.toString().stripTrailing();
     }
 }

@@ -150,7 +150,7 @@ public final class EmulateCommand implements Callable<Integer> {
             err.println(String.format(Locale.ROOT, "emulate: %d frames accepted, %d rejected by CRC, %d dropped "
                     + "and %d corrupted on purpose, %d replies", s.frames(), s.checksumErrors(), s.dropped(),
                     s.corrupted(), s.replies()));
-        }, w -> ConsoleCommands.apply(emu, w), duration, err);
+        }, w -> ConsoleCommands.apply(ConsoleCommands.of(emu), w), duration, err);
     }
 
     private ServoModel servoModel(ServoProtocol p) throws UsageException {

@@ -8,10 +8,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.atomic.AtomicLong;
-import java.util.concurrent.locks.LockSupport;
 import org.parpe.cli.bench.Benchmark;
-import org.parpe.core.run.RunInfo;
-import org.parpe.core.run.RunOutcome;
 import org.parpe.serial.bus.BusConfig;
 import org.parpe.serial.bus.BusMaster;
 import org.parpe.serial.bus.BusReport;
@@ -35,8 +32,6 @@ import org.parpe.serial.protocol.Protocol;
  */
 public final class SerialBenchmark implements Benchmark {
     private static final int MODULES = 55;
-    /** New setpoints every 0.5 ms: faster than either line carries them, without hogging a core. */
-    private static final long PRODUCER_NANOS = 500_000;
     private static final ThreadMXBean THREADS = ManagementFactory.getThreadMXBean();
 
     @Override
@@ -106,23 +101,7 @@ public final class SerialBenchmark implements Benchmark {
         }); HardwareBus bus = HardwareBus.open(() -> new WireLink(pipe[0], baud),
                 BusConfig.defaults().withBaud(baud), BusReport.lines(m -> { }))) {
             bus.discover(ids);
-            bus.start(new RunInfo(null, ids, 0.01));
-            double[] row = new double[MODULES];
-            long end = System.nanoTime() + (long) (seconds * 1e9);
-            long warm = System.nanoTime() + 500_000_000L;
-            long startFrames = -1;
-            long start = 0;
-            for (long k = 0; System.nanoTime() < end; k++) {
-                if (startFrames < 0 && System.nanoTime() > warm) {
-                    startFrames = frames.get();
-                    start = System.nanoTime();
-                }
-                row[(int) (k % MODULES)] = (k % 1800) / 20.0 - 45;
-                bus.accept(k, k * 0.01, row);
-                LockSupport.parkNanos(PRODUCER_NANOS);
-            }
-            double fps = (frames.get() - startFrames) / ((System.nanoTime() - start) / 1e9);
-            bus.finish(new RunOutcome(RunOutcome.Status.COMPLETED, 0, ""));
+            double fps = PacedProducer.drive(bus, ids, seconds, frames);
             checkClean(emu);
             return fps;
         }

@@ -9,11 +9,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.atomic.AtomicLong;
-import java.util.concurrent.locks.LockSupport;
 import org.parpe.cli.bench.Benchmark;
 import org.parpe.core.diag.SourcePos;
-import org.parpe.core.run.RunInfo;
-import org.parpe.core.run.RunOutcome;
 import org.parpe.serial.bus.BusConfig;
 import org.parpe.serial.bus.BusReport;
 import org.parpe.serial.bus.SafeMode;
@@ -47,7 +44,6 @@ import org.parpe.serial.servo.run.ServoDriver;
  */
 public final class ServoBenchmark implements Benchmark {
     private static final int BAUD = 1_000_000;
-    private static final long PRODUCER_NANOS = 500_000;
     private static final int[] CYCLE_SERVOS = {18, 55};
     private static final int CPU_WINDOWS = 9;
     private static final int WARM_UP_CYCLES = 20_000;
@@ -198,23 +194,7 @@ public final class ServoBenchmark implements Benchmark {
              ServoDriver d = ServoDriver.open(() -> new WireLink(pipe[0], BAUD), BusConfig.defaults().withBaud(BAUD),
                      profile, modules, BusReport.lines(m -> { }))) {
             d.discover();
-            d.start(new RunInfo(null, modules, 0.01));
-            double[] row = new double[n];
-            long end = System.nanoTime() + (long) (seconds * 1e9);
-            long warm = System.nanoTime() + 500_000_000L;
-            long startWrites = -1;
-            long start = 0;
-            for (long k = 0; System.nanoTime() < end; k++) {
-                if (startWrites < 0 && System.nanoTime() > warm) {
-                    startWrites = writes.get();
-                    start = System.nanoTime();
-                }
-                row[(int) (k % n)] = (k % 1800) / 20.0 - 45;
-                d.accept(k, k * 0.01, row);
-                LockSupport.parkNanos(PRODUCER_NANOS);
-            }
-            double rate = (writes.get() - startWrites) / ((System.nanoTime() - start) / 1e9);
-            d.finish(new RunOutcome(RunOutcome.Status.COMPLETED, 0, ""));
+            double rate = PacedProducer.drive(d, modules, seconds, writes);
             checkClean(emu);
             return rate;
         }

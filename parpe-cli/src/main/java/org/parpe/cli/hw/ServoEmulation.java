@@ -54,40 +54,18 @@ final class ServoEmulation {
             err.println(String.format(Locale.ROOT, "emulate: %d packets accepted, %d rejected by checksum, "
                     + "%d dropped and %d corrupted on purpose, %d replies", s.packets(), s.checksumErrors(),
                     s.dropped(), s.corrupted(), s.replies()));
-        }, w -> apply(emu, w), duration, err);
+        }, w -> ConsoleCommands.apply(console(emu), w), duration, err);
     }
 
-    /** Applies one console command; returns the reply to print. */
-    static String apply(ServoEmulator emu, String[] w) {
-        try {
-            switch (w[0]) {
-                case "pose":
-                    if (w.length != 3) {
-                        return "usage: pose ID DEGREES";
-                    }
-                    return emu.backDrive(Integer.parseInt(w[1]), Double.parseDouble(w[2]))
-                            ? "servo " + w[1] + " posed at " + w[2] + "°"
-                            : "servo " + w[1] + " has its torque on; it can be posed only while limp";
-                case "fault":
-                    if (w.length != 3) {
-                        return "usage: fault ID overload|overheat|voltage|none";
-                    }
-                    emu.fault(Integer.parseInt(w[1]), faultBits(w[2]));
-                    return "servo " + w[1] + " fault " + w[2];
-                case "status":
-                    StringBuilder b = new StringBuilder();
-                    for (int id : emu.servoIds()) {
-                        b.append(String.format(Locale.ROOT, "servo %d: %.2f°%s%s%s%n", id, emu.angle(id),
-                                emu.isLimp(id) ? " limp" : "", emu.watchdogTripped(id) ? " watchdog" : "",
-                                emu.hardwareError(id) != 0 ? String.format(" error 0x%02X", emu.hardwareError(id)) : ""));
-                    }
-                    return b.toString().stripTrailing();
-                default:
-                    return "unknown command '" + w[0] + "'; try pose, fault, status or quit";
-            }
-        } catch (IllegalArgumentException e) {
-            return "error: " + e.getMessage();
-        }
+    /** The console of emulated servos: {@code fault ID overload|overheat|voltage|none}. */
+    static ConsoleCommands.Console console(ServoEmulator emu) {
+        return new ConsoleCommands.Console("servo", emu::backDrive, "has its torque on; it can be posed only while limp",
+                "fault", "fault ID overload|overheat|voltage|none", (id, what) -> {
+                    emu.fault(id, faultBits(what));
+                    return "servo " + id + " fault " + what;
+                }, () -> ConsoleCommands.lines(emu.servoIds(), id -> String.format(Locale.ROOT, "servo %d: %.2f°%s%s%s", id,
+                        emu.angle(id), emu.isLimp(id) ? " limp" : "", emu.watchdogTripped(id) ? " watchdog" : "",
+                        emu.hardwareError(id) != 0 ? String.format(" error 0x%02X", emu.hardwareError(id)) : "")));
     }
 
     /** The same bits on Dynamixel (Hardware Error Status) and Feetech (servo status). */

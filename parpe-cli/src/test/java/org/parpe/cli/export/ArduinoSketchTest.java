@@ -22,8 +22,8 @@ import org.parpe.core.model.Program;
 import org.parpe.core.run.Engine;
 import org.parpe.core.run.RunOptions;
 import org.parpe.core.run.StimulusParser;
+import org.parpe.serial.protocol.Crc16;
 import org.parpe.serial.servo.ServoModel;
-import org.parpe.serial.servo.wire.Dxl2Crc;
 import org.parpe.serial.servo.wire.FeetechCodec;
 
 /**
@@ -212,7 +212,7 @@ class ArduinoSketchTest {
             int n = b.length;
             if (dxl) {
                 int crc = (b[n - 2] & 0xFF) | (b[n - 1] & 0xFF) << 8;
-                assertEquals(Dxl2Crc.of(b, 0, n - 2), crc, "CRC of " + l);
+                assertEquals(Crc16.DXL2.of(b, 0, n - 2), crc, "CRC of " + l);
                 assertEquals(n - 7, (b[5] & 0xFF) | (b[6] & 0xFF) << 8, "LEN of " + l);
             } else {
                 assertEquals(FeetechCodec.checksum(b, 2, n - 3), b[n - 1] & 0xFF, "checksum of " + l);

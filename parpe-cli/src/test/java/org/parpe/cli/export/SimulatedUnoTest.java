@@ -23,8 +23,8 @@ import org.parpe.core.model.Program;
 import org.parpe.core.run.Engine;
 import org.parpe.core.run.RunOptions;
 import org.parpe.core.run.StimulusParser;
+import org.parpe.serial.protocol.Crc16;
 import org.parpe.serial.servo.ServoModel;
-import org.parpe.serial.servo.wire.Dxl2Crc;
 import org.parpe.serial.servo.wire.FeetechCodec;
 
 /**
@@ -334,7 +334,7 @@ class SimulatedUnoTest {
             int size = head + len;
             assertTrue((h[0] & 0xFF) == 0xFF && (h[1] & 0xFF) == 0xFF && size <= h.length, where + "packet at byte " + i);
             if (dxl) {
-                assertEquals(Dxl2Crc.of(h, 0, size - 2), (h[size - 2] & 0xFF) | (h[size - 1] & 0xFF) << 8,
+                assertEquals(Crc16.DXL2.of(h, 0, size - 2), (h[size - 2] & 0xFF) | (h[size - 1] & 0xFF) << 8,
                         where + "CRC of the packet at byte " + i);
             } else {
                 assertEquals(FeetechCodec.checksum(h, 2, size - 3), h[size - 1] & 0xFF, where + "checksum at byte " + i);

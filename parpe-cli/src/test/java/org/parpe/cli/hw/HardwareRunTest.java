@@ -140,7 +140,7 @@ class HardwareRunTest {
             // When the simulator runs slower than real time, ticks come in bursts and the bus sends
             // the newest of each burst: not every tick, but the hardware follows the run.
             assertTrue(bus.received.size() > 20, "the hardware was driven too: " + bus.received.size());
-            assertTrue(bus.received.containsKey(100), "the last tick reached the modules");
+            assertTrue(bus.received.containsKey(100), "the last tick reached the modules: " + r.err);
             r = Cli.run("run", script().toString(), "--port", bus.port(), "--sim", "--diverge", "1000", "--duration", "0.5");
             assertEquals(0, r.code, r.toString());
             assertTrue(r.err.contains("diverge: hardware and simulator stayed within 1000.00°"), r.err);

@@ -122,10 +122,11 @@ public final class RunActions implements ControlPanel.ControlSink {
                 java.time.Instant.ofEpochMilli(since), java.time.ZoneId.systemDefault()).withNano(0);
     }
 
-    /** Since when (wall-clock ms) the run's servos have not answered; −1 while they do or none are driven. */
+    /** Since when (wall-clock ms) the run's servos or G1 modules have not answered; −1 while they do or none are driven. */
     long hardwareSilentSince() {
         ServoDriver d = servos;
-        return d == null ? -1 : d.notAnsweringSince();
+        HardwareBus b = bus;
+        return d != null ? d.notAnsweringSince() : b != null ? b.notAnsweringSince() : -1;
     }
 
     /**

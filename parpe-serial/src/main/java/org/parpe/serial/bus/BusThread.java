@@ -1,13 +1,17 @@
 package org.parpe.serial.bus;
 
 import java.io.IOException;
+import org.parpe.core.run.RunOutcome;
 
 /**
  * The thread that owns the wire of a host driver, the same for G1 modules and for Dynamixel or
  * Feetech servos: while connected it runs the driver's cycle; when every module falls silent it
  * looks for them until one answers; when the device goes away it closes it and keeps reopening it
- * every reconnect interval. Also the emergency stop's bookkeeping: after one, the run ends
- * without final setpoints. Subclasses speak the protocol.
+ * every reconnect interval. It also keeps, once for every protocol, what the user is told: since
+ * when the robot has not answered (the IDE's alarm), the silence, a module resumed after its own
+ * watchdog stopped it, and the emergency stop, which into a silent bus is reported as not
+ * confirmed; after an emergency stop the run ends without final setpoints. Subclasses speak the
+ * protocol.
  */
 public abstract class BusThread implements HostPlant, AutoCloseable {
     /** Where the bus is. */
@@ -17,6 +21,11 @@ public abstract class BusThread implements HostPlant, AutoCloseable {
     protected final BusConfig config;
     /** Where user messages go, from any thread. */
     protected final BusReport report;
+    /** What one addressable unit on this bus is called in messages: "module" or "servo". */
+    private final String unit;
+    private long lastAnswerNanos = System.nanoTime();
+    /** Wall-clock time of the last answer, for messages and the IDE's alarm. */
+    private volatile long lastAnswerMillis = System.currentTimeMillis();
     private volatile Thread thread;
     private volatile boolean running;
     private volatile boolean estopped;
@@ -24,17 +33,59 @@ public abstract class BusThread implements HostPlant, AutoCloseable {
     private long silentSince;
     private long disconnects;
 
-    /** A driver with {@code config} reporting to {@code report}. */
-    protected BusThread(BusConfig config, BusReport report) {
+    /** A driver with {@code config} reporting to {@code report}; {@code unit} names one device in messages. */
+    protected BusThread(BusConfig config, BusReport report, String unit) {
         this.config = config;
         this.report = report;
+        this.unit = unit;
     }
 
     /** One cycle while connected: setpoints out, readings in. */
     protected abstract void cycle() throws IOException, InterruptedException;
 
-    /** While silent: pings; calls {@link #resumed} when a module answers. */
-    protected abstract void lookFor() throws IOException, InterruptedException;
+    /** The device's name, for messages. */
+    public abstract String name();
+
+    /** One line of counters for the end of a run. */
+    public abstract String summary();
+
+    /** Why the link failed, or null while it works. */
+    protected abstract IOException linkError();
+
+    /**
+     * The end of a run: the last setpoints, several times where frames get no reply, and every
+     * device left holding with its watchdog off.
+     */
+    protected abstract void sendFinalHold() throws IOException;
+
+    /**
+     * Ends the run: unless the bus is lost or an emergency stop was sent, the devices get the last
+     * setpoints and hold there; then the counters are reported.
+     */
+    @Override
+    public final void finish(RunOutcome outcome) {
+        stopThread();
+        if (connected() && linkError() == null) {
+            try {
+                sendFinalHold();
+            } catch (IOException e) {
+                report.problem("bus: could not send the final setpoints and hold: " + e.getMessage());
+            }
+        }
+        report.note(summary());
+    }
+
+    /** How many devices the bus looks for while silent. */
+    protected abstract int lookCount();
+
+    /** Whether device {@code i} (of {@link #lookCount}) answers one ping now. */
+    protected abstract boolean answers(int i) throws IOException;
+
+    /**
+     * A device answers again: the protocol's set-up after a silence (rediscovery, watchdog,
+     * resume); returns what to add to the "back" note, e.g. {@code " (5 of 5 answer)"}, or "".
+     */
+    protected abstract String setUpAgain() throws IOException;
 
     /** Opens the device again after it went away. */
     protected abstract void reopenDevice() throws IOException;
@@ -45,8 +96,83 @@ public abstract class BusThread implements HostPlant, AutoCloseable {
     /** What the modules do while the host has lost the device, for the user. */
     protected abstract String whileLost();
 
-    /** Stops every module at once, in the safe mode; safe from any thread. */
-    public abstract void emergencyStop();
+    /**
+     * Sends the protocol's emergency stop (several times where frames get no reply); returns what
+     * the devices now do, for the user ("servos limp (torque off)").
+     */
+    protected abstract String sendEmergencyStop() throws IOException;
+
+    /**
+     * Emergency stop: every driven device stops in the safe mode. Into a silent bus it is reported
+     * as not confirmed, with the time of the last answer, since nothing says the robot got it.
+     * Safe from any thread.
+     */
+    public final void emergencyStop() {
+        // Stopping the bus thread also keeps a port closed at shutdown from being reported as an
+        // unplugged device.
+        emergencyStopping();
+        long since = notAnsweringSince();
+        String silence = since >= 0 ? "no " + unit + " has answered since " + clock(since) : null;
+        try {
+            String done = sendEmergencyStop();
+            if (silence != null) {
+                report.problem("bus: emergency stop sent but not confirmed: " + silence + "; switch the servo supply off");
+            } else {
+                report.note("bus: emergency stop sent; " + done);
+            }
+        } catch (IOException e) {
+            report.problem("bus: emergency stop could not be sent (" + e.getMessage() + "); "
+                    + (silence != null ? silence + ": switch the servo supply off" : whileLost()));
+        }
+    }
+
+    /** A device answered: the robot responds. */
+    protected final void answeredNow() {
+        answeredAt(System.nanoTime());
+    }
+
+    /** A device answered at {@code nanos} ({@link System#nanoTime()}), if that is later than the last answer known. */
+    protected final void answeredAt(long nanos) {
+        if (nanos - lastAnswerNanos > 0) {
+            lastAnswerNanos = nanos;
+            lastAnswerMillis = System.currentTimeMillis() - (System.nanoTime() - nanos) / 1_000_000;
+        }
+    }
+
+    /** Whether no device has answered for the configured dead-bus time. */
+    protected final boolean deadFor() {
+        return System.nanoTime() - lastAnswerNanos > java.util.concurrent.TimeUnit.MILLISECONDS.toNanos(config.deadAfterMs());
+    }
+
+    /**
+     * Since when (wall-clock milliseconds) no device has answered, while the bus is silent or the
+     * device gone; −1 while they answer. The IDE shows it as an alarm.
+     */
+    public final long notAnsweringSince() {
+        return lost() ? lastAnswerMillis : -1;
+    }
+
+    /** A wall-clock time of day, for messages: {@code 21:27:41}. */
+    public static String clock(long millis) {
+        return java.time.LocalTime.ofInstant(java.time.Instant.ofEpochMilli(millis), java.time.ZoneId.systemDefault())
+                .withNano(0).toString();
+    }
+
+    /**
+     * Every device fell silent for the dead-bus time: says so, with the time of the last answer
+     * and {@code whatTheyDo}, and the thread looks for them.
+     */
+    protected final void silent(String device, String whatTheyDo) {
+        silent(String.format(java.util.Locale.ROOT, "bus: no reply from any %s on %s for %d ms (robot not responding "
+                + "since %s); %s; waiting for them to come back", unit, device, config.deadAfterMs(),
+                clock(lastAnswerMillis), whatTheyDo));
+    }
+
+    /** Device {@code id} had stopped on its own watchdog (a read said so) and is being resumed: says so. */
+    protected final void watchdogResumed(int id, int watchdogMs) {
+        report.problem("bus: " + unit + " " + id + " had stopped on its watchdog (a gap of more than " + watchdogMs
+                + " ms in the bus traffic); resuming it");
+    }
 
     /** Starts the bus thread, named {@code name}. */
     protected final void startThread(String name) {
@@ -89,17 +215,34 @@ public abstract class BusThread implements HostPlant, AutoCloseable {
     }
 
     /** All modules fell silent: {@code problem} is reported and the thread looks for them. */
-    protected final void silent(String problem) {
+    private void silent(String problem) {
         state = State.SILENT;
         silentSince = System.nanoTime();
         disconnects++;
         report.problem(problem);
     }
 
-    /** Modules answer again: back to cycles. Returns the seconds the bus was silent or lost. */
-    protected final double resumed() {
-        state = State.CONNECTED;
-        return (System.nanoTime() - silentSince) / 1e9;
+    /**
+     * While silent: pings one device per interval (the reconnect interval spread over them); when
+     * one answers, sets up again, says how long they were away, and goes back to cycles.
+     */
+    private void lookFor() throws IOException, InterruptedException {
+        int n = lookCount();
+        for (int i = 0; i < n; i++) {
+            if (answers(i)) {
+                String detail = setUpAgain();
+                answeredNow();
+                state = State.CONNECTED;
+                double away = (System.nanoTime() - silentSince) / 1e9;
+                report.note(String.format(java.util.Locale.ROOT, "bus: %ss back on %s after %.2f s%s; resuming", unit,
+                        name(), away, detail));
+                return;
+            }
+            Thread.sleep(Math.max(1, config.reconnectMs() / n));
+        }
+        if (n == 0) {
+            Thread.sleep(config.reconnectMs());
+        }
     }
 
     /** How often the modules fell silent or the device went away. */

@@ -7,7 +7,6 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
 import org.parpe.core.run.JointSink;
 import org.parpe.core.run.RunInfo;
-import org.parpe.core.run.RunOutcome;
 import org.parpe.core.run.SensorSource;
 import org.parpe.core.sensor.SensorTable;
 import org.parpe.serial.link.LinkOpener;
@@ -52,7 +51,7 @@ public final class HardwareBus extends BusThread {
     private int moduleRxErrors;
 
     private HardwareBus(LinkOpener opener, BusMaster master, BusConfig config, BusReport report) {
-        super(config, report);
+        super(config, report, "module");
         this.opener = opener;
         this.master = master;
     }
@@ -68,6 +67,7 @@ public final class HardwareBus extends BusThread {
     }
 
     /** The device's name. */
+    @Override
     public String name() {
         return master.name();
     }
@@ -120,6 +120,7 @@ public final class HardwareBus extends BusThread {
         if (buffers == null || !java.util.Arrays.equals(info.moduleIds(), buffers.ids)) {
             throw new IllegalStateException("discover() must be called with the run's module IDs before start");
         }
+        answeredNow();
         startThread("bus " + master.name());
     }
 
@@ -138,55 +139,39 @@ public final class HardwareBus extends BusThread {
         return buffers.measuredAngle(index);
     }
 
-    /**
-     * Sends the last setpoints, then tells every module to finish its move and hold (watchdogs
-     * off), and reports the counters.
-     */
+    /** Sends the last setpoints, then tells every module to finish its move and hold (watchdogs off). */
     @Override
-    public void finish(RunOutcome outcome) {
-        stopThread();
-        BusMaster m = master;
-        if (connected() && m.linkError() == null) {
-            try {
-                // Three times: these frames get no reply, and a lost final HOLD would let the watchdogs trip.
-                int seq = buffers.take(wire, first, true);
-                for (int i = 0; i < 3; i++) {
-                    if (seq >= 0) {
-                        m.sendSetpoints(seq, first, wire, wire.length);
-                    }
-                    m.sendHold(Protocol.BROADCAST, true);
-                }
-            } catch (IOException e) {
-                report.problem("bus: could not send the final hold: " + e.getMessage());
+    protected void sendFinalHold() throws IOException {
+        // Three times: these frames get no reply, and a lost final HOLD would let the watchdogs trip.
+        int seq = buffers.take(wire, first, true);
+        for (int i = 0; i < 3; i++) {
+            if (seq >= 0) {
+                master.sendSetpoints(seq, first, wire, wire.length);
             }
-        }
-        report.note(summary());
-    }
-
-    /**
-     * Emergency stop: broadcasts ESTOP (three times, in case one is lost); every module stops in
-     * the safe mode and ignores setpoints until the next run. Safe to call from any thread.
-     */
-    @Override
-    public void emergencyStop() {
-        // Stopping the bus thread also keeps a port closed at shutdown from being reported as an
-        // unplugged device.
-        emergencyStopping();
-        BusMaster m = master;
-        try {
-            for (int i = 0; i < 3; i++) {
-                m.sendEmergencyStop(config.safeMode());
-            }
-            m.drain(100);
-            report.note("bus: emergency stop sent; modules " + config.safeMode().name().toLowerCase()
-                    + " until the next run");
-        } catch (IOException e) {
-            report.problem("bus: emergency stop could not be sent (" + e.getMessage()
-                    + "); modules stop on their watchdog within " + config.watchdogMs() + " ms");
+            master.sendHold(Protocol.BROADCAST, true);
         }
     }
 
-    /** One line of counters for the end of a run. */
+    @Override
+    protected IOException linkError() {
+        return master.linkError();
+    }
+
+    /**
+     * Broadcasts ESTOP (three times, in case one is lost); every module stops in the safe mode and
+     * ignores setpoints until the next run.
+     */
+    @Override
+    protected String sendEmergencyStop() throws IOException {
+        BusMaster m = master;
+        for (int i = 0; i < 3; i++) {
+            m.sendEmergencyStop(config.safeMode());
+        }
+        m.drain(100);
+        return "modules " + config.safeMode().name().toLowerCase() + " until the next run";
+    }
+
+    @Override
     public String summary() {
         BusMaster.Counters c = master.counters();
         return String.format(java.util.Locale.ROOT, "bus %s: %d frames sent, %d reads (%d timeouts, %d retried ok, "
@@ -219,9 +204,10 @@ public final class HardwareBus extends BusThread {
         busyCycles = seq >= 0 ? busyCycles + 1 : 0;
         probeMissing(now);
         boolean read = (busyCycles == 0 || busyCycles % READ_EVERY_WHEN_BUSY == 0) && readOne();
-        if (consecutiveTimeouts > config.retries()
-                && System.nanoTime() - master.lastReplyNanos() > TimeUnit.MILLISECONDS.toNanos(config.deadAfterMs())) {
-            silent();
+        // A late reply, one that came after its read had timed out, still shows that the bus is alive.
+        answeredAt(master.lastReplyNanos());
+        if (consecutiveTimeouts > config.retries() && deadFor()) {
+            silent(master.name(), whileLost());
         } else if (seq < 0) {
             // Reads fill the gaps between ticks, at a bounded rate so the bus has room to spare.
             buffers.awaitFresh(read ? READ_GAP_MS : config.keepaliveMs());
@@ -242,6 +228,7 @@ public final class HardwareBus extends BusThread {
         }
         int id = buffers.ids[readCursor];
         if (master.read(id, reply, 1)) {
+            answeredNow();
             consecutiveTimeouts = 0;
             reads++;
             readsRetried += readAttempt > 0 ? 1 : 0;
@@ -249,8 +236,7 @@ public final class HardwareBus extends BusThread {
             moduleRxErrors = Math.max(moduleRxErrors, reply.rxErrors);
             if ((reply.flags & Protocol.FLAG_WATCHDOG) != 0) {
                 watchdogResumes++;
-                report.problem("bus: module " + id + " had stopped on its watchdog (a gap of more than "
-                        + config.watchdogMs() + " ms in the bus traffic); resuming it");
+                watchdogResumed(id, config.watchdogMs());
                 master.send(id, Protocol.RESUME);
             }
         } else {
@@ -280,6 +266,7 @@ public final class HardwareBus extends BusThread {
             int id = buffers.ids[probeCursor];
             if (!buffers.driven[probeCursor] && id <= Protocol.MAX_MODULE_ID) {
                 if (master.ping(id, reply, 1)) {
+                    answeredNow();
                     buffers.store(probeCursor, reply, false);
                     buffers.driven[probeCursor] = true;
                     master.send(id, Protocol.RESUME);
@@ -288,12 +275,6 @@ public final class HardwareBus extends BusThread {
                 return;
             }
         }
-    }
-
-    private void silent() {
-        silent(String.format(java.util.Locale.ROOT, "bus: no reply from any module on %s for %d ms; "
-                + "modules stop on their watchdog (%s) within %d ms; waiting for them to come back",
-                master.name(), config.deadAfterMs(), config.safeMode().name().toLowerCase(), config.watchdogMs()));
     }
 
     @Override
@@ -312,19 +293,19 @@ public final class HardwareBus extends BusThread {
         master.close();
     }
 
-    /** While silent: ping one module per interval; when one answers, rediscover and resume. */
     @Override
-    protected void lookFor() throws IOException, InterruptedException {
-        for (int i = 0; i < buffers.ids.length; i++) {
-            if (buffers.ids[i] <= Protocol.MAX_MODULE_ID && master.ping(buffers.ids[i], reply, 1)) {
-                resume();
-                return;
-            }
-            Thread.sleep(Math.max(1, config.reconnectMs() / Math.max(1, buffers.ids.length)));
-        }
+    protected int lookCount() {
+        return buffers.ids.length;
     }
 
-    private void resume() throws IOException {
+    @Override
+    protected boolean answers(int i) throws IOException {
+        return buffers.ids[i] <= Protocol.MAX_MODULE_ID && master.ping(buffers.ids[i], reply, 1);
+    }
+
+    /** Pings every module again, re-sends CONFIG and RESUME, reads from the start. */
+    @Override
+    protected String setUpAgain() throws IOException {
         Discovery d = ping(master, buffers.ids);
         lastProbe = System.nanoTime();
         master.sendConfig(config.watchdogMs(), config.safeMode(), 0);
@@ -332,9 +313,7 @@ public final class HardwareBus extends BusThread {
         java.util.Arrays.fill(backoff, 0);
         readAttempt = 0;
         consecutiveTimeouts = 0;
-        double away = resumed();
-        report.note(String.format(java.util.Locale.ROOT, "bus: modules back on %s after %.2f s (%d of %d answer%s); "
-                + "resuming", master.name(), away, d.found().size(),
-                buffers.ids.length, d.missing().isEmpty() ? "" : ", missing " + d.missing()));
+        return String.format(java.util.Locale.ROOT, " (%d of %d answer%s)", d.found().size(), buffers.ids.length,
+                d.missing().isEmpty() ? "" : ", missing " + d.missing());
     }
 }

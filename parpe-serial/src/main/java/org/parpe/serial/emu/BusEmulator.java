@@ -37,7 +37,6 @@ public final class BusEmulator extends ServedLine {
     private final FrameDecoder wire = new FrameDecoder(this::onWireFrame);
     private final FrameDecoder moduleRx = new FrameDecoder(this::onModuleFrame);
     private final FrameEncoder tx = new FrameEncoder();
-    private final byte[] scratch = new byte[Protocol.MAX_FRAME];
     private volatile long lastFrameNanos = System.nanoTime();
     private int watchdogMs = 50;
     private int safeMode = Protocol.SAFE_HOLD;
@@ -56,6 +55,7 @@ public final class BusEmulator extends ServedLine {
             byId[ids[i]] = modules[i];
         }
         view = new double[ids.length];
+        decoders(wire, moduleRx, Protocol.MAX_FRAME);
     }
 
     /** Opens the device through {@code opener} (errors surface here) and starts serving it. */
@@ -130,31 +130,9 @@ public final class BusEmulator extends ServedLine {
     }
 
 
-    @Override
-    protected void received(byte[] in, int n) {
-        wire.feed(in, 0, n);
-    }
-
-    @Override
-    protected boolean partial() {
-        return wire.pending() > 0 || moduleRx.pending() > 0;
-    }
-
-    @Override
-    protected void idle() {
-        wire.idle();
-        moduleRx.idle();
-    }
-
     /** Frames as they were sent; the fault injector decides what the modules get. */
     private void onWireFrame(int addr, int cmd, byte[] buf, int off, int len) {
-        int total = len + Protocol.OVERHEAD;
-        if (lose()) {
-            return;
-        }
-        System.arraycopy(buf, off - Protocol.HEADER, scratch, 0, total);
-        maybeCorrupt(scratch, 0, total);
-        moduleRx.feed(scratch, 0, total);
+        relay(buf, off - Protocol.HEADER, len + Protocol.OVERHEAD);
     }
 
     private void onModuleFrame(int addr, int cmd, byte[] buf, int off, int len) {

@@ -5,12 +5,16 @@ import java.util.Random;
 import java.util.concurrent.locks.LockSupport;
 import org.parpe.serial.link.ByteLink;
 import org.parpe.serial.link.LinkOpener;
+import org.parpe.serial.link.StreamDecoder;
 
 /**
  * What every emulator does with its end of the line, whatever protocol it speaks: a receive thread
  * that reads the device and keeps reopening it when it goes away, the cable-pull schedule, the
  * injected faults (a packet lost, a byte changed, both directions, from one seeded random source)
- * and a physics thread that moves the motors every 2 ms. The protocol lives in the subclass.
+ * and a physics thread that moves the motors every 2 ms. Bytes from the host go through two
+ * decoders of the subclass's protocol: the first sees packets as they were sent and hands each to
+ * {@link #relay}, where the fault injector decides what the second, the devices' own, receives, so
+ * corrupted packets are really rejected by their checksum. The protocol lives in the subclass.
  */
 public abstract class ServedLine implements AutoCloseable {
     private static final long PHYSICS_NANOS = 2_000_000;
@@ -35,6 +39,9 @@ public abstract class ServedLine implements AutoCloseable {
     private volatile long lastPollNanos = System.nanoTime();
     private long dropped;
     private long corrupted;
+    private StreamDecoder asSent;
+    private StreamDecoder devices;
+    private byte[] scratch;
 
     /** Serves {@code first} (opened by {@code opener}, which reopens it); call {@link #serve} to start. */
     protected ServedLine(LinkOpener opener, ByteLink first, EmulatorOptions options, EmulatorListener listener,
@@ -56,14 +63,29 @@ public abstract class ServedLine implements AutoCloseable {
         physicsThread.start();
     }
 
-    /** Bytes as they arrived from the host while the cable is in (on the receive thread). */
-    protected abstract void received(byte[] in, int n);
+    /**
+     * The protocol's two decoders (set in the subclass's constructor, before {@link #serve}):
+     * {@code asSent} of the host's bytes, which hands each packet to {@link #relay}, and
+     * {@code devices} of what the emulated devices receive; {@code maxPacket} bytes the longest.
+     */
+    protected final void decoders(StreamDecoder asSent, StreamDecoder devices, int maxPacket) {
+        this.asSent = asSent;
+        this.devices = devices;
+        this.scratch = new byte[maxPacket];
+    }
 
-    /** Whether a decoder holds the start of a packet. */
-    protected abstract boolean partial();
-
-    /** The line fell silent in the middle of a packet: the decoders drop what they hold. */
-    protected abstract void idle();
+    /**
+     * A whole packet as the host sent it ({@code len} bytes of {@code b} from {@code off}): lost,
+     * or passed to the devices' decoder, maybe with one byte changed, as the fault injector decides.
+     */
+    protected final void relay(byte[] b, int off, int len) {
+        if (lose()) {
+            return;
+        }
+        System.arraycopy(b, off, scratch, 0, len);
+        maybeCorrupt(scratch, 0, len);
+        devices.feed(scratch, 0, len);
+    }
 
     /** Moves the motors by {@code dt} seconds at time {@code now} (on the physics thread, without the lock). */
     protected abstract void physics(long now, double dt);
@@ -167,9 +189,11 @@ public abstract class ServedLine implements AutoCloseable {
             lastPollNanos = now;
             if (pluggedIn(now) && n > 0) {
                 lastByte = now;
-                received(in, n);
-            } else if (now - lastByte > IDLE_GAP_NANOS && partial()) {
-                idle();
+                asSent.feed(in, 0, n);
+            } else if (now - lastByte > IDLE_GAP_NANOS && (asSent.pending() > 0 || devices.pending() > 0)) {
+                // The line fell silent in the middle of a packet: the decoders drop what they hold.
+                asSent.idle();
+                devices.idle();
             }
         }
     }

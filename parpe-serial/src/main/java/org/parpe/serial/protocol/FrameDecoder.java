@@ -96,7 +96,7 @@ public final class FrameDecoder implements StreamDecoder {
             if (end - p < total) {
                 break;
             }
-            int crc = Crc16.of(buf, p + 2, len + 4);
+            int crc = Crc16.CCITT_FALSE.of(buf, p + 2, len + 4);
             int got = (buf[p + 6 + len] & 0xFF) << 8 | (buf[p + 7 + len] & 0xFF);
             if (crc != got) {
                 checksumErrors++;

@@ -44,7 +44,7 @@ public final class FrameEncoder {
         int len = pos - Protocol.HEADER;
         buf[3] = (byte) len;
         buf[4] = (byte) (len >>> 8);
-        int crc = Crc16.of(buf, 2, pos - 2);
+        int crc = Crc16.CCITT_FALSE.of(buf, 2, pos - 2);
         buf[pos++] = (byte) (crc >>> 8);
         buf[pos++] = (byte) crc;
         return pos;

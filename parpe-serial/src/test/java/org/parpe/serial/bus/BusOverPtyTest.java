@@ -44,6 +44,7 @@ class BusOverPtyTest {
     final List<String> reports = new CopyOnWriteArrayList<>();
     final List<Long> reportTimes = new CopyOnWriteArrayList<>();
     volatile long unplugNanos;
+    final List<String> whys = new CopyOnWriteArrayList<>();
 
     @BeforeAll
     static void needSocat() {
@@ -78,6 +79,7 @@ class BusOverPtyTest {
             @Override
             public void onSafeStop(int id, long nanoTime, String why) {
                 safeStops.add(new long[] {id, nanoTime});
+                whys.add(id + ":" + why);
             }
 
             @Override
@@ -277,7 +279,7 @@ class BusOverPtyTest {
         for (int id : IDS) {
             assertTrue(emulator.isSafeStopped(id) && emulator.isLimp(id), "module " + id + " limp after ESTOP");
         }
-        assertEquals(IDS.length, safeStops.size(), "one stop per module although ESTOP is sent three times");
+        assertEquals(IDS.length, safeStops.size(), "one stop per module although ESTOP is sent three times" + reports + whys);
         bus.finish(new RunOutcome(RunOutcome.Status.STOPPED, 0.4, ""));
         Thread.sleep(100);
         for (int id : IDS) {
@@ -312,5 +314,29 @@ class BusOverPtyTest {
             }
         }
         return -1;
+    }
+
+    /*
+     * The servo stack (ServoDriver) already said so; the G1 stack of --port reported "emergency
+     * stop sent; modules hold until the next run" into a bus silent for minutes, and the IDE's
+     * "robot not responding" alarm never lit for it. Both now share BusThread's bookkeeping.
+     */
+    @Test
+    void anEmergencyStopIntoASilentG1BusIsNotReportedAsDone() throws Exception {
+        startEmulator(EmulatorOptions.of(0, 1, 2));
+        startBus(new int[] {0, 1, 2});
+        drive(20, 3);
+        assertTrue(bus.notAnsweringSince() < 0, "answering");
+        emulator.close();
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        while (reports.stream().noneMatch(r -> r.contains("robot not responding since"))) {
+            assertTrue(System.nanoTime() < deadline, "the silence was not reported: " + reports);
+            Thread.sleep(10);
+        }
+        assertTrue(bus.notAnsweringSince() > 0);
+        bus.emergencyStop();
+        assertTrue(reports.stream().anyMatch(r -> r.startsWith("bus: emergency stop sent but not confirmed: no module "
+                + "has answered since ")), reports.toString());
+        assertFalse(reports.stream().anyMatch(r -> r.startsWith("bus: emergency stop sent;")), reports.toString());
     }
 }

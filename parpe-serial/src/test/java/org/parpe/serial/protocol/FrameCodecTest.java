@@ -22,7 +22,7 @@ class FrameCodecTest {
     @Test
     void crcMatchesTheCcittFalseCheckValue() {
         byte[] check = "123456789".getBytes(StandardCharsets.US_ASCII);
-        assertEquals(0x29B1, Crc16.of(check, 0, check.length));
+        assertEquals(0x29B1, Crc16.CCITT_FALSE.of(check, 0, check.length));
     }
 
     @Test
@@ -32,7 +32,7 @@ class FrameCodecTest {
         byte[] head = Arrays.copyOf(e.buffer(), 6);
         assertArrayEquals(new byte[] {(byte) 0xA5, 0x5A, 3, 0, 0, 1}, head);
         assertEquals(8, n);
-        assertEquals(Crc16.of(e.buffer(), 2, 4), (e.buffer()[6] & 0xFF) << 8 | (e.buffer()[7] & 0xFF));
+        assertEquals(Crc16.CCITT_FALSE.of(e.buffer(), 2, 4), (e.buffer()[6] & 0xFF) << 8 | (e.buffer()[7] & 0xFF));
     }
 
     @Test

@@ -42,7 +42,6 @@ public final class ServoEmulator extends ServedLine {
     private final PacketDecoder wire;
     private final PacketDecoder servoRx;
     private final ServoResponder responder;
-    private final byte[] scratch;
     /** Status packets of the request being answered, back to back; packet i ends at outEnds[i]. */
     private final byte[] outBuf = new byte[64 * 1024];
     private final int[] outEnds = new int[256];
@@ -64,10 +63,10 @@ public final class ServoEmulator extends ServedLine {
             servos[i] = new EmulatedServo(ids[i], models[i]);
         }
         Arrays.sort(servos, (a, b) -> Integer.compare(a.id(), b.id()));
-        scratch = new byte[codec.bufferSize() * 2];
         responder = new ServoResponder(protocol, codec, servos, this::reply, listener);
         wire = codec.decoder(this::onWirePacket);
         servoRx = codec.decoder(this::onServoPacket);
+        decoders(wire, servoRx, codec.bufferSize() * 2);
     }
 
     /**
@@ -185,31 +184,9 @@ public final class ServoEmulator extends ServedLine {
     }
 
 
-    @Override
-    protected void received(byte[] in, int n) {
-        wire.feed(in, 0, n);
-    }
-
-    @Override
-    protected boolean partial() {
-        return wire.pending() > 0 || servoRx.pending() > 0;
-    }
-
-    @Override
-    protected void idle() {
-        wire.idle();
-        servoRx.idle();
-    }
-
     /** Packets as they were sent; the fault injector decides what the servos get. */
     private void onWirePacket(Packet p) {
-        if (lose()) {
-            return;
-        }
-        int total = p.rawLength;
-        System.arraycopy(p.raw, 0, scratch, 0, total);
-        maybeCorrupt(scratch, 0, total);
-        servoRx.feed(scratch, 0, total);
+        relay(p.raw, 0, p.rawLength);
     }
 
     private void onServoPacket(Packet p) {

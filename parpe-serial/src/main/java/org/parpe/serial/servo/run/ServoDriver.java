@@ -8,7 +8,6 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
 import org.parpe.core.sensor.Channel;
 import org.parpe.core.run.RunInfo;
-import org.parpe.core.run.RunOutcome;
 import org.parpe.core.sensor.SensorTable;
 import org.parpe.serial.bus.BusConfig;
 import org.parpe.serial.bus.BusReport;
@@ -37,9 +36,6 @@ public final class ServoDriver extends BusThread {
     private final HardwareProfile profile;
     private volatile ServoBus bus;
     private final ServoSet set;
-    private long lastAnswer = System.nanoTime();
-    /** Wall-clock time of the last answer, for messages and the IDE's alarm. */
-    private volatile long lastAnswerMillis = System.currentTimeMillis();
     private long lastSend;
     private int failedReads;
     private int busyCycles;
@@ -54,7 +50,7 @@ public final class ServoDriver extends BusThread {
 
     private ServoDriver(LinkOpener opener, ServoBus bus, BusConfig config, HardwareProfile profile, int[] runModules,
                         BusReport report) {
-        super(config, report);
+        super(config, report, "servo");
         this.opener = opener;
         this.bus = bus;
         this.profile = profile;
@@ -73,6 +69,7 @@ public final class ServoDriver extends BusThread {
     }
 
     /** The device's name. */
+    @Override
     public String name() {
         return bus.name();
     }
@@ -194,25 +191,6 @@ public final class ServoDriver extends BusThread {
         return set.unmapped();
     }
 
-    private void answeredNow() {
-        lastAnswer = System.nanoTime();
-        lastAnswerMillis = System.currentTimeMillis();
-    }
-
-    /**
-     * Since when (wall-clock milliseconds) no servo has answered, while the bus is silent; −1 while
-     * the servos answer. The IDE shows it as an alarm.
-     */
-    public long notAnsweringSince() {
-        return lost() ? lastAnswerMillis : -1;
-    }
-
-    /** A wall-clock time of day, for messages: {@code 21:27:41}. */
-    static String clock(long millis) {
-        return java.time.LocalTime.ofInstant(java.time.Instant.ofEpochMilli(millis), java.time.ZoneId.systemDefault())
-                .withNano(0).toString();
-    }
-
     @Override
     public void start(RunInfo info) {
         try {
@@ -239,49 +217,32 @@ public final class ServoDriver extends BusThread {
         return set.measured(index);
     }
 
-    /** Turns the watchdog off so the servos keep holding, sends the last goals (three times: no reply), reports. */
+    /** Turns the watchdog off so the servos keep holding, sends the last goals (three times: no reply). */
     @Override
-    public void finish(RunOutcome outcome) {
-        stopThread();
-        ServoBus b = bus;
-        if (connected() && b.linkError() == null) {
-            try {
-                int n = set.pack();
-                // Watchdog off first: writing 0 also clears a Bus Watchdog error, which a pause at
-                // the run's end may have caused and which would refuse the final goals.
-                b.watchdog(set.ids, set.models, n, 0, false);
-                for (int i = 0; i < 3 && set.takeGoals(true); i++) {
-                    b.writeGoals(set.ids, set.models, set.goals, n);
-                }
-            } catch (IOException e) {
-                report.problem("bus: could not send the final goals: " + e.getMessage());
-            }
+    protected void sendFinalHold() throws IOException {
+        int n = set.pack();
+        // Watchdog off first: writing 0 also clears a Bus Watchdog error, which a pause at
+        // the run's end may have caused and which would refuse the final goals.
+        bus.watchdog(set.ids, set.models, n, 0, false);
+        for (int i = 0; i < 3 && set.takeGoals(true); i++) {
+            bus.writeGoals(set.ids, set.models, set.goals, n);
         }
-        report.note(summary());
     }
 
-    /** Emergency stop: every driven servo stops in the profile's safe mode. Safe from any thread. */
     @Override
-    public void emergencyStop() {
-        emergencyStopping();
+    protected IOException linkError() {
+        return bus.linkError();
+    }
+
+    /** Every driven servo stops in the profile's safe mode. */
+    @Override
+    protected String sendEmergencyStop() throws IOException {
         boolean limp = profile.onFault() == SafeMode.LIMP;
-        long since = notAnsweringSince();
-        try {
-            bus.emergencyStop(set.ids, set.models, set.pack(), limp);
-            if (since >= 0) {
-                // Sent into a silent bus: nothing says the servos got it.
-                report.problem("bus: emergency stop sent but not confirmed: no servo has answered since "
-                        + clock(since) + "; switch the servo supply off");
-            } else {
-                report.note("bus: emergency stop sent; servos " + (limp ? "limp (torque off)" : "hold where they are"));
-            }
-        } catch (IOException e) {
-            report.problem("bus: emergency stop could not be sent (" + e.getMessage() + ")"
-                    + (since >= 0 ? "; no servo has answered since " + clock(since) + ": switch the servo supply off" : ""));
-        }
+        bus.emergencyStop(set.ids, set.models, set.pack(), limp);
+        return "servos " + (limp ? "limp (torque off)" : "hold where they are");
     }
 
-    /** One line of counters for the end of a run. */
+    @Override
     public String summary() {
         ServoBus.Counters c = bus.counters();
         return String.format(Locale.ROOT, "bus %s (%s): %d packets sent, %d position reads (%d servo timeouts, "
@@ -322,9 +283,8 @@ public final class ServoDriver extends BusThread {
             } else if (n > 0) {
                 readFailures++;
                 // Dead: no answer for the dead-bus time and more failed reads in a row than retries.
-                if (++failedReads > config.retries()
-                        && System.nanoTime() - lastAnswer > TimeUnit.MILLISECONDS.toNanos(config.deadAfterMs())) {
-                    silent();
+                if (++failedReads > config.retries() && deadFor()) {
+                    silent(bus.name(), safeStop());
                     return;
                 }
             }
@@ -346,19 +306,12 @@ public final class ServoDriver extends BusThread {
         int k = watchdogCursor++ % n;
         if (bus.resumeIfTripped(set.ids[k], set.models[k], set.errors[k], profile.watchdogMs())) {
             watchdogResumes++;
-            report.problem("bus: servo " + set.ids[k] + " had stopped on its watchdog (a gap of more than "
-                    + profile.watchdogMs() + " ms in the bus traffic); resuming it");
+            watchdogResumed(set.ids[k], profile.watchdogMs());
         }
     }
 
     private void fault(String message) {
         report.problem("bus: " + message);
-    }
-
-    private void silent() {
-        silent(String.format(Locale.ROOT, "bus: no reply from any servo on %s for %d ms (robot not responding since "
-                + "%s); %s; waiting for them to come back", bus.name(), config.deadAfterMs(), clock(lastAnswerMillis),
-                safeStop()));
     }
 
     /** What the servos do when the host loses them, and the torque-off attempt for limp. */
@@ -390,22 +343,22 @@ public final class ServoDriver extends BusThread {
         bus.close();
     }
 
-    /** While silent: ping one servo per interval; when one answers, set up again and resume. */
     @Override
-    protected void lookFor() throws IOException, InterruptedException {
-        int n = set.pack();
-        for (int i = 0; i < n; i++) {
-            if (bus.ping(set.ids[i], 1) >= 0) {
-                setUp();
-                armWatchdog();
-                answeredNow();
-                failedReads = 0;
-                double away = resumed();
-                report.note(String.format(Locale.ROOT, "bus: servos back on %s after %.2f s; resuming", bus.name(),
-                        away));
-                return;
-            }
-            Thread.sleep(Math.max(1, config.reconnectMs() / Math.max(1, n)));
-        }
+    protected int lookCount() {
+        return set.pack();
+    }
+
+    @Override
+    protected boolean answers(int i) throws IOException {
+        return bus.ping(set.ids[i], 1) >= 0;
+    }
+
+    /** The safe start again (present positions held, torque read back), then the watchdog. */
+    @Override
+    protected String setUpAgain() throws IOException {
+        setUp();
+        armWatchdog();
+        failedReads = 0;
+        return "";
     }
 }

@@ -1,5 +1,7 @@
 package org.parpe.serial.servo.wire;
 
+import org.parpe.serial.protocol.Crc16;
+
 /**
  * Dynamixel Protocol 2.0 packets (ROBOTIS e-Manual, "Protocol 2.0"):
  * {@code FF FF FD 00 ID LEN_L LEN_H INST PARAM… CRC_L CRC_H}, where LEN counts the instruction,
@@ -60,7 +62,7 @@ public final class Dxl2Codec implements PacketCodec {
         out[5] = (byte) length;
         out[6] = (byte) (length >>> 8);
         System.arraycopy(stuffed, 0, out, HEAD, n);
-        int crc = Dxl2Crc.of(out, 0, HEAD + n);
+        int crc = Crc16.DXL2.of(out, 0, HEAD + n);
         out[HEAD + n] = (byte) crc;
         out[HEAD + n + 1] = (byte) (crc >>> 8);
         return HEAD + n + 2;
@@ -108,7 +110,7 @@ public final class Dxl2Codec implements PacketCodec {
             if (avail < total) {
                 return INCOMPLETE;
             }
-            int crc = Dxl2Crc.of(buf, p, total - 2);
+            int crc = Crc16.DXL2.of(buf, p, total - 2);
             if (crc != ((buf[p + total - 2] & 0xFF) | (buf[p + total - 1] & 0xFF) << 8)) {
                 return BAD_CHECK;
             }
