@@ -26,6 +26,7 @@ public final class RunController {
     private volatile Speed speed = Speed.REAL_TIME;
     private volatile EngineStatus status;
     private final LiveStates live = new LiveStates();
+    private final Breakpoints breakpoints = new Breakpoints();
     private volatile Thread thread;
     private volatile Engine engine;
     private volatile boolean hardwarePaced;
@@ -102,6 +103,12 @@ public final class RunController {
         applySpeed();
         builder.pacer(pacer);
         builder.observer(new StatusPublisher(e));
+        builder.observer(breakpoints.watch(e, () -> {
+            // the views show the tick the run stopped at, not the last one published
+            status = e.status();
+            live.publish(e, e.tick(), e.entryIndex());
+            pacer.setPaused(true);
+        }));
         Run run = builder.build();
         try {
             RunOutcome outcome = run.execute();
@@ -161,9 +168,17 @@ public final class RunController {
         }
     }
 
-    /** Pauses or resumes the run. */
+    /** Pauses or resumes the run (resuming also goes on from a breakpoint reached). */
     public void setPaused(boolean p) {
+        if (!p) {
+            breakpoints.clearHit();
+        }
         pacer.setPaused(p);
+    }
+
+    /** The diagrams' breakpoints; a run pauses at the tick one is reached. */
+    public Breakpoints breakpoints() {
+        return breakpoints;
     }
 
     public boolean paused() {
