@@ -310,6 +310,17 @@ public final class Layouts {
         for (int i = 0; i < names.size(); i++) {
             colourOf.put(names.get(i), i);
         }
+        // per entry, instance and state: its colour (looked up once, not per segment)
+        int[][][] colour = new int[g.legend().size()][][];
+        for (int e = 0; e < colour.length; e++) {
+            colour[e] = new int[g.legend().get(e).size()][];
+            for (int i = 0; i < colour[e].length; i++) {
+                colour[e][i] = new int[g.legend().get(e).get(i).states().size()];
+                for (int k = 0; k < colour[e][i].length; k++) {
+                    colour[e][i][k] = colourOf.getOrDefault(g.stateName(e, i, k), 0);
+                }
+            }
+        }
         int legendRows = Math.min(names.size(), 24);
         double h = top + n * rowH + 50 + ((legendRows + 3) / 4) * 18 + 20;
         Scene sc = new Scene((int) (left + plotW + 30), (int) h);
@@ -320,7 +331,9 @@ public final class Layouts {
         sc.add(new Scene.Rect(left, top, plotW, n * rowH, LIGHT, Scene.NONE, 0, null));
         double scale = plotW / g.ticks();
         for (GaitDiagram.Segment s : g.segments()) {
-            int k = colourOf.getOrDefault(g.stateName(s.entry(), s.instance(), s.state()), 0);
+            boolean known = s.entry() >= 0 && s.entry() < colour.length && s.instance() >= 0
+                    && s.instance() < colour[s.entry()].length && s.state() >= 0 && s.state() < colour[s.entry()][s.instance()].length;
+            int k = known ? colour[s.entry()][s.instance()][s.state()] : 0;
             sc.add(new Scene.Rect(left + s.from() * scale, top + s.row() * rowH, (s.to() - s.from()) * scale, rowH,
                     stateColour(k), Scene.NONE, 0, null));
         }

@@ -357,7 +357,7 @@ public final class DiagramPane {
      * The run's breakpoints (set on the ring's states), how to go on from one (Continue), and
      * whom to tell when the run stops at one or goes on (the tool bar's Pause/Resume).
      */
-    public void breakpoints(org.parpe.gui.run.Breakpoints bp, Runnable resume, Runnable changed) {
+    public void breakpoints(org.parpe.core.run.Breakpoints bp, Runnable resume, Runnable changed) {
         liveBar.breakpoints(bp, resume, changed);
     }
 

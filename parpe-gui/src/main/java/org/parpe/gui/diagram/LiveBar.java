@@ -16,7 +16,7 @@ import org.parpe.core.diag.SourcePos;
 import org.parpe.core.diagram.Ring;
 import org.parpe.core.diagram.Scene;
 import org.parpe.core.model.Program;
-import org.parpe.gui.run.Breakpoints;
+import org.parpe.core.run.Breakpoints;
 
 /**
  * The Diagram pane's row for runs: breakpoints on the selected state of the ring (on entering

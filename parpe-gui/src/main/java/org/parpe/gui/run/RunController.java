@@ -2,6 +2,7 @@ package org.parpe.gui.run;
 
 import java.util.function.Consumer;
 import org.eclipse.swt.widgets.Display;
+import org.parpe.core.run.Breakpoints;
 import org.parpe.core.run.Engine;
 import org.parpe.core.run.EngineStatus;
 import org.parpe.core.run.JointSink;

@@ -33,7 +33,7 @@ import org.parpe.gui.app.IdeAccess;
 import org.parpe.gui.app.IdeWindow;
 import org.parpe.gui.app.Screenshot;
 import org.parpe.gui.diagram.Projection.View;
-import org.parpe.gui.run.Breakpoints;
+import org.parpe.core.run.Breakpoints;
 import org.parpe.gui.run.RunController;
 
 /**

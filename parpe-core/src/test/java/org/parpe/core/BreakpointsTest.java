@@ -1,4 +1,4 @@
-package org.parpe.gui.run;
+package org.parpe.core;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
@@ -11,17 +11,18 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.atomic.AtomicReference;
 import org.junit.jupiter.api.Test;
+import org.parpe.core.load.ScriptLoader;
+import org.parpe.core.run.Breakpoints;
 import org.parpe.core.run.Engine;
 import org.parpe.core.run.Run;
 import org.parpe.core.run.RunOptions;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.core.run.WallClockPacer;
-import org.parpe.gui.editor.Validator;
-import org.parpe.gui.run.Breakpoints.Kind;
-import org.parpe.gui.run.Breakpoints.Point;
+import org.parpe.core.run.Breakpoints.Kind;
+import org.parpe.core.run.Breakpoints.Point;
 
 /**
- * Breakpoints through the engine: a real {@link Run} (paced by the IDE's {@link WallClockPacer},
+ * Breakpoints through the engine: a real {@link Run} (paced by the IDE's {@link WallClockPacer}, paused as the IDE pauses it,
  * as fast as it goes) stops at exactly the tick a module enters a state or a state's exit
  * condition becomes true, stays there (no further tick) until Continue, and goes on to the next.
  * The ticks are worked out by hand from the script (PARSL.md §7.1: a transition due at exactly
@@ -50,7 +51,7 @@ class BreakpointsTest {
 
     /** Runs the script with {@code set} breakpoints and the duration given, continuing at each stop. */
     private static List<Stop> stops(Breakpoints bp, double seconds) throws Exception {
-        var loaded = Validator.load(Path.of("bp.xml"), SCRIPT, Map.of());
+        var loaded = ScriptLoader.loadText(Path.of("bp.xml"), SCRIPT, Map.of());
         assertNotNull(loaded.program(), loaded.diagnostics().toString());
         Run.Builder b = Run.builder(loaded.program(), RunOptions.defaults(), d -> { });
         Engine e = b.engine();

@@ -1,4 +1,4 @@
-package org.parpe.gui.run;
+package org.parpe.core.run;
 
 import java.util.Arrays;
 import java.util.HashSet;
@@ -9,8 +9,6 @@ import org.parpe.core.model.Instance;
 import org.parpe.core.model.MainEntry;
 import org.parpe.core.model.Program;
 import org.parpe.core.model.StateDef;
-import org.parpe.core.run.Engine;
-import org.parpe.core.run.JointSink;
 
 /**
  * Breakpoints of the diagrams: on a module entering a state of an automaton, or on a state's
