@@ -31,6 +31,7 @@ public final class RunController {
     private volatile Thread thread;
     private volatile Engine engine;
     private volatile boolean hardwarePaced;
+    private volatile JointSink extraObserver;
 
     public RunController(Display display) {
         this.display = display;
@@ -104,6 +105,10 @@ public final class RunController {
         applySpeed();
         builder.pacer(pacer);
         builder.observer(new StatusPublisher(e));
+        JointSink extra = extraObserver;
+        if (extra != null) {
+            builder.observer(extra);
+        }
         builder.observer(breakpoints.watch(e, () -> {
             // the views show the tick the run stopped at, not the last one published
             status = e.status();
@@ -175,6 +180,11 @@ public final class RunController {
             breakpoints.clearHit();
         }
         pacer.setPaused(p);
+    }
+
+    /** Adds {@code o} as an observer of the following runs ({@code null}: none); for the benchmark. */
+    public void observeRuns(JointSink o) {
+        extraObserver = o;
     }
 
     /** The diagrams' breakpoints; a run pauses at the tick one is reached. */
