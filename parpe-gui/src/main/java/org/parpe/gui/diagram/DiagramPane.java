@@ -201,6 +201,7 @@ public final class DiagramPane {
         liveMarks = List.of();
         liveCounts = null;
         liveLabels = null;
+        liveProgress = null;
         liveBar.shown();
         canvas.select(selected);
         message.setText(p.message().isEmpty() && !p.targets().isEmpty()
@@ -351,6 +352,7 @@ public final class DiagramPane {
     private int[] liveCounts;
     private long liveTick = -1;
     private String[] liveLabels;
+    private double[] liveProgress;
     private String liveWhat = "live";
     private List<org.parpe.core.diagram.Scene.Shape> liveMarks = List.of();
     private GaitOverlay gaitOverlay;
@@ -429,6 +431,11 @@ public final class DiagramPane {
         return liveBar.line();
     }
 
+    /** On the ring, per module, how far it is through its state as its dot shows it (−1: not on this ring); {@code null} without a ring overlay. */
+    public double[] liveProgress() {
+        return liveCounts == null || liveProgress == null ? null : liveProgress.clone();
+    }
+
     /** On the gait diagram, per module, the state its "now" cell shows; {@code null} without a gait overlay. */
     public String[] liveLabels() {
         return liveCounts == null || liveLabels == null ? null : liveLabels.clone();
@@ -442,6 +449,7 @@ public final class DiagramPane {
         liveMarks = gaitOverlay.marks(f, liveWhat);
         liveCounts = gaitOverlay.counts();
         liveLabels = gaitOverlay.labels();
+        liveProgress = null;
         liveTick = f.tick();
         repaintOverlay();
     }
@@ -462,6 +470,7 @@ public final class DiagramPane {
         }
         liveCounts = counts;
         liveLabels = null;
+        liveProgress = null;
         liveTick = f.tick();
         List<org.parpe.core.diagram.Scene.Shape> marks = new ArrayList<>();
         for (var s : shown.scene().shapes()) {
@@ -518,8 +527,10 @@ public final class DiagramPane {
                 }
             }
         }
+        liveProgress = new double[f.instance().length];
+        marks.addAll(RingProgress.marks(ring, shown.scene(), f, automata, liveProgress));
         marks.add(new org.parpe.core.diagram.Scene.Text(shown.scene().width() - 12, 28, liveWhat + ": tick " + f.tick()
-                + " (dark band: modules in the state)", 11, 1, 0x222222, false));
+                + " (dark band: modules in the state; dots: each module's progress)", 11, 1, 0x222222, false));
         liveMarks = marks;
         repaintOverlay();
     }

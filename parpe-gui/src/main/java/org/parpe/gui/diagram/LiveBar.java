@@ -248,12 +248,12 @@ final class LiveBar {
                     Breakpoints.Point pt = new Breakpoints.Point(r.automaton(), a.index(), kind);
                     if (breakpoints.has(pt)) {
                         // entering: at the arc's start; exit: at its end, where the edge leaves it
-                        double[] at = Scene.onCircle(c.cx(), c.cy(), c.r1() + 12, kind == Breakpoints.Kind.ENTER
+                        double[] at = Scene.onCircle(c.cx(), c.cy(), c.r1() + 18, kind == Breakpoints.Kind.ENTER
                                 ? c.from() + 0.01 : c.to() - 0.01);
                         marks.add(new Scene.Sector(at[0], at[1], 0, 7, 0, 1, RED, 0xffffff, null));
                     }
                     if (shownHit != null && shownHit.point().equals(pt)) {
-                        marks.add(new Scene.Sector(c.cx(), c.cy(), c.r1() + 2, c.r1() + 6, c.from(), c.to(), RED,
+                        marks.add(new Scene.Sector(c.cx(), c.cy(), c.r1() + 10, c.r1() + 13, c.from(), c.to(), RED,
                                 Scene.NONE, null));
                     }
                 }

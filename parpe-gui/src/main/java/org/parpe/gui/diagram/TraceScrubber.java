@@ -28,16 +28,18 @@ final class TraceScrubber {
     private final int[] entry;
     private final int[][] instance;
     private final int[][] state;
+    private final double[][] progress;
     private final int[] ids;
     private final double differsFrom;
 
-    private TraceScrubber(Path file, double[] time, int[] entry, int[][] instance, int[][] state, int[] ids,
-                          double differsFrom) {
+    private TraceScrubber(Path file, double[] time, int[] entry, int[][] instance, int[][] state, double[][] progress,
+                          int[] ids, double differsFrom) {
         this.file = file;
         this.time = time;
         this.entry = entry;
         this.instance = instance;
         this.state = state;
+        this.progress = progress;
         this.ids = ids;
         this.differsFrom = differsFrom;
     }
@@ -115,6 +117,7 @@ final class TraceScrubber {
         int[] entry = new int[count];
         int[][] instance = new int[count][n];
         int[][] state = new int[count][n];
+        double[][] progress = new double[count][n];
         Engine e = new Engine(p, new RunOptions(dt, 0, List.of()));
         double[] differs = {Double.NaN};
         int[] row = {0};
@@ -136,13 +139,15 @@ final class TraceScrubber {
                 going = e.step();
                 entry[k] = e.entryIndex();
                 e.moduleStates(instance[k], state[k]);
+                e.moduleProgress(progress[k]);
             } else {
                 entry[k] = -1;
                 Arrays.fill(instance[k], -1);
                 Arrays.fill(state[k], -1);
+                Arrays.fill(progress[k], -1);
             }
         }
-        return new TraceScrubber(csv, time, entry, instance, state, ids, differs[0]);
+        return new TraceScrubber(csv, time, entry, instance, state, progress, ids, differs[0]);
     }
 
     /** The trace file. */
@@ -167,6 +172,6 @@ final class TraceScrubber {
 
     /** The states at tick {@code k}, as the live overlay takes them. */
     LiveStates.Frame frame(int k) {
-        return new LiveStates.Frame(k, k, entry[k], ids, instance[k].clone(), state[k].clone());
+        return new LiveStates.Frame(k, k, entry[k], ids, instance[k].clone(), state[k].clone(), progress[k].clone());
     }
 }

@@ -133,6 +133,23 @@ class DiagramLiveGuiTest {
         return counts;
     }
 
+    /** Per module, how far a lift module (step: instances 2 and 3 of walk) is through its state at {@code tick}, else −1. */
+    private static String stepProgressAt(long tick) {
+        Engine e = engineAt(tick);
+        int n = e.moduleIds().length;
+        int[] inst = new int[n];
+        int[] state = new int[n];
+        double[] progress = new double[n];
+        e.moduleStates(inst, state);
+        e.moduleProgress(progress);
+        for (int m = 0; m < n; m++) {
+            if (inst[m] != 2 && inst[m] != 3) {
+                progress[m] = -1;
+            }
+        }
+        return Arrays.toString(progress);
+    }
+
     private static Button button(String text) {
         List<Control> all = new ArrayList<>();
         collect((Composite) pane().control(), all);
@@ -252,6 +269,8 @@ class DiagramLiveGuiTest {
                 assertEquals(tick, c.engine().tick(), "no tick runs while paused at the breakpoint");
                 assertEquals(Arrays.toString(stepCountsAt(tick)), Arrays.toString(pane().liveCounts()),
                         "the ring shows the states at the tick it stopped");
+                assertEquals(stepProgressAt(tick), Arrays.toString(pane().liveProgress()),
+                        "the ring's dots show each lift's progress at the tick it stopped");
                 assertTrue(pane().liveLine().contains("entered step.lower at tick " + tick), pane().liveLine());
                 if (hit == 1) {
                     // the first stop is at tick 0 (a lift starts in lower); the pictures show the second
@@ -296,6 +315,7 @@ class DiagramLiveGuiTest {
                 pane().scrubTo(k);
                 assertEquals(k, pane().liveTick());
                 assertEquals(Arrays.toString(stepCountsAt(k)), Arrays.toString(pane().liveCounts()), "the ring at tick " + k);
+                assertEquals(stepProgressAt(k), Arrays.toString(pane().liveProgress()), "the ring's progress dots at tick " + k);
             }
             show(View.GAIT, null);
             for (int k : new int[] {0, 80, 299}) {
