@@ -24,30 +24,22 @@ import org.parpe.cli.Cli;
  */
 class TutorialDiagramsTest {
 
-    /** A picture: its file name, the lesson script and the command's arguments after it. */
-    record Picture(String name, String script, List<String> args) {
-        @Override
-        public String toString() {
-            return name;
-        }
-    }
-
-    static Stream<Picture> pictures() {
+    static Stream<DiagramCommandTest.Snapshot> pictures() {
         String t = "../examples/tutorial/";
         return Stream.of(
-                new Picture("03-diagram-ring", t + "03-hello-snake.xml", List.of("--view", "ring")),
-                new Picture("03-diagram-gait", t + "03-hello-snake.xml", List.of("--view", "gait", "--duration", "3")),
-                new Picture("04-diagram-phase", t + "04-waves-snake.xml", List.of("--view", "phase")),
-                new Picture("04-diagram-gait", t + "04-waves-snake.xml", List.of("--view", "gait", "--duration", "3")),
-                new Picture("05-diagram-lanes", t + "05-centipede-mirror.xml", List.of("--view", "lanes")),
-                new Picture("05-diagram-ring-step", t + "05-centipede-mirror.xml", List.of("--view", "ring", "--automaton", "step")),
-                new Picture("06-diagram-program", t + "06-standup-walk-centipede.xml", List.of("--view", "program")),
-                new Picture("06-diagram-gait", t + "06-standup-walk-centipede.xml", List.of("--view", "gait", "--duration", "20")));
+                new DiagramCommandTest.Snapshot("03-diagram-ring", t + "03-hello-snake.xml", List.of("--view", "ring")),
+                new DiagramCommandTest.Snapshot("03-diagram-gait", t + "03-hello-snake.xml", List.of("--view", "gait", "--duration", "3")),
+                new DiagramCommandTest.Snapshot("04-diagram-phase", t + "04-waves-snake.xml", List.of("--view", "phase")),
+                new DiagramCommandTest.Snapshot("04-diagram-gait", t + "04-waves-snake.xml", List.of("--view", "gait", "--duration", "3")),
+                new DiagramCommandTest.Snapshot("05-diagram-lanes", t + "05-centipede-mirror.xml", List.of("--view", "lanes")),
+                new DiagramCommandTest.Snapshot("05-diagram-ring-step", t + "05-centipede-mirror.xml", List.of("--view", "ring", "--automaton", "step")),
+                new DiagramCommandTest.Snapshot("06-diagram-program", t + "06-standup-walk-centipede.xml", List.of("--view", "program")),
+                new DiagramCommandTest.Snapshot("06-diagram-gait", t + "06-standup-walk-centipede.xml", List.of("--view", "gait", "--duration", "20")));
     }
 
     @ParameterizedTest
     @MethodSource("pictures")
-    void eachLessonDiagramIsDrawnFromItsScript(Picture p) throws Exception {
+    void eachLessonDiagramIsDrawnFromItsScript(DiagramCommandTest.Snapshot p) throws Exception {
         Path dir = Path.of(System.getProperty("parpe.tutorialImages", "../docs/tutorial/img"));
         Files.createDirectories(dir);
         Path png = dir.resolve(p.name() + ".png");

@@ -4,11 +4,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.Locale;
-import org.eclipse.swt.SWT;
-import org.eclipse.swt.custom.CTabFolder;
-import org.eclipse.swt.custom.CTabItem;
 import org.eclipse.swt.widgets.Display;
-import org.eclipse.swt.widgets.Event;
 import org.parpe.core.run.JointSink;
 import org.parpe.gui.diagram.DiagramPane;
 
@@ -39,13 +35,7 @@ final class LiveDiagramBench {
             step(display);
         }
         DiagramPane pane = ide.diagram();
-        CTabFolder folder = (CTabFolder) pane.control().getParent();
-        for (CTabItem item : folder.getItems()) {
-            if (item.getControl() == pane.control()) {
-                folder.setSelection(item);
-                folder.notifyListeners(SWT.Selection, new Event());
-            }
-        }
+        pane.showTab();
         ide.toolbar().setTarget(org.parpe.gui.run.Target.SIMULATOR);
         ide.toolbar().setSpeed(org.parpe.gui.run.Speed.REAL_TIME);
         measure(display, ide, pane, "program", "PROGRAM");

@@ -402,6 +402,20 @@ public final class DiagramPane {
         liveBar.scrubTo(k);
     }
 
+    /** Brings the pane's tab to the front (as a click on it does) and returns the tab's text. */
+    public String showTab() {
+        if (box.getParent() instanceof org.eclipse.swt.custom.CTabFolder folder) {
+            for (org.eclipse.swt.custom.CTabItem item : folder.getItems()) {
+                if (item.getControl() == box) {
+                    folder.setSelection(item);
+                    folder.notifyListeners(SWT.Selection, new org.eclipse.swt.widgets.Event());
+                    return item.getText();
+                }
+            }
+        }
+        return "";
+    }
+
     /** Shows the view named {@code name} ({@code PROGRAM}, {@code LANES}, {@code RING}, {@code PHASE}, {@code GAIT}). */
     public void showView(String name) {
         setView(View.valueOf(name));

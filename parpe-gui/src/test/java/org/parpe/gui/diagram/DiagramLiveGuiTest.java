@@ -12,8 +12,6 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicReference;
 import org.eclipse.swt.SWT;
-import org.eclipse.swt.custom.CTabFolder;
-import org.eclipse.swt.custom.CTabItem;
 import org.eclipse.swt.graphics.Point;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Composite;
@@ -31,7 +29,6 @@ import org.parpe.core.run.RunOptions;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.gui.app.IdeAccess;
 import org.parpe.gui.app.IdeWindow;
-import org.parpe.gui.app.Screenshot;
 import org.parpe.gui.diagram.Projection.View;
 import org.parpe.core.run.Breakpoints;
 import org.parpe.gui.run.RunController;
@@ -47,26 +44,12 @@ import org.parpe.gui.run.RunController;
  */
 class DiagramLiveGuiTest {
     private static IdeWindow ide;
-    private static Path copy;
     private static Path home;
 
     @BeforeAll
     static void openWindow() throws Exception {
         home = Files.createTempDirectory("parpe-diagram-live-test");
-        Path example = Path.of(System.getProperty("parpe.examples", "../examples"), "centipede-walk.xml");
-        copy = Files.createDirectories(home.resolve("scripts")).resolve("centipede-walk.xml");
-        Files.copy(example, copy);
-        ide = IdeAccess.openIde(home);
-        ide.shell().setSize(1366, 768);
-        IdeAccess.open(ide, copy);
-        CTabFolder folder = (CTabFolder) pane().control().getParent();
-        for (CTabItem item : folder.getItems()) {
-            if (item.getControl() == pane().control()) {
-                folder.setSelection(item);
-                folder.notifyListeners(SWT.Selection, new Event());
-            }
-        }
-        IdeAccess.pump(() -> pane().current() && ide.program() != null, "the first diagram and the loaded script");
+        ide = DiagramWindow.open(home).ide();
     }
 
     @AfterAll
@@ -79,75 +62,68 @@ class DiagramLiveGuiTest {
     }
 
     private static void show(View v, String subject) {
-        if (subject == null) {
-            pane().setView(v);
-        } else {
-            pane().setView(v, subject);
-        }
-        IdeAccess.pump(() -> pane().current() && pane().shown().view() == v
-                && (subject == null || subject.equals(pane().shown().subject())), v + " view of the text");
+        DiagramWindow.show(ide, v, subject);
     }
 
-    /** The same program's engine, run headless to {@code tick}. */
-    private static Engine engineAt(long tick) {
+    /** Each module's instance, state and progress in the same program's engine, run headless to a tick. */
+    private record At(int[] inst, int[] state, double[] progress) {
+    }
+
+    private static At at(long tick) {
         Engine e = new Engine(pane().program(), RunOptions.defaults());
         e.start();
         while (e.tick() < tick) {
             e.step();
         }
-        return e;
+        int n = e.moduleIds().length;
+        At a = new At(new int[n], new int[n], new double[n]);
+        e.moduleStates(a.inst(), a.state());
+        e.moduleProgress(a.progress());
+        return a;
     }
 
     /** Per module, "automaton.state" of the state the engine is in (from the script's model), or null. */
     private static String[] statesAt(long tick) {
-        Engine e = engineAt(tick);
-        int n = e.moduleIds().length;
-        int[] inst = new int[n];
-        int[] state = new int[n];
-        e.moduleStates(inst, state);
+        At a = at(tick);
         Program p = pane().program();
         List<Instance> walk = p.behavior("walk").orElseThrow().instances();
-        String[] out = new String[n];
-        for (int m = 0; m < n; m++) {
-            if (inst[m] >= 0) {
-                String a = walk.get(inst[m]).automaton();
-                out[m] = a + "." + p.automaton(a).orElseThrow().states().get(state[m]).name();
+        String[] out = new String[a.inst().length];
+        for (int m = 0; m < out.length; m++) {
+            if (a.inst()[m] >= 0) {
+                String name = walk.get(a.inst()[m]).automaton();
+                out[m] = name + "." + p.automaton(name).orElseThrow().states().get(a.state()[m]).name();
             }
         }
         return out;
     }
 
-    /** Modules per state of "step" (the lifts: instances 2 and 3 of walk) at {@code tick}. */
+    /** Whether module {@code m} is a lift at {@code a}: instances 2 and 3 of walk run step. */
+    private static boolean lift(At a, int m) {
+        return a.inst()[m] == 2 || a.inst()[m] == 3;
+    }
+
+    /** Modules per state of "step" (the lifts) at {@code tick}. */
     private static int[] stepCountsAt(long tick) {
-        Engine e = engineAt(tick);
-        int n = e.moduleIds().length;
-        int[] inst = new int[n];
-        int[] state = new int[n];
-        e.moduleStates(inst, state);
+        At a = at(tick);
         int[] counts = new int[3];
-        for (int m = 0; m < n; m++) {
-            if (inst[m] == 2 || inst[m] == 3) {
-                counts[state[m]]++;
+        for (int m = 0; m < a.inst().length; m++) {
+            if (lift(a, m)) {
+                counts[a.state()[m]]++;
             }
         }
         return counts;
     }
 
-    /** Per module, how far a lift module (step: instances 2 and 3 of walk) is through its state at {@code tick}, else −1. */
+    /** Per module, how far a lift is through its state at {@code tick}, else −1. */
     private static String stepProgressAt(long tick) {
-        Engine e = engineAt(tick);
-        int n = e.moduleIds().length;
-        int[] inst = new int[n];
-        int[] state = new int[n];
-        double[] progress = new double[n];
-        e.moduleStates(inst, state);
-        e.moduleProgress(progress);
-        for (int m = 0; m < n; m++) {
-            if (inst[m] != 2 && inst[m] != 3) {
-                progress[m] = -1;
+        At a = at(tick);
+        double[] out = a.progress().clone();
+        for (int m = 0; m < out.length; m++) {
+            if (!lift(a, m)) {
+                out[m] = -1;
             }
         }
-        return Arrays.toString(progress);
+        return Arrays.toString(out);
     }
 
     private static Button button(String text) {
@@ -172,40 +148,17 @@ class DiagramLiveGuiTest {
     }
 
     private static void picture(String name) throws Exception {
-        pane().canvas().setFocus();
-        IdeAccess.settle();
-        Path dir = Path.of(System.getProperty("parpe.ideImages", "../docs/images/ide"));
-        Files.createDirectories(dir);
-        Path png = dir.resolve(name);
-        Screenshot.save(ide.shell(), png);
-        var d = new org.eclipse.swt.graphics.ImageLoader().load(png.toString())[0];
-        assertEquals(1366, d.width, "picture width");
-        assertTrue(Screenshot.distinctColours(d, 64) >= 64, png + " looks blank");
+        DiagramWindow.picture(ide, name);
     }
 
     @Test
     void theGaitDiagramShowsEachModulesStateDuringARun() throws Exception {
         show(View.GAIT, null);
-        IdeAccess.pump(() -> pane().liveLabels() == null, "no overlay while nothing runs");
-        AtomicReference<RunOutcome> end = new AtomicReference<>();
-        IdeAccess.run(ide, org.parpe.gui.run.Target.SIMULATOR, 600, end::set);
-        try {
-            long last = -1;
-            for (int frame = 0; frame < 10; frame++) {
-                long after = last;
-                IdeAccess.pump(() -> pane().liveLabels() != null && pane().liveTick() > Math.max(0, after) || end.get() != null,
-                        "a new frame of the gait overlay");
-                assertEquals(null, end.get(), "the run ended early");
-                long tick = pane().liveTick();
-                String[] expected = statesAt(tick);
-                assertEquals(28, Arrays.stream(expected).filter(s -> s != null).count(), "the 28 leg modules are driven");
-                assertEquals(Arrays.toString(expected), Arrays.toString(pane().liveLabels()), "each module's state at tick " + tick);
-                last = tick;
-            }
-        } finally {
-            IdeAccess.endRun(ide);
-        }
-        IdeAccess.pump(() -> pane().liveLabels() == null, "the overlay to go when the run ends");
+        DiagramWindow.tenFrames(ide, () -> pane().liveLabels() != null, tick -> {
+            String[] expected = statesAt(tick);
+            assertEquals(28, Arrays.stream(expected).filter(s -> s != null).count(), "the 28 leg modules are driven");
+            assertEquals(Arrays.toString(expected), Arrays.toString(pane().liveLabels()), "each module's state at tick " + tick);
+        }, null);
     }
 
     /** The ticks at which a lift module enters state {@code s} of step, in order, up to {@code count} of them. */
