@@ -72,6 +72,8 @@ public final class RunController {
         pacer.setPaused(false);
         Thread t = new Thread(() -> {
             RunOutcome outcome = assembleAndRun(run, setup, runFor, onCrash);
+            // a run stopped while paused at a breakpoint is no longer there
+            breakpoints.clearHit();
             try {
                 if (!display.isDisposed()) {
                     display.asyncExec(() -> onEnd.accept(outcome));

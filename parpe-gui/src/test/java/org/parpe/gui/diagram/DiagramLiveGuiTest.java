@@ -205,7 +205,7 @@ class DiagramLiveGuiTest {
         press(button("Break on entering"));
         RunController c = IdeAccess.controller(ide);
         assertEquals(java.util.Set.of(new Breakpoints.Point("step", 1, Breakpoints.Kind.ENTER)), c.breakpoints().points());
-        List<Long> expected = entries(1, 2);
+        List<Long> expected = entries(1, 3);
         AtomicReference<RunOutcome> end = new AtomicReference<>();
         IdeAccess.run(ide, org.parpe.gui.run.Target.SIMULATOR, 600, end::set);
         try {
@@ -239,9 +239,14 @@ class DiagramLiveGuiTest {
                 press(button("Continue"));
                 IdeAccess.pump(() -> c.breakpoints().hit() == null, "the run to go on");
             }
+            // stopped while paused at the third: the breakpoint is no longer shown as hit
+            IdeAccess.pump(() -> c.breakpoints().hit() != null || end.get() != null, "the third stop");
+            assertEquals(expected.get(2), c.breakpoints().hit().tick());
         } finally {
             IdeAccess.endRun(ide);
         }
+        assertEquals(null, c.breakpoints().hit(), "a stopped run is no longer at its breakpoint");
+        IdeAccess.pump(() -> !pane().liveLine().startsWith("Paused"), "the line to forget the breakpoint");
         Point again = pane().where(lower.pos());
         click.x = again.x;
         click.y = again.y;
