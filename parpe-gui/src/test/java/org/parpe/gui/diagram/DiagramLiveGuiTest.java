@@ -44,12 +44,15 @@ import org.parpe.gui.run.RunController;
  */
 class DiagramLiveGuiTest {
     private static IdeWindow ide;
+    private static Path centipede;
     private static Path home;
 
     @BeforeAll
     static void openWindow() throws Exception {
         home = Files.createTempDirectory("parpe-diagram-live-test");
-        ide = DiagramWindow.open(home).ide();
+        DiagramWindow.Opened o = DiagramWindow.open(home);
+        ide = o.ide();
+        centipede = o.copy();
     }
 
     @AfterAll
@@ -298,5 +301,39 @@ class DiagramLiveGuiTest {
         assertTrue(pane().liveLine().startsWith(other + ":1:1: the trace has module 99, which the script does not have"),
                 pane().liveLine());
         assertEquals(null, pane().liveCounts());
+    }
+
+    @Test
+    void aStateWithAnExitConditionTakesABreakpointOnItsExit() throws Exception {
+        Path sensors = home.resolve("scripts").resolve("sensor-exit.xml");
+        Files.copy(Path.of(System.getProperty("parpe.examples", "../examples"), "sensor-exit.xml"), sensors);
+        IdeAccess.open(ide, sensors);
+        try {
+            IdeAccess.pump(() -> pane().current() && pane().program() != null, "the sensor-exit script");
+            show(View.RING, "inch");
+            Ring.Arc press = pane().shown().ring().arcs().get(2);
+            assertEquals("press", press.state());
+            Point at = pane().where(press.pos());
+            Event click = new Event();
+            click.button = 1;
+            click.x = at.x;
+            click.y = at.y;
+            pane().canvas().notifyListeners(SWT.MouseDown, click);
+            press(button("Break on its exit"));
+            RunController c = IdeAccess.controller(ide);
+            assertEquals(java.util.Set.of(new Breakpoints.Point("inch", 2, Breakpoints.Kind.EXIT)), c.breakpoints().points());
+            press(button("Clear break on its exit"));
+            assertEquals(java.util.Set.of(), c.breakpoints().points());
+            // a state without an exit condition has no such breakpoint
+            Point reach = pane().where(pane().shown().ring().arcs().get(1).pos());
+            click.x = reach.x;
+            click.y = reach.y;
+            pane().canvas().notifyListeners(SWT.MouseDown, click);
+            assertTrue(!button("Break on its exit").isEnabled(), "reach has no exit condition");
+        } finally {
+            IdeAccess.open(ide, centipede);
+            IdeAccess.pump(() -> pane().current() && ide.program() != null
+                    && ide.program().behavior("walk").isPresent(), "the centipede again");
+        }
     }
 }
