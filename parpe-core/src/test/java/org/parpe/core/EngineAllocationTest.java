@@ -34,6 +34,8 @@ class EngineAllocationTest {
                 new Stimulus(2.5, 1, Stimulus.Kind.SENSOR, 205 * 6 + 4, 1, "touch"))));
         double[] sum = new double[1];
         e.addObserver((JointSink) (tick, time, commanded) -> sum[0] += commanded[0]);
+        // the IDE's breakpoint watcher reads every module's state and exit after each tick: no allocation either
+        e.addObserver(new org.parpe.core.run.Breakpoints().watch(e, () -> { }));
         e.start();
         // a live view asks for every module's state at every tick (Engine.moduleStates): no allocation either
         int[] inst = new int[e.moduleIds().length];

@@ -24,6 +24,35 @@ public record GaitDiagram(double dt, int ticks, int[] moduleIds, List<Segment> s
     }
 
     /**
+     * The name a state is drawn with: {@code automaton.state}, or the state alone when it is
+     * named after its automaton (a gait table's rows); {@code null} when there is no such state.
+     */
+    public String stateName(int entry, int instance, int state) {
+        if (entry < 0 || entry >= legend.size() || instance < 0 || instance >= legend.get(entry).size()) {
+            return null;
+        }
+        Instance in = legend.get(entry).get(instance);
+        if (state < 0 || state >= in.states().size()) {
+            return null;
+        }
+        String name = in.states().get(state);
+        return name.startsWith(in.automaton() + "[") ? name : in.automaton() + "." + name;
+    }
+
+    /** Every state's {@link #stateName}, each once, in legend order (the order of the colours). */
+    public List<String> stateNames() {
+        java.util.LinkedHashSet<String> names = new java.util.LinkedHashSet<>();
+        for (int e = 0; e < legend.size(); e++) {
+            for (int i = 0; i < legend.get(e).size(); i++) {
+                for (int s = 0; s < legend.get(e).get(i).states().size(); s++) {
+                    names.add(stateName(e, i, s));
+                }
+            }
+        }
+        return List.copyOf(names);
+    }
+
+    /**
      * Ticks {@code [from, to)} during which the module of row {@code row} was in one state.
      *
      * @param row      the module's row

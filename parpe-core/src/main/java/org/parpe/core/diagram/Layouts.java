@@ -283,28 +283,41 @@ public final class Layouts {
         return sc;
     }
 
+    /**
+     * Where {@link #gait} puts the plot of {@code g}: {@code {left, top, width, row height}} in
+     * scene units (the live overlay draws over it).
+     */
+    public static double[] gaitPlot(GaitDiagram g) {
+        int n = g.moduleIds().length;
+        return new double[] {70, 50, 760, Math.max(1, Math.min(16, 480.0 / Math.max(1, n)))};
+    }
+
+    /** The colour of the state at {@code index} of {@link GaitDiagram#stateNames()} (colours repeat). */
+    public static int stateColour(int index) {
+        return PALETTE[Math.floorMod(index, PALETTE.length)];
+    }
+
     /** The gait diagram: a row per module, time to the right, coloured by state (Fig. 4 of the paper). */
     public static Scene gait(GaitDiagram g) {
         int n = g.moduleIds().length;
-        double rowH = Math.max(1, Math.min(16, 480.0 / Math.max(1, n)));
-        double left = 70;
-        double plotW = 760;
-        double top = 50;
-        Map<String, Integer> colors = new LinkedHashMap<>();
-        List<String> names = new ArrayList<>();
-        for (int e = 0; e < g.legend().size(); e++) {
-            for (int i = 0; i < g.legend().get(e).size(); i++) {
-                GaitDiagram.Instance in = g.legend().get(e).get(i);
-                for (int s = 0; s < in.states().size(); s++) {
-                    String key = e + "/" + i + "/" + s;
-                    String state = in.states().get(s);
-                    String name = state.startsWith(in.automaton() + "[") ? state : in.automaton() + "." + state;
-                    int k = names.indexOf(name);
-                    if (k < 0) {
-                        names.add(name);
-                        k = names.size() - 1;
-                    }
-                    colors.put(key, k);
+        double[] plot = gaitPlot(g);
+        double left = plot[0];
+        double top = plot[1];
+        double plotW = plot[2];
+        double rowH = plot[3];
+        List<String> names = g.stateNames();
+        Map<String, Integer> colourOf = new java.util.HashMap<>();
+        for (int i = 0; i < names.size(); i++) {
+            colourOf.put(names.get(i), i);
+        }
+        // per entry, instance and state: its colour (looked up once, not per segment)
+        int[][][] colour = new int[g.legend().size()][][];
+        for (int e = 0; e < colour.length; e++) {
+            colour[e] = new int[g.legend().get(e).size()][];
+            for (int i = 0; i < colour[e].length; i++) {
+                colour[e][i] = new int[g.legend().get(e).get(i).states().size()];
+                for (int k = 0; k < colour[e][i].length; k++) {
+                    colour[e][i][k] = colourOf.getOrDefault(g.stateName(e, i, k), 0);
                 }
             }
         }
@@ -318,9 +331,11 @@ public final class Layouts {
         sc.add(new Scene.Rect(left, top, plotW, n * rowH, LIGHT, Scene.NONE, 0, null));
         double scale = plotW / g.ticks();
         for (GaitDiagram.Segment s : g.segments()) {
-            int k = colors.getOrDefault(s.entry() + "/" + s.instance() + "/" + s.state(), 0);
+            boolean known = s.entry() >= 0 && s.entry() < colour.length && s.instance() >= 0
+                    && s.instance() < colour[s.entry()].length && s.state() >= 0 && s.state() < colour[s.entry()][s.instance()].length;
+            int k = known ? colour[s.entry()][s.instance()][s.state()] : 0;
             sc.add(new Scene.Rect(left + s.from() * scale, top + s.row() * rowH, (s.to() - s.from()) * scale, rowH,
-                    PALETTE[k % PALETTE.length], Scene.NONE, 0, null));
+                    stateColour(k), Scene.NONE, 0, null));
         }
         int labelEvery = (int) Math.ceil(12 / rowH);
         for (int m = 0; m < n; m += labelEvery) {

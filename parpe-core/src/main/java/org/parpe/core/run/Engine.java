@@ -220,6 +220,36 @@ public final class Engine implements Evaluator {
     }
 
     /**
+     * Which state each module left at the last tick because its exit condition was true
+     * (engine thread; allocates nothing): for the module at index {@code m} of
+     * {@link #moduleIds()}, the state index within the instance {@link #moduleStates} names,
+     * or −1 when it took no exit transition at the last tick (or was not driven).
+     */
+    public void moduleExits(int[] stateOut) {
+        for (int m = 0; m < ids.length; m++) {
+            stateOut[m] = driven[m] && entry >= 0 && entry < plans.length
+                    ? plans[entry].runs[driverOf[m]].exitedFrom[driverPos[m]] : -1;
+        }
+    }
+
+    /**
+     * How far each module is through its state at the last tick (engine thread; allocates
+     * nothing): for the module at index {@code m} of {@link #moduleIds()}, the fraction of the
+     * state {@link #moduleStates} names that it has covered, in [0, 1], or −1 when it was not
+     * driven.
+     */
+    public void moduleProgress(double[] out) {
+        for (int m = 0; m < ids.length; m++) {
+            out[m] = driven[m] && entry >= 0 && entry < plans.length ? plans[entry].runs[driverOf[m]].p[driverPos[m]] : -1;
+        }
+    }
+
+    /** The {@code <main>} entry that ran at the last tick, or −1 before the first (engine thread; allocates nothing). */
+    public int entryIndex() {
+        return entry;
+    }
+
+    /**
      * Runs the next tick (the first call runs tick 0) and emits its setpoints.
      *
      * @return whether the program goes on after this tick

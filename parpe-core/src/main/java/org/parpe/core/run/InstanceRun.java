@@ -49,6 +49,8 @@ final class InstanceRun {
     final double[] cyc;
     final boolean[] fin;
     final double[] out;
+    /** Per module, the state it left at its last advance because that state's exit condition was true, or −1. */
+    final int[] exitedFrom;
 
     private final double[] tBuf;
     private double sumT;
@@ -96,6 +98,8 @@ final class InstanceRun {
         cyc = new double[n];
         fin = new boolean[n];
         out = new double[n];
+        exitedFrom = new int[n];
+        Arrays.fill(exitedFrom, -1);
         tBuf = new double[ns];
     }
 
@@ -123,6 +127,7 @@ final class InstanceRun {
     void init(Evaluator ev, double phase, double offset, double cycles, double[] commanded) {
         started = true;
         limit = cycles;
+        Arrays.fill(exitedFrom, -1);
         if (cycles <= 0) {
             Arrays.fill(fin, true);
             finishedCount = n;
@@ -221,7 +226,9 @@ final class InstanceRun {
         }
         double lim = uk[k] + limit;
         int s = st[k];
+        exitedFrom[k] = -1;
         if (exits[s] != null && ev.eval(exits[s]) != 0) {
+            exitedFrom[k] = s;
             double du = (1 - p[k]) * tBuf[s] / sumT;
             if (u[k] + du >= lim - EPS) {
                 finish(k, commanded[mod[k]]);

@@ -149,6 +149,7 @@ public final class IdeWindow implements HardwareHost {
         diagram = new DiagramPane(viewFolder, editor, files::pathForLoading);
         Panels.tab(viewFolder, "Diagram", diagram.control());
         diagram.follow(runs.controller().live(), runs::running);
+        diagram.breakpoints(runs.controller().breakpoints(), () -> runs.controller().setPaused(false), this::runStateChanged);
         viewFolder.addListener(SWT.Selection, e -> {
             boolean d = viewFolder.getSelection().getControl() == diagram.control();
             right.setWeights(d ? new int[] {84, 4, 12} : new int[] {54, 18, 28});

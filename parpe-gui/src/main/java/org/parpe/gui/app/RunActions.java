@@ -75,7 +75,7 @@ public final class RunActions implements ControlPanel.ControlSink {
         this.controller = new RunController(ide.shell().getDisplay());
     }
 
-    RunController controller() {
+    public RunController controller() {
         return controller;
     }
 

@@ -82,6 +82,7 @@ public final class Bench {
         print("view_fullscreen_width_px", c.getSize().x);
         print("view_fullscreen_height_px", c.getSize().y);
         print("fps_centipede_fullscreen", fps(display, view));
+        LiveDiagramBench.run(display, ide);
         try {
             openLarge(display, ide, home);
         } catch (java.io.IOException e) {

@@ -27,7 +27,7 @@ public record LaunchOptions(Path file, double runFor, Path screenshot, boolean e
             "  --exit            close the IDE when done",
             "  --pose-panel      show the Pose panel with the poses of the gait table the script plays (a recording)",
             "  --grid NAME       show gait table NAME in the grid editor, all of it selected",
-            "  --bench           print window-up time, 3D frame rate (centipede) and opening a 10 MB script as name=value lines, then exit");
+            "  --bench           print window-up time, 3D frame rate (centipede), the live diagrams during a run and opening a 10 MB script as name=value lines, then exit");
 
     /** Whether anything automatic is requested. */
     public boolean automated() {

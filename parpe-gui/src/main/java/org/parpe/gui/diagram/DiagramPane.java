@@ -47,6 +47,7 @@ public final class DiagramPane {
     private final Composite fields;
     private final Label message;
     private final SceneCanvas canvas;
+    private final LiveBar liveBar;
     private final ExecutorService worker = Executors.newSingleThreadExecutor(r -> {
         Thread t = new Thread(r, "parpe-diagram");
         t.setDaemon(true);
@@ -100,6 +101,7 @@ public final class DiagramPane {
         fields.setLayoutData(fd);
         message = new Label(box, SWT.WRAP);
         message.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        liveBar = new LiveBar(box, this);
         canvas = new SceneCanvas(box, this::clicked);
         canvas.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
         showFields();
@@ -196,6 +198,11 @@ public final class DiagramPane {
             selected = null;
         }
         canvas.show(p.scene() == null ? new org.parpe.core.diagram.Scene(1, 1) : p.scene());
+        liveMarks = List.of();
+        liveCounts = null;
+        liveLabels = null;
+        liveProgress = null;
+        liveBar.shown();
         canvas.select(selected);
         message.setText(p.message().isEmpty() && !p.targets().isEmpty()
                 ? "Click a box, an arc or a bar to select its text and edit its values." : p.message());
@@ -297,8 +304,8 @@ public final class DiagramPane {
         }
     }
 
-    /** How often the live overlay looks for new states: 30 frames per second at most. */
-    private static final int LIVE_MS = 33;
+    /** How often the live overlay looks for new states: 40 frames per second at most (the engine publishes up to 50). */
+    private static final int LIVE_MS = 25;
 
     /**
      * Follows runs: while {@code running} holds and the ring or the lanes are shown, each state's
@@ -308,29 +315,158 @@ public final class DiagramPane {
     public void follow(org.parpe.gui.run.LiveStates live, java.util.function.BooleanSupplier running) {
         box.getDisplay().timerExec(LIVE_MS, new Runnable() {
             private long seen = -1;
+            private Projection drawn;
 
             @Override
             public void run() {
+                long started = System.nanoTime();
                 if (box.isDisposed()) {
                     return;
                 }
-                if (box.isVisible() && shown != null && (shown.ring() != null || shown.lanes() != null) && running.getAsBoolean()) {
+                if (drawn != shown) {
+                    // a new drawing: show the last frame again (a run paused at a breakpoint publishes no new one)
+                    drawn = shown;
+                    seen = -1;
+                }
+                if (liveBar.scrubbing()) {
+                    // the trace's frame is shown, not the run's
+                } else if (box.isVisible() && shown != null && (shown.ring() != null || shown.lanes() != null
+                        || shown.gait() != null) && running.getAsBoolean()) {
                     var frame = live.since(seen);
                     if (frame != null && frame.tick() >= 0) {
                         seen = frame.version();
+                        liveWhat = "live";
                         overlay(frame);
                     }
                 } else if (liveCounts != null) {
                     liveCounts = null;
-                    canvas.overlay(List.of());
+                    liveMarks = List.of();
+                    repaintOverlay();
                 }
-                box.getDisplay().timerExec(LIVE_MS, this);
+                // every LIVE_MS from the start of this frame, not after it
+                box.getDisplay().timerExec((int) Math.max(1, LIVE_MS - (System.nanoTime() - started) / 1_000_000), this);
             }
         });
     }
 
     private int[] liveCounts;
     private long liveTick = -1;
+    private String[] liveLabels;
+    private double[] liveProgress;
+    private String liveWhat = "live";
+    private List<org.parpe.core.diagram.Scene.Shape> liveMarks = List.of();
+    private GaitOverlay gaitOverlay;
+
+    /**
+     * The run's breakpoints (set on the ring's states), how to go on from one (Continue), and
+     * whom to tell when the run stops at one or goes on (the tool bar's Pause/Resume).
+     */
+    public void breakpoints(org.parpe.core.run.Breakpoints bp, Runnable resume, Runnable changed) {
+        liveBar.breakpoints(bp, resume, changed);
+    }
+
+    /** Draws the live marks and the breakpoints over the drawing. */
+    void repaintOverlay() {
+        List<org.parpe.core.diagram.Scene.Shape> all = new ArrayList<>(liveMarks);
+        if (shown != null && shown.ring() != null && shown.scene() != null) {
+            all.addAll(liveBar.marks(shown.ring(), shown.scene()));
+        }
+        canvas.overlay(all);
+    }
+
+    /** Shows frame {@code f} as the overlay ({@code what}: "live" or "trace"), or no overlay for {@code null}. */
+    void showFrame(org.parpe.gui.run.LiveStates.Frame f, String what) {
+        if (f == null || shown == null || shown.scene() == null
+                || shown.ring() == null && shown.lanes() == null && shown.gait() == null) {
+            liveCounts = null;
+            liveMarks = List.of();
+            repaintOverlay();
+            return;
+        }
+        liveWhat = what;
+        overlay(f);
+    }
+
+    /** The script of the open text as loaded now, or {@code null} when it does not load. */
+    org.parpe.core.model.Program program() {
+        return org.parpe.gui.editor.Validator.load(file.get(), editor.document().get(), java.util.Map.of()).program();
+    }
+
+    /** Opens the trace {@code csv} for scrubbing through the views (as Open trace… does). */
+    public void scrub(Path csv) {
+        liveBar.scrub(csv);
+    }
+
+    /** Shows tick {@code k} of the trace being scrubbed (as the slider does). */
+    public void scrubTo(int k) {
+        liveBar.scrubTo(k);
+    }
+
+    /** Brings the pane's tab to the front (as a click on it does) and returns the tab's text. */
+    public String showTab() {
+        if (box.getParent() instanceof org.eclipse.swt.custom.CTabFolder folder) {
+            for (org.eclipse.swt.custom.CTabItem item : folder.getItems()) {
+                if (item.getControl() == box) {
+                    folder.setSelection(item);
+                    folder.notifyListeners(SWT.Selection, new org.eclipse.swt.widgets.Event());
+                    return item.getText();
+                }
+            }
+        }
+        return "";
+    }
+
+    /** Shows the view named {@code name} ({@code PROGRAM}, {@code LANES}, {@code RING}, {@code PHASE}, {@code GAIT}). */
+    public void showView(String name) {
+        setView(View.valueOf(name));
+    }
+
+    /** The name of the view drawn, or {@code ""} before the first. */
+    public String viewShown() {
+        return shown == null ? "" : shown.view().name();
+    }
+
+    /**
+     * Draws frame {@code f} as the live overlay and paints it at once (for the benchmark: the time
+     * this takes is what one frame of the overlay costs the UI thread).
+     */
+    public void drawFrame(org.parpe.gui.run.LiveStates.Frame f) {
+        showFrame(f, "live");
+        canvas.control().update();
+    }
+
+    /** How many times the drawing (with its overlay) was painted on screen (for the benchmark). */
+    public long paints() {
+        return canvas.paints();
+    }
+
+    /** The line of the run row: the breakpoint the run is paused at, or the trace's time. */
+    public String liveLine() {
+        return liveBar.line();
+    }
+
+    /** On the ring, per module, how far it is through its state as its dot shows it (−1: not on this ring); {@code null} without a ring overlay. */
+    public double[] liveProgress() {
+        return liveCounts == null || liveProgress == null ? null : liveProgress.clone();
+    }
+
+    /** On the gait diagram, per module, the state its "now" cell shows; {@code null} without a gait overlay. */
+    public String[] liveLabels() {
+        return liveCounts == null || liveLabels == null ? null : liveLabels.clone();
+    }
+
+    /** Marks the gait diagram with the time of {@code f} and each module's state then. */
+    private void gaitOverlay(org.parpe.gui.run.LiveStates.Frame f) {
+        if (gaitOverlay == null || gaitOverlay.gait() != shown.gait()) {
+            gaitOverlay = new GaitOverlay(shown.gait());
+        }
+        liveMarks = gaitOverlay.marks(f, liveWhat);
+        liveCounts = gaitOverlay.counts();
+        liveLabels = gaitOverlay.labels();
+        liveProgress = null;
+        liveTick = f.tick();
+        repaintOverlay();
+    }
 
     /** Marks each bar of the lanes with the modules it drives at {@code f}'s tick. */
     private void lanesOverlay(org.parpe.gui.run.LiveStates.Frame f) {
@@ -347,6 +483,8 @@ public final class DiagramPane {
             }
         }
         liveCounts = counts;
+        liveLabels = null;
+        liveProgress = null;
         liveTick = f.tick();
         List<org.parpe.core.diagram.Scene.Shape> marks = new ArrayList<>();
         for (var s : shown.scene().shapes()) {
@@ -359,16 +497,21 @@ public final class DiagramPane {
                 }
             }
         }
-        marks.add(new org.parpe.core.diagram.Scene.Text(shown.scene().width() - 12, 28, "live: tick " + f.tick()
+        marks.add(new org.parpe.core.diagram.Scene.Text(shown.scene().width() - 12, 28, liveWhat + ": tick " + f.tick()
                 + (f.entry() == lanes.entry() ? " (green: bars driving modules)" : " (another <main> entry is running)"), 11, 1,
                 0x222222, false));
-        canvas.overlay(marks);
+        liveMarks = marks;
+        repaintOverlay();
     }
 
     /** Marks each arc of the ring with the modules in its state at {@code f}'s tick. */
     private void overlay(org.parpe.gui.run.LiveStates.Frame f) {
         if (shown.lanes() != null) {
             lanesOverlay(f);
+            return;
+        }
+        if (shown.gait() != null) {
+            gaitOverlay(f);
             return;
         }
         var ring = shown.ring();
@@ -382,6 +525,7 @@ public final class DiagramPane {
             }
         }
         liveCounts = counts;
+        liveLabels = null;
         liveTick = f.tick();
         List<org.parpe.core.diagram.Scene.Shape> marks = new ArrayList<>();
         for (var s : shown.scene().shapes()) {
@@ -397,9 +541,12 @@ public final class DiagramPane {
                 }
             }
         }
-        marks.add(new org.parpe.core.diagram.Scene.Text(shown.scene().width() - 12, 28, "live: tick " + f.tick()
-                + " (dark band: modules in the state)", 11, 1, 0x222222, false));
-        canvas.overlay(marks);
+        liveProgress = new double[f.instance().length];
+        marks.addAll(RingProgress.marks(ring, shown.scene(), f, automata, liveProgress));
+        marks.add(new org.parpe.core.diagram.Scene.Text(shown.scene().width() - 12, 28, liveWhat + ": tick " + f.tick()
+                + " (dark band: modules in the state; dots: each module's progress)", 11, 1, 0x222222, false));
+        liveMarks = marks;
+        repaintOverlay();
     }
 
     /**
@@ -514,6 +661,7 @@ public final class DiagramPane {
             field.addListener(SWT.DefaultSelection, e -> write(f, field.getText()));
         }
         fields.layout(true);
+        liveBar.update();
         box.layout(true, true);
     }
 

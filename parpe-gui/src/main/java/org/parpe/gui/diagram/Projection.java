@@ -12,6 +12,7 @@ import org.parpe.core.diag.SourcePos;
 import org.parpe.core.diagram.DiagramEdits;
 import org.parpe.core.diagram.Diagrams;
 import org.parpe.core.diagram.Gait;
+import org.parpe.core.diagram.GaitDiagram;
 import org.parpe.core.diagram.Layouts;
 import org.parpe.core.diagram.PhaseWheel;
 import org.parpe.core.diagram.ProgramLane;
@@ -48,10 +49,18 @@ import org.parpe.gui.editor.Validator;
  * @param automata per {@code <main>} entry, the automaton of each instance of its behavior in
  *                 document order (how the engine numbers them), for the live overlay
  * @param lanes    the swimlanes drawn (the live overlay marks the bars driving modules), or {@code null}
+ * @param gait     the gait diagram drawn (the live overlay marks the time and each module's state now), or {@code null}
  */
 record Projection(String text, Path file, View view, List<String> subjects, String subject, Scene scene,
                   Map<SourcePos, Target> targets, String message, PhaseWheel wheel, Ring ring,
-                  List<List<String>> automata, Swimlanes lanes) {
+                  List<List<String>> automata, Swimlanes lanes, GaitDiagram gait) {
+
+    /** A projection without a gait diagram. */
+    Projection(String text, Path file, View view, List<String> subjects, String subject, Scene scene,
+               Map<SourcePos, Target> targets, String message, PhaseWheel wheel, Ring ring,
+               List<List<String>> automata, Swimlanes lanes) {
+        this(text, file, view, subjects, subject, scene, targets, message, wheel, ring, automata, lanes, null);
+    }
 
     /** A projection without a wheel or ring. */
     Projection(String text, Path file, View view, List<String> subjects, String subject, Scene scene,
@@ -117,12 +126,17 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
                 case LANES -> lanes(text, file, p, subject, targets);
                 case RING -> ring(text, file, p, subject, targets);
                 case PHASE -> phase(text, file, p, subject, targets);
-                case GAIT -> new Projection(text, file, view, List.of(), null,
-                        Layouts.gait(Gait.record(p, new RunOptions(GAIT_TICK, 0, List.of()), GAIT_SECONDS)), targets, "");
+                case GAIT -> gait(text, file, p, targets);
             };
         } catch (ScriptRuntimeError e) {
             return new Projection(text, file, view, List.of(), null, null, Map.of(), e.diagnostic().format());
         }
+    }
+
+    private static Projection gait(String text, Path file, Program p, Map<SourcePos, Target> targets) {
+        GaitDiagram g = Gait.record(p, new RunOptions(GAIT_TICK, 0, List.of()), GAIT_SECONDS);
+        return new Projection(text, file, View.GAIT, List.of(), null, Layouts.gait(g), targets, "", null, null, List.of(),
+                null, g);
     }
 
     private static boolean mine(SourcePos pos, Path file) {

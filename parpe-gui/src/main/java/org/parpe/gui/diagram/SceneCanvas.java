@@ -31,6 +31,9 @@ final class SceneCanvas {
     private Scene scene = new Scene(1, 1);
     private SourcePos selected;
     private List<Scene.Shape> overlay = List.of();
+    private long paints;
+    /** The scene and the selection drawn once, so that a frame of the live overlay draws only the overlay over it. */
+    private org.eclipse.swt.graphics.Image cache;
 
     /** A canvas in {@code parent}; {@code clicked} learns the place under a left click (or {@code null}). */
     SceneCanvas(Composite parent, Consumer<SourcePos> clicked) {
@@ -42,8 +45,12 @@ final class SceneCanvas {
                 clicked.accept(hit(p[0], p[1]));
             }
         });
-        canvas.addListener(SWT.Resize, e -> canvas.redraw());
+        canvas.addListener(SWT.Resize, e -> {
+            dropCache();
+            canvas.redraw();
+        });
         canvas.addListener(SWT.Dispose, e -> {
+            dropCache();
             colors.values().forEach(Color::dispose);
             fonts.values().forEach(Font::dispose);
         });
@@ -57,6 +64,7 @@ final class SceneCanvas {
     void show(Scene s) {
         scene = s;
         overlay = List.of();
+        dropCache();
         canvas.redraw();
     }
 
@@ -93,6 +101,7 @@ final class SceneCanvas {
     /** Outlines the shapes of {@code node} ({@code null}: none). */
     void select(SourcePos node) {
         selected = node;
+        dropCache();
         canvas.redraw();
     }
 
@@ -144,29 +153,59 @@ final class SceneCanvas {
         return f >= c.from() && f <= c.to();
     }
 
+    /** How many times the canvas was painted (for the benchmark). */
+    long paints() {
+        return paints;
+    }
+
+    private void dropCache() {
+        if (cache != null) {
+            cache.dispose();
+            cache = null;
+        }
+    }
+
     private void paint(GC gc) {
+        paints++;
+        org.eclipse.swt.graphics.Rectangle area = canvas.getClientArea();
+        if (area.width <= 0 || area.height <= 0) {
+            return;
+        }
+        if (cache == null) {
+            cache = new org.eclipse.swt.graphics.Image(canvas.getDisplay(), area.width, area.height);
+            GC image = new GC(cache);
+            try {
+                image.setBackground(color(0xffffff));
+                image.fillRectangle(0, 0, area.width, area.height);
+                transformed(image, g -> {
+                    draw(g, scene.shapes());
+                    outline(g);
+                });
+            } finally {
+                image.dispose();
+            }
+        }
+        gc.drawImage(cache, 0, 0);
+        if (!overlay.isEmpty()) {
+            transformed(gc, g -> draw(g, overlay));
+        }
+    }
+
+    /** Runs {@code draw} on {@code gc} in scene units (the scene fitted in and centred), antialiased. */
+    private void transformed(GC gc, Consumer<GC> draw) {
         gc.setAdvanced(true);
         gc.setAntialias(SWT.ON);
         gc.setTextAntialias(SWT.ON);
-        gc.setBackground(color(0xffffff));
-        org.eclipse.swt.graphics.Rectangle area = canvas.getClientArea();
-        gc.fillRectangle(area);
         double[] f = fit();
         org.eclipse.swt.graphics.Transform t = new org.eclipse.swt.graphics.Transform(canvas.getDisplay(),
                 (float) f[0], 0, 0, (float) f[0], (float) f[1], (float) f[2]);
         try {
             gc.setTransform(t);
-            shapes(gc);
+            draw.accept(gc);
         } finally {
             gc.setTransform(null);
             t.dispose();
         }
-    }
-
-    private void shapes(GC gc) {
-        draw(gc, scene.shapes());
-        draw(gc, overlay);
-        outline(gc);
     }
 
     private void draw(GC gc, List<Scene.Shape> shapes) {

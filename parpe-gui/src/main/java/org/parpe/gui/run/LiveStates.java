@@ -14,6 +14,8 @@ public final class LiveStates {
     private int[] state = new int[0];
     private int[] engineInstance = new int[0];
     private int[] engineState = new int[0];
+    private double[] progress = new double[0];
+    private double[] engineProgress = new double[0];
     private int entry = -1;
     private long tick = -1;
     private long published;
@@ -26,6 +28,9 @@ public final class LiveStates {
         state = new int[n];
         engineInstance = new int[n];
         engineState = new int[n];
+        progress = new double[n];
+        engineProgress = new double[n];
+        java.util.Arrays.fill(progress, -1);
         java.util.Arrays.fill(instance, -1);
         java.util.Arrays.fill(state, -1);
         entry = -1;
@@ -36,7 +41,9 @@ public final class LiveStates {
     /** Publishes the states of the last tick (engine thread). */
     void publish(Engine e, long atTick, int atEntry) {
         e.moduleStates(engineInstance, engineState);
+        e.moduleProgress(engineProgress);
         synchronized (this) {
+            System.arraycopy(engineProgress, 0, progress, 0, progress.length);
             System.arraycopy(engineInstance, 0, instance, 0, instance.length);
             System.arraycopy(engineState, 0, state, 0, state.length);
             entry = atEntry;
@@ -53,7 +60,7 @@ public final class LiveStates {
         if (published == seen) {
             return null;
         }
-        return new Frame(published, tick, entry, ids, instance.clone(), state.clone());
+        return new Frame(published, tick, entry, ids, instance.clone(), state.clone(), progress.clone());
     }
 
     /**
@@ -65,7 +72,8 @@ public final class LiveStates {
      * @param ids      the module IDs, by index
      * @param instance per module, the instance (document position in the entry's behavior) that drove it, or −1
      * @param state    per module, that instance's state index, or −1
+     * @param progress per module, how far it is through that state, in [0, 1], or −1
      */
-    public record Frame(long version, long tick, int entry, int[] ids, int[] instance, int[] state) {
+    public record Frame(long version, long tick, int entry, int[] ids, int[] instance, int[] state, double[] progress) {
     }
 }

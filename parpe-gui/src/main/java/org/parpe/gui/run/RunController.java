@@ -2,6 +2,7 @@ package org.parpe.gui.run;
 
 import java.util.function.Consumer;
 import org.eclipse.swt.widgets.Display;
+import org.parpe.core.run.Breakpoints;
 import org.parpe.core.run.Engine;
 import org.parpe.core.run.EngineStatus;
 import org.parpe.core.run.JointSink;
@@ -26,9 +27,11 @@ public final class RunController {
     private volatile Speed speed = Speed.REAL_TIME;
     private volatile EngineStatus status;
     private final LiveStates live = new LiveStates();
+    private final Breakpoints breakpoints = new Breakpoints();
     private volatile Thread thread;
     private volatile Engine engine;
     private volatile boolean hardwarePaced;
+    private volatile JointSink extraObserver;
 
     public RunController(Display display) {
         this.display = display;
@@ -69,6 +72,8 @@ public final class RunController {
         pacer.setPaused(false);
         Thread t = new Thread(() -> {
             RunOutcome outcome = assembleAndRun(run, setup, runFor, onCrash);
+            // a run stopped while paused at a breakpoint is no longer there
+            breakpoints.clearHit();
             try {
                 if (!display.isDisposed()) {
                     display.asyncExec(() -> onEnd.accept(outcome));
@@ -102,6 +107,16 @@ public final class RunController {
         applySpeed();
         builder.pacer(pacer);
         builder.observer(new StatusPublisher(e));
+        JointSink extra = extraObserver;
+        if (extra != null) {
+            builder.observer(extra);
+        }
+        builder.observer(breakpoints.watch(e, () -> {
+            // the views show the tick the run stopped at, not the last one published
+            status = e.status();
+            live.publish(e, e.tick(), e.entryIndex());
+            pacer.setPaused(true);
+        }));
         Run run = builder.build();
         try {
             RunOutcome outcome = run.execute();
@@ -161,9 +176,22 @@ public final class RunController {
         }
     }
 
-    /** Pauses or resumes the run. */
+    /** Pauses or resumes the run (resuming also goes on from a breakpoint reached). */
     public void setPaused(boolean p) {
+        if (!p) {
+            breakpoints.clearHit();
+        }
         pacer.setPaused(p);
+    }
+
+    /** Adds {@code o} as an observer of the following runs ({@code null}: none); for the benchmark. */
+    public void observeRuns(JointSink o) {
+        extraObserver = o;
+    }
+
+    /** The diagrams' breakpoints; a run pauses at the tick one is reached. */
+    public Breakpoints breakpoints() {
+        return breakpoints;
     }
 
     public boolean paused() {

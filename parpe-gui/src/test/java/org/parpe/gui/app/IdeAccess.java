@@ -151,4 +151,9 @@ public final class IdeAccess {
     public static void robot(IdeWindow ide, String name) {
         ide.viewBar().select(name);
     }
+
+    /** The IDE's run controller (its breakpoints, its pause, the engine of the run). */
+    public static org.parpe.gui.run.RunController controller(IdeWindow ide) {
+        return ide.runs().controller();
+    }
 }

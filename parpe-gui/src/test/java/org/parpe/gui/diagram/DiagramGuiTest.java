@@ -8,8 +8,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import org.eclipse.jface.text.ITextOperationTarget;
 import org.eclipse.swt.SWT;
-import org.eclipse.swt.custom.CTabFolder;
-import org.eclipse.swt.custom.CTabItem;
 import org.eclipse.swt.graphics.Point;
 import org.eclipse.swt.widgets.Event;
 import org.eclipse.swt.widgets.Text;
@@ -20,7 +18,6 @@ import org.junit.jupiter.api.Test;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.gui.app.IdeAccess;
 import org.parpe.gui.app.IdeWindow;
-import org.parpe.gui.automation.Screenshot;
 import org.parpe.gui.diagram.Projection.View;
 
 /**
@@ -41,22 +38,10 @@ class DiagramGuiTest {
     @BeforeAll
     static void openWindow() throws Exception {
         home = Files.createTempDirectory("parpe-diagram-test");
-        Path example = Path.of(System.getProperty("parpe.examples", "../examples"), "centipede-walk.xml");
-        copy = Files.createDirectories(home.resolve("scripts")).resolve("centipede-walk.xml");
-        Files.copy(example, copy);
+        DiagramWindow.Opened o = DiagramWindow.open(home);
+        ide = o.ide();
+        copy = o.copy();
         original = Files.readString(copy);
-        ide = IdeAccess.openIde(home);
-        ide.shell().setSize(1366, 768);
-        IdeAccess.open(ide, copy);
-        CTabFolder folder = (CTabFolder) pane().control().getParent();
-        for (CTabItem item : folder.getItems()) {
-            if (item.getControl() == pane().control()) {
-                folder.setSelection(item);
-                folder.notifyListeners(SWT.Selection, new Event());
-                assertEquals("Diagram", item.getText());
-            }
-        }
-        IdeAccess.pump(() -> pane().current(), "the first diagram");
     }
 
     @AfterAll
@@ -78,13 +63,7 @@ class DiagramGuiTest {
     }
 
     private static void show(View v, String subject) {
-        if (subject == null) {
-            pane().setView(v);
-        } else {
-            pane().setView(v, subject);
-        }
-        IdeAccess.pump(() -> pane().current() && pane().shown().view() == v
-                && (subject == null || subject.equals(pane().shown().subject())), v + " view of the text");
+        DiagramWindow.show(ide, v, subject);
     }
 
     /** A left click on the canvas where {@code node} is drawn, as the mouse sends it. */
@@ -143,16 +122,7 @@ class DiagramGuiTest {
     }
 
     private static void picture(View v) throws Exception {
-        // no blinking caret in the editor: the same picture on every run
-        pane().canvas().setFocus();
-        IdeAccess.settle();
-        Path dir = Path.of(System.getProperty("parpe.ideImages", "../docs/images/ide"));
-        Files.createDirectories(dir);
-        Path png = dir.resolve("diagram-" + v.name().toLowerCase(java.util.Locale.ROOT) + ".png");
-        Screenshot.save(ide.shell(), png);
-        var d = new org.eclipse.swt.graphics.ImageLoader().load(png.toString())[0];
-        assertEquals(1366, d.width, "picture width");
-        assertTrue(Screenshot.distinctColours(d, 64) >= 64, png + " looks blank");
+        DiagramWindow.picture(ide, "diagram-" + v.name().toLowerCase(java.util.Locale.ROOT) + ".png");
     }
 
     @Test
@@ -297,49 +267,31 @@ class DiagramGuiTest {
      */
     private static void live(View view, String subject) throws Exception {
         show(view, subject);
-        assertEquals(null, pane().liveCounts(), "no overlay while nothing runs");
-        java.util.concurrent.atomic.AtomicReference<org.parpe.core.run.RunOutcome> end = new java.util.concurrent.atomic.AtomicReference<>();
-        IdeAccess.run(ide, org.parpe.gui.run.RunOn.SIMULATOR, 600, end::set);
-        try {
-            long last = -1;
-            for (int frame = 0; frame < 10; frame++) {
-                long after = last;
-                IdeAccess.pump(() -> pane().liveCounts() != null && pane().liveTick() > Math.max(0, after) || end.get() != null,
-                        "a new frame of the live overlay");
-                assertEquals(null, end.get(), "the run ended early");
-                long tick = pane().liveTick();
-                int[] counts = pane().liveCounts();
-                assertTrue(tick > 0, "a published tick");
-                // The same program's engine, run headless to that tick: which state is each leg's lift in?
-                org.parpe.core.run.Engine e = new org.parpe.core.run.Engine(ide.program(), org.parpe.core.run.RunOptions.defaults());
-                e.start();
-                while (e.tick() < tick) {
-                    e.step();
-                }
-                int n = e.moduleIds().length;
-                int[] inst = new int[n];
-                int[] state = new int[n];
-                e.moduleStates(inst, state);
-                int[] expected = new int[view == View.RING ? 3 : 4];
-                for (int m = 0; m < n; m++) {
-                    if (view == View.LANES && inst[m] >= 0) {
-                        expected[inst[m]]++;
-                    } else if (inst[m] == 2 || inst[m] == 3) {
-                        // instances 2 and 3 of walk run "step" (on leftLift and rightLift)
-                        expected[state[m]]++;
-                    }
-                }
-                assertEquals(view == View.RING ? 14 : 28, java.util.Arrays.stream(expected).sum(),
-                        view == View.RING ? "the 14 lift modules run step" : "the 28 leg modules are driven");
-                assertEquals(java.util.Arrays.toString(expected), java.util.Arrays.toString(counts), "modules per state at tick " + tick);
-                last = tick;
+        DiagramWindow.tenFrames(ide, () -> pane().liveCounts() != null, tick -> {
+            int[] counts = pane().liveCounts();
+            // The same program's engine, run headless to that tick: which state is each leg's lift in?
+            org.parpe.core.run.Engine e = new org.parpe.core.run.Engine(ide.program(), org.parpe.core.run.RunOptions.defaults());
+            e.start();
+            while (e.tick() < tick) {
+                e.step();
             }
-            // evidence (not a doc picture: it changes from run to run)
-            IdeAccess.screenshot(ide.shell(), "diagram-live-" + view.name().toLowerCase(java.util.Locale.ROOT) + ".png");
-        } finally {
-            IdeAccess.endRun(ide);
-        }
-        IdeAccess.pump(() -> pane().liveCounts() == null, "the overlay to go when the run ends");
+            int n = e.moduleIds().length;
+            int[] inst = new int[n];
+            int[] state = new int[n];
+            e.moduleStates(inst, state);
+            int[] expected = new int[view == View.RING ? 3 : 4];
+            for (int m = 0; m < n; m++) {
+                if (view == View.LANES && inst[m] >= 0) {
+                    expected[inst[m]]++;
+                } else if (inst[m] == 2 || inst[m] == 3) {
+                    // instances 2 and 3 of walk run "step" (on leftLift and rightLift)
+                    expected[state[m]]++;
+                }
+            }
+            assertEquals(view == View.RING ? 14 : 28, java.util.Arrays.stream(expected).sum(),
+                    view == View.RING ? "the 14 lift modules run step" : "the 28 leg modules are driven");
+            assertEquals(java.util.Arrays.toString(expected), java.util.Arrays.toString(counts), "modules per state at tick " + tick);
+        }, "diagram-live-" + view.name().toLowerCase(java.util.Locale.ROOT) + ".png");
     }
 
     @Test

@@ -1,0 +1,264 @@
+package org.parpe.gui.diagram;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.layout.GridData;
+import org.eclipse.swt.layout.RowData;
+import org.eclipse.swt.layout.RowLayout;
+import org.eclipse.swt.widgets.Button;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.FileDialog;
+import org.eclipse.swt.widgets.Label;
+import org.eclipse.swt.widgets.Scale;
+import org.parpe.core.diag.SourcePos;
+import org.parpe.core.diagram.Ring;
+import org.parpe.core.diagram.Scene;
+import org.parpe.core.model.Program;
+import org.parpe.core.run.Breakpoints;
+
+/**
+ * The Diagram pane's row for runs: breakpoints on the selected state of the ring (on entering
+ * it, on its exit condition becoming true), Continue and what stopped the run, and a recorded
+ * trace scrubbed with a slider through the same overlay as a live run. UI thread only.
+ */
+final class LiveBar {
+    private static final int RED = 0xcc0000;
+
+    private final DiagramPane pane;
+    private final Composite row;
+    private final Button onEnter;
+    private final Button onExit;
+    private final Button resume;
+    private final Button openTrace;
+    private final Scale slider;
+    private final Label says;
+    private Breakpoints breakpoints;
+    private Runnable goOn = () -> { };
+    private Runnable changed = () -> { };
+    private Breakpoints.Hit shownHit;
+    private TraceScrubber trace;
+
+    LiveBar(Composite parent, DiagramPane pane) {
+        this.pane = pane;
+        row = new Composite(parent, SWT.NONE);
+        RowLayout rl = new RowLayout(SWT.HORIZONTAL);
+        rl.center = true;
+        row.setLayout(rl);
+        row.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        onEnter = button("Break on entering", "Pause a run when a module enters the selected state (click its arc first)");
+        onEnter.addListener(SWT.Selection, e -> toggle(Breakpoints.Kind.ENTER));
+        onExit = button("Break on its exit", "Pause a run when the selected state's exit condition becomes true");
+        onExit.addListener(SWT.Selection, e -> toggle(Breakpoints.Kind.EXIT));
+        resume = button("Continue", "Go on from the breakpoint (as Resume)");
+        resume.addListener(SWT.Selection, e -> goOn.run());
+        openTrace = button("Open trace…", "Scrub through a trace recorded with parpe run --trace FILE.csv");
+        openTrace.addListener(SWT.Selection, e -> chooseTrace());
+        slider = new Scale(row, SWT.HORIZONTAL);
+        slider.setLayoutData(new RowData(260, SWT.DEFAULT));
+        slider.addListener(SWT.Selection, e -> scrubTo(slider.getSelection()));
+        says = new Label(row, SWT.NONE);
+        says.setLayoutData(new RowData(520, SWT.DEFAULT));
+        update();
+        row.getDisplay().timerExec(100, new Runnable() {
+            @Override
+            public void run() {
+                if (row.isDisposed()) {
+                    return;
+                }
+                Breakpoints.Hit h = breakpoints == null ? null : breakpoints.hit();
+                if (h != shownHit) {
+                    shownHit = h;
+                    update();
+                    pane.repaintOverlay();
+                    changed.run();
+                }
+                row.getDisplay().timerExec(100, this);
+            }
+        });
+    }
+
+    private Button button(String text, String tip) {
+        Button b = new Button(row, SWT.PUSH);
+        b.setText(text);
+        b.setToolTipText(tip);
+        return b;
+    }
+
+    /** The run's breakpoints, how to go on from one, and whom to tell when the run stops at one or goes on. */
+    void breakpoints(Breakpoints bp, Runnable resume, Runnable onChange) {
+        breakpoints = bp;
+        goOn = resume;
+        changed = onChange;
+        update();
+    }
+
+    /** The ring arc selected, or {@code null}. */
+    private Ring.Arc arc() {
+        Projection p = pane.shown();
+        SourcePos s = pane.selected();
+        if (p == null || p.ring() == null || s == null) {
+            return null;
+        }
+        for (Ring.Arc a : p.ring().arcs()) {
+            if (s.equals(a.pos())) {
+                return a;
+            }
+        }
+        return null;
+    }
+
+    private void toggle(Breakpoints.Kind kind) {
+        Ring.Arc a = arc();
+        if (breakpoints == null || a == null) {
+            return;
+        }
+        breakpoints.toggle(new Breakpoints.Point(pane.shown().ring().automaton(), a.index(), kind));
+        update();
+        pane.repaintOverlay();
+    }
+
+    /** The buttons and the line again, after a selection, a new view, a hit or a trace. */
+    void update() {
+        if (row.isDisposed()) {
+            return;
+        }
+        Ring.Arc a = arc();
+        String automaton = a == null ? null : pane.shown().ring().automaton();
+        onEnter.setEnabled(breakpoints != null && a != null);
+        onExit.setEnabled(breakpoints != null && a != null && a.exit() != null);
+        onEnter.setText(a != null && breakpoints != null
+                && breakpoints.has(new Breakpoints.Point(automaton, a.index(), Breakpoints.Kind.ENTER))
+                ? "Clear break on entering" : "Break on entering");
+        onExit.setText(a != null && a.exit() != null && breakpoints != null
+                && breakpoints.has(new Breakpoints.Point(automaton, a.index(), Breakpoints.Kind.EXIT))
+                ? "Clear break on its exit" : "Break on its exit");
+        resume.setEnabled(shownHit != null);
+        slider.setVisible(trace != null);
+        ((RowData) slider.getLayoutData()).exclude = trace == null;
+        if (shownHit != null) {
+            says.setText("Paused: " + shownHit.describe() + ". Continue goes on.");
+        } else if (trace != null) {
+            int k = slider.getSelection();
+            says.setText(trace.file().getFileName() + ": t = " + org.parpe.core.lang.Numbers.format(trace.time(k)) + " s (tick " + k
+                    + " of " + (trace.ticks() - 1) + ")" + (Double.isNaN(trace.differsFrom()) ? ""
+                    : "; from t = " + org.parpe.core.lang.Numbers.format(trace.differsFrom())
+                    + " s its angles differ from this script's: the states are the script's"));
+        } else {
+            says.setText(a != null ? "" : "Select a state on the ring to break on it.");
+        }
+        onEnter.pack();
+        onExit.pack();
+        row.layout(true, true);
+    }
+
+    /** A new drawing is shown: the buttons for its selection, and the trace's frame on it. */
+    void shown() {
+        update();
+        if (trace != null) {
+            pane.showFrame(trace.frame(slider.getSelection()), "trace");
+        } else {
+            pane.repaintOverlay();
+        }
+    }
+
+    /** The line: the breakpoint the run is paused at, the trace's time, or a hint. */
+    String line() {
+        return says.getText();
+    }
+
+    /** Whether a trace is being scrubbed (the overlay shows it, not the run). */
+    boolean scrubbing() {
+        return trace != null;
+    }
+
+    private void chooseTrace() {
+        if (trace != null) {
+            stopScrubbing();
+            return;
+        }
+        FileDialog d = new FileDialog(row.getShell(), SWT.OPEN);
+        d.setFilterExtensions(new String[] {"*.csv", "*"});
+        d.setText("Open a trace (parpe run --trace FILE.csv) to scrub through");
+        String chosen = d.open();
+        if (chosen != null) {
+            scrub(Path.of(chosen));
+        }
+    }
+
+    /** Opens {@code csv} for scrubbing; a trace that cannot be used is told on the line. */
+    void scrub(Path csv) {
+        Program p = pane.program();
+        if (p == null) {
+            says.setText("The script does not load; a trace is scrubbed through its script.");
+            return;
+        }
+        try {
+            trace = TraceScrubber.load(p, csv);
+        } catch (java.io.IOException e) {
+            says.setText("Cannot read " + csv + ": " + e.getMessage());
+            return;
+        } catch (IllegalArgumentException e) {
+            says.setText(e.getMessage());
+            return;
+        }
+        slider.setMinimum(0);
+        slider.setMaximum(Math.max(1, trace.ticks() - 1));
+        slider.setPageIncrement(Math.max(1, trace.ticks() / 20));
+        slider.setSelection(0);
+        openTrace.setText("Close trace");
+        update();
+        scrubTo(0);
+    }
+
+    /** Shows tick {@code k} of the trace. */
+    void scrubTo(int k) {
+        if (trace == null) {
+            return;
+        }
+        int t = Math.max(0, Math.min(trace.ticks() - 1, k));
+        slider.setSelection(t);
+        update();
+        pane.showFrame(trace.frame(t), "trace");
+    }
+
+    private void stopScrubbing() {
+        trace = null;
+        openTrace.setText("Open trace…");
+        update();
+        pane.showFrame(null, null);
+    }
+
+    /** The breakpoints drawn on ring {@code r}: a red dot at each state's start, a red ring while it is hit. */
+    List<Scene.Shape> marks(Ring r, Scene scene) {
+        List<Scene.Shape> marks = new ArrayList<>();
+        if (breakpoints == null || r == null) {
+            return marks;
+        }
+        for (Scene.Shape s : scene.shapes()) {
+            if (!(s instanceof Scene.Sector c) || c.source() == null) {
+                continue;
+            }
+            for (Ring.Arc a : r.arcs()) {
+                if (!c.source().equals(a.pos())) {
+                    continue;
+                }
+                for (Breakpoints.Kind kind : Breakpoints.Kind.values()) {
+                    Breakpoints.Point pt = new Breakpoints.Point(r.automaton(), a.index(), kind);
+                    if (breakpoints.has(pt)) {
+                        // entering: at the arc's start; exit: at its end, where the edge leaves it
+                        double[] at = Scene.onCircle(c.cx(), c.cy(), c.r1() + 18, kind == Breakpoints.Kind.ENTER
+                                ? c.from() + 0.01 : c.to() - 0.01);
+                        marks.add(new Scene.Sector(at[0], at[1], 0, 7, 0, 1, RED, 0xffffff, null));
+                    }
+                    if (shownHit != null && shownHit.point().equals(pt)) {
+                        marks.add(new Scene.Sector(c.cx(), c.cy(), c.r1() + 10, c.r1() + 13, c.from(), c.to(), RED,
+                                Scene.NONE, null));
+                    }
+                }
+            }
+        }
+        return marks;
+    }
+}
