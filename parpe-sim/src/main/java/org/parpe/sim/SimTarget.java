@@ -93,15 +93,14 @@ public final class SimTarget implements RunTarget {
     public static Blueprint blueprint(String spec, int[] moduleIds, World world) throws TargetException {
         DiagnosticList found = new DiagnosticList();
         RobotConfig config = RobotConfigs.resolve(spec, moduleIds, found);
-        if (config != null) {
-            RobotConfigs.checkModules(config, moduleIds, found);
-        }
-        if (config == null) {
+        Assembly assembly = config == null ? null : Assembly.build(config, found);
+        if (assembly == null) {
             long n = found.errorCount();
             throw new TargetException("cannot build the simulated robot '" + spec + "' (" + n + " error"
                     + (n == 1 ? "" : "s") + ")", found.all());
         }
-        return new Blueprint(config, Simulator.assemble(config), world, List.copyOf(found.all()));
+        RobotConfigs.checkModules(config, moduleIds, found);
+        return new Blueprint(config, assembly, world, List.copyOf(found.all()));
     }
 
     /**

@@ -191,25 +191,51 @@ final class Nodes {
         }
     }
 
-    /** {@code &&} and {@code ||}, short-circuiting. */
-    static final class Logic extends Node {
-        final boolean and;
+    /** {@code &&} and {@code ||}, short-circuiting: one class each, so neither tests which it is per call. */
+    abstract static class Logic extends Node {
         final Node left;
         final Node right;
 
-        Logic(boolean and, Node left, Node right) {
-            this.and = and;
+        Logic(Node left, Node right) {
             this.left = left;
             this.right = right;
         }
 
+        /** Whether this is {@code &&}. */
+        abstract boolean and();
+    }
+
+    /** {@code &&}: 1 when both sides are non-zero, the right side evaluated only when the left is. */
+    static final class And extends Logic {
+        And(Node left, Node right) {
+            super(left, right);
+        }
+
+        @Override
+        boolean and() {
+            return true;
+        }
+
         @Override
         public double eval(EvalContext c) {
-            boolean a = left.eval(c) != 0;
-            if (and) {
-                return a && right.eval(c) != 0 ? 1 : 0;
-            }
-            return a || right.eval(c) != 0 ? 1 : 0;
+            return left.eval(c) != 0 && right.eval(c) != 0 ? 1 : 0;
+        }
+    }
+
+    /** {@code ||}: 1 when either side is non-zero, the right side evaluated only when the left is zero. */
+    static final class Or extends Logic {
+        Or(Node left, Node right) {
+            super(left, right);
+        }
+
+        @Override
+        boolean and() {
+            return false;
+        }
+
+        @Override
+        public double eval(EvalContext c) {
+            return left.eval(c) != 0 || right.eval(c) != 0 ? 1 : 0;
         }
     }
 
