@@ -10,6 +10,7 @@ import org.parpe.core.model.Group;
 import org.parpe.core.model.Program;
 import org.parpe.core.run.Run;
 import org.parpe.core.run.RunTarget;
+import org.parpe.core.run.SourceKind;
 import org.parpe.core.run.TargetException;
 import org.parpe.sim.config.RobotConfig;
 import org.parpe.sim.config.RobotConfigs;
@@ -19,13 +20,11 @@ import org.parpe.sim.world.World;
 /**
  * The physics simulator as a run target: builds the robot named by a specification
  * ({@code GENERATOR[:key=value,...]} or a configuration file), warns about script modules the
- * robot lacks, and adds the simulator as a plant, a sensor source (priority {@value #PRIORITY},
+ * robot lacks, and adds the simulator as a plant, a sensor source ({@link SourceKind#SIMULATOR},
  * below hardware) and trace columns {@code a<ID>}, {@code com_*}. Used by the command line's
  * {@code --sim} and the IDE's Simulator target alike.
  */
 public final class SimTarget implements RunTarget {
-    /** Priority of the simulator as a sensor source (hardware has 10). */
-    public static final int PRIORITY = 5;
     /** The choice that guesses the robot from the script ({@link #autoSpec}). */
     public static final String AUTO = "auto";
 
@@ -51,7 +50,7 @@ public final class SimTarget implements RunTarget {
         Simulator s = create(resolved, program.moduleIds(), run.diagnostics(), world);
         run.closeAtEnd(s);
         run.plant(s);
-        run.sensorSource("sim", s, PRIORITY);
+        run.sensorSource(SourceKind.SIMULATOR, s);
         run.traceColumns(s.traceColumns());
         simulator = s;
     }

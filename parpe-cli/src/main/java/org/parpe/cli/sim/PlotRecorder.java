@@ -2,6 +2,7 @@ package org.parpe.cli.sim;
 
 import java.util.Arrays;
 import org.parpe.core.run.JointSink;
+import org.parpe.core.run.SourceKind;
 import org.parpe.core.run.TraceColumns;
 import org.parpe.sim.Simulator;
 
@@ -40,7 +41,7 @@ final class PlotRecorder implements JointSink {
         String[] names = columns.names();
         row = new double[names.length];
         for (int i = 0; i < ids.length; i++) {
-            measuredColumn[i] = Arrays.asList(names).indexOf("a" + ids[i]);
+            measuredColumn[i] = Arrays.asList(names).indexOf(SourceKind.SIMULATOR.column(ids[i]));
         }
     }
 
