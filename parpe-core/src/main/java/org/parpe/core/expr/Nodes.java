@@ -191,29 +191,18 @@ final class Nodes {
         }
     }
 
-    /** {@code &&} and {@code ||}, short-circuiting: one class each, so neither tests which it is per call. */
-    abstract static class Logic extends Node {
+    /**
+     * {@code &&}, short-circuiting: 1 when both sides are non-zero, the right side evaluated only
+     * when the left is non-zero. {@link Or} shares its two sides; neither tests per call which
+     * operator it is.
+     */
+    static class And extends Node {
         final Node left;
         final Node right;
 
-        Logic(Node left, Node right) {
+        And(Node left, Node right) {
             this.left = left;
             this.right = right;
-        }
-
-        /** Whether this is {@code &&}. */
-        abstract boolean and();
-    }
-
-    /** {@code &&}: 1 when both sides are non-zero, the right side evaluated only when the left is. */
-    static final class And extends Logic {
-        And(Node left, Node right) {
-            super(left, right);
-        }
-
-        @Override
-        boolean and() {
-            return true;
         }
 
         @Override
@@ -222,15 +211,10 @@ final class Nodes {
         }
     }
 
-    /** {@code ||}: 1 when either side is non-zero, the right side evaluated only when the left is zero. */
-    static final class Or extends Logic {
+    /** {@code ||}, short-circuiting: 1 when either side is non-zero, the right side evaluated only when the left is zero. */
+    static final class Or extends And {
         Or(Node left, Node right) {
             super(left, right);
-        }
-
-        @Override
-        boolean and() {
-            return false;
         }
 
         @Override

@@ -7,25 +7,24 @@ package org.parpe.core.run;
  */
 public enum SourceKind {
     /** The simulator: read when no hardware is attached; measured angles in columns {@code a<ID>}. */
-    SIMULATOR(5, "a"),
+    SIMULATOR,
     /** The robot on a serial bus: read over the simulator; measured angles in columns {@code hw<ID>}. */
-    HARDWARE(10, "hw");
-
-    private final int priority;
-    private final String columnPrefix;
-
-    SourceKind(int priority, String columnPrefix) {
-        this.priority = priority;
-        this.columnPrefix = columnPrefix;
-    }
+    HARDWARE;
 
     /** The higher of two offered sources is read, whatever the order of offering. */
     public int priority() {
-        return priority;
+        return switch (this) {
+            case SIMULATOR -> 5;
+            case HARDWARE -> 10;
+        };
     }
 
     /** The trace column of module {@code id}'s measured angle from this source ({@code a3}, {@code hw3}). */
     public String column(int id) {
-        return columnPrefix + id;
+        String prefix = switch (this) {
+            case SIMULATOR -> "a";
+            case HARDWARE -> "hw";
+        };
+        return prefix + id;
     }
 }
