@@ -42,7 +42,14 @@ class ModuleLayersTest {
     static final ArchRule SERIAL_PACKAGES_FORM_NO_CYCLE = slices().matching("org.parpe.serial.(*)..").should()
             .beFreeOfCycles();
 
-    /** The simulator's packages are left out: its {@code config} and {@code internal} still use each other. */
+    /**
+     * Issue 19 item 9: {@code sim.config} assembled robots through {@code sim.internal}, which
+     * reads configurations; configurations are now assembled by {@code SimTarget} alone.
+     */
+    @ArchTest
+    static final ArchRule SIM_PACKAGES_FORM_NO_CYCLE = slices().matching("org.parpe.sim.(*)..").should()
+            .beFreeOfCycles();
+
     @ArchTest
     static final ArchRule CLI_PACKAGES_FORM_NO_CYCLE = slices().matching("org.parpe.cli.(*)..").should()
             .beFreeOfCycles();

@@ -35,7 +35,7 @@ class AngleRecorderTest {
     void measuredIsTheSensorReadingOfTheTickItIsPlottedAt() throws Exception {
         RunTest.TickPlant plant = new RunTest.TickPlant();
         Run.Builder b = run(0.05);
-        b.plant(plant).sensorSource("sim", plant, 5);
+        b.plant(plant).sensorSource(org.parpe.core.run.SourceKind.SIMULATOR, plant);
         AngleRecorder r = AngleRecorder.latest(64, 0).attachTo(b);
         java.util.List<Double> given = new java.util.ArrayList<>();
         b.observer((tick, time, commanded) -> given.add(commanded[0]));

@@ -13,6 +13,7 @@ import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.diag.Severity;
 import org.parpe.core.model.Program;
+import org.parpe.core.run.SourceKind;
 import org.parpe.core.sensor.Channel;
 import org.parpe.core.run.JointSink;
 import org.parpe.core.run.Run;
@@ -98,11 +99,11 @@ class RunTest {
         SensorSource sim = (time, table) -> table.set(0, Channel.ANGLE, -7);
         List<Double> readings = new ArrayList<>();
         Run.Builder b = Run.builder(p, RunOptions.defaults(), new DiagnosticList()).duration(0.02);
-        b.sensorSource("hardware", hw, 10).sensorSource("sim", sim, 5).plant(hw);
+        b.sensorSource(SourceKind.HARDWARE, hw).sensorSource(SourceKind.SIMULATOR, sim).plant(hw);
         b.observeReadings((time, table) -> readings.add(table.get(0, Channel.ANGLE)));
-        assertEquals(List.of("hardware", "sim"), b.sensorSourceNames());
+        assertEquals(List.of(SourceKind.HARDWARE, SourceKind.SIMULATOR), b.sensorSourceKinds());
         b.build().execute();
-        assertEquals(List.of(99.0, 100.0, 101.0), readings, "the hardware (priority 10) is read, not the simulator");
+        assertEquals(List.of(99.0, 100.0, 101.0), readings, "the hardware is read, not the simulator");
     }
 
     @Test

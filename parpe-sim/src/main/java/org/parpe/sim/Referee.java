@@ -29,13 +29,8 @@ final class Referee {
     private int nextCheckpoint;
     private String disqualified;
     private boolean marked;
-    private double tPoints;
-    private int tDelivered;
-    private int tPresses;
-    private double tTimeToZone;
-    private double tBest;
-    private int tCheckpoints;
-    private String tDisqualified;
+    /** The score's parts at the last marked tick. */
+    private final Parts kept = new Parts();
 
     Referee(PhysicsWorld world, World scene) {
         this.world = world;
@@ -129,7 +124,7 @@ final class Referee {
      */
     void mark() {
         marked = true;
-        tPoints = tally(true);
+        kept.points = tally(true);
     }
 
     /** The points now, for a live display. */
@@ -162,12 +157,12 @@ final class Referee {
         }
         points += rules.pathPerMetre() * best;
         if (keep) {
-            tDelivered = delivered;
-            tPresses = presses;
-            tTimeToZone = timeToZone;
-            tBest = best;
-            tCheckpoints = nextCheckpoint;
-            tDisqualified = disqualified;
+            kept.delivered = delivered;
+            kept.presses = presses;
+            kept.timeToZone = timeToZone;
+            kept.best = best;
+            kept.checkpoints = nextCheckpoint;
+            kept.disqualified = disqualified;
         }
         return disqualified.isEmpty() ? points : 0;
     }
@@ -175,8 +170,20 @@ final class Referee {
     /** The score at the last marked tick, or now when no tick was marked (stepped by hand). */
     WorldScore score() {
         if (!marked) {
-            tPoints = tally(true);
+            kept.points = tally(true);
         }
-        return new WorldScore(tPoints, tTimeToZone, tBest, tCheckpoints, tDelivered, tPresses, tDisqualified);
+        return new WorldScore(kept.points, kept.timeToZone, kept.best, kept.checkpoints, kept.delivered, kept.presses,
+                kept.disqualified);
+    }
+
+    /** A {@link WorldScore}'s parts, overwritten at every marked tick so that marking does not allocate. */
+    private static final class Parts {
+        double points;
+        int delivered;
+        int presses;
+        double timeToZone;
+        double best;
+        int checkpoints;
+        String disqualified;
     }
 }

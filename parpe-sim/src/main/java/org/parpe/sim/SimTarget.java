@@ -10,6 +10,7 @@ import org.parpe.core.model.Group;
 import org.parpe.core.model.Program;
 import org.parpe.core.run.Run;
 import org.parpe.core.run.RunTarget;
+import org.parpe.core.run.SourceKind;
 import org.parpe.core.run.TargetException;
 import org.parpe.sim.config.RobotConfig;
 import org.parpe.sim.config.RobotConfigs;
@@ -19,13 +20,11 @@ import org.parpe.sim.world.World;
 /**
  * The physics simulator as a run target: builds the robot named by a specification
  * ({@code GENERATOR[:key=value,...]} or a configuration file), warns about script modules the
- * robot lacks, and adds the simulator as a plant, a sensor source (priority {@value #PRIORITY},
+ * robot lacks, and adds the simulator as a plant, a sensor source ({@link SourceKind#SIMULATOR},
  * below hardware) and trace columns {@code a<ID>}, {@code com_*}. Used by the command line's
  * {@code --sim} and the IDE's Simulator target alike.
  */
 public final class SimTarget implements RunTarget {
-    /** Priority of the simulator as a sensor source (hardware has 10). */
-    public static final int PRIORITY = 5;
     /** The choice that guesses the robot from the script ({@link #autoSpec}). */
     public static final String AUTO = "auto";
 
@@ -51,7 +50,7 @@ public final class SimTarget implements RunTarget {
         Simulator s = create(resolved, program.moduleIds(), run.diagnostics(), world);
         run.closeAtEnd(s);
         run.plant(s);
-        run.sensorSource("sim", s, PRIORITY);
+        run.sensorSource(SourceKind.SIMULATOR, s);
         run.traceColumns(s.traceColumns());
         simulator = s;
     }
@@ -93,15 +92,14 @@ public final class SimTarget implements RunTarget {
     public static Blueprint blueprint(String spec, int[] moduleIds, World world) throws TargetException {
         DiagnosticList found = new DiagnosticList();
         RobotConfig config = RobotConfigs.resolve(spec, moduleIds, found);
-        if (config != null) {
-            RobotConfigs.checkModules(config, moduleIds, found);
-        }
-        if (config == null) {
+        Assembly assembly = config == null ? null : Assembly.build(config, found);
+        if (assembly == null) {
             long n = found.errorCount();
             throw new TargetException("cannot build the simulated robot '" + spec + "' (" + n + " error"
                     + (n == 1 ? "" : "s") + ")", found.all());
         }
-        return new Blueprint(config, Simulator.assemble(config), world, List.copyOf(found.all()));
+        RobotConfigs.checkModules(config, moduleIds, found);
+        return new Blueprint(config, assembly, world, List.copyOf(found.all()));
     }
 
     /**

@@ -5,6 +5,7 @@ import java.util.concurrent.atomic.AtomicIntegerArray;
 import java.util.stream.Collectors;
 import org.ode4j.math.DMatrix3C;
 import org.parpe.core.diag.DiagnosticList;
+import org.parpe.core.run.SourceKind;
 import org.parpe.core.sensor.Channel;
 import org.parpe.core.run.JointSink;
 import org.parpe.core.run.RunInfo;
@@ -251,7 +252,7 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
                 int k = 0;
                 for (int i = 0; i < programHinge.length; i++) {
                     if (programHinge[i] >= 0) {
-                        names[k++] = "a" + programIds[i];
+                        names[k++] = SourceKind.SIMULATOR.column(programIds[i]);
                     }
                 }
                 names[k++] = "com_x";

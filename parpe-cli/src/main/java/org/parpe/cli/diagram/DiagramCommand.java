@@ -178,7 +178,7 @@ public final class DiagramCommand implements Callable<Integer> {
         }
         Instance i = all.get(instance);
         Group g = Diagrams.groupOf(p, b, i).orElseThrow(() -> new UsageException("the group of instance " + instance
-                + " of '" + b.name() + "' is the macro '" + i.group().replace("!", "").trim() + "', which no <main> entry gives a value"));
+                + " of '" + b.name() + "' is the macro '" + i.groupRef().name() + "', which no <main> entry gives a value"));
         return Layouts.wheel(Diagrams.wheel(i, g));
     }
 }

@@ -6,6 +6,7 @@ import java.util.List;
 import org.parpe.cli.UsageException;
 import org.parpe.core.run.Run;
 import org.parpe.core.run.SensorSource;
+import org.parpe.core.run.SourceKind;
 import org.parpe.core.run.TargetException;
 import org.parpe.serial.bus.BusTarget;
 import org.parpe.serial.link.SerialLink;
@@ -58,7 +59,7 @@ public class HardwareOptions {
             }
             return;
         }
-        SensorSource sim = run.sensorSource("sim");
+        SensorSource sim = run.sensorSource(SourceKind.SIMULATOR);
         checkDiverge(sim);
         BusTarget target = new BusTarget(port, bus.config(), err::println);
         run.attach(target);
@@ -70,7 +71,7 @@ public class HardwareOptions {
     }
 
     private void configureProfile(Run.Builder run, PrintStream err) throws UsageException, TargetException {
-        SensorSource sim = run.sensorSource("sim");
+        SensorSource sim = run.sensorSource(SourceKind.SIMULATOR);
         checkDiverge(sim);
         HardwareProfile profile = Profiles.load(hardware, port);
         ServoTarget target = new ServoTarget(profile, bus.config(), err::println);

@@ -10,6 +10,7 @@ import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.run.Run;
 import org.parpe.core.run.RunOptions;
 import org.parpe.core.run.RunOutcome;
+import org.parpe.core.run.SourceKind;
 import org.parpe.sim.SimTarget;
 import org.parpe.sim.Simulator;
 
@@ -28,7 +29,7 @@ public final class SimRun {
     public static RunOutcome run(Program program, Simulator sim, double duration, double dt, DiagnosticSink diags) {
         return Run.builder(program, new RunOptions(dt, 0, List.of()), diags)
                 .plant(sim)
-                .sensorSource("sim", sim, SimTarget.PRIORITY)
+                .sensorSource(SourceKind.SIMULATOR, sim)
                 .duration(duration)
                 .build()
                 .execute();

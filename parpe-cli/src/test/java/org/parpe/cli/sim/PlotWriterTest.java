@@ -33,10 +33,10 @@ class PlotWriterTest {
         assertTrue(r.ok(), () -> r.diagnostics().toString());
         Run.Builder b = Run.builder(r.program(), RunOptions.defaults(), new DiagnosticList()).duration(2);
         if (measured) {
-            b.sensorSource("sim", (time, table) -> {
+            b.sensorSource(org.parpe.core.run.SourceKind.SIMULATOR, (time, table) -> {
                 table.set(0, Channel.ANGLE, 5);
                 table.set(1, Channel.ANGLE, -5);
-            }, 5);
+            });
         }
         AngleRecorder rec = AngleRecorder.wholeRun(PlotWriter.SAMPLES).attachTo(b);
         b.build().execute();

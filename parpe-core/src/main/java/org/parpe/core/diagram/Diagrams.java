@@ -65,8 +65,7 @@ public final class Diagrams {
         List<Group> groups = new ArrayList<>();
         List<Boolean> mirrors = new ArrayList<>();
         for (Placed x : placed) {
-            MainEntry.GroupRef ref = entry != null ? entry.groupOf(x.instance)
-                    : new MainEntry(behavior.name(), null, null, List.of(), behavior.pos()).groupOf(x.instance);
+            MainEntry.GroupRef ref = entry != null ? entry.groupOf(x.instance) : x.instance.groupRef();
             Group g = p.group(ref.name()).orElse(null);
             if (g == null) {
                 islands.add(new TextIsland("group '" + x.instance.group() + "' is a macro without a value here",
@@ -91,7 +90,7 @@ public final class Diagrams {
                 }
             }
             Instance in = x.instance;
-            String lane = g == null ? MainEntry.GroupRef.parse(in.group()).name() : g.name();
+            String lane = g == null ? in.groupRef().name() : g.name();
             modules.putIfAbsent(lane, g == null ? List.of() : g.modules());
             bars.computeIfAbsent(lane, k -> new ArrayList<>()).add(new Swimlanes.Bar(i, in.automaton(), mirrors.get(i),
                     text(in.phase()), text(in.offset()), text(in.period()), text(in.start()), text(in.cycles()),
@@ -184,7 +183,7 @@ public final class Diagrams {
     public static Optional<Group> groupOf(Program p, Behavior behavior, Instance instance) {
         MainEntry entry = p.main() == null ? null
                 : p.main().entries().stream().filter(e -> e.behavior().equals(behavior.name())).findFirst().orElse(null);
-        String name = entry != null ? entry.groupOf(instance).name() : instance.group().replace("!", "").trim();
+        String name = (entry != null ? entry.groupOf(instance) : instance.groupRef()).name();
         return p.group(name);
     }
 

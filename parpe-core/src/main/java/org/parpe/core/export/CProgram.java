@@ -128,7 +128,7 @@ public final class CProgram {
     }
 
     private void entry(MainEntry e) {
-        Behavior b = program.behavior(e.behavior()).orElseThrow();
+        Behavior b = e.definition();
         int first = t.inst.size();
         int vargs = t.varg.size();
         for (MainEntry.MacroArg a : e.macros()) {
@@ -137,7 +137,9 @@ public final class CProgram {
             }
         }
         int[] pool = {0, 0};
-        collect(e, b.items(), new ArrayList<>(), pool);
+        for (MainEntry.Binding binding : e.bindings()) {
+            instance(binding, pool);
+        }
         int n = t.inst.size() - first;
         t.entry.add(new int[] {first, n, e.time() == null ? -1 : id(e.time()), e.exit() == null ? -1 : id(e.exit()),
             vargs, t.varg.size() - vargs});
@@ -147,32 +149,24 @@ public final class CProgram {
         maxMacros = Math.max(maxMacros, b.macros().size());
     }
 
-    private void collect(MainEntry e, List<BehaviorItem> items, List<Conditional> conds, int[] pool) {
-        for (BehaviorItem item : items) {
-            if (item instanceof Conditional c) {
-                conds.add(c);
-                collect(e, c.items(), conds, pool);
-                conds.remove(conds.size() - 1);
-                continue;
-            }
-            Instance i = (Instance) item;
-            MainEntry.GroupRef ref = e.groupOf(i);
-            boolean mirror = ref.mirror();
-            List<Integer> group = program.group(ref.name()).orElseThrow().modules();
-            int automaton = program.automata().indexOf(program.automaton(i.automaton()).orElseThrow());
-            int mod = t.mod.size();
-            for (int id : group) {
-                t.mod.add(java.util.Arrays.binarySearch(ids, id));
-            }
-            int cond = t.cond.size();
-            conds.forEach(c -> t.cond.add(id(c.condition())));
-            int ns = t.aut.get(automaton)[0];
-            t.inst.add(new int[] {automaton, mirror ? 1 : 0, group.size(), mod, cond, conds.size(), opt(i.phase()),
-                opt(i.offset()), opt(i.period()), opt(i.start()), opt(i.cycles()), pool[0], pool[1], place(i.pos())});
-            instGroups.add(i.group());
-            pool[0] += group.size();
-            pool[1] += ns;
+    private void instance(MainEntry.Binding binding, int[] pool) {
+        Instance i = binding.instance();
+        boolean mirror = binding.mirrored();
+        List<Integer> group = binding.group().modules();
+        int automaton = program.automata().indexOf(binding.automaton());
+        List<Conditional> conds = binding.conditions();
+        int mod = t.mod.size();
+        for (int id : group) {
+            t.mod.add(java.util.Arrays.binarySearch(ids, id));
         }
+        int cond = t.cond.size();
+        conds.forEach(c -> t.cond.add(id(c.condition())));
+        int ns = t.aut.get(automaton)[0];
+        t.inst.add(new int[] {automaton, mirror ? 1 : 0, group.size(), mod, cond, conds.size(), opt(i.phase()),
+            opt(i.offset()), opt(i.period()), opt(i.start()), opt(i.cycles()), pool[0], pool[1], place(i.pos())});
+        instGroups.add(i.group());
+        pool[0] += group.size();
+        pool[1] += ns;
     }
 
     private int opt(Expression e) {

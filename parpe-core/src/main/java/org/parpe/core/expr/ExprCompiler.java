@@ -129,8 +129,8 @@ public final class ExprCompiler {
         Node b = pop(stack);
         Node a = pop(stack);
         switch (op.getSymbol()) {
-            case "&&": return new Nodes.Logic(true, a, b);
-            case "||": return new Nodes.Logic(false, a, b);
+            case "&&": return new Nodes.And(a, b);
+            case "||": return new Nodes.Or(a, b);
             default:
                 int code = List.of(Nodes.Binary.SYMBOLS).indexOf(op.getSymbol());
                 return new Nodes.Binary(code, a, b);

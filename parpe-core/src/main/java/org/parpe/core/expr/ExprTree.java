@@ -80,8 +80,8 @@ public final class ExprTree {
             return v.unary(u.not, u.arg);
         } else if (n instanceof Nodes.Binary b) {
             return v.binary(Nodes.Binary.SYMBOLS[b.op], b.left, b.right);
-        } else if (n instanceof Nodes.Logic l) {
-            return v.logic(l.and, l.left, l.right);
+        } else if (n instanceof Nodes.And l) {
+            return v.logic(!(l instanceof Nodes.Or), l.left, l.right);
         } else if (n instanceof Nodes.If f) {
             return v.conditional(f.cond, f.then, f.otherwise);
         } else if (n instanceof Nodes.Func1 f) {

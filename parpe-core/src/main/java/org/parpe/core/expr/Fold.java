@@ -12,8 +12,8 @@ final class Fold {
         if (n instanceof Nodes.Binary) {
             return c(((Nodes.Binary) n).left) && c(((Nodes.Binary) n).right);
         }
-        if (n instanceof Nodes.Logic) {
-            return c(((Nodes.Logic) n).left) && c(((Nodes.Logic) n).right);
+        if (n instanceof Nodes.And) { // and Or
+            return c(((Nodes.And) n).left) && c(((Nodes.And) n).right);
         }
         if (n instanceof Nodes.If) {
             Nodes.If f = (Nodes.If) n;

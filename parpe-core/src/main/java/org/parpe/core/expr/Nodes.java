@@ -191,25 +191,35 @@ final class Nodes {
         }
     }
 
-    /** {@code &&} and {@code ||}, short-circuiting. */
-    static final class Logic extends Node {
-        final boolean and;
+    /**
+     * {@code &&}, short-circuiting: 1 when both sides are non-zero, the right side evaluated only
+     * when the left is non-zero. {@link Or} shares its two sides; neither tests per call which
+     * operator it is.
+     */
+    static class And extends Node {
         final Node left;
         final Node right;
 
-        Logic(boolean and, Node left, Node right) {
-            this.and = and;
+        And(Node left, Node right) {
             this.left = left;
             this.right = right;
         }
 
         @Override
         public double eval(EvalContext c) {
-            boolean a = left.eval(c) != 0;
-            if (and) {
-                return a && right.eval(c) != 0 ? 1 : 0;
-            }
-            return a || right.eval(c) != 0 ? 1 : 0;
+            return left.eval(c) != 0 && right.eval(c) != 0 ? 1 : 0;
+        }
+    }
+
+    /** {@code ||}, short-circuiting: 1 when either side is non-zero, the right side evaluated only when the left is zero. */
+    static final class Or extends And {
+        Or(Node left, Node right) {
+            super(left, right);
+        }
+
+        @Override
+        public double eval(EvalContext c) {
+            return left.eval(c) != 0 || right.eval(c) != 0 ? 1 : 0;
         }
     }
 

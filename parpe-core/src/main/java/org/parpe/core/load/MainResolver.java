@@ -12,7 +12,12 @@ import org.parpe.core.expr.Names;
 import org.parpe.core.expr.Scope;
 import org.parpe.core.lang.Vocabulary;
 import org.parpe.core.lang.Vocabulary.Element;
+import org.parpe.core.model.Automaton;
 import org.parpe.core.model.Behavior;
+import org.parpe.core.model.BehaviorItem;
+import org.parpe.core.model.Conditional;
+import org.parpe.core.model.Group;
+import org.parpe.core.model.Instance;
 import org.parpe.core.model.MainDef;
 import org.parpe.core.model.MainEntry;
 import org.parpe.core.model.Robot;
@@ -26,14 +31,16 @@ final class MainResolver {
     private final BehaviorResolver.Resolved behaviors;
     private final InstanceChecks checks;
     private final Robot robot;
+    private final Map<String, Automaton> automata;
 
     MainResolver(DiagnosticSink d, ScriptLoader.Scopes scopes, BehaviorResolver.Resolved behaviors, InstanceChecks checks,
-                 Robot robot) {
+                 Robot robot, Map<String, Automaton> automata) {
         this.d = d;
         this.scopes = scopes;
         this.behaviors = behaviors;
         this.checks = checks;
         this.robot = robot;
+        this.automata = automata;
     }
 
     MainDef resolve(XElement main, Map<String, Double> params) {
@@ -106,7 +113,34 @@ final class MainResolver {
             return null;
         }
         checks.checkBehavior(b.name(), info.instances(), args);
-        return new MainEntry(b.name(), time, exit, new ArrayList<>(args.values()), e.pos());
+        List<MainEntry.MacroArg> macros = new ArrayList<>(args.values());
+        List<MainEntry.Binding> bindings = new ArrayList<>();
+        bind(b.items(), new ArrayList<>(), macros, bindings);
+        return new MainEntry(b.name(), b, time, exit, macros, bindings, e.pos());
+    }
+
+    /**
+     * Resolves every instance under {@code items} for one entry: its automaton, and its group
+     * and mirror flag after the entry's macro values (an instance whose names did not resolve has
+     * been reported and gets no binding).
+     */
+    private void bind(List<BehaviorItem> items, List<Conditional> conds, List<MainEntry.MacroArg> macros,
+                      List<MainEntry.Binding> out) {
+        for (BehaviorItem item : items) {
+            if (item instanceof Conditional c) {
+                conds.add(c);
+                bind(c.items(), conds, macros, out);
+                conds.remove(conds.size() - 1);
+                continue;
+            }
+            Instance i = (Instance) item;
+            MainEntry.GroupRef ref = i.groupRef().through(macros);
+            Group group = robot == null ? null : robot.group(ref.name()).orElse(null);
+            Automaton automaton = automata.get(i.automaton());
+            if (group != null && automaton != null) {
+                out.add(new MainEntry.Binding(i, automaton, group, ref.mirror(), conds));
+            }
+        }
     }
 
     private Expression optional(XElement e, String attr, Scope scope) {
@@ -121,7 +155,6 @@ final class MainResolver {
     private MainEntry.MacroArg groupArg(String macro, XElement.XAttr a) {
         String v = a.value().value().trim();
         MainEntry.GroupRef written = MainEntry.GroupRef.parse(v);
-        boolean mirror = written.mirror();
         String base = written.name();
         if (robot != null && robot.group(base).isEmpty()) {
             List<String> known = robot.groups().stream().map(g -> g.name()).toList();
@@ -129,7 +162,7 @@ final class MainResolver {
                     + Names.suggest(base, known));
             return null;
         }
-        return new MainEntry.MacroArg(macro, v, base, mirror, null, a.value().pos());
+        return new MainEntry.MacroArg(macro, v, base, written.mirror(), null, a.value().pos());
     }
 
     private MainEntry.MacroArg exprArg(String macro, XElement.XAttr a, Scope scope) {

@@ -64,7 +64,7 @@ public final class ScriptLoader {
         BehaviorResolver.Resolved behaviors = BehaviorResolver.resolve(d, names, robot, states, checks, scopes::scope,
                 a.of("behaviors"));
         MainDef main = a.main() == null ? null
-                : new MainResolver(d, scopes, behaviors, checks, robot.robot()).resolve(a.main(), params.values());
+                : new MainResolver(d, scopes, behaviors, checks, robot.robot(), states.automata()).resolve(a.main(), params.values());
         names.check(d);
         List<Path> files = new ArrayList<>(a.files());
         if (robot.file() != null) {

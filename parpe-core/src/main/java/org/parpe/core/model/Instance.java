@@ -19,4 +19,9 @@ import org.parpe.core.expr.Expression;
 public record Instance(String automaton, String group, Expression phase, Expression offset,
                        Expression period, Expression start, Expression cycles, SourcePos pos)
         implements BehaviorItem {
+
+    /** The {@code group} attribute read: the group or macro name and whether it has {@code !}. */
+    public MainEntry.GroupRef groupRef() {
+        return MainEntry.GroupRef.parse(group);
+    }
 }

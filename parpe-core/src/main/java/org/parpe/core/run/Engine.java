@@ -73,7 +73,7 @@ public final class Engine implements Evaluator {
         MainDef main = program.main();
         this.mainCycles = main == null ? 0 : main.cycles();
         this.plans = main == null ? new EntryPlan[0]
-                : main.entries().stream().map(e -> new EntryPlan(program, e, ids)).toArray(EntryPlan[]::new);
+                : main.entries().stream().map(e -> new EntryPlan(e, ids)).toArray(EntryPlan[]::new);
     }
 
     /**

@@ -137,7 +137,7 @@ public final class Run {
         private final List<SensorSource> readingObservers = new ArrayList<>();
         private final List<Consumer<RunOutcome>> finishers = new ArrayList<>();
         private final List<AutoCloseable> resources = new ArrayList<>();
-        private final Map<String, SensorSource> offered = new LinkedHashMap<>();
+        private final Map<SourceKind, SensorSource> offered = new LinkedHashMap<>();
         private SensorSource source;
         private int sourcePriority = Integer.MIN_VALUE;
         private Writer trace;
@@ -194,26 +194,26 @@ public final class Run {
         }
 
         /**
-         * Offers a sensor source under a name ({@code "sim"}, {@code "hardware"}); the one with
-         * the highest priority is read (hardware 10 over simulator 5), whatever the order of
-         * offering. Every offered source stays reachable through {@link #sensorSource(String)}.
+         * Offers a sensor source of a kind; the one of the highest {@link SourceKind#priority()}
+         * is read (the hardware over the simulator), whatever the order of offering. Every
+         * offered source stays reachable through {@link #sensorSource(SourceKind)}.
          */
-        public Builder sensorSource(String name, SensorSource s, int priority) {
-            offered.put(name, s);
-            if (priority > sourcePriority) {
+        public Builder sensorSource(SourceKind kind, SensorSource s) {
+            offered.put(kind, s);
+            if (kind.priority() > sourcePriority) {
                 source = s;
-                sourcePriority = priority;
+                sourcePriority = kind.priority();
             }
             return this;
         }
 
-        /** The source offered under {@code name}, or null. */
-        public SensorSource sensorSource(String name) {
-            return offered.get(name);
+        /** The source offered as {@code kind}, or null. */
+        public SensorSource sensorSource(SourceKind kind) {
+            return offered.get(kind);
         }
 
-        /** Names of the offered sensor sources, in the order offered. */
-        public List<String> sensorSourceNames() {
+        /** The kinds of the offered sensor sources, in the order offered. */
+        public List<SourceKind> sensorSourceKinds() {
             return Collections.unmodifiableList(new ArrayList<>(offered.keySet()));
         }
 

@@ -2,7 +2,6 @@ package org.parpe.gui.editor;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.parpe.core.lang.Vocabulary;
 
 /**
  * Where the caret is in a PARSL document, as far as completion cares: the chain of open
@@ -114,14 +113,16 @@ public record XmlContext(List<String> path, Kind kind, String element, String at
         return new XmlContext(path, Kind.ATTRIBUTE_NAME, element, "", wordBefore(partial, partial.length()));
     }
 
-    /** The last list item or identifier being typed in a value, {@code $} included. */
+    /**
+     * The last list item or identifier being typed in a value, {@code $} included; a group's
+     * {@code !} is not a name character, so {@code !le} gives {@code le}.
+     */
     private static String valuePrefix(String value) {
         int j = value.length();
         while (j > 0 && (XmlScanners.isNameChar(value.charAt(j - 1)) || value.charAt(j - 1) == '$')) {
             j--;
         }
-        String p = value.substring(j);
-        return p.startsWith(Vocabulary.MIRROR) ? p.substring(Vocabulary.MIRROR.length()) : p;
+        return value.substring(j);
     }
 
     private static String wordBefore(String text, int offset) {

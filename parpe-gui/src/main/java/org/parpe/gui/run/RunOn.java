@@ -2,31 +2,27 @@ package org.parpe.gui.run;
 
 /** What a run drives. */
 public enum RunOn {
-    SIMULATOR("Simulator", true, false),
-    HARDWARE("Hardware", false, true),
-    BOTH("Simulator + hardware", true, true);
+    SIMULATOR("Simulator"),
+    HARDWARE("Hardware"),
+    BOTH("Simulator + hardware");
 
     private final String label;
-    private final boolean sim;
-    private final boolean hardware;
 
-    RunOn(String label, boolean sim, boolean hardware) {
+    RunOn(String label) {
         this.label = label;
-        this.sim = sim;
-        this.hardware = hardware;
     }
 
     public String label() {
         return label;
     }
 
-    /** Whether the simulator takes part. */
+    /** Whether the simulator takes part: in every run but one on the hardware alone. */
     public boolean sim() {
-        return sim;
+        return this != HARDWARE;
     }
 
-    /** Whether the robot on the serial bus takes part. */
+    /** Whether the robot on the serial bus takes part: in every run but one in the simulator alone. */
     public boolean hardware() {
-        return hardware;
+        return this != SIMULATOR;
     }
 }

@@ -57,7 +57,7 @@ class ChartViewGuiTest {
         LoadResult r = ScriptLoader.loadText(Path.of("p.xml"), SCRIPT, Map.of());
         assertTrue(r.ok(), () -> r.diagnostics().toString());
         Run.Builder b = Run.builder(r.program(), RunOptions.defaults(), new DiagnosticList()).duration(3);
-        b.sensorSource("sim", (time, table) -> table.set(0, Channel.ANGLE, 10), 5);
+        b.sensorSource(org.parpe.core.run.SourceKind.SIMULATOR, (time, table) -> table.set(0, Channel.ANGLE, 10));
         AngleRecorder rec = PlotView.newRecorder().attachTo(b);
         b.build().execute();
         view.setModules(r.program().moduleIds());

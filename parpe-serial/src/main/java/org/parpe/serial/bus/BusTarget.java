@@ -13,7 +13,7 @@ import org.parpe.serial.link.LinkOpener;
  * Modules on a serial bus as a run target, for the command line's {@code --port} and the IDE's
  * Hardware target alike: opens the bus, pings the script's modules before anything moves
  * (reporting the missing ones), and adds the bus as a plant, as the sensor source (priority
- * {@value HostPlant#PRIORITY}, above the simulator), and as trace columns {@code hw<ID>}. The run is
+ * {@link org.parpe.core.run.SourceKind#HARDWARE}, above the simulator), and as trace columns {@code hw<ID>}. The run is
  * paced to the wall clock. A run stopped by the user ends in an emergency stop. Bus problems
  * become warnings located at {@code bus PORT}; notes (counts, recoveries) go to {@code notes}.
  */

@@ -9,6 +9,7 @@ import org.parpe.core.run.Run;
 import org.parpe.core.run.RunInfo;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.core.run.SensorSource;
+import org.parpe.core.run.SourceKind;
 import org.parpe.core.run.TraceColumns;
 
 /**
@@ -18,9 +19,6 @@ import org.parpe.core.run.TraceColumns;
  * the one way all bus targets share.
  */
 public interface HostPlant extends JointSink, SensorSource {
-
-    /** Priority of real hardware as a sensor source (the simulator has 5). */
-    int PRIORITY = 10;
 
     /** The angle module {@code index} (program order) last reported, or NaN before any reading. */
     double measuredAngle(int index);
@@ -53,10 +51,10 @@ public interface HostPlant extends JointSink, SensorSource {
                 plant.finish(outcome);
             }
         });
-        run.sensorSource("hardware", plant, PRIORITY);
+        run.sensorSource(SourceKind.HARDWARE, plant);
         String[] names = new String[ids.length];
         for (int i = 0; i < ids.length; i++) {
-            names[i] = "hw" + ids[i];
+            names[i] = SourceKind.HARDWARE.column(ids[i]);
         }
         run.traceColumns(new TraceColumns() {
             @Override

@@ -5,7 +5,6 @@ import java.nio.file.Path;
 import java.util.List;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
-import org.parpe.sim.internal.Assembly;
 import org.parpe.core.expr.Names;
 
 /**
@@ -31,8 +30,11 @@ public final class RobotConfigs {
      * The configuration named by {@code specOrPath}: {@code GENERATOR[:key=value,...]} or a path
      * to a configuration file (anything ending in {@code .xml} or naming an existing file).
      * {@code moduleIds} are the script's modules (may be empty): generators size themselves from
-     * them where a size is not given. Returns {@code null} after reporting errors to {@code diags};
-     * a returned configuration has been assembled successfully.
+     * them where a size is not given. Returns {@code null} after reporting errors to {@code diags}.
+     * The configuration is not assembled here (this package knows nothing of the physics):
+     * {@link org.parpe.sim.SimTarget#blueprint} assembles it once and reports what does not fit
+     * together (a loop that does not close, two parts on one plate), and a
+     * {@link org.parpe.sim.Simulator} made directly from it refuses such a configuration.
      */
     public static RobotConfig resolve(String specOrPath, int[] moduleIds, DiagnosticSink diags) {
         String spec = specOrPath.trim();
@@ -41,9 +43,6 @@ public final class RobotConfigs {
             config = ConfigReader.read(Path.of(spec), diags);
         } else {
             config = generate(spec, moduleIds, diags);
-        }
-        if (config == null || Assembly.build(config, diags) == null) {
-            return null;
         }
         return config;
     }

@@ -7,8 +7,10 @@ import java.util.Deque;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.atomic.AtomicInteger;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.sim.BodyShape;
+import org.parpe.sim.Geo;
 import org.parpe.sim.Mat3;
 import org.parpe.sim.Vec3;
 import org.parpe.sim.config.Connection;
@@ -53,6 +55,9 @@ public final class Assembly {
     public record Hinge(int moduleId, int base, int arm, Vec3 anchor, Vec3 axis, double angle, boolean limp) {
     }
 
+    /** How many assemblies {@link #build} has made in this class loader: a run should make one. */
+    static final AtomicInteger BUILT = new AtomicInteger();
+
     private final List<PlacedPiece> pieces;
     private final List<Hinge> hinges;
     private final int clusterCount;
@@ -86,6 +91,7 @@ public final class Assembly {
 
     /** Assembles {@code config}; returns {@code null} after reporting errors to {@code diags}. */
     public static Assembly build(RobotConfig config, DiagnosticSink diags) {
+        BUILT.incrementAndGet();
         ConfigCheck check = new ConfigCheck(config, diags);
         if (!check.run()) {
             return null;

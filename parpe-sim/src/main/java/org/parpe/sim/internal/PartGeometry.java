@@ -3,6 +3,7 @@ package org.parpe.sim.internal;
 import java.util.ArrayList;
 import java.util.List;
 import org.parpe.sim.BodyShape;
+import org.parpe.sim.Geo;
 import org.parpe.sim.Mat3;
 import org.parpe.sim.PartKind;
 import org.parpe.sim.Vec3;

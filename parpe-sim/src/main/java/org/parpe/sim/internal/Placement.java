@@ -5,6 +5,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import org.parpe.core.diag.DiagnosticSink;
+import org.parpe.sim.Geo;
 import org.parpe.sim.Mat3;
 import org.parpe.sim.Vec3;
 import org.parpe.sim.config.Connection;

@@ -11,6 +11,7 @@ import org.ode4j.ode.DSpace;
 import org.ode4j.ode.DWorld;
 import org.ode4j.ode.OdeHelper;
 import org.parpe.sim.BodyShape;
+import org.parpe.sim.Geo;
 import org.parpe.sim.Mat3;
 import org.parpe.sim.Vec3;
 import org.parpe.sim.world.World;

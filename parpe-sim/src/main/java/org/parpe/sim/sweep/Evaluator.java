@@ -1,6 +1,7 @@
 package org.parpe.sim.sweep;
 
 import org.parpe.core.diag.DiagnosticList;
+import org.parpe.core.run.SourceKind;
 import org.parpe.sim.world.World;
 import org.parpe.sim.world.WorldReader;
 import java.nio.file.Path;
@@ -171,7 +172,7 @@ public final class Evaluator {
         SimMetrics[] measured = new SimMetrics[1];
         Run run = Run.builder(program, new RunOptions(tick, point.seed(), List.of()), quiet)
                 .plant(sim)
-                .sensorSource("sim", sim, SimTarget.PRIORITY)
+                .sensorSource(SourceKind.SIMULATOR, sim)
                 .observeReadings(travel)
                 .onFinish(o -> measured[0] = sim.metrics())
                 .closeAtEnd(sim)

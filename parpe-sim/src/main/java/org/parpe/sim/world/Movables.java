@@ -7,7 +7,7 @@ import org.parpe.core.diag.SourcePos;
 import org.parpe.sim.BodyShape;
 import org.parpe.sim.Mat3;
 import org.parpe.sim.Vec3;
-import org.parpe.sim.internal.Geo;
+import org.parpe.sim.Geo;
 
 /** The movable objects of a world file: chips, balls, cups and levers. */
 final class Movables {

@@ -8,7 +8,7 @@ import org.parpe.core.diag.SourcePos;
 import org.parpe.sim.BodyShape;
 import org.parpe.sim.Mat3;
 import org.parpe.sim.Vec3;
-import org.parpe.sim.internal.Geo;
+import org.parpe.sim.Geo;
 
 /** The solids and movable objects of a world file, element by element, with the rubble generated. */
 final class Scenery {

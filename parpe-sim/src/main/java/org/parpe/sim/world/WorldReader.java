@@ -12,7 +12,7 @@ import org.parpe.core.xml.FlatXmlFile;
 import org.parpe.sim.BodyShape;
 import org.parpe.sim.Mat3;
 import org.parpe.sim.Vec3;
-import org.parpe.sim.internal.Geo;
+import org.parpe.sim.Geo;
 
 /**
  * Reads a world file (format in {@code docs/simulator.md}) with the project's flat XML reader,

@@ -1,5 +1,6 @@
 package org.parpe.sim.config;
 
+import static org.junit.jupiter.api.Assertions.assertDoesNotThrow;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -13,6 +14,8 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.DiagnosticList;
+import org.parpe.core.run.TargetException;
+import org.parpe.sim.SimTarget;
 
 /** Configuration files and generator specs: good ones load, bad ones give located messages. */
 class ConfigFileTest {
@@ -22,9 +25,9 @@ class ConfigFileTest {
     private List<Diagnostic> errors(String name, String text) throws IOException {
         Path f = dir.resolve(name);
         Files.writeString(f, text);
-        DiagnosticList d = new DiagnosticList();
-        assertNull(RobotConfigs.resolve(f.toString(), new int[0], d));
-        return d.all();
+        // read, generated and assembled as a run does it, so errors of every stage are found
+        return org.junit.jupiter.api.Assertions.assertThrows(TargetException.class,
+                () -> SimTarget.blueprint(f.toString(), new int[0])).diagnostics();
     }
 
     @Test
@@ -34,6 +37,7 @@ class ConfigFileTest {
             Path p = Path.of("..", "examples", "configs", f);
             RobotConfig c = RobotConfigs.resolve(p.toString(), new int[0], d);
             assertNotNull(c, d.all().toString());
+            assertDoesNotThrow(() -> SimTarget.blueprint(p.toString(), new int[0]));
         }
     }
 

@@ -1,6 +1,5 @@
 package org.parpe.sim.config;
 
-import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTimeoutPreemptively;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -10,7 +9,8 @@ import java.nio.file.Path;
 import java.time.Duration;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.parpe.core.diag.DiagnosticList;
+import org.parpe.core.run.TargetException;
+import org.parpe.sim.SimTarget;
 
 /** Robot configurations from bad input: other scripts' digits, devices, FIFOs and huge files. */
 class ConfigInputTest {
@@ -18,9 +18,9 @@ class ConfigInputTest {
     Path dir;
 
     private static String errors(String spec) {
-        DiagnosticList d = new DiagnosticList();
-        assertNull(RobotConfigs.resolve(spec, new int[] {0, 1}, d));
-        return d.all().toString();
+        // read, generated and assembled as a run does it, so errors of every stage are found
+        return org.junit.jupiter.api.Assertions.assertThrows(TargetException.class,
+                () -> SimTarget.blueprint(spec, new int[] {0, 1})).diagnostics().toString();
     }
 
     @Test

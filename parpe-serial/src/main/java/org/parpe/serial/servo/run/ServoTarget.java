@@ -19,7 +19,7 @@ import org.parpe.serial.servo.profile.HardwareProfile;
  * {@code --hardware} and the IDE alike: opens the profile's bus, pings the script's servos before
  * anything moves (reporting modules without a servo in the profile and servos that do not
  * answer), and adds the servos as a plant, as the sensor source (priority
- * {@value HostPlant#PRIORITY}, above the simulator) and as trace columns {@code hw<ID>}. The run is
+ * {@link org.parpe.core.run.SourceKind#HARDWARE}, above the simulator) and as trace columns {@code hw<ID>}. The run is
  * paced to the wall clock; a run stopped by the user ends in an emergency stop. Bus problems
  * become warnings located at {@code bus PORT}; notes go to {@code notes}.
  */

@@ -1,7 +1,5 @@
-package org.parpe.sim.internal;
+package org.parpe.sim;
 
-import org.parpe.sim.Mat3;
-import org.parpe.sim.Vec3;
 
 /** Small vector and rotation helpers used while building a robot (not in the tick loop). */
 public final class Geo {
