@@ -17,7 +17,6 @@ import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
-import org.parpe.core.model.Program;
 
 /**
  * The tables' layout is declared once (issue 19 item 7): in {@link CLayout}, from which the translation writes
@@ -57,18 +56,8 @@ class CLayoutTest {
         return names;
     }
 
-    private static Program example(String name) {
-        Path dir = Path.of("").toAbsolutePath();
-        while (!dir.resolve("examples/" + name).toFile().isFile()) {
-            dir = dir.getParent();
-        }
-        LoadResult r = ScriptLoader.load(dir.resolve("examples/" + name), Map.of());
-        assertNotNull(r.program(), () -> r.diagnostics().toString());
-        return r.program();
-    }
-
     private static CProgram translated() {
-        return CProgram.of(example("teleop-dirwave.xml"), 0.01);
+        return CProgram.of(CExportTest.example("teleop-dirwave.xml"), 0.01);
     }
 
     @Test
