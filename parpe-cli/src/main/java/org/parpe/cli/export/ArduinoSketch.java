@@ -3,6 +3,7 @@ package org.parpe.cli.export;
 import java.nio.file.Path;
 import java.util.Locale;
 import org.parpe.cli.UsageException;
+import org.parpe.core.export.CRuntime;
 import org.parpe.core.export.CText;
 import org.parpe.core.model.Program;
 
@@ -54,7 +55,7 @@ final class ArduinoSketch {
             }
             b.append("};\n");
         }
-        b.append(RuntimeFiles.read("sketch.inc"));
+        b.append(CRuntime.read(CRuntime.SKETCH));
         return b.toString();
     }
 }

@@ -16,6 +16,7 @@ import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.export.Board;
 import org.parpe.core.export.CExport;
+import org.parpe.core.export.CRuntime;
 import org.parpe.core.export.DriverCost;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
@@ -137,7 +138,7 @@ public final class ExportCommand implements Callable<Integer> {
 
     /** Writes the runtime, the program and (for a sketch) the .ino into the folder, and says what it did. */
     private void write(Program program, CExport.Result result, SketchOptions sketch) throws IOException, UsageException {
-        Map<String, String> files = new LinkedHashMap<>(RuntimeFiles.runtime(sketch == null));
+        Map<String, String> files = new LinkedHashMap<>(CRuntime.runtime(sketch == null));
         files.putAll(result.files());
         Path dir = out;
         if (sketch != null) {

@@ -9,6 +9,7 @@ import java.util.Map;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.export.Board;
 import org.parpe.core.export.CExport;
+import org.parpe.core.export.CRuntime;
 import org.parpe.core.model.Program;
 
 /** Writes a complete host export (runtime, tables, trace program) for tools such as the benchmark. */
@@ -27,7 +28,7 @@ public final class ExportFolder {
         if (r == null) {
             throw new IllegalArgumentException(ExportCommand.lines(d.all()));
         }
-        Map<String, String> files = new LinkedHashMap<>(RuntimeFiles.runtime(true));
+        Map<String, String> files = new LinkedHashMap<>(CRuntime.runtime(true));
         files.putAll(r.files());
         for (Map.Entry<String, String> f : files.entrySet()) {
             Files.writeString(dir.resolve(f.getKey()), f.getValue(), StandardCharsets.UTF_8);

@@ -7,10 +7,14 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import org.parpe.core.diag.SourcePos;
+import org.parpe.core.export.CLayout.AutCol;
+import org.parpe.core.export.CLayout.EntryCol;
+import org.parpe.core.export.CLayout.InstCol;
+import org.parpe.core.export.CLayout.StateCol;
+import org.parpe.core.export.CLayout.VargCol;
 import org.parpe.core.expr.Expression;
 import org.parpe.core.model.Automaton;
 import org.parpe.core.model.Behavior;
-import org.parpe.core.model.BehaviorItem;
 import org.parpe.core.model.Conditional;
 import org.parpe.core.model.Instance;
 import org.parpe.core.model.MainEntry;
@@ -107,12 +111,15 @@ public final class CProgram {
             }
         }
         for (Automaton a : program.automata()) {
-            t.aut.add(new int[] {a.states().size(), t.state.size(), perModule(a) ? 1 : 0});
+            t.aut.add(new CLayout.Row<>(AutCol.class).set(AutCol.NS, a.states().size())
+                    .set(AutCol.STATES, t.state.size()).set(AutCol.PERMODULE, perModule(a) ? 1 : 0).done());
             for (int s = 0; s < a.states().size(); s++) {
                 StateDef st = a.states().get(s);
                 Timing tm = a.times().get(s);
-                t.state.add(new int[] {st.interp().ordinal(), st.angles().size(), t.angle.size(), id(tm.duration()),
-                    tm.exit() == null ? -1 : id(tm.exit())});
+                t.state.add(new CLayout.Row<>(StateCol.class).set(StateCol.INTERP, st.interp().ordinal())
+                        .set(StateCol.NANGLES, st.angles().size()).set(StateCol.ANGLES, t.angle.size())
+                        .set(StateCol.TIME, id(tm.duration())).set(StateCol.EXIT, tm.exit() == null ? -1 : id(tm.exit()))
+                        .done());
                 st.angles().forEach(e -> t.angle.add(id(e)));
             }
         }
@@ -133,7 +140,8 @@ public final class CProgram {
         int vargs = t.varg.size();
         for (MainEntry.MacroArg a : e.macros()) {
             if (a.value() != null) {
-                t.varg.add(new int[] {b.macros().indexOf(a.name()), id(a.value())});
+                t.varg.add(new CLayout.Row<>(VargCol.class).set(VargCol.SLOT, b.macros().indexOf(a.name()))
+                        .set(VargCol.EXPR, id(a.value())).done());
             }
         }
         int[] pool = {0, 0};
@@ -141,8 +149,10 @@ public final class CProgram {
             instance(binding, pool);
         }
         int n = t.inst.size() - first;
-        t.entry.add(new int[] {first, n, e.time() == null ? -1 : id(e.time()), e.exit() == null ? -1 : id(e.exit()),
-            vargs, t.varg.size() - vargs});
+        t.entry.add(new CLayout.Row<>(EntryCol.class).set(EntryCol.FIRST, first).set(EntryCol.NINST, n)
+                .set(EntryCol.TIME, e.time() == null ? -1 : id(e.time()))
+                .set(EntryCol.EXIT, e.exit() == null ? -1 : id(e.exit()))
+                .set(EntryCol.VARGS, vargs).set(EntryCol.NVARGS, t.varg.size() - vargs).done());
         maxInstances = Math.max(maxInstances, n);
         maxPool = Math.max(maxPool, pool[0]);
         maxDurations = Math.max(maxDurations, pool[1]);
@@ -161,9 +171,13 @@ public final class CProgram {
         }
         int cond = t.cond.size();
         conds.forEach(c -> t.cond.add(id(c.condition())));
-        int ns = t.aut.get(automaton)[0];
-        t.inst.add(new int[] {automaton, mirror ? 1 : 0, group.size(), mod, cond, conds.size(), opt(i.phase()),
-            opt(i.offset()), opt(i.period()), opt(i.start()), opt(i.cycles()), pool[0], pool[1], place(i.pos())});
+        int ns = t.aut.get(automaton)[AutCol.NS.ordinal()];
+        t.inst.add(new CLayout.Row<>(InstCol.class).set(InstCol.AUT, automaton).set(InstCol.MIRROR, mirror ? 1 : 0)
+                .set(InstCol.N, group.size()).set(InstCol.MOD, mod).set(InstCol.COND, cond)
+                .set(InstCol.NCOND, conds.size()).set(InstCol.PHASE, opt(i.phase()))
+                .set(InstCol.OFFSET, opt(i.offset())).set(InstCol.PERIOD, opt(i.period()))
+                .set(InstCol.START, opt(i.start())).set(InstCol.CYCLES, opt(i.cycles()))
+                .set(InstCol.POOL, pool[0]).set(InstCol.TBUF, pool[1]).set(InstCol.POS, place(i.pos())).done());
         instGroups.add(i.group());
         pool[0] += group.size();
         pool[1] += ns;
@@ -210,6 +224,7 @@ public final class CProgram {
         h.append("#define PARSL_MAIN_CYCLES (").append(cycles).append("L) /* -1: forever */\n");
         h.append("#define PARSL_DT ").append(CExpressions.literal(dt)).append(" /* the tick, ")
                 .append(String.format(Locale.ROOT, "%s", dt)).append(" s */\n");
+        CLayout.appendC(h);
         h.append("\n#endif\n");
         return h.toString();
     }
@@ -241,7 +256,7 @@ public final class CProgram {
         return c.toString();
     }
 
-    /** The rows of the generated tables, in the column order of {@code parsl_rt.h}. */
+    /** The rows of the generated tables, in the column order of {@link CLayout}. */
     static final class Tables {
         final List<int[]> entry = new ArrayList<>();
         final List<int[]> varg = new ArrayList<>();
@@ -253,8 +268,10 @@ public final class CProgram {
         final List<Integer> angle = new ArrayList<>();
 
         long cells() {
-            return 6L * entry.size() + 2L * varg.size() + 14L * inst.size() + mod.size() + cond.size()
-                    + 3L * aut.size() + 5L * state.size() + angle.size();
+            return (long) CLayout.width(EntryCol.class) * entry.size() + (long) CLayout.width(VargCol.class) * varg.size()
+                    + (long) CLayout.width(InstCol.class) * inst.size() + mod.size() + cond.size()
+                    + (long) CLayout.width(AutCol.class) * aut.size() + (long) CLayout.width(StateCol.class) * state.size()
+                    + angle.size();
         }
 
         /** The largest value in any table, which must fit an {@code int16_t}. */

@@ -38,20 +38,20 @@ final class CTables {
         list(c, "const int16_t parsl_slot[]", java.util.Arrays.stream(sensorSlot).boxed().toList());
         controls(c);
         c.append("\n/* <main> entries: first instance, instances, time, exit, first macro value, macro values */\n");
-        rows(c, "const int16_t parsl_entry[][PARSL_ENTRY_COLS]", t.entry, 6);
+        rows(c, "const int16_t parsl_entry[][PARSL_ENTRY_COLS]", t.entry, CLayout.EntryCol.class);
         c.append("/* expression-valued macros: slot, expression */\n");
-        rows(c, "const int16_t parsl_varg[][2]", t.varg, 2);
+        rows(c, "const int16_t parsl_varg[][PARSL_VARG_COLS]", t.varg, CLayout.VargCol.class);
         c.append("/* instances: automaton, mirror, modules, first module, first condition, conditions, phase, offset,\n"
                 + "   period, start, cycles (expressions, -1: none), state pool, duration pool, place */\n");
-        rows(c, "const int16_t parsl_inst[][PARSL_INST_COLS]", t.inst, 14);
+        rows(c, "const int16_t parsl_inst[][PARSL_INST_COLS]", t.inst, CLayout.InstCol.class);
         c.append("/* module indices of each instance's group, in group order */\n");
         list(c, "const int16_t parsl_inst_mod[]", t.mod);
         c.append("/* <if> conditions of each instance, outermost first */\n");
         list(c, "const int16_t parsl_cond[]", t.cond);
         c.append("/* automata: states, first state, whether durations depend on the module */\n");
-        rows(c, "const int16_t parsl_aut[][PARSL_AUT_COLS]", t.aut, 3);
+        rows(c, "const int16_t parsl_aut[][PARSL_AUT_COLS]", t.aut, CLayout.AutCol.class);
         c.append("/* states: profile (0 linear, 1 step, 2 smooth), angles, first angle, duration, exit (-1: none) */\n");
-        rows(c, "const int16_t parsl_state[][PARSL_STATE_COLS]", t.state, 5);
+        rows(c, "const int16_t parsl_state[][PARSL_STATE_COLS]", t.state, CLayout.StateCol.class);
         c.append("/* target angle expressions: one for the group, or one per position */\n");
         list(c, "const int16_t parsl_angle[]", t.angle);
         positions(c);
@@ -71,8 +71,10 @@ final class CTables {
             init.append(i == 0 ? "" : ", ").append(CExpressions.literal(k.value()));
             range.append(i == 0 ? "" : ", ").append('{').append(CExpressions.literal(k.min() == null ? 0 : k.min()))
                     .append(", ").append(CExpressions.literal(k.max() == null ? 0 : k.max())).append('}');
-            rows.append(i == 0 ? "" : ", ").append('{').append(k.type().ordinal()).append(", ").append(nwords)
-                    .append(", ").append(k.words().size()).append('}');
+            int[] row = new CLayout.Row<>(CLayout.ControlCol.class).set(CLayout.ControlCol.TYPE, k.type().ordinal())
+                    .set(CLayout.ControlCol.WORDS, nwords).set(CLayout.ControlCol.NWORDS, k.words().size()).done();
+            rows.append(i == 0 ? "{" : ", {").append(java.util.Arrays.stream(row).mapToObj(String::valueOf)
+                    .collect(java.util.stream.Collectors.joining(", "))).append('}');
             for (String w : k.words()) {
                 words.append(nwords++ == 0 ? "" : ", ").append(program.radioWords().get(w));
             }
@@ -82,7 +84,7 @@ final class CTables {
         if (cs.isEmpty()) {
             init.append("0.0");
             range.append("{0.0, 0.0}");
-            rows.append("{0, 0, 0}");
+            rows.append("{0}");
         }
         if (nwords == 0) {
             words.append('0');
@@ -162,7 +164,8 @@ final class CTables {
         c.append("\n};\n");
     }
 
-    private static void rows(StringBuilder c, String decl, List<int[]> rows, int width) {
+    private static <E extends Enum<E>> void rows(StringBuilder c, String decl, List<int[]> rows, Class<E> cols) {
+        int width = CLayout.width(cols);
         c.append("PARSL_ROM ").append(decl).append(" = {\n");
         for (int i = 0; i < rows.size(); i++) {
             c.append(i == 0 ? "    {" : ",\n    {");

@@ -196,7 +196,7 @@ final class InstanceRun {
         }
         sumT = s;
         if (!(s > 0)) {
-            throw ev.error(model.pos(), "the states of automaton '" + automaton + "' last " + s
+            throw ev.error(model.pos(), "the states of automaton '" + automaton + "' last " + Numbers.brief(s)
                     + " s in total; the total must be > 0");
         }
     }
@@ -205,7 +205,7 @@ final class InstanceRun {
     void prepareTick(Evaluator ev, Expression period) {
         double per = period == null ? Double.NaN : ev.eval(period);
         if (period != null && !(per > 0)) {
-            throw ev.error(period.pos(), "period of automaton '" + automaton + "' must be > 0, got " + per);
+            throw ev.error(period.pos(), "period of automaton '" + automaton + "' must be > 0, got " + Numbers.brief(per));
         }
         if (!timesPerModule) {
             enter(ev.ctx(), 0);
@@ -271,7 +271,7 @@ final class InstanceRun {
             skips = 0;
             if (++transitions > MAX_TRANSITIONS_PER_TICK) {
                 throw ev.error(model.pos(), "automaton '" + automaton + "' makes more than " + MAX_TRANSITIONS_PER_TICK
-                        + " state changes in one tick; its states are far shorter than the tick (" + dt + " s)");
+                        + " state changes in one tick; its states are far shorter than the tick (" + Numbers.brief(dt) + " s)");
             }
             if (u[k] + du >= lim - EPS) {
                 if (u[k] + du <= lim + EPS) {

@@ -27,7 +27,7 @@ class CExportTest {
         return r.program();
     }
 
-    private static Program example(String name) {
+    static Program example(String name) {
         Path dir = Path.of("").toAbsolutePath();
         while (!dir.resolve("examples/" + name).toFile().isFile()) {
             dir = dir.getParent();

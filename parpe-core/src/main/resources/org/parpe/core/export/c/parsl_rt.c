@@ -202,7 +202,8 @@ static void start_entry(parsl_rt *r, int16_t index)
     r->entry_start = r->tick;
     r->btime = 0;
     for (i = 0; i < n; i++) {
-        r->macros[PARSL_I16(parsl_varg[first + i], 0)] = parsl_eval(r, PARSL_I16(parsl_varg[first + i], 1));
+        r->macros[PARSL_I16(parsl_varg[first + i], PARSL_V_SLOT)] =
+                parsl_eval(r, PARSL_I16(parsl_varg[first + i], PARSL_V_EXPR));
     }
     for (i = 0; i < PARSL_I16(parsl_entry[index], PARSL_E_NINST); i++) {
         r->inst[i].started = 0;

@@ -220,6 +220,81 @@ int parsl_format(char *buf, double v)
     return len;
 }
 
+#ifndef PARSL_NO_NAMES
+/*
+ * A number in an error text as parpe run writes it (org.parpe.core.lang.Numbers.brief): rounded half up
+ * to 6 significant digits, trailing zeros dropped, positional notation, Java's names of the non-finite
+ * values. The exact decimal expansion glibc prints gives the digits and the rounding.
+ */
+typedef struct {
+    char s[340];
+} brief_text;
+
+static brief_text brief(double v)
+{
+    brief_text out;
+    char e[64];
+    char d[7];
+    const char *p;
+    int exp;
+    int nd = 6;
+    int len = 0;
+    int i;
+    if (isnan(v) || isinf(v)) {
+        snprintf(out.s, sizeof out.s, "%s", isnan(v) ? "NaN" : v > 0 ? "Infinity" : "-Infinity");
+        return out;
+    }
+    if (v == 0) {
+        snprintf(out.s, sizeof out.s, "0");
+        return out;
+    }
+    snprintf(e, sizeof e, "%.40e", v);
+    p = e[0] == '-' ? e + 1 : e;
+    d[0] = p[0];
+    memcpy(d + 1, p + 2, 5);
+    exp = atoi(strchr(p, 'e') + 1);
+    if (p[7] >= '5') {
+        for (i = 5; i >= 0 && d[i] == '9'; i--) {
+            d[i] = '0';
+        }
+        if (i < 0) {
+            d[0] = '1';
+            exp++;
+        } else {
+            d[i]++;
+        }
+    }
+    while (nd > 1 && d[nd - 1] == '0') {
+        nd--;
+    }
+    if (v < 0) {
+        out.s[len++] = '-';
+    }
+    if (exp < 0) {
+        out.s[len++] = '0';
+        out.s[len++] = '.';
+        for (i = 0; i < -exp - 1; i++) {
+            out.s[len++] = '0';
+        }
+        for (i = 0; i < nd; i++) {
+            out.s[len++] = d[i];
+        }
+    } else {
+        for (i = 0; i <= exp; i++) {
+            out.s[len++] = i < nd ? d[i] : '0';
+        }
+        if (nd > exp + 1) {
+            out.s[len++] = '.';
+            for (i = exp + 1; i < nd; i++) {
+                out.s[len++] = d[i];
+            }
+        }
+    }
+    out.s[len] = '\0';
+    return out;
+}
+#endif
+
 const char *parsl_error_text(const parsl_rt *r, char *msg, size_t n)
 {
 #ifdef PARSL_NO_NAMES
@@ -234,26 +309,28 @@ const char *parsl_error_text(const parsl_rt *r, char *msg, size_t n)
     case PARSL_E_DIFF: snprintf(msg, n, "a difference is not a finite number"); break;
     case PARSL_E_PROD: snprintf(msg, n, "a product is not a finite number"); break;
     case PARSL_E_QUOT: snprintf(msg, n, "a quotient is not a finite number"); break;
-    case PARSL_E_POW: snprintf(msg, n, "%g^%g is not a finite number", r->err_a, r->err_b); break;
-    case PARSL_E_FUNC: snprintf(msg, n, "%s() of %g is not a finite number", FUNCTIONS[r->err_what], r->err_a); break;
+    case PARSL_E_POW: snprintf(msg, n, "%s^%s is not a finite number", brief(r->err_a).s, brief(r->err_b).s); break;
+    case PARSL_E_FUNC: snprintf(msg, n, "%s() of %s is not a finite number", FUNCTIONS[r->err_what], brief(r->err_a).s); break;
     case PARSL_E_SUMF: snprintf(msg, n, "sum() is not a finite number"); break;
-    case PARSL_E_VALUE: snprintf(msg, n, "the value %g is not a finite number", r->err_a); break;
-    case PARSL_E_PERIOD: snprintf(msg, n, "period of automaton '%s' must be > 0, got %g", aut, r->err_a); break;
+    case PARSL_E_VALUE: snprintf(msg, n, "the value %s is not a finite number", brief(r->err_a).s); break;
+    case PARSL_E_PERIOD: snprintf(msg, n, "period of automaton '%s' must be > 0, got %s", aut, brief(r->err_a).s); break;
     case PARSL_E_TOTAL:
-        snprintf(msg, n, "the states of automaton '%s' last %g s in total; the total must be > 0", aut, r->err_a);
+        snprintf(msg, n, "the states of automaton '%s' last %s s in total; the total must be > 0", aut,
+                 brief(r->err_a).s);
         break;
     case PARSL_E_NEGATIVE: {
         int16_t a = 0;
         while (a + 1 < PARSL_NA && PARSL_I16(parsl_aut[a + 1], PARSL_A_STATES) <= r->err_what) {
             a++;
         }
-        snprintf(msg, n, "state '%s' of automaton '%s' has a negative duration: %g s (durations must be >= 0)",
-                 parsl_state_names[r->err_what], parsl_aut_names[a], r->err_a);
+        snprintf(msg, n, "state '%s' of automaton '%s' has a negative duration: %s s (durations must be >= 0)",
+                 parsl_state_names[r->err_what], parsl_aut_names[a], brief(r->err_a).s);
         break;
     }
     case PARSL_E_ALLZERO: snprintf(msg, n, "every state of automaton '%s' has a duration <= 0", aut); break;
     default:
-        snprintf(msg, n, "automaton '%s' makes more than 10000 state changes in one tick", aut);
+        snprintf(msg, n, "automaton '%s' makes more than 10000 state changes in one tick; its states are far shorter"
+                 " than the tick (%s s)", aut, brief(PARSL_DT).s);
         break;
     }
 #endif

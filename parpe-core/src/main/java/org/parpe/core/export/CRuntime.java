@@ -1,4 +1,4 @@
-package org.parpe.cli.export;
+package org.parpe.core.export;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -8,19 +8,26 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
-/** The portable C runtime shipped as resources beside this class ({@code c/}). */
-final class RuntimeFiles {
+/**
+ * The portable C runtime the translation runs on, kept as text resources beside this class ({@code c/}):
+ * the tables' layout it reads is not declared there but generated into {@code parsl_program.h} from
+ * {@link CLayout}.
+ */
+public final class CRuntime {
     /** The runtime's files, in every export. */
-    static final List<String> RUNTIME = List.of("parsl_rt.h", "parsl_rt.c", "parsl_inst.h", "parsl_inst.c", "parsl_io.c");
+    public static final List<String> RUNTIME =
+            List.of("parsl_rt.h", "parsl_rt.c", "parsl_inst.h", "parsl_inst.c", "parsl_io.c");
     /** The host trace program's main. */
-    static final String HOST_MAIN = "parsl_host.c";
+    public static final String HOST_MAIN = "parsl_host.c";
+    /** The Arduino board code the sketch appends. */
+    public static final String SKETCH = "sketch.inc";
 
-    private RuntimeFiles() {
+    private CRuntime() {
     }
 
     /** The content of resource {@code c/NAME}. */
-    static String read(String name) {
-        try (InputStream in = RuntimeFiles.class.getResourceAsStream("c/" + name)) {
+    public static String read(String name) {
+        try (InputStream in = CRuntime.class.getResourceAsStream("c/" + name)) {
             if (in == null) {
                 throw new IllegalStateException("the runtime file " + name + " is missing from the PARPE jar");
             }
@@ -31,7 +38,7 @@ final class RuntimeFiles {
     }
 
     /** The runtime files, plus the host main if {@code host}. */
-    static Map<String, String> runtime(boolean host) {
+    public static Map<String, String> runtime(boolean host) {
         Map<String, String> out = new LinkedHashMap<>();
         for (String f : RUNTIME) {
             out.put(f, read(f));

@@ -13,6 +13,8 @@
 #include <stdint.h>
 #include <stddef.h>
 #include <setjmp.h>
+/* parsl_program.h declares the sizes, the tables' widths and column indices, and the codes of the
+   sensor channels, control types and profiles (all generated from the translation's CLayout). */
 #include "parsl_program.h"
 
 #ifdef __cplusplus
@@ -32,10 +34,6 @@ extern "C" {
 #define PARSL_U16(a, i) ((a)[i])
 #define PARSL_DBL(a, i) ((a)[i])
 #endif
-
-/* Sensor channels, in the order of org.parpe.core.sensor.Channel. */
-enum { PARSL_ANGLE, PARSL_ACCEL_X, PARSL_ACCEL_Y, PARSL_ACCEL_Z, PARSL_TOUCH_LEFT, PARSL_TOUCH_RIGHT,
-       PARSL_CHANNELS };
 
 /* Results of parsl_step. */
 enum { PARSL_ENDED = 0, PARSL_RUNNING = 1, PARSL_ERROR = 2 };
@@ -147,13 +145,6 @@ double parsl_rand(parsl_rt *r);
 double parsl_min(double a, double b);
 double parsl_max(double a, double b);
 
-/* Widths of the generated tables. */
-#define PARSL_CONTROL_COLS 3
-#define PARSL_ENTRY_COLS 6
-#define PARSL_INST_COLS 14
-#define PARSL_AUT_COLS 3
-#define PARSL_STATE_COLS 5
-
 /* Generated in parsl_program.c. */
 double parsl_expr(parsl_rt *r, int16_t x);
 int16_t parsl_control_index(const char *name);
@@ -165,7 +156,7 @@ extern PARSL_ROM const int16_t parsl_control[][PARSL_CONTROL_COLS];
 extern PARSL_ROM const double parsl_control_range[][2];
 extern PARSL_ROM const int16_t parsl_words[];
 extern PARSL_ROM const int16_t parsl_entry[][PARSL_ENTRY_COLS];
-extern PARSL_ROM const int16_t parsl_varg[][2];
+extern PARSL_ROM const int16_t parsl_varg[][PARSL_VARG_COLS];
 extern PARSL_ROM const int16_t parsl_inst[][PARSL_INST_COLS];
 extern PARSL_ROM const int16_t parsl_inst_mod[];
 extern PARSL_ROM const int16_t parsl_cond[];
@@ -181,17 +172,6 @@ extern const char *const parsl_aut_names[];
 extern const char *const parsl_inst_groups[];
 extern const char *const parsl_state_names[];
 #endif
-
-/* Columns of the generated tables. */
-enum { PARSL_C_TYPE, PARSL_C_WORDS, PARSL_C_NWORDS };
-enum { PARSL_CT_SLIDER, PARSL_CT_TEXT, PARSL_CT_RADIO };
-enum { PARSL_E_FIRST, PARSL_E_NINST, PARSL_E_TIME, PARSL_E_EXIT, PARSL_E_VARGS, PARSL_E_NVARGS };
-enum { PARSL_I_AUT, PARSL_I_MIRROR, PARSL_I_N, PARSL_I_MOD, PARSL_I_COND, PARSL_I_NCOND, PARSL_I_PHASE,
-       PARSL_I_OFFSET, PARSL_I_PERIOD, PARSL_I_START, PARSL_I_CYCLES, PARSL_I_POOL, PARSL_I_TBUF,
-       PARSL_I_POS };
-enum { PARSL_A_NS, PARSL_A_STATES, PARSL_A_PERMODULE };
-enum { PARSL_S_INTERP, PARSL_S_NANGLES, PARSL_S_ANGLES, PARSL_S_TIME, PARSL_S_EXIT };
-enum { PARSL_LINEAR, PARSL_STEP, PARSL_SMOOTH };
 
 #ifdef __cplusplus
 }
