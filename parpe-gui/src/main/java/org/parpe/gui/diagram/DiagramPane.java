@@ -495,26 +495,37 @@ public final class DiagramPane {
         return canvas.toCanvas(p[0], p[1]);
     }
 
-    /** The edit row: the selected node's values as fields; Enter in one writes it. */
+    /** The edit row: the selected node's values as fields (Enter in one writes it) and its actions ({@link EditRow}). */
     private void showFields() {
-        for (Control c : fields.getChildren()) {
-            c.dispose();
-        }
-        Projection.Target t = shown == null ? null : selected != null ? shown.targets().get(selected)
-                : shown.ring() != null ? shown.targets().get(shown.ring().pos()) : null;
-        Label title = new Label(fields, SWT.NONE);
-        title.setText(t == null ? "" : t.title());
-        for (Projection.Field f : t == null ? List.<Projection.Field>of() : t.fields()) {
-            new Label(fields, SWT.NONE).setText(f.name() + ":");
-            Text field = new Text(fields, SWT.BORDER | SWT.SINGLE);
-            field.setData("field", f.name());
-            field.setText(f.value());
-            field.setLayoutData(new RowData(Math.max(60, 9 * (f.value().length() + 2)), SWT.DEFAULT));
-            field.setToolTipText("Enter writes the new " + f.name() + " into the text (one Undo step)");
-            field.addListener(SWT.DefaultSelection, e -> write(f, field.getText()));
-        }
+        Projection.Target t = shown == null ? null : shown.targets().get(selected != null ? selected : shown.home());
+        EditRow.fill(fields, t, shown == null ? null : org.parpe.gui.editor.NameIndex.of(shown.text()), this::write, this::act);
         fields.layout(true);
         box.layout(true, true);
+    }
+
+    /** The action buttons of the edit row, by label. */
+    public java.util.Map<String, org.eclipse.swt.widgets.Button> actions() {
+        java.util.Map<String, org.eclipse.swt.widgets.Button> out = new java.util.LinkedHashMap<>();
+        for (Control c : fields.getChildren()) {
+            if (c instanceof org.eclipse.swt.widgets.Button b) {
+                out.put((String) b.getData("action"), b);
+            }
+        }
+        return out;
+    }
+
+    /** Button {@code a} was pressed with its inputs' {@code values}: write its edit (one Undo step). */
+    private void act(Projection.Action a, List<String> values) {
+        if (!current()) {
+            message.setText("The text has changed since the diagram was drawn; try again in a moment.");
+            return;
+        }
+        try {
+            apply(a.edit().apply(values));
+        } catch (IllegalArgumentException e) {
+            message.setText(e.getMessage());
+            box.layout(true, true);
+        }
     }
 
     /**

@@ -9,6 +9,7 @@ import java.util.function.Function;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.Severity;
 import org.parpe.core.diag.SourcePos;
+import org.parpe.core.diagram.BehaviorEdits;
 import org.parpe.core.diagram.DiagramEdits;
 import org.parpe.core.diagram.Diagrams;
 import org.parpe.core.diagram.Gait;
@@ -82,12 +83,43 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
      * @param index  its place among the nodes it can be moved between (a {@code <main>} entry's), or −1
      * @param moveTo the text edit that moves it to another place, or {@code null} when it cannot move
      */
-    record Target(String title, List<Field> fields, int index, java.util.function.IntFunction<TextEdit> moveTo) {
+    record Target(String title, List<Field> fields, int index, java.util.function.IntFunction<TextEdit> moveTo,
+                  List<Action> actions) {
+
+        /** A node that moves and has no actions. */
+        Target(String title, List<Field> fields, int index, java.util.function.IntFunction<TextEdit> moveTo) {
+            this(title, fields, index, moveTo, List.of());
+        }
 
         /** A node that does not move. */
         Target(String title, List<Field> fields) {
             this(title, fields, -1, null);
         }
+    }
+
+    /**
+     * A button of a node's edit row ({@link EditRow}): its inputs are fields of their own, and
+     * the button turns their values into one text edit (may throw IllegalArgumentException).
+     *
+     * @param name   the button's label
+     * @param inputs the names of its input fields, in order (none: the button acts at once)
+     * @param edit   the text edit for the inputs' values
+     */
+    record Action(String name, List<String> inputs, Function<List<String>, TextEdit> edit) {
+    }
+
+    /**
+     * The node whose edit row shows while nothing is selected: the ring's automaton, the
+     * lanes' behavior, or (the program view's first target) {@code <main>} itself.
+     */
+    SourcePos home() {
+        if (ring != null) {
+            return ring.pos();
+        }
+        if (lanes != null) {
+            return lanes.pos();
+        }
+        return view == View.PROGRAM && !targets.isEmpty() ? targets.keySet().iterator().next() : null;
     }
 
     /**
@@ -125,7 +157,7 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         }
     }
 
-    private static boolean mine(SourcePos pos, Path file) {
+    static boolean mine(SourcePos pos, Path file) {
         return pos != null && pos.span() != null && pos.file().equals(file.toString());
     }
 
@@ -134,6 +166,12 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         if (lane.isEmpty()) {
             return new Projection(text, file, View.PROGRAM, List.of(), null, null, targets,
                     "The script has no <main>: see the Lanes, Ring or Phase view.");
+        }
+        var main = p.mainDef().orElseThrow();
+        if (mine(main.pos(), file)) {
+            targets.put(main.pos(), new Target("<main> (click a box for an entry)", List.of(), -1, null, List.of(
+                    new Action("Add behavior", List.of("behavior", "automaton", "group", "time"),
+                            v -> BehaviorEdits.addBehavior(text, p, v.get(0), v.get(1), v.get(2), v.get(3))))));
         }
         for (ProgramLane.Step s : lane.get().steps()) {
             if (mine(s.pos(), file)) {
@@ -153,7 +191,13 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         }
         String chosen = names.contains(subject) ? subject
                 : p.main() != null && !p.main().entries().isEmpty() ? p.main().entries().get(0).behavior() : names.get(0);
-        Swimlanes s = Diagrams.swimlanes(p, p.behavior(chosen).orElseThrow());
+        Behavior behavior = p.behavior(chosen).orElseThrow();
+        Swimlanes s = Diagrams.swimlanes(p, behavior);
+        if (mine(behavior.pos(), file)) {
+            targets.put(behavior.pos(), new Target("behavior " + chosen + " (click a bar for an instance)", List.of(), -1, null,
+                    List.of(new Action("Add instance", List.of("automaton", "group"),
+                            v -> BehaviorEdits.addInstance(text, behavior, v.get(0), v.get(1))))));
+        }
         for (Swimlanes.Lane l : s.lanes()) {
             for (Swimlanes.Bar b : l.bars()) {
                 if (mine(b.pos(), file)) {
@@ -186,8 +230,9 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
                         new Field("add state", "", v -> DiagramEdits.addState(text, p, a, v, "1")))));
             }
             for (Ring.Arc arc : r.arcs()) {
-                targets.putIfAbsent(arc.pos(), new Target("state " + arc.index() + " of " + a.name() + ": " + arc.state(),
-                        List.of(new Field("duration", arc.duration(), v -> DiagramEdits.retime(text, a, arc.index(), v)))));
+                targets.putIfAbsent(arc.pos(), a.table() ? new Target("row " + arc.index() + " of " + a.name(), List.of(
+                        new Field("duration", arc.duration(), v -> DiagramEdits.retime(text, a, arc.index(), v))))
+                        : StateTargets.of(text, file, p, a, arc));
             }
         }
         List<List<String>> automata = new ArrayList<>();

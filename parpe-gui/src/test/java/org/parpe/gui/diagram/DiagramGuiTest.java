@@ -160,7 +160,7 @@ class DiagramGuiTest {
         show(View.PROGRAM, null);
         picture(View.PROGRAM);
         show(View.LANES, "walk");
-        assertEquals(4, pane().shown().targets().size(), "a bar per instance of walk");
+        assertEquals(5, pane().shown().targets().size(), "a bar per instance of walk, and the behavior itself (its Add instance)");
         picture(View.LANES);
         show(View.RING, "step");
         assertEquals(java.util.List.of("swing", "step"), pane().shown().subjects());
