@@ -19,6 +19,7 @@ import org.parpe.core.diag.SourcePos;
 import org.parpe.core.diagram.BehaviorEdits;
 import org.parpe.core.diagram.DiagramEdits;
 import org.parpe.core.diagram.Diagrams;
+import org.parpe.core.diagram.PaletteEdits;
 import org.parpe.core.diagram.RingEdits;
 import org.parpe.core.diagram.TextEdit;
 import org.parpe.core.load.LoadResult;
@@ -221,8 +222,7 @@ class DiagramEditProperties {
             return HandEdits.appendChild(withDef, p.main().pos().line(), p.main().pos().column(), last, entry);
         }
         String withEntry = HandEdits.appendChild(text, p.main().pos().line(), p.main().pos().column(), last, entry);
-        int shift = withEntry.length() - text.length();
-        return HandEdits.replace(withEntry, bEnd + shift, bEnd + shift, def);
+        return HandEdits.replace(withEntry, bEnd, bEnd, def);
     }
 
     @Example
@@ -271,6 +271,27 @@ class DiagramEditProperties {
         String more = BehaviorEdits.addInstance(edited, q.behavior("rest").orElseThrow(), "swing", "leftSwing").apply(edited);
         assertTrue(more.contains("      <step group=\"spine\"/>\n      <swing group=\"leftSwing\"/>\n    </rest>"), more);
         assertEquals(2, ScriptLoader.loadText(f, more, Map.of()).program().behavior("rest").orElseThrow().instances().size());
+    }
+
+    @Example
+    void thePaletteDefinesEachThingAfterTheLastOfItsKind() throws Exception {
+        Path f = Examples.dir().resolve("hello-snake.xml");
+        String text = Files.readString(f);
+        Program p = ScriptLoader.load(f, Map.of()).program();
+        assertEquals(text.replace("<group2 elements=\"0,2,4,6\" />", "<group2 elements=\"0,2,4,6\" />\n      <tail elements=\"7..9\"/>"),
+                PaletteEdits.addGroup(text, p, "tail", "7..9").apply(text));
+        assertEquals(text.replace("<down angles=\"-30\" />", "<down angles=\"-30\" />\n    <flat angles=\"0\"/>"),
+                PaletteEdits.addPose(text, p, "flat", "0").apply(text));
+        assertEquals(text.replace("<wave states=\"up, down\" />", "<wave states=\"up, down\" />\n    <hop states=\"down, up\" times=\"1, 0.5\"/>"),
+                PaletteEdits.addAutomaton(text, p, "hop", "down, up", "1, 0.5").apply(text));
+        String table = PaletteEdits.addGaitTable(text, p, "travel", List.of("15, -15, 15, -15", "-15, 15, -15, 15"), "1, 1")
+                .apply(text);
+        assertEquals(text.replace("<wave states=\"up, down\" />", "<wave states=\"up, down\" />\n    <travel times=\"1, 1\">\n"
+                + "      15, -15, 15, -15\n      -15, 15, -15, 15\n    </travel>"), table);
+        assertEquals(2, ScriptLoader.loadText(f, table, Map.of()).program().automaton("travel").orElseThrow().states().size());
+        assertEquals(text.replace("    <simpleWave />\n", ""), BehaviorEdits.removeEntry(text, p.main(), 0).apply(text));
+        assertEquals("a state named 'up' exists already", org.junit.jupiter.api.Assertions.assertThrows(
+                IllegalArgumentException.class, () -> PaletteEdits.addPose(text, p, "up", "1")).getMessage());
     }
 
     @Example

@@ -62,8 +62,33 @@ public final class BehaviorEdits {
         return new TextEdit(edits);
     }
 
+    /**
+     * Removes entry {@code index} of {@code <main>} with the line it stands on when nothing else
+     * is written there; the behavior stays defined.
+     */
+    public static TextEdit removeEntry(String text, MainDef main, int index) {
+        int n = main.entries().size();
+        if (index < 0 || index >= n) {
+            throw new IllegalArgumentException("<main> has entries 0.." + (n - 1) + ", not " + index);
+        }
+        return removeElement(text, DiagramEdits.span(main.entries().get(index).pos()));
+    }
+
+    /** Removes the element {@code s}, with its line when it stands alone on it. */
+    static TextEdit removeElement(String text, SourceSpan s) {
+        int from = s.start();
+        int to = s.end();
+        int lineStart = text.lastIndexOf('\n', from - 1) + 1;
+        int lineEnd = text.indexOf('\n', to);
+        if (text.substring(lineStart, from).isBlank() && lineEnd >= 0 && text.substring(to, lineEnd).isBlank()) {
+            from = lineStart;
+            to = lineEnd + 1;
+        }
+        return TextEdit.of(from, to - from, "");
+    }
+
     /** {@code element} as the last child of the element {@code parent} (named {@code tag}), after {@code last}. */
-    private static TextEdit appendChild(String text, SourceSpan parent, String tag, SourcePos last, String element) {
+    static TextEdit appendChild(String text, SourceSpan parent, String tag, SourcePos last, String element) {
         if (last != null) {
             SourceSpan ls = DiagramEdits.span(last);
             return TextEdit.of(ls.end(), 0, "\n" + indent(text, ls.start()) + element);
@@ -78,13 +103,13 @@ public final class BehaviorEdits {
     }
 
     /** The spaces before {@code offset} on its line when only spaces are there, else none. */
-    private static String indent(String text, int offset) {
+    static String indent(String text, int offset) {
         int lineStart = text.lastIndexOf('\n', offset - 1) + 1;
         String before = text.substring(lineStart, offset);
         return before.isBlank() ? before : "";
     }
 
-    private static String name(String name, String what) {
+    static String name(String name, String what) {
         if (!NAME.matcher(name).matches()) {
             throw new IllegalArgumentException("'" + name + "' cannot name a " + what
                     + ": a letter or _ first, then letters, digits, _, . or -");
