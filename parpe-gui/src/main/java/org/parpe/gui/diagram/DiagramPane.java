@@ -60,6 +60,8 @@ public final class DiagramPane {
     private boolean following;
     private Point dragFrom;
     private Projection.Target dragged;
+    private Projection.Target offered;
+    private final Palette palette;
 
     /** The pane in {@code parent}, showing {@code editor}'s document as the file {@code file} names. */
     public DiagramPane(Composite parent, ParslEditor editor, Supplier<Path> file) {
@@ -88,6 +90,7 @@ public final class DiagramPane {
             subject = subjectChoice.getText();
             relayout();
         });
+        palette = new Palette(box, this);
         fields = new Composite(box, SWT.NONE);
         RowLayout fl = new RowLayout(SWT.HORIZONTAL);
         fl.center = true;
@@ -246,6 +249,7 @@ public final class DiagramPane {
 
     /** A click on the canvas: select the node's element, or open an island's text at its line. */
     private void clicked(SourcePos node) {
+        offered = null;
         if (shown == null) {
             return;
         }
@@ -497,10 +501,22 @@ public final class DiagramPane {
 
     /** The edit row: the selected node's values as fields (Enter in one writes it) and its actions ({@link EditRow}). */
     private void showFields() {
-        Projection.Target t = shown == null ? null : shown.targets().get(selected != null ? selected : shown.home());
+        Projection.Target t = offered != null ? offered
+                : shown == null ? null : shown.targets().get(selected != null ? selected : shown.home());
         EditRow.fill(fields, t, shown == null ? null : org.parpe.gui.editor.NameIndex.of(shown.text()), this::write, this::act);
         fields.layout(true);
         box.layout(true, true);
+    }
+
+    /** Shows {@code t} (a palette item's inputs) in the edit row until a node is clicked. */
+    void offer(Projection.Target t) {
+        offered = t;
+        showFields();
+    }
+
+    /** The palette, for tests. */
+    Palette palette() {
+        return palette;
     }
 
     /** The action buttons of the edit row, by label. */

@@ -178,7 +178,8 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
                 targets.put(s.pos(), new Target("<main> entry " + s.index() + ": " + s.behavior(), List.of(
                         new Field("time", s.time() == null ? "" : s.time(),
                                 v -> DiagramEdits.setAttribute(text, s.pos(), "time", v))), s.index(),
-                        to -> DiagramEdits.moveEntry(text, p.mainDef().orElseThrow(), s.index(), to)));
+                        to -> DiagramEdits.moveEntry(text, main, s.index(), to),
+                        List.of(new Action("Remove entry", List.of(), v -> BehaviorEdits.removeEntry(text, main, s.index())))));
             }
         }
         return new Projection(text, file, View.PROGRAM, List.of(), null, Layouts.program(lane.get()), targets, "");
@@ -201,8 +202,9 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         for (Swimlanes.Lane l : s.lanes()) {
             for (Swimlanes.Bar b : l.bars()) {
                 if (mine(b.pos(), file)) {
-                    targets.put(b.pos(), instanceTarget(text, "instance " + b.index() + ": " + b.automaton() + " on "
-                            + (b.mirrored() ? "!" : "") + l.group(), b.pos(), b.phase(), b.offset()));
+                    targets.put(b.pos(), instanceTarget(text, file, "instance " + b.index() + ": " + b.automaton() + " on "
+                            + (b.mirrored() ? "!" : "") + l.group(), b.pos(), b.phase(), b.offset(), b.period(),
+                            p.group(l.group()).orElse(null)));
                 }
             }
         }
@@ -210,10 +212,17 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
                 null, null, List.of(), s);
     }
 
-    private static Target instanceTarget(String text, String title, SourcePos pos, String phase, String offset) {
-        return new Target(title, List.of(
+    /** An instance: its phase, offset and period, and the elements of its group when that is defined in this file. */
+    private static Target instanceTarget(String text, Path file, String title, SourcePos pos, String phase, String offset,
+                                         String period, Group g) {
+        List<Field> fields = new ArrayList<>(List.of(
                 new Field("phase", phase == null ? "" : phase, v -> DiagramEdits.setAttribute(text, pos, "phase", v)),
-                new Field("offset", offset == null ? "" : offset, v -> DiagramEdits.setAttribute(text, pos, "offset", v))));
+                new Field("offset", offset == null ? "" : offset, v -> DiagramEdits.setAttribute(text, pos, "offset", v)),
+                new Field("period", period == null ? "" : period, v -> DiagramEdits.setAttribute(text, pos, "period", v))));
+        if (g != null && !g.implicit() && mine(g.pos(), file)) {
+            fields.add(new Field("elements", g.elements(), v -> DiagramEdits.setAttribute(text, g.pos(), "elements", v)));
+        }
+        return new Target(title, fields);
     }
 
     private static Projection ring(String text, Path file, Program p, String subject, Map<SourcePos, Target> targets) {
@@ -271,8 +280,8 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         PhaseWheel w = Diagrams.wheel(in, g);
         Scene sc = Layouts.wheel(w);
         if (mine(in.pos(), file)) {
-            targets.put(in.pos(), instanceTarget(text, chosen, in.pos(), in.phase() == null ? null : in.phase().text(),
-                    in.offset() == null ? null : in.offset().text()));
+            targets.put(in.pos(), instanceTarget(text, file, chosen, in.pos(), in.phase() == null ? null : in.phase().text(),
+                    in.offset() == null ? null : in.offset().text(), in.period() == null ? null : in.period().text(), g));
         }
         return new Projection(text, file, View.PHASE, labels, chosen, sc, targets, islands(w.islands().size()), w, null, List.of(), null);
     }
