@@ -150,6 +150,7 @@ public final class IdeWindow {
         // After wire(): the panel shows its posed robot in the 3D view, and the run's otherwise.
         pose = new PosePanel(bottom, new PoseBridge(this));
         poseTab = Panels.tab(bottom, "Pose", pose.control());
+        diagram.usePoses(pose::selectedAngles);
         bottom.addListener(SWT.Selection, e -> fitBottom());
     }
 

@@ -61,6 +61,7 @@ public final class DiagramPane {
     private Point dragFrom;
     private Projection.Target dragged;
     private Projection.Target offered;
+    private Supplier<String> pose;
     private final Palette palette;
 
     /** The pane in {@code parent}, showing {@code editor}'s document as the file {@code file} names. */
@@ -184,7 +185,10 @@ public final class DiagramPane {
 
     private void show(Projection p) {
         shown = p;
-        subject = p.subject();
+        // a text that does not load for a moment (an Undo in two steps, typing) keeps the subject chosen
+        if (p.subject() != null) {
+            subject = p.subject();
+        }
         List<String> items = p.subjects();
         if (!items.equals(List.of(subjectChoice.getItems()))) {
             subjectChoice.setItems(items.toArray(String[]::new));
@@ -503,7 +507,8 @@ public final class DiagramPane {
     private void showFields() {
         Projection.Target t = offered != null ? offered
                 : shown == null ? null : shown.targets().get(selected != null ? selected : shown.home());
-        EditRow.fill(fields, t, shown == null ? null : org.parpe.gui.editor.NameIndex.of(shown.text()), this::write, this::act);
+        EditRow.fill(fields, t, shown == null ? null : org.parpe.gui.editor.NameIndex.of(shown.text()), this::write, this::act,
+                pose);
         fields.layout(true);
         box.layout(true, true);
     }
@@ -512,6 +517,42 @@ public final class DiagramPane {
     void offer(Projection.Target t) {
         offered = t;
         showFields();
+    }
+
+    /**
+     * Takes poses from {@code selected} (the Pose panel's selected pose as angles, or null): a
+     * state's edit row gets "Use pose", and a pose dragged onto a state of the ring becomes its angles.
+     */
+    public void usePoses(Supplier<String> selected) {
+        boolean first = pose == null;
+        pose = selected;
+        if (!first) {
+            showFields();
+            return;
+        }
+        var drop = new org.eclipse.swt.dnd.DropTarget(canvas.control(), org.eclipse.swt.dnd.DND.DROP_COPY
+                | org.eclipse.swt.dnd.DND.DROP_DEFAULT);
+        drop.setTransfer(org.eclipse.swt.dnd.TextTransfer.getInstance());
+        drop.addDropListener(new org.eclipse.swt.dnd.DropTargetAdapter() {
+            @Override
+            public void drop(org.eclipse.swt.dnd.DropTargetEvent e) {
+                Point p = canvas.control().toControl(e.x, e.y);
+                dropPose(p.x, p.y, (String) e.data);
+            }
+        });
+        showFields();
+    }
+
+    /** Text {@code angles} was dropped at canvas pixel {@code x, y}: the state there takes them as its angles. */
+    void dropPose(int x, int y, String angles) {
+        double[] p = canvas.toScene(x, y);
+        Projection.Target t = shown == null ? null : shown.targets().get(canvas.hit(p[0], p[1]));
+        Projection.Field f = t == null ? null : t.fields().stream().filter(g -> g.name().equals("angles")).findFirst().orElse(null);
+        if (f == null) {
+            message.setText("Drop a pose on a state of the ring (Ring view) whose definition is in this file.");
+            return;
+        }
+        act(new Projection.Action("Use pose", List.of(), v -> f.edit().apply(EditRow.usable(angles))), List.of());
     }
 
     /** The palette, for tests. */

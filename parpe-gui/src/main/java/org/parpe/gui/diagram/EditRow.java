@@ -3,6 +3,7 @@ package org.parpe.gui.diagram;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.BiConsumer;
+import java.util.function.Supplier;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.RowData;
 import org.eclipse.swt.widgets.Button;
@@ -29,7 +30,7 @@ final class EditRow {
      * {@code names} are offered in every field.
      */
     static void fill(Composite row, Target t, NameIndex names, BiConsumer<Field, String> write,
-                     BiConsumer<Action, List<String>> act) {
+                     BiConsumer<Action, List<String>> act, Supplier<String> pose) {
         for (var c : row.getChildren()) {
             c.dispose();
         }
@@ -42,19 +43,43 @@ final class EditRow {
             Text field = field(row, f.name(), f.value(), names);
             field.setToolTipText("Enter writes the new " + f.name() + " into the text (one Undo step); Ctrl+Space offers names");
             field.addListener(SWT.DefaultSelection, e -> write.accept(f, field.getText()));
+            if (f.name().equals("angles") && pose != null) {
+                button(row, "Use pose", "The pose selected in the Pose panel becomes this state's angles (or drag it onto the state)",
+                        () -> act.accept(new Action("Use pose", List.of(), v -> f.edit().apply(usable(pose.get()))), List.of()));
+            }
         }
         for (Action a : t.actions()) {
             List<Text> inputs = new ArrayList<>();
             for (String input : a.inputs()) {
                 inputs.add(field(row, input, "", names));
             }
-            Button b = new Button(row, SWT.PUSH);
-            b.setText(a.name());
-            b.setData("action", a.name());
             Runnable go = () -> act.accept(a, inputs.stream().map(x -> x.getText().trim()).toList());
-            b.addListener(SWT.Selection, e -> go.run());
+            button(row, a.name(), null, go);
             inputs.forEach(x -> x.addListener(SWT.DefaultSelection, e -> go.run()));
         }
+    }
+
+    private static void button(Composite row, String name, String tip, Runnable go) {
+        Button b = new Button(row, SWT.PUSH);
+        b.setText(name);
+        b.setData("action", name);
+        b.setToolTipText(tip);
+        b.addListener(SWT.Selection, e -> go.run());
+    }
+
+    /**
+     * {@code angles} (a pose from the Pose panel, or text dropped on the diagram) if it is a list
+     * of numbers, else refused with a message.
+     */
+    static String usable(String angles) {
+        if (angles == null) {
+            throw new IllegalArgumentException("Select a pose in the Pose panel first (or drag one onto the state).");
+        }
+        if (!angles.matches("\\s*-?[0-9.eE+-]+(\\s*,\\s*-?[0-9.eE+-]+)*\\s*")) {
+            throw new IllegalArgumentException("Only a pose (numbers separated by commas) can become a state's angles, not '"
+                    + angles + "'.");
+        }
+        return angles.trim();
     }
 
     private static Text field(Composite row, String name, String value, NameIndex names) {

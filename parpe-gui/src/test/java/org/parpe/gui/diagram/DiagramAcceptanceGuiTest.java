@@ -112,7 +112,7 @@ class DiagramAcceptanceGuiTest {
         String built = d.text();
         Path f = Path.of("hello-snake.xml");
         assertEquals(trace(f, example("hello-snake.xml"), 6), trace(f, built, 6), "the snake's trace:\n" + built);
-        IdeAccess.screenshot(ide.shell(), "diagram-built-fig3-snake");
+        IdeAccess.screenshot(ide.shell(), "diagram-built-fig3-snake.png");
     }
 
     @Test
@@ -154,6 +154,6 @@ class DiagramAcceptanceGuiTest {
         String built = d.text();
         Path f = Path.of("centipede-walk.xml");
         assertEquals(trace(f, example("centipede-walk.xml"), 6), trace(f, built, 6), "the centipede's trace:\n" + built);
-        IdeAccess.screenshot(ide.shell(), "diagram-built-centipede");
+        IdeAccess.screenshot(ide.shell(), "diagram-built-centipede.png");
     }
 }

@@ -101,7 +101,7 @@ final class DiagramDriver {
     SourcePos node(String needle) {
         int line = lineOf(needle);
         return pane().shown().targets().keySet().stream().filter(p -> p.line() == line).findFirst()
-                .orElseThrow(() -> new AssertionError("no editable node on line " + line + " (" + needle + ")"));
+                .orElseThrow(() -> new AssertionError("no editable node on line " + line + " (" + needle + ") in " + pane().shown().view() + " " + pane().shown().subject() + ": " + pane().shown().targets().keySet()));
     }
 
     int lineOf(String needle) {
