@@ -99,7 +99,8 @@ public final class DiagramPane {
         GridData fd = new GridData(SWT.FILL, SWT.CENTER, true, false);
         // as tall with fields as without, so that the drawing does not move when a node is selected
         Text probe = new Text(fields, SWT.BORDER | SWT.SINGLE);
-        fd.heightHint = probe.computeSize(SWT.DEFAULT, SWT.DEFAULT).y + 6;
+        // two rows: a palette item or a state has more fields than one row holds
+        fd.heightHint = 2 * probe.computeSize(SWT.DEFAULT, SWT.DEFAULT).y + 12;
         probe.dispose();
         fields.setLayoutData(fd);
         message = new Label(box, SWT.WRAP);
