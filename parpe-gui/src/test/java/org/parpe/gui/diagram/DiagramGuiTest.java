@@ -78,13 +78,7 @@ class DiagramGuiTest {
     }
 
     private static void show(View v, String subject) {
-        if (subject == null) {
-            pane().setView(v);
-        } else {
-            pane().setView(v, subject);
-        }
-        IdeAccess.pump(() -> pane().current() && pane().shown().view() == v
-                && (subject == null || subject.equals(pane().shown().subject())), v + " view of the text");
+        new DiagramDriver(ide).show(v, subject);
     }
 
     /** A left click on the canvas where {@code node} is drawn, as the mouse sends it. */
@@ -96,11 +90,7 @@ class DiagramGuiTest {
 
     /** A left-button mouse event of {@code type} at {@code at} on the canvas. */
     private static void mouse(int type, Point at) {
-        Event e = new Event();
-        e.button = 1;
-        e.x = at.x;
-        e.y = at.y;
-        pane().canvas().notifyListeners(type, e);
+        new DiagramDriver(ide).mouse(type, at);
     }
 
     /** Drags with the left button from {@code from} to {@code to}, as the mouse does. */
@@ -113,19 +103,11 @@ class DiagramGuiTest {
 
     /** The node whose element starts on the line that holds {@code needle}. */
     private static SourcePos node(String needle) {
-        int line = lineOf(needle);
-        return pane().shown().targets().keySet().stream().filter(p -> p.line() == line).findFirst()
-                .orElseThrow(() -> new AssertionError("no editable node on line " + line + " (" + needle + ")"));
+        return new DiagramDriver(ide).node(needle);
     }
 
     private static int lineOf(String needle) {
-        String[] lines = text().split("\n", -1);
-        for (int i = 0; i < lines.length; i++) {
-            if (lines[i].contains(needle)) {
-                return i + 1;
-            }
-        }
-        throw new AssertionError("no line holds " + needle);
+        return new DiagramDriver(ide).lineOf(needle);
     }
 
     /** Types {@code value} into the selected node's field {@code name} and presses Enter. */
