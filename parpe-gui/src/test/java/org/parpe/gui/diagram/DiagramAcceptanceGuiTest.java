@@ -1,6 +1,7 @@
 package org.parpe.gui.diagram;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.StringWriter;
@@ -26,7 +27,8 @@ import org.parpe.gui.diagram.Projection.View;
 
 /**
  * Issue 24's acceptance: starting from File → New, the paper's Fig. 3 snake
- * ({@code examples/hello-snake.xml}) and the centipede walk ({@code examples/centipede-walk.xml})
+ * ({@code examples/hello-snake.xml}), its Fig. 7 wheel ({@code examples/wheel.xml}) and the
+ * centipede walk ({@code examples/centipede-walk.xml})
  * are built with the Diagram pane only: the palette, clicks on the diagram, and the edit row's
  * fields and buttons (a form; nothing is typed into the script's text). The text made loads
  * without errors (as {@code parpe check}) and its trace, run by the engine at the CLI's tick for
@@ -155,5 +157,28 @@ class DiagramAcceptanceGuiTest {
         Path f = Path.of("centipede-walk.xml");
         assertEquals(trace(f, example("centipede-walk.xml"), 6), trace(f, built, 6), "the centipede's trace:\n" + built);
         IdeAccess.screenshot(ide.shell(), "diagram-built-centipede.png");
+    }
+
+    @Test
+    void theFig7WheelIsBuiltByDiagramOnly() throws Exception {
+        fileNew();
+        String template = d.text();
+        d.show(View.RING, "wave");
+        d.click(d.node("<down "));
+        d.press("Earlier");
+        d.click(d.node("<down "));
+        d.type("duration", ".25");
+        d.click(d.node("<down "));
+        d.type("angles", "-10");
+        d.click(d.node("<up "));
+        d.type("angles", "45");
+        d.show(View.PROGRAM, null);
+        d.click(d.node("<crawl/>"));
+        d.type("time", "150");
+        String built = d.text();
+        Path f = Path.of("wheel.xml");
+        assertEquals(trace(f, example("wheel.xml"), 6), trace(f, built, 6), "the wheel's trace:\n" + built);
+        assertNotEquals(trace(f, template, 6), trace(f, built, 6), "the comparison sees the difference the edits make");
+        IdeAccess.screenshot(ide.shell(), "diagram-built-fig7-wheel.png");
     }
 }
