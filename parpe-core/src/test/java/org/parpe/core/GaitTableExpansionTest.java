@@ -95,6 +95,27 @@ class GaitTableExpansionTest {
     }
 
     @Test
+    void expandingWritesTheTableAndTheInstancePlaysIt() throws Exception {
+        Path f = Examples.dir().resolve("hello-snake.xml");
+        String text = Files.readString(f);
+        Program p = ScriptLoader.load(f, Map.of()).program();
+        Behavior b = p.behaviors().get(0);
+        Instance in = b.instances().get(0);
+        var g = Diagrams.groupOf(p, b, in).orElseThrow();
+        String written = GaitTableExpansion.write(text, p, in, g, "waveTable").apply(text);
+        GaitTableExpansion.Table t = GaitTableExpansion.expand(p, in, g);
+        assertEquals(PaletteEdits.addGaitTable(text, p, "waveTable", t.rowTexts(), t.times()).apply(text).replace(
+                "<wave group=\"group1\" phase=\"0.25\" period=\"1\" />", "<waveTable group=\"group1\" phase=\"0\" period=\"1\" />"),
+                written);
+        assertEquals(4, t.rows().size(), "a row for each quarter: the four modules enter a state a quarter apart");
+        List<double[]> expected = from(trace(f, text, 3), 1);
+        List<double[]> got = from(trace(f, written, 3), 1);
+        for (int r = 0; r < expected.size(); r++) {
+            assertEquals(expected.get(r)[1], got.get(r)[1], 1e-6, "module 0 at t=" + expected.get(r)[0]);
+        }
+    }
+
+    @Test
     void anInstanceThatIsNotAFixedCycleIsRefusedWithTheReason() throws Exception {
         Path f = Examples.dir().resolve("sensor-exit.xml");
         Program p = ScriptLoader.load(f, Map.of()).program();

@@ -128,6 +128,30 @@ public final class GaitTableExpansion {
         return new Table(rows, seconds);
     }
 
+    /**
+     * Writes the expansion of {@code in} into {@code text}: table {@code name} after the last
+     * automaton, and the instance plays it (its element renamed, its {@code phase} and
+     * {@code offset} set to 0 where written; its {@code period} stays, the table's times add up
+     * to it).
+     */
+    public static TextEdit write(String text, Program p, Instance in, Group g, String name) {
+        Table t = expand(p, in, g);
+        var s = DiagramEdits.span(in.pos());
+        List<TextEdit.Replacement> edits = new ArrayList<>(PaletteEdits.addGaitTable(text, p, name, t.rowTexts(), t.times())
+                .replacements());
+        edits.add(new TextEdit.Replacement(s.start() + 1, in.automaton().length(), BehaviorEdits.name(name, "gait table")));
+        if (!s.empty()) {
+            int close = text.lastIndexOf("</", s.end() - 1) + 2;
+            edits.add(new TextEdit.Replacement(close, in.automaton().length(), name));
+        }
+        for (String attr : List.of("phase", "offset")) {
+            if (s.value(attr) != null) {
+                edits.addAll(DiagramEdits.setAttribute(text, in.pos(), attr, "0").replacements());
+            }
+        }
+        return new TextEdit(edits);
+    }
+
     /** Each state's target per module position. */
     private static double[][] targets(Automaton a, int m) {
         double[][] out = new double[a.states().size()][m];

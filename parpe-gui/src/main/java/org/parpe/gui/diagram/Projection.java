@@ -13,6 +13,7 @@ import org.parpe.core.diagram.BehaviorEdits;
 import org.parpe.core.diagram.DiagramEdits;
 import org.parpe.core.diagram.Diagrams;
 import org.parpe.core.diagram.Gait;
+import org.parpe.core.diagram.GaitTableExpansion;
 import org.parpe.core.diagram.Layouts;
 import org.parpe.core.diagram.PhaseWheel;
 import org.parpe.core.diagram.ProgramLane;
@@ -94,6 +95,13 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         /** A node that does not move. */
         Target(String title, List<Field> fields) {
             this(title, fields, -1, null);
+        }
+
+        /** This node with {@code more} actions. */
+        Target with(List<Action> more) {
+            List<Action> all = new ArrayList<>(actions);
+            all.addAll(more);
+            return new Target(title, fields, index, moveTo, all);
         }
     }
 
@@ -204,12 +212,19 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
                 if (mine(b.pos(), file)) {
                     targets.put(b.pos(), instanceTarget(text, file, "instance " + b.index() + ": " + b.automaton() + " on "
                             + (b.mirrored() ? "!" : "") + l.group(), b.pos(), b.phase(), b.offset(), b.period(),
-                            p.group(l.group()).orElse(null)));
+                            p.group(l.group()).orElse(null)).with(expand(text, p, behavior.instances().get(b.index()),
+                            p.group(l.group()).orElse(null))));
                 }
             }
         }
         return new Projection(text, file, View.LANES, names, chosen, Layouts.lanes(s), targets, islands(s.islands().size()),
                 null, null, List.of(), s);
+    }
+
+    /** "Expand to gait table" for instance {@code in} on group {@code g} (see {@link GaitTableExpansion}). */
+    private static List<Action> expand(String text, Program p, Instance in, Group g) {
+        return g == null ? List.of() : List.of(new Action("Expand to gait table", List.of("table"),
+                v -> GaitTableExpansion.write(text, p, in, g, v.get(0))));
     }
 
     /** An instance: its phase, offset and period, and the elements of its group when that is defined in this file. */

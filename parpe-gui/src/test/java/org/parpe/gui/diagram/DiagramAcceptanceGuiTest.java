@@ -115,6 +115,21 @@ class DiagramAcceptanceGuiTest {
         Path f = Path.of("hello-snake.xml");
         assertEquals(trace(f, example("hello-snake.xml"), 6), trace(f, built, 6), "the snake's trace:\n" + built);
         IdeAccess.screenshot(ide.shell(), "diagram-built-fig3-snake.png");
+        d.show(View.LANES, "simpleWave");
+        bar("<wave group=\"group1\"");
+        d.press("Expand to gait table", "table", "waveTable");
+        assertTrue(d.text().contains("<waveTable group=\"group1\" phase=\"0\" period=\"1\"/>"), d.text());
+        String[] snake = trace(f, example("hello-snake.xml"), 3).split("\n");
+        String[] table = trace(f, d.text(), 3).split("\n");
+        assertEquals(snake.length, table.length);
+        // from one period (1 s, row 101) on the table drives the modules as the automaton did
+        for (int r = 102; r < snake.length; r++) {
+            String[] a = snake[r].split(",");
+            String[] b = table[r].split(",");
+            for (int c = 0; c < a.length; c++) {
+                assertEquals(Double.parseDouble(a[c]), Double.parseDouble(b[c]), 1e-6, snake[r] + " / " + table[r]);
+            }
+        }
     }
 
     @Test

@@ -131,6 +131,17 @@ class DiagramEditingGuiTest {
     }
 
     @Test
+    void anInstanceIsExpandedToAGaitTableInOneUndoableEdit() {
+        d.show(View.LANES, "walk");
+        d.click(d.node("group=\"rightLift\""));
+        d.press("Expand to gait table", "table", "liftTable");
+        String t = d.text();
+        assertTrue(t.contains("<liftTable  group=\"rightLift\"  offset=\"0\" phase=\"0\" period=\"3\"/>"), t);
+        assertTrue(t.contains("<step  states=\"raise, lower, stance\" times=\"0.5, 0.5, 2\"/>\n    <liftTable times=\""), t);
+        undo("the expansion");
+    }
+
+    @Test
     void aBadValueIsRefusedWithAMessageAndTheTextStays() {
         d.show(View.PROGRAM, null);
         d.clickAside();
