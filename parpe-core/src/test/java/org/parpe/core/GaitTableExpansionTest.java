@@ -116,6 +116,43 @@ class GaitTableExpansionTest {
     }
 
     @Test
+    void theExpandedSnakeTableIsAPhaseAutomatonAgain() throws Exception {
+        Path f = Examples.dir().resolve("hello-snake.xml");
+        String text = Files.readString(f);
+        Program p = ScriptLoader.load(f, Map.of()).program();
+        Behavior b = p.behaviors().get(0);
+        Instance in = b.instances().get(0);
+        var g = Diagrams.groupOf(p, b, in).orElseThrow();
+        String written = GaitTableExpansion.write(text, p, in, g, "waveTable").apply(text);
+        Program q = ScriptLoader.loadText(f, written, Map.of()).program();
+        GaitTableExpansion.Cycle c = GaitTableExpansion.cycleOf(q.automaton("waveTable").orElseThrow(), g.size());
+        assertEquals(0.25, c.phase(), 1e-12, "one row of four per module: the snake's quarter");
+        assertEquals(4, c.angles().length);
+        assertEquals(1.0, java.util.Arrays.stream(c.seconds()).sum(), 1e-12);
+    }
+
+    @Test
+    void thePapersGaitTableIsAPhaseAutomatonWithAnEighthOfACycleBetweenModules() throws Exception {
+        Path f = Examples.dir().resolve("gait-table-12.xml");
+        Program p = ScriptLoader.load(f, Map.of()).program();
+        // each of its 12 columns is the one before it moved down one of its 8 rows
+        GaitTableExpansion.Cycle c = GaitTableExpansion.cycleOf(p.automaton("travel").orElseThrow(), 12);
+        assertEquals(0.125, c.phase(), 1e-12);
+        assertEquals(List.of(15.0, -15.0, -15.0, -15.0, -15.0, 15.0, 15.0, 15.0),
+                java.util.Arrays.stream(c.angles()).boxed().toList());
+    }
+
+    @Test
+    void aTableWhoseColumnsAreNotOneShiftedSequenceIsNoPhaseAutomaton() {
+        String text = "<program><robot><structure><b elements=\"0, 1\"/></structure></robot>\n"
+                + "<main><go/></main><behaviors><go><t group=\"b\"/></go></behaviors>\n"
+                + "<automata><t>\n10, 20\n30, 40\n</t></automata></program>";
+        Program p = ScriptLoader.loadText(Path.of("t.xml"), text, Map.of()).program();
+        var e = assertThrows(IllegalArgumentException.class, () -> GaitTableExpansion.cycleOf(p.automaton("t").orElseThrow(), 2));
+        assertTrue(e.getMessage().contains("no phase automaton"), e.getMessage());
+    }
+
+    @Test
     void anInstanceThatIsNotAFixedCycleIsRefusedWithTheReason() throws Exception {
         Path f = Examples.dir().resolve("sensor-exit.xml");
         Program p = ScriptLoader.load(f, Map.of()).program();

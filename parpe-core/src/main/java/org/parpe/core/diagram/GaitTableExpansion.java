@@ -152,6 +152,73 @@ public final class GaitTableExpansion {
         return new TextEdit(edits);
     }
 
+    /**
+     * "Make phase automaton", the way back: when every column of gait table {@code table} (on a
+     * group of {@code m} modules) is column 0 shifted down by the same number {@code s} of rows
+     * per module, and the rows last equally long (so that {@code s} rows are a constant part of
+     * the cycle), the table is a phase automaton: column 0's rows as states, phase {@code s/R}.
+     * Refused, saying why, otherwise.
+     *
+     * @return column 0's angles and each row's seconds, and the phase
+     */
+    public static Cycle cycleOf(Automaton table, int m) {
+        if (!table.table()) {
+            throw new IllegalArgumentException("'" + table.name() + "' is not a gait table");
+        }
+        int rows = table.states().size();
+        double[][] cell = targets(table, m);
+        double[] seconds = new double[rows];
+        for (int r = 0; r < rows; r++) {
+            if (table.times().get(r).exit() != null) {
+                throw new IllegalArgumentException("row " + r + " of '" + table.name() + "' has an exit condition");
+            }
+            seconds[r] = constant(table.times().get(r).duration(), "the duration of row " + r);
+        }
+        for (int shift = 0; shift < rows; shift++) {
+            if (shifted(cell, shift, m) && (shift == 0 || equal(seconds))) {
+                double[] column = new double[rows];
+                for (int r = 0; r < rows; r++) {
+                    column[r] = cell[r][0];
+                }
+                return new Cycle(column, seconds, (double) shift / rows);
+            }
+        }
+        throw new IllegalArgumentException("the columns of '" + table.name() + "' are not one sequence shifted by a constant"
+                + " number of rows (with rows of equal length): it is no phase automaton");
+    }
+
+    /**
+     * A phase automaton's cycle.
+     *
+     * @param angles  each state's angle (for every module)
+     * @param seconds each state's duration
+     * @param phase   the phase between neighbouring modules, in cycles
+     */
+    public record Cycle(double[] angles, double[] seconds, double phase) {
+    }
+
+    private static boolean shifted(double[][] cell, int shift, int m) {
+        int rows = cell.length;
+        for (int k = 0; k < m; k++) {
+            for (int r = 0; r < rows; r++) {
+                int from = Math.floorMod(r - k * shift, rows);
+                if (Math.abs(cell[r][k] - cell[from][0]) > 1e-9) {
+                    return false;
+                }
+            }
+        }
+        return true;
+    }
+
+    private static boolean equal(double[] v) {
+        for (double x : v) {
+            if (Math.abs(x - v[0]) > 1e-9) {
+                return false;
+            }
+        }
+        return true;
+    }
+
     /** Each state's target per module position. */
     private static double[][] targets(Automaton a, int m) {
         double[][] out = new double[a.states().size()][m];
