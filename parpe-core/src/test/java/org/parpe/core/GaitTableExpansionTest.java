@@ -143,6 +143,24 @@ class GaitTableExpansionTest {
     }
 
     @Test
+    void thePapersTableMadeAPhaseAutomatonRunsTheSameTrace() throws Exception {
+        Path f = Examples.dir().resolve("gait-table-12.xml");
+        String text = Files.readString(f);
+        Program p = ScriptLoader.load(f, Map.of()).program();
+        Behavior b = p.behaviors().get(0);
+        Instance in = b.instances().get(0);
+        var g = Diagrams.groupOf(p, b, in).orElseThrow();
+        String made = GaitTableExpansion.writeCycle(text, p, in, g, "travelCycle").apply(text);
+        Program q = ScriptLoader.loadText(f, made, Map.of()).program();
+        assertEquals(List.of("travelCycle_0", "travelCycle_1", "travelCycle_1", "travelCycle_1", "travelCycle_1", "travelCycle_0",
+                "travelCycle_0", "travelCycle_0"), q.automaton("travelCycle").orElseThrow().states().stream()
+                .map(org.parpe.core.model.StateDef::name).toList());
+        // the table's modules all start at its first row, the automaton's at their phase: the same places
+        assertEquals(trace(f, text, 10), trace(f, made, 10));
+        assertTrue(made.contains("<travelCycle group="), made);
+    }
+
+    @Test
     void aTableWhoseColumnsAreNotOneShiftedSequenceIsNoPhaseAutomaton() {
         String text = "<program><robot><structure><b elements=\"0, 1\"/></structure></robot>\n"
                 + "<main><go/></main><behaviors><go><t group=\"b\"/></go></behaviors>\n"

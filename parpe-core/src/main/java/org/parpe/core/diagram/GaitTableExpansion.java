@@ -188,6 +188,57 @@ public final class GaitTableExpansion {
     }
 
     /**
+     * Writes "Make phase automaton" for instance {@code in} of a gait table on group {@code g}:
+     * phase automaton {@code name} after the last automaton, one state per distinct angle of
+     * the table's first column ({@code name_0}, {@code name_1}, …, after the last state, or in a
+     * new {@code <states>} after {@code <automata>}), and the instance plays it (its element
+     * renamed, its {@code phase} set; offset and period stay).
+     */
+    public static TextEdit writeCycle(String text, Program p, Instance in, Group g, String name) {
+        Automaton table = p.automaton(in.automaton()).orElseThrow();
+        Cycle c = cycleOf(table, g.size());
+        BehaviorEdits.name(name, "automaton");
+        List<Double> values = new ArrayList<>();
+        List<String> states = new ArrayList<>();
+        for (double v : c.angles()) {
+            if (!values.contains(v)) {
+                values.add(v);
+            }
+            states.add(name + "_" + values.indexOf(v));
+        }
+        StringBuilder times = new StringBuilder();
+        for (double t : c.seconds()) {
+            times.append(times.length() == 0 ? "" : ", ").append(Numbers.format(t));
+        }
+        List<TextEdit.Replacement> edits = new ArrayList<>(PaletteEdits.addAutomaton(text, p, name, String.join(", ", states),
+                times.toString()).replacements());
+        var last = DiagramEdits.span(table.pos());
+        String indent = BehaviorEdits.indent(text, last.start());
+        StringBuilder poses = new StringBuilder();
+        boolean fresh = p.states().stream().noneMatch(d -> d.pos().span() != null && d.pos().file().equals(p.file()));
+        String inner = fresh ? indent : BehaviorEdits.indent(text, p.states().get(p.states().size() - 1).pos().span().start());
+        for (int i = 0; i < values.size(); i++) {
+            poses.append('\n').append(inner).append('<').append(name).append('_').append(i).append(" angles=\"")
+                    .append(Numbers.format(values.get(i))).append("\"/>");
+        }
+        if (fresh) {
+            int close = text.indexOf("</automata>", last.end());
+            String outer = indent.length() >= 2 ? indent.substring(2) : "";
+            edits.add(new TextEdit.Replacement(close + "</automata>".length(), 0, "\n" + outer + "<states>" + poses + "\n" + outer
+                    + "</states>"));
+        } else {
+            edits.add(new TextEdit.Replacement(p.states().get(p.states().size() - 1).pos().span().end(), 0, poses.toString()));
+        }
+        var s = DiagramEdits.span(in.pos());
+        edits.add(new TextEdit.Replacement(s.start() + 1, in.automaton().length(), name));
+        if (!s.empty()) {
+            edits.add(new TextEdit.Replacement(text.lastIndexOf("</", s.end() - 1) + 2, in.automaton().length(), name));
+        }
+        edits.addAll(DiagramEdits.setAttribute(text, in.pos(), "phase", Numbers.format(c.phase())).replacements());
+        return new TextEdit(edits);
+    }
+
+    /**
      * A phase automaton's cycle.
      *
      * @param angles  each state's angle (for every module)

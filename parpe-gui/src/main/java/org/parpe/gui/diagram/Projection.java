@@ -221,9 +221,19 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
                 null, null, List.of(), s);
     }
 
-    /** "Expand to gait table" for instance {@code in} on group {@code g} (see {@link GaitTableExpansion}). */
+    /**
+     * "Expand to gait table" for instance {@code in} on group {@code g}, or "Make phase
+     * automaton" when it plays a gait table (see {@link GaitTableExpansion}).
+     */
     private static List<Action> expand(String text, Program p, Instance in, Group g) {
-        return g == null ? List.of() : List.of(new Action("Expand to gait table", List.of("table"),
+        if (g == null) {
+            return List.of();
+        }
+        if (p.automaton(in.automaton()).map(Automaton::table).orElse(false)) {
+            return List.of(new Action("Make phase automaton", List.of("automaton"),
+                    v -> GaitTableExpansion.writeCycle(text, p, in, g, v.get(0))));
+        }
+        return List.of(new Action("Expand to gait table", List.of("table"),
                 v -> GaitTableExpansion.write(text, p, in, g, v.get(0))));
     }
 

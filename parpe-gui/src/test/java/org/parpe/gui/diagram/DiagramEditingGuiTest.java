@@ -35,13 +35,14 @@ class DiagramEditingGuiTest {
     private static IdeWindow ide;
     private static DiagramDriver d;
     private static String original;
+    private static Path copy;
 
     private static final String STEP = "<step  states=\"raise, lower, stance\" times=\"0.5, 0.5, 2\"/>";
 
     @BeforeAll
     static void openWindow() throws Exception {
         Path home = Files.createTempDirectory("parpe-diagram-edit-test");
-        Path copy = Files.createDirectories(home.resolve("scripts")).resolve("centipede-walk.xml");
+        copy = Files.createDirectories(home.resolve("scripts")).resolve("centipede-walk.xml");
         Files.copy(Path.of(System.getProperty("parpe.examples", "../examples"), "centipede-walk.xml"), copy);
         original = Files.readString(copy);
         ide = IdeAccess.openIde(home);
@@ -139,6 +140,29 @@ class DiagramEditingGuiTest {
         assertTrue(t.contains("<liftTable  group=\"rightLift\"  offset=\"0\" phase=\"0\" period=\"3\"/>"), t);
         assertTrue(t.contains("<step  states=\"raise, lower, stance\" times=\"0.5, 0.5, 2\"/>\n    <liftTable times=\""), t);
         undo("the expansion");
+    }
+
+    @Test
+    void aGaitTableThatIsAPhaseAutomatonIsMadeOne() throws Exception {
+        Path table = copy.resolveSibling("gait-table-12.xml");
+        Files.copy(Path.of(System.getProperty("parpe.examples", "../examples"), "gait-table-12.xml"), table);
+        String before = Files.readString(table);
+        try {
+            IdeAccess.open(ide, table);
+            d.show(View.LANES, "slither");
+            d.click(d.node("<travel group=\"snake\""));
+            d.press("Make phase automaton", "automaton", "travelCycle");
+            String t = d.text();
+            assertTrue(t.contains("<travelCycle group=\"snake\" period=\"4\" phase=\"0.125\"/>"), t);
+            assertTrue(t.contains("<travelCycle states=\"travelCycle_0, travelCycle_1, travelCycle_1, travelCycle_1, travelCycle_1,"
+                    + " travelCycle_0, travelCycle_0, travelCycle_0\" times=\"1, 1, 1, 1, 1, 1, 1, 1\"/>"), t);
+            assertTrue(t.contains("<states>\n    <travelCycle_0 angles=\"15\"/>\n    <travelCycle_1 angles=\"-15\"/>\n  </states>"), t);
+            ide.editor().run(ITextOperationTarget.UNDO);
+            assertEquals(before, d.text(), "one Undo takes it back");
+        } finally {
+            IdeAccess.open(ide, copy);
+            d.caughtUp();
+        }
     }
 
     @Test
