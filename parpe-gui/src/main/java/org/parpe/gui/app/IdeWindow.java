@@ -151,6 +151,7 @@ public final class IdeWindow {
         pose = new PosePanel(bottom, new PoseBridge(this));
         poseTab = Panels.tab(bottom, "Pose", pose.control());
         diagram.usePoses(pose::selectedAngles);
+        diagram.openTablesWith(gaitGrid::showTable);
         bottom.addListener(SWT.Selection, e -> fitBottom());
     }
 

@@ -62,6 +62,7 @@ public final class DiagramPane {
     private Projection.Target dragged;
     private Projection.Target offered;
     private Supplier<String> pose;
+    private java.util.function.Predicate<String> tables;
     private final Palette palette;
 
     /** The pane in {@code parent}, showing {@code editor}'s document as the file {@code file} names. */
@@ -556,6 +557,11 @@ public final class DiagramPane {
         act(new Projection.Action("Use pose", List.of(), v -> f.edit().apply(EditRow.usable(angles))), List.of());
     }
 
+    /** Opens a gait table the pane has just written with {@code show} (the grid editor's, by table name). */
+    public void openTablesWith(java.util.function.Predicate<String> show) {
+        tables = show;
+    }
+
     /** The palette, for tests. */
     Palette palette() {
         return palette;
@@ -580,6 +586,9 @@ public final class DiagramPane {
         }
         try {
             apply(a.edit().apply(values));
+            if (a.name().equals(Projection.EXPAND) && tables != null) {
+                tables.test(values.get(0));
+            }
         } catch (IllegalArgumentException e) {
             message.setText(e.getMessage());
             box.layout(true, true);

@@ -221,6 +221,9 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
                 null, null, List.of(), s);
     }
 
+    /** The action that writes a gait table, which the pane then opens in the grid editor. */
+    static final String EXPAND = "Expand to gait table";
+
     /**
      * "Expand to gait table" for instance {@code in} on group {@code g}, or "Make phase
      * automaton" when it plays a gait table (see {@link GaitTableExpansion}).
@@ -233,7 +236,7 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
             return List.of(new Action("Make phase automaton", List.of("automaton"),
                     v -> GaitTableExpansion.writeCycle(text, p, in, g, v.get(0))));
         }
-        return List.of(new Action("Expand to gait table", List.of("table"),
+        return List.of(new Action(EXPAND, List.of("table"),
                 v -> GaitTableExpansion.write(text, p, in, g, v.get(0))));
     }
 

@@ -139,6 +139,8 @@ class DiagramEditingGuiTest {
         String t = d.text();
         assertTrue(t.contains("<liftTable  group=\"rightLift\"  offset=\"0\" phase=\"0\" period=\"3\"/>"), t);
         assertTrue(t.contains("<step  states=\"raise, lower, stance\" times=\"0.5, 0.5, 2\"/>\n    <liftTable times=\""), t);
+        IdeAccess.pump(() -> ide.grid().visible() && ide.grid().table() != null, "the grid editor");
+        assertEquals("liftTable", ide.grid().table().name(), "the new table opens in the grid editor");
         undo("the expansion");
     }
 
