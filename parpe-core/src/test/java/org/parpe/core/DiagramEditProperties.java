@@ -73,7 +73,7 @@ class DiagramEditProperties {
 
     @Provide
     Arbitrary<Case> cases() {
-        return Combinators.combine(Arbitraries.integers().between(0, SCRIPTS.size() - 1), Arbitraries.integers().between(0, 9),
+        return Combinators.combine(Arbitraries.integers().between(0, SCRIPTS.size() - 1), Arbitraries.integers().between(0, 10),
                 Arbitraries.integers().between(0, 1000), Arbitraries.integers().between(0, 1000),
                 Arbitraries.integers().between(1, 4000)).as(Case::new);
     }
@@ -170,6 +170,20 @@ class DiagramEditProperties {
                 api = BehaviorEdits.addBehavior(text, p, name, aut, group, time).apply(text);
                 hand = handAddBehavior(text, p, here, name, aut, group, time);
             }
+            case 10 -> {
+                List<StateDef> all = new ArrayList<>(p.states());
+                all.removeIf(d -> !d.pos().file().equals(here) || d.pos().span() == null);
+                String name = "pose" + c.value();
+                if (all.isEmpty() || p.state(name).isPresent()) {
+                    return;
+                }
+                StateDef last = all.get(all.size() - 1);
+                api = PaletteEdits.addPose(text, p, name, value).apply(text);
+                HandEdits.Tag t = HandEdits.tag(text, last.pos().line(), last.pos().column());
+                int end = HandEdits.elementEnd(text, t);
+                hand = HandEdits.replace(text, end, end, "\n" + HandEdits.indentOf(text, t.start()) + "<" + name + " angles=\""
+                        + value + "\"/>");
+            }
             case 9 -> {
                 List<StateDef> all = new ArrayList<>(p.states());
                 all.removeIf(d -> !d.pos().file().equals(here) || d.pos().span() == null);
@@ -194,7 +208,7 @@ class DiagramEditProperties {
             }
         }
         assertEquals(hand, api, () -> "kind " + c.kind() + " on " + f);
-        if (c.kind() != 3 && c.kind() < 6 || c.kind() == 9) {
+        if (c.kind() != 3 && c.kind() < 6 || c.kind() >= 9) {
             LoadResult again = ScriptLoader.loadText(f, api, Map.of());
             assertTrue(again.ok() || c.kind() == 1, () -> "the edited text does not load: " + again.diagnostics());
         }

@@ -55,11 +55,22 @@ final class HandEdits {
         if (t.empty) {
             return t.end;
         }
-        Matcher m = Pattern.compile("</" + Pattern.quote(t.name) + "\\s*>").matcher(text);
-        if (!m.find(t.end)) {
-            throw new IllegalStateException("no end tag for " + t.name);
+        // elements of the same name may nest (<if> in <if>): count them
+        Matcher m = Pattern.compile("<(/?)" + Pattern.quote(t.name) + "(?=[\\s/>])[^>]*?(/?)>").matcher(text);
+        int depth = 1;
+        int at = t.end;
+        while (m.find(at)) {
+            at = m.end();
+            if (!m.group(1).isEmpty()) {
+                depth--;
+                if (depth == 0) {
+                    return m.end();
+                }
+            } else if (m.group(2).isEmpty()) {
+                depth++;
+            }
         }
-        return m.end();
+        throw new IllegalStateException("no end tag for " + t.name);
     }
 
     /** The value range of attribute {@code name}, or null. */
@@ -272,7 +283,7 @@ final class HandEdits {
         return replace(text, at, at, "\n" + indent + "  " + element);
     }
 
-    private static String indentOf(String text, int at) {
+    static String indentOf(String text, int at) {
         int lineStart = text.lastIndexOf('\n', at - 1) + 1;
         return text.substring(lineStart, at).isBlank() ? text.substring(lineStart, at) : "";
     }
