@@ -20,6 +20,7 @@ import org.parpe.core.diagram.PaletteEdits;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
 import org.parpe.core.model.Behavior;
+import org.parpe.core.model.Group;
 import org.parpe.core.model.Instance;
 import org.parpe.core.model.Program;
 import org.parpe.core.run.Engine;
@@ -68,6 +69,18 @@ class GaitTableExpansionTest {
         return out;
     }
 
+    /** An example, its text and program, and its first behavior's first instance with its group. */
+    private record First(Path file, String text, Program p, Instance in, Group g) {
+    }
+
+    private static First first(String example) throws Exception {
+        Path f = Examples.dir().resolve(example);
+        Program p = ScriptLoader.load(f, Map.of()).program();
+        Behavior b = p.behaviors().get(0);
+        Instance in = b.instances().get(0);
+        return new First(f, Files.readString(f), p, in, Diagrams.groupOf(p, b, in).orElseThrow());
+    }
+
     @ParameterizedTest
     @CsvSource({"hello-snake.xml, <wave group=\"group1\" phase=\"0.25\" period=\"1\" />, 1",
         "wheel.xml, <wave group=\"wheel\" phase=\"0.25\" period=\"2\" />, 2"})
@@ -96,20 +109,15 @@ class GaitTableExpansionTest {
 
     @Test
     void expandingWritesTheTableAndTheInstancePlaysIt() throws Exception {
-        Path f = Examples.dir().resolve("hello-snake.xml");
-        String text = Files.readString(f);
-        Program p = ScriptLoader.load(f, Map.of()).program();
-        Behavior b = p.behaviors().get(0);
-        Instance in = b.instances().get(0);
-        var g = Diagrams.groupOf(p, b, in).orElseThrow();
-        String written = GaitTableExpansion.write(text, p, in, g, "waveTable").apply(text);
-        GaitTableExpansion.Table t = GaitTableExpansion.expand(p, in, g);
-        assertEquals(PaletteEdits.addGaitTable(text, p, "waveTable", t.rowTexts(), t.times()).apply(text).replace(
+        First x = first("hello-snake.xml");
+        String written = GaitTableExpansion.write(x.text(), x.p(), x.in(), x.g(), "waveTable").apply(x.text());
+        GaitTableExpansion.Table t = GaitTableExpansion.expand(x.p(), x.in(), x.g());
+        assertEquals(PaletteEdits.addGaitTable(x.text(), x.p(), "waveTable", t.rowTexts(), t.times()).apply(x.text()).replace(
                 "<wave group=\"group1\" phase=\"0.25\" period=\"1\" />", "<waveTable group=\"group1\" phase=\"0\" period=\"1\" />"),
                 written);
         assertEquals(4, t.rows().size(), "a row for each quarter: the four modules enter a state a quarter apart");
-        List<double[]> expected = from(trace(f, text, 3), 1);
-        List<double[]> got = from(trace(f, written, 3), 1);
+        List<double[]> expected = from(trace(x.file(), x.text(), 3), 1);
+        List<double[]> got = from(trace(x.file(), written, 3), 1);
         for (int r = 0; r < expected.size(); r++) {
             assertEquals(expected.get(r)[1], got.get(r)[1], 1e-6, "module 0 at t=" + expected.get(r)[0]);
         }
@@ -117,15 +125,10 @@ class GaitTableExpansionTest {
 
     @Test
     void theExpandedSnakeTableIsAPhaseAutomatonAgain() throws Exception {
-        Path f = Examples.dir().resolve("hello-snake.xml");
-        String text = Files.readString(f);
-        Program p = ScriptLoader.load(f, Map.of()).program();
-        Behavior b = p.behaviors().get(0);
-        Instance in = b.instances().get(0);
-        var g = Diagrams.groupOf(p, b, in).orElseThrow();
-        String written = GaitTableExpansion.write(text, p, in, g, "waveTable").apply(text);
-        Program q = ScriptLoader.loadText(f, written, Map.of()).program();
-        GaitTableExpansion.Cycle c = GaitTableExpansion.cycleOf(q.automaton("waveTable").orElseThrow(), g.size());
+        First x = first("hello-snake.xml");
+        String written = GaitTableExpansion.write(x.text(), x.p(), x.in(), x.g(), "waveTable").apply(x.text());
+        Program q = ScriptLoader.loadText(x.file(), written, Map.of()).program();
+        GaitTableExpansion.Cycle c = GaitTableExpansion.cycleOf(q.automaton("waveTable").orElseThrow(), x.g().size());
         assertEquals(0.25, c.phase(), 1e-12, "one row of four per module: the snake's quarter");
         assertEquals(4, c.angles().length);
         assertEquals(1.0, java.util.Arrays.stream(c.seconds()).sum(), 1e-12);
@@ -144,19 +147,14 @@ class GaitTableExpansionTest {
 
     @Test
     void thePapersTableMadeAPhaseAutomatonRunsTheSameTrace() throws Exception {
-        Path f = Examples.dir().resolve("gait-table-12.xml");
-        String text = Files.readString(f);
-        Program p = ScriptLoader.load(f, Map.of()).program();
-        Behavior b = p.behaviors().get(0);
-        Instance in = b.instances().get(0);
-        var g = Diagrams.groupOf(p, b, in).orElseThrow();
-        String made = GaitTableExpansion.writeCycle(text, p, in, g, "travelCycle").apply(text);
-        Program q = ScriptLoader.loadText(f, made, Map.of()).program();
+        First x = first("gait-table-12.xml");
+        String made = GaitTableExpansion.writeCycle(x.text(), x.p(), x.in(), x.g(), "travelCycle").apply(x.text());
+        Program q = ScriptLoader.loadText(x.file(), made, Map.of()).program();
         assertEquals(List.of("travelCycle_0", "travelCycle_1", "travelCycle_1", "travelCycle_1", "travelCycle_1", "travelCycle_0",
                 "travelCycle_0", "travelCycle_0"), q.automaton("travelCycle").orElseThrow().states().stream()
                 .map(org.parpe.core.model.StateDef::name).toList());
         // the table's modules all start at its first row, the automaton's at their phase: the same places
-        assertEquals(trace(f, text, 10), trace(f, made, 10));
+        assertEquals(trace(x.file(), x.text(), 10), trace(x.file(), made, 10));
         assertTrue(made.contains("<travelCycle group="), made);
     }
 
