@@ -55,11 +55,22 @@ final class HandEdits {
         if (t.empty) {
             return t.end;
         }
-        Matcher m = Pattern.compile("</" + Pattern.quote(t.name) + "\\s*>").matcher(text);
-        if (!m.find(t.end)) {
-            throw new IllegalStateException("no end tag for " + t.name);
+        // elements of the same name may nest (<if> in <if>): count them
+        Matcher m = Pattern.compile("<(/?)" + Pattern.quote(t.name) + "(?=[\\s/>])[^>]*?(/?)>").matcher(text);
+        int depth = 1;
+        int at = t.end;
+        while (m.find(at)) {
+            at = m.end();
+            if (!m.group(1).isEmpty()) {
+                depth--;
+                if (depth == 0) {
+                    return m.end();
+                }
+            } else if (m.group(2).isEmpty()) {
+                depth++;
+            }
         }
-        return m.end();
+        throw new IllegalStateException("no end tag for " + t.name);
     }
 
     /** The value range of attribute {@code name}, or null. */
@@ -179,5 +190,101 @@ final class HandEdits {
             out = replace(out, e.getKey(), e.getKey(), e.getValue());
         }
         return out;
+    }
+    /** The items of attribute {@code name} of a tag, as [start, end) without spaces around them. */
+    private static List<int[]> trimmedItems(String text, Tag t, String name) {
+        int[] v = value(t, name);
+        if (v == null) {
+            return null;
+        }
+        List<int[]> out = new ArrayList<>();
+        for (int[] item : items(text, v[0], v[1])) {
+            String s = text.substring(item[0], item[1]);
+            int lead = s.length() - s.stripLeading().length();
+            out.add(new int[] {item[0] + lead, item[0] + lead + s.strip().length()});
+        }
+        return out;
+    }
+
+    /** Rewrites states and times with item {@code state} and its comma left out. */
+    static String removeState(String text, int line, int column, int state) {
+        Tag t = tag(text, line, column);
+        String out = text;
+        // times comes after states in no particular order: edit the later attribute first
+        List<String> attrs = new ArrayList<>(List.of("states", "times"));
+        attrs.removeIf(a -> value(t, a) == null);
+        attrs.sort((x, y) -> Integer.compare(value(t, y)[0], value(t, x)[0]));
+        for (String a : attrs) {
+            List<int[]> it = trimmedItems(text, t, a);
+            int from = state == 0 ? it.get(0)[0] : it.get(state - 1)[1];
+            int to = state == 0 ? it.get(1)[0] : it.get(state)[1];
+            out = replace(out, from, to, "");
+        }
+        return out;
+    }
+
+    /** Rewrites states and times with item {@code from} moved to place {@code to}. */
+    static String moveState(String text, int line, int column, int from, int to) {
+        Tag t = tag(text, line, column);
+        List<String> attrs = new ArrayList<>(List.of("states", "times"));
+        attrs.removeIf(a -> value(t, a) == null);
+        attrs.sort((x, y) -> Integer.compare(value(t, y)[0], value(t, x)[0]));
+        String out = text;
+        for (String a : attrs) {
+            List<int[]> it = trimmedItems(text, t, a);
+            List<String> bodies = new ArrayList<>();
+            it.forEach(r -> bodies.add(text.substring(r[0], r[1])));
+            bodies.add(to, bodies.remove(from));
+            for (int k = it.size() - 1; k >= 0; k--) {
+                out = replace(out, it.get(k)[0], it.get(k)[1], bodies.get(k));
+            }
+        }
+        return out;
+    }
+
+    /** Sets item {@code state}'s [exit] of times (removes it when {@code exit} is empty). */
+    static String setExit(String text, int line, int column, int state, int states, String exit) {
+        Tag t = tag(text, line, column);
+        String cond = exit.isEmpty() ? "" : "[" + exit + "]";
+        if (value(t, "times") == null) {
+            if (cond.isEmpty()) {
+                return text;
+            }
+            List<String> all = new ArrayList<>();
+            for (int i = 0; i < states; i++) {
+                all.add(i == state ? "1" + cond : "1");
+            }
+            return setAttribute(text, line, column, "times", String.join(", ", all));
+        }
+        int[] item = trimmedItems(text, t, "times").get(state);
+        String body = text.substring(item[0], item[1]);
+        int b = body.indexOf('[');
+        String duration = b < 0 ? body : body.substring(0, b).stripTrailing();
+        return replace(text, item[0], item[1], duration + cond);
+    }
+
+    /**
+     * Adds {@code element} as the last child of the element at line:column: after the child
+     * at {@code last} (line, column; null when there is none) with its indentation.
+     */
+    static String appendChild(String text, int line, int column, int[] last, String element) {
+        Tag t = tag(text, line, column);
+        if (last != null) {
+            Tag c = tag(text, last[0], last[1]);
+            int end = elementEnd(text, c);
+            return replace(text, end, end, "\n" + indentOf(text, c.start) + element);
+        }
+        String indent = indentOf(text, t.start);
+        if (t.empty) {
+            return replace(text, t.end - 2, t.end, ">\n" + indent + "  " + element + "\n" + indent + "</" + t.name + ">");
+        }
+        int endTag = elementEnd(text, t) - ("</" + t.name + ">").length();
+        int at = t.end + text.substring(t.end, endTag).stripTrailing().length();
+        return replace(text, at, at, "\n" + indent + "  " + element);
+    }
+
+    static String indentOf(String text, int at) {
+        int lineStart = text.lastIndexOf('\n', at - 1) + 1;
+        return text.substring(lineStart, at).isBlank() ? text.substring(lineStart, at) : "";
     }
 }

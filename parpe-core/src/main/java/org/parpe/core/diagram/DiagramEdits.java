@@ -123,7 +123,7 @@ public final class DiagramEdits {
         return new TextEdit(edits);
     }
 
-    private static SourceSpan span(SourcePos node) {
+    static SourceSpan span(SourcePos node) {
         if (node.span() == null) {
             throw new IllegalArgumentException(node + " was not read from a file's text; it cannot be edited there");
         }
@@ -144,7 +144,7 @@ public final class DiagramEdits {
         return at;
     }
 
-    private static int[] trim(String text, int from, int to) {
+    static int[] trim(String text, int from, int to) {
         while (from < to && Character.isWhitespace(text.charAt(from))) {
             from++;
         }
@@ -155,7 +155,7 @@ public final class DiagramEdits {
     }
 
     /** {@code value} written between {@code quote}s. */
-    private static String escape(String value, char quote) {
+    static String escape(String value, char quote) {
         String s = ProgramPrinter.attributeText(value);
         return quote == '\'' ? s.replace("&quot;", "\"").replace("'", "&apos;") : s;
     }

@@ -161,6 +161,8 @@ public final class IdeWindow implements HardwareHost {
         // After wire(): the panel shows its posed robot in the 3D view, and the run's otherwise.
         pose = new PosePanel(bottom, new PoseBridge(this));
         poseTab = Panels.tab(bottom, "Pose", pose.control());
+        diagram.usePoses(pose::selectedAngles);
+        diagram.openTablesWith(gaitGrid::showTable);
         bottom.addListener(SWT.Selection, e -> fitBottom());
     }
 

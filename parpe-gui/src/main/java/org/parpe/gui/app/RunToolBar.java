@@ -53,7 +53,7 @@ public final class RunToolBar {
             actions.controller().setSpeed(speed());
             prefs.put("run.speed", speed().name());
         });
-        target = combo("RunOn:", 170);
+        target = combo("Target:", 170);
         for (RunOn t : RunOn.values()) {
             target.add(t.label());
         }

@@ -61,6 +61,10 @@ public final class DiagramPane {
     private boolean following;
     private Point dragFrom;
     private Projection.Target dragged;
+    private Projection.Target offered;
+    private Supplier<String> pose;
+    private java.util.function.Predicate<String> tables;
+    private final Palette palette;
 
     /** The pane in {@code parent}, showing {@code editor}'s document as the file {@code file} names. */
     public DiagramPane(Composite parent, ParslEditor editor, Supplier<Path> file) {
@@ -89,6 +93,7 @@ public final class DiagramPane {
             subject = subjectChoice.getText();
             relayout();
         });
+        palette = new Palette(box, this);
         fields = new Composite(box, SWT.NONE);
         RowLayout fl = new RowLayout(SWT.HORIZONTAL);
         fl.center = true;
@@ -96,7 +101,8 @@ public final class DiagramPane {
         GridData fd = new GridData(SWT.FILL, SWT.CENTER, true, false);
         // as tall with fields as without, so that the drawing does not move when a node is selected
         Text probe = new Text(fields, SWT.BORDER | SWT.SINGLE);
-        fd.heightHint = probe.computeSize(SWT.DEFAULT, SWT.DEFAULT).y + 6;
+        // two rows: a palette item or a state has more fields than one row holds
+        fd.heightHint = 2 * probe.computeSize(SWT.DEFAULT, SWT.DEFAULT).y + 12;
         probe.dispose();
         fields.setLayoutData(fd);
         message = new Label(box, SWT.WRAP);
@@ -183,7 +189,10 @@ public final class DiagramPane {
 
     private void show(Projection p) {
         shown = p;
-        subject = p.subject();
+        // a text that does not load for a moment (an Undo in two steps, typing) keeps the subject chosen
+        if (p.subject() != null) {
+            subject = p.subject();
+        }
         List<String> items = p.subjects();
         if (!items.equals(List.of(subjectChoice.getItems()))) {
             subjectChoice.setItems(items.toArray(String[]::new));
@@ -253,6 +262,7 @@ public final class DiagramPane {
 
     /** A click on the canvas: select the node's element, or open an island's text at its line. */
     private void clicked(SourcePos node) {
+        offered = null;
         if (shown == null) {
             return;
         }
@@ -642,27 +652,95 @@ public final class DiagramPane {
         return canvas.toCanvas(p[0], p[1]);
     }
 
-    /** The edit row: the selected node's values as fields; Enter in one writes it. */
+    /** The edit row: the selected node's values as fields (Enter in one writes it) and its actions ({@link EditRow}). */
     private void showFields() {
-        for (Control c : fields.getChildren()) {
-            c.dispose();
-        }
-        Projection.Target t = shown == null ? null : selected != null ? shown.targets().get(selected)
-                : shown.ring() != null ? shown.targets().get(shown.ring().pos()) : null;
-        Label title = new Label(fields, SWT.NONE);
-        title.setText(t == null ? "" : t.title());
-        for (Projection.Field f : t == null ? List.<Projection.Field>of() : t.fields()) {
-            new Label(fields, SWT.NONE).setText(f.name() + ":");
-            Text field = new Text(fields, SWT.BORDER | SWT.SINGLE);
-            field.setData("field", f.name());
-            field.setText(f.value());
-            field.setLayoutData(new RowData(Math.max(60, 9 * (f.value().length() + 2)), SWT.DEFAULT));
-            field.setToolTipText("Enter writes the new " + f.name() + " into the text (one Undo step)");
-            field.addListener(SWT.DefaultSelection, e -> write(f, field.getText()));
-        }
+        Projection.Target t = offered != null ? offered
+                : shown == null ? null : shown.targets().get(selected != null ? selected : shown.home());
+        EditRow.fill(fields, t, shown == null ? null : org.parpe.gui.editor.NameIndex.of(shown.text()), this::write, this::act,
+                pose);
         fields.layout(true);
         liveBar.update();
         box.layout(true, true);
+    }
+
+    /** Shows {@code t} (a palette item's inputs) in the edit row until a node is clicked. */
+    void offer(Projection.Target t) {
+        offered = t;
+        showFields();
+    }
+
+    /**
+     * Takes poses from {@code selected} (the Pose panel's selected pose as angles, or null): a
+     * state's edit row gets "Use pose", and a pose dragged onto a state of the ring becomes its angles.
+     */
+    public void usePoses(Supplier<String> selected) {
+        boolean first = pose == null;
+        pose = selected;
+        if (!first) {
+            showFields();
+            return;
+        }
+        var drop = new org.eclipse.swt.dnd.DropTarget(canvas.control(), org.eclipse.swt.dnd.DND.DROP_COPY
+                | org.eclipse.swt.dnd.DND.DROP_DEFAULT);
+        drop.setTransfer(org.eclipse.swt.dnd.TextTransfer.getInstance());
+        drop.addDropListener(new org.eclipse.swt.dnd.DropTargetAdapter() {
+            @Override
+            public void drop(org.eclipse.swt.dnd.DropTargetEvent e) {
+                Point p = canvas.control().toControl(e.x, e.y);
+                dropPose(p.x, p.y, (String) e.data);
+            }
+        });
+        showFields();
+    }
+
+    /** Text {@code angles} was dropped at canvas pixel {@code x, y}: the state there takes them as its angles. */
+    void dropPose(int x, int y, String angles) {
+        double[] p = canvas.toScene(x, y);
+        Projection.Target t = shown == null ? null : shown.targets().get(canvas.hit(p[0], p[1]));
+        Projection.Field f = t == null ? null : t.fields().stream().filter(g -> g.name().equals("angles")).findFirst().orElse(null);
+        if (f == null) {
+            message.setText("Drop a pose on a state of the ring (Ring view) whose definition is in this file.");
+            return;
+        }
+        act(new Projection.Action("Use pose", List.of(), v -> f.edit().apply(EditRow.usable(angles))), List.of());
+    }
+
+    /** Opens a gait table the pane has just written with {@code show} (the grid editor's, by table name). */
+    public void openTablesWith(java.util.function.Predicate<String> show) {
+        tables = show;
+    }
+
+    /** The palette, for tests. */
+    Palette palette() {
+        return palette;
+    }
+
+    /** The action buttons of the edit row, by label. */
+    public java.util.Map<String, org.eclipse.swt.widgets.Button> actions() {
+        java.util.Map<String, org.eclipse.swt.widgets.Button> out = new java.util.LinkedHashMap<>();
+        for (Control c : fields.getChildren()) {
+            if (c instanceof org.eclipse.swt.widgets.Button b) {
+                out.put((String) b.getData("action"), b);
+            }
+        }
+        return out;
+    }
+
+    /** Button {@code a} was pressed with its inputs' {@code values}: write its edit (one Undo step). */
+    private void act(Projection.Action a, List<String> values) {
+        if (!current()) {
+            message.setText("The text has changed since the diagram was drawn; try again in a moment.");
+            return;
+        }
+        try {
+            apply(a.edit().apply(values));
+            if (a.name().equals(Projection.EXPAND) && tables != null) {
+                tables.test(values.get(0));
+            }
+        } catch (IllegalArgumentException e) {
+            message.setText(e.getMessage());
+            box.layout(true, true);
+        }
     }
 
     /**

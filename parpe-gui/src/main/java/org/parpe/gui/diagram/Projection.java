@@ -9,10 +9,12 @@ import java.util.function.Function;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.Severity;
 import org.parpe.core.diag.SourcePos;
+import org.parpe.core.diagram.BehaviorEdits;
 import org.parpe.core.diagram.DiagramEdits;
 import org.parpe.core.diagram.Diagrams;
 import org.parpe.core.diagram.Gait;
 import org.parpe.core.diagram.GaitDiagram;
+import org.parpe.core.diagram.GaitTableExpansion;
 import org.parpe.core.diagram.Layouts;
 import org.parpe.core.diagram.PhaseWheel;
 import org.parpe.core.diagram.ProgramLane;
@@ -91,12 +93,50 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
      * @param index  its place among the nodes it can be moved between (a {@code <main>} entry's), or −1
      * @param moveTo the text edit that moves it to another place, or {@code null} when it cannot move
      */
-    record Target(String title, List<Field> fields, int index, java.util.function.IntFunction<TextEdit> moveTo) {
+    record Target(String title, List<Field> fields, int index, java.util.function.IntFunction<TextEdit> moveTo,
+                  List<Action> actions) {
+
+        /** A node that moves and has no actions. */
+        Target(String title, List<Field> fields, int index, java.util.function.IntFunction<TextEdit> moveTo) {
+            this(title, fields, index, moveTo, List.of());
+        }
 
         /** A node that does not move. */
         Target(String title, List<Field> fields) {
             this(title, fields, -1, null);
         }
+
+        /** This node with {@code more} actions. */
+        Target with(List<Action> more) {
+            List<Action> all = new ArrayList<>(actions);
+            all.addAll(more);
+            return new Target(title, fields, index, moveTo, all);
+        }
+    }
+
+    /**
+     * A button of a node's edit row ({@link EditRow}): its inputs are fields of their own, and
+     * the button turns their values into one text edit (may throw IllegalArgumentException).
+     *
+     * @param name   the button's label
+     * @param inputs the names of its input fields, in order (none: the button acts at once)
+     * @param edit   the text edit for the inputs' values
+     */
+    record Action(String name, List<String> inputs, Function<List<String>, TextEdit> edit) {
+    }
+
+    /**
+     * The node whose edit row shows while nothing is selected: the ring's automaton, the
+     * lanes' behavior, or (the program view's first target) {@code <main>} itself.
+     */
+    SourcePos home() {
+        if (ring != null) {
+            return ring.pos();
+        }
+        if (lanes != null) {
+            return lanes.pos();
+        }
+        return view == View.PROGRAM && !targets.isEmpty() ? targets.keySet().iterator().next() : null;
     }
 
     /**
@@ -139,7 +179,7 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
                 null, g);
     }
 
-    private static boolean mine(SourcePos pos, Path file) {
+    static boolean mine(SourcePos pos, Path file) {
         return pos != null && pos.span() != null && pos.file().equals(file.toString());
     }
 
@@ -149,12 +189,19 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
             return new Projection(text, file, View.PROGRAM, List.of(), null, null, targets,
                     "The script has no <main>: see the Lanes, Ring or Phase view.");
         }
+        var main = p.mainDef().orElseThrow();
+        if (mine(main.pos(), file)) {
+            targets.put(main.pos(), new Target("<main> (click a box for an entry)", List.of(), -1, null, List.of(
+                    new Action("Add behavior", List.of("behavior", "automaton", "group", "time"),
+                            v -> BehaviorEdits.addBehavior(text, p, v.get(0), v.get(1), v.get(2), v.get(3))))));
+        }
         for (ProgramLane.Step s : lane.get().steps()) {
             if (mine(s.pos(), file)) {
                 targets.put(s.pos(), new Target("<main> entry " + s.index() + ": " + s.behavior(), List.of(
                         new Field("time", s.time() == null ? "" : s.time(),
                                 v -> DiagramEdits.setAttribute(text, s.pos(), "time", v))), s.index(),
-                        to -> DiagramEdits.moveEntry(text, p.mainDef().orElseThrow(), s.index(), to)));
+                        to -> DiagramEdits.moveEntry(text, main, s.index(), to),
+                        List.of(new Action("Remove entry", List.of(), v -> BehaviorEdits.removeEntry(text, main, s.index())))));
             }
         }
         return new Projection(text, file, View.PROGRAM, List.of(), null, Layouts.program(lane.get()), targets, "");
@@ -167,12 +214,20 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         }
         String chosen = names.contains(subject) ? subject
                 : p.main() != null && !p.main().entries().isEmpty() ? p.main().entries().get(0).behavior() : names.get(0);
-        Swimlanes s = Diagrams.swimlanes(p, p.behavior(chosen).orElseThrow());
+        Behavior behavior = p.behavior(chosen).orElseThrow();
+        Swimlanes s = Diagrams.swimlanes(p, behavior);
+        if (mine(behavior.pos(), file)) {
+            targets.put(behavior.pos(), new Target("behavior " + chosen + " (click a bar for an instance)", List.of(), -1, null,
+                    List.of(new Action("Add instance", List.of("automaton", "group"),
+                            v -> BehaviorEdits.addInstance(text, behavior, v.get(0), v.get(1))))));
+        }
         for (Swimlanes.Lane l : s.lanes()) {
             for (Swimlanes.Bar b : l.bars()) {
                 if (mine(b.pos(), file)) {
-                    targets.put(b.pos(), instanceTarget(text, "instance " + b.index() + ": " + b.automaton() + " on "
-                            + (b.mirrored() ? "!" : "") + l.group(), b.pos(), b.phase(), b.offset()));
+                    targets.put(b.pos(), instanceTarget(text, file, "instance " + b.index() + ": " + b.automaton() + " on "
+                            + (b.mirrored() ? "!" : "") + l.group(), b.pos(), b.phase(), b.offset(), b.period(),
+                            p.group(l.group()).orElse(null)).with(expand(text, p, behavior.instances().get(b.index()),
+                            p.group(l.group()).orElse(null))));
                 }
             }
         }
@@ -180,10 +235,36 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
                 null, null, List.of(), s);
     }
 
-    private static Target instanceTarget(String text, String title, SourcePos pos, String phase, String offset) {
-        return new Target(title, List.of(
+    /** The action that writes a gait table, which the pane then opens in the grid editor. */
+    static final String EXPAND = "Expand to gait table";
+
+    /**
+     * "Expand to gait table" for instance {@code in} on group {@code g}, or "Make phase
+     * automaton" when it plays a gait table (see {@link GaitTableExpansion}).
+     */
+    private static List<Action> expand(String text, Program p, Instance in, Group g) {
+        if (g == null) {
+            return List.of();
+        }
+        if (p.automaton(in.automaton()).map(Automaton::table).orElse(false)) {
+            return List.of(new Action("Make phase automaton", List.of("automaton"),
+                    v -> GaitTableExpansion.writeCycle(text, p, in, g, v.get(0))));
+        }
+        return List.of(new Action(EXPAND, List.of("table"),
+                v -> GaitTableExpansion.write(text, p, in, g, v.get(0))));
+    }
+
+    /** An instance: its phase, offset and period, and the elements of its group when that is defined in this file. */
+    private static Target instanceTarget(String text, Path file, String title, SourcePos pos, String phase, String offset,
+                                         String period, Group g) {
+        List<Field> fields = new ArrayList<>(List.of(
                 new Field("phase", phase == null ? "" : phase, v -> DiagramEdits.setAttribute(text, pos, "phase", v)),
-                new Field("offset", offset == null ? "" : offset, v -> DiagramEdits.setAttribute(text, pos, "offset", v))));
+                new Field("offset", offset == null ? "" : offset, v -> DiagramEdits.setAttribute(text, pos, "offset", v)),
+                new Field("period", period == null ? "" : period, v -> DiagramEdits.setAttribute(text, pos, "period", v))));
+        if (g != null && !g.implicit() && mine(g.pos(), file)) {
+            fields.add(new Field("elements", g.elements(), v -> DiagramEdits.setAttribute(text, g.pos(), "elements", v)));
+        }
+        return new Target(title, fields);
     }
 
     private static Projection ring(String text, Path file, Program p, String subject, Map<SourcePos, Target> targets) {
@@ -200,8 +281,9 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
                         new Field("add state", "", v -> DiagramEdits.addState(text, p, a, v, "1")))));
             }
             for (Ring.Arc arc : r.arcs()) {
-                targets.putIfAbsent(arc.pos(), new Target("state " + arc.index() + " of " + a.name() + ": " + arc.state(),
-                        List.of(new Field("duration", arc.duration(), v -> DiagramEdits.retime(text, a, arc.index(), v)))));
+                targets.putIfAbsent(arc.pos(), a.table() ? new Target("row " + arc.index() + " of " + a.name(), List.of(
+                        new Field("duration", arc.duration(), v -> DiagramEdits.retime(text, a, arc.index(), v))))
+                        : StateTargets.of(text, file, p, a, arc));
             }
         }
         List<List<String>> automata = new ArrayList<>();
@@ -240,8 +322,8 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         PhaseWheel w = Diagrams.wheel(in, g);
         Scene sc = Layouts.wheel(w);
         if (mine(in.pos(), file)) {
-            targets.put(in.pos(), instanceTarget(text, chosen, in.pos(), in.phase() == null ? null : in.phase().text(),
-                    in.offset() == null ? null : in.offset().text()));
+            targets.put(in.pos(), instanceTarget(text, file, chosen, in.pos(), in.phase() == null ? null : in.phase().text(),
+                    in.offset() == null ? null : in.offset().text(), in.period() == null ? null : in.period().text(), g));
         }
         return new Projection(text, file, View.PHASE, labels, chosen, sc, targets, islands(w.islands().size()), w, null, List.of(), null);
     }

@@ -64,6 +64,16 @@ public final class ParslAssistProcessor implements IContentAssistProcessor {
         };
     }
 
+    /**
+     * The words offered in a form field that stands for attribute {@code attribute} of an
+     * element under {@code path} (outermost first, e.g. {@code program, automata}): the same
+     * words as typing that attribute's value in the text, so the Diagram pane's fields and the
+     * editor agree.
+     */
+    public static Map<String, String> valueWords(List<String> path, String attribute, NameIndex names) {
+        return candidates(new XmlContext(path, XmlContext.Kind.ATTRIBUTE_VALUE, "", attribute, ""), names);
+    }
+
     private static Map<String, String> elementNames(XmlContext ctx, NameIndex names) {
         Map<String, String> m = new LinkedHashMap<>();
         List<String> path = ctx.path();

@@ -97,6 +97,7 @@ public final class PosePanel {
         SashForm middle = new SashForm(box, SWT.HORIZONTAL);
         middle.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
         table = new PoseTable(middle, new TableOwner());
+        PoseDrag.from(table.table(), this::selectedAngles);
         Composite right = new Composite(middle, SWT.NONE);
         GridLayout rl = new GridLayout(2, false);
         rl.marginWidth = 0;
@@ -449,6 +450,15 @@ public final class PosePanel {
     /** The modules being posed (none before a group is chosen). */
     public Set<Integer> posedModules() {
         return current == null ? Set.of() : ids(current.modules());
+    }
+
+    /**
+     * The selected pose as the angles attribute of a state: degrees in group order, comma
+     * separated; null when no pose is selected. What the Diagram pane's "Use pose" writes.
+     */
+    public String selectedAngles() {
+        int i = table.selection();
+        return current == null || i < 0 || i >= current.size() ? null : PoseDrag.angles(current.get(i).angles());
     }
 
     /** The poses of the group being posed, or null. */

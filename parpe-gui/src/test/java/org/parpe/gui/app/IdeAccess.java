@@ -61,6 +61,11 @@ public final class IdeAccess {
         Gui.open(ide, file);
     }
 
+    /** Answers "Don't Save" whenever the window asks about unsaved changes (File > New over an edited text). */
+    public static void dontSave(IdeWindow ide) {
+        ide.files().answerWith((title, message, buttons) -> 1);
+    }
+
     /** Runs the event loop until {@code done} holds (bounded). */
     public static void pump(BooleanSupplier done, String what) {
         Gui.pump(done, what);

@@ -75,11 +75,7 @@ class DiagramGuiTest {
 
     /** A left-button mouse event of {@code type} at {@code at} on the canvas. */
     private static void mouse(int type, Point at) {
-        Event e = new Event();
-        e.button = 1;
-        e.x = at.x;
-        e.y = at.y;
-        pane().canvas().notifyListeners(type, e);
+        new DiagramDriver(ide).mouse(type, at);
     }
 
     /** Drags with the left button from {@code from} to {@code to}, as the mouse does. */
@@ -92,19 +88,11 @@ class DiagramGuiTest {
 
     /** The node whose element starts on the line that holds {@code needle}. */
     private static SourcePos node(String needle) {
-        int line = lineOf(needle);
-        return pane().shown().targets().keySet().stream().filter(p -> p.line() == line).findFirst()
-                .orElseThrow(() -> new AssertionError("no editable node on line " + line + " (" + needle + ")"));
+        return new DiagramDriver(ide).node(needle);
     }
 
     private static int lineOf(String needle) {
-        String[] lines = text().split("\n", -1);
-        for (int i = 0; i < lines.length; i++) {
-            if (lines[i].contains(needle)) {
-                return i + 1;
-            }
-        }
-        throw new AssertionError("no line holds " + needle);
+        return new DiagramDriver(ide).lineOf(needle);
     }
 
     /** Types {@code value} into the selected node's field {@code name} and presses Enter. */
@@ -130,7 +118,7 @@ class DiagramGuiTest {
         show(View.PROGRAM, null);
         picture(View.PROGRAM);
         show(View.LANES, "walk");
-        assertEquals(4, pane().shown().targets().size(), "a bar per instance of walk");
+        assertEquals(5, pane().shown().targets().size(), "a bar per instance of walk, and the behavior itself (its Add instance)");
         picture(View.LANES);
         show(View.RING, "step");
         assertEquals(java.util.List.of("swing", "step"), pane().shown().subjects());
