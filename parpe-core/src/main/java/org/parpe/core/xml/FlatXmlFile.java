@@ -1,7 +1,6 @@
 package org.parpe.core.xml;
 
 import com.ctc.wstx.exc.WstxLazyException;
-import com.ctc.wstx.stax.WstxInputFactory;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.file.Path;
@@ -40,7 +39,7 @@ public final class FlatXmlFile {
     }
 
     /** Namespace-aware (an attribute of another namespace keeps its prefix); no DTDs, no external entities. */
-    private static final XMLInputFactory FACTORY = factory();
+    private static final XMLInputFactory FACTORY = XmlReader.factory(true);
 
     /** The place the StAX parser writes into its messages. */
     private static final java.util.regex.Pattern PARSER_PLACE =
@@ -85,15 +84,6 @@ public final class FlatXmlFile {
             f.error(f.start(), "cannot read the " + what + ": " + e.getMessage());
             f.rootAt = null;
         }
-        return f;
-    }
-
-    private static XMLInputFactory factory() {
-        XMLInputFactory f = new WstxInputFactory();
-        f.setProperty(XMLInputFactory.SUPPORT_DTD, false);
-        f.setProperty(XMLInputFactory.IS_SUPPORTING_EXTERNAL_ENTITIES, false);
-        f.setProperty(XMLInputFactory.IS_NAMESPACE_AWARE, true);
-        f.setProperty(XMLInputFactory.IS_COALESCING, true);
         return f;
     }
 
