@@ -76,7 +76,7 @@ public final class Main implements Runnable {
         CommandLine cl = new CommandLine(new Main());
         cl.setOut(new PrintWriter(out, true));
         cl.setErr(new PrintWriter(err, true));
-        cl.setExecutionExceptionHandler((ex, line, parsed) -> internalError(ex, err));
+        cl.setExecutionExceptionHandler(Main::failed);
         cl.setParameterExceptionHandler((ex, args2) -> {
             String command = unknownCommand(ex, cl);
             if (command != null) {
@@ -110,8 +110,28 @@ public final class Main implements Runnable {
         return null;
     }
 
+    /**
+     * How a command that threw ends, for every command in one place: a {@link UsageException} (a
+     * bad command-line value) is one line and exit code 2; anything else is a failure of PARPE
+     * itself ({@link #internalError}).
+     */
+    public static int failed(Exception ex, CommandLine line, CommandLine.ParseResult parsed) {
+        if (ex instanceof UsageException) {
+            line.getErr().println("parpe: " + ex.getMessage());
+            return 2;
+        }
+        return internalError(ex, line.getErr());
+    }
+
     /** Reports a failure of PARPE itself: one line for the user, the details in a file. */
     static int internalError(Throwable ex, PrintStream err) {
+        PrintWriter w = new PrintWriter(err, true);
+        int code = internalError(ex, w);
+        w.flush();
+        return code;
+    }
+
+    private static int internalError(Throwable ex, PrintWriter err) {
         StringWriter trace = new StringWriter();
         ex.printStackTrace(new PrintWriter(trace));
         String where;

@@ -72,13 +72,7 @@ final class RunCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        PrintStream err = errStream();
-        try {
-            return execute(err);
-        } catch (UsageException e) {
-            err.println("parpe: " + e.getMessage());
-            return 2;
-        }
+        return execute(errStream());
     }
 
     private PrintStream errStream() {

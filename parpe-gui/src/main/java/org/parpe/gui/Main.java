@@ -32,10 +32,6 @@ public final class Main {
         if (!list.isEmpty() && list.get(0).equals("gui")) {
             list = list.subList(1, list.size());
         }
-        if (list.contains("--help") || list.contains("-h")) {
-            System.out.println(LaunchOptions.USAGE);
-            return 0;
-        }
         LaunchOptions options;
         try {
             options = LaunchOptions.parse(list);
@@ -43,6 +39,10 @@ public final class Main {
             System.err.println("parpe gui: error: " + e.getMessage());
             System.err.println(LaunchOptions.USAGE);
             return 2;
+        }
+        if (options.help()) {
+            System.out.println(LaunchOptions.USAGE);
+            return 0;
         }
         if (options.file() != null && !java.nio.file.Files.isRegularFile(options.file())) {
             System.err.println("parpe gui: error: cannot read " + options.file() + ": no such file");

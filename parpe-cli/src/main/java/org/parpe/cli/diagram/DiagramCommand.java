@@ -83,13 +83,7 @@ public final class DiagramCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        PrintWriter err = spec.commandLine().getErr();
-        try {
-            return execute(err);
-        } catch (UsageException e) {
-            err.println("parpe: " + e.getMessage());
-            return 2;
-        }
+        return execute(spec.commandLine().getErr());
     }
 
     private int execute(PrintWriter err) throws Exception {

@@ -76,13 +76,10 @@ public final class ExportCommand implements Callable<Integer> {
     CommandSpec spec;
 
     @Override
-    public Integer call() {
+    public Integer call() throws UsageException {
         PrintWriter err = spec.commandLine().getErr();
         try {
             return execute(err);
-        } catch (UsageException e) {
-            err.println("parpe: " + e.getMessage());
-            return 2;
         } catch (IOException e) {
             err.println("parpe: cannot write '" + out + "': " + e.getMessage());
             return 2;

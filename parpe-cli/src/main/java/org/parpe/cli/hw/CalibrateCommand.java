@@ -48,13 +48,7 @@ public final class CalibrateCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        PrintWriter err = spec.commandLine().getErr();
-        try {
-            return calibrate(err);
-        } catch (UsageException e) {
-            err.println("parpe: " + e.getMessage());
-            return 2;
-        }
+        return calibrate(spec.commandLine().getErr());
     }
 
     private int calibrate(PrintWriter err) throws UsageException, IOException {

@@ -89,13 +89,7 @@ public final class EmulateCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        PrintWriter err = spec.commandLine().getErr();
-        try {
-            return serve(err);
-        } catch (UsageException e) {
-            err.println("parpe: " + e.getMessage());
-            return 2;
-        }
+        return serve(spec.commandLine().getErr());
     }
 
     private EmulatorOptions options(int[] ids) throws UsageException {

@@ -52,15 +52,8 @@ public final class ScanCommand implements Callable<Integer> {
     CommandSpec spec;
 
     @Override
-    public Integer call() {
-        PrintWriter err = spec.commandLine().getErr();
-        PrintWriter stdout = spec.commandLine().getOut();
-        try {
-            return scan(stdout, err);
-        } catch (UsageException e) {
-            err.println("parpe: " + e.getMessage());
-            return 2;
-        }
+    public Integer call() throws UsageException {
+        return scan(spec.commandLine().getOut(), spec.commandLine().getErr());
     }
 
     private int scan(PrintWriter stdout, PrintWriter err) throws UsageException {

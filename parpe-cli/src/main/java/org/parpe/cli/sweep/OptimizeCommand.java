@@ -5,7 +5,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import java.util.concurrent.Callable;
 import org.parpe.cli.OutputFile;
 import org.parpe.core.io.OutputPlan;
 import org.parpe.cli.UsageException;
@@ -22,11 +21,7 @@ import org.parpe.sim.sweep.ParameterDefaults;
 import org.parpe.sim.sweep.SweepException;
 import org.parpe.sim.sweep.SweepListener;
 import picocli.CommandLine.Command;
-import picocli.CommandLine.Mixin;
-import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
-import picocli.CommandLine.Parameters;
-import picocli.CommandLine.Spec;
 
 /**
  * {@code parpe optimize}: searches the script's parameters within their {@code min}/{@code max}
@@ -36,10 +31,7 @@ import picocli.CommandLine.Spec;
 @Command(name = "optimize", mixinStandardHelpOptions = true,
         description = "Search the script's parameters (those with a min and a max) for the best gait with CMA-ES on"
                 + " the simulator; print the best values and write a copy of the script with them as defaults.")
-public final class OptimizeCommand implements Callable<Integer> {
-    @Parameters(index = "0", paramLabel = "FILE", description = "The PARSL script.")
-    Path file;
-
+public final class OptimizeCommand extends SimSweepCommand {
     @Option(names = "--objective", paramLabel = "NAME", defaultValue = "forward-speed",
             description = "What to maximise: forward-speed, speed, forward, distance, score (with --world) (default ${DEFAULT-VALUE}).")
     String objective;
@@ -67,19 +59,13 @@ public final class OptimizeCommand implements Callable<Integer> {
     @Option(names = "--plot", paramLabel = "FILE.png", description = "The convergence plot (default: --out with -convergence.png).")
     String plot;
 
-    @Mixin
-    SimSweepOptions options;
-
-    @Spec
-    CommandSpec spec;
-
     @Override
-    public Integer call() throws Exception {
-        // Held until the script and the plot are written, so that Ctrl-C still leaves the best so far.
-        return Interruptible.call(spec, "kept the best found so far", this::execute);
+    String kept() {
+        return "kept the best found so far";
     }
 
-    private int execute(PrintWriter stdout, PrintWriter err, Cancellation cancel) throws Exception {
+    @Override
+    int execute(PrintWriter stdout, PrintWriter err, Cancellation cancel) throws Exception {
         Objective goal = options.objective(objective);
         if (maxTilt != null && !(maxTilt >= 0 && maxTilt <= 180)) {
             throw new UsageException("--max-tilt must be within [0, 180] degrees, got " + maxTilt);

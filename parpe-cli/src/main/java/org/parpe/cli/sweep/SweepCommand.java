@@ -7,7 +7,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import java.util.concurrent.Callable;
 import org.parpe.cli.OutputFile;
 import org.parpe.core.io.OutputPlan;
 import org.parpe.cli.UsageException;
@@ -24,11 +23,7 @@ import org.parpe.sim.sweep.SweepRow;
 import org.parpe.sim.sweep.SweepSpec;
 import org.parpe.sim.sweep.VarySpec;
 import picocli.CommandLine.Command;
-import picocli.CommandLine.Mixin;
-import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
-import picocli.CommandLine.Parameters;
-import picocli.CommandLine.Spec;
 
 /**
  * {@code parpe sweep}: runs a script with every combination of the varied parameters (or random
@@ -37,10 +32,7 @@ import picocli.CommandLine.Spec;
 @Command(name = "sweep", mixinStandardHelpOptions = true, description = "Run a script with every combination of"
         + " parameter values (or --random ones) on fresh simulated robots, in parallel; write one CSV row per run"
         + " and a plot of the objective over the parameters.")
-public final class SweepCommand implements Callable<Integer> {
-    @Parameters(index = "0", paramLabel = "FILE", description = "The PARSL script.")
-    Path file;
-
+public final class SweepCommand extends SimSweepCommand {
     @Option(names = "--vary", paramLabel = "NAME=RANGE", description = "A parameter to vary: NAME=A..B (integers),"
             + " NAME=A..B:K (K values), NAME=V1,V2,... (repeatable). With --random and no --vary: every parameter"
             + " with a min and a max, over [min, max].")
@@ -72,19 +64,13 @@ public final class SweepCommand implements Callable<Integer> {
             + " join the shards' files with 'parpe merge'.")
     String shard;
 
-    @Mixin
-    SimSweepOptions options;
-
-    @Spec
-    CommandSpec spec;
-
     @Override
-    public Integer call() throws Exception {
-        // Held until every output is written, so that Ctrl-C still leaves the finished rows and the plot.
-        return Interruptible.call(spec, "kept what was finished", this::execute);
+    String kept() {
+        return "kept what was finished";
     }
 
-    private int execute(PrintWriter stdout, PrintWriter err, Cancellation cancel) throws Exception {
+    @Override
+    int execute(PrintWriter stdout, PrintWriter err, Cancellation cancel) throws Exception {
         Objective goal = options.objective(objective);
         int[] share = shard();
         Evaluator ev = options.evaluator(file, err);

@@ -22,6 +22,7 @@ final class CalibrateSession {
         CalibrateCommand cmd = new CalibrateCommand();
         cmd.input = new PipedInputStream(keys);
         CommandLine cl = new CommandLine(cmd);
+        cl.setExecutionExceptionHandler(org.parpe.cli.Main::failed); // as parpe sets it
         cl.setErr(new PrintWriter(err, true, StandardCharsets.UTF_8));
         code = CompletableFuture.supplyAsync(() -> cl.execute(args));
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);

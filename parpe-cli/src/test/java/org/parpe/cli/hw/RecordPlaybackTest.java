@@ -60,6 +60,7 @@ class RecordPlaybackTest {
             cmd.input = new PipedInputStream(keys);
             ByteArrayOutputStream err = new ByteArrayOutputStream();
             CommandLine cl = new CommandLine(cmd);
+            cl.setExecutionExceptionHandler(org.parpe.cli.Main::failed); // as parpe sets it
             cl.setErr(new PrintWriter(err, true, StandardCharsets.UTF_8));
             CompletableFuture<Integer> code = CompletableFuture.supplyAsync(() -> cl.execute("--port", bus.port(),
                     "--group", "arm", "--script", robot.toString(), "--out", rec.toString()));
@@ -197,6 +198,7 @@ class RecordPlaybackTest {
             cmd.input = new PipedInputStream(keys);
             ByteArrayOutputStream err = new ByteArrayOutputStream();
             CommandLine cl = new CommandLine(cmd);
+            cl.setExecutionExceptionHandler(org.parpe.cli.Main::failed); // as parpe sets it
             cl.setErr(new PrintWriter(err, true, StandardCharsets.UTF_8));
             CompletableFuture<Integer> code = CompletableFuture.supplyAsync(() -> cl.execute("--hardware",
                     profile.toString(), "--port", bus.port(), "--group", "arm", "--script", robot.toString(),

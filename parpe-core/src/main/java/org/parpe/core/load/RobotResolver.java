@@ -6,6 +6,8 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeSet;
+import org.parpe.core.diag.Diagnostic;
+import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.expr.ExprCompiler;
@@ -51,6 +53,34 @@ final class RobotResolver {
         }
     }
 
+    /**
+     * A robot file as read from disk, before any parameter value is known: read once per
+     * {@link ParsedScript} and given to every resolution of it.
+     *
+     * @param path        the file
+     * @param root        its root element, or {@code null} when it could not be read or parsed
+     * @param ioError     why it could not be read, or {@code null}
+     * @param diagnostics what parsing it reported
+     */
+    record FileRead(Path path, XElement root, String ioError, List<Diagnostic> diagnostics) {
+        FileRead {
+            diagnostics = List.copyOf(diagnostics);
+        }
+
+        /** Reads and parses {@code path}. */
+        static FileRead of(Path path) {
+            String text;
+            try {
+                text = InputFiles.readText(path);
+            } catch (java.io.IOException e) {
+                return new FileRead(path, null, e.getMessage(), List.of());
+            }
+            DiagnosticList found = new DiagnosticList();
+            XElement root = XmlReader.read(new SourceText(path.toString(), text), found);
+            return new FileRead(path, root, null, found.all());
+        }
+    }
+
     private RobotResolver(DiagnosticSink d, NameRegistry names, Scope paramScope) {
         this.d = d;
         this.names = names;
@@ -58,17 +88,18 @@ final class RobotResolver {
     }
 
     /**
-     * Resolves the robot section {@code robot} of {@code mainFile} (or its file), whose groups'
-     * ranges may use the parameters of {@code paramScope}; reports a missing one at {@code rootPos}.
+     * Resolves the robot section {@code robot} of {@code mainFile} (or its file, already read as
+     * {@code robotFile}), whose groups' ranges may use the parameters of {@code paramScope};
+     * reports a missing one at {@code rootPos}.
      */
     static Resolved resolve(DiagnosticSink d, NameRegistry names, Scope paramScope, XElement robot, int order,
-                            Path mainFile, SourcePos rootPos) {
+                            Path mainFile, FileRead robotFile, SourcePos rootPos) {
         RobotResolver r = new RobotResolver(d, names, paramScope);
-        Robot resolved = r.resolve(robot, order, mainFile, rootPos);
+        Robot resolved = r.resolve(robot, order, mainFile, robotFile, rootPos);
         return new Resolved(resolved, r.broken, r.file);
     }
 
-    private Robot resolve(XElement robot, int order, Path mainFile, SourcePos rootPos) {
+    private Robot resolve(XElement robot, int order, Path mainFile, FileRead robotFile, SourcePos rootPos) {
         if (robot == null) {
             d.error(rootPos, "the program has no <robot> section (it is required)");
             return null;
@@ -84,15 +115,13 @@ final class RobotResolver {
                 return null;
             }
             Path p = Assembly.resolve(mainFile, file.value().trim());
-            String text;
             this.file = p;
-            try {
-                text = InputFiles.readText(p);
-            } catch (java.io.IOException e) {
-                d.error(file.pos(), "cannot read robot file '" + p + "': " + e.getMessage());
+            if (robotFile.ioError() != null) {
+                d.error(file.pos(), "cannot read robot file '" + p + "': " + robotFile.ioError());
                 return null;
             }
-            body = XmlReader.read(new SourceText(p.toString(), text), d);
+            robotFile.diagnostics().forEach(d::report);
+            body = robotFile.root();
             if (body == null) {
                 return null;
             }

@@ -18,6 +18,7 @@ import org.parpe.core.model.Robot;
 import org.parpe.core.sensor.Channel;
 import org.parpe.core.sensor.SensorTable;
 import org.parpe.core.xml.InputFiles;
+import org.parpe.core.xml.XText;
 
 /**
  * Loads a PARSL program: XML with positions → parse tree → resolution and validation →
@@ -45,8 +46,31 @@ public final class ScriptLoader {
      * buffer); includes and robot files are found relative to {@code file}.
      */
     public static LoadResult loadText(Path file, String text, Map<String, Double> parameters) {
+        return bind(read(file, text), parameters);
+    }
+
+    /**
+     * Reads {@code text} as the content of {@code file}, with its includes and robot file, for
+     * {@link #bind} to load with any parameter values: the only step that reads files.
+     */
+    public static ParsedScript read(Path file, String text) {
         DiagnosticList d = new DiagnosticList();
         Assembly.Assembled a = Assembly.read(file, text, d);
+        XText robotRef = a.robot() == null ? null : Attrs.optional(a.robot(), "file");
+        RobotResolver.FileRead robotFile = robotRef == null ? null
+                : RobotResolver.FileRead.of(Assembly.resolve(file, robotRef.value().trim()));
+        return new ParsedScript(file, a, d.all(), robotFile);
+    }
+
+    /**
+     * Loads {@code script} with the given parameter values (defaults for the others), reading no
+     * file: the same result as {@link #loadText} on the files as they were read.
+     */
+    public static LoadResult bind(ParsedScript script, Map<String, Double> parameters) {
+        Path file = script.file;
+        Assembly.Assembled a = script.assembled;
+        DiagnosticList d = new DiagnosticList();
+        script.readDiagnostics.forEach(d::report);
         if (d.hasErrors() && a.nothing()) {
             return new LoadResult(null, d.all(), List.of(), a.files());
         }
@@ -55,7 +79,7 @@ public final class ScriptLoader {
         Scope paramScope = new Scope(Scope.Kind.PARAMETERS_ONLY, params.values(), Map.of(), Map.of(), Set.of(),
                 Map.of(), Set.of(), null);
         RobotResolver.Resolved robot = RobotResolver.resolve(d, names, paramScope, a.robot(), a.robotOrder(), file,
-                a.root() == null ? new SourcePos(file.toString(), 1, 1) : a.root().pos());
+                script.robotFile, a.root() == null ? new SourcePos(file.toString(), 1, 1) : a.root().pos());
         Declarations.Controls controls = Declarations.controls(a.of("controls"), d, names);
         Scopes scopes = new Scopes(params, controls, robot.robot());
         StateResolver.Resolved states = StateResolver.resolve(d, scopes.scope(Scope.Kind.MODULE, Map.of(), Set.of()),

@@ -1,11 +1,6 @@
 package org.parpe.core.xml;
 
-import com.fasterxml.jackson.core.JsonLocation;
-import com.fasterxml.jackson.core.JsonParser;
-import com.fasterxml.jackson.core.JsonProcessingException;
-import com.fasterxml.jackson.core.JsonToken;
-import com.fasterxml.jackson.dataformat.xml.XmlFactory;
-import com.fasterxml.jackson.dataformat.xml.deser.FromXmlParser;
+import com.ctc.wstx.exc.WstxLazyException;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.file.Path;
@@ -15,16 +10,19 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
+import javax.xml.stream.Location;
+import javax.xml.stream.XMLInputFactory;
 import javax.xml.stream.XMLStreamConstants;
-import javax.xml.stream.XMLStreamReader;
+import javax.xml.stream.XMLStreamException;
+import org.codehaus.stax2.XMLStreamReader2;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.lang.Numbers;
 
 /**
  * A small XML file made of one root element whose child elements carry only attributes (robot
- * configurations of the simulator, hardware profiles of servo buses), read with Jackson's
- * streaming XML parser so that every element keeps its place. The checks the readers of such
+ * configurations of the simulator, hardware profiles of servo buses, worlds), read with the
+ * StAX parser (Woodstox) that reads scripts, so that every element keeps its place. The checks the readers of such
  * files share are here too: known and required attributes, numbers. Every problem goes to the
  * sink at {@code FILE:LINE:COL}, all of them, not only the first; {@link #ok} tells whether
  * there was one.
@@ -39,6 +37,9 @@ public final class FlatXmlFile {
      */
     public record Element(String name, Map<String, String> attributes, SourcePos at) {
     }
+
+    /** Namespace-aware (an attribute of another namespace keeps its prefix); no DTDs, no external entities. */
+    private static final XMLInputFactory FACTORY = XmlReader.factory(true);
 
     /** The place the StAX parser writes into its messages. */
     private static final java.util.regex.Pattern PARSER_PLACE =
@@ -65,11 +66,19 @@ public final class FlatXmlFile {
      */
     public static FlatXmlFile read(Path path, String what, String root, String expected, DiagnosticSink diags) {
         FlatXmlFile f = new FlatXmlFile(path.toString(), diags);
-        try (InputStream in = InputFiles.open(path);
-             JsonParser p = new XmlFactory().createParser(in)) {
-            f.document(p, what, root, expected);
-        } catch (JsonProcessingException e) {
+        try (InputStream in = InputFiles.open(path)) {
+            XMLStreamReader2 r = (XMLStreamReader2) FACTORY.createXMLStreamReader(in);
+            try {
+                f.document(r, what, root, expected);
+            } finally {
+                r.close();
+            }
+        } catch (XMLStreamException e) {
             f.notWellFormed(e);
+            f.rootAt = null;
+        } catch (WstxLazyException e) {
+            // Woodstox defers some errors in text (an undefined entity) until the text is read
+            f.notWellFormed((XMLStreamException) e.getCause());
             f.rootAt = null;
         } catch (IOException e) {
             f.error(f.start(), "cannot read the " + what + ": " + e.getMessage());
@@ -83,16 +92,16 @@ public final class FlatXmlFile {
      * ("at [row,col {unknown-source}]: [3,18]"), which also gives the place when the exception
      * carries none.
      */
-    private void notWellFormed(JsonProcessingException e) {
-        String message = e.getOriginalMessage() == null ? "" : e.getOriginalMessage();
+    private void notWellFormed(XMLStreamException e) {
+        String message = e.getMessage() == null ? "" : e.getMessage();
         java.util.regex.Matcher m = PARSER_PLACE.matcher(message);
         SourcePos at = null;
         if (m.find()) {
             at = new SourcePos(file, Math.max(1, Integer.parseInt(m.group(1))), Math.max(1, Integer.parseInt(m.group(2))));
             message = (message.substring(0, m.start()) + message.substring(m.end())).trim();
         }
-        JsonLocation l = e.getLocation();
-        if (l != null && l.getLineNr() > 0) {
+        Location l = e.getLocation();
+        if (l != null && l.getLineNumber() > 0) {
             at = pos(l);
         }
         error(at == null ? start() : at, "not well-formed XML: " + message);
@@ -188,70 +197,114 @@ public final class FlatXmlFile {
         return d == Math.rint(d) ? String.valueOf((long) d) : String.format(Locale.ROOT, "%.2f", d);
     }
 
-    private void document(JsonParser p, String what, String root, String expected) throws IOException {
-        if (p.nextToken() != JsonToken.START_OBJECT) {
+    private void document(XMLStreamReader2 r, String what, String root, String expected) throws XMLStreamException {
+        int ev = r.next();
+        while (ev != XMLStreamConstants.START_ELEMENT && ev != XMLStreamConstants.END_DOCUMENT) {
+            ev = r.next();
+        }
+        if (ev != XMLStreamConstants.START_ELEMENT) {
             error(start(), "expected " + expected);
             return;
         }
-        SourcePos at = pos(p.currentTokenLocation());
-        String rootName = p instanceof FromXmlParser x ? x.getStaxReader().getLocalName() : root;
+        SourcePos at = here(r);
+        String rootName = r.getLocalName();
         if (!root.equals(rootName)) {
             error(at, "<" + rootName + "> is not a " + what + ("program".equals(rootName) ? " but a PARSL script" : "")
                     + "; expected " + expected);
             return;
         }
         rootAt = at;
-        rootAttributes.putAll(staxAttributes(p));
-        JsonLocation after = p.currentLocation();
-        while (p.nextToken() == JsonToken.FIELD_NAME) {
-            String name = p.currentName();
-            SourcePos here = pos(p.currentTokenLocation());
-            boolean element = isElement(p, name);
-            Map<String, String> attrs = element ? staxAttributes(p) : null;
-            JsonToken t = p.nextToken();
-            if (t == JsonToken.START_OBJECT) {
-                children.add(new Element(name, attributes(p, name, attrs), here));
-            } else if (name.isEmpty()) {
-                if (!p.getText().isBlank()) {
-                    error(textStart(after, p.getText()), "<" + root + "> may not contain text");
-                }
-            } else if (t == JsonToken.START_ARRAY) {
-                error(here, "<" + name + "> may not contain elements");
-                p.skipChildren();
-            } else if (element) {
-                // An element without attributes: empty, or with text only.
-                if (p.getText() != null && !p.getText().isBlank()) {
-                    error(here, "<" + name + "> may not contain text");
-                }
-                children.add(new Element(name, Map.of(), here));
+        rootAttributes.putAll(attributes(r));
+        Text text = new Text();
+        for (ev = r.next(); ev != XMLStreamConstants.END_ELEMENT; ev = r.next()) {
+            if (ev == XMLStreamConstants.START_ELEMENT) {
+                text.reportIfAny(root);
+                text = new Text();
+                child(r);
+            } else {
+                text.add(r, ev);
             }
-            // Other fields are the root's attributes, taken from the StAX reader above.
-            after = p.currentLocation();
+        }
+        text.reportIfAny(root);
+    }
+
+    /**
+     * A child of the root, the reader on its start tag: its attributes; nested elements and text
+     * are errors at their place, in document order (text at the element's own start tag when it
+     * has neither attributes nor elements).
+     */
+    private void child(XMLStreamReader2 r) throws XMLStreamException {
+        String name = r.getLocalName();
+        SourcePos at = here(r);
+        Map<String, String> attrs = attributes(r);
+        List<SourcePos> places = new ArrayList<>();
+        List<String> inner = new ArrayList<>(); // null for text
+        Text text = new Text();
+        for (int ev = r.next(); ev != XMLStreamConstants.END_ELEMENT; ev = r.next()) {
+            if (ev == XMLStreamConstants.START_ELEMENT) {
+                text.addTo(places, inner);
+                text = new Text();
+                places.add(here(r));
+                inner.add(r.getLocalName());
+                r.skipElement();
+            } else {
+                text.add(r, ev);
+            }
+        }
+        text.addTo(places, inner);
+        // without attributes and elements the element is text only: the text is placed at the element
+        boolean bare = attrs.isEmpty() && inner.stream().allMatch(java.util.Objects::isNull);
+        for (int i = 0; i < places.size(); i++) {
+            error(inner.get(i) != null ? places.get(i) : bare ? at : places.get(i),
+                    "<" + name + "> may not contain " + (inner.get(i) == null ? "text" : "<" + inner.get(i) + ">"));
+        }
+        children.add(new Element(name, attrs, at));
+    }
+
+    /** Text between two tags: where its first non-blank character stands, if it has one. */
+    private final class Text {
+        SourcePos first;
+
+        void add(XMLStreamReader2 r, int ev) throws XMLStreamException {
+            if (first == null && (ev == XMLStreamConstants.CHARACTERS || ev == XMLStreamConstants.CDATA)
+                    && !r.getText().isBlank()) {
+                first = textStart(r.getLocationInfo().getStartLocation(), r.getText());
+            }
+        }
+
+        /** Adds the text's place (and {@code null} for "text") when it is not blank. */
+        void addTo(List<SourcePos> places, List<String> what) {
+            if (first != null) {
+                places.add(first);
+                what.add(null);
+            }
+        }
+
+        void reportIfAny(String element) {
+            if (first != null) {
+                error(first, "<" + element + "> may not contain text");
+            }
         }
     }
 
     /**
-     * The attributes of the element the StAX reader stands on, values trimmed; one of another
+     * The attributes of the element the reader stands on, values trimmed; one of another
      * namespace keeps its prefix ({@code x:protocol}), so that it cannot stand in for ours.
      */
-    private static Map<String, String> staxAttributes(JsonParser p) {
+    private static Map<String, String> attributes(XMLStreamReader2 r) {
         Map<String, String> attrs = new LinkedHashMap<>();
-        if (p instanceof FromXmlParser x && x.getStaxReader().getEventType() == XMLStreamConstants.START_ELEMENT) {
-            XMLStreamReader r = x.getStaxReader();
-            for (int i = 0; i < r.getAttributeCount(); i++) {
-                String prefix = r.getAttributePrefix(i);
-                String local = r.getAttributeLocalName(i);
-                attrs.put(prefix == null || prefix.isEmpty() ? local : prefix + ":" + local,
-                        r.getAttributeValue(i).trim());
-            }
+        for (int i = 0; i < r.getAttributeCount(); i++) {
+            String prefix = r.getAttributePrefix(i);
+            String local = r.getAttributeLocalName(i);
+            attrs.put(prefix == null || prefix.isEmpty() ? local : prefix + ":" + local, r.getAttributeValue(i).trim());
         }
         return attrs;
     }
 
     /** Where the first non-blank character of {@code text}, which began at {@code from}, stands. */
-    private SourcePos textStart(JsonLocation from, String text) {
-        int line = Math.max(1, from.getLineNr());
-        int col = Math.max(1, from.getColumnNr());
+    private SourcePos textStart(Location from, String text) {
+        int line = Math.max(1, from.getLineNumber());
+        int col = Math.max(1, from.getColumnNumber());
         for (int i = 0; i < text.length() && Character.isWhitespace(text.charAt(i)); i++) {
             if (text.charAt(i) == '\n') {
                 line++;
@@ -263,33 +316,12 @@ public final class FlatXmlFile {
         return new SourcePos(file, line, col);
     }
 
-    /** Whether the field just read is a child element (an empty one looks like an attribute otherwise). */
-    private static boolean isElement(JsonParser p, String name) {
-        if (!(p instanceof FromXmlParser x)) {
-            return false;
-        }
-        XMLStreamReader r = x.getStaxReader();
-        return r.getEventType() == XMLStreamConstants.START_ELEMENT && name.equals(r.getLocalName());
+    /** Where the event the reader stands on starts. */
+    private SourcePos here(XMLStreamReader2 r) throws XMLStreamException {
+        return pos(r.getLocationInfo().getStartLocation());
     }
 
-    /** The current element's {@code attrs} (read from StAX); nested elements and text are errors. */
-    private Map<String, String> attributes(JsonParser p, String element, Map<String, String> attrs) throws IOException {
-        while (p.nextToken() == JsonToken.FIELD_NAME) {
-            String key = p.currentName();
-            SourcePos at = pos(p.currentTokenLocation());
-            boolean nested = isElement(p, key);
-            JsonToken t = p.nextToken();
-            if (nested || t == JsonToken.START_OBJECT || t == JsonToken.START_ARRAY) {
-                error(at, "<" + element + "> may not contain <" + key + ">");
-                p.skipChildren();
-            } else if (key.isEmpty() && !p.getText().isBlank()) {
-                error(at, "<" + element + "> may not contain text");
-            }
-        }
-        return attrs;
-    }
-
-    private SourcePos pos(JsonLocation l) {
-        return new SourcePos(file, Math.max(1, l.getLineNr()), Math.max(1, l.getColumnNr()));
+    private SourcePos pos(Location l) {
+        return new SourcePos(file, Math.max(1, l.getLineNumber()), Math.max(1, l.getColumnNumber()));
     }
 }

@@ -19,16 +19,21 @@ import org.parpe.core.diag.DiagnosticSink;
  * its characters, which StAX does not report.
  */
 public final class XmlReader {
-    private static final XMLInputFactory FACTORY = createFactory();
+    private static final XMLInputFactory FACTORY = factory(false);
 
     private XmlReader() {
     }
 
-    private static XMLInputFactory createFactory() {
+    /**
+     * The Woodstox factory of PARPE's XML readers: no DTDs, no external entities, text coalesced;
+     * {@code namespaceAware} for the configuration files ({@link FlatXmlFile}), whose attributes
+     * of another namespace keep their prefix.
+     */
+    static XMLInputFactory factory(boolean namespaceAware) {
         XMLInputFactory f = new WstxInputFactory();
         f.setProperty(XMLInputFactory.SUPPORT_DTD, false);
         f.setProperty(XMLInputFactory.IS_SUPPORTING_EXTERNAL_ENTITIES, false);
-        f.setProperty(XMLInputFactory.IS_NAMESPACE_AWARE, false);
+        f.setProperty(XMLInputFactory.IS_NAMESPACE_AWARE, namespaceAware);
         f.setProperty(XMLInputFactory.IS_COALESCING, true);
         return f;
     }

@@ -46,7 +46,7 @@ class LoadStagesTest {
 
         Scope paramScope = new Scope(Scope.Kind.PARAMETERS_ONLY, params.values(), Map.of(), Map.of(), Set.of(),
                 Map.of(), Set.of(), null);
-        RobotResolver.Resolved robot = RobotResolver.resolve(d, names, paramScope, a.robot(), a.robotOrder(), FILE,
+        RobotResolver.Resolved robot = RobotResolver.resolve(d, names, paramScope, a.robot(), a.robotOrder(), FILE, null,
                 a.root().pos());
         assertNotNull(robot.robot());
         assertEquals(Set.of("bad"), robot.broken());

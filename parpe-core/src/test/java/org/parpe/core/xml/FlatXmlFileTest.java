@@ -122,4 +122,25 @@ class FlatXmlFileTest {
         assertEquals("9", f.rootAttributes().get("x:size"));
         assertEquals(Map.of("x:a", "7", "a", "1"), f.children().get(0).attributes());
     }
+
+    /**
+     * Issue 19, item 10 (read with StAX, not Jackson): text in an element with attributes is
+     * placed where it stands, as text in the root is, not where it ends (Jackson's place).
+     */
+    @Test
+    void textInAChildIsPlacedWhereItStands() throws Exception {
+        DiagnosticList d = new DiagnosticList();
+        read("<things>\n  <thing a=\"1\">  some text</thing>\n  <thing a=\"2\">x<inner/>y</thing>\n</things>\n", d);
+        assertEquals(List.of("2:18 <thing> may not contain text", "3:16 <thing> may not contain text",
+                "3:17 <thing> may not contain <inner>", "3:25 <thing> may not contain text"), lines(d));
+    }
+
+    /** The place of a parse error is the parser's own, not one column to its right (as through Jackson). */
+    @Test
+    void aParseErrorStandsAtTheCharacterTheParserStoppedAt() throws Exception {
+        DiagnosticList d = new DiagnosticList();
+        read("<things>\n  <thing a=1/>\n</things>\n", d);
+        assertEquals(1, d.all().size(), lines(d).toString());
+        assertTrue(lines(d).get(0).startsWith("2:12 not well-formed XML: Unexpected character '1'"), lines(d).toString());
+    }
 }

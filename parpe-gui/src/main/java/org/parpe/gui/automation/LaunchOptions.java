@@ -1,10 +1,15 @@
 package org.parpe.gui.automation;
 
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
 
 /**
- * What {@code parpe gui} was asked to do.
+ * What {@code parpe gui} was asked to do, parsed by picocli as the command line's commands are.
  *
  * @param file       the script to open, or {@code null}
  * @param runFor     seconds of simulated time to run the script for, or a negative number for no run
@@ -13,21 +18,52 @@ import java.util.List;
  * @param bench      whether to print start-up and drawing figures and exit
  * @param posePanel  whether to bring the Pose panel to the front with the poses the script plays
  * @param grid       the gait table to show in the grid editor (selected whole), or {@code null}
+ * @param help       whether {@code --help} was asked for (nothing else is done then)
  */
 public record LaunchOptions(Path file, double runFor, Path screenshot, boolean exit, boolean bench,
-                            boolean posePanel, String grid) {
+                            boolean posePanel, String grid, boolean help) {
 
     /** The usage text printed for {@code --help} and bad arguments. */
-    public static final String USAGE = String.join("\n",
-            "usage: parpe gui [FILE] [--run-for SECONDS] [--screenshot FILE.png] [--exit] [--bench] [--pose-panel]"
-                    + " [--grid NAME]",
-            "  FILE              PARSL script to open",
-            "  --run-for S       run the script in the simulator for S seconds of simulated time",
-            "  --screenshot F    save a PNG picture of the window (after the run, if any)",
-            "  --exit            close the IDE when done",
-            "  --pose-panel      show the Pose panel with the poses of the gait table the script plays (a recording)",
-            "  --grid NAME       show gait table NAME in the grid editor, all of it selected",
-            "  --bench           print window-up time, 3D frame rate (centipede), the live diagrams during a run and opening a 10 MB script as name=value lines, then exit");
+    public static final String USAGE = new CommandLine(new Arguments()).getUsageMessage().stripTrailing();
+
+    /** The options as picocli fills them in; {@link #parse} turns them into a record. */
+    @Command(name = "parpe gui", description = "Open the PARPE IDE, optionally on a script; the options automate it"
+            + " for documentation and tests.", sortOptions = false)
+    private static final class Arguments {
+        // all of them, so that a second one gets a message that says so; shown as the one it may be
+        @Parameters(arity = "0..*", paramLabel = "[FILE]", hideParamSyntax = true, description = "PARSL script to open")
+        List<Path> files = new ArrayList<>();
+
+        @Option(names = "--run-for", paramLabel = "S",
+                description = "run the script in the simulator for S seconds of simulated time")
+        String runFor;
+
+        @Option(names = "--screenshot", paramLabel = "F", description = "save a PNG picture of the window (after the run, if any)")
+        Path screenshot;
+
+        @Option(names = "--exit", description = "close the IDE when done")
+        boolean exit;
+
+        @Option(names = "--pose-panel",
+                description = "show the Pose panel with the poses of the gait table the script plays (a recording)")
+        boolean posePanel;
+
+        @Option(names = "--grid", paramLabel = "NAME", description = "show gait table NAME in the grid editor, all of it selected")
+        String grid;
+
+        @Option(names = "--bench", description = "print window-up time, 3D frame rate (centipede), the live diagrams during a run"
+                + " and opening a 10 MB script as name=value lines, then exit")
+        boolean bench;
+
+        @Option(names = {"-h", "--help"}, usageHelp = true, description = "show this help and exit")
+        boolean help;
+    }
+
+    /** Options without {@code --help}. */
+    public LaunchOptions(Path file, double runFor, Path screenshot, boolean exit, boolean bench, boolean posePanel,
+                         String grid) {
+        this(file, runFor, screenshot, exit, bench, posePanel, grid, false);
+    }
 
     /** Whether anything automatic is requested. */
     public boolean automated() {
@@ -40,41 +76,18 @@ public record LaunchOptions(Path file, double runFor, Path screenshot, boolean e
      * @throws IllegalArgumentException with a message for the user on a bad argument
      */
     public static LaunchOptions parse(List<String> args) {
-        Path file = null;
-        double runFor = -1;
-        Path shot = null;
-        boolean exit = false;
-        boolean bench = false;
-        boolean posePanel = false;
-        String grid = null;
-        for (int i = 0; i < args.size(); i++) {
-            String a = args.get(i);
-            switch (a) {
-                case "--run-for" -> runFor = seconds(value(args, i++, a));
-                case "--screenshot" -> shot = Path.of(value(args, i++, a));
-                case "--exit" -> exit = true;
-                case "--bench" -> bench = true;
-                case "--pose-panel" -> posePanel = true;
-                case "--grid" -> grid = value(args, i++, a);
-                default -> {
-                    if (a.startsWith("-")) {
-                        throw new IllegalArgumentException("unknown option '" + a + "'");
-                    }
-                    if (file != null) {
-                        throw new IllegalArgumentException("only one FILE may be given, got '" + file + "' and '" + a + "'");
-                    }
-                    file = Path.of(a);
-                }
-            }
+        Arguments a = new Arguments();
+        try {
+            new CommandLine(a).parseArgs(args.toArray(new String[0]));
+        } catch (CommandLine.ParameterException e) {
+            throw new IllegalArgumentException(e.getMessage(), e);
         }
-        return new LaunchOptions(file, runFor, shot, exit, bench, posePanel, grid);
-    }
-
-    private static String value(List<String> args, int i, String option) {
-        if (i + 1 >= args.size()) {
-            throw new IllegalArgumentException(option + " needs a value");
+        if (a.files.size() > 1) {
+            throw new IllegalArgumentException("only one FILE may be given, got '" + a.files.get(0) + "' and '"
+                    + a.files.get(1) + "'");
         }
-        return args.get(i + 1);
+        return new LaunchOptions(a.files.isEmpty() ? null : a.files.get(0), a.runFor == null ? -1 : seconds(a.runFor),
+                a.screenshot, a.exit, a.bench, a.posePanel, a.grid, a.help);
     }
 
     private static double seconds(String text) {

@@ -20,7 +20,7 @@ class GridOptionTest {
         assertNull(LaunchOptions.parse(List.of("a.xml")).grid());
         assertTrue(LaunchOptions.parse(List.of("--grid", "t")).automated(), "--grid alone is automated too");
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> LaunchOptions.parse(List.of("a.xml", "--grid")));
-        assertEquals("--grid needs a value", e.getMessage());
-        assertTrue(LaunchOptions.USAGE.contains("--grid NAME"));
+        assertEquals("Missing required parameter for option '--grid' (NAME)", e.getMessage());
+        assertTrue(LaunchOptions.USAGE.contains("--grid=NAME"), LaunchOptions.USAGE);
     }
 }

@@ -10,8 +10,8 @@ import org.parpe.core.diag.SourcePos;
 import org.parpe.core.xml.FlatXmlFile;
 
 /**
- * Reads a robot configuration file (format in {@code docs/simulator.md}) with Jackson's XML
- * streaming parser, keeping the place of every element for messages. Reports every problem
+ * Reads a robot configuration file (format in {@code docs/simulator.md}) through
+ * {@link FlatXmlFile}, keeping the place of every element for messages. Reports every problem
  * it finds; the result is checked further when the robot is assembled.
  */
 final class ConfigReader {

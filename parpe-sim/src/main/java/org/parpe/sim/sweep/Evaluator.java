@@ -24,18 +24,12 @@ import org.parpe.sim.Simulator;
 
 /**
  * Runs one script on fresh simulated robots with given parameter values and measures each run.
- * Every call loads the script with its values and builds its own simulator, so calls may run on
- * several threads at once and a run's result depends only on its values and seed.
+ * The script and its includes are read once, when the evaluator is loaded; every run binds them
+ * to its values (a value can change the robot's modules) and builds its own simulator, so runs
+ * may go on several threads at once and a run's result depends only on its values and seed.
  */
-public final class Evaluator {
-    private final Path script;
-    private final String text;
-    private final Map<String, Double> fixed;
-    private final String robot;
-    private final double duration;
-    private final double tick;
-    private final double fallTiltDeg;
-    private final Path worldFile;
+public final class Evaluator implements PointRunner {
+    private final RunSetup setup;
     private final World world;
     private final Program base;
     /** The robot of the last run, built once for all runs with the same modules. */
@@ -45,16 +39,9 @@ public final class Evaluator {
     private record Robot(int[] moduleIds, SimTarget.Blueprint blueprint) {
     }
 
-    private Evaluator(Settings s, World world, Program base, Robot robot) {
-        this.worldFile = s.world();
+    private Evaluator(RunSetup setup, World world, Program base, Robot robot) {
+        this.setup = setup;
         this.world = world;
-        this.script = s.script();
-        this.text = s.text();
-        this.fixed = Map.copyOf(s.fixed());
-        this.robot = s.robot();
-        this.duration = s.duration();
-        this.tick = s.tick();
-        this.fallTiltDeg = s.fallTiltDeg();
         this.base = base;
         this.robotBuilt = robot;
     }
@@ -88,24 +75,33 @@ public final class Evaluator {
     }
 
     /**
-     * Loads the script once with its defaults and the fixed values and checks the robot, so that
-     * problems shared by every run are reported once, before any run.
+     * Reads the script and its includes, loads it once with its defaults and the fixed values and
+     * checks the robot, so that problems shared by every run are reported once, before any run.
      */
     public static Evaluator load(Settings s) throws SweepException {
+        return of(new RunSetup(ScriptLoader.read(s.script(), s.text()), s.text(), s.fixed(), s.robot(), s.duration(),
+                s.tick(), s.fallTiltDeg(), s.world()));
+    }
+
+    /**
+     * An evaluator of the script {@code setup} has already read, checked as {@link #load} does;
+     * a {@link Lanes lane} makes its own copy with it.
+     */
+    public static Evaluator of(RunSetup s) throws SweepException {
         if (!(s.duration() > 0) || !Double.isFinite(s.duration())) {
             throw new SweepException("the duration must be > 0 seconds, got " + s.duration());
         }
         if (!(s.tick() > 0) || s.tick() > s.duration()) {
             throw new SweepException("the tick must be > 0 and at most the duration, got " + s.tick() + " s");
         }
-        LoadResult r = ScriptLoader.loadText(s.script(), s.text(), s.fixed());
+        LoadResult r = ScriptLoader.bind(s.script(), s.fixed());
         if (!r.ok()) {
             List<Diagnostic> problems = r.parameterErrors().isEmpty() ? r.errors() : r.parameterErrors();
-            throw new SweepException(problems.isEmpty() ? s.script() + ": the script does not load"
+            throw new SweepException(problems.isEmpty() ? s.script().file() + ": the script does not load"
                     : problems.get(0).format() + (problems.size() > 1 ? " (and " + (problems.size() - 1) + " more)" : ""));
         }
         if (r.program().main() == null) {
-            throw new SweepException(s.script() + ": the script has no <main>, so it would not move the robot");
+            throw new SweepException(s.script().file() + ": the script has no <main>, so it would not move the robot");
         }
         World world = null;
         if (s.world() != null) {
@@ -135,27 +131,24 @@ public final class Evaluator {
 
     /** The parameter values that stay the same in every run. */
     public Map<String, Double> fixed() {
-        return fixed;
+        return setup.fixed();
     }
 
     /** The script's file. */
     public Path script() {
-        return script;
+        return setup.script().file();
     }
 
     /** The script's text. */
     public String text() {
-        return text;
+        return setup.text();
     }
 
-    /**
-     * Runs {@code point} on a fresh robot until the duration, a run-time error, or
-     * {@code cancellation}; returns {@code null} when cancelled before the end.
-     */
+    @Override
     public SweepRow run(Point point, Cancellation cancellation) {
-        Map<String, Double> values = new LinkedHashMap<>(fixed);
+        Map<String, Double> values = new LinkedHashMap<>(setup.fixed());
         values.putAll(point.values());
-        LoadResult r = ScriptLoader.loadText(script, text, values);
+        LoadResult r = ScriptLoader.bind(setup.script(), values);
         if (!r.ok()) {
             List<Diagnostic> problems = r.parameterErrors().isEmpty() ? r.errors() : r.parameterErrors();
             return failed(point, problems.isEmpty() ? "the script does not load" : problems.get(0).format());
@@ -170,13 +163,13 @@ public final class Evaluator {
         }
         JointTravel travel = new JointTravel();
         SimMetrics[] measured = new SimMetrics[1];
-        Run run = Run.builder(program, new RunOptions(tick, point.seed(), List.of()), quiet)
+        Run run = Run.builder(program, new RunOptions(setup.tick(), point.seed(), List.of()), quiet)
                 .plant(sim)
                 .sensorSource(SourceKind.SIMULATOR, sim)
                 .observeReadings(travel)
                 .onFinish(o -> measured[0] = sim.metrics())
                 .closeAtEnd(sim)
-                .duration(duration)
+                .duration(setup.duration())
                 .pacer((self, t) -> {
                     if (cancellation.cancelled()) {
                         self.requestStop();
@@ -190,7 +183,7 @@ public final class Evaluator {
         SimMetrics m = measured[0];
         double time = m.duration();
         return new SweepRow(point, time, m.distance(), m.dx(), time > 0 ? m.dx() / time : 0, m.speed(),
-                m.maxTiltDeg(), travel.total(), m.maxTiltDeg() > fallTiltDeg,
+                m.maxTiltDeg(), travel.total(), m.maxTiltDeg() > setup.fallTiltDeg(),
                 outcome.status() == RunOutcome.Status.ERROR ? outcome.message() : "",
                 m.score() == null ? Double.NaN : m.score().score());
     }
@@ -204,7 +197,7 @@ public final class Evaluator {
         int[] ids = program.moduleIds();
         Robot built = robotBuilt;
         if (built == null || !java.util.Arrays.equals(built.moduleIds(), ids)) {
-            String spec = SimTarget.AUTO.equals(robot) ? SimTarget.autoSpec(program) : robot;
+            String spec = SimTarget.AUTO.equals(setup.robot()) ? SimTarget.autoSpec(program) : setup.robot();
             built = new Robot(ids, SimTarget.blueprint(spec, ids, world));
             robotBuilt = built;
         }
@@ -214,16 +207,21 @@ public final class Evaluator {
     /**
      * Runs of this evaluator's script for one worker thread, safe alongside other workers and
      * other simulations in this program: each worker simulates with its own copy of the physics
-     * library ({@link Lanes}). Close it to give the copy back.
+     * library ({@link Lanes}), which binds the script this evaluator read. Close it to give the
+     * copy back.
      */
     Worker worker() {
-        ClassLoader loader;
-        java.util.function.Function<Object[], Object[]> far;
+        ClassLoader loader = Lanes.acquire();
+        PointRunner lane;
         try {
-            loader = Lanes.acquire();
-            far = Lanes.evaluatorIn(loader);
-        } catch (IllegalStateException noPrivateCopy) {
+            lane = Lanes.runnerIn(loader, setup);
+        } catch (RuntimeException | Error e) {
+            Lanes.release(loader);
+            throw e;
+        }
+        if (lane == null) {
             // No class path to copy the simulator from (a custom runtime image): one run at a time.
+            Lanes.release(loader);
             return new Worker() {
                 @Override
                 public SweepRow run(Point point, Cancellation cancellation) {
@@ -237,18 +235,10 @@ public final class Evaluator {
                 }
             };
         }
-        Object[] loaded = far.apply(new Object[] {"load", script.toString(), text, new java.util.HashMap<>(fixed),
-            robot, duration, tick, fallTiltDeg, worldFile == null ? null : worldFile.toString()});
-        if (loaded != null) {
-            Lanes.release(loader);
-            throw new IllegalStateException("the worker's copy of the script does not load: " + loaded[0]);
-        }
         return new Worker() {
             @Override
             public SweepRow run(Point point, Cancellation cancellation) {
-                Object[] answer = far.apply(new Object[] {"run", new java.util.LinkedHashMap<>(point.values()),
-                    point.seed(), (java.util.function.BooleanSupplier) cancellation::cancelled});
-                return answer == null ? null : IsolatedEvaluator.row(point, answer);
+                return lane.run(point, cancellation);
             }
 
             @Override
@@ -259,10 +249,7 @@ public final class Evaluator {
     }
 
     /** Runs for one thread; see {@link #worker()}. */
-    interface Worker extends AutoCloseable {
-        /** As {@link Evaluator#run}. */
-        SweepRow run(Point point, Cancellation cancellation);
-
+    interface Worker extends PointRunner, AutoCloseable {
         @Override
         void close();
     }

@@ -1,30 +1,35 @@
 package org.parpe.sim.sweep;
 
 import java.io.File;
+import java.lang.reflect.InvocationTargetException;
+import java.lang.reflect.Method;
 import java.net.MalformedURLException;
 import java.net.URL;
 import java.net.URLClassLoader;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ConcurrentLinkedQueue;
-import java.util.function.Function;
+import java.util.Set;
 
 /**
  * Private copies of the simulator's classes, one per worker thread. ODE4j keeps the random
- * generator with which its solver shuffles constraints in one static field, and the simulator
- * reseeds it before every step to stay reproducible; two simulations on two threads of one
- * class loader would draw from each other's sequence, and their results would depend on timing.
- * A class loader of its own gives each worker its own ODE4j and so its own generator. Only ODE4j
- * and the simulator (which links to it) are private; the script loader, scheduler and XML and
- * expression libraries come from the application's loader, so there is one copy of them for
- * every worker, which the JIT compiles once and which every worker's runs warm up together
- * (each run loads its script afresh, code that runs once per run and would otherwise reach its
- * compiled form slowly, once per worker, while the compiler threads take CPU time from the
- * simulations). Loaders are kept for the next sweep (their classes stay compiled) and lent to
- * one thread at a time.
+ * generator with which its QuickStep solver shuffles constraints in one static field
+ * ({@code org.ode4j.ode.internal.Misc.seed}), and the simulator reseeds it before every step to
+ * stay reproducible; two simulations on two threads of one class loader would draw from each
+ * other's sequence, and their results would depend on timing. A class loader of its own gives
+ * each worker its own ODE4j and so its own generator. Only ODE4j and the simulator (which links
+ * to it) are private; the script loader, the read script, the scheduler and the XML and
+ * expression libraries come from the application's loader, one copy for every worker, which the
+ * JIT compiles once. The worker speaks to its copy through a typed bridge: {@link PointRunner},
+ * {@link RunSetup}, {@link Point}, {@link SweepRow} and {@link Cancellation} are the
+ * application's classes on both sides ({@link #SHARED}). Loaders are kept for the next sweep
+ * (their classes stay compiled) and lent to one thread at a time.
  */
 final class Lanes {
     private static final ConcurrentLinkedQueue<ClassLoader> FREE = new ConcurrentLinkedQueue<>();
+    /** The classes of the bridge: the application's own on both sides of a lane. */
+    static final Set<String> SHARED = Set.of(PointRunner.class.getName(), RunSetup.class.getName(),
+            Point.class.getName(), SweepRow.class.getName(), Cancellation.class.getName());
 
     private Lanes() {
     }
@@ -40,16 +45,24 @@ final class Lanes {
         FREE.offer(loader);
     }
 
-    /** A new evaluator object in {@code loader}. */
-    @SuppressWarnings("unchecked")
-    static Function<Object[], Object[]> evaluatorIn(ClassLoader loader) {
+    /**
+     * The lane's own {@link Evaluator} of {@code setup}, or {@code null} when {@code loader} has
+     * no copy of the simulator (no class path to copy it from: a custom runtime image).
+     */
+    static PointRunner runnerIn(ClassLoader loader, RunSetup setup) {
+        Method of;
         try {
-            Class<?> c = Class.forName(IsolatedEvaluator.class.getName(), true, loader);
-            var ctor = c.getDeclaredConstructor();
-            ctor.setAccessible(true);
-            return (Function<Object[], Object[]>) ctor.newInstance();
-        } catch (ReflectiveOperationException e) {
-            throw new IllegalStateException("cannot load the simulator in a worker's class loader: " + e, e);
+            of = Class.forName(Evaluator.class.getName(), true, loader).getMethod("of", RunSetup.class);
+        } catch (ClassNotFoundException | NoSuchMethodException e) {
+            return null;
+        }
+        try {
+            return (PointRunner) of.invoke(null, setup);
+        } catch (InvocationTargetException e) {
+            throw new IllegalStateException("the worker's copy of the script does not load: "
+                    + e.getCause().getMessage(), e.getCause());
+        } catch (IllegalAccessException e) {
+            throw new IllegalStateException("cannot make the simulator in a worker's class loader: " + e, e);
         }
     }
 
@@ -69,7 +82,7 @@ final class Lanes {
 
     /** Whether class {@code name} has a copy of its own in each lane. */
     static boolean privateToLane(String name) {
-        return name.startsWith("org.ode4j.") || name.startsWith("org.parpe.sim.");
+        return (name.startsWith("org.ode4j.") || name.startsWith("org.parpe.sim.")) && !SHARED.contains(name);
     }
 
     /** Loads the physics library and the simulator itself, everything else from its parent. */
