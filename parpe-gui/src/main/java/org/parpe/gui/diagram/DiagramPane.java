@@ -74,11 +74,11 @@ public final class DiagramPane {
         GridLayout gl = new GridLayout(1, false);
         gl.marginWidth = 2;
         gl.marginHeight = 2;
+        gl.verticalSpacing = 2;
         box.setLayout(gl);
+        // few rows above the drawing (issue 24): at 1366×768 the drawing keeps at least half the tab
         Composite bar = new Composite(box, SWT.NONE);
-        RowLayout rl = new RowLayout(SWT.HORIZONTAL);
-        rl.center = true;
-        bar.setLayout(rl);
+        bar.setLayout(row());
         bar.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         new Label(bar, SWT.NONE).setText("View:");
         viewChoice = new Combo(bar, SWT.READ_ONLY);
@@ -86,23 +86,23 @@ public final class DiagramPane {
             viewChoice.add(v.label);
         }
         viewChoice.select(0);
+        viewChoice.setToolTipText("Which view of the script the diagram draws");
         viewChoice.addListener(SWT.Selection, e -> setView(View.values()[viewChoice.getSelectionIndex()]));
         subjectChoice = new Combo(bar, SWT.READ_ONLY);
-        subjectChoice.setLayoutData(new RowData(260, SWT.DEFAULT));
+        subjectChoice.setLayoutData(new RowData(170, SWT.DEFAULT));
+        subjectChoice.setToolTipText("The behavior, automaton or instance the view draws");
         subjectChoice.addListener(SWT.Selection, e -> {
             subject = subjectChoice.getText();
             relayout();
         });
-        palette = new Palette(box, this);
+        palette = new Palette(bar, this);
         fields = new Composite(box, SWT.NONE);
-        RowLayout fl = new RowLayout(SWT.HORIZONTAL);
-        fl.center = true;
-        fields.setLayout(fl);
+        fields.setLayout(row());
         GridData fd = new GridData(SWT.FILL, SWT.CENTER, true, false);
-        // as tall with fields as without, so that the drawing does not move when a node is selected
+        // as tall with fields as without, so that the drawing does not move when a node is selected;
+        // two rows: a palette item or a state has more fields than one row of a narrow tab holds
         Text probe = new Text(fields, SWT.BORDER | SWT.SINGLE);
-        // two rows: a palette item or a state has more fields than one row holds
-        fd.heightHint = 2 * probe.computeSize(SWT.DEFAULT, SWT.DEFAULT).y + 12;
+        fd.heightHint = 2 * probe.computeSize(SWT.DEFAULT, SWT.DEFAULT).y + 4;
         probe.dispose();
         fields.setLayoutData(fd);
         message = new Label(box, SWT.WRAP);
@@ -138,6 +138,33 @@ public final class DiagramPane {
             generation.incrementAndGet();
             worker.shutdownNow();
         });
+    }
+
+    /** A row of controls that wraps only when the tab is too narrow, with little margin. */
+    static RowLayout row() {
+        RowLayout rl = new RowLayout(SWT.HORIZONTAL);
+        rl.center = true;
+        rl.marginTop = 0;
+        rl.marginBottom = 0;
+        rl.marginLeft = 0;
+        rl.marginRight = 0;
+        rl.spacing = 3;
+        return rl;
+    }
+
+    private static final String HINT = "Click a box, an arc or a bar to select its text and edit its values.";
+
+    /** Sets the message line; it takes a row only when it has something to say. */
+    private void say(String text) {
+        message.setText(text);
+        show(message, !text.isEmpty());
+        box.layout(true, true);
+    }
+
+    /** Shows {@code c} in its row of the pane, or takes the row away. */
+    private static void show(Control c, boolean shown) {
+        c.setVisible(shown);
+        ((GridData) c.getLayoutData()).exclude = !shown;
     }
 
     /** The pane's control (the host puts it in a tab). */
@@ -213,8 +240,7 @@ public final class DiagramPane {
         liveProgress = null;
         liveBar.shown();
         canvas.select(selected);
-        message.setText(p.message().isEmpty() && !p.targets().isEmpty()
-                ? "Click a box, an arc or a bar to select its text and edit its values." : p.message());
+        message.setText(p.message().isEmpty() && !p.targets().isEmpty() ? HINT : p.message());
         showFields();
         box.layout(true, true);
     }
@@ -402,7 +428,7 @@ public final class DiagramPane {
         return org.parpe.gui.editor.Validator.load(file.get(), editor.document().get(), java.util.Map.of()).program();
     }
 
-    /** Opens the trace {@code csv} for scrubbing through the views (as Open trace… does). */
+    /** Opens the trace {@code csv} for scrubbing through the views (as Trace… does). */
     public void scrub(Path csv) {
         liveBar.scrub(csv);
     }
@@ -553,7 +579,8 @@ public final class DiagramPane {
         }
         liveProgress = new double[f.instance().length];
         marks.addAll(RingProgress.marks(ring, shown.scene(), f, automata, liveProgress));
-        marks.add(new org.parpe.core.diagram.Scene.Text(shown.scene().width() - 12, 28, liveWhat + ": tick " + f.tick()
+        // under the ring's title (at 28), not beside it: the two meet when the labels are kept large on a short canvas
+        marks.add(new org.parpe.core.diagram.Scene.Text(shown.scene().width() - 12, 50, liveWhat + ": tick " + f.tick()
                 + " (dark band: modules in the state; dots: each module's progress)", 11, 1, 0x222222, false));
         liveMarks = marks;
         repaintOverlay();
@@ -588,7 +615,7 @@ public final class DiagramPane {
             return;
         }
         if (!current()) {
-            message.setText("The text has changed since the diagram was drawn; try again in a moment.");
+            say("The text has changed since the diagram was drawn; try again in a moment.");
             return;
         }
         apply(from.moveTo().apply(onto.index()));
@@ -631,7 +658,7 @@ public final class DiagramPane {
     private void dropPhase(int x, int y) {
         Projection.Target t = shown.targets().get(shown.wheel().pos());
         if (t == null) {
-            message.setText("This instance is not in the open file; edit its phase there.");
+            say("This instance is not in the open file; edit its phase there.");
             return;
         }
         String value = phaseAt(x, y);
@@ -658,9 +685,11 @@ public final class DiagramPane {
                 : shown == null ? null : shown.targets().get(selected != null ? selected : shown.home());
         EditRow.fill(fields, t, shown == null ? null : org.parpe.gui.editor.NameIndex.of(shown.text()), this::write, this::act,
                 pose);
+        // a view with nothing to select or edit (the gait diagram) has no edit row
+        show(fields, t != null || shown != null && !shown.targets().isEmpty());
         fields.layout(true);
         liveBar.update();
-        box.layout(true, true);
+        say(message.getText());
     }
 
     /** Shows {@code t} (a palette item's inputs) in the edit row until a node is clicked. */
@@ -699,7 +728,7 @@ public final class DiagramPane {
         Projection.Target t = shown == null ? null : shown.targets().get(canvas.hit(p[0], p[1]));
         Projection.Field f = t == null ? null : t.fields().stream().filter(g -> g.name().equals("angles")).findFirst().orElse(null);
         if (f == null) {
-            message.setText("Drop a pose on a state of the ring (Ring view) whose definition is in this file.");
+            say("Drop a pose on a state of the ring (Ring view) whose definition is in this file.");
             return;
         }
         act(new Projection.Action("Use pose", List.of(), v -> f.edit().apply(EditRow.usable(angles))), List.of());
@@ -729,7 +758,7 @@ public final class DiagramPane {
     /** Button {@code a} was pressed with its inputs' {@code values}: write its edit (one Undo step). */
     private void act(Projection.Action a, List<String> values) {
         if (!current()) {
-            message.setText("The text has changed since the diagram was drawn; try again in a moment.");
+            say("The text has changed since the diagram was drawn; try again in a moment.");
             return;
         }
         try {
@@ -738,8 +767,7 @@ public final class DiagramPane {
                 tables.test(values.get(0));
             }
         } catch (IllegalArgumentException e) {
-            message.setText(e.getMessage());
-            box.layout(true, true);
+            say(e.getMessage());
         }
     }
 
@@ -750,7 +778,7 @@ public final class DiagramPane {
      */
     private void write(Projection.Field f, String value) {
         if (!current()) {
-            message.setText("The text has changed since the diagram was drawn; try again in a moment.");
+            say("The text has changed since the diagram was drawn; try again in a moment.");
             return;
         }
         if (value.equals(f.value())) {
@@ -760,8 +788,7 @@ public final class DiagramPane {
         try {
             edit = f.edit().apply(value.trim());
         } catch (IllegalArgumentException e) {
-            message.setText(e.getMessage());
-            box.layout(true, true);
+            say(e.getMessage());
             return;
         }
         apply(edit);
@@ -781,7 +808,7 @@ public final class DiagramPane {
         try {
             editor.document().replace(from, to - from, middle);
         } catch (BadLocationException e) {
-            message.setText("The text changed meanwhile; try again (" + e.getMessage() + ").");
+            say("The text changed meanwhile; try again (" + e.getMessage() + ").");
         }
     }
 }

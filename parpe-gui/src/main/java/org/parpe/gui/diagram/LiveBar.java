@@ -5,8 +5,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.GridData;
-import org.eclipse.swt.layout.RowData;
-import org.eclipse.swt.layout.RowLayout;
+import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.FileDialog;
@@ -43,23 +42,28 @@ final class LiveBar {
     LiveBar(Composite parent, DiagramPane pane) {
         this.pane = pane;
         row = new Composite(parent, SWT.NONE);
-        RowLayout rl = new RowLayout(SWT.HORIZONTAL);
-        rl.center = true;
-        row.setLayout(rl);
+        // one row: the buttons, the slider while a trace is open, and the line beside them (issue 24)
+        GridLayout gl = new GridLayout(6, false);
+        gl.marginWidth = 0;
+        gl.marginHeight = 0;
+        gl.horizontalSpacing = 3;
+        row.setLayout(gl);
         row.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
-        onEnter = button("Break on entering", "Pause a run when a module enters the selected state (click its arc first)");
+        onEnter = button("Break on entry", "Pause a run when a module enters the selected state (click its arc first)");
         onEnter.addListener(SWT.Selection, e -> toggle(Breakpoints.Kind.ENTER));
-        onExit = button("Break on its exit", "Pause a run when the selected state's exit condition becomes true");
+        onExit = button("Break on exit", "Pause a run when the selected state's exit condition becomes true");
         onExit.addListener(SWT.Selection, e -> toggle(Breakpoints.Kind.EXIT));
         resume = button("Continue", "Go on from the breakpoint (as Resume)");
         resume.addListener(SWT.Selection, e -> goOn.run());
-        openTrace = button("Open trace…", "Scrub through a trace recorded with parpe run --trace FILE.csv");
+        openTrace = button("Trace…", "Open a trace recorded with parpe run --trace FILE.csv and scrub through it");
         openTrace.addListener(SWT.Selection, e -> chooseTrace());
         slider = new Scale(row, SWT.HORIZONTAL);
-        slider.setLayoutData(new RowData(260, SWT.DEFAULT));
+        GridData sd = new GridData(SWT.LEFT, SWT.CENTER, false, false);
+        sd.widthHint = 200;
+        slider.setLayoutData(sd);
         slider.addListener(SWT.Selection, e -> scrubTo(slider.getSelection()));
-        says = new Label(row, SWT.NONE);
-        says.setLayoutData(new RowData(520, SWT.DEFAULT));
+        says = new Label(row, SWT.WRAP);
+        says.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         update();
         row.getDisplay().timerExec(100, new Runnable() {
             @Override
@@ -130,27 +134,34 @@ final class LiveBar {
         onExit.setEnabled(breakpoints != null && a != null && a.exit() != null);
         onEnter.setText(a != null && breakpoints != null
                 && breakpoints.has(new Breakpoints.Point(automaton, a.index(), Breakpoints.Kind.ENTER))
-                ? "Clear break on entering" : "Break on entering");
+                ? "Clear entry break" : "Break on entry");
         onExit.setText(a != null && a.exit() != null && breakpoints != null
                 && breakpoints.has(new Breakpoints.Point(automaton, a.index(), Breakpoints.Kind.EXIT))
-                ? "Clear break on its exit" : "Break on its exit");
+                ? "Clear exit break" : "Break on exit");
         resume.setEnabled(shownHit != null);
         slider.setVisible(trace != null);
-        ((RowData) slider.getLayoutData()).exclude = trace == null;
+        ((GridData) slider.getLayoutData()).exclude = trace == null;
         if (shownHit != null) {
-            says.setText("Paused: " + shownHit.describe() + ". Continue goes on.");
+            tell("Paused: " + shownHit.describe() + ". Continue goes on.");
         } else if (trace != null) {
             int k = slider.getSelection();
-            says.setText(trace.file().getFileName() + ": t = " + org.parpe.core.lang.Numbers.format(trace.time(k)) + " s (tick " + k
+            tell(trace.file().getFileName() + ": t = " + org.parpe.core.lang.Numbers.format(trace.time(k)) + " s (tick " + k
                     + " of " + (trace.ticks() - 1) + ")" + (Double.isNaN(trace.differsFrom()) ? ""
                     : "; from t = " + org.parpe.core.lang.Numbers.format(trace.differsFrom())
                     + " s its angles differ from this script's: the states are the script's"));
         } else {
-            says.setText(a != null ? "" : "Select a state on the ring to break on it.");
+            tell(a != null ? "" : "Select a state on the ring to break on it.");
         }
         onEnter.pack();
         onExit.pack();
-        row.layout(true, true);
+        row.getParent().layout(true, true);
+    }
+
+    /** Sets the line beside the buttons (it wraps there when it is long). */
+    private void tell(String line) {
+        says.setText(line);
+        says.setToolTipText(line.isEmpty() ? null : line);
+        row.getParent().layout(true, true);
     }
 
     /** A new drawing is shown: the buttons for its selection, and the trace's frame on it. */
@@ -191,16 +202,16 @@ final class LiveBar {
     void scrub(Path csv) {
         Program p = pane.program();
         if (p == null) {
-            says.setText("The script does not load; a trace is scrubbed through its script.");
+            tell("The script does not load; a trace is scrubbed through its script.");
             return;
         }
         try {
             trace = TraceScrubber.load(p, csv);
         } catch (java.io.IOException e) {
-            says.setText("Cannot read " + csv + ": " + e.getMessage());
+            tell("Cannot read " + csv + ": " + e.getMessage());
             return;
         } catch (IllegalArgumentException e) {
-            says.setText(e.getMessage());
+            tell(e.getMessage());
             return;
         }
         slider.setMinimum(0);
@@ -225,7 +236,7 @@ final class LiveBar {
 
     private void stopScrubbing() {
         trace = null;
-        openTrace.setText("Open trace…");
+        openTrace.setText("Trace…");
         update();
         pane.showFrame(null, null);
     }

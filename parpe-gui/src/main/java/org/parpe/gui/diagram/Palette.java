@@ -6,8 +6,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.function.Function;
 import org.eclipse.swt.SWT;
-import org.eclipse.swt.layout.GridData;
-import org.eclipse.swt.layout.RowLayout;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
@@ -64,18 +62,16 @@ final class Palette {
     /** The palette's row in {@code parent}, offering its items' inputs in {@code pane}'s edit row. */
     Palette(Composite parent, DiagramPane pane) {
         this.pane = pane;
+        // in the row of the view chooser (issue 24: few rows above the drawing)
         Composite row = new Composite(parent, SWT.NONE);
-        RowLayout rl = new RowLayout(SWT.HORIZONTAL);
-        rl.center = true;
-        row.setLayout(rl);
-        row.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        row.setLayout(DiagramPane.row());
         new Label(row, SWT.NONE).setText("New:");
         buttons = new Composite(row, SWT.NONE);
-        buttons.setLayout(new RowLayout(SWT.HORIZONTAL));
+        buttons.setLayout(DiagramPane.row());
         mode = new Combo(row, SWT.READ_ONLY);
-        mode.setItems("Beginner palette", "Full palette");
+        mode.setItems("Beginner", "Full");
         mode.select(0);
-        mode.setToolTipText("The beginner palette has poses, gait tables and one behavior; the full one everything");
+        mode.setToolTipText("Palette: the beginner one has poses, gait tables and one behavior; the full one everything");
         mode.addListener(SWT.Selection, e -> fill());
         fill();
     }

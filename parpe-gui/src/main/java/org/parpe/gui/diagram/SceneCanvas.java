@@ -18,14 +18,24 @@ import org.parpe.core.diagram.Scene;
 
 /**
  * Draws a {@link Scene} with SWT, as the SVG and PNG back ends draw it for files, scaled down to
- * fit the canvas (never up) and centred; the shapes that stand for a place in the script are
+ * fit the canvas (never up) and centred, its empty bottom left out and no text smaller than
+ * {@link #MIN_TEXT_PX} on screen (so that a short canvas still has readable labels); the shapes that stand for a place in the script are
  * what a click hits, and the selected place is outlined. UI thread only.
  */
 final class SceneCanvas {
     /** The outline of the selected node. */
     static final int SELECTION = 0x1f6fd0;
 
+    /** The smallest text on screen, in pixels: a scene scaled far down keeps its labels this large. */
+    static final double MIN_TEXT_PX = 9;
+    /** Scene units below the lowest shape kept in view: room for the marks of the live overlay (breakpoints: 25). */
+    private static final double BELOW = 30;
+
     private final Canvas canvas;
+    /** How tall the part of the scene with shapes in it is (from its top), in scene units. */
+    private double used = 1;
+    /** The size of text that is {@link #MIN_TEXT_PX} on screen at the scale drawn, in scene units. */
+    private double textFloor;
     private final Map<Integer, Color> colors = new HashMap<>();
     private final Map<Long, Font> fonts = new HashMap<>();
     private Scene scene = new Scene(1, 1);
@@ -63,6 +73,7 @@ final class SceneCanvas {
     /** Shows {@code s}. */
     void show(Scene s) {
         scene = s;
+        used = used(s);
         overlay = List.of();
         dropCache();
         canvas.redraw();
@@ -71,9 +82,21 @@ final class SceneCanvas {
     /** Scene units to canvas pixels: {@code {scale, dx, dy}}, the scene fitted in and centred. */
     private double[] fit() {
         org.eclipse.swt.graphics.Rectangle a = canvas.getClientArea();
-        double k = Math.min(1, Math.min(a.width / (double) scene.width(), a.height / (double) scene.height()));
+        double k = Math.min(1, Math.min(a.width / (double) scene.width(), a.height / used));
         k = k > 0 ? k : 1;
         return new double[] {k, Math.max(0, (a.width - scene.width() * k) / 2), 0};
+    }
+
+    /** The height of {@code s} down to its lowest shape and {@link #BELOW} more, at most its own height. */
+    private static double used(Scene s) {
+        double bottom = 0;
+        for (Scene.Shape shape : s.shapes()) {
+            bottom = Math.max(bottom, shape instanceof Scene.Rect r ? r.y() + r.h()
+                    : shape instanceof Scene.Line l ? Math.max(l.y1(), l.y2())
+                    : shape instanceof Scene.Sector c ? c.cy() + c.r1()
+                    : ((Scene.Text) shape).y() + ((Scene.Text) shape).size() / 2);
+        }
+        return Math.max(1, Math.min(s.height(), bottom + BELOW));
     }
 
     /** The scene point under canvas pixel {@code x, y}. */
@@ -201,6 +224,7 @@ final class SceneCanvas {
                 (float) f[0], 0, 0, (float) f[0], (float) f[1], (float) f[2]);
         try {
             gc.setTransform(t);
+            textFloor = MIN_TEXT_PX / f[0];
             draw.accept(gc);
         } finally {
             gc.setTransform(null);
@@ -287,7 +311,7 @@ final class SceneCanvas {
     }
 
     private void text(GC gc, Scene.Text t) {
-        gc.setFont(font(t.size(), t.bold()));
+        gc.setFont(font(Math.max(t.size(), textFloor), t.bold()));
         gc.setForeground(color(t.color()));
         Point size = gc.textExtent(t.text(), SWT.DRAW_TRANSPARENT);
         double x = t.anchor() < 0 ? t.x() : t.anchor() == 0 ? t.x() - size.x / 2.0 : t.x() - size.x;

@@ -166,6 +166,21 @@ class DiagramGuiTest {
         undoRestoresTheOriginal();
     }
 
+    /**
+     * Issue 24: at 1366×768 the rows of controls above the drawing (view, palette, the selected
+     * state's fields, breakpoints, lines) left the ring a strip of about 180 of the tab's 450
+     * pixels, its labels unreadable; the drawing must get at least half of the tab.
+     */
+    @Test
+    void theDrawingGetsHalfTheTabWithAStateSelected() {
+        show(View.RING, "step");
+        click(pane().shown().ring().arcs().get(1).pos());
+        IdeAccess.settle();
+        assertEquals(lineOf("<lower  angles"), pane().selected().line(), "a state is selected");
+        assertNotNull(pane().fields().get("duration"), "its fields are shown");
+        DiagramWindow.canvasHasHalfTheTab(ide);
+    }
+
     @Test
     void changingAPhaseAndAnOffsetAreOneUndoableEditEach() {
         show(View.PHASE, "walk #2: step on leftLift");

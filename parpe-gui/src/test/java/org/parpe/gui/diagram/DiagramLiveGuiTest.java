@@ -204,8 +204,8 @@ class DiagramLiveGuiTest {
         click.y = at.y;
         pane().canvas().notifyListeners(SWT.MouseDown, click);
         assertEquals(lower.pos(), pane().selected());
-        assertTrue(!button("Break on its exit").isEnabled(), "lower has no exit condition");
-        press(button("Break on entering"));
+        assertTrue(!button("Break on exit").isEnabled(), "lower has no exit condition");
+        press(button("Break on entry"));
         RunController c = IdeAccess.controller(ide);
         assertEquals(java.util.Set.of(new Breakpoints.Point("step", 1, Breakpoints.Kind.ENTER)), c.breakpoints().points());
         List<Long> expected = entries(1, 3);
@@ -231,6 +231,7 @@ class DiagramLiveGuiTest {
                 if (hit == 1) {
                     // the first stop is at tick 0 (a lift starts in lower); the pictures show the second
                     picture("diagram-breakpoint.png");
+                    DiagramWindow.canvasHasHalfTheTab(ide);
                     // the same stop on the gait diagram: its "now" column at that tick
                     show(View.GAIT, null);
                     IdeAccess.pump(() -> pane().liveLabels() != null && pane().liveTick() == tick, "the gait overlay at the stop");
@@ -254,7 +255,7 @@ class DiagramLiveGuiTest {
         click.x = again.x;
         click.y = again.y;
         pane().canvas().notifyListeners(SWT.MouseDown, click);
-        press(button("Clear break on entering"));
+        press(button("Clear entry break"));
         assertEquals(java.util.Set.of(), c.breakpoints().points(), "the button clears the breakpoint");
     }
 
@@ -319,17 +320,17 @@ class DiagramLiveGuiTest {
             click.x = at.x;
             click.y = at.y;
             pane().canvas().notifyListeners(SWT.MouseDown, click);
-            press(button("Break on its exit"));
+            press(button("Break on exit"));
             RunController c = IdeAccess.controller(ide);
             assertEquals(java.util.Set.of(new Breakpoints.Point("inch", 2, Breakpoints.Kind.EXIT)), c.breakpoints().points());
-            press(button("Clear break on its exit"));
+            press(button("Clear exit break"));
             assertEquals(java.util.Set.of(), c.breakpoints().points());
             // a state without an exit condition has no such breakpoint
             Point reach = pane().where(pane().shown().ring().arcs().get(1).pos());
             click.x = reach.x;
             click.y = reach.y;
             pane().canvas().notifyListeners(SWT.MouseDown, click);
-            assertTrue(!button("Break on its exit").isEnabled(), "reach has no exit condition");
+            assertTrue(!button("Break on exit").isEnabled(), "reach has no exit condition");
         } finally {
             IdeAccess.open(ide, centipede);
             IdeAccess.pump(() -> pane().current() && ide.program() != null

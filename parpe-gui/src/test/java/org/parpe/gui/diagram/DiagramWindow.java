@@ -50,6 +50,16 @@ final class DiagramWindow {
                 && (subject == null || subject.equals(pane.shown().subject())), v + " view of the text");
     }
 
+    /** Asserts that the drawing is at least half as tall as the Diagram tab (issue 24: the controls stay compact). */
+    static void canvasHasHalfTheTab(IdeWindow ide) {
+        IdeAccess.settle();
+        DiagramPane pane = ide.diagram();
+        int tab = pane.control().getSize().y;
+        int drawing = pane.canvas().getSize().y;
+        assertTrue(tab > 300, "the Diagram tab at 1366×768 is " + tab + " px tall");
+        assertTrue(2 * drawing >= tab, "the drawing is " + drawing + " px of the tab's " + tab + " px");
+    }
+
     /** Saves the window to {@code docs/images/ide/NAME} (folder: system property {@code parpe.ideImages}). */
     static void picture(IdeWindow ide, String name) throws Exception {
         // no blinking caret in the editor: the same picture on every run
