@@ -79,9 +79,9 @@ final class ConsoleCommands {
 
     private static int touchBits(String side) {
         switch (side) {
-            case "left": return Protocol.TOUCH_LEFT;
-            case "right": return Protocol.TOUCH_RIGHT;
-            case "both": return Protocol.TOUCH_LEFT | Protocol.TOUCH_RIGHT;
+            case "left": return Protocol.Touch.LEFT.bit();
+            case "right": return Protocol.Touch.RIGHT.bit();
+            case "both": return Protocol.Touch.LEFT.bit() | Protocol.Touch.RIGHT.bit();
             case "none": return 0;
             default: throw new IllegalArgumentException("touch side must be left, right, both or none, got '" + side + "'");
         }

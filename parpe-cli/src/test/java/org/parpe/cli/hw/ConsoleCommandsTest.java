@@ -10,7 +10,7 @@ import org.parpe.serial.emu.BusEmulator;
 import org.parpe.serial.emu.EmulatorListener;
 import org.parpe.serial.emu.EmulatorOptions;
 import org.parpe.serial.link.PipeLink;
-import org.parpe.serial.protocol.Protocol;
+import org.parpe.serial.protocol.Command;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.emu.ServoEmulator;
 
@@ -28,7 +28,7 @@ class ConsoleCommandsTest {
             ConsoleCommands.Console c = ConsoleCommands.of(emu);
             assertEquals("module 1 is driven by its servo; it can be posed only while limp", say(c, "pose 1 30"));
             try (BusMaster host = new BusMaster(pipe[0], BusConfig.defaults())) {
-                host.send(1, Protocol.LIMP);
+                host.send(1, Command.LIMP);
                 long deadline = System.nanoTime() + 5_000_000_000L;
                 while (!emu.isLimp(1)) {
                     assertTrue(System.nanoTime() < deadline, "module 1 did not go limp");

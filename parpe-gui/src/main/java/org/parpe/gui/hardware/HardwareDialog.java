@@ -461,42 +461,27 @@ public final class HardwareDialog {
         return session;
     }
 
-    // For tests: the widgets as a user sees them.
-
+    /** The dialog's window (the Pose panel checks it is still open). */
     public Shell shell() {
         return shell;
     }
 
-    public HardwareSession sessionForTest() {
-        return session;
+    /**
+     * The widgets as a user sees them (tests read and drive them on the UI thread).
+     *
+     * @param table    the servos found
+     * @param jogBox   the jog box of the selected servo
+     * @param jogValue the line under the jog box (its limits, or why it is off)
+     * @param message  the status line
+     * @param port     the serial port box
+     * @param protocol the bus protocol box
+     * @param baud     the baud rate box
+     */
+    public record Widgets(Table table, Spinner jogBox, Label jogValue, Label message, Combo port, Combo protocol,
+                          Combo baud) {
     }
 
-    public Table table() {
-        return table;
-    }
-
-    public String jogValueText() {
-        return jogValue.getText();
-    }
-
-    /** The jog box (tests). */
-    public Spinner jogBox() {
-        return jogBox;
-    }
-
-    public String message() {
-        return message.getText();
-    }
-
-    public Combo portBox() {
-        return port;
-    }
-
-    public Combo protocolBox() {
-        return protocol;
-    }
-
-    public Combo baudBox() {
-        return baud;
+    public Widgets widgets() {
+        return new Widgets(table, jogBox, jogValue, message, port, protocol, baud);
     }
 }

@@ -113,7 +113,7 @@ class DiskChangeGuiTest {
             for (Path over : List.of(script, link)) {
                 d.saveProfile(over);
                 Gui.settle();
-                assertTrue(d.message().contains("it is the script open in the editor"), d.message());
+                assertTrue(d.widgets().message().getText().contains("it is the script open in the editor"), d.widgets().message().getText());
             }
         } finally {
             d.shell().dispose();

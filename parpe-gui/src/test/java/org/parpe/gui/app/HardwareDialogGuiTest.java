@@ -108,14 +108,14 @@ class HardwareDialogGuiTest {
             Gui.settle();
             HardwareDialog d = HardwareDialog.open(ide);
             assertTrue(d == HardwareDialog.open(ide), "a second Run > Hardware… brings the same dialog");
-            d.portBox().setText(pty.a().toString());
+            d.widgets().port().setText(pty.a().toString());
             // Scan tries every protocol and rate; a pty ignores the rate, so Dynamixel's factory 57 600 answers.
             click(d, "Scan");
-            Gui.pump(() -> d.table().getItemCount() == 3, "the scan to find three servos");
-            assertTrue(d.message().contains("dxl2 at 57600 baud"), d.message());
+            Gui.pump(() -> d.widgets().table().getItemCount() == 3, "the scan to find three servos");
+            assertTrue(d.widgets().message().getText().contains("dxl2 at 57600 baud"), d.widgets().message().getText());
             // After the scan the boxes say what it found (they used to stay "any").
-            assertEquals("dxl2", d.protocolBox().getText());
-            assertEquals("57600", d.baudBox().getText());
+            assertEquals("dxl2", d.widgets().protocol().getText());
+            assertEquals("57600", d.widgets().baud().getText());
             // Placed over the IDE window, not at the screen's corner over the menu.
             assertTrue(d.shell().getLocation().x > ide.shell().getLocation().x
                     && d.shell().getLocation().y > ide.shell().getLocation().y, d.shell().getLocation().toString());
@@ -125,36 +125,36 @@ class HardwareDialogGuiTest {
             org.eclipse.swt.graphics.Rectangle at = capture.getDisplay().map(capture.getParent(), null, capture.getBounds());
             assertTrue(at.width > 0 && at.height > 0, "the Capture button is laid out: " + at);
             assertFalse(d.shell().getBounds().intersects(at), d.shell().getBounds() + " covers Capture at " + at);
-            d.protocolBox().select(d.protocolBox().indexOf("dxl2"));
-            d.baudBox().setText("1000000");
+            d.widgets().protocol().select(d.widgets().protocol().indexOf("dxl2"));
+            d.widgets().baud().setText("1000000");
             click(d, "Connect");
-            Gui.pump(() -> d.table().getItemCount() == 3, "three servos in the table");
-            assertEquals("1", d.table().getItem(0).getText(0));
-            assertEquals("xl430-w250 (1060)", d.table().getItem(0).getText(1));
+            Gui.pump(() -> d.widgets().table().getItemCount() == 3, "three servos in the table");
+            assertEquals("1", d.widgets().table().getItem(0).getText(0));
+            assertEquals("xl430-w250 (1060)", d.widgets().table().getItem(0).getText(1));
             String status = "Hardware: 3 servos connected (DXL2, " + pty.a() + ")";
             Gui.pump(() -> ide.status().hardware().equals(status), "the status bar to say " + status);
 
-            d.table().setSelection(1);
-            d.table().notifyListeners(SWT.Selection, new Event());
+            d.widgets().table().setSelection(1);
+            d.widgets().table().notifyListeners(SWT.Selection, new Event());
             click(d, "Limp");
             Gui.pump(() -> emu.isLimp(2), "servo 2 to go limp");
-            Gui.pump(() -> d.table().getItem(1).getText(3).equals("limp"), "the table to show servo 2 limp");
+            Gui.pump(() -> d.widgets().table().getItem(1).getText(3).equals("limp"), "the table to show servo 2 limp");
 
-            d.table().setSelection(2);
-            d.table().notifyListeners(SWT.Selection, new Event());
-            Gui.pump(() -> d.jogBox().isEnabled(), "the jog box for servo 3");
+            d.widgets().table().setSelection(2);
+            d.widgets().table().notifyListeners(SWT.Selection, new Event());
+            Gui.pump(() -> d.widgets().jogBox().isEnabled(), "the jog box for servo 3");
             // The jog box starts at the servo's position (25°), not at 0° or the range's end: the
             // old slider started at 0° and one click on its trough drove a servo from 25° to 81.8°.
-            assertEquals(250, d.jogBox().getSelection());
-            assertEquals(10, d.jogBox().getIncrement(), "one arrow click: 1°");
+            assertEquals(250, d.widgets().jogBox().getSelection());
+            assertEquals(10, d.widgets().jogBox().getIncrement(), "one arrow click: 1°");
             // One arrow click: 26°.
-            d.jogBox().setSelection(d.jogBox().getSelection() + d.jogBox().getIncrement());
-            d.jogBox().notifyListeners(SWT.Selection, new Event());
+            d.widgets().jogBox().setSelection(d.widgets().jogBox().getSelection() + d.widgets().jogBox().getIncrement());
+            d.widgets().jogBox().notifyListeners(SWT.Selection, new Event());
             Gui.pump(() -> Math.abs(emu.angle(3) - 26) < 0.2, "servo 3 to move 1° to 26°");
             // A typed 81.8° is reached at a limited speed: goals a small step apart, never a jump.
             goals.clear();
-            d.jogBox().setSelection(818);
-            d.jogBox().notifyListeners(SWT.DefaultSelection, new Event());
+            d.widgets().jogBox().setSelection(818);
+            d.widgets().jogBox().notifyListeners(SWT.DefaultSelection, new Event());
             Gui.pump(() -> Math.abs(emu.angle(3) - 81.8) < 0.2, "servo 3 to reach the typed 81.8°");
             double previous = 26;
             for (double[] g : goals) {
@@ -166,8 +166,8 @@ class HardwareDialogGuiTest {
             }
             assertEquals(81.8, previous, 0.1);
             // The number box keeps to the model's range, rounded inwards: tick 4095 is 179.91°.
-            assertEquals(1799, d.jogBox().getMaximum());
-            Gui.pump(() -> d.table().getItem(2).getText(2).equals("81.8\u00b0"), "the table to show 81.8° for servo 3");
+            assertEquals(1799, d.widgets().jogBox().getMaximum());
+            Gui.pump(() -> d.widgets().table().getItem(2).getText(2).equals("81.8\u00b0"), "the table to show 81.8° for servo 3");
             Gui.settle();
             Gui.screenshot(d.shell(), "hardware-dialog.png");
 
@@ -190,13 +190,13 @@ class HardwareDialogGuiTest {
                     + "  <servo module=\"0\" id=\"3\" model=\"xl430-w250\" zero=\"10\" direction=\"-1\" min=\"-60\" max=\"5\"/>\n"
                     + "</hardware>\n");
             ide.toolbar().setHardwareProfile(limited.toString());
-            d.table().setSelection(2);
-            d.table().notifyListeners(SWT.Selection, new Event());
-            Gui.pump(() -> d.jogBox().isEnabled(), "the jog box for servo 3 again");
-            assertEquals(50, d.jogBox().getMinimum(), "servo angle of joint max 5°: 10 - 5 = 5°");
-            assertEquals(700, d.jogBox().getMaximum(), "servo angle of joint min -60°: 10 + 60 = 70°");
-            assertEquals(700, d.jogBox().getSelection(), "servo 3 at 81.8° shows the nearest allowed angle");
-            assertTrue(d.jogValueText().startsWith("module 0's limits 5"), d.jogValueText());
+            d.widgets().table().setSelection(2);
+            d.widgets().table().notifyListeners(SWT.Selection, new Event());
+            Gui.pump(() -> d.widgets().jogBox().isEnabled(), "the jog box for servo 3 again");
+            assertEquals(50, d.widgets().jogBox().getMinimum(), "servo angle of joint max 5°: 10 - 5 = 5°");
+            assertEquals(700, d.widgets().jogBox().getMaximum(), "servo angle of joint min -60°: 10 + 60 = 70°");
+            assertEquals(700, d.widgets().jogBox().getSelection(), "servo 3 at 81.8° shows the nearest allowed angle");
+            assertTrue(d.widgets().jogValue().getText().startsWith("module 0's limits 5"), d.widgets().jogValue().getText());
             ide.toolbar().setHardwareProfile(profile.toString());
 
             Gui.open(ide, Gui.example("hello-snake.xml"));
@@ -217,7 +217,7 @@ class HardwareDialogGuiTest {
             Gui.pump(() -> d.shell().isDisposed(), "the dialog to close");
             // It used to stay on "Robot (limp)" with nothing connected.
             assertFalse(ide.pose().posingTheRobot(), "the Pose panel no longer poses a robot that is gone");
-            assertTrue(ide.hardwareDialog().sessionForTest().awaitClosed(5000), "the bus thread ends");
+            assertTrue(ide.hardwareDialog().session().awaitClosed(5000), "the bus thread ends");
             Gui.pump(() -> !ide.status().hardware().contains("connected ("), "the status bar to drop the dialog's bus");
         }
     }
@@ -225,12 +225,12 @@ class HardwareDialogGuiTest {
     @Test
     void aMissingPortIsSaidInWords() {
         HardwareDialog d = HardwareDialog.open(ide);
-        d.portBox().setText(dir.resolve("no-such-port").toString());
-        d.protocolBox().select(d.protocolBox().indexOf("sts"));
-        d.baudBox().setText("1000000");
+        d.widgets().port().setText(dir.resolve("no-such-port").toString());
+        d.widgets().protocol().select(d.widgets().protocol().indexOf("sts"));
+        d.widgets().baud().setText("1000000");
         click(d, "Connect");
-        Gui.pump(() -> d.message().contains("does not exist"), "the dialog to say the port does not exist");
-        assertFalse(d.message().contains("Exception"), d.message());
+        Gui.pump(() -> d.widgets().message().getText().contains("does not exist"), "the dialog to say the port does not exist");
+        assertFalse(d.widgets().message().getText().contains("Exception"), d.widgets().message().getText());
         d.shell().close();
         Gui.pump(() -> d.shell().isDisposed(), "the dialog to close");
     }

@@ -109,9 +109,9 @@ public final class IdeAccess {
      */
     public static void connectHardware(IdeWindow ide, String port, String protocol, int baud, int servos) {
         HardwareDialog d = HardwareDialog.open(ide);
-        d.portBox().setText(port);
-        d.protocolBox().select(d.protocolBox().indexOf(protocol));
-        d.baudBox().setText(Integer.toString(baud));
+        d.widgets().port().setText(port);
+        d.widgets().protocol().select(d.widgets().protocol().indexOf(protocol));
+        d.widgets().baud().setText(Integer.toString(baud));
         // A scan on a busy machine may miss replies (20 ms read timeout): try a few times, as a user would.
         for (int attempt = 0; attempt < 4 && d.servos().size() != servos; attempt++) {
             for (org.eclipse.swt.widgets.Control c : allChildren(d.shell())) {
@@ -120,14 +120,14 @@ public final class IdeAccess {
                 }
             }
             long shortWait = System.currentTimeMillis() + 3000;
-            Gui.pump(() -> d.message().startsWith("Looking") || d.servos().size() == servos
+            Gui.pump(() -> d.widgets().message().getText().startsWith("Looking") || d.servos().size() == servos
                     || System.currentTimeMillis() > shortWait, "the dialog to start looking");
-            Gui.pump(() -> !d.message().startsWith("Looking"), "the dialog to finish looking");
+            Gui.pump(() -> !d.widgets().message().getText().startsWith("Looking"), "the dialog to finish looking");
             Gui.settle();
         }
-        if (d.servos().size() != servos || d.table().getItemCount() != servos) {
+        if (d.servos().size() != servos || d.widgets().table().getItemCount() != servos) {
             throw new org.opentest4j.AssertionFailedError("expected " + servos + " servos in the Hardware dialog; it says: "
-                    + d.message());
+                    + d.widgets().message().getText());
         }
     }
 

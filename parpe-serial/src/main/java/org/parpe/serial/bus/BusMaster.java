@@ -9,6 +9,7 @@ import org.parpe.serial.link.ReadLoop;
 import org.parpe.serial.protocol.FrameDecoder;
 import org.parpe.serial.protocol.FrameEncoder;
 import org.parpe.serial.protocol.Protocol;
+import org.parpe.serial.protocol.Command;
 
 /**
  * The host end of one open link: sends frames and runs request/reply transactions with a timeout
@@ -70,7 +71,7 @@ public final class BusMaster implements AutoCloseable {
     }
 
     /** Sends a frame without payload. */
-    public void send(int addr, int cmd) throws IOException {
+    public void send(int addr, Command cmd) throws IOException {
         synchronized (writeLock) {
             write(tx.simple(addr, cmd));
         }
@@ -79,7 +80,7 @@ public final class BusMaster implements AutoCloseable {
     /** Sends HOLD to {@code addr}: at the current angle, or finishing the move to the last setpoint. */
     public void sendHold(int addr, boolean keepTarget) throws IOException {
         synchronized (writeLock) {
-            write(tx.begin(addr, Protocol.HOLD).putU8(keepTarget ? Protocol.HOLD_TARGET : Protocol.HOLD_HERE).finish());
+            write(tx.begin(addr, Command.HOLD).putU8(keepTarget ? Protocol.HOLD_TARGET : 0).finish());
         }
     }
 
@@ -93,7 +94,7 @@ public final class BusMaster implements AutoCloseable {
     /** Broadcasts the watchdog time, safe mode and speed limit (0 keeps the modules' own). */
     public void sendConfig(int watchdogMs, SafeMode mode, int speedDegPerS) throws IOException {
         synchronized (writeLock) {
-            write(tx.begin(Protocol.BROADCAST, Protocol.CONFIG).putU16(watchdogMs).putU8(mode.wire())
+            write(tx.begin(Protocol.BROADCAST, Command.CONFIG).putU16(watchdogMs).putU8(mode.wire())
                     .putU16(speedDegPerS).finish());
         }
     }
@@ -101,7 +102,7 @@ public final class BusMaster implements AutoCloseable {
     /** Broadcasts an emergency stop, latched by every module until RESUME. */
     public void sendEmergencyStop(SafeMode mode) throws IOException {
         synchronized (writeLock) {
-            write(tx.begin(Protocol.BROADCAST, Protocol.ESTOP).putU8(mode.wire()).finish());
+            write(tx.begin(Protocol.BROADCAST, Command.ESTOP).putU8(mode.wire()).finish());
         }
     }
 
@@ -110,7 +111,7 @@ public final class BusMaster implements AutoCloseable {
      * angle and flags.
      */
     public boolean ping(int id, Reply out, int attempts) throws IOException {
-        return transact(id, Protocol.PING, Protocol.PONG, out, attempts);
+        return transact(id, Command.PING, Command.PONG, out, attempts);
     }
 
     /** Reads module {@code id}'s sensors with the configured retries. */
@@ -120,7 +121,7 @@ public final class BusMaster implements AutoCloseable {
 
     /** Reads module {@code id}'s sensors with up to {@code attempts} tries. */
     public boolean read(int id, Reply out, int attempts) throws IOException {
-        return transact(id, Protocol.READ, Protocol.STATUS, out, attempts);
+        return transact(id, Command.READ, Command.STATUS, out, attempts);
     }
 
     /**
@@ -183,12 +184,12 @@ public final class BusMaster implements AutoCloseable {
         }
     }
 
-    private boolean transact(int id, int cmd, int replyCmd, Reply out, int attempts) throws IOException {
+    private boolean transact(int id, Command cmd, Command replyCmd, Reply out, int attempts) throws IOException {
         for (int attempt = 0; attempt < attempts; attempt++) {
             replyLock.lock();
             try {
                 expectAddr = id;
-                expectCmd = replyCmd;
+                expectCmd = replyCmd.code();
                 ready = false;
             } finally {
                 replyLock.unlock();
@@ -265,7 +266,7 @@ public final class BusMaster implements AutoCloseable {
             ready = true;
             lastReplyNanos = System.nanoTime();
             replied.signalAll();
-        } else if ((cmd & Protocol.REPLY) != 0) {
+        } else if (Command.replies(cmd)) {
             // A late reply still shows that the bus is alive.
             lastReplyNanos = System.nanoTime();
             stray++;

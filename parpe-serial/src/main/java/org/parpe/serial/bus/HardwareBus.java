@@ -11,6 +11,7 @@ import org.parpe.core.run.SensorSource;
 import org.parpe.core.sensor.SensorTable;
 import org.parpe.serial.link.LinkOpener;
 import org.parpe.serial.protocol.Protocol;
+import org.parpe.serial.protocol.Command;
 
 /**
  * Drives real modules from a run: a {@link JointSink} that broadcasts each tick's setpoints and a
@@ -92,7 +93,7 @@ public final class HardwareBus extends BusThread {
         java.util.Arrays.fill(wire, Protocol.NO_CHANGE);
         Discovery d = ping(master, buffers.ids);
         master.sendConfig(config.watchdogMs(), config.safeMode(), 0);
-        master.send(Protocol.BROADCAST, Protocol.RESUME);
+        master.send(Protocol.BROADCAST, Command.RESUME);
         return d;
     }
 
@@ -234,10 +235,10 @@ public final class HardwareBus extends BusThread {
             readsRetried += readAttempt > 0 ? 1 : 0;
             buffers.store(readCursor, reply, true);
             moduleRxErrors = Math.max(moduleRxErrors, reply.rxErrors);
-            if ((reply.flags & Protocol.FLAG_WATCHDOG) != 0) {
+            if ((reply.flags & Protocol.Flag.WATCHDOG.bit()) != 0) {
                 watchdogResumes++;
                 watchdogResumed(id, config.watchdogMs());
-                master.send(id, Protocol.RESUME);
+                master.send(id, Command.RESUME);
             }
         } else {
             consecutiveTimeouts++;
@@ -269,7 +270,7 @@ public final class HardwareBus extends BusThread {
                     answeredNow();
                     buffers.store(probeCursor, reply, false);
                     buffers.driven[probeCursor] = true;
-                    master.send(id, Protocol.RESUME);
+                    master.send(id, Command.RESUME);
                     report.note("bus: module " + id + " answers now; driving it");
                 }
                 return;
@@ -309,7 +310,7 @@ public final class HardwareBus extends BusThread {
         Discovery d = ping(master, buffers.ids);
         lastProbe = System.nanoTime();
         master.sendConfig(config.watchdogMs(), config.safeMode(), 0);
-        master.send(Protocol.BROADCAST, Protocol.RESUME);
+        master.send(Protocol.BROADCAST, Command.RESUME);
         java.util.Arrays.fill(backoff, 0);
         readAttempt = 0;
         consecutiveTimeouts = 0;

@@ -2,6 +2,7 @@ package org.parpe.serial.bus;
 
 import org.parpe.serial.protocol.FrameHandler;
 import org.parpe.serial.protocol.Protocol;
+import org.parpe.serial.protocol.Command;
 
 /**
  * A decoded PONG or STATUS, reused from transaction to transaction. For a PONG only
@@ -12,21 +13,21 @@ public final class Reply {
     public double angle;
     /** Accelerometer x, y, z: −100…100. */
     public final int[] accel = new int[3];
-    /** Touch bits ({@link Protocol#TOUCH_LEFT}, {@link Protocol#TOUCH_RIGHT}). */
+    /** Touch bits ({@link Protocol.Touch}). */
     public int touch;
-    /** Status flags ({@link Protocol#FLAG_LIMP}, …). */
+    /** Status flags ({@link Protocol.Flag}). */
     public int flags;
     /** Frames the module rejected by CRC since it started. */
     public int rxErrors;
 
     /** Fills this from a reply payload; false when the payload has the wrong length. */
     boolean decode(int cmd, byte[] b, int off, int len) {
-        if (cmd == Protocol.PONG && len == Protocol.PONG_LEN) {
+        if (Command.PONG.isReply(cmd, len)) {
             flags = b[off + 2] & 0xFF;
             angle = Protocol.fromWire(FrameHandler.i16(b, off + 3));
             return true;
         }
-        if (cmd == Protocol.STATUS && len == Protocol.STATUS_LEN) {
+        if (Command.STATUS.isReply(cmd, len)) {
             angle = Protocol.fromWire(FrameHandler.i16(b, off));
             accel[0] = b[off + 2];
             accel[1] = b[off + 3];

@@ -101,8 +101,8 @@ final class RunBuffers {
             for (int a = 0; a < 3; a++) {
                 measured[b + 1 + a] = r.accel[a];
             }
-            measured[b + 4] = (r.touch & Protocol.TOUCH_LEFT) != 0 ? 1 : 0;
-            measured[b + 5] = (r.touch & Protocol.TOUCH_RIGHT) != 0 ? 1 : 0;
+            measured[b + 4] = (r.touch & Protocol.Touch.LEFT.bit()) != 0 ? 1 : 0;
+            measured[b + 5] = (r.touch & Protocol.Touch.RIGHT.bit()) != 0 ? 1 : 0;
         }
         if (!hasSetpoints) {
             pending[index] = r.angle;

@@ -1,13 +1,11 @@
 package org.parpe.serial.bus;
 
-import org.parpe.serial.protocol.Protocol;
-
 /** What a module does when it stops on its own (watchdog, emergency stop). */
 public enum SafeMode {
     /** Keep the current angle with the servo on. */
-    HOLD(Protocol.SAFE_HOLD),
+    HOLD(0),
     /** Turn the servo off: the joint goes slack. */
-    LIMP(Protocol.SAFE_LIMP);
+    LIMP(1);
 
     private final int wire;
 

@@ -9,6 +9,8 @@ import org.parpe.serial.protocol.FrameDecoder;
 import org.parpe.serial.protocol.FrameEncoder;
 import org.parpe.serial.protocol.FrameHandler;
 import org.parpe.serial.protocol.Protocol;
+import org.parpe.serial.bus.SafeMode;
+import org.parpe.serial.protocol.Command;
 
 /**
  * Emulates a chain of modules on the far end of a serial link, byte for byte as the protocol
@@ -39,7 +41,7 @@ public final class BusEmulator extends ServedLine {
     private final FrameEncoder tx = new FrameEncoder();
     private volatile long lastFrameNanos = System.nanoTime();
     private int watchdogMs = 50;
-    private int safeMode = Protocol.SAFE_HOLD;
+    private int safeMode = SafeMode.HOLD.wire();
     private double speed;
     private long frames;
     private long replies;
@@ -141,23 +143,26 @@ public final class BusEmulator extends ServedLine {
         if (addr != Protocol.BROADCAST && target == null) {
             return;
         }
+        Command command = Command.of(cmd);
         synchronized (lock) {
             frames++;
-            switch (cmd) {
-                case Protocol.SETPOINTS -> setpoints(addr, buf, off, len);
-                case Protocol.LIMP -> forEach(target, m -> m.safe(Protocol.SAFE_LIMP));
-                case Protocol.HOLD -> forEach(target, m -> m.hold(len > 0 && buf[off] == Protocol.HOLD_TARGET));
-                case Protocol.ESTOP -> estop(target, len > 0 ? buf[off] : Protocol.SAFE_LIMP);
-                case Protocol.RESUME -> forEach(target, m -> {
-                    m.estop = false;
-                    m.watchdogTripped = false;
-                });
-                case Protocol.CONFIG -> configure(buf, off, len);
-                default -> { }
+            if (command != null) {
+                switch (command) {
+                    case SETPOINTS -> setpoints(addr, buf, off, len);
+                    case LIMP -> forEach(target, m -> m.safe(SafeMode.LIMP.wire()));
+                    case HOLD -> forEach(target, m -> m.hold(len > 0 && buf[off] == Protocol.HOLD_TARGET));
+                    case ESTOP -> estop(target, len > 0 ? buf[off] : SafeMode.LIMP.wire());
+                    case RESUME -> forEach(target, m -> {
+                        m.estop = false;
+                        m.watchdogTripped = false;
+                    });
+                    case CONFIG -> configure(buf, off, len);
+                    default -> { }
+                }
             }
         }
-        if (target != null && (cmd == Protocol.PING || cmd == Protocol.READ)) {
-            reply(target, cmd);
+        if (target != null && (command == Command.PING || command == Command.READ)) {
+            reply(target, command);
         }
     }
 
@@ -199,7 +204,7 @@ public final class BusEmulator extends ServedLine {
             return;
         }
         watchdogMs = Math.max(1, FrameHandler.u16(buf, off));
-        safeMode = buf[off + 2] == Protocol.SAFE_LIMP ? Protocol.SAFE_LIMP : Protocol.SAFE_HOLD;
+        safeMode = buf[off + 2] == SafeMode.LIMP.wire() ? SafeMode.LIMP.wire() : SafeMode.HOLD.wire();
         int s = FrameHandler.u16(buf, off + 3);
         speed = s > 0 ? s : options.speedDegPerS();
     }
@@ -214,17 +219,17 @@ public final class BusEmulator extends ServedLine {
         }
     }
 
-    private void reply(ServoModule m, int cmd) {
+    private void reply(ServoModule m, Command cmd) {
         if (options.latencyMs() > 0) {
             LockSupport.parkNanos((long) (options.latencyMs() * 1e6));
         }
         int n;
         synchronized (lock) {
-            if (cmd == Protocol.PING) {
-                n = tx.begin(m.id, Protocol.PONG).putU8(Protocol.VERSION).putU8(Protocol.KIND_SEGMENT)
+            if (cmd == Command.PING) {
+                n = tx.begin(m.id, Command.PONG).putU8(Protocol.VERSION).putU8(Protocol.KIND_SEGMENT)
                         .putU8(m.flags()).putU16(Protocol.toWire(m.angle)).finish();
             } else {
-                n = tx.begin(m.id, Protocol.STATUS).putU16(Protocol.toWire(m.angle)).putU8(m.accel(0))
+                n = tx.begin(m.id, Command.STATUS).putU16(Protocol.toWire(m.angle)).putU8(m.accel(0))
                         .putU8(m.accel(1)).putU8(m.accel(2)).putU8(m.touch).putU8(m.flags())
                         .putU16((int) Math.min(0xFFFF, moduleRx.checksumErrors())).finish();
             }

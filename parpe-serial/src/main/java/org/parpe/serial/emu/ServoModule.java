@@ -1,6 +1,7 @@
 package org.parpe.serial.emu;
 
 import org.parpe.serial.protocol.Protocol;
+import org.parpe.serial.bus.SafeMode;
 
 /**
  * One emulated module: a hobby servo with a speed limit, its PIC's watchdog and latches, and its
@@ -43,7 +44,7 @@ final class ServoModule {
     /** Enters the safe mode: hold where it is, or go limp. */
     void safe(int mode) {
         watchdogArmed = false;
-        if (mode == Protocol.SAFE_LIMP) {
+        if (mode == SafeMode.LIMP.wire()) {
             limp = true;
         } else {
             limp = false;
@@ -65,8 +66,8 @@ final class ServoModule {
     }
 
     int flags() {
-        return (limp ? Protocol.FLAG_LIMP : 0) | (estop ? Protocol.FLAG_ESTOP : 0)
-                | (watchdogTripped ? Protocol.FLAG_WATCHDOG : 0);
+        return (limp ? Protocol.Flag.LIMP.bit() : 0) | (estop ? Protocol.Flag.ESTOP.bit() : 0)
+                | (watchdogTripped ? Protocol.Flag.WATCHDOG.bit() : 0);
     }
 
     /** Gravity along a body axis of a module whose body turns with its joint, ×100. */

@@ -15,11 +15,11 @@ public final class FrameEncoder {
     }
 
     /** Starts a frame to {@code addr} with command {@code cmd}. */
-    public FrameEncoder begin(int addr, int cmd) {
+    public FrameEncoder begin(int addr, Command cmd) {
         buf[0] = (byte) Protocol.SYNC1;
         buf[1] = (byte) Protocol.SYNC2;
         buf[2] = (byte) addr;
-        buf[5] = (byte) cmd;
+        buf[5] = (byte) cmd.code();
         pos = Protocol.HEADER;
         return this;
     }
@@ -51,7 +51,7 @@ public final class FrameEncoder {
     }
 
     /** A frame without payload. */
-    public int simple(int addr, int cmd) {
+    public int simple(int addr, Command cmd) {
         return begin(addr, cmd).finish();
     }
 
@@ -64,7 +64,7 @@ public final class FrameEncoder {
             throw new IllegalArgumentException("a setpoint frame covers 1.." + (Protocol.MAX_PAYLOAD - 3) / 2
                     + " modules, got " + count);
         }
-        begin(Protocol.BROADCAST, Protocol.SETPOINTS).putU16(seq).putU8(first);
+        begin(Protocol.BROADCAST, Command.SETPOINTS).putU16(seq).putU8(first);
         for (int i = 0; i < count; i++) {
             int v = wire[i];
             buf[pos++] = (byte) v;

@@ -28,53 +28,35 @@ public final class Protocol {
     /** Module kind reported in a PONG: a G1-style one-degree-of-freedom segment. */
     public static final int KIND_SEGMENT = 1;
 
-    /** Ping a module: it replies {@link #PONG}. Payload empty. */
-    public static final int PING = 0x01;
-    /** Broadcast setpoints: {@code seq:u16 first:u8 angle:i16…} for modules first, first+1, …. */
-    public static final int SETPOINTS = 0x02;
-    /** Ask a module for its sensors: it replies {@link #STATUS}. Payload empty. */
-    public static final int READ = 0x03;
-    /** Turn the servo off so the joint can be back-driven; disarms the watchdog. */
-    public static final int LIMP = 0x04;
-    /**
-     * Hold with the servo on and disarm the watchdog: {@code mode:u8} optional, 0 (default) stops
-     * at the current angle, 1 finishes the move to the last setpoint.
-     */
-    public static final int HOLD = 0x05;
-    /** Emergency stop, latched until {@link #RESUME}: {@code mode:u8} (0 hold, 1 limp). */
-    public static final int ESTOP = 0x06;
-    /** Clear an emergency stop and a watchdog trip; setpoints are obeyed again. */
-    public static final int RESUME = 0x07;
-    /** Set {@code watchdogMs:u16 safeMode:u8 speedDegPerS:u16}. */
-    public static final int CONFIG = 0x08;
-    /** Bit set in the command of a reply. */
-    public static final int REPLY = 0x80;
-    /** Reply to PING: {@code version:u8 kind:u8 flags:u8 angle:i16}. */
-    public static final int PONG = PING | REPLY;
-    /** Reply to READ: {@code angle:i16 ax:i8 ay:i8 az:i8 touch:u8 flags:u8 rxErrors:u16}. */
-    public static final int STATUS = READ | REPLY;
-    /** Payload length of a PONG. */
-    public static final int PONG_LEN = 5;
-    /** Payload length of a STATUS. */
-    public static final int STATUS_LEN = 9;
+    /** The bits of the flags byte of a PONG and a STATUS; a flag's bit is {@code 1 << ordinal()}. */
+    public enum Flag {
+        /** The servo is off. */
+        LIMP,
+        /** An emergency stop is latched. */
+        ESTOP,
+        /** The watchdog tripped (no frame for watchdogMs). */
+        WATCHDOG;
 
-    /** Status flag: the servo is off. */
-    public static final int FLAG_LIMP = 1;
-    /** Status flag: an emergency stop is latched. */
-    public static final int FLAG_ESTOP = 2;
-    /** Status flag: the watchdog tripped (no frame for watchdogMs). */
-    public static final int FLAG_WATCHDOG = 4;
-    /** Touch bit of the +y side. */
-    public static final int TOUCH_LEFT = 1;
-    /** Touch bit of the −y side. */
-    public static final int TOUCH_RIGHT = 2;
-    /** Safe mode: hold the current angle. */
-    public static final int SAFE_HOLD = 0;
-    /** Safe mode: servo off. */
-    public static final int SAFE_LIMP = 1;
-    /** HOLD payload: stop at the current angle. */
-    public static final int HOLD_HERE = 0;
-    /** HOLD payload: finish the move to the last setpoint. */
+        /** Its bit in the flags byte. */
+        public int bit() {
+            return 1 << ordinal();
+        }
+    }
+
+    /** The bits of the touch byte of a STATUS; a side's bit is {@code 1 << ordinal()}. */
+    public enum Touch {
+        /** The +y side. */
+        LEFT,
+        /** The −y side. */
+        RIGHT;
+
+        /** Its bit in the touch byte. */
+        public int bit() {
+            return 1 << ordinal();
+        }
+    }
+
+    /** HOLD's payload byte: finish the move to the last setpoint (0, the default, stops at the current angle). */
     public static final int HOLD_TARGET = 1;
 
     /** The joint range, degrees either side of zero; no frame ever carries more. */
@@ -118,18 +100,7 @@ public final class Protocol {
 
     /** A readable name of a command code, for messages. */
     public static String commandName(int cmd) {
-        switch (cmd) {
-            case PING: return "PING";
-            case SETPOINTS: return "SETPOINTS";
-            case READ: return "READ";
-            case LIMP: return "LIMP";
-            case HOLD: return "HOLD";
-            case ESTOP: return "ESTOP";
-            case RESUME: return "RESUME";
-            case CONFIG: return "CONFIG";
-            case PONG: return "PONG";
-            case STATUS: return "STATUS";
-            default: return String.format("0x%02X", cmd);
-        }
+        Command c = Command.of(cmd);
+        return c != null ? c.name() : String.format("0x%02X", cmd);
     }
 }

@@ -36,7 +36,7 @@ class DecoderFuzzProperties {
         byte[] frame = Arrays.copyOf(e.buffer(), n);
         int[] seen = {0};
         FrameDecoder d = new FrameDecoder((a, c, b, o, l) -> {
-            if (c == Protocol.SETPOINTS && FrameHandler.u16(b, o) == 77 && (b[o + 2] & 0xFF) == module
+            if (Command.SETPOINTS.is(c) && FrameHandler.u16(b, o) == 77 && (b[o + 2] & 0xFF) == module
                     && FrameHandler.i16(b, o + 3) == angle) {
                 seen[0]++;
             }

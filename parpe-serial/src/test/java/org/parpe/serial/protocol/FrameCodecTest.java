@@ -28,7 +28,7 @@ class FrameCodecTest {
     @Test
     void aPingFrameHasTheDocumentedBytes() {
         FrameEncoder e = new FrameEncoder();
-        int n = e.simple(3, Protocol.PING);
+        int n = e.simple(3, Command.PING);
         byte[] head = Arrays.copyOf(e.buffer(), 6);
         assertArrayEquals(new byte[] {(byte) 0xA5, 0x5A, 3, 0, 0, 1}, head);
         assertEquals(8, n);
@@ -45,7 +45,7 @@ class FrameCodecTest {
         assertEquals(1, got.size());
         Got g = got.get(0);
         assertEquals(Protocol.BROADCAST, g.addr());
-        assertEquals(Protocol.SETPOINTS, g.cmd());
+        assertEquals(Command.SETPOINTS.code(), g.cmd());
         assertEquals(513, FrameHandler.u16(g.payload(), 0));
         assertEquals(4, g.payload()[2]);
         assertEquals(1234, FrameHandler.i16(g.payload(), 3));
@@ -56,7 +56,7 @@ class FrameCodecTest {
     @Test
     void framesSplitAtEveryByteStillDecode() {
         FrameEncoder e = new FrameEncoder();
-        int n = e.begin(7, Protocol.STATUS).putU16(-4500).putU8(10).putU8(-100).putU8(0).putU8(3).putU8(1)
+        int n = e.begin(7, Command.STATUS).putU16(-4500).putU8(10).putU8(-100).putU8(0).putU8(3).putU8(1)
                 .putU16(9).finish();
         for (int i = 0; i < n; i++) {
             decoder.feed(e.buffer(), i, 1);
@@ -89,7 +89,7 @@ class FrameCodecTest {
     @Test
     void garbageBetweenFramesIsSkippedAndCounted() {
         FrameEncoder e = new FrameEncoder();
-        int n = e.simple(1, Protocol.PING);
+        int n = e.simple(1, Command.PING);
         byte[] frame = Arrays.copyOf(e.buffer(), n);
         decoder.feed(new byte[] {1, 2, (byte) 0xA5, 9}, 0, 4);
         decoder.feed(frame, 0, n);
@@ -102,7 +102,7 @@ class FrameCodecTest {
         byte[] bogus = {(byte) 0xA5, 0x5A, 1, (byte) 0xFF, (byte) 0xFF, 1};
         decoder.feed(bogus, 0, bogus.length);
         FrameEncoder e = new FrameEncoder();
-        int n = e.simple(2, Protocol.READ);
+        int n = e.simple(2, Command.READ);
         decoder.feed(e.buffer(), 0, n);
         assertEquals(1, got.size());
         assertEquals(2, got.get(0).addr());

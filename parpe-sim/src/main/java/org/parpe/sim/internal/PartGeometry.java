@@ -66,21 +66,21 @@ public final class PartGeometry {
     }
 
     private static PartGeometry segment() {
-        double inner = G1.HINGE_CLEARANCE;
-        double outer = G1.SEGMENT_LENGTH / 2;
+        double inner = G1.SEGMENT.hingeClearance();
+        double outer = G1.SEGMENT.length() / 2;
         double hx = (outer - inner) / 2;
         double cx = (outer + inner) / 2;
         BodyShape box = new BodyShape.Box(hx, G1.HALF, G1.HALF);
         Vec3 up = new Vec3(0, 0, 1);
         return new PartGeometry(
-                List.of(new Piece(PartKind.SEGMENT_BASE, box, new Vec3(-cx, 0, 0), G1.BASE_MASS, false),
-                        new Piece(PartKind.SEGMENT_ARM, box, new Vec3(cx, 0, 0), G1.ARM_MASS, true)),
+                List.of(new Piece(PartKind.SEGMENT_BASE, box, new Vec3(-cx, 0, 0), G1.SEGMENT.baseMass(), false),
+                        new Piece(PartKind.SEGMENT_ARM, box, new Vec3(cx, 0, 0), G1.SEGMENT.armMass(), true)),
                 List.of(new Plate(0, new Vec3(-outer, 0, 0), new Vec3(-1, 0, 0), up),
                         new Plate(1, new Vec3(outer, 0, 0), new Vec3(1, 0, 0), up)));
     }
 
     private static PartGeometry node() {
-        double h = G1.NODE_SIZE / 2;
+        double h = G1.NODE.length() / 2;
         BodyShape box = new BodyShape.Box(h, h, h);
         Vec3 z = new Vec3(0, 0, 1);
         Vec3 x = new Vec3(1, 0, 0);
@@ -91,26 +91,26 @@ public final class PartGeometry {
                 new Plate(0, new Vec3(0, -h, 0), new Vec3(0, -1, 0), z),
                 new Plate(0, new Vec3(0, 0, h), new Vec3(0, 0, 1), x),
                 new Plate(0, new Vec3(0, 0, -h), new Vec3(0, 0, -1), x));
-        return new PartGeometry(List.of(new Piece(PartKind.NODE, box, Vec3.ZERO, G1.NODE_MASS, false)), plates);
+        return new PartGeometry(List.of(new Piece(PartKind.NODE, box, Vec3.ZERO, G1.NODE.mass(), false)), plates);
     }
 
     private static PartGeometry foot() {
-        double hx = G1.FOOT_LENGTH / 2;
-        BodyShape box = new BodyShape.Box(hx, G1.HALF, G1.FOOT_WIDTH / 2);
-        return new PartGeometry(List.of(new Piece(PartKind.FOOT, box, Vec3.ZERO, G1.FOOT_MASS, false)),
+        double hx = G1.FOOT.length() / 2;
+        BodyShape box = new BodyShape.Box(hx, G1.HALF, G1.FOOT.width() / 2);
+        return new PartGeometry(List.of(new Piece(PartKind.FOOT, box, Vec3.ZERO, G1.FOOT.mass(), false)),
                 List.of(new Plate(0, new Vec3(-hx, 0, 0), new Vec3(-1, 0, 0), new Vec3(0, 0, 1))));
     }
 
     private static PartGeometry hub(int count) {
         double r = G1.hubRadius(count);
-        BodyShape disc = new BodyShape.Cylinder(r, G1.HUB_THICKNESS);
+        BodyShape disc = new BodyShape.Cylinder(r, G1.HUB.length());
         List<Plate> plates = new ArrayList<>();
         for (int i = 0; i < count; i++) {
             double a = 2 * Math.PI * i / count;
             Vec3 n = new Vec3(Math.cos(a), Math.sin(a), 0);
             plates.add(new Plate(0, Geo.scale(n, r), n, new Vec3(0, 0, 1)));
         }
-        return new PartGeometry(List.of(new Piece(PartKind.HUB, disc, Vec3.ZERO, G1.HUB_MASS, false)), plates);
+        return new PartGeometry(List.of(new Piece(PartKind.HUB, disc, Vec3.ZERO, G1.HUB.mass(), false)), plates);
     }
 
     /** The rotation of a piece relative to the part frame at joint angle {@code angle} (radians). */

@@ -121,14 +121,14 @@ public final class PhysicsWorld implements AutoCloseable {
         offset[h] = def.angle();
         target[h] = def.angle();
         limp[h] = def.limp();
-        j.setParamLoStop(-G1.JOINT_RANGE - def.angle());
-        j.setParamHiStop(G1.JOINT_RANGE - def.angle());
+        j.setParamLoStop(-G1.SERVO.range() - def.angle());
+        j.setParamHiStop(G1.SERVO.range() - def.angle());
         hinges[h] = j;
     }
 
     /** Sets the angle hinge {@code h} drives to, radians (clamped to the joint range). */
     public void setTarget(int h, double radians) {
-        target[h] = Math.max(-G1.JOINT_RANGE, Math.min(G1.JOINT_RANGE, radians));
+        target[h] = Math.max(-G1.SERVO.range(), Math.min(G1.SERVO.range(), radians));
     }
 
     /** The angle hinge {@code h} drives to, radians. */
@@ -173,12 +173,12 @@ public final class PhysicsWorld implements AutoCloseable {
             DHingeJoint j = hinges[h];
             if (limp[h]) {
                 j.setParamVel(0);
-                j.setParamFMax(G1.LIMP_TORQUE);
+                j.setParamFMax(G1.SERVO.limpTorque());
             } else {
                 double err = target[h] - angle(h);
-                double vel = Math.max(-G1.SERVO_SPEED, Math.min(G1.SERVO_SPEED, G1.SERVO_GAIN * err));
+                double vel = Math.max(-G1.SERVO.speed(), Math.min(G1.SERVO.speed(), G1.SERVO.gain() * err));
                 j.setParamVel(vel);
-                j.setParamFMax(G1.SERVO_TORQUE);
+                j.setParamFMax(G1.SERVO.torque());
             }
         }
     }

@@ -7,6 +7,7 @@ import org.parpe.serial.bus.Reply;
 import org.parpe.serial.bus.SafeMode;
 import org.parpe.serial.link.ByteLink;
 import org.parpe.serial.protocol.Protocol;
+import org.parpe.serial.protocol.Command;
 import org.parpe.serial.servo.ServoBus;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.ServoProtocol;
@@ -49,10 +50,10 @@ public final class G1Bus implements ServoBus {
             // Twice: these frames have no reply.
             for (int i = 0; i < n; i++) {
                 if (on) {
-                    master.send(ids[i], Protocol.RESUME);
+                    master.send(ids[i], Command.RESUME);
                     master.sendHold(ids[i], false);
                 } else {
-                    master.send(ids[i], Protocol.LIMP);
+                    master.send(ids[i], Command.LIMP);
                 }
             }
         }
@@ -91,7 +92,7 @@ public final class G1Bus implements ServoBus {
         for (int i = 0; i < n; i++) {
             if (master.read(ids[i], reply, 1)) {
                 degrees[i] = reply.angle;
-                errors[i] = reply.flags & (Protocol.FLAG_ESTOP | Protocol.FLAG_WATCHDOG);
+                errors[i] = reply.flags & (Protocol.Flag.ESTOP.bit() | Protocol.Flag.WATCHDOG.bit());
                 answered++;
             } else {
                 errors[i] = NO_REPLY;
@@ -113,10 +114,10 @@ public final class G1Bus implements ServoBus {
 
     @Override
     public boolean resumeIfTripped(int id, ServoModel model, int statusError, int ms) throws IOException {
-        if (statusError < 0 || (statusError & Protocol.FLAG_WATCHDOG) == 0) {
+        if (statusError < 0 || (statusError & Protocol.Flag.WATCHDOG.bit()) == 0) {
             return false;
         }
-        master.send(id, Protocol.RESUME);
+        master.send(id, Command.RESUME);
         return true;
     }
 
@@ -130,7 +131,7 @@ public final class G1Bus implements ServoBus {
             return "module watchdogs off; modules finish their move and hold";
         }
         master.sendConfig(ms, limp ? SafeMode.LIMP : SafeMode.HOLD, 0);
-        master.send(Protocol.BROADCAST, Protocol.RESUME);
+        master.send(Protocol.BROADCAST, Command.RESUME);
         return "modules " + (limp ? "go limp" : "hold") + " after " + ms + " ms without a frame (module watchdog)";
     }
 

@@ -21,8 +21,8 @@ import org.parpe.serial.servo.profile.ServoMapping;
  */
 final class ServoSet {
     private final int[] runModules;
-    private final ServoMapping[] mappings;
-    private final int[] runIndex;
+    /** The mapped servos in run order. */
+    private final Slot[] slots;
     final boolean[] driven;
     private final int[] packed;
     final int[] ids;
@@ -30,29 +30,21 @@ final class ServoSet {
     final int[] goals;
     final double[] degrees;
     final int[] errors;
-    private final double[] joint;
-    private final double[] measured;
-    private final boolean[] have;
-    private final boolean[] clampWarned;
-    private final boolean[] faultShown;
     private boolean fresh;
     private boolean hasSetpoints;
     private long clamps;
 
     ServoSet(HardwareProfile profile, int[] runModules) {
         this.runModules = runModules.clone();
-        List<ServoMapping> m = new ArrayList<>();
-        List<Integer> idx = new ArrayList<>();
+        List<Slot> found = new ArrayList<>();
         for (int i = 0; i < runModules.length; i++) {
             ServoMapping s = profile.forModule(runModules[i]);
             if (s != null) {
-                m.add(s);
-                idx.add(i);
+                found.add(new Slot(s, i));
             }
         }
-        int n = m.size();
-        mappings = m.toArray(new ServoMapping[0]);
-        runIndex = idx.stream().mapToInt(Integer::intValue).toArray();
+        slots = found.toArray(new Slot[0]);
+        int n = slots.length;
         driven = new boolean[n];
         packed = new int[n];
         ids = new int[n];
@@ -60,27 +52,22 @@ final class ServoSet {
         goals = new int[n];
         degrees = new double[n];
         errors = new int[n];
-        joint = new double[n];
-        measured = new double[n];
-        have = new boolean[n];
-        clampWarned = new boolean[n];
-        faultShown = new boolean[n];
     }
 
     /** Mapped servos. */
     int size() {
-        return mappings.length;
+        return slots.length;
     }
 
     ServoMapping mapping(int j) {
-        return mappings[j];
+        return slots[j].mapping;
     }
 
     /** Modules of the run without a servo in the profile. */
     List<Integer> unmapped() {
         List<Integer> out = new ArrayList<>();
         for (int i = 0, j = 0; i < runModules.length; i++) {
-            if (j < runIndex.length && runIndex[j] == i) {
+            if (j < slots.length && slots[j].runIndex == i) {
                 j++;
             } else {
                 out.add(runModules[i]);
@@ -91,7 +78,7 @@ final class ServoSet {
 
     /** The mapping of the servo at packed index {@code k}. */
     ServoMapping mappingAt(int k) {
-        return mappings[packed[k]];
+        return slots[packed[k]].mapping;
     }
 
     /**
@@ -99,18 +86,18 @@ final class ServoSet {
      * into its limits (a servo resting beyond them is brought just inside).
      */
     synchronized int holdTicks(int k) {
-        ServoMapping m = mappings[packed[k]];
-        return m.goalTicks(m.clamp(measured[packed[k]]));
+        Slot s = slots[packed[k]];
+        return s.mapping.goalTicks(s.mapping.clamp(s.measured));
     }
 
     /** Packs the driven servos into {@link #ids} and {@link #models}; returns how many. */
     synchronized int pack() {
         int k = 0;
-        for (int j = 0; j < mappings.length; j++) {
+        for (int j = 0; j < slots.length; j++) {
             if (driven[j]) {
                 packed[k] = j;
-                ids[k] = mappings[j].servo();
-                models[k++] = mappings[j].model();
+                ids[k] = slots[j].mapping.servo();
+                models[k++] = slots[j].mapping.model();
             }
         }
         return k;
@@ -118,23 +105,24 @@ final class ServoSet {
 
     /** One tick's setpoints (run order): clamped to each servo's limits, warned once per module. */
     synchronized void accept(long tick, double[] commanded, Consumer<String> warn) {
-        for (int j = 0; j < mappings.length; j++) {
-            double v = commanded[runIndex[j]];
+        for (int j = 0; j < slots.length; j++) {
+            Slot s = slots[j];
+            double v = commanded[s.runIndex];
             if (!Double.isFinite(v)) {
                 continue;
             }
-            ServoMapping m = mappings[j];
+            ServoMapping m = s.mapping;
             double c = m.clamp(v);
             if (c != v) {
                 clamps++;
-                if (!clampWarned[j]) {
-                    clampWarned[j] = true;
+                if (!s.clampWarned) {
+                    s.clampWarned = true;
                     warn.accept(String.format(Locale.ROOT, "module %d commanded %.2f° at tick %d, outside its "
                             + "limits %.2f..%.2f° (%s); sending %.2f° (further clamps are counted)", m.module(), v, tick,
                             m.min(), m.max(), m.where(), c));
                 }
             }
-            joint[j] = c;
+            s.joint = c;
         }
         fresh = true;
         hasSetpoints = true;
@@ -148,7 +136,8 @@ final class ServoSet {
         }
         int n = pack();
         for (int k = 0; k < n; k++) {
-            goals[k] = mappings[packed[k]].goalTicks(joint[packed[k]]);
+            Slot s = slots[packed[k]];
+            goals[k] = s.mapping.goalTicks(s.joint);
         }
         fresh = false;
         return true;
@@ -168,29 +157,29 @@ final class ServoSet {
     int storeReadings(int n, ServoBus bus, Consumer<String> report) throws IOException {
         int newFaults = 0;
         for (int k = 0; k < n; k++) {
-            int j = packed[k];
+            Slot s = slots[packed[k]];
             if (errors[k] == ServoBus.NO_REPLY) {
                 continue;
             }
             synchronized (this) {
-                measured[j] = mappings[j].jointAngle(degrees[k]);
-                have[j] = true;
+                s.measured = s.mapping.jointAngle(degrees[k]);
+                s.have = true;
                 if (!hasSetpoints) {
-                    joint[j] = mappings[j].clamp(measured[j]);
+                    s.joint = s.mapping.clamp(s.measured);
                 }
             }
             boolean faulty = bus.faulty(errors[k]);
-            if (faulty && !faultShown[j]) {
-                faultShown[j] = true;
+            if (faulty && !s.faultShown) {
+                s.faultShown = true;
                 newFaults++;
-                ServoMapping m = mappings[j];
+                ServoMapping m = s.mapping;
                 String what = bus.describeFault(m.servo(), m.model(), errors[k]);
                 report.accept(String.format(Locale.ROOT, "servo %d (module %d) reports %s; it may have turned its "
                         + "torque off: let it cool down or remove the load, then power-cycle it", m.servo(), m.module(),
                         what == null ? String.format("error 0x%02X", errors[k]) : what));
-            } else if (!faulty && faultShown[j]) {
-                faultShown[j] = false;
-                report.accept("servo " + mappings[j].servo() + " (module " + mappings[j].module() + ") reports no fault now");
+            } else if (!faulty && s.faultShown) {
+                s.faultShown = false;
+                report.accept("servo " + s.mapping.servo() + " (module " + s.mapping.module() + ") reports no fault now");
             }
         }
         return newFaults;
@@ -198,20 +187,20 @@ final class ServoSet {
 
     /** Copies measured angles into {@code table}; a servo never read shows its setpoint. */
     synchronized void copyTo(SensorTable table, Channel angle) {
-        for (int j = 0; j < mappings.length; j++) {
-            if (have[j]) {
-                table.set(runIndex[j], angle, measured[j]);
+        for (Slot s : slots) {
+            if (s.have) {
+                table.set(s.runIndex, angle, s.measured);
             } else if (hasSetpoints) {
-                table.set(runIndex[j], angle, joint[j]);
+                table.set(s.runIndex, angle, s.joint);
             }
         }
     }
 
     /** The measured joint angle of run module {@code index}, NaN before any reading. */
     synchronized double measured(int index) {
-        for (int j = 0; j < mappings.length; j++) {
-            if (runIndex[j] == index) {
-                return have[j] ? measured[j] : Double.NaN;
+        for (Slot s : slots) {
+            if (s.runIndex == index) {
+                return s.have ? s.measured : Double.NaN;
             }
         }
         return Double.NaN;
@@ -219,5 +208,26 @@ final class ServoSet {
 
     synchronized long clamps() {
         return clamps;
+    }
+
+    /** One mapped servo: its mapping, its place in the run and what the two threads handed over for it. */
+    private static final class Slot {
+        final ServoMapping mapping;
+        /** Index of its module in the run. */
+        final int runIndex;
+        /** The newest setpoint, clamped into the mapping's limits. */
+        double joint;
+        /** The newest measured joint angle, valid once {@link #have} is set. */
+        double measured;
+        boolean have;
+        /** Whether a clamped setpoint was reported (once per module). */
+        boolean clampWarned;
+        /** Whether the servo's current fault was reported. */
+        boolean faultShown;
+
+        Slot(ServoMapping mapping, int runIndex) {
+            this.mapping = mapping;
+            this.runIndex = runIndex;
+        }
     }
 }
