@@ -8,7 +8,6 @@ import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Composite;
-import org.eclipse.swt.widgets.FileDialog;
 import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.Scale;
 import org.parpe.core.diag.SourcePos;
@@ -189,12 +188,10 @@ final class LiveBar {
             stopScrubbing();
             return;
         }
-        FileDialog d = new FileDialog(row.getShell(), SWT.OPEN);
-        d.setFilterExtensions(new String[] {"*.csv", "*"});
-        d.setText("Open a trace (parpe run --trace FILE.csv) to scrub through");
-        String chosen = d.open();
+        Path chosen = org.parpe.gui.panels.FileDialogs.ask(row.getShell(), SWT.OPEN,
+                "Open a trace (parpe run --trace FILE.csv) to scrub through", "*.csv", null, null);
         if (chosen != null) {
-            scrub(Path.of(chosen));
+            scrub(chosen);
         }
     }
 
