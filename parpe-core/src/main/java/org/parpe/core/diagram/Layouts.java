@@ -204,8 +204,9 @@ public final class Layouts {
         double r1 = 170;
         Scene sc = new Scene(width(600, r.islands()), (int) (600 + r.islands().size() * 18));
         sc.add(new Scene.Text(20, 28, (r.table() ? "gait table " : "automaton ") + r.automaton(), 15, -1, INK, true));
-        sc.add(new Scene.Text(20, 46, "states clockwise from the top" + (r.group() == null ? ""
-                : "; inside, each state's pose of group " + r.group()), 11, -1, GREY, false));
+        // under the ring: the IDE writes its live line under the title
+        sc.add(new Scene.Text(cx, cy + r1 + 56, "states clockwise from the top" + (r.group() == null ? ""
+                : "; inside, each state's pose of group " + r.group()), 11, 0, GREY, false));
         for (Ring.Arc a : r.arcs()) {
             sc.add(new Scene.Sector(cx, cy, r0, r1, a.from(), a.to(), PALETTE[a.index() % PALETTE.length], 0xffffff, a.pos()));
             double[] p = Scene.onCircle(cx, cy, (r0 + r1) / 2, (a.from() + a.to()) / 2);
