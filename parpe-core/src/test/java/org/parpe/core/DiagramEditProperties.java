@@ -61,7 +61,7 @@ class DiagramEditProperties {
                     p.group(i.group().replace("!", "").trim()).ifPresent(g -> Diagrams.wheel(i, g));
                 }
             }
-            p.automata().forEach(Diagrams::ring);
+            p.automata().forEach(a -> Diagrams.ring(p, a));
             assertEquals(before, new TextEdit(List.of()).apply(before), f.toString());
             assertEquals(before, Files.readString(f), f + " changed on disk");
         }

@@ -73,7 +73,7 @@ class DiagramsTest {
 
     @Test
     void ringArcsAreProportionalToTheDurations() {
-        Ring r = Diagrams.ring(load("centipede-walk.xml").automaton("step").orElseThrow());
+        Ring r = Diagrams.ring(load("centipede-walk.xml"), load("centipede-walk.xml").automaton("step").orElseThrow());
         // times="0.5, 0.5, 2": arcs of 1/6, 1/6 and 2/3 of the circle
         assertEquals(3, r.arcs().size());
         assertEquals(1 / 6.0, r.arcs().get(0).to(), 1e-12);
@@ -82,8 +82,55 @@ class DiagramsTest {
         assertEquals("stance", r.arcs().get(2).state());
         assertEquals(List.of("-press"), r.arcs().get(2).angles());
         assertTrue(r.islands().isEmpty());
-        Ring exit = Diagrams.ring(load("sensor-exit.xml").automata().get(0));
+        Program sensor = load("sensor-exit.xml");
+        Ring exit = Diagrams.ring(sensor, sensor.automata().get(0));
         assertTrue(exit.arcs().stream().anyMatch(a -> a.exit() != null), "sensor-exit has an exit condition");
+    }
+
+    @Test
+    void eachStateIsPosedOnTheGroupItIsPlayedOn() {
+        String text = "<program><robot><structure><b elements=\"0..2\"/></structure></robot>"
+                + "<controls><k type=\"slider\" min=\"0\" max=\"90\" value=\"30\"/></controls>"
+                + "<behaviors><go><w group=\"b\"/></go></behaviors>"
+                + "<automata><w states=\"bent, per, live\" times=\"1, 1, 1\"/></automata>"
+                + "<states><bent angles=\"0, 90, 0\"/><per angles=\"$k + 10 * $index\"/><live angles=\"30 * sin($time)\"/>"
+                + "</states></program>";
+        Program p = ScriptLoader.loadText(Path.of("t.xml"), text, Map.of()).program();
+        Ring r = Diagrams.ring(p, p.automata().get(0));
+        assertEquals("b", r.group());
+        assertEquals(3, r.modules());
+        Ring.Arc bent = r.arcs().get(0);
+        assertEquals(List.of(0.0, 90.0, 0.0), bent.pose());
+        double[][] c = bent.chain(10);
+        // the first segment points right; the middle joint turns the rest of the chain by 90°,
+        // upwards on the screen, and the last joint does not turn it further
+        assertEquals(0, direction(c, 0), 1e-9);
+        assertEquals(90, direction(c, 1), 1e-9);
+        assertEquals(90, direction(c, 2), 1e-9);
+        assertEquals(10, c[1][0], 1e-9);
+        assertEquals(-10, c[2][1] - c[1][1], 1e-9, "y grows downwards, so turning left goes up");
+        // one angle for the whole group, from a control at its declared value and each module's $index
+        assertEquals(List.of(30.0, 40.0, 50.0), r.arcs().get(1).pose());
+        assertTrue(r.arcs().get(2).pose().isEmpty(), "an angle known only while running is not posed");
+    }
+
+    @Test
+    void aPoseOnAMirroredGroupIsNegatedAndCutAfterTwelveModules() {
+        String text = "<program><robot><structure><b elements=\"0..19\"/></structure></robot>"
+                + "<behaviors><go><w group=\"!b\"/></go></behaviors>"
+                + "<automata><w states=\"s\" times=\"1\"/></automata><states><s angles=\"20\"/></states></program>";
+        Program p = ScriptLoader.loadText(Path.of("t.xml"), text, Map.of()).program();
+        Ring r = Diagrams.ring(p, p.automata().get(0));
+        assertEquals("!b", r.group());
+        assertEquals(20, r.modules());
+        assertEquals(Diagrams.POSE_MODULES, r.arcs().get(0).pose().size());
+        assertTrue(r.arcs().get(0).pose().stream().allMatch(a -> a == -20.0));
+    }
+
+    private static double direction(double[][] chain, int segment) {
+        double[] a = chain[segment];
+        double[] b = chain[segment + 1];
+        return Math.toDegrees(Math.atan2(-(b[1] - a[1]), b[0] - a[0]));
     }
 
     @Test
@@ -91,7 +138,8 @@ class DiagramsTest {
         String text = "<program><robot><structure><b elements=\"0\"/></structure></robot>"
                 + "<controls><t type=\"slider\" min=\"1\" max=\"3\" value=\"1\"/></controls>"
                 + "<automata><w states=\"s, s\" times=\"2, $t\"/></automata><states><s angles=\"1\"/></states></program>";
-        Ring r = Diagrams.ring(ScriptLoader.loadText(Path.of("t.xml"), text, Map.of()).program().automata().get(0));
+        Program p = ScriptLoader.loadText(Path.of("t.xml"), text, Map.of()).program();
+        Ring r = Diagrams.ring(p, p.automata().get(0));
         assertEquals(0.5, r.arcs().get(0).to(), 1e-12, "the unknown duration is drawn at the mean of the known ones");
         assertEquals(1, r.islands().size());
         assertEquals(1, r.islands().get(0).pos().line());

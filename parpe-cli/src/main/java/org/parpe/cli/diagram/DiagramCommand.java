@@ -130,7 +130,7 @@ public final class DiagramCommand implements Callable<Integer> {
             case lanes:
                 return Layouts.lanes(Diagrams.swimlanes(p, behavior(p)));
             case ring:
-                return Layouts.ring(Diagrams.ring(automaton(p)));
+                return Layouts.ring(Diagrams.ring(p, automaton(p)));
             case phase:
                 return phase(p);
             default:

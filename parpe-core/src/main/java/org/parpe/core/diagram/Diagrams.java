@@ -119,9 +119,12 @@ public final class Diagrams {
     /**
      * The ring of {@code a}. Arc lengths follow the durations that are constants (parameters
      * are fixed in a loaded program); a duration that depends on the run (a control, a module's
-     * own values) gets the mean of the others' share, and a text island says so.
+     * own values) gets the mean of the others' share, and a text island says so. Each state
+     * carries its pose on the group the automaton is first played on ({@link #pose}).
      */
-    public static Ring ring(Automaton a) {
+    public static Ring ring(Program p, Automaton a) {
+        MainEntry.GroupRef on = playedOn(p, a);
+        Group group = on == null ? null : p.group(on.name()).orElse(null);
         int n = a.states().size();
         double[] seconds = new double[n];
         double known = 0;
@@ -152,11 +155,64 @@ public final class Diagrams {
             double share = total > 0 ? len[i] / total : 1.0 / n;
             Timing t = a.times().get(i);
             List<String> angles = a.states().get(i).angles().stream().map(Expression::text).toList();
-            arcs.add(new Ring.Arc(i, a.states().get(i).name(), t.duration().text(), text(t.exit()), angles, seconds[i], at,
-                    i == n - 1 ? 1.0 : at + share, a.states().get(i).pos()));
+            List<Double> pose = group == null ? List.of() : pose(p, a.states().get(i), group, on.mirror());
+            arcs.add(new Ring.Arc(i, a.states().get(i).name(), t.duration().text(), text(t.exit()), angles, pose,
+                    seconds[i], at, i == n - 1 ? 1.0 : at + share, a.states().get(i).pos()));
             at += share;
         }
-        return new Ring(a.name(), a.table(), arcs, islands, a.pos());
+        return new Ring(a.name(), a.table(), group == null ? null : (on.mirror() ? "!" : "") + group.name(),
+                group == null ? 0 : group.size(), arcs, islands, a.pos());
+    }
+
+    /** The group of the first instance of {@code a} (behaviors in order), or {@code null}. */
+    private static MainEntry.GroupRef playedOn(Program p, Automaton a) {
+        for (Behavior b : p.behaviors()) {
+            for (Instance in : b.instances()) {
+                if (in.automaton().equals(a.name())) {
+                    MainEntry entry = p.main() == null ? null : p.main().entries().stream()
+                            .filter(e -> e.behavior().equals(b.name())).findFirst().orElse(null);
+                    return entry != null ? entry.groupOf(in) : in.groupRef();
+                }
+            }
+        }
+        return null;
+    }
+
+    /** At most this many modules of a group are posed on the ring (the rest is "…"). */
+    public static final int POSE_MODULES = 12;
+
+    /**
+     * The target angles in degrees of {@code s} for the first {@link #POSE_MODULES} modules of
+     * {@code g} (negated on a mirrored group, as the engine does), evaluated as the engine
+     * evaluates them at the start of a run: controls at their declared values, {@code $index},
+     * {@code $count} and {@code $id} of each module. Empty when an angle is known only while
+     * running (time, sensors, macros, random numbers) or the state does not fit the group.
+     */
+    static List<Double> pose(Program p, org.parpe.core.model.StateDef s, Group g, boolean mirror) {
+        int n = g.size();
+        int k = s.angles().size();
+        if (k != 1 && k != n) {
+            return List.of();
+        }
+        EvalContext ctx = new EvalContext();
+        ctx.controls = p.controls().stream().mapToDouble(org.parpe.core.model.Control::value).toArray();
+        ctx.count = n;
+        List<Double> out = new ArrayList<>();
+        for (int i = 0; i < Math.min(n, POSE_MODULES); i++) {
+            Expression e = s.angles().get(k == 1 ? 0 : i);
+            if (!StaticValue.known(e)) {
+                return List.of();
+            }
+            ctx.index = i;
+            ctx.id = g.modules().get(i);
+            try {
+                double v = e.eval(ctx);
+                out.add(mirror ? -v : v);
+            } catch (org.parpe.core.expr.EvalException x) {
+                return List.of();
+            }
+        }
+        return out;
     }
 
     /**

@@ -204,6 +204,9 @@ public final class Layouts {
         double r1 = 170;
         Scene sc = new Scene(width(600, r.islands()), (int) (600 + r.islands().size() * 18));
         sc.add(new Scene.Text(20, 28, (r.table() ? "gait table " : "automaton ") + r.automaton(), 15, -1, INK, true));
+        // under the ring: the IDE writes its live line under the title
+        sc.add(new Scene.Text(cx, cy + r1 + 56, "states clockwise from the top" + (r.group() == null ? ""
+                : "; inside, each state's pose of group " + r.group()), 11, 0, GREY, false));
         for (Ring.Arc a : r.arcs()) {
             sc.add(new Scene.Sector(cx, cy, r0, r1, a.from(), a.to(), PALETTE[a.index() % PALETTE.length], 0xffffff, a.pos()));
             double[] p = Scene.onCircle(cx, cy, (r0 + r1) / 2, (a.from() + a.to()) / 2);
@@ -220,8 +223,11 @@ public final class Layouts {
                 sc.add(new Scene.Text(q[0], q[1] + 4, "exit when " + a.exit(), 11, q[0] < cx - 5 ? 1 : q[0] > cx + 5 ? -1 : 0,
                         RED, true));
             }
+            if (r.group() != null) {
+                // between the centre's ΣT and the band the IDE's live overlay draws just inside the ring
+                pose(sc, r, a, Scene.onCircle(cx, cy, r0 - 52, (a.from() + a.to()) / 2), 2 * Math.PI * (r0 - 52) / r.arcs().size());
+            }
         }
-        sc.add(new Scene.Text(cx, cy + 24, "clockwise from the top", 10, 0, GREY, false));
         double total = 0;
         boolean known = true;
         for (Ring.Arc a : r.arcs()) {
@@ -232,6 +238,42 @@ public final class Layouts {
                 13, 0, GREY, false));
         islands(sc, r.islands(), 560);
         return sc;
+    }
+
+    /**
+     * The pose of {@code a}'s state centred on {@code at}: a chain of at most 40 px (narrower
+     * when the states are many), module 0 a dot of the state's colour, "…" after the last posed
+     * module of a longer group; the angles' text when they are known only while running.
+     */
+    private static void pose(Scene sc, Ring r, Ring.Arc a, double[] at, double room) {
+        if (a.pose().isEmpty()) {
+            String angles = String.join(", ", a.angles());
+            sc.add(new Scene.Text(at[0], at[1] + 4, angles.length() > 12 ? angles.substring(0, 11) + "…" : angles, 9, 0, GREY,
+                    false));
+            return;
+        }
+        double length = Math.max(12, Math.min(40, 0.7 * room));
+        double[][] p = a.chain(length / a.pose().size());
+        double minX = 0;
+        double maxX = 0;
+        double minY = 0;
+        double maxY = 0;
+        for (double[] q : p) {
+            minX = Math.min(minX, q[0]);
+            maxX = Math.max(maxX, q[0]);
+            minY = Math.min(minY, q[1]);
+            maxY = Math.max(maxY, q[1]);
+        }
+        double dx = at[0] - (minX + maxX) / 2;
+        double dy = at[1] - (minY + maxY) / 2;
+        for (int i = 0; i + 1 < p.length; i++) {
+            sc.add(new Scene.Line(p[i][0] + dx, p[i][1] + dy, p[i + 1][0] + dx, p[i + 1][1] + dy, INK, 2, 0));
+        }
+        sc.add(new Scene.Sector(p[0][0] + dx, p[0][1] + dy, 0, 3, 0, 1, PALETTE[a.index() % PALETTE.length], INK, null));
+        if (r.modules() > a.pose().size()) {
+            double[] end = p[p.length - 1];
+            sc.add(new Scene.Text(end[0] + dx + 2, end[1] + dy + 4, "…", 10, -1, GREY, false));
+        }
     }
 
     /** The phase wheel: a tick per module at its phase delay, module numbers outside. */

@@ -9,11 +9,14 @@ import org.parpe.core.diag.SourcePos;
  *
  * @param automaton the automaton
  * @param table     whether it is a gait table (its rows are the states)
+ * @param group     the group its states are posed on (the first it is played on, {@code !} when
+ *                  mirrored), or {@code null} when no behavior plays it
+ * @param modules   that group's size (0 without a group)
  * @param arcs      one arc per state, in cycle order, together covering the circle
  * @param islands   what the ring cannot show (durations it had to estimate)
  * @param pos       the automaton's element
  */
-public record Ring(String automaton, boolean table, List<Arc> arcs, List<TextIsland> islands, SourcePos pos) {
+public record Ring(String automaton, boolean table, String group, int modules, List<Arc> arcs, List<TextIsland> islands, SourcePos pos) {
 
     public Ring {
         arcs = List.copyOf(arcs);
@@ -28,16 +31,37 @@ public record Ring(String automaton, boolean table, List<Arc> arcs, List<TextIsl
      * @param duration its duration as written
      * @param exit     its exit condition as written, or {@code null}
      * @param angles   its target angles as written (one for the whole group, or one per module)
+     * @param pose     its angles in degrees on the first {@link Diagrams#POSE_MODULES} modules of
+     *                 {@code group}, or empty when they are known only while running
      * @param seconds  its duration in seconds, or {@code NaN} when it is not a constant
      * @param from     where the arc starts, as a fraction of the circle (0 at the top, clockwise)
      * @param to       where it ends
      * @param pos      the state's definition
      */
-    public record Arc(int index, String state, String duration, String exit, List<String> angles, double seconds,
+    public record Arc(int index, String state, String duration, String exit, List<String> angles, List<Double> pose,
+                      double seconds,
                       double from, double to, SourcePos pos) {
 
         public Arc {
             angles = List.copyOf(angles);
+            pose = List.copyOf(pose);
+        }
+
+        /**
+         * The pose as a planar chain from (0, 0), one segment of length {@code segment} per
+         * module: each module's joint turns the rest of the chain by its angle, counter-clockwise
+         * on the screen (y grows downwards), so segment {@code i} points at the sum of the angles
+         * of modules 0…i, 0° being to the right. Point {@code i + 1} ends segment {@code i}.
+         */
+        public double[][] chain(double segment) {
+            double[][] points = new double[pose.size() + 1][2];
+            double heading = 0;
+            for (int i = 0; i < pose.size(); i++) {
+                heading += Math.toRadians(pose.get(i));
+                points[i + 1][0] = points[i][0] + segment * Math.cos(heading);
+                points[i + 1][1] = points[i][1] - segment * Math.sin(heading);
+            }
+            return points;
         }
     }
 }

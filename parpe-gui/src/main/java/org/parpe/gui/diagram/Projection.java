@@ -274,7 +274,7 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         }
         String chosen = names.contains(subject) ? subject : names.get(0);
         final Automaton a = p.automaton(chosen).orElseThrow();
-        Ring r = Diagrams.ring(a);
+        Ring r = Diagrams.ring(p, a);
         if (mine(a.pos(), file)) {
             if (!a.table()) {
                 targets.put(a.pos(), new Target("automaton " + a.name() + " (click an arc for a state)", List.of(
