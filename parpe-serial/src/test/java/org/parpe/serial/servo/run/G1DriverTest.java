@@ -95,6 +95,29 @@ class G1DriverTest {
     }
 
     @Test
+    void aModuleStoppedOnItsWatchdogIsResumedWhenItIsRead() throws Exception {
+        // --port resumes a module as soon as a read shows its watchdog latch; the servo driver
+        // checked one servo per 100 ms, so 20 modules stayed stopped for up to 2 s. Failed before.
+        double[] angles = new double[MODULES.length];
+        java.util.Arrays.fill(angles, 5);
+        driver.accept(0, 0, angles);
+        driver.cycle();
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
+        while (!IntStream.of(MODULES).allMatch(g1::isSafeStopped)) {
+            assertTrue(System.nanoTime() < deadline, "every module stopped on its watchdog without frames");
+            Thread.sleep(10);
+        }
+        for (int c = 0; c < 2 * MODULES.length; c++) {
+            driver.cycle();
+        }
+        for (int id : MODULES) {
+            assertTrue(!g1.isSafeStopped(id), "module " + id + " resumed after two rounds of reads");
+        }
+        assertTrue(reports.contains("bus: servo 7 had stopped on its watchdog (a gap of more than "
+                + HardwareProfile.DEFAULT_WATCHDOG_MS + " ms in the bus traffic); resuming it"), reports.toString());
+    }
+
+    @Test
     void roundRobinReadsReachEveryModule() throws Exception {
         driver.start(new RunInfo(null, MODULES, 0.01));
         double[] angles = new double[MODULES.length];
