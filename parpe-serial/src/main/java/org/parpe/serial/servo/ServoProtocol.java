@@ -8,21 +8,23 @@ import java.util.List;
  */
 public enum ServoProtocol {
     /** PARPE's reconstructed PolyBot G1 module bus (docs/hardware-protocol.md). */
-    G1("g1", 254, List.of(115_200, 1_000_000, 57_600, 9_600)),
+    G1("g1", 254, false, List.of(115_200, 1_000_000, 57_600, 9_600)),
     /** Dynamixel Protocol 2.0 (X series: XL330, XL430, XM430, …). */
-    DXL2("dxl2", 252, List.of(57_600, 1_000_000, 115_200, 2_000_000, 3_000_000, 4_000_000, 9_600)),
+    DXL2("dxl2", 252, true, List.of(57_600, 1_000_000, 115_200, 2_000_000, 3_000_000, 4_000_000, 9_600)),
     /** Feetech STS series (STS3215, …): little-endian control table. */
-    STS("sts", 253, List.of(1_000_000, 500_000, 115_200, 57_600, 250_000, 128_000, 76_800, 38_400)),
+    STS("sts", 253, true, List.of(1_000_000, 500_000, 115_200, 57_600, 250_000, 128_000, 76_800, 38_400)),
     /** Feetech SCS series (SCS15, SCS0009, …): big-endian control table. */
-    SCS("scs", 253, List.of(1_000_000, 500_000, 115_200, 57_600, 250_000, 128_000, 76_800, 38_400));
+    SCS("scs", 253, true, List.of(1_000_000, 500_000, 115_200, 57_600, 250_000, 128_000, 76_800, 38_400));
 
     private final String key;
     private final int maxId;
+    private final boolean groupRead;
     private final List<Integer> scanBauds;
 
-    ServoProtocol(String key, int maxId, List<Integer> scanBauds) {
+    ServoProtocol(String key, int maxId, boolean groupRead, List<Integer> scanBauds) {
         this.key = key;
         this.maxId = maxId;
+        this.groupRead = groupRead;
         this.scanBauds = scanBauds;
     }
 
@@ -38,6 +40,17 @@ public enum ServoProtocol {
      */
     public int maxId() {
         return maxId;
+    }
+
+    /**
+     * Whether a run reads every servo each read cycle, because one write asks them all (Sync Read
+     * on Dynamixel 2.0 and Feetech STS, the SCS servos' READs queued in one write) and their
+     * replies follow each other at once. G1 modules are read one READ transaction at a time,
+     * each waiting for its reply: a run reads one module per read cycle, round robin, so that a
+     * setpoint frame never waits for more than one read.
+     */
+    public boolean groupRead() {
+        return groupRead;
     }
 
     /** Baud rates a scan tries, most common (the factory default) first. */

@@ -23,7 +23,8 @@ import org.parpe.serial.servo.profile.ServoMapping;
  * Drives the servos of a hardware profile from a run. The engine's setpoints are clamped to each
  * servo's limits (warned once per module, counted always) and turned into goal ticks; a bus
  * thread sends them in one packet, repeats them as a keepalive, and reads present positions,
- * which become the modules' measured angles. A servo reporting a fault (overload, overheating,
+ * which become the modules' measured angles: every servo each read cycle where the protocol has a
+ * group read, one servo per read cycle, round robin, where it has none (G1). A servo reporting a fault (overload, overheating,
  * voltage) is reported in words. When every servo falls silent or the device goes away, the
  * driver reports it at once, keeps looking and resumes when they are back.
  */
@@ -45,6 +46,13 @@ public final class ServoDriver extends BusThread {
     private long watchdogResumes;
     private long lastWatchdogCheck;
     private int watchdogCursor;
+    /** Reads one servo per read cycle (the protocol has no group read), this one next. */
+    private final boolean roundRobin;
+    private int readCursor;
+    private final int[] oneId = new int[1];
+    private final ServoModel[] oneModel = new ServoModel[1];
+    private final double[] oneDegrees = new double[1];
+    private final int[] oneError = new int[1];
     private final List<Integer> answeredOther = new ArrayList<>();
     private final List<Integer> limp = new ArrayList<>();
 
@@ -55,6 +63,7 @@ public final class ServoDriver extends BusThread {
         this.bus = bus;
         this.profile = profile;
         this.set = new ServoSet(profile, runModules);
+        this.roundRobin = !profile.protocol().groupRead();
     }
 
     /**
@@ -141,7 +150,7 @@ public final class ServoDriver extends BusThread {
         boolean[] known = new boolean[n];
         for (int a = 0, left = n; a < attempts && left > 0; a++) {
             bus.readPositions(set.ids, set.models, n, set.degrees, set.errors);
-            set.storeReadings(n, bus, this::fault);
+            set.storeReadings(0, n, bus, this::fault);
             for (int k = 0; k < n; k++) {
                 if (!known[k] && set.errors[k] != ServoBus.NO_REPLY) {
                     known[k] = true;
@@ -272,14 +281,20 @@ public final class ServoDriver extends BusThread {
             }
         }
         if (read) {
-            int answered = sent ? bus.writeGoalsAndRead(set.ids, set.models, set.goals, n, set.degrees, set.errors)
+            if (roundRobin && sent) {
+                bus.writeGoals(set.ids, set.models, set.goals, n);
+            }
+            int answered = roundRobin ? readNext(n)
+                    : sent ? bus.writeGoalsAndRead(set.ids, set.models, set.goals, n, set.degrees, set.errors)
                     : bus.readPositions(set.ids, set.models, n, set.degrees, set.errors);
             reads++;
             if (answered > 0) {
                 answeredNow();
                 failedReads = 0;
-                faults += set.storeReadings(n, bus, this::fault);
-                checkWatchdog(n);
+                if (!roundRobin) {
+                    faults += set.storeReadings(0, n, bus, this::fault);
+                    checkWatchdog(n);
+                }
             } else if (n > 0) {
                 readFailures++;
                 // Dead: no answer for the dead-bus time and more failed reads in a row than retries.
@@ -296,6 +311,27 @@ public final class ServoDriver extends BusThread {
         }
     }
 
+    /**
+     * Reads the present position of the next servo, round robin, and stores it; a servo whose
+     * reply says it stopped on its own watchdog is resumed at once. Returns 1 when it answered.
+     */
+    private int readNext(int n) throws IOException {
+        if (n == 0) {
+            return 0;
+        }
+        int k = readCursor = (readCursor + 1) % n;
+        oneId[0] = set.ids[k];
+        oneModel[0] = set.models[k];
+        int answered = bus.readPositions(oneId, oneModel, 1, oneDegrees, oneError);
+        set.errors[k] = oneError[0];
+        if (answered > 0) {
+            set.degrees[k] = oneDegrees[0];
+            faults += set.storeReadings(k, k + 1, bus, this::fault);
+            resumeIfTripped(k);
+        }
+        return answered;
+    }
+
     /** Every {@value #WATCHDOG_CHECK_MS} ms, one servo: resumed if it stopped on its own watchdog. */
     private void checkWatchdog(int n) throws IOException {
         long now = System.nanoTime();
@@ -303,7 +339,11 @@ public final class ServoDriver extends BusThread {
             return;
         }
         lastWatchdogCheck = now;
-        int k = watchdogCursor++ % n;
+        resumeIfTripped(watchdogCursor++ % n);
+    }
+
+    /** Packed servo {@code k} is resumed if its last reply said it stopped on its own watchdog. */
+    private void resumeIfTripped(int k) throws IOException {
         if (bus.resumeIfTripped(set.ids[k], set.models[k], set.errors[k], profile.watchdogMs())) {
             watchdogResumes++;
             watchdogResumed(set.ids[k], profile.watchdogMs());

@@ -151,12 +151,13 @@ final class ServoSet {
     }
 
     /**
-     * Stores what a position read left in {@link #degrees} and {@link #errors}; reports each servo
-     * that starts or stops reporting a fault. Returns the number of new faults.
+     * Stores what a position read of packed servos {@code from…to)} left in {@link #degrees} and
+     * {@link #errors}; reports each servo that starts or stops reporting a fault. Returns the
+     * number of new faults.
      */
-    int storeReadings(int n, ServoBus bus, Consumer<String> report) throws IOException {
+    int storeReadings(int from, int to, ServoBus bus, Consumer<String> report) throws IOException {
         int newFaults = 0;
-        for (int k = 0; k < n; k++) {
+        for (int k = from; k < to; k++) {
             Slot s = slots[packed[k]];
             if (errors[k] == ServoBus.NO_REPLY) {
                 continue;
