@@ -4,8 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 
 import org.eclipse.swt.SWT;
-import org.eclipse.swt.custom.CTabFolder;
-import org.eclipse.swt.custom.CTabItem;
 import org.eclipse.swt.graphics.Point;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Event;
@@ -37,25 +35,13 @@ final class DiagramDriver {
 
     /** Brings the Diagram tab to the front and waits for its first drawing. */
     void front() {
-        CTabFolder folder = (CTabFolder) pane().control().getParent();
-        for (CTabItem item : folder.getItems()) {
-            if (item.getControl() == pane().control()) {
-                folder.setSelection(item);
-                folder.notifyListeners(SWT.Selection, new Event());
-            }
-        }
+        assertEquals("Diagram", pane().showTab());
         IdeAccess.pump(() -> pane().current(), "the diagram of the text");
     }
 
     /** Shows view {@code v} on {@code subject} (null: the default one) and waits until it shows the text. */
     void show(View v, String subject) {
-        if (subject == null) {
-            pane().setView(v);
-        } else {
-            pane().setView(v, subject);
-        }
-        IdeAccess.pump(() -> pane().current() && pane().shown().view() == v
-                && (subject == null || subject.equals(pane().shown().subject())), v + " view of the text");
+        DiagramWindow.show(ide, v, subject);
     }
 
     /** Waits until the diagram shows the text as it is now. */
