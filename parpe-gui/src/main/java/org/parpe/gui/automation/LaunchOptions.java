@@ -59,12 +59,6 @@ public record LaunchOptions(Path file, double runFor, Path screenshot, boolean e
         boolean help;
     }
 
-    /** Options without {@code --help}. */
-    public LaunchOptions(Path file, double runFor, Path screenshot, boolean exit, boolean bench, boolean posePanel,
-                         String grid) {
-        this(file, runFor, screenshot, exit, bench, posePanel, grid, false);
-    }
-
     /** Whether anything automatic is requested. */
     public boolean automated() {
         return runFor >= 0 || screenshot != null || exit || posePanel || grid != null;
