@@ -47,23 +47,14 @@ final class CsvExport {
     }
 
     /**
-     * Writes the header for {@code axes} and then the CSV lines already in {@code lines} (the
-     * rows {@link Results} did not keep went there as they came) to {@code file}.
+     * Writes the header for {@code axes} and then the CSV lines in {@code lines} (the rows
+     * {@link Results} did not keep went to its temporary file as they came) to {@code file}.
      */
-    static void write(Path file, List<Axis> axes, Path lines) throws IOException {
+    static void write(Path file, List<Axis> axes, Results.Spill lines) throws IOException {
         AtomicFiles.write(file, out -> {
             out.write((SweepCsv.header(axes) + "\n").getBytes(StandardCharsets.UTF_8));
-            java.nio.file.Files.copy(lines, out);
+            lines.copyTo(out);
         });
-    }
-
-    /** The rows of {@code results} to {@code file}: from memory, or from its temporary file when it did not keep them all. */
-    static void write(Path file, Results results, List<SweepRow> kept, Path spilled, int runs) throws IOException {
-        if (spilled != null) {
-            write(file, axes(results.parameters()), spilled);
-        } else {
-            write(file, axes(results.parameters()), kept, runs);
-        }
     }
 
     /** What became of a save: whether it worked, and a line to show. */
@@ -77,17 +68,28 @@ final class CsvExport {
      */
     static void inBackground(Display display, Path file, Results results, int runs, Outcome outcome) {
         List<SweepRow> kept = results.complete() ? List.copyOf(results.rows()) : List.of();
-        Path spilled = results.complete() ? null : results.spilled();
         int count = results.count();
-        if (!results.complete() && spilled == null) {
+        Results.Spill spill;
+        try {
+            spill = results.complete() ? null : results.spill();
+        } catch (IOException e) {
+            outcome.done(false, "Cannot save " + file + ": " + e.getMessage());
+            return;
+        }
+        if (!results.complete() && spill == null) {
             outcome.done(false, "Cannot save " + file + ": " + results.spillError());
             return;
         }
+        List<Axis> axes = axes(results.parameters());
         Thread t = new Thread(() -> {
             boolean ok;
             String said;
-            try {
-                write(file, results, kept, spilled, runs);
+            try (Results.Spill lines = spill) {
+                if (lines != null) {
+                    write(file, axes, lines);
+                } else {
+                    write(file, axes, kept, runs);
+                }
                 ok = true;
                 said = "Saved " + count + " rows to " + file;
             } catch (IOException | RuntimeException e) {

@@ -166,11 +166,18 @@ final class Results {
         all.forEach(this::add);
     }
 
+    /** The temporary file with the rows' CSV lines, or null (see {@link #spill}). */
+    Path spillFile() {
+        return spill;
+    }
+
     /**
-     * The temporary file with every row's CSV line, complete up to now; null while {@link #complete},
-     * or when it could not be written ({@link #spillError}).
+     * The rows' CSV lines in the temporary file as they stand now, opened for reading: null while
+     * {@link #complete}, or when the file could not be written ({@link #spillError}). The reader
+     * sees whole lines only, however many rows come after, and can still read them after
+     * {@link #discard} (a new sweep began while Save CSV… writes). The caller closes it.
      */
-    Path spilled() {
+    Spill spill() throws java.io.IOException {
         try {
             if (spillOut != null) {
                 spillOut.flush();
@@ -178,7 +185,27 @@ final class Results {
         } catch (java.io.IOException e) {
             lost(e);
         }
-        return spill;
+        if (spill == null) {
+            return null;
+        }
+        java.nio.channels.FileChannel in = java.nio.channels.FileChannel.open(spill, java.nio.file.StandardOpenOption.READ);
+        return new Spill(in, in.size());
+    }
+
+    /** The first {@code bytes} of an open temporary file: whole CSV lines. */
+    record Spill(java.nio.channels.FileChannel in, long bytes) implements AutoCloseable {
+        /** Copies the lines to {@code out}. */
+        void copyTo(java.io.OutputStream out) throws java.io.IOException {
+            java.nio.channels.WritableByteChannel to = java.nio.channels.Channels.newChannel(out);
+            for (long at = 0; at < bytes;) {
+                at += in.transferTo(at, bytes - at, to);
+            }
+        }
+
+        @Override
+        public void close() throws java.io.IOException {
+            in.close();
+        }
     }
 
     /** Deletes the temporary file, if any (the dialog closed, or another sweep began). */

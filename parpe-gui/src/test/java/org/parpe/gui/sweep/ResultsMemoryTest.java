@@ -58,7 +58,9 @@ class ResultsMemoryTest {
         assertEquals(all.stream().filter(x -> x.ok() && x.fell()).count(), r.fell());
         assertTrue(!r.complete());
         Path csv = dir.resolve("all.csv");
-        CsvExport.write(csv, r, List.of(), r.spilled(), RUNS);
+        try (Results.Spill spill = r.spill()) {
+            CsvExport.write(csv, CsvExport.axes(List.of("amp")), spill);
+        }
         List<String> lines = Files.readAllLines(csv);
         List<String> expected = new ArrayList<>();
         expected.add(SweepCsv.header(CsvExport.axes(List.of("amp"))));
@@ -66,9 +68,63 @@ class ResultsMemoryTest {
             expected.addAll(SweepCsv.line(x, RUNS).lines().toList());
         }
         assertEquals(expected, lines, "Save CSV\u2026 writes every row, as parpe sweep --out would");
-        Path spill = r.spilled();
+        Path spill = r.spillFile();
         r.discard();
         assertTrue(!Files.exists(spill), "the temporary file is deleted");
+    }
+
+    private static Results filled(Path dir, int rows) {
+        Results r = new Results(dir.resolve("s.xml"), Results.Mode.SWEEP, List.of("amp"), Map.of("amp", 0.0),
+                Objective.FORWARD_SPEED, Constraints.NONE, 100, RUNS);
+        for (int i = 0; i < rows; i++) {
+            r.add(row(i));
+        }
+        return r;
+    }
+
+    private static List<String> expected(int rows) {
+        List<String> lines = new ArrayList<>();
+        lines.add(SweepCsv.header(CsvExport.axes(List.of("amp"))));
+        for (int i = 0; i < rows; i++) {
+            lines.addAll(SweepCsv.line(row(i), RUNS).lines().toList());
+        }
+        return lines;
+    }
+
+    /**
+     * Save CSV… during a sweep writes the rows that had come when it was chosen, whole lines only,
+     * although the sweep goes on writing the temporary file while the save copies it (it used to
+     * copy to the file's end, which could stop in the middle of a line).
+     */
+    @Test
+    void aSaveDuringASweepWritesTheRowsThatHadComeAndNoHalfLine() throws Exception {
+        Results r = filled(dir, 300);
+        try (Results.Spill s = r.spill()) {
+            for (int i = 300; i < RUNS; i++) {
+                r.add(row(i));
+            }
+            Path csv = dir.resolve("during.csv");
+            CsvExport.write(csv, CsvExport.axes(List.of("amp")), s);
+            List<String> saved = Files.readAllLines(csv);
+            assertEquals(301, saved.size(), "the header and the 300 rows that had come");
+            assertEquals(expected(300), saved);
+        }
+    }
+
+    /**
+     * A new sweep started (or the dialog closed) while Save CSV… is still writing deletes the old
+     * temporary file; the save still writes every row it was asked for (it used to fail with
+     * "no such file").
+     */
+    @Test
+    void aSaveOutlivesTheSweepThatStartedIt() throws Exception {
+        Results r = filled(dir, 500);
+        try (Results.Spill s = r.spill()) {
+            r.discard();
+            Path csv = dir.resolve("after.csv");
+            CsvExport.write(csv, CsvExport.axes(List.of("amp")), s);
+            assertEquals(expected(500), Files.readAllLines(csv));
+        }
     }
 
     @Test
@@ -80,7 +136,7 @@ class ResultsMemoryTest {
         }
         assertTrue(r.complete());
         assertEquals(50, r.rows().size());
-        assertNull(r.spilled());
+        assertNull(r.spillFile());
         assertNotNull(r.best());
     }
 }
