@@ -137,9 +137,9 @@ public final class IdeWindow implements HardwareHost {
         main.setWeights(15, 43, 42);
         gaitGrid.onShown(v -> main.setWeights(v ? new int[] {11, 61, 28} : new int[] {15, 43, 42}));
         // Sane minimums at 1366x768: the outline, the editor, the 3D view's tools, Problems and the plots stay usable.
-        Panels.keepMinimum(main, 120, 420, 300);
-        Panels.keepMinimum(middle, 160, 90);
-        Panels.keepMinimum(right, 150, 70, 100);
+        SashMinimum.keepMinimum(main, 120, 420, 300);
+        SashMinimum.keepMinimum(middle, 160, 90);
+        SashMinimum.keepMinimum(right, 150, 70, 100);
         this.mainSash = main;
 
         status = new StatusBar(shell);
