@@ -109,6 +109,17 @@ final class DiagramDriver {
         caughtUp();
     }
 
+    /** Clicks the bar of the lanes drawn for the instance written on the line holding {@code needle}, and fills its fields. */
+    void bar(String needle, String... fields) {
+        click(node(needle));
+        for (int i = 0; i < fields.length; i += 2) {
+            type(fields[i], fields[i + 1]);
+            if (i + 2 < fields.length) {
+                click(node(needle));
+            }
+        }
+    }
+
     /** Fills the inputs {@code name=value} pairs of the edit row and presses button {@code action}. */
     void press(String action, String... inputs) {
         for (int i = 0; i < inputs.length; i += 2) {
