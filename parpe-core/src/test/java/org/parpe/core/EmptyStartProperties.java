@@ -47,6 +47,17 @@ class EmptyStartProperties {
         assertFalse(SectionEdits.blank("<?xml version=\"1.0\"?>\nhello"));
     }
 
+    /** Before: "malformed XML: Unexpected EOF in prolog" at the file's end, a parser's words for a beginner's first file. */
+    @Example
+    void anEmptyFileIsReportedAsEmptyNotAsMalformed() {
+        for (String e : EMPTY) {
+            LoadResult r = ScriptLoader.loadText(FILE, e, Map.of());
+            assertEquals(List.of("built.xml:1:1: error: the file holds no script yet: a script is one element,"
+                    + " conventionally <program>, with at least a <robot> section (PARSL.md §1)"),
+                    r.diagnostics().stream().map(d -> d.format()).toList(), e);
+        }
+    }
+
     @Example
     void theRobotStartsAfterTheDeclarationAndComment() {
         String text = "<?xml version=\"1.0\"?>\n<!-- my robot -->\n\n";

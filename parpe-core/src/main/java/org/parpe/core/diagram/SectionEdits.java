@@ -32,22 +32,7 @@ public final class SectionEdits {
      * processing instructions (the file of a student who has not started yet).
      */
     public static boolean blank(String text) {
-        int i = 0;
-        int n = text.length();
-        while (true) {
-            while (i < n && (Character.isWhitespace(text.charAt(i)) || text.charAt(i) == '\uFEFF')) {
-                i++;
-            }
-            if (i == n) {
-                return true;
-            }
-            String close = text.startsWith("<?", i) ? "?>" : text.startsWith("<!--", i) ? "-->" : null;
-            int end = close == null ? -1 : text.indexOf(close, i + 2);
-            if (end < 0) {
-                return false;
-            }
-            i = end + close.length();
-        }
+        return XmlReader.noElement(text);
     }
 
     /**

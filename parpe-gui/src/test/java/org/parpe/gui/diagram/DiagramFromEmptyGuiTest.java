@@ -91,6 +91,10 @@ class DiagramFromEmptyGuiTest {
             assertTrue(d.pane().actions().containsKey(Projection.START), v + ": " + d.pane().actions().keySet());
         }
         d.show(View.PROGRAM, null);
+        // what a student sees first: the beginner palette (the tests share one window, in any order)
+        d.pane().palette().full(false);
+        IdeAccess.pump(() -> ide.problems().shown().stream().anyMatch(p -> p.message().startsWith("the file holds no script yet")),
+                "Problems saying the file is empty (not malformed XML)");
         DiagramWindow.picture(ide, "diagram-empty-start.png");
         d.pane().palette().full(true);
         palette("Pose", "Add pose", "name", "up", "angles", "30");
