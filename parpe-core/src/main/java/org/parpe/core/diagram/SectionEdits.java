@@ -92,12 +92,29 @@ public final class SectionEdits {
         return BehaviorEdits.appendChild(text, ps, parent.name(), null, element.apply(inner));
     }
 
-    /** Writes the elements {@code path[level..]} that {@code parent} lacks, holding the new element. */
+    /**
+     * Writes the elements {@code path[level..]} that {@code parent} lacks, holding the new element:
+     * a new section after the section it follows in {@link #ORDER} (or before the first one),
+     * indented as that one; a new element of a section as the section's last child.
+     */
     private static TextEdit write(String text, XElement parent, int level, Function<String, String> element,
                                   String... path) {
         List<XElement> kids = parent.children();
-        String indent = kids.isEmpty() ? BehaviorEdits.indent(text, parent.span().start()) + "  "
-                : BehaviorEdits.indent(text, kids.get(0).span().start());
+        XElement before = null;
+        if (level == 0) {
+            int rank = ORDER.indexOf(path[0]);
+            for (XElement k : kids) {
+                int r = ORDER.indexOf(k.name());
+                if (r >= 0 && r < rank) {
+                    before = k;
+                }
+            }
+        } else if (!kids.isEmpty()) {
+            before = kids.get(kids.size() - 1);
+        }
+        XElement like = before != null ? before : kids.isEmpty() ? null : kids.get(0);
+        String indent = like == null ? BehaviorEdits.indent(text, parent.span().start()) + "  "
+                : BehaviorEdits.indent(text, like.span().start());
         StringBuilder open = new StringBuilder();
         StringBuilder close = new StringBuilder();
         String at = indent;
@@ -107,23 +124,11 @@ public final class SectionEdits {
             at += "  ";
         }
         String nested = open + "\n" + at + element.apply(at) + close;
-        if (level > 0) {
-            return BehaviorEdits.appendChild(text, parent.span(), parent.name(), kids.isEmpty() ? null
-                    : kids.get(kids.size() - 1).pos(), nested);
-        }
-        int rank = ORDER.indexOf(path[0]);
-        XElement before = null;
-        for (XElement k : kids) {
-            int r = ORDER.indexOf(k.name());
-            if (r >= 0 && r < rank) {
-                before = k;
-            }
-        }
         if (before != null) {
             return TextEdit.of(before.span().end(), 0, "\n" + indent + nested);
         }
-        if (!kids.isEmpty()) {
-            return TextEdit.of(kids.get(0).span().start(), 0, nested + "\n" + indent);
+        if (like != null) {
+            return TextEdit.of(like.span().start(), 0, nested + "\n" + indent);
         }
         return BehaviorEdits.appendChild(text, parent.span(), parent.name(), null, nested);
     }
