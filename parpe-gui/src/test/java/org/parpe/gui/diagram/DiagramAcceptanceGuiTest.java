@@ -40,10 +40,8 @@ class DiagramAcceptanceGuiTest {
 
     @BeforeAll
     static void openWindow() throws Exception {
-        ide = IdeAccess.openIde(Files.createTempDirectory("parpe-diagram-acceptance"));
-        ide.shell().setSize(1366, 768);
-        d = new DiagramDriver(ide);
-        IdeAccess.dontSave(ide);
+        d = DiagramDriver.open("parpe-diagram-acceptance");
+        ide = d.ide();
     }
 
     @AfterAll

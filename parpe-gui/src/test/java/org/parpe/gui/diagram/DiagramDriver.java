@@ -25,6 +25,18 @@ final class DiagramDriver {
         this.ide = ide;
     }
 
+    /** Opens the IDE at 1366×768 with its settings in a new folder named from {@code prefix}, never asking to save. */
+    static DiagramDriver open(String prefix) throws java.io.IOException {
+        IdeWindow ide = IdeAccess.openIde(java.nio.file.Files.createTempDirectory(prefix));
+        ide.shell().setSize(1366, 768);
+        IdeAccess.dontSave(ide);
+        return new DiagramDriver(ide);
+    }
+
+    IdeWindow ide() {
+        return ide;
+    }
+
     DiagramPane pane() {
         return ide.diagram();
     }

@@ -30,11 +30,9 @@ class DiagramFromEmptyGuiTest {
 
     @BeforeAll
     static void openWindow() throws Exception {
-        dir = Files.createTempDirectory("parpe-diagram-empty");
-        ide = IdeAccess.openIde(dir);
-        ide.shell().setSize(1366, 768);
-        d = new DiagramDriver(ide);
-        IdeAccess.dontSave(ide);
+        d = DiagramDriver.open("parpe-diagram-empty");
+        ide = d.ide();
+        dir = Files.createTempDirectory("parpe-diagram-empty-files");
     }
 
     @AfterAll
@@ -69,6 +67,25 @@ class DiagramFromEmptyGuiTest {
     private static void palette(String item, String button, String... inputs) {
         d.pane().palette().choose(item);
         d.press(button, inputs);
+    }
+
+    /**
+     * The paper's one-automaton programs: {@code poses} (name, angles) from the beginner palette,
+     * automaton {@code wave} cycling through them in that order with {@code times}, behavior
+     * {@code behavior} running it on {@code group} for {@code time} from the full one; then the
+     * instance's bar in the lanes gets the {@code bar} fields (name, value pairs).
+     */
+    private static void wave(String[][] poses, String times, String behavior, String group, String time, String... bar) {
+        d.pane().palette().full(false);
+        for (String[] p : poses) {
+            palette("Pose", "Add pose", "name", p[0], "angles", p[1]);
+        }
+        d.pane().palette().full(true);
+        String states = String.join(", ", java.util.Arrays.stream(poses).map(p -> p[0]).toList());
+        palette("Automaton", "Add automaton", "name", "wave", "add state", states, "times", times);
+        palette("Behavior", "Add behavior", "behavior", behavior, "automaton", "wave", "group", group, "time", time);
+        d.show(View.LANES, behavior);
+        d.bar("<wave group=\"" + group + "\"", bar);
     }
 
     /** The trace of the built text equals the example's (6 s at the CLI's tick). */
@@ -111,13 +128,8 @@ class DiagramFromEmptyGuiTest {
         d.pane().palette().full(true);
         palette("Group", "Add group", "name", "group2", "elements", "0,2,4,6");
         d.pane().palette().full(false);
-        palette("Pose", "Add pose", "name", "up", "angles", "30");
-        palette("Pose", "Add pose", "name", "down", "angles", "-30");
-        d.pane().palette().full(true);
-        palette("Automaton", "Add automaton", "name", "wave", "add state", "up, down", "times", "");
-        palette("Behavior", "Add behavior", "behavior", "simpleWave", "automaton", "wave", "group", "group1", "time", "");
-        d.show(View.LANES, "simpleWave");
-        d.bar("<wave group=\"group1\"", "phase", "0.25", "period", "1", "elements", "0,2,4,6");
+        wave(new String[][] {{"up", "30"}, {"down", "-30"}}, "", "simpleWave", "group1", "", "phase", "0.25", "period", "1",
+                "elements", "0,2,4,6");
         sameTrace("hello-snake.xml");
         IdeAccess.screenshot(ide.shell(), "diagram-empty-built-fig3-snake.png");
     }
@@ -125,14 +137,7 @@ class DiagramFromEmptyGuiTest {
     @Test
     void theFig7WheelIsBuiltFromAnEmptyFile() throws Exception {
         start("wheel.xml", "<?xml version=\"1.0\" ?>\n<!-- The paper's cart wheel (Figs. 6 and 7) -->\n", 8, "wheel");
-        d.pane().palette().full(false);
-        palette("Pose", "Add pose", "name", "down", "angles", "-10");
-        palette("Pose", "Add pose", "name", "up", "angles", "45");
-        d.pane().palette().full(true);
-        palette("Automaton", "Add automaton", "name", "wave", "add state", "down, up", "times", ".25, 1");
-        palette("Behavior", "Add behavior", "behavior", "rotate", "automaton", "wave", "group", "wheel", "time", "150");
-        d.show(View.LANES, "rotate");
-        d.bar("<wave group=\"wheel\"", "phase", "0.25", "period", "2");
+        wave(new String[][] {{"down", "-10"}, {"up", "45"}}, ".25, 1", "rotate", "wheel", "150", "phase", "0.25", "period", "2");
         sameTrace("wheel.xml");
         IdeAccess.screenshot(ide.shell(), "diagram-empty-built-fig7-wheel.png");
     }
