@@ -18,8 +18,9 @@ import org.parpe.gui.editor.NameIndex;
 /**
  * The edit row of the Diagram pane for one node: its title, its values as fields (Enter writes
  * one) with the editor's content assist ({@link AssistField}), and its actions as buttons,
- * each with the input fields it needs (a whole number with − and + buttons). The row holds no state of its own: every field and
- * button hands its value to the pane, which writes it into the text. UI thread only.
+ * each with the input fields it needs (a whole number with − and + buttons). The row holds no
+ * state of its own: every field and button hands its value to the pane, which writes it into
+ * the text. UI thread only.
  */
 final class EditRow {
     private EditRow() {
@@ -66,28 +67,26 @@ final class EditRow {
     /** − and + buttons that change the whole number in {@code input} by one (never below 1): clicks instead of typing. */
     private static void stepper(Composite row, String name, Text input) {
         for (int step : new int[] {-1, 1}) {
-            String label = step < 0 ? "\u2212" : "+";
-            button(row, name + label, (step < 0 ? "One " : "One more ") + name.replaceAll("s$", "") + (step < 0 ? " less" : ""),
-                    () -> {
-                        int n;
-                        try {
-                            n = Integer.parseInt(input.getText().trim());
-                        } catch (NumberFormatException e) {
-                            n = 1;
-                        }
-                        input.setText(Integer.toString(Math.max(1, n + step)));
-                    });
-            Button b = (Button) row.getChildren()[row.getChildren().length - 1];
-            b.setText(label);
+            String one = name.replaceAll("s$", "");
+            button(row, name + (step < 0 ? "\u2212" : "+"), step < 0 ? "One " + one + " less" : "One more " + one, () -> {
+                int n;
+                try {
+                    n = Integer.parseInt(input.getText().trim());
+                } catch (NumberFormatException e) {
+                    n = 1;
+                }
+                input.setText(Integer.toString(Math.max(1, n + step)));
+            }).setText(step < 0 ? "\u2212" : "+");
         }
     }
 
-    private static void button(Composite row, String name, String tip, Runnable go) {
+    private static Button button(Composite row, String name, String tip, Runnable go) {
         Button b = new Button(row, SWT.PUSH);
         b.setText(name);
         b.setData("action", name);
         b.setToolTipText(tip);
         b.addListener(SWT.Selection, e -> go.run());
+        return b;
     }
 
     /**
