@@ -28,6 +28,7 @@ import org.parpe.core.model.Automaton;
 import org.parpe.core.model.Behavior;
 import org.parpe.core.model.Instance;
 import org.parpe.core.model.MainEntry;
+import org.parpe.core.model.Parameter;
 import org.parpe.core.model.Program;
 import org.parpe.core.model.StateDef;
 
@@ -73,7 +74,7 @@ class DiagramEditProperties {
 
     @Provide
     Arbitrary<Case> cases() {
-        return Combinators.combine(Arbitraries.integers().between(0, SCRIPTS.size() - 1), Arbitraries.integers().between(0, 10),
+        return Combinators.combine(Arbitraries.integers().between(0, SCRIPTS.size() - 1), Arbitraries.integers().between(0, 11),
                 Arbitraries.integers().between(0, 1000), Arbitraries.integers().between(0, 1000),
                 Arbitraries.integers().between(1, 4000)).as(Case::new);
     }
@@ -183,6 +184,32 @@ class DiagramEditProperties {
                 int end = HandEdits.elementEnd(text, t);
                 hand = HandEdits.replace(text, end, end, "\n" + HandEdits.indentOf(text, t.start()) + "<" + name + " angles=\""
                         + value + "\"/>");
+            }
+            case 11 -> {
+                String name = "param" + c.value();
+                if (p.parameters().stream().anyMatch(x -> x.name().equals(name))) {
+                    return;
+                }
+                List<Parameter> mine = new ArrayList<>(p.parameters());
+                mine.removeIf(x -> !x.pos().file().equals(here) || x.pos().span() == null);
+                String element = "<" + name + " value=\"" + value + "\"/>";
+                if (!mine.isEmpty()) {
+                    Parameter last = mine.get(mine.size() - 1);
+                    HandEdits.Tag t = HandEdits.tag(text, last.pos().line(), last.pos().column());
+                    int end = HandEdits.elementEnd(text, t);
+                    hand = HandEdits.replace(text, end, end, "\n" + HandEdits.indentOf(text, t.start()) + element);
+                } else {
+                    // no <parameters> yet: a new section right after <robot> (the only section before it), indented as that
+                    if (text.contains("<parameters") || p.robot().pos() == null || !p.robot().pos().file().equals(here)) {
+                        return;
+                    }
+                    HandEdits.Tag rt = HandEdits.tag(text, p.robot().pos().line(), p.robot().pos().column());
+                    int end = HandEdits.elementEnd(text, rt);
+                    String in = HandEdits.indentOf(text, rt.start());
+                    hand = HandEdits.replace(text, end, end, "\n" + in + "<parameters>\n" + in + "  " + element + "\n" + in
+                            + "</parameters>");
+                }
+                api = PaletteEdits.addParameter(text, p, name, value, "", " ", "").apply(text);
             }
             case 9 -> {
                 List<StateDef> all = new ArrayList<>(p.states());

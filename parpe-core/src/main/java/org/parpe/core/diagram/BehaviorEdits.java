@@ -36,7 +36,8 @@ public final class BehaviorEdits {
     /**
      * Defines behavior {@code name} with one instance of {@code automaton} on {@code group}
      * after the file's last behavior, and runs it from a new entry at the end of {@code <main>}
-     * (with {@code time} when it is not blank).
+     * (with {@code time} when it is not blank); {@code <behaviors>} and {@code <main>} are
+     * written when the file has none yet ({@link SectionEdits}).
      */
     public static TextEdit addBehavior(String text, Program p, String name, String automaton, String group,
                                        String time) {
@@ -44,21 +45,15 @@ public final class BehaviorEdits {
         if (p.behavior(name).isPresent()) {
             throw new IllegalArgumentException("a behavior named '" + name + "' exists already");
         }
-        MainDef main = p.mainDef().orElseThrow(() -> new IllegalArgumentException(
-                "the script has no <main> to run a new behavior from"));
-        Behavior last = p.behaviors().stream().filter(b -> b.pos().span() != null && b.pos().file().equals(main.pos().file()))
-                .reduce((x, y) -> y).orElseThrow(() -> new IllegalArgumentException(
-                        "this file has no behavior to put a new one after"));
-        SourceSpan ls = last.pos().span();
-        String indent = indent(text, ls.start());
-        String inner = indent + "  ";
-        List<TextEdit.Replacement> edits = new ArrayList<>();
-        edits.add(new TextEdit.Replacement(ls.end(), 0, "\n" + indent + "<" + name + ">\n" + inner + "<" + name(automaton,
-                "automaton") + " group=\"" + DiagramEdits.escape(group.trim(), '"') + "\"/>\n" + indent + "</" + name + ">"));
+        String quoted = DiagramEdits.escape(group.trim(), '"');
+        String instance = "<" + name(automaton, "automaton") + " group=\"" + quoted + "\"/>";
         String entry = "<" + name + (time == null || time.isBlank() ? "" : " time=\"" + DiagramEdits.escape(time.trim(), '"')
                 + "\"") + "/>";
-        SourcePos lastEntry = main.entries().isEmpty() ? null : main.entries().get(main.entries().size() - 1).pos();
-        edits.addAll(appendChild(text, DiagramEdits.span(main.pos()), "main", lastEntry, entry).replacements());
+        // <main> before <behaviors> when both are new and go to the same place (SectionEdits.ORDER)
+        List<TextEdit.Replacement> edits = new ArrayList<>(SectionEdits.add(text, p.file(), indent -> entry, "main")
+                .replacements());
+        edits.addAll(SectionEdits.add(text, p.file(), indent -> "<" + name + ">\n" + indent + "  " + instance + "\n" + indent
+                + "</" + name + ">", "behaviors").replacements());
         return new TextEdit(edits);
     }
 

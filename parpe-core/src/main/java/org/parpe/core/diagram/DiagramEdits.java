@@ -9,7 +9,6 @@ import org.parpe.core.load.ListItem;
 import org.parpe.core.model.Automaton;
 import org.parpe.core.model.MainDef;
 import org.parpe.core.model.Program;
-import org.parpe.core.model.StateDef;
 import org.parpe.core.print.ProgramPrinter;
 
 /**
@@ -90,8 +89,8 @@ public final class DiagramEdits {
 
     /**
      * Appends state {@code state} with duration {@code duration} to automaton {@code a}'s cycle.
-     * A state that {@code p} does not define yet is defined after the file's last state, holding
-     * 0 degrees.
+     * A state that {@code p} does not define yet is defined after the file's last state (in a
+     * new {@code <states>} when the file has none, {@link SectionEdits}), holding 0 degrees.
      */
     public static TextEdit addState(String text, Program p, Automaton a, String state, String duration) {
         if (a.table()) {
@@ -112,13 +111,8 @@ public final class DiagramEdits {
             edits.addAll(setAttribute(text, a.pos(), "times", String.join(", ", all)).replacements());
         }
         if (p.state(state).isEmpty()) {
-            StateDef last = p.states().stream().filter(d -> d.pos().file().equals(a.pos().file()) && d.pos().span() != null)
-                    .reduce((x, y) -> y).orElseThrow(() -> new IllegalArgumentException(
-                            "state '" + state + "' is not defined and this file has no <states> to define it in"));
-            SourceSpan ls = last.pos().span();
-            int lineStart = text.lastIndexOf('\n', ls.start()) + 1;
-            String indent = text.substring(lineStart, ls.start()).isBlank() ? text.substring(lineStart, ls.start()) : "";
-            edits.add(new TextEdit.Replacement(ls.end(), 0, "\n" + indent + "<" + state + " angles=\"0\"/>"));
+            String name = BehaviorEdits.name(state.trim(), "state");
+            edits.addAll(SectionEdits.add(text, p.file(), indent -> "<" + name + " angles=\"0\"/>", "states").replacements());
         }
         return new TextEdit(edits);
     }

@@ -1,15 +1,14 @@
 package org.parpe.core.diagram;
 
 import java.util.List;
-import java.util.function.Predicate;
-import org.parpe.core.diag.SourcePos;
 import org.parpe.core.model.Program;
 
 /**
- * The edits of the diagram palette that define something new: a group of modules, a pose (a
- * named state with its angles), a phase automaton, a gait table. Each new element goes after
- * the last one of its kind in the file, on a line of its own with that one's indentation (the
- * way {@link BehaviorEdits} adds elements); its name must not be taken. Nothing else of the
+ * The edits of the diagram palette that define something new: a group of modules, a
+ * parameter, a pose (a named state with its angles), a phase automaton, a gait table. Each new
+ * element goes after the last one of its kind in the file, on a line of its own with that one's
+ * indentation, and its section is written when the file has none yet ({@link SectionEdits}, so
+ * a script can be built from an empty file); its name must not be taken. Nothing else of the
  * text changes.
  */
 public final class PaletteEdits {
@@ -19,15 +18,32 @@ public final class PaletteEdits {
     /** Defines group {@code name} of modules {@code elements} (as the {@code elements} attribute is written). */
     public static TextEdit addGroup(String text, Program p, String name, String elements) {
         free(p.group(name).isPresent(), name, "group");
-        return after(text, p, p.robot().groups().stream().filter(g -> !g.implicit()).map(g -> g.pos()).toList(), "group",
-                "<" + BehaviorEdits.name(name, "group") + " elements=\"" + value(elements, "elements") + "\"/>");
+        String e = "<" + BehaviorEdits.name(name, "group") + " elements=\"" + value(elements, "elements") + "\"/>";
+        return SectionEdits.add(text, p.file(), indent -> e, "robot", "structure");
+    }
+
+    /**
+     * Defines parameter {@code name} (PARSL.md §3) with default {@code value} and, when they are
+     * not blank, its bounds {@code min} and {@code max} and the {@code label} of its entry field.
+     */
+    public static TextEdit addParameter(String text, Program p, String name, String value, String min, String max,
+                                        String label) {
+        free(p.parameters().stream().anyMatch(x -> x.name().equals(name)), name, "parameter");
+        StringBuilder e = new StringBuilder("<").append(BehaviorEdits.name(name, "parameter")).append(" value=\"")
+                .append(value(value, "value")).append('"');
+        for (String[] optional : List.of(new String[] {"min", min}, new String[] {"max", max}, new String[] {"label", label})) {
+            if (optional[1] != null && !optional[1].isBlank()) {
+                e.append(' ').append(optional[0]).append("=\"").append(value(optional[1], optional[0])).append('"');
+            }
+        }
+        return SectionEdits.add(text, p.file(), indent -> e + "/>", "parameters");
     }
 
     /** Defines state (a pose) {@code name} with {@code angles} (one, or one per module of its group). */
     public static TextEdit addPose(String text, Program p, String name, String angles) {
         free(p.state(name).isPresent(), name, "state");
-        return after(text, p, p.states().stream().map(s -> s.pos()).toList(), "state",
-                "<" + BehaviorEdits.name(name, "state") + " angles=\"" + value(angles, "angles") + "\"/>");
+        String e = "<" + BehaviorEdits.name(name, "state") + " angles=\"" + value(angles, "angles") + "\"/>";
+        return SectionEdits.add(text, p.file(), indent -> e, "states");
     }
 
     /**
@@ -37,8 +53,8 @@ public final class PaletteEdits {
     public static TextEdit addAutomaton(String text, Program p, String name, String states, String times) {
         free(p.automaton(name).isPresent(), name, "automaton");
         String t = times == null || times.isBlank() ? "" : " times=\"" + DiagramEdits.escape(times.trim(), '"') + "\"";
-        return after(text, p, p.automata().stream().map(a -> a.pos()).toList(), "automaton",
-                "<" + BehaviorEdits.name(name, "automaton") + " states=\"" + value(states, "states") + "\"" + t + "/>");
+        String e = "<" + BehaviorEdits.name(name, "automaton") + " states=\"" + value(states, "states") + "\"" + t + "/>";
+        return SectionEdits.add(text, p.file(), indent -> e, "automata");
     }
 
     /**
@@ -50,31 +66,18 @@ public final class PaletteEdits {
         if (rows.isEmpty() || rows.stream().anyMatch(String::isBlank)) {
             throw new IllegalArgumentException("a gait table needs at least one row, and no row may be empty");
         }
-        SourcePos last = last(p, p.automata().stream().map(a -> a.pos()).toList(), "automaton");
-        String indent = BehaviorEdits.indent(text, DiagramEdits.span(last).start());
-        StringBuilder e = new StringBuilder("<").append(BehaviorEdits.name(name, "gait table"));
+        StringBuilder head = new StringBuilder("<").append(BehaviorEdits.name(name, "gait table"));
         if (times != null && !times.isBlank()) {
-            e.append(" times=\"").append(DiagramEdits.escape(times.trim(), '"')).append('"');
+            head.append(" times=\"").append(DiagramEdits.escape(times.trim(), '"')).append('"');
         }
-        e.append('>');
-        for (String row : rows) {
-            e.append('\n').append(indent).append("  ").append(DiagramEdits.escape(row.trim(), '"').replace("&quot;", "\""));
-        }
-        e.append('\n').append(indent).append("</").append(name).append('>');
-        return TextEdit.of(DiagramEdits.span(last).end(), 0, "\n" + indent + e);
-    }
-
-    private static TextEdit after(String text, Program p, List<SourcePos> siblings, String what, String element) {
-        SourcePos last = last(p, siblings, what);
-        return TextEdit.of(DiagramEdits.span(last).end(), 0, "\n" + BehaviorEdits.indent(text, DiagramEdits.span(last).start())
-                + element);
-    }
-
-    /** The last of {@code siblings} written in the program's own file. */
-    private static SourcePos last(Program p, List<SourcePos> siblings, String what) {
-        Predicate<SourcePos> mine = s -> s != null && s.span() != null && s.file().equals(p.file());
-        return siblings.stream().filter(mine).reduce((x, y) -> y).orElseThrow(() -> new IllegalArgumentException(
-                "this file defines no " + what + " yet to put a new one after"));
+        head.append('>');
+        return SectionEdits.add(text, p.file(), indent -> {
+            StringBuilder e = new StringBuilder(head);
+            for (String row : rows) {
+                e.append('\n').append(indent).append("  ").append(DiagramEdits.escape(row.trim(), '"').replace("&quot;", "\""));
+            }
+            return e.append('\n').append(indent).append("</").append(name).append('>').toString();
+        }, "automata");
     }
 
     private static void free(boolean taken, String name, String what) {

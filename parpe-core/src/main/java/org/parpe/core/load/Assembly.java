@@ -96,6 +96,12 @@ final class Assembly {
     private void addMain(Path file, String text) {
         files.add(file);
         SourceText src = new SourceText(file.toString(), text);
+        if (XmlReader.noElement(text)) {
+            // a beginner's new file: say what is missing rather than the parser's "Unexpected EOF in prolog"
+            diags.error(src.pos(0), "the file holds no script yet: a script is one element, conventionally <program>,"
+                    + " with at least a <robot> section (PARSL.md §1)");
+            return;
+        }
         XElement root = XmlReader.read(src, diags);
         if (root == null) {
             return;

@@ -38,6 +38,29 @@ public final class XmlReader {
         return f;
     }
 
+    /**
+     * Whether {@code text} holds no element: only white space (and a byte order mark), an XML
+     * declaration, comments or processing instructions.
+     */
+    public static boolean noElement(String text) {
+        int i = 0;
+        int n = text.length();
+        while (true) {
+            while (i < n && (Character.isWhitespace(text.charAt(i)) || text.charAt(i) == '\uFEFF')) {
+                i++;
+            }
+            if (i == n) {
+                return true;
+            }
+            String close = text.startsWith("<?", i) ? "?>" : text.startsWith("<!--", i) ? "-->" : null;
+            int end = close == null ? -1 : text.indexOf(close, i + 2);
+            if (end < 0) {
+                return false;
+            }
+            i = end + close.length();
+        }
+    }
+
     /** Parses {@code source}; returns the root element, or {@code null} after reporting an error. */
     public static XElement read(SourceText source, DiagnosticSink diags) {
         try {

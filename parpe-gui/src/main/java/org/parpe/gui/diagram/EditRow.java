@@ -18,8 +18,9 @@ import org.parpe.gui.editor.NameIndex;
 /**
  * The edit row of the Diagram pane for one node: its title, its values as fields (Enter writes
  * one) with the editor's content assist ({@link AssistField}), and its actions as buttons,
- * each with the input fields it needs. The row holds no state of its own: every field and
- * button hands its value to the pane, which writes it into the text. UI thread only.
+ * each with the input fields it needs (a whole number with − and + buttons). The row holds no
+ * state of its own: every field and button hands its value to the pane, which writes it into
+ * the text. UI thread only.
  */
 final class EditRow {
     private EditRow() {
@@ -50,8 +51,12 @@ final class EditRow {
         }
         for (Action a : t.actions()) {
             List<Text> inputs = new ArrayList<>();
-            for (String input : a.inputs()) {
-                inputs.add(field(row, input, "", names));
+            for (int i = 0; i < a.inputs().size(); i++) {
+                Text input = field(row, a.inputs().get(i), a.values().get(i), names);
+                inputs.add(input);
+                if (a.values().get(i).matches("[0-9]+")) {
+                    stepper(row, a.inputs().get(i), input);
+                }
             }
             Runnable go = () -> act.accept(a, inputs.stream().map(x -> x.getText().trim()).toList());
             button(row, a.name(), null, go);
@@ -59,12 +64,29 @@ final class EditRow {
         }
     }
 
-    private static void button(Composite row, String name, String tip, Runnable go) {
+    /** − and + buttons that change the whole number in {@code input} by one (never below 1): clicks instead of typing. */
+    private static void stepper(Composite row, String name, Text input) {
+        for (int step : new int[] {-1, 1}) {
+            String one = name.replaceAll("s$", "");
+            button(row, name + (step < 0 ? "\u2212" : "+"), step < 0 ? "One " + one + " less" : "One more " + one, () -> {
+                int n;
+                try {
+                    n = Integer.parseInt(input.getText().trim());
+                } catch (NumberFormatException e) {
+                    n = 1;
+                }
+                input.setText(Integer.toString(Math.max(1, n + step)));
+            }).setText(step < 0 ? "\u2212" : "+");
+        }
+    }
+
+    private static Button button(Composite row, String name, String tip, Runnable go) {
         Button b = new Button(row, SWT.PUSH);
         b.setText(name);
         b.setData("action", name);
         b.setToolTipText(tip);
         b.addListener(SWT.Selection, e -> go.run());
+        return b;
     }
 
     /**

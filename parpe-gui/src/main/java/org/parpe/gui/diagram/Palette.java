@@ -12,6 +12,7 @@ import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Label;
 import org.parpe.core.diagram.BehaviorEdits;
 import org.parpe.core.diagram.PaletteEdits;
+import org.parpe.core.diagram.SectionEdits;
 import org.parpe.core.diagram.TextEdit;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.model.Program;
@@ -22,7 +23,9 @@ import org.parpe.gui.editor.Validator;
 /**
  * The diagram palette: buttons that define something new in the script, each opening its
  * inputs in the edit row. The beginner palette has poses, gait tables and one behavior (the
- * paper's Levels I, II and IV); the full one adds groups, phase automata and instances. Every
+ * paper's Levels I, II and IV); the full one adds groups, parameters, phase automata and
+ * instances. A section the file lacks is written with its first element, so an empty file that
+ * {@link Projection} has started a robot in is built up by these buttons alone. Every
  * item writes through the core's edits ({@link PaletteEdits}, {@link BehaviorEdits}) into the
  * text shown at the moment the button is pressed, as one Undo step. UI thread only.
  */
@@ -47,6 +50,9 @@ final class Palette {
                     l -> v -> BehaviorEdits.addBehavior(l.text, l.p, v.get(0), v.get(1), v.get(2), v.get(3))),
             new Item("Group", "a group of modules: IDs such as 0, 2, 4 or 0..7", false,
                     List.of("name", "elements"), l -> v -> PaletteEdits.addGroup(l.text, l.p, v.get(0), v.get(1))),
+            new Item("Parameter", "a number fixed for a run, used by name in angles, times and ranges; min, max, label optional",
+                    false, List.of("name", "value", "min", "max", "label"), l -> v -> PaletteEdits.addParameter(l.text, l.p,
+                            v.get(0), v.get(1), v.get(2), v.get(3), v.get(4))),
             new Item("Automaton", "a phase automaton: defined states in cycle order, and their times", false,
                     List.of("name", "add state", "times"),
                     l -> v -> PaletteEdits.addAutomaton(l.text, l.p, v.get(0), v.get(1), v.get(2))),
@@ -120,6 +126,10 @@ final class Palette {
         Projection shown = pane.shown();
         if (shown == null) {
             throw new IllegalArgumentException("no diagram yet; try again in a moment");
+        }
+        if (SectionEdits.blank(shown.text())) {
+            throw new IllegalArgumentException("The file is empty: start a robot first (" + Projection.START
+                    + ", in the row below), then add to it.");
         }
         Path f = shown.file();
         LoadResult r = Validator.load(f, shown.text(), Map.of());

@@ -20,6 +20,7 @@ import org.parpe.core.diagram.PhaseWheel;
 import org.parpe.core.diagram.ProgramLane;
 import org.parpe.core.diagram.Ring;
 import org.parpe.core.diagram.Scene;
+import org.parpe.core.diagram.SectionEdits;
 import org.parpe.core.diagram.Swimlanes;
 import org.parpe.core.diagram.TextEdit;
 import org.parpe.core.load.LoadResult;
@@ -120,14 +121,21 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
      *
      * @param name   the button's label
      * @param inputs the names of its input fields, in order (none: the button acts at once)
+     * @param values what each input field shows at first (a whole number gets − and + buttons)
      * @param edit   the text edit for the inputs' values
      */
-    record Action(String name, List<String> inputs, Function<List<String>, TextEdit> edit) {
+    record Action(String name, List<String> inputs, List<String> values, Function<List<String>, TextEdit> edit) {
+
+        /** An action whose inputs start empty. */
+        Action(String name, List<String> inputs, Function<List<String>, TextEdit> edit) {
+            this(name, inputs, java.util.Collections.nCopies(inputs.size(), ""), edit);
+        }
     }
 
     /**
      * The node whose edit row shows while nothing is selected: the ring's automaton, the
-     * lanes' behavior, or (the program view's first target) {@code <main>} itself.
+     * lanes' behavior, (the program view's first target) {@code <main>} itself, or, in an empty
+     * file, the start of a robot.
      */
     SourcePos home() {
         if (ring != null) {
@@ -136,7 +144,7 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         if (lanes != null) {
             return lanes.pos();
         }
-        return view == View.PROGRAM && !targets.isEmpty() ? targets.keySet().iterator().next() : null;
+        return (view == View.PROGRAM || scene == null) && !targets.isEmpty() ? targets.keySet().iterator().next() : null;
     }
 
     /**
@@ -151,6 +159,9 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
 
     /** Loads {@code text} as {@code file} and projects view {@code view} on {@code subject} (null: the default). */
     static Projection of(String text, Path file, View view, String subject) {
+        if (SectionEdits.blank(text)) {
+            return start(text, file, view);
+        }
         LoadResult r = Validator.load(file, text, Map.of());
         Program p = r.program();
         if (p == null) {
@@ -173,6 +184,34 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         }
     }
 
+    /** Modules a robot started in an empty file has until the student clicks + or − (the template's 8). */
+    static final String START_MODULES = "8";
+
+    /**
+     * An empty file (issue 24, item 5): no drawing and no error, but the start of a robot, a
+     * chain of modules in one group ({@link SectionEdits#startRobot}), in the edit row.
+     */
+    private static Projection start(String text, Path file, View view) {
+        Map<SourcePos, Target> targets = new LinkedHashMap<>();
+        targets.put(new SourcePos(file.toString(), 1, 1), new Target("Start a robot: a chain of", List.of(), -1, null,
+                List.of(new Action(START, List.of("modules", "group"), List.of(START_MODULES, "body"),
+                        v -> SectionEdits.startRobot(text, v.get(1), modules(v.get(0)))))));
+        return new Projection(text, file, view, List.of(), null, null, targets, "The file is empty. Start a robot: choose how"
+                + " many modules it has with + and −, name their group, and press " + START + ". Then the palette (New:) adds"
+                + " poses, automata and behaviors.");
+    }
+
+    /** The button that starts a robot in an empty file. */
+    static final String START = "Start robot";
+
+    private static int modules(String n) {
+        try {
+            return Integer.parseInt(n.trim());
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException("the number of modules is a whole number such as 8, not '" + n + "'");
+        }
+    }
+
     private static Projection gait(String text, Path file, Program p, Map<SourcePos, Target> targets) {
         GaitDiagram g = Gait.record(p, new RunOptions(GAIT_TICK, 0, List.of()), GAIT_SECONDS);
         return new Projection(text, file, View.GAIT, List.of(), null, Layouts.gait(g), targets, "", null, null, List.of(),
@@ -187,7 +226,8 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         var lane = Diagrams.program(p);
         if (lane.isEmpty()) {
             return new Projection(text, file, View.PROGRAM, List.of(), null, null, targets,
-                    "The script has no <main>: see the Lanes, Ring or Phase view.");
+                    "The script has no <main> yet: New → Behavior (in Full: Group, Parameter, Automaton, Instance too)"
+                            + " writes one that runs it; the Lanes, Ring and Phase views show the rest.");
         }
         var main = p.mainDef().orElseThrow();
         if (mine(main.pos(), file)) {

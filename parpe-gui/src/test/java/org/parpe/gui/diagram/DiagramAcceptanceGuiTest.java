@@ -40,10 +40,8 @@ class DiagramAcceptanceGuiTest {
 
     @BeforeAll
     static void openWindow() throws Exception {
-        ide = IdeAccess.openIde(Files.createTempDirectory("parpe-diagram-acceptance"));
-        ide.shell().setSize(1366, 768);
-        d = new DiagramDriver(ide);
-        IdeAccess.dontSave(ide);
+        d = DiagramDriver.open("parpe-diagram-acceptance");
+        ide = d.ide();
     }
 
     @AfterAll
@@ -67,7 +65,7 @@ class DiagramAcceptanceGuiTest {
     }
 
     /** The trace of {@code text} for {@code seconds} at the CLI's default tick. */
-    private static String trace(Path file, String text, double seconds) {
+    static String trace(Path file, String text, double seconds) {
         LoadResult r = ScriptLoader.loadText(file, text, Map.of());
         assertTrue(r.diagnostics().stream().noneMatch(x -> x.severity() == Severity.ERROR), "check: " + r.diagnostics());
         double tick = 0.01;
@@ -81,19 +79,8 @@ class DiagramAcceptanceGuiTest {
         return out.toString();
     }
 
-    private static String example(String name) throws Exception {
+    static String example(String name) throws Exception {
         return Files.readString(Path.of(System.getProperty("parpe.examples", "../examples"), name));
-    }
-
-    /** Clicks the bar of the lanes drawn for the instance written on the line holding {@code needle}, and fills its fields. */
-    private static void bar(String needle, String... fields) {
-        d.click(d.node(needle));
-        for (int i = 0; i < fields.length; i += 2) {
-            d.type(fields[i], fields[i + 1]);
-            if (i + 2 < fields.length) {
-                d.click(d.node(needle));
-            }
-        }
     }
 
     @Test
@@ -108,15 +95,15 @@ class DiagramAcceptanceGuiTest {
         d.click(d.node("<crawl/>"));
         d.press("Remove entry");
         d.show(View.LANES, "simpleWave");
-        bar("<wave group=\"group1\"", "phase", "0.25", "period", "1");
+        d.bar("<wave group=\"group1\"", "phase", "0.25", "period", "1");
         d.show(View.LANES, "crawl");
-        bar("<wave group=\"body\"", "elements", "0,2,4,6");
+        d.bar("<wave group=\"body\"", "elements", "0,2,4,6");
         String built = d.text();
         Path f = Path.of("hello-snake.xml");
         assertEquals(trace(f, example("hello-snake.xml"), 6), trace(f, built, 6), "the snake's trace:\n" + built);
         IdeAccess.screenshot(ide.shell(), "diagram-built-fig3-snake.png");
         d.show(View.LANES, "simpleWave");
-        bar("<wave group=\"group1\"");
+        d.bar("<wave group=\"group1\"");
         d.press("Expand to gait table", "table", "waveTable");
         assertTrue(d.text().contains("<waveTable group=\"group1\" phase=\"0\" period=\"1\"/>"), d.text());
         String[] snake = trace(f, example("hello-snake.xml"), 3).split("\n");
@@ -164,10 +151,10 @@ class DiagramAcceptanceGuiTest {
         d.click(d.node("<crawl/>"));
         d.press("Remove entry");
         d.show(View.LANES, "walk");
-        bar("group=\"!leftSwing\"", "phase", "0.75", "period", "3");
-        bar("group=\"rightSwing\"", "offset", "0.5", "phase", "0.75", "period", "3");
-        bar("group=\"leftLift\"", "phase", "0.75", "period", "3");
-        bar("group=\"rightLift\"", "offset", "0.5", "phase", "0.75", "period", "3");
+        d.bar("group=\"!leftSwing\"", "phase", "0.75", "period", "3");
+        d.bar("group=\"rightSwing\"", "offset", "0.5", "phase", "0.75", "period", "3");
+        d.bar("group=\"leftLift\"", "phase", "0.75", "period", "3");
+        d.bar("group=\"rightLift\"", "offset", "0.5", "phase", "0.75", "period", "3");
         String built = d.text();
         Path f = Path.of("centipede-walk.xml");
         assertEquals(trace(f, example("centipede-walk.xml"), 6), trace(f, built, 6), "the centipede's trace:\n" + built);

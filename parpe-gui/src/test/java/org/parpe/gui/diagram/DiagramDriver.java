@@ -25,6 +25,18 @@ final class DiagramDriver {
         this.ide = ide;
     }
 
+    /** Opens the IDE at 1366×768 with its settings in a new folder named from {@code prefix}, never asking to save. */
+    static DiagramDriver open(String prefix) throws java.io.IOException {
+        IdeWindow ide = IdeAccess.openIde(java.nio.file.Files.createTempDirectory(prefix));
+        ide.shell().setSize(1366, 768);
+        IdeAccess.dontSave(ide);
+        return new DiagramDriver(ide);
+    }
+
+    IdeWindow ide() {
+        return ide;
+    }
+
     DiagramPane pane() {
         return ide.diagram();
     }
@@ -107,6 +119,17 @@ final class DiagramDriver {
         field.setText(value);
         field.notifyListeners(SWT.DefaultSelection, new Event());
         caughtUp();
+    }
+
+    /** Clicks the bar of the lanes drawn for the instance written on the line holding {@code needle}, and fills its fields. */
+    void bar(String needle, String... fields) {
+        click(node(needle));
+        for (int i = 0; i < fields.length; i += 2) {
+            type(fields[i], fields[i + 1]);
+            if (i + 2 < fields.length) {
+                click(node(needle));
+            }
+        }
     }
 
     /** Fills the inputs {@code name=value} pairs of the edit row and presses button {@code action}. */
