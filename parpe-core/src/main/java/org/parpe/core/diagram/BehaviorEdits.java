@@ -55,11 +55,32 @@ public final class BehaviorEdits {
         List<TextEdit.Replacement> edits = new ArrayList<>();
         edits.add(new TextEdit.Replacement(ls.end(), 0, "\n" + indent + "<" + name + ">\n" + inner + "<" + name(automaton,
                 "automaton") + " group=\"" + DiagramEdits.escape(group.trim(), '"') + "\"/>\n" + indent + "</" + name + ">"));
+        edits.addAll(entry(text, main, name, time).replacements());
+        return new TextEdit(edits);
+    }
+
+    /**
+     * Runs the defined behavior {@code behavior} from a new entry at the end of {@code <main>}
+     * (what dropping a free behavior of the workbench on the program lane writes).
+     */
+    public static TextEdit addEntry(String text, Program p, String behavior) {
+        if (p.behavior(behavior).isEmpty()) {
+            throw new IllegalArgumentException("there is no behavior '" + behavior + "'");
+        }
+        MainDef main = p.mainDef().orElseThrow(() -> new IllegalArgumentException(
+                "the script has no <main> to run behavior '" + behavior + "' from"));
+        if (main.pos().span() == null || !main.pos().file().equals(p.file())) {
+            throw new IllegalArgumentException("<main> is not written in this file; add the entry where it is");
+        }
+        return entry(text, main, behavior, null);
+    }
+
+    /** A new last entry of {@code main} running {@code name}, with {@code time} when it is not blank. */
+    private static TextEdit entry(String text, MainDef main, String name, String time) {
         String entry = "<" + name + (time == null || time.isBlank() ? "" : " time=\"" + DiagramEdits.escape(time.trim(), '"')
                 + "\"") + "/>";
         SourcePos lastEntry = main.entries().isEmpty() ? null : main.entries().get(main.entries().size() - 1).pos();
-        edits.addAll(appendChild(text, DiagramEdits.span(main.pos()), "main", lastEntry, entry).replacements());
-        return new TextEdit(edits);
+        return appendChild(text, DiagramEdits.span(main.pos()), "main", lastEntry, entry);
     }
 
     /**
