@@ -9,7 +9,7 @@ import org.parpe.core.lang.Numbers;
 
 /**
  * Where the user put the free nodes of a script's diagrams ({@link Workbench}): per view, per
- * element name, a point of the workbench (scene units from its top left corner). Layout only:
+ * element name, a point of the workbench (scene units from its top left corner, to 0.1). Layout only:
  * nothing in the script depends on it, so it is kept beside the script, never inside it. The
  * text form, one line per node after a header line, is what {@link #format()} writes and
  * {@link #parse} reads leniently:
@@ -63,7 +63,8 @@ public final class NodePlaces {
         check(view, "view");
         check(name, "name");
         Map<String, Map<String, double[]>> copy = copy();
-        copy.computeIfAbsent(view, k -> new LinkedHashMap<>()).put(name, new double[] {x, y});
+        // to the 0.1 the file keeps: a place in memory is the place read back
+        copy.computeIfAbsent(view, k -> new LinkedHashMap<>()).put(name, new double[] {tenth(x), tenth(y)});
         return new NodePlaces(copy);
     }
 
@@ -93,9 +94,12 @@ public final class NodePlaces {
     public String format() {
         StringBuilder s = new StringBuilder(HEADER).append('\n');
         views.forEach((view, names) -> names.forEach((name, p) -> s.append(view).append(' ').append(name).append(' ')
-                .append(Numbers.format(Math.round(p[0] * 10) / 10.0)).append(' ')
-                .append(Numbers.format(Math.round(p[1] * 10) / 10.0)).append('\n')));
+                .append(Numbers.format(tenth(p[0]))).append(' ').append(Numbers.format(tenth(p[1]))).append('\n')));
         return s.toString();
+    }
+
+    private static double tenth(double v) {
+        return Math.round(v * 10) / 10.0;
     }
 
     /**
