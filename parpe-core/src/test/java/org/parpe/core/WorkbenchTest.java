@@ -108,6 +108,12 @@ class WorkbenchTest {
         String edited = BehaviorEdits.addEntry(SCRIPT, p, "idle").apply(SCRIPT);
         assertEquals(SCRIPT.replace("    <walk/>\n", "    <walk/>\n    <idle/>\n"), edited);
         assertThrows(IllegalArgumentException.class, () -> BehaviorEdits.addEntry(SCRIPT, p, "nothing"));
+        String macros = SCRIPT.replace("<idle>", "<idle macros=\"g\">").replace("<rest group=\"legs\"/></idle>",
+                "<rest group=\"g\"/></idle>");
+        Program withMacros = load(macros);
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> BehaviorEdits.addEntry(macros, withMacros, "idle"));
+        assertEquals("behavior 'idle' takes macros (g); write its <main> entry with their values in the text", e.getMessage());
     }
 
     @Test

@@ -61,11 +61,16 @@ public final class BehaviorEdits {
 
     /**
      * Runs the defined behavior {@code behavior} from a new entry at the end of {@code <main>}
-     * (what dropping a free behavior of the workbench on the program lane writes).
+     * (what dropping a free behavior of the workbench on the program lane writes); refused for
+     * a behavior with macros, whose entry needs their values.
      */
     public static TextEdit addEntry(String text, Program p, String behavior) {
-        if (p.behavior(behavior).isEmpty()) {
-            throw new IllegalArgumentException("there is no behavior '" + behavior + "'");
+        Behavior b = p.behavior(behavior).orElseThrow(() -> new IllegalArgumentException(
+                "there is no behavior '" + behavior + "'"));
+        if (!b.macros().isEmpty()) {
+            // PARSL.md §8: every entry gives each macro a value, which a drop does not know
+            throw new IllegalArgumentException("behavior '" + behavior + "' takes macros (" + String.join(", ", b.macros())
+                    + "); write its <main> entry with their values in the text");
         }
         MainDef main = p.mainDef().orElseThrow(() -> new IllegalArgumentException(
                 "the script has no <main> to run behavior '" + behavior + "' from"));
