@@ -27,7 +27,19 @@ class WorkbenchTest {
     /** A script with one behavior run by {@code <main>}, two that are not, and an automaton no behavior plays. */
     static final String SCRIPT = """
             <program>
-              <robot><structure><legs elements="0..3"/><front elements="0, 1"/><back elements="2, 3"/></structure></robot>
+              <robot>
+                <structure>
+                  <legs elements="0..3"/>
+                  <front elements="0, 1"/>
+                  <back elements="2, 3"/>
+                </structure>
+              </robot>
+              <states><up angles="30"/><down angles="-30"/></states>
+              <automata>
+                <wave states="up, down"/>
+                <rest states="down"/>
+                <spare states="up, down" times="2, 2"/>
+              </automata>
               <main>
                 <walk/>
               </main>
@@ -36,12 +48,6 @@ class WorkbenchTest {
                 <idle><rest group="legs"/></idle>
                 <wiggle><wave group="front" phase="0.5"/><rest group="back"/></wiggle>
               </behaviors>
-              <automata>
-                <wave states="up, down"/>
-                <rest states="down"/>
-                <spare states="up, down" times="2, 2"/>
-              </automata>
-              <states><up angles="30"/><down angles="-30"/></states>
             </program>
             """;
 
@@ -58,7 +64,7 @@ class WorkbenchTest {
         assertEquals(List.of("wiggle", "not run by <main>", "wave on front", "rest on back"),
                 Workbench.freeBehaviors(p).get(1).lines());
         assertEquals(List.of("spare"), Workbench.freeAutomata(p).stream().map(Workbench.Node::name).toList());
-        assertEquals(8, Workbench.freeBehaviors(p).get(0).pos().line(), "the node stands for <idle>'s element");
+        assertEquals(20, Workbench.freeBehaviors(p).get(0).pos().line(), "the node stands for <idle>'s element");
     }
 
     @Test
