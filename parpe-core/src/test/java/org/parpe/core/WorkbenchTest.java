@@ -86,6 +86,10 @@ class WorkbenchTest {
         assertTrue(b.top() >= above.height(), "the workbench starts under the drawing");
         assertTrue(idle.sceneY() > b.top() && wiggle.sceneY() > b.top());
         assertEquals(wiggle, b.at(wiggle.sceneX() + 1, wiggle.sceneY() + 1));
+        assertArrayEquals(new double[] {0, b.scene().height() - b.top()}, b.clamp(-50, 1e6, 100, 40),
+                "dropped far off, a node stays at the workbench's left and bottom edges");
+        assertArrayEquals(new double[] {b.scene().width() - 100, 30}, b.clamp(1e6, b.top() - 10, 100, 40),
+                "and under its title");
         assertNull(b.at(1, 1), "the drawing above is no node of the workbench");
     }
 

@@ -76,9 +76,14 @@ public final class Workbench {
             return null;
         }
 
-        /** The workbench point of scene point {@code x, y}, kept on the workbench for a node {@code w × h}. */
+        /**
+         * The workbench point of scene point {@code x, y} for a node {@code w × h}: kept within
+         * the drawing's width, under the title, and at most at the bottom of the workbench (so a
+         * drag grows it by one node at a time, not the whole drawing smaller at once).
+         */
         public double[] clamp(double x, double y, double w, double h) {
-            return new double[] {Math.max(0, Math.min(scene.width() - w, x)), Math.max(TITLE, y - top)};
+            return new double[] {Math.max(0, Math.min(scene.width() - w, x)),
+                    Math.max(TITLE, Math.min(scene.height() - top, y - top))};
         }
     }
 
