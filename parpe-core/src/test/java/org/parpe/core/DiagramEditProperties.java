@@ -55,7 +55,10 @@ class DiagramEditProperties {
         for (Path f : SCRIPTS) {
             String before = Files.readString(f);
             Program p = ScriptLoader.load(f, Map.of()).program();
-            Diagrams.program(p);
+            Diagrams.program(p).ifPresent(l -> org.parpe.core.diagram.Workbench.of(org.parpe.core.diagram.Layouts.program(l),
+                    "free behaviors", org.parpe.core.diagram.Workbench.freeBehaviors(p), Map.of()));
+            org.parpe.core.diagram.Workbench.of(new org.parpe.core.diagram.Scene(1, 1), "free automata",
+                    org.parpe.core.diagram.Workbench.freeAutomata(p), Map.of());
             for (Behavior b : p.behaviors()) {
                 Diagrams.swimlanes(p, b);
                 for (Instance i : b.instances()) {
@@ -74,7 +77,7 @@ class DiagramEditProperties {
 
     @Provide
     Arbitrary<Case> cases() {
-        return Combinators.combine(Arbitraries.integers().between(0, SCRIPTS.size() - 1), Arbitraries.integers().between(0, 11),
+        return Combinators.combine(Arbitraries.integers().between(0, SCRIPTS.size() - 1), Arbitraries.integers().between(0, 12),
                 Arbitraries.integers().between(0, 1000), Arbitraries.integers().between(0, 1000),
                 Arbitraries.integers().between(1, 4000)).as(Case::new);
     }
@@ -170,6 +173,18 @@ class DiagramEditProperties {
                 String time = c.value() % 2 == 0 ? "" : value;
                 api = BehaviorEdits.addBehavior(text, p, name, aut, group, time).apply(text);
                 hand = handAddBehavior(text, p, here, name, aut, group, time);
+            }
+            case 12 -> {
+                List<Behavior> plain = p.behaviors().stream().filter(b -> b.macros().isEmpty()).toList();
+                if (p.main() == null || !p.main().pos().file().equals(here) || plain.isEmpty()) {
+                    return;
+                }
+                String b = plain.get(c.a() % plain.size()).name();
+                api = BehaviorEdits.addEntry(text, p, b).apply(text);
+                List<MainEntry> es = p.main().entries();
+                int[] last = es.isEmpty() ? null : new int[] {es.get(es.size() - 1).pos().line(),
+                        es.get(es.size() - 1).pos().column()};
+                hand = HandEdits.appendChild(text, p.main().pos().line(), p.main().pos().column(), last, "<" + b + "/>");
             }
             case 10 -> {
                 List<StateDef> all = new ArrayList<>(p.states());

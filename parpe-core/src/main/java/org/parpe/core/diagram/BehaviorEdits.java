@@ -58,6 +58,23 @@ public final class BehaviorEdits {
     }
 
     /**
+     * Runs the defined behavior {@code behavior} from a new entry at the end of {@code <main>}
+     * (what dropping a free behavior of the workbench on the program lane writes; a {@code <main>}
+     * is written when the file has none); refused for a behavior with macros, whose entry needs
+     * their values.
+     */
+    public static TextEdit addEntry(String text, Program p, String behavior) {
+        Behavior b = p.behavior(behavior).orElseThrow(() -> new IllegalArgumentException(
+                "there is no behavior '" + behavior + "'"));
+        if (!b.macros().isEmpty()) {
+            // PARSL.md §8: every entry gives each macro a value, which a drop does not know
+            throw new IllegalArgumentException("behavior '" + behavior + "' takes macros (" + String.join(", ", b.macros())
+                    + "); write its <main> entry with their values in the text");
+        }
+        return SectionEdits.add(text, p.file(), indent -> "<" + behavior + "/>", "main");
+    }
+
+    /**
      * Removes entry {@code index} of {@code <main>} with the line it stands on when nothing else
      * is written there; the behavior stays defined.
      */

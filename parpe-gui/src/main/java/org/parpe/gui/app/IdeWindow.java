@@ -147,6 +147,7 @@ public final class IdeWindow implements HardwareHost {
         files = new FileActions(shell, editor, prefs, this::documentChanged, this::fileSwitched, status::setMessage);
         org.parpe.gui.panels.FileDialogs.follow(files::file, org.parpe.gui.files.Examples.bundled());
         diagram = new DiagramPane(viewFolder, editor, files::pathForLoading);
+        diagram.sayPlacesWith(status::setMessage);
         Panels.tab(viewFolder, "Diagram", diagram.control());
         diagram.follow(runs.controller().live(), runs::running);
         diagram.breakpoints(runs.controller().breakpoints(), () -> runs.controller().setPaused(false), this::runStateChanged);
@@ -340,6 +341,7 @@ public final class IdeWindow implements HardwareHost {
         if (pose != null) {
             pose.documentSwitched(files.file());
         }
+        diagram.documentSwitched(files.file());
         choices.switchTo(files.pathForLoading());
         viewBar.show(choices.robot());
         if (!runs.running()) {
@@ -360,6 +362,9 @@ public final class IdeWindow implements HardwareHost {
     private void documentChanged() {
         if (pose != null && files.file() != null) {
             pose.documentRenamed(files.file()); // Save As: the poses stay with the document
+        }
+        if (files.file() != null) {
+            diagram.documentRenamed(files.file()); // Save As: the diagram's node places go beside the new file
         }
         String mark = files.dirty() ? "*" : "";
         editorTab.setText(mark + files.name());

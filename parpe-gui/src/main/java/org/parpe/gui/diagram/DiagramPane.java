@@ -65,6 +65,8 @@ public final class DiagramPane {
     private Supplier<String> pose;
     private java.util.function.Predicate<String> tables;
     private final Palette palette;
+    private final PlacesBeside places = new PlacesBeside(this::say);
+    private final FreeNodes freeNodes;
 
     /** The pane in {@code parent}, showing {@code editor}'s document as the file {@code file} names. */
     public DiagramPane(Composite parent, ParslEditor editor, Supplier<Path> file) {
@@ -111,6 +113,7 @@ public final class DiagramPane {
         canvas = new SceneCanvas(box, this::clicked);
         canvas.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
         showFields();
+        freeNodes = new FreeNodes(this, canvas, places);
         canvas.control().addListener(SWT.MouseDown, e -> {
             dragged = e.button == 1 ? movable(e.x, e.y) : null;
             dragFrom = e.button == 1 && (wheel() != null || dragged != null) ? new Point(e.x, e.y) : null;
@@ -155,7 +158,7 @@ public final class DiagramPane {
     private static final String HINT = "Click a box, an arc or a bar to select its text and edit its values.";
 
     /** Sets the message line; it takes a row only when it has something to say. */
-    private void say(String text) {
+    void say(String text) {
         message.setText(text);
         show(message, !text.isEmpty());
         box.layout(true, true);
@@ -189,7 +192,7 @@ public final class DiagramPane {
     }
 
     /** Projects the current text on the worker if the pane is shown; the newest request wins. */
-    private void relayout() {
+    void relayout() {
         if (box.isDisposed() || !box.isVisible()) {
             return;
         }
@@ -198,12 +201,13 @@ public final class DiagramPane {
         Path f = file.get();
         View v = view;
         String s = subject;
+        org.parpe.core.diagram.NodePlaces at = places.places();
         var display = box.getDisplay();
         worker.execute(() -> {
             if (gen != generation.get()) {
                 return;
             }
-            Projection p = Projection.of(text, f, v, s);
+            Projection p = Projection.of(text, f, v, s, at);
             if (!display.isDisposed()) {
                 display.asyncExec(() -> {
                     if (gen == generation.get() && !box.isDisposed()) {
@@ -243,6 +247,42 @@ public final class DiagramPane {
         message.setText(p.message().isEmpty() && !p.targets().isEmpty() ? HINT : p.message());
         showFields();
         box.layout(true, true);
+    }
+
+    /**
+     * Another document is shown ({@code file}, or {@code null} when untitled): the free nodes
+     * take the places kept beside it ({@link PlacesBeside}).
+     */
+    public void documentSwitched(Path file) {
+        places.documentSwitched(file);
+        relayout();
+    }
+
+    /** The document was saved as {@code file}: its free nodes' places go beside it. */
+    public void documentRenamed(Path file) {
+        places.documentRenamed(file);
+    }
+
+    /** What the places beside the script cannot be read or written is said with {@code status} (once each). */
+    public void sayPlacesWith(java.util.function.Consumer<String> status) {
+        places.sayWith(status);
+    }
+
+    /** The places of the free nodes now (what is, or will be, beside the script). */
+    public org.parpe.core.diagram.NodePlaces places() {
+        return places.places();
+    }
+
+    /** Where on the canvas the middle of free node {@code name} is drawn, or {@code null}. */
+    public Point whereFree(String name) {
+        org.parpe.core.diagram.Workbench.Placed n = freeNodes.node(name);
+        return n == null ? null : canvas.toCanvas(n.sceneX() + n.w() / 2, n.sceneY() + n.h() / 2);
+    }
+
+    /** Where free node {@code name} is on its workbench ({@code x, y}), or {@code null} when it is not drawn. */
+    public double[] freeAt(String name) {
+        org.parpe.core.diagram.Workbench.Placed n = freeNodes.node(name);
+        return n == null ? null : new double[] {n.x(), n.y()};
     }
 
     /** The projection shown, or {@code null} before the first. */
@@ -795,7 +835,7 @@ public final class DiagramPane {
     }
 
     /** Applies {@code edit} to the document as one replacement spanning all of its ranges. */
-    private void apply(TextEdit edit) {
+    void apply(TextEdit edit) {
         List<TextEdit.Replacement> rs = new ArrayList<>(edit.replacements());
         if (rs.isEmpty()) {
             return;

@@ -16,6 +16,7 @@ import org.parpe.core.diagram.Gait;
 import org.parpe.core.diagram.GaitDiagram;
 import org.parpe.core.diagram.GaitTableExpansion;
 import org.parpe.core.diagram.Layouts;
+import org.parpe.core.diagram.NodePlaces;
 import org.parpe.core.diagram.PhaseWheel;
 import org.parpe.core.diagram.ProgramLane;
 import org.parpe.core.diagram.Ring;
@@ -23,6 +24,7 @@ import org.parpe.core.diagram.Scene;
 import org.parpe.core.diagram.SectionEdits;
 import org.parpe.core.diagram.Swimlanes;
 import org.parpe.core.diagram.TextEdit;
+import org.parpe.core.diagram.Workbench;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.model.Automaton;
 import org.parpe.core.model.Behavior;
@@ -53,10 +55,18 @@ import org.parpe.gui.editor.Validator;
  *                 document order (how the engine numbers them), for the live overlay
  * @param lanes    the swimlanes drawn (the live overlay marks the bars driving modules), or {@code null}
  * @param gait     the gait diagram drawn (the live overlay marks the time and each module's state now), or {@code null}
+ * @param free     the workbench of free nodes under the drawing ({@link FreeNodes}), or {@code null}
  */
 record Projection(String text, Path file, View view, List<String> subjects, String subject, Scene scene,
                   Map<SourcePos, Target> targets, String message, PhaseWheel wheel, Ring ring,
-                  List<List<String>> automata, Swimlanes lanes, GaitDiagram gait) {
+                  List<List<String>> automata, Swimlanes lanes, GaitDiagram gait, Free free) {
+
+    /** A projection without a workbench. */
+    Projection(String text, Path file, View view, List<String> subjects, String subject, Scene scene,
+               Map<SourcePos, Target> targets, String message, PhaseWheel wheel, Ring ring,
+               List<List<String>> automata, Swimlanes lanes, GaitDiagram gait) {
+        this(text, file, view, subjects, subject, scene, targets, message, wheel, ring, automata, lanes, gait, null);
+    }
 
     /** A projection without a gait diagram. */
     Projection(String text, Path file, View view, List<String> subjects, String subject, Scene scene,
@@ -157,8 +167,32 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
     record Field(String name, String value, Function<String, TextEdit> edit) {
     }
 
+    /**
+     * The free nodes of a view under its drawing, and what dropping one on the drawing writes.
+     *
+     * @param view   the name their places are kept under ({@link NodePlaces})
+     * @param bench  the drawing with the workbench, and the nodes where they are drawn
+     * @param drop   the text edit of dropping the node named so at scene height {@code y} on
+     *               node {@code on} of the drawing (or none), or {@code null} when that is no drop
+     * @param hint   what a drop on the drawing does, for the message line
+     */
+    record Free(String view, Workbench.Bench bench, Drop drop, String hint) {
+    }
+
+    /** Dropping a free node on the drawing above its workbench. */
+    @FunctionalInterface
+    interface Drop {
+        /** The edit of dropping {@code name} at scene height {@code y} on {@code on} (may be null), or {@code null}: no drop. */
+        TextEdit at(String name, double y, SourcePos on);
+    }
+
     /** Loads {@code text} as {@code file} and projects view {@code view} on {@code subject} (null: the default). */
     static Projection of(String text, Path file, View view, String subject) {
+        return of(text, file, view, subject, NodePlaces.NONE);
+    }
+
+    /** As {@link #of(String, Path, View, String)}, free nodes at {@code places}. */
+    static Projection of(String text, Path file, View view, String subject, NodePlaces places) {
         if (SectionEdits.blank(text)) {
             return start(text, file, view);
         }
@@ -173,8 +207,8 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         Map<SourcePos, Target> targets = new LinkedHashMap<>();
         try {
             return switch (view) {
-                case PROGRAM -> program(text, file, p, targets);
-                case LANES -> lanes(text, file, p, subject, targets);
+                case PROGRAM -> program(text, file, p, targets, places);
+                case LANES -> lanes(text, file, p, subject, targets, places);
                 case RING -> ring(text, file, p, subject, targets);
                 case PHASE -> phase(text, file, p, subject, targets);
                 case GAIT -> gait(text, file, p, targets);
@@ -222,7 +256,7 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         return pos != null && pos.span() != null && pos.file().equals(file.toString());
     }
 
-    private static Projection program(String text, Path file, Program p, Map<SourcePos, Target> targets) {
+    private static Projection program(String text, Path file, Program p, Map<SourcePos, Target> targets, NodePlaces places) {
         var lane = Diagrams.program(p);
         if (lane.isEmpty()) {
             return new Projection(text, file, View.PROGRAM, List.of(), null, null, targets,
@@ -244,10 +278,26 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
                         List.of(new Action("Remove entry", List.of(), v -> BehaviorEdits.removeEntry(text, main, s.index())))));
             }
         }
-        return new Projection(text, file, View.PROGRAM, List.of(), null, Layouts.program(lane.get()), targets, "");
+        Scene drawn = Layouts.program(lane.get());
+        Drop drop = (name, y, on) -> null;
+        if (mine(main.pos(), file)) {
+            drop = (name, y, on) -> y < drawn.height() ? BehaviorEdits.addEntry(text, p, name) : null;
+        }
+        Free free = free(FreeNodes.PROGRAM, drawn, "Workbench: behaviors <main> does not run."
+                + " Drag one anywhere here, or onto the lane above to run it.", Workbench.freeBehaviors(p), places, drop,
+                "Release on the lane to run it from <main> (a new last entry), or on the workbench to leave it there");
+        return new Projection(text, file, View.PROGRAM, List.of(), null, free.bench().scene(), targets, "", null, null,
+                List.of(), null, null, free);
     }
 
-    private static Projection lanes(String text, Path file, Program p, String subject, Map<SourcePos, Target> targets) {
+    /** The workbench of {@code nodes} under {@code above}, the nodes at {@code places} of {@code view}. */
+    private static Free free(String view, Scene above, String title, List<Workbench.Node> nodes, NodePlaces places, Drop drop,
+                             String hint) {
+        return new Free(view, Workbench.of(above, title, nodes, places.of(view)), drop, hint);
+    }
+
+    private static Projection lanes(String text, Path file, Program p, String subject, Map<SourcePos, Target> targets,
+                                    NodePlaces places) {
         List<String> names = p.behaviors().stream().map(Behavior::name).toList();
         if (names.isEmpty()) {
             return new Projection(text, file, View.LANES, names, null, null, targets, "The script has no behaviors.");
@@ -271,8 +321,17 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
                 }
             }
         }
-        return new Projection(text, file, View.LANES, names, chosen, Layouts.lanes(s), targets, islands(s.islands().size()),
-                null, null, List.of(), s);
+        Map<SourcePos, String> laneOf = new LinkedHashMap<>();
+        s.lanes().forEach(l -> l.bars().forEach(b -> laneOf.put(b.pos(), l.group())));
+        Drop drop = (name, y, on) -> null;
+        if (mine(behavior.pos(), file)) {
+            drop = (name, y, on) -> laneOf.containsKey(on) ? BehaviorEdits.addInstance(text, behavior, name, laneOf.get(on)) : null;
+        }
+        Free free = free(FreeNodes.LANES, Layouts.lanes(s), "Workbench: automata and gait tables no behavior plays."
+                + " Drag one anywhere here, or onto a bar to play it on that bar's group.", Workbench.freeAutomata(p), places,
+                drop, "Release on a bar to play it on that bar's group in " + chosen + ", or on the workbench to leave it there");
+        return new Projection(text, file, View.LANES, names, chosen, free.bench().scene(), targets,
+                islands(s.islands().size()), null, null, List.of(), s, null, free);
     }
 
     /** The action that writes a gait table, which the pane then opens in the grid editor. */
