@@ -1,7 +1,6 @@
 package org.parpe.serial.servo.run;
 
 import java.io.IOException;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.TimeUnit;
@@ -18,7 +17,6 @@ import org.parpe.serial.servo.ServoBus;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.ServoProtocol;
 import org.parpe.serial.servo.profile.HardwareProfile;
-import org.parpe.serial.servo.profile.ServoMapping;
 
 /**
  * Drives the servos of a hardware profile from a run, on every protocol: G1 modules (the command
@@ -63,17 +61,13 @@ public final class ServoDriver extends BusThread {
     private int readAttempt;
     /** Per mapped servo: read cycles it is still skipped for. */
     private final int[] backoff;
-    /** Per mapped servo: answered as another model; never driven, never probed. */
-    private final boolean[] otherModel;
+    private final ServoSetUp setUp;
     private long lastProbe = System.nanoTime();
     private int probeCursor;
     private final int[] oneId = new int[1];
     private final ServoModel[] oneModel = new ServoModel[1];
     private final double[] oneDegrees = new double[1];
     private final int[] oneError = new int[1];
-    private final int[] oneGoal = new int[1];
-    private final List<Integer> answeredOther = new ArrayList<>();
-    private final List<Integer> limp = new ArrayList<>();
 
     private ServoDriver(LinkOpener opener, ServoBus bus, BusConfig config, HardwareProfile profile, int[] runModules,
                         BusReport report) {
@@ -84,7 +78,7 @@ public final class ServoDriver extends BusThread {
         this.set = new ServoSet(profile, runModules);
         this.roundRobin = !profile.protocol().groupRead();
         this.backoff = new int[set.size()];
-        this.otherModel = new boolean[set.size()];
+        this.setUp = new ServoSetUp(set, profile, config, report);
     }
 
     /**
@@ -112,113 +106,17 @@ public final class ServoDriver extends BusThread {
      * servo answered as the model the profile says.
      */
     public List<Integer> discover() throws IOException {
-        List<Integer> found = new ArrayList<>();
-        answeredOther.clear();
-        for (int j = 0; j < set.size(); j++) {
-            ServoMapping m = set.mapping(j);
-            int model = bus.ping(m.servo(), Math.max(5, config.retries() + 1));
-            set.driven[j] = model >= 0 && compatible(m, model);
-            otherModel[j] = model >= 0 && !set.driven[j];
-            if (set.driven[j]) {
-                found.add(m.module());
-            } else if (model >= 0) {
-                answeredOther.add(m.module());
-            }
-        }
-        if (!found.isEmpty()) {
-            setUp();
-        }
-        return found;
+        return setUp.discover(bus);
     }
 
     /** Modules whose servo answered discovery as another model than the profile's, and is not driven. */
     public List<Integer> answeredAsOtherModel() {
-        return List.copyOf(answeredOther);
+        return setUp.answeredAsOtherModel();
     }
 
     /** Modules whose servo answered but stayed limp (torque off, or its position unknown) after set-up. */
     public List<Integer> limp() {
-        return List.copyOf(limp);
-    }
-
-    /** A servo in messages: {@code servo 3 (module 1)}, or {@code module 1} where they are one (G1 by ID). */
-    private String who(ServoMapping m) {
-        return profile.protocol() == ServoProtocol.G1 && m.servo() == m.module() ? "module " + m.module()
-                : "servo " + m.servo() + " (module " + m.module() + ")";
-    }
-
-    /**
-     * Whether a servo reporting {@code model} can be driven as the profile's model says: the same
-     * model, or one with the same control table and units (warned). Another one would get goals
-     * at the wrong address or in the wrong unit, so it is not driven.
-     */
-    private boolean compatible(ServoMapping m, int model) {
-        if (model == 0 || model == m.model().number()) {
-            return true;
-        }
-        ServoModel actual = ServoModel.of(profile.protocol(), model);
-        boolean same = actual != null && actual.registers() == m.model().registers()
-                && actual.resolution() == m.model().resolution() && actual.rangeDeg() == m.model().rangeDeg()
-                && actual.centre() == m.model().centre();
-        report.problem(String.format(Locale.ROOT, "bus: %s is %s, the profile says %s at %s; %s",
-                who(m), actual == null ? "of unknown model " + model : "an " + actual.label(),
-                m.model().label(), m.where(), same ? "driving it anyway (same control table and units)"
-                        : "it will not move (correct the model in the profile)"));
-        return same;
-    }
-
-    /**
-     * Present positions (retried until each servo has answered), goals that hold each servo
-     * there clamped into its limits, torque on, and torque read back: a servo whose torque does
-     * not come on is limp while the run drives it, which the user must hear about.
-     */
-    private void setUp() throws IOException {
-        int n = set.pack();
-        int attempts = Math.max(5, config.retries() + 1);
-        boolean[] known = new boolean[n];
-        for (int a = 0, left = n; a < attempts && left > 0; a++) {
-            bus.readPositions(set.ids, set.models, n, set.degrees, set.errors);
-            set.storeReadings(0, n, bus, this::fault);
-            for (int k = 0; k < n; k++) {
-                if (!known[k] && set.errors[k] != ServoBus.NO_REPLY) {
-                    known[k] = true;
-                    left--;
-                }
-            }
-        }
-        limp.clear();
-        for (int k = 0; k < n; k++) {
-            if (!holdFound(k, known[k], attempts)) {
-                limp.add(set.mappingAt(k).module());
-            }
-        }
-    }
-
-    /**
-     * Packed servo {@code k}, its position {@code known} or not, is held there, torque on and read
-     * back; false (reported) when its position is unknown or its torque did not come on.
-     */
-    private boolean holdFound(int k, boolean known, int attempts) throws IOException {
-        ServoMapping m = set.mappingAt(k);
-        if (!known) {
-            report.problem(String.format(Locale.ROOT, "bus: %s answered the ping but not %d reads of its position; "
-                    + "its torque stays off and it will not follow the run", who(m), attempts));
-            return false;
-        }
-        oneId[0] = m.servo();
-        oneModel[0] = m.model();
-        oneGoal[0] = set.holdTicks(k);
-        int state = 0;
-        for (int a = 0; a < attempts && state != 1; a++) {
-            bus.holdAt(oneId, oneModel, oneGoal, 1);
-            state = bus.torqueState(m.servo(), m.model(), 2);
-        }
-        if (state != 1) {
-            report.problem(String.format(Locale.ROOT, "bus: %s did not turn its torque on (Torque Enable %s after %d "
-                    + "tries); it is limp and will not follow the run", who(m),
-                    state == 0 ? "read back 0" : "could not be read back", attempts));
-        }
-        return state == 1;
+        return setUp.limp();
     }
 
     /** Arms the servos' own watchdog, the last step of set-up, just before traffic keeps it fed. */
@@ -378,7 +276,7 @@ public final class ServoDriver extends BusThread {
             readAttempt = 0;
             readFailures++;
             backoff[set.slotOf(k)] = BACKOFF_CYCLES;
-            report.problem("bus: " + who(set.mappingAt(k)) + " did not answer " + (config.retries() + 1)
+            report.problem("bus: " + ServoSetUp.who(profile.protocol(), set.mappingAt(k)) + " did not answer " + (config.retries() + 1)
                     + " reads; reading it less often");
         }
         return answered;
@@ -386,8 +284,7 @@ public final class ServoDriver extends BusThread {
 
     /**
      * Every half second, pings one mapped servo that is not driven (it did not answer discovery);
-     * one that answers as its model is set up as at discovery (held where it is, torque on, its
-     * watchdog armed) and driven from then on.
+     * one that answers as its model is set up and driven from then on ({@link ServoSetUp#bringIn}).
      */
     private void probeMissing(long now) throws IOException {
         if (now - lastProbe < PROBE_NANOS) {
@@ -397,51 +294,15 @@ public final class ServoDriver extends BusThread {
         int size = set.size();
         for (int t = 0; t < size; t++) {
             probeCursor = (probeCursor + 1) % size;
-            int j = probeCursor;
-            if (set.driven[j] || otherModel[j]) {
-                continue;
-            }
-            ServoMapping m = set.mapping(j);
-            int model = bus.ping(m.servo(), 1);
-            if (model < 0) {
+            if (setUp.missing(probeCursor)) {
+                if (setUp.bringIn(bus, probeCursor) >= 0) {
+                    answeredNow();
+                }
                 return;
             }
-            answeredNow();
-            if (!compatible(m, model)) {
-                otherModel[j] = true;
-                return;
-            }
-            oneId[0] = m.servo();
-            oneModel[0] = m.model();
-            if (bus.readPositions(oneId, oneModel, 1, oneDegrees, oneError) == 0) {
-                return;
-            }
-            set.driven[j] = true;
-            int k = indexOfSlot(set.pack(), j);
-            set.degrees[k] = oneDegrees[0];
-            set.errors[k] = oneError[0];
-            set.storeReadings(k, k + 1, bus, this::fault);
-            if (!holdFound(k, true, 2)) {
-                set.driven[j] = false;
-                set.pack();
-                return;
-            }
-            oneId[0] = m.servo();
-            oneModel[0] = m.model();
-            bus.watchdog(oneId, oneModel, 1, profile.watchdogMs(), profile.onFault() == SafeMode.LIMP);
-            report.note("bus: " + who(m) + " answers now; driving it");
-            return;
         }
     }
 
-    private int indexOfSlot(int n, int j) {
-        for (int k = 0; k < n; k++) {
-            if (set.slotOf(k) == j) {
-                return k;
-            }
-        }
-        throw new IllegalStateException("mapped servo " + j + " is not driven");
-    }
     /** Every {@value #WATCHDOG_CHECK_MS} ms, one servo: resumed if it stopped on its own watchdog. */
     private void checkWatchdog(int n) throws IOException {
         long now = System.nanoTime();
@@ -493,7 +354,7 @@ public final class ServoDriver extends BusThread {
     /** The safe start again (present positions held, torque read back), then the watchdog. */
     @Override
     protected String setUpAgain() throws IOException {
-        setUp();
+        setUp.holdAll(bus);
         armWatchdog();
         failedReads = 0;
         readAttempt = 0;
