@@ -354,12 +354,12 @@ public final class ServoDriver extends BusThread {
     /** The safe start again (present positions held, torque read back), then the watchdog. */
     @Override
     protected String setUpAgain() throws IOException {
-        setUp.holdAll(bus);
+        String detail = setUp.holdAgain(bus);
         armWatchdog();
         failedReads = 0;
         readAttempt = 0;
         java.util.Arrays.fill(backoff, 0);
         lastProbe = System.nanoTime();
-        return "";
+        return detail;
     }
 }

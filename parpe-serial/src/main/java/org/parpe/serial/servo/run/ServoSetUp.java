@@ -129,6 +129,26 @@ final class ServoSetUp {
                 limp.add(set.mappingAt(k).module());
             }
         }
+        // Not driven until it answers and holds: the missing-servo probe tries it again.
+        for (int k = 0; k < n; k++) {
+            if (limp.contains(set.mappingAt(k).module())) {
+                set.driven[set.slotOf(k)] = false;
+            }
+        }
+        set.pack();
+    }
+
+    /** After a silence: the driven servos held again; returns {@code " (4 of 5 answer, missing 3)"}. */
+    String holdAgain(ServoBus bus) throws IOException {
+        holdAll(bus);
+        List<Integer> missing = new ArrayList<>();
+        for (int j = 0; j < set.size(); j++) {
+            if (missing(j)) {
+                missing.add(set.mapping(j).module());
+            }
+        }
+        return String.format(Locale.ROOT, " (%d of %d answer%s)", set.size() - missing.size(), set.size(),
+                missing.isEmpty() ? "" : ", missing " + org.parpe.serial.bus.Discovery.format(missing));
     }
 
     /**
