@@ -39,6 +39,7 @@ public final class ServoDriver extends BusThread {
     /** Read cycles a servo that did not answer its reads and their retries is skipped. */
     private static final int BACKOFF_CYCLES = 50;
     private static final long PROBE_NANOS = 500_000_000;
+    private static final long WIRE_POLL_NANOS = 20_000;
 
     private final LinkOpener opener;
     private final HardwareProfile profile;
@@ -193,7 +194,9 @@ public final class ServoDriver extends BusThread {
     protected void cycle() throws IOException, InterruptedException {
         int queued = bus.pendingOutput();
         if (queued > 0) {
-            LockSupport.parkNanos((long) (queued * 10e9 / config.baud()));
+            // The line is still busy with the last packet: wait until it drains rather than queue a
+            // stale one, waking a little early so that the next one follows without a gap.
+            LockSupport.parkNanos(Math.max(WIRE_POLL_NANOS, (long) (queued * 10e9 / config.baud()) - WIRE_POLL_NANOS));
             return;
         }
         long now = System.nanoTime();
