@@ -13,25 +13,31 @@ import java.util.function.BooleanSupplier;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.parpe.core.diag.SourcePos;
 import org.parpe.core.run.RunInfo;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.core.sensor.Channel;
 import org.parpe.core.sensor.SensorTable;
 import org.parpe.serial.bus.BusConfig;
 import org.parpe.serial.bus.BusReport;
+import org.parpe.serial.bus.SafeMode;
 import org.parpe.serial.emu.BusEmulator;
 import org.parpe.serial.emu.EmulatorListener;
 import org.parpe.serial.emu.EmulatorOptions;
 import org.parpe.serial.link.ByteLink;
 import org.parpe.serial.link.PipeLink;
 import org.parpe.serial.protocol.Protocol;
+import org.parpe.serial.servo.ServoModel;
+import org.parpe.serial.servo.ServoProtocol;
+import org.parpe.serial.servo.emu.ServoEmulator;
 import org.parpe.serial.servo.profile.HardwareProfile;
+import org.parpe.serial.servo.profile.ServoMapping;
 
 /**
  * What {@code --port}'s driver did for G1 modules before it was folded into {@link ServoDriver},
  * now the one driver's: a module missing at discovery is driven once it answers, a module that
  * stops answering is read less often, and the modules' accelerometers and touch sensors reach
- * the run. Between host and emulator, a gate swallows every frame addressed to the modules it
+ * the run; a Dynamixel servo missing at discovery is driven once it answers too. Between host and emulator, a gate swallows every frame addressed to the modules it
  * holds, as if their cable were out (the emulator has no way to silence one module). Each test
  * failed before the fold: ServoDriver never looked for a missing servo again, read a silent one
  * every round, and handed the run angles only.
@@ -43,13 +49,15 @@ class ModulesComeAndGoTest {
     final Set<Integer> gated = ConcurrentHashMap.newKeySet();
     final List<String> reports = new CopyOnWriteArrayList<>();
     BusEmulator emulator;
+    ServoEmulator servos;
     ServoDriver driver;
 
     void open() throws IOException {
         PipeLink[] pipe = PipeLink.pair("gate");
         emulator = BusEmulator.start(() -> pipe[1], EmulatorOptions.of(MODULES), new EmulatorListener() { });
         BusConfig config = BusConfig.defaults();
-        driver = ServoDriver.open(() -> new Gate(pipe[0]), config, HardwareProfile.ofModules("gate", config, MODULES),
+        // Byte 2 of a G1 frame is its address (docs/hardware-protocol.md, frame layout).
+        driver = ServoDriver.open(() -> new Gate(pipe[0], 2), config, HardwareProfile.ofModules("gate", config, MODULES),
                 MODULES, BusReport.lines(reports::add));
     }
 
@@ -60,6 +68,9 @@ class ModulesComeAndGoTest {
         }
         if (emulator != null) {
             emulator.close();
+        }
+        if (servos != null) {
+            servos.close();
         }
     }
 
@@ -128,18 +139,45 @@ class ModulesComeAndGoTest {
         driver.finish(new RunOutcome(RunOutcome.Status.COMPLETED, 1, ""));
     }
 
-    /** The host's end of the line, swallowing every frame addressed to a gated module. */
+    @Test
+    void aDynamixelServoMissingAtDiscoveryIsDrivenOnceItAnswers() throws Exception {
+        PipeLink[] pipe = PipeLink.pair("gate");
+        ServoModel xl430 = ServoModel.named("xl430-w250");
+        servos = ServoEmulator.start(() -> pipe[1], xl430, EmulatorOptions.of(11, 12), new EmulatorListener() { });
+        HardwareProfile profile = new HardwareProfile("test", ServoProtocol.DXL2, "gate", 1_000_000, SafeMode.HOLD,
+                HardwareProfile.DEFAULT_WATCHDOG_MS, List.of(
+                        new ServoMapping(0, 11, xl430, 0, 1, -90, 90, SourcePos.NONE),
+                        new ServoMapping(1, 12, xl430, 0, 1, -90, 90, SourcePos.NONE)));
+        // Byte 4 of a Dynamixel 2.0 packet is its ID (e-Manual, Protocol 2.0, Instruction Packet:
+        // header FF FF FD, reserved 00, then the packet ID).
+        driver = ServoDriver.open(() -> new Gate(pipe[0], 4), BusConfig.defaults().withBaud(1_000_000), profile,
+                new int[] {0, 1}, BusReport.lines(reports::add));
+        gated.add(12);
+        assertEquals(List.of(0), driver.discover());
+        driver.start(new RunInfo(null, new int[] {0, 1}, 0.01));
+        driveUntil(20, () -> Math.abs(servos.angle(11) - 20) < 0.2, "servo 11 follows");
+        double before = servos.angle(12);
+        gated.clear();
+        driveUntil(20, () -> Math.abs(servos.angle(12) - 20) < 0.2, "servo 12 follows once it answers (from "
+                + before + "°)");
+        assertTrue(reports.contains("bus: servo 12 (module 1) answers now; driving it"), reports.toString());
+        driver.finish(new RunOutcome(RunOutcome.Status.COMPLETED, 1, ""));
+    }
+
+    /** The host's end of the line, swallowing every packet addressed to a gated device. */
     final class Gate implements ByteLink {
         private final ByteLink link;
+        /** Where a packet of the protocol holds the device's address. */
+        private final int addressAt;
 
-        Gate(ByteLink link) {
+        Gate(ByteLink link, int addressAt) {
             this.link = link;
+            this.addressAt = addressAt;
         }
 
         @Override
         public void write(byte[] b, int off, int len) throws IOException {
-            // Byte 2 of a G1 frame is its address (docs/hardware-protocol.md, frame layout).
-            if (len > 2 && gated.contains(b[off + 2] & 0xFF)) {
+            if (len > addressAt && gated.contains(b[off + addressAt] & 0xFF)) {
                 return;
             }
             link.write(b, off, len);
