@@ -26,6 +26,7 @@ import org.parpe.serial.emu.EmulatorListener;
 import org.parpe.serial.emu.EmulatorOptions;
 import org.parpe.serial.link.ByteLink;
 import org.parpe.serial.link.PipeLink;
+import org.parpe.serial.link.WatchedLink;
 import org.parpe.serial.protocol.Protocol;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.ServoProtocol;
@@ -57,7 +58,7 @@ class ModulesComeAndGoTest {
         emulator = BusEmulator.start(() -> pipe[1], EmulatorOptions.of(MODULES), new EmulatorListener() { });
         BusConfig config = BusConfig.defaults();
         // Byte 2 of a G1 frame is its address (docs/hardware-protocol.md, frame layout).
-        driver = ServoDriver.open(() -> new Gate(pipe[0], 2), config, HardwareProfile.ofModules("gate", config, MODULES),
+        driver = ServoDriver.open(() -> gate(pipe[0], 2), config, HardwareProfile.ofModules("gate", config, MODULES),
                 MODULES, BusReport.lines(reports::add));
     }
 
@@ -150,7 +151,7 @@ class ModulesComeAndGoTest {
                         new ServoMapping(1, 12, xl430, 0, 1, -90, 90, SourcePos.NONE)));
         // Byte 4 of a Dynamixel 2.0 packet is its ID (e-Manual, Protocol 2.0, Instruction Packet:
         // header FF FF FD, reserved 00, then the packet ID).
-        driver = ServoDriver.open(() -> new Gate(pipe[0], 4), BusConfig.defaults().withBaud(1_000_000), profile,
+        driver = ServoDriver.open(() -> gate(pipe[0], 4), BusConfig.defaults().withBaud(1_000_000), profile,
                 new int[] {0, 1}, BusReport.lines(reports::add));
         gated.add(12);
         assertEquals(List.of(0), driver.discover());
@@ -164,38 +165,11 @@ class ModulesComeAndGoTest {
         driver.finish(new RunOutcome(RunOutcome.Status.COMPLETED, 1, ""));
     }
 
-    /** The host's end of the line, swallowing every packet addressed to a gated device. */
-    final class Gate implements ByteLink {
-        private final ByteLink link;
-        /** Where a packet of the protocol holds the device's address. */
-        private final int addressAt;
-
-        Gate(ByteLink link, int addressAt) {
-            this.link = link;
-            this.addressAt = addressAt;
-        }
-
-        @Override
-        public void write(byte[] b, int off, int len) throws IOException {
-            if (len > addressAt && gated.contains(b[off + addressAt] & 0xFF)) {
-                return;
-            }
-            link.write(b, off, len);
-        }
-
-        @Override
-        public int read(byte[] b) throws IOException {
-            return link.read(b);
-        }
-
-        @Override
-        public String name() {
-            return link.name();
-        }
-
-        @Override
-        public void close() {
-            link.close();
-        }
+    /**
+     * The host's end of the line, swallowing every packet addressed to a gated device; the
+     * protocol holds the address at {@code addressAt}.
+     */
+    ByteLink gate(ByteLink link, int addressAt) {
+        return new WatchedLink(link, (b, off, len) -> len <= addressAt || !gated.contains(b[off + addressAt] & 0xFF));
     }
 }
