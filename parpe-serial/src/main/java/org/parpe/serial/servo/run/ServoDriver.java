@@ -279,8 +279,8 @@ public final class ServoDriver extends BusThread {
             readAttempt = 0;
             readFailures++;
             backoff[set.slotOf(k)] = BACKOFF_CYCLES;
-            report.problem("bus: " + ServoSetUp.who(profile.protocol(), set.mappingAt(k)) + " did not answer " + (config.retries() + 1)
-                    + " reads; reading it less often");
+            report.problem("bus: " + ServoSetUp.who(profile.protocol(), set.mappingAt(k)) + " did not answer "
+                    + (config.retries() + 1) + " reads; reading it less often");
         }
         return answered;
     }
