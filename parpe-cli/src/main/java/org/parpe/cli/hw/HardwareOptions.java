@@ -8,17 +8,15 @@ import org.parpe.core.run.Run;
 import org.parpe.core.run.SensorSource;
 import org.parpe.core.run.SourceKind;
 import org.parpe.core.run.TargetException;
-import org.parpe.serial.bus.BusTarget;
 import org.parpe.serial.link.SerialLink;
-import org.parpe.serial.servo.profile.HardwareProfile;
 import org.parpe.serial.servo.run.ServoTarget;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
- * The serial-bus options of {@code parpe run}: with {@code --port} the run drives real (or
- * emulated) G1 modules through a {@link BusTarget}, with {@code --hardware} the servos of a
- * hardware profile (any protocol) through a {@link ServoTarget}, paced to the wall clock. With {@code --sim}
+ * The serial-bus options of {@code parpe run}: the run drives, through a {@link ServoTarget} and
+ * paced to the wall clock, with {@code --port} alone the script's G1 modules (real or emulated),
+ * with {@code --hardware} the servos of a hardware profile (any protocol). With {@code --sim}
  * as well, both are driven and {@code --diverge} reports where they disagree. Stopping the run
  * (Ctrl-C) sends an emergency stop.
  */
@@ -49,11 +47,7 @@ public class HardwareOptions {
     }
 
     public void configure(Run.Builder run, PrintStream err) throws UsageException, TargetException {
-        if (hardware != null) {
-            configureProfile(run, err);
-            return;
-        }
-        if (port == null) {
+        if (hardware == null && port == null) {
             if (diverge != null) {
                 throw new UsageException("--diverge compares hardware with the simulator: it needs --port and --sim");
             }
@@ -61,21 +55,10 @@ public class HardwareOptions {
         }
         SensorSource sim = run.sensorSource(SourceKind.SIMULATOR);
         checkDiverge(sim);
-        BusTarget target = new BusTarget(port, bus.config(), err::println);
+        ServoTarget target = hardware != null ? new ServoTarget(Profiles.load(hardware, port), bus.config(), err::println)
+                : ServoTarget.modules(port, bus.config(), err::println);
         run.attach(target);
         // Ctrl-C: the emergency stop must leave before jSerialComm closes the port at shutdown.
-        SerialLink.beforePortsClose(target.bus()::emergencyStopIfRunning);
-        if (diverge != null) {
-            run.observer(new DivergenceMonitor(sim, target.bus()::measuredAngle, diverge, err));
-        }
-    }
-
-    private void configureProfile(Run.Builder run, PrintStream err) throws UsageException, TargetException {
-        SensorSource sim = run.sensorSource(SourceKind.SIMULATOR);
-        checkDiverge(sim);
-        HardwareProfile profile = Profiles.load(hardware, port);
-        ServoTarget target = new ServoTarget(profile, bus.config(), err::println);
-        run.attach(target);
         SerialLink.beforePortsClose(target.driver()::emergencyStopIfRunning);
         if (diverge != null) {
             run.observer(new DivergenceMonitor(sim, target.driver()::measuredAngle, diverge, err));

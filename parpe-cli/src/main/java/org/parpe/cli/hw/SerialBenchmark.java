@@ -12,7 +12,6 @@ import org.parpe.cli.bench.Benchmark;
 import org.parpe.serial.bus.BusConfig;
 import org.parpe.serial.bus.BusMaster;
 import org.parpe.serial.bus.BusReport;
-import org.parpe.serial.bus.HardwareBus;
 import org.parpe.serial.emu.BusEmulator;
 import org.parpe.serial.emu.EmulatorListener;
 import org.parpe.serial.emu.EmulatorOptions;
@@ -22,6 +21,8 @@ import org.parpe.serial.link.PtyPair;
 import org.parpe.serial.protocol.FrameDecoder;
 import org.parpe.serial.protocol.FrameEncoder;
 import org.parpe.serial.protocol.Protocol;
+import org.parpe.serial.servo.profile.HardwareProfile;
+import org.parpe.serial.servo.run.ServoDriver;
 
 /**
  * {@code parpe bench --only serial}: setpoint frames for 55 modules. (1) CPU per frame of the
@@ -87,6 +88,7 @@ public final class SerialBenchmark implements Benchmark {
      * offers new setpoints as fast as it can. Returns setpoint frames the modules got per second.
      */
     private static double driver(int baud, double seconds) throws Exception {
+        BusConfig config = BusConfig.defaults().withBaud(baud);
         PipeLink[] pipe = PipeLink.pair("bench");
         AtomicLong frames = new AtomicLong();
         int[] ids = new int[MODULES];
@@ -98,9 +100,9 @@ public final class SerialBenchmark implements Benchmark {
             public void onSetpoints(int seq, double[] angles) {
                 frames.incrementAndGet();
             }
-        }); HardwareBus bus = HardwareBus.open(() -> new WireLink(pipe[0], baud),
-                BusConfig.defaults().withBaud(baud), BusReport.lines(m -> { }))) {
-            bus.discover(ids);
+        }); ServoDriver bus = ServoDriver.open(() -> new WireLink(pipe[0], baud), config,
+                HardwareProfile.ofModules("bench", config, ids), ids, BusReport.lines(m -> { }))) {
+            bus.discover();
             double fps = PacedProducer.drive(bus, ids, seconds, frames);
             checkClean(emu);
             return fps;

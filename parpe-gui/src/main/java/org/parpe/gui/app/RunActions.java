@@ -32,8 +32,6 @@ import org.parpe.core.plot.AngleRecorder;
 import org.parpe.gui.run.RunController;
 import org.parpe.gui.run.RunOn;
 import org.parpe.serial.bus.BusConfig;
-import org.parpe.serial.bus.BusTarget;
-import org.parpe.serial.bus.HardwareBus;
 import org.parpe.sim.SimMetrics;
 import org.parpe.serial.servo.profile.HardwareProfile;
 import org.parpe.serial.servo.profile.ProfileReader;
@@ -60,7 +58,6 @@ public final class RunActions implements ControlPanel.ControlSink {
         return t;
     });
     private volatile Simulator sim;
-    private volatile HardwareBus bus;
     private volatile ServoDriver servos;
     private volatile SimSnapshot preview;
     private volatile String hardwareState = "Hardware: not connected";
@@ -125,8 +122,7 @@ public final class RunActions implements ControlPanel.ControlSink {
     /** Since when (wall-clock ms) the run's servos or G1 modules have not answered; −1 while they do or none are driven. */
     long hardwareSilentSince() {
         ServoDriver d = servos;
-        HardwareBus b = bus;
-        return d != null ? d.notAnsweringSince() : b != null ? b.notAnsweringSince() : -1;
+        return d != null ? d.notAnsweringSince() : -1;
     }
 
     /**
@@ -264,17 +260,7 @@ public final class RunActions implements ControlPanel.ControlSink {
             attachServos(run, profile, port);
         } else if (target.hardware()) {
             hardwareState = "Hardware: connecting to " + port + "\u2026";
-            BusTarget hw = new BusTarget(port, BusConfig.defaults(), ide::logLater);
-            try {
-                run.attach(hw);
-            } finally {
-                hardwareState = hw.bus() == null ? "Hardware: not connected" : "Hardware: " + hw.bus().name();
-            }
-            bus = hw.bus();
-            run.closeAtEnd(() -> {
-                bus = null;
-                hardwareState = "Hardware: disconnected";
-            });
+            attachDriver(run, ServoTarget.modules(port, BusConfig.defaults(), ide::logLater), "");
         }
         if (target.sim()) {
             SimTarget st = new SimTarget(spec, world);
@@ -301,12 +287,16 @@ public final class RunActions implements ControlPanel.ControlSink {
             profile = profile.withPort(port);
         }
         hardwareState = "Hardware: connecting to " + profile.port() + "\u2026";
-        ServoTarget st = new ServoTarget(profile, BusConfig.defaults(), ide::logLater);
+        attachDriver(run, new ServoTarget(profile, BusConfig.defaults(), ide::logLater),
+                " (" + profile.protocol().key() + ")");
+    }
+
+    /** Attaches {@code st}; the status line names its device, then {@code what}. */
+    private void attachDriver(Run.Builder run, ServoTarget st, String what) throws TargetException {
         try {
             run.attach(st);
         } finally {
-            hardwareState = st.driver() == null ? "Hardware: not connected"
-                    : "Hardware: " + st.driver().name() + " (" + profile.protocol().key() + ")";
+            hardwareState = st.driver() == null ? "Hardware: not connected" : "Hardware: " + st.driver().name() + what;
         }
         servos = st.driver();
         run.closeAtEnd(() -> {
@@ -396,10 +386,6 @@ public final class RunActions implements ControlPanel.ControlSink {
     /** Esc: stops the run at the next tick and tells the modules on the bus to stop at once. */
     void emergencyStop() {
         controller.stop();
-        HardwareBus b = bus;
-        if (b != null) {
-            b.emergencyStop();
-        }
         ServoDriver s = servos;
         if (s != null) {
             s.emergencyStop();

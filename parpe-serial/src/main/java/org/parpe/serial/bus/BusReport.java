@@ -3,7 +3,7 @@ package org.parpe.serial.bus;
 import java.util.function.Consumer;
 
 /**
- * Where a {@link HardwareBus} tells the user what happens on the bus, from any thread:
+ * Where a bus driver ({@link BusThread}) tells the user what happens on the bus, from any thread:
  * problems (faults, clamped setpoints, modules not answering) and notes (recoveries, the
  * emergency stop, the counters at the end). Messages start with {@code "bus: "} or
  * {@code "bus PORT: "}.

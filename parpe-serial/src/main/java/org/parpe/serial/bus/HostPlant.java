@@ -13,8 +13,8 @@ import org.parpe.core.run.SourceKind;
 import org.parpe.core.run.TraceColumns;
 
 /**
- * What the host side of any servo bus is to a run (the G1 {@link HardwareBus} and the
- * Dynamixel/Feetech driver alike): a plant and a sensor source that reports the angle each
+ * What the host side of a servo bus is to a run (G1 modules, Dynamixel and Feetech servos alike,
+ * all driven by {@link org.parpe.serial.servo.run.ServoDriver}): a plant and a sensor source that reports the angle each
  * module last measured and can stop every module at once. {@link #attachTo} adds it to a run
  * the one way all bus targets share.
  */

@@ -1,7 +1,8 @@
 /**
- * The host side of the bus: request/reply transactions with timeouts and retries
- * ({@link org.parpe.serial.bus.BusMaster}) and the run driver that is both a joint sink and a
- * sensor source, with clamping, a watchdog-backed safe stop, reconnection and emergency stop
- * ({@link org.parpe.serial.bus.HardwareBus}) (public API).
+ * The host side of the bus, shared by every protocol: the G1 request/reply transactions with
+ * timeouts and retries ({@link org.parpe.serial.bus.BusMaster}), the bus thread with its
+ * reconnection, silence report and emergency stop ({@link org.parpe.serial.bus.BusThread}), the
+ * bus settings and what a run target adds to a run ({@link org.parpe.serial.bus.HostPlant})
+ * (public API). The run driver itself is {@link org.parpe.serial.servo.run.ServoDriver}.
  */
 package org.parpe.serial.bus;

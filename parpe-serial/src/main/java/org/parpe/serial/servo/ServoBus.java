@@ -47,6 +47,13 @@ public interface ServoBus extends AutoCloseable {
      */
     int torqueState(int id, ServoModel model, int attempts) throws IOException;
 
+    /**
+     * The run's tick of the goals that follow, for protocols whose goal packets carry a sequence
+     * number (G1's SETPOINTS: tick mod 2¹⁶); the others ignore it.
+     */
+    default void goalSequence(int seq) {
+    }
+
     /** Sends goal positions ({@code ticks[i]} for {@code ids[i]}) to servos {@code 0…n) at once. */
     void writeGoals(int[] ids, ServoModel[] models, int[] ticks, int n) throws IOException;
 
@@ -67,6 +74,15 @@ public interface ServoBus extends AutoCloseable {
             throws IOException {
         writeGoals(ids, models, ticks, n);
         return readPositions(ids, models, n, degrees, errors);
+    }
+
+    /**
+     * The sensors other than the angle of device {@code id}, from its last position read, into
+     * {@code out} (accelerometer x, y, z in −100…100, touch left and right as 0 or 1): true where
+     * the devices have them (G1 modules), false otherwise.
+     */
+    default boolean sensors(int id, double[] out) {
+        return false;
     }
 
     /** Whether a status error byte reports a fault of the servo (rather than of the request). */
@@ -94,9 +110,45 @@ public interface ServoBus extends AutoCloseable {
 
     /**
      * Emergency stop of servos {@code 0…n)}: torque off ({@code limp}), or stop where they are
-     * and hold. Several packets, so that one lost packet does not matter.
+     * and hold. Several packets, so that one lost packet does not matter. Returns what the
+     * devices now do, for the user ("servos limp (torque off)").
      */
-    void emergencyStop(int[] ids, ServoModel[] models, int n, boolean limp) throws IOException;
+    String emergencyStop(int[] ids, ServoModel[] models, int n, boolean limp) throws IOException;
+
+    /**
+     * The end of a run: the devices {@code 0…n)} keep holding with their watchdog off, at goals
+     * {@code ticks} (null: where they are). Packets without a reply go out several times. By
+     * default the watchdog goes off first (writing 0 also clears a Dynamixel Bus Watchdog
+     * error, which would refuse the goals), then the goals, three times.
+     */
+    default void finalHold(int[] ids, ServoModel[] models, int[] ticks, int n) throws IOException {
+        watchdog(ids, models, n, 0, false);
+        for (int i = 0; i < 3 && ticks != null; i++) {
+            writeGoals(ids, models, ticks, n);
+        }
+    }
+
+    /**
+     * Every device fell silent for the dead-bus time: does what the host can (a torque-off for
+     * {@code limp}, where the servos would otherwise keep their goal) and says what the devices
+     * do, for the user.
+     */
+    default String silenced(int[] ids, ServoModel[] models, int n, int watchdogMs, boolean limp) {
+        if (!limp) {
+            return "servos hold their last goal";
+        }
+        try {
+            torque(ids, models, n, false);
+        } catch (IOException e) {
+            return "servos keep their last goal (the torque-off could not be sent)";
+        }
+        return "torque-off sent (limp)";
+    }
+
+    /** What the devices do while the host has lost the device, for the user. */
+    default String whileLost(int watchdogMs, boolean limp) {
+        return "servos hold their last goal" + (watchdogMs > 0 ? " or stop on their own watchdog" : "");
+    }
 
     /**
      * Makes servos {@code 0…n)} hold where they are: their present positions become their goals,
@@ -143,8 +195,10 @@ public interface ServoBus extends AutoCloseable {
      * @param timeouts       replies that did not come in time
      * @param checksumErrors received packets with a bad CRC or checksum
      * @param stray          valid packets nobody waited for
+     * @param rejected       packets the devices say they rejected (G1 modules count them), −1
+     *                       where the devices do not say
      */
-    record Counters(long packetsSent, long timeouts, long checksumErrors, long stray) {
+    record Counters(long packetsSent, long timeouts, long checksumErrors, long stray, long rejected) {
     }
 
     /** A snapshot of the counters. */

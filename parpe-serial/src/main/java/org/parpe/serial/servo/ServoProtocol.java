@@ -28,6 +28,19 @@ public enum ServoProtocol {
         this.scanBauds = scanBauds;
     }
 
+    /**
+     * What one device on this bus is called in messages: "module" for G1, whose devices are
+     * PolyBot modules (their bus ID is their PARSL module ID), "servo" for the others.
+     */
+    public String unit() {
+        return this == G1 ? "module" : "servo";
+    }
+
+    /** What one packet on this bus is called in messages: "frame" for G1, "packet" for the others. */
+    public String packet() {
+        return this == G1 ? "frame" : "packet";
+    }
+
     /** The name on the command line and in profiles: g1, dxl2, sts, scs. */
     public String key() {
         return key;

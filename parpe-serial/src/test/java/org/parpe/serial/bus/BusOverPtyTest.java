@@ -24,10 +24,14 @@ import org.parpe.serial.emu.EmulatorListener;
 import org.parpe.serial.emu.EmulatorOptions;
 import org.parpe.serial.link.LinkOpener;
 import org.parpe.serial.link.PtyPair;
+import org.parpe.serial.servo.profile.HardwareProfile;
+import org.parpe.serial.servo.run.ServoDriver;
 
 /**
- * The driver against the emulator over a real pty pair made by socat: the bytes cross the
- * kernel's tty layer as they would with a USB adapter.
+ * The run driver with the profile {@code --port} makes from the script's G1 modules against the
+ * module emulator over a real pty pair made by socat: the bytes cross the kernel's tty layer as
+ * they would with a USB adapter. (These tests drove HardwareBus, the second G1 stack, before it
+ * was folded into ServoDriver; they pass unchanged but for how the driver is opened.)
  */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
 class BusOverPtyTest {
@@ -37,7 +41,7 @@ class BusOverPtyTest {
     Path dir;
     PtyPair pty;
     BusEmulator emulator;
-    HardwareBus bus;
+    ServoDriver bus;
     final Map<Integer, double[]> received = new ConcurrentHashMap<>();
     final List<String> emulatorEvents = new CopyOnWriteArrayList<>();
     final List<long[]> safeStops = new CopyOnWriteArrayList<>();
@@ -92,7 +96,7 @@ class BusOverPtyTest {
         });
     }
 
-    Discovery startBus(int[] ids) throws Exception {
+    List<Integer> startBus(int[] ids) throws Exception {
         // The first frames of a fresh emulator load its classes, which on a loaded machine can
         // outlast discovery's retries: wait until it answers before the bus looks.
         try (org.parpe.serial.servo.ServoBus warm = org.parpe.serial.servo.host.ServoBuses.open(
@@ -103,13 +107,19 @@ class BusOverPtyTest {
                 assertTrue(System.nanoTime() < deadline, "the emulator did not answer in 5 s");
             }
         }
-        bus = HardwareBus.open(LinkOpener.serial(pty.a().toString(), 115200), BusConfig.defaults(), BusReport.lines(m -> {
+        bus = open(BusConfig.defaults(), ids, BusReport.lines(m -> {
             reportTimes.add(System.nanoTime());
             reports.add(m);
         }));
-        Discovery d = bus.discover(ids);
+        List<Integer> found = bus.discover();
         bus.start(new RunInfo(null, ids, 0.01));
-        return d;
+        return found;
+    }
+
+    /** The driver of {@code --port}: the script's modules as G1 devices. */
+    ServoDriver open(BusConfig config, int[] ids, BusReport report) throws Exception {
+        return ServoDriver.open(LinkOpener.serial(pty.a().toString(), 115200), config,
+                HardwareProfile.ofModules(pty.a().toString(), config, ids), ids, report);
     }
 
     static double angle(int tick, int module) {
@@ -151,10 +161,9 @@ class BusOverPtyTest {
     @Test
     void discoveryReportsMissingModulesAndSetpointsArriveAsSent() throws Exception {
         startEmulator(EmulatorOptions.of(IDS));
-        Discovery d = startBus(new int[] {0, 1, 2, 3, 4, 5, 6, 7, 9, 300});
-        assertEquals(List.of(9), d.missing());
-        assertEquals(List.of(300), d.unaddressable());
-        assertEquals(8, d.found().size());
+        List<Integer> found = startBus(new int[] {0, 1, 2, 3, 4, 5, 6, 7, 9, 300});
+        assertEquals(List.of(0, 1, 2, 3, 4, 5, 6, 7), found, "9 does not answer");
+        assertEquals(List.of(300), bus.unmapped(), "300 cannot be on the bus");
         double[][] rows = drive(200, 10);
         bus.finish(new RunOutcome(RunOutcome.Status.COMPLETED, 2, ""));
         assertReceivedMatch(rows, 8, true);
@@ -264,9 +273,8 @@ class BusOverPtyTest {
     @Test
     void emergencyStopLatchesTheSafeModeUntilTheNextRun() throws Exception {
         startEmulator(EmulatorOptions.of(IDS));
-        bus = HardwareBus.open(LinkOpener.serial(pty.a().toString(), 115200),
-                BusConfig.defaults().withSafeMode(SafeMode.LIMP), BusReport.lines(reports::add));
-        bus.discover(IDS);
+        bus = open(BusConfig.defaults().withSafeMode(SafeMode.LIMP), IDS, BusReport.lines(reports::add));
+        bus.discover();
         bus.start(new RunInfo(null, IDS, 0.01));
         drive(40, 8);
         bus.emergencyStop();
@@ -286,8 +294,8 @@ class BusOverPtyTest {
             assertTrue(emulator.isLimp(id), "the final HOLD is not sent after an emergency stop: module " + id);
         }
         bus.close();
-        bus = HardwareBus.open(LinkOpener.serial(pty.a().toString(), 115200), BusConfig.defaults(), BusReport.lines(reports::add));
-        bus.discover(IDS);
+        bus = open(BusConfig.defaults(), IDS, BusReport.lines(reports::add));
+        bus.discover();
         bus.start(new RunInfo(null, IDS, 0.01));
         drive(20, 8);
         bus.finish(new RunOutcome(RunOutcome.Status.COMPLETED, 0.2, ""));

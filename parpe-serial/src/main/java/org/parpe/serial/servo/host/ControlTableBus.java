@@ -290,14 +290,15 @@ public final class ControlTableBus implements ServoBus {
     }
 
     @Override
-    public void emergencyStop(int[] ids, ServoModel[] models, int n, boolean limp) throws IOException {
+    public String emergencyStop(int[] ids, ServoModel[] models, int n, boolean limp) throws IOException {
         if (limp) {
             for (int pass = 0; pass < 3; pass++) {
                 torque(ids, models, n, false);
             }
-            return;
+            return "servos limp (torque off)";
         }
         holdHere(ids, models, n);
+        return "servos hold where they are";
     }
 
     @Override
@@ -308,7 +309,7 @@ public final class ControlTableBus implements ServoBus {
     @Override
     public Counters counters() {
         long[] c = port.receiveCounters();
-        return new Counters(port.packetsSent(), c[0], c[1], c[2]);
+        return new Counters(port.packetsSent(), c[0], c[1], c[2], -1);
     }
 
     @Override

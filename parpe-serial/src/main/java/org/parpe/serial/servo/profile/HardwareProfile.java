@@ -1,7 +1,11 @@
 package org.parpe.serial.servo.profile;
 
 import java.util.List;
+import org.parpe.core.diag.SourcePos;
+import org.parpe.serial.bus.BusConfig;
 import org.parpe.serial.bus.SafeMode;
+import org.parpe.serial.protocol.Protocol;
+import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.ServoProtocol;
 
 /**
@@ -23,6 +27,25 @@ public record HardwareProfile(String file, ServoProtocol protocol, String port, 
 
     public HardwareProfile {
         servos = List.copyOf(servos);
+    }
+
+    /**
+     * The profile of G1 modules driven without a profile file (the command line's {@code --port},
+     * the IDE's Hardware target without a profile): each module of {@code moduleIds} that can be
+     * on the bus (IDs 0..254) is its own device, a {@code g1-segment} with the joint range
+     * ±90° ({@link Protocol#JOINT_LIMIT_DEG}); baud, safe mode and watchdog are {@code config}'s.
+     */
+    public static HardwareProfile ofModules(String port, BusConfig config, int[] moduleIds) {
+        ServoModel segment = ServoModel.defaultFor(ServoProtocol.G1);
+        List<ServoMapping> servos = new java.util.ArrayList<>();
+        for (int id : moduleIds) {
+            if (id <= Protocol.MAX_MODULE_ID) {
+                servos.add(new ServoMapping(id, id, segment, 0, 1, -Protocol.JOINT_LIMIT_DEG, Protocol.JOINT_LIMIT_DEG,
+                        SourcePos.NONE));
+            }
+        }
+        return new HardwareProfile("bus " + port, ServoProtocol.G1, port, config.baud(), config.safeMode(),
+                config.watchdogMs(), servos);
     }
 
     /** The mapping of PARSL module {@code module}, or null. */

@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.function.Consumer;
+import org.parpe.core.diag.SourcePos;
 import org.parpe.core.sensor.Channel;
 import org.parpe.core.sensor.SensorTable;
 import org.parpe.serial.servo.ServoBus;
@@ -33,6 +34,11 @@ final class ServoSet {
     private boolean fresh;
     private boolean hasSetpoints;
     private long clamps;
+    /** The run's tick of the newest setpoints (mod 2¹⁶), for protocols whose goals carry one. */
+    private int seq;
+    private int goalSeq;
+    /** Where {@link ServoBus#sensors} leaves a servo's other sensors, bus thread only. */
+    private final double[] sensed = new double[Slot.SENSORS];
 
     ServoSet(HardwareProfile profile, int[] runModules) {
         this.runModules = runModules.clone();
@@ -117,16 +123,38 @@ final class ServoSet {
                 clamps++;
                 if (!s.clampWarned) {
                     s.clampWarned = true;
-                    warn.accept(String.format(Locale.ROOT, "module %d commanded %.2f° at tick %d, outside its "
-                            + "limits %.2f..%.2f° (%s); sending %.2f° (further clamps are counted)", m.module(), v, tick,
-                            m.min(), m.max(), m.where(), c));
+                    warn.accept(clamped(m, v, tick, c));
                 }
             }
             s.joint = c;
         }
+        seq = (int) (tick & 0xFFFF);
         fresh = true;
         hasSetpoints = true;
         notifyAll();
+    }
+
+    /**
+     * The warning for a clamped setpoint: limits from a profile name its {@code <servo>}; the
+     * joint range of modules driven without one (G1 with {@code --port}) is named as such.
+     */
+    private static String clamped(ServoMapping m, double v, long tick, double c) {
+        if ((m.where() == null || m.where() == SourcePos.NONE) && m.min() == -m.max()) {
+            return String.format(Locale.ROOT, "module %d commanded %.2f° at tick %d, outside the joint range ±%.0f°; "
+                    + "sending %.0f° (further clamps are counted)", m.module(), v, tick, m.max(), c);
+        }
+        return String.format(Locale.ROOT, "module %d commanded %.2f° at tick %d, outside its limits %.2f..%.2f° (%s); "
+                + "sending %.2f° (further clamps are counted)", m.module(), v, tick, m.min(), m.max(), m.where(), c);
+    }
+
+    /** The run's tick of the goals {@link #takeGoals} took last, mod 2¹⁶ (bus thread). */
+    int goalSeq() {
+        return goalSeq;
+    }
+
+    /** The mapped servo (index into the mappings) at packed index {@code k}. */
+    int slotOf(int k) {
+        return packed[k];
     }
 
     /** Fills {@link #goals} (packed order) when new setpoints came or {@code keepalive} is set. */
@@ -139,6 +167,7 @@ final class ServoSet {
             Slot s = slots[packed[k]];
             goals[k] = s.mapping.goalTicks(s.joint);
         }
+        goalSeq = seq;
         fresh = false;
         return true;
     }
@@ -162,9 +191,14 @@ final class ServoSet {
             if (errors[k] == ServoBus.NO_REPLY) {
                 continue;
             }
+            boolean more = bus.sensors(ids[k], sensed);
             synchronized (this) {
                 s.measured = s.mapping.jointAngle(degrees[k]);
                 s.have = true;
+                if (more) {
+                    System.arraycopy(sensed, 0, s.sensors, 0, Slot.SENSORS);
+                    s.hasSensors = true;
+                }
                 if (!hasSetpoints) {
                     s.joint = s.mapping.clamp(s.measured);
                 }
@@ -186,13 +220,21 @@ final class ServoSet {
         return newFaults;
     }
 
-    /** Copies measured angles into {@code table}; a servo never read shows its setpoint. */
-    synchronized void copyTo(SensorTable table, Channel angle) {
+    /**
+     * Copies measured angles, and the other sensors where the devices have them, into
+     * {@code table}; a servo never read shows its setpoint.
+     */
+    synchronized void copyTo(SensorTable table) {
         for (Slot s : slots) {
             if (s.have) {
-                table.set(s.runIndex, angle, s.measured);
+                table.set(s.runIndex, Channel.ANGLE, s.measured);
             } else if (hasSetpoints) {
-                table.set(s.runIndex, angle, s.joint);
+                table.set(s.runIndex, Channel.ANGLE, s.joint);
+            }
+            if (s.hasSensors) {
+                for (int c = 0; c < Slot.SENSORS; c++) {
+                    table.set(s.runIndex, Slot.CHANNELS[c], s.sensors[c]);
+                }
             }
         }
     }
@@ -213,6 +255,10 @@ final class ServoSet {
 
     /** One mapped servo: its mapping, its place in the run and what the two threads handed over for it. */
     private static final class Slot {
+        /** The sensors {@link ServoBus#sensors} reports, in its order. */
+        static final Channel[] CHANNELS = {Channel.ACCEL_X, Channel.ACCEL_Y, Channel.ACCEL_Z, Channel.TOUCH_LEFT,
+            Channel.TOUCH_RIGHT};
+        static final int SENSORS = CHANNELS.length;
         final ServoMapping mapping;
         /** Index of its module in the run. */
         final int runIndex;
@@ -225,6 +271,9 @@ final class ServoSet {
         boolean clampWarned;
         /** Whether the servo's current fault was reported. */
         boolean faultShown;
+        /** The other sensors of the last reading, valid once {@link #hasSensors} is set. */
+        final double[] sensors = new double[SENSORS];
+        boolean hasSensors;
 
         Slot(ServoMapping mapping, int runIndex) {
             this.mapping = mapping;

@@ -12,6 +12,7 @@ import org.parpe.serial.emu.EmulatorListener;
 import org.parpe.serial.emu.EmulatorOptions;
 import org.parpe.serial.link.ByteLink;
 import org.parpe.serial.link.PipeLink;
+import org.parpe.serial.link.WatchedLink;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.emu.ServoEmulator;
 
@@ -23,37 +24,6 @@ import org.parpe.serial.servo.emu.ServoEmulator;
 class FullCycleTest {
     static final int[] IDS = {1, 2, 3, 4};
 
-    /** A link that counts the writes made on it. */
-    static final class CountingLink implements ByteLink {
-        final ByteLink inner;
-        final AtomicInteger writes = new AtomicInteger();
-
-        CountingLink(ByteLink inner) {
-            this.inner = inner;
-        }
-
-        @Override
-        public void write(byte[] b, int off, int len) throws IOException {
-            writes.incrementAndGet();
-            inner.write(b, off, len);
-        }
-
-        @Override
-        public int read(byte[] b) throws IOException {
-            return inner.read(b);
-        }
-
-        @Override
-        public String name() {
-            return inner.name();
-        }
-
-        @Override
-        public void close() {
-            inner.close();
-        }
-    }
-
     @ParameterizedTest
     @ValueSource(strings = {"xl430-w250", "sts3215", "scs0009", "xl430-w250+xl-320"})
     void goalsLeaveWithTheReadRequestInOneWrite(String names) throws Exception {
@@ -63,7 +33,8 @@ class FullCycleTest {
             models[i] = ServoModel.named(parts[i % parts.length]);
         }
         PipeLink[] pipe = PipeLink.pair("cycle");
-        CountingLink host = new CountingLink(pipe[0]);
+        AtomicInteger writes = new AtomicInteger();
+        ByteLink host = new WatchedLink(pipe[0], (b, off, len) -> writes.incrementAndGet() > 0);
         try (ServoEmulator emu = ServoEmulator.start(() -> pipe[1], models, EmulatorOptions.of(IDS),
                 new EmulatorListener() { });
              ControlTableBus bus = new ControlTableBus(models[0].protocol(), host, 1_000_000, 50)) {
@@ -74,11 +45,11 @@ class FullCycleTest {
             }
             double[] deg = new double[IDS.length];
             int[] err = new int[IDS.length];
-            int before = host.writes.get();
+            int before = writes.get();
             assertEquals(IDS.length, bus.writeGoalsAndRead(IDS, models, ticks, IDS.length, deg, err));
             // One write for goals and read together, except SCS, which reads servo by servo.
             int expected = models[0].protocol().key().equals("scs") ? IDS.length : 1;
-            assertEquals(expected, host.writes.get() - before, "writes for one cycle");
+            assertEquals(expected, writes.get() - before, "writes for one cycle");
             long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
             while (!arrived(bus, models, ticks, deg, err)) {
                 if (System.nanoTime() > deadline) {

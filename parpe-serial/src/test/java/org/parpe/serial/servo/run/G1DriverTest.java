@@ -115,7 +115,7 @@ class G1DriverTest {
         // Counted in the reports, not in the emulator's state: a test thread paused for more than
         // the modules' 50 ms watchdog would let them stop again after their RESUME.
         for (int id : MODULES) {
-            assertTrue(reports.contains("bus: servo " + id + " had stopped on its watchdog (a gap of more than "
+            assertTrue(reports.contains("bus: module " + id + " had stopped on its watchdog (a gap of more than "
                     + HardwareProfile.DEFAULT_WATCHDOG_MS + " ms in the bus traffic); resuming it"),
                     "module " + id + " resumed within four rounds of reads: " + reports);
         }
