@@ -43,7 +43,13 @@ public record MemoryReport(Board board, long stateBytes, long boardBytes, long r
         l.add(d, 4).add(2, 6);
         l.add(d, Math.max(1, p.controls())).add(d, p.macros()).add(d, 2L * Math.max(1, p.sensorReadings()));
         l.add(8, 1).add(d, 2L * p.modules()).add(1, p.modules()).add(2, p.modules());
-        l.add(b.longBytes(), 3).add(2, 1).add(1, 1).add(b.pointerBytes(), 2);
+        if (d == 4) {
+            // 32-bit double: tick, the clock and the entry's start (two uint32_t each, parsl_rt.h), main_cycle
+            l.add(b.longBytes(), 1).add(4, 4).add(b.longBytes(), 1);
+        } else {
+            l.add(b.longBytes(), 3);
+        }
+        l.add(2, 1).add(1, 1).add(b.pointerBytes(), 2);
         Layout inst = new Layout(b);
         inst.add(d, 3).add(2, 1).add(1, 3);
         l.add(inst.size(), b.align(d), p.instances());

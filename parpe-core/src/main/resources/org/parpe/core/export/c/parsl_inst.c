@@ -8,6 +8,28 @@
 #define EPS 1e-9
 #define MAX_TRANSITIONS 10000
 
+#ifdef PARSL_EXACT_TIME
+/*
+ * 32-bit floats (see parsl_rt.h): u is the progress since the start (the interpreter's u - uk)
+ * less the whole cycles, which cyc counts in an integer; uk holds what rounding took from u
+ * (Kahan's compensated sum), so that over millions of ticks u follows the progress as closely as
+ * the states' own progress p does.
+ */
+#define U_START(start) 0
+#define U_LIMIT(r, is, q) ((is)->limit - (r)->cyc[q])
+static void add_u(parsl_rt *r, int16_t q, double du)
+{
+    double y = du - r->uk[q];
+    double t = r->u[q] + y;
+    r->uk[q] = (t - r->u[q]) - y;
+    r->u[q] = t;
+}
+#else
+#define U_START(start) (start)
+#define U_LIMIT(r, is, q) ((r)->uk[q] + (is)->limit)
+#define add_u(r, q, du) ((r)->u[q] += (du))
+#endif
+
 static void state_error(parsl_rt *r, int16_t code, int16_t pos, double a, int16_t what)
 {
     r->err_code = code;
@@ -114,8 +136,8 @@ void parsl_inst_init(parsl_rt *r, const inst_view *v, double phase, double offse
             r->st[q] = found;
             r->p[q] = f > 0 ? f : 0;
         }
-        r->uk[q] = start;
-        r->u[q] = start;
+        r->uk[q] = U_START(start);
+        r->u[q] = U_START(start);
         r->p0[q] = r->p[q];
         r->a0[q] = r->commanded[parsl_module_of(v, k)];
         r->cyc[q] = 0;
@@ -195,8 +217,8 @@ static void finish(parsl_rt *r, const inst_view *v, int16_t k, double angle)
     r->fin[q] = 1;
     v->is->finished++;
     r->out[q] = angle;
-    r->u[q] = r->uk[q] + v->is->limit;
     r->cyc[q] = floor(v->is->limit + EPS);
+    r->u[q] = U_LIMIT(r, v->is, q);
 }
 
 static void see_final(parsl_rt *r, const inst_view *v, int16_t k, int16_t s)
@@ -250,7 +272,7 @@ void parsl_advance(parsl_rt *r, const inst_view *v, int16_t k, double dt)
     if (v->per_module) {
         eval_times(r, v);
     }
-    lim = r->uk[q] + is->limit;
+    lim = U_LIMIT(r, is, q);
     s = r->st[q];
     ex = PARSL_I16(parsl_state[v->s0 + s], PARSL_S_EXIT);
     if (ex >= 0 && parsl_eval(r, ex) != 0) {
@@ -259,7 +281,7 @@ void parsl_advance(parsl_rt *r, const inst_view *v, int16_t k, double dt)
             finish(r, v, k, r->commanded[parsl_module_of(v, k)]);
             return;
         }
-        r->u[q] += du;
+        add_u(r, q, du);
         r->a0[q] = r->commanded[parsl_module_of(v, k)];
         next_state(r, v, q, &s);
     }
@@ -284,7 +306,7 @@ void parsl_advance(parsl_rt *r, const inst_view *v, int16_t k, double dt)
                 return;
             }
             r->p[q] += rem / d;
-            r->u[q] += du;
+            add_u(r, q, du);
             break;
         }
         du = (1 - r->p[q]) * t / is->sum_t;
@@ -301,12 +323,21 @@ void parsl_advance(parsl_rt *r, const inst_view *v, int16_t k, double dt)
             }
             return;
         }
-        r->u[q] += du;
+        add_u(r, q, du);
         r->a0[q] = target(r, v, s, k);
         next_state(r, v, q, &s);
     }
     r->ph[q] = phase_of(r, v, s, r->p[q]);
+#ifdef PARSL_EXACT_TIME
+    {
+        /* whole cycles move from u into the integer count, so u stays below 1 and keeps its precision */
+        double whole = floor(r->u[q] + EPS);
+        r->u[q] -= whole;
+        r->cyc[q] += (parsl_cycles) whole;
+    }
+#else
     r->cyc[q] = floor(r->u[q] - r->uk[q] + EPS);
+#endif
     r->phase = r->ph[q];
     r->cycle = r->cyc[q];
     r->out[q] = setpoint(r, v, k, s);
