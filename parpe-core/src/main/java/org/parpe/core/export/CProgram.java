@@ -4,6 +4,7 @@ import java.math.BigDecimal;
 import java.math.BigInteger;
 import java.math.RoundingMode;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.IdentityHashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -89,6 +90,11 @@ public final class CProgram {
     /** Largest number of state durations kept for one entry. */
     public int durations() {
         return Math.max(1, maxDurations);
+    }
+
+    /** The expressions the program evaluates, each once, in the order of their C functions. */
+    public List<Expression> expressions() {
+        return Collections.unmodifiableList(exprs);
     }
 
     /** Number of controls. */

@@ -53,6 +53,7 @@ public record MemoryReport(Board board, long stateBytes, long boardBytes, long r
         Layout inst = new Layout(b);
         inst.add(d, 3).add(2, 1).add(1, 3);
         l.add(inst.size(), b.align(d), p.instances());
+        // per module: p p0 a0 u uk ph cyc out (with a 32-bit double: u pc for u uk, cyc an int32_t)
         l.add(2, p.moduleStates()).add(1, p.moduleStates()).add(d, 8L * p.moduleStates()).add(d, p.durations());
         l.add(b.jmpBuf(), b.align(8), 1).add(2, 3).add(d, 2);
         return l.size();

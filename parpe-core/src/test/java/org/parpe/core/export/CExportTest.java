@@ -55,9 +55,9 @@ class CExportTest {
 
     @Test
     void unoStateEstimateEqualsWhatAvrGccLaysOut() {
-        assertEquals(317, CExport.estimate(example("hello-snake.xml"), 0.01, Board.UNO).stateBytes());
-        assertEquals(810, CExport.estimate(example("teleop-dirwave.xml"), 0.01, Board.UNO).stateBytes());
-        assertEquals(1801, CExport.estimate(example("centipede-walk.xml"), 0.01, Board.UNO).stateBytes());
+        assertEquals(329, CExport.estimate(example("hello-snake.xml"), 0.01, Board.UNO).stateBytes());
+        assertEquals(822, CExport.estimate(example("teleop-dirwave.xml"), 0.01, Board.UNO).stateBytes());
+        assertEquals(1813, CExport.estimate(example("centipede-walk.xml"), 0.01, Board.UNO).stateBytes());
     }
 
     @Test

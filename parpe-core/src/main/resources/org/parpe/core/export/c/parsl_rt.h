@@ -39,8 +39,8 @@ extern "C" {
  * Exact time on boards whose double is a 32-bit float (AVR; a PC test sets PARSL_REAL32): a float
  * cannot count ticks or cycles for long (at 2^24 it stops adding 1), so there the clock counts
  * whole seconds and parts of PARSL_DT_DEN in integers, $time and $btime are converted from it on
- * every tick, and whole cycles of progress are an integer count (cyc) with only the fraction left
- * in u. With a 64-bit double the runtime does what the interpreter does, bit for bit.
+ * every tick, and the progress u is an integer count of whole cycles (cyc) and a fixed-point
+ * fraction. With a 64-bit double the runtime does what the interpreter does, bit for bit.
  */
 #if defined(PARSL_REAL32) || (defined(__SIZEOF_DOUBLE__) && __SIZEOF_DOUBLE__ == 4)
 #define PARSL_EXACT_TIME 1
@@ -126,8 +126,13 @@ typedef struct parsl_rt {
     double p[PARSL_POOL1];
     double p0[PARSL_POOL1];
     double a0[PARSL_POOL1];
+#ifdef PARSL_EXACT_TIME
+    uint32_t u[PARSL_POOL1]; /* the fraction of a cycle, in units of 2^-32 (parsl_inst.c) */
+    uint32_t pf[PARSL_POOL1]; /* p in units of 2^-32 (parsl_inst.c) */
+#else
     double u[PARSL_POOL1];
     double uk[PARSL_POOL1];
+#endif
     double ph[PARSL_POOL1];
     parsl_cycles cyc[PARSL_POOL1];
     double out[PARSL_POOL1];
