@@ -21,7 +21,8 @@ import org.parpe.cli.Cli;
  * {@code $time}, {@code $btime} and running entry are compared with the exact values, computed
  * here in integers (not by the code under test). Before the runtime counted time in integers,
  * {@code $cycle} was 164 cycles short after a day and stopped at 262 144 (73 h), and timed
- * entries drifted by whole ticks. About 3 s.
+ * entries drifted by whole ticks; a one-state wave summed its progress in a float and fell behind.
+ * About 5 s.
  */
 class LongRunTest {
     static final Path REAL32 = Path.of("src/test/resources/export/real32").toAbsolutePath();
@@ -76,6 +77,32 @@ class LongRunTest {
         }
         assertTrue(checked >= 0.8 * rows.size(), "cycles checked on " + checked + " of " + rows.size() + " samples");
         assertEquals(ticks, (long) rows.get(rows.size() - 1)[0]);
+    }
+
+    /**
+     * A wave of one state and 1 s ($phase drives the angle) at a 10 ms tick: at tick n the exact
+     * phase is (n mod 100)/100 and the angle 30*sin(2*pi*phase). Summing the step 0.01 into a
+     * float rounded the same way every tick: 0.002 cycles (0.43 degrees) behind after an hour,
+     * 0.06 after a day.
+     */
+    @Test
+    void aPhaseWaveKeepsItsPhaseForADay() throws Exception {
+        Path script = tmp.resolve("wave.xml");
+        Files.writeString(script, "<program>\n<robot><structure><leg elements=\"0\"/></structure></robot>\n"
+                + "<main><go/></main>\n<behaviors><go><wave group=\"leg\" period=\"1\"/></go></behaviors>\n"
+                + "<automata><wave states=\"s\"/></automata>\n"
+                + "<states><s angles=\"30*sin(2*pi*$phase)\" interp=\"step\"/></states>\n</program>\n");
+        for (double[] row : run(script, 0.01, DAY * 100, 997)) {
+            long n = (long) row[0];
+            double exact = (n % 100) / 100.0;
+            double d = Math.abs(row[2] - exact);
+            double dPhase = Math.min(d, 1 - d);
+            assertTrue(dPhase <= 1e-6, () -> "tick " + n + ": $phase " + row[2] + ", exactly " + exact);
+            assertEquals(30 * Math.sin(2 * Math.PI * exact), row[6], 1e-3, () -> "tick " + n + ": angle");
+            if (n % 100 != 0) { // on a whole cycle either count is right within a float
+                assertEquals(n / 100, (long) row[1], () -> "tick " + n + ": $cycle");
+            }
+        }
     }
 
     /**
