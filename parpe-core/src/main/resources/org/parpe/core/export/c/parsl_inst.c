@@ -1,6 +1,7 @@
 /*
  * PARSL embedded runtime: one automaton instance (see parsl_inst.h), the same operations on
- * doubles in the same order as PARPE's InstanceRun, so that setpoints are equal bit for bit.
+ * doubles in the same order as PARPE's InstanceRun, so that setpoints are equal bit for bit;
+ * with 32-bit floats (PARSL_EXACT_TIME) the progress is summed in fixed point (below).
  */
 #include "parsl_inst.h"
 #include <math.h>
@@ -10,62 +11,51 @@
 
 #ifdef PARSL_EXACT_TIME
 /*
- * 32-bit floats (see parsl_rt.h): a float adding a tick's progress to u rounds the same way
- * tick after tick, and u drifts from the progress by a cycle in days. So u is the fraction of a
- * cycle since the start (the interpreter's u - uk less cyc) in units of 2^-32, and adding to
- * it is exact; a carry is one more cycle in cyc and one less in the local limit.
+ * 32-bit floats (see parsl_rt.h): a float adding the same step tick after tick rounds the same
+ * way each time and drifts (u by a cycle in days; p made a 1 s gait of one state 0.002 cycles
+ * late in an hour, 0.06 in a day). So both are summed exactly in fixed point, units of 2^-31
+ * (ONE): u is the fraction of a cycle since the start (the interpreter's u - uk less cyc), a
+ * carry one more cycle in cyc and one less in the local limit; pf is p's copy, p its float.
  */
-#define U(r, q) ldexp((double) (r)->u[q], -32)
-/* the state's progress p starts anew at p, its fixed-point copy with it */
-#define P_START(r, q) ((r)->pf[q] = (uint32_t) ldexp((r)->p[q], 32))
+#define ONE 0x80000000UL
+#define U(r, q) u_value(r, q)
+static double u_value(const parsl_rt *r, int16_t q)
+{
+    return ldexp((double) r->u[q], -31);
+}
+#define P_START(r, q) ((r)->pf[q] = (uint32_t) ldexp((r)->p[q], 31))
+#define P_RESET(r, q) ((r)->pf[q] = 0)
 /* whether adding du reaches the limit (never without one: the test is costly on AVR) */
 #define REACHES(r, q, du, lim) ((lim) < INFINITY && U(r, q) + (du) >= (lim) - EPS)
 #define U_START(r, q, start) ((r)->u[q] = 0, P_START(r, q))
 #define U_LIMIT(r, is, q) ((is)->limit - (r)->cyc[q])
 /* rem / d * t / sum_t with d = t * scale / sum_t (or t), in one division: faster, and one rounding */
 #define U_STEP(rem, d, t, is) ((rem) / ((is)->has_scale ? (is)->scale : (is)->sum_t))
+/* du <= 1 (one state's share of the cycle); below 0 only by what a transition left, within EPS */
 static void add_u(parsl_rt *r, int16_t q, double du, double *lim)
 {
-    uint32_t before = r->u[q];
-    if (du < 0) {
-        /* what the last transition left, within -EPS */
-        r->u[q] -= (uint32_t) ldexp(-du, 32);
-        if (r->u[q] > before) {
-            r->cyc[q]--;
-            *lim += 1;
+    if (du > 0) {
+        r->u[q] += (uint32_t) ldexp(du, 31);
+        if (r->u[q] >= ONE) {
+            r->u[q] -= ONE;
+            r->cyc[q]++;
+            *lim -= 1;
         }
-        return;
-    }
-    if (du >= 1) {
-        double whole = floor(du);
-        du -= whole;
-        r->cyc[q] += (parsl_cycles) whole;
-        *lim -= whole;
-    }
-    r->u[q] += (uint32_t) ldexp(du, 32);
-    if (r->u[q] < before) {
-        r->cyc[q]++;
-        *lim -= 1;
     }
 }
-/*
- * p += dp, summed exactly in the fixed-point copy pf (p < 1 while it grows): a float adding the
- * same step tick after tick rounds the same way each time, and a gait of 1 s made of one state
- * fell 0.002 cycles behind in an hour, 0.06 in a day.
- */
+/* p < 1 and 0 <= dp < 1 - p; below 0 only by what a transition left, within EPS */
 static void add_p(parsl_rt *r, int16_t q, double dp)
 {
-    uint32_t sum;
     if (dp < 0) {
-        r->p[q] += dp; /* what the last transition left, within -EPS: the copy stays at 0 */
+        r->p[q] += dp; /* the copy stays at 0 */
         return;
     }
-    sum = r->pf[q] + (uint32_t) ldexp(dp, 32);
-    r->pf[q] = sum < r->pf[q] ? UINT32_MAX : sum; /* the float p below pf let the step through: 1 */
-    r->p[q] = ldexp((double) r->pf[q], -32);
+    r->pf[q] += (uint32_t) ldexp(dp, 31);
+    r->p[q] = ldexp((double) r->pf[q], -31);
 }
 #else
 #define P_START(r, q)
+#define P_RESET(r, q)
 #define add_p(r, q, dp) ((r)->p[q] += (dp))
 #define U(r, q) ((r)->u[q])
 #define REACHES(r, q, du, lim) ((r)->u[q] + (du) >= (lim) - EPS)
@@ -304,7 +294,7 @@ static void next_state(parsl_rt *r, const inst_view *v, int16_t q, int16_t *s)
     *s = (int16_t) ((*s + 1) % v->ns);
     r->st[q] = *s;
     r->p[q] = r->p0[q] = 0;
-    P_START(r, q);
+    P_RESET(r, q);
 }
 
 void parsl_advance(parsl_rt *r, const inst_view *v, int16_t k, double dt)

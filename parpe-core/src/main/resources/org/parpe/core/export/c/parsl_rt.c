@@ -1,7 +1,8 @@
 /*
  * PARSL embedded runtime: the scheduler (PARSL.md sections 7, 11, 13), a line-by-line port of
  * PARPE's org.parpe.core.run.Engine so that the trace is the interpreter's, bit for bit: the
- * same operations on doubles in the same order. Instances are in parsl_inst.c.
+ * same operations on doubles in the same order. Instances are in parsl_inst.c. Where double is a
+ * 32-bit float (PARSL_EXACT_TIME, parsl_rt.h) the clock is counted in integers instead.
  */
 #include "parsl_inst.h"
 #include <math.h>
@@ -60,6 +61,7 @@ static double behavior_time(const parsl_rt *r)
     return r->tick * PARSL_DT - r->entry_start * PARSL_DT;
 #endif
 }
+
 void parsl_raise(parsl_rt *r, int16_t code, double a, double b, int16_t what)
 {
     r->err_code = code;
