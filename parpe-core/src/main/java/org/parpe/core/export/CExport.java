@@ -9,6 +9,7 @@ import java.util.Map;
 import java.util.stream.Stream;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
+import org.parpe.core.expr.Expression;
 import org.parpe.core.model.Control;
 import org.parpe.core.model.Program;
 
@@ -87,7 +88,28 @@ public final class CExport {
                         BigDecimal.valueOf(seconds * 1.2).round(new MathContext(2, RoundingMode.UP)).toPlainString()));
             }
         }
+        if (board.doubleBytes() == 4) {
+            warnOfClockWaves(c, board, diags);
+        }
         return m.fits() ? new Result(files, m) : null;
+    }
+
+    /**
+     * On a board with 32-bit floats, warns at each expression that is a periodic function of
+     * $time or $btime: the float holding the clock has steps of 0.24 ms after an hour, 7.8 ms
+     * after a day and 62.5 ms after a week, and such a wave's phase is off by up to a step's share
+     * of its period, more where its argument (2*pi*$time) rounds again (docs/embedded.md has the
+     * measured figures).
+     */
+    private static void warnOfClockWaves(CProgram c, Board board, DiagnosticSink diags) {
+        for (Expression e : c.expressions()) {
+            if (ClockWaves.periodicOfClock(e)) {
+                diags.warning(e.pos(), "on " + board.word() + " $time and $btime are 32-bit floats, with steps of"
+                        + " 0.24 ms after an hour, 7.8 ms after a day and 62.5 ms after a week, so a wave made from"
+                        + " them loses its phase as the board runs (30*sin(2*pi*$time) is off by 0.05 degrees after"
+                        + " an hour, 1.9 after a day, 12 after a week); a gait driven by an automaton's $phase does not");
+            }
+        }
     }
 
     /**

@@ -1,6 +1,10 @@
 package org.parpe.core.export;
 
+import java.math.BigDecimal;
+import java.math.BigInteger;
+import java.math.RoundingMode;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.IdentityHashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -86,6 +90,11 @@ public final class CProgram {
     /** Largest number of state durations kept for one entry. */
     public int durations() {
         return Math.max(1, maxDurations);
+    }
+
+    /** The expressions the program evaluates, each once, in the order of their C functions. */
+    public List<Expression> expressions() {
+        return Collections.unmodifiableList(exprs);
     }
 
     /** Number of controls. */
@@ -224,9 +233,32 @@ public final class CProgram {
         h.append("#define PARSL_MAIN_CYCLES (").append(cycles).append("L) /* -1: forever */\n");
         h.append("#define PARSL_DT ").append(CExpressions.literal(dt)).append(" /* the tick, ")
                 .append(String.format(Locale.ROOT, "%s", dt)).append(" s */\n");
+        long[] exact = exactTick(dt);
+        h.append("/* the tick as PARSL_DT_S + PARSL_DT_F / PARSL_DT_DEN s, for boards that keep time in integers */\n");
+        h.append("#define PARSL_DT_S ").append(exact[0]).append("UL\n");
+        h.append("#define PARSL_DT_F ").append(exact[1]).append("UL\n");
+        h.append("#define PARSL_DT_DEN ").append(exact[2]).append("UL\n");
         CLayout.appendC(h);
         h.append("\n#endif\n");
         return h.toString();
+    }
+
+    /**
+     * The tick {@code dt} as whole seconds, a numerator and a power-of-ten denominator of at most
+     * 10^9 (lowest terms): the decimal the user wrote (Java's shortest decimal of {@code dt}),
+     * rounded to the nanosecond if it has more digits.
+     */
+    static long[] exactTick(double dt) {
+        BigDecimal d = new BigDecimal(Double.toString(dt));
+        if (d.scale() > 9) {
+            d = d.setScale(9, RoundingMode.HALF_EVEN).max(BigDecimal.ONE.movePointLeft(9));
+        }
+        BigInteger whole = d.toBigInteger();
+        int scale = Math.max(0, d.scale());
+        BigInteger den = BigInteger.TEN.pow(scale);
+        BigInteger num = d.subtract(new BigDecimal(whole)).movePointRight(scale).toBigIntegerExact();
+        BigInteger g = num.gcd(den);
+        return new long[] {whole.longValueExact(), num.divide(g).longValueExact(), den.divide(g).longValueExact()};
     }
 
     private static void define(StringBuilder h, String name, int value, String what) {

@@ -43,10 +43,17 @@ public record MemoryReport(Board board, long stateBytes, long boardBytes, long r
         l.add(d, 4).add(2, 6);
         l.add(d, Math.max(1, p.controls())).add(d, p.macros()).add(d, 2L * Math.max(1, p.sensorReadings()));
         l.add(8, 1).add(d, 2L * p.modules()).add(1, p.modules()).add(2, p.modules());
-        l.add(b.longBytes(), 3).add(2, 1).add(1, 1).add(b.pointerBytes(), 2);
+        if (d == 4) {
+            // 32-bit double: tick, the clock and the entry's start (two uint32_t each, parsl_rt.h), main_cycle
+            l.add(b.longBytes(), 1).add(4, 4).add(b.longBytes(), 1);
+        } else {
+            l.add(b.longBytes(), 3);
+        }
+        l.add(2, 1).add(1, 1).add(b.pointerBytes(), 2);
         Layout inst = new Layout(b);
         inst.add(d, 3).add(2, 1).add(1, 3);
         l.add(inst.size(), b.align(d), p.instances());
+        // per module: p p0 a0 u uk ph cyc out (with a 32-bit double: u pc for u uk, cyc an int32_t)
         l.add(2, p.moduleStates()).add(1, p.moduleStates()).add(d, 8L * p.moduleStates()).add(d, p.durations());
         l.add(b.jmpBuf(), b.align(8), 1).add(2, 3).add(d, 2);
         return l.size();

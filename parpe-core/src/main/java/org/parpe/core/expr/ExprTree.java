@@ -62,6 +62,99 @@ public final class ExprTree {
         R random();
     }
 
+    /**
+     * A yes/no question about a tree: each leaf answers by its kind (no, unless a subclass says
+     * otherwise), an operator or function by its operands' answers, combined with {@code and}
+     * (stopping at the first no) or {@code or} (asking every operand, so that a subclass sees the
+     * whole tree).
+     */
+    public abstract static class Question implements Visitor<Boolean> {
+        private final boolean and;
+
+        /** A question whose operators answer yes when all operands do ({@code and}) or when any does. */
+        protected Question(boolean and) {
+            this.and = and;
+        }
+
+        /** The operands' answers, combined. */
+        protected final boolean operands(Node... nodes) {
+            boolean any = false;
+            for (Node n : nodes) {
+                boolean yes = visit(n, this);
+                if (and && !yes) {
+                    return false;
+                }
+                any |= yes;
+            }
+            return and || any;
+        }
+
+        @Override
+        public Boolean constant(double value) {
+            return false;
+        }
+
+        @Override
+        public Boolean control(int index) {
+            return false;
+        }
+
+        @Override
+        public Boolean macro(int index) {
+            return false;
+        }
+
+        @Override
+        public Boolean globalSensor(int slot) {
+            return false;
+        }
+
+        @Override
+        public Boolean localSensor(int position, int channel) {
+            return false;
+        }
+
+        @Override
+        public Boolean random() {
+            return false;
+        }
+
+        @Override
+        public Boolean unary(boolean not, Node arg) {
+            return operands(arg);
+        }
+
+        @Override
+        public Boolean binary(String op, Node left, Node right) {
+            return operands(left, right);
+        }
+
+        @Override
+        public Boolean logic(boolean and, Node left, Node right) {
+            return operands(left, right);
+        }
+
+        @Override
+        public Boolean conditional(Node cond, Node then, Node otherwise) {
+            return operands(cond, then, otherwise);
+        }
+
+        @Override
+        public Boolean function1(String name, Node arg) {
+            return operands(arg);
+        }
+
+        @Override
+        public Boolean function2(String name, Node a, Node b) {
+            return operands(a, b);
+        }
+
+        @Override
+        public Boolean sum(List<Node> args) {
+            return operands(args.toArray(new Node[0]));
+        }
+    }
+
     /** Hands {@code n} to the matching method of {@code v}. */
     public static <R> R visit(Node n, Visitor<R> v) {
         if (n instanceof Nodes.Const c) {

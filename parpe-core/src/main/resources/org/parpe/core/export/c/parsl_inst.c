@@ -1,12 +1,69 @@
 /*
  * PARSL embedded runtime: one automaton instance (see parsl_inst.h), the same operations on
- * doubles in the same order as PARPE's InstanceRun, so that setpoints are equal bit for bit.
+ * doubles in the same order as PARPE's InstanceRun, so that setpoints are equal bit for bit;
+ * with 32-bit floats (PARSL_EXACT_TIME) the progress is summed in fixed point (below).
  */
 #include "parsl_inst.h"
 #include <math.h>
 
 #define EPS 1e-9
 #define MAX_TRANSITIONS 10000
+
+#ifdef PARSL_EXACT_TIME
+/*
+ * 32-bit floats (see parsl_rt.h): a float adding the same step tick after tick rounds the same
+ * way each time and drifts (u by a cycle in days; p made a 1 s gait of one state 0.002 cycles
+ * late in an hour, 0.06 in a day). So both are summed exactly in fixed point, units of 2^-31
+ * (ONE): u is the fraction of a cycle since the start (the interpreter's u - uk less cyc), a
+ * carry one more cycle in cyc and one less in the local limit; pf is p's copy, p its float.
+ */
+#define ONE 0x80000000UL
+#define U(r, q) u_value(r, q)
+static double u_value(const parsl_rt *r, int16_t q)
+{
+    return ldexp((double) r->u[q], -31);
+}
+#define P_START(r, q) ((r)->pf[q] = (uint32_t) ldexp((r)->p[q], 31))
+#define P_RESET(r, q) ((r)->pf[q] = 0)
+/* whether adding du reaches the limit (never without one: the test is costly on AVR) */
+#define REACHES(r, q, du, lim) ((lim) < INFINITY && U(r, q) + (du) >= (lim) - EPS)
+#define U_START(r, q, start) ((r)->u[q] = 0, P_START(r, q))
+#define U_LIMIT(r, is, q) ((is)->limit - (r)->cyc[q])
+/* rem / d * t / sum_t with d = t * scale / sum_t (or t), in one division: faster, and one rounding */
+#define U_STEP(rem, d, t, is) ((rem) / ((is)->has_scale ? (is)->scale : (is)->sum_t))
+/* du <= 1 (one state's share of the cycle); below 0 only by what a transition left, within EPS */
+static void add_u(parsl_rt *r, int16_t q, double du, double *lim)
+{
+    if (du > 0) {
+        r->u[q] += (uint32_t) ldexp(du, 31);
+        if (r->u[q] >= ONE) {
+            r->u[q] -= ONE;
+            r->cyc[q]++;
+            *lim -= 1;
+        }
+    }
+}
+/* p < 1 and 0 <= dp < 1 - p; below 0 only by what a transition left, within EPS */
+static void add_p(parsl_rt *r, int16_t q, double dp)
+{
+    if (dp < 0) {
+        r->p[q] += dp; /* the copy stays at 0 */
+        return;
+    }
+    r->pf[q] += (uint32_t) ldexp(dp, 31);
+    r->p[q] = ldexp((double) r->pf[q], -31);
+}
+#else
+#define P_START(r, q)
+#define P_RESET(r, q)
+#define add_p(r, q, dp) ((r)->p[q] += (dp))
+#define U(r, q) ((r)->u[q])
+#define REACHES(r, q, du, lim) ((r)->u[q] + (du) >= (lim) - EPS)
+#define U_START(r, q, start) ((r)->uk[q] = (r)->u[q] = (start))
+#define U_LIMIT(r, is, q) ((r)->uk[q] + (is)->limit)
+#define U_STEP(rem, d, t, is) ((rem) / (d) * (t) / (is)->sum_t)
+#define add_u(r, q, du, lim) ((r)->u[q] += (du))
+#endif
 
 static void state_error(parsl_rt *r, int16_t code, int16_t pos, double a, int16_t what)
 {
@@ -114,8 +171,7 @@ void parsl_inst_init(parsl_rt *r, const inst_view *v, double phase, double offse
             r->st[q] = found;
             r->p[q] = f > 0 ? f : 0;
         }
-        r->uk[q] = start;
-        r->u[q] = start;
+        U_START(r, q, start);
         r->p0[q] = r->p[q];
         r->a0[q] = r->commanded[parsl_module_of(v, k)];
         r->cyc[q] = 0;
@@ -195,8 +251,12 @@ static void finish(parsl_rt *r, const inst_view *v, int16_t k, double angle)
     r->fin[q] = 1;
     v->is->finished++;
     r->out[q] = angle;
-    r->u[q] = r->uk[q] + v->is->limit;
     r->cyc[q] = floor(v->is->limit + EPS);
+#ifdef PARSL_EXACT_TIME
+    r->u[q] = 0; /* not read once finished */
+#else
+    r->u[q] = r->uk[q] + v->is->limit;
+#endif
 }
 
 static void see_final(parsl_rt *r, const inst_view *v, int16_t k, int16_t s)
@@ -210,7 +270,7 @@ static void see_final(parsl_rt *r, const inst_view *v, int16_t k, int16_t s)
 static void finish_inside(parsl_rt *r, const inst_view *v, int16_t k, int16_t s, double lim)
 {
     int16_t q = v->pool + k;
-    double f = r->p[q] + (lim - r->u[q]) * v->is->sum_t / r->tbuf[v->tb + s];
+    double f = r->p[q] + (lim - U(r, q)) * v->is->sum_t / r->tbuf[v->tb + s];
     r->p[q] = f < 1 ? f : 1;
     see_final(r, v, k, s);
     finish(r, v, k, setpoint(r, v, k, s));
@@ -234,6 +294,7 @@ static void next_state(parsl_rt *r, const inst_view *v, int16_t q, int16_t *s)
     *s = (int16_t) ((*s + 1) % v->ns);
     r->st[q] = *s;
     r->p[q] = r->p0[q] = 0;
+    P_RESET(r, q);
 }
 
 void parsl_advance(parsl_rt *r, const inst_view *v, int16_t k, double dt)
@@ -250,16 +311,16 @@ void parsl_advance(parsl_rt *r, const inst_view *v, int16_t k, double dt)
     if (v->per_module) {
         eval_times(r, v);
     }
-    lim = r->uk[q] + is->limit;
+    lim = U_LIMIT(r, is, q);
     s = r->st[q];
     ex = PARSL_I16(parsl_state[v->s0 + s], PARSL_S_EXIT);
     if (ex >= 0 && parsl_eval(r, ex) != 0) {
         double du = (1 - r->p[q]) * r->tbuf[v->tb + s] / is->sum_t;
-        if (r->u[q] + du >= lim - EPS) {
+        if (REACHES(r, q, du, lim)) {
             finish(r, v, k, r->commanded[parsl_module_of(v, k)]);
             return;
         }
-        r->u[q] += du;
+        add_u(r, q, du, &lim);
         r->a0[q] = r->commanded[parsl_module_of(v, k)];
         next_state(r, v, q, &s);
     }
@@ -278,13 +339,13 @@ void parsl_advance(parsl_rt *r, const inst_view *v, int16_t k, double dt)
         }
         need = (1 - r->p[q]) * d;
         if (rem < need - EPS) {
-            du = rem / d * t / is->sum_t;
-            if (r->u[q] + du >= lim - EPS) {
+            du = U_STEP(rem, d, t, is);
+            if (REACHES(r, q, du, lim)) {
                 finish_inside(r, v, k, s, lim);
                 return;
             }
-            r->p[q] += rem / d;
-            r->u[q] += du;
+            add_p(r, q, rem / d);
+            add_u(r, q, du, &lim);
             break;
         }
         du = (1 - r->p[q]) * t / is->sum_t;
@@ -293,20 +354,22 @@ void parsl_advance(parsl_rt *r, const inst_view *v, int16_t k, double dt)
         if (++transitions > MAX_TRANSITIONS) {
             state_error(r, PARSL_E_TRANSITIONS, PARSL_I16(parsl_inst[v->row], PARSL_I_POS), dt, v->aut);
         }
-        if (r->u[q] + du >= lim - EPS) {
-            if (r->u[q] + du <= lim + EPS) {
+        if (REACHES(r, q, du, lim)) {
+            if (U(r, q) + du <= lim + EPS) {
                 finish_at_end(r, v, k, s);
             } else {
                 finish_inside(r, v, k, s, lim);
             }
             return;
         }
-        r->u[q] += du;
+        add_u(r, q, du, &lim);
         r->a0[q] = target(r, v, s, k);
         next_state(r, v, q, &s);
     }
     r->ph[q] = phase_of(r, v, s, r->p[q]);
+#ifndef PARSL_EXACT_TIME
     r->cyc[q] = floor(r->u[q] - r->uk[q] + EPS);
+#endif
     r->phase = r->ph[q];
     r->cycle = r->cyc[q];
     r->out[q] = setpoint(r, v, k, s);

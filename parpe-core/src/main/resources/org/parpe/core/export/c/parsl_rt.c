@@ -1,15 +1,67 @@
 /*
  * PARSL embedded runtime: the scheduler (PARSL.md sections 7, 11, 13), a line-by-line port of
  * PARPE's org.parpe.core.run.Engine so that the trace is the interpreter's, bit for bit: the
- * same operations on doubles in the same order. Instances are in parsl_inst.c.
+ * same operations on doubles in the same order. Instances are in parsl_inst.c. Where double is a
+ * 32-bit float (PARSL_EXACT_TIME, parsl_rt.h) the clock is counted in integers instead.
  */
 #include "parsl_inst.h"
 #include <math.h>
 #include <string.h>
 #include <stdlib.h>
 #include <stdio.h>
+#include <limits.h>
 
 #define EPS 1e-9
+
+#ifdef PARSL_EXACT_TIME
+/*
+ * s + f / PARSL_DT_DEN seconds as a float: within half a unit in its last place plus 2^-23 s (the
+ * fraction is multiplied by the rounded reciprocal, a third of the time a division takes on AVR).
+ */
+static double seconds(uint32_t s, uint32_t f)
+{
+    return (double) s + (double) f * (1.0 / PARSL_DT_DEN);
+}
+#endif
+
+/* Counts one more tick and sets $time. */
+static void count_tick(parsl_rt *r)
+{
+#ifdef PARSL_EXACT_TIME
+    if (r->tick >= 0) {
+        r->now.s += PARSL_DT_S;
+        r->now.f += PARSL_DT_F;
+        if (r->now.f >= PARSL_DT_DEN) {
+            r->now.f -= PARSL_DT_DEN;
+            r->now.s++;
+        }
+    }
+    if (r->tick < LONG_MAX) {
+        r->tick++; /* beyond, only "not the first tick" matters */
+    }
+    r->time = seconds(r->now.s, r->now.f);
+#else
+    r->tick++;
+    r->time = r->tick * PARSL_DT;
+#endif
+}
+
+/* $btime: the time since the running main entry started. */
+static double behavior_time(const parsl_rt *r)
+{
+#ifdef PARSL_EXACT_TIME
+    uint32_t s = r->now.s - r->entry_start.s;
+    uint32_t f = r->now.f;
+    if (f < r->entry_start.f) {
+        f += PARSL_DT_DEN;
+        s--;
+    }
+    return seconds(s, f - r->entry_start.f);
+#else
+    return r->tick * PARSL_DT - r->entry_start * PARSL_DT;
+#endif
+}
+
 void parsl_raise(parsl_rt *r, int16_t code, double a, double b, int16_t what)
 {
     r->err_code = code;
@@ -144,7 +196,7 @@ static void run_instances(parsl_rt *r)
     int16_t count = PARSL_I16(parsl_entry[r->entry], PARSL_E_NINST);
     int16_t i;
     int16_t k;
-    r->btime = r->tick * PARSL_DT - r->entry_start * PARSL_DT;
+    /* r->btime is this tick's: set by entry_ends, or 0 by start_entry */
     for (i = 0; i < count; i++) {
         inst_view v;
         int active;
@@ -199,7 +251,11 @@ static void start_entry(parsl_rt *r, int16_t index)
     int16_t n = PARSL_I16(parsl_entry[index], PARSL_E_NVARGS);
     int16_t i;
     r->entry = index;
+#ifdef PARSL_EXACT_TIME
+    r->entry_start = r->now;
+#else
     r->entry_start = r->tick;
+#endif
     r->btime = 0;
     for (i = 0; i < n; i++) {
         r->macros[PARSL_I16(parsl_varg[first + i], PARSL_V_SLOT)] =
@@ -222,7 +278,7 @@ static int entry_ends(parsl_rt *r)
     int time_up;
     int ex;
     int16_t i;
-    r->btime = r->tick * PARSL_DT - r->entry_start * PARSL_DT;
+    r->btime = behavior_time(r);
     /* both are evaluated on every tick (PARSL.md section 13 rule 4) */
     time_up = tx >= 0 && r->btime >= parsl_eval(r, tx) - EPS;
     ex = xx >= 0 && parsl_eval(r, xx) != 0;
@@ -291,8 +347,7 @@ int parsl_step(parsl_rt *r)
         r->ended = 1;
         return PARSL_ERROR;
     }
-    r->tick++;
-    r->time = r->tick * PARSL_DT;
+    count_tick(r);
     read_inputs(r);
     memset(r->driven, 0, sizeof r->driven);
     memcpy(r->next, r->commanded, sizeof r->next);

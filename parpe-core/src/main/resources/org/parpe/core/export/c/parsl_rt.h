@@ -35,6 +35,25 @@ extern "C" {
 #define PARSL_DBL(a, i) ((a)[i])
 #endif
 
+/*
+ * Exact time on boards whose double is a 32-bit float (AVR; a PC test sets PARSL_REAL32): a float
+ * cannot count ticks or cycles for long (at 2^24 it stops adding 1), so there the clock counts
+ * whole seconds and parts of PARSL_DT_DEN in integers, $time and $btime are converted from it on
+ * every tick, and the progress u is an integer count of whole cycles (cyc) and a fixed-point
+ * fraction. With a 64-bit double the runtime does what the interpreter does, bit for bit.
+ */
+#if defined(PARSL_REAL32) || (defined(__SIZEOF_DOUBLE__) && __SIZEOF_DOUBLE__ == 4)
+#define PARSL_EXACT_TIME 1
+/* A time since the start: whole seconds and parts of a second in units of 1/PARSL_DT_DEN. */
+typedef struct {
+    uint32_t s;
+    uint32_t f;
+} parsl_clock;
+typedef int32_t parsl_cycles;
+#else
+typedef double parsl_cycles;
+#endif
+
 /* Results of parsl_step. */
 enum { PARSL_ENDED = 0, PARSL_RUNNING = 1, PARSL_ERROR = 2 };
 
@@ -89,7 +108,12 @@ typedef struct parsl_rt {
     uint8_t driven[PARSL_N];
     int16_t driver[PARSL_N];
     long tick;
+#ifdef PARSL_EXACT_TIME
+    parsl_clock now;
+    parsl_clock entry_start;
+#else
     long entry_start;
+#endif
     long main_cycle;
     int16_t entry;
     uint8_t ended;
@@ -102,10 +126,15 @@ typedef struct parsl_rt {
     double p[PARSL_POOL1];
     double p0[PARSL_POOL1];
     double a0[PARSL_POOL1];
+#ifdef PARSL_EXACT_TIME
+    uint32_t u[PARSL_POOL1]; /* the fraction of a cycle, in units of 2^-32 (parsl_inst.c) */
+    uint32_t pf[PARSL_POOL1]; /* p in units of 2^-32 (parsl_inst.c) */
+#else
     double u[PARSL_POOL1];
     double uk[PARSL_POOL1];
+#endif
     double ph[PARSL_POOL1];
-    double cyc[PARSL_POOL1];
+    parsl_cycles cyc[PARSL_POOL1];
     double out[PARSL_POOL1];
     double tbuf[PARSL_TPOOL1];
     /* the error that stopped the run */
