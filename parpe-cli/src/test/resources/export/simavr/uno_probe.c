@@ -93,7 +93,10 @@ static avr_cycle_count_t next_bit(avr_t *a, avr_cycle_count_t when, void *param)
     struct line_in *l = param;
     uint8_t c = (uint8_t) l->text[l->at];
     (void) a;
-    avr_raise_irq(l->irq, l->k == 0 ? 0 : l->k == 9 ? 1 : (c >> (l->k - 1)) & 1);
+    uint32_t level = l->k == 0 ? 0 : l->k == 9 ? 1 : (c >> (l->k - 1)) & 1;
+    if (level != l->irq->value) {   /* a pin changes only at a level change (simavr would raise PCINT) */
+        avr_raise_irq(l->irq, level);
+    }
     if (++l->k == 10) {
         l->k = 0;
         if (l->text[++l->at] == '\0') {

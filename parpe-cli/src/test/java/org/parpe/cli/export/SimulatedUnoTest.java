@@ -42,7 +42,9 @@ import org.parpe.serial.servo.wire.FeetechCodec;
  * unit (the AVR computes in 32-bit floats);
  * <li>the RAM the board uses (static data by avr-size plus the deepest stack, measured by paint)
  * and the flash are never above export's estimate, and the estimate is at most 15 % above them;
- * <li>the console reports no error.
+ * <li>the console reports no error;
+ * <li>console lines typed during a bus run are all answered and neither delay a packet nor pause
+ * one ({@link #consoleTrafficNeitherDelaysNorStretchesBusPackets}).
  * </ul>
  */
 class SimulatedUnoTest {
@@ -52,8 +54,8 @@ class SimulatedUnoTest {
     static final double PULSE_JITTER_US = 6.0;
     static final long CYCLES_PER_US = 16;
     /**
-     * How far a bus packet may start from its tick, console traffic or not: micros()'s 4 µs steps, a
-     * turn of the bus window's loop and a timer-0 interrupt, for the packet and for the first one.
+     * How far a bus packet may start from its tick, console traffic or not: micros()'s 4 µs steps and
+     * an interrupt (the console's edge timing, timer 0's), for the packet and for the first one.
      */
     static final double PACKET_START_US = 20;
 
@@ -273,15 +275,17 @@ class SimulatedUnoTest {
      * <ul>
      * <li>every SYNC WRITE starts within {@value #PACKET_START_US} µs of its tick (the first one's
      * start plus whole ticks);
-     * <li>no pause inside a packet is longer than one byte time at the bus's 1 Mbaud (10 µs). The
+     * <li>no pause inside a packet is longer than two byte times at the bus's 1 Mbaud (20 µs). The
      * ROBOTIS e-Manual, "DYNAMIXEL Protocol 2.0" (Packet, Instruction Packet), and Feetech's STS
      * memory table and FT-SCS protocol ("1 start bit, 8 data bits, 1 stop bit", instruction frame)
      * define a packet as consecutive bytes at the set baud rate and state no pause a servo
-     * tolerates inside one; so the sketch is held to sending them back to back, and one byte time
-     * is the slack allowed. simavr has no second transmit buffer, so each pause is measured as the
-     * time between two bytes less simavr's usual (median) time between them;
-     * <li>every line is answered, in order: {@code ok}, or for an out-of-range speed the slider's
-     * error; none is lost or garbled;
+     * tolerates inside one; so the sketch is held to sending them back to back but for the slack of
+     * one short interrupt (the console's edge timing, timer 0's). simavr has no second transmit
+     * buffer, so it shows such an interrupt whole (a chip's buffered byte hides up to 10 µs of it);
+     * each pause is measured as the time between two bytes less simavr's usual (median) time;
+     * <li>every line is answered, in order: {@code ok}, for an out-of-range speed the slider's
+     * error, for a line longer than the sketch keeps a refusal (never a shortened command); none is
+     * lost or garbled;
      * <li>the goal positions are still the interpreter's setpoints.
      * </ul>
      */
@@ -296,9 +300,12 @@ class SimulatedUnoTest {
         List<String> probe = new ArrayList<>(List.of("e:2", "e:11"));
         StringBuilder expected = new StringBuilder();
         for (int k = 0; k < 20; k++) {
-            String line = k % 4 == 3 ? "speed=9" : k % 2 == 0 ? "speed=1" : "direction=forward";
+            // line 10 is longer than the sketch's 47 characters: refused, not run cut short (it said "ok")
+            String line = k == 10 ? "speed=1." + "0".repeat(50) : k % 4 == 3 ? "speed=9" : k % 2 == 0 ? "speed=1"
+                    : "direction=forward";
             probe.add(String.format(java.util.Locale.ROOT, "c:10:38400:%.4f:%s\n", 0.1 + k * 0.0637, line));
-            expected.append(k % 4 == 3 ? "error: the value is outside the slider's range '9'\r\n" : "ok\r\n");
+            expected.append(k == 10 ? "error: the line lost characters; send it again\r\n"
+                    : k % 4 == 3 ? "error: the value is outside the slider's range '9'\r\n" : "ok\r\n");
         }
         List<String> lines = avr.simulate(avr.build(out.resolve("teleop_dirwave")), SECONDS, 0, probe);
         String where = servo + ": ";
@@ -327,7 +334,7 @@ class SimulatedUnoTest {
         double pause = (longest - byteTime) / (double) CYCLES_PER_US;
         System.out.println(where + "longest pause inside a packet " + pause + " us (simavr's byte time "
                 + byteTime / (double) CYCLES_PER_US + " us)");
-        assertTrue(pause <= 10, where + "a pause of " + pause + " us inside a packet, longer than a byte at 1 Mbaud");
+        assertTrue(pause <= 20, where + "a pause of " + pause + " us inside a packet, longer than two bytes at 1 Mbaud");
         // the first packet switches the torque on (at reset); the SYNC WRITEs follow, one per tick
         List<Long> ticks = starts.subList(1, starts.size());
         double worst = 0;
