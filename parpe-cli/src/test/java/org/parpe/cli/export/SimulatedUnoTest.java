@@ -191,7 +191,9 @@ class SimulatedUnoTest {
         List<String> lines = avr.simulate(elf, 0.5, 0.5, List.of());
         String[] r = lines.get(lines.size() - 1).split(" ");
         long ram = elf.bssEnd() - 0x100 + Long.parseLong(r[2]);
-        boolean runs = ram < 2048 && elf.flash() <= 32256;
+        // simavr's state 7 is cpu_Crashed: a sketch whose static data leaves no room for its stack
+        // crashes at once, with hardly any stack painted
+        boolean runs = ram < 2048 && elf.flash() <= 32256 && !r[3].equals("7");
         System.out.println(member + ": " + (uno.code == 0 ? "accepted" : "refused") + ", RAM " + ram + " (static "
                 + elf.staticRam() + ", stack " + r[2] + "), flash " + elf.flash() + "; " + (uno.code == 0 ? uno.out : uno.err).trim());
         if (uno.code == 1) {
