@@ -9,7 +9,9 @@
  *   R end stack state busy   at the end: the cycle count, the deepest stack use in bytes,
  *                        simavr's CPU state and the cycles the CPU was awake (not sleeping)
  *
- * usage: uno_probe ELF SECONDS FROM_SECONDS END_OF_BSS_HEX [p:PIN | e:PIN]...
+ * usage: uno_probe ELF SECONDS FROM_SECONDS END_OF_BSS_HEX [p:PIN | e:PIN | c:PIN:BAUD:AT:TEXT]...
+ * c: drives PIN (an input, idle high) as a serial line sending TEXT (8N1, bytes back to back) at
+ * BAUD from AT seconds on: what a USB-serial adapter sends to the SoftwareSerial console.
  * Pulses, edges and bytes before FROM_SECONDS are not printed (a long run prints only its end).
  * The RAM between the end of .bss and RAMEND is painted before reset; the stack use is
  * RAMEND + 1 minus the lowest byte that is no longer paint.
@@ -76,6 +78,34 @@ static void on_uart(struct avr_irq_t *irq, uint32_t value, void *param)
     }
 }
 
+/* Serial text driven into an input pin, one level change per bit (c: arguments). */
+#define MAX_LINES 64
+static struct line_in {
+    avr_irq_t *irq;
+    avr_cycle_count_t bit;
+    const char *text;
+    size_t at;       /* the byte being sent */
+    int k;           /* its bit: 0 start, 1..8 data, 9 stop */
+} lines_in[MAX_LINES];
+
+static avr_cycle_count_t next_bit(avr_t *a, avr_cycle_count_t when, void *param)
+{
+    struct line_in *l = param;
+    uint8_t c = (uint8_t) l->text[l->at];
+    (void) a;
+    uint32_t level = l->k == 0 ? 0 : l->k == 9 ? 1 : (c >> (l->k - 1)) & 1;
+    if (level != l->irq->value) {   /* a pin changes only at a level change (simavr would raise PCINT) */
+        avr_raise_irq(l->irq, level);
+    }
+    if (++l->k == 10) {
+        l->k = 0;
+        if (l->text[++l->at] == '\0') {
+            return 0;
+        }
+    }
+    return when + l->bit;
+}
+
 /* simavr's own sleep waits in real time; the probe skips the idle time at once. */
 static void no_wait(avr_t *a, avr_cycle_count_t how_long)
 {
@@ -90,6 +120,7 @@ int main(int argc, char **argv)
     uint16_t bss_end;
     int i;
     int state = cpu_Running;
+    int n_in = 0;
     avr_cycle_count_t busy = 0;
     static char buf[1 << 16];
     setvbuf(stdout, buf, _IOFBF, sizeof buf);
@@ -127,9 +158,26 @@ int main(int argc, char **argv)
         char port;
         int bit;
         int pin = atoi(argv[i] + 2);
-        if (pulse_pin(pin, &port, &bit) != 0 || (argv[i][0] != 'p' && argv[i][0] != 'e') || argv[i][1] != ':') {
+        if (pulse_pin(pin, &port, &bit) != 0 || (argv[i][0] != 'p' && argv[i][0] != 'e' && argv[i][0] != 'c')
+                || argv[i][1] != ':') {
             fprintf(stderr, "uno_probe: bad pin argument '%s'\n", argv[i]);
             return 2;
+        }
+        if (argv[i][0] == 'c') {
+            char *baud = strchr(argv[i] + 2, ':');
+            char *at = baud == NULL ? NULL : strchr(baud + 1, ':');
+            char *text = at == NULL ? NULL : strchr(at + 1, ':');
+            if (text == NULL || text[1] == '\0' || n_in == MAX_LINES) {
+                fprintf(stderr, "uno_probe: bad console argument '%s'\n", argv[i]);
+                return 2;
+            }
+            lines_in[n_in].irq = avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ(port), bit);
+            lines_in[n_in].bit = FREQ / strtoull(baud + 1, NULL, 10);
+            lines_in[n_in].text = text + 1;
+            avr_raise_irq(lines_in[n_in].irq, 1);
+            avr_cycle_timer_register(avr, (avr_cycle_count_t) (atof(at + 1) * FREQ), next_bit, &lines_in[n_in]);
+            n_in++;
+            continue;
         }
         avr_irq_register_notify(avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ(port), bit),
                 argv[i][0] == 'p' ? on_pulse : on_edge, (void *) (intptr_t) pin);

@@ -67,18 +67,25 @@ record SketchOptions(Driver driver, List<Integer> pins, int baud, ServoModel mod
      * What the sketch's servo driver adds for {@code modules} modules on an AVR board, measured
      * with avr-gcc 5.4 and Debian 12's Arduino core (SimulatedUnoTest prints the figures). RAM: per
      * PWM servo its pulse width, port and pin mask (5 bytes); on a bus the packet buffer
-     * ({@code sketch.inc}: 16 + 2 × (ID + goal) per module, room for byte stuffing) plus the
-     * SoftwareSerial console (its object and 64-byte receive buffer: 106 bytes). Flash: the bus
-     * code (CRC or checksum, packets, SoftwareSerial) over the PWM timer code. Time: a pulse width
-     * per PWM servo (about 600 cycles), a packet entry sent and waited for on a bus (3 000).
+     * ({@code sketch.inc}: 16 + 2 × (ID + goal) per module, room for byte stuffing) and the
+     * sketch's own console ({@value #BUS_CONSOLE_RAM} bytes: its 64-byte input and 128-byte output
+     * rings, the receiver, the packet's alarm; docs/decisions.md). Flash: the bus code (CRC or
+     * checksum, packets, the console) over the PWM timer code. Time: a pulse width per PWM servo
+     * (about 600 cycles); on a bus a packet entry sent (3 000) and the packet's alarm, set
+     * {@value #BUS_ALARM_CYCLES} cycles (100 µs) before the packet is due.
      */
     DriverCost cost(int modules) {
         if (driver == Driver.PWM) {
             return new DriverCost(5L * modules, 0, 600L * modules);
         }
-        return new DriverCost(16 + 2L * modules * (1 + model.registers().goalSize()) + 106,
-                driver == Driver.DXL ? 1300 : 1150, 3000L * modules);
+        return new DriverCost(16 + 2L * modules * (1 + model.registers().goalSize()) + BUS_CONSOLE_RAM,
+                driver == Driver.DXL ? 1400 : 1260, 3000L * modules + BUS_ALARM_CYCLES);
     }
+
+    /** RAM of a bus sketch's console (sketch.inc, QUIET_CONSOLE), measured as above. */
+    static final int BUS_CONSOLE_RAM = 201;
+    /** The packet's alarm fires 100 µs (BUS_WINDOW_US in sketch.inc) early: 1 600 cycles at 16 MHz. */
+    static final int BUS_ALARM_CYCLES = 1600;
 
     /**
      * Reports what the sketch cannot do: sensors it has no driver for (at their declaration),

@@ -91,7 +91,11 @@ final class AvrToolchain {
     record Elf(Path file, int bssEnd, long flash, long staticRam) {
     }
 
-    /** Builds the sketch folder {@code sketch} (NAME.ino and the runtime) for an Uno, as arduino-builder does. */
+    /**
+     * Builds the sketch folder {@code sketch} (NAME.ino and the runtime) for an Uno, as arduino-builder
+     * does. No library is linked: an Uno sketch includes none (its bus console is its own, not
+     * SoftwareSerial, whose pin-change interrupts it would clash with).
+     */
     Elf build(Path sketch) throws IOException, InterruptedException {
         Path obj = Files.createTempDirectory(dir, "obj");
         List<String> objects = new ArrayList<>();
@@ -106,10 +110,6 @@ final class AvrToolchain {
                 }
             }
         }
-        List<String> ss = compiler("SoftwareSerial.cpp");
-        ss.addAll(List.of(CORE.resolve("libraries/SoftwareSerial/src/SoftwareSerial.cpp").toString(), "-o", "ss.o"));
-        check(obj, ss);
-        objects.add("ss.o");
         List<String> link = new ArrayList<>(List.of("avr-gcc", "-w", "-Os", "-flto", "-fuse-linker-plugin",
                 "-Wl,--gc-sections", "-mmcu=atmega328p", "-o", "sketch.elf"));
         link.addAll(objects);
