@@ -79,7 +79,7 @@ record SketchOptions(Driver driver, List<Integer> pins, int baud, ServoModel mod
             return new DriverCost(5L * modules, 0, 600L * modules);
         }
         return new DriverCost(16 + 2L * modules * (1 + model.registers().goalSize()) + BUS_CONSOLE_RAM,
-                driver == Driver.DXL ? 1400 : 1260, 3000L * modules + BUS_ALARM_CYCLES);
+                driver == Driver.DXL ? 1540 : 1400, 3000L * modules + BUS_ALARM_CYCLES);
     }
 
     /** RAM of a bus sketch's console (sketch.inc, QUIET_CONSOLE), measured as above. */

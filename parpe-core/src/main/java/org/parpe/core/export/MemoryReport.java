@@ -16,14 +16,14 @@ import java.util.List;
  */
 public record MemoryReport(Board board, long stateBytes, long boardBytes, long ramBytes, long flashBytes) {
     /** Flash of four generated expression statements (see {@link #of}). */
-    static final int FLASH_PER_4_STATEMENTS = 9;
+    static final int FLASH_PER_4_STATEMENTS = 8;
     /** Flash of one control's code (see {@link #of}). */
     static final int FLASH_PER_CONTROL = 150;
 
     /**
      * Estimates {@code p} on {@code board}; {@code codeLines} is the number of generated expression
      * statements, {@code driver} what the board code's servo driver adds. Each generated statement
-     * is taken as 2.25 bytes of AVR code and each control as
+     * is taken as 2 bytes of AVR code and each control as
      * {@value #FLASH_PER_CONTROL} (its name compared, its value parsed): fitted to what avr-gcc -Os
      * with LTO made of the examples and of gait tables of 8–160 rows (SimulatedUnoTest), whose
      * constant expressions it folds into their callers.
