@@ -50,8 +50,8 @@ class HardwareRunTest {
             Cli r = Cli.run("run", script().toString(), "--port", bus.port(), "--duration", "2", "--trace", trace.toString());
             assertEquals(0, r.code, r.toString());
             assertTrue(r.err.contains("4 of 5 modules answer (0..3)"), r.err);
-            assertTrue(r.err.contains("modules 9 of the script do not answer; they will not move"), r.err);
-            assertTrue(r.err.indexOf("do not answer") < r.err.indexOf("frames sent"), r.err);
+            assertTrue(r.err.contains("module 9 of the script does not answer; it moves once it answers"), r.err);
+            assertTrue(r.err.indexOf("does not answer") < r.err.indexOf("frames sent"), r.err);
             Traces t = new Traces(trace);
             assertEquals(201, t.rows.size());
             int matched = 0;

@@ -126,11 +126,14 @@ public final class ServoTarget implements RunTarget {
         notes.accept("bus " + port + ": " + found.size() + " of " + ids.length + " modules answer"
                 + (found.isEmpty() ? "" : " (" + Discovery.format(found) + ")"));
         if (!missing.isEmpty()) {
-            diags.warning(where, "modules " + Discovery.format(missing) + " of the script do not answer; they will not move");
+            // they are asked again every half second and driven once they answer (ServoSetUp.bringIn)
+            diags.warning(where, missing.size() == 1
+                    ? "module " + missing.get(0) + " of the script does not answer; it moves once it answers"
+                    : "modules " + Discovery.format(missing) + " of the script do not answer; each moves once it answers");
         }
         if (!unaddressable.isEmpty()) {
-            diags.warning(where, "modules " + Discovery.format(unaddressable)
-                    + " cannot be on the bus (IDs 0..254); they will not move");
+            diags.warning(where, (unaddressable.size() == 1 ? "module " + unaddressable.get(0) + " cannot be on the bus (IDs 0..254); it"
+                    : "modules " + Discovery.format(unaddressable) + " cannot be on the bus (IDs 0..254); they") + " will not move");
         }
         if (found.isEmpty()) {
             throw new TargetException(where, "no module answers on " + port + " at " + config.baud()
