@@ -243,7 +243,7 @@ public final class ServoDriver extends BusThread {
      * Reads the present position of one servo, round robin, and stores it; a servo whose reply
      * says it stopped on its own watchdog is resumed at once. A read that times out is tried
      * again on the next read cycles, up to the configured retries; then the servo is skipped for
-     * {@value #BACKOFF_CYCLES} read cycles (said once), so that one silent servo does not cost
+     * {@value #BACKOFF_CYCLES} read cycles (said each time it is put back), so that one silent servo does not cost
      * every cycle a timeout. Returns 1 when it answered, 0 when not, −1 when nothing was read.
      */
     private int readNext(int n) throws IOException {

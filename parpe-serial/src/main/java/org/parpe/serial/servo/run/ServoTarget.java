@@ -99,16 +99,17 @@ public final class ServoTarget implements RunTarget {
             throw new TargetException(where, "the bus failed while looking for " + (modules ? "modules" : "servos")
                     + ": " + HostPlant.message(e));
         }
+        List<Integer> other = d.answeredAsOtherModel();
         List<Integer> missing = new ArrayList<>();
         for (int id : ids) {
-            if (!unmapped.contains(id) && !found.contains(id) && !d.answeredAsOtherModel().contains(id)) {
+            if (!unmapped.contains(id) && !found.contains(id) && !other.contains(id)) {
                 missing.add(id);
             }
         }
         if (modules) {
             reportModules(diags, where, ids, found, missing, unmapped);
         } else {
-            reportServos(diags, where, ids.length - unmapped.size(), found, missing, d.answeredAsOtherModel());
+            reportServos(diags, where, ids.length - unmapped.size(), found, missing, other);
         }
         List<Integer> limp = d.limp();
         if (!limp.isEmpty()) {
