@@ -63,6 +63,9 @@ public final class CExport {
                 }
             }
         }
+        if (refusePlateActions(program, diags)) {
+            return null;
+        }
         CProgram c = CProgram.of(program, dt);
         if (c.largestTableValue() > TABLE_LIMIT || c.modules() > TABLE_LIMIT / 6) {
             diags.error(program.robot().pos(), "the program is too large for the embedded tables (their entries are"
@@ -92,6 +95,25 @@ public final class CExport {
             warnOfClockWaves(c, board, diags);
         }
         return m.fits() ? new Result(files, m) : null;
+    }
+
+    /**
+     * Reports each state of the program's automata that arms or releases connection plates
+     * (PARSL.md §14): an exported program drives joints only and has no latches to work, and a
+     * plate action is never to be dropped silently. True if there was one.
+     */
+    private static boolean refusePlateActions(Program program, DiagnosticSink diags) {
+        java.util.Set<String> seen = new java.util.HashSet<>();
+        for (org.parpe.core.model.Automaton a : program.automata()) {
+            for (org.parpe.core.model.StateDef s : a.states()) {
+                if (s.hasPlateActions() && seen.add(s.name())) {
+                    diags.error(s.pos(), "state '" + s.name() + "' " + (s.latch().isEmpty() ? "releases" : "arms")
+                            + " connection plates (latch/unlatch, PARSL 1.1 §14); an exported program has no latches to"
+                            + " work: run docking scripts in the simulator, or remove the plate actions to export");
+                }
+            }
+        }
+        return !seen.isEmpty();
     }
 
     /**

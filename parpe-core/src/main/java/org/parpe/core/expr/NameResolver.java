@@ -168,14 +168,12 @@ final class NameResolver {
 
     private Channel channel(Lexer.Token t, String sensor, String arg) {
         if (!Vocabulary.SENSOR_TYPES.contains(sensor)) {
-            error(t, "sensor '" + sensor + "' is not implemented; available: angle, accel, touch");
+            error(t, "sensor '" + sensor + "' is not implemented; available: " + String.join(", ", Vocabulary.SENSOR_TYPES));
             return null;
         }
         Channel c = Channel.of(sensor, arg == null ? "" : arg);
         if (c == null) {
-            error(t, sensor.equals("angle") ? "the angle sensor takes no argument"
-                    : sensor.equals("accel") ? "accel needs an axis: _x, _y or _z"
-                    : "touch needs a side: _left or _right");
+            error(t, Channel.argumentHint(sensor));
         }
         return c;
     }

@@ -24,7 +24,11 @@ public final class Vocabulary {
     /** The parts of {@code <robot>}. */
     public static final List<String> ROBOT_PARTS = List.of("structure", "sensors", "actuators");
     /** The sensor types a {@code <sensors>} may declare (PARSL.md §2). */
-    public static final List<String> SENSOR_TYPES = List.of("angle", "accel", "touch");
+    public static final List<String> SENSOR_TYPES = List.of("angle", "accel", "touch", "dock");
+    /** The actuator types an {@code <actuators>} may declare (PARSL.md §2, §14). */
+    public static final List<String> ACTUATOR_TYPES = List.of("latch");
+    /** The connection plates of a module, as {@code latch}/{@code unlatch} and {@code dock} number them (PARSL.md §14). */
+    public static final List<String> PLATES = List.of("0", "1");
     /** The element of a conditional block in a behavior (PARSL.md §7). */
     public static final String IF = "if";
     /** The words of {@code interp} (PARSL.md §5). */
@@ -76,6 +80,8 @@ public final class Vocabulary {
         GROUP("elements"),
         /** A sensor of {@code <sensors>}. */
         SENSOR("elements"),
+        /** An actuator of {@code <actuators>}. */
+        ACTUATOR("elements"),
         /** A parameter. */
         PARAMETER("type", "value", "min", "max", "label"),
         /** A control of type {@code slider}. */
@@ -85,7 +91,7 @@ public final class Vocabulary {
         /** A control of type {@code radio}. */
         RADIO("type", "values", "value", "label", "keys"),
         /** A state. */
-        STATE("angles", "interp"),
+        STATE("angles", "interp", "latch", "unlatch"),
         /** An automaton. */
         AUTOMATON("states", "times"),
         /** A behavior. */
@@ -140,6 +146,9 @@ public final class Vocabulary {
             if (path.size() == 3 && parent.equals("structure")) {
                 return Element.GROUP;
             }
+            if (path.size() == 3 && parent.equals("actuators")) {
+                return ACTUATOR_TYPES.contains(name) ? Element.ACTUATOR : null;
+            }
             return path.size() == 3 && parent.equals("sensors") && SENSOR_TYPES.contains(name) ? Element.SENSOR : null;
         }
         if (path.size() > 2) {
@@ -179,7 +188,11 @@ public final class Vocabulary {
         }
         String parent = path.get(path.size() - 1);
         if (path.get(1).equals("robot")) {
-            return path.size() == 2 ? ROBOT_PARTS : path.size() == 3 && parent.equals("sensors") ? SENSOR_TYPES : List.of();
+            if (path.size() == 2) {
+                return ROBOT_PARTS;
+            }
+            return path.size() != 3 ? List.of() : parent.equals("sensors") ? SENSOR_TYPES
+                    : parent.equals("actuators") ? ACTUATOR_TYPES : List.of();
         }
         return path.size() >= 3 && path.get(1).equals("behaviors") ? List.of(IF) : List.of();
     }

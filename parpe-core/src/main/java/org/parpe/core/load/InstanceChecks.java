@@ -13,7 +13,8 @@ import org.parpe.core.sensor.Channel;
 
 /**
  * The checks made where an automaton meets a group (PARSL.md §7, §13 rule 13): overlapping
- * unconditional instances, angle-vector lengths and local sensor references. Instances with a
+ * unconditional instances, angle-vector lengths, local sensor references and plate actions on
+ * modules without a latch (§14). Instances with a
  * concrete group are checked once per behavior; those whose group comes from a macro, once per
  * {@code <main>} entry that invokes the behavior.
  */
@@ -105,6 +106,11 @@ final class InstanceChecks {
                 return;
             }
         }
+        String latchless = latchless(a, g);
+        if (latchless != null) {
+            d.error(info.model().pos(), latchless + note);
+            return;
+        }
         for (ExprCompiler.LocalUse u : locals.getOrDefault(a.name(), List.of())) {
             String problem = local(u, g);
             if (problem != null) {
@@ -112,6 +118,23 @@ final class InstanceChecks {
                 return;
             }
         }
+    }
+
+    /** A problem when a state of {@code a} acts on plates of a module of {@code g} without a latch (PARSL.md §14). */
+    private String latchless(Automaton a, Group g) {
+        for (StateDef s : a.states()) {
+            if (!s.hasPlateActions()) {
+                continue;
+            }
+            for (int id : g.modules()) {
+                if (!robot.actuates(id, "latch")) {
+                    String what = s.latch().isEmpty() ? "unlatches" : "latches";
+                    return "state '" + s.name() + "' (at " + s.pos() + ") " + what + " connection plates, but module " + id
+                            + " of group '" + g.name() + "' has no latch actuator (declare it in <actuators>)";
+                }
+            }
+        }
+        return null;
     }
 
     private String local(ExprCompiler.LocalUse u, Group g) {

@@ -16,6 +16,7 @@ import org.parpe.core.expr.Names;
 import org.parpe.core.expr.Scope;
 import org.parpe.core.lang.Vocabulary;
 import org.parpe.core.lang.Vocabulary.Element;
+import org.parpe.core.model.ActuatorDecl;
 import org.parpe.core.model.Group;
 import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.Robot;
@@ -37,6 +38,7 @@ final class RobotResolver {
     private final Map<String, Group> groups = new LinkedHashMap<>();
     private final TreeSet<Integer> modules = new TreeSet<>();
     private final List<SensorDecl> sensors = new ArrayList<>();
+    private final List<ActuatorDecl> actuators = new ArrayList<>();
     private final java.util.Set<String> broken = new java.util.HashSet<>();
     private Path file;
 
@@ -139,6 +141,7 @@ final class RobotResolver {
     private Robot resolveBody(XElement body, int order, SourcePos anchor, String fileName) {
         XElement structure = null;
         XElement sensorsEl = null;
+        XElement actuatorsEl = null;
         for (XElement c : body.children()) {
             switch (c.name()) {
                 case "structure":
@@ -148,7 +151,7 @@ final class RobotResolver {
                     sensorsEl = duplicate(sensorsEl, c);
                     break;
                 case "actuators":
-                    actuators(c);
+                    actuatorsEl = duplicate(actuatorsEl, c);
                     break;
                 default:
                     d.error(c.pos(), "unknown element <" + c.name() + "> in <robot> (expected structure, sensors, actuators)");
@@ -164,9 +167,15 @@ final class RobotResolver {
             groups.put("all", new Group("all", new ArrayList<>(modules), "", true, body.pos()));
         }
         if (sensorsEl != null) {
-            sensors(sensorsEl);
+            declarations(sensorsEl, "sensor", Vocabulary.SENSOR_TYPES, Element.SENSOR,
+                    (e, ids, elements) -> sensors.add(new SensorDecl(e.name(), ids, elements.value(), e.pos())));
         }
-        return new Robot(new ArrayList<>(groups.values()), new ArrayList<>(modules), sensors, fileName, body.pos());
+        if (actuatorsEl != null) {
+            declarations(actuatorsEl, "actuator", Vocabulary.ACTUATOR_TYPES, Element.ACTUATOR,
+                    (e, ids, elements) -> actuators.add(new ActuatorDecl(e.name(), ids, elements.value(), e.pos())));
+        }
+        return new Robot(new ArrayList<>(groups.values()), new ArrayList<>(modules), sensors, actuators, fileName,
+                body.pos());
     }
 
     private XElement duplicate(XElement previous, XElement c) {
@@ -177,14 +186,6 @@ final class RobotResolver {
         Attrs.allow(c, d, Element.ROBOT_PART.attributes());
         Attrs.noText(c, d);
         return c;
-    }
-
-    private void actuators(XElement a) {
-        Attrs.allow(a, d, Element.ROBOT_PART.attributes());
-        Attrs.noText(a, d);
-        for (XElement c : a.children()) {
-            d.error(c.pos(), "actuator '" + c.name() + "' is not implemented (no actuator types are available)");
-        }
     }
 
     private void structure(XElement s, int order, SourcePos anchor) {
@@ -329,34 +330,40 @@ final class RobotResolver {
         structure.children().forEach(g -> laterNames.add(g.name()));
     }
 
-    private void sensors(XElement s) {
+    /** Receives one well-formed declaration of {@code <sensors>} or {@code <actuators>}. */
+    private interface Declared {
+        void add(XElement e, List<Integer> ids, XText elements);
+    }
+
+    /** Reads the entries of {@code <sensors>} or {@code <actuators>} (PARSL.md §2): each a known type, once. */
+    private void declarations(XElement section, String kind, List<String> types, Element element, Declared out) {
         java.util.Set<String> seen = new java.util.HashSet<>();
-        for (XElement e : s.children()) {
+        for (XElement e : section.children()) {
             Attrs.noText(e, d);
             Attrs.noChildren(e, d);
-            if (!Vocabulary.SENSOR_TYPES.contains(e.name())) {
-                d.error(e.pos(), "sensor '" + e.name() + "' is not implemented; available: angle, accel, touch");
+            if (!types.contains(e.name())) {
+                d.error(e.pos(), kind + " '" + e.name() + "' is not implemented; available: " + String.join(", ", types));
                 continue;
             }
-            Attrs.allow(e, d, Element.SENSOR.attributes());
+            Attrs.allow(e, d, element.attributes());
             if (!seen.add(e.name())) {
-                d.error(e.pos(), "sensor '" + e.name() + "' is declared twice in <sensors>");
+                d.error(e.pos(), kind + " '" + e.name() + "' is declared twice in <" + section.name() + ">");
                 continue;
             }
             XText elements = Attrs.require(e, "elements", d);
-            List<Integer> ids = elements == null ? null : elements(elements, false, "sensor '" + e.name() + "'");
+            List<Integer> ids = elements == null ? null : elements(elements, false, kind + " '" + e.name() + "'");
             if (ids == null) {
                 continue;
             }
             boolean ok = true;
             for (int id : ids) {
                 if (!modules.contains(id)) {
-                    d.error(elements.pos(), "module " + id + " carries a " + e.name() + " sensor but is not in <structure>");
+                    d.error(elements.pos(), "module " + id + " carries a " + e.name() + " " + kind + " but is not in <structure>");
                     ok = false;
                 }
             }
             if (ok) {
-                sensors.add(new SensorDecl(e.name(), ids, elements.value(), e.pos()));
+                out.add(e, ids, elements);
             }
         }
     }

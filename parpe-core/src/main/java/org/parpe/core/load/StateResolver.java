@@ -10,6 +10,7 @@ import org.parpe.core.expr.ExprCompiler;
 import org.parpe.core.expr.Expression;
 import org.parpe.core.expr.Names;
 import org.parpe.core.expr.Scope;
+import org.parpe.core.lang.Vocabulary;
 import org.parpe.core.lang.Vocabulary.Element;
 import org.parpe.core.model.Automaton;
 import org.parpe.core.model.Interp;
@@ -94,14 +95,54 @@ final class StateResolver {
                 ok = false;
             }
         }
+        List<Integer> latch = plates(e, "latch");
+        List<Integer> unlatch = plates(e, "unlatch");
+        ok &= latch != null && unlatch != null && bothLists(e, latch, unlatch);
         List<ExprCompiler.LocalUse> uses = new ArrayList<>();
         List<Expression> list = angles == null ? null : expressions(angles, uses, "state '" + name + "'");
         if (ok && list != null) {
-            states.put(name, new StateDef(name, list, interp, e.pos()));
+            states.put(name, new StateDef(name, list, interp, latch, unlatch, e.pos()));
             stateLocals.put(name, uses);
         } else {
             broken.add(name);
         }
+    }
+
+    /**
+     * The plates listed by a state's {@code latch} or {@code unlatch} attribute (PARSL.md §14),
+     * ascending and each once; empty without the attribute, {@code null} after errors.
+     */
+    private List<Integer> plates(XElement e, String attribute) {
+        XText text = Attrs.optional(e, attribute);
+        if (text == null) {
+            return List.of();
+        }
+        java.util.TreeSet<Integer> out = new java.util.TreeSet<>();
+        boolean ok = true;
+        for (XText item : ListItem.split(text, ',')) {
+            int plate = Vocabulary.PLATES.indexOf(item.value());
+            if (plate < 0) {
+                d.error(item.pos(), item.value().isEmpty() ? "empty item in " + attribute + " of state '" + e.name() + "'"
+                        : "a module's connection plates are 0 and 1; " + attribute + " of state '" + e.name()
+                        + "' lists '" + item.value() + "'");
+                ok = false;
+            } else {
+                out.add(plate);
+            }
+        }
+        return ok ? List.copyOf(out) : null;
+    }
+
+    /** Reports a plate that one state both latches and unlatches; false if there is one. */
+    private boolean bothLists(XElement e, List<Integer> latch, List<Integer> unlatch) {
+        for (int plate : latch) {
+            if (unlatch.contains(plate)) {
+                d.error(Attrs.optional(e, "unlatch").pos(), "state '" + e.name() + "' both latches and unlatches plate "
+                        + plate + "; a plate may be in latch or in unlatch, not both");
+                return false;
+            }
+        }
+        return true;
     }
 
     /** Compiles a comma list of angle expressions; {@code null} after errors. */

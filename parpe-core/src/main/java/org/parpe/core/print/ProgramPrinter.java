@@ -16,6 +16,7 @@ import org.parpe.core.model.MainEntry;
 import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.Parameter;
 import org.parpe.core.model.Program;
+import org.parpe.core.model.ActuatorDecl;
 import org.parpe.core.model.SensorDecl;
 import org.parpe.core.model.StateDef;
 import org.parpe.core.model.Timing;
@@ -90,6 +91,13 @@ public final class ProgramPrinter {
                 line(3, "<" + s.type() + attr("elements", s.elements()) + "/>");
             }
             line(2, "</sensors>");
+        }
+        if (!p.robot().actuators().isEmpty()) {
+            line(2, "<actuators>");
+            for (ActuatorDecl a : p.robot().actuators()) {
+                line(3, "<" + a.type() + attr("elements", a.elements()) + "/>");
+            }
+            line(2, "</actuators>");
         }
         line(1, "</robot>");
     }
@@ -199,7 +207,12 @@ public final class ProgramPrinter {
     private void state(StateDef s) {
         String angles = s.angles().stream().map(Expression::text).collect(Collectors.joining(", "));
         line(2, "<" + s.name() + attr("angles", angles)
-                + (s.interp() == Interp.LINEAR ? "" : attr("interp", s.interp().word())) + "/>");
+                + (s.interp() == Interp.LINEAR ? "" : attr("interp", s.interp().word()))
+                + plates("latch", s.latch()) + plates("unlatch", s.unlatch()) + "/>");
+    }
+
+    private static String plates(String name, List<Integer> plates) {
+        return plates.isEmpty() ? "" : attr(name, plates.stream().map(String::valueOf).collect(Collectors.joining(", ")));
     }
 
     private static String opt(String name, Expression e) {

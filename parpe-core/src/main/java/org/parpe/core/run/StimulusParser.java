@@ -16,7 +16,7 @@ import org.parpe.core.sensor.SensorTable;
  */
 public final class StimulusParser {
     private static final Pattern LINE = Pattern.compile("(\\S+)\\s+\\$([A-Za-z0-9_]+)\\s*=\\s*(\\S+)");
-    private static final Pattern SENSOR = Pattern.compile("(\\d+)_(angle|accel|touch)(?:_([a-z]+))?");
+    private static final Pattern SENSOR = Pattern.compile("(\\d+)_([a-z]+)(?:_([a-z0-9]+))?");
 
     /** A malformed stimulus file. */
     public static final class StimulusException extends Exception {
@@ -65,7 +65,7 @@ public final class StimulusParser {
             }
         }
         Matcher s = SENSOR.matcher(name);
-        if (!s.matches()) {
+        if (!s.matches() || !org.parpe.core.lang.Vocabulary.SENSOR_TYPES.contains(s.group(2))) {
             throw new StimulusException(where + "unknown control or sensor '$" + name + "'"
                     + org.parpe.core.expr.Names.suggest(name, controls.stream().map(Control::name).toList(), "$"));
         }
@@ -73,7 +73,7 @@ public final class StimulusParser {
         Channel ch = Channel.of(s.group(2), s.group(3) == null ? "" : s.group(3));
         int index = id < 0 ? -1 : java.util.Arrays.binarySearch(ids, id);
         if (ch == null) {
-            throw new StimulusException(where + "'$" + name + "' is not a sensor reading (use angle, accel_x|y|z, touch_left|right)");
+            throw new StimulusException(where + "'$" + name + "' is not a sensor reading (use angle, accel_x|y|z, touch_left|right, dock_0|1)");
         }
         if (index < 0) {
             throw new StimulusException(where + "module " + s.group(1) + " is not part of the robot");

@@ -16,7 +16,11 @@ public enum Channel {
     /** 1 while the +y side touches something. */
     TOUCH_LEFT("touch", "left"),
     /** 1 while the −y side touches something. */
-    TOUCH_RIGHT("touch", "right");
+    TOUCH_RIGHT("touch", "right"),
+    /** Connection plate 0: 0 free, 1 a plate it can latch onto is within reach, 2 latched (PARSL.md §14). */
+    DOCK_0("dock", "0"),
+    /** Connection plate 1, read as {@link #DOCK_0}. */
+    DOCK_1("dock", "1");
 
     private static final Channel[] ALL = values();
 
@@ -28,12 +32,12 @@ public enum Channel {
         this.argument = argument;
     }
 
-    /** The sensor type that provides this channel: {@code angle}, {@code accel} or {@code touch}. */
+    /** The sensor type that provides this channel: {@code angle}, {@code accel}, {@code touch} or {@code dock}. */
     public String sensor() {
         return sensor;
     }
 
-    /** The argument ({@code x}, {@code left}, …), empty for {@code angle}. */
+    /** The argument ({@code x}, {@code left}, {@code 0}, …), empty for {@code angle}. */
     public String argument() {
         return argument;
     }
@@ -56,6 +60,16 @@ public enum Channel {
             }
         }
         return null;
+    }
+
+    /** What a reference to sensor type {@code sensor} must add after the type, for messages. */
+    public static String argumentHint(String sensor) {
+        switch (sensor) {
+            case "angle": return "the angle sensor takes no argument";
+            case "accel": return "accel needs an axis: _x, _y or _z";
+            case "touch": return "touch needs a side: _left or _right";
+            default: return "dock needs a plate: _0 or _1";
+        }
     }
 
     /** The channel whose {@link #suffix()} is {@code suffix}, or {@code null}. */

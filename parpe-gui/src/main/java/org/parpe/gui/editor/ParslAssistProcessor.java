@@ -93,6 +93,7 @@ public final class ParslAssistProcessor implements IContentAssistProcessor {
             case PROGRAM -> "root element";
             case ROBOT_PART -> "robot part";
             case SENSOR -> "sensor";
+            case ACTUATOR -> "actuator";
             case CONDITIONAL -> "conditional block";
             default -> "section";
         };
@@ -130,6 +131,7 @@ public final class ParslAssistProcessor implements IContentAssistProcessor {
             case "states" -> names.states().forEach(s -> m.put(s, "state"));
             case "elements" -> names.groups().forEach(g -> m.put(g, "group"));
             case "interp" -> Vocabulary.INTERP_WORDS.forEach(s -> m.put(s, "motion profile"));
+            case "latch", "unlatch" -> Vocabulary.PLATES.forEach(p -> m.put(p, "connection plate"));
             case "keys" -> Vocabulary.keyNames().forEach(k -> m.put(k, "key"));
             case "type" -> (parent.equals("controls") ? Vocabulary.CONTROL_TYPES : Vocabulary.PARAMETER_TYPES)
                     .forEach(s -> m.put(s, "type"));
