@@ -19,7 +19,8 @@ class EngineAllocationTest {
     @Test
     void ticksDoNotAllocate() {
         String script = "<program><robot><structure><body elements=\"0..199\"/><legs elements=\"200..209\"/></structure>"
-                + "<sensors><touch elements=\"legs\"/><angle elements=\"all\"/></sensors></robot>"
+                + "<sensors><touch elements=\"legs\"/><angle elements=\"all\"/><dock elements=\"legs\"/></sensors>"
+                + "<actuators><latch elements=\"legs\"/></actuators></robot>"
                 + "<controls><dir type=\"radio\" values=\"fwd, back\"/><speed type=\"slider\" min=\"0.1\" max=\"5\" value=\"1\"/></controls>"
                 + "<main cycles=\"forever\"><go time=\"3\"/><rest time=\"1\"/></main><behaviors>"
                 + "<go><if cond=\"$dir == fwd\"><wave group=\"body\" phase=\"1/$count\" period=\"2/$speed\"/></if>"
@@ -27,7 +28,7 @@ class EngineAllocationTest {
                 + "<automata><wave states=\"crest, trough\"/><crawl states=\"lift, push\" times=\"1, 2[$_self_touch_left == 1]\"/></automata>"
                 + "<states><crest angles=\"30*sin(2*pi*$phase) + $_prev_angle/10 + sum(1, 2, $cycle)\" interp=\"smooth\"/>"
                 + "<trough angles=\"-30*cos(pi*$index/$count) + if($time &gt; 1, 1, 0)\"/>"
-                + "<lift angles=\"40\"/><push angles=\"-20 + rand()\"/></states></program>";
+                + "<lift angles=\"40 + $_self_dock_0\" latch=\"0\"/><push angles=\"-20 + rand()\" unlatch=\"0\" latch=\"1\"/></states></program>";
         LoadResult r = ScriptLoader.loadText(Path.of("alloc.xml"), script, Map.of());
         assertTrue(r.ok(), r.diagnostics()::toString);
         Engine e = new Engine(r.program(), new RunOptions(0.01, 1, List.of(
@@ -36,6 +37,9 @@ class EngineAllocationTest {
         e.addObserver((JointSink) (tick, time, commanded) -> sum[0] += commanded[0]);
         // the IDE's breakpoint watcher reads every module's state and exit after each tick: no allocation either
         e.addObserver(new org.parpe.core.run.Breakpoints().watch(e, () -> { }));
+        // plate actions (PARSL.md §14) reach their sink without allocating
+        long[] actions = new long[1];
+        e.addPlateSink((tick, time, acts, where) -> actions[0]++);
         e.start();
         // a live view asks for every module's state at every tick (Engine.moduleStates): no allocation either
         int[] inst = new int[e.moduleIds().length];
@@ -51,7 +55,9 @@ class EngineAllocationTest {
             e.moduleStates(inst, state);
         }
         long bytes = mx.getThreadAllocatedBytes(Thread.currentThread().getId()) - before;
-        assertTrue(bytes < 10_000, "10000 ticks (with entry changes, stimuli, ifs, exits) allocated " + bytes + " bytes");
+        assertTrue(bytes < 10_000, "10000 ticks (with entry changes, stimuli, ifs, exits, plate actions) allocated "
+                + bytes + " bytes");
+        assertTrue(actions[0] > 100, "plate actions were emitted on " + actions[0] + " ticks");
     }
 
     @Test

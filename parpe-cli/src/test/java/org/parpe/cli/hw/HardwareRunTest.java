@@ -76,6 +76,31 @@ class HardwareRunTest {
         }
     }
 
+    /** PARSL.md §14: on hardware without latches each plate action is told once per plate, located, never dropped. */
+    @Test
+    void plateActionsAreToldOncePerPlateOnModulesWithoutLatches() throws Exception {
+        Path f = dir.resolve("dock.xml");
+        Files.writeString(f, """
+                <program>
+                  <robot><structure><body elements="0..3"/></structure><actuators><latch elements="0, 3"/></actuators></robot>
+                  <states><up angles="40" latch="0"/><down angles="-40" unlatch="0"/></states>
+                  <automata><wave states="up, down" times="0.5, 0.5"/></automata>
+                  <behaviors><b><wave group="ends"/></b></behaviors>
+                  <main><b/></main>
+                </program>
+                """.replace("<body elements=\"0..3\"/>", "<body elements=\"0..3\"/><ends elements=\"0, 3\"/>"));
+        try (EmulatedBus bus = new EmulatedBus(dir, EmulatorOptions.of(0, 1, 2, 3))) {
+            Cli r = Cli.run("run", f.toString(), "--port", bus.port(), "--duration", "2.2");
+            assertEquals(0, r.code, r.toString());
+            String armed = f + ":3:12: warning: at t=0.000 s module 0 arms plate 0, but the modules on " + bus.port()
+                    + " have no latching plates: join that plate to the plate it meets by hand";
+            assertTrue(r.err.contains(armed), r.err);
+            assertTrue(r.err.contains(f + ":3:39: warning: at t=0.500 s module 3 releases plate 0"), r.err);
+            // four cycles arm and release each plate four times: each is told once
+            assertEquals(4, r.err.split("have no latching plates", -1).length - 1, r.err);
+        }
+    }
+
     @Test
     void withDropsAndCorruptionTheRunCompletesAndReportsTheFaults() throws Exception {
         try (EmulatedBus bus = new EmulatedBus(dir, EmulatorOptions.of(0, 1, 2, 3, 9).withFaults(0.05, 0.05, 1))) {

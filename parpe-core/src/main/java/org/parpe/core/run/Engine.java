@@ -44,6 +44,10 @@ public final class Engine implements Evaluator {
     private final Inputs inputs;
     private final List<JointSink> plants = new ArrayList<>();
     private final List<JointSink> observers = new ArrayList<>();
+    private final List<PlateSink> plateSinks = new ArrayList<>();
+    /** The plate actions of the tick, per module index and plate (PARSL.md §14), and the states that made them. */
+    private final byte[] plateActs;
+    private final SourcePos[] plateWhere;
     private final EntryPlan[] plans;
     private final long mainCycles;
     private final Set<Long> warnedPairs = new HashSet<>();
@@ -67,6 +71,8 @@ public final class Engine implements Evaluator {
         this.driverOf = new int[ids.length];
         this.driverPos = new int[ids.length];
         this.sensors = new SensorTable(ids);
+        this.plateActs = new byte[2 * ids.length];
+        this.plateWhere = new SourcePos[2 * ids.length];
         ctx.sensors = sensors;
         ctx.random = new SplittableRandom(options.seed());
         this.inputs = new Inputs(program, ctx, sensors, options.stimuli());
@@ -91,6 +97,14 @@ public final class Engine implements Evaluator {
      */
     public void addObserver(JointSink observer) {
         observers.add(observer);
+    }
+
+    /**
+     * Adds a receiver of plate actions (PARSL.md §14): the simulator latches, a target without
+     * latches tells the user. A plain run has none, so plate actions change nothing in it.
+     */
+    public void addPlateSink(PlateSink sink) {
+        plateSinks.add(sink);
     }
 
     /** Sets where measured sensor readings come from (none: a plain headless run). */
@@ -338,6 +352,7 @@ public final class Engine implements Evaluator {
         ctx.macros = plan.macros;
         ctx.btime = tick * dt - entryStart * dt;
         for (InstanceRun r : plan.runs) {
+            r.clearPlates();
             if (r.finished()) {
                 continue;
             }
@@ -350,6 +365,9 @@ public final class Engine implements Evaluator {
                 r.init(this, evalOr(r.model.phase(), 0), evalOr(r.model.offset(), 0),
                         evalOr(r.model.cycles(), Double.POSITIVE_INFINITY), commanded);
                 r.wasActive = active;
+                if (!active) {
+                    r.clearPlates(); // frozen by its <if>, it entered nothing (§14)
+                }
                 if (active) {
                     for (int k = 0; k < r.n; k++) {
                         if (!r.fin[k]) {
@@ -415,12 +433,42 @@ public final class Engine implements Evaluator {
 
     private void emit() {
         System.arraycopy(next, 0, commanded, 0, ids.length);
+        if (!plateSinks.isEmpty() && entry >= 0) {
+            emitPlates(plans[entry]);
+        }
         for (int i = 0; i < plants.size(); i++) {
             plants.get(i).accept(tick, ctx.time, commanded);
         }
         for (int i = 0; i < observers.size(); i++) {
             observers.get(i).accept(tick, ctx.time, commanded);
         }
+    }
+
+    /** Hands the tick's plate actions, in document order of the instances, to the plate sinks. */
+    private void emitPlates(EntryPlan plan) {
+        boolean any = false;
+        for (InstanceRun r : plan.runs) {
+            if (!r.anyEntered) {
+                continue;
+            }
+            for (int j = 0; j < r.entered.length; j++) {
+                if (r.entered[j] != PlateSink.NONE) {
+                    int slot = 2 * r.mod[j >> 1] + (j & 1);
+                    plateActs[slot] = r.entered[j];
+                    plateWhere[slot] = r.statePos(r.enteredState[j]);
+                    any = true;
+                }
+            }
+            r.clearPlates();
+        }
+        if (!any) {
+            return;
+        }
+        for (int i = 0; i < plateSinks.size(); i++) {
+            plateSinks.get(i).plates(tick, ctx.time, plateActs, plateWhere);
+        }
+        Arrays.fill(plateActs, PlateSink.NONE);
+        Arrays.fill(plateWhere, null);
     }
 
     @Override

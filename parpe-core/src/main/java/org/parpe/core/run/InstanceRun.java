@@ -37,6 +37,16 @@ final class InstanceRun {
     private final Expression[] exits;
     private final boolean timesPerModule;
     private final int ns;
+    /** Per state and plate, its action ({@link PlateSink#ARM}, …), and the states' places. */
+    private final byte[] stateActs;
+    private final org.parpe.core.diag.SourcePos[] statePos;
+    /** Whether a state of the automaton acts on plates (PARSL.md §14). */
+    final boolean plates;
+    /** Per module and plate, the action of the states entered this tick, and the state. */
+    final byte[] entered;
+    final int[] enteredState;
+    /** Whether {@link #entered} holds an action. */
+    boolean anyEntered;
 
     // per module
     final int[] st;
@@ -77,8 +87,19 @@ final class InstanceRun {
         this.stateNames = new String[ns];
         this.exits = new Expression[ns];
         boolean perModule = false;
+        this.stateActs = new byte[2 * ns];
+        this.statePos = new org.parpe.core.diag.SourcePos[ns];
+        boolean acts = false;
         for (int i = 0; i < ns; i++) {
             StateDef s = a.states().get(i);
+            statePos[i] = s.pos();
+            for (int plate : s.latch()) {
+                stateActs[2 * i + plate] = PlateSink.ARM;
+            }
+            for (int plate : s.unlatch()) {
+                stateActs[2 * i + plate] = PlateSink.RELEASE;
+            }
+            acts |= s.hasPlateActions();
             angles[i] = s.angles().toArray(new Expression[0]);
             angles0[i] = angles[i][0];
             interp[i] = s.interp();
@@ -88,6 +109,9 @@ final class InstanceRun {
             perModule |= times[i].perModule();
         }
         this.timesPerModule = perModule;
+        this.plates = acts;
+        this.entered = new byte[acts ? 2 * n : 0];
+        this.enteredState = new int[acts ? 2 * n : 0];
         st = new int[n];
         p = new double[n];
         p0 = new double[n];
@@ -106,6 +130,34 @@ final class InstanceRun {
     /** Whether every module has finished its cycles. */
     boolean finished() {
         return started && finishedCount == n;
+    }
+
+    /** Forgets the plate actions of the last tick. */
+    void clearPlates() {
+        if (anyEntered) {
+            Arrays.fill(entered, PlateSink.NONE);
+            anyEntered = false;
+        }
+    }
+
+    /** Module {@code k} enters state {@code s}: its plate actions replace those of states entered before this tick. */
+    private void entering(int k, int s) {
+        if (!plates) {
+            return;
+        }
+        for (int plate = 0; plate < 2; plate++) {
+            byte act = stateActs[2 * s + plate];
+            if (act != PlateSink.NONE) {
+                entered[2 * k + plate] = act;
+                enteredState[2 * k + plate] = s;
+                anyEntered = true;
+            }
+        }
+    }
+
+    /** Where state {@code s} is written. */
+    org.parpe.core.diag.SourcePos statePos(int s) {
+        return statePos[s];
     }
 
     /** Sets the context to module {@code k} with its start-of-tick $phase and $cycle. */
@@ -162,6 +214,7 @@ final class InstanceRun {
                 st[k] = found;
                 p[k] = Math.max(0, (pos - cum) / tBuf[found]);
             }
+            entering(k, st[k]);
             uk[k] = start;
             u[k] = start;
             p0[k] = p[k];
@@ -237,6 +290,7 @@ final class InstanceRun {
             u[k] += du;
             a0[k] = commanded[mod[k]];
             st[k] = s = (s + 1) % ns;
+            entering(k, s);
             p[k] = p0[k] = 0;
         }
         double r = dt;
@@ -252,6 +306,7 @@ final class InstanceRun {
                 }
                 a0[k] = target(ev, s, k);
                 st[k] = s = (s + 1) % ns;
+                entering(k, s);
                 p[k] = p0[k] = 0;
                 continue;
             }
@@ -284,6 +339,7 @@ final class InstanceRun {
             u[k] += du;
             a0[k] = target(ev, s, k);
             st[k] = s = (s + 1) % ns;
+            entering(k, s);
             p[k] = p0[k] = 0;
         }
         ph[k] = phaseOf(s, p[k]);

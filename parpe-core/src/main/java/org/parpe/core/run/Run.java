@@ -187,6 +187,12 @@ public final class Run {
             return this;
         }
 
+        /** Adds a receiver of plate actions (PARSL.md §14): a target that latches, or one that tells the user. */
+        public Builder plates(PlateSink sink) {
+            engine.addPlateSink(sink);
+            return this;
+        }
+
         /** Adds an observer (it records); observers see each tick after every plant. */
         public Builder observer(JointSink observer) {
             observers.add(observer);

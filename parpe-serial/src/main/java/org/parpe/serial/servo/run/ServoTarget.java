@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.function.Consumer;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
+import org.parpe.core.run.PlatesByHand;
 import org.parpe.core.run.Run;
 import org.parpe.core.run.RunTarget;
 import org.parpe.core.run.TargetException;
@@ -118,6 +119,8 @@ public final class ServoTarget implements RunTarget {
                     + "the others, so it does not start");
         }
         HostPlant.attachTo(run, d, ids);
+        // neither G1 modules nor servos latch: plate actions (PARSL.md §14) are the user's to do by hand
+        run.plates(new PlatesByHand(diags, ids, modules ? "the modules on " + port : "the servos of the profile"));
         driver = d;
     }
 
