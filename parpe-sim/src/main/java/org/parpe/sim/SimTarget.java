@@ -52,6 +52,13 @@ public final class SimTarget implements RunTarget {
         run.plant(s);
         run.sensorSource(SourceKind.SIMULATOR, s);
         run.traceColumns(s.traceColumns());
+        // docking (PARSL.md §14): the simulator works the latches and reads the dock sensors
+        run.plates(s);
+        int[] docks = program.robot().sensors().stream().filter(d -> d.type().equals("dock"))
+                .flatMap(d -> d.modules().stream()).mapToInt(Integer::intValue).toArray();
+        if (docks.length > 0) {
+            run.traceColumns(s.dockSensors(docks));
+        }
         simulator = s;
     }
 

@@ -7,13 +7,16 @@ import org.ode4j.math.DMatrix3C;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.run.SourceKind;
 import org.parpe.core.sensor.Channel;
+import org.parpe.core.diag.SourcePos;
 import org.parpe.core.run.JointSink;
+import org.parpe.core.run.PlateSink;
 import org.parpe.core.run.RunInfo;
 import org.parpe.core.run.SensorSource;
 import org.parpe.core.sensor.SensorTable;
 import org.parpe.core.run.TraceColumns;
 import org.parpe.sim.config.RobotConfig;
 import org.parpe.sim.internal.Assembly;
+import org.parpe.sim.internal.Docking;
 import org.parpe.sim.internal.PhysicsParams;
 import org.parpe.sim.internal.PhysicsWorld;
 import org.parpe.sim.internal.SnapshotBuffer;
@@ -23,15 +26,16 @@ import org.parpe.sim.world.World;
  * A PolyBot simulated with rigid-body physics (ODE4j) on a flat floor. As a {@link JointSink}
  * it takes each tick's commanded angles and advances the physics by one tick (in fixed
  * sub-steps), so that the next {@link SensorSource#read} sees the plant one tick later; as a
- * sensor source it fills the measured {@code angle}, {@code accel} and {@code touch} readings
- * of PARSL.md §10. Runs are deterministic: the same configuration and commands give the same
+ * sensor source it fills the measured {@code angle}, {@code accel}, {@code touch} and
+ * {@code dock} readings of PARSL.md §10 and §14; as a plate sink it arms and releases the latches
+ * of connection plates (§14, {@link Docking}). Runs are deterministic: the same configuration and commands give the same
  * motion, bit for bit.
  *
  * <p>Threads: the engine thread calls the sink and source methods and {@link #step(int)};
  * {@link #snapshot()}, {@link #setLimp(boolean)} and {@link #setLimp(int, boolean)} may be
  * called from any thread (limp changes take effect at the next tick).
  */
-public final class Simulator implements JointSink, SensorSource, AutoCloseable {
+public final class Simulator implements JointSink, SensorSource, PlateSink, AutoCloseable {
     /** Tick length used by {@link #step(int)} before a run has started, s. */
     public static final double DEFAULT_TICK = 0.01;
 
@@ -53,6 +57,12 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
     private final double[] objectCentre = new double[3];
     private volatile double liveScore = Double.NaN;
     private final Referee referee;
+    private final Docking docking;
+    /** Per program module index and plate, its docking site (−1: not simulated). */
+    private int[] plateSite = new int[0];
+    /** Program module indices whose dock sensor is read (PARSL.md §14), ascending. */
+    private int[] dockModules = new int[0];
+    private final double[] dockValues;
 
     /** A simulator of {@code config}; throws {@link IllegalArgumentException} if it is not valid. */
     public Simulator(RobotConfig config) {
@@ -95,6 +105,8 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
         progress = new Progress(world);
         snapshots = new SnapshotBuffer(world);
         traceValues = new double[hingeIds.length + 3 + 2 * world.objectCount()];
+        docking = world.docking();
+        dockValues = new double[2 * hingeIds.length];
         referee = scene == null ? null : new Referee(world, scene);
         if (referee != null) {
             referee.reset(progress.com());
@@ -135,6 +147,10 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
     public void start(RunInfo info) {
         dt = info.dt();
         bind(info.moduleIds());
+        if (dockModules.length > 0) {
+            docking.update(true);
+            captureDock();
+        }
         progress.reset();
         if (referee != null) {
             referee.reset(progress.com());
@@ -149,6 +165,59 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
             programHinge[i] = Arrays.binarySearch(hingeIds, ids[i]);
             programHinge[i] = programHinge[i] < 0 ? -1 : programHinge[i];
         }
+        plateSite = new int[2 * ids.length];
+        for (int i = 0; i < ids.length; i++) {
+            plateSite[2 * i] = programHinge[i] < 0 ? -1 : docking.site(ids[i], 0);
+            plateSite[2 * i + 1] = programHinge[i] < 0 ? -1 : docking.site(ids[i], 1);
+        }
+    }
+
+    /**
+     * Reads the {@code dock} sensors of the script's modules {@code ids} (PARSL.md §14) and adds
+     * their trace columns {@code d<ID>_<P>}; call before the run starts.
+     */
+    public TraceColumns dockSensors(int[] ids) {
+        int[] sorted = ids.clone();
+        Arrays.sort(sorted);
+        dockModules = Arrays.stream(sorted).filter(id -> Arrays.binarySearch(hingeIds, id) >= 0).toArray();
+        int[] shown = dockModules.clone();
+        return new TraceColumns() {
+            @Override
+            public String[] names() {
+                String[] names = new String[2 * shown.length];
+                for (int i = 0; i < shown.length; i++) {
+                    names[2 * i] = "d" + shown[i] + "_0";
+                    names[2 * i + 1] = "d" + shown[i] + "_1";
+                }
+                return names;
+            }
+
+            @Override
+            public void values(double[] out) {
+                System.arraycopy(dockValues, 0, out, 0, 2 * shown.length);
+            }
+        };
+    }
+
+    @Override
+    public void plates(long tick, double time, byte[] actions, SourcePos[] where) {
+        for (int j = 0; j < actions.length && j < plateSite.length; j++) {
+            int site = plateSite[j];
+            if (site < 0 || actions[j] == NONE) {
+                continue;
+            }
+            if (actions[j] == ARM) {
+                docking.arm(site);
+            } else {
+                docking.release(site);
+            }
+        }
+    }
+
+    /** The dock reading of plate {@code plate} of module {@code id}: 0 free, 1 in reach, 2 latched (−1: no such module). */
+    public int dock(int id, int plate) {
+        int site = docking.site(id, plate);
+        return site < 0 ? -1 : docking.reading(site);
     }
 
     @Override
@@ -175,6 +244,9 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
         for (int t = 0; t < ticks; t++) {
             applyLimpRequests();
             world.advance(dt);
+            if (docking.update(dockModules.length > 0)) {
+                captureDock();
+            }
             progress.update();
             if (referee != null) {
                 referee.update(progress.com(), progress.maxTilt());
@@ -227,6 +299,11 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
             int touch = world.touch(h);
             table.set(i, Channel.TOUCH_LEFT, (touch & 1) != 0 ? 1 : 0);
             table.set(i, Channel.TOUCH_RIGHT, (touch & 2) != 0 ? 1 : 0);
+            int d = Arrays.binarySearch(dockModules, programIds[i]);
+            if (d >= 0) {
+                table.set(i, Channel.DOCK_0, dockValues[2 * d]);
+                table.set(i, Channel.DOCK_1, dockValues[2 * d + 1]);
+            }
         }
     }
 
@@ -294,6 +371,15 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
             world.objectCentre(i, objectCentre);
             traceValues[k++] = objectCentre[0];
             traceValues[k++] = objectCentre[1];
+        }
+    }
+
+    /** Keeps the dock readings the next tick's sensors read (and its trace row shows), after the physics moved. */
+    private void captureDock() {
+        for (int d = 0; d < dockModules.length; d++) {
+            int i = Arrays.binarySearch(programIds, dockModules[d]);
+            dockValues[2 * d] = i < 0 ? 0 : docking.reading(plateSite[2 * i]);
+            dockValues[2 * d + 1] = i < 0 ? 0 : docking.reading(plateSite[2 * i + 1]);
         }
     }
 

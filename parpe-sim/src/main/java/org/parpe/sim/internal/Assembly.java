@@ -55,19 +55,44 @@ public final class Assembly {
     public record Hinge(int moduleId, int base, int arm, Vec3 anchor, Vec3 axis, double angle, boolean limp) {
     }
 
+    /**
+     * One connection plate of the robot, for docking (PARSL.md §14): where it sits on its piece
+     * and whether the configuration already joins it to another part.
+     *
+     * @param part      index of the part in the configuration
+     * @param plate     the plate's number on its part (a segment's 0 and 1 are PARSL's plates)
+     * @param piece     index of the piece that carries it
+     * @param moduleId  the segment's module ID, or −1 for a passive part
+     * @param centre    plate centre relative to the piece's centre, in the piece's frame
+     * @param normal    outward unit normal, piece frame
+     * @param up        unit "up" direction in the plate, piece frame
+     * @param connected whether a connection of the configuration uses it
+     */
+    public record PlateSite(int part, int plate, int piece, int moduleId, Vec3 centre, Vec3 normal, Vec3 up,
+                            boolean connected) {
+    }
+
     /** How many assemblies {@link #build} has made in this class loader: a run should make one. */
     static final AtomicInteger BUILT = new AtomicInteger();
 
     private final List<PlacedPiece> pieces;
     private final List<Hinge> hinges;
+    private final List<PlateSite> plates;
     private final int clusterCount;
     private final int rootPiece;
 
-    private Assembly(List<PlacedPiece> pieces, List<Hinge> hinges, int clusterCount, int rootPiece) {
+    private Assembly(List<PlacedPiece> pieces, List<Hinge> hinges, List<PlateSite> plates, int clusterCount,
+                     int rootPiece) {
         this.pieces = List.copyOf(pieces);
         this.hinges = List.copyOf(hinges);
+        this.plates = List.copyOf(plates);
         this.clusterCount = clusterCount;
         this.rootPiece = rootPiece;
+    }
+
+    /** Every connection plate, part by part in configuration order, each part's plates in order. */
+    public List<PlateSite> plates() {
+        return plates;
     }
 
     /** Pieces in configuration order (part by part, each part's pieces in order). */
@@ -135,11 +160,33 @@ public final class Assembly {
         if (!ok) {
             return null;
         }
-        return place(parts, geos, placement, first, cluster, config.root().height());
+        return place(parts, geos, placement, first, cluster, config.root().height(), plateSites(config, geos, first, index));
+    }
+
+    /** The plates of every part relative to their pieces (a piece turns with its plate, so joint angles do not matter). */
+    private static List<PlateSite> plateSites(RobotConfig config, List<PartGeometry> geos, int[] first,
+                                              Map<String, Integer> index) {
+        java.util.Set<Long> used = new java.util.HashSet<>();
+        for (Connection c : config.connections()) {
+            used.add((long) index.get(c.from()) << 8 | c.fromPlate());
+            used.add((long) index.get(c.to()) << 8 | c.toPlate());
+        }
+        List<PlateSite> out = new ArrayList<>();
+        for (int i = 0; i < geos.size(); i++) {
+            PartSpec part = config.parts().get(i);
+            List<PartGeometry.Plate> plates = geos.get(i).plates();
+            for (int k = 0; k < plates.size(); k++) {
+                PartGeometry.Plate pl = plates.get(k);
+                Vec3 pieceCentre = geos.get(i).pieces().get(pl.piece()).centre();
+                out.add(new PlateSite(i, k, first[i] + pl.piece(), part.isSegment() ? part.moduleId() : -1,
+                        Geo.sub(pl.centre(), pieceCentre), pl.normal(), pl.up(), used.contains((long) i << 8 | k)));
+            }
+        }
+        return out;
     }
 
     private static Assembly place(List<PartSpec> parts, List<PartGeometry> geos, Placement placement,
-                                  int[] first, int[] cluster, double height) {
+                                  int[] first, int[] cluster, double height, List<PlateSite> plates) {
         List<PlacedPiece> placed = new ArrayList<>();
         List<Hinge> hinges = new ArrayList<>();
         for (int i = 0; i < parts.size(); i++) {
@@ -159,7 +206,7 @@ public final class Assembly {
         }
         hinges.sort((a, b) -> Integer.compare(a.moduleId(), b.moduleId()));
         int clusters = Arrays.stream(cluster).max().orElse(-1) + 1;
-        Assembly a = new Assembly(placed, hinges, clusters, first[placement.rootIndex()]);
+        Assembly a = new Assembly(placed, hinges, plates, clusters, first[placement.rootIndex()]);
         return a.moved(Mat3.IDENTITY, Vec3.ZERO, new Vec3(0, 0, height - lowest(placed)));
     }
 
@@ -178,7 +225,7 @@ public final class Assembly {
             outHinges.add(new Hinge(h.moduleId(), h.base(), h.arm(), movedPoint(h.anchor(), turn, pivot, shift),
                     Geo.mul(turn, h.axis()), h.angle(), h.limp()));
         }
-        return new Assembly(out, outHinges, clusterCount, rootPiece);
+        return new Assembly(out, outHinges, plates, clusterCount, rootPiece);
     }
 
     private static Vec3 movedPoint(Vec3 p, Mat3 turn, Vec3 pivot, Vec3 shift) {

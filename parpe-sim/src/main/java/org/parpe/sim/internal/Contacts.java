@@ -74,6 +74,46 @@ final class Contacts implements DGeom.DNearCallback {
         touch = new int[assembly.hinges().size()];
     }
 
+    /** Pairs of clusters latched together during the run (PARSL.md §14): they do not collide, as if bolted. */
+    private long[] latched = new long[0];
+    private int latchedCount;
+
+    /** Clusters {@code a} and {@code b} are latched together: they stop colliding. */
+    void latch(int a, int b) {
+        if (latchedCount == latched.length) {
+            latched = java.util.Arrays.copyOf(latched, Math.max(4, 2 * latched.length));
+        }
+        latched[latchedCount++] = pair(a, b);
+    }
+
+    /** One latch between clusters {@code a} and {@code b} is released. */
+    void unlatch(int a, int b) {
+        long key = pair(a, b);
+        for (int i = 0; i < latchedCount; i++) {
+            if (latched[i] == key) {
+                latched[i] = latched[--latchedCount];
+                return;
+            }
+        }
+    }
+
+    private static long pair(int a, int b) {
+        return (long) Math.min(a, b) << 32 | Math.max(a, b);
+    }
+
+    private boolean latchedTogether(int a, int b) {
+        if (latchedCount == 0) {
+            return false;
+        }
+        long key = pair(a, b);
+        for (int i = 0; i < latchedCount; i++) {
+            if (latched[i] == key) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     /** Forgets the kept contacts (at the start of every sub-step). */
     void clearKept() {
         keptCount = 0;
@@ -83,7 +123,8 @@ final class Contacts implements DGeom.DNearCallback {
     public void call(Object data, DGeom g1, DGeom g2) {
         int p1 = pieceOf(g1);
         int p2 = pieceOf(g2);
-        if (p1 >= 0 && p2 >= 0 && (clusterOf[p1] == clusterOf[p2] || jointed[clusterOf[p1]][clusterOf[p2]])) {
+        if (p1 >= 0 && p2 >= 0 && (clusterOf[p1] == clusterOf[p2] || jointed[clusterOf[p1]][clusterOf[p2]]
+                || latchedTogether(clusterOf[p1], clusterOf[p2]))) {
             return;
         }
         DBody b1 = g1.getBody();

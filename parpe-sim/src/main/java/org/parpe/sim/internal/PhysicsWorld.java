@@ -45,6 +45,7 @@ public final class PhysicsWorld implements AutoCloseable {
     private final WorldBodies scenery;
     private double time;
     private long stepCount;
+    private Docking docking;
 
     /** Builds the world for {@code assembly} on a flat floor. */
     public PhysicsWorld(Assembly assembly, PhysicsParams params) {
@@ -152,6 +153,9 @@ public final class PhysicsWorld implements AutoCloseable {
         java.util.Arrays.fill(contacts.touch, 0);
         for (int s = 0; s < steps; s++) {
             driveServos();
+            if (docking != null) {
+                docking.pull();
+            }
             contacts.clearKept();
             space.collide(null, contacts);
             if (scenery != null) {
@@ -246,6 +250,24 @@ public final class PhysicsWorld implements AutoCloseable {
     /** Number of bodies (rigid clusters). */
     public int bodyCount() {
         return bodies.length;
+    }
+
+    /** The latches of the robot's plates (PARSL.md §14), made on first use. */
+    public Docking docking() {
+        if (docking == null) {
+            docking = new Docking(this);
+        }
+        return docking;
+    }
+
+    /** The ODE world, for joints made during the run ({@link Docking}). */
+    DWorld odeWorld() {
+        return world;
+    }
+
+    /** The body of the rigid cluster that piece {@code i} belongs to. */
+    DBody bodyOfPiece(int i) {
+        return bodies[assembly.pieces().get(i).cluster()];
     }
 
     /** Contact points of the last sub-step (see {@link Contacts}). */
