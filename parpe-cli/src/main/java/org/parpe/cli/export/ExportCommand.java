@@ -30,17 +30,33 @@ import picocli.CommandLine.Model.CommandSpec;
 /**
  * {@code parpe export SCRIPT --target c|arduino --out DIR}: the script as portable C (runtime,
  * tables, a host trace program) or as an Arduino sketch folder, with a memory estimate for the
- * board. Exit codes as {@code run}: 1 script errors (also what the board cannot hold), 2 usage errors.
+ * board; {@code parpe export --target mjcf|urdf|sdf --robot ROBOT --out DIR [SCRIPT]}: the robot
+ * for MuJoCo, ROS tools or Gazebo, with the script's gait ({@link RobotExport}). Exit codes as
+ * {@code run}: 1 script or robot errors (also what the board cannot hold), 2 usage errors.
  */
 @Command(name = "export", mixinStandardHelpOptions = true, description = "Compile a PARSL script to C99 or to an"
-        + " Arduino sketch that runs it without a PC (see docs/embedded.md).")
+        + " Arduino sketch that runs it without a PC (see docs/embedded.md), or write a robot as MJCF, URDF or SDF"
+        + " with a script's gait (see docs/bridges.md).")
 public final class ExportCommand implements Callable<Integer> {
-    @Parameters(index = "0", paramLabel = "SCRIPT", description = "The PARSL script.")
+    @Parameters(index = "0", arity = "0..1", paramLabel = "SCRIPT",
+            description = "The PARSL script (for mjcf, urdf and sdf: optional, its gait is exported with the robot).")
     Path file;
 
-    @Option(names = "--target", paramLabel = "c|arduino", defaultValue = "c",
-            description = "c: runtime + tables + a host trace program; arduino: a sketch folder (default ${DEFAULT-VALUE}).")
+    @Option(names = "--target", paramLabel = "c|arduino|mjcf|urdf|sdf", defaultValue = "c",
+            description = "c: runtime + tables + a host trace program; arduino: a sketch folder; mjcf, urdf, sdf: the"
+                    + " robot of --robot for MuJoCo, ROS tools, Gazebo (default ${DEFAULT-VALUE}).")
     String target;
+
+    @Option(names = "--robot", paramLabel = "ROBOT",
+            description = "For mjcf, urdf, sdf: the robot, as --sim takes it (a configuration file or snake:n=12, centipede, ...).")
+    String robot;
+
+    @Option(names = "--duration", paramLabel = "SECONDS", defaultValue = "20",
+            description = "For mjcf, urdf, sdf with a script: how long a run the gait holds (default ${DEFAULT-VALUE}).")
+    double duration;
+
+    @Option(names = "--stimulus", paramLabel = "FILE", description = "For mjcf, urdf, sdf with a script: timed control and sensor assignments.")
+    Path stimulus;
 
     @Option(names = "--out", paramLabel = "DIR", required = true, description = "Folder to write (created if missing).")
     Path out;
@@ -88,12 +104,21 @@ public final class ExportCommand implements Callable<Integer> {
 
     private int execute(PrintWriter err) throws UsageException, IOException {
         ClockOptions.check(tick, null);
-        Inputs.check(file);
+        if (List.of("mjcf", "urdf", "sdf").contains(target)) {
+            return exportRobot(err);
+        }
         boolean arduino = switch (target) {
             case "c" -> false;
             case "arduino" -> true;
-            default -> throw new UsageException("--target must be c or arduino, got '" + target + "'");
+            default -> throw new UsageException("--target must be c, arduino, mjcf, urdf or sdf, got '" + target + "'");
         };
+        if (file == null) {
+            throw new UsageException("--target " + target + " exports a script: give the SCRIPT");
+        }
+        if (robot != null || stimulus != null) {
+            throw new UsageException("--robot and --stimulus are for --target mjcf, urdf and sdf");
+        }
+        Inputs.check(file);
         Board b = board(arduino);
         if (arduino) {
             ArduinoSketch.tickMicros(tick);
@@ -116,6 +141,51 @@ public final class ExportCommand implements Callable<Integer> {
         }
         write(r.program(), result, sketch);
         return 0;
+    }
+
+    /** MJCF, URDF or SDF of {@code --robot}, with the gait of the script if one is given. */
+    private int exportRobot(PrintWriter err) throws UsageException, IOException {
+        if (robot == null) {
+            throw new UsageException("--target " + target + " needs --robot: a configuration file or a generator"
+                    + " (snake:n=12, centipede, wheel, loop, humanoid)");
+        }
+        if (board != null || !pins.isEmpty() || model != null || !servo.equals("pwm") || consoleSensors) {
+            throw new UsageException("--board, --servo, --pins, --model and --console-sensors are for --target c and arduino");
+        }
+        if (!(duration > 0) || !Double.isFinite(duration)) {
+            throw new UsageException("--duration must be a number of seconds > 0, got " + duration);
+        }
+        Program program = null;
+        List<org.parpe.core.run.Stimulus> stimuli = List.of();
+        if (file != null) {
+            Inputs.check(file);
+            LoadResult r = ScriptLoader.load(file, ParamValues.parse(params));
+            int refused = org.parpe.cli.LoadReport.exitCode(r, err::println);
+            if (refused != 0) {
+                return refused;
+            }
+            program = r.program();
+            stimuli = stimuli(program);
+        } else if (stimulus != null || !params.isEmpty()) {
+            throw new UsageException("--stimulus and --param need a SCRIPT whose gait is exported");
+        }
+        return RobotExport.run(new RobotExport.Request(target, robot, program, stimuli, duration, tick, out),
+                spec.commandLine().getOut(), err);
+    }
+
+    private List<org.parpe.core.run.Stimulus> stimuli(Program program) throws UsageException {
+        if (stimulus == null) {
+            return List.of();
+        }
+        Inputs.check(stimulus);
+        try {
+            return org.parpe.core.run.StimulusParser.parse(stimulus.toString(),
+                    org.parpe.core.xml.InputFiles.readText(stimulus), program);
+        } catch (IOException e) {
+            throw new UsageException("cannot read stimulus file '" + stimulus + "': " + e.getMessage());
+        } catch (org.parpe.core.run.StimulusParser.StimulusException e) {
+            throw new UsageException(e.getMessage());
+        }
     }
 
     /** The board of {@code --board}, checked against the target and the target's other options. */

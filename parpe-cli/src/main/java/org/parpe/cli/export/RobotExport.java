@@ -1,0 +1,152 @@
+package org.parpe.cli.export;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.regex.Pattern;
+import org.parpe.cli.UsageException;
+import org.parpe.core.diag.DiagnosticSink;
+import org.parpe.core.diag.Severity;
+import org.parpe.core.diag.DiagnosticList;
+import org.parpe.core.model.Program;
+import org.parpe.core.run.Run;
+import org.parpe.core.run.RunOptions;
+import org.parpe.core.run.RunOutcome;
+import org.parpe.core.run.Stimulus;
+import org.parpe.core.run.TargetException;
+import org.parpe.sim.SimTarget;
+import org.parpe.sim.bridge.Mjcf;
+import org.parpe.sim.bridge.RobotModel;
+import org.parpe.sim.bridge.Sdf;
+import org.parpe.sim.bridge.Urdf;
+import org.parpe.sim.config.RobotConfig;
+import org.parpe.sim.config.RobotConfigs;
+import org.parpe.sim.internal.Assembly;
+
+/**
+ * {@code parpe export --target mjcf|urdf|sdf --robot ROBOT --out DIR [SCRIPT]}: the robot in
+ * another tool's format and, with a script, the commanded angles of a run of it on that robot
+ * (for MJCF with a Python runner that plays them in MuJoCo). docs/bridges.md says how to use them.
+ */
+final class RobotExport {
+    /** Names every format takes: letters, digits, {@code _ . -}, not starting with a digit. */
+    private static final Pattern NAME = Pattern.compile("[A-Za-z_][A-Za-z0-9_.-]*");
+
+    private RobotExport() {
+    }
+
+    /** What to export. */
+    record Request(String target, String robot, Program program, List<Stimulus> stimuli, double duration, double tick,
+                   Path out) {
+    }
+
+    /** Exports; returns the exit code (1: the robot or the names are wrong, located messages on {@code err}). */
+    static int run(Request q, PrintWriter out, PrintWriter err) throws IOException, UsageException {
+        DiagnosticList diags = new DiagnosticList();
+        int[] ids = q.program() == null ? new int[0] : q.program().moduleIds();
+        RobotConfig config = RobotConfigs.resolve(q.robot(), ids, diags);
+        Assembly a = config == null ? null : Assembly.build(config, diags);
+        if (a != null) {
+            checkNames(config, q.target(), diags);
+        }
+        if (diags.hasErrors()) {
+            diags.all().forEach(d -> err.println(d.format()));
+            return 1;
+        }
+        RobotModel m = RobotModel.of(config, a);
+        String base = baseName(config, q.robot());
+        Map<String, String> files = new LinkedHashMap<>();
+        switch (q.target()) {
+            case "mjcf" -> files.put(base + ".xml", Mjcf.of(m));
+            case "urdf" -> files.put(base + ".urdf", Urdf.of(m));
+            default -> files.put(base + ".sdf", Sdf.of(m));
+        }
+        if (q.program() != null) {
+            String gait = gait(q, m, diags);
+            diags.all().stream().filter(d -> d.severity() != Severity.ERROR).forEach(d -> err.println(d.format()));
+            if (gait == null) {
+                diags.all().stream().filter(d -> d.severity() == Severity.ERROR).forEach(d -> err.println(d.format()));
+                return 3;
+            }
+            files.put(base + (q.target().equals("mjcf") ? ".ctrl.csv" : ".joints.csv"), gait);
+            if (q.target().equals("mjcf")) {
+                files.put("play_mujoco.py", runner());
+            }
+        }
+        ExportFiles.write(q.out(), files);
+        out.println("wrote " + files.size() + (files.size() == 1 ? " file" : " files") + " to " + q.out() + ": "
+                + String.join(", ", files.keySet()));
+        out.println(m.links().size() + " links, " + m.joints().stream().filter(RobotModel.Joint::revolute).count()
+                + " servo joints, " + m.closures().size() + (m.closures().size() == 1 ? " loop" : " loops"));
+        if (q.target().equals("mjcf") && q.program() != null) {
+            out.println("play: python3 " + q.out().resolve("play_mujoco.py") + " " + q.out().resolve(base + ".xml") + " "
+                    + q.out().resolve(base + ".ctrl.csv") + " --out trace.csv");
+        }
+        return 0;
+    }
+
+    /** Refuses part names that the format cannot carry, at the part. */
+    private static void checkNames(RobotConfig config, String target, DiagnosticSink diags) {
+        for (org.parpe.sim.config.PartSpec p : config.parts()) {
+            if (!NAME.matcher(p.name()).matches() || p.name().equals("world")) {
+                diags.error(p.pos(), "part name '" + p.name() + "' cannot be a " + target.toUpperCase(Locale.ROOT)
+                        + " name: use letters, digits, '_', '.' and '-', not starting with a digit, and not 'world'");
+            }
+        }
+    }
+
+    private static String baseName(RobotConfig config, String robot) {
+        String name = Path.of(robot).getFileName().toString().replaceFirst("\\.xml$", "");
+        name = name.replaceAll("[^A-Za-z0-9_.-]", "_");
+        return name.isEmpty() ? "robot" : name;
+    }
+
+    /**
+     * The commanded angles of a run of the script on the robot in the simulator, one row per
+     * tick: for MJCF the module angles (the actuators' controls), for URDF and SDF the joint
+     * values (module angle minus initial angle), radians, columns m&lt;ID&gt; in ascending ID.
+     */
+    private static String gait(Request q, RobotModel m, DiagnosticList diags) throws UsageException {
+        List<RobotModel.Joint> joints = new ArrayList<>(m.joints().stream().filter(RobotModel.Joint::revolute).toList());
+        joints.sort((x, y) -> Integer.compare(x.moduleId(), y.moduleId()));
+        int[] ids = q.program().moduleIds();
+        int[] column = new int[joints.size()];
+        double[] offset = new double[joints.size()];
+        for (int k = 0; k < joints.size(); k++) {
+            column[k] = java.util.Arrays.binarySearch(ids, joints.get(k).moduleId());
+            offset[k] = q.target().equals("mjcf") ? 0 : joints.get(k).initial();
+        }
+        StringBuilder csv = new StringBuilder("time");
+        joints.forEach(j -> csv.append(',').append(j.name()));
+        csv.append('\n');
+        Run.Builder b = Run.builder(q.program(), new RunOptions(q.tick(), 0, q.stimuli()), diags);
+        try {
+            b.attach(new SimTarget(q.robot()));
+        } catch (TargetException e) {
+            e.diagnostics().forEach(diags::report);
+            return null;
+        }
+        b.observer((tick, time, commanded) -> {
+            csv.append(String.format(Locale.ROOT, "%.6f", time));
+            for (int k = 0; k < column.length; k++) {
+                double deg = column[k] < 0 ? Math.toDegrees(joints.get(k).initial()) : commanded[column[k]];
+                csv.append(',').append(String.format(Locale.ROOT, "%.9f", Math.toRadians(deg) - offset[k]));
+            }
+            csv.append('\n');
+        });
+        RunOutcome o = b.duration(q.duration()).build().execute();
+        return o.status() == RunOutcome.Status.ERROR ? null : csv.toString();
+    }
+
+    private static String runner() throws IOException {
+        try (var in = RobotExport.class.getResourceAsStream("play_mujoco.py")) {
+            return new String(in.readAllBytes(), StandardCharsets.UTF_8);
+        }
+    }
+}

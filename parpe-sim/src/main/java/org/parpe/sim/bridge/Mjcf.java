@@ -1,0 +1,130 @@
+package org.parpe.sim.bridge;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.parpe.sim.BodyShape;
+import org.parpe.sim.Vec3;
+
+/**
+ * A robot as MuJoCo MJCF, in the subset that MuJoCo 2.2 and 3 both read: nested bodies at the
+ * initial pose, the root body free; a hinge joint {@code m<ID>} per segment whose value is the
+ * module's angle in radians ({@code ref} is the initial angle); a position servo {@code m<ID>} per
+ * joint whose control is that angle, with the servo's torque as its force range; loops
+ * closed by {@code weld} equality constraints; the simulator's contact exclusions; friction on
+ * the floor and between parts; a 1 ms step (MuJoCo's loop closures are soft constraints, and
+ * PARPE's 5 ms step lets a 12-module loop open by 6 mm there).
+ */
+public final class Mjcf {
+    /**
+     * Position gain of the servos, N·m/rad: PARPE's servo is a velocity loop (the speed it is told
+     * grows with the error) with a torque cap; as a position servo its stiffness depends on the
+     * load, and 3 N·m/rad is the figure at which hello-snake travels as far in MuJoCo as in PARPE
+     * (docs/bridges.md gives the cross-check).
+     */
+    static final double KP = 3;
+    /** MuJoCo's step, s. */
+    static final double STEP = 0.001;
+
+    private Mjcf() {
+    }
+
+    /** The MJCF text of {@code m}. */
+    public static String of(RobotModel m) {
+        XmlOut x = new XmlOut();
+        x.comment("PARPE robot '" + m.name() + "' (parpe export --target mjcf). Joints and actuators m<ID> are the"
+                + " modules; a control is the module's angle in radians.");
+        x.start("mujoco").attr("model", m.name());
+        x.start("compiler").attr("angle", "radian").attr("inertiafromgeom", "false").end();
+        // MuJoCo's constraints are soft: a 1 ms step (PARPE's is 5 ms) keeps a closed loop within 1 mm
+        // the implicit integrator: a servo's velocity feedback on a 40 g segment half is far too stiff for Euler's
+        x.start("option").attr("timestep", STEP).attr("integrator", "implicit").attr("gravity", 0, 0, -9.81).end();
+        x.start("default");
+        x.start("geom").attr("friction", RobotModel.selfFriction(), 0.005, 0.0001).attr("condim", "3").end();
+        x.start("joint").attr("limited", "true").attr("range", -RobotModel.range(), RobotModel.range()).end();
+        // PARPE's servo drives at g·(target − q) with at most its torque; as an MJCF position servo with velocity
+        // feedback: force = kp·(ctrl − q) − kv·q̇, kv = kp / g, capped at the torque (a <general> actuator, the
+        // form of <position kp kv> that MuJoCo 2.2 reads too)
+        x.start("general").attr("gaintype", "fixed").attr("biastype", "affine").attr("gainprm", KP)
+                .attr("biasprm", 0, -KP, -KP / RobotModel.gain()).attr("ctrllimited", "true")
+                .attr("ctrlrange", -RobotModel.range(), RobotModel.range()).attr("forcelimited", "true")
+                .attr("forcerange", -RobotModel.torque(), RobotModel.torque()).end();
+        x.end();
+        x.start("worldbody");
+        x.start("light").attr("pos", 0, 0, 3).attr("dir", 0, 0, -1).end();
+        x.start("geom").attr("name", "floor").attr("type", "plane").attr("size", 10, 10, 0.1)
+                .attr("friction", RobotModel.groundFriction(), 0.005, 0.0001).end();
+        body(x, m, m.root(), -1);
+        x.end();
+        if (!m.excluded().isEmpty()) {
+            x.start("contact");
+            for (int[] p : m.excluded()) {
+                x.start("exclude").attr("body1", m.links().get(p[0]).name()).attr("body2", m.links().get(p[1]).name()).end();
+            }
+            x.end();
+        }
+        if (!m.closures().isEmpty()) {
+            x.start("equality");
+            for (RobotModel.Closure c : m.closures()) {
+                x.start("weld").attr("name", c.name()).attr("solref", 2 * STEP, 1).attr("body1", m.links().get(c.a()).name())
+                        .attr("body2", m.links().get(c.b()).name()).end();
+            }
+            x.end();
+        }
+        List<RobotModel.Joint> servos = servos(m);
+        if (!servos.isEmpty()) {
+            x.start("actuator");
+            for (RobotModel.Joint j : servos) {
+                x.start("general").attr("name", j.name()).attr("joint", j.name()).end();
+            }
+            x.end();
+        }
+        return x.toString();
+    }
+
+    /** The servo joints in ascending module ID, the order of a trace's columns. */
+    static List<RobotModel.Joint> servos(RobotModel m) {
+        List<RobotModel.Joint> out = new ArrayList<>(m.joints().stream().filter(RobotModel.Joint::revolute).toList());
+        out.sort((a, b) -> Integer.compare(a.moduleId(), b.moduleId()));
+        return out;
+    }
+
+    private static void body(XmlOut x, RobotModel m, int i, int parent) {
+        RobotModel.Link l = m.links().get(i);
+        x.start("body").attr("name", l.name());
+        Vec3 p = parent < 0 ? l.position() : m.relativePosition(parent, i);
+        x.attr("pos", p.x(), p.y(), p.z());
+        x.attr("quat", Frames.quaternion(parent < 0 ? l.rotation() : m.relativeRotation(parent, i)));
+        if (parent < 0) {
+            x.start("freejoint").attr("name", "root").end();
+        }
+        RobotModel.Joint j = m.jointOf(i);
+        if (j != null && j.revolute()) {
+            Vec3 at = m.local(i, j.anchor());
+            Vec3 axis = m.localDirection(i, j.axis());
+            x.start("joint").attr("name", j.name()).attr("type", "hinge").attr("pos", at.x(), at.y(), at.z())
+                    .attr("axis", axis.x(), axis.y(), axis.z()).attr("ref", j.initial()).end();
+        }
+        Vec3 inertia = m.inertia(i);
+        x.start("inertial").attr("pos", 0, 0, 0).attr("mass", l.mass()).attr("diaginertia", inertia.x(), inertia.y(),
+                inertia.z()).end();
+        geom(x, l.shape());
+        for (RobotModel.Joint c : m.joints()) {
+            if (c.parent() == i) {
+                body(x, m, c.child(), i);
+            }
+        }
+        x.end();
+    }
+
+    private static void geom(XmlOut x, BodyShape shape) {
+        x.start("geom");
+        if (shape instanceof BodyShape.Box b) {
+            x.attr("type", "box").attr("size", b.hx(), b.hy(), b.hz());
+        } else if (shape instanceof BodyShape.Cylinder c) {
+            x.attr("type", "cylinder").attr("size", c.radius(), c.length() / 2);
+        } else {
+            x.attr("type", "sphere").attr("size", ((BodyShape.Sphere) shape).radius());
+        }
+        x.end();
+    }
+}
