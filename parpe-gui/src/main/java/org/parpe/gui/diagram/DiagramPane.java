@@ -46,6 +46,7 @@ public final class DiagramPane {
     private final Combo subjectChoice;
     private final Composite fields;
     private final Label message;
+    private final int twoRows;
     private final SceneCanvas canvas;
     private final LiveBar liveBar;
     private final ExecutorService worker = Executors.newSingleThreadExecutor(r -> {
@@ -104,11 +105,17 @@ public final class DiagramPane {
         // as tall with fields as without, so that the drawing does not move when a node is selected;
         // two rows: a palette item or a state has more fields than one row of a narrow tab holds
         Text probe = new Text(fields, SWT.BORDER | SWT.SINGLE);
-        fd.heightHint = 2 * probe.computeSize(SWT.DEFAULT, SWT.DEFAULT).y + 4;
+        twoRows = 2 * probe.computeSize(SWT.DEFAULT, SWT.DEFAULT).y + 4;
+        fd.heightHint = twoRows;
         probe.dispose();
         fields.setLayoutData(fd);
         message = new Label(box, SWT.WRAP);
-        message.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        // two lines, always there, whatever it says: a message after an edit does not move the drawing
+        // under the mouse (issue 31); a wider text wraps at the tab's width instead of widening it
+        GridData md = new GridData(SWT.FILL, SWT.TOP, true, false);
+        md.heightHint = 2 * lineHeight(message);
+        md.widthHint = 100;
+        message.setLayoutData(md);
         liveBar = new LiveBar(box, this);
         canvas = new SceneCanvas(box, this::clicked);
         canvas.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
@@ -137,6 +144,7 @@ public final class DiagramPane {
         editor.widget().addCaretListener(e -> caretAt(e.caretOffset));
         AfterChange soon = new AfterChange(box, editor.document(), this::relayout);
         box.addListener(SWT.Show, e -> soon.schedule());
+        box.addListener(SWT.Resize, e -> fitFields());
         box.addListener(SWT.Dispose, e -> {
             generation.incrementAndGet();
             worker.shutdownNow();
@@ -157,11 +165,37 @@ public final class DiagramPane {
 
     private static final String HINT = "Click a box, an arc or a bar to select its text and edit its values.";
 
-    /** Sets the message line; it takes a row only when it has something to say. */
+    /** The height of a line of text in {@code c}'s font. */
+    static int lineHeight(Control c) {
+        org.eclipse.swt.graphics.GC gc = new org.eclipse.swt.graphics.GC(c);
+        try {
+            return gc.getFontMetrics().getHeight();
+        } finally {
+            gc.dispose();
+        }
+    }
+
+    /** Sets the message line (its row keeps its height; a text longer than it shows whole as its tool tip). */
     void say(String text) {
         message.setText(text);
-        show(message, !text.isEmpty());
+        message.setToolTipText(text.isEmpty() ? null : text);
         box.layout(true, true);
+    }
+
+    /**
+     * The edit row's height: two rows of fields, or as many as its fields need at the tab's width,
+     * so that no Add button is hidden under the message line. The same node after an edit needs the
+     * same height: nothing moves.
+     */
+    private void fitFields() {
+        GridData fd = (GridData) fields.getLayoutData();
+        int width = box.getClientArea().width - 4;
+        int need = width > 0 ? fields.computeSize(width, SWT.DEFAULT).y : 0;
+        int h = Math.max(twoRows, need);
+        if (fd.heightHint != h) {
+            fd.heightHint = h;
+            box.layout(true, true);
+        }
     }
 
     /** Shows {@code c} in its row of the pane, or takes the row away. */
@@ -728,6 +762,7 @@ public final class DiagramPane {
         // a view with nothing to select or edit (the gait diagram) has no edit row
         show(fields, t != null || shown != null && !shown.targets().isEmpty());
         fields.layout(true);
+        fitFields();
         liveBar.update();
         say(message.getText());
     }
