@@ -145,7 +145,8 @@ public final class IdeWindow implements HardwareHost {
         // Sane minimums at 1366x768: the outline, the editor, the 3D view's tools, Problems and the plots stay usable.
         SashMinimum.keepMinimum(main, 120, 420, 300);
         SashMinimum.keepMinimum(middle, 160, 90);
-        SashMinimum.keepMinimum(right, 150, 70, 100);
+        // the plots: 150 px, what the chart needs to draw its axes and legend (at 100 it was blank beside the Diagram tab)
+        SashMinimum.keepMinimum(right, 150, 70, 150);
         this.mainSash = main;
 
         status = new StatusBar(shell);

@@ -65,6 +65,9 @@ public final class DiagramPane {
     private Projection.Target offered;
     private Supplier<String> pose;
     private java.util.function.Predicate<String> tables;
+    private Runnable written;
+    private String told;
+    private int fitWidth = -1;
     private final Palette palette;
     private final PlacesBeside places = new PlacesBeside(this::say);
     private final FreeNodes freeNodes;
@@ -83,17 +86,18 @@ public final class DiagramPane {
         Composite bar = new Composite(box, SWT.NONE);
         bar.setLayout(row());
         bar.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
-        new Label(bar, SWT.NONE).setText("View:");
+        Label viewLabel = new Label(bar, SWT.NONE);
+        viewLabel.setText("View:");
+        // on the label, not the choosers: a tool tip over a chooser covered its open list (issue 31)
+        viewLabel.setToolTipText("Which view of the script the diagram draws, and of what: the behavior, automaton or instance");
         viewChoice = new Combo(bar, SWT.READ_ONLY);
         for (View v : View.values()) {
             viewChoice.add(v.label);
         }
         viewChoice.select(0);
-        viewChoice.setToolTipText("Which view of the script the diagram draws");
         viewChoice.addListener(SWT.Selection, e -> setView(View.values()[viewChoice.getSelectionIndex()]));
         subjectChoice = new Combo(bar, SWT.READ_ONLY);
         subjectChoice.setLayoutData(new RowData(170, SWT.DEFAULT));
-        subjectChoice.setToolTipText("The behavior, automaton or instance the view draws");
         subjectChoice.addListener(SWT.Selection, e -> {
             subject = subjectChoice.getText();
             relayout();
@@ -191,7 +195,9 @@ public final class DiagramPane {
         GridData fd = (GridData) fields.getLayoutData();
         int width = box.getClientArea().width - 4;
         int need = width > 0 ? fields.computeSize(width, SWT.DEFAULT).y : 0;
-        int h = Math.max(twoRows, need);
+        // at the same width the row never shrinks: what an Add switches to does not pull the drawing up
+        int h = Math.max(width == fitWidth ? fd.heightHint : twoRows, need);
+        fitWidth = width;
         if (fd.heightHint != h) {
             fd.heightHint = h;
             box.layout(true, true);
@@ -278,7 +284,8 @@ public final class DiagramPane {
         liveProgress = null;
         liveBar.shown();
         canvas.select(selected);
-        message.setText(p.message().isEmpty() && !p.targets().isEmpty() ? HINT : p.message());
+        message.setText(!p.message().isEmpty() ? p.message() : told != null ? told : !p.targets().isEmpty() ? HINT : "");
+        told = null;
         showFields();
         box.layout(true, true);
     }
@@ -288,6 +295,8 @@ public final class DiagramPane {
      * take the places kept beside it ({@link PlacesBeside}).
      */
     public void documentSwitched(Path file) {
+        // a palette item's inputs belong to the file they were opened on
+        offered = null;
         places.documentSwitched(file);
         relayout();
     }
@@ -355,6 +364,17 @@ public final class DiagramPane {
         for (Control c : fields.getChildren()) {
             if (c instanceof Text t) {
                 out.put((String) t.getData("field"), t);
+            }
+        }
+        return out;
+    }
+
+    /** The choosers of the edit row (its inputs that list the script's names), by name. */
+    public java.util.Map<String, Combo> choosers() {
+        java.util.Map<String, Combo> out = new java.util.LinkedHashMap<>();
+        for (Control c : fields.getChildren()) {
+            if (c instanceof Combo k) {
+                out.put((String) k.getData("field"), k);
             }
         }
         return out;
@@ -836,14 +856,45 @@ public final class DiagramPane {
             say("The text has changed since the diagram was drawn; try again in a moment.");
             return;
         }
+        written = null;
         try {
             apply(a.edit().apply(values));
-            if (a.name().equals(Projection.EXPAND) && tables != null) {
-                tables.test(values.get(0));
+            if (a.name().equals(Projection.EXPAND)) {
+                openTable(values.get(0));
+            }
+            if (written != null) {
+                written.run();
             }
         } catch (IllegalArgumentException e) {
             say(e.getMessage());
+        } finally {
+            written = null;
         }
+    }
+
+    /** What to do once the edit being made is in the text (a palette item shows what it added). */
+    void whenWritten(Runnable then) {
+        written = then;
+    }
+
+    /** Says {@code text} on the message line, and again on the drawing of the edit just made. */
+    void tell(String text) {
+        told = text;
+        say(text);
+    }
+
+    /** The grid editor beside the text shows gait table {@code name}. */
+    void openTable(String name) {
+        if (tables != null) {
+            tables.test(name);
+        }
+    }
+
+    /** Shows view {@code v} on {@code subject}, what was just added; the palette's inputs close. */
+    void showAdded(View v, String subject) {
+        offered = null;
+        setView(v, subject);
+        showFields();
     }
 
     /**

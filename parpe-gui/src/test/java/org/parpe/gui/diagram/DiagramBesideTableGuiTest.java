@@ -163,7 +163,7 @@ class DiagramBesideTableGuiTest {
 
     /** Adds gait table {@code name} of {@code rows} rows with the palette's inputs (already chosen). */
     static void addTable(DiagramDriver d, String name, int rows) {
-        d.press("Add gait table", "name", name, "rows", String.join(";", java.util.Collections.nCopies(rows, "0, 0")));
+        d.press("Add gait table", "name", name, "rows", Integer.toString(rows), "modules", "2");
     }
 
     private static Rectangle onScreen(Control c) {
