@@ -75,6 +75,28 @@ class EmptyStartProperties {
                 () -> SectionEdits.startRobot("", "b", 0)).getMessage());
     }
 
+    /** Issue 31: the palette starts a gait table as rows × modules of 0 (it was typed as "0,0,…; 0,0,…"). */
+    @Example
+    void aGaitTableStartsAsRowsTimesModulesOfZeros() {
+        String text = SectionEdits.startRobot("", "body", 3).apply("");
+        Program p = ScriptLoader.loadText(FILE, text, Map.of()).program();
+        assertEquals("<program>\n  <robot>\n    <structure>\n      <body elements=\"0..2\"/>\n    </structure>\n  </robot>\n"
+                + "  <automata>\n    <wave>\n      0, 0, 0\n      0, 0, 0\n    </wave>\n  </automata>\n</program>\n",
+                PaletteEdits.addGaitTable(text, p, "wave", "2", " 3 ", "").apply(text));
+        assertEquals("rows must be a whole number from 1 to 1000, got 'two'", assertThrows(IllegalArgumentException.class,
+                () -> PaletteEdits.addGaitTable(text, p, "wave", "two", "3", "")).getMessage());
+        assertEquals("modules must be from 1 to 1000, got 0", assertThrows(IllegalArgumentException.class,
+                () -> PaletteEdits.addGaitTable(text, p, "wave", "2", "0", "")).getMessage());
+    }
+
+    /** Labels count as people do (issue 31: "entry 0", "#0"). */
+    @Example
+    void placesAreWordsFromFirst() {
+        assertEquals(List.of("first", "second", "third", "tenth", "11th", "12th", "13th", "21st", "22nd", "23rd", "111th"),
+                java.util.stream.IntStream.of(0, 1, 2, 9, 10, 11, 12, 20, 21, 22, 110)
+                        .mapToObj(org.parpe.core.lang.Numbers::ordinal).toList());
+    }
+
     @Example
     void aMissingSectionGoesWhereTheExamplesHaveIt() throws Exception {
         Path f = Examples.dir().resolve("hello-snake.xml");

@@ -106,8 +106,8 @@ public final class Layouts {
         double top = 60;
         double h = top + rows * (barH + 8) + s.lanes().size() * 12 + 40 + s.islands().size() * 18;
         Scene sc = new Scene(width((int) (labelW + plotW + 40), s.islands()), (int) h);
-        sc.add(new Scene.Text(20, 28, "behavior " + s.behavior() + (s.entry() >= 0 ? "  (as <main> entry " + s.entry()
-                + " runs it)" : ""), 15, -1, INK, true));
+        sc.add(new Scene.Text(20, 28, "behavior " + s.behavior() + (s.entry() >= 0 ? "  (as the "
+                + org.parpe.core.lang.Numbers.ordinal(s.entry()) + " <main> entry runs it)" : ""), 15, -1, INK, true));
         double scale = plotW / horizon;
         double y = top;
         for (double t = 0; t <= horizon + 1e-9; t += step(horizon)) {

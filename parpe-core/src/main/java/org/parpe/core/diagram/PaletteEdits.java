@@ -80,6 +80,31 @@ public final class PaletteEdits {
         }, "automata");
     }
 
+    /**
+     * Adds gait table {@code name} of {@code rows} rows × {@code modules} columns of 0 (every
+     * module level), to be filled in the grid editor; the counts are whole numbers as typed,
+     * from 1 to 1000, else the edit is refused with a message naming the value.
+     */
+    public static TextEdit addGaitTable(String text, Program p, String name, String rows, String modules, String times) {
+        int r = count(rows, "rows", 1000);
+        int m = count(modules, "modules", 1000);
+        String row = String.join(", ", java.util.Collections.nCopies(m, "0"));
+        return addGaitTable(text, p, name, java.util.Collections.nCopies(r, row), times);
+    }
+
+    private static int count(String n, String what, int max) {
+        int v;
+        try {
+            v = Integer.parseInt(n == null ? "" : n.trim());
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException(what + " must be a whole number from 1 to " + max + ", got '" + n + "'");
+        }
+        if (v < 1 || v > max) {
+            throw new IllegalArgumentException(what + " must be from 1 to " + max + ", got " + v);
+        }
+        return v;
+    }
+
     private static void free(boolean taken, String name, String what) {
         if (taken) {
             throw new IllegalArgumentException("a " + what + " named '" + name + "' exists already");

@@ -18,6 +18,27 @@ public final class Numbers {
         return new BigDecimal(Double.toString(v)).stripTrailingZeros().toPlainString();
     }
 
+    private static final String[] ORDINALS = {"first", "second", "third", "fourth", "fifth", "sixth", "seventh", "eighth",
+        "ninth", "tenth"};
+
+    /**
+     * The place of zero-based {@code index} in words, as a person counts: {@code first} for 0,
+     * {@code second} for 1, …, {@code tenth}, then {@code 11th}, {@code 12th}, {@code 21st}, ….
+     */
+    public static String ordinal(int index) {
+        if (index >= 0 && index < ORDINALS.length) {
+            return ORDINALS[index];
+        }
+        int n = index + 1;
+        String suffix = n % 100 >= 11 && n % 100 <= 13 ? "th" : switch (n % 10) {
+            case 1 -> "st";
+            case 2 -> "nd";
+            case 3 -> "rd";
+            default -> "th";
+        };
+        return n + suffix;
+    }
+
     /** {@code v} with at most 6 significant digits, for messages ({@code -0.005}). */
     public static String brief(double v) {
         if (!Double.isFinite(v)) {

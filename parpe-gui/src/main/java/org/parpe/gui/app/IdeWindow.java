@@ -135,11 +135,18 @@ public final class IdeWindow implements HardwareHost {
         Panels.tab(plotFolder, "Joint angles", plots.control());
         right.setWeights(54, 18, 28);
         main.setWeights(15, 43, 42);
-        gaitGrid.onShown(v -> main.setWeights(v ? new int[] {11, 61, 28} : new int[] {15, 43, 42}));
+        // The grid beside the text widens the middle column, except while the Diagram tab is shown: the
+        // diagram keeps its share, and nothing moves under the mouse when an edit there opens a table.
+        gaitGrid.onShown(v -> {
+            if (!diagramShown(viewFolder)) {
+                main.setWeights(v ? new int[] {11, 61, 28} : new int[] {15, 43, 42});
+            }
+        });
         // Sane minimums at 1366x768: the outline, the editor, the 3D view's tools, Problems and the plots stay usable.
         SashMinimum.keepMinimum(main, 120, 420, 300);
         SashMinimum.keepMinimum(middle, 160, 90);
-        SashMinimum.keepMinimum(right, 150, 70, 100);
+        // the plots: 150 px, what the chart needs to draw its axes and legend (at 100 it was blank beside the Diagram tab)
+        SashMinimum.keepMinimum(right, 150, 70, 150);
         this.mainSash = main;
 
         status = new StatusBar(shell);
@@ -152,9 +159,9 @@ public final class IdeWindow implements HardwareHost {
         diagram.follow(runs.controller().live(), runs::running);
         diagram.breakpoints(runs.controller().breakpoints(), () -> runs.controller().setPaused(false), this::runStateChanged);
         viewFolder.addListener(SWT.Selection, e -> {
-            boolean d = viewFolder.getSelection().getControl() == diagram.control();
+            boolean d = diagramShown(viewFolder);
             right.setWeights(d ? new int[] {84, 4, 12} : new int[] {54, 18, 28});
-            main.setWeights(d ? new int[] {10, 38, 52} : new int[] {15, 43, 42});
+            main.setWeights(d ? new int[] {10, 38, 52} : gaitGrid.visible() ? new int[] {11, 61, 28} : new int[] {15, 43, 42});
         });
         menus = new MenuBar(this);
         menus.install();
@@ -165,6 +172,11 @@ public final class IdeWindow implements HardwareHost {
         diagram.usePoses(pose::selectedAngles);
         diagram.openTablesWith(gaitGrid::showTable);
         bottom.addListener(SWT.Selection, e -> fitBottom());
+    }
+
+    /** Whether {@code viewFolder} shows the Diagram tab. */
+    private boolean diagramShown(CTabFolder viewFolder) {
+        return diagram != null && viewFolder.getSelection() != null && viewFolder.getSelection().getControl() == diagram.control();
     }
 
     /** The Pose panel needs more room than Problems and the Run log. */

@@ -46,6 +46,7 @@ public final class DiagramPane {
     private final Combo subjectChoice;
     private final Composite fields;
     private final Label message;
+    private final int twoRows;
     private final SceneCanvas canvas;
     private final LiveBar liveBar;
     private final ExecutorService worker = Executors.newSingleThreadExecutor(r -> {
@@ -64,6 +65,9 @@ public final class DiagramPane {
     private Projection.Target offered;
     private Supplier<String> pose;
     private java.util.function.Predicate<String> tables;
+    private Runnable written;
+    private String told;
+    private int fitWidth = -1;
     private final Palette palette;
     private final PlacesBeside places = new PlacesBeside(this::say);
     private final FreeNodes freeNodes;
@@ -82,17 +86,18 @@ public final class DiagramPane {
         Composite bar = new Composite(box, SWT.NONE);
         bar.setLayout(row());
         bar.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
-        new Label(bar, SWT.NONE).setText("View:");
+        Label viewLabel = new Label(bar, SWT.NONE);
+        viewLabel.setText("View:");
+        // on the label, not the choosers: a tool tip over a chooser covered its open list (issue 31)
+        viewLabel.setToolTipText("Which view of the script the diagram draws, and of what: the behavior, automaton or instance");
         viewChoice = new Combo(bar, SWT.READ_ONLY);
         for (View v : View.values()) {
             viewChoice.add(v.label);
         }
         viewChoice.select(0);
-        viewChoice.setToolTipText("Which view of the script the diagram draws");
         viewChoice.addListener(SWT.Selection, e -> setView(View.values()[viewChoice.getSelectionIndex()]));
         subjectChoice = new Combo(bar, SWT.READ_ONLY);
         subjectChoice.setLayoutData(new RowData(170, SWT.DEFAULT));
-        subjectChoice.setToolTipText("The behavior, automaton or instance the view draws");
         subjectChoice.addListener(SWT.Selection, e -> {
             subject = subjectChoice.getText();
             relayout();
@@ -104,11 +109,17 @@ public final class DiagramPane {
         // as tall with fields as without, so that the drawing does not move when a node is selected;
         // two rows: a palette item or a state has more fields than one row of a narrow tab holds
         Text probe = new Text(fields, SWT.BORDER | SWT.SINGLE);
-        fd.heightHint = 2 * probe.computeSize(SWT.DEFAULT, SWT.DEFAULT).y + 4;
+        twoRows = 2 * probe.computeSize(SWT.DEFAULT, SWT.DEFAULT).y + 4;
+        fd.heightHint = twoRows;
         probe.dispose();
         fields.setLayoutData(fd);
         message = new Label(box, SWT.WRAP);
-        message.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        // two lines, always there, whatever it says: a message after an edit does not move the drawing
+        // under the mouse (issue 31); a wider text wraps at the tab's width instead of widening it
+        GridData md = new GridData(SWT.FILL, SWT.TOP, true, false);
+        md.heightHint = 2 * lineHeight(message);
+        md.widthHint = 100;
+        message.setLayoutData(md);
         liveBar = new LiveBar(box, this);
         canvas = new SceneCanvas(box, this::clicked);
         canvas.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
@@ -137,6 +148,7 @@ public final class DiagramPane {
         editor.widget().addCaretListener(e -> caretAt(e.caretOffset));
         AfterChange soon = new AfterChange(box, editor.document(), this::relayout);
         box.addListener(SWT.Show, e -> soon.schedule());
+        box.addListener(SWT.Resize, e -> fitFields());
         box.addListener(SWT.Dispose, e -> {
             generation.incrementAndGet();
             worker.shutdownNow();
@@ -157,11 +169,39 @@ public final class DiagramPane {
 
     private static final String HINT = "Click a box, an arc or a bar to select its text and edit its values.";
 
-    /** Sets the message line; it takes a row only when it has something to say. */
+    /** The height of a line of text in {@code c}'s font. */
+    static int lineHeight(Control c) {
+        org.eclipse.swt.graphics.GC gc = new org.eclipse.swt.graphics.GC(c);
+        try {
+            return gc.getFontMetrics().getHeight();
+        } finally {
+            gc.dispose();
+        }
+    }
+
+    /** Sets the message line (its row keeps its height; a text longer than it shows whole as its tool tip). */
     void say(String text) {
         message.setText(text);
-        show(message, !text.isEmpty());
+        message.setToolTipText(text.isEmpty() ? null : text);
         box.layout(true, true);
+    }
+
+    /**
+     * The edit row's height: two rows of fields, or as many as its fields need at the tab's width,
+     * so that no Add button is hidden under the message line. The same node after an edit needs the
+     * same height: nothing moves.
+     */
+    private void fitFields() {
+        GridData fd = (GridData) fields.getLayoutData();
+        int width = box.getClientArea().width - 4;
+        int need = width > 0 ? fields.computeSize(width, SWT.DEFAULT).y : 0;
+        // at the same width the row never shrinks: what an Add switches to does not pull the drawing up
+        int h = Math.max(width == fitWidth ? fd.heightHint : twoRows, need);
+        fitWidth = width;
+        if (fd.heightHint != h) {
+            fd.heightHint = h;
+            box.layout(true, true);
+        }
     }
 
     /** Shows {@code c} in its row of the pane, or takes the row away. */
@@ -244,7 +284,8 @@ public final class DiagramPane {
         liveProgress = null;
         liveBar.shown();
         canvas.select(selected);
-        message.setText(p.message().isEmpty() && !p.targets().isEmpty() ? HINT : p.message());
+        message.setText(!p.message().isEmpty() ? p.message() : told != null ? told : !p.targets().isEmpty() ? HINT : "");
+        told = null;
         showFields();
         box.layout(true, true);
     }
@@ -254,6 +295,8 @@ public final class DiagramPane {
      * take the places kept beside it ({@link PlacesBeside}).
      */
     public void documentSwitched(Path file) {
+        // a palette item's inputs belong to the file they were opened on
+        offered = null;
         places.documentSwitched(file);
         relayout();
     }
@@ -321,6 +364,17 @@ public final class DiagramPane {
         for (Control c : fields.getChildren()) {
             if (c instanceof Text t) {
                 out.put((String) t.getData("field"), t);
+            }
+        }
+        return out;
+    }
+
+    /** The choosers of the edit row (its inputs that list the script's names), by name. */
+    public java.util.Map<String, Combo> choosers() {
+        java.util.Map<String, Combo> out = new java.util.LinkedHashMap<>();
+        for (Control c : fields.getChildren()) {
+            if (c instanceof Combo k) {
+                out.put((String) k.getData("field"), k);
             }
         }
         return out;
@@ -728,6 +782,7 @@ public final class DiagramPane {
         // a view with nothing to select or edit (the gait diagram) has no edit row
         show(fields, t != null || shown != null && !shown.targets().isEmpty());
         fields.layout(true);
+        fitFields();
         liveBar.update();
         say(message.getText());
     }
@@ -801,14 +856,45 @@ public final class DiagramPane {
             say("The text has changed since the diagram was drawn; try again in a moment.");
             return;
         }
+        written = null;
         try {
             apply(a.edit().apply(values));
-            if (a.name().equals(Projection.EXPAND) && tables != null) {
-                tables.test(values.get(0));
+            if (a.name().equals(Projection.EXPAND)) {
+                openTable(values.get(0));
+            }
+            if (written != null) {
+                written.run();
             }
         } catch (IllegalArgumentException e) {
             say(e.getMessage());
+        } finally {
+            written = null;
         }
+    }
+
+    /** What to do once the edit being made is in the text (a palette item shows what it added). */
+    void whenWritten(Runnable then) {
+        written = then;
+    }
+
+    /** Says {@code text} on the message line, and again on the drawing of the edit just made. */
+    void tell(String text) {
+        told = text;
+        say(text);
+    }
+
+    /** The grid editor beside the text shows gait table {@code name}. */
+    void openTable(String name) {
+        if (tables != null) {
+            tables.test(name);
+        }
+    }
+
+    /** Shows view {@code v} on {@code subject}, what was just added; the palette's inputs close. */
+    void showAdded(View v, String subject) {
+        offered = null;
+        setView(v, subject);
+        showFields();
     }
 
     /**

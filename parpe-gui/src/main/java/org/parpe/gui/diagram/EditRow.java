@@ -7,7 +7,9 @@ import java.util.function.Supplier;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.RowData;
 import org.eclipse.swt.widgets.Button;
+import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Control;
 import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.Text;
 import org.parpe.gui.diagram.Projection.Action;
@@ -41,24 +43,32 @@ final class EditRow {
             return;
         }
         for (Field f : t.fields()) {
-            Text field = field(row, f.name(), f.value(), names);
-            field.setToolTipText("Enter writes the new " + f.name() + " into the text (one Undo step); Ctrl+Space offers names");
-            field.addListener(SWT.DefaultSelection, e -> write.accept(f, field.getText()));
+            Control field = input(row, null, f.name(), f.value(), names);
+            if (field instanceof Combo c) {
+                // a name picked from the script's is written at once, as Enter writes a typed one
+                c.addListener(SWT.Selection, e -> write.accept(f, c.getText()));
+            } else {
+                tip(field, "Enter writes the new " + f.name() + " into the text (one Undo step); Ctrl+Space offers names");
+            }
+            field.addListener(SWT.DefaultSelection, e -> write.accept(f, text(field)));
             if (f.name().equals("angles") && pose != null) {
                 button(row, "Use pose", "The pose selected in the Pose panel becomes this state's angles (or drag it onto the state)",
                         () -> act.accept(new Action("Use pose", List.of(), v -> f.edit().apply(usable(pose.get()))), List.of()));
             }
         }
         for (Action a : t.actions()) {
-            List<Text> inputs = new ArrayList<>();
+            List<Control> inputs = new ArrayList<>();
             for (int i = 0; i < a.inputs().size(); i++) {
-                Text input = field(row, a.inputs().get(i), a.values().get(i), names);
+                Control input = input(row, a.name(), a.inputs().get(i), a.values().get(i), names);
                 inputs.add(input);
-                if (a.values().get(i).matches("[0-9]+")) {
-                    stepper(row, a.inputs().get(i), input);
+                if (input instanceof Text x && a.values().get(i).matches("[0-9]+")) {
+                    stepper(row, a.inputs().get(i), x);
+                }
+                if (input instanceof Combo c && a.inputs().get(i).equals(STATES)) {
+                    listed(c);
                 }
             }
-            Runnable go = () -> act.accept(a, inputs.stream().map(x -> x.getText().trim()).toList());
+            Runnable go = () -> act.accept(a, inputs.stream().map(x -> text(x).trim()).toList());
             button(row, a.name(), null, go);
             inputs.forEach(x -> x.addListener(SWT.DefaultSelection, e -> go.run()));
         }
@@ -102,6 +112,76 @@ final class EditRow {
                     + angles + "'.");
         }
         return angles.trim();
+    }
+
+    /** The input that lists states: a state picked from the chooser is added to the list typed so far. */
+    static final String STATES = "add state";
+
+    /**
+     * The script's names offered by a chooser for input {@code name} (of action {@code action},
+     * {@code null} for a node's own field): its groups, automata, states, or, for an instance,
+     * its behaviors; empty where a new name is typed (a new behavior, the start's group).
+     */
+    static List<String> choices(String action, String name, NameIndex names) {
+        if (names == null) {
+            return List.of();
+        }
+        java.util.Collection<String> out = switch (name) {
+            case "group" -> Projection.START.equals(action) ? List.of() : names.groups();
+            case "automaton" -> "Make phase automaton".equals(action) ? List.of() : names.automata();
+            case STATES -> names.states();
+            case "behavior" -> "Add instance".equals(action) ? names.behaviorNames() : List.of();
+            default -> List.of();
+        };
+        return out.stream().sorted().toList();
+    }
+
+    /** A chooser of the script's names when it has some for {@code name} ({@link #choices}), else a field. */
+    private static Control input(Composite row, String action, String name, String value, NameIndex names) {
+        List<String> items = choices(action, name, names);
+        if (items.isEmpty()) {
+            return field(row, name, value, names);
+        }
+        new Label(row, SWT.NONE).setText(name + ":");
+        Combo c = new Combo(row, SWT.DROP_DOWN);
+        c.setItems(items.toArray(String[]::new));
+        c.setText(value);
+        c.setData("field", name);
+        c.setVisibleItemCount(Math.min(12, items.size()));
+        tip(c, "Pick one of the script's names from the list, or type one");
+        int widest = items.stream().mapToInt(String::length).max().orElse(0);
+        c.setLayoutData(new RowData(Math.max(90, 9 * (Math.max(widest, value.length()) + 2)), SWT.DEFAULT));
+        return c;
+    }
+
+    /** Chooser {@code c} adds each state picked to the list typed so far ("raise, lower, …"). */
+    private static void listed(Combo c) {
+        String[] typed = {c.getText()};
+        c.addListener(SWT.KeyUp, e -> typed[0] = c.getText());
+        c.addListener(SWT.Selection, e -> {
+            String picked = c.getText();
+            typed[0] = typed[0].isBlank() ? picked : typed[0].strip().replaceAll(",$", "") + ", " + picked;
+            c.setText(typed[0]);
+        });
+        tip(c, "Pick the states in cycle order: each one picked is added to the list (or type them, separated by commas)");
+    }
+
+    /**
+     * Puts {@code tip} on the name before {@code input}, not on the input: a tool tip over a field
+     * or a chooser covered its open list (issue 31).
+     */
+    private static void tip(Control input, String tip) {
+        Control[] row = input.getParent().getChildren();
+        for (int i = 1; i < row.length; i++) {
+            if (row[i] == input && row[i - 1] instanceof Label l) {
+                l.setToolTipText(tip);
+            }
+        }
+    }
+
+    /** The text of a field or a chooser. */
+    static String text(Control input) {
+        return input instanceof Combo c ? c.getText() : ((Text) input).getText();
     }
 
     private static Text field(Composite row, String name, String value, NameIndex names) {

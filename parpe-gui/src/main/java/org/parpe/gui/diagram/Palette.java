@@ -7,7 +7,6 @@ import java.util.Map;
 import java.util.function.Function;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Button;
-import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Label;
 import org.parpe.core.diagram.BehaviorEdits;
@@ -18,20 +17,25 @@ import org.parpe.core.load.LoadResult;
 import org.parpe.core.model.Program;
 import org.parpe.gui.diagram.Projection.Action;
 import org.parpe.gui.diagram.Projection.Target;
+import org.parpe.gui.diagram.Projection.View;
 import org.parpe.gui.editor.Validator;
 
 /**
  * The diagram palette: buttons that define something new in the script, each opening its
- * inputs in the edit row. The beginner palette has poses, gait tables and one behavior (the
- * paper's Levels I, II and IV); the full one adds groups, parameters, phase automata and
- * instances. A section the file lacks is written with its first element, so an empty file that
+ * inputs in the edit row, which lists the script's own names where one is chosen. The beginner
+ * palette has poses, gait tables, phase automata and behaviors (the paper's Levels I to IV: the
+ * Fig. 7 wheel needs an automaton); the full one adds groups, parameters and instances. After an
+ * Add the view that draws the new element shows it. A section the file lacks is written with its first element, so an empty file that
  * {@link Projection} has started a robot in is built up by these buttons alone. Every
  * item writes through the core's edits ({@link PaletteEdits}, {@link BehaviorEdits}) into the
  * text shown at the moment the button is pressed, as one Undo step. UI thread only.
  */
 final class Palette {
-    /** One button: its label, what it is for, its inputs and its edit of a loaded text. */
-    private record Item(String name, String tip, boolean beginner, List<String> inputs,
+    /**
+     * One button: its label, what it is for, its inputs, the view that draws what it adds (its
+     * subject the first input; {@code null}: none draws it) and its edit of a loaded text.
+     */
+    private record Item(String name, String tip, boolean beginner, List<String> inputs, View shows,
                         Function<Loaded, Function<List<String>, TextEdit>> edit) {
     }
 
@@ -41,29 +45,29 @@ final class Palette {
 
     private static final List<Item> ITEMS = List.of(
             new Item("Pose", "a named state: one angle for the whole group, or one per module", true,
-                    List.of("name", "angles"), l -> v -> PaletteEdits.addPose(l.text, l.p, v.get(0), v.get(1))),
-            new Item("Gait table", "rows of angles, one column per module; separate rows with ;", true,
-                    List.of("name", "rows", "times"), l -> v -> PaletteEdits.addGaitTable(l.text, l.p, v.get(0),
-                            Arrays.stream(v.get(1).split(";")).map(String::trim).toList(), v.get(2))),
+                    List.of("name", "angles"), null, l -> v -> PaletteEdits.addPose(l.text, l.p, v.get(0), v.get(1))),
+            new Item("Gait table", "rows \u00d7 modules of angles, all 0 at first: fill them in the grid beside the text", true,
+                    List.of("name", "rows", "modules", "times"), View.RING, l -> v -> PaletteEdits.addGaitTable(l.text, l.p,
+                            v.get(0), v.get(1), v.get(2), v.get(3))),
+            new Item("Automaton", "a phase automaton: defined states in cycle order, and their times", true,
+                    List.of("name", EditRow.STATES, "times"), View.RING,
+                    l -> v -> PaletteEdits.addAutomaton(l.text, l.p, v.get(0), v.get(1), v.get(2))),
             new Item("Behavior", "a behavior running one automaton on one group, run from <main>", true,
-                    List.of("behavior", "automaton", "group", "time"),
+                    List.of("behavior", "automaton", "group", "time"), View.LANES,
                     l -> v -> BehaviorEdits.addBehavior(l.text, l.p, v.get(0), v.get(1), v.get(2), v.get(3))),
             new Item("Group", "a group of modules: IDs such as 0, 2, 4 or 0..7", false,
-                    List.of("name", "elements"), l -> v -> PaletteEdits.addGroup(l.text, l.p, v.get(0), v.get(1))),
+                    List.of("name", "elements"), null, l -> v -> PaletteEdits.addGroup(l.text, l.p, v.get(0), v.get(1))),
             new Item("Parameter", "a number fixed for a run, used by name in angles, times and ranges; min, max, label optional",
-                    false, List.of("name", "value", "min", "max", "label"), l -> v -> PaletteEdits.addParameter(l.text, l.p,
+                    false, List.of("name", "value", "min", "max", "label"), null, l -> v -> PaletteEdits.addParameter(l.text, l.p,
                             v.get(0), v.get(1), v.get(2), v.get(3), v.get(4))),
-            new Item("Automaton", "a phase automaton: defined states in cycle order, and their times", false,
-                    List.of("name", "add state", "times"),
-                    l -> v -> PaletteEdits.addAutomaton(l.text, l.p, v.get(0), v.get(1), v.get(2))),
             new Item("Instance", "an automaton on a group in an existing behavior (! mirrors the group)", false,
-                    List.of("behavior", "automaton", "group"), l -> v -> BehaviorEdits.addInstance(l.text,
+                    List.of("behavior", "automaton", "group"), View.LANES, l -> v -> BehaviorEdits.addInstance(l.text,
                             l.p.behavior(v.get(0)).orElseThrow(() -> new IllegalArgumentException(
                                     "there is no behavior '" + v.get(0) + "'")), v.get(1), v.get(2))));
 
     private final DiagramPane pane;
     private final Composite buttons;
-    private final Combo mode;
+    private final Button mode;
 
     /** The palette's row in {@code parent}, offering its items' inputs in {@code pane}'s edit row. */
     Palette(Composite parent, DiagramPane pane) {
@@ -71,20 +75,23 @@ final class Palette {
         // in the row of the view chooser (issue 24: few rows above the drawing)
         Composite row = new Composite(parent, SWT.NONE);
         row.setLayout(DiagramPane.row());
-        new Label(row, SWT.NONE).setText("New:");
+        Label label = new Label(row, SWT.NONE);
+        label.setText("New:");
+        // on the label, not the chooser: a tool tip over it covered its open list (issue 31)
+        label.setToolTipText("New: poses, gait tables, automata and behaviors; with Full, groups, parameters and instances too");
         buttons = new Composite(row, SWT.NONE);
         buttons.setLayout(DiagramPane.row());
-        mode = new Combo(row, SWT.READ_ONLY);
-        mode.setItems("Beginner", "Full");
-        mode.select(0);
-        mode.setToolTipText("Palette: the beginner one has poses, gait tables and one behavior; the full one everything");
+        // a check box, narrower than a chooser: the view's and the palette's row stays one row at 1366×768
+        mode = new Button(row, SWT.CHECK);
+        mode.setText("Full");
+        mode.setToolTipText("The full palette: groups, parameters and instances too");
         mode.addListener(SWT.Selection, e -> fill());
         fill();
     }
 
     /** Shows the full palette ({@code true}) or the beginner one. */
     void full(boolean full) {
-        mode.select(full ? 1 : 0);
+        mode.setSelection(full);
         fill();
     }
 
@@ -93,14 +100,44 @@ final class Palette {
         return Arrays.stream(buttons.getChildren()).map(c -> ((Button) c).getText()).toList();
     }
 
-    /** Presses button {@code name}: its inputs open in the edit row. */
+    /** Presses button {@code name}: its inputs open in the edit row (nothing when the palette shown lacks it). */
     void choose(String name) {
         for (Item item : ITEMS) {
-            if (item.name().equals(name)) {
-                pane.offer(new Target("New " + item.name().toLowerCase(java.util.Locale.ROOT) + ": " + item.tip(),
-                        List.of(), -1, null, List.of(new Action("Add " + item.name().toLowerCase(java.util.Locale.ROOT),
-                                item.inputs(), v -> item.edit().apply(load()).apply(v)))));
+            if (item.name().equals(name) && items().contains(name)) {
+                String what = item.name().toLowerCase(java.util.Locale.ROOT);
+                pane.offer(new Target("New " + what + ": " + item.tip(), List.of(), -1, null,
+                        List.of(new Action("Add " + what, item.inputs(), starting(item), v -> {
+                            TextEdit edit = item.edit().apply(load()).apply(v);
+                            pane.whenWritten(() -> added(item, v.get(0)));
+                            return edit;
+                        }))));
             }
+        }
+    }
+
+    /** The inputs of {@code item} as the edit row starts them: a gait table of 4 rows × the robot's modules. */
+    private List<String> starting(Item item) {
+        if (!item.name().equals("Gait table")) {
+            return java.util.Collections.nCopies(item.inputs().size(), "");
+        }
+        Projection shown = pane.shown();
+        Program p = shown == null || SectionEdits.blank(shown.text()) ? null
+                : Validator.load(shown.file(), shown.text(), Map.of()).program();
+        int modules = p == null || p.moduleIds().length == 0 ? 4 : p.moduleIds().length;
+        return List.of("", "4", Integer.toString(modules), "");
+    }
+
+    /** {@code item} named {@code name} was written: the view that draws it shows it, or the line says where it went. */
+    private void added(Item item, String name) {
+        String what = item.name().toLowerCase(java.util.Locale.ROOT);
+        if (item.name().equals("Gait table")) {
+            pane.openTable(name.trim());
+        }
+        if (item.shows() != null) {
+            pane.showAdded(item.shows(), name.trim());
+        } else {
+            pane.tell("Added " + what + " '" + name.trim() + "' to the text"
+                    + (item.name().equals("Pose") ? "; an automaton's states use it (New \u2192 Automaton)." : "."));
         }
     }
 
@@ -108,7 +145,7 @@ final class Palette {
         for (var c : buttons.getChildren()) {
             c.dispose();
         }
-        boolean full = mode.getSelectionIndex() == 1;
+        boolean full = mode.getSelection();
         for (Item item : ITEMS) {
             if (full || item.beginner()) {
                 Button b = new Button(buttons, SWT.PUSH);

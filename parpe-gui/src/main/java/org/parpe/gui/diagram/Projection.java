@@ -25,6 +25,7 @@ import org.parpe.core.diagram.SectionEdits;
 import org.parpe.core.diagram.Swimlanes;
 import org.parpe.core.diagram.TextEdit;
 import org.parpe.core.diagram.Workbench;
+import org.parpe.core.lang.Numbers;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.model.Automaton;
 import org.parpe.core.model.Behavior;
@@ -271,7 +272,7 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         }
         for (ProgramLane.Step s : lane.get().steps()) {
             if (mine(s.pos(), file)) {
-                targets.put(s.pos(), new Target("<main> entry " + s.index() + ": " + s.behavior(), List.of(
+                targets.put(s.pos(), new Target("the " + Numbers.ordinal(s.index()) + " <main> entry: " + s.behavior(), List.of(
                         new Field("time", s.time() == null ? "" : s.time(),
                                 v -> DiagramEdits.setAttribute(text, s.pos(), "time", v))), s.index(),
                         to -> DiagramEdits.moveEntry(text, main, s.index(), to),
@@ -380,7 +381,7 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
                         new Field("add state", "", v -> DiagramEdits.addState(text, p, a, v, "1")))));
             }
             for (Ring.Arc arc : r.arcs()) {
-                targets.putIfAbsent(arc.pos(), a.table() ? new Target("row " + arc.index() + " of " + a.name(), List.of(
+                targets.putIfAbsent(arc.pos(), a.table() ? new Target("the " + Numbers.ordinal(arc.index()) + " row of " + a.name(), List.of(
                         new Field("duration", arc.duration(), v -> DiagramEdits.retime(text, a, arc.index(), v))))
                         : StateTargets.of(text, file, p, a, arc));
             }
@@ -402,7 +403,7 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         for (Behavior b : p.behaviors()) {
             List<Instance> list = b.instances();
             for (int i = 0; i < list.size(); i++) {
-                String label = b.name() + " #" + i + ": " + list.get(i).automaton() + " on " + list.get(i).group();
+                String label = b.name() + ", " + Numbers.ordinal(i) + ": " + list.get(i).automaton() + " on " + list.get(i).group();
                 all.put(label, list.get(i));
                 of.put(label, b);
             }

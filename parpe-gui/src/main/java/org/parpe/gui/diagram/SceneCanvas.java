@@ -320,7 +320,11 @@ final class SceneCanvas {
     }
 
     private Color color(int rgb) {
-        return colors.computeIfAbsent(rgb, k -> new Color(k >> 16 & 0xff, k >> 8 & 0xff, k & 0xff));
+        // the scene's colours are for white paper; a dark theme turns them over (Theme.onPaper)
+        return colors.computeIfAbsent(rgb, k -> {
+            int c = org.parpe.gui.panels.Theme.onPaper(k);
+            return new Color(c >> 16 & 0xff, c >> 8 & 0xff, c & 0xff);
+        });
     }
 
     /** A font whose em is {@code px} pixels (SWT sizes fonts in points). */

@@ -42,6 +42,27 @@ public final class Theme {
         return Display.getDefault().getSystemColor(SWT.COLOR_LIST_FOREGROUND);
     }
 
+    /**
+     * Colour {@code rgb} of a drawing made for white paper (the diagrams), on the theme's paper:
+     * itself with a light theme; with a dark one white becomes the paper and every other colour
+     * has its lightness turned over, its hue kept (dark ink light, a pale fill deep), so that the
+     * drawing is not a white sheet on a dark window.
+     */
+    public static int onPaper(int rgb) {
+        if (!dark()) {
+            return rgb;
+        }
+        if (rgb == 0xffffff) {
+            RGB p = paper().getRGB();
+            return p.red << 16 | p.green << 8 | p.blue;
+        }
+        int r = rgb >> 16 & 0xff;
+        int g = rgb >> 8 & 0xff;
+        int b = rgb & 0xff;
+        int turn = 255 - Math.max(r, Math.max(g, b)) - Math.min(r, Math.min(g, b));
+        return (turn + r) << 16 | (turn + g) << 8 | (turn + b);
+    }
+
     /** Gridlines on a plot's paper: between paper and ink. */
     public static Color faint() {
         return dark() ? pick(0, 0x555555) : Display.getDefault().getSystemColor(SWT.COLOR_GRAY);

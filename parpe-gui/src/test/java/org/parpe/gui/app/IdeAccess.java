@@ -51,6 +51,11 @@ public final class IdeAccess {
         }
     }
 
+    /** The chart of the Joint angles panel. */
+    public static org.eclipse.swt.widgets.Control plotChart(IdeWindow ide) {
+        return ide.plots().chart().control();
+    }
+
     /** Ends any run and closes the window. */
     public static void closeIde(IdeWindow ide) {
         Gui.closeIde(ide);

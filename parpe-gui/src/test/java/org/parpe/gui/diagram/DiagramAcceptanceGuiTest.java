@@ -92,6 +92,8 @@ class DiagramAcceptanceGuiTest {
         d.press("Add group", "name", "group1", "elements", "0,2,4,6");
         d.pane().palette().choose("Behavior");
         d.press("Add behavior", "behavior", "simpleWave", "automaton", "wave", "group", "group1", "time", "");
+        // the lanes of the new behavior show (issue 31); the entry to remove is on the program lane
+        d.show(View.PROGRAM, null);
         d.click(d.node("<crawl/>"));
         d.press("Remove entry");
         d.show(View.LANES, "simpleWave");
@@ -148,6 +150,7 @@ class DiagramAcceptanceGuiTest {
             d.pane().palette().choose("Instance");
             d.press("Add instance", "behavior", "walk", "automaton", i[0], "group", i[1]);
         }
+        d.show(View.PROGRAM, null);
         d.click(d.node("<crawl/>"));
         d.press("Remove entry");
         d.show(View.LANES, "walk");

@@ -6,6 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.graphics.Point;
 import org.eclipse.swt.widgets.Button;
+import org.eclipse.swt.widgets.Combo;
+import org.eclipse.swt.widgets.Control;
 import org.eclipse.swt.widgets.Event;
 import org.eclipse.swt.widgets.Text;
 import org.parpe.core.diag.SourcePos;
@@ -114,11 +116,31 @@ final class DiagramDriver {
 
     /** Types {@code value} into field {@code name} of the edit row (a form, not the script) and presses Enter. */
     void type(String name, String value) {
-        Text field = pane().fields().get(name);
-        assertNotNull(field, "no field '" + name + "'; fields: " + pane().fields().keySet());
-        field.setText(value);
-        field.notifyListeners(SWT.DefaultSelection, new Event());
+        enter(pane(), name, value);
         caughtUp();
+    }
+
+    /** Types {@code value} into field or chooser {@code name} of {@code pane}'s edit row and presses Enter. */
+    static void enter(DiagramPane pane, String name, String value) {
+        Control field = input(pane, name);
+        set(field, value);
+        field.notifyListeners(SWT.DefaultSelection, new Event());
+    }
+
+    /** Field or chooser {@code name} of {@code pane}'s edit row. */
+    static Control input(DiagramPane pane, String name) {
+        Control c = pane.fields().containsKey(name) ? pane.fields().get(name) : pane.choosers().get(name);
+        assertNotNull(c, "no field '" + name + "'; fields: " + pane.fields().keySet() + ", choosers: " + pane.choosers().keySet());
+        return c;
+    }
+
+    /** Types {@code value} into a field or a chooser (a form, not the script). */
+    static void set(Control input, String value) {
+        if (input instanceof Combo c) {
+            c.setText(value);
+        } else {
+            ((Text) input).setText(value);
+        }
     }
 
     /** Clicks the bar of the lanes drawn for the instance written on the line holding {@code needle}, and fills its fields. */
@@ -135,9 +157,7 @@ final class DiagramDriver {
     /** Fills the inputs {@code name=value} pairs of the edit row and presses button {@code action}. */
     void press(String action, String... inputs) {
         for (int i = 0; i < inputs.length; i += 2) {
-            Text field = pane().fields().get(inputs[i]);
-            assertNotNull(field, "no input '" + inputs[i] + "'; fields: " + pane().fields().keySet());
-            field.setText(inputs[i + 1]);
+            set(input(pane(), inputs[i]), inputs[i + 1]);
         }
         Button b = pane().actions().get(action);
         assertNotNull(b, "no button '" + action + "'; buttons: " + pane().actions().keySet() + " (" + pane().message() + ")");

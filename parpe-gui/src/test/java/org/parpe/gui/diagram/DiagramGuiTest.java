@@ -9,8 +9,6 @@ import java.nio.file.Path;
 import org.eclipse.jface.text.ITextOperationTarget;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.graphics.Point;
-import org.eclipse.swt.widgets.Event;
-import org.eclipse.swt.widgets.Text;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
@@ -97,10 +95,7 @@ class DiagramGuiTest {
 
     /** Types {@code value} into the selected node's field {@code name} and presses Enter. */
     private static void type(String name, String value) {
-        Text field = pane().fields().get(name);
-        assertNotNull(field, "no field '" + name + "' for the selected node; fields: " + pane().fields().keySet());
-        field.setText(value);
-        field.notifyListeners(SWT.DefaultSelection, new Event());
+        DiagramDriver.enter(pane(), name, value);
     }
 
     private static void undoRestoresTheOriginal() {
@@ -123,7 +118,7 @@ class DiagramGuiTest {
         show(View.RING, "step");
         assertEquals(java.util.List.of("swing", "step"), pane().shown().subjects());
         picture(View.RING);
-        show(View.PHASE, "walk #1: swing on rightSwing");
+        show(View.PHASE, "walk, second: swing on rightSwing");
         assertEquals(lineOf("<swing group=\"rightSwing\""), pane().selected().line(), "the phase view selects its instance");
         picture(View.PHASE);
         show(View.GAIT, null);
@@ -183,7 +178,7 @@ class DiagramGuiTest {
 
     @Test
     void changingAPhaseAndAnOffsetAreOneUndoableEditEach() {
-        show(View.PHASE, "walk #2: step on leftLift");
+        show(View.PHASE, "walk, third: step on leftLift");
         type("offset", "0.25");
         assertEquals(original.replace("<step  group=\"leftLift\"   offset=\"0\"   phase",
                 "<step  group=\"leftLift\"   offset=\"0.25\"   phase"), text());
@@ -243,7 +238,7 @@ class DiagramGuiTest {
 
     @Test
     void draggingOnThePhaseWheelSetsThePhase() {
-        show(View.PHASE, "walk #1: swing on rightSwing");
+        show(View.PHASE, "walk, second: swing on rightSwing");
         // offset 0.5: module 1's tick goes to 0.6 of a turn when the phase is 0.1
         Point from = pane().onWheel(0.25);
         Point to = pane().onWheel(0.6);
