@@ -93,14 +93,20 @@ public record ServoModel(ServoProtocol protocol, int number, String name, int re
 
     /** The servo angle of a position as read from the bus ({@code size} bytes, unsigned). */
     public double degrees(int raw, int size) {
-        int v;
+        return (tick(raw, size) - centre) * degreesPerTick();
+    }
+
+    /**
+     * The tick a position of {@code size} bytes read from the bus or a control table stands for:
+     * sign and magnitude where the model uses it (Feetech STS: bit 15 is the sign, as the FTServo
+     * SDK's {@code scs_tohost} reads it), two's complement otherwise.
+     */
+    public int tick(int raw, int size) {
         if (signBit >= 0) {
             int magnitude = raw & ((1 << signBit) - 1);
-            v = (raw & (1 << signBit)) != 0 ? -magnitude : magnitude;
-        } else {
-            v = size >= 4 ? raw : (raw << (32 - 8 * size)) >> (32 - 8 * size);
+            return (raw & (1 << signBit)) != 0 ? -magnitude : magnitude;
         }
-        return (v - centre) * degreesPerTick();
+        return size >= 4 ? raw : (raw << (32 - 8 * size)) >> (32 - 8 * size);
     }
 
     /**

@@ -289,6 +289,22 @@ class VendorTableTest {
     }
 
     @Test
+    void feetechStsGoalBit15IsItsSignAndTheLimitsKeepANegativeGoal() {
+        // Feetech SCServo/FTServo SDK, SMS_STS.cpp, WritePosEx: a negative position goes out as its
+        // magnitude with bit 15 set (scs_toscs(pos, 15)), read back by scs_tohost(pos, 15). STS
+        // memory table: Goal Position(42) ranges Min Position Limit(9) ~ Max Position Limit(11).
+        // So −100 (0x8064) is below the minimum, 0, and must not read as 32 868, above the maximum.
+        servos("sts3215", 1);
+        send(1, PacketCodec.WRITE, 40, 1);
+        send(1, PacketCodec.WRITE, 42, 0x64, 0x80);
+        assertEquals(0, send(1, PacketCodec.READ, 42, 2).get(0).le(0, 2), "goal kept at Min Position Limit");
+        assertEquals(ServoModel.named("sts3215").minDegrees(), servos[0].goalDegrees(), 1e-9);
+        // Bit 15 clear: an ordinary goal inside the limits is kept as written.
+        send(1, PacketCodec.WRITE, 42, 0x64, 0x00);
+        assertEquals(100, send(1, PacketCodec.READ, 42, 2).get(0).le(0, 2));
+    }
+
+    @Test
     void feetechStsAnswersABroadcastPingAndScsHasNoSyncRead() {
         // Feetech's SCServo library: SMS_STS servos have Sync Read; SCSCL (SCS series) has none,
         // so an SCS servo must not answer one.
