@@ -86,6 +86,11 @@ final class EmulatedServo {
         return table[error.addr()] & 0xFF;
     }
 
+    /** Whether it answers Fast Sync Read: its model has it from the firmware version it reports. */
+    boolean fastSyncRead() {
+        return dxl && model.fastSyncRead(table[ct.named("Firmware Version").addr()] & 0xFF);
+    }
+
     /** Return Delay Time in nanoseconds (the item counts units of 2 µs). */
     long returnDelayNanos() {
         return (table[returnDelay.addr()] & 0xFF) * 2_000L;
