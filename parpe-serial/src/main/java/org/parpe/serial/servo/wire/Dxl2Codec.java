@@ -10,7 +10,8 @@ import org.parpe.serial.protocol.Crc16;
  * {@code FD} is inserted after it, so the header can never appear inside a packet; LEN and the
  * CRC cover the stuffed bytes, and the receiver removes the extra {@code FD}. The error numbers
  * (low 7 bits of the error byte) 1…7 are result fail, instruction, CRC, data range, data length,
- * data limit and access error.
+ * data limit and access error. The one status packet that answers a Fast Sync Read comes from
+ * the broadcast ID and is not stuffed ({@link #fastStatus}).
  */
 public final class Dxl2Codec implements PacketCodec {
     /** Bytes of header, ID and length. */
