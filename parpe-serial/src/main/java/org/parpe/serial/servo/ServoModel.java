@@ -28,7 +28,7 @@ public record ServoModel(ServoProtocol protocol, int number, String name, int re
     public static final List<ServoModel> TABLE = List.of(
             // Fast Sync Read: X series from firmware v45, the XL330 from v46; the XL-320 has none
             // (DynamixelSDK's fast_sync_read example: "X series (except XL-320)"). Sources and the
-            // choice: docs/decisions.md, "Fast Sync Read".
+            // choice: docs/decisions.md, "Vendor disagreements".
             dxlX(1060, "xl430-w250", 45),
             dxlX(1090, "2xl430-w250", 45),
             dxlX(1190, "xl330-m077", 46),
