@@ -104,7 +104,9 @@ final class RunCommand implements Callable<Integer> {
                     + " to bound it");
         }
         RunOptions options = new RunOptions(tick, seed, stimuli(program));
-        Run.Builder builder = Run.builder(program, options, d -> err.println(d.format()));
+        // Equal warnings of the run (a bus warning said again and again) fold as in the IDE.
+        FoldedDiagnostics diagnostics = new FoldedDiagnostics(err::println);
+        Run.Builder builder = Run.builder(program, options, diagnostics);
         if (duration != null) {
             builder.duration(duration);
         }
@@ -146,6 +148,7 @@ final class RunCommand implements Callable<Integer> {
             throw new UsageException(e.getMessage());
         } finally {
             OutputFile.abort(out); // after a failure of PARPE itself no temporary trace file is left; after close, nothing
+            diagnostics.finish();
         }
         if (outcome.status() == RunOutcome.Status.STOPPED) {
             err.println("parpe: stopped at t=" + String.format(Locale.ROOT, "%.3f", outcome.time()) + " s");

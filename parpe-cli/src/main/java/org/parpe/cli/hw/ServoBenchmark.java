@@ -30,7 +30,9 @@ import org.parpe.serial.servo.run.ServoDriver;
 /**
  * {@code parpe bench --only servo}. First, for each protocol (dxl2, sts, scs) with 18 and 55
  * servos at 1 Mbaud, the full host cycle of a run: Sync Write of every goal, then every present
- * position read back (Sync Read; SCS, which has none, one Read per servo), back to back through
+ * position read back (Dynamixel: Fast Sync Read, as the emulated X series' firmware has it, once
+ * each servo answered a Ping as a run's set-up pings it; STS: Sync Read; SCS, which has none, one
+ * Read per servo), back to back through
  * an emulator on a {@link HalfDuplexLine} that gives every byte of both directions its line time.
  * Printed: cycles per second, the wire limit from the bytes counted on the line per cycle at ten
  * bits a byte, their ratio, and the CPU time of the driving thread per cycle (ThreadMXBean; reply
@@ -118,6 +120,7 @@ public final class ServoBenchmark implements Benchmark {
         try (ServoEmulator emu = fastReplies(ServoEmulator.start(fast::servos, model, EmulatorOptions.of(ids),
                 new EmulatorListener() { }));
              ControlTableBus bus = new ControlTableBus(model.protocol(), fast.host(), 100 * BAUD, 20)) {
+            pingAll(bus, ids);
             long warmEnd = System.nanoTime() + (long) (Math.min(WARM_UP_SECONDS, seconds) * 1e9);
             for (long k = 0; k < WARM_UP_CYCLES && System.nanoTime() < warmEnd; k++) {
                 cycle(bus, model, ids, models, ticks, degrees, errors, n, k);
@@ -129,6 +132,7 @@ public final class ServoBenchmark implements Benchmark {
         try (ServoEmulator emu = fastReplies(ServoEmulator.start(line::servos, model, EmulatorOptions.of(ids),
                 new EmulatorListener() { }));
              ControlTableBus bus = new ControlTableBus(model.protocol(), line.host(), BAUD, 20)) {
+            pingAll(bus, ids);
             long warmEnd = System.nanoTime() + Math.min(300_000_000L, (long) (seconds * 0.25e9));
             long k = 0;
             while (System.nanoTime() < warmEnd) {
@@ -167,6 +171,15 @@ public final class ServoBenchmark implements Benchmark {
             // that a low fraction can be told apart from a slow host cycle.
             print(out, key + "timeouts", bus.counters().timeouts() - timeouts0);
             checkClean(emu);
+        }
+    }
+
+    /** Pings every servo, as a run's set-up does: the bus learns each one's firmware. */
+    private static void pingAll(ControlTableBus bus, int[] ids) throws java.io.IOException {
+        for (int id : ids) {
+            if (bus.ping(id, 3) < 0) {
+                throw new IllegalStateException("emulated servo " + id + " did not answer a Ping");
+            }
         }
     }
 

@@ -88,7 +88,7 @@ class ScanCalibrateTest {
     void scanOfServosOfUnknownModelsWritesNoProfileAndFails() throws Exception {
         // Before, a bus of only unknown models wrote an empty profile "modules 0..-1" and exited 0.
         ServoModel unknown = new ServoModel(org.parpe.serial.servo.ServoProtocol.DXL2, 4242, "mystery", 4096, 360,
-                2048, 0, 4095, -1, org.parpe.serial.servo.Registers.DXL_X);
+                2048, 0, 4095, -1, org.parpe.serial.servo.Registers.DXL_X, -1);
         try (EmulatedServos s = new EmulatedServos(dir, unknown, EmulatorOptions.of(1, 2))) {
             Path out = dir.resolve("none.xml");
             Cli r = Cli.run("scan", "--port", s.port(), "--protocol", "dxl2", "--baud", "57600", "--ids", "0..4",

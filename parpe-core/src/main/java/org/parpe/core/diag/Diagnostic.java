@@ -11,7 +11,20 @@ public record Diagnostic(Severity severity, SourcePos pos, String message) {
 
     /** {@code FILE:LINE:COL: error: MESSAGE}, the form of PARSL.md §1. */
     public String format() {
-        return pos + ": " + severity.word() + ": " + message;
+        return format(1);
+    }
+
+    /**
+     * The message of {@code repeats} equal diagnostics shown as one, as the IDE's Problems view
+     * and the command line fold them: {@code MESSAGE  (×3)}; the message alone for one.
+     */
+    public String message(int repeats) {
+        return repeats > 1 ? message + "  (\u00d7" + repeats + ")" : message;
+    }
+
+    /** {@link #format()} of {@code repeats} equal diagnostics shown as one ({@link #message(int)}). */
+    public String format(int repeats) {
+        return pos + ": " + severity.word() + ": " + message(repeats);
     }
 
     @Override

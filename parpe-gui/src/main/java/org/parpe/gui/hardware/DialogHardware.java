@@ -9,8 +9,8 @@ import org.parpe.serial.servo.profile.ServoMapping;
 
 /**
  * The robot connected in the Hardware dialog, in script modules, for the Pose panel: through the
- * tool bar's hardware profile (servo, zero, direction), or without one servo ID = module ID with
- * the middle of the servo's range as joint angle 0. Limp, hold and moves go through the dialog's
+ * tool bar's hardware profile (servo, zero, direction), or without one servo ID = module ID as a
+ * starter profile maps it ({@link ServoMapping#starter}: servo angle 0 is joint angle 0, ±90°). Limp, hold and moves go through the dialog's
  * {@link HardwareSession} (its own thread); angles are the dialog's last poll.
  */
 public final class DialogHardware implements PoseHardware {
@@ -46,8 +46,7 @@ public final class DialogHardware implements PoseHardware {
         }
         for (HardwareSession.Servo s : dialog.servos()) {
             if (s.id() == id && s.model() != null) {
-                double mid = (s.model().minDegrees() + s.model().maxDegrees()) / 2;
-                return new ServoMapping(id, id, s.model(), mid, 1, -90, 90, SourcePos.origin("Hardware dialog"));
+                return ServoMapping.starter(id, id, s.model(), SourcePos.origin("Hardware dialog"));
             }
         }
         return null;

@@ -18,6 +18,7 @@ import org.eclipse.swt.widgets.Table;
 import org.eclipse.swt.widgets.TableColumn;
 import org.eclipse.swt.widgets.TableItem;
 import org.parpe.core.diag.DiagnosticList;
+import org.parpe.core.diag.SourcePos;
 import org.parpe.core.io.OutputPlan;
 import org.parpe.serial.link.SerialLink;
 import org.parpe.serial.servo.ServoModel;
@@ -123,7 +124,8 @@ public final class HardwareDialog {
         jogBox.setEnabled(false);
         jogBox.setToolTipText("Goal of the selected servo in degrees: starts at its position; the arrows (or Up/Down) "
                 + "move it 1°, Page Up/Down 5°, or type an angle and press Enter. Its torque comes on; it moves at "
-                + "most " + (int) HardwareSession.JOG_DEG_PER_S + "°/s, within the model's range");
+                + "most " + (int) HardwareSession.JOG_DEG_PER_S + "°/s, within the joint limits of the tool bar's "
+                + "profile, or ±90° without one");
         jogBox.addListener(SWT.Selection, e -> jog());
         jogBox.addListener(SWT.DefaultSelection, e -> jog());
         jogValue = new Label(jog, SWT.NONE);
@@ -282,8 +284,9 @@ public final class HardwareDialog {
 
     /**
      * A servo was selected: the jog box takes its present position and the model's range, narrowed
-     * to the joint limits of the tool bar's hardware profile when it maps this servo (rounded
-     * inwards to tenths), and stays off while the position is not known or no angle is allowed.
+     * to the joint limits of the tool bar's hardware profile when it maps this servo, else to those
+     * a starter profile would give it (±90°), rounded inwards to tenths; it stays off while the
+     * position is not known or no angle is allowed.
      */
     private void selected() {
         int r = table.getSelectionIndex();
@@ -298,15 +301,15 @@ public final class HardwareDialog {
         }
         double min = m.minDegrees();
         double max = m.maxDegrees();
-        String whose = "range";
         ServoMapping limits = profileLimits(servos.get(r).id(), m);
-        if (limits != null) {
-            double a = limits.servoAngle(limits.min());
-            double b = limits.servoAngle(limits.max());
-            min = Math.max(min, Math.min(a, b));
-            max = Math.min(max, Math.max(a, b));
-            whose = "module " + limits.module() + "'s limits";
+        String whose = limits == null ? "starter limits" : "module " + limits.module() + "'s limits";
+        if (limits == null) {
+            limits = ServoMapping.starter(servos.get(r).id(), servos.get(r).id(), m, SourcePos.NONE);
         }
+        double a = limits.servoAngle(limits.min());
+        double b = limits.servoAngle(limits.max());
+        min = Math.max(min, Math.min(a, b));
+        max = Math.min(max, Math.max(a, b));
         int lo = (int) Math.ceil(min * STEPS_PER_DEG - 1e-9);
         int hi = (int) Math.floor(max * STEPS_PER_DEG + 1e-9);
         jogBox.setEnabled(lo <= hi);

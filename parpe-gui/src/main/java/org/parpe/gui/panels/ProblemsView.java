@@ -89,7 +89,7 @@ public final class ProblemsView {
         it.setText(0, (isRun(d) ? "run " : "") + d.severity().word());
         it.setForeground(0, table.getDisplay().getSystemColor(err ? SWT.COLOR_RED : SWT.COLOR_DARK_YELLOW));
         it.setText(1, location(d.pos()));
-        it.setText(2, repeats[i] > 1 ? d.message() + "  (\u00d7" + repeats[i] + ")" : d.message());
+        it.setText(2, d.message(repeats[i]));
     }
 
     /** Whether {@code d} came from the run (identity: an equal load diagnostic is a different row). */

@@ -147,6 +147,11 @@ class HardwareDialogGuiTest {
             // old slider started at 0° and one click on its trough drove a servo from 25° to 81.8°.
             assertEquals(250, d.widgets().jogBox().getSelection());
             assertEquals(10, d.widgets().jogBox().getIncrement(), "one arrow click: 1°");
+            // Without a profile the number box keeps to the limits a starter profile writes, ±90°
+            // (issue 31: it offered the model's whole range, to 179.9°).
+            assertEquals(900, d.widgets().jogBox().getMaximum());
+            assertEquals(-900, d.widgets().jogBox().getMinimum());
+            assertEquals("starter limits -90.0\u00b0..90.0\u00b0", d.widgets().jogValue().getText());
             // One arrow click: 26°.
             d.widgets().jogBox().setSelection(d.widgets().jogBox().getSelection() + d.widgets().jogBox().getIncrement());
             d.widgets().jogBox().notifyListeners(SWT.Selection, new Event());
@@ -165,8 +170,6 @@ class HardwareDialogGuiTest {
                 }
             }
             assertEquals(81.8, previous, 0.1);
-            // The number box keeps to the model's range, rounded inwards: tick 4095 is 179.91°.
-            assertEquals(1799, d.widgets().jogBox().getMaximum());
             Gui.pump(() -> d.widgets().table().getItem(2).getText(2).equals("81.8\u00b0"), "the table to show 81.8° for servo 3");
             Gui.settle();
             Gui.screenshot(d.shell(), "hardware-dialog.png");

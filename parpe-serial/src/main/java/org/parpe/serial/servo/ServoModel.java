@@ -18,27 +18,38 @@ import java.util.Locale;
  * @param maxTick    highest goal position the servo accepts
  * @param signBit    bit that carries the sign of a position (sign and magnitude), or −1 for two's complement
  * @param registers  control table addresses
+ * @param fastSyncReadFirmware the lowest firmware version that answers Dynamixel Fast Sync Read
+ *                   (0x8A), or −1 when the model has none
  */
 public record ServoModel(ServoProtocol protocol, int number, String name, int resolution, double rangeDeg, int centre,
-                         int minTick, int maxTick, int signBit, Registers registers) {
+                         int minTick, int maxTick, int signBit, Registers registers, int fastSyncReadFirmware) {
 
     /** The models PARPE knows, from the manufacturers' control tables. */
     public static final List<ServoModel> TABLE = List.of(
-            dxlX(1060, "xl430-w250"),
-            dxlX(1090, "2xl430-w250"),
-            dxlX(1190, "xl330-m077"),
-            dxlX(1200, "xl330-m288"),
-            dxlX(1020, "xm430-w350"),
-            dxlX(1030, "xm430-w210"),
-            dxlX(1070, "xc430-w150"),
-            new ServoModel(ServoProtocol.DXL2, 350, "xl-320", 1024, 300, 512, 0, 1023, -1, Registers.DXL_XL320),
-            new ServoModel(ServoProtocol.STS, 777, "sts3215", 4096, 360, 2048, 0, 4095, 15, Registers.FEETECH),
+            // Fast Sync Read: X series from firmware v45, the XL330 from v46; the XL-320 has none
+            // (DynamixelSDK's fast_sync_read example: "X series (except XL-320)"). Sources and the
+            // choice: docs/decisions.md, "Vendor disagreements".
+            dxlX(1060, "xl430-w250", 45),
+            dxlX(1090, "2xl430-w250", 45),
+            dxlX(1190, "xl330-m077", 46),
+            dxlX(1200, "xl330-m288", 46),
+            dxlX(1020, "xm430-w350", 45),
+            dxlX(1030, "xm430-w210", 45),
+            dxlX(1070, "xc430-w150", 45),
+            new ServoModel(ServoProtocol.DXL2, 350, "xl-320", 1024, 300, 512, 0, 1023, -1, Registers.DXL_XL320, -1),
+            new ServoModel(ServoProtocol.STS, 777, "sts3215", 4096, 360, 2048, 0, 4095, 15, Registers.FEETECH, -1),
             // Feetech rates the SCS0009 at 300° over 1024 steps (0.293°/step), like the XL-320.
-            new ServoModel(ServoProtocol.SCS, 1284, "scs0009", 1024, 300, 512, 0, 1023, -1, Registers.FEETECH),
-            new ServoModel(ServoProtocol.G1, 1, "g1-segment", 100, 1, 0, -9000, 9000, -1, null));
+            new ServoModel(ServoProtocol.SCS, 1284, "scs0009", 1024, 300, 512, 0, 1023, -1, Registers.FEETECH, -1),
+            new ServoModel(ServoProtocol.G1, 1, "g1-segment", 100, 1, 0, -9000, 9000, -1, null, -1));
 
-    private static ServoModel dxlX(int number, String name) {
-        return new ServoModel(ServoProtocol.DXL2, number, name, 4096, 360, 2048, 0, 4095, -1, Registers.DXL_X);
+    private static ServoModel dxlX(int number, String name, int fastSyncReadFirmware) {
+        return new ServoModel(ServoProtocol.DXL2, number, name, 4096, 360, 2048, 0, 4095, -1, Registers.DXL_X,
+                fastSyncReadFirmware);
+    }
+
+    /** Whether a servo of this model running firmware version {@code firmware} answers Fast Sync Read. */
+    public boolean fastSyncRead(int firmware) {
+        return fastSyncReadFirmware >= 0 && firmware >= fastSyncReadFirmware;
     }
 
     /** The model with {@code number} on {@code protocol}, or null when PARPE does not know it. */
@@ -93,14 +104,20 @@ public record ServoModel(ServoProtocol protocol, int number, String name, int re
 
     /** The servo angle of a position as read from the bus ({@code size} bytes, unsigned). */
     public double degrees(int raw, int size) {
-        int v;
+        return (tick(raw, size) - centre) * degreesPerTick();
+    }
+
+    /**
+     * The tick a position of {@code size} bytes read from the bus or a control table stands for:
+     * sign and magnitude where the model uses it (Feetech STS: bit 15 is the sign, as the FTServo
+     * SDK's {@code scs_tohost} reads it), two's complement otherwise.
+     */
+    public int tick(int raw, int size) {
         if (signBit >= 0) {
             int magnitude = raw & ((1 << signBit) - 1);
-            v = (raw & (1 << signBit)) != 0 ? -magnitude : magnitude;
-        } else {
-            v = size >= 4 ? raw : (raw << (32 - 8 * size)) >> (32 - 8 * size);
+            return (raw & (1 << signBit)) != 0 ? -magnitude : magnitude;
         }
-        return (v - centre) * degreesPerTick();
+        return size >= 4 ? raw : (raw << (32 - 8 * size)) >> (32 - 8 * size);
     }
 
     /**

@@ -86,6 +86,11 @@ final class EmulatedServo {
         return table[error.addr()] & 0xFF;
     }
 
+    /** Whether it answers Fast Sync Read: its model has it from the firmware version it reports. */
+    boolean fastSyncRead() {
+        return dxl && model.fastSyncRead(table[ct.named("Firmware Version").addr()] & 0xFF);
+    }
+
     /** Return Delay Time in nanoseconds (the item counts units of 2 µs). */
     long returnDelayNanos() {
         return (table[returnDelay.addr()] & 0xFF) * 2_000L;
@@ -156,9 +161,13 @@ final class EmulatedServo {
             }
         }
         if (!dxl && covers(addr, len, goal)) {
-            // Feetech servos keep a goal inside their angle limits.
-            int g = get(goal.addr(), goal.size());
-            put(goal.addr(), goal.size(), Math.max(get(minLimit.addr(), 2), Math.min(get(maxLimit.addr(), 2), g)));
+            // Feetech servos keep a goal inside their angle limits. On STS bit 15 is its sign, so
+            // −100 (0x8064) lies below the minimum, not above the maximum; SCS goals are unsigned
+            // (the SDK's SCSCL WritePos takes a u16).
+            int raw = get(goal.addr(), goal.size());
+            int g = model.signBit() >= 0 ? model.tick(raw, goal.size()) : raw;
+            int kept = Math.max(get(minLimit.addr(), 2), Math.min(get(maxLimit.addr(), 2), g));
+            put(goal.addr(), goal.size(), model.encode(kept));
         }
         if (covers(addr, len, torque) && torqueOn()) {
             if (hardwareError() != 0) {

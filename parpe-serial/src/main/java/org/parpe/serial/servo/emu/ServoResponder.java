@@ -10,7 +10,8 @@ import org.parpe.serial.servo.wire.PacketCodec;
 /**
  * Executes instruction packets on the emulated servos as the manuals describe: Ping, Read, Write,
  * Reg Write and Action, Sync Write, Sync Read (not on SCS, which has none), and on Dynamixel 2.0
- * Bulk Read, Bulk Write and Reboot. Each status packet leaves after the servo's Return Delay Time
+ * Bulk Read, Bulk Write, Reboot and Fast Sync Read (one status packet from all, where the model
+ * and firmware have it). Each status packet leaves after the servo's Return Delay Time
  * (e-Manual, X series, Return Delay Time(9)); servos answer Sync Read and Bulk Read one after the
  * other in the order of the request, each its Return Delay Time after the one before, and a
  * broadcast Ping in the order of their IDs, servo ID k in the k-th reply slot of {@link #SLOT_NANOS}
@@ -33,6 +34,10 @@ final class ServoResponder {
     static final int BULK_WRITE = 0x93;
 
     private final PacketCodec codec;
+    /** The Dynamixel codec, which builds the Fast Sync Read status; null on Feetech. */
+    private final Dxl2Codec dxlCodec;
+    /** Error, ID and data of each servo's block of a Fast Sync Read status. */
+    private final byte[] blocks = new byte[Packet.MAX_PARAMS];
     private final EmulatedServo[] servos;
     private final EmulatedServo[] byId;
     private final Sender sender;
@@ -48,6 +53,7 @@ final class ServoResponder {
     ServoResponder(ServoProtocol protocol, PacketCodec codec, EmulatedServo[] servos, Sender sender,
                    EmulatorListener listener) {
         this.codec = codec;
+        this.dxlCodec = codec instanceof Dxl2Codec d ? d : null;
         this.servos = servos;
         this.byId = servos.clone();
         this.sender = sender;
@@ -90,6 +96,11 @@ final class ServoResponder {
                 }
             }
             case PacketCodec.BULK_READ -> bulkRead(p);
+            case PacketCodec.FAST_SYNC_READ -> {
+                if (dxl) {
+                    fastSyncRead(p);
+                }
+            }
             case BULK_WRITE -> bulkWrite(p);
             case PacketCodec.REBOOT -> reboot(target);
             default -> {
@@ -242,6 +253,51 @@ final class ServoResponder {
                 readReply(s, addr, len, first);
                 first = false;
             }
+        }
+    }
+
+    /**
+     * Fast Sync Read: {@code addr, len} and IDs as Sync Read, answered by one status packet from
+     * the broadcast ID to which each servo named adds its block in the order of the request
+     * (e-Manual, Protocol 2.0, Fast Sync Read). The packet leaves after the first servo's Return
+     * Delay Time. A servo named that is absent or does not answer reads breaks the chain: the
+     * packet stops before its block and never completes. A servo without Fast Sync Read (XL-320,
+     * older firmware) takes it for an unknown instruction and answers on its own with an
+     * Instruction Error.
+     */
+    private void fastSyncRead(Packet p) {
+        if (p.length < 4) {
+            return;
+        }
+        int addr = p.le(0, 2);
+        int len = p.le(2, 2);
+        int n = p.length - 4;
+        if ((long) n * (len + 4) + 16 > out.length || (long) n * (len + 2) > blocks.length) {
+            return;
+        }
+        int sent = 0;
+        boolean broken = false;
+        long wait = 0;
+        for (int k = 0; k < n; k++) {
+            EmulatedServo s = find(p.params[4 + k] & 0xFF);
+            if (s != null && !s.fastSyncRead()) {
+                status(s, EmulatedServo.INSTRUCTION_ERROR, 0, s.returnDelayNanos(), true);
+            }
+            broken |= s == null || !s.fastSyncRead() || !s.answers(false, true);
+            if (!broken) {
+                int at = sent * (len + 2);
+                int e = s.read(addr, len, data);
+                if (e != EmulatedServo.OK) {
+                    java.util.Arrays.fill(data, 0, len, (byte) 0);
+                }
+                blocks[at] = (byte) ((s.hardwareError() != 0 ? Dxl2Codec.ERROR_ALERT : 0) | e);
+                blocks[at + 1] = (byte) s.id();
+                System.arraycopy(data, 0, blocks, at + 2, len);
+                wait = sent++ == 0 ? s.returnDelayNanos() : wait;
+            }
+        }
+        if (sent > 0) {
+            sender.send(out, dxlCodec.fastStatus(out, blocks, len, n, sent), wait, true);
         }
     }
 

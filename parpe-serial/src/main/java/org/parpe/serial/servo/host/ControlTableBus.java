@@ -14,8 +14,10 @@ import org.parpe.serial.servo.wire.PacketCodec;
 /**
  * The host end of a control-table servo bus (Dynamixel Protocol 2.0, Feetech STS or SCS). Goals
  * and torque go out as one Sync Write per register layout; positions come back by Sync Read
- * (Dynamixel, STS), Bulk Read (Dynamixel servos with different layouts on one bus) or one Read
- * per servo (SCS, which has no Sync Read). Requests and replies go through a {@link PacketPort}.
+ * (Dynamixel, STS), Fast Sync Read (Dynamixel servos whose model and pinged firmware have it: one
+ * status packet instead of one per servo), Bulk Read (Dynamixel servos with different layouts on
+ * one bus) or one Read per servo (SCS, which has no Sync Read). Requests and replies go through a
+ * {@link PacketPort}.
  */
 public final class ControlTableBus implements ServoBus {
     /** Bus Watchdog after it tripped: −1 in one byte. */
@@ -28,6 +30,8 @@ public final class ControlTableBus implements ServoBus {
      */
     private static final long FLUSH_QUIET_MS = 50;
     private static final long FLUSH_MAX_MS = 500;
+    /** Group reads every servo answers by Sync Read before a Fast Sync Read is tried again after one broke. */
+    private static final int FAST_RETRY_READS = 100;
 
     private final ServoProtocol protocol;
     private final int baud;
@@ -36,6 +40,10 @@ public final class ControlTableBus implements ServoBus {
     private final byte[] params = new byte[Packet.MAX_PARAMS];
     private final int[] replyIds = new int[256];
     private final java.util.List<Registers> layouts = new java.util.ArrayList<>(2);
+    /** Firmware version each ID's last Ping reply reported (Dynamixel), −1 before one. */
+    private final int[] firmware = new int[256];
+    /** Group reads by Sync Read still to go before Fast Sync Read is tried again (0: it is used). */
+    private int fastPause;
 
     /** Starts talking {@code protocol} (not G1) over {@code link} running at {@code baud}. */
     public ControlTableBus(ServoProtocol protocol, ByteLink link, int baud, int timeoutMs) {
@@ -47,6 +55,7 @@ public final class ControlTableBus implements ServoBus {
         this.bigEndian = protocol == ServoProtocol.SCS;
         PacketCodec codec = protocol == ServoProtocol.DXL2 ? new Dxl2Codec() : new FeetechCodec();
         this.port = new PacketPort(link, codec, protocol == ServoProtocol.DXL2, bigEndian, baud, timeoutMs);
+        java.util.Arrays.fill(firmware, -1);
     }
 
     @Override
@@ -64,6 +73,7 @@ public final class ControlTableBus implements ServoBus {
         for (int a = 0; a < attempts; a++) {
             if (port.request(id, PacketCodec.PING, params, 0, id) && pingReply(id)) {
                 if (protocol == ServoProtocol.DXL2) {
+                    firmware[id] = port.value(id) >>> 16 & 0xFF;
                     return port.value(id) & 0xFFFF;
                 }
                 int model = read(id, Registers.FEETECH.model(), 2, attempts - a);
@@ -108,6 +118,7 @@ public final class ControlTableBus implements ServoBus {
             for (int i = 0; i < ids.length; i++) {
                 if (port.got(ids[i]) && pingReply(ids[i]) && models[i] < 0) {
                     models[i] = port.value(ids[i]) & 0xFFFF;
+                    firmware[ids[i]] = port.value(ids[i]) >>> 16 & 0xFF;
                 }
             }
         }
@@ -216,13 +227,15 @@ public final class ControlTableBus implements ServoBus {
             for (Registers r : layouts) {
                 int k = putAddress(0, r.present(), r.presentSize());
                 expected = 0;
+                boolean fast = protocol == ServoProtocol.DXL2;
                 for (int i = 0; i < n; i++) {
                     if (models[i].registers() == r) {
                         params[k++] = (byte) ids[i];
                         replyIds[expected++] = ids[i];
+                        fast &= models[i].fastSyncRead(firmware[ids[i]]);
                     }
                 }
-                port.requestAll(PacketCodec.BROADCAST, PacketCodec.SYNC_READ, params, k, replyIds, expected);
+                syncRead(k, r.presentSize(), expected, fast);
             }
         } else {
             int k = 0;
@@ -246,6 +259,40 @@ public final class ControlTableBus implements ServoBus {
             }
         }
         return answered;
+    }
+
+    /**
+     * Reads servos {@code replyIds[0…n)}, whose Sync Read parameters ({@code k} bytes) are ready:
+     * by Fast Sync Read when {@code fast} (each has it) and more than one is read (for one it
+     * costs a byte more), else by Sync Read. A Fast Sync Read left unfinished is followed at once
+     * by a Sync Read of the same servos, so that the positions of those that answer are not lost
+     * (holding where they are needs them). When one of them is silent too, it would break every
+     * Fast Sync Read's chain of blocks: the next group reads are Sync Reads until
+     * {@value #FAST_RETRY_READS} of them were answered by all.
+     */
+    private void syncRead(int k, int size, int n, boolean fast) throws IOException {
+        if (fast && n > 1 && fastPause == 0) {
+            port.requestFast(params, k, size, replyIds, n);
+            if (allGot(n)) {
+                return;
+            }
+            port.requestAll(PacketCodec.BROADCAST, PacketCodec.SYNC_READ, params, k, replyIds, n);
+            fastPause = allGot(n) ? 0 : FAST_RETRY_READS;
+            return;
+        }
+        port.requestAll(PacketCodec.BROADCAST, PacketCodec.SYNC_READ, params, k, replyIds, n);
+        if (fastPause > 0 && allGot(n)) {
+            fastPause--;
+        }
+    }
+
+    private boolean allGot(int n) {
+        for (int i = 0; i < n; i++) {
+            if (!port.got(replyIds[i])) {
+                return false;
+            }
+        }
+        return true;
     }
 
     @Override

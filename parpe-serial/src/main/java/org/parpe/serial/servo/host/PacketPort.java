@@ -8,6 +8,7 @@ import java.util.concurrent.locks.ReentrantLock;
 import org.parpe.serial.link.ByteLink;
 import org.parpe.serial.link.ReadLoop;
 import org.parpe.serial.link.StreamDecoder;
+import org.parpe.serial.servo.wire.Dxl2Codec;
 import org.parpe.serial.servo.wire.Packet;
 import org.parpe.serial.servo.wire.PacketCodec;
 import org.parpe.serial.servo.wire.PacketDecoder;
@@ -15,7 +16,8 @@ import org.parpe.serial.servo.wire.PacketDecoder;
 /**
  * Request and reply over one link for a control-table protocol: sends instruction packets and
  * waits for the status packets of the servos named, each kept by servo ID (its first four
- * parameter bytes as a number, its error byte, its length). A reader thread owns the decoder;
+ * parameter bytes as a number, its error byte, its length; each servo's block of a Dynamixel Fast
+ * Sync Read status is kept as that servo's reply). A reader thread owns the decoder;
  * late replies to an ended request are counted as stray. Requests must come from one thread at a
  * time; plain sends may come from any thread.
  */
@@ -48,6 +50,8 @@ final class PacketPort {
     private final Thread reader;
     private int expected;
     private int waitingCount;
+    /** Data bytes per servo of the Fast Sync Read last asked, guarded by lock. */
+    private int fastSize;
     // A chain of requests (requestEach), guarded by lock: the reader sends the next as soon as a reply ends one.
     private int[] chainIds;
     private int chainN;
@@ -170,6 +174,20 @@ final class PacketPort {
             lock.unlock();
         }
         await(id, instruction, params, len, n, listenNanos);
+    }
+
+    /**
+     * A Dynamixel Fast Sync Read ({@code params}: address, {@code size} and the IDs, as Sync
+     * Read) answered by servos {@code replyIds[0…n)} in one status packet from the broadcast ID.
+     */
+    void requestFast(byte[] params, int len, int size, int[] replyIds, int n) throws IOException {
+        lock.lock();
+        try {
+            fastSize = size;
+        } finally {
+            lock.unlock();
+        }
+        requestAll(PacketCodec.BROADCAST, PacketCodec.FAST_SYNC_READ, params, len, replyIds, n, -1);
     }
 
     /**
@@ -402,22 +420,16 @@ final class PacketPort {
         if (dxl && p.code != PacketCodec.STATUS) {
             return;
         }
+        if (dxl && p.id == PacketCodec.BROADCAST) {
+            onFastStatus(p);
+            return;
+        }
         if (!waiting[p.id]) {
             stray++;
             return;
         }
-        waiting[p.id] = false;
-        got[p.id] = true;
         boolean chained = chainAt >= 0 && chainIds[chainAt] == p.id;
-        int n = Math.min(4, p.length);
-        int v = 0;
-        for (int i = 0; i < n; i++) {
-            v |= (p.params[i] & 0xFF) << 8 * (bigEndian ? n - 1 - i : i);
-        }
-        value[p.id] = v;
-        size[p.id] = p.length;
-        error[p.id] = codec.statusError(p);
-        --waitingCount;
+        keep(p.id, p.params, 0, p.length, codec.statusError(p));
         if (chained) {
             try {
                 chainNext();
@@ -428,5 +440,44 @@ final class PacketPort {
         } else if (waitingCount <= 0) {
             replied.signalAll();
         }
+    }
+
+    /**
+     * A Fast Sync Read status: each servo's block (error, ID, data; e-Manual, Protocol 2.0, Fast
+     * Sync Read) is kept as that servo's reply. On the reader thread with {@link #lock} held.
+     */
+    private void onFastStatus(Packet p) {
+        int n = Dxl2Codec.fastDevices(p.length, fastSize);
+        if (n <= 0) {
+            stray++;
+            return;
+        }
+        for (int k = 0; k < n; k++) {
+            int at = Dxl2Codec.fastIdAt(k, fastSize);
+            int id = p.params[at] & 0xFF;
+            if (waiting[id]) {
+                keep(id, p.params, at + 1, fastSize, k == 0 ? p.error : p.params[at - 1] & 0xFF);
+            } else {
+                stray++;
+            }
+        }
+        if (waitingCount <= 0) {
+            replied.signalAll();
+        }
+    }
+
+    /** Keeps servo {@code id}'s reply: {@code len} data bytes of {@code params} from {@code off}. */
+    private void keep(int id, byte[] params, int off, int len, int statusError) {
+        waiting[id] = false;
+        got[id] = true;
+        int n = Math.min(4, len);
+        int v = 0;
+        for (int i = 0; i < n; i++) {
+            v |= (params[off + i] & 0xFF) << 8 * (bigEndian ? n - 1 - i : i);
+        }
+        value[id] = v;
+        size[id] = len;
+        error[id] = statusError;
+        --waitingCount;
     }
 }

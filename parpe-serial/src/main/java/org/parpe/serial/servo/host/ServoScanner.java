@@ -140,9 +140,7 @@ public final class ServoScanner {
         List<ServoMapping> servos = new ArrayList<>();
         for (Found f : found) {
             if (f.model() != null) {
-                ServoModel m = f.model();
-                servos.add(new ServoMapping(servos.size(), f.id(), m, 0, 1, Math.max(-90, m.minDegrees()),
-                        Math.min(90, m.maxDegrees()), SourcePos.NONE));
+                servos.add(ServoMapping.starter(servos.size(), f.id(), f.model(), SourcePos.NONE));
             }
         }
         return new HardwareProfile(file, p, port, baud, SafeMode.HOLD, HardwareProfile.DEFAULT_WATCHDOG_MS, servos);

@@ -19,6 +19,18 @@ public record ServoMapping(int module, int servo, ServoModel model, double zero,
                            SourcePos where) {
     /** Degrees a tick may lie beyond a limit through floating-point rounding alone. */
     private static final double LIMIT_SLACK = 1e-9;
+    /** The joint limit, either way, of a servo PARPE drives before a profile says otherwise. */
+    public static final double STARTER_LIMIT_DEG = 90;
+
+    /**
+     * How PARPE drives servo {@code servo} of {@code model} as module {@code module} without a
+     * profile, as a starter profile writes it: zero 0, direction +1, limits ±{@value #STARTER_LIMIT_DEG}°
+     * (within the model's range).
+     */
+    public static ServoMapping starter(int module, int servo, ServoModel model, SourcePos where) {
+        return new ServoMapping(module, servo, model, 0, 1, Math.max(-STARTER_LIMIT_DEG, model.minDegrees()),
+                Math.min(STARTER_LIMIT_DEG, model.maxDegrees()), where);
+    }
 
     /** The joint angle clamped to {@link #min}…{@link #max}. */
     public double clamp(double joint) {

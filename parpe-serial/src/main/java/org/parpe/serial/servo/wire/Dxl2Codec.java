@@ -10,7 +10,8 @@ import org.parpe.serial.protocol.Crc16;
  * {@code FD} is inserted after it, so the header can never appear inside a packet; LEN and the
  * CRC cover the stuffed bytes, and the receiver removes the extra {@code FD}. The error numbers
  * (low 7 bits of the error byte) 1…7 are result fail, instruction, CRC, data range, data length,
- * data limit and access error.
+ * data limit and access error. The one status packet that answers a Fast Sync Read comes from
+ * the broadcast ID and is not stuffed ({@link #fastStatus}).
  */
 public final class Dxl2Codec implements PacketCodec {
     /** Bytes of header, ID and length. */
@@ -66,6 +67,53 @@ public final class Dxl2Codec implements PacketCodec {
         out[HEAD + n] = (byte) crc;
         out[HEAD + n + 1] = (byte) (crc >>> 8);
         return HEAD + n + 2;
+    }
+
+    /**
+     * The status packet that answers a Fast Sync Read (e-Manual, Protocol 2.0, Fast Sync Read):
+     * ID 0xFE, LEN for {@code n} devices, then per device its error, its ID, its {@code size}
+     * data bytes and the CRC of the packet up to there (the last is the packet's CRC). The
+     * devices send it one block after another, so it is not stuffed. {@code blocks} holds error,
+     * ID and data of each device in turn; only the first {@code sent} blocks are written (fewer
+     * than {@code n} when the chain broke: a packet that never completes). Returns its length.
+     */
+    public int fastStatus(byte[] out, byte[] blocks, int size, int n, int sent) {
+        int length = 1 + n * (size + 4);
+        if (size < 0 || sent > n || HEAD + length > out.length) {
+            throw new IllegalArgumentException("a Fast Sync Read status of " + n + " blocks of " + size
+                    + " bytes does not fit " + out.length + " bytes");
+        }
+        System.arraycopy(HEADER, 0, out, 0, HEADER.length);
+        out[4] = (byte) BROADCAST;
+        out[5] = (byte) length;
+        out[6] = (byte) (length >>> 8);
+        out[HEAD] = (byte) STATUS;
+        int pos = HEAD + 1;
+        for (int k = 0; k < sent; k++) {
+            System.arraycopy(blocks, k * (size + 2), out, pos, size + 2);
+            pos += size + 2;
+            int crc = Crc16.DXL2.of(out, 0, pos);
+            out[pos++] = (byte) crc;
+            out[pos++] = (byte) (crc >>> 8);
+        }
+        return pos;
+    }
+
+    /**
+     * The devices whose blocks of {@code size} data bytes a Fast Sync Read status with
+     * {@code params} parameters carries (the decoder keeps the first device's error in
+     * {@link Packet#error} and drops the last CRC), or −1 when no number of blocks fits.
+     */
+    public static int fastDevices(int params, int size) {
+        return (params + 3) % (size + 4) == 0 ? (params + 3) / (size + 4) : -1;
+    }
+
+    /**
+     * Where device {@code k}'s ID lies among a Fast Sync Read status's parameters: its data
+     * follows, its error byte (for {@code k} > 0) comes before.
+     */
+    public static int fastIdAt(int k, int size) {
+        return k * (size + 4);
     }
 
     @Override
@@ -124,10 +172,13 @@ public final class Dxl2Codec implements PacketCodec {
                 }
                 out.error = buf[from++] & 0xFF;
             }
+            // A status from the broadcast ID answers a Fast Sync Read: built by several devices
+            // in turn, it is not stuffed.
+            boolean stuffed = out.code != STATUS || out.id != BROADCAST;
             int n = 0;
             for (int i = from, end = p + total - 2; i < end; i++) {
                 // Unstuff: the FD after FF FF FD was added by the sender.
-                if (buf[i] == (byte) 0xFD && i - 3 >= p + HEAD && buf[i - 1] == (byte) 0xFD
+                if (stuffed && buf[i] == (byte) 0xFD && i - 3 >= p + HEAD && buf[i - 1] == (byte) 0xFD
                         && buf[i - 2] == (byte) 0xFF && buf[i - 3] == (byte) 0xFF) {
                     continue;
                 }

@@ -20,6 +20,11 @@ public interface PacketCodec {
     int SYNC_READ = 0x82;
     /** Sync Write: the same {@code addr, len} to several servos, {@code id, data…} each; no reply. */
     int SYNC_WRITE = 0x83;
+    /**
+     * Dynamixel 2.0 Fast Sync Read: asked like Sync Read, answered by one status packet from the
+     * broadcast ID that every servo adds its block to ({@link Dxl2Codec#fastStatus}).
+     */
+    int FAST_SYNC_READ = 0x8A;
     /** Dynamixel 2.0 Bulk Read: {@code id, addr, len} per servo, each replies in turn. */
     int BULK_READ = 0x92;
     /** Dynamixel 2.0: the instruction field of a status packet. */

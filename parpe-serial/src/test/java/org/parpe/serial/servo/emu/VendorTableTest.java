@@ -24,7 +24,7 @@ import org.parpe.serial.servo.wire.PacketCodec;
  */
 class VendorTableTest {
     /** A status packet the servos sent, and when. */
-    record Reply(int id, int error, byte[] params, long delay, boolean fromRequest) {
+    record Reply(int id, int error, byte[] params, long delay, boolean fromRequest, byte[] raw) {
         int le(int off, int size) {
             return PacketCodec.le(params, off, size);
         }
@@ -47,7 +47,8 @@ class VendorTableTest {
         PacketCodec decoding = codec;
         responder = new ServoResponder(m.protocol(), codec, servos, (packet, len, wait, fromRequest) ->
                 decoding.decoder(p -> replies.add(new Reply(p.id, decoding.statusError(p),
-                        Arrays.copyOf(p.params, p.length), wait, fromRequest))).feed(packet, 0, len),
+                        Arrays.copyOf(p.params, p.length), wait, fromRequest,
+                        Arrays.copyOf(p.raw, p.rawLength)))).feed(packet, 0, len),
                 new EmulatorListener() {
                     @Override
                     public void onSetpoints(int seq, double[] angles) {
@@ -76,6 +77,14 @@ class VendorTableTest {
         }).feed(raw, 0, n);
         responder.execute(got.get(0), System.nanoTime());
         return List.copyOf(replies);
+    }
+
+    static String hex(byte[] b) {
+        StringBuilder s = new StringBuilder();
+        for (byte x : b) {
+            s.append(s.length() > 0 ? " " : "").append(String.format("%02X", x & 0xFF));
+        }
+        return s.toString();
     }
 
     /** Dynamixel 2.0 Read of {@code len} bytes at {@code addr}. */
@@ -274,6 +283,44 @@ class VendorTableTest {
     }
 
     @Test
+    void fastSyncReadIsAnsweredByOnePacketAsInTheManual() {
+        // ROBOTIS e-Manual, "DYNAMIXEL Protocol 2.0", Fast Sync Read (0x8A), example: XM430-W210s
+        // with IDs 3, 7 and 4 at Present Position 166, 2 079 and 1 023 answer the request for
+        // Present Position (132, 4 bytes) with this one status packet from ID 0xFE.
+        servos("xm430-w210", 3, 7, 4);
+        ServoModel m = ServoModel.named("xm430-w210");
+        servos[0].backDrive(m.tickDegrees(166));
+        servos[1].backDrive(m.tickDegrees(2079));
+        servos[2].backDrive(m.tickDegrees(1023));
+        List<Reply> r = send(PacketCodec.BROADCAST, PacketCodec.FAST_SYNC_READ, 0x84, 0, 4, 0, 3, 7, 4);
+        assertEquals(1, r.size(), "one status packet for all three");
+        assertEquals("FF FF FD 00 FE 19 00 55 00 03 A6 00 00 00 84 08 00 07 1F 08 00 00 16 CA 00 04 FF 03 00 00 D1 9E",
+                hex(r.get(0).raw()));
+        assertEquals(500_000, r.get(0).delay(), "after the first servo's Return Delay Time");
+        assertTrue(r.get(0).fromRequest());
+        // A servo named but absent breaks the chain: the packet never completes.
+        assertEquals(0, send(PacketCodec.BROADCAST, PacketCodec.FAST_SYNC_READ, 0x84, 0, 4, 0, 3, 9, 4).size());
+    }
+
+    @Test
+    void aServoWithoutFastSyncReadAnswersItWithAnInstructionError() {
+        // ROBOTIS e-Manual, Protocol 2.0, Status Packet, Error 0x02 Instruction Error: "Undefined
+        // Instruction has been used". The XL-320 has no Fast Sync Read (DynamixelSDK's
+        // fast_sync_read example: X series except XL-320); an X series servo below firmware v45
+        // has none either.
+        servos("xl-320", 1, 2);
+        List<Reply> r = send(PacketCodec.BROADCAST, PacketCodec.FAST_SYNC_READ, 37, 0, 2, 0, 1, 2);
+        assertEquals(List.of(1, 2), r.stream().map(Reply::id).toList());
+        assertTrue(r.stream().allMatch(x -> (x.error() & 0x7F) == EmulatedServo.INSTRUCTION_ERROR));
+        servos("xm430-w350", 1);
+        servos[0].table[ControlTable.X_SERIES.named("Firmware Version").addr()] = 44;
+        r = send(PacketCodec.BROADCAST, PacketCodec.FAST_SYNC_READ, 0x84, 0, 4, 0, 1);
+        assertEquals(1, r.size());
+        assertEquals(EmulatedServo.INSTRUCTION_ERROR, r.get(0).error() & 0x7F);
+        assertEquals(1, r.get(0).id());
+    }
+
+    @Test
     void feetechStsEepromRegistersAreTheMemoryTablesInitialValues() {
         // FEETECH magnetic-encoder STS servo memory table ("STS Servo - Memory Table Analysis",
         // 2.2 EPROM Configuration, little-endian): ID(5) 1, Baud Rate(6) 0 (1 000 000),
@@ -286,6 +333,22 @@ class VendorTableTest {
             assertEquals(1, got.size(), "one reply to a read of address " + r[0]);
             assertEquals(r[2], got.get(0).le(0, r[1]), "address " + r[0]);
         }
+    }
+
+    @Test
+    void feetechStsGoalBit15IsItsSignAndTheLimitsKeepANegativeGoal() {
+        // Feetech SCServo/FTServo SDK, SMS_STS.cpp, WritePosEx: a negative position goes out as its
+        // magnitude with bit 15 set (scs_toscs(pos, 15)), read back by scs_tohost(pos, 15). STS
+        // memory table: Goal Position(42) ranges Min Position Limit(9) ~ Max Position Limit(11).
+        // So −100 (0x8064) is below the minimum, 0, and must not read as 32 868, above the maximum.
+        servos("sts3215", 1);
+        send(1, PacketCodec.WRITE, 40, 1);
+        send(1, PacketCodec.WRITE, 42, 0x64, 0x80);
+        assertEquals(0, send(1, PacketCodec.READ, 42, 2).get(0).le(0, 2), "goal kept at Min Position Limit");
+        assertEquals(ServoModel.named("sts3215").minDegrees(), servos[0].goalDegrees(), 1e-9);
+        // Bit 15 clear: an ordinary goal inside the limits is kept as written.
+        send(1, PacketCodec.WRITE, 42, 0x64, 0x00);
+        assertEquals(100, send(1, PacketCodec.READ, 42, 2).get(0).le(0, 2));
     }
 
     @Test

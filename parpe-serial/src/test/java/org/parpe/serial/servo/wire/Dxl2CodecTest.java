@@ -97,6 +97,65 @@ class Dxl2CodecTest {
     }
 
     @Test
+    void fastSyncReadAndItsOneStatusPacketAsInTheManual() {
+        // ROBOTIS e-Manual, "DYNAMIXEL Protocol 2.0", Fast Sync Read (0x8A), example: IDs 3, 7 and 4
+        // answer a read of Present Position (132, 4 bytes) = 166, 2 079 and 1 023 with ONE status
+        // packet from ID 0xFE, LEN 25; each device's block is its error, its ID, its data and the
+        // CRC of the packet up to there, the last block's CRC being the packet's.
+        assertArrayEquals(hex("FF FF FD 00 FE 0A 00 8A 84 00 04 00 03 07 04 20 F2"), instruction(0xFE,
+                PacketCodec.FAST_SYNC_READ, 0x84, 0x00, 0x04, 0x00, 3, 7, 4));
+        byte[] st = hex("FF FF FD 00 FE 19 00 55 00 03 A6 00 00 00 84 08 00 07 1F 08 00 00 16 CA"
+                + " 00 04 FF 03 00 00 D1 9E");
+        byte[] blocks = params(0, 3, 0xA6, 0, 0, 0, 0, 7, 0x1F, 0x08, 0, 0, 0, 4, 0xFF, 0x03, 0, 0);
+        assertArrayEquals(st, Arrays.copyOf(out, codec.fastStatus(out, blocks, 4, 3, 3)));
+        List<Packet> got = new ArrayList<>();
+        codec.decoder(p -> got.add(copy(p))).feed(st, 0, st.length);
+        assertEquals(1, got.size());
+        Packet p = got.get(0);
+        assertEquals(0xFE, p.id);
+        assertEquals(3, Dxl2Codec.fastDevices(p.length, 4));
+        int[] ids = new int[3];
+        int[] positions = new int[3];
+        for (int k = 0; k < 3; k++) {
+            ids[k] = p.params[Dxl2Codec.fastIdAt(k, 4)];
+            positions[k] = p.le(Dxl2Codec.fastIdAt(k, 4) + 1, 4);
+        }
+        assertArrayEquals(new int[] {3, 7, 4}, ids);
+        assertArrayEquals(new int[] {166, 2079, 1023}, positions);
+    }
+
+    @Test
+    void aFastSyncReadStatusIsNotStuffed() {
+        // The devices build the packet one block after another, so none can stuff what the others
+        // sent: data FF FF FD FD arrives as it is (DynamixelSDK, GroupFastSyncRead::rxPacket
+        // receives it with stuffing removal skipped). A partial packet (the chain broken after the
+        // first device) never completes.
+        byte[] blocks = params(0, 5, 0xFF, 0xFF, 0xFD, 0xFD, 0, 6, 1, 2, 3, 4);
+        byte[] st = Arrays.copyOf(out, codec.fastStatus(out, blocks, 4, 2, 2));
+        List<Packet> got = new ArrayList<>();
+        PacketDecoder d = codec.decoder(p -> got.add(copy(p)));
+        d.feed(st, 0, st.length);
+        assertEquals(1, got.size());
+        assertEquals(0xFDFDFFFF, got.get(0).le(1, 4));
+        assertEquals(0x04030201, got.get(0).le(Dxl2Codec.fastIdAt(1, 4) + 1, 4));
+        got.clear();
+        byte[] partial = Arrays.copyOf(out, codec.fastStatus(out, blocks, 4, 2, 1));
+        d.feed(partial, 0, partial.length);
+        d.idle();
+        assertEquals(List.of(), got);
+    }
+
+    static Packet copy(Packet p) {
+        Packet c = new Packet();
+        c.id = p.id;
+        c.code = p.code;
+        c.error = p.error;
+        c.length = p.length;
+        System.arraycopy(p.params, 0, c.params, 0, p.length);
+        return c;
+    }
+
+    @Test
     void stuffingInsertsFdAfterEveryHeaderPatternAndTheDecoderRemovesIt() {
         byte[] p = instruction(1, PacketCodec.WRITE, 0xFF, 0xFF, 0xFD, 0x01, 0xFF, 0xFF, 0xFD, 0xFD);
         // INST + 8 params + 2 stuffed bytes + CRC = 13.
