@@ -21,6 +21,7 @@ import org.parpe.sim.sweep.Optimizer;
 import org.parpe.sim.sweep.ParameterDefaults;
 import org.parpe.sim.sweep.SweepException;
 import org.parpe.sim.sweep.SweepListener;
+import org.parpe.sim.sweep.SweepRow;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -125,22 +126,30 @@ public final class OptimizeCommand extends SimSweepCommand {
             stdout.println(String.format(Locale.ROOT, "the script's own values: %.4f%s", first.score(),
                     first.feasible() ? "" : " (misses a constraint)"));
         }
+        printBest(stdout, best.row(), searched);
+        xml.write(ParameterDefaults.rewrite(file, ev.text(), ev.parameters(), best.row().values()));
+        err.println("parpe: wrote " + xml + " (the best values as defaults)"
+                + (png == null ? "" : " and the convergence plot " + png));
+        return 0;
+    }
+
+    /**
+     * The best run's values, each at an end of its range flagged (the best may lie beyond it),
+     * what the robot did and, in a world, the score's parts.
+     */
+    private static void printBest(PrintWriter stdout, SweepRow best, List<Axis> searched) {
         for (Axis a : searched) {
-            double v = best.row().values().get(a.name());
+            double v = best.values().get(a.name());
             String bound = a.atBound(v);
             stdout.println("  " + a.name() + " = " + Numbers.format(v) + (bound.isEmpty() ? "" : "  (" + bound
                     + ", its " + (v == a.hi() ? "max" : "min") + " in the script)"));
         }
         stdout.println(String.format(Locale.ROOT, "  (distance %.3f m, forward %.3f m, max tilt %.1f°, fell over: %s)",
-                best.row().distance(), best.row().forward(), best.row().maxTiltDeg(), best.row().fell() ? "yes" : "no"));
-        if (best.row().parts() != null) {
-            stdout.println("  (the score's parts: " + best.row().parts().inWords() + ")");
+                best.distance(), best.forward(), best.maxTiltDeg(), best.fell() ? "yes" : "no"));
+        if (best.parts() != null) {
+            stdout.println("  (the score's parts: " + best.parts().inWords() + ")");
         }
         stdout.flush();
-        xml.write(ParameterDefaults.rewrite(file, ev.text(), ev.parameters(), best.row().values()));
-        err.println("parpe: wrote " + xml + " (the best values as defaults)"
-                + (png == null ? "" : " and the convergence plot " + png));
-        return 0;
     }
 
     private static String sibling(Path file, String suffix) {
