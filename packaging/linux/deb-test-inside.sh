@@ -7,7 +7,7 @@ failed=0
 fail() { echo "FAIL: $*"; failed=1; }
 ok() { echo "ok: $*"; }
 export DEBIAN_FRONTEND=noninteractive LC_ALL=C.UTF-8
-examples=/opt/parpe/lib/app/examples
+examples=/usr/lib/parpe/lib/app/examples
 
 # A student who is not root, so that read-only installed files stay read-only.
 echo 'student:x:1000:1000::/home/student:/bin/sh' >> /etc/passwd
@@ -36,7 +36,7 @@ apt-get check -q > /dev/null 2>&1 && ok "apt-get check" || fail "apt-get check a
 as_student parpe --version || fail "parpe --version"
 
 # Size and memory: a trimmed runtime and each library once (179 MB before); a bounded heap.
-size=$(du -sm /opt/parpe | cut -f1)
+size=$(du -sm /usr/lib/parpe | cut -f1)
 [ "$size" -le 100 ] && ok "installed size $size MB" || fail "installed size $size MB, more than 100 MB"
 # heap: the JVM's own figure, printed by the installed launcher's JVM
 heap() { as_student env JAVA_TOOL_OPTIONS="$1 -XX:+PrintFlagsFinal" parpe --version 2>/dev/null | awk '$2 == "MaxHeapSize" {print $4}'; }
@@ -98,8 +98,19 @@ grep ':\*\.xml$' /usr/share/mime/globs2 | grep -q parsl && fail "*.xml maps to P
 # The triggers of those packages see PARPE's files when it is installed again.
 apt-get install -y -q --reinstall --no-install-recommends /tmp/parpe.deb > /tmp/apt3.log 2>&1 || { cat /tmp/apt3.log; fail "reinstall"; }
 
-# 7. Purge: nothing of PARPE left.
+# 7. Purge: nothing of PARPE left, nothing else touched, and no warning. Another program in /opt,
+#    as on many PCs: a package that owned /opt warned "directory '/opt' not empty so not removed"
+#    (and removed an empty /opt, which base-files makes) (issue 31 item 3.6).
+owners=$(dpkg -S /opt 2>/dev/null)
+[ -z "$owners" ] && ok "no package owns /opt" || fail "packages own /opt: $owners"
+mkdir -p /opt/other-program && echo kept > /opt/other-program/file
 apt-get purge -y -q parpe > /tmp/purge.log 2>&1 || { cat /tmp/purge.log; fail "apt-get purge"; }
+grep -qi 'warning' /tmp/purge.log && fail "apt-get purge warned: $(grep -i warning /tmp/purge.log)" \
+    || ok "apt-get purge without a warning"
+[ "$(cat /opt/other-program/file 2>/dev/null)" = kept ] && ok "another program in /opt is kept" \
+    || fail "the purge touched /opt/other-program"
+rm -r /opt/other-program
+[ -d /opt ] && ok "/opt is kept" || fail "the purge removed /opt"
 [ -z "$(dpkg-query -W -f='${Status}' parpe 2>/dev/null)" ] && ok "dpkg forgot parpe" \
     || fail "dpkg still knows parpe: $(dpkg-query -W -f='${Status}' parpe)"
 left=$(find / -xdev \( -path /proc -o -path /sys -o -path /dev -o -path /home -o -path /tmp \) -prune -o -iname '*parpe*' -print)

@@ -5,25 +5,29 @@
 # xdg-mime in its maintainer scripts: they fail where there is no menu tree, pull xdg-utils with
 # dozens of packages, and make the program the default for every type it names. This package
 # has no maintainer scripts at all. Its files:
-#   /opt/parpe/                        the app image (own Java runtime, examples, docs)
+#   /usr/lib/parpe/                    the app image (own Java runtime, examples, docs)
 #   /usr/bin/parpe, /usr/bin/parpe-ide links to the two launchers
 #   /usr/share/applications/parpe.desktop        the one menu entry (Education)
 #   /usr/share/mime/packages/parpe.xml           .parsl = application/x-parsl+xml (not .xml)
 #   /usr/share/icons/hicolor/256x256/apps/parpe.png
 # The menu, MIME and icon caches are refreshed by the triggers that desktop-file-utils,
 # shared-mime-info and the icon theme declare on these folders, where those are installed; dpkg
-# removes every file on purge and the same triggers forget them.
+# removes every file on purge and the same triggers forget them. Not /opt/parpe: no Debian
+# package owns /opt (base-files only makes it), so the package that put /opt/parpe there became
+# /opt's owner, and its purge removed /opt or, with other programs in it, warned "directory
+# '/opt' not empty so not removed". /usr/lib is owned by base-files, and Debian Policy 9.1.1 lets
+# a package keep a mixture of architecture-dependent and -independent files in /usr/lib/NAME.
 set -euo pipefail
 image=$1 version=$2 out=$3
 here=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")" && pwd)
 arch=$(dpkg --print-architecture)
 pkg=$out/deb/parpe
 rm -rf "$out/deb"
-mkdir -p "$pkg/DEBIAN" "$pkg/opt" "$pkg/usr/bin" "$pkg/usr/share/applications" \
+mkdir -p "$pkg/DEBIAN" "$pkg/usr/lib" "$pkg/usr/bin" "$pkg/usr/share/applications" \
     "$pkg/usr/share/mime/packages" "$pkg/usr/share/icons/hicolor/256x256/apps"
-cp -a "$image" "$pkg/opt/parpe"
-ln -s ../../opt/parpe/bin/parpe "$pkg/usr/bin/parpe"
-ln -s ../../opt/parpe/bin/parpe-ide "$pkg/usr/bin/parpe-ide"
+cp -a "$image" "$pkg/usr/lib/parpe"
+ln -s ../lib/parpe/bin/parpe "$pkg/usr/bin/parpe"
+ln -s ../lib/parpe/bin/parpe-ide "$pkg/usr/bin/parpe-ide"
 install -m 644 "$here/parpe.desktop" "$pkg/usr/share/applications/parpe.desktop"
 install -m 644 "$here/parpe-mime.xml" "$pkg/usr/share/mime/packages/parpe.xml"
 install -m 644 "$here/../../parpe-gui/src/main/resources/org/parpe/gui/parpe.png" "$pkg/usr/share/icons/hicolor/256x256/apps/parpe.png"
@@ -33,7 +37,7 @@ install -m 644 "$here/../../parpe-gui/src/main/resources/org/parpe/gui/parpe.png
 # renamed t64 libraries provide these names. Left out: the natives of what PARPE never uses
 # (the splash screen, javax.sound, JPEG images), which would add libjpeg62-turbo, libgif7,
 # libpng16-16 and libasound2 (Debian's names; Ubuntu's JPEG library has another).
-libs=$(find "$pkg/opt/parpe" -type f \( -name '*.so' -o -path '*/bin/*' \) \
+libs=$(find "$pkg/usr/lib/parpe" -type f \( -name '*.so' -o -path '*/bin/*' \) \
         ! -name libsplashscreen.so ! -name libjsound.so ! -name libjavajpeg.so -exec ldd {} + 2>/dev/null \
     | sed -n 's|.*=> \(/[^ ]*\) .*|\1|p' | grep -v "^$pkg/" | sort -u)
 # One dpkg -S for all (it reads every package's file list); with the merged /usr, a library is

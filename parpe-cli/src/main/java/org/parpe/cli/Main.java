@@ -77,6 +77,7 @@ public final class Main implements Runnable {
         cl.setOut(new PrintWriter(out, true));
         cl.setErr(new PrintWriter(err, true));
         cl.setExecutionExceptionHandler(Main::failed);
+        cl.setExecutionStrategy(Main::executeMatched);
         cl.setParameterExceptionHandler((ex, args2) -> {
             String command = unknownCommand(ex, cl);
             if (command != null) {
@@ -101,11 +102,32 @@ public final class Main implements Runnable {
         }
     }
 
-    /** The word given where a command was expected ({@code parpe rn}), or {@code null}. */
+    /**
+     * Runs the command the arguments name, once every argument was matched. Picocli does not
+     * check for unmatched arguments when {@code --help} is among them, so {@code parpe NOSUCH
+     * --help} would print the general help and exit 0; here it is the usage error it is.
+     */
+    private static int executeMatched(CommandLine.ParseResult parsed) {
+        for (CommandLine.ParseResult p = parsed; p != null; p = p.subcommand()) {
+            if (!p.unmatched().isEmpty()) {
+                throw new CommandLine.UnmatchedArgumentException(p.commandSpec().commandLine(), p.unmatched());
+            }
+        }
+        return new CommandLine.RunLast().execute(parsed);
+    }
+
+    /**
+     * The word given where a command was expected ({@code parpe rn}, {@code parpe help rn}), or
+     * {@code null}: the top level takes no values but commands.
+     */
     private static String unknownCommand(CommandLine.ParameterException ex, CommandLine top) {
         if (ex instanceof CommandLine.UnmatchedArgumentException u && ex.getCommandLine() == top
                 && !u.getUnmatched().isEmpty() && !u.getUnmatched().get(0).startsWith("-")) {
             return u.getUnmatched().get(0);
+        }
+        if (ex.getCommandLine() == top && ex.getArgSpec() == null && ex.getValue() != null
+                && !ex.getValue().startsWith("-") && !top.getSubcommands().containsKey(ex.getValue())) {
+            return ex.getValue(); // from picocli's help command: parpe help rn
         }
         return null;
     }

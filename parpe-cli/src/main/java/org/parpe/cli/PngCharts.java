@@ -10,7 +10,16 @@ import java.io.IOException;
 import java.io.OutputStream;
 import java.util.ArrayList;
 import java.util.List;
+import javax.imageio.IIOImage;
 import javax.imageio.ImageIO;
+import javax.imageio.ImageReader;
+import javax.imageio.ImageTypeSpecifier;
+import javax.imageio.ImageWriteParam;
+import javax.imageio.ImageWriter;
+import javax.imageio.metadata.IIOMetadata;
+import javax.imageio.metadata.IIOMetadataNode;
+import javax.imageio.stream.ImageInputStream;
+import javax.imageio.stream.ImageOutputStream;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.XYSeries;
@@ -18,6 +27,7 @@ import org.knowm.xchart.style.Styler;
 import org.knowm.xchart.style.markers.Marker;
 import org.knowm.xchart.style.markers.SeriesMarkers;
 import org.parpe.core.plot.PlotStyle;
+import org.w3c.dom.NodeList;
 
 /**
  * Every PNG plot of the command line ({@code --plot}, the sweep, optimisation and merge plots),
@@ -45,7 +55,9 @@ public final class PngCharts {
         s.setChartTitleFont(TITLE);
         s.setLegendFont(TEXT);
         s.setLegendPosition(Styler.LegendPosition.OutsideS);
-        s.setLegendLayout(Styler.LegendLayout.Horizontal);
+        // One entry a row: XChart 3.8.8's horizontal legend moves on from a dot's entry by less
+        // than it drew (a box's 20 px for a 24 px line), so a label ran into the next entry.
+        s.setLegendLayout(Styler.LegendLayout.Vertical);
         s.setLegendBorderColor(Color.WHITE);
         c.getStyler().setAxisTitleFont(TEXT);
         c.getStyler().setAxisTickLabelsFont(TEXT.deriveFont(12f));
@@ -93,7 +105,11 @@ public final class PngCharts {
         return s;
     }
 
-    /** Writes the panels one under the other as one PNG. */
+    /**
+     * Writes the panels one under the other as one PNG, whose {@code Title} text (the keyword of
+     * the W3C PNG specification, second edition, section 11.3.4.2) is the first panel's title, so that a file browser or a test can read what
+     * it shows without looking at it.
+     */
     public static void write(List<XYChart> panels, OutputStream out) throws IOException {
         int width = 0;
         int height = 0;
@@ -113,8 +129,53 @@ public final class PngCharts {
             top += c.getHeight();
         }
         g.dispose();
-        if (!ImageIO.write(img, "png", out)) {
-            throw new IOException("no PNG writer available");
+        writePng(img, panels.isEmpty() ? "" : panels.get(0).getTitle(), out);
+    }
+
+    /** The title a PNG written by {@link #write} carries, or {@code null} if it has none. */
+    public static String title(ImageInputStream png) throws IOException {
+        ImageReader r = ImageIO.getImageReadersByFormatName("png").next();
+        try {
+            r.setInput(png);
+            IIOMetadataNode root = (IIOMetadataNode) r.getImageMetadata(0).getAsTree(PNG_METADATA);
+            NodeList texts = root.getElementsByTagName("iTXtEntry");
+            for (int i = 0; i < texts.getLength(); i++) {
+                IIOMetadataNode t = (IIOMetadataNode) texts.item(i);
+                if (TITLE_KEY.equals(t.getAttribute("keyword"))) {
+                    return t.getAttribute("text");
+                }
+            }
+            return null;
+        } finally {
+            r.dispose();
+        }
+    }
+
+    private static final String PNG_METADATA = "javax_imageio_png_1.0";
+    private static final String TITLE_KEY = "Title";
+
+    /** Writes {@code img} as PNG with {@code title} as its (UTF-8: a file name may be any text) title. */
+    private static void writePng(BufferedImage img, String title, OutputStream out) throws IOException {
+        ImageWriter w = ImageIO.getImageWritersByFormatName("png").next();
+        try (ImageOutputStream ios = ImageIO.createImageOutputStream(out)) {
+            ImageWriteParam param = w.getDefaultWriteParam();
+            IIOMetadata meta = w.getDefaultImageMetadata(ImageTypeSpecifier.createFromRenderedImage(img), param);
+            IIOMetadataNode entry = new IIOMetadataNode("iTXtEntry");
+            entry.setAttribute("keyword", TITLE_KEY);
+            entry.setAttribute("compressionFlag", "FALSE");
+            entry.setAttribute("compressionMethod", "0");
+            entry.setAttribute("languageTag", "");
+            entry.setAttribute("translatedKeyword", "");
+            entry.setAttribute("text", title);
+            IIOMetadataNode text = new IIOMetadataNode("iTXt");
+            text.appendChild(entry);
+            IIOMetadataNode root = new IIOMetadataNode(PNG_METADATA);
+            root.appendChild(text);
+            meta.mergeTree(PNG_METADATA, root);
+            w.setOutput(ios);
+            w.write(null, new IIOImage(img, null, meta), param);
+        } finally {
+            w.dispose();
         }
     }
 

@@ -108,6 +108,23 @@ class BadInputTest {
         assertTrue(r.err().contains("unknown command 'rn' (did you mean 'run'?)"), r.err());
     }
 
+    /** Issue 31 item 3.8: {@code parpe NOSUCH --help} printed the general help and exited 0. */
+    @Test
+    void helpForAnUnknownCommandSaysItIsUnknown() {
+        for (String[] args : new String[][] {{"NOSUCH", "--help"}, {"--help", "NOSUCH"}, {"rn", "-h"}, {"help", "NOSUCH"}}) {
+            Result r = parpe(args);
+            assertEquals(2, r.code(), String.join(" ", args) + ": " + r.out() + r.err());
+            assertEquals("", r.out(), "no help printed for " + String.join(" ", args));
+            String word = args[0].startsWith("-") || args[0].equals("help") ? args[1] : args[0];
+            assertTrue(r.err().startsWith("parpe: unknown command '" + word + "'"), r.err());
+        }
+        assertTrue(parpe("rn", "--help").err().contains("(did you mean 'run'?)"));
+        assertTrue(parpe("NOSUCH", "--help").err().contains("commands are check, run,"));
+        Result option = parpe("run", "--help", "--no-such-option");
+        assertEquals(2, option.code(), option.out() + option.err());
+        assertTrue(option.err().contains("--no-such-option"), option.err());
+    }
+
     @Test
     void aRunWithoutDurationSaysHowItEnds() throws Exception {
         Result r = parpe("run", write("ends.xml", CliContractTest.GOOD.replace("sqrt(1 - $time)", "1")).toString());

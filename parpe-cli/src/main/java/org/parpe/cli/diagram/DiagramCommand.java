@@ -78,6 +78,10 @@ public final class DiagramCommand implements Callable<Integer> {
     @Option(names = "--out", required = true, paramLabel = "FILE", description = "The picture: FILE.svg or FILE.png.")
     String out;
 
+    @Option(names = "--width", paramLabel = "PIXELS", description = "For a .png: its width, within [" + ScenePng.MIN_SIDE
+            + ", " + ScenePng.MAX_SIDE + "]; the height follows (default: the diagram's own size; an SVG scales by itself).")
+    Integer width;
+
     @Spec
     CommandSpec spec;
 
@@ -91,6 +95,13 @@ public final class DiagramCommand implements Callable<Integer> {
         boolean png = lower.endsWith(".png");
         if (!png && !lower.endsWith(".svg")) {
             throw new UsageException("--out must name a .svg or .png file, got '" + out + "'");
+        }
+        if (width != null && !png) {
+            throw new UsageException("--width is for a .png file; an SVG scales to any size by itself");
+        }
+        if (width != null && (width < ScenePng.MIN_SIDE || width > ScenePng.MAX_SIDE)) {
+            throw new UsageException("--width must be within [" + ScenePng.MIN_SIDE + ", " + ScenePng.MAX_SIDE
+                    + "] pixels, got " + width);
         }
         if (view == View.gait) {
             ClockOptions.check(tick, duration);
@@ -114,7 +125,13 @@ public final class DiagramCommand implements Callable<Integer> {
             return 3;
         }
         if (png) {
-            target.write(o -> ImageIO.write(ScenePng.draw(scene), "png", o));
+            int w = width == null ? scene.width() : width;
+            long h = ScenePng.height(scene, w);
+            if (h > ScenePng.MAX_SIDE) {
+                throw new UsageException("--width " + w + " makes the " + view + " diagram " + h + " pixels high, more than "
+                        + ScenePng.MAX_SIDE + "; give a smaller --width");
+            }
+            target.write(o -> ImageIO.write(ScenePng.draw(scene, w), "png", o));
         } else {
             target.write(scene.svg());
         }

@@ -4,6 +4,7 @@ import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;
 import java.awt.Graphics2D;
+import java.awt.RenderingHints;
 import java.awt.geom.Arc2D;
 import java.awt.geom.Area;
 import java.awt.geom.Ellipse2D;
@@ -15,13 +16,28 @@ import org.parpe.core.diagram.Scene;
 
 /** Draws a {@link Scene} with Java2D on the command line's white {@link Canvas}, for PNG files. */
 final class ScenePng {
+    /** The smallest width of a picture, pixels. */
+    static final int MIN_SIDE = 16;
+    /** The largest width or height of a picture, pixels: 10 000 × 10 000 takes 400 MB to draw. */
+    static final int MAX_SIDE = 10_000;
+
     private ScenePng() {
     }
 
-    /** The scene as an image of its size. */
-    static BufferedImage draw(Scene scene) {
-        Canvas c = Canvas.white(scene.width(), scene.height());
+    /** The height of the scene drawn {@code width} pixels wide (at least 1). */
+    static long height(Scene scene, int width) {
+        return Math.max(1, Math.round((double) scene.height() * width / scene.width()));
+    }
+
+    /** The scene scaled to {@code width} pixels wide, its height in proportion ({@link #height}). */
+    static BufferedImage draw(Scene scene, int width) {
+        Canvas c = Canvas.white(width, (int) height(scene, width));
         Graphics2D g = c.graphics();
+        if (width != scene.width()) {
+            g.scale((double) width / scene.width(), (double) width / scene.width());
+            // glyph advances of the scaled size, not rounded to whole pixels of the scene's size
+            g.setRenderingHint(RenderingHints.KEY_FRACTIONALMETRICS, RenderingHints.VALUE_FRACTIONALMETRICS_ON);
+        }
         try {
             for (Scene.Shape s : scene.shapes()) {
                 if (s instanceof Scene.Rect r) {

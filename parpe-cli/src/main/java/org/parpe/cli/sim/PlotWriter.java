@@ -20,7 +20,8 @@ final class PlotWriter {
     static final int SAMPLES = 1000;
     private static final int MAX_PANELS = 8;
     private static final int WIDTH = 1200;
-    private static final int PANEL = 230;
+    /** A panel's height: its plot, axis titles and a legend of two rows. */
+    private static final int PANEL = 250;
 
     private final AngleRecorder data;
     private final double[] t;

@@ -3,6 +3,7 @@ package org.parpe.cli.sim;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
@@ -19,7 +20,6 @@ import org.parpe.sim.SimMetrics;
 import org.parpe.sim.SimTarget;
 import org.parpe.sim.Simulator;
 import org.parpe.sim.world.World;
-import org.parpe.sim.world.WorldScore;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -88,10 +88,8 @@ public final class RaceCommand implements Callable<Integer> {
             return 2;
         }
         // The standard robots all head towards +x: ranked by how far they got that way (in a world
-        // by score first).
-        entries.sort(Comparator.comparing((Entry e) -> e.metrics() == null)
-                .thenComparing(e -> e.metrics() == null || e.metrics().score() == null ? 0 : -e.metrics().score().score())
-                .thenComparing(e -> e.metrics() == null ? 0 : -e.metrics().dx()));
+        // by score first), as far as the table shows it; equal ones keep the command line's order.
+        entries.sort(Comparator.comparing((Entry e) -> e.metrics() == null).thenComparing(RaceCommand::shown, Arrays::compare));
         print(out, entries, scene != null);
         out.flush();
         return entries.stream().anyMatch(e -> e.metrics() == null) ? 1 : 0;
@@ -115,45 +113,43 @@ public final class RaceCommand implements Callable<Integer> {
         }
     }
 
+    /**
+     * What an entry is ranked by, as the table prints it (the score to 0.1, forwards to the
+     * millimetre), best first: entries equal in it tie.
+     */
+    private static double[] shown(Entry e) {
+        if (e.metrics() == null) {
+            return new double[0];
+        }
+        double score = e.metrics().score() == null ? 0 : e.metrics().score().score();
+        return new double[] {-printed("%.1f", score) + 0.0, -printed("%.3f", e.metrics().dx()) + 0.0}; // + 0.0: no -0
+    }
+
+    private static double printed(String format, double value) {
+        return Double.parseDouble(String.format(Locale.ROOT, format, value));
+    }
+
     private static void print(PrintWriter out, List<Entry> entries, boolean scored) {
         int width = Math.max(6, entries.stream().mapToInt(e -> e.script().length()).max().orElse(6));
         int robotWidth = Math.max(5, entries.stream().mapToInt(e -> e.robot().length()).max().orElse(5));
         String columns = "%-4s  %-" + width + "s  %-" + robotWidth + "s  %11s  %12s  %11s  %13s";
         out.println(String.format(Locale.ROOT, columns, "rank", "script", "robot", "forward (m)", "distance (m)",
                 "speed (m/s)", "max tilt (°)") + (scored ? String.format(Locale.ROOT, "  %10s  %s", "score", "parts") : ""));
-        int rank = 1;
-        for (Entry e : entries) {
+        int rank = 0;
+        for (int i = 0; i < entries.size(); i++) {
+            Entry e = entries.get(i);
+            // standard competition ranking: a tie shares its rank, the next skips (1, 1, 3)
+            rank = i > 0 && Arrays.equals(shown(e), shown(entries.get(i - 1))) ? rank : i + 1;
             if (e.metrics() == null) {
                 out.println(String.format(Locale.ROOT, "%-4s  %-" + width + "s  %-" + robotWidth + "s  %s", "-",
                         e.script(), e.robot(), e.problem()));
             } else {
                 out.println(String.format(Locale.ROOT, "%-4d  %-" + width + "s  %-" + robotWidth
-                        + "s  %11.3f  %12.3f  %11.4f  %13.1f", rank++, e.script(), e.robot(), e.metrics().dx(),
+                        + "s  %11.3f  %12.3f  %11.4f  %13.1f", rank, e.script(), e.robot(), e.metrics().dx(),
                         e.metrics().distance(), e.metrics().speed(), e.metrics().maxTiltDeg())
                         + (scored ? String.format(Locale.ROOT, "  %10.1f  %s", e.metrics().score().score(),
-                                parts(e.metrics().score())) : ""));
+                                e.metrics().score().inWords()) : ""));
             }
         }
-    }
-
-    /** The parts of a score that count, in words: "zone 31.2 s, path 1.40 m, 1 delivered, 2 presses, disqualified (tilt)". */
-    private static String parts(WorldScore s) {
-        List<String> p = new ArrayList<>();
-        if (!Double.isNaN(s.timeToZone())) {
-            p.add(String.format(Locale.ROOT, "zone %.1f s", s.timeToZone()));
-        }
-        if (s.pathDistance() > 0) {
-            p.add(String.format(Locale.ROOT, "path %.2f m", s.pathDistance()));
-        }
-        if (s.delivered() > 0) {
-            p.add(s.delivered() + " delivered");
-        }
-        if (s.presses() > 0) {
-            p.add(s.presses() + (s.presses() == 1 ? " press" : " presses"));
-        }
-        if (!s.disqualified().isEmpty()) {
-            p.add("disqualified (" + s.disqualified() + ")");
-        }
-        return p.isEmpty() ? "-" : String.join(", ", p);
     }
 }

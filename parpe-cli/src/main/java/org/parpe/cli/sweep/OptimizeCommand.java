@@ -9,6 +9,7 @@ import org.parpe.cli.OutputFile;
 import org.parpe.core.io.OutputPlan;
 import org.parpe.cli.UsageException;
 import org.parpe.core.lang.Numbers;
+import org.parpe.sim.sweep.Axis;
 import org.parpe.sim.sweep.Cancellation;
 import org.parpe.sim.sweep.Constraints;
 import org.parpe.sim.sweep.Evaluation;
@@ -20,6 +21,7 @@ import org.parpe.sim.sweep.Optimizer;
 import org.parpe.sim.sweep.ParameterDefaults;
 import org.parpe.sim.sweep.SweepException;
 import org.parpe.sim.sweep.SweepListener;
+import org.parpe.sim.sweep.SweepRow;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -91,19 +93,20 @@ public final class OptimizeCommand extends SimSweepCommand {
         if (result.evaluations().isEmpty()) {
             return 0;
         }
-        String title = file.getFileName() + " on " + options.sim + ": CMA-ES, " + result.evaluations().size()
+        String title = options.runsOf(file) + ": CMA-ES, " + result.evaluations().size()
                 + " simulations of " + Numbers.format(options.duration) + " s";
         if (cancel.cancelled()) {
             // AWT cannot start while the JVM shuts down (Ctrl-C): the script is written, the plot is not.
             err.println("parpe: interrupted: no convergence plot drawn");
-            return report(stdout, err, result, goal, ev, xml, null);
+            return report(stdout, err, result, optimizer.space().axes(), ev, xml, null);
         }
         png.write(o -> Plots.convergence(o, title, result));
-        return report(stdout, err, result, goal, ev, xml, png);
+        return report(stdout, err, result, optimizer.space().axes(), ev, xml, png);
     }
 
-    private int report(PrintWriter stdout, PrintWriter err, OptimizationResult result, Objective goal, Evaluator ev,
-                       OutputFile xml, OutputFile png) throws UsageException, SweepException {
+    private int report(PrintWriter stdout, PrintWriter err, OptimizationResult result, List<Axis> searched,
+                       Evaluator ev, OutputFile xml, OutputFile png) throws UsageException, SweepException {
+        Objective goal = result.objective();
         List<Evaluation> all = result.evaluations();
         Evaluation first = result.starts().get(0).isEmpty() ? null : result.starts().get(0).get(0);
         if (result.best().isEmpty()) {
@@ -123,14 +126,30 @@ public final class OptimizeCommand extends SimSweepCommand {
             stdout.println(String.format(Locale.ROOT, "the script's own values: %.4f%s", first.score(),
                     first.feasible() ? "" : " (misses a constraint)"));
         }
-        best.row().values().forEach((k, v) -> stdout.println("  " + k + " = " + Numbers.format(v)));
-        stdout.println(String.format(Locale.ROOT, "  (distance %.3f m, forward %.3f m, max tilt %.1f°, fell over: %s)",
-                best.row().distance(), best.row().forward(), best.row().maxTiltDeg(), best.row().fell() ? "yes" : "no"));
-        stdout.flush();
+        printBest(stdout, best.row(), searched);
         xml.write(ParameterDefaults.rewrite(file, ev.text(), ev.parameters(), best.row().values()));
         err.println("parpe: wrote " + xml + " (the best values as defaults)"
                 + (png == null ? "" : " and the convergence plot " + png));
         return 0;
+    }
+
+    /**
+     * The best run's values, each at an end of its range flagged (the best may lie beyond it),
+     * what the robot did and, in a world, the score's parts.
+     */
+    private static void printBest(PrintWriter stdout, SweepRow best, List<Axis> searched) {
+        for (Axis a : searched) {
+            double v = best.values().get(a.name());
+            String bound = a.atBound(v);
+            stdout.println("  " + a.name() + " = " + Numbers.format(v) + (bound.isEmpty() ? "" : "  (" + bound
+                    + ", its " + (v == a.hi() ? "max" : "min") + " in the script)"));
+        }
+        stdout.println(String.format(Locale.ROOT, "  (distance %.3f m, forward %.3f m, max tilt %.1f°, fell over: %s)",
+                best.distance(), best.forward(), best.maxTiltDeg(), best.fell() ? "yes" : "no"));
+        if (best.parts() != null) {
+            stdout.println("  (the score's parts: " + best.parts().inWords() + ")");
+        }
+        stdout.flush();
     }
 
     private static String sibling(Path file, String suffix) {

@@ -29,7 +29,8 @@ final class Plots {
     static final String FELL_NEVER_BEST = "fell over (never best)";
     static final String BEST = "best run at this value";
     private static final int WIDTH = 1000;
-    private static final int PANEL = 340;
+    /** A panel's height: its plot, axis titles and a legend of up to three rows. */
+    private static final int PANEL = 370;
 
     private Plots() {
     }
@@ -78,6 +79,10 @@ final class Plots {
 
     /** Every evaluation's score and the best feasible score so far, over the evaluations. */
     static void convergence(OutputStream out, String title, OptimizationResult result) throws IOException {
+        PngCharts.write(List.of(convergencePanel(title, result)), out);
+    }
+
+    static XYChart convergencePanel(String title, OptimizationResult result) {
         List<Evaluation> all = result.evaluations();
         double[] n = new double[all.size()];
         double[] feasible = new double[all.size()];
@@ -87,13 +92,13 @@ final class Plots {
             feasible[i] = all.get(i).feasible() ? all.get(i).score() : Double.NaN;
             misses[i] = all.get(i).feasible() ? Double.NaN : all.get(i).score();
         }
-        XYChart c = PngCharts.panel(WIDTH, PANEL + 40, title, "simulation", result.objective().label());
+        XYChart c = PngCharts.panel(WIDTH, PANEL + 20, title, "simulation", result.objective().label());
         PngCharts.points(c, "each simulation", n, feasible, PlotStyle.OTHER_RUN, false);
         PngCharts.points(c, "misses a constraint", n, misses, PlotStyle.MISSES, false);
         double[] best = result.bestSoFar();
         if (java.util.Arrays.stream(best).anyMatch(Double::isFinite)) {
             PngCharts.line(c, "best so far", n, best, Math.min(n.length, best.length), PlotStyle.BEST_SO_FAR);
         }
-        PngCharts.write(List.of(c), out);
+        return c;
     }
 }

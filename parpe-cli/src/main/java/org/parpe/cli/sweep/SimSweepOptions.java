@@ -54,6 +54,11 @@ public class SimSweepOptions {
         System.setProperty("parpe.cores", Integer.toString(Runtime.getRuntime().availableProcessors()));
     }
 
+    /** What every run is, for a plot's title: {@code snake.xml on snake:n=8 in race-track.xml}. */
+    String runsOf(Path file) {
+        return file.getFileName() + " on " + sim.trim() + (world == null ? "" : " in " + world.getFileName());
+    }
+
     /** The objective named by {@code --objective}; {@code score} needs {@code --world}. */
     Objective objective(String id) throws UsageException {
         return objective(id, world != null);

@@ -107,11 +107,11 @@ public final class SweepCommand extends SimSweepCommand {
             png = null;
         }
         if (png != null) {
-            String title = file.getFileName() + " on " + options.sim + ", " + Numbers.format(options.duration) + " s, "
+            String title = options.runsOf(file) + ", " + Numbers.format(options.duration) + " s, "
                     + result.rows().size() + " runs";
             png.write(o -> Plots.sweep(o, title, sweep.spec().axes(), result.rows(), goal, countFallen));
         }
-        summary(err, result, range[1] - range[0], goal, png);
+        summary(err, result, range[1] - range[0], goal, sweep.spec().axes(), png);
         return 0;
     }
 
@@ -184,7 +184,8 @@ public final class SweepCommand extends SimSweepCommand {
         return result;
     }
 
-    private void summary(PrintWriter err, SweepResult result, int expected, Objective goal, OutputFile png) {
+    private void summary(PrintWriter err, SweepResult result, int expected, Objective goal, List<Axis> axes,
+                         OutputFile png) {
         List<SweepRow> rows = result.rows();
         long failed = rows.stream().filter(r -> !r.ok()).count();
         long fell = rows.stream().filter(SweepRow::fell).count();
@@ -193,6 +194,12 @@ public final class SweepCommand extends SimSweepCommand {
         java.util.Optional<SweepRow> best = SweepResult.best(rows, goal, SweepResult.rule(countFallen));
         best.ifPresent(b -> err.println(String.format(Locale.ROOT, "parpe: best %s %.4f with %s (run %d%s)",
                 goal.id(), goal.of(b), values(b), b.point().index(), b.fell() ? ", fell over" : "")));
+        best.ifPresent(b -> axes.forEach(a -> {
+            String bound = a.atBound(b.values().get(a.name()));
+            if (!bound.isEmpty()) {
+                err.println("parpe: best " + a.name() + "=" + Numbers.format(b.values().get(a.name())) + " is " + bound);
+            }
+        }));
         if (best.isEmpty() && !rows.isEmpty()) {
             err.println("parpe: no best run: every run failed" + (countFallen ? "" : " or fell over (--count-fallen lets fallen runs count)"));
         }

@@ -85,6 +85,34 @@ class DiagramCommandTest {
         assertEquals(0xffffff, img.getRGB(300, 290) & 0xffffff, "the centre is empty");
     }
 
+    /**
+     * Issue 31 item 3.4: a PNG had only the diagram's own size. {@code --width} scales it; the
+     * height follows, and the picture is the same one, larger.
+     */
+    @Test
+    void widthScalesThePng(@TempDir Path dir) throws Exception {
+        Path out = dir.resolve("ring.png");
+        Cli r = Cli.run("diagram", "../examples/centipede-walk.xml", "--view", "ring", "--width", "1200", "--out",
+                out.toString());
+        assertEquals(0, r.code, r::toString);
+        BufferedImage big = ImageIO.read(out.toFile());
+        Path own = dir.resolve("own.png");
+        assertEquals(0, Cli.run("diagram", "../examples/centipede-walk.xml", "--view", "ring", "--out", own.toString()).code);
+        BufferedImage small = ImageIO.read(own.toFile());
+        assertEquals(1200, big.getWidth());
+        assertEquals(2 * small.getHeight(), big.getHeight());
+        // the first arc, where aPngHasTheSceneSizeAndIsDrawn finds it, twice as far out
+        assertEquals(0xe69f00, big.getRGB(2 * (300 + 100), 2 * (290 - 100)) & 0xffffff);
+        for (String[] bad : new String[][] {{"--width", "0", "x.png"}, {"--width", "20000", "x.png"},
+            {"--width", "800", "x.svg"}}) {
+            Cli refused = Cli.run("diagram", "../examples/centipede-walk.xml", "--view", "ring", bad[0], bad[1], "--out",
+                    dir.resolve(bad[2]).toString());
+            assertEquals(2, refused.code, refused::toString);
+            assertTrue(refused.err.startsWith("parpe: --width "), refused.err);
+            assertFalse(Files.exists(dir.resolve(bad[2])));
+        }
+    }
+
     @Test
     void badRequestsAreUsageErrorsThatWriteNothing(@TempDir Path dir) throws Exception {
         Path out = dir.resolve("x.svg");

@@ -11,6 +11,7 @@ import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYSeries;
+import org.knowm.xchart.style.Styler;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
@@ -60,6 +61,15 @@ class PlotWriterTest {
         assertEquals("time (s)", first.getXAxisTitle());
         assertEquals("angle (°)", first.getYAxisTitle());
         assertTrue(first.getTitle().startsWith("Joint angles over time"), first.getTitle());
+    }
+
+    /** Issue 31 item 3.3: "measured m0 (simulator)" ran into "commanded m0" (see PlotsTest). */
+    @Test
+    void theLegendHasOneEntryARow() throws Exception {
+        for (XYChart c : plot(true)) {
+            assertEquals(2, c.getSeriesMap().size());
+            assertEquals(Styler.LegendLayout.Vertical, c.getStyler().getLegendLayout(), c.getTitle());
+        }
     }
 
     @Test

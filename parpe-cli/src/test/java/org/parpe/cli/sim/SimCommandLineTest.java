@@ -124,6 +124,24 @@ class SimCommandLineTest {
         assertTrue(first >= second, "ranked by the forward distance: " + r.out());
     }
 
+    /**
+     * Issue 31 item 3.5: two scripts that went exactly as far were ranked 1 and 2. Ties share a
+     * rank and the next one skips (standard competition ranking, docs/decisions.md): 1, 1, 3.
+     */
+    @Test
+    void aTieSharesItsRank() throws Exception {
+        String snake = Files.readString(Path.of("../examples/hello-snake.xml"));
+        Path a = Files.writeString(dir.resolve("a.xml"), snake);
+        Path b = Files.writeString(dir.resolve("b.xml"), snake);
+        Path still = Files.writeString(dir.resolve("still.xml"), snake.replace("angles=\"30\"", "angles=\"0\"")
+                .replace("angles=\"-30\"", "angles=\"0\""));
+        Result r = cli("race", still.toString(), a.toString(), b.toString(), "--sim", "snake:n=8", "--duration", "3");
+        assertEquals(0, r.code(), r.err());
+        java.util.List<String> ranks = r.out().strip().lines().skip(1).map(l -> l.trim().split("\\s+")[0]
+                + " " + Path.of(l.trim().split("\\s+")[1]).getFileName()).toList();
+        assertEquals(java.util.List.of("1 a.xml", "1 b.xml", "3 still.xml"), ranks, r.out());
+    }
+
     @Test
     void eachScriptRacesOnItsOwnRobotAndTheRankIsByForwardDistance() {
         Result r = cli("race", "../examples/hello-snake.xml", "../examples/wheel.xml", "--duration", "5");

@@ -16,6 +16,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.parpe.cli.Cli;
+import org.parpe.cli.PngCharts;
 
 /**
  * The example worlds on the command line: each is deterministic (the same trace bit for bit,
@@ -99,6 +100,52 @@ class WorldCommandLineTest {
         double second = Double.parseDouble(lines.get(2).trim().split("\\s{2,}")[7]);
         assertTrue(first >= second, r.out);
         assertTrue(lines.get(1).contains("path"), r.out);
+    }
+
+    private static String pngTitle(Path png) throws IOException {
+        try (javax.imageio.stream.ImageInputStream in = javax.imageio.ImageIO.createImageInputStream(png.toFile())) {
+            return PngCharts.title(in);
+        }
+    }
+
+    /** Issue 31 item 3.1: the plots of a sweep and an optimisation in a world did not say which world. */
+    @Test
+    void theSweepAndConvergencePlotsInAWorldNameIt() throws IOException {
+        String[] world = {"--sim", "snake:n=8", "--world", WORLDS + "race-track.xml", "--duration", "1"};
+        List<String> sweep = new java.util.ArrayList<>(List.of("sweep", WORLDS + "race-track-snake.xml",
+                "--vary", "bend=30,40", "--out", tmp.resolve("s.csv").toString()));
+        sweep.addAll(List.of(world));
+        Cli s = Cli.run(sweep);
+        assertEquals(0, s.code, s.toString());
+        assertEquals("race-track-snake.xml on snake:n=8 in race-track.xml, 1 s, 2 runs", pngTitle(tmp.resolve("s.png")));
+        List<String> optimize = new java.util.ArrayList<>(List.of("optimize", WORLDS + "race-track-snake.xml",
+                "--budget", "3", "--starts", "1", "--out", tmp.resolve("o.xml").toString()));
+        optimize.addAll(List.of(world));
+        Cli o = Cli.run(optimize);
+        assertEquals(0, o.code, o.toString());
+        assertEquals("race-track-snake.xml on snake:n=8 in race-track.xml: CMA-ES, 3 simulations of 1 s",
+                pngTitle(tmp.resolve("o-convergence.png")));
+    }
+
+    /**
+     * Issue 31 item 3.2: {@code optimize --objective score} printed the score but not its parts,
+     * and said nothing when the best value lay at the end of the range searched (the best may lie
+     * beyond it). The script's own bend, 40, is its max here, and the first simulation.
+     */
+    @Test
+    void optimiseForScorePrintsTheScoresPartsAndFlagsAValueAtItsBound() throws IOException {
+        Path script = tmp.resolve("snake.xml");
+        String text = Files.readString(Path.of(WORLDS + "race-track-snake.xml"));
+        String bend = "<bend   value=\"40\"  min=\"0\"   max=\"80\"";
+        assertTrue(text.contains(bend), "the example's bend changed: adapt this test");
+        Files.writeString(script, text.replace(bend, "<bend   value=\"40\"  min=\"0\"   max=\"40\""));
+        Cli r = Cli.run("optimize", script.toString(), "--sim", "snake:n=8", "--world", WORLDS + "race-track.xml",
+                "--duration", "3", "--objective", "score", "--param", "period=1", "--param", "phase=0.2",
+                "--budget", "5", "--starts", "1");
+        assertEquals(0, r.code, r.toString());
+        assertTrue(r.out.contains("\n  bend = 40  (at its upper bound 40: widen the range, its max in the script)\n"),
+                r.out);
+        assertTrue(r.out.matches("(?s).*\n  \\(the score's parts: path \\d+\\.\\d\\d m\\)\n.*"), r.out);
     }
 
     @Test

@@ -96,6 +96,31 @@ class SweepCommandTest {
         assertTrue(r.err.contains("parpe: best forward-speed "), r.err);
     }
 
+    /**
+     * Issue 31 item 3.2: a best value at an end of its {@code --vary} range is flagged (the best
+     * may lie beyond it); one inside, or of a single value, is not.
+     */
+    @Test
+    void aBestValueAtAnEndOfItsRangeIsFlagged() {
+        Cli r = Cli.run(sweepArgs("-"));
+        assertEquals(0, r.code, r.err);
+        java.util.regex.Matcher best = java.util.regex.Pattern.compile("parpe: best forward-speed \\S+ with bend=(\\S+)"
+                + " period=(\\S+) \\(run").matcher(r.err);
+        assertTrue(best.find(), r.err);
+        String bend = best.group(1);
+        String period = best.group(2);
+        String bendFlag = "parpe: best bend=" + bend + " is at its " + (bend.equals("40") ? "upper" : "lower") + " bound "
+                + bend + ": widen the range";
+        assertEquals(!bend.equals("30"), r.err.contains(bendFlag), r.err);
+        assertEquals(bend.equals("30"), !r.err.contains("parpe: best bend="), r.err);
+        assertTrue(r.err.contains("parpe: best period=" + period + " is at its " + (period.equals("2") ? "upper" : "lower")
+                + " bound " + period + ": widen the range"), "the grid's period is 1 or 2: " + r.err);
+        Cli single = Cli.run("sweep", script.toString(), "--sim", "snake:n=6", "--duration", "1", "--vary", "bend=30",
+                "--out", "-");
+        assertEquals(0, single.code, single.err);
+        assertFalse(single.err.contains("bound"), "one value has no range to widen: " + single.err);
+    }
+
     @ParameterizedTest
     @CsvSource(delimiter = '|', value = {
         "bnd=1..2|parpe: --vary bnd=1..2: unknown parameter 'bnd' (did you mean 'bend'?); the script's parameters are bend, period, phase",

@@ -2,6 +2,7 @@ package org.parpe.sim.sweep;
 
 import java.util.List;
 import java.util.SplittableRandom;
+import org.parpe.core.lang.Numbers;
 
 /**
  * One varied parameter of a sweep.
@@ -58,6 +59,19 @@ public record Axis(String name, Kind kind, double lo, double hi, List<Double> va
     /** Any real number in {@code [lo, hi]}. */
     public static Axis continuous(String name, double lo, double hi) {
         return new Axis(name, Kind.CONTINUOUS, lo, hi, List.of());
+    }
+
+    /**
+     * What to say of a best {@code value} at one end of this axis ("at its upper bound 70: widen
+     * the range"), where the best may lie beyond it; empty inside the range, and for an axis of
+     * one value.
+     */
+    public String atBound(double value) {
+        if (lo == hi) {
+            return "";
+        }
+        String end = value == hi ? "upper" : value == lo ? "lower" : null;
+        return end == null ? "" : "at its " + end + " bound " + Numbers.format(value) + ": widen the range";
     }
 
     /** Whether a grid can enumerate this axis (everything but {@link Kind#CONTINUOUS}). */

@@ -185,7 +185,7 @@ public final class Evaluator implements PointRunner {
         return new SweepRow(point, time, m.distance(), m.dx(), time > 0 ? m.dx() / time : 0, m.speed(),
                 m.maxTiltDeg(), travel.total(), m.maxTiltDeg() > setup.fallTiltDeg(),
                 outcome.status() == RunOutcome.Status.ERROR ? outcome.message() : "",
-                m.score() == null ? Double.NaN : m.score().score());
+                m.score() == null ? Double.NaN : m.score().score(), m.score());
     }
 
     /**

@@ -10,6 +10,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.Set;
+import org.parpe.sim.world.WorldScore;
 
 /**
  * Private copies of the simulator's classes, one per worker thread. ODE4j keeps the random
@@ -21,15 +22,15 @@ import java.util.Set;
  * to it) are private; the script loader, the read script, the scheduler and the XML and
  * expression libraries come from the application's loader, one copy for every worker, which the
  * JIT compiles once. The worker speaks to its copy through a typed bridge: {@link PointRunner},
- * {@link RunSetup}, {@link Point}, {@link SweepRow} and {@link Cancellation} are the
- * application's classes on both sides ({@link #SHARED}). Loaders are kept for the next sweep
+ * {@link RunSetup}, {@link Point}, {@link SweepRow} (with its {@link WorldScore}) and
+ * {@link Cancellation} are the application's classes on both sides ({@link #SHARED}). Loaders are kept for the next sweep
  * (their classes stay compiled) and lent to one thread at a time.
  */
 final class Lanes {
     private static final ConcurrentLinkedQueue<ClassLoader> FREE = new ConcurrentLinkedQueue<>();
     /** The classes of the bridge: the application's own on both sides of a lane. */
     static final Set<String> SHARED = Set.of(PointRunner.class.getName(), RunSetup.class.getName(),
-            Point.class.getName(), SweepRow.class.getName(), Cancellation.class.getName());
+            Point.class.getName(), SweepRow.class.getName(), WorldScore.class.getName(), Cancellation.class.getName());
 
     private Lanes() {
     }

@@ -40,6 +40,11 @@ public final class SearchSpace {
         return parameters;
     }
 
+    /** Each searched parameter as the axis it is searched over: its {@code min} to its {@code max}. */
+    public List<Axis> axes() {
+        return parameters.stream().map(p -> Axis.continuous(p.name(), p.min(), p.max())).toList();
+    }
+
     /** The number of searched parameters. */
     public int dimension() {
         return parameters.size();

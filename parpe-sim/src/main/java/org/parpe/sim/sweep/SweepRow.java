@@ -1,6 +1,7 @@
 package org.parpe.sim.sweep;
 
 import java.util.Map;
+import org.parpe.sim.world.WorldScore;
 
 /**
  * The result of one simulated run: its {@link Point} and what the robot did.
@@ -18,10 +19,19 @@ import java.util.Map;
  * @param error          the run-time error (or the reason the run could not start), empty if none;
  *                       the numbers are NaN when the run could not start
  * @param score          the world's score of the run, NaN without a world
+ * @param parts          the score's parts, null without a world or where only the score is
+ *                       known (a row read back from a CSV file)
  */
 public record SweepRow(Point point, double duration, double distance, double forward, double forwardSpeed,
                        double speed, double maxTiltDeg, double jointTravelDeg, boolean fell, String error,
-                       double score) {
+                       double score, WorldScore parts) {
+
+    /** A row whose score is known without its parts. */
+    public SweepRow(Point point, double duration, double distance, double forward, double forwardSpeed,
+                    double speed, double maxTiltDeg, double jointTravelDeg, boolean fell, String error, double score) {
+        this(point, duration, distance, forward, forwardSpeed, speed, maxTiltDeg, jointTravelDeg, fell, error, score,
+                null);
+    }
 
     /** A row of a run on the flat floor (no score). */
     public SweepRow(Point point, double duration, double distance, double forward, double forwardSpeed,

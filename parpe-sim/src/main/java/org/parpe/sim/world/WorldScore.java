@@ -1,5 +1,7 @@
 package org.parpe.sim.world;
 
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
 
 /**
@@ -16,6 +18,34 @@ import java.util.Locale;
  */
 public record WorldScore(double score, double timeToZone, double pathDistance, int checkpoints, int delivered,
                          int presses, String disqualified) {
+
+    /**
+     * The parts that count, in words, as {@code parpe race} and {@code parpe optimize} print them:
+     * "zone 31.2 s, path 1.40 m, 2 checkpoints, 1 delivered, 2 presses, disqualified (tilt)", or
+     * "-" when none does.
+     */
+    public String inWords() {
+        List<String> p = new ArrayList<>();
+        if (!Double.isNaN(timeToZone)) {
+            p.add(String.format(Locale.ROOT, "zone %.1f s", timeToZone));
+        }
+        if (pathDistance > 0) {
+            p.add(String.format(Locale.ROOT, "path %.2f m", pathDistance));
+        }
+        if (checkpoints > 0) {
+            p.add(checkpoints + (checkpoints == 1 ? " checkpoint" : " checkpoints"));
+        }
+        if (delivered > 0) {
+            p.add(delivered + " delivered");
+        }
+        if (presses > 0) {
+            p.add(presses + (presses == 1 ? " press" : " presses"));
+        }
+        if (!disqualified.isEmpty()) {
+            p.add("disqualified (" + disqualified + ")");
+        }
+        return p.isEmpty() ? "-" : String.join(", ", p);
+    }
 
     /** The score's fields as JSON members (without braces), to add to the simulator's metrics. */
     public String jsonMembers() {
