@@ -35,15 +35,21 @@ final class Rings {
 
     /** How many times larger than at scale 1 the text is. */
     private final double t;
-    /** Where the labels start: under the title and the IDE's live line (at 50). */
+    /** Where the labels start: under the title and the IDE's live line (at 50 × the text scale). */
     private final double top;
     /** The wheel's centre: under its three lines of text. */
     private final double wheelY;
+    /** How wide a column of the ring's labels is: wider for larger text, so that it says more than "…". */
+    private final double columnRoom;
+    /** The ring's centre: the columns of labels beside it. */
+    private final double ringX;
 
     Rings(double textScale) {
         t = Math.max(1, textScale);
         top = 64 * t;
         wheelY = 68 * t + 62 + R;
+        columnRoom = 180 + 110 * (t - 1);
+        ringX = COLUMN + 10 + columnRoom;
     }
 
     Scene ring(Ring r) {
@@ -55,7 +61,7 @@ final class Rings {
             right.clear();
             for (Ring.Arc a : r.arcs()) {
                 double mid = (a.from() + a.to()) / 2;
-                double[] at = Scene.onCircle(CX, CY, R1 + 30, mid);
+                double[] at = Scene.onCircle(ringX, CY, R1 + 30, mid);
                 (mid < 0.5 ? right : left).add(new Labels.Block(lines(a, compact), at[1], a));
             }
             double room = CY + R1 + 20 - top;
@@ -66,26 +72,26 @@ final class Rings {
         }
         double bottom = Math.max(Labels.stack(left, top, CY + R1 + 20, GAP * t), Labels.stack(right, top, CY + R1 + 20, GAP * t));
         double caption = Math.max(CY + R1 + 30 + 14 * t, bottom + 24 * t);
-        Scene sc = new Scene(Layouts.width(WIDTH, r.islands()), (int) (caption + 50 + r.islands().size() * 18));
+        Scene sc = new Scene(Layouts.width((int) Math.ceil(2 * ringX), r.islands()), (int) (caption + 50 + r.islands().size() * 18));
         sc.add(new Scene.Text(20, 28 * t, (r.table() ? "gait table " : "automaton ") + r.automaton(), 15 * t, -1, INK, true));
         for (Ring.Arc a : r.arcs()) {
-            sc.add(new Scene.Sector(CX, CY, R0, R1, a.from(), a.to(), PALETTE[a.index() % PALETTE.length], 0xffffff, a.pos()));
-            double[] e0 = Scene.onCircle(CX, CY, R1 + 6, a.to());
-            double[] e1 = Scene.onCircle(CX, CY, R0 - 6, a.to());
+            sc.add(new Scene.Sector(ringX, CY, R0, R1, a.from(), a.to(), PALETTE[a.index() % PALETTE.length], 0xffffff, a.pos()));
+            double[] e0 = Scene.onCircle(ringX, CY, R1 + 6, a.to());
+            double[] e1 = Scene.onCircle(ringX, CY, R0 - 6, a.to());
             sc.add(new Scene.Line(e0[0], e0[1], e1[0], e1[1], INK, 2, 0));
         }
         for (Labels.Block b : right) {
-            leader(sc, (Ring.Arc) b.key, b, CX + COLUMN - 4);
-            b.draw(sc, CX + COLUMN, -1);
+            leader(sc, (Ring.Arc) b.key, b, ringX + COLUMN - 4);
+            b.draw(sc, ringX + COLUMN, -1);
         }
         for (Labels.Block b : left) {
-            leader(sc, (Ring.Arc) b.key, b, CX - COLUMN + 4);
-            b.draw(sc, CX - COLUMN, 1);
+            leader(sc, (Ring.Arc) b.key, b, ringX - COLUMN + 4);
+            b.draw(sc, ringX - COLUMN, 1);
         }
-        sc.add(new Scene.Text(CX, CY - 6 * t, "one cycle", 12 * t, 0, GREY, false));
-        sc.add(new Scene.Text(CX, CY + 14 * t, cycle(r), 15 * t, 0, INK, true));
-        sc.add(new Scene.Text(CX, caption, Labels.fit("states clockwise from the top, each arc as long as the state lasts",
-                12 * t, false, WIDTH - 40), 12 * t, 0, GREY, false));
+        sc.add(new Scene.Text(ringX, CY - 6 * t, "one cycle", 12 * t, 0, GREY, false));
+        sc.add(new Scene.Text(ringX, CY + 14 * t, cycle(r), 15 * t, 0, INK, true));
+        sc.add(new Scene.Text(ringX, caption, Labels.fit("states clockwise from the top, each arc as long as the state lasts",
+                12 * t, false, 2 * ringX - 40), 12 * t, 0, GREY, false));
         Layouts.islands(sc, r.islands(), caption + 30);
         return sc;
     }
@@ -96,14 +102,14 @@ final class Rings {
 
     /** A thin line from the middle of {@code a}'s arc to its label. */
     private void leader(Scene sc, Ring.Arc a, Labels.Block b, double x) {
-        double[] p = Scene.onCircle(CX, CY, R1 + 2, (a.from() + a.to()) / 2);
+        double[] p = Scene.onCircle(ringX, CY, R1 + 2, (a.from() + a.to()) / 2);
         double y = b.top + b.lines.get(0).size() * Labels.LINE / 2 + 2;
         sc.add(new Scene.Line(p[0], p[1], x, y, PALETTE[a.index() % PALETTE.length], 1.5, 0));
     }
 
     /** The label of a state: its name, how long it lasts, its angles and its exit, in words. */
     private List<Labels.Line> lines(Ring.Arc a, boolean compact) {
-        double room = CX - COLUMN - 10;
+        double room = columnRoom;
         String lasts = "lasts " + (Double.isNaN(a.seconds()) ? a.duration() : Numbers.format(a.seconds())) + " s";
         List<Labels.Line> out = new ArrayList<>();
         if (compact) {

@@ -264,6 +264,7 @@ public final class IdeWindow implements HardwareHost {
         org.parpe.gui.panels.Zoom.apply(log, org.eclipse.jface.resource.JFaceResources.getTextFont(), zoom);
         gaitGrid.zoom(zoom);
         org.parpe.gui.panels.ChartView.zoomAll(zoom);
+        diagram.zoom(zoom);
         status.setMessage(zoom == 0 ? "Text at its normal size (Ctrl+0)" : "Text " + (zoom > 0 ? "+" : "") + zoom * 2
                 + " points (View > Zoom In, Ctrl+plus; Zoom Out, Ctrl+minus; Reset Zoom, Ctrl+0)");
     }

@@ -114,7 +114,7 @@ public final class DiagramPane {
         canvas.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
         showFields();
         freeNodes = new FreeNodes(this, canvas, places);
-        canvas.control().addListener(SWT.Resize, e -> resized());
+        canvas.control().addListener(SWT.Resize, e -> laidOutAgain());
         canvas.control().addListener(SWT.MouseDown, e -> {
             dragged = e.button == 1 ? movable(e.x, e.y) : null;
             dragFrom = e.button == 1 && (wheel() != null || dragged != null) ? new Point(e.x, e.y) : null;
@@ -264,7 +264,7 @@ public final class DiagramPane {
     /**
      * {@code p} with its ring or wheel laid out with text large enough to read on the canvas as
      * it is now: the canvas would otherwise make small text larger where it lies, and labels laid
-     * out apart would meet. A few rounds, as larger text can make the drawing taller.
+     * out apart would meet. A few rounds, as larger text makes the drawing larger.
      */
     private Projection readable(Projection p) {
         textScale = 1;
@@ -272,7 +272,7 @@ public final class DiagramPane {
             return p;
         }
         Projection out = p;
-        for (int round = 0; round < 4; round++) {
+        for (int round = 0; round < 8; round++) {
             double need = canvas.textScale(out.scene(), org.parpe.core.diagram.Layouts.RING_TEXT);
             if (need <= textScale * 1.001) {
                 break;
@@ -283,8 +283,18 @@ public final class DiagramPane {
         return out;
     }
 
-    /** The canvas changed size: the ring or the wheel is laid out again for it. */
-    private void resized() {
+    /**
+     * The drawing's smallest text is {@code steps} × 2 points larger than normal (the window's
+     * zoom, {@link org.parpe.gui.panels.Zoom}): other text grows to it, and the ring and the wheel
+     * are laid out again so that their labels stay apart.
+     */
+    public void zoom(int steps) {
+        canvas.zoom(org.parpe.gui.panels.Zoom.factor(box.getDisplay().getSystemFont(), steps));
+        laidOutAgain();
+    }
+
+    /** The canvas changed size or the zoom: the ring or the wheel is laid out again for it. */
+    private void laidOutAgain() {
         if (shown != null && (shown.ring() != null || shown.wheel() != null) && shown.scene() != null) {
             double before = textScale;
             Projection p = readable(shown.withTextScale(1));
@@ -677,8 +687,8 @@ public final class DiagramPane {
         }
         liveProgress = new double[f.instance().length];
         marks.addAll(RingProgress.marks(ring, shown.scene(), f, automata, liveProgress));
-        // under the ring's title (at 28), not beside it: the two meet when the labels are kept large on a short canvas
-        marks.add(new org.parpe.core.diagram.Scene.Text(shown.scene().width() - 12, 50, liveWhat + ": tick " + f.tick()
+        // under the ring's title, not beside it, and as much lower as the ring's text is larger ({@link #readable})
+        marks.add(new org.parpe.core.diagram.Scene.Text(shown.scene().width() - 12, 50 * textScale, liveWhat + ": tick " + f.tick()
                 + " (dark band: modules in the state; dots: each module's progress)", 11, 1, 0x222222, false));
         liveMarks = marks;
         repaintOverlay();

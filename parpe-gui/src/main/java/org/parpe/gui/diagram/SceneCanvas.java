@@ -19,7 +19,8 @@ import org.parpe.core.diagram.Scene;
 /**
  * Draws a {@link Scene} with SWT, as the SVG and PNG back ends draw it for files, scaled down to
  * fit the canvas (never up) and centred, its empty bottom left out and no text smaller than
- * {@link #MIN_TEXT_PX} on screen (so that a short canvas still has readable labels); the shapes that stand for a place in the script are
+ * {@link #MIN_TEXT_PX} on screen (so that a short canvas still has readable labels; the window's
+ * zoom makes that floor larger); the shapes that stand for a place in the script are
  * what a click hits, and the selected place is outlined. UI thread only.
  */
 final class SceneCanvas {
@@ -42,6 +43,8 @@ final class SceneCanvas {
     private SourcePos selected;
     private List<Scene.Shape> overlay = List.of();
     private long paints;
+    /** The window's zoom: the smallest text is {@link #MIN_TEXT_PX} times this. */
+    private double zoom = 1;
     /** Where the scene's texts were drawn last, in canvas pixels, with their text. */
     private final List<Map.Entry<org.eclipse.swt.graphics.Rectangle, String>> drawnTexts = new java.util.ArrayList<>();
     private boolean recording;
@@ -98,10 +101,17 @@ final class SceneCanvas {
 
     /**
      * How many times larger than {@code size} text of {@code s} must be made so that, drawn on the
-     * canvas as it is now, it is {@link #MIN_TEXT_PX} high or more (at least 1).
+     * canvas as it is now, it is {@link #MIN_TEXT_PX} high, zoomed, or more (at least 1).
      */
     double textScale(Scene s, double size) {
-        return Math.max(1, MIN_TEXT_PX / (size * scale(s, used(s))));
+        return Math.max(1, MIN_TEXT_PX * zoom / (size * scale(s, used(s))));
+    }
+
+    /** Makes the smallest text on screen {@code factor} times {@link #MIN_TEXT_PX} (the window's zoom). */
+    void zoom(double factor) {
+        zoom = factor;
+        dropCache();
+        canvas.redraw();
     }
 
     /** The height of {@code s} down to its lowest shape and {@link #BELOW} more, at most its own height. */
@@ -244,7 +254,7 @@ final class SceneCanvas {
                 (float) f[0], 0, 0, (float) f[0], (float) f[1], (float) f[2]);
         try {
             gc.setTransform(t);
-            textFloor = MIN_TEXT_PX / f[0];
+            textFloor = MIN_TEXT_PX * zoom / f[0];
             draw.accept(gc);
         } finally {
             gc.setTransform(null);

@@ -100,6 +100,37 @@ class RingAndWheelGuiTest {
         IdeAccess.screenshot(ide.shell(), "wheel-large.png");
     }
 
+    private void viewMenu(String item) {
+        var view = java.util.Arrays.stream(ide.shell().getMenuBar().getItems()).filter(i -> i.getText().equals("&View"))
+                .findFirst().orElseThrow().getMenu();
+        java.util.Arrays.stream(view.getItems()).filter(i -> i.getText().replace("&", "").startsWith(item)).findFirst()
+                .orElseThrow().notifyListeners(SWT.Selection, new org.eclipse.swt.widgets.Event());
+        IdeAccess.settle();
+    }
+
+    private static int smallest(List<Map.Entry<Rectangle, String>> texts) {
+        return texts.stream().mapToInt(e -> e.getKey().height).min().orElseThrow();
+    }
+
+    @Test
+    void viewZoomInMakesTheDiagramsTextLargerAndItsLabelsStillMeetNoOther() throws Exception {
+        DiagramPane pane = open(1366, 768);
+        DiagramWindow.show(ide, View.RING, "step");
+        int normal = smallest(painted(pane));
+        for (int i = 0; i < 4; i++) {
+            viewMenu("Zoom In");
+        }
+        var ring = painted(pane);
+        assertTrue(smallest(ring) >= normal * 3 / 2, "the smallest text grew from " + normal + " to " + smallest(ring) + " px");
+        noOverlap(ring);
+        IdeAccess.screenshot(ide.shell(), "ring-zoomed-1366x768.png");
+        DiagramWindow.show(ide, View.PHASE, "walk #1: swing on rightSwing");
+        noOverlap(painted(pane));
+        viewMenu("Reset Zoom");
+        DiagramWindow.show(ide, View.RING, "step");
+        assertEquals(normal, smallest(painted(pane)), "Reset Zoom: the text is as it was");
+    }
+
     /** Where the dragged hand points, as a fraction of a turn from the top, clockwise. */
     private static double handAt(DiagramPane pane) {
         double[] c = null;
