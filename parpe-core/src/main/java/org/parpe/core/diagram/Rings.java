@@ -204,10 +204,12 @@ final class Rings {
             double[] h = Scene.onCircle(CX, wheelY, R - 40, f);
             sc.add(new Scene.Line(CX, wheelY, h[0], h[1], colour, 2, 0));
             double[] l = Scene.onCircle(CX, wheelY, (R - 40) / 2, f);
-            // beside the hand's middle, on the side away from it
-            boolean rightOf = Math.cos(2 * Math.PI * f) >= 0;
-            labels.add(0, new Scene.Text(l[0] + (rightOf ? 8 : -8), l[1] - 6, "phase " + brief(w.phase()), 12 * t,
-                    rightOf ? -1 : 1, colour, true));
+            // beside the hand's middle, clockwise of it, running away from the line rather than across it
+            double nx = Math.cos(2 * Math.PI * f);
+            double ny = Math.sin(2 * Math.PI * f);
+            double size = 12 * t;
+            labels.add(new Scene.Text(l[0] + 8 * nx, l[1] + 8 * ny + (0.35 + 0.45 * ny) * size, "phase " + brief(w.phase()),
+                    size, nx >= -1e-9 ? -1 : 1, colour, true));
         }
     }
 

@@ -303,8 +303,6 @@ public final class DiagramPane {
                 canvas.show(p.scene());
                 canvas.select(selected);
                 repaintOverlay();
-            } else {
-                textScale = before;
             }
         }
     }
