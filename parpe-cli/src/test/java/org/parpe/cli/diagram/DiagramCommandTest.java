@@ -79,10 +79,10 @@ class DiagramCommandTest {
         Cli r = Cli.run("diagram", "../examples/centipede-walk.xml", "--view", "ring", "--out", out.toString());
         assertEquals(0, r.code, r::toString);
         BufferedImage img = ImageIO.read(out.toFile());
-        assertEquals(600, img.getWidth());
-        // the first arc (reach, orange 0xe69f00) lies right of the top of the ring
-        assertEquals(0xe69f00, img.getRGB(300 + 100, 290 - 100) & 0xffffff);
-        assertEquals(0xffffff, img.getRGB(300, 290) & 0xffffff, "the centre is empty");
+        assertEquals(760, img.getWidth());
+        // the first arc (reach, orange 0xe69f00) lies right of the top of the ring, centred at (380, 290)
+        assertEquals(0xe69f00, img.getRGB(380 + 100, 290 - 100) & 0xffffff);
+        assertEquals(0xffffff, img.getRGB(380 - 60, 290 + 60) & 0xffffff, "inside the band, beside the words, is empty");
     }
 
     /**

@@ -1,7 +1,6 @@
 package org.parpe.core.diagram;
 
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Locale;
@@ -196,133 +195,42 @@ public final class Layouts {
         return d == null ? fallback : d;
     }
 
-    /** The automaton ring: each state an arc proportional to its duration, exits on the edges. */
+    /**
+     * The automaton ring: each state an arc proportional to its duration, exits on the edges,
+     * each state named beside the ring with how long it lasts, its angles and its exit.
+     */
     public static Scene ring(Ring r) {
-        double cx = 300;
-        double cy = 290;
-        double r0 = 110;
-        double r1 = 170;
-        Scene sc = new Scene(width(600, r.islands()), (int) (600 + r.islands().size() * 18));
-        sc.add(new Scene.Text(20, 28, (r.table() ? "gait table " : "automaton ") + r.automaton(), 15, -1, INK, true));
-        // under the ring: the IDE writes its live line under the title
-        sc.add(new Scene.Text(cx, cy + r1 + 56, "states clockwise from the top" + (r.group() == null ? ""
-                : "; inside, each state's pose of group " + r.group()), 11, 0, GREY, false));
-        for (Ring.Arc a : r.arcs()) {
-            sc.add(new Scene.Sector(cx, cy, r0, r1, a.from(), a.to(), PALETTE[a.index() % PALETTE.length], 0xffffff, a.pos()));
-            double[] p = Scene.onCircle(cx, cy, (r0 + r1) / 2, (a.from() + a.to()) / 2);
-            sc.add(new Scene.Text(p[0], p[1] - 2, a.state(), 13, 0, INK, true));
-            sc.add(new Scene.Text(p[0], p[1] + 14, "T = " + a.duration(), 11, 0, INK, false));
-            String angles = String.join(", ", a.angles());
-            sc.add(new Scene.Text(p[0], p[1] + 27, (angles.length() > 22 ? angles.substring(0, 21) + "…" : angles) + "°", 10, 0,
-                    0x444444, false));
-            double[] e0 = Scene.onCircle(cx, cy, r1 + 6, a.to());
-            double[] e1 = Scene.onCircle(cx, cy, r0 - 6, a.to());
-            sc.add(new Scene.Line(e0[0], e0[1], e1[0], e1[1], INK, 2, 0));
-            if (a.exit() != null) {
-                double[] q = Scene.onCircle(cx, cy, r1 + 26, a.to());
-                sc.add(new Scene.Text(q[0], q[1] + 4, "exit when " + a.exit(), 11, q[0] < cx - 5 ? 1 : q[0] > cx + 5 ? -1 : 0,
-                        RED, true));
-            }
-            if (r.group() != null) {
-                // between the centre's ΣT and the band the IDE's live overlay draws just inside the ring
-                pose(sc, r, a, Scene.onCircle(cx, cy, r0 - 52, (a.from() + a.to()) / 2), 2 * Math.PI * (r0 - 52) / r.arcs().size());
-            }
-        }
-        double total = 0;
-        boolean known = true;
-        for (Ring.Arc a : r.arcs()) {
-            known &= !Double.isNaN(a.seconds());
-            total += Double.isNaN(a.seconds()) ? 0 : Math.max(0, a.seconds());
-        }
-        sc.add(new Scene.Text(cx, cy + 5, known ? "ΣT = " + Numbers.format(Math.round(total * 1000) / 1000.0) + " s" : "ΣT varies",
-                13, 0, GREY, false));
-        islands(sc, r.islands(), 560);
-        return sc;
+        return ring(r, 1);
     }
 
     /**
-     * The pose of {@code a}'s state centred on {@code at}: a chain of at most 40 px (narrower
-     * when the states are many), module 0 a dot of the state's colour, "…" after the last posed
-     * module of a longer group; the angles' text when they are known only while running.
+     * {@link #ring(Ring)} with text {@code textScale} (at least 1) times as large, laid out again
+     * so that no label meets another: for a screen where the drawing is shrunk to fit.
      */
-    private static void pose(Scene sc, Ring r, Ring.Arc a, double[] at, double room) {
-        if (a.pose().isEmpty()) {
-            String angles = String.join(", ", a.angles());
-            sc.add(new Scene.Text(at[0], at[1] + 4, angles.length() > 12 ? angles.substring(0, 11) + "…" : angles, 9, 0, GREY,
-                    false));
-            return;
-        }
-        double length = Math.max(12, Math.min(40, 0.7 * room));
-        double[][] p = a.chain(length / a.pose().size());
-        double minX = 0;
-        double maxX = 0;
-        double minY = 0;
-        double maxY = 0;
-        for (double[] q : p) {
-            minX = Math.min(minX, q[0]);
-            maxX = Math.max(maxX, q[0]);
-            minY = Math.min(minY, q[1]);
-            maxY = Math.max(maxY, q[1]);
-        }
-        double dx = at[0] - (minX + maxX) / 2;
-        double dy = at[1] - (minY + maxY) / 2;
-        for (int i = 0; i + 1 < p.length; i++) {
-            sc.add(new Scene.Line(p[i][0] + dx, p[i][1] + dy, p[i + 1][0] + dx, p[i + 1][1] + dy, INK, 2, 0));
-        }
-        sc.add(new Scene.Sector(p[0][0] + dx, p[0][1] + dy, 0, 3, 0, 1, PALETTE[a.index() % PALETTE.length], INK, null));
-        if (r.modules() > a.pose().size()) {
-            double[] end = p[p.length - 1];
-            sc.add(new Scene.Text(end[0] + dx + 2, end[1] + dy + 4, "…", 10, -1, GREY, false));
-        }
+    public static Scene ring(Ring r, double textScale) {
+        return new Rings(textScale).ring(r);
     }
 
-    /** The phase wheel: a tick per module at its phase delay, module numbers outside. */
+    /** The phase wheel: a tick per module at its phase delay, numbered by position; the hand to position 1's tick. */
     public static Scene wheel(PhaseWheel w) {
-        double cx = 300;
-        double cy = 300;
-        double r = 170;
-        Scene sc = new Scene(width(600, w.islands()), (int) (620 + w.islands().size() * 18));
-        sc.add(new Scene.Text(20, 28, w.automaton() + " on " + w.group(), 15, -1, INK, true));
-        sc.add(new Scene.Text(20, 48, "phase " + Numbers.format(w.phase()) + ", offset " + Numbers.format(w.offset())
-                + ": module i lags by offset + i·phase cycles", 12, -1, GREY, false));
-        sc.add(new Scene.Sector(cx, cy, r - 1, r + 1, 0, 1, INK, Scene.NONE, null));
-        for (int k = 0; k < 4; k++) {
-            double[] p = Scene.onCircle(cx, cy, r - 22, k / 4.0);
-            sc.add(new Scene.Text(p[0], p[1] + 4, Numbers.format(k / 4.0), 10, 0, GREY, false));
-        }
-        int n = w.ticks().size();
-        Map<Long, List<PhaseWheel.Tick>> byDelay = new LinkedHashMap<>();
-        for (PhaseWheel.Tick t : w.ticks()) {
-            double[] a = Scene.onCircle(cx, cy, r - 10, t.delay());
-            double[] b = Scene.onCircle(cx, cy, r + 14, t.delay());
-            int c = t.position() == 0 ? RED : PALETTE[4];
-            sc.add(new Scene.Line(a[0], a[1], b[0], b[1], c, t.position() == 0 ? 3 : 2, 0));
-            byDelay.computeIfAbsent(Math.round(t.delay() * 1e6), k -> new ArrayList<>()).add(t);
-        }
-        // modules at one delay share one label; with many delays only every few are named
-        int every = Math.max(1, (int) Math.ceil(byDelay.size() / 36.0));
-        int k = 0;
-        for (List<PhaseWheel.Tick> same : byDelay.values()) {
-            PhaseWheel.Tick t = same.get(0);
-            if (k++ % every != 0 && t.position() != 0) {
-                continue;
-            }
-            String ids = same.size() <= 3 ? String.join(", ", same.stream().map(u -> Integer.toString(u.module())).toList())
-                    : same.get(0).module() + ", " + same.get(1).module() + " … " + same.get(same.size() - 1).module()
-                    + " (" + same.size() + ")";
-            double[] l = Scene.onCircle(cx, cy, r + 34, t.delay());
-            int anchor = l[0] < cx - 5 ? 1 : l[0] > cx + 5 ? -1 : 0;
-            sc.add(new Scene.Text(l[0], l[1] + 4, ids, 11, anchor, t.position() == 0 ? RED : PALETTE[4], t.position() == 0));
-        }
-        if (n > 1 && Math.abs(w.ticks().get(1).delay() - w.ticks().get(0).delay()) > 1e-9) {
-            double[] h = Scene.onCircle(cx, cy, r - 40, w.ticks().get(1).delay());
-            double[] z = Scene.onCircle(cx, cy, r - 40, w.ticks().get(0).delay());
-            sc.add(new Scene.Line(cx, cy, z[0], z[1], GREY, 1, 4));
-            sc.add(new Scene.Line(cx, cy, h[0], h[1], RED, 2, 0));
-            sc.add(new Scene.Text(h[0], h[1] - 6, "phase", 11, 0, RED, true));
-        }
-        islands(sc, w.islands(), 600);
-        return sc;
+        return wheel(w, 1);
+    }
+
+    /** {@link #wheel(PhaseWheel)} with text {@code textScale} (at least 1) times as large, as {@link #ring(Ring, double)}. */
+    public static Scene wheel(PhaseWheel w, double textScale) {
+        return new Rings(textScale).wheel(w);
+    }
+
+    /** The size of the smallest text of {@link #ring} and {@link #wheel} at text scale 1. */
+    public static final double RING_TEXT = Rings.SMALLEST;
+
+    /**
+     * The ticks and the hand of {@code w} in the places of {@link #wheel}'s, in another colour:
+     * drawn over the wheel while its hand is dragged, {@code w} having the phase it would set
+     * ({@link PhaseWheel#withPhase}), {@code textScale} as the wheel was drawn with.
+     */
+    public static List<Scene.Shape> wheelPreview(PhaseWheel w, double textScale) {
+        return new Rings(textScale).preview(w);
     }
 
     /**
@@ -407,7 +315,7 @@ public final class Layouts {
     }
 
     /** At least {@code min}, and wide enough for every island's line. */
-    private static int width(int min, List<TextIsland> islands) {
+    static int width(int min, List<TextIsland> islands) {
         double w = min;
         for (TextIsland t : islands) {
             w = Math.max(w, 50 + width(t.pos() + ": " + t.text(), 11));
@@ -415,7 +323,7 @@ public final class Layouts {
         return (int) Math.ceil(w);
     }
 
-    private static void islands(Scene sc, List<TextIsland> islands, double y) {
+    static void islands(Scene sc, List<TextIsland> islands, double y) {
         for (TextIsland t : islands) {
             sc.add(new Scene.Rect(16, y - 12, 10, 14, 0xfff3b0, GREY, 1, t.pos()));
             sc.add(new Scene.Text(32, y, t.pos() + ": " + t.text(), 11, -1, 0x555555, false));

@@ -24,6 +24,16 @@ public record PhaseWheel(String automaton, String group, double phase, double of
         islands = List.copyOf(islands);
     }
 
+    /** This wheel with phase {@code p}: each tick moved to {@code offset + position·p}, reduced to [0, 1). */
+    public PhaseWheel withPhase(double p) {
+        List<Tick> moved = new java.util.ArrayList<>();
+        for (Tick t : ticks) {
+            double d = offset + t.position() * p;
+            moved.add(new Tick(t.position(), t.module(), d - Math.floor(d)));
+        }
+        return new PhaseWheel(automaton, group, p, offset, moved, islands, pos);
+    }
+
     /**
      * One module.
      *

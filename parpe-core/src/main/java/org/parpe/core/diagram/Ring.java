@@ -46,22 +46,5 @@ public record Ring(String automaton, boolean table, String group, int modules, L
             angles = List.copyOf(angles);
             pose = List.copyOf(pose);
         }
-
-        /**
-         * The pose as a planar chain from (0, 0), one segment of length {@code segment} per
-         * module: each module's joint turns the rest of the chain by its angle, counter-clockwise
-         * on the screen (y grows downwards), so segment {@code i} points at the sum of the angles
-         * of modules 0…i, 0° being to the right. Point {@code i + 1} ends segment {@code i}.
-         */
-        public double[][] chain(double segment) {
-            double[][] points = new double[pose.size() + 1][2];
-            double heading = 0;
-            for (int i = 0; i < pose.size(); i++) {
-                heading += Math.toRadians(pose.get(i));
-                points[i + 1][0] = points[i][0] + segment * Math.cos(heading);
-                points[i + 1][1] = points[i][1] - segment * Math.sin(heading);
-            }
-            return points;
-        }
     }
 }

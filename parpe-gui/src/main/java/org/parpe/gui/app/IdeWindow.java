@@ -255,20 +255,30 @@ public final class IdeWindow implements HardwareHost {
         }
     }
 
-    /** Ctrl + / Ctrl − / Ctrl 0: larger, smaller, normal text in the editor, the log, the gait table and the plots (a projector). */
+    /** Ctrl + / Ctrl − / Ctrl 0 ({@link #zoom(int)}), wherever the focus is in this window. */
     private boolean zoomKey(Event e) {
         int step = org.parpe.gui.panels.Zoom.step(e);
         if (step == org.parpe.gui.panels.Zoom.NONE) {
             return false;
         }
+        zoom(step);
+        return true;
+    }
+
+    /**
+     * Larger ({@code step} 1), smaller (−1) or normal (0) text in every view that zooms: the
+     * editor, the log, the gait table, the plots and the diagram (a projector). View → Zoom In /
+     * Zoom Out / Reset Zoom and their keys come here.
+     */
+    void zoom(int step) {
         zoom = org.parpe.gui.panels.Zoom.next(zoom, step);
         org.parpe.gui.panels.Zoom.apply(editor.widget(), org.eclipse.jface.resource.JFaceResources.getTextFont(), zoom);
         org.parpe.gui.panels.Zoom.apply(log, org.eclipse.jface.resource.JFaceResources.getTextFont(), zoom);
-        org.parpe.gui.panels.Zoom.apply(gaitGrid.widget(), shell.getDisplay().getSystemFont(), zoom);
+        gaitGrid.zoom(zoom);
         org.parpe.gui.panels.ChartView.zoomAll(zoom);
+        diagram.zoom(zoom);
         status.setMessage(zoom == 0 ? "Text at its normal size (Ctrl+0)" : "Text " + (zoom > 0 ? "+" : "") + zoom * 2
-                + " points (Ctrl+plus, Ctrl+minus; Ctrl+0: normal)");
-        return true;
+                + " points (View > Zoom In, Ctrl+plus; Zoom Out, Ctrl+minus; Reset Zoom, Ctrl+0)");
     }
 
     /** How many steps of 2 points the text is zoomed in (negative: out). */

@@ -210,6 +210,12 @@ final class MenuBar {
     }
 
     private void viewMenu(Menu m) {
+        // The keys are the window's own (a filter catches them wherever the focus is, the keypad's
+        // too); the accelerators only show them, so that a key press is one step, not two.
+        item(m, "Zoom &In\tCtrl++", SWT.MOD1 + '+', () -> ide.zoom(1));
+        item(m, "Zoom &Out\tCtrl+\u2212", SWT.MOD1 + '-', () -> ide.zoom(-1));
+        item(m, "Reset &Zoom\tCtrl+0", SWT.MOD1 + '0', () -> ide.zoom(0));
+        new MenuItem(m, SWT.SEPARATOR);
         item(m, "Reset &3D View", 0, () -> ide.view().resetView());
         item(m, "Clear Run &Log", 0, ide::clearLog);
     }

@@ -125,14 +125,18 @@ public final class DiagramPane {
         canvas.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
         showFields();
         freeNodes = new FreeNodes(this, canvas, places);
+        canvas.control().addListener(SWT.Resize, e -> laidOutAgain());
         canvas.control().addListener(SWT.MouseDown, e -> {
             dragged = e.button == 1 ? movable(e.x, e.y) : null;
             dragFrom = e.button == 1 && (wheel() != null || dragged != null) ? new Point(e.x, e.y) : null;
         });
         canvas.control().addListener(SWT.MouseMove, e -> {
             if (dragFrom != null && dragged(e.x, e.y)) {
-                message.setText(wheel() != null ? "Release to set phase=\"" + phaseAt(e.x, e.y)
-                        + "\" (module 1's tick goes where you release)" : "Release on another entry to move this one there");
+                if (wheel() != null) {
+                    previewPhase(phaseAt(e.x, e.y));
+                } else {
+                    message.setText("Release on another entry to move this one there");
+                }
             }
         });
         canvas.control().addListener(SWT.MouseUp, e -> {
@@ -144,6 +148,10 @@ public final class DiagramPane {
                 }
             }
             dragFrom = null;
+            if (!dragMarks.isEmpty()) {
+                dragMarks = List.of();
+                repaintOverlay();
+            }
         });
         editor.widget().addCaretListener(e -> caretAt(e.caretOffset));
         AfterChange soon = new AfterChange(box, editor.document(), this::relayout);
@@ -259,6 +267,7 @@ public final class DiagramPane {
     }
 
     private void show(Projection p) {
+        p = readable(p);
         shown = p;
         // a text that does not load for a moment (an Undo in two steps, typing) keeps the subject chosen
         if (p.subject() != null) {
@@ -288,6 +297,55 @@ public final class DiagramPane {
         told = null;
         showFields();
         box.layout(true, true);
+    }
+
+    /** The text scale the ring or the wheel shown is laid out with ({@link #readable}). */
+    private double textScale = 1;
+
+    /**
+     * {@code p} with its ring or wheel laid out with text large enough to read on the canvas as
+     * it is now: the canvas would otherwise make small text larger where it lies, and labels laid
+     * out apart would meet. A few rounds, as larger text makes the drawing larger.
+     */
+    private Projection readable(Projection p) {
+        textScale = 1;
+        if (p.scene() == null || p.ring() == null && p.wheel() == null) {
+            return p;
+        }
+        Projection out = p;
+        for (int round = 0; round < 8; round++) {
+            double need = canvas.textScale(out.scene(), org.parpe.core.diagram.Layouts.RING_TEXT);
+            if (need <= textScale * 1.001) {
+                break;
+            }
+            textScale = need;
+            out = p.withTextScale(textScale);
+        }
+        return out;
+    }
+
+    /**
+     * The drawing's smallest text is {@code steps} × 2 points larger than normal (the window's
+     * zoom, {@link org.parpe.gui.panels.Zoom}): other text grows to it, and the ring and the wheel
+     * are laid out again so that their labels stay apart.
+     */
+    public void zoom(int steps) {
+        canvas.zoom(org.parpe.gui.panels.Zoom.factor(box.getDisplay().getSystemFont(), steps));
+        laidOutAgain();
+    }
+
+    /** The canvas changed size or the zoom: the ring or the wheel is laid out again for it. */
+    private void laidOutAgain() {
+        if (shown != null && (shown.ring() != null || shown.wheel() != null) && shown.scene() != null) {
+            double before = textScale;
+            Projection p = readable(shown.withTextScale(1));
+            if (textScale != before) {
+                shown = p;
+                canvas.show(p.scene());
+                canvas.select(selected);
+                repaintOverlay();
+            }
+        }
     }
 
     /**
@@ -346,6 +404,11 @@ public final class DiagramPane {
     /** The canvas, for tests that click on it. */
     public org.eclipse.swt.widgets.Canvas canvas() {
         return canvas.control();
+    }
+
+    /** The drawing's texts as last painted: each one's extent on the canvas (pixels) and its text. */
+    public List<java.util.Map.Entry<org.eclipse.swt.graphics.Rectangle, String>> drawnTexts() {
+        return canvas.drawnTexts();
     }
 
     /** Where on the canvas {@code node} is drawn (a click there selects it), or {@code null}. */
@@ -485,6 +548,8 @@ public final class DiagramPane {
     private double[] liveProgress;
     private String liveWhat = "live";
     private List<org.parpe.core.diagram.Scene.Shape> liveMarks = List.of();
+    /** The phase wheel's hand and ticks where the drag going on would put them. */
+    private List<org.parpe.core.diagram.Scene.Shape> dragMarks = List.of();
     private GaitOverlay gaitOverlay;
 
     /**
@@ -495,9 +560,10 @@ public final class DiagramPane {
         liveBar.breakpoints(bp, resume, changed);
     }
 
-    /** Draws the live marks and the breakpoints over the drawing. */
+    /** Draws the live marks, the breakpoints and the wheel's dragged hand over the drawing. */
     void repaintOverlay() {
         List<org.parpe.core.diagram.Scene.Shape> all = new ArrayList<>(liveMarks);
+        all.addAll(dragMarks);
         if (shown != null && shown.ring() != null && shown.scene() != null) {
             all.addAll(liveBar.marks(shown.ring(), shown.scene()));
         }
@@ -673,8 +739,8 @@ public final class DiagramPane {
         }
         liveProgress = new double[f.instance().length];
         marks.addAll(RingProgress.marks(ring, shown.scene(), f, automata, liveProgress));
-        // under the ring's title (at 28), not beside it: the two meet when the labels are kept large on a short canvas
-        marks.add(new org.parpe.core.diagram.Scene.Text(shown.scene().width() - 12, 50, liveWhat + ": tick " + f.tick()
+        // under the ring's title, not beside it, and as much lower as the ring's text is larger ({@link #readable})
+        marks.add(new org.parpe.core.diagram.Scene.Text(shown.scene().width() - 12, 50 * textScale, liveWhat + ": tick " + f.tick()
                 + " (dark band: modules in the state; dots: each module's progress)", 11, 1, 0x222222, false));
         liveMarks = marks;
         repaintOverlay();
@@ -733,10 +799,10 @@ public final class DiagramPane {
     }
 
     /**
-     * The phase that puts module 1's tick at canvas pixel {@code x, y}: its angle on the wheel
+     * The phase that puts position 1's tick at canvas pixel {@code x, y}: its angle on the wheel
      * less the offset, in [0, 1) (in (−1, 0] when the phase was negative), to 0.01 of a cycle.
      */
-    private String phaseAt(int x, int y) {
+    private double phaseAt(int x, int y) {
         double[] c = wheel();
         double[] p = canvas.toScene(x, y);
         double f = Math.atan2(p[0] - c[0], -(p[1] - c[1])) / (2 * Math.PI);
@@ -745,7 +811,25 @@ public final class DiagramPane {
         if (shown.wheel().phase() < 0 && phase > 0) {
             phase -= 1;
         }
-        return org.parpe.core.lang.Numbers.format(Math.round(phase * 100) / 100.0);
+        return Math.round(phase * 100) / 100.0;
+    }
+
+    /** While the hand is dragged: the hand and the ticks where {@code phase} puts them, and the delays it gives, in words. */
+    private void previewPhase(double phase) {
+        var moved = shown.wheel().withPhase(phase);
+        dragMarks = org.parpe.core.diagram.Layouts.wheelPreview(moved, textScale);
+        repaintOverlay();
+        StringBuilder delays = new StringBuilder();
+        for (var t : moved.ticks().subList(0, Math.min(6, moved.ticks().size()))) {
+            delays.append(delays.length() == 0 ? "" : ", ").append(org.parpe.core.lang.Numbers.format(Math.round(t.delay() * 100) / 100.0));
+        }
+        message.setText("Release to set phase=\"" + org.parpe.core.lang.Numbers.format(phase) + "\": positions 0, 1, 2, \u2026 start "
+                + delays + (moved.ticks().size() > 6 ? ", \u2026" : "") + " of a cycle late (green: where the ticks go)");
+    }
+
+    /** The wheel's hand and ticks drawn where the drag going on would put them (empty while none is). */
+    public List<org.parpe.core.diagram.Scene.Shape> dragPreview() {
+        return dragMarks;
     }
 
     /** A drag on the phase wheel ended at {@code x, y}: write the phase it sets. */
@@ -755,7 +839,7 @@ public final class DiagramPane {
             say("This instance is not in the open file; edit its phase there.");
             return;
         }
-        String value = phaseAt(x, y);
+        String value = org.parpe.core.lang.Numbers.format(phaseAt(x, y));
         for (Projection.Field f : t.fields()) {
             if (f.name().equals("phase")) {
                 write(f, value);

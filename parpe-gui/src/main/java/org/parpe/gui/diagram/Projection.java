@@ -82,6 +82,17 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         this(text, file, view, subjects, subject, scene, targets, message, null, null, List.of(), null);
     }
 
+    /**
+     * This projection with its ring or wheel laid out again with text {@code textScale} times as
+     * large ({@link Layouts#ring(Ring, double)}); the drawings of the other views stay as they are.
+     */
+    Projection withTextScale(double textScale) {
+        Scene s = ring != null ? Layouts.ring(ring, textScale) : wheel != null && scene != null ? Layouts.wheel(wheel, textScale)
+                : scene;
+        return s == scene ? this : new Projection(text, file, view, subjects, subject, s, targets, message, wheel, ring, automata,
+                lanes, gait, free);
+    }
+
     /** The views, in the chooser's order. */
     enum View {
         PROGRAM("Program"), LANES("Lanes"), RING("Ring"), PHASE("Phase"), GAIT("Gait");

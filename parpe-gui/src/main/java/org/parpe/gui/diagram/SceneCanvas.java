@@ -19,7 +19,8 @@ import org.parpe.core.diagram.Scene;
 /**
  * Draws a {@link Scene} with SWT, as the SVG and PNG back ends draw it for files, scaled down to
  * fit the canvas (never up) and centred, its empty bottom left out and no text smaller than
- * {@link #MIN_TEXT_PX} on screen (so that a short canvas still has readable labels); the shapes that stand for a place in the script are
+ * {@link #MIN_TEXT_PX} on screen (so that a short canvas still has readable labels; the window's
+ * zoom makes that floor larger); the shapes that stand for a place in the script are
  * what a click hits, and the selected place is outlined. UI thread only.
  */
 final class SceneCanvas {
@@ -42,6 +43,11 @@ final class SceneCanvas {
     private SourcePos selected;
     private List<Scene.Shape> overlay = List.of();
     private long paints;
+    /** The window's zoom: the smallest text is {@link #MIN_TEXT_PX} times this. */
+    private double zoom = 1;
+    /** Where the scene's texts were drawn last, in canvas pixels, with their text. */
+    private final List<Map.Entry<org.eclipse.swt.graphics.Rectangle, String>> drawnTexts = new java.util.ArrayList<>();
+    private boolean recording;
     /** The scene and the selection drawn once, so that a frame of the live overlay draws only the overlay over it. */
     private org.eclipse.swt.graphics.Image cache;
 
@@ -82,9 +88,30 @@ final class SceneCanvas {
     /** Scene units to canvas pixels: {@code {scale, dx, dy}}, the scene fitted in and centred. */
     private double[] fit() {
         org.eclipse.swt.graphics.Rectangle a = canvas.getClientArea();
-        double k = Math.min(1, Math.min(a.width / (double) scene.width(), a.height / used));
-        k = k > 0 ? k : 1;
+        double k = scale(scene, used);
         return new double[] {k, Math.max(0, (a.width - scene.width() * k) / 2), 0};
+    }
+
+    /** The scale {@code s} is drawn at on the canvas as it is now, {@code used} of its height shown. */
+    private double scale(Scene s, double used) {
+        org.eclipse.swt.graphics.Rectangle a = canvas.getClientArea();
+        double k = Math.min(1, Math.min(a.width / (double) s.width(), a.height / used));
+        return k > 0 ? k : 1;
+    }
+
+    /**
+     * How many times larger than {@code size} text of {@code s} must be made so that, drawn on the
+     * canvas as it is now, it is {@link #MIN_TEXT_PX} high, zoomed, or more (at least 1).
+     */
+    double textScale(Scene s, double size) {
+        return Math.max(1, MIN_TEXT_PX * zoom / (size * scale(s, used(s))));
+    }
+
+    /** Makes the smallest text on screen {@code factor} times {@link #MIN_TEXT_PX} (the window's zoom). */
+    void zoom(double factor) {
+        zoom = factor;
+        dropCache();
+        canvas.redraw();
     }
 
     /** The height of {@code s} down to its lowest shape and {@link #BELOW} more, at most its own height. */
@@ -200,10 +227,13 @@ final class SceneCanvas {
             try {
                 image.setBackground(color(0xffffff));
                 image.fillRectangle(0, 0, area.width, area.height);
+                drawnTexts.clear();
+                recording = true;
                 transformed(image, g -> {
                     draw(g, scene.shapes());
                     outline(g);
                 });
+                recording = false;
             } finally {
                 image.dispose();
             }
@@ -224,7 +254,7 @@ final class SceneCanvas {
                 (float) f[0], 0, 0, (float) f[0], (float) f[1], (float) f[2]);
         try {
             gc.setTransform(t);
-            textFloor = MIN_TEXT_PX / f[0];
+            textFloor = MIN_TEXT_PX * zoom / f[0];
             draw.accept(gc);
         } finally {
             gc.setTransform(null);
@@ -317,6 +347,16 @@ final class SceneCanvas {
         double x = t.anchor() < 0 ? t.x() : t.anchor() == 0 ? t.x() - size.x / 2.0 : t.x() - size.x;
         int ascent = gc.getFontMetrics().getAscent();
         gc.drawText(t.text(), (int) Math.round(x), (int) Math.round(t.y()) - ascent, SWT.DRAW_TRANSPARENT);
+        if (recording) {
+            Point a = toCanvas(x, Math.round(t.y()) - ascent);
+            Point b = toCanvas(x + size.x, Math.round(t.y()) - ascent + size.y);
+            drawnTexts.add(Map.entry(new org.eclipse.swt.graphics.Rectangle(a.x, a.y, b.x - a.x, b.y - a.y), t.text()));
+        }
+    }
+
+    /** The scene's texts as last painted: where on the canvas (pixels) each one's extent went, and its text. */
+    List<Map.Entry<org.eclipse.swt.graphics.Rectangle, String>> drawnTexts() {
+        return List.copyOf(drawnTexts);
     }
 
     private Color color(int rgb) {

@@ -260,6 +260,14 @@ public final class GridPane implements GridView.Actions {
         return grid.control();
     }
 
+    /**
+     * Shows the grid's text {@code steps} × 2 points larger than normal (the window's zoom,
+     * {@link org.parpe.gui.panels.Zoom}); the columns widen or narrow with it.
+     */
+    public void zoom(int steps) {
+        grid.zoom(steps);
+    }
+
     /** The in-place cell editor while one is open, else {@code null}. */
     public org.eclipse.swt.widgets.Text cellEditor() {
         return grid.editor();

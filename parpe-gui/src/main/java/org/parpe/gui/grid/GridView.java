@@ -50,6 +50,7 @@ final class GridView {
     private final Table table;
     private final TableEditor cellEditor;
     private final Actions actions;
+    private List<String> headers = List.of();
     private List<List<String>> cells = List.of();
     private Map<Long, String> problems = Map.of();
     private boolean[] absent = new boolean[0];
@@ -117,6 +118,7 @@ final class GridView {
         if (!editable || editRow >= rows.size() || editCol >= headers.size()) {
             cancelEdit();
         }
+        this.headers = headers;
         this.cells = rows;
         this.problems = problems;
         this.absent = absentColumns;
@@ -141,6 +143,20 @@ final class GridView {
             paint();
         } finally {
             table.setRedraw(true);
+        }
+    }
+
+    /**
+     * Shows the text {@code steps} × 2 points larger than the normal font and fits the columns to
+     * it: a column as wide as its text in the normal font would cut the last digit of a larger one.
+     */
+    void zoom(int steps) {
+        org.parpe.gui.panels.Zoom.apply(table, table.getDisplay().getSystemFont(), steps);
+        if (text != null && !text.isDisposed()) {
+            text.setFont(table.getFont());
+        }
+        if (table.getColumnCount() == headers.size() + 2) {
+            fitColumns(headers, cells);
         }
     }
 
@@ -311,6 +327,7 @@ final class GridView {
         cancelEdit();
         select(row, column, row, column);
         Text t = new Text(table, SWT.SINGLE | SWT.RIGHT);
+        t.setFont(table.getFont());
         text = t;
         editRow = row;
         editCol = column;

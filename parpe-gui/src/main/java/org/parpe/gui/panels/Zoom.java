@@ -29,6 +29,12 @@ public final class Zoom {
         return step == 0 ? 0 : Math.max(-4, Math.min(12, steps + step));
     }
 
+    /** How many times larger than {@code normal} text is {@code steps} steps in ({@link #apply}'s sizes). */
+    public static double factor(Font normal, int steps) {
+        int h = normal.getFontData()[0].getHeight();
+        return Math.max(6, h + 2 * steps) / (double) Math.max(1, h);
+    }
+
     /** Shows {@code c} in {@code normal} grown by {@code steps} × 2 points (0: {@code normal} itself). */
     public static void apply(Control c, Font normal, int steps) {
         if (c == null || c.isDisposed()) {
