@@ -106,6 +106,33 @@ public final class Simulator implements JointSink, SensorSource, AutoCloseable {
         return scene;
     }
 
+    /** How deep a robot may rest in a world's scenery at its start and still fit (rubble is uneven), m. */
+    private static final double FIT_DEPTH = 0.005;
+
+    /**
+     * Why the robot does not fit its world at the start, or empty when it does (or on the flat
+     * floor): it starts inside the world's walls, ramps, rubble or objects, or outside its arena.
+     */
+    public String misfit() {
+        if (scene == null) {
+            return "";
+        }
+        double depth = world.sceneryOverlap();
+        double[] com = progress.com();
+        World.Region arena = scene.arena();
+        if (arena != null && !arena.contains(com[0], com[1])) {
+            return String.format(java.util.Locale.ROOT, "the robot does not fit the world %s: it starts outside the"
+                    + " world's arena (its centre of mass at x %.2f, y %.2f m; the arena x %.2f to %.2f, y %.2f to %.2f m)",
+                    scene.name(), com[0], com[1], arena.x0(), arena.x1(), arena.y0(), arena.y1());
+        }
+        if (depth > FIT_DEPTH) {
+            return String.format(java.util.Locale.ROOT, "the robot does not fit the world %s: it starts %.0f mm deep"
+                    + " inside the world's walls, ramps, rubble or objects; choose a robot that fits or a world"
+                    + " made for it", scene.name(), depth * 1000);
+        }
+        return "";
+    }
+
     /** How far lever {@code i} of the world is turned from rest, degrees. */
     public double leverAngle(int i) {
         return Math.toDegrees(world.leverAngle(i));
