@@ -344,6 +344,8 @@ public final class IdeWindow implements HardwareHost {
         diagram.documentSwitched(files.file());
         choices.switchTo(files.pathForLoading());
         viewBar.show(choices.robot());
+        viewBar.world().show(choices.world(org.parpe.sim.world.WorldReader.declaredBy(files.pathForLoading(),
+                editor.document().get())));
         if (!runs.running()) {
             toolbar.setTarget(choices.target());
         }
@@ -671,6 +673,11 @@ public final class IdeWindow implements HardwareHost {
     /** The user picked {@code robot} for the file in the editor. */
     void robotChosen(String robot) {
         choices.robotChosen(robot);
+    }
+
+    /** The user picked {@code world} ({@link WorldPicker#FLAT} or a world file) for the file in the editor. */
+    void worldChosen(String world) {
+        choices.worldChosen(world);
     }
 
     /** The user picked {@code target} for the file in the editor. */
