@@ -96,6 +96,7 @@ final class RunCommand implements Callable<Integer> {
             return 0;
         }
         checkOutputs(r);
+        sim.noteDeclaredWorld(file, err);
         boolean worldLimit = duration == null && sim.world(err) != null;
         if (worldLimit) {
             duration = sim.world(err).timeLimit(); // a world's challenge lasts its time limit

@@ -69,6 +69,14 @@ class ExamplesOnSimulatorTest {
         assertTrue(m.maxTiltDeg() < 45, m.toJson());
     }
 
+    /** The rolling loop is judged by its hinge axis, which rolling leaves level: it does not fall. */
+    @Test
+    void theRollingLoopDoesNotFall() {
+        SimMetrics m = run("param-loop.xml", "loop", 20);
+        assertTrue(m.distance() >= 0.3, m.toJson());
+        assertFalse(m.fell(), m.toJson());
+    }
+
     /** A wheel stood leaning 30 degrees falls flat: its axle tips, and that is falling. */
     @Test
     void aLeaningWheelFallsOver(@org.junit.jupiter.api.io.TempDir Path dir) throws java.io.IOException {

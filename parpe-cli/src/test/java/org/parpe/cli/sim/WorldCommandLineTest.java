@@ -154,4 +154,17 @@ class WorldCommandLineTest {
         Cli fits = Cli.run("run", WORLDS + "race-track-snake.xml", "--sim", "snake:n=8", "--world", w.toString());
         assertFalse(fits.err.contains("does not fit"), fits.err);
     }
+
+    /** Issue 31: a script written for a world ran on the flat floor without a word when --world was left out. */
+    @Test
+    void aScriptThatNamesItsWorldSaysSoWithoutWorld() {
+        Cli r = Cli.run("run", WORLDS + "race-track-snake.xml", "--sim", "snake:n=8", "--duration", "0.1");
+        assertEquals(0, r.code, r.toString());
+        Path declared = Path.of(WORLDS, "race-track.xml").toAbsolutePath().normalize();
+        assertTrue(r.err.contains(WORLDS + "race-track-snake.xml: note: the script is written for the world " + declared
+                + "; --world " + declared + " runs it there"), r.err);
+        Cli in = Cli.run("run", WORLDS + "race-track-snake.xml", "--sim", "snake:n=8", "--world", WORLDS + "race-track.xml",
+                "--duration", "0.1");
+        assertFalse(in.err.contains("note:"), in.err);
+    }
 }

@@ -547,6 +547,14 @@ public final class IdeWindow implements HardwareHost {
         log.setText("");
     }
 
+    /** Says {@code message} in the status bar and the Run log, from any thread. */
+    void sayLater(String message) {
+        post(() -> {
+            log(message);
+            status.setMessage(message);
+        });
+    }
+
     /** {@link #log} from any thread. */
     void logLater(String line) {
         post(() -> log(line));

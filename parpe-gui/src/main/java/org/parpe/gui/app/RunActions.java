@@ -451,6 +451,11 @@ public final class RunActions implements ControlPanel.ControlSink {
             }
             try (Simulator s = new Simulator(config, world)) {
                 preview = s.snapshot();
+                String misfit = s.misfit();
+                if (!misfit.isEmpty()) {
+                    // said when the robot or the world is chosen, not only when a run starts
+                    ide.sayLater("Robot " + spec + ": " + misfit);
+                }
             } catch (RuntimeException e) {
                 ide.logLater("cannot show the robot '" + spec + "': " + e.getMessage());
             }

@@ -51,8 +51,9 @@ final class WorldPicker {
             }
         }
         String file = prefs.get("view.worldFile", null);
-        if (file != null && Files.isRegularFile(Path.of(file)) && !files.contains(Path.of(file).toAbsolutePath().normalize())) {
-            add(Path.of(file));
+        Path last = file == null ? null : Path.of(file).toAbsolutePath().normalize();
+        if (last != null && Files.isRegularFile(last) && !files.contains(last)) {
+            add(last);
         }
         combo.add(BROWSE);
         // Each file has its own world (RunChoices): the flat floor until the file is shown.

@@ -75,6 +75,9 @@ class WorldPerFileGuiTest {
         Gui.pump(() -> ide.program() != null, "lesson 5 to load");
         ide.viewBar().select("centipede");
         ide.viewBar().world().pick(track);
+        // said as soon as the world is chosen, before any run
+        Gui.pump(() -> ide.status().message().startsWith("Robot centipede: the robot does not fit the world " + track),
+                "the status to say the centipede does not fit: " + ide.status().message());
         ide.toolbar().setTarget(RunOn.SIMULATOR);
         ide.toolbar().setSpeed(Speed.MAX);
         AtomicReference<RunOutcome> outcome = new AtomicReference<>();
