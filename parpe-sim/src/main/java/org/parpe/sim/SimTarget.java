@@ -82,7 +82,7 @@ public final class SimTarget implements RunTarget {
         Simulator s = b.simulator();
         String misfit = s.misfit();
         if (!misfit.isEmpty()) {
-            diags.warning(org.parpe.core.diag.SourcePos.origin("simulated robot " + spec), misfit);
+            diags.warning(org.parpe.core.diag.SourcePos.origin("simulated robot " + spec), "the robot " + misfit);
         }
         return s;
     }

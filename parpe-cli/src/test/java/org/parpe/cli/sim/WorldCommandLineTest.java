@@ -149,8 +149,8 @@ class WorldCommandLineTest {
         Cli r = Cli.run("run", "../examples/tutorial/05-centipede-mirror.xml", "--sim", "centipede", "--world",
                 w.toString());
         assertEquals(0, r.code, r.toString());
-        assertTrue(r.err.contains("simulated robot centipede: warning: the robot does not fit the world " + w
-                + ": it starts"), r.err);
+        assertTrue(r.err.contains("simulated robot centipede: warning: the robot does not fit the world race-track-1s.xml:"
+                + " it starts"), r.err);
         Cli fits = Cli.run("run", WORLDS + "race-track-snake.xml", "--sim", "snake:n=8", "--world", w.toString());
         assertFalse(fits.err.contains("does not fit"), fits.err);
     }

@@ -454,7 +454,7 @@ public final class RunActions implements ControlPanel.ControlSink {
                 String misfit = s.misfit();
                 if (!misfit.isEmpty()) {
                     // said when the robot or the world is chosen, not only when a run starts
-                    ide.sayLater("Robot " + spec + ": " + misfit);
+                    ide.sayLater("Robot " + spec + " " + misfit);
                 }
             } catch (RuntimeException e) {
                 ide.logLater("cannot show the robot '" + spec + "': " + e.getMessage());

@@ -76,7 +76,7 @@ class WorldPerFileGuiTest {
         ide.viewBar().select("centipede");
         ide.viewBar().world().pick(track);
         // said as soon as the world is chosen, before any run
-        Gui.pump(() -> ide.status().message().startsWith("Robot centipede: the robot does not fit the world " + track),
+        Gui.pump(() -> ide.status().message().startsWith("Robot centipede does not fit the world race-track-1s.xml: it starts "),
                 "the status to say the centipede does not fit: " + ide.status().message());
         ide.toolbar().setTarget(RunOn.SIMULATOR);
         ide.toolbar().setSpeed(Speed.MAX);
@@ -87,7 +87,7 @@ class WorldPerFileGuiTest {
                 "the warning in Problems: " + ide.problems().shown());
         List<String> warnings = ide.problems().shown().stream().filter(d -> d.severity() == Severity.WARNING)
                 .map(Diagnostic::message).toList();
-        assertTrue(warnings.stream().anyMatch(m -> m.startsWith("the robot does not fit the world " + track)),
+        assertTrue(warnings.stream().anyMatch(m -> m.startsWith("the robot does not fit the world race-track-1s.xml: ")),
                 warnings.toString());
         assertTrue(ide.status().message().startsWith("Run ended at the world's time limit, t = 1.00 s"),
                 ide.status().message());
