@@ -96,7 +96,9 @@ final class RunCommand implements Callable<Integer> {
             return 0;
         }
         checkOutputs(r);
-        if (duration == null && sim.world(err) != null) {
+        sim.noteDeclaredWorld(file, err);
+        boolean worldLimit = duration == null && sim.world(err) != null;
+        if (worldLimit) {
             duration = sim.world(err).timeLimit(); // a world's challenge lasts its time limit
         }
         if (duration == null) {
@@ -152,6 +154,9 @@ final class RunCommand implements Callable<Integer> {
         }
         if (outcome.status() == RunOutcome.Status.STOPPED) {
             err.println("parpe: stopped at t=" + String.format(Locale.ROOT, "%.3f", outcome.time()) + " s");
+        } else if (worldLimit && outcome.status() == RunOutcome.Status.COMPLETED && outcome.time() >= duration - 1e-6) {
+            err.println("parpe: the run ended at the world's time limit of " + org.parpe.core.lang.Numbers.format(duration)
+                    + " s (" + sim.world(err).name() + "); --duration SECONDS runs longer");
         }
         return sim.outputsWritten(outcome.status() == RunOutcome.Status.ERROR ? 3 : 0);
     }

@@ -1,14 +1,23 @@
 package org.parpe.sim;
 
 import org.ode4j.math.DMatrix3C;
+import org.parpe.sim.internal.Assembly;
 import org.parpe.sim.internal.PhysicsWorld;
 
-/** Follows the centre of mass and the root part's tilt for {@link SimMetrics}. */
+/**
+ * Follows the centre of mass and the robot's tilt for {@link SimMetrics}: the root part's tilt,
+ * or for a rolling robot (a wheel or a loop, {@link org.parpe.sim.internal.Assembly.Axle}) its
+ * axle's, which rolling does not turn: twice the angle the axle tipped from its starting slope,
+ * so that a wheel lying flat reads 180° as a walker on its back does.
+ */
 final class Progress {
     private final PhysicsWorld world;
     private final double[] com = new double[3];
     private final double[] start = new double[3];
     private final double[] upLocal = new double[3];
+    private final Assembly.Axle axle;
+    /** The axle's slope at the start, radians above the horizontal. */
+    private double axleSlope;
     private final double[] markedCom = new double[3];
     private double startTime;
     private double maxTilt;
@@ -17,6 +26,7 @@ final class Progress {
 
     Progress(PhysicsWorld world) {
         this.world = world;
+        this.axle = world.assembly().axle();
         reset();
     }
 
@@ -27,6 +37,10 @@ final class Progress {
         startTime = world.time();
         maxTilt = 0;
         markedTime = Double.NaN;
+        if (axle != null) {
+            axleSlope = axleSlope();
+            return;
+        }
         DMatrix3C r = world.pieceRotation(world.assembly().rootPiece());
         // The root's local axis that points up now: the third row of its rotation.
         for (int i = 0; i < 3; i++) {
@@ -37,9 +51,21 @@ final class Progress {
     /** Updates after a tick. */
     void update() {
         world.centerOfMass(com);
+        if (axle != null) {
+            maxTilt = Math.max(maxTilt, Math.min(Math.PI, 2 * Math.abs(axleSlope() - axleSlope)));
+            return;
+        }
         DMatrix3C r = world.pieceRotation(world.assembly().rootPiece());
         double z = r.get(2, 0) * upLocal[0] + r.get(2, 1) * upLocal[1] + r.get(2, 2) * upLocal[2];
         maxTilt = Math.max(maxTilt, Math.acos(Math.max(-1, Math.min(1, z))));
+    }
+
+    /** The rolling robot's axle's slope now, radians above the horizontal (rolling about it leaves it alone). */
+    private double axleSlope() {
+        DMatrix3C r = world.pieceRotation(axle.piece());
+        Vec3 a = axle.local();
+        double z = r.get(2, 0) * a.x() + r.get(2, 1) * a.y() + r.get(2, 2) * a.z();
+        return Math.asin(Math.max(-1, Math.min(1, z)));
     }
 
     /** The current centre of mass (a live buffer: read, do not keep). */

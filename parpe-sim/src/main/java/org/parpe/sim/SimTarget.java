@@ -76,14 +76,22 @@ public final class SimTarget implements RunTarget {
         return create(spec, moduleIds, diags, null);
     }
 
-    /** As {@link #create(String, int[], DiagnosticSink)}, the robot at the start of {@code world} (null: the flat floor). */
+    /**
+     * As {@link #create(String, int[], DiagnosticSink)}, the robot at the start of {@code world}
+     * (null: the flat floor); a robot that does not fit the world there ({@link Simulator#misfit}) is a warning.
+     */
     public static Simulator create(String spec, int[] moduleIds, DiagnosticSink diags, World world)
             throws TargetException {
         Blueprint b = blueprint(spec, moduleIds, world);
         for (Diagnostic d : b.warnings()) {
             diags.report(d);
         }
-        return b.simulator();
+        Simulator s = b.simulator();
+        String misfit = s.misfit();
+        if (!misfit.isEmpty()) {
+            diags.warning(org.parpe.core.diag.SourcePos.origin("simulated robot " + spec), "the robot " + misfit);
+        }
+        return s;
     }
 
     /**

@@ -118,6 +118,35 @@ public final class Simulator implements JointSink, SensorSource, PlateSink, Auto
         return scene;
     }
 
+    /** How deep a robot may rest in a world's scenery at its start and still fit (rubble is uneven), m. */
+    private static final double FIT_DEPTH = 0.005;
+
+    /**
+     * Why the robot does not fit its world at the start, to follow "the robot" ("does not fit the
+     * world W.xml: …"), or empty when it fits (or on the flat floor): it starts inside the world's
+     * walls, ramps, rubble or objects, or outside its arena.
+     */
+    public String misfit() {
+        if (scene == null) {
+            return "";
+        }
+        String name = scene.name().substring(Math.max(scene.name().lastIndexOf('/'), scene.name().lastIndexOf('\\')) + 1);
+        double[] com = progress.com();
+        World.Region arena = scene.arena();
+        if (arena != null && !arena.contains(com[0], com[1])) {
+            return String.format(java.util.Locale.ROOT, "does not fit the world %s: it starts outside the arena (its"
+                    + " centre of mass at x %.2f, y %.2f m; the arena x %.2f to %.2f, y %.2f to %.2f m)",
+                    name, com[0], com[1], arena.x0(), arena.x1(), arena.y0(), arena.y1());
+        }
+        double depth = world.sceneryOverlap();
+        if (depth > FIT_DEPTH) {
+            return String.format(java.util.Locale.ROOT, "does not fit the world %s: it starts %.0f mm deep inside its"
+                    + " walls, ramps, rubble or objects; choose a robot that fits or a world made for it", name,
+                    depth * 1000);
+        }
+        return "";
+    }
+
     /** How far lever {@code i} of the world is turned from rest, degrees. */
     public double leverAngle(int i) {
         return Math.toDegrees(world.leverAngle(i));

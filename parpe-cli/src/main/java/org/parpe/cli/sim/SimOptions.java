@@ -53,6 +53,26 @@ public class SimOptions {
     /** Whether writing the metrics or the plot failed (reported at once). */
     private boolean outputFailed;
 
+    /**
+     * Tells on {@code err} that {@code script} names the world it is written for
+     * ({@code <?parpe world?>}) when it runs on the simulator without {@code --world}: the
+     * command line takes the world only from {@code --world}.
+     */
+    public void noteDeclaredWorld(Path script, PrintStream err) {
+        if (sim == null || world != null) {
+            return;
+        }
+        try {
+            Path declared = WorldReader.declaredBy(script, Files.readString(script));
+            if (declared != null) {
+                err.println(script + ": note: the script is written for the world " + declared
+                        + "; --world " + declared + " runs it there");
+            }
+        } catch (IOException | java.io.UncheckedIOException e) {
+            // the script was read a moment ago; a file gone since loses only this note
+        }
+    }
+
     /** Whether {@code --realtime} was given. */
     public boolean realtime() {
         return realtime;

@@ -57,6 +57,36 @@ class ExamplesOnSimulatorTest {
         assertTrue(m.distance() >= 0.3, m.toJson());
     }
 
+    /**
+     * The paper's Fig. 7 wheel gait rolls the Fig. 6 wheel forwards (+x, as every standard robot
+     * faces), and rolling is not falling: its hub turns over and over, its axle stays level.
+     */
+    @Test
+    void theFig7WheelRollsForwardsAndDoesNotFall() {
+        SimMetrics m = run("wheel.xml", "wheel", 20);
+        assertTrue(m.dx() >= 0.3, m.toJson());
+        assertFalse(m.fell(), m.toJson());
+        assertTrue(m.maxTiltDeg() < 45, m.toJson());
+    }
+
+    /** The rolling loop is judged by its hinge axis, which rolling leaves level: it does not fall. */
+    @Test
+    void theRollingLoopDoesNotFall() {
+        SimMetrics m = run("param-loop.xml", "loop", 20);
+        assertTrue(m.distance() >= 0.3, m.toJson());
+        assertFalse(m.fell(), m.toJson());
+    }
+
+    /** A wheel stood leaning 30 degrees falls flat: its axle tips, and that is falling. */
+    @Test
+    void aLeaningWheelFallsOver(@org.junit.jupiter.api.io.TempDir Path dir) throws java.io.IOException {
+        String config = java.nio.file.Files.readString(EXAMPLES.resolve("configs/wheel6.xml"))
+                .replace("roll=\"90\"", "roll=\"60\"");
+        Path leaning = java.nio.file.Files.writeString(dir.resolve("leaning.xml"), config);
+        SimMetrics m = run("wheel.xml", leaning.toString(), 10);
+        assertTrue(m.fell(), m.toJson());
+    }
+
     @Test
     void theCentipedeWalksForwards() {
         SimMetrics m = run("centipede-walk.xml", "centipede", 20);

@@ -167,4 +167,51 @@ class WorldCommandLineTest {
         Cli noSim = Cli.run("run", WORLDS + "race-track-snake.xml", "--world", WORLDS + "race-track.xml");
         assertEquals(2, noSim.code, noSim.toString());
     }
+
+    /** The race track with a one-second time limit, so that runs to the limit are short. */
+    private Path oneSecondTrack() throws IOException {
+        String w = Files.readString(Path.of(WORLDS, "race-track.xml")).replace("time-limit=\"60\"", "time-limit=\"1\"");
+        return Files.writeString(tmp.resolve("race-track-1s.xml"), w);
+    }
+
+    /** Issue 31: a run that the world's time limit ended said nothing of it; one that <main> ends needs no word. */
+    @Test
+    void aRunEndedByTheWorldsTimeLimitSaysSo() throws IOException {
+        Path w = oneSecondTrack();
+        Cli r = Cli.run("run", WORLDS + "race-track-snake.xml", "--sim", "snake:n=8", "--world", w.toString());
+        assertEquals(0, r.code, r.toString());
+        assertTrue(r.err.contains("parpe: the run ended at the world's time limit of 1 s (" + w + ")"), r.err);
+        Cli bounded = Cli.run("run", WORLDS + "race-track-snake.xml", "--sim", "snake:n=8", "--world", w.toString(),
+                "--duration", "0.5");
+        assertFalse(bounded.err.contains("time limit"), bounded.err);
+    }
+
+    /**
+     * Issue 31: lesson 5's centipede started inside the race track's walls and nothing warned.
+     * The 8-module snake the track is made for fits it and gets no warning.
+     */
+    @Test
+    void aRobotThatDoesNotFitTheWorldIsAWarning() throws IOException {
+        Path w = oneSecondTrack();
+        Cli r = Cli.run("run", "../examples/tutorial/05-centipede-mirror.xml", "--sim", "centipede", "--world",
+                w.toString());
+        assertEquals(0, r.code, r.toString());
+        assertTrue(r.err.contains("simulated robot centipede: warning: the robot does not fit the world race-track-1s.xml:"
+                + " it starts"), r.err);
+        Cli fits = Cli.run("run", WORLDS + "race-track-snake.xml", "--sim", "snake:n=8", "--world", w.toString());
+        assertFalse(fits.err.contains("does not fit"), fits.err);
+    }
+
+    /** Issue 31: a script written for a world ran on the flat floor without a word when --world was left out. */
+    @Test
+    void aScriptThatNamesItsWorldSaysSoWithoutWorld() {
+        Cli r = Cli.run("run", WORLDS + "race-track-snake.xml", "--sim", "snake:n=8", "--duration", "0.1");
+        assertEquals(0, r.code, r.toString());
+        Path declared = Path.of(WORLDS, "race-track.xml").toAbsolutePath().normalize();
+        assertTrue(r.err.contains(WORLDS + "race-track-snake.xml: note: the script is written for the world " + declared
+                + "; --world " + declared + " runs it there"), r.err);
+        Cli in = Cli.run("run", WORLDS + "race-track-snake.xml", "--sim", "snake:n=8", "--world", WORLDS + "race-track.xml",
+                "--duration", "0.1");
+        assertFalse(in.err.contains("note:"), in.err);
+    }
 }

@@ -366,6 +366,8 @@ public final class IdeWindow implements HardwareHost {
         diagram.documentSwitched(files.file());
         choices.switchTo(files.pathForLoading());
         viewBar.show(choices.robot());
+        viewBar.world().show(choices.world(org.parpe.sim.world.WorldReader.declaredBy(files.pathForLoading(),
+                editor.document().get())));
         if (!runs.running()) {
             toolbar.setTarget(choices.target());
         }
@@ -567,6 +569,14 @@ public final class IdeWindow implements HardwareHost {
         log.setText("");
     }
 
+    /** Says {@code message} in the status bar and the Run log, from any thread. */
+    void sayLater(String message) {
+        post(() -> {
+            log(message);
+            status.setMessage(message);
+        });
+    }
+
     /** {@link #log} from any thread. */
     void logLater(String line) {
         post(() -> log(line));
@@ -693,6 +703,11 @@ public final class IdeWindow implements HardwareHost {
     /** The user picked {@code robot} for the file in the editor. */
     void robotChosen(String robot) {
         choices.robotChosen(robot);
+    }
+
+    /** The user picked {@code world} ({@link WorldPicker#FLAT} or a world file) for the file in the editor. */
+    void worldChosen(String world) {
+        choices.worldChosen(world);
     }
 
     /** The user picked {@code target} for the file in the editor. */

@@ -66,6 +66,8 @@ public final class RunActions implements ControlPanel.ControlSink {
     /** Whether the run going on was ended by the emergency stop. */
     private boolean emergency;
     private volatile SimMetrics lastMetrics;
+    /** The time limit of the world the run is in when it lasts that long (no duration given), else NaN. */
+    private double worldLimit = Double.NaN;
 
     RunActions(IdeWindow ide) {
         this.ide = ide;
@@ -233,6 +235,7 @@ public final class RunActions implements ControlPanel.ControlSink {
         World world = target.sim() ? ide.viewBar().world().world() : null; // read on the UI thread
         // a world's challenge lasts its time limit, as on the command line
         double limit = world != null && runFor < 0 ? world.timeLimit() : runFor;
+        worldLimit = world != null && runFor < 0 ? world.timeLimit() : Double.NaN;
         controller.start(run, b -> attach(b, target, spec, world, port, profile, recorder), limit, outcome -> {
             if (ide.shell().isDisposed()) {
                 return; // the window closed while the run was ending
@@ -326,8 +329,10 @@ public final class RunActions implements ControlPanel.ControlSink {
         }
         switch (outcome.status()) {
             case COMPLETED -> {
-                ide.log("Run completed at t = " + t + travelled);
-                ide.status().setMessage("Run completed at t = " + t + travelled);
+                String how = outcome.time() >= worldLimit - 1e-6 ? "Run ended at the world's time limit, t = "
+                        : "Run completed at t = ";
+                ide.log(how + t + travelled);
+                ide.status().setMessage(how + t + travelled);
             }
             case STOPPED -> {
                 // An emergency stop is not an ordinary stop: the log and the status bar say which it was.
@@ -446,6 +451,11 @@ public final class RunActions implements ControlPanel.ControlSink {
             }
             try (Simulator s = new Simulator(config, world)) {
                 preview = s.snapshot();
+                String misfit = s.misfit();
+                if (!misfit.isEmpty()) {
+                    // said when the robot or the world is chosen, not only when a run starts
+                    ide.sayLater("Robot " + spec + " " + misfit);
+                }
             } catch (RuntimeException e) {
                 ide.logLater("cannot show the robot '" + spec + "': " + e.getMessage());
             }

@@ -9,14 +9,16 @@ import org.parpe.gui.run.RunOn;
 import org.parpe.sim.SimTarget;
 
 /**
- * The simulated robot and the run target chosen for each file. A file that was never given a
- * robot runs on {@code auto} (the robot its script is written for), whatever another file ran
- * on; the target is the simulator for every file at the start of a session, so that yesterday's
- * serial port cannot make today's lesson fail. The robot is remembered across sessions (in
- * {@link Prefs}), the target only for this session. UI thread only.
+ * The simulated robot, the world and the run target chosen for each file. A file that was never
+ * given a robot runs on {@code auto} (the robot its script is written for), whatever another file
+ * ran on; one never given a world runs in the world its script names ({@code <?parpe world?>}),
+ * else on the flat floor; the target is the simulator for every file at the start of a session,
+ * so that yesterday's serial port cannot make today's lesson fail. The robot and the world are
+ * remembered across sessions (in {@link Prefs}), the target only for this session. UI thread only.
  */
 final class RunChoices {
     private static final String ROBOT = "robot.";
+    private static final String WORLD = "world.";
 
     private final Prefs prefs;
     private final Map<Path, RunOn> targets = new HashMap<>();
@@ -39,6 +41,21 @@ final class RunChoices {
     /** The target chosen for the current file in this session: the simulator unless another was chosen. */
     RunOn target() {
         return current == null ? RunOn.SIMULATOR : targets.getOrDefault(current, RunOn.SIMULATOR);
+    }
+
+    /**
+     * The world chosen for the current file ({@link WorldPicker#FLAT} or a world file), or
+     * {@code declared} (the world its script names; null: the flat floor) unless one was chosen for it.
+     */
+    String world(Path declared) {
+        String fallback = declared == null ? WorldPicker.FLAT : declared.toString();
+        return current == null ? fallback : prefs.get(WORLD + current, fallback);
+    }
+
+    void worldChosen(String world) {
+        if (current != null) {
+            prefs.put(WORLD + current, world);
+        }
     }
 
     void robotChosen(String robot) {

@@ -20,8 +20,9 @@ import org.parpe.sim.world.WorldReader;
 
 /**
  * The world picker beside the robot picker: the flat floor, the example worlds of
- * {@code examples/worlds}, or a world file. A world's problems go to the run log with their
- * {@code FILE:LINE:COL}; the choice then falls back to the flat floor.
+ * {@code examples/worlds}, or a world file. Each file has its own world ({@link RunChoices}), shown
+ * here when the file is. A world's problems go to the run log with their {@code FILE:LINE:COL};
+ * the choice then falls back to the flat floor.
  */
 final class WorldPicker {
     static final String FLAT = "flat floor";
@@ -50,19 +51,51 @@ final class WorldPicker {
             }
         }
         String file = prefs.get("view.worldFile", null);
-        if (file != null && Files.isRegularFile(Path.of(file)) && !files.contains(Path.of(file))) {
-            add(Path.of(file));
+        Path last = file == null ? null : Path.of(file).toAbsolutePath().normalize();
+        if (last != null && Files.isRegularFile(last) && !files.contains(last)) {
+            add(last);
         }
         combo.add(BROWSE);
-        int at = combo.indexOf(prefs.get("view.world", FLAT));
-        combo.select(at >= 0 ? at : 0);
+        // Each file has its own world (RunChoices): the flat floor until the file is shown.
+        combo.select(0);
         combo.addListener(SWT.Selection, e -> {
             if (BROWSE.equals(combo.getText()) && !browse()) {
                 combo.select(0);
             }
-            prefs.put("view.world", combo.getText());
             changed.run();
         });
+    }
+
+    /** The choice as {@link RunChoices} keeps it: {@link #FLAT} or the world file's path. */
+    String choice() {
+        Path f = file();
+        return f == null ? FLAT : f.toString();
+    }
+
+    /**
+     * Shows {@code choice} ({@link #FLAT} or a world file) as chosen for the file now in the
+     * editor; a world file that is no longer there shows the example world of that name, else the flat floor.
+     */
+    void show(String choice) {
+        Path p = FLAT.equals(choice) ? null : Path.of(choice);
+        if (p != null && !Files.isRegularFile(p)) {
+            p = files.stream().filter(f -> f.getFileName().equals(Path.of(choice).getFileName())).findFirst().orElse(null);
+        }
+        if (p == null) {
+            combo.select(0);
+        } else {
+            choose(p);
+        }
+    }
+
+    /** Picks the world file {@code p} (null: the flat floor) as the user does in the picker (automation, tests). */
+    void pick(Path p) {
+        if (p == null) {
+            combo.select(0);
+        } else {
+            choose(p);
+        }
+        combo.notifyListeners(SWT.Selection, new org.eclipse.swt.widgets.Event());
     }
 
     /** Whether {@code p} is a world file (root element {@code <world>}), not a script beside it. */
@@ -75,6 +108,7 @@ final class WorldPicker {
     }
 
     private void add(Path p) {
+        p = p.toAbsolutePath().normalize();
         files.add(p);
         combo.add(p.getFileName().toString());
     }
@@ -91,6 +125,7 @@ final class WorldPicker {
 
     /** Selects the world file {@code p}, adding it to the choices if needed (also for automation and tests). */
     void choose(Path p) {
+        p = p.toAbsolutePath().normalize();
         int i = files.indexOf(p);
         if (i < 0) {
             files.add(p);

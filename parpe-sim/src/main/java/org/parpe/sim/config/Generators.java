@@ -40,8 +40,8 @@ final class Generators {
 
     /**
      * The paper's Fig. 6 cart wheel: a hub with {@code n} spokes, each a segment with a foot. IDs
-     * 0..n−1 go round the hub clockwise as seen from the +y side (the way the wheel rolls
-     * toward +x), so a wave whose phase lags from module to module rolls it forwards.
+     * 0..n−1 go round the hub so that a wave whose phase lags from module to module (the Fig. 7
+     * gait) rolls it forwards, toward +x.
      */
     static RobotConfig wheel(String name, int n) {
         Builder b = new Builder();
@@ -52,8 +52,9 @@ final class Generators {
             b.passive("f" + i, PartType.FOOT);
             b.connect("s" + i, 1, "f" + i, 0, 0);
         }
-        // Roll 90°: the axle (hub z) is horizontal, the wheel stands in the x-z plane.
-        return b.build(name, new RootPose("hub", 0, 0, 90, 0, 0));
+        // Roll 90°: the axle (hub z) is horizontal, the wheel stands in the x-z plane; yaw 180°:
+        // it faces +x, the way the Fig. 7 gait rolls it (forwards, as every standard robot goes).
+        return b.build(name, new RootPose("hub", 0, 0, 90, 0, 180));
     }
 
     /**

@@ -72,6 +72,16 @@ public final class Assembly {
                             boolean connected) {
     }
 
+    /**
+     * What a rolling robot (a wheel or a closed loop) is judged by for falling: one of its pieces
+     * and the direction of its axle in that piece's own frame.
+     *
+     * @param piece the piece: the first hub, else the root segment's (or the first segment's) servo half
+     * @param local the axle in the piece's frame (unit): the hub's disc axis, or the hinge axis
+     */
+    public record Axle(int piece, Vec3 local) {
+    }
+
     /** How many assemblies {@link #build} has made in this class loader: a run should make one. */
     static final AtomicInteger BUILT = new AtomicInteger();
 
@@ -80,14 +90,16 @@ public final class Assembly {
     private final List<PlateSite> plates;
     private final int clusterCount;
     private final int rootPiece;
+    private final Axle axle;
 
     private Assembly(List<PlacedPiece> pieces, List<Hinge> hinges, List<PlateSite> plates, int clusterCount,
-                     int rootPiece) {
+                     int rootPiece, Axle axle) {
         this.pieces = List.copyOf(pieces);
         this.hinges = List.copyOf(hinges);
         this.plates = List.copyOf(plates);
         this.clusterCount = clusterCount;
         this.rootPiece = rootPiece;
+        this.axle = axle;
     }
 
     /** Every connection plate, part by part in configuration order, each part's plates in order. */
@@ -112,6 +124,11 @@ public final class Assembly {
     /** The first piece of the root part. */
     public int rootPiece() {
         return rootPiece;
+    }
+
+    /** The axle of a rolling robot (one with a hub, or whose connections close a loop), or null. */
+    public Axle axle() {
+        return axle;
     }
 
     /** Assembles {@code config}; returns {@code null} after reporting errors to {@code diags}. */
@@ -160,7 +177,10 @@ public final class Assembly {
         if (!ok) {
             return null;
         }
-        return place(parts, geos, placement, first, cluster, config.root().height(), plateSites(config, geos, first, index));
+        // Placement reached every part from the root, so one connection more than a tree has closes a loop.
+        boolean loop = config.connections().size() >= parts.size();
+        return place(parts, geos, placement, first, cluster, config.root().height(), loop,
+                plateSites(config, geos, first, index));
     }
 
     /** The plates of every part relative to their pieces (a piece turns with its plate, so joint angles do not matter). */
@@ -186,7 +206,7 @@ public final class Assembly {
     }
 
     private static Assembly place(List<PartSpec> parts, List<PartGeometry> geos, Placement placement,
-                                  int[] first, int[] cluster, double height, List<PlateSite> plates) {
+                                  int[] first, int[] cluster, double height, boolean loop, List<PlateSite> plates) {
         List<PlacedPiece> placed = new ArrayList<>();
         List<Hinge> hinges = new ArrayList<>();
         for (int i = 0; i < parts.size(); i++) {
@@ -206,7 +226,9 @@ public final class Assembly {
         }
         hinges.sort((a, b) -> Integer.compare(a.moduleId(), b.moduleId()));
         int clusters = Arrays.stream(cluster).max().orElse(-1) + 1;
-        Assembly a = new Assembly(placed, hinges, plates, clusters, first[placement.rootIndex()]);
+        int root = placement.rootIndex();
+        Assembly a = new Assembly(placed, hinges, plates, clusters, first[root],
+                axleOf(parts, placed, hinges, first, root, loop));
         return a.moved(Mat3.IDENTITY, Vec3.ZERO, new Vec3(0, 0, height - lowest(placed)));
     }
 
@@ -225,7 +247,27 @@ public final class Assembly {
             outHinges.add(new Hinge(h.moduleId(), h.base(), h.arm(), movedPoint(h.anchor(), turn, pivot, shift),
                     Geo.mul(turn, h.axis()), h.angle(), h.limp()));
         }
-        return new Assembly(out, outHinges, plates, clusterCount, rootPiece);
+        return new Assembly(out, outHinges, plates, clusterCount, rootPiece, axle);
+    }
+
+    /** The axle a rolling robot is judged by ({@link Axle}), or null for a robot that does not roll. */
+    private static Axle axleOf(List<PartSpec> parts, List<PlacedPiece> placed, List<Hinge> hinges, int[] first,
+                               int root, boolean loop) {
+        for (int i = 0; i < parts.size(); i++) {
+            if (parts.get(i).type() == org.parpe.sim.config.PartType.HUB) {
+                return new Axle(first[i], new Vec3(0, 0, 1));
+            }
+        }
+        if (!loop || hinges.isEmpty()) {
+            return null;
+        }
+        Hinge h = hinges.get(0);
+        for (Hinge c : hinges) {
+            if (c.base() == first[root]) {
+                h = c;
+            }
+        }
+        return new Axle(h.base(), Geo.mul(Geo.transpose(placed.get(h.base()).rotation()), h.axis()));
     }
 
     private static Vec3 movedPoint(Vec3 p, Mat3 turn, Vec3 pivot, Vec3 shift) {

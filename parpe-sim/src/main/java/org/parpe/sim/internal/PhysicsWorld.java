@@ -146,6 +146,33 @@ public final class PhysicsWorld implements AutoCloseable {
         return limp[h];
     }
 
+    /**
+     * How deep, m, the robot is inside the world's scenery or movable objects now (0 when it is
+     * clear of them or on the flat floor; the floor itself does not count): a robot placed at a
+     * world's start that does not fit it. Not for the tick loop (it allocates).
+     */
+    public double sceneryOverlap() {
+        if (scenery == null) {
+            return 0;
+        }
+        double[] deepest = {0};
+        org.ode4j.ode.DContactGeomBuffer found = new org.ode4j.ode.DContactGeomBuffer(8);
+        DGeom.DNearCallback probe = (data, g1, g2) -> {
+            boolean robot1 = g1.getData() instanceof Integer;
+            boolean robot2 = g2.getData() instanceof Integer;
+            if (robot1 == robot2 || (robot1 ? g2 : g1) instanceof org.ode4j.ode.DPlane) {
+                return; // two parts of the robot, two things of the world, or the floor
+            }
+            int n = OdeHelper.collide(g1, g2, 8, found);
+            for (int i = 0; i < n; i++) {
+                deepest[0] = Math.max(deepest[0], found.get(i).depth);
+            }
+        };
+        space.collide(null, probe);
+        OdeHelper.spaceCollide2(space, scenery.fixedSpace(), null, probe);
+        return deepest[0];
+    }
+
     /** Advances by {@code dt} seconds in equal sub-steps; touch flags cover the whole interval. */
     public void advance(double dt) {
         int steps = Math.max(1, (int) Math.ceil(dt / params.maxSubstep() - 1e-9));

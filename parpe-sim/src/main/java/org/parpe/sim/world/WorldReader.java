@@ -26,6 +26,29 @@ public final class WorldReader {
             + " <chip>, <ball>, <cup>, <lever>, <zone>, <checkpoint>, <goal>, <path-score>, <deliver>, <press>"
             + " or <disqualify>";
 
+    /** How a script names the world it is written for: {@code <?parpe world="../worlds/rubble.xml"?>}. */
+    private static final java.util.regex.Pattern DECLARED =
+            java.util.regex.Pattern.compile("<\\?parpe\\s+world\\s*=\\s*\"([^\"]+)\"\\s*\\?>");
+
+    /**
+     * The world file that the script {@code script} with text {@code text} says it is written for
+     * ({@code <?parpe world="FILE"?>}, a path relative to the script's folder, before the root
+     * element), or null when it names none. Not checked to exist or be a world.
+     */
+    public static Path declaredBy(Path script, String text) {
+        java.util.regex.Matcher m = DECLARED.matcher(text);
+        int root = text.indexOf("<program");
+        if (!m.find() || root >= 0 && m.start() > root) {
+            return null;
+        }
+        try {
+            Path dir = script.toAbsolutePath().getParent();
+            return (dir == null ? Path.of(m.group(1)) : dir.resolve(m.group(1))).normalize();
+        } catch (java.nio.file.InvalidPathException e) {
+            return null;
+        }
+    }
+
     private final FlatXmlFile xml;
     private final Scenery scenery;
     private final List<World.Region> zones = new ArrayList<>();
