@@ -71,6 +71,21 @@ class DiagramsTest {
         assertTrue(s.lanes().get(1).bars().get(0).overlaps().isEmpty());
     }
 
+    /** Issue 35: the ring marks the states that arm or release connection plates (PARSL.md §14), in words. */
+    @Test
+    void theRingSaysWhatAStateDoesToThePlates() {
+        String text = "<program><robot><structure><g elements=\"0..3\"/></structure>"
+                + "<actuators><latch elements=\"g\"/></actuators></robot><main><b/></main>"
+                + "<behaviors><b><w group=\"g\"/></b></behaviors><automata><w states=\"reach, hold, go\"/></automata>"
+                + "<states><reach angles=\"30\" latch=\"0, 1\"/><hold angles=\"30\"/><go angles=\"0\" unlatch=\"1\"/></states>"
+                + "</program>";
+        Program p = ScriptLoader.loadText(Path.of("t.xml"), text, java.util.Map.of()).program();
+        Ring r = Diagrams.ring(p, p.automaton("w").orElseThrow());
+        assertEquals(List.of("latches plates 0, 1", "", "releases plate 1"), r.arcs().stream().map(Ring.Arc::plates).toList());
+        String svg = org.parpe.core.diagram.Layouts.ring(r).svg();
+        assertTrue(svg.contains(">latches plates 0, 1<") && svg.contains(">releases plate 1<"), svg);
+    }
+
     @Test
     void ringArcsAreProportionalToTheDurations() {
         Ring r = Diagrams.ring(load("centipede-walk.xml"), load("centipede-walk.xml").automaton("step").orElseThrow());

@@ -17,6 +17,7 @@ import org.parpe.core.model.Instance;
 import org.parpe.core.model.MainDef;
 import org.parpe.core.model.MainEntry;
 import org.parpe.core.model.Program;
+import org.parpe.core.model.StateDef;
 import org.parpe.core.model.Timing;
 
 /**
@@ -157,11 +158,27 @@ public final class Diagrams {
             List<String> angles = a.states().get(i).angles().stream().map(Expression::text).toList();
             List<Double> pose = group == null ? List.of() : pose(p, a.states().get(i), group, on.mirror());
             arcs.add(new Ring.Arc(i, a.states().get(i).name(), t.duration().text(), text(t.exit()), angles, pose,
-                    seconds[i], at, i == n - 1 ? 1.0 : at + share, a.states().get(i).pos()));
+                    seconds[i], plates(a.states().get(i)), at, i == n - 1 ? 1.0 : at + share, a.states().get(i).pos()));
             at += share;
         }
         return new Ring(a.name(), a.table(), group == null ? null : (on.mirror() ? "!" : "") + group.name(),
                 group == null ? 0 : group.size(), arcs, islands, a.pos());
+    }
+
+    /** What entering {@code s} does to the connection plates, in words ("latches plates 0, 1; releases plate 1"), or "". */
+    static String plates(StateDef s) {
+        List<String> parts = new ArrayList<>();
+        if (!s.latch().isEmpty()) {
+            parts.add("latches " + plateWords(s.latch()));
+        }
+        if (!s.unlatch().isEmpty()) {
+            parts.add("releases " + plateWords(s.unlatch()));
+        }
+        return String.join("; ", parts);
+    }
+
+    private static String plateWords(List<Integer> plates) {
+        return (plates.size() == 1 ? "plate " : "plates ") + String.join(", ", plates.stream().map(String::valueOf).toList());
     }
 
     /** The group of the first instance of {@code a} (behaviors in order), or {@code null}. */

@@ -32,6 +32,8 @@ final class Rings {
     private static final double COLUMN = R1 + 40;
     private static final double GAP = 8;
     private static final int PREVIEW = 0x009e73;
+    /** The colour of a state's plate actions (PARSL.md §14). */
+    private static final int LATCH = 0x1f5fbf;
 
     /** How many times larger than at scale 1 the text is. */
     private final double t;
@@ -113,13 +115,18 @@ final class Rings {
         String lasts = "lasts " + (Double.isNaN(a.seconds()) ? a.duration() : Numbers.format(a.seconds())) + " s";
         List<Labels.Line> out = new ArrayList<>();
         if (compact) {
-            out.add(new Labels.Line(Labels.fit(a.state() + ", " + lasts, 12 * t, true, room), 12 * t, true, INK));
+            String mark = a.plates().isEmpty() ? "" : " (latch)";
+            out.add(new Labels.Line(Labels.fit(a.state() + mark + ", " + lasts, 12 * t, true, room), 12 * t, true, INK));
             return out;
         }
         out.add(new Labels.Line(Labels.fit(a.state(), 13 * t, true, room), 13 * t, true, INK));
         out.add(new Labels.Line(Labels.fit(lasts, 12 * t, false, room), 12 * t, false, INK));
         if (!a.angles().isEmpty()) {
             out.add(new Labels.Line(Labels.fit("angles " + angles(a), 12 * t, false, room), 12 * t, false, 0x444444));
+        }
+        if (!a.plates().isEmpty()) {
+            // the latch mark of PARSL.md §14: what entering the state does to the plates
+            out.add(new Labels.Line(Labels.fit(a.plates(), 12 * t, true, room), 12 * t, true, LATCH));
         }
         if (a.exit() != null) {
             out.add(new Labels.Line(Labels.fit("exit when " + a.exit(), 12 * t, true, room), 12 * t, true, RED));
