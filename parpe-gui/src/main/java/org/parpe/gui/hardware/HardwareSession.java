@@ -142,17 +142,23 @@ public final class HardwareSession {
             }
             // Limp or hold ends the jogs; the next one starts again from where the servo is.
             stopJogs();
+            int held = ids.length;
             if (on) {
-                bus.holdHere(ids, models, ids.length);
+                held = bus.holdHere(ids, models, ids.length);
             } else {
                 bus.torque(ids, models, ids.length, false);
             }
             Servo[] next = servos.toArray(new Servo[0]);
             for (int r : rows) {
-                next[r] = next[r].with(next[r].degrees(), on, next[r].status());
+                // a servo that did not answer was not told to hold: its torque is not known to be on
+                next[r] = next[r].with(next[r].degrees(), held == ids.length ? on : null, next[r].status());
             }
             servos = List.of(next);
             listener.updated(servos);
+            if (held < ids.length) {
+                listener.message((ids.length - held) + " of " + ids.length + " servos did not answer; they were not told"
+                        + " to hold and may still be limp. Check their power and cable, then press Hold again.", true);
+            }
         });
     }
 
@@ -178,7 +184,11 @@ public final class HardwareSession {
                 }
                 if (!Boolean.TRUE.equals(s.torque())) {
                     // Hold where it is first: the move starts from the present position, not an old goal.
-                    bus.holdHere(new int[] {s.id()}, new ServoModel[] {m}, 1);
+                    if (bus.holdHere(new int[] {s.id()}, new ServoModel[] {m}, 1) == 0) {
+                        listener.message("Servo " + s.id() + " did not answer; it was not moved and may still be limp."
+                                + " Check its power and cable, then try again.", true);
+                        return;
+                    }
                     Servo[] next = servos.toArray(new Servo[0]);
                     next[row] = s.with(s.degrees(), true, s.status());
                     servos = List.of(next);

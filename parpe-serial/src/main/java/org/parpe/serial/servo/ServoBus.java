@@ -159,6 +159,7 @@ public interface ServoBus extends AutoCloseable {
         double[] deg = new double[n];
         int[] err = new int[n];
         readPositions(ids, models, n, deg, err);
+        retrySilent(ids, models, n, deg, err);
         int[] held = new int[n];
         ServoModel[] heldModels = new ServoModel[n];
         int[] ticks = new int[n];
@@ -174,6 +175,37 @@ public interface ServoBus extends AutoCloseable {
             holdAt(held, heldModels, ticks, m);
         }
         return m;
+    }
+
+    /**
+     * Reads once more the positions of the servos that did not answer the first read (a reply
+     * lost on a busy line): a servo is held only where it is known to be.
+     */
+    private void retrySilent(int[] ids, ServoModel[] models, int n, double[] deg, int[] err) throws IOException {
+        int silent = 0;
+        for (int i = 0; i < n; i++) {
+            silent += err[i] == NO_REPLY ? 1 : 0;
+        }
+        if (silent == 0) {
+            return;
+        }
+        int[] again = new int[silent];
+        ServoModel[] againModels = new ServoModel[silent];
+        int[] at = new int[silent];
+        for (int i = 0, k = 0; i < n; i++) {
+            if (err[i] == NO_REPLY) {
+                again[k] = ids[i];
+                againModels[k] = models[i];
+                at[k++] = i;
+            }
+        }
+        double[] d = new double[silent];
+        int[] e = new int[silent];
+        readPositions(again, againModels, silent, d, e);
+        for (int k = 0; k < silent; k++) {
+            deg[at[k]] = d[k];
+            err[at[k]] = e[k];
+        }
     }
 
     /**
