@@ -139,14 +139,66 @@ class DockingTest {
 
     /** Distance between the free plate 0 of module 0 and the free plate 1 of module 11, m. */
     private static double gap(Simulator sim) {
+        return gap(sim, "s11");
+    }
+
+    /** Distance between the free plate 0 of part s0 and the free plate 1 of part {@code last}, m. */
+    private static double gap(Simulator sim, String last) {
         SimSnapshot s = sim.snapshot();
-        return Geo.sub(plate(s, "s0", PartKind.SEGMENT_BASE, -1), plate(s, "s11", PartKind.SEGMENT_ARM, 1)).length();
+        return Geo.sub(plate(s, "s0", PartKind.SEGMENT_BASE, -1), plate(s, last, PartKind.SEGMENT_ARM, 1)).length();
     }
 
     private static Vec3 plate(SimSnapshot s, String part, PartKind kind, int side) {
         SimBody b = SimTestSupport.piece(s, part, kind);
         // a segment half is 26 mm long, centred 13 mm inside its plate
         return Geo.add(b.position(), Geo.mul(b.rotation(), new Vec3(side * 0.013, 0, 0)));
+    }
+
+    /**
+     * The snake → loop → snake example (examples/docking-snake-loop.xml, issue 35): the ends latch
+     * within the first curl (dock reads 2 on both), the loop rolls at least 0.5 m, and the release
+     * parts the ends by more than 2 cm within 1 s.
+     */
+    @Test
+    void theSnakeCurlsIntoALoopRollsAndLetsGo() throws Exception {
+        Path example = Path.of("../examples/docking-snake-loop.xml");
+        LoadResult r = ScriptLoader.load(example, Map.of());
+        assertTrue(r.ok(), () -> r.diagnostics().toString());
+        Run.Builder b = Run.builder(r.program(), new RunOptions(0.01, 0, List.of()), new DiagnosticList());
+        SimTarget target = new SimTarget("snake:n=10");
+        b.attach(target);
+        Run run = b.duration(25).build();
+        Simulator sim = target.simulator();
+        double[] latchedAt = {-1};
+        double[] comAtLatch = new double[2];
+        double[] rolled = {0};
+        double[] releasedAt = {-1};
+        double[] gapAfter = {0};
+        double[] com = new double[3];
+        run.engine().addObserver((tick, time, commanded) -> {
+            boolean both = sim.dock(0, 0) == Docking.LATCHED && sim.dock(9, 1) == Docking.LATCHED;
+            SimSnapshot s = sim.snapshot();
+            com[0] = s.centerOfMass().x();
+            com[1] = s.centerOfMass().y();
+            if (latchedAt[0] < 0 && both) {
+                latchedAt[0] = time;
+                comAtLatch[0] = com[0];
+                comAtLatch[1] = com[1];
+            } else if (latchedAt[0] >= 0 && releasedAt[0] < 0) {
+                if (both) {
+                    rolled[0] = Math.max(rolled[0], Math.hypot(com[0] - comAtLatch[0], com[1] - comAtLatch[1]));
+                } else {
+                    releasedAt[0] = time;
+                }
+            } else if (releasedAt[0] >= 0 && time <= releasedAt[0] + 1) {
+                gapAfter[0] = gap(sim, "s9");
+            }
+        });
+        run.execute();
+        assertTrue(latchedAt[0] > 0 && latchedAt[0] < 8, "the ends latch within the first curl: at " + latchedAt[0] + " s");
+        assertTrue(rolled[0] >= 0.5, "the loop rolls at least 0.5 m: " + rolled[0]);
+        assertTrue(releasedAt[0] > latchedAt[0], "the ends are released: at " + releasedAt[0]);
+        assertTrue(gapAfter[0] > 0.02, "a second after the release the ends are more than 2 cm apart: " + gapAfter[0]);
     }
 
     @Test

@@ -76,7 +76,8 @@ class SimulatedUnoTest {
         List<String> out = new ArrayList<>();
         for (String folder : List.of("examples", "examples/tutorial")) {
             try (Stream<Path> s = Files.list(ExportEqualityTest.ROOT.resolve(folder))) {
-                for (Path f : s.filter(p -> p.toString().endsWith(".xml")).sorted().toList()) {
+                // a docking example is refused by the export (ExportEqualityTest.aDockingExampleIsRefusedAtItsStates)
+                for (Path f : s.filter(p -> p.toString().endsWith(".xml") && !ExportEqualityTest.docks(p)).sorted().toList()) {
                     for (String servo : List.of("pwm", "dxl", "sts")) {
                         out.add(folder + "/" + f.getFileName() + " " + servo);
                     }
