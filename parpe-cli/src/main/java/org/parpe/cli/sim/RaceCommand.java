@@ -19,7 +19,6 @@ import org.parpe.sim.SimMetrics;
 import org.parpe.sim.SimTarget;
 import org.parpe.sim.Simulator;
 import org.parpe.sim.world.World;
-import org.parpe.sim.world.WorldScore;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -131,29 +130,8 @@ public final class RaceCommand implements Callable<Integer> {
                         + "s  %11.3f  %12.3f  %11.4f  %13.1f", rank++, e.script(), e.robot(), e.metrics().dx(),
                         e.metrics().distance(), e.metrics().speed(), e.metrics().maxTiltDeg())
                         + (scored ? String.format(Locale.ROOT, "  %10.1f  %s", e.metrics().score().score(),
-                                parts(e.metrics().score())) : ""));
+                                e.metrics().score().parts()) : ""));
             }
         }
-    }
-
-    /** The parts of a score that count, in words: "zone 31.2 s, path 1.40 m, 1 delivered, 2 presses, disqualified (tilt)". */
-    private static String parts(WorldScore s) {
-        List<String> p = new ArrayList<>();
-        if (!Double.isNaN(s.timeToZone())) {
-            p.add(String.format(Locale.ROOT, "zone %.1f s", s.timeToZone()));
-        }
-        if (s.pathDistance() > 0) {
-            p.add(String.format(Locale.ROOT, "path %.2f m", s.pathDistance()));
-        }
-        if (s.delivered() > 0) {
-            p.add(s.delivered() + " delivered");
-        }
-        if (s.presses() > 0) {
-            p.add(s.presses() + (s.presses() == 1 ? " press" : " presses"));
-        }
-        if (!s.disqualified().isEmpty()) {
-            p.add("disqualified (" + s.disqualified() + ")");
-        }
-        return p.isEmpty() ? "-" : String.join(", ", p);
     }
 }

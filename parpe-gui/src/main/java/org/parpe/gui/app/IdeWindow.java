@@ -113,7 +113,8 @@ public final class IdeWindow implements HardwareHost {
         bottom = Panels.folder(middle);
         problems = new ProblemsView(bottom, d -> reveal(d.pos()), this::markProblems);
         Panels.tab(bottom, "Problems", problems.control());
-        log = new StyledText(bottom, SWT.READ_ONLY | SWT.V_SCROLL | SWT.H_SCROLL | SWT.MULTI);
+        // Wrapped: a run's last lines (its score and parts) are read without scrolling sideways.
+        log = new StyledText(bottom, SWT.READ_ONLY | SWT.V_SCROLL | SWT.MULTI | SWT.WRAP);
         log.setFont(org.eclipse.jface.resource.JFaceResources.getTextFont());
         Panels.tab(bottom, "Run log", log);
         middle.setWeights(72, 28);
@@ -537,8 +538,29 @@ public final class IdeWindow implements HardwareHost {
     void log(String line) {
         if (!log.isDisposed()) {
             log.append(String.format(java.util.Locale.ROOT, "[%tT] %s%n", System.currentTimeMillis(), line));
-            log.setTopIndex(log.getLineCount() - 1);
+            log.setSelection(log.getCharCount()); // in sight, however many screen lines the wrapped lines take
         }
+    }
+
+    /** The Run log (tests). */
+    StyledText runLog() {
+        return log;
+    }
+
+    /**
+     * Brings the Run log to the front (a run's score is there), unless the Pose panel is: that is
+     * the user's work, not a view of the run.
+     */
+    void showRunLog() {
+        if (bottom.getSelection() != poseTab) {
+            bottom.setSelection(1);
+            log.setSelection(log.getCharCount());
+        }
+    }
+
+    /** Whether the Run log is the tab in front below the editor. */
+    boolean runLogInFront() {
+        return bottom.getSelection() != null && bottom.getSelection().getControl() == log;
     }
 
     void clearLog() {

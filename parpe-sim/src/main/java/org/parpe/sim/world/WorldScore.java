@@ -1,5 +1,7 @@
 package org.parpe.sim.world;
 
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
 
 /**
@@ -23,5 +25,29 @@ public record WorldScore(double score, double timeToZone, double pathDistance, i
                         + "\"checkpoints\": %d, \"delivered\": %d, \"presses\": %d, \"disqualified\": \"%s\"",
                 score, Double.isNaN(timeToZone) ? "null" : String.format(Locale.ROOT, "%.6f", timeToZone),
                 pathDistance, checkpoints, delivered, presses, disqualified);
+    }
+
+    /**
+     * The parts of the score that count, in words: "zone 31.2 s, path 1.40 m, 1 delivered, 2 presses,
+     * disqualified (tilt)", or "-" when none does (what {@code parpe race} and the IDE show).
+     */
+    public String parts() {
+        List<String> p = new ArrayList<>();
+        if (!Double.isNaN(timeToZone)) {
+            p.add(String.format(Locale.ROOT, "zone %.1f s", timeToZone));
+        }
+        if (pathDistance > 0) {
+            p.add(String.format(Locale.ROOT, "path %.2f m", pathDistance));
+        }
+        if (delivered > 0) {
+            p.add(delivered + " delivered");
+        }
+        if (presses > 0) {
+            p.add(presses + (presses == 1 ? " press" : " presses"));
+        }
+        if (!disqualified.isEmpty()) {
+            p.add("disqualified (" + disqualified + ")");
+        }
+        return p.isEmpty() ? "-" : String.join(", ", p);
     }
 }
