@@ -203,7 +203,7 @@ final class MenuBar {
     private void openSweep() {
         if (sweep == null || sweep.shell().isDisposed()) {
             sweep = SweepDialog.open(new SweepHost(ide.shell(), ide.editor(), ide.files()::pathForLoading,
-                    ide::robotChoice, ide::showRunDiagnostics));
+                    ide::robotChoice, () -> ide.viewBar().world().file(), ide::showRunDiagnostics));
         } else {
             sweep.activate();
         }
