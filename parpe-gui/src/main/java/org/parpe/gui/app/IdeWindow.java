@@ -376,6 +376,10 @@ public final class IdeWindow implements HardwareHost {
     /** Shows a load result: markers, Problems, outline, controls, plots and the robot preview. */
     void showValidation(LoadResult r) {
         validations++;
+        if (emptyScript()) {
+            showEmpty();
+            return;
+        }
         problems.setLoadDiagnostics(r.diagnostics());
         if (r.program() != null) {
             program = r.program();
@@ -392,6 +396,31 @@ public final class IdeWindow implements HardwareHost {
                     + (editor.plain() ? "   \u2014   no colouring: the file is over " + ParslEditor.COLOUR_LIMIT / 1_000_000 + " MB" : ""));
         }
     }
+
+    /** Whether the editor holds no script yet (nothing, white space, or a declaration and comments): the Diagram's "Start a robot". */
+    boolean emptyScript() {
+        return org.parpe.core.diagram.SectionEdits.blank(editor.document().get());
+    }
+
+    /**
+     * An empty file is a beginning, not a mistake: no problem listed, and nothing left of the
+     * script shown before (outline, table, controls, robot); the status bar says how to begin.
+     */
+    private void showEmpty() {
+        problems.setLoadDiagnostics(List.of());
+        program = null;
+        gaitGrid.setProgram(null);
+        outline.show(null);
+        if (!runs.running()) {
+            controls.show(null);
+            runs.forgetPreview();
+            view.clear();
+            status.setMessage(EMPTY);
+        }
+    }
+
+    /** What the status bar says of an empty file. */
+    static final String EMPTY = "The file is empty: start a robot in the Diagram tab, or type a script (File > New gives a template)";
 
     /**
      * What Problems holds, in words: "No problems" only when it is empty. The status bar says this

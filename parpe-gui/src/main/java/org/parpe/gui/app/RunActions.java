@@ -150,6 +150,11 @@ public final class RunActions implements ControlPanel.ControlSink {
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, why));
             return;
         }
+        if (ide.emptyScript()) {
+            ide.status().setMessage("Cannot run: t" + IdeWindow.EMPTY.substring(1));
+            report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, "the file is empty"));
+            return;
+        }
         Path path = ide.files().pathForLoading();
         String text = ide.editor().document().get();
         LoadResult first = Validator.load(path, text, Map.of());
