@@ -76,6 +76,7 @@ public final class IdeWindow implements HardwareHost {
     private final CTabItem poseTab;
     private final SashForm editorSplit;
     private SashForm mainSash;
+    private final TutorialDock tutorialDock;
     private HardwareDialog hardwareDialog;
     private volatile String hardwareHeld;
     private Program program;
@@ -142,6 +143,7 @@ public final class IdeWindow implements HardwareHost {
         SashMinimum.keepMinimum(middle, 160, 90);
         SashMinimum.keepMinimum(right, 150, 70, 100);
         this.mainSash = main;
+        tutorialDock = new TutorialDock(left, main);
 
         status = new StatusBar(shell);
         status.control().setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
@@ -434,6 +436,11 @@ public final class IdeWindow implements HardwareHost {
         }
         return (errors == 0 ? "" : errors + (errors == 1 ? " error" : " errors")) + (errors > 0 && warnings > 0 ? ", " : "")
                 + (warnings == 0 ? "" : warnings + (warnings == 1 ? " warning" : " warnings")) + ": see Problems";
+    }
+
+    /** Where the tutorial docks: a tab beside Outline. */
+    TutorialDock tutorialDock() {
+        return tutorialDock;
     }
 
     /** The outline | editor | 3D view split (tests). */
