@@ -228,7 +228,8 @@ public final class IdeWindow implements HardwareHost {
                 return;
             }
             var focus = e.display.getFocusControl();
-            if ((e.stateMask & SWT.MOD1) != 0 && focus != null && focus.getShell() == shell && zoomKey(e)) {
+            if ((e.stateMask & SWT.MOD1) != 0 && focus != null && focus.getShell() == shell && !tutorialDock.holds(focus)
+                    && zoomKey(e)) { // the docked tutorial zooms its lesson itself
                 e.doit = false;
                 e.type = SWT.None;
                 return;

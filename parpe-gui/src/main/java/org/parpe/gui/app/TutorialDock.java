@@ -67,6 +67,17 @@ final class TutorialDock {
         return tab == null || tab.isDisposed() ? null : tutorial;
     }
 
+    /** Whether {@code c} is part of the docked tutorial. */
+    boolean holds(org.eclipse.swt.widgets.Control c) {
+        TutorialWindow t = tutorial();
+        for (; t != null && c != null; c = c.getParent()) {
+            if (c == t.control()) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     /** The left column is wide while the tutorial is in front, narrow for the outline. */
     private void fit() {
         boolean lesson = tab != null && !tab.isDisposed() && folder.getSelection() == tab;
