@@ -423,7 +423,7 @@ public final class IdeWindow implements HardwareHost {
     }
 
     /** What the status bar says of an empty file. */
-    static final String EMPTY = "The file is empty: start a robot in the Diagram tab, or type a script (File > New gives a template)";
+    static final String EMPTY = "The file is empty: start a robot in the Diagram tab, or type a script";
 
     /**
      * What Problems holds, in words: "No problems" only when it is empty. The status bar says this
