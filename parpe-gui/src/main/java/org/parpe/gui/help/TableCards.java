@@ -9,6 +9,9 @@ import java.util.List;
  * a narrow column reads it without cells wrapping into each other's columns.
  */
 final class TableCards {
+    /** What a card's lines after its first start with. */
+    static final String INDENT = "    ";
+
     private TableCards() {
     }
 
@@ -31,7 +34,7 @@ final class TableCards {
                     if (c == 1) {
                         out.append("  ");
                     } else if (c > 1) {
-                        out.append("\n    ");
+                        out.append('\n').append(INDENT);
                         String name = c < names.length ? names[c].strip() : "";
                         if (!name.isEmpty()) {
                             spans.add(new Markdown.Span(out.length(), name.length() + 1, Markdown.Style.ITALIC, null));

@@ -338,6 +338,7 @@ public final class TutorialWindow {
         StringBuilder all = new StringBuilder();
         List<StyleRange> styles = new ArrayList<>();
         List<int[]> tables = new ArrayList<>();
+        List<int[]> cards = new ArrayList<>();
         links.clear();
         Color codeBack = shell.getDisplay().getSystemColor(SWT.COLOR_WIDGET_LIGHT_SHADOW);
         Color link = shell.getDisplay().getSystemColor(SWT.COLOR_LINK_FOREGROUND);
@@ -393,6 +394,8 @@ public final class TutorialWindow {
                     }
                     if (b.kind() == Markdown.Kind.TABLE) {
                         tables.add(new int[] {start, b.text().split("\n", -1).length});
+                    } else if (b != given) {
+                        cards.add(new int[] {start, b.text().split("\n", -1).length});
                     }
                     for (Markdown.Span s : b.spans()) {
                         styles.add(span(base + s.start(), s, link));
@@ -409,6 +412,16 @@ public final class TutorialWindow {
         text.setStyleRanges(merge(styles));
         for (int[] t : tables) {
             tabStops(t[0], t[1]);
+        }
+        for (int[] c : cards) {
+            // a card's cell that wraps goes on under its own start, not under the row's number
+            int first = text.getLineAtOffset(c[0]);
+            org.eclipse.swt.graphics.GC gc = new org.eclipse.swt.graphics.GC(text);
+            int cell = gc.textExtent(TableCards.INDENT).x;
+            gc.dispose();
+            for (int l = first; l < first + c[1]; l++) {
+                text.setLineWrapIndent(l, 1, text.getLine(l).startsWith(TableCards.INDENT) ? cell : cell / 2);
+            }
         }
     }
 
