@@ -344,7 +344,7 @@ public final class TutorialWindow {
         Color link = shell.getDisplay().getSystemColor(SWT.COLOR_LINK_FOREGROUND);
         for (Markdown.Block given : page.blocks()) {
             // a table wider than the column (a docked tutorial) reads as cards, not as cells wrapping into each other
-            Markdown.Block b = given.kind() == Markdown.Kind.TABLE && tooWide(given) ? TableCards.cards(given) : given;
+            Markdown.Block b = given.kind() == Markdown.Kind.TABLE && Tables.tooWide(text, given.text()) ? TableCards.cards(given) : given;
             int start = all.length();
             String indent = b.kind() == Markdown.Kind.ITEM ? "    ".repeat(Math.max(0, b.level() - 1)) + "  " : "";
             switch (b.kind()) {
@@ -411,17 +411,10 @@ public final class TutorialWindow {
         styles.sort(java.util.Comparator.comparingInt(r -> r.start));
         text.setStyleRanges(merge(styles));
         for (int[] t : tables) {
-            tabStops(t[0], t[1]);
+            Tables.tabStops(text, t[0], t[1]);
         }
         for (int[] c : cards) {
-            // a card's cell that wraps goes on under its own start, not under the row's number
-            int first = text.getLineAtOffset(c[0]);
-            org.eclipse.swt.graphics.GC gc = new org.eclipse.swt.graphics.GC(text);
-            int cell = gc.textExtent(TableCards.INDENT).x;
-            gc.dispose();
-            for (int l = first; l < first + c[1]; l++) {
-                text.setLineWrapIndent(l, 1, text.getLine(l).startsWith(TableCards.INDENT) ? cell : cell / 2);
-            }
+            Tables.hangCards(text, c[0], c[1]);
         }
     }
 
@@ -465,54 +458,6 @@ public final class TutorialWindow {
             }
         }
         return out.toArray(new StyleRange[0]);
-    }
-
-    /** Whether the table {@code t}, each column as wide as its widest cell, is wider than the text's column. */
-    private boolean tooWide(Markdown.Block t) {
-        int room = text.getClientArea().width - text.getLeftMargin() - text.getRightMargin();
-        if (room <= 0) {
-            return false;
-        }
-        return columnWidths(List.of(t.text().split("\n", -1))).stream().mapToInt(Integer::intValue).sum() > room;
-    }
-
-    /** The width of each column of a table's {@code lines} (cells separated by tabs): its widest cell and a gap. */
-    private List<Integer> columnWidths(List<String> lines) {
-        org.eclipse.swt.graphics.GC gc = new org.eclipse.swt.graphics.GC(text);
-        try {
-            List<Integer> widths = new ArrayList<>();
-            for (String line : lines) {
-                String[] cells = line.split("\t", -1);
-                for (int c = 0; c < cells.length; c++) {
-                    int w = gc.textExtent(cells[c]).x + 24;
-                    if (widths.size() <= c) {
-                        widths.add(w);
-                    } else {
-                        widths.set(c, Math.max(widths.get(c), w));
-                    }
-                }
-            }
-            return widths;
-        } finally {
-            gc.dispose();
-        }
-    }
-
-    /** Tab stops for a table's {@code lines} lines from {@code offset}: each column as wide as its widest cell. */
-    private void tabStops(int offset, int lines) {
-        int first = text.getLineAtOffset(offset);
-        List<String> rows = new ArrayList<>();
-        for (int l = first; l < first + lines; l++) {
-            rows.add(text.getLine(l));
-        }
-        List<Integer> widths = columnWidths(rows);
-        int[] stops = new int[Math.max(1, widths.size() - 1)];
-        int x = 0;
-        for (int c = 0; c < stops.length && c < widths.size(); c++) {
-            x += widths.get(c);
-            stops[c] = x;
-        }
-        text.setLineTabStops(first, lines, stops);
     }
 
     /** A clickable run: a link's target, or code to put into the editor. */
