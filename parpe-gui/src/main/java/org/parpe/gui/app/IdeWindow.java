@@ -137,13 +137,17 @@ public final class IdeWindow implements HardwareHost {
         Panels.tab(plotFolder, "Joint angles", plots.control());
         right.setWeights(54, 18, 28);
         main.setWeights(15, 43, 42);
-        gaitGrid.onShown(v -> main.setWeights(v ? new int[] {11, 61, 28} : new int[] {15, 43, 42}));
+        tutorialDock = new TutorialDock(left, main);
+        gaitGrid.onShown(v -> {
+            if (!tutorialDock.inFront()) { // the docked tutorial keeps its column
+                main.setWeights(v ? new int[] {11, 61, 28} : new int[] {15, 43, 42});
+            }
+        });
         // Sane minimums at 1366x768: the outline, the editor, the 3D view's tools, Problems and the plots stay usable.
         SashMinimum.keepMinimum(main, 120, 420, 300);
         SashMinimum.keepMinimum(middle, 160, 90);
         SashMinimum.keepMinimum(right, 150, 70, 100);
         this.mainSash = main;
-        tutorialDock = new TutorialDock(left, main);
 
         status = new StatusBar(shell);
         status.control().setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
@@ -157,7 +161,9 @@ public final class IdeWindow implements HardwareHost {
         viewFolder.addListener(SWT.Selection, e -> {
             boolean d = viewFolder.getSelection().getControl() == diagram.control();
             right.setWeights(d ? new int[] {84, 4, 12} : new int[] {54, 18, 28});
-            main.setWeights(d ? new int[] {10, 38, 52} : new int[] {15, 43, 42});
+            if (!tutorialDock.inFront()) { // the docked tutorial keeps its column
+                main.setWeights(d ? new int[] {10, 38, 52} : new int[] {15, 43, 42});
+            }
         });
         menus = new MenuBar(this);
         menus.install();

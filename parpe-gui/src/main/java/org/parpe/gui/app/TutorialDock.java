@@ -78,9 +78,13 @@ final class TutorialDock {
         return false;
     }
 
+    /** Whether the docked tutorial is the tab in front of its column. */
+    boolean inFront() {
+        return tab != null && !tab.isDisposed() && folder.getSelection() == tab;
+    }
+
     /** The left column is wide while the tutorial is in front, narrow for the outline. */
     private void fit() {
-        boolean lesson = tab != null && !tab.isDisposed() && folder.getSelection() == tab;
-        main.setWeights(lesson ? WITH : WITHOUT);
+        main.setWeights(inFront() ? WITH : WITHOUT);
     }
 }

@@ -70,6 +70,15 @@ class TutorialDockGuiTest {
         assertTrue(view.width >= 300 && editor.width >= 300 && lesson.width >= 400, "all three are usable: tutorial " + lesson
                 + ", editor " + editor + ", 3D view " + view);
 
+        // the Diagram in front of the 3D view's column: the tutorial keeps its column
+        org.eclipse.swt.custom.CTabFolder views = (org.eclipse.swt.custom.CTabFolder) ide.view().control().getParent().getParent();
+        views.setSelection(Arrays.stream(views.getItems()).filter(i -> i.getText().equals("Diagram")).findFirst().orElseThrow());
+        views.notifyListeners(SWT.Selection, new Event());
+        Gui.settle();
+        Rectangle withDiagram = onScreen(t.control());
+        assertTrue(withDiagram.width >= 400 && !withDiagram.intersects(onScreen(ide.diagram().control())),
+                "beside the Diagram the tutorial " + withDiagram + " keeps its column");
+
         // the table of lessons on the first page: cards, not cells wrapped into each other's columns
         StyledText text = t.textWidget();
         assertTrue(t.shownText().contains("you will learn: what a module is"), "the table reads as cards:\n" + t.shownText());
