@@ -41,7 +41,10 @@ class ScoreAfterRunGuiTest {
 
     @Test
     void theFinalScoreAndItsPartsAreReadableAfterTheRun() throws Exception {
+        int checked = ide.validations();
         Gui.open(ide, Gui.example("worlds/race-track-snake.xml"));
+        // the opened text's check, which says "No problems" in the status bar, comes before the run, not after it
+        Gui.pump(() -> ide.validations() > checked && ide.program() != null, "the script's check");
         ide.viewBar().world().choose(Gui.example("worlds/race-track.xml"));
         ide.toolbar().setTarget(RunOn.SIMULATOR);
         ide.toolbar().setSpeed(Speed.MAX);
