@@ -76,6 +76,7 @@ public final class IdeWindow implements HardwareHost {
     private final CTabItem poseTab;
     private final SashForm editorSplit;
     private SashForm mainSash;
+    private final TutorialDock tutorialDock;
     private HardwareDialog hardwareDialog;
     private volatile String hardwareHeld;
     private Program program;
@@ -113,7 +114,8 @@ public final class IdeWindow implements HardwareHost {
         bottom = Panels.folder(middle);
         problems = new ProblemsView(bottom, d -> reveal(d.pos()), this::markProblems);
         Panels.tab(bottom, "Problems", problems.control());
-        log = new StyledText(bottom, SWT.READ_ONLY | SWT.V_SCROLL | SWT.H_SCROLL | SWT.MULTI);
+        // Wrapped: a run's last lines (its score and parts) are read without scrolling sideways.
+        log = new StyledText(bottom, SWT.READ_ONLY | SWT.V_SCROLL | SWT.MULTI | SWT.WRAP);
         log.setFont(org.eclipse.jface.resource.JFaceResources.getTextFont());
         Panels.tab(bottom, "Run log", log);
         middle.setWeights(72, 28);
@@ -135,10 +137,12 @@ public final class IdeWindow implements HardwareHost {
         Panels.tab(plotFolder, "Joint angles", plots.control());
         right.setWeights(54, 18, 28);
         main.setWeights(15, 43, 42);
-        // The grid beside the text widens the middle column, except while the Diagram tab is shown: the
-        // diagram keeps its share, and nothing moves under the mouse when an edit there opens a table.
+        tutorialDock = new TutorialDock(left, main);
+        // The grid beside the text widens the middle column, except while the Diagram tab is shown (the
+        // diagram keeps its share, and nothing moves under the mouse when an edit there opens a table) or the
+        // docked tutorial is in front (it keeps its column).
         gaitGrid.onShown(v -> {
-            if (!diagramShown(viewFolder)) {
+            if (!diagramShown(viewFolder) && !tutorialDock.inFront()) {
                 main.setWeights(v ? new int[] {11, 61, 28} : new int[] {15, 43, 42});
             }
         });
@@ -161,7 +165,9 @@ public final class IdeWindow implements HardwareHost {
         viewFolder.addListener(SWT.Selection, e -> {
             boolean d = diagramShown(viewFolder);
             right.setWeights(d ? new int[] {84, 4, 12} : new int[] {54, 18, 28});
-            main.setWeights(d ? new int[] {10, 38, 52} : gaitGrid.visible() ? new int[] {11, 61, 28} : new int[] {15, 43, 42});
+            if (!tutorialDock.inFront()) { // the docked tutorial keeps its column
+                main.setWeights(d ? new int[] {10, 38, 52} : gaitGrid.visible() ? new int[] {11, 61, 28} : new int[] {15, 43, 42});
+            }
         });
         menus = new MenuBar(this);
         menus.install();
@@ -237,7 +243,8 @@ public final class IdeWindow implements HardwareHost {
                 return;
             }
             var focus = e.display.getFocusControl();
-            if ((e.stateMask & SWT.MOD1) != 0 && focus != null && focus.getShell() == shell && zoomKey(e)) {
+            if ((e.stateMask & SWT.MOD1) != 0 && focus != null && focus.getShell() == shell && !tutorialDock.holds(focus)
+                    && zoomKey(e)) { // the docked tutorial zooms its lesson itself
                 e.doit = false;
                 e.type = SWT.None;
                 return;
@@ -399,6 +406,10 @@ public final class IdeWindow implements HardwareHost {
     /** Shows a load result: markers, Problems, outline, controls, plots and the robot preview. */
     void showValidation(LoadResult r) {
         validations++;
+        if (emptyScript()) {
+            showEmpty();
+            return;
+        }
         problems.setLoadDiagnostics(r.diagnostics());
         if (r.program() != null) {
             program = r.program();
@@ -416,6 +427,31 @@ public final class IdeWindow implements HardwareHost {
         }
     }
 
+    /** Whether the editor holds no script yet (nothing, white space, or a declaration and comments): the Diagram's "Start a robot". */
+    boolean emptyScript() {
+        return org.parpe.core.diagram.SectionEdits.blank(editor.document().get());
+    }
+
+    /**
+     * An empty file is a beginning, not a mistake: no problem listed, and nothing left of the
+     * script shown before (outline, table, controls, robot); the status bar says how to begin.
+     */
+    private void showEmpty() {
+        problems.setLoadDiagnostics(List.of());
+        program = null;
+        gaitGrid.setProgram(null);
+        outline.show(null);
+        if (!runs.running()) {
+            controls.show(null);
+            runs.forgetPreview();
+            view.clear();
+            status.setMessage(EMPTY);
+        }
+    }
+
+    /** What the status bar says of an empty file. */
+    static final String EMPTY = "The file is empty: start a robot in the Diagram tab, or type a script";
+
     /**
      * What Problems holds, in words: "No problems" only when it is empty. The status bar says this
      * after each check of the text and whenever Problems changes, so the two never disagree.
@@ -428,6 +464,11 @@ public final class IdeWindow implements HardwareHost {
         }
         return (errors == 0 ? "" : errors + (errors == 1 ? " error" : " errors")) + (errors > 0 && warnings > 0 ? ", " : "")
                 + (warnings == 0 ? "" : warnings + (warnings == 1 ? " warning" : " warnings")) + ": see Problems";
+    }
+
+    /** Where the tutorial docks: a tab beside Outline. */
+    TutorialDock tutorialDock() {
+        return tutorialDock;
     }
 
     /** The outline | editor | 3D view split (tests). */
@@ -561,8 +602,29 @@ public final class IdeWindow implements HardwareHost {
     void log(String line) {
         if (!log.isDisposed()) {
             log.append(String.format(java.util.Locale.ROOT, "[%tT] %s%n", System.currentTimeMillis(), line));
-            log.setTopIndex(log.getLineCount() - 1);
+            log.setSelection(log.getCharCount()); // in sight, however many screen lines the wrapped lines take
         }
+    }
+
+    /** The Run log (tests). */
+    StyledText runLog() {
+        return log;
+    }
+
+    /**
+     * Brings the Run log to the front (a run's score is there), unless the Pose panel is: that is
+     * the user's work, not a view of the run.
+     */
+    void showRunLog() {
+        if (bottom.getSelection() != poseTab) {
+            bottom.setSelection(1);
+            log.setSelection(log.getCharCount());
+        }
+    }
+
+    /** Whether the Run log is the tab in front below the editor. */
+    boolean runLogInFront() {
+        return bottom.getSelection() != null && bottom.getSelection().getControl() == log;
     }
 
     void clearLog() {

@@ -203,7 +203,7 @@ final class MenuBar {
     private void openSweep() {
         if (sweep == null || sweep.shell().isDisposed()) {
             sweep = SweepDialog.open(new SweepHost(ide.shell(), ide.editor(), ide.files()::pathForLoading,
-                    ide::robotChoice, ide::showRunDiagnostics));
+                    ide::robotChoice, () -> ide.viewBar().world().file(), ide::showRunDiagnostics));
         } else {
             sweep.activate();
         }
@@ -230,7 +230,10 @@ final class MenuBar {
         item(m, "&About PARPE", 0, () -> MessageDialog.openInformation(ide.shell(), "About PARPE", HelpText.ABOUT));
     }
 
-    /** Help → Tutorial: the lessons beside the examples ({@code docs/tutorial}), in their own window. */
+    /**
+     * Help → Tutorial: the lessons beside the examples ({@code docs/tutorial}), docked beside the
+     * outline where the screen has no room for their own window beside the IDE, else in that window.
+     */
     void openTutorial() {
         Path folder = Examples.tutorialFolder();
         if (folder == null) {
@@ -238,7 +241,8 @@ final class MenuBar {
                     + " examples. It is also online with the PARPE sources, in docs/tutorial/index.md.");
             return;
         }
-        TutorialWindow tutorial = new TutorialWindow(ide.shell(), folder, p -> ide.files().openExample(p), code -> {
+        java.util.function.Consumer<Path> open = p -> ide.files().openExample(p);
+        java.util.function.Consumer<String> insert = code -> {
             // At the caret, on a line of its own, as one change that Edit > Undo takes back.
             var w = ide.editor().widget();
             int at = w.getCaretOffset();
@@ -247,7 +251,16 @@ final class MenuBar {
             ide.shell().forceActive();
             ide.status().setMessage("The lesson's code is in the editor at line " + (w.getLineAtOffset(at) + 1)
                     + " (Edit > Undo takes it back).");
-        });
+        };
+        if (TutorialDock.wanted(ide.shell())) {
+            ide.tutorialDock().open(dock -> {
+                TutorialWindow t = TutorialWindow.docked(dock, folder, open, insert);
+                t.showInstalledCommands(Examples.installed());
+                return t;
+            });
+            return;
+        }
+        TutorialWindow tutorial = new TutorialWindow(ide.shell(), folder, open, insert);
         tutorial.showInstalledCommands(Examples.installed());
         tutorial.open();
     }

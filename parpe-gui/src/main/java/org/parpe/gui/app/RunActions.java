@@ -41,6 +41,7 @@ import org.parpe.sim.SimSnapshot;
 import org.parpe.sim.SimTarget;
 import org.parpe.sim.Simulator;
 import org.parpe.sim.world.World;
+import org.parpe.sim.world.WorldScore;
 import org.parpe.sim.config.RobotConfig;
 import org.parpe.sim.config.RobotConfigs;
 
@@ -68,6 +69,8 @@ public final class RunActions implements ControlPanel.ControlSink {
     private volatile SimMetrics lastMetrics;
     /** The time limit of the world the run is in when it lasts that long (no duration given), else NaN. */
     private double worldLimit = Double.NaN;
+    /** The score of the last run in a world, shown on the 3D line until the next run or another script or world. */
+    private WorldScore finalScore;
 
     RunActions(IdeWindow ide) {
         this.ide = ide;
@@ -147,6 +150,11 @@ public final class RunActions implements ControlPanel.ControlSink {
             ide.status().setMessage("Cannot run: " + why + ".");
             ide.shell().getDisplay().beep();
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, why));
+            return;
+        }
+        if (ide.emptyScript()) {
+            ide.status().setMessage("Cannot run: t" + IdeWindow.EMPTY.substring(1));
+            report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, "the file is empty"));
             return;
         }
         Path path = ide.files().pathForLoading();
@@ -231,6 +239,7 @@ public final class RunActions implements ControlPanel.ControlSink {
         ide.log("Run " + ide.files().name() + " on " + target.label().toLowerCase() + (target.sim() ? " (robot: " + spec + ")" : "")
                 + (target.hardware() ? " (port " + port + (profile == null ? "" : ", profile " + profile) + ")" : ""));
         controller.setSpeed(ide.toolbar().speed());
+        finalScore = null;
         Run.Builder run = Run.builder(program, RunOptions.defaults(), ide::runProblemLater);
         World world = target.sim() ? ide.viewBar().world().world() : null; // read on the UI thread
         // a world's challenge lasts its time limit, as on the command line
@@ -315,10 +324,11 @@ public final class RunActions implements ControlPanel.ControlSink {
         String t = String.format(java.util.Locale.ROOT, "%.2f s", outcome.time());
         SimMetrics m = lastMetrics;
         lastMetrics = null;
-        String travelled = m == null || outcome.status() == RunOutcome.Status.ERROR ? ""
-                : String.format(java.util.Locale.ROOT, "; the robot travelled %.3f m (%.3f m/s, forward %+.3f m)",
-                        m.distance(), m.speed(), m.dx())
-                + (m.score() == null ? "" : String.format(java.util.Locale.ROOT, "; score %.1f", m.score().score()));
+        boolean measured = m != null && outcome.status() != RunOutcome.Status.ERROR;
+        String travelled = !measured ? "" : String.format(java.util.Locale.ROOT,
+                "; the robot travelled %.3f m (%.3f m/s, forward %+.3f m)", m.distance(), m.speed(), m.dx());
+        WorldScore score = measured ? m.score() : null;
+        finalScore = score;
         if (m != null && m.fell()) {
             String choice = ide.robotChoice();
             ide.runProblemLater(new Diagnostic(Severity.WARNING, SourcePos.origin("Robot " + choice), String.format(
@@ -327,23 +337,23 @@ public final class RunActions implements ControlPanel.ControlSink {
                             + " this script is written for? Robot: auto picks the one that fits")));
             travelled += "; it fell over (see Problems)";
         }
-        switch (outcome.status()) {
-            case COMPLETED -> {
-                String how = outcome.time() >= worldLimit - 1e-6 ? "Run ended at the world's time limit, t = "
-                        : "Run completed at t = ";
-                ide.log(how + t + travelled);
-                ide.status().setMessage(how + t + travelled);
-            }
-            case STOPPED -> {
-                // An emergency stop is not an ordinary stop: the log and the status bar say which it was.
-                String how = emergency ? "Emergency stop at t = " : "Run stopped at t = ";
-                ide.log(how + t + travelled);
-                ide.status().setMessage(how + t + travelled);
-            }
-            case ERROR -> {
-                ide.log("Run failed: " + outcome.message());
-                ide.status().setMessage("Run failed: " + outcome.message());
-            }
+        String said = switch (outcome.status()) {
+            case COMPLETED -> (outcome.time() >= worldLimit - 1e-6 ? "Run ended at the world's time limit, t = "
+                    : "Run completed at t = ") + t + travelled;
+            // An emergency stop is not an ordinary stop: the log and the status bar say which it was.
+            case STOPPED -> (emergency ? "Emergency stop at t = " : "Run stopped at t = ") + t + travelled;
+            case ERROR -> "Run failed: " + outcome.message();
+        };
+        ide.log(said);
+        if (score == null) {
+            ide.status().setMessage(said);
+        } else {
+            // What a teacher records comes first: the status bar cuts a long message at its end.
+            String points = String.format(java.util.Locale.ROOT, "Score %.1f", score.score());
+            ide.log(points + ": " + score.inWords());
+            ide.status().setMessage(points + " (" + score.inWords() + ") \u2014 " + Character.toLowerCase(said.charAt(0))
+                    + said.substring(1));
+            ide.showRunLog();
         }
         ide.runStateChanged();
     }
@@ -462,25 +472,31 @@ public final class RunActions implements ControlPanel.ControlSink {
         });
     }
 
-    /** "   score 45.0 of the world's 60 s" while a run in a world goes on, else empty (UI thread). */
+    /**
+     * "   score 45.0   (time limit 60 s)" while a run in a world goes on, "   final score 45.0" after
+     * it until the next run or another script or world, else empty (UI thread).
+     */
     String scoreText() {
         Simulator s = sim;
         if (s == null || s.world() == null) {
-            return "";
+            WorldScore f = finalScore;
+            return f == null ? "" : String.format(java.util.Locale.ROOT, "   final score %.1f", f.score());
         }
         return String.format(java.util.Locale.ROOT, "   score %.1f   (time limit %.0f s)", s.liveScore(),
                 s.world().timeLimit());
     }
 
-    /** Drops the robot shown for the previous script. */
+    /** Drops the robot shown for the previous script, and the score of its last run. */
     void forgetPreview() {
         previewKey = "";
         preview = null;
+        finalScore = null;
     }
 
-    /** Forgets the preview so that the next validation rebuilds it (robot picker changed). */
+    /** Forgets the preview so that the next validation rebuilds it (robot or world picker changed); the last score goes with it. */
     void invalidatePreview() {
         previewKey = "";
+        finalScore = null;
     }
 
     void dispose() {

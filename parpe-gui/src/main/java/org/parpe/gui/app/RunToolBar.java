@@ -181,6 +181,16 @@ public final class RunToolBar {
         return estop;
     }
 
+    /** The Run button (tests). */
+    ToolItem runItem() {
+        return run;
+    }
+
+    /** The Pause / Resume button (tests). */
+    ToolItem pauseItem() {
+        return pause;
+    }
+
     public String port() {
         return port.getText().trim();
     }
@@ -203,7 +213,8 @@ public final class RunToolBar {
 
     /** Enables the buttons that make sense now. */
     void update(boolean running, boolean paused) {
-        run.setEnabled(!running || paused);
+        // Paused (a breakpoint, Pause), Resume goes on: Run beside it would be a second button for the same (F5 still resumes).
+        run.setEnabled(!running);
         pause.setEnabled(running);
         Icons icons = Icons.of(pause.getDisplay());
         pause.setText(paused ? "Resume" : "Pause");

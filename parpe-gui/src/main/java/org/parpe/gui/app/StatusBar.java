@@ -1,6 +1,7 @@
 package org.parpe.gui.app;
 
 import org.eclipse.swt.SWT;
+import org.eclipse.swt.graphics.GC;
 import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.widgets.Composite;
@@ -20,6 +21,8 @@ public final class StatusBar {
     private final Label time;
     private final Label caret;
     private boolean hardwareAlarm;
+    /** The message in full; the field shows as much of it as fits, the tooltip all of it. */
+    private String fullMessage = "";
 
     public StatusBar(Composite parent) {
         bar = new Composite(parent, SWT.NONE);
@@ -27,7 +30,9 @@ public final class StatusBar {
         gl.marginHeight = 2;
         gl.marginWidth = 6;
         bar.setLayout(gl);
-        message = field(SWT.DEFAULT, true);
+        // A fixed width hint: the field takes the bar's spare room whatever its text, and fit() shortens the text to it.
+        message = field(100, true);
+        message.addListener(SWT.Resize, e -> fit());
         keys = field(SWT.DEFAULT, false);
         separator();
         counts = field(SWT.DEFAULT, false);
@@ -67,13 +72,60 @@ public final class StatusBar {
         return bar;
     }
 
+    /**
+     * Shows {@code text} in the message field; what does not fit is cut at its end with "…" (a
+     * message says what matters first) and the tooltip shows it whole.
+     */
     public void setMessage(String text) {
-        message.setText(text);
+        fullMessage = text;
         message.setToolTipText(text);
+        fit();
     }
 
+    /** The message in full, however much of it the field shows. */
     public String message() {
-        return message.getText();
+        return fullMessage;
+    }
+
+    /** The message field (tests). */
+    Label messageField() {
+        return message;
+    }
+
+    private void fit() {
+        int width = message.getSize().x;
+        String shown = fullMessage;
+        if (width > 0) {
+            GC gc = new GC(message);
+            try {
+                shown = shortened(gc, fullMessage, width);
+            } finally {
+                gc.dispose();
+            }
+        }
+        if (!shown.equals(message.getText())) {
+            message.setText(shown);
+        }
+    }
+
+    /** {@code text}, or as much of it as fits {@code width} pixels followed by "…", cut after a word where one is near. */
+    static String shortened(GC gc, String text, int width) {
+        if (gc.textExtent(text).x <= width) {
+            return text;
+        }
+        int lo = 0;
+        int hi = text.length();
+        while (lo < hi) { // the longest start that fits with the ellipsis
+            int mid = (lo + hi + 1) / 2;
+            if (gc.textExtent(text.substring(0, mid) + "\u2026").x <= width) {
+                lo = mid;
+            } else {
+                hi = mid - 1;
+            }
+        }
+        int space = text.lastIndexOf(' ', lo);
+        int end = space > lo * 3 / 4 ? space : lo;
+        return text.substring(0, end).stripTrailing().replaceAll("[;,:(\u2014-]+$", "").stripTrailing() + "\u2026";
     }
 
     /** Where the steering keys go ("⌨ w s: steer the robot"), or empty when no run takes keys. */

@@ -4,12 +4,10 @@ import org.parpe.gui.prefs.Prefs;
 
 import org.parpe.gui.files.Examples;
 
-import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.stream.Stream;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
@@ -42,14 +40,7 @@ final class WorldPicker {
         combo = new Combo(bar, SWT.READ_ONLY);
         combo.setToolTipText("Where the simulated robot runs: the flat floor or a world with a score");
         combo.add(FLAT);
-        Path dir = Examples.folder() == null ? null : Examples.folder().resolve("worlds");
-        if (dir != null && Files.isDirectory(dir)) {
-            try (Stream<Path> s = Files.list(dir)) {
-                s.filter(WorldPicker::isWorld).sorted().forEach(this::add);
-            } catch (IOException e) {
-                ide.log("cannot list the example worlds in " + dir + ": " + e.getMessage());
-            }
-        }
+        Examples.worlds().forEach(this::add);
         String file = prefs.get("view.worldFile", null);
         Path last = file == null ? null : Path.of(file).toAbsolutePath().normalize();
         if (last != null && Files.isRegularFile(last) && !files.contains(last)) {
@@ -96,15 +87,6 @@ final class WorldPicker {
             choose(p);
         }
         combo.notifyListeners(SWT.Selection, new org.eclipse.swt.widgets.Event());
-    }
-
-    /** Whether {@code p} is a world file (root element {@code <world>}), not a script beside it. */
-    private static boolean isWorld(Path p) {
-        try {
-            return p.toString().endsWith(".xml") && Files.readString(p).contains("<world");
-        } catch (IOException e) {
-            return false;
-        }
     }
 
     private void add(Path p) {

@@ -104,6 +104,21 @@ public final class Examples {
         return dir == null ? List.of() : scriptsIn(dir.resolve("tutorial"));
     }
 
+    /** The example worlds ({@code examples/worlds}: files whose root element is {@code <world>}), sorted by name. */
+    public static List<Path> worlds() {
+        Path dir = folder();
+        return dir == null ? List.of() : scriptsIn(dir.resolve("worlds")).stream().filter(Examples::isWorld).toList();
+    }
+
+    /** Whether {@code p} is a world file (root element {@code <world>}), not a script beside it. */
+    private static boolean isWorld(Path p) {
+        try {
+            return Files.readString(p).contains("<world");
+        } catch (IOException e) {
+            return false;
+        }
+    }
+
     private static List<Path> scriptsIn(Path dir) {
         if (dir == null || !Files.isDirectory(dir)) {
             return List.of();

@@ -27,17 +27,21 @@ import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Shell;
 
 /**
- * Help → Tutorial: a window with the lessons of {@code docs/tutorial} on the left and the chosen
- * lesson on the right, rendered from its Markdown with its pictures. "Open the lesson's script"
- * puts the lesson's example in the editor (through the IDE's usual unsaved-text check). A normal
- * window, not one pinned above the IDE: it can go behind the editor and the 3D view, and it is
- * sized to fit on the screen beside them (a 1366×768 laptop); it closes with the IDE.
+ * Help → Tutorial: the lessons of {@code docs/tutorial} in a list and the chosen lesson rendered
+ * from its Markdown with its pictures. "Open the lesson's script" puts the lesson's example in the
+ * editor (through the IDE's usual unsaved-text check). Either docked in the IDE ({@link #docked}:
+ * a tab of its own, the list above the lesson) where the screen has no room beside the IDE (a
+ * 1366×768 laptop), or a normal window, not one pinned above the IDE, sized to fit on the screen
+ * beside it; it closes with the IDE.
  */
 public final class TutorialWindow {
     private static final int IMAGE_WIDTH = 720;
     private static final char OBJECT = '\uFFFC';
 
     private final Shell shell;
+    /** What holds the tutorial: its own window, or a composite in the IDE's dock. */
+    private final Composite root;
+    private final boolean docked;
     private final Path folder;
     private final List<Path> pages;
     private final org.eclipse.swt.widgets.List index;
@@ -48,10 +52,14 @@ public final class TutorialWindow {
     private Font code;
     private int zoom;
     private final List<Image> images = new ArrayList<>();
+    /** The files of the page's pictures, which a click shows at full size. */
+    private final java.util.Set<String> pictures = new java.util.HashSet<>();
     private final Consumer<Path> openScript;
     private final Consumer<String> insertCode;
     private final List<LinkRange> links = new ArrayList<>();
     private Path script;
+    /** The text's width when the page shown was laid out. */
+    private int renderedWidth = -1;
     private boolean installed;
 
     /**
@@ -67,31 +75,52 @@ public final class TutorialWindow {
      * lesson's XML into the editor, offered under each XML code block.
      */
     public TutorialWindow(Shell parent, Path folder, Consumer<Path> openScript, Consumer<String> insertCode) {
+        this(parent, null, folder, openScript, insertCode);
+    }
+
+    /**
+     * The tutorial docked in {@code dock} (a tab of the IDE), not in a window of its own: the list
+     * of lessons above the lesson, so that a narrow column holds both.
+     */
+    public static TutorialWindow docked(Composite dock, Path folder, Consumer<Path> openScript, Consumer<String> insertCode) {
+        return new TutorialWindow(dock.getShell(), dock, folder, openScript, insertCode);
+    }
+
+    private TutorialWindow(Shell parent, Composite dock, Path folder, Consumer<Path> openScript, Consumer<String> insertCode) {
         this.folder = folder;
         this.openScript = openScript;
         this.insertCode = insertCode;
         this.pages = pages(folder);
-        // A top-level window (no parent): one transient for the IDE stays above it and hides the editor.
-        shell = new Shell(parent.getDisplay(), SWT.SHELL_TRIM);
-        parent.addListener(SWT.Dispose, e -> {
-            if (!shell.isDisposed()) {
-                shell.dispose();
-            }
-        });
-        shell.setText("PARPE tutorial");
-        shell.setLayout(new GridLayout(1, false));
-        SashForm sash = new SashForm(shell, SWT.HORIZONTAL);
+        docked = dock != null;
+        if (docked) {
+            shell = parent;
+            root = new Composite(dock, SWT.NONE);
+        } else {
+            // A top-level window (no parent): one transient for the IDE stays above it and hides the editor.
+            shell = new Shell(parent.getDisplay(), SWT.SHELL_TRIM);
+            parent.addListener(SWT.Dispose, e -> {
+                if (!shell.isDisposed()) {
+                    shell.dispose();
+                }
+            });
+            shell.setText("PARPE tutorial");
+            root = shell;
+        }
+        root.setLayout(new GridLayout(1, false));
+        SashForm sash = new SashForm(root, docked ? SWT.VERTICAL : SWT.HORIZONTAL);
         sash.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
         index = new org.eclipse.swt.widgets.List(sash, SWT.BORDER | SWT.SINGLE | SWT.V_SCROLL);
         text = new StyledText(sash, SWT.BORDER | SWT.WRAP | SWT.V_SCROLL | SWT.READ_ONLY);
         text.setMargins(16, 12, 16, 12);
-        sash.setWeights(new int[] {22, 78});
+        sash.setWeights(docked ? new int[] {18, 82} : new int[] {22, 78});
         normal = text.getFont();
         fonts();
+        // the pictures and the tables are laid out for the column's width: again when it changes (the dock's sash)
+        text.addListener(SWT.Resize, e -> text.getDisplay().timerExec(200, this::fitWidth));
         // Ctrl + / Ctrl − / Ctrl 0 as in the IDE's editor (a projector): anywhere in this window.
         org.eclipse.swt.widgets.Listener keys = e -> {
             var focus = e.display.getFocusControl();
-            if ((e.stateMask & SWT.MOD1) != 0 && focus != null && focus.getShell() == shell
+            if ((e.stateMask & SWT.MOD1) != 0 && inside(focus)
                     && org.parpe.gui.panels.Zoom.step(e) != org.parpe.gui.panels.Zoom.NONE) {
                 zoom(org.parpe.gui.panels.Zoom.step(e));
                 e.doit = false;
@@ -99,7 +128,7 @@ public final class TutorialWindow {
             }
         };
         shell.getDisplay().addFilter(SWT.KeyDown, keys);
-        shell.addListener(SWT.Dispose, e -> e.display.removeFilter(SWT.KeyDown, keys));
+        root.addListener(SWT.Dispose, e -> e.display.removeFilter(SWT.KeyDown, keys));
         text.addListener(SWT.MouseUp, e -> {
             if (e.button == 1 && text.getSelectionCount() == 0) {
                 int at = text.getOffsetAtPoint(new org.eclipse.swt.graphics.Point(e.x, e.y));
@@ -119,7 +148,7 @@ public final class TutorialWindow {
                 e.gc.drawImage(img, e.x, e.y + e.ascent - e.style.metrics.ascent);
             }
         });
-        Composite buttons = new Composite(shell, SWT.NONE);
+        Composite buttons = new Composite(root, SWT.NONE);
         buttons.setLayout(new GridLayout(3, false));
         buttons.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         Button previous = button(buttons, "\u2190 Previous", () -> show(index.getSelectionIndex() - 1));
@@ -136,11 +165,33 @@ public final class TutorialWindow {
             index.add(title(p));
         }
         index.addListener(SWT.Selection, e -> show(index.getSelectionIndex()));
-        shell.addListener(SWT.Dispose, e -> {
+        root.addListener(SWT.Dispose, e -> {
             disposeImages();
             disposeFonts();
         });
-        fitTo(parent.getMonitor().getClientArea());
+        if (!docked) {
+            fitTo(parent.getMonitor().getClientArea());
+        }
+    }
+
+    /** Lays the page out again if the text's width changed since it was laid out, staying where it was scrolled to. */
+    private void fitWidth() {
+        if (text.isDisposed() || index.getSelectionIndex() < 0 || text.getClientArea().width == renderedWidth) {
+            return;
+        }
+        int top = text.getTopPixel();
+        show(index.getSelectionIndex());
+        text.setTopPixel(top);
+    }
+
+    /** Whether {@code c} is part of the tutorial. */
+    private boolean inside(org.eclipse.swt.widgets.Control c) {
+        for (; c != null; c = c.getParent()) {
+            if (c == root) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /**
@@ -165,14 +216,32 @@ public final class TutorialWindow {
         this.installed = installed;
     }
 
-    /** Opens the window on the first page. */
+    /** Opens the window (docked: shows the tutorial) on the first page. */
     public void open() {
-        shell.open();
+        if (!docked) {
+            shell.open();
+        }
         show(0);
     }
 
+    /** The tutorial's own window, or the IDE's when docked. */
     public Shell shell() {
         return shell;
+    }
+
+    /** What holds the tutorial: its window, or its composite in the dock. */
+    public Composite control() {
+        return root;
+    }
+
+    /** Whether the tutorial is docked in the IDE rather than a window of its own. */
+    public boolean isDocked() {
+        return docked;
+    }
+
+    /** The lesson's text (tests). */
+    public StyledText textWidget() {
+        return text;
     }
 
     /** The page titles, in order (tests). */
@@ -265,22 +334,33 @@ public final class TutorialWindow {
 
     private void render(Markdown.Page page, Path dir) {
         disposeImages();
+        renderedWidth = text.getClientArea().width;
         StringBuilder all = new StringBuilder();
         List<StyleRange> styles = new ArrayList<>();
         List<int[]> tables = new ArrayList<>();
+        List<int[]> cards = new ArrayList<>();
         links.clear();
         Color codeBack = shell.getDisplay().getSystemColor(SWT.COLOR_WIDGET_LIGHT_SHADOW);
         Color link = shell.getDisplay().getSystemColor(SWT.COLOR_LINK_FOREGROUND);
-        for (Markdown.Block b : page.blocks()) {
+        for (Markdown.Block given : page.blocks()) {
+            // a table wider than the column (a docked tutorial) reads as cards, not as cells wrapping into each other
+            Markdown.Block b = given.kind() == Markdown.Kind.TABLE && Tables.tooWide(text, given.text()) ? TableCards.cards(given) : given;
             int start = all.length();
             String indent = b.kind() == Markdown.Kind.ITEM ? "    ".repeat(Math.max(0, b.level() - 1)) + "  " : "";
             switch (b.kind()) {
                 case IMAGE -> {
-                    Image img = image(dir.resolve(b.target()).normalize());
+                    Path file = dir.resolve(b.target()).normalize();
+                    Image img = image(file);
                     if (img == null) {
                         all.append("[picture: ").append(b.text()).append(']');
                     } else {
                         all.append(OBJECT);
+                        // scaled to the column, a screenshot is past reading: a click shows it at full size
+                        links.add(new LinkRange(start, 1, file.toString(), null));
+                        String full = "\n\u25b6 See the picture at full size";
+                        links.add(new LinkRange(start + 2, full.length() - 1, file.toString(), null));
+                        styles.add(linkStyle(start + 2, full.length() - 1, link));
+                        all.append(full);
                         StyleRange r = new StyleRange();
                         r.start = start;
                         r.length = 1;
@@ -314,6 +394,8 @@ public final class TutorialWindow {
                     }
                     if (b.kind() == Markdown.Kind.TABLE) {
                         tables.add(new int[] {start, b.text().split("\n", -1).length});
+                    } else if (b != given) {
+                        cards.add(new int[] {start, b.text().split("\n", -1).length});
                     }
                     for (Markdown.Span s : b.spans()) {
                         styles.add(span(base + s.start(), s, link));
@@ -329,7 +411,10 @@ public final class TutorialWindow {
         styles.sort(java.util.Comparator.comparingInt(r -> r.start));
         text.setStyleRanges(merge(styles));
         for (int[] t : tables) {
-            tabStops(t[0], t[1]);
+            Tables.tabStops(text, t[0], t[1]);
+        }
+        for (int[] c : cards) {
+            Tables.hangCards(text, c[0], c[1]);
         }
     }
 
@@ -375,35 +460,6 @@ public final class TutorialWindow {
         return out.toArray(new StyleRange[0]);
     }
 
-    /** Tab stops for a table's {@code lines} lines from {@code offset}: each column as wide as its widest cell. */
-    private void tabStops(int offset, int lines) {
-        int first = text.getLineAtOffset(offset);
-        org.eclipse.swt.graphics.GC gc = new org.eclipse.swt.graphics.GC(text);
-        try {
-            List<Integer> widths = new ArrayList<>();
-            for (int l = first; l < first + lines; l++) {
-                String[] cells = text.getLine(l).split("\t", -1);
-                for (int c = 0; c < cells.length; c++) {
-                    int w = gc.textExtent(cells[c]).x + 24;
-                    if (widths.size() <= c) {
-                        widths.add(w);
-                    } else {
-                        widths.set(c, Math.max(widths.get(c), w));
-                    }
-                }
-            }
-            int[] stops = new int[Math.max(1, widths.size() - 1)];
-            int x = 0;
-            for (int c = 0; c < stops.length && c < widths.size(); c++) {
-                x += widths.get(c);
-                stops[c] = x;
-            }
-            text.setLineTabStops(first, lines, stops);
-        } finally {
-            gc.dispose();
-        }
-    }
-
     /** A clickable run: a link's target, or code to put into the editor. */
     private record LinkRange(int start, int length, String link, String code) {
     }
@@ -423,6 +479,10 @@ public final class TutorialWindow {
     }
 
     private void follow(String target) {
+        if (pictures.contains(target)) {
+            PictureWindow.open(shell, Path.of(target));
+            return;
+        }
         if (target.startsWith("http://") || target.startsWith("https://")) {
             org.eclipse.swt.program.Program.launch(target);
             return;
@@ -466,6 +526,7 @@ public final class TutorialWindow {
                 d = d.scaledTo(max, Math.max(1, d.height * max / d.width));
             }
             Image img = new Image(shell.getDisplay(), d);
+            pictures.add(p.toString());
             images.add(img);
             return img;
         } catch (org.eclipse.swt.SWTException e) {
@@ -476,6 +537,7 @@ public final class TutorialWindow {
     private void disposeImages() {
         images.forEach(Image::dispose);
         images.clear();
+        pictures.clear();
     }
 
     /** index.md, the numbered lessons in order, then any other page (teachers.md). */

@@ -75,8 +75,31 @@ public final class ControlPanel {
             hint.setForeground(body.getDisplay().getSystemColor(SWT.COLOR_DARK_GRAY));
             hint.setLayoutData(new GridData(SWT.FILL, SWT.TOP, true, false, 3, 1));
         }
+        for (Control c : body.getChildren()) {
+            wheelScrolls(c);
+        }
         relayout();
     }
+
+    /**
+     * The wheel over {@code c} (and its children) scrolls the panel: over a slider it changed the
+     * value, and so steered the running robot, when the user only meant to reach the next control.
+     */
+    private void wheelScrolls(Control c) {
+        c.addListener(SWT.MouseVerticalWheel, e -> {
+            e.doit = false; // the slider or box under the mouse does not see it
+            org.eclipse.swt.graphics.Point o = scroll.getOrigin();
+            scroll.setOrigin(o.x, Math.max(0, o.y - e.count * WHEEL_PIXELS));
+        });
+        if (c instanceof Composite k) {
+            for (Control child : k.getChildren()) {
+                wheelScrolls(child);
+            }
+        }
+    }
+
+    /** Pixels the panel scrolls per unit of a wheel event's count (GTK counts 3 per notch). */
+    private static final int WHEEL_PIXELS = 12;
 
     private void relayout() {
         int w = scroll.getClientArea().width;

@@ -33,13 +33,13 @@ final class CsvExport {
     }
 
     /** Writes {@code rows} (of a sweep of {@code runs} runs over {@code axes}) to {@code file}. */
-    static void write(Path file, List<Axis> axes, List<SweepRow> rows, int runs) throws IOException {
+    static void write(Path file, List<Axis> axes, List<SweepRow> rows, int runs, boolean scored) throws IOException {
         AtomicFiles.write(file, out -> {
             BufferedWriter w = new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8));
-            w.write(SweepCsv.header(axes));
+            w.write(SweepCsv.header(axes, scored));
             w.write('\n');
             for (SweepRow r : rows) {
-                w.write(SweepCsv.line(r, runs));
+                w.write(SweepCsv.line(r, runs, scored));
                 w.write('\n');
             }
             w.flush();
@@ -50,9 +50,9 @@ final class CsvExport {
      * Writes the header for {@code axes} and then the CSV lines in {@code lines} (the rows
      * {@link Results} did not keep went to its temporary file as they came) to {@code file}.
      */
-    static void write(Path file, List<Axis> axes, Results.Spill lines) throws IOException {
+    static void write(Path file, List<Axis> axes, Results.Spill lines, boolean scored) throws IOException {
         AtomicFiles.write(file, out -> {
-            out.write((SweepCsv.header(axes) + "\n").getBytes(StandardCharsets.UTF_8));
+            out.write((SweepCsv.header(axes, scored) + "\n").getBytes(StandardCharsets.UTF_8));
             lines.copyTo(out);
         });
     }
@@ -81,14 +81,15 @@ final class CsvExport {
             return;
         }
         List<Axis> axes = axes(results.parameters());
+        boolean scored = results.scored();
         Thread t = new Thread(() -> {
             boolean ok;
             String said;
             try (Results.Spill lines = spill) {
                 if (lines != null) {
-                    write(file, axes, lines);
+                    write(file, axes, lines, scored);
                 } else {
-                    write(file, axes, kept, runs);
+                    write(file, axes, kept, runs, scored);
                 }
                 ok = true;
                 said = "Saved " + count + " rows to " + file;

@@ -35,6 +35,7 @@ final class Results {
     private final Map<String, Double> own;
     private final int keep;
     private final int runs;
+    private final boolean scored;
     private final List<SweepRow> rows = new ArrayList<>();
     private SweepRow best;
     private int count;
@@ -52,6 +53,13 @@ final class Results {
      */
     Results(Path script, Mode mode, List<String> parameters, Map<String, Double> own, Objective objective, Constraints constraints,
             int keep, int runs) {
+        this(script, mode, parameters, own, objective, constraints, keep, runs, false);
+    }
+
+    /** As above; {@code scored}: the runs are in a world, so each has a score (a column of the table and the CSV). */
+    Results(Path script, Mode mode, List<String> parameters, Map<String, Double> own, Objective objective, Constraints constraints,
+            int keep, int runs, boolean scored) {
+        this.scored = scored;
         this.keep = keep;
         this.runs = runs;
         this.script = script;
@@ -69,6 +77,11 @@ final class Results {
 
     Mode mode() {
         return mode;
+    }
+
+    /** Whether the runs are in a world: each has a score. */
+    boolean scored() {
+        return scored;
     }
 
     /** The varied (or searched) parameters, in the order of the table's columns. */
@@ -132,11 +145,11 @@ final class Results {
                 spill.toFile().deleteOnExit();
                 spillOut = java.nio.file.Files.newBufferedWriter(spill);
                 for (SweepRow r : rows) {
-                    spillOut.write(org.parpe.sim.sweep.SweepCsv.line(r, runs));
+                    spillOut.write(org.parpe.sim.sweep.SweepCsv.line(r, runs, scored));
                     spillOut.write('\n');
                 }
             }
-            spillOut.write(org.parpe.sim.sweep.SweepCsv.line(row, runs));
+            spillOut.write(org.parpe.sim.sweep.SweepCsv.line(row, runs, scored));
             spillOut.write('\n');
         } catch (java.io.IOException e) {
             lost(e);

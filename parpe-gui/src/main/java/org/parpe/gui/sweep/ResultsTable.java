@@ -68,6 +68,9 @@ final class ResultsTable {
         measure("distance (m)", SweepRow::distance);
         measure("max tilt (\u00b0)", SweepRow::maxTiltDeg);
         measure("joint travel (\u00b0)", SweepRow::jointTravelDeg);
+        if (r.scored()) {
+            measure("score", SweepRow::score);
+        }
         columns.add(new Column("fell", row -> row.fell() ? "yes" : "no", Comparator.comparing(SweepRow::fell)));
         columns.add(new Column("error", SweepRow::error, Comparator.comparing(SweepRow::error)));
         for (int i = 0; i < columns.size(); i++) {

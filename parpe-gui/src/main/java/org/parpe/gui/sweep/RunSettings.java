@@ -10,19 +10,25 @@ import org.eclipse.swt.widgets.Text;
 import org.parpe.sim.sweep.Objective;
 
 /**
- * The dialog's top line, shared by sweeps and optimisations: the robot, the simulated seconds
- * per run, the threads (every core unless changed) and the objective.
+ * The dialog's top line, shared by sweeps and optimisations: the robot, the world, the simulated
+ * seconds per run, the threads (every core unless changed) and the objective.
  */
 final class RunSettings {
     private final RobotChoice robot;
+    private final WorldChoice world;
     private final Text duration;
     private final Spinner jobs;
     private final Combo objective;
 
-    /** The line in {@code parent} (a grid of 8 columns), starting on the IDE's robot {@code currentRobot}. */
-    RunSettings(Composite parent, String currentRobot) {
+    /**
+     * The line in {@code parent} (a grid of {@link #COLUMNS} columns), starting on the IDE's robot
+     * {@code currentRobot} and world {@code currentWorld} (null: the flat floor).
+     */
+    RunSettings(Composite parent, String currentRobot, java.nio.file.Path currentWorld) {
         new Label(parent, SWT.NONE).setText("Robot:");
         robot = new RobotChoice(parent, currentRobot);
+        new Label(parent, SWT.NONE).setText("   World:");
+        world = new WorldChoice(parent, currentWorld);
         new Label(parent, SWT.NONE).setText("   Seconds per run:");
         duration = new Text(parent, SWT.BORDER);
         duration.setText("10");
@@ -43,8 +49,15 @@ final class RunSettings {
         objective.setToolTipText("What ranks the runs (larger is better): the plot's vertical axis and what Optimise maximises");
     }
 
+    /** The widgets in the line. */
+    static final int COLUMNS = 10;
+
     RobotChoice robot() {
         return robot;
+    }
+
+    WorldChoice world() {
+        return world;
     }
 
     /** The seconds per run as typed (checked at Start). */
@@ -68,9 +81,14 @@ final class RunSettings {
         return Objective.values()[objective.getSelectionIndex()];
     }
 
+    void selectObjective(Objective o) {
+        objective.select(o.ordinal());
+    }
+
     /** Whether the boxes can be changed (not while runs are going on). */
     void setEnabled(boolean enabled) {
         robot.control().setEnabled(enabled);
+        world.control().setEnabled(enabled);
         duration.setEnabled(enabled);
         jobs.setEnabled(enabled);
         objective.setEnabled(enabled);

@@ -18,17 +18,18 @@ import org.parpe.sim.sweep.SweepSpec;
 
 /**
  * What Start was pressed with: the script (the editor's text, loaded as its file), the robot,
- * the seconds per run, the threads and the objective. Checks the boxes, then starts the
+ * the world, the seconds per run, the threads and the objective. Checks the boxes, then starts the
  * engine; every problem found before the start is a {@link SweepException} with one line.
  *
  * @param file      the path the text is loaded as
  * @param text      the editor's text
  * @param robot     {@code auto}, a generator, or a configuration file
+ * @param world     the world file the runs are in, or null for the flat floor
  * @param duration  the seconds per run, as typed
  * @param jobs      the threads
  * @param objective what ranks the runs
  */
-record StartRequest(Path file, String text, String robot, String duration, int jobs, Objective objective) {
+record StartRequest(Path file, String text, String robot, Path world, String duration, int jobs, Objective objective) {
     /** The scheduler's tick, as the IDE's runs and {@code parpe sweep} use. */
     static final double TICK = 0.01;
     /** The tilt beyond which a robot counts as fallen over, as {@code parpe sweep} counts it. */
@@ -39,12 +40,17 @@ record StartRequest(Path file, String text, String robot, String duration, int j
     }
 
     private Evaluator.Settings settings(Map<String, Double> held) throws SweepException {
+        if (objective == Objective.SCORE && world == null) {
+            // as parpe sweep --objective score without --world: every run's score would be empty
+            throw new SweepException("the objective score needs a world: choose one in World (on the flat floor a run"
+                    + " has no score); or choose another objective");
+        }
         Double seconds = Numbers.parsePlain(duration);
         if (seconds == null || !(seconds > 0) || seconds.isInfinite() || seconds < TICK) {
             throw new SweepException("the seconds per run must be a number >= " + Numbers.format(TICK) + ", got '"
                     + duration.trim() + "'");
         }
-        return new Evaluator.Settings(file, text, held, robot, seconds, TICK, FALL_TILT);
+        return new Evaluator.Settings(file, text, held, robot, seconds, TICK, FALL_TILT, world);
     }
 
     /** Starts the sweep the Sweep tab describes. */
@@ -54,7 +60,7 @@ record StartRequest(Path file, String text, String robot, String duration, int j
         SweepSpec spec = tab.spec(parameters);
         List<String> names = spec.axes().stream().map(Axis::name).toList();
         Results results = new Results(file, Results.Mode.SWEEP, names, own(parameters, names), objective, Constraints.NONE,
-                Results.KEEP, spec.size());
+                Results.KEEP, spec.size(), world != null);
         return new Started(results, SweepRunner.sweep(display, s, spec, jobs, events), spec.size());
     }
 
@@ -70,7 +76,7 @@ record StartRequest(Path file, String text, String robot, String duration, int j
         }
         List<String> names = space.parameters().stream().map(Parameter::name).toList();
         Results results = new Results(file, Results.Mode.OPTIMISE, names, own(parameters, names), objective, spec.constraints(),
-                Results.KEEP, spec.budget());
+                Results.KEEP, spec.budget(), world != null);
         return new Started(results, SweepRunner.optimise(display, s, spec, jobs, events), spec.budget());
     }
 

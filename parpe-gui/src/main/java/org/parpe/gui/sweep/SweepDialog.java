@@ -24,8 +24,8 @@ import org.parpe.sim.sweep.SweepRow;
 
 /**
  * Run → Sweep / Optimise…: a window beside the IDE (not modal) on the editor's script, unsaved
- * edits included. Above, the robot, the simulated seconds per run, the threads and the
- * objective; a Sweep tab and an Optimise tab; Start and Stop with a progress bar; the results
+ * edits included. Above, the robot, the world, the simulated seconds per run, the threads and
+ * the objective; a Sweep tab and an Optimise tab; Start and Stop with a progress bar; the results
  * table and the plot filled as runs finish; "Apply best" and "Save CSV…" below. The engine
  * runs on worker threads ({@link SweepRunner}); this class runs on the UI thread only.
  */
@@ -67,7 +67,7 @@ public final class SweepDialog {
         this.host = host;
         shell = new Shell(host.shell(), SWT.SHELL_TRIM | SWT.MODELESS);
         shell.setLayout(new GridLayout(1, false));
-        settings = new RunSettings(row(shell, 8), host.robot().get());
+        settings = new RunSettings(row(shell, RunSettings.COLUMNS), host.robot().get(), host.world().get());
         tabs = new TabFolder(shell, SWT.TOP);
         tabs.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, false));
         sweepTab = new SweepTab(tabs);
@@ -197,7 +197,7 @@ public final class SweepDialog {
         }
         try {
             StartRequest req = new StartRequest(host.script().get(), host.editor().document().get(), settings.robot().robot(),
-                    settings.duration(), settings.jobs(), settings.objective());
+                    settings.world().world(), settings.duration(), settings.jobs(), settings.objective());
             boolean sweeping = tabs.getSelectionIndex() == 0;
             SweepRunner.Events events = new Events(++generation);
             StartRequest.Started s = sweeping ? req.sweep(now, sweepTab, shell.getDisplay(), events)
@@ -421,6 +421,14 @@ public final class SweepDialog {
 
     RobotChoice robot() {
         return settings.robot();
+    }
+
+    WorldChoice world() {
+        return settings.world();
+    }
+
+    void selectObjective(org.parpe.sim.sweep.Objective o) {
+        settings.selectObjective(o);
     }
 
     Button startButton() {

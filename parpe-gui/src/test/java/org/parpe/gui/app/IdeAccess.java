@@ -162,6 +162,11 @@ public final class IdeAccess {
         ide.viewBar().select(name);
     }
 
+    /** Chooses the world file {@code file} in the 3D view's World picker, as the window's runs then use it. */
+    public static void world(IdeWindow ide, Path file) {
+        ide.viewBar().world().choose(file.toAbsolutePath().normalize());
+    }
+
     /** The IDE's run controller (its breakpoints, its pause, the engine of the run). */
     public static org.parpe.gui.run.RunController controller(IdeWindow ide) {
         return ide.runs().controller();

@@ -64,4 +64,30 @@ class RunToolBarGuiTest {
         assertEmergencyStopShown("after the run");
         assertEquals(false, ide.runs().running());
     }
+
+    /**
+     * Issue 31, item 3: at a breakpoint Run was enabled beside Resume, two buttons for one thing
+     * (and Run suggests a new run). Paused, Resume goes on and Run is disabled.
+     */
+    @Test
+    void atABreakpointResumeIsEnabledAndRunIsNot() throws Exception {
+        Gui.open(ide, Gui.example("centipede-walk.xml"));
+        Gui.pump(() -> ide.program() != null, "centipede-walk.xml to load");
+        var c = ide.runs().controller();
+        c.breakpoints().toggle(new org.parpe.core.run.Breakpoints.Point("step", 1, org.parpe.core.run.Breakpoints.Kind.ENTER));
+        ide.toolbar().setTarget(RunOn.SIMULATOR);
+        ide.toolbar().setSpeed(Speed.MAX);
+        ide.runs().run(false, 600, null);
+        Gui.pump(() -> c.breakpoints().hit() != null && ide.toolbar().pauseItem().getText().equals("Resume"),
+                "the run to stop at the breakpoint");
+        assertTrue(c.paused());
+        assertTrue(ide.toolbar().pauseItem().getEnabled(), "Resume is enabled at the breakpoint");
+        assertEquals(false, ide.toolbar().runItem().getEnabled(), "Run is disabled beside Resume");
+        assertEmergencyStopShown("at the breakpoint");
+        ide.runs().pause(); // Resume
+        Gui.pump(() -> !c.paused() && ide.toolbar().pauseItem().getText().equals("Pause"), "the run to go on");
+        assertEquals(false, ide.toolbar().runItem().getEnabled(), "Run stays disabled while the run goes on");
+        Gui.endRun(ide);
+        assertTrue(ide.toolbar().runItem().getEnabled(), "Run is enabled again after the run");
+    }
 }

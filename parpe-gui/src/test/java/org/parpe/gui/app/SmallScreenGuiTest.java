@@ -124,4 +124,39 @@ class SmallScreenGuiTest {
         assertTrue(panes[2].getSize().x >= 295, "3D view " + panes[2].getSize());
         assertTrue(panes[1].getSize().x >= 415, "editor " + panes[1].getSize());
     }
+
+    /**
+     * Issue 31, item 3: at 1366×768 a long status message was cut off mid-word at the bar's edge.
+     * Now the field shows what fits, cut after a word with "…", and its tooltip the whole text.
+     */
+    @Test
+    void aLongStatusMessageIsShortenedWithTheWholeTextInItsTooltip() throws Exception {
+        ide = Gui.openIde(Files.createTempDirectory("parpe-1366-status"));
+        ide.shell().setBounds(0, 0, 1366, 768);
+        Gui.settle();
+        String text = "Score 166.0 (zone 39.0 s, path 12.30 m, 1 delivered, 2 presses) \u2014 run completed at t = 60.00 s;"
+                + " the robot travelled 12.345 m (0.206 m/s, forward +12.300 m); it fell over (see Problems)";
+        ide.status().setMessage(text);
+        Gui.settle();
+        org.eclipse.swt.widgets.Label field = ide.status().messageField();
+        String shown = field.getText();
+        org.eclipse.swt.graphics.GC gc = new org.eclipse.swt.graphics.GC(field);
+        int width;
+        try {
+            width = gc.textExtent(shown).x;
+        } finally {
+            gc.dispose();
+        }
+        assertTrue(width <= field.getSize().x, "the message fits its field: " + width + " > " + field.getSize().x + ": " + shown);
+        assertTrue(shown.endsWith("\u2026") && text.startsWith(shown.substring(0, shown.length() - 1)),
+                "the message is its start and an ellipsis: " + shown);
+        assertTrue(shown.startsWith("Score 166.0 (zone 39.0 s, path 12.30 m"), "what matters first stays: " + shown);
+        assertFalse(Character.isLetterOrDigit(text.charAt(shown.length() - 1)) && Character.isLetterOrDigit(shown.charAt(shown.length() - 2)),
+                "cut after a word, not inside one: " + shown);
+        assertEquals(text, field.getToolTipText(), "the tooltip has the whole message");
+        assertEquals(text, ide.status().message());
+        ide.shell().setBounds(0, 0, 1920, 1000);
+        Gui.settle();
+        assertTrue(field.getText().length() > shown.length(), "a wider window shows more of it: " + field.getText());
+    }
 }

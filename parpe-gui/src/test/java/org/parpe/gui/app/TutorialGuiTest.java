@@ -91,12 +91,16 @@ class TutorialGuiTest {
         java.util.List<Path> opened = new java.util.ArrayList<>();
         TutorialWindow w = new TutorialWindow(ide.shell(), Examples.tutorialFolder(), opened::add, sent::add);
         w.open();
+        // wide enough for the table's columns (a narrower column shows its rows as cards: TutorialDockGuiTest)
+        w.shell().setSize(1100, 800);
+        Gui.settle();
         try {
             int lesson11 = java.util.Arrays.asList(w.titles()).indexOf(
                     java.util.Arrays.stream(w.titles()).filter(t -> t.startsWith("Lesson 11")).findFirst().orElseThrow());
             w.show(lesson11);
             Gui.settle();
-            assertTrue(w.shownText().contains("\t"), "a table's cells are in columns (tab stops)");
+            // laid out again once the window has its new width
+            Gui.pump(() -> w.shownText().contains("\t"), "a table's cells in columns (tab stops)");
             assertTrue(!w.shownText().contains("*"), "no literal asterisks of italics or bold");
             assertTrue(w.shownText().contains("\u25b6 Insert this code into the editor"), "XML code can go to the editor");
             int insert = w.shownText().indexOf("\u25b6 Insert this code into the editor");

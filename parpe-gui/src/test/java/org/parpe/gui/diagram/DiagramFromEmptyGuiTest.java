@@ -110,8 +110,9 @@ class DiagramFromEmptyGuiTest {
         d.show(View.PROGRAM, null);
         // what a student sees first: the beginner palette (the tests share one window, in any order)
         d.pane().palette().full(false);
-        IdeAccess.pump(() -> ide.problems().shown().stream().anyMatch(p -> p.message().startsWith("the file holds no script yet")),
-                "Problems saying the file is empty (not malformed XML)");
+        // issue 31: an empty file is a beginning, not an error; the status bar says how to begin
+        IdeAccess.pump(() -> IdeAccess.status(ide).startsWith("The file is empty"), "the status bar saying the file is empty");
+        assertEquals(List.of(), ide.problems().shown(), "Problems lists no error beside the start of a robot");
         DiagramWindow.picture(ide, "diagram-empty-start.png");
         d.pane().palette().full(true);
         palette("Pose", "Add pose", "name", "up", "angles", "30");

@@ -49,7 +49,7 @@ class Lesson11IdeSweepTest {
         ParslEditor editor = new ParslEditor(window);
         editor.setText(Files.readString(file));
         window.open();
-        dialog = SweepDialog.open(new SweepHost(window, editor, () -> file, () -> "auto", d -> { }));
+        dialog = SweepDialog.open(new SweepHost(window, editor, () -> file, () -> "auto", () -> null, d -> { }));
         dialog.setJobs(2);
         dialog.setDuration("30");
         Ui.vary(dialog, "bend", "10", "70", 7);

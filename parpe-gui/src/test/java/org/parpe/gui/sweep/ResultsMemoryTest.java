@@ -59,7 +59,7 @@ class ResultsMemoryTest {
         assertTrue(!r.complete());
         Path csv = dir.resolve("all.csv");
         try (Results.Spill spill = r.spill()) {
-            CsvExport.write(csv, CsvExport.axes(List.of("amp")), spill);
+            CsvExport.write(csv, CsvExport.axes(List.of("amp")), spill, false);
         }
         List<String> lines = Files.readAllLines(csv);
         List<String> expected = new ArrayList<>();
@@ -104,7 +104,7 @@ class ResultsMemoryTest {
                 r.add(row(i));
             }
             Path csv = dir.resolve("during.csv");
-            CsvExport.write(csv, CsvExport.axes(List.of("amp")), s);
+            CsvExport.write(csv, CsvExport.axes(List.of("amp")), s, false);
             List<String> saved = Files.readAllLines(csv);
             assertEquals(301, saved.size(), "the header and the 300 rows that had come");
             assertEquals(expected(300), saved);
@@ -122,7 +122,7 @@ class ResultsMemoryTest {
         try (Results.Spill s = r.spill()) {
             r.discard();
             Path csv = dir.resolve("after.csv");
-            CsvExport.write(csv, CsvExport.axes(List.of("amp")), s);
+            CsvExport.write(csv, CsvExport.axes(List.of("amp")), s, false);
             assertEquals(expected(500), Files.readAllLines(csv));
         }
     }

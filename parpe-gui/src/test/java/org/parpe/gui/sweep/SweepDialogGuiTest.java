@@ -70,7 +70,7 @@ class SweepDialogGuiTest {
         editor.setText(original);
         window.open();
         shown = file;
-        dialog = SweepDialog.open(new SweepHost(window, editor, () -> shown, () -> "auto", problems::addAll));
+        dialog = SweepDialog.open(new SweepHost(window, editor, () -> shown, () -> "auto", () -> null, problems::addAll));
         dialog.setJobs(2);
     }
 
@@ -137,6 +137,43 @@ class SweepDialogGuiTest {
         assertEquals(lines, Files.readAllLines(csv));
         Ui.settle();
         Ui.screenshot(dialog.shell(), "sweep-dialog-small.png");
+    }
+
+    /**
+     * Issue 31, item 2: the dialog offered the objective score but had no world, so every run's
+     * score was empty and the dialog blamed falls and errors whose columns were empty. Without a
+     * world, score is now a message and no run; with one, the runs are in it and have a score.
+     */
+    @Test
+    void scoreNeedsAWorldAndInOneEachRunHasItsScore() throws Exception {
+        dialog.setDuration("1");
+        vary("amp", "20", "40", 2);
+        dialog.selectObjective(Objective.SCORE);
+        assertNull(dialog.world().world(), "the IDE's runs are on the flat floor here, so is the dialog's");
+        Ui.click(dialog.startButton());
+        assertFalse(dialog.running(), "a sweep for the score started on the flat floor");
+        assertTrue(dialog.message().startsWith("the objective score needs a world: choose one in World"), dialog.message());
+        assertNull(dialog.results(), "no table of runs without scores");
+
+        Path world = file.getParent().resolveSibling("worlds").resolve("race-track.xml");
+        dialog.world().choose(world);
+        runToEnd();
+        assertTrue(dialog.message().startsWith("Finished 2 runs."), dialog.message());
+        Evaluator ev = Evaluator.load(new Evaluator.Settings(file, original, Map.of(), "auto", 1, 0.01, 90, world));
+        SweepResult direct = new Sweep(ev, SweepSpec.grid(List.of(VarySpec.parse("amp=20..40:2", ev.parameters())), 1, 0))
+                .run(2, SweepListener.NONE, new Cancellation());
+        assertEquals(direct.rows(), dialog.results().rows(), "the dialog's runs are the engine's runs in the world");
+        int scoreColumn = dialog.table().control().getColumnCount() - 3; // before fell and error
+        assertEquals("score", dialog.table().control().getColumn(scoreColumn).getText());
+        for (int i = 0; i < 2; i++) {
+            assertEquals(String.format(java.util.Locale.ROOT, "%.4f", direct.rows().get(i).score()),
+                    dialog.table().cell(i, scoreColumn), "run " + i + "'s score is in the table");
+        }
+        assertFalse(dialog.message().contains("fell and error columns"), dialog.message());
+        Path csv = Files.createTempDirectory("parpe-sweep-world").resolve("out.csv");
+        dialog.saveCsv(csv);
+        Ui.pump(() -> dialog.message().startsWith("Saved"), "the CSV to be saved");
+        assertTrue(SweepCsv.scored(Files.readAllLines(csv).get(0)), "the CSV has the score column, as parpe sweep --world writes");
     }
 
     @Test

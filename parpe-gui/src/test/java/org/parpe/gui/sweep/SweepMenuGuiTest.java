@@ -13,6 +13,7 @@ import org.eclipse.swt.widgets.Menu;
 import org.eclipse.swt.widgets.MenuItem;
 import org.eclipse.swt.widgets.Shell;
 import org.junit.jupiter.api.Test;
+import org.parpe.gui.app.IdeAccess;
 import org.parpe.gui.app.IdeWindow;
 import org.parpe.gui.prefs.Prefs;
 
@@ -50,6 +51,38 @@ class SweepMenuGuiTest {
             Ui.pump(() -> sweepShells(ide).length == 0, "the dialog to close");
         } finally {
             ide.shell().dispose();
+        }
+    }
+
+    /** The widgets of {@code c} and of its children, depth first. */
+    private static java.util.List<org.eclipse.swt.widgets.Control> all(org.eclipse.swt.widgets.Composite c) {
+        java.util.List<org.eclipse.swt.widgets.Control> out = new java.util.ArrayList<>();
+        for (org.eclipse.swt.widgets.Control k : c.getChildren()) {
+            out.add(k);
+            if (k instanceof org.eclipse.swt.widgets.Composite m) {
+                out.addAll(all(m));
+            }
+        }
+        return out;
+    }
+
+    /** Issue 31, item 2: the dialog has a World choice, and it starts on the world of the window's runs. */
+    @Test
+    void theDialogStartsOnTheWorldOfTheWindowsRuns() throws Exception {
+        IdeWindow ide = IdeAccess.openIde(Files.createTempDirectory("parpe-sweep-world"));
+        try {
+            Path world = Path.of(System.getProperty("parpe.examples", "../examples"), "worlds", "race-track.xml");
+            IdeAccess.world(ide, world);
+            item(item(ide.shell().getMenuBar(), "Run").getMenu(), "Sweep / Optimise").notifyListeners(SWT.Selection, new Event());
+            Shell dialog = sweepShells(ide)[0];
+            org.eclipse.swt.widgets.Combo choice = all(dialog).stream()
+                    .filter(c -> c instanceof org.eclipse.swt.widgets.Combo k && k.indexOf("flat floor") >= 0)
+                    .map(c -> (org.eclipse.swt.widgets.Combo) c).findFirst()
+                    .orElseThrow(() -> new AssertionError("the dialog has no World choice"));
+            assertEquals("race-track.xml", choice.getText(), "the dialog starts on the window's world");
+            dialog.close();
+        } finally {
+            IdeAccess.closeIde(ide);
         }
     }
 }
