@@ -114,6 +114,10 @@ public final class DiagramCommand implements Callable<Integer> {
             return 3;
         }
         if (png) {
+            String tooLarge = ScenePng.tooLarge(scene);
+            if (tooLarge != null) {
+                throw new UsageException("cannot draw the " + view + " diagram as --out file '" + out + "': " + tooLarge);
+            }
             target.write(o -> ImageIO.write(ScenePng.draw(scene), "png", o));
         } else {
             target.write(scene.svg());
