@@ -212,8 +212,15 @@ public final class SweepCommand extends SimSweepCommand {
             return null;
         }
         String[] kn = shard.trim().split("/", -1);
-        if (kn.length != 2 || !kn[0].matches("\\d{1,6}") || !kn[1].matches("\\d{1,6}")) {
+        if (kn.length != 2 || !kn[0].matches("\\d+") || !kn[1].matches("\\d+")) {
             throw new UsageException("--shard expects K/N with whole numbers, for example 2/8, got '" + shard + "'");
+        }
+        // a shard's first line holds K and N in at most six digits (SweepCsv.shardStart)
+        if (kn[1].replaceFirst("^0+(?=.)", "").length() > 6) {
+            throw new UsageException("--shard " + shard.trim() + ": N must be at most 999999 shards, got " + kn[1]);
+        }
+        if (kn[0].replaceFirst("^0+(?=.)", "").length() > 6) {
+            throw new UsageException("--shard " + shard.trim() + ": K must be within [1, N], got " + kn[0]);
         }
         int k = Integer.parseInt(kn[0]);
         int n = Integer.parseInt(kn[1]);

@@ -310,6 +310,9 @@ public final class SweepCsv {
         if (rows.size() == runs) {
             return;
         }
+        if (runs < 0) {
+            throw new SweepException("the files hold no runs, only the header; merge the files of a sweep's shards");
+        }
         int missing = 0;
         while (rows.containsKey(missing)) {
             missing++;

@@ -70,8 +70,12 @@ public final class VarySpec {
         }
         if (colon >= 0) {
             String k = body.substring(colon + 1).trim();
-            if (!k.matches("[+-]?\\d{1,9}")) {
+            if (!k.matches("[+-]?\\d+")) {
                 throw new SweepException(where + "K (the number of values) must be a whole number >= 1, got '" + k + "'");
+            }
+            if (new java.math.BigInteger(k).compareTo(java.math.BigInteger.valueOf(SweepSpec.MAX_RUNS)) > 0) {
+                throw new SweepException(where + "K (the number of values) must be at most " + SweepSpec.MAX_RUNS
+                        + ", the most runs of a sweep, got " + k);
             }
             int count = Integer.parseInt(k);
             if (count < 1) {
