@@ -125,7 +125,8 @@ public final class SweepCommand extends SimSweepCommand {
                               PrintWriter err, Cancellation cancel) throws UsageException {
         int total = sweep.spec().size();
         ShardFile shardFile = share != null && csv != null ? ShardFile.of(out) : null;
-        SweepResult result;
+        SweepResult result = null;
+        boolean whole = false;
         Writer w = null;
         try {
             w = shardFile != null ? shardFile.open() : csv != null ? csv.openWriter() : null;
@@ -164,12 +165,16 @@ public final class SweepCommand extends SimSweepCommand {
             if (w != null) {
                 w.close(); // puts the file in place, also after Ctrl-C (with the rows finished in order)
             }
+            whole = true;
         } catch (java.io.UncheckedIOException | IOException e) {
             String why = e instanceof java.io.UncheckedIOException u ? u.getCause().getMessage() : e.getMessage();
             throw new UsageException(csv == null ? "cannot write to standard output: " + why
                     : shardFile != null ? "cannot write --out file '" + out + "': " + why : why);
         } finally {
             OutputFile.abort(w); // after a failure (a full disk, or of PARPE itself) the old file stays, no temporary one
+            if (shardFile != null && !(whole && !result.cancelled())) {
+                shardFile.release(); // a whole shard lets go once it is in place (commit)
+            }
         }
         if (shardFile != null && result.cancelled()) {
             err.println("parpe: shard " + share[0] + "/" + share[1] + " is unfinished: its " + result.rows().size()

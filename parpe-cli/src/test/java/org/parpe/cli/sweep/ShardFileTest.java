@@ -191,4 +191,34 @@ class ShardFileTest {
         assertEquals(shardLike, Files.readString(victim));
         assertFalse(Files.exists(dir.resolve("shard-3.csv")));
     }
+
+    /**
+     * Issue 31 item 5: two sweeps given one shard's {@code --out} at once both wrote its
+     * {@code .partial}, and the loser's message was only a path. The second is refused at once,
+     * while the first (a process of its own, as on a cluster) keeps its rows; after the first
+     * one is gone (SIGKILL: its lock goes with it), the shard can be run again.
+     */
+    @Test
+    void aSecondSweepWritingTheSameShardIsRefusedWhileTheFirstRuns() throws Exception {
+        Process p = shard(1, "30", dir.resolve("first.log"));
+        Path partial = dir.resolve("shard-1.csv.partial");
+        awaitLines(partial, 3, p);
+        List<String> args = List.of("sweep", script().toString(), "--sim", "snake:n=6", "--duration", "0.1",
+                "--vary", "bend=20..40:3", "--vary", "period=1,2", "--param", "phase=0.2", "--seed", "9",
+                "--jobs", "1", "--shard", "1/3", "--out", dir.resolve("shard-1.csv").toString());
+        Cli second = Cli.run(args);
+        assertEquals(2, second.code, second.toString());
+        assertEquals("parpe: cannot write --out file '" + dir.resolve("shard-1.csv") + "': another parpe sweep is"
+                + " writing this shard now (" + partial + " is locked by it); wait for it to end, or give this one"
+                + " another --out\n", second.err);
+        List<String> rows = Files.readAllLines(partial);
+        assertTrue(rows.size() >= 3 && rows.get(2).startsWith("0,6,"), rows.toString());
+        assertTrue(p.isAlive());
+        p.destroyForcibly();
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS));
+        Cli again = Cli.run(args);
+        assertEquals(0, again.code, again.toString());
+        assertTrue(Files.readString(dir.resolve("shard-1.csv")).endsWith("# parpe sweep shard 1/3: complete\n"));
+        assertFalse(Files.exists(partial));
+    }
 }
