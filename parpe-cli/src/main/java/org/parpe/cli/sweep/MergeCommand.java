@@ -128,12 +128,16 @@ public final class MergeCommand implements Callable<Integer> {
      */
     private static SweepCsv.Source source(Path file) {
         return () -> {
-            if (SweepCsv.shardOf(firstLine(file, 256)) == null) {
-                return InputFiles.readText(file).lines();
+            try {
+                if (SweepCsv.shardOf(firstLine(file, 256)) == null) {
+                    return InputFiles.readText(file).lines();
+                }
+                InputFiles.checkKind(file);
+                return new java.io.BufferedReader(new java.io.InputStreamReader(Files.newInputStream(file),
+                        java.nio.charset.StandardCharsets.UTF_8.newDecoder()), 1 << 16).lines();
+            } catch (IOException e) {
+                throw new IOException("cannot read '" + file + "': " + IoReasons.of(e), e);
             }
-            InputFiles.checkKind(file);
-            return new java.io.BufferedReader(new java.io.InputStreamReader(Files.newInputStream(file),
-                    java.nio.charset.StandardCharsets.UTF_8.newDecoder()), 1 << 16).lines();
         };
     }
 
@@ -215,8 +219,11 @@ public final class MergeCommand implements Callable<Integer> {
         } catch (SweepException e) {
             err.println("parpe: " + e.getMessage());
             return 1;
-        } catch (IOException | java.io.UncheckedIOException e) {
-            err.println("parpe: cannot read a shard: " + IoReasons.of(e instanceof java.io.UncheckedIOException u ? u.getCause() : e));
+        } catch (IOException e) {
+            err.println("parpe: " + e.getMessage()); // names the file: "cannot read 'F': …", "cannot write --out file 'F': …"
+            return 2;
+        } catch (java.io.UncheckedIOException e) {
+            err.println("parpe: cannot read a shard: " + IoReasons.of(e.getCause()));
             return 2;
         } finally {
             OutputFile.abort(w); // a merge that failed leaves the old --out file, no temporary one

@@ -264,6 +264,7 @@ class ShardFileTest {
         Files.write(plain, new byte[(int) org.parpe.core.xml.InputFiles.MAX_BYTES], java.nio.file.StandardOpenOption.APPEND);
         Cli refused = Cli.run("merge", plain.toString(), "--out", dir.resolve("m2.csv").toString());
         assertEquals(2, refused.code, refused.toString());
-        assertTrue(refused.err.contains("larger than the limit of 16 MiB for an input file"), refused.err);
+        assertTrue(refused.err.startsWith("parpe: cannot read '" + plain + "': it is "), refused.err);
+        assertTrue(refused.err.endsWith(" bytes, larger than the limit of 16 MiB for an input file\n"), refused.err);
     }
 }

@@ -211,10 +211,12 @@ public final class AtomicFiles {
      * Refuses to replace {@code real} when it belongs to another user than {@code writer}, the
      * owner of the file that would take its place: the rename would leave a file of ours where
      * theirs was, a change of owner no editor makes. Root is no exception (a file of a student
-     * replaced by root's would no longer be the student's).
+     * replaced by root's would no longer be the student's). POSIX file systems only: on Windows
+     * an administrator's files belong to the Administrators group, not to the user.
      */
     static void checkOwner(Path real, UserPrincipal writer) throws IOException {
-        if (writer == null || !Files.exists(real, LinkOption.NOFOLLOW_LINKS)) {
+        if (writer == null || !Files.exists(real, LinkOption.NOFOLLOW_LINKS)
+                || !real.getFileSystem().supportedFileAttributeViews().contains("posix")) {
             return;
         }
         UserPrincipal owner;

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import org.parpe.core.diag.SourcePos;
+import org.parpe.core.lang.Numbers;
 import org.parpe.sim.BodyShape;
 import org.parpe.sim.Mat3;
 import org.parpe.sim.Vec3;
@@ -71,7 +72,8 @@ final class Movables {
         double w = Math.min(0.004, radius / 4);
         if (!(h > w)) {
             // the wall boards would have no height left above the base (ODE refuses the box)
-            r.error(at, "a cup's height must be more than its base's thickness (" + w + " m: 4 mm, or a quarter of"
+            r.error(at, "a cup's height must be more than its base's thickness ("
+                    + Numbers.brief(w) + " m: 4 mm, or a quarter of"
                     + " the radius when that is less), got " + a.get("height"));
             return;
         }

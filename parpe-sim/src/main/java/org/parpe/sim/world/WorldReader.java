@@ -8,6 +8,7 @@ import java.util.Map;
 import java.util.Set;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
+import org.parpe.core.lang.Numbers;
 import org.parpe.core.xml.FlatXmlFile;
 import org.parpe.sim.BodyShape;
 import org.parpe.sim.Mat3;
@@ -174,7 +175,8 @@ public final class WorldReader {
         int before = xml.errors();
         double v = num(a, key, fallback, at, 0, hi);
         if (xml.errors() == before && a.containsKey(key) && v < lo) {
-            error(at, key + " must be at least " + lo + " " + unit + ", got " + a.get(key));
+            error(at, key + " must be at least " + Numbers.format(lo) + " " + unit + ", got "
+                    + a.get(key));
             return fallback;
         }
         return v;
