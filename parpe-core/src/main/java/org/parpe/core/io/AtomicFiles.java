@@ -106,6 +106,11 @@ public final class AtomicFiles {
     /** Starts writing {@code target}: a stream to a new temporary file that {@link Pending#close()} moves into place. */
     public static Pending begin(Path target) throws IOException {
         Path real = resolve(target);
+        int bytes = real.getFileName().toString().getBytes(StandardCharsets.UTF_8).length;
+        if (bytes > NAME_MAX) {
+            throw new IOException("its name is " + bytes + " bytes long, more than the " + NAME_MAX
+                    + " a file system takes");
+        }
         checkReplaceable(real);
         Path dir = real.getParent();
         if (dir == null || !Files.isDirectory(dir)) {

@@ -111,8 +111,13 @@ final class Merger {
             runs = shard.runs();
             try (Stream<String> lines = files.get(name).lines()) {
                 Iterator<String> it = lines.filter(l -> !l.isBlank()).iterator();
-                it.next(); // the framing line
-                it.next(); // the header
+                for (int i = 0; i < 2 && it.hasNext(); i++) {
+                    it.next(); // the framing line, the header
+                }
+                if (!it.hasNext()) { // the first pass found at least the end line after them
+                    throw new SweepException(name + ": error: the file changed while it was merged; merge again"
+                            + " once no task writes it");
+                }
                 for (String text = it.next(); it.hasNext(); text = it.next()) {
                     line++;
                     int found = runOf(name, line, text);
