@@ -21,4 +21,16 @@ public final class Inputs {
             throw new UsageException("cannot read '" + file + "': " + e.getMessage());
         }
     }
+
+    /**
+     * Refuses a file that cannot be read as an input, whatever its size: for files PARPE wrote
+     * itself and reads as a stream (a sweep's shards).
+     */
+    public static void checkKind(Path file) throws UsageException {
+        try {
+            InputFiles.checkKind(file);
+        } catch (IOException e) {
+            throw new UsageException("cannot read '" + file + "': " + e.getMessage());
+        }
+    }
 }

@@ -19,7 +19,7 @@ import org.junit.jupiter.api.io.TempDir;
  */
 class OutputPolicyTest {
     /** A two-module wave with a parameter to vary. */
-    private static final String WAVE = """
+    static final String WAVE = """
             <program>
               <robot><structure><body elements="0..1"/></structure></robot>
               <parameters>

@@ -44,9 +44,14 @@ public final class Main {
             System.out.println(LaunchOptions.USAGE);
             return 0;
         }
-        if (options.file() != null && !java.nio.file.Files.isRegularFile(options.file())) {
-            System.err.println("parpe gui: error: cannot read " + options.file() + ": no such file");
-            return 2;
+        if (options.file() != null) {
+            try {
+                // the command line's rule for an input file: the same words for a folder, a FIFO, a missing file
+                org.parpe.core.xml.InputFiles.checkKind(options.file());
+            } catch (java.io.IOException e) {
+                System.err.println("parpe gui: error: cannot read " + options.file() + ": " + e.getMessage());
+                return 2;
+            }
         }
         Display.setAppName("PARPE");
         Display display;

@@ -144,4 +144,67 @@ class WorldPhysicsTest {
             assertTrue(sim.leverAngle(0) < 10, "the spring brought it back: " + sim.leverAngle(0));
         }
     }
+
+    /**
+     * Issue 31 item 5: the smallest and the largest movable objects the reader takes, at the
+     * lightest and heaviest masses, are simulated (the reader's ranges are what ODE can do).
+     */
+    @Test
+    void movableObjectsAtTheEndsOfTheirRangesAreSimulated() throws IOException {
+        for (String mass : java.util.List.of("0.001", "1000")) {
+            for (String size : java.util.List.of("0.001", "1000")) {
+                String m = " mass=\"" + mass + "\"";
+                World w = world("<chip name=\"c\" x=\"2\" y=\"0\" radius=\"" + size + "\" thickness=\"" + size + "\"" + m
+                        + "/>\n<ball name=\"b\" x=\"2\" y=\"3\" radius=\"" + size + "\"" + m
+                        + "/>\n<cup name=\"u\" x=\"2\" y=\"-3\" radius=\"" + size + "\" height=\"" + size + "\"" + m
+                        + "/>\n<lever name=\"l\" x=\"-2\" y=\"0\" length=\"" + size + "\" width=\"" + size
+                        + "\" thickness=\"" + size + "\"" + m + "/>");
+                try (Simulator sim = started("snake:n=4", w)) {
+                    crawl(sim, 50);
+                    SimSnapshot snap = sim.snapshot();
+                    assertEquals(16, snap.scenery().stream().filter(b -> b.kind() == PartKind.OBJECT).count());
+                    for (SimBody b : snap.scenery()) {
+                        assertTrue(Double.isFinite(b.position().x() + b.position().y() + b.position().z()),
+                                "size " + size + ", mass " + mass + ": " + b);
+                    }
+                }
+            }
+        }
+    }
+
+    /**
+     * Issue 31 item 5: ODE4j logs through SLF4J, which without a provider printed three lines to
+     * standard error when ODE first reported a problem, before PARPE's own message. A fresh JVM
+     * (SLF4J speaks once per JVM) with the test classpath makes ODE fail on an object the reader
+     * would refuse (a chip of radius 1e-9 m, built here without the reader): it may throw, but
+     * print nothing.
+     */
+    @Test
+    void odeFailuresPrintNoLoggingNoise() throws Exception {
+        Process p = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
+                System.getProperty("java.class.path"), Quiet.class.getName()).start();
+        String err = new String(p.getErrorStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+        String out = new String(p.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+        assertEquals(0, p.waitFor(), err);
+        assertEquals("", err);
+        assertTrue(out.startsWith("ODE refused it: "), out);
+    }
+
+    /** The child of {@link #odeFailuresPrintNoLoggingNoise}. */
+    static final class Quiet {
+        public static void main(String[] args) {
+            World.MovableObject tiny = new World.MovableObject("c", "chip", java.util.List.of(new World.Piece(
+                    new BodyShape.Cylinder(1e-9, 1e-9), Vec3.ZERO, Mat3.IDENTITY)), new Vec3(1, 0, 0.001), Mat3.IDENTITY,
+                    0.01, 0.6);
+            World w = new World("tiny", 0.6, 30, World.Start.ORIGIN, null, java.util.List.of(), java.util.List.of(tiny),
+                    java.util.List.of(), java.util.List.of(), java.util.List.of(),
+                    new World.Scoring(null, 0, java.util.List.of(), java.util.List.of(), 0, false));
+            try (Simulator sim = started("snake:n=4", w)) {
+                crawl(sim, 10);
+                System.out.println("ran");
+            } catch (RuntimeException e) {
+                System.out.println("ODE refused it: " + e.getMessage());
+            }
+        }
+    }
 }

@@ -79,7 +79,7 @@ public final class DiagramCommand implements Callable<Integer> {
     String out;
 
     @Option(names = "--width", paramLabel = "PIXELS", description = "For a .png: its width, within [" + ScenePng.MIN_SIDE
-            + ", " + ScenePng.MAX_SIDE + "]; the height follows (default: the diagram's own size; an SVG scales by itself).")
+            + ", " + ScenePng.MAX_WIDTH + "]; the height follows (default: the diagram's own size; an SVG scales by itself).")
     Integer width;
 
     @Spec
@@ -99,8 +99,8 @@ public final class DiagramCommand implements Callable<Integer> {
         if (width != null && !png) {
             throw new UsageException("--width is for a .png file; an SVG scales to any size by itself");
         }
-        if (width != null && (width < ScenePng.MIN_SIDE || width > ScenePng.MAX_SIDE)) {
-            throw new UsageException("--width must be within [" + ScenePng.MIN_SIDE + ", " + ScenePng.MAX_SIDE
+        if (width != null && (width < ScenePng.MIN_SIDE || width > ScenePng.MAX_WIDTH)) {
+            throw new UsageException("--width must be within [" + ScenePng.MIN_SIDE + ", " + ScenePng.MAX_WIDTH
                     + "] pixels, got " + width);
         }
         if (view == View.gait) {
@@ -126,10 +126,10 @@ public final class DiagramCommand implements Callable<Integer> {
         }
         if (png) {
             int w = width == null ? scene.width() : width;
-            long h = ScenePng.height(scene, w);
-            if (h > ScenePng.MAX_SIDE) {
-                throw new UsageException("--width " + w + " makes the " + view + " diagram " + h + " pixels high, more than "
-                        + ScenePng.MAX_SIDE + "; give a smaller --width");
+            String tooLarge = ScenePng.tooLarge(scene, w);
+            if (tooLarge != null) {
+                throw new UsageException("cannot draw the " + view + " diagram as --out file '" + out + "': " + tooLarge
+                        + (width == null ? "" : "; or give a smaller --width"));
             }
             target.write(o -> ImageIO.write(ScenePng.draw(scene, w), "png", o));
         } else {

@@ -16,12 +16,32 @@ import org.parpe.core.diagram.Scene;
 
 /** Draws a {@link Scene} with Java2D on the command line's white {@link Canvas}, for PNG files. */
 final class ScenePng {
-    /** The smallest width of a picture, pixels. */
+    /** The smallest width asked for with --width, pixels. */
     static final int MIN_SIDE = 16;
-    /** The largest width or height of a picture, pixels: 10 000 × 10 000 takes 400 MB to draw. */
-    static final int MAX_SIDE = 10_000;
+    /** The largest width asked for with --width, pixels: 10 000 × 10 000 takes 400 MB to draw. */
+    static final int MAX_WIDTH = 10_000;
+    /** The widest and tallest PNG drawn, px: what image viewers and browsers open. */
+    static final int MAX_SIDE = 32_767;
+    /** The most pixels of a PNG drawn: 64 Mi, a 256 MiB image in memory. */
+    static final long MAX_PIXELS = 64L << 20;
 
     private ScenePng() {
+    }
+
+    /**
+     * Why {@code scene} is not drawn as a PNG, or {@code null} when it can be: a picture beyond
+     * {@link #MAX_SIDE} or {@link #MAX_PIXELS} (10 000 {@code <main>} entries made a program
+     * lane over a million pixels wide, gigabytes in memory). SVG has no such limit.
+     */
+    static String tooLarge(Scene scene, int width) {
+        long height = height(scene, width);
+        long pixels = (long) width * height;
+        if (width <= MAX_SIDE && height <= MAX_SIDE && pixels <= MAX_PIXELS) {
+            return null;
+        }
+        return "it would be " + width + " x " + height + " px, more than a PNG PARPE draws (at most "
+                + MAX_SIDE + " px a side and " + MAX_PIXELS + " pixels, " + (MAX_PIXELS * 4 >> 20) + " MiB in memory);"
+                + " write an .svg file, which is drawn exactly at any size";
     }
 
     /** The height of the scene drawn {@code width} pixels wide (at least 1). */

@@ -1,10 +1,10 @@
 package org.parpe.cli.hw;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.run.TargetException;
+import org.parpe.core.xml.InputFiles;
 import org.parpe.serial.servo.profile.HardwareProfile;
 import org.parpe.serial.servo.profile.ProfileReader;
 
@@ -19,8 +19,11 @@ final class Profiles {
      * @throws TargetException with every problem of the file, located
      */
     static HardwareProfile load(Path file, String port) throws TargetException {
-        if (!Files.isReadable(file) || Files.isDirectory(file)) {
-            throw new TargetException(SourcePos.origin("--hardware"), "cannot read the hardware profile '" + file + "'");
+        try {
+            InputFiles.check(file);
+        } catch (java.io.IOException e) {
+            throw new TargetException(SourcePos.origin("--hardware"), "cannot read the hardware profile '" + file + "': "
+                    + e.getMessage());
         }
         DiagnosticList diags = new DiagnosticList();
         HardwareProfile p = ProfileReader.read(file, diags);

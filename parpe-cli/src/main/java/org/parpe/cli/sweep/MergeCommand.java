@@ -2,6 +2,7 @@ package org.parpe.cli.sweep;
 
 import java.io.IOException;
 import java.io.PrintWriter;
+import java.io.Writer;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -16,6 +17,7 @@ import java.util.stream.Stream;
 import org.parpe.cli.Inputs;
 import org.parpe.cli.OutputFile;
 import org.parpe.core.io.CsvCells;
+import org.parpe.core.io.IoReasons;
 import org.parpe.core.io.OutputPlan;
 import org.parpe.cli.UsageException;
 import org.parpe.core.xml.InputFiles;
@@ -118,30 +120,75 @@ public final class MergeCommand implements Callable<Integer> {
         return axes;
     }
 
+    /**
+     * The lines of {@code file} for the merge: a shard's file (its first line is a shard's
+     * framing line, {@code sweep --shard}'s own output) is streamed whatever its size, since
+     * sweep writes shards of up to 10 million runs; any other file is an input like every
+     * other, at most {@link InputFiles#MAX_BYTES}.
+     */
+    private static SweepCsv.Source source(Path file) {
+        return () -> {
+            try {
+                if (SweepCsv.shardOf(firstLine(file, 256)) == null) {
+                    return InputFiles.readText(file).lines();
+                }
+                InputFiles.checkKind(file);
+                return new java.io.BufferedReader(new java.io.InputStreamReader(Files.newInputStream(file),
+                        java.nio.charset.StandardCharsets.UTF_8.newDecoder()), 1 << 16).lines();
+            } catch (IOException e) {
+                throw new IOException("cannot read '" + file + "': " + IoReasons.of(e), e);
+            }
+        };
+    }
+
+    /** The first line of {@code file} within its first {@code max} bytes (empty if none). */
+    private static String firstLine(Path file, int max) throws IOException {
+        InputFiles.checkKind(file);
+        byte[] head;
+        try (java.io.InputStream in = Files.newInputStream(file)) {
+            head = in.readNBytes(max);
+        }
+        String text = new String(head, java.nio.charset.StandardCharsets.UTF_8);
+        int end = text.indexOf('\n');
+        return end < 0 ? text : text.substring(0, end).replace("\r", "");
+    }
+
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
-        Map<String, List<String>> shards = new LinkedHashMap<>();
+        Map<String, SweepCsv.Source> shards = new LinkedHashMap<>();
+        Writer w = null;
         try {
             for (Path f : files) {
-                Inputs.check(f);
+                Inputs.checkKind(f);
                 if (shards.containsKey(f.toString())) {
                     throw new UsageException("'" + f + "' is given twice");
                 }
-                shards.put(f.toString(), InputFiles.readText(f).lines().toList());
+                shards.put(f.toString(), source(f));
             }
             Objective goal = SimSweepOptions.objective(objective, true);
             OutputPlan plan = OutputFile.plan(files);
             OutputFile target = OutputFile.ofOptional(plan, "--out", out);
             OutputFile png = plot == null ? null : OutputFile.of(plan, "--plot", plot);
-            List<String> merged;
-            SweepResult result;
+            List<String> kept = png == null ? null : new ArrayList<>();
+            int runs;
+            w = target == null ? spec.commandLine().getOut() : target.openWriter();
+            Writer to = w;
             try {
-                merged = SweepCsv.merge(shards);
-                if (goal == Objective.SCORE && !SweepCsv.scored(merged.get(0))) {
-                    throw new UsageException("--objective score needs the shards of a sweep in a world (with a score column)");
-                }
-                result = png == null ? null : SweepCsv.read(merged);
+                // foreign cells are copied: a shard may hold text a spreadsheet would run as a formula
+                boolean[] header = {true};
+                runs = SweepCsv.merge(shards, line -> {
+                    if (header[0] && goal == Objective.SCORE && !SweepCsv.scored(line)) {
+                        throw new SweepException("--objective score needs the shards of a sweep in a world (with a"
+                                + " score column)");
+                    }
+                    header[0] = false;
+                    if (kept != null) {
+                        kept.add(line);
+                    }
+                    to.write(CsvCells.safeLine(line));
+                    to.write('\n');
+                });
             } catch (IncompleteSweepException e) {
                 incomplete(err, e);
                 return 1;
@@ -149,20 +196,18 @@ public final class MergeCommand implements Callable<Integer> {
                 err.println(e.getMessage().contains(": error: ") ? e.getMessage() : "parpe: " + e.getMessage());
                 return 1;
             }
-            // foreign cells are copied: a shard may hold text a spreadsheet would run as a formula
-            String text = String.join("\n", merged.stream().map(CsvCells::safeLine).toList()) + "\n";
             if (target == null) {
-                PrintWriter o = spec.commandLine().getOut();
-                o.print(text);
-                if (o.checkError()) {
+                w.flush();
+                if (((PrintWriter) w).checkError()) {
                     err.println("parpe: cannot write to standard output: it is closed or its pipe is broken");
                     return 2;
                 }
             } else {
-                target.write(text);
+                w.close();
             }
-            err.println("parpe: merged " + (merged.size() - 1) + " runs from " + files.size() + " files");
+            err.println("parpe: merged " + runs + " runs from " + files.size() + " files");
             if (png != null) {
+                SweepResult result = SweepCsv.read(kept);
                 png.write(o -> Plots.sweep(o, (out.equals("-") ? "merged sweep" : Path.of(out).getFileName()) + ", "
                         + result.rows().size() + " runs", axes(result.rows()), result.rows(), goal, countFallen));
                 err.println("parpe: plot in " + png);
@@ -171,9 +216,17 @@ public final class MergeCommand implements Callable<Integer> {
         } catch (UsageException e) {
             err.println("parpe: " + e.getMessage());
             return 2;
+        } catch (SweepException e) {
+            err.println("parpe: " + e.getMessage());
+            return 1;
         } catch (IOException e) {
-            err.println("parpe: cannot read a shard: " + e.getMessage());
+            err.println("parpe: " + e.getMessage()); // names the file: "cannot read 'F': …", "cannot write --out file 'F': …"
             return 2;
+        } catch (java.io.UncheckedIOException e) {
+            err.println("parpe: cannot read a shard: " + IoReasons.of(e.getCause()));
+            return 2;
+        } finally {
+            OutputFile.abort(w); // a merge that failed leaves the old --out file, no temporary one
         }
     }
 }

@@ -1,9 +1,15 @@
 package org.parpe.cli.sweep;
 
 import java.io.BufferedWriter;
+import java.io.FilterOutputStream;
 import java.io.IOException;
+import java.io.OutputStream;
 import java.io.OutputStreamWriter;
 import java.io.Writer;
+import java.nio.channels.Channels;
+import java.nio.channels.FileChannel;
+import java.nio.channels.FileLock;
+import java.nio.channels.OverlappingFileLockException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.LinkOption;
@@ -23,6 +29,8 @@ import org.parpe.sim.sweep.SweepCsv;
 final class ShardFile {
     private final Path target;
     private final Path partial;
+    /** The open, locked {@code .partial} while this task writes it. */
+    private FileChannel channel;
 
     private ShardFile(Path target) {
         this.target = target;
@@ -49,24 +57,67 @@ final class ShardFile {
     }
 
     /**
-     * Opens {@code FILE.partial} (replacing an unfinished shard's) for writing; a link, device or
-     * FIFO planted at that name is refused, never followed.
+     * Opens {@code FILE.partial} (replacing an unfinished shard's) for writing, locked for this
+     * task until {@link #commit} or {@link #release}: a second sweep given the same {@code --out}
+     * while this one runs is refused instead of both writing one file (the lock goes with the
+     * process, so a killed task leaves none behind). A link, device or FIFO planted at that name
+     * is refused, never followed.
      */
     Writer open() throws IOException {
         if (Files.exists(partial, LinkOption.NOFOLLOW_LINKS) && !Files.isRegularFile(partial, LinkOption.NOFOLLOW_LINKS)) {
             throw new IOException("'" + partial + "' exists and is not a regular file; move it away");
         }
-        return new BufferedWriter(new OutputStreamWriter(Files.newOutputStream(partial, StandardOpenOption.CREATE,
-                StandardOpenOption.TRUNCATE_EXISTING, StandardOpenOption.WRITE, LinkOption.NOFOLLOW_LINKS),
-                StandardCharsets.UTF_8));
+        channel = FileChannel.open(partial, StandardOpenOption.CREATE, StandardOpenOption.WRITE, LinkOption.NOFOLLOW_LINKS);
+        FileLock lock;
+        try {
+            lock = channel.tryLock();
+        } catch (OverlappingFileLockException e) {
+            lock = null; // held by another sweep in this JVM
+        }
+        if (lock == null) {
+            release();
+            throw new IOException("another parpe sweep is writing this shard now (" + partial + " is locked by it);"
+                    + " wait for it to end, or give this one another --out");
+        }
+        channel.truncate(0);
+        // closing the writer flushes; the channel and its lock stay until the shard is in place
+        OutputStream out = new FilterOutputStream(Channels.newOutputStream(channel)) {
+            @Override
+            public void write(byte[] b, int off, int len) throws IOException {
+                this.out.write(b, off, len);
+            }
+
+            @Override
+            public void close() throws IOException {
+                flush();
+            }
+        };
+        return new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8));
     }
 
     /**
      * The shard ran to its end and its writer is closed: it takes its proper name, put in place
-     * by the output policy (through a link, over a regular file only, keeping its mode).
+     * by the output policy (through a link, over a regular file only, keeping its mode), and then
+     * lets go of its lock.
      */
     void commit() throws IOException {
-        AtomicFiles.moveIntoPlace(partial, target);
+        try {
+            AtomicFiles.moveIntoPlace(partial, target);
+        } finally {
+            release();
+        }
+    }
+
+    /** Lets go of the lock (closes the file); harmless when it is not held. */
+    void release() {
+        if (channel != null) {
+            try {
+                channel.close();
+            } catch (IOException e) {
+                // closing releases the lock whatever it reports
+            }
+            channel = null;
+        }
     }
 
     /** Where the rows of an unfinished shard are. */

@@ -125,7 +125,8 @@ public final class SweepCommand extends SimSweepCommand {
                               PrintWriter err, Cancellation cancel) throws UsageException {
         int total = sweep.spec().size();
         ShardFile shardFile = share != null && csv != null ? ShardFile.of(out) : null;
-        SweepResult result;
+        SweepResult result = null;
+        boolean whole = false;
         Writer w = null;
         try {
             w = shardFile != null ? shardFile.open() : csv != null ? csv.openWriter() : null;
@@ -164,12 +165,16 @@ public final class SweepCommand extends SimSweepCommand {
             if (w != null) {
                 w.close(); // puts the file in place, also after Ctrl-C (with the rows finished in order)
             }
+            whole = true;
         } catch (java.io.UncheckedIOException | IOException e) {
             String why = e instanceof java.io.UncheckedIOException u ? u.getCause().getMessage() : e.getMessage();
             throw new UsageException(csv == null ? "cannot write to standard output: " + why
                     : shardFile != null ? "cannot write --out file '" + out + "': " + why : why);
         } finally {
             OutputFile.abort(w); // after a failure (a full disk, or of PARPE itself) the old file stays, no temporary one
+            if (shardFile != null && !(whole && !result.cancelled())) {
+                shardFile.release(); // a whole shard lets go once it is in place (commit)
+            }
         }
         if (shardFile != null && result.cancelled()) {
             err.println("parpe: shard " + share[0] + "/" + share[1] + " is unfinished: its " + result.rows().size()
@@ -219,8 +224,15 @@ public final class SweepCommand extends SimSweepCommand {
             return null;
         }
         String[] kn = shard.trim().split("/", -1);
-        if (kn.length != 2 || !kn[0].matches("\\d{1,6}") || !kn[1].matches("\\d{1,6}")) {
+        if (kn.length != 2 || !kn[0].matches("\\d+") || !kn[1].matches("\\d+")) {
             throw new UsageException("--shard expects K/N with whole numbers, for example 2/8, got '" + shard + "'");
+        }
+        // a shard's first line holds K and N in at most six digits (SweepCsv.shardStart)
+        if (kn[1].replaceFirst("^0+(?=.)", "").length() > 6) {
+            throw new UsageException("--shard " + shard.trim() + ": N must be at most 999999 shards, got " + kn[1]);
+        }
+        if (kn[0].replaceFirst("^0+(?=.)", "").length() > 6) {
+            throw new UsageException("--shard " + shard.trim() + ": K must be within [1, N], got " + kn[0]);
         }
         int k = Integer.parseInt(kn[0]);
         int n = Integer.parseInt(kn[1]);

@@ -151,4 +151,33 @@ class DiagramCommandTest {
         assertTrue(r.err.contains(bad + ":3:"), r.err);
         assertFalse(Files.exists(dir.resolve("x.svg")));
     }
+
+    /**
+     * Issue 31 item 5: a PNG had no size limit (10 000 {@code <main>} entries made a program lane
+     * over a million pixels wide, gigabytes in memory; beyond, a bare number). A PNG over the
+     * limit is refused with the size and the way out; the SVG of the same diagram is exact.
+     */
+    @Test
+    void aPngTooLargeIsRefusedAndTheSvgIsDrawnExactly(@TempDir Path dir) throws Exception {
+        StringBuilder main = new StringBuilder();
+        for (int i = 0; i < 1000; i++) {
+            main.append("<b time=\"1\"/>\n");
+        }
+        Path script = Files.writeString(dir.resolve("long.xml"), "<program>\n<robot><structure><g elements=\"0, 1\"/>"
+                + "</structure></robot>\n<main>\n" + main + "</main>\n<behaviors><b><w group=\"g\"/></b></behaviors>\n"
+                + "<automata><w states=\"s\"/></automata>\n<states><s angles=\"10\"/></states>\n</program>\n");
+        Path svg = dir.resolve("long.svg");
+        Cli ok = Cli.run("diagram", script.toString(), "--out", svg.toString());
+        assertEquals(0, ok.code, ok.toString());
+        String head = Files.readString(svg).lines().findFirst().orElseThrow();
+        String width = head.replaceAll(".* width=\"(\\d+)\".*", "$1");
+        assertTrue(Integer.parseInt(width) > ScenePng.MAX_SIDE, head);
+        Path png = dir.resolve("long.png");
+        Cli r = Cli.run("diagram", script.toString(), "--out", png.toString());
+        assertEquals(2, r.code, r.toString());
+        assertEquals("parpe: cannot draw the program diagram as --out file '" + png + "': it would be " + width
+                + " x 168 px, more than a PNG PARPE draws (at most 32767 px a side and 67108864 pixels, 256 MiB in"
+                + " memory); write an .svg file, which is drawn exactly at any size\n", r.err);
+        assertFalse(Files.exists(png));
+    }
 }

@@ -41,9 +41,10 @@ class ExportFilesTest {
         Map<String, String> files = new LinkedHashMap<>();
         files.put("program.h", "new header");
         files.put("program.c", "new tables");
-        // a name the file system takes but whose temporary companion it cannot (255 bytes at most): a real failure
-        files.put("x".repeat(250) + ".c", "more");
-        assertThrows(IOException.class, () -> ExportFiles.write(out, files));
+        // a name longer than a file system takes (255 bytes at most), refused while the files are written
+        files.put("x".repeat(254) + ".c", "more");
+        IOException e = assertThrows(IOException.class, () -> ExportFiles.write(out, files));
+        assertEquals("its name is 256 bytes long, more than the 255 a file system takes", e.getMessage());
         assertEquals("old header", Files.readString(out.resolve("program.h")));
         assertEquals("old tables", Files.readString(out.resolve("program.c")));
         try (var s = Files.list(out)) {

@@ -214,4 +214,18 @@ class WorldCommandLineTest {
                 "--duration", "0.1");
         assertFalse(in.err.contains("note:"), in.err);
     }
+
+    /** Issue 31 item 5: a tiny movable object ended in ODE4j's mass assertion, an internal error (exit 4). */
+    @Test
+    void aTinyMovableObjectIsALocatedError() throws IOException {
+        for (String kind : List.of("cup", "chip")) {
+            Path w = tmp.resolve(kind + ".xml");
+            Files.writeString(w, "<world>\n  <" + kind + " name=\"o\" x=\"0.5\" y=\"0\" radius=\"1e-9\"/>\n</world>\n");
+            Cli r = Cli.run("run", WORLDS + "race-track-snake.xml", "--sim", "snake:n=8", "--world", w.toString(),
+                    "--duration", "0.1");
+            assertEquals(2, r.code, r.toString());
+            assertEquals(w + ":2:3: error: radius must be at least 0.001 m (1 mm), got 1e-9\nparpe: the world file '" + w
+                    + "' has errors (above)\n", r.err);
+        }
+    }
 }

@@ -191,4 +191,80 @@ class ShardFileTest {
         assertEquals(shardLike, Files.readString(victim));
         assertFalse(Files.exists(dir.resolve("shard-3.csv")));
     }
+
+    /**
+     * Issue 31 item 5: two sweeps given one shard's {@code --out} at once both wrote its
+     * {@code .partial}, and the loser's message was only a path. The second is refused at once,
+     * while the first (a process of its own, as on a cluster) keeps its rows; after the first
+     * one is gone (SIGKILL: its lock goes with it), the shard can be run again.
+     */
+    @Test
+    void aSecondSweepWritingTheSameShardIsRefusedWhileTheFirstRuns() throws Exception {
+        Process p = shard(1, "30", dir.resolve("first.log"));
+        Path partial = dir.resolve("shard-1.csv.partial");
+        awaitLines(partial, 3, p);
+        List<String> args = List.of("sweep", script().toString(), "--sim", "snake:n=6", "--duration", "0.1",
+                "--vary", "bend=20..40:3", "--vary", "period=1,2", "--param", "phase=0.2", "--seed", "9",
+                "--jobs", "1", "--shard", "1/3", "--out", dir.resolve("shard-1.csv").toString());
+        Cli second = Cli.run(args);
+        assertEquals(2, second.code, second.toString());
+        assertEquals("parpe: cannot write --out file '" + dir.resolve("shard-1.csv") + "': another parpe sweep is"
+                + " writing this shard now (" + partial + " is locked by it); wait for it to end, or give this one"
+                + " another --out\n", second.err);
+        List<String> rows = Files.readAllLines(partial);
+        assertTrue(rows.size() >= 3 && rows.get(2).startsWith("0,6,"), rows.toString());
+        assertTrue(p.isAlive());
+        p.destroyForcibly();
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS));
+        Cli again = Cli.run(args);
+        assertEquals(0, again.code, again.toString());
+        assertTrue(Files.readString(dir.resolve("shard-1.csv")).endsWith("# parpe sweep shard 1/3: complete\n"));
+        assertFalse(Files.exists(partial));
+    }
+
+    /**
+     * Issue 31 item 5: merge refused a shard over the 16 MiB input limit (about 160 000 runs),
+     * though sweep writes shards of up to 10 million runs. Shards are PARPE's own output and are
+     * streamed; the limit stays for other files.
+     */
+    @Test
+    void aShardOverTheInputLimitIsMerged() throws Exception {
+        String header = "run,runs,combination,repeat,seed,bend,duration_s,distance_m,forward_m,forward_speed_mps,"
+                + "speed_mps,max_tilt_deg,joint_travel_deg,fell,error";
+        int runs = 360_000;
+        int[] first = org.parpe.sim.sweep.SweepSpec.shard(runs, 1, 2);
+        Path big = dir.resolve("shard-1.csv");
+        Path small = dir.resolve("shard-2.csv");
+        for (int k = 1; k <= 2; k++) {
+            int[] r = org.parpe.sim.sweep.SweepSpec.shard(runs, k, 2);
+            try (var w = Files.newBufferedWriter(k == 1 ? big : small)) {
+                w.write(org.parpe.sim.sweep.SweepCsv.shardStart(k, 2, r[0], r[1], runs) + "\n" + header + "\n");
+                for (int run = r[0]; run < r[1]; run++) {
+                    w.write(run + "," + runs + "," + run + ",0,7,20,10.000000,0.123456,0.120000,0.012000,0.012345,"
+                            + "12.345678,1234.567890,0,\n");
+                }
+                w.write(org.parpe.sim.sweep.SweepCsv.shardEnd(k, 2) + "\n");
+            }
+        }
+        assertTrue(Files.size(big) > org.parpe.core.xml.InputFiles.MAX_BYTES, Files.size(big) + " bytes");
+        Path merged = dir.resolve("merged.csv");
+        Cli m = Cli.run("merge", small.toString(), big.toString(), "--out", merged.toString());
+        assertEquals(0, m.code, m.toString());
+        assertEquals("parpe: merged " + runs + " runs from 2 files\n", m.err);
+        try (var lines = Files.lines(merged)) {
+            var it = lines.iterator();
+            assertEquals(header, it.next());
+            for (int run = 0; run < runs; run++) {
+                assertTrue(it.next().startsWith(run + "," + runs + ","), "run " + run);
+            }
+            assertFalse(it.hasNext());
+        }
+        assertEquals(first[1], Files.readAllLines(big).size() - 3);
+        Path plain = Files.writeString(dir.resolve("plain.csv"), header + "\n");
+        Files.write(plain, new byte[(int) org.parpe.core.xml.InputFiles.MAX_BYTES], java.nio.file.StandardOpenOption.APPEND);
+        Cli refused = Cli.run("merge", plain.toString(), "--out", dir.resolve("m2.csv").toString());
+        assertEquals(2, refused.code, refused.toString());
+        assertTrue(refused.err.startsWith("parpe: cannot read '" + plain + "': it is "), refused.err);
+        assertTrue(refused.err.endsWith(" bytes, larger than the limit of 16 MiB for an input file\n"), refused.err);
+    }
 }

@@ -4,14 +4,17 @@ import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.channels.Channels;
 import java.nio.channels.FileChannel;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.FileAlreadyExistsException;
+import java.nio.file.FileSystems;
 import java.nio.file.Files;
 import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.PosixFilePermission;
+import java.nio.file.attribute.UserPrincipal;
 import java.security.SecureRandom;
 import java.util.ArrayList;
 import java.util.HexFormat;
@@ -26,11 +29,19 @@ import java.util.Set;
  * over the target atomically: a reader sees the old file or the new one, never half of one, and
  * a failure (a full disk) leaves the old file and no temporary file. A target that is a symbolic
  * link is written through: the file it points to is replaced and the link stays. Only a regular
- * file or a new name is ever replaced. Whether a target may be replaced at all is the caller's
- * question ({@link OutputPlan}).
+ * file or a new name is ever replaced, and never one the user could not write in an editor: a
+ * file without its owner's write permission (mode 0444; refused for root too, who could write
+ * it) or a file of another user (the rename would leave one of ours in its place) is refused
+ * ({@link #checkReplaceable}). The temporary name keeps within the file system's 255 bytes for
+ * a name, however long the target's. Whether a target may be replaced at all is otherwise the
+ * caller's question ({@link OutputPlan}).
  */
 public final class AtomicFiles {
     private static final SecureRandom RANDOM = new SecureRandom();
+    /** The longest file name (in UTF-8 bytes) of the file systems PARPE runs on (ext4, APFS, NTFS). */
+    private static final int NAME_MAX = 255;
+    /** What the temporary name adds to the target's: a dot, a dot and 16 hex digits, {@code .tmp}. */
+    private static final int TMP_EXTRA = 1 + 1 + 16 + 4;
 
     private AtomicFiles() {
     }
@@ -95,6 +106,11 @@ public final class AtomicFiles {
     /** Starts writing {@code target}: a stream to a new temporary file that {@link Pending#close()} moves into place. */
     public static Pending begin(Path target) throws IOException {
         Path real = resolve(target);
+        int bytes = real.getFileName().toString().getBytes(StandardCharsets.UTF_8).length;
+        if (bytes > NAME_MAX) {
+            throw new IOException("its name is " + bytes + " bytes long, more than the " + NAME_MAX
+                    + " a file system takes");
+        }
         checkReplaceable(real);
         Path dir = real.getParent();
         if (dir == null || !Files.isDirectory(dir)) {
@@ -103,7 +119,7 @@ public final class AtomicFiles {
         for (int attempt = 0; ; attempt++) {
             byte[] r = new byte[8];
             RANDOM.nextBytes(r);
-            Path tmp = dir.resolve("." + real.getFileName() + "." + HexFormat.of().formatHex(r) + ".tmp");
+            Path tmp = dir.resolve("." + tmpStem(real.getFileName().toString()) + "." + HexFormat.of().formatHex(r) + ".tmp");
             try {
                 FileChannel ch = FileChannel.open(tmp, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
                 return new Pending(real, tmp, ch);
@@ -126,8 +142,33 @@ public final class AtomicFiles {
         place(written, resolve(target));
     }
 
+    /**
+     * The part of {@code name} a temporary name starts with: all of it, or as many whole
+     * characters as keep the temporary name within {@link #NAME_MAX} bytes (a 251-byte export
+     * name could not be written when the temporary name was 22 bytes longer).
+     */
+    static String tmpStem(String name) {
+        int room = NAME_MAX - TMP_EXTRA;
+        if (name.getBytes(StandardCharsets.UTF_8).length <= room) {
+            return name;
+        }
+        int end = 0;
+        int bytes = 0;
+        while (end < name.length()) {
+            int cp = name.codePointAt(end);
+            int n = new String(Character.toChars(cp)).getBytes(StandardCharsets.UTF_8).length;
+            if (bytes + n > room) {
+                break;
+            }
+            bytes += n;
+            end += Character.charCount(cp);
+        }
+        return name.substring(0, end);
+    }
+
     private static void place(Path tmp, Path real) throws IOException {
         checkReplaceable(real);
+        checkOwner(real, ownerOf(tmp));
         if (Files.exists(real)) {
             try {
                 Set<PosixFilePermission> perms = Files.getPosixFilePermissions(real);
@@ -143,13 +184,73 @@ public final class AtomicFiles {
         }
     }
 
-    /** Refuses a target that exists and is not a regular file (a directory, device, FIFO or socket). */
-    private static void checkReplaceable(Path real) throws IOException {
+    /**
+     * Refuses a target that exists and is not a regular file (a directory, device, FIFO or
+     * socket), or is write-protected: without its owner's write permission (mode 0444, as
+     * {@code chmod a-w} leaves it), or read-only on a file system without POSIX permissions.
+     * The permission bit is read rather than asking {@link Files#isWritable}, which says yes to
+     * root for every file; an editor refuses such a file for root too.
+     */
+    static void checkReplaceable(Path real) throws IOException {
         if (Files.isDirectory(real, LinkOption.NOFOLLOW_LINKS)) {
             throw new IOException("it is a directory");
         }
-        if (Files.exists(real, LinkOption.NOFOLLOW_LINKS) && !Files.isRegularFile(real, LinkOption.NOFOLLOW_LINKS)) {
+        if (!Files.exists(real, LinkOption.NOFOLLOW_LINKS)) {
+            return;
+        }
+        if (!Files.isRegularFile(real, LinkOption.NOFOLLOW_LINKS)) {
             throw new IOException("it is not a regular file (a device, FIFO or socket); only regular files are replaced");
+        }
+        boolean writable;
+        try {
+            writable = Files.getPosixFilePermissions(real).contains(PosixFilePermission.OWNER_WRITE);
+        } catch (UnsupportedOperationException e) {
+            writable = Files.isWritable(real);
+        }
+        if (!writable) {
+            throw new IOException("it is write-protected; make it writable (chmod u+w) or choose another name");
+        }
+    }
+
+    /**
+     * Refuses to replace {@code real} when it belongs to another user than {@code writer}, the
+     * owner of the file that would take its place: the rename would leave a file of ours where
+     * theirs was, a change of owner no editor makes. Root is no exception (a file of a student
+     * replaced by root's would no longer be the student's). POSIX file systems only: on Windows
+     * an administrator's files belong to the Administrators group, not to the user.
+     */
+    static void checkOwner(Path real, UserPrincipal writer) throws IOException {
+        if (writer == null || !Files.exists(real, LinkOption.NOFOLLOW_LINKS)
+                || !real.getFileSystem().supportedFileAttributeViews().contains("posix")) {
+            return;
+        }
+        UserPrincipal owner;
+        try {
+            owner = Files.getOwner(real, LinkOption.NOFOLLOW_LINKS);
+        } catch (UnsupportedOperationException e) {
+            return; // no owners here
+        }
+        if (!owner.equals(writer)) {
+            throw new IOException("it belongs to user " + owner.getName() + "; replacing it would make it "
+                    + writer.getName() + "'s; choose another name or ask " + owner.getName() + " to remove it");
+        }
+    }
+
+    private static UserPrincipal ownerOf(Path file) throws IOException {
+        try {
+            return Files.getOwner(file, LinkOption.NOFOLLOW_LINKS);
+        } catch (UnsupportedOperationException e) {
+            return null;
+        }
+    }
+
+    /** The user this process writes files as, or {@code null} when the system cannot say. */
+    static UserPrincipal currentUser() {
+        try {
+            return FileSystems.getDefault().getUserPrincipalLookupService()
+                    .lookupPrincipalByName(System.getProperty("user.name"));
+        } catch (IOException | UnsupportedOperationException e) {
+            return null;
         }
     }
 

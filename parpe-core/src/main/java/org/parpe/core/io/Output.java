@@ -66,10 +66,7 @@ public final class Output {
     }
 
     private static String reason(Exception e) {
-        if (e instanceof java.nio.file.FileSystemException fs && fs.getReason() != null) {
-            return fs.getReason();
-        }
-        return e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+        return IoReasons.of(e);
     }
 
     /** The path as the user gave it. */

@@ -20,7 +20,8 @@ import java.util.Objects;
  * and {@code ./x} spellings included), a directory, anything but a regular file (device, FIFO,
  * socket, dangling link), a missing or read-only folder, or an existing file that may only be
  * replaced by an explicit choice ({@link Existing#KEEP}, for example a default name, or
- * {@code scan}'s profile without {@code --force}). Outputs are written through
+ * {@code scan}'s profile without {@code --force}), and a file the user could not write in an
+ * editor (write-protected, or another user's). Outputs are written through
  * {@link AtomicFiles}.
  */
 public final class OutputPlan {
@@ -97,6 +98,13 @@ public final class OutputPlan {
         }
         if (exists && existing == Existing.KEEP) {
             throw new OutputException(cannot + "it exists" + (hint == null ? "" : "; " + hint));
+        }
+        try {
+            Path real = AtomicFiles.resolve(target);
+            AtomicFiles.checkReplaceable(real);
+            AtomicFiles.checkOwner(real, AtomicFiles.currentUser());
+        } catch (IOException e) {
+            throw new OutputException(cannot + e.getMessage());
         }
         Output o = new Output(option, path, target);
         outputs.add(o);

@@ -106,6 +106,11 @@ final class Assembly {
         if (root == null) {
             return;
         }
+        String other = otherKind(root);
+        if (other != null) {
+            diags.error(root.pos(), other);
+            return;
+        }
         this.root = root;
         Attrs.allow(root, diags, Element.PROGRAM.attributes());
         Attrs.noText(root, diags);
@@ -113,6 +118,26 @@ final class Assembly {
         done.add(key(file));
         walk(root, file, null, true);
         stack.pop();
+    }
+
+    /**
+     * What to say of another kind of PARPE file given as a script: the root of a hardware
+     * profile, simulator robot configuration or world without a {@code <robot>} section (or an
+     * include that could hold one) is not a script, and its own attributes and elements, each an
+     * error in a script, would bury that; {@code null} for anything else. A script's root may have
+     * any name (PARSL.md §1), so a script called {@code <world>} with its robot stays a script.
+     */
+    private static String otherKind(XElement root) {
+        String option = switch (root.name()) {
+            case "hardware" -> "a hardware profile, not a PARSL script; give it to run, record or calibrate with --hardware";
+            case "robot-config" -> "a robot configuration of the simulator, not a PARSL script; give it with --sim";
+            case "world" -> "a world file, not a PARSL script; give it with --world";
+            default -> null;
+        };
+        if (option == null || root.children().stream().anyMatch(c -> c.name().equals("robot") || c.name().equals("include"))) {
+            return null;
+        }
+        return "this is " + option;
     }
 
     private static Path key(Path p) {

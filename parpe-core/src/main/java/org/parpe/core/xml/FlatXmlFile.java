@@ -226,6 +226,11 @@ public final class FlatXmlFile {
             }
         }
         text.reportIfAny(root);
+        // What follows the root is read to the end, as XmlReader reads a script: the parser
+        // refuses a second element or text there, so every file PARPE reads has one rule.
+        while (r.hasNext()) {
+            r.next();
+        }
     }
 
     /**

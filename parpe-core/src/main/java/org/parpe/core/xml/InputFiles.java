@@ -28,6 +28,19 @@ public final class InputFiles {
 
     /** Checks that {@code file} can be read as an input file, without opening it. */
     public static void check(Path file) throws IOException {
+        checkKind(file);
+        long size = Files.size(file);
+        if (size > MAX_BYTES) {
+            throw tooLarge(size + " bytes");
+        }
+    }
+
+    /**
+     * Checks that {@code file} is a readable regular file, whatever its size (the IDE opens
+     * larger files than the command line reads): the words for a folder, a device or a missing
+     * file that every reader of PARPE uses.
+     */
+    public static void checkKind(Path file) throws IOException {
         if (Files.isDirectory(file)) {
             throw new IOException("it is a directory");
         }
@@ -39,10 +52,6 @@ public final class InputFiles {
         }
         if (!Files.isReadable(file)) {
             throw new IOException("permission denied");
-        }
-        long size = Files.size(file);
-        if (size > MAX_BYTES) {
-            throw tooLarge(size + " bytes");
         }
     }
 

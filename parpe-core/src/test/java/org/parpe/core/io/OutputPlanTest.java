@@ -124,4 +124,53 @@ class OutputPlanTest {
         again.abort();
         assertEquals("new", Files.readString(t));
     }
+
+    /** Issue 31 item 5: a 0444 file was silently replaced (by root as by its owner: a rename needs no write permission on the file). */
+    @Test
+    void aWriteProtectedFileIsRefusedAlsoForRootAndAlsoThroughALink() throws Exception {
+        Path t = Files.writeString(dir.resolve("t.csv"), "mine");
+        Files.setPosixFilePermissions(t, PosixFilePermissions.fromString("r--r--r--"));
+        Path link = Files.createSymbolicLink(dir.resolve("link.csv"), t);
+        for (Path p : List.of(t, link)) {
+            OutputException e = assertThrows(OutputException.class, () -> new OutputPlan().output("--trace", p.toString()));
+            assertEquals("cannot write --trace file '" + p + "': it is write-protected; make it writable (chmod u+w)"
+                    + " or choose another name", e.getMessage());
+            IOException direct = assertThrows(IOException.class, () -> AtomicFiles.write(p, "new"));
+            assertTrue(direct.getMessage().startsWith("it is write-protected"), direct.getMessage());
+        }
+        assertEquals("mine", Files.readString(t));
+        assertEquals(List.of(link, t), listing());
+        Files.setPosixFilePermissions(t, PosixFilePermissions.fromString("rw-r--r--"));
+        AtomicFiles.write(t, "new");
+        assertEquals("new", Files.readString(t));
+    }
+
+    /**
+     * Issue 31 item 5: another user's file in a writable folder was replaced by one of ours. The
+     * writer here is user {@code nobody}, so that the rule is checked whoever runs the test.
+     */
+    @Test
+    void anotherUsersFileIsRefused() throws Exception {
+        Path t = Files.writeString(dir.resolve("theirs.csv"), "theirs");
+        var nobody = t.getFileSystem().getUserPrincipalLookupService().lookupPrincipalByName("nobody");
+        String owner = Files.getOwner(t).getName();
+        IOException e = assertThrows(IOException.class, () -> AtomicFiles.checkOwner(t, nobody));
+        assertEquals("it belongs to user " + owner + "; replacing it would make it nobody's; choose another name"
+                + " or ask " + owner + " to remove it", e.getMessage());
+        AtomicFiles.checkOwner(t, Files.getOwner(t));
+        AtomicFiles.checkOwner(dir.resolve("new.csv"), nobody);
+    }
+
+    /** Issue 31 item 5: names over 233 bytes failed with "File name too long", the temporary name being 22 bytes longer. */
+    @Test
+    void aNameOfTheLongestLengthIsWrittenItsTemporaryNameShortened() throws Exception {
+        for (String name : List.of("a".repeat(251) + ".ino", "\u00e9".repeat(127) + "x")) {
+            Path t = dir.resolve(name);
+            AtomicFiles.write(t, "sketch");
+            assertEquals("sketch", Files.readString(t));
+            assertTrue(AtomicFiles.tmpStem(name).getBytes(java.nio.charset.StandardCharsets.UTF_8).length <= 255 - 22);
+        }
+        assertEquals("short.ino", AtomicFiles.tmpStem("short.ino"));
+        assertEquals(2, listing().size());
+    }
 }

@@ -143,4 +143,24 @@ class FlatXmlFileTest {
         assertEquals(1, d.all().size(), lines(d).toString());
         assertTrue(lines(d).get(0).startsWith("2:12 not well-formed XML: Unexpected character '1'"), lines(d).toString());
     }
+
+    /**
+     * Issue 31 item 5: robot configurations, profiles and worlds took anything after the root
+     * element, which the script reader refuses; both now refuse it at the same place with the
+     * parser's words. A comment or processing instruction after the root stays allowed in both.
+     */
+    @Test
+    void contentAfterTheRootIsRefusedAsInAScript() throws Exception {
+        for (String after : List.of("<thing a=\"2\"/>\n", "stray text\n", "</things>\n")) {
+            DiagnosticList d = new DiagnosticList();
+            FlatXmlFile f = read("<things>\n  <thing a=\"1\"/>\n</things>\n" + after, d);
+            assertNull(f.root(), after);
+            DiagnosticList script = new DiagnosticList();
+            assertNull(XmlReader.read(new SourceText("s.xml", "<program>\n  <main/>\n</program>\n" + after), script));
+            assertEquals(1, d.all().size(), lines(d).toString());
+            assertEquals(lines(script).get(0).replace("malformed XML", "not well-formed XML"), lines(d).get(0));
+        }
+        DiagnosticList d = new DiagnosticList();
+        assertTrue(read("<things/>\n<!-- a note -->\n<?pi x?>\n", d).ok(), lines(d).toString());
+    }
 }

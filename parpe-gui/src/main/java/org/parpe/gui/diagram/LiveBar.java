@@ -211,7 +211,7 @@ final class LiveBar {
         try {
             trace = TraceScrubber.load(p, csv);
         } catch (java.io.IOException e) {
-            tell("Cannot read " + csv + ": " + e.getMessage());
+            tell("Cannot read " + csv + ": " + org.parpe.core.io.IoReasons.of(e));
             return;
         } catch (IllegalArgumentException e) {
             tell(e.getMessage());

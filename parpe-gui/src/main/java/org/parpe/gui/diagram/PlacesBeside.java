@@ -146,7 +146,7 @@ final class PlacesBeside {
             }
             return NodePlaces.parse(file.toString(), new String(Files.readAllBytes(file), StandardCharsets.UTF_8));
         } catch (IOException | RuntimeException e) {
-            return new NodePlaces.Read(NodePlaces.NONE, false, "Cannot read " + file + " (" + e.getMessage()
+            return new NodePlaces.Read(NodePlaces.NONE, false, "Cannot read " + file + " (" + org.parpe.core.io.IoReasons.of(e)
                     + "); it is left as it is and node places are kept only while the IDE is open");
         }
     }

@@ -517,6 +517,6 @@ public final class FileActions {
     }
 
     private static String describe(Throwable e) {
-        return e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+        return org.parpe.core.io.IoReasons.of(e);
     }
 }

@@ -78,4 +78,20 @@ class LaunchOptionsTest {
         assertTrue(text.contains("Usage: parpe gui"), text);
         assertFalse(text.contains("Exception") || text.contains("\tat "), text);
     }
+
+    /** Issue 31 item 5: {@code parpe gui DIR} said "no such file" for a folder that exists. */
+    @Test
+    void aFolderIsCalledAFolder(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir) {
+        PrintStream saved = System.err;
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        int code;
+        try {
+            System.setErr(new PrintStream(err, true, StandardCharsets.UTF_8));
+            code = org.parpe.gui.Main.run(new String[] {"gui", dir.toString()});
+        } finally {
+            System.setErr(saved);
+        }
+        assertEquals(2, code);
+        assertEquals("parpe gui: error: cannot read " + dir + ": it is a directory\n", err.toString(StandardCharsets.UTF_8));
+    }
 }

@@ -186,7 +186,7 @@ public final class PhysicsWorld implements AutoCloseable {
             contacts.clearKept();
             space.collide(null, contacts);
             if (scenery != null) {
-                scenery.springs();
+                scenery.springs(h);
                 OdeHelper.spaceCollide2(space, scenery.fixedSpace(), null, contacts);
             }
             // QuickStep reorders constraints with ODE's global random generator; seeding it from

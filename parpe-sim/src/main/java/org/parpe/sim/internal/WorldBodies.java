@@ -2,11 +2,13 @@ package org.parpe.sim.internal;
 
 import java.util.List;
 import org.ode4j.math.DMatrix3;
+import org.ode4j.math.DMatrix3C;
 import org.ode4j.math.DVector3C;
 import org.ode4j.ode.DBody;
 import org.ode4j.ode.DGeom;
 import org.ode4j.ode.DHingeJoint;
 import org.ode4j.ode.DMass;
+import org.ode4j.ode.DMassC;
 import org.ode4j.ode.DSpace;
 import org.ode4j.ode.DWorld;
 import org.ode4j.ode.OdeHelper;
@@ -36,6 +38,8 @@ final class WorldBodies {
     private final DGeom[][] geoms;
     private final DHingeJoint[] hinges;
     private final double[] stiffness;
+    /** Each lever's moment of inertia about its hinge, kg·m². */
+    private final double[] inertia;
 
     WorldBodies(World scene, DWorld world, DSpace moving) {
         this.scene = scene;
@@ -54,6 +58,7 @@ final class WorldBodies {
         }
         hinges = new DHingeJoint[scene.levers().size()];
         stiffness = new double[hinges.length];
+        inertia = new double[hinges.length];
         for (int i = 0; i < hinges.length; i++) {
             World.Lever l = scene.levers().get(i);
             DHingeJoint j = OdeHelper.createHingeJoint(world);
@@ -64,7 +69,30 @@ final class WorldBodies {
             j.setParamHiStop(l.maxAngle());
             hinges[i] = j;
             stiffness[i] = l.stiffness();
+            inertia[i] = inertia(bodies[l.object()], l);
         }
+    }
+
+    /**
+     * The moment of inertia of a lever's arm about its hinge axis (the body is not yet turned, so
+     * its frame is the world's): about its centre, plus its mass times the centre's distance
+     * from the axis squared.
+     */
+    private static double inertia(DBody arm, World.Lever l) {
+        DMassC m = arm.getMass();
+        DMatrix3C i = m.getI();
+        Vec3 a = l.axis();
+        double[] v = {a.x(), a.y(), a.z()};
+        double about = 0;
+        for (int r = 0; r < 3; r++) {
+            for (int c = 0; c < 3; c++) {
+                about += v[r] * i.get(r, c) * v[c];
+            }
+        }
+        DVector3C p = arm.getPosition();
+        Vec3 d = new Vec3(p.get0() - l.pivot().x(), p.get1() - l.pivot().y(), p.get2() - l.pivot().z());
+        double along = Geo.dot(d, a) / Geo.dot(a, a);
+        return about / Geo.dot(a, a) + m.getMass() * (Geo.dot(d, d) - along * along * Geo.dot(a, a));
     }
 
     private void createObject(int index, World.MovableObject o, DWorld world, DSpace moving) {
@@ -151,10 +179,18 @@ final class WorldBodies {
         return fixed;
     }
 
-    /** Applies each lever's return spring for the coming sub-step. */
-    void springs() {
+    /**
+     * Applies each lever's return spring for the coming sub-step of {@code h} seconds. The torque
+     * is explicit, so a very light arm (a 1 mm, 1 g lever) would gain energy each sub-step and
+     * end in NaN: stiffness and damping are capped at half of what the arm's inertia can follow
+     * in one sub-step (k·h²/I and c·h/I at most 1/2). Every lever of a usual size stays far below
+     * the caps and moves as before.
+     */
+    void springs(double h) {
         for (int i = 0; i < hinges.length; i++) {
-            hinges[i].addTorque(-stiffness[i] * hinges[i].getAngle() - LEVER_DAMPING * hinges[i].getAngleRate());
+            double k = Math.min(stiffness[i], 0.5 * inertia[i] / (h * h));
+            double c = Math.min(LEVER_DAMPING, 0.5 * inertia[i] / h);
+            hinges[i].addTorque(-k * hinges[i].getAngle() - c * hinges[i].getAngleRate());
         }
     }
 

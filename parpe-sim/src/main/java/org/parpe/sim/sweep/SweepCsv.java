@@ -179,136 +179,72 @@ public final class SweepCsv {
      * {@link IncompleteSweepException} that names each of them.
      */
     public static List<String> merge(Map<String, List<String>> shards) throws SweepException {
-        Merger m = new Merger();
-        for (Map.Entry<String, List<String>> shard : shards.entrySet()) {
-            m.add(shard.getKey(), shard.getValue().stream().filter(l -> !l.isBlank()).toList());
-        }
-        m.checkShards();
-        checkComplete(m.rows, m.runs);
+        Map<String, Source> sources = new java.util.LinkedHashMap<>();
+        shards.forEach((name, lines) -> sources.put(name, lines::stream));
         List<String> out = new ArrayList<>();
-        out.add(m.header);
-        out.addAll(m.rows.values());
+        try {
+            merge(sources, out::add);
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e); // lines in memory are never read from a file
+        }
         return out;
     }
 
-    /** The shards read so far: their header, the sweep's size, and the rows by run number. */
-    private static final class Merger {
-        private String header;
-        private String headerFrom;
-        private int runs = -1;
-        private final TreeMap<Integer, String> rows = new TreeMap<>();
-        private final Map<Integer, String> rowFrom = new TreeMap<>();
-        /** The framed shards by number, and the split they come from (the first one read). */
-        private final TreeMap<Integer, String> shardFrom = new TreeMap<>();
-        private Shard split;
-        private final List<String> problems = new ArrayList<>();
-        private final List<Integer> rerun = new ArrayList<>();
-
-        void add(String name, List<String> lines) throws SweepException {
-            Shard shard = lines.isEmpty() ? null : shardOf(lines.get(0));
-            List<String> body = lines;
-            if (shard != null) {
-                sameSplit(name, shard);
-                if (!lines.get(lines.size() - 1).equals(shardEnd(shard.k(), shard.n()))) {
-                    problems.add(name + ": error: shard " + shard.k() + "/" + shard.n() + " is unfinished: it holds "
-                            + Math.max(lines.size() - 2, 0) + " of its " + (shard.to() - shard.from()) + " runs ("
-                            + shard.span() + "); its task was stopped or killed before the end");
-                    rerun.add(shard.k());
-                    shardFrom.put(shard.k(), name);
-                    return;
-                }
-                body = lines.subList(1, lines.size() - 1);
+    /**
+     * Joins shard files as {@link #merge(Map)} does, handing each line of the merged sweep to
+     * {@code out} in order and returning the number of runs. When every file is a framed shard
+     * ({@link #shardStart}), the files are read twice as streams, first their framing and headers,
+     * then their rows, which must be in run order as {@code sweep} writes them: a cluster sweep
+     * of millions of runs merges in little memory. Other files (unframed sweep results) are held
+     * in memory and may be in any order.
+     */
+    public static int merge(Map<String, Source> files, Sink out) throws SweepException, java.io.IOException {
+        boolean framed = true;
+        for (Source f : files.values()) {
+            try (java.util.stream.Stream<String> lines = f.lines()) {
+                framed &= lines.filter(l -> !l.isBlank()).findFirst().map(SweepCsv::shardOf).isPresent();
             }
-            int first = shard == null ? 1 : 2;
-            if (body.isEmpty() || !body.get(0).startsWith("run,runs,")) {
-                throw new SweepException(name + ":" + first + ": error: not a sweep result (its"
-                        + " first line must be the header 'run,runs,...' that parpe sweep writes)");
-            }
-            if (header == null) {
-                header = body.get(0);
-                headerFrom = name;
-            } else if (!header.equals(body.get(0))) {
-                throw new SweepException(name + ":" + first + ": error: its columns differ from those of " + headerFrom
-                        + "; only shards of one sweep can be merged");
-            }
-            for (int i = 1; i < body.size(); i++) {
-                int run = row(name, i + first, body.get(i));
-                if (shard != null && (run < shard.from() || run >= shard.to())) {
-                    throw new SweepException(name + ":" + (i + first) + ": error: run " + run + " is not one of shard "
-                            + shard.k() + "/" + shard.n() + " (" + shard.span() + ")");
+        }
+        Merger m = new Merger();
+        for (Map.Entry<String, Source> f : files.entrySet()) {
+            if (framed) {
+                m.scan(f.getKey(), f.getValue());
+            } else {
+                try (java.util.stream.Stream<String> lines = f.getValue().lines()) {
+                    m.add(f.getKey(), lines.filter(l -> !l.isBlank()).toList());
                 }
             }
-            if (shard != null) {
-                shardFrom.put(shard.k(), name);
-            }
         }
-
-        /** A shard of the same split as those before, and not one of them twice. */
-        private void sameSplit(String name, Shard shard) throws SweepException {
-            if (split == null) {
-                split = shard;
-            } else if (shard.n() != split.n() || shard.runs() != split.runs()) {
-                throw new SweepException(name + ":1: error: shard " + shard.k() + "/" + shard.n() + " of a sweep of "
-                        + shard.runs() + " runs, but " + shardFrom.firstEntry().getValue() + " is shard " + split.k()
-                        + "/" + split.n() + " of a sweep of " + split.runs() + " runs; merge the files of one split"
-                        + " only (a folder reused for another sweep or another number of shards?)");
-            }
-            String twice = shardFrom.get(shard.k());
-            if (twice != null) {
-                throw new SweepException(name + ":1: error: shard " + shard.k() + "/" + shard.n() + " is also "
-                        + twice + "; give each shard once");
-            }
+        m.checkShards();
+        if (framed) {
+            return m.stream(files, out);
         }
-
-        /** Every shard of the split is here and finished, or an exception names those that are not. */
-        void checkShards() throws IncompleteSweepException {
-            if (split == null) {
-                return;
-            }
-            for (int k = 1; k <= split.n(); k++) {
-                if (!shardFrom.containsKey(k)) {
-                    int[] r = SweepSpec.shard(split.runs(), k, split.n());
-                    problems.add("error: shard " + k + "/" + split.n() + " is missing ("
-                            + new Shard(k, split.n(), r[0], r[1], split.runs()).span() + ")");
-                    rerun.add(k);
-                }
-            }
-            if (!problems.isEmpty()) {
-                java.util.Collections.sort(rerun);
-                throw new IncompleteSweepException(String.join("\n", problems), rerun, split.n());
-            }
+        checkComplete(m.rows, m.runs);
+        out.line(m.header);
+        for (String row : m.rows.values()) {
+            out.line(row);
         }
-
-        /** Reads one row and returns its run number. */
-        private int row(String name, int line, String text) throws SweepException {
-            String[] f = text.split(",", 3);
-            String at = name + ":" + line + ": error: ";
-            if (f.length < 3 || !f[0].matches("\\d{1,9}") || !f[1].matches("\\d{1,9}")) {
-                throw new SweepException(at + "expected a run number and the number of runs, got '" + text + "'");
-            }
-            int run = Integer.parseInt(f[0]);
-            int total = Integer.parseInt(f[1]);
-            if (runs >= 0 && total != runs) {
-                throw new SweepException(at + "a sweep of " + total + " runs, but the shards before are from a sweep of "
-                        + runs);
-            }
-            runs = total;
-            if (run >= total) {
-                throw new SweepException(at + "run " + run + " in a sweep of " + total + " runs (numbered from 0)");
-            }
-            String before = rows.put(run, text);
-            if (before != null) {
-                throw new SweepException(at + "run " + run + " is also in " + rowFrom.get(run)
-                        + "; were shards given twice or run with different --shard N?");
-            }
-            rowFrom.put(run, name);
-            return run;
-        }
+        return m.rows.size();
     }
 
-    private static void checkComplete(TreeMap<Integer, String> rows, int runs) throws SweepException {
+    /** The lines of a file to merge, which may be read more than once; the caller closes the stream. */
+    @FunctionalInterface
+    public interface Source {
+        java.util.stream.Stream<String> lines() throws java.io.IOException;
+    }
+
+    /** Where the merged lines go, one at a time. */
+    @FunctionalInterface
+    public interface Sink {
+        void line(String line) throws java.io.IOException, SweepException;
+    }
+
+    static void checkComplete(TreeMap<Integer, String> rows, int runs) throws SweepException {
         if (rows.size() == runs) {
             return;
+        }
+        if (runs < 0) {
+            throw new SweepException("the files hold no runs, only the header; merge the files of a sweep's shards");
         }
         int missing = 0;
         while (rows.containsKey(missing)) {

@@ -70,8 +70,13 @@ public final class VarySpec {
         }
         if (colon >= 0) {
             String k = body.substring(colon + 1).trim();
-            if (!k.matches("[+-]?\\d{1,9}")) {
+            if (!k.matches("[+-]?\\d+")) {
                 throw new SweepException(where + "K (the number of values) must be a whole number >= 1, got '" + k + "'");
+            }
+            if (new java.math.BigInteger(k).compareTo(java.math.BigInteger.valueOf(Integer.MAX_VALUE)) > 0) {
+                // a whole number, only too large to count (a smaller K is weighed with the sweep's size)
+                throw new SweepException(where + "K (the number of values) is " + k + ", more than the "
+                        + SweepSpec.MAX_RUNS + " runs one sweep may have; use fewer values or --random COUNT");
             }
             int count = Integer.parseInt(k);
             if (count < 1) {

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import org.parpe.core.diag.SourcePos;
+import org.parpe.core.lang.Numbers;
 import org.parpe.sim.BodyShape;
 import org.parpe.sim.Mat3;
 import org.parpe.sim.Vec3;
@@ -57,12 +58,7 @@ final class Movables {
     }
 
     private double mass(Map<String, String> a, double fallback, SourcePos at) {
-        double m = r.num(a, "mass", fallback, at, 0, 1000);
-        if (a.containsKey("mass") && m == 0) {
-            r.error(at, "mass must be > 0 kg, got " + a.get("mass"));
-            return fallback;
-        }
-        return m;
+        return r.mass(a, fallback, at);
     }
 
     private static World.Piece piece(BodyShape shape) {
@@ -74,6 +70,13 @@ final class Movables {
         double radius = r.length(a, "radius", 0.04, at);
         double h = r.length(a, "height", 0.06, at);
         double w = Math.min(0.004, radius / 4);
+        if (!(h > w)) {
+            // the wall boards would have no height left above the base (ODE refuses the box)
+            r.error(at, "a cup's height must be more than its base's thickness ("
+                    + Numbers.brief(w) + " m: 4 mm, or a quarter of"
+                    + " the radius when that is less), got " + a.get("height"));
+            return;
+        }
         List<World.Piece> pieces = new ArrayList<>();
         pieces.add(new World.Piece(new BodyShape.Cylinder(radius, w), new Vec3(0, 0, -h / 2 + w / 2), Mat3.IDENTITY));
         double board = radius * Math.tan(Math.PI / CUP_WALLS);

@@ -8,6 +8,7 @@ import java.util.Map;
 import java.util.Set;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
+import org.parpe.core.lang.Numbers;
 import org.parpe.core.xml.FlatXmlFile;
 import org.parpe.sim.BodyShape;
 import org.parpe.sim.Mat3;
@@ -22,6 +23,15 @@ import org.parpe.sim.Geo;
 public final class WorldReader {
     /** Largest coordinate or length accepted, m. */
     static final double FAR = 1000;
+    /**
+     * Smallest length accepted, m (1 mm): nothing a robot meets is smaller, and ODE's mass check
+     * fails on a movable object far smaller (a cup or chip of radius 1e-9 m ended in an
+     * internal error).
+     */
+    static final double SMALL = 0.001;
+    /** Smallest and largest mass of a movable object, kg (1 g … 1 t). */
+    static final double LIGHT = 0.001;
+    static final double HEAVY = 1000;
     private static final String CHILDREN = "<start>, <arena>, <box>, <step>, <ramp>, <wall>, <cylinder>, <rubble>,"
             + " <chip>, <ball>, <cup>, <lever>, <zone>, <checkpoint>, <goal>, <path-score>, <deliver>, <press>"
             + " or <disqualify>";
@@ -168,11 +178,28 @@ public final class WorldReader {
         return num(a, key, fallback, at, -FAR, FAR);
     }
 
-    /** A length, &gt; 0 and at most {@value #FAR} m. */
+    /** A length, {@value #SMALL}…{@value #FAR} m. */
     double length(Map<String, String> a, String key, double fallback, SourcePos at) {
-        double v = num(a, key, fallback, at, 0, FAR);
-        if (a.containsKey(key) && v == 0) {
-            error(at, key + " must be > 0 m, got " + a.get(key));
+        return atLeast(a, key, fallback, at, SMALL, FAR, "m (1 mm)");
+    }
+
+    /** A mass, {@value #LIGHT}…{@value #HEAVY} kg. */
+    double mass(Map<String, String> a, double fallback, SourcePos at) {
+        return atLeast(a, "mass", fallback, at, LIGHT, HEAVY, "kg (1 g)");
+    }
+
+    /**
+     * A number in {@code 0…hi} that must be at least {@code lo} ({@code unit} says it in words),
+     * each bound its own message, since {@code 0.001} has no short form in the shared range
+     * message; {@code fallback} after an error.
+     */
+    private double atLeast(Map<String, String> a, String key, double fallback, SourcePos at, double lo, double hi,
+                           String unit) {
+        int before = xml.errors();
+        double v = num(a, key, fallback, at, 0, hi);
+        if (xml.errors() == before && a.containsKey(key) && v < lo) {
+            error(at, key + " must be at least " + Numbers.format(lo) + " " + unit + ", got "
+                    + a.get(key));
             return fallback;
         }
         return v;

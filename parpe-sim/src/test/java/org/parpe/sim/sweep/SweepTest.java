@@ -219,4 +219,22 @@ class SweepTest {
         assertEquals(List.of(), r.rows());
         assertFalse(r.cancelled(), "every run was handed over");
     }
+
+    /**
+     * Issue 31 item 5: framed shards are merged as streams, so their rows must be their runs in
+     * order, as sweep writes them; an edited shard is named at the line.
+     */
+    @Test
+    void aFramedShardWithRowsOutOfOrderOrMissingIsNamed() throws Exception {
+        String header = "run,runs,combination,repeat,seed,bend,duration_s";
+        Map<String, List<String>> shards = new LinkedHashMap<>();
+        shards.put("s1", List.of(SweepCsv.shardStart(1, 1, 0, 3, 3), header, "0,3,0,0,1,5,1.0", "2,3,2,0,1,7,1.0",
+                "1,3,1,0,1,6,1.0", SweepCsv.shardEnd(1, 1)));
+        assertEquals("s1:4: error: run 2 where run 1 belongs; a shard's rows are its runs in order, each once (was the"
+                + " file edited?)", assertThrows(SweepException.class, () -> SweepCsv.merge(shards)).getMessage());
+        shards.put("s1", List.of(SweepCsv.shardStart(1, 1, 0, 3, 3), header, "0,3,0,0,1,5,1.0", "1,3,1,0,1,6,1.0",
+                SweepCsv.shardEnd(1, 1)));
+        assertEquals("s1: error: shard 1/1 holds 2 of its 3 runs (runs 0..2) but is marked complete (was the file"
+                + " edited?); run it again", assertThrows(SweepException.class, () -> SweepCsv.merge(shards)).getMessage());
+    }
 }

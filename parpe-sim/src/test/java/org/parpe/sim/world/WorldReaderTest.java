@@ -137,4 +137,36 @@ class WorldReaderTest {
         Files.write(big, new byte[(16 << 20) + 1]);
         assertTrue(errors(big).get(0).contains("larger than the limit of 16 MiB"), errors(big).toString());
     }
+
+    /**
+     * Issue 31 item 5: {@code <cup radius="1e-9">} or {@code <chip radius="1e-9">} ended in
+     * ODE4j's mass assertion (an internal error, exit 4). Every size and mass has a range,
+     * reported at its element like the robot configuration's numbers.
+     */
+    @Test
+    void sizesAndMassesOutOfRangeAreLocatedErrors() throws IOException {
+        Path f = file("tiny.xml", """
+                <world>
+                  <cup name="cup" x="0" y="0" radius="1e-9"/>
+                  <chip name="chip" x="1" y="0" radius="1e-9" thickness="0"/>
+                  <ball name="ball" x="2" y="0" mass="1e-9"/>
+                  <lever name="lever" x="3" y="0" length="0.0001" mass="2000"/>
+                  <box x="4" y="0" length="1e-9" width="0.1" height="0.1"/>
+                  <cup name="flat" x="5" y="0" radius="1" height="0.002"/>
+                  <rubble x0="0" y0="0" x1="1" y1="1" count="0"/>
+                </world>
+                """);
+        String name = f.toString();
+        assertEquals(List.of(
+                name + ":2:3: error: radius must be at least 0.001 m (1 mm), got 1e-9",
+                name + ":3:3: error: thickness must be at least 0.001 m (1 mm), got 0",
+                name + ":3:3: error: radius must be at least 0.001 m (1 mm), got 1e-9",
+                name + ":4:3: error: mass must be at least 0.001 kg (1 g), got 1e-9",
+                name + ":5:3: error: length must be at least 0.001 m (1 mm), got 0.0001",
+                name + ":5:3: error: mass must be in 0..1000, got 2000",
+                name + ":6:3: error: length must be at least 0.001 m (1 mm), got 1e-9",
+                name + ":7:3: error: a cup's height must be more than its base's thickness (0.004 m: 4 mm, or a quarter"
+                        + " of the radius when that is less), got 0.002",
+                name + ":8:3: error: count must be in 1..2000, got 0"), errors(f));
+    }
 }
