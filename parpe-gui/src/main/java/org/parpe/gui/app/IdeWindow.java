@@ -541,6 +541,11 @@ public final class IdeWindow implements HardwareHost {
         }
     }
 
+    /** The Run log's text (tests). */
+    StyledText runLog() {
+        return log;
+    }
+
     void clearLog() {
         log.setText("");
     }

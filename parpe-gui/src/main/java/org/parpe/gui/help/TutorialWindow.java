@@ -185,6 +185,11 @@ public final class TutorialWindow {
         return text.getText();
     }
 
+    /** The lesson's text (tests). */
+    public StyledText textWidget() {
+        return text;
+    }
+
     /** The script of the page shown, or null (tests). */
     public Path script() {
         return script;
