@@ -577,6 +577,11 @@ public final class IdeWindow implements HardwareHost {
         return lastCrashFile;
     }
 
+    /** The menu bar's actions (tests). */
+    MenuBar menus() {
+        return menus;
+    }
+
     /** The Run log's text (tests). */
     StyledText runLog() {
         return log;

@@ -23,6 +23,8 @@ import org.eclipse.swt.widgets.Text;
 import org.parpe.gui.help.TutorialWindow;
 import org.parpe.gui.sweep.SweepDialog;
 import org.parpe.gui.sweep.SweepHost;
+import org.parpe.core.diagram.SectionEdits;
+import org.parpe.core.diagram.TextEdit;
 
 /** The menu bar: File, Edit, Run, View and Help. Every item acts; none is a placeholder. */
 final class MenuBar {
@@ -224,25 +226,52 @@ final class MenuBar {
         item(m, "&About PARPE", 0, () -> MessageDialog.openInformation(ide.shell(), "About PARPE", HelpText.ABOUT));
     }
 
-    /** Help → Tutorial: the lessons beside the examples ({@code docs/tutorial}), in their own window. */
-    void openTutorial() {
+    /** Help → Tutorial: the lessons beside the examples ({@code docs/tutorial}), in their own window (null: not found). */
+    TutorialWindow openTutorial() {
         Path folder = Examples.tutorialFolder();
         if (folder == null) {
             MessageDialog.openInformation(ide.shell(), "Tutorial", "The tutorial (docs/tutorial) was not found next to the"
                     + " examples. It is also online with the PARPE sources, in docs/tutorial/index.md.");
-            return;
+            return null;
         }
-        TutorialWindow tutorial = new TutorialWindow(ide.shell(), folder, p -> ide.files().openExample(p), code -> {
-            // At the caret, on a line of its own, as one change that Edit > Undo takes back.
-            var w = ide.editor().widget();
-            int at = w.getCaretOffset();
-            String line = at > 0 && !ide.editor().document().get().substring(0, at).endsWith("\n") ? "\n" : "";
-            w.replaceTextRange(at, 0, line + code + "\n");
-            ide.shell().forceActive();
-            ide.status().setMessage("The lesson's code is in the editor at line " + (w.getLineAtOffset(at) + 1)
-                    + " (Edit > Undo takes it back).");
-        });
+        TutorialWindow tutorial = new TutorialWindow(ide.shell(), folder, p -> ide.files().openExample(p), this::insertLessonCode);
         tutorial.showInstalledCommands(Examples.installed());
         tutorial.open();
+        return tutorial;
+    }
+
+    /**
+     * The tutorial's "Insert this code": sections go where they belong, into the script's section
+     * of that name or at the top level ({@link SectionEdits#placeSections}), never into the
+     * element the caret is in; an element of a section goes on a line of its own at the caret's
+     * line, where the student chose. One change: Edit > Undo takes it back.
+     */
+    void insertLessonCode(String code) {
+        var w = ide.editor().widget();
+        String text = ide.editor().document().get();
+        TextEdit edit;
+        try {
+            edit = SectionEdits.placeSections(text, ide.files().name(), code);
+        } catch (IllegalArgumentException e) {
+            ide.status().setMessage("The lesson's code was not inserted: " + e.getMessage());
+            return;
+        }
+        if (edit == null) {
+            edit = TextEdit.of(w.getOffsetAtLine(w.getLineAtOffset(w.getCaretOffset())), 0, code.strip() + "\n");
+        }
+        int at;
+        try {
+            at = ide.editor().apply(edit);
+        } catch (org.eclipse.jface.text.BadLocationException e) {
+            ide.status().setMessage("The lesson's code was not inserted: " + e.getMessage());
+            return;
+        }
+        String now = ide.editor().document().get();
+        while (at < now.length() && Character.isWhitespace(now.charAt(at))) {
+            at++;
+        }
+        ide.shell().forceActive();
+        ide.status().setMessage("The lesson's code is in the editor from line " + (w.getLineAtOffset(at) + 1)
+                + " (Edit > Undo takes it back).");
     }
 }
