@@ -12,4 +12,6 @@ case "$(uname -s)" in MINGW*|MSYS*|CYGWIN*) sep=';' ;; esac
 modules=$(jdeps --print-module-deps --ignore-missing-deps --multi-release 17 \
     --class-path "$(ls ./*.jar | paste -sd "$sep")" ./*.jar 2>/dev/null | tail -n 1)
 case "$modules" in java.base*) ;; *) echo "runtime-modules.sh: jdeps found no modules ('$modules')" >&2; exit 1 ;; esac
-echo "$modules"
+# jdk.localedata: the number formats of the user's locale (in a German sweep dialog "2,5" is 2.5,
+# not 2 and 5); java.base finds it as a service, which jdeps does not see (SweepDialogGuiTest).
+echo "$modules,jdk.localedata"
