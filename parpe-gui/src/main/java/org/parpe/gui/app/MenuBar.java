@@ -269,6 +269,10 @@ final class MenuBar {
             ide.status().setMessage("The lesson's code was not inserted: " + e.getMessage());
             return;
         }
+        if (at < 0) {
+            ide.status().setMessage("The lesson's code adds nothing: its sections are empty.");
+            return;
+        }
         String now = ide.editor().document().get();
         while (at < now.length() && Character.isWhitespace(now.charAt(at))) {
             at++;
