@@ -47,13 +47,9 @@ cp -r examples docs "$input/"
 [ -d spec ] && cp -r spec "$input/"
 cp README.md "$input/"
 
-# The Java runtime holds only the modules the jars use (jdeps), not the whole JDK. Relative
-# names, and the system's class-path separator, so that Windows' jdeps understands them.
-sep=:
-[ "$os" = windows ] && sep=';'
-modules=$(cd "$input" && jdeps --print-module-deps --ignore-missing-deps --multi-release 17 \
-    --class-path "$(ls ./*.jar | paste -sd "$sep")" ./*.jar 2>/dev/null | tail -n 1)
-case "$modules" in java.base*) ;; *) echo "dist.sh: jdeps found no modules ('$modules')" >&2; exit 1 ;; esac
+# The Java runtime holds only the modules the jars use (jdeps), not the whole JDK; the tests run
+# on such a runtime too (test-image-runtime.sh, from test-all).
+modules=$(packaging/runtime-modules.sh "$input")
 echo "dist.sh: runtime modules $modules" >&2
 
 common=(--name parpe-ide --app-version "$version" --vendor "PARPE"

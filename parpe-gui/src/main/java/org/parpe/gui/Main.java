@@ -11,7 +11,6 @@ import org.parpe.gui.automation.Automation;
 import org.parpe.gui.automation.Bench;
 import org.parpe.gui.app.IdeWindow;
 import org.parpe.gui.prefs.Prefs;
-import org.parpe.gui.run.CrashLog;
 
 /**
  * Entry point of the IDE: {@code parpe gui [FILE] [--run-for S] [--screenshot F] [--exit] [--bench]}.
@@ -76,14 +75,24 @@ public final class Main {
         IdeWindow ide = new IdeWindow(display, new Prefs(Prefs.defaultHome()));
         ide.open(options.file(), options.automated());
         Automation auto = options.automated() ? Automation.start(ide, options) : null;
+        return dispatch(display, ide, auto);
+    }
+
+    /**
+     * Handles events until {@code ide}'s window closes. A failure of PARPE itself in a listener
+     * must not take the user's work or a run with it: a RuntimeException or an Error (a class
+     * missing from the jars is a LinkageError) is written to the crash file and named to the
+     * user, an Error stops the run as Esc does ({@link IdeWindow#internalError}), and the window
+     * stays, with its text, to be saved.
+     */
+    static int dispatch(Display display, IdeWindow ide, Automation auto) {
         while (!ide.shell().isDisposed()) {
             try {
                 if (!display.readAndDispatch()) {
                     display.sleep();
                 }
-            } catch (RuntimeException e) {
-                // A bug in a listener must not take the user's work with it: report and carry on.
-                String file = CrashLog.write("handling a UI event", e);
+            } catch (RuntimeException | Error e) {
+                String file = ide.internalError(e);
                 System.err.println("parpe gui: internal error (" + e + "); details in " + file);
                 if (auto != null) {
                     auto.fail("internal error: " + e);

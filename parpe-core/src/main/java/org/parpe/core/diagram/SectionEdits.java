@@ -1,9 +1,11 @@
 package org.parpe.core.diagram;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Function;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.diag.SourceSpan;
+import org.parpe.core.lang.Vocabulary;
 import org.parpe.core.xml.SourceText;
 import org.parpe.core.xml.XElement;
 import org.parpe.core.xml.XmlReader;
@@ -99,38 +101,112 @@ public final class SectionEdits {
      */
     private static TextEdit write(String text, XElement parent, int level, Function<String, String> element,
                                   String... path) {
+        return place(text, parent, level == 0 ? ORDER.indexOf(path[0]) : -1, level > 0, indent -> {
+            StringBuilder open = new StringBuilder();
+            StringBuilder close = new StringBuilder();
+            String at = indent;
+            for (int k = level; k < path.length; k++) {
+                open.append(k == level ? "" : "\n" + at).append('<').append(path[k]).append('>');
+                close.insert(0, "\n" + at + "</" + path[k] + ">");
+                at += "  ";
+            }
+            return open + "\n" + at + element.apply(at) + close;
+        });
+    }
+
+    /**
+     * Puts {@code nested} (its text for the indentation it starts at) into {@code parent}: after
+     * its last child ({@code afterLast}), or after its last child that comes before {@code rank}
+     * in {@link #ORDER}, else before its first child, indented as that one; else as its only child.
+     */
+    private static TextEdit place(String text, XElement parent, int rank, boolean afterLast, Function<String, String> nested) {
         List<XElement> kids = parent.children();
         XElement before = null;
-        if (level == 0) {
-            int rank = ORDER.indexOf(path[0]);
+        if (afterLast) {
+            before = kids.isEmpty() ? null : kids.get(kids.size() - 1);
+        } else {
             for (XElement k : kids) {
                 int r = ORDER.indexOf(k.name());
                 if (r >= 0 && r < rank) {
                     before = k;
                 }
             }
-        } else if (!kids.isEmpty()) {
-            before = kids.get(kids.size() - 1);
         }
         XElement like = before != null ? before : kids.isEmpty() ? null : kids.get(0);
         String indent = like == null ? BehaviorEdits.indent(text, parent.span().start()) + "  "
                 : BehaviorEdits.indent(text, like.span().start());
-        StringBuilder open = new StringBuilder();
-        StringBuilder close = new StringBuilder();
-        String at = indent;
-        for (int k = level; k < path.length; k++) {
-            open.append(k == level ? "" : "\n" + at).append('<').append(path[k]).append('>');
-            close.insert(0, "\n" + at + "</" + path[k] + ">");
-            at += "  ";
-        }
-        String nested = open + "\n" + at + element.apply(at) + close;
         if (before != null) {
-            return TextEdit.of(before.span().end(), 0, "\n" + indent + nested);
+            return TextEdit.of(before.span().end(), 0, "\n" + indent + nested.apply(indent));
         }
         if (like != null) {
-            return TextEdit.of(like.span().start(), 0, nested + "\n" + indent);
+            return TextEdit.of(like.span().start(), 0, nested.apply(indent) + "\n" + indent);
         }
-        return BehaviorEdits.appendChild(text, parent.span(), parent.name(), null, nested);
+        return BehaviorEdits.appendChild(text, parent.span(), parent.name(), null, nested.apply(indent));
+    }
+
+    /**
+     * Puts a snippet made of sections (a lesson's {@code <states>…</states>}, or several
+     * sections) where each belongs, never inside another element: the content of a section the
+     * script has goes after that section's last child; a section it lacks is written at the top
+     * level, after the section it follows in {@link #ORDER}; a blank file gets a
+     * {@code <program>} holding them. Returns null when the snippet is not sections only (an
+     * element of a section, whose place depends on what it is for).
+     *
+     * @throws IllegalArgumentException when the script is not well-formed, or a section is read from another file
+     */
+    public static TextEdit placeSections(String text, String file, String snippet) {
+        String wrapped = "<" + Vocabulary.ROOT + ">\n" + snippet + "\n</" + Vocabulary.ROOT + ">";
+        XElement root = XmlReader.read(new SourceText("snippet", wrapped), new DiagnosticList());
+        List<XElement> sections = root == null ? List.of() : root.children();
+        if (sections.size() == 1 && sections.get(0).name().equals(Vocabulary.ROOT)) {
+            sections = sections.get(0).children();
+        }
+        if (sections.isEmpty() || !sections.stream().allMatch(s -> ORDER.contains(s.name()))) {
+            return null;
+        }
+        if (blank(text)) {
+            StringBuilder program = new StringBuilder("<" + Vocabulary.ROOT + ">\n");
+            sections.stream().sorted(java.util.Comparator.comparingInt(s -> ORDER.indexOf(s.name())))
+                    .forEach(s -> program.append("  ").append(reindent(wrapped, s.span().start(), s.span().end(), "  ")).append('\n'));
+            int end = text.length();
+            while (end > 0 && Character.isWhitespace(text.charAt(end - 1))) {
+                end--;
+            }
+            return TextEdit.of(end, text.length() - end, (end == 0 ? "" : "\n") + program + "</" + Vocabulary.ROOT + ">\n");
+        }
+        XElement program = XmlReader.read(new SourceText(file, text), new DiagnosticList());
+        if (program == null) {
+            throw new IllegalArgumentException("the script is not well-formed XML; mend it first (see Problems)");
+        }
+        List<TextEdit.Replacement> out = new ArrayList<>();
+        for (XElement s : sections) {
+            XElement have = child(program, s.name());
+            if (have == null) {
+                out.addAll(place(text, program, ORDER.indexOf(s.name()), false,
+                        at -> reindent(wrapped, s.span().start(), s.span().end(), at)).replacements());
+            } else if (!s.children().isEmpty()) {
+                int from = s.children().get(0).span().start();
+                int to = s.children().get(s.children().size() - 1).span().end();
+                out.addAll(add(text, file, at -> reindent(wrapped, from, to, at), s.name()).replacements());
+            }
+        }
+        return new TextEdit(out);
+    }
+
+    /** {@code src[from, to)} with its further lines moved from the first one's indentation to {@code indent}. */
+    private static String reindent(String src, int from, int to, String indent) {
+        int column = from - (src.lastIndexOf('\n', from - 1) + 1);
+        String[] lines = src.substring(from, to).split("\n", -1);
+        StringBuilder out = new StringBuilder(lines[0]);
+        for (int i = 1; i < lines.length; i++) {
+            String line = lines[i];
+            int strip = 0;
+            while (strip < column && strip < line.length() && line.charAt(strip) == ' ') {
+                strip++;
+            }
+            out.append('\n').append(line.isBlank() ? "" : indent + line.substring(strip));
+        }
+        return out.toString();
     }
 
     private static XElement child(XElement parent, String name) {

@@ -1,6 +1,7 @@
 package org.parpe.gui.app;
 
 import org.parpe.gui.prefs.Prefs;
+import org.parpe.gui.run.CrashLog;
 
 import org.parpe.gui.files.FileActions;
 import org.parpe.gui.hardware.HardwareDialog;
@@ -62,6 +63,8 @@ public final class IdeWindow implements HardwareHost {
     private final ProblemsView problems;
     private final CTabFolder bottom;
     private final StyledText log;
+    private String lastCrash;
+    private String lastCrashFile;
     private final OutlineView outline;
     private final View3D view;
     private final ViewBar viewBar;
@@ -606,7 +609,45 @@ public final class IdeWindow implements HardwareHost {
         }
     }
 
-    /** The Run log (tests). */
+    /**
+     * A failure of PARPE itself while handling an event: a run going on is stopped first if it is
+     * an Error (the window's state is unknown after one; Esc's stop, so that modules on the bus
+     * stop at once and a run never goes on unwatched), then the crash file is written and named in
+     * the Run log and the status bar. The same failure again (a listener failing on each paint)
+     * names the file written for it the first time. Returns the crash file.
+     */
+    public String internalError(Throwable e) {
+        // asyncExec hands on a runnable's Error wrapped in an SWTException
+        if (e instanceof Error || e instanceof org.eclipse.swt.SWTException s && s.throwable instanceof Error) {
+            try {
+                runs.emergencyStop();
+            } catch (RuntimeException | Error stopFailed) {
+                e.addSuppressed(stopFailed);
+            }
+        }
+        StackTraceElement[] at = e.getStackTrace();
+        String what = e + (at.length > 0 ? " at " + at[0] : "");
+        if (!what.equals(lastCrash)) {
+            lastCrash = what;
+            lastCrashFile = CrashLog.write("handling a UI event", e);
+        }
+        try {
+            String message = "Internal error of PARPE (" + e + "); please attach " + lastCrashFile
+                    + " to a bug report. Your text is still in the editor.";
+            log(message);
+            status.setMessage(message);
+        } catch (RuntimeException | Error notShown) {
+            // The file is written; the window cannot say so.
+        }
+        return lastCrashFile;
+    }
+
+    /** The menu bar's actions (tests). */
+    MenuBar menus() {
+        return menus;
+    }
+
+    /** The Run log's text (tests). */
     StyledText runLog() {
         return log;
     }

@@ -23,6 +23,8 @@ import org.eclipse.swt.widgets.Text;
 import org.parpe.gui.help.TutorialWindow;
 import org.parpe.gui.sweep.SweepDialog;
 import org.parpe.gui.sweep.SweepHost;
+import org.parpe.core.diagram.SectionEdits;
+import org.parpe.core.diagram.TextEdit;
 
 /** The menu bar: File, Edit, Run, View and Help. Every item acts; none is a placeholder. */
 final class MenuBar {
@@ -133,7 +135,8 @@ final class MenuBar {
         item(m, "Select &All\tCtrl+A", SWT.MOD1 + 'A', () -> textOp(ITextOperationTarget.SELECT_ALL));
         new MenuItem(m, SWT.SEPARATOR);
         item(m, "&Find/Replace\u2026\tCtrl+F", SWT.MOD1 + 'F', this::openFind);
-        item(m, "Content &Assist\tCtrl+Space", 0, () -> {
+        // The editor's key (ParslEditor); GTK would not show "Ctrl+Space" after a tab.
+        item(m, "Content &Assist (Ctrl+Space)", 0, () -> {
             ide.editor().widget().setFocus();
             ide.editor().run(ISourceViewer.CONTENTASSIST_PROPOSALS);
         });
@@ -193,7 +196,9 @@ final class MenuBar {
         item(m, "&Run\tF5", SWT.F5, () -> r.run(true, -1, null));
         item(m, "&Pause/Resume\tF6", SWT.F6, r::pause);
         item(m, "&Stop\tShift+F5", SWT.SHIFT + SWT.F5, r::stop);
-        item(m, "&Emergency Stop\tEsc", 0, r::emergencyStop);
+        // Esc is the window's (IdeWindow's key filter: anywhere, dialogs too), not a menu accelerator, and GTK shows
+        // the text after a tab only for a key it can read (not Esc): the key is named in the label, as on the tool bar.
+        item(m, "&Emergency Stop (Esc)", 0, r::emergencyStop);
         new MenuItem(m, SWT.SEPARATOR);
         item(m, "&Hardware\u2026", 0, () -> HardwareDialog.open(ide));
         item(m, "S&weep / Optimise\u2026", 0, this::openSweep);
@@ -232,36 +237,66 @@ final class MenuBar {
 
     /**
      * Help → Tutorial: the lessons beside the examples ({@code docs/tutorial}), docked beside the
-     * outline where the screen has no room for their own window beside the IDE, else in that window.
+     * outline where the screen has no room for their own window beside the IDE, else in that window
+     * (null: not found).
      */
-    void openTutorial() {
+    TutorialWindow openTutorial() {
         Path folder = Examples.tutorialFolder();
         if (folder == null) {
             MessageDialog.openInformation(ide.shell(), "Tutorial", "The tutorial (docs/tutorial) was not found next to the"
                     + " examples. It is also online with the PARPE sources, in docs/tutorial/index.md.");
-            return;
+            return null;
         }
         java.util.function.Consumer<Path> open = p -> ide.files().openExample(p);
-        java.util.function.Consumer<String> insert = code -> {
-            // At the caret, on a line of its own, as one change that Edit > Undo takes back.
-            var w = ide.editor().widget();
-            int at = w.getCaretOffset();
-            String line = at > 0 && !ide.editor().document().get().substring(0, at).endsWith("\n") ? "\n" : "";
-            w.replaceTextRange(at, 0, line + code + "\n");
-            ide.shell().forceActive();
-            ide.status().setMessage("The lesson's code is in the editor at line " + (w.getLineAtOffset(at) + 1)
-                    + " (Edit > Undo takes it back).");
-        };
         if (TutorialDock.wanted(ide.shell())) {
-            ide.tutorialDock().open(dock -> {
-                TutorialWindow t = TutorialWindow.docked(dock, folder, open, insert);
+            return ide.tutorialDock().open(dock -> {
+                TutorialWindow t = TutorialWindow.docked(dock, folder, open, this::insertLessonCode);
                 t.showInstalledCommands(Examples.installed());
                 return t;
             });
-            return;
         }
-        TutorialWindow tutorial = new TutorialWindow(ide.shell(), folder, open, insert);
+        TutorialWindow tutorial = new TutorialWindow(ide.shell(), folder, open, this::insertLessonCode);
         tutorial.showInstalledCommands(Examples.installed());
         tutorial.open();
+        return tutorial;
+    }
+
+    /**
+     * The tutorial's "Insert this code": sections go where they belong, into the script's section
+     * of that name or at the top level ({@link SectionEdits#placeSections}), never into the
+     * element the caret is in; an element of a section goes on a line of its own at the caret's
+     * line, where the student chose. One change: Edit > Undo takes it back.
+     */
+    void insertLessonCode(String code) {
+        var w = ide.editor().widget();
+        String text = ide.editor().document().get();
+        TextEdit edit;
+        try {
+            edit = SectionEdits.placeSections(text, ide.files().name(), code);
+        } catch (IllegalArgumentException e) {
+            ide.status().setMessage("The lesson's code was not inserted: " + e.getMessage());
+            return;
+        }
+        if (edit == null) {
+            edit = TextEdit.of(w.getOffsetAtLine(w.getLineAtOffset(w.getCaretOffset())), 0, code.strip() + "\n");
+        }
+        int at;
+        try {
+            at = ide.editor().apply(edit);
+        } catch (org.eclipse.jface.text.BadLocationException e) {
+            ide.status().setMessage("The lesson's code was not inserted: " + e.getMessage());
+            return;
+        }
+        if (at < 0) {
+            ide.status().setMessage("The lesson's code adds nothing: its sections are empty.");
+            return;
+        }
+        String now = ide.editor().document().get();
+        while (at < now.length() && Character.isWhitespace(now.charAt(at))) {
+            at++;
+        }
+        ide.shell().forceActive();
+        ide.status().setMessage("The lesson's code is in the editor from line " + (w.getLineAtOffset(at) + 1)
+                + " (Edit > Undo takes it back).");
     }
 }

@@ -1006,17 +1006,8 @@ public final class DiagramPane {
 
     /** Applies {@code edit} to the document as one replacement spanning all of its ranges. */
     void apply(TextEdit edit) {
-        List<TextEdit.Replacement> rs = new ArrayList<>(edit.replacements());
-        if (rs.isEmpty()) {
-            return;
-        }
-        String text = shown.text();
-        int from = rs.get(0).offset();
-        int to = rs.get(rs.size() - 1).end();
-        String after = edit.apply(text);
-        String middle = after.substring(from, after.length() - (text.length() - to));
         try {
-            editor.document().replace(from, to - from, middle);
+            editor.apply(edit);
         } catch (BadLocationException e) {
             say("The text changed meanwhile; try again (" + e.getMessage() + ").");
         }

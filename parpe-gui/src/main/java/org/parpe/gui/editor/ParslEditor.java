@@ -98,6 +98,28 @@ public final class ParslEditor {
         return viewer;
     }
 
+    /**
+     * Applies {@code edit} to the document as one replacement spanning all of its ranges (one
+     * Edit > Undo takes it back); returns the offset of its first range.
+     *
+     * @throws BadLocationException when the text has changed since the edit was made
+     */
+    public int apply(org.parpe.core.diagram.TextEdit edit) throws BadLocationException {
+        java.util.List<org.parpe.core.diagram.TextEdit.Replacement> rs = edit.replacements();
+        if (rs.isEmpty()) {
+            return -1;
+        }
+        String text = document.get();
+        int from = rs.get(0).offset();
+        int to = rs.get(rs.size() - 1).end();
+        if (to > text.length()) {
+            throw new BadLocationException("the edit ends at " + to + ", the text at " + text.length());
+        }
+        String after = edit.apply(text);
+        document.replace(from, to - from, after.substring(from, after.length() - (text.length() - to)));
+        return from;
+    }
+
     /** The text widget. */
     /** The syntax colours, the current line's background and the line numbers' colour (tests check their contrast). */
     public static java.util.List<Color> colours() {

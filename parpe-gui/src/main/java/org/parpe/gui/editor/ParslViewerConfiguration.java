@@ -3,6 +3,7 @@ package org.parpe.gui.editor;
 import java.util.function.BooleanSupplier;
 import java.util.function.Function;
 import org.eclipse.jface.text.IDocument;
+import org.eclipse.jface.text.ITextDoubleClickStrategy;
 import org.eclipse.jface.text.ITypedRegion;
 import org.eclipse.jface.text.TextPresentation;
 import org.eclipse.jface.text.IUndoManager;
@@ -18,7 +19,7 @@ import org.eclipse.jface.text.source.ISourceViewer;
 import org.eclipse.jface.text.source.SourceViewerConfiguration;
 import org.eclipse.swt.SWT;
 
-/** Colouring, content assist, hovers and undo of the PARSL source viewer. */
+/** Colouring, content assist, hovers, double-click and undo of the PARSL source viewer. */
 final class ParslViewerConfiguration extends SourceViewerConfiguration {
     private final IAnnotationHover hover;
     private final BooleanSupplier plain;
@@ -72,6 +73,11 @@ final class ParslViewerConfiguration extends SourceViewerConfiguration {
         a.setProposalPopupOrientation(IContentAssistant.PROPOSAL_OVERLAY);
         a.setShowEmptyList(false);
         return a;
+    }
+
+    @Override
+    public ITextDoubleClickStrategy getDoubleClickStrategy(ISourceViewer sourceViewer, String contentType) {
+        return new WordDoubleClick();
     }
 
     @Override

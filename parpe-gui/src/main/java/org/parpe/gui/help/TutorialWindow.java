@@ -376,7 +376,7 @@ public final class TutorialWindow {
                     r.font = code;
                     styles.add(r);
                     if (insertCode != null && b.text().strip().startsWith("<")) {
-                        // A lesson's XML goes to the editor with one click (inserted at the caret, one undo).
+                        // A lesson's XML goes to the editor with one click (where it belongs, one undo).
                         String action = "\n\u25b6 Insert this code into the editor";
                         int at = all.length() + 1;
                         all.append(action);

@@ -103,6 +103,11 @@ public final class IdeAccess {
         Gui.endRun(ide);
     }
 
+    /** The Run log's text. */
+    public static String runLog(IdeWindow ide) {
+        return ide.runLog().getText();
+    }
+
     /** The status bar's message. */
     public static String status(IdeWindow ide) {
         return ide.status().message();

@@ -120,6 +120,35 @@ class TutorialGuiTest {
     }
 
     /**
+     * Issue 31: "Insert this code" put the code at the caret wherever it was, and could nest a
+     * lesson's {@code <states>} in another element. Now a section goes into the script's section
+     * of that name or, as here, at the top level after the sections before it; one Undo takes it back.
+     */
+    @Test
+    void insertThisCodePutsASectionAtTheTopLevelNotAtTheCaret() throws Exception {
+        String script = String.join("\n", "<program>", "  <robot>", "    <structure>", "      <group1 elements=\"0,2,4,6\" />",
+                "    </structure>", "  </robot>", "  <automata>", "    <wave states=\"up, down\" />", "  </automata>", "</program>", "");
+        ide.editor().setText(script);
+        ide.editor().widget().setCaretOffset(script.indexOf("states=\"up"));
+        TutorialWindow w = ide.menus().openTutorial();
+        try {
+            w.show(java.util.Arrays.asList(w.titles()).indexOf(java.util.Arrays.stream(w.titles())
+                    .filter(t -> t.startsWith("Lesson 3")).findFirst().orElseThrow()));
+            Gui.settle();
+            String shown = w.shownText();
+            assertTrue(shown.indexOf("<states>") < shown.indexOf("\u25b6 Insert this code"), "lesson 3's first code is not <states>");
+            w.clickAt(shown.indexOf("\u25b6 Insert this code") + 3);
+            assertEquals(script.replace("  </automata>\n", "  </automata>\n  <states>\n    <up   angles=\"30\"/>\n"
+                    + "    <down angles=\"-30\"/>\n  </states>\n"), ide.editor().document().get());
+            assertTrue(IdeAccess.status(ide).contains("from line 10"), IdeAccess.status(ide));
+            ide.editor().run(org.eclipse.jface.text.ITextOperationTarget.UNDO);
+            assertEquals(script, ide.editor().document().get(), "one Undo takes the code back");
+        } finally {
+            w.shell().dispose();
+        }
+    }
+
+    /**
      * Issue 23, item 7: Ctrl + / Ctrl − / Ctrl 0 did nothing in the tutorial (the editor zoomed, the
      * lesson a class reads from the projector did not). Real key presses under Xvfb.
      */

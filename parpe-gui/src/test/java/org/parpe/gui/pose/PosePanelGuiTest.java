@@ -305,6 +305,9 @@ class PosePanelGuiTest {
     }
 
     private static void closeDialogs() {
+        if (ide.shell().isDisposed()) {
+            return; // the timer outlived this class's window (a test that ended before it fired)
+        }
         for (org.eclipse.swt.widgets.Shell sh : ide.shell().getShells()) {
             if (!sh.isDisposed()) {
                 sh.close();
