@@ -16,5 +16,5 @@ echo "test-image-runtime.sh: the image's modules: $modules" >&2
 jlink --add-modules "$modules" --no-man-pages --no-header-files --output "$work/runtime"
 # The IDE's tests: they exercise what a student touches (the CLI's and the core's run on the full JDK in the
 # main verify, and run the same code the IDE calls); the whole suite a second time would double CI's time.
-mvn -B verify -pl parpe-gui -am -Djvm="$work/runtime/bin/java" -Dtest='org/parpe/gui/**' \
+mvn -B verify -pl parpe-gui -am -Djvm="$work/runtime/bin/java" -Dtest='org/parpe/gui/**/*' \
     -Dsurefire.failIfNoSpecifiedTests=false "$@"

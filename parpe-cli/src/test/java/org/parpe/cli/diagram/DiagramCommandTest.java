@@ -85,24 +85,40 @@ class DiagramCommandTest {
         assertEquals(0xffffff, img.getRGB(380 - 60, 290 + 60) & 0xffffff, "inside the band, beside the words, is empty");
     }
 
+    /** The first point of {@code rgb} whose neighbours two pixels away have that colour too. */
+    private static int[] inside(BufferedImage img, int rgb) {
+        for (int y = 2; y < img.getHeight() - 2; y++) {
+            for (int x = 2; x < img.getWidth() - 2; x++) {
+                if ((img.getRGB(x, y) & 0xffffff) == rgb && (img.getRGB(x - 2, y - 2) & 0xffffff) == rgb
+                        && (img.getRGB(x + 2, y + 2) & 0xffffff) == rgb && (img.getRGB(x + 2, y - 2) & 0xffffff) == rgb
+                        && (img.getRGB(x - 2, y + 2) & 0xffffff) == rgb) {
+                    return new int[] {x, y};
+                }
+            }
+        }
+        throw new AssertionError("no area of colour " + Integer.toHexString(rgb));
+    }
+
     /**
      * Issue 31 item 3.4: a PNG had only the diagram's own size. {@code --width} scales it; the
      * height follows, and the picture is the same one, larger.
      */
     @Test
     void widthScalesThePng(@TempDir Path dir) throws Exception {
-        Path out = dir.resolve("ring.png");
-        Cli r = Cli.run("diagram", "../examples/centipede-walk.xml", "--view", "ring", "--width", "1200", "--out",
-                out.toString());
-        assertEquals(0, r.code, r::toString);
-        BufferedImage big = ImageIO.read(out.toFile());
         Path own = dir.resolve("own.png");
         assertEquals(0, Cli.run("diagram", "../examples/centipede-walk.xml", "--view", "ring", "--out", own.toString()).code);
         BufferedImage small = ImageIO.read(own.toFile());
-        assertEquals(1200, big.getWidth());
+        int width = 2 * small.getWidth();
+        Path out = dir.resolve("ring.png");
+        Cli r = Cli.run("diagram", "../examples/centipede-walk.xml", "--view", "ring", "--width", String.valueOf(width),
+                "--out", out.toString());
+        assertEquals(0, r.code, r::toString);
+        BufferedImage big = ImageIO.read(out.toFile());
+        assertEquals(width, big.getWidth());
         assertEquals(2 * small.getHeight(), big.getHeight());
-        // the first arc, where aPngHasTheSceneSizeAndIsDrawn finds it, twice as far out
-        assertEquals(0xe69f00, big.getRGB(2 * (300 + 100), 2 * (290 - 100)) & 0xffffff);
+        // a point well inside the first arc (its colour all round it) is twice as far out in the larger picture
+        int[] at = inside(small, 0xe69f00);
+        assertEquals(0xe69f00, big.getRGB(2 * at[0], 2 * at[1]) & 0xffffff);
         for (String[] bad : new String[][] {{"--width", "0", "x.png"}, {"--width", "20000", "x.png"},
             {"--width", "800", "x.svg"}}) {
             Cli refused = Cli.run("diagram", "../examples/centipede-walk.xml", "--view", "ring", bad[0], bad[1], "--out",

@@ -61,6 +61,9 @@ class ExportEqualityTest {
                 for (Path dir : s.sorted().toList()) {
                     List<String> args = Arrays.asList(Files.readString(dir.resolve("cmd")).trim().split("\\s+"));
                     boolean check = args.get(0).equals("check");
+                    if (!check && docks(dir.resolve(args.get(0)))) {
+                        continue; // plate actions are refused by the export (aDockingExampleIsRefusedAtItsStates)
+                    }
                     List<String> rest = new ArrayList<>();
                     for (int i = 1; i < args.size(); i++) {
                         String a = args.get(i);

@@ -34,9 +34,9 @@ public record Board(String word, long ram, long flash, int doubleBytes, int jmpB
      * example (17.6 KB since the runtime keeps time in integers, issue 21 item 7) with a margin
      * (17 900 bytes).
      */
-    public static final Board UNO = new Board("uno", 2048, 32256, 4, 23, 610, 17900, 4, 2, 1, 16_000_000);
+    public static final Board UNO = new Board("uno", 2048, 32256, 4, 23, 610, 17980, 4, 2, 1, 16_000_000);
     /** Arduino Nano (ATmega328P), the Uno's chip with a larger bootloader. */
-    public static final Board NANO = new Board("nano", 2048, 30720, 4, 23, 610, 17900, 4, 2, 1, 16_000_000);
+    public static final Board NANO = new Board("nano", 2048, 30720, 4, 23, 610, 17980, 4, 2, 1, 16_000_000);
     /** ESP32 (320 KB of data RAM, a 1.25 MB application partition). */
     public static final Board ESP32 = new Board("esp32", 327680, 1310720, 8, 68, 30000, 250000, 4, 4, 8, 0);
 
