@@ -137,7 +137,7 @@ public final class RaceCommand implements Callable<Integer> {
     }
 
     /** The parts of a score that count, in words: "zone 31.2 s, path 1.40 m, 1 delivered, 2 presses, disqualified (tilt)". */
-    private static String parts(WorldScore s) {
+    public static String parts(WorldScore s) {
         List<String> p = new ArrayList<>();
         if (!Double.isNaN(s.timeToZone())) {
             p.add(String.format(Locale.ROOT, "zone %.1f s", s.timeToZone()));
