@@ -8,9 +8,9 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
+import org.parpe.core.xml.FlatXmlFile;
 
 /**
  * Runs one student in a child JVM ({@link GradeChild}) on the same Java and class path, with a
@@ -68,9 +68,9 @@ final class Isolation {
         while (!p.waitFor(50, TimeUnit.MILLISECONDS)) {
             double cpu = p.toHandle().info().totalCpuDuration().map(Duration::toNanos).orElse(0L) / 1e9;
             String why = cpu > limits.cpuSeconds()
-                    ? String.format(Locale.ROOT, "stopped after %.0f s of CPU time (the limit, --cpu-limit)", limits.cpuSeconds())
+                    ? "stopped after " + FlatXmlFile.plain(limits.cpuSeconds()) + " s of CPU time (the limit, --cpu-limit)"
                     : System.nanoTime() > wallEnd
-                    ? String.format(Locale.ROOT, "stopped after %.0f s without finishing (the wall-clock limit)", limits.wallSeconds())
+                    ? "stopped after " + FlatXmlFile.plain(limits.wallSeconds()) + " s without finishing (the wall-clock limit)"
                     : null;
             if (why != null) {
                 p.destroyForcibly().waitFor();
