@@ -40,12 +40,13 @@ final class ReportPage {
     private static void table(StringBuilder b, List<Row> rows) {
         b.append("<table>\n<tr><th>rank</th><th>student</th><th>score</th><th>parts</th><th>forward (m)</th>"
                 + "<th>distance (m)</th><th>fell</th><th>time (s)</th><th>trace</th><th>problem</th></tr>\n");
-        for (Row r : rows) {
+        for (int i = 0; i < rows.size(); i++) {
+            Row r = rows.get(i);
             Outcome o = r.outcome();
             b.append(r.rank() > 0 ? "<tr>" : "<tr class=\"bad\">");
             b.append("<td class=\"n\">").append(r.rank() > 0 ? r.rank() : "-").append("</td><td>");
             if (r.rank() > 0) {
-                b.append("<span class=\"sw\" style=\"background:").append(colour(r.rank())).append("\"></span>");
+                b.append("<span class=\"sw\" style=\"background:").append(colour(i)).append("\"></span>");
             }
             b.append(esc(r.student().name())).append("</td>");
             if (o.ranked()) {
@@ -61,9 +62,9 @@ final class ReportPage {
         b.append("</table>\n");
     }
 
-    /** The colour of the path of the robot ranked {@code rank}. */
-    static String colour(int rank) {
-        return COLOURS[(rank - 1) % COLOURS.length];
+    /** The colour of the path of the robot in row {@code i} (from 0): rows that share a rank differ. */
+    static String colour(int i) {
+        return COLOURS[i % COLOURS.length];
     }
 
     /** {@code s} as HTML text or attribute value: markup, quotes and control characters escaped. */
@@ -99,7 +100,7 @@ final class ReportPage {
             }
             for (World.Solid s : world.solids()) {
                 if (s.shape() instanceof BodyShape.Box box3) {
-                    solid(b, s, box3);
+                    solid(b, s, box3, stroke);
                 }
             }
             world.zones().forEach(z -> rect(b, z, "fill=\"#2ca02c\" fill-opacity=\"0.15\" stroke=\"#2ca02c\"", stroke));
@@ -110,15 +111,15 @@ final class ReportPage {
             for (int i = rows.size() - 1; i >= 0; i--) { // the winner drawn last, on top
                 Row r = rows.get(i);
                 if (r.rank() > 0 && r.path().length >= 4) {
-                    path(b, r, stroke);
+                    path(b, r, colour(i), stroke);
                 }
             }
             return b.append("</svg>").toString();
         }
 
-        private static void path(StringBuilder b, Row r, double stroke) {
+        private static void path(StringBuilder b, Row r, String colour, double stroke) {
             b.append("<polyline fill=\"none\" stroke-width=\"").append(n(stroke * 2)).append("\" stroke=\"")
-                    .append(colour(r.rank())).append("\" points=\"");
+                    .append(colour).append("\" points=\"");
             double[] p = r.path();
             for (int k = 0; k + 1 < p.length; k += 2) {
                 b.append(k == 0 ? "" : " ").append(n(p[k])).append(',').append(n(-p[k + 1]));
@@ -133,10 +134,11 @@ final class ReportPage {
         }
 
         /** A box's footprint: its four corners turned by its rotation about z. */
-        private static void solid(StringBuilder b, World.Solid s, BodyShape.Box box) {
+        private static void solid(StringBuilder b, World.Solid s, BodyShape.Box box, double stroke) {
             double c = s.rotation().get(0, 0);
             double si = s.rotation().get(1, 0);
-            b.append("<polygon fill=\"#8a8a8a\" points=\"");
+            b.append("<polygon fill=\"#777\" fill-opacity=\"0.3\" stroke=\"#777\" stroke-width=\"").append(n(stroke))
+                    .append("\" points=\"");
             double[][] corners = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
             for (int k = 0; k < 4; k++) {
                 double lx = corners[k][0] * box.hx();
