@@ -194,6 +194,39 @@ class GradeCommandTest {
         assertFalse(one.err.contains("Exception") || one.err.contains("\tat "), one.err);
     }
 
+    @Test
+    void aRunPastItsCpuLimitIsStoppedAndCostsOnlyItsRow() throws Exception {
+        Path s = Files.createDirectories(dir.resolve("students"));
+        Files.writeString(s.resolve("slow.xml"), snake("30", "<main cycles=\"forever\"><race/></main>"));
+        Cli r = Cli.run("grade", challenge().toString(), s.toString(), "--out", dir.resolve("r").toString(),
+                "--cpu-limit", "0.3", "--memory", "128");
+        assertEquals(0, r.code, r.toString());
+        List<List<String>> rows = parse(Files.readString(dir.resolve("r/report.csv")));
+        assertEquals(List.of("", "slow.xml", "slow.xml", "", "", "", "", "", "", "",
+                "stopped after 0.30 s of CPU time (the limit, --cpu-limit)"), rows.get(1));
+        try (Stream<Path> left = Files.list(dir.resolve("r/traces"))) {
+            assertEquals(List.of(), left.toList(), "no partial trace is left");
+        }
+    }
+
+    @Test
+    void checkKnowsAChallengeAndLocatesItsErrors() throws Exception {
+        Cli ok = Cli.run("check", "../examples/challenges/race-track.xml", "../examples/challenges/rubble.xml",
+                "../examples/challenges/slot-machine.xml");
+        assertEquals(0, ok.code, ok.toString());
+        assertEquals(3, ok.out.split("ok \\(challenge\\)").length - 1, ok.out);
+        Path bad = Files.writeString(dir.resolve("bad.xml"), "<challenge world=\"nowhere.xml\" robot=\"snake\"\n"
+                + "  tie-break=\"coin\" laps=\"3\">\n  <parameter name=\"bend\"/>\n</challenge>\n");
+        Cli no = Cli.run("check", bad.toString());
+        assertEquals(1, no.code, no.toString());
+        assertTrue(no.err.contains("bad.xml:1:1: error: <challenge> has no attribute 'laps'"), no.err);
+        assertTrue(no.err.contains("bad.xml:1:1: error: tie-break must be 'distance' or 'none', got 'coin'"), no.err);
+        assertTrue(no.err.contains("bad.xml:3:3: error: <parameter> needs the attribute 'value'"), no.err);
+        Cli grade = Cli.run("grade", bad.toString(), dir.toString(), "--out", dir.resolve("r").toString());
+        assertEquals(2, grade.code, grade.toString());
+        assertTrue(grade.err.contains("has errors (above)"), grade.err);
+    }
+
     private static final Set<String> TAGS = Set.of("html", "head", "meta", "title", "style", "body", "h1", "p", "svg",
             "rect", "polygon", "circle", "polyline", "table", "tr", "th", "td", "span", "a", "pre");
 
