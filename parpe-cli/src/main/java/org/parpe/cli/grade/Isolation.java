@@ -44,7 +44,11 @@ final class Isolation {
             throws IOException, InterruptedException {
         List<String> cmd = new ArrayList<>();
         cmd.add(ProcessHandle.current().info().command().orElse(Path.of(System.getProperty("java.home"), "bin", "java").toString()));
+        // C1 only: a run is a few seconds of CPU, which C2's compiling costs more than it saves
+        // (30 race-track runs of 60 s: 27 CPU-s instead of 60); the results are the same (strict
+        // floating point since Java 17), so the report is too.
         cmd.addAll(List.of("-Xmx" + limits.memoryMb() + "m", "-XX:+ExitOnOutOfMemoryError", "-XX:+UseSerialGC",
+                "-XX:TieredStopAtLevel=1",
                 "-XX:MaxMetaspaceSize=128m", "-Xss2m", "-Xshare:auto", "-Djava.awt.headless=true",
                 "-cp", System.getProperty("java.class.path"), GradeChild.class.getName(),
                 challenge.toAbsolutePath().toString(), script.toString(), root.toString(), trace.toAbsolutePath().toString()));

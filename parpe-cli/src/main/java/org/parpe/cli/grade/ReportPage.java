@@ -17,8 +17,8 @@ final class ReportPage {
         "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22"};
     private static final String STYLE = "body{font-family:sans-serif;margin:1.5em;color:#222}"
             + "table{border-collapse:collapse;margin-top:1em}td,th{border:1px solid #bbb;padding:.25em .5em;"
-            + "vertical-align:top;text-align:left}td.n{text-align:right;font-variant-numeric:tabular-nums}"
-            + "tr.bad td{background:#fff3f0}pre{margin:0;white-space:pre-wrap;font-size:.85em;max-width:60em}"
+            + "vertical-align:top;text-align:left;white-space:nowrap}td.n{text-align:right;font-variant-numeric:tabular-nums}"
+            + "tr.bad td{background:#fff3f0}pre{margin:0;white-space:pre-wrap;font-size:.85em;max-width:50em}"
             + "svg{border:1px solid #999;background:#fafafa;max-width:100%;height:auto}.sw{display:inline-block;"
             + "width:1em;height:.6em;margin-right:.3em}";
 
