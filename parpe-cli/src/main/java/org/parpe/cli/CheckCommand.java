@@ -5,7 +5,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.stream.Stream;
@@ -107,10 +106,7 @@ final class CheckCommand implements Callable<Integer> {
 
     private List<Path> scriptsIn(Path dir) {
         try (Stream<Path> s = Files.list(dir)) {
-            return s.filter(p -> {
-                String n = p.getFileName().toString().toLowerCase(Locale.ROOT);
-                return (n.endsWith(".xml") || n.endsWith(".parsl")) && Files.isRegularFile(p);
-            }).sorted().toList();
+            return s.filter(p -> Inputs.isScript(p) && Files.isRegularFile(p)).sorted().toList();
         } catch (IOException | RuntimeException e) {
             return List.of();
         }

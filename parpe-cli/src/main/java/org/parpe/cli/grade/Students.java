@@ -6,8 +6,8 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
-import java.util.Locale;
 import java.util.stream.Stream;
+import org.parpe.cli.Inputs;
 
 /**
  * The students of a folder, in name order: each script directly in it is a student handed in as a
@@ -44,7 +44,7 @@ final class Students {
                         + " (the confinement rule of parpe grade)"));
             } else if (Files.isDirectory(p)) {
                 students.add(folder(dir, p, name));
-            } else if (isScript(p)) {
+            } else if (Inputs.isScript(p)) {
                 students.add(new Student(name, Path.of(name), Path.of(name), ""));
             }
         }
@@ -52,7 +52,7 @@ final class Students {
     }
 
     private static Student folder(Path dir, Path folder, String name) throws IOException {
-        List<Path> scripts = list(folder).stream().filter(Students::isScript)
+        List<Path> scripts = list(folder).stream().filter(Inputs::isScript)
                 .filter(p -> !p.getFileName().toString().startsWith(".")).toList();
         Path chosen = scripts.size() == 1 ? scripts.get(0)
                 : scripts.stream().filter(p -> p.getFileName().toString().equals("main.xml")).findFirst().orElse(null);
@@ -67,11 +67,6 @@ final class Students {
         try (Stream<Path> s = Files.list(dir)) {
             return s.sorted(Comparator.comparing(p -> p.getFileName().toString())).toList();
         }
-    }
-
-    private static boolean isScript(Path p) {
-        String n = p.getFileName().toString().toLowerCase(Locale.ROOT);
-        return n.endsWith(".xml") || n.endsWith(".parsl");
     }
 
     private static boolean inside(Path p, Path realDir) {

@@ -210,6 +210,23 @@ class GradeCommandTest {
     }
 
     @Test
+    void aRunPastItsMemoryLimitCostsOnlyItsRow() throws Exception {
+        Path s = Files.createDirectories(dir.resolve("students"));
+        StringBuilder big = new StringBuilder("<program>\n<robot><structure>\n");
+        for (int i = 0; i < 300_000; i++) {
+            big.append("<g").append(i).append(" elements=\"").append(i).append("\"/>\n");
+        }
+        Files.writeString(s.resolve("big.xml"), big.append("</structure></robot>\n<main/>\n</program>\n"));
+        Files.writeString(s.resolve("good.xml"), snake("30", "<main><race/></main>"));
+        Cli r = Cli.run("grade", challenge().toString(), s.toString(), "--out", dir.resolve("r").toString(), "--memory", "64");
+        assertEquals(0, r.code, r.toString());
+        List<List<String>> rows = parse(Files.readString(dir.resolve("r/report.csv")));
+        assertEquals("1", rows.get(1).get(0), rows.toString());
+        assertEquals(List.of("", "big.xml", "big.xml", "", "", "", "", "", "", "",
+                "the run ran out of memory (the limit is 64 MB, --memory)"), rows.get(2));
+    }
+
+    @Test
     void checkKnowsAChallengeAndLocatesItsErrors() throws Exception {
         Cli ok = Cli.run("check", "../examples/challenges/race-track.xml", "../examples/challenges/rubble.xml",
                 "../examples/challenges/slot-machine.xml");
