@@ -122,10 +122,14 @@ public final class GradeCommand implements Callable<Integer> {
     /** Makes the report folder and its traces folder; refuses one inside the students' folder. */
     private Path prepare() throws UsageException {
         try {
-            Files.createDirectories(out);
-            if (out.toRealPath().startsWith(studentsDir.toRealPath())) {
+            Path existing = out.toAbsolutePath().normalize();
+            while (!Files.exists(existing)) { // the part of --out that exists, links followed
+                existing = existing.getParent();
+            }
+            if (existing.toRealPath().startsWith(studentsDir.toRealPath())) {
                 throw new UsageException("--out must not be inside the students' folder '" + studentsDir + "'");
             }
+            Files.createDirectories(out);
             return Files.createDirectories(out.resolve("traces"));
         } catch (IOException e) {
             throw new UsageException("cannot make the report folder '" + out + "': " + e.getMessage());

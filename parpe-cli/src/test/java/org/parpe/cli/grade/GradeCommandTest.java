@@ -242,6 +242,11 @@ class GradeCommandTest {
         Cli grade = Cli.run("grade", bad.toString(), dir.toString(), "--out", dir.resolve("r").toString());
         assertEquals(2, grade.code, grade.toString());
         assertTrue(grade.err.contains("has errors (above)"), grade.err);
+        Cli inside = Cli.run("grade", "../examples/challenges/race-track.xml", dir.toString(), "--out",
+                dir.resolve("new/report").toString());
+        assertEquals(2, inside.code, inside.toString());
+        assertTrue(inside.err.contains("--out must not be inside the students' folder"), inside.err);
+        assertFalse(Files.exists(dir.resolve("new")), "nothing is made in the students' folder");
     }
 
     private static final Set<String> TAGS = Set.of("html", "head", "meta", "title", "style", "body", "h1", "p", "svg",
