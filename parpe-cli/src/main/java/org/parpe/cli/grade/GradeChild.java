@@ -71,6 +71,14 @@ public final class GradeChild {
         if (r.program() == null) {
             return Outcome.failed(messages(r.errors(), "the script does not load"));
         }
+        // A value the challenge fixes must reach the script: outside the script's own min..max it
+        // would be dropped and the script's default would run instead. A parameter the script
+        // does not have is no matter (it does not use it).
+        List<Diagnostic> unfixed = r.parameterErrors().stream()
+                .filter(d -> !d.message().startsWith("unknown parameter")).toList();
+        if (!unfixed.isEmpty()) {
+            return Outcome.failed(messages(unfixed, "") + "\n(the challenge fixes this parameter's value)");
+        }
         int modules = r.program().moduleIds().length;
         if (modules > c.maxModules()) {
             return Outcome.failed(script + ": error: the robot has " + modules + " modules; this challenge allows at most "

@@ -227,6 +227,23 @@ class GradeCommandTest {
     }
 
     @Test
+    void aFixedParameterReachesEveryScriptOrItsRowSaysWhyNot() throws Exception {
+        Path s = Files.createDirectories(dir.resolve("students"));
+        Files.writeString(s.resolve("a.xml"), snake("10", "<main><race/></main>"));
+        Files.writeString(s.resolve("b.xml"), snake("60", "<main><race/></main>"));
+        Files.writeString(s.resolve("narrow.xml"), snake("10", "<main><race/></main>").replace("max=\"80\"", "max=\"20\""));
+        Path c = Files.writeString(dir.resolve("fixed.xml"), Files.readString(challenge()).replace("/>",
+                "><parameter name=\"bend\" value=\"40\"/><parameter name=\"speed\" value=\"2\"/></challenge>"));
+        Cli r = Cli.run("grade", c.toString(), s.toString(), "--out", dir.resolve("r").toString());
+        assertEquals(0, r.code, r.toString());
+        List<List<String>> rows = parse(Files.readString(dir.resolve("r/report.csv")));
+        assertEquals(List.of("1", "1", ""), List.of(rows.get(1).get(0), rows.get(2).get(0), rows.get(3).get(0)), rows.toString());
+        assertEquals(rows.get(1).subList(3, 9), rows.get(2).subList(3, 9), "both ran with bend 40");
+        assertTrue(rows.get(3).get(10).matches("narrow\\.xml:3:\\d+: error: .*40.*\\n\\(the challenge fixes this parameter's value\\)"),
+                rows.get(3).get(10));
+    }
+
+    @Test
     void checkKnowsAChallengeAndLocatesItsErrors() throws Exception {
         Cli ok = Cli.run("check", "../examples/challenges/race-track.xml", "../examples/challenges/rubble.xml",
                 "../examples/challenges/slot-machine.xml");
