@@ -85,7 +85,7 @@ class GradeCommandTest {
         Files.writeString(s.resolve("secret.xml"), "<program>\n  <robot file=\"../secret/robot.xml\"/>\n  <main/>\n</program>\n");
         bad.put("secret.xml", "secret\\.xml:2:16: error: cannot read robot file '.*secret/robot\\.xml': .*confinement rule.*");
         Files.createSymbolicLink(s.resolve("link.xml"), dir.resolve("secret/robot.xml"));
-        bad.put("link.xml", "it is a link to a file outside the students' folder \\(the confinement rule of parpe grade\\)");
+        bad.put("link.xml", "it is a link, not a file or folder handed in \\(the confinement rule of parpe grade\\)");
         Files.writeString(s.resolve("modules.xml"), snake("20", "<main><race/></main>").replace("0..7", "0..9999"));
         bad.put("modules.xml", "modules\\.xml: error: the robot has 10000 modules; this challenge allows at most 8 \\(max-modules\\)");
         Files.writeString(s.resolve("runtime.xml"), snake("20", "<main><race/></main>").replace("angles=\"bend\"",
@@ -241,6 +241,24 @@ class GradeCommandTest {
         assertEquals(rows.get(1).subList(3, 9), rows.get(2).subList(3, 9), "both ran with bend 40");
         assertTrue(rows.get(3).get(10).matches("narrow\\.xml:3:\\d+: error: .*40.*\\n\\(the challenge fixes this parameter's value\\)"),
                 rows.get(3).get(10));
+    }
+
+    @Test
+    void nobodyRunsAnotherStudentsScriptThroughALink() throws Exception {
+        Path s = Files.createDirectories(dir.resolve("students"));
+        Files.writeString(s.resolve("good.xml"), snake("30", "<main><race/></main>"));
+        Files.createSymbolicLink(Files.createDirectories(s.resolve("copycat")).resolve("main.xml"), s.resolve("good.xml"));
+        Files.createSymbolicLink(s.resolve("twin.xml"), s.resolve("good.xml"));
+        Cli r = Cli.run("grade", challenge().toString(), s.toString(), "--out", dir.resolve("r").toString());
+        assertEquals(0, r.code, r.toString());
+        List<List<String>> rows = parse(Files.readString(dir.resolve("r/report.csv")));
+        assertEquals(List.of("1", "good.xml"), rows.get(1).subList(0, 2), rows.toString());
+        assertEquals(List.of("", "copycat"), rows.get(2).subList(0, 2), rows.toString());
+        assertTrue(rows.get(2).get(10).matches("copycat/main\\.xml:1:1: error: cannot read file 'copycat/main\\.xml': a graded"
+                + " script may only read files inside its own folder 'copycat' \\(the confinement rule of parpe grade\\)"),
+                rows.get(2).get(10));
+        assertEquals(List.of("", "twin.xml"), rows.get(3).subList(0, 2), rows.toString());
+        assertEquals("it is a link, not a file or folder handed in (the confinement rule of parpe grade)", rows.get(3).get(10));
     }
 
     @Test

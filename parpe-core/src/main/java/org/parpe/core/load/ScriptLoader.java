@@ -41,6 +41,10 @@ public final class ScriptLoader {
     public static LoadResult load(Path file, Map<String, Double> parameters, Path confinedTo) {
         String text;
         try {
+            String outside = Assembly.outside(file, confinedTo);
+            if (outside != null) {
+                throw new IOException(outside);
+            }
             text = InputFiles.readText(file);
         } catch (IOException e) {
             DiagnosticList d = new DiagnosticList();

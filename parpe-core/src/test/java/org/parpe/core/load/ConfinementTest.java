@@ -97,4 +97,14 @@ class ConfinementTest {
     void withoutConfinementEverythingLoadsAsBefore() throws Exception {
         assertEquals(List.of(), load("../bob/body.xml", "../bob/gait.xml", null));
     }
+
+    @Test
+    void aMainScriptThatIsALinkOutOfTheFolderIsNotRead() throws Exception {
+        Files.createSymbolicLink(alice.resolve("copied.xml"), dir.resolve("bob/gait.xml"));
+        LoadResult r = ScriptLoader.load(alice.resolve("copied.xml"), Map.of(), alice);
+        assertEquals(1, r.errors().size(), r.errors().toString());
+        assertTrue(r.errors().get(0).format().matches(".*copied\\.xml:1:1: error: cannot read file '.*copied\\.xml': a graded"
+                + " script may only read files inside its own folder 'alice' \\(the confinement rule of parpe grade\\)"),
+                r.errors().get(0).format());
+    }
 }
