@@ -5,11 +5,16 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.stream.Stream;
 import org.parpe.core.diag.Diagnostic;
+import org.parpe.core.diag.DiagnosticList;
+import org.parpe.core.xml.InputFiles;
+import org.parpe.core.xml.XmlReader;
+import org.parpe.sim.world.Challenge;
+import org.parpe.sim.world.ChallengeReader;
+import org.parpe.sim.world.WorldReader;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
 import picocli.CommandLine.Command;
@@ -55,6 +60,10 @@ final class CheckCommand implements Callable<Integer> {
                 code = Math.max(code, 2);
                 continue;
             }
+            if (isChallenge(f)) {
+                code = Math.max(code, checkChallenge(f));
+                continue;
+            }
             LoadResult r = ScriptLoader.load(f, Map.of());
             for (Diagnostic d : r.diagnostics()) {
                 spec.commandLine().getErr().println(d.format());
@@ -70,12 +79,34 @@ final class CheckCommand implements Callable<Integer> {
         return code;
     }
 
+    private static boolean isChallenge(Path f) {
+        try {
+            return XmlReader.rootName(InputFiles.readText(f)).equals("challenge");
+        } catch (IOException e) {
+            return false; // the loader reports it
+        }
+    }
+
+    /** Checks a challenge file and the world it names, as {@code parpe grade} reads them. */
+    private int checkChallenge(Path f) {
+        DiagnosticList found = new DiagnosticList();
+        Challenge c = ChallengeReader.read(f, found);
+        if (c != null) {
+            WorldReader.read(c.world(), found);
+        }
+        found.all().forEach(d -> spec.commandLine().getErr().println(d.format()));
+        if (found.hasErrors()) {
+            spec.commandLine().getErr().println(f + ": " + found.errorCount()
+                    + (found.errorCount() == 1 ? " error" : " errors"));
+            return 1;
+        }
+        spec.commandLine().getOut().println(f + ": ok (challenge)");
+        return 0;
+    }
+
     private List<Path> scriptsIn(Path dir) {
         try (Stream<Path> s = Files.list(dir)) {
-            return s.filter(p -> {
-                String n = p.getFileName().toString().toLowerCase(Locale.ROOT);
-                return (n.endsWith(".xml") || n.endsWith(".parsl")) && Files.isRegularFile(p);
-            }).sorted().toList();
+            return s.filter(p -> Inputs.isScript(p) && Files.isRegularFile(p)).sorted().toList();
         } catch (IOException | RuntimeException e) {
             return List.of();
         }

@@ -33,4 +33,11 @@ public final class Inputs {
             throw new UsageException("cannot read '" + file + "': " + e.getMessage());
         }
     }
+
+    /** Whether {@code file} is named as a script ({@code .xml} or {@code .parsl}, any case): what a folder of scripts holds. */
+    public static boolean isScript(Path file) {
+        Path name = file.getFileName();
+        String n = name == null ? "" : name.toString().toLowerCase(java.util.Locale.ROOT);
+        return n.endsWith(".xml") || n.endsWith(".parsl");
+    }
 }

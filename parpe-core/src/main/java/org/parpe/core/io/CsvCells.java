@@ -34,6 +34,11 @@ public final class CsvCells {
         return formula(cell) ? "'" + cell : cell;
     }
 
+    /** {@code cell} made {@link #safe} and quoted, its quotes doubled: any text, commas and newlines included. */
+    public static String quoted(String cell) {
+        return '"' + safe(cell).replace("\"", "\"\"") + '"';
+    }
+
     /**
      * A CSV line with every cell made {@link #safe}; quoted cells stay quoted (and cells that
      * need quotes get them), so a line that is already safe comes back unchanged.

@@ -78,17 +78,22 @@ final class Assembly {
     private XElement main;
     private XElement root;
     private final DiagnosticSink diags;
+    private final Path confinedTo;
     private final Deque<Path> stack = new ArrayDeque<>();
     private final Set<Path> done = new HashSet<>();
     private int order;
 
-    private Assembly(DiagnosticSink diags) {
+    private Assembly(DiagnosticSink diags, Path confinedTo) {
         this.diags = diags;
+        this.confinedTo = confinedTo;
     }
 
-    /** Reads the main file {@code file}, whose text is given (it may come from an editor), and its includes. */
-    static Assembled read(Path file, String text, DiagnosticSink diags) {
-        Assembly a = new Assembly(diags);
+    /**
+     * Reads the main file {@code file}, whose text is given (it may come from an editor), and its
+     * includes; with {@code confinedTo} (null: anywhere) only includes inside that folder.
+     */
+    static Assembled read(Path file, String text, DiagnosticSink diags, Path confinedTo) {
+        Assembly a = new Assembly(diags, confinedTo);
         a.addMain(file, text);
         return new Assembled(a.sections, a.files, a.root, a.robot, a.robotOrder, a.main);
     }
@@ -182,6 +187,11 @@ final class Assembly {
             return;
         }
         Path target = resolve(from, rel.value().trim());
+        String outside = outside(target, confinedTo);
+        if (outside != null) {
+            diags.error(rel.pos(), "cannot include '" + rel.value().trim() + "': " + outside);
+            return;
+        }
         Path k = key(target);
         if (stack.contains(k)) {
             List<String> chain = new ArrayList<>();
@@ -220,5 +230,31 @@ final class Assembly {
         Path parent = from.getParent();
         Path p = parent == null ? Path.of(rel) : parent.resolve(rel);
         return p.normalize();
+    }
+
+    /**
+     * Why {@code target} may not be read under confinement to {@code root}, a folder or a lone
+     * script (null: it may, or there is no confinement): it lies outside, by its name or by a link. Graded
+     * scripts are confined to their student's folder (docs/tutorial/teachers.md).
+     */
+    static String outside(Path target, Path root) {
+        if (root == null) {
+            return null;
+        }
+        Path r = key(root);
+        boolean inside = key(target).startsWith(r);
+        try {
+            if (inside && java.nio.file.Files.exists(target)) {
+                inside = target.toRealPath().startsWith(r.toRealPath());
+            }
+        } catch (IOException | SecurityException e) {
+            inside = false;
+        }
+        if (inside) {
+            return null;
+        }
+        return (java.nio.file.Files.isDirectory(root) ? "a graded script may only read files inside its own folder '"
+                + root.getFileName() + "'" : "a graded script handed in as a lone file may read no other file")
+                + " (the confinement rule of parpe grade)";
     }
 }

@@ -30,15 +30,28 @@ public final class ScriptLoader {
 
     /** Loads {@code file} with the given parameter values (defaults for the others). */
     public static LoadResult load(Path file, Map<String, Double> parameters) {
+        return load(file, parameters, null);
+    }
+
+    /**
+     * Loads {@code file} with the given parameter values, reading no file outside the folder
+     * {@code confinedTo} (null: anywhere): an include or robot file outside it is a located error
+     * naming the rule. {@code parpe grade} loads students' scripts so.
+     */
+    public static LoadResult load(Path file, Map<String, Double> parameters, Path confinedTo) {
         String text;
         try {
+            String outside = Assembly.outside(file, confinedTo);
+            if (outside != null) {
+                throw new IOException(outside);
+            }
             text = InputFiles.readText(file);
         } catch (IOException e) {
             DiagnosticList d = new DiagnosticList();
             d.error(new SourcePos(file.toString(), 1, 1), "cannot read file '" + file + "': " + e.getMessage());
             return new LoadResult(null, d.all(), List.of(), List.of(file));
         }
-        return loadText(file, text, parameters);
+        return bind(read(file, text, confinedTo), parameters);
     }
 
     /**
@@ -54,11 +67,19 @@ public final class ScriptLoader {
      * {@link #bind} to load with any parameter values: the only step that reads files.
      */
     public static ParsedScript read(Path file, String text) {
+        return read(file, text, null);
+    }
+
+    /** {@link #read(Path, String)} reading no file outside the folder {@code confinedTo} (null: anywhere). */
+    public static ParsedScript read(Path file, String text, Path confinedTo) {
         DiagnosticList d = new DiagnosticList();
-        Assembly.Assembled a = Assembly.read(file, text, d);
+        Assembly.Assembled a = Assembly.read(file, text, d, confinedTo);
         XText robotRef = a.robot() == null ? null : Attrs.optional(a.robot(), "file");
+        Path robotPath = robotRef == null ? null : Assembly.resolve(file, robotRef.value().trim());
+        String outside = robotPath == null ? null : Assembly.outside(robotPath, confinedTo);
         RobotResolver.FileRead robotFile = robotRef == null ? null
-                : RobotResolver.FileRead.of(Assembly.resolve(file, robotRef.value().trim()));
+                : outside != null ? new RobotResolver.FileRead(robotPath, null, outside, List.of())
+                : RobotResolver.FileRead.of(robotPath);
         return new ParsedScript(file, a, d.all(), robotFile);
     }
 

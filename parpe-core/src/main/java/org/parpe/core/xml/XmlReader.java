@@ -43,6 +43,28 @@ public final class XmlReader {
      * declaration, comments or processing instructions.
      */
     public static boolean noElement(String text) {
+        return firstElement(text) == text.length();
+    }
+
+    /**
+     * The name of the root element of {@code text} as written, found without parsing (so that a
+     * command can tell a challenge from a script), or "" when there is none or it is not at the
+     * start of the document.
+     */
+    public static String rootName(String text) {
+        int i = firstElement(text);
+        if (i < 0 || i >= text.length() || text.charAt(i) != '<') {
+            return "";
+        }
+        int j = i + 1;
+        while (j < text.length() && (Character.isLetterOrDigit(text.charAt(j)) || "_-.:".indexOf(text.charAt(j)) >= 0)) {
+            j++;
+        }
+        return text.substring(i + 1, j);
+    }
+
+    /** Where the first thing after white space, the declaration, comments and processing instructions is; -1 if unclosed. */
+    private static int firstElement(String text) {
         int i = 0;
         int n = text.length();
         while (true) {
@@ -50,12 +72,15 @@ public final class XmlReader {
                 i++;
             }
             if (i == n) {
-                return true;
+                return n;
             }
             String close = text.startsWith("<?", i) ? "?>" : text.startsWith("<!--", i) ? "-->" : null;
-            int end = close == null ? -1 : text.indexOf(close, i + 2);
+            if (close == null) {
+                return i;
+            }
+            int end = text.indexOf(close, i + 2);
             if (end < 0) {
-                return false;
+                return -1;
             }
             i = end + close.length();
         }

@@ -1,0 +1,78 @@
+package org.parpe.sim.world;
+
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeMap;
+import org.parpe.core.diag.DiagnosticSink;
+import org.parpe.core.diag.SourcePos;
+import org.parpe.core.xml.FlatXmlFile;
+
+/**
+ * Reads a challenge file with the project's flat XML reader, as world files and robot
+ * configurations are read: the same input limits and {@code FILE:LINE:COL} messages. Reports
+ * every problem it finds, then returns {@code null}. The world file is only named here; the
+ * caller reads it with {@link WorldReader}.
+ */
+public final class ChallengeReader {
+    /** The most modules a challenge may allow: the size limit of robot configurations. */
+    public static final int MAX_MODULES = 1000;
+    private static final Set<String> ROOT = Set.of("world", "robot", "duration", "tick", "max-modules", "tie-break");
+
+    private ChallengeReader() {
+    }
+
+    /** Reads {@code path}; returns {@code null} after reporting errors to {@code diags}. */
+    public static Challenge read(Path path, DiagnosticSink diags) {
+        FlatXmlFile xml = FlatXmlFile.read(path, "challenge file", "challenge",
+                "a <challenge world=\"...\" robot=\"...\"> element with <parameter> elements", diags);
+        if (xml.root() == null) {
+            return null;
+        }
+        Map<String, String> a = xml.rootAttributes();
+        xml.known(a, ROOT, "challenge", xml.root());
+        xml.required(a, xml.root(), "challenge", "world", "robot");
+        double duration = xml.number(a, "duration", 60, xml.root(), false, 0.01, 3600);
+        double tick = xml.number(a, "tick", 0.01, xml.root(), false, 0.001, 1);
+        int maxModules = (int) xml.number(a, "max-modules", 32, xml.root(), true, 1, MAX_MODULES);
+        Challenge.TieBreak tie = tieBreak(xml, a.getOrDefault("tie-break", "distance"), xml.root());
+        Map<String, Double> parameters = new TreeMap<>();
+        for (FlatXmlFile.Element e : xml.children()) {
+            parameter(xml, e, parameters);
+        }
+        if (!xml.ok()) {
+            return null;
+        }
+        Path parent = path.toAbsolutePath().getParent();
+        Path world = parent.resolve(a.get("world").trim()).normalize();
+        return new Challenge(path, world, a.get("robot").trim(), duration, tick, parameters, maxModules, tie);
+    }
+
+    private static void parameter(FlatXmlFile xml, FlatXmlFile.Element e, Map<String, Double> into) {
+        if (!e.name().equals("parameter")) {
+            xml.error(e.at(), "unknown element <" + e.name() + "> in a challenge; it holds <parameter name=\"...\""
+                    + " value=\"...\"> elements");
+            return;
+        }
+        Map<String, String> a = e.attributes();
+        if (!xml.known(a, Set.of("name", "value"), "parameter", e.at())
+                || !xml.required(a, e.at(), "parameter", "name", "value")) {
+            return;
+        }
+        double v = xml.number(a, "value", Double.NaN, e.at(), false, -1e9, 1e9);
+        if (into.put(a.get("name"), v) != null) {
+            xml.error(e.at(), "the parameter '" + a.get("name") + "' is set twice");
+        }
+    }
+
+    private static Challenge.TieBreak tieBreak(FlatXmlFile xml, String v, SourcePos at) {
+        for (Challenge.TieBreak t : Challenge.TieBreak.values()) {
+            if (t.name().toLowerCase(Locale.ROOT).equals(v)) {
+                return t;
+            }
+        }
+        xml.error(at, "tie-break must be 'distance' or 'none', got '" + v + "'");
+        return Challenge.TieBreak.DISTANCE;
+    }
+}
