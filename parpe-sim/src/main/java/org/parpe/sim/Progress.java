@@ -15,7 +15,7 @@ final class Progress {
     private final double[] com = new double[3];
     private final double[] start = new double[3];
     private final double[] upLocal = new double[3];
-    private final Assembly.Axle axle;
+    private Assembly.Axle axle;
     /** The axle's slope at the start, radians above the horizontal. */
     private double axleSlope;
     private final double[] markedCom = new double[3];
@@ -58,6 +58,23 @@ final class Progress {
         DMatrix3C r = world.pieceRotation(world.assembly().rootPiece());
         double z = r.get(2, 0) * upLocal[0] + r.get(2, 1) * upLocal[1] + r.get(2, 2) * upLocal[2];
         maxTilt = Math.max(maxTilt, Math.acos(Math.max(-1, Math.min(1, z))));
+    }
+
+    /**
+     * The robot arms a latch (PARSL.md §14) and may close a loop and roll: from now on it is judged
+     * as a loop is, by its root segment's hinge axis, which curling up and rolling leave level.
+     */
+    void mayRoll() {
+        if (axle != null) {
+            return;
+        }
+        for (Assembly.Hinge h : world.assembly().hinges()) {
+            if (h.base() == world.assembly().rootPiece()) {
+                axle = new Assembly.Axle(h.base(), new Vec3(0, 0, 1));
+                axleSlope = axleSlope();
+                return;
+            }
+        }
     }
 
     /** The rolling robot's axle's slope now, radians above the horizontal (rolling about it leaves it alone). */

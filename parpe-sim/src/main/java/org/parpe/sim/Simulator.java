@@ -237,6 +237,7 @@ public final class Simulator implements JointSink, SensorSource, PlateSink, Auto
             }
             if (actions[j] == ARM) {
                 docking.arm(site);
+                progress.mayRoll();
             } else {
                 docking.release(site);
             }

@@ -1,6 +1,7 @@
 package org.parpe.sim;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.StringWriter;
@@ -199,6 +200,8 @@ class DockingTest {
         assertTrue(rolled[0] >= 0.5, "the loop rolls at least 0.5 m: " + rolled[0]);
         assertTrue(releasedAt[0] > latchedAt[0], "the ends are released: at " + releasedAt[0]);
         assertTrue(gapAfter[0] > 0.02, "a second after the release the ends are more than 2 cm apart: " + gapAfter[0]);
+        // curling up and rolling as a loop is not falling: a robot that arms a latch is judged by its hinge axis
+        assertFalse(sim.metrics().fell(), sim.metrics().toJson());
     }
 
     @Test
