@@ -37,10 +37,6 @@ static int16_t channel_of(const char *c)
         return PARSL_TOUCH_LEFT;
     } else if (SAME(c, "touch_right")) {
         return PARSL_TOUCH_RIGHT;
-    } else if (SAME(c, "dock_0")) {
-        return PARSL_DOCK_0;
-    } else if (SAME(c, "dock_1")) {
-        return PARSL_DOCK_1;
     }
     return PARSL_CHANNELS;
 }
