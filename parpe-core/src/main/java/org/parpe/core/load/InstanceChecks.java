@@ -106,7 +106,7 @@ final class InstanceChecks {
                 return;
             }
         }
-        String latchless = latchless(a, g);
+        String latchless = latchless(a, g, info.model().pos());
         if (latchless != null) {
             d.error(info.model().pos(), latchless + note);
             return;
@@ -121,7 +121,7 @@ final class InstanceChecks {
     }
 
     /** A problem when a state of {@code a} acts on plates of a module of {@code g} without a latch (PARSL.md §14). */
-    private String latchless(Automaton a, Group g) {
+    private String latchless(Automaton a, Group g, org.parpe.core.diag.SourcePos at) {
         for (StateDef s : a.states()) {
             if (!s.hasPlateActions()) {
                 continue;
@@ -129,7 +129,9 @@ final class InstanceChecks {
             for (int id : g.modules()) {
                 if (!robot.actuates(id, "latch")) {
                     String what = s.latch().isEmpty() ? "unlatches" : "latches";
-                    return "state '" + s.name() + "' (at " + s.pos() + ") " + what + " connection plates, but module " + id
+                    // the state's line, and its file only where it is not the instance's (an included file)
+                    String where = s.pos().file().equals(at.file()) ? "line " + s.pos().line() : "at " + s.pos();
+                    return "state '" + s.name() + "' (" + where + ") " + what + " connection plates, but module " + id
                             + " of group '" + g.name() + "' has no latch actuator (declare it in <actuators>)";
                 }
             }
