@@ -40,4 +40,23 @@ public final class Inputs {
         String n = name == null ? "" : name.toString().toLowerCase(java.util.Locale.ROOT);
         return n.endsWith(".xml") || n.endsWith(".parsl");
     }
+
+    /** The assignments of stimulus file {@code stimulus} for {@code program}; none without a file. */
+    public static java.util.List<org.parpe.core.run.Stimulus> stimuli(Path stimulus, org.parpe.core.model.Program program)
+            throws UsageException {
+        if (stimulus == null) {
+            return java.util.List.of();
+        }
+        String text;
+        try {
+            text = InputFiles.readText(stimulus);
+        } catch (IOException e) {
+            throw new UsageException("cannot read stimulus file '" + stimulus + "': " + e.getMessage());
+        }
+        try {
+            return org.parpe.core.run.StimulusParser.parse(stimulus.toString(), text, program);
+        } catch (org.parpe.core.run.StimulusParser.StimulusException e) {
+            throw new UsageException(e.getMessage());
+        }
+    }
 }

@@ -24,10 +24,8 @@ import org.parpe.core.run.Run;
 import org.parpe.core.run.RunOptions;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.core.run.Stimulus;
-import org.parpe.core.run.StimulusParser;
 import org.parpe.core.run.TargetException;
 import org.parpe.core.run.WallClockPacer;
-import org.parpe.core.xml.InputFiles;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -162,20 +160,7 @@ final class RunCommand implements Callable<Integer> {
     }
 
     private List<Stimulus> stimuli(Program program) throws UsageException {
-        if (stimulus == null) {
-            return List.of();
-        }
-        String text;
-        try {
-            text = InputFiles.readText(stimulus);
-        } catch (IOException e) {
-            throw new UsageException("cannot read stimulus file '" + stimulus + "': " + e.getMessage());
-        }
-        try {
-            return StimulusParser.parse(stimulus.toString(), text, program);
-        } catch (StimulusParser.StimulusException e) {
-            throw new UsageException(e.getMessage());
-        }
+        return Inputs.stimuli(stimulus, program);
     }
 
     /** Refuses outputs that would replace a directory, a device or an input, before the run starts. */

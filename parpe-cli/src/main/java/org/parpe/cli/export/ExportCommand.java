@@ -165,7 +165,10 @@ public final class ExportCommand implements Callable<Integer> {
                 return refused;
             }
             program = r.program();
-            stimuli = stimuli(program);
+            if (stimulus != null) {
+                Inputs.check(stimulus);
+            }
+            stimuli = Inputs.stimuli(stimulus, program);
         } else if (stimulus != null || !params.isEmpty()) {
             throw new UsageException("--stimulus and --param need a SCRIPT whose gait is exported");
         }
@@ -173,20 +176,6 @@ public final class ExportCommand implements Callable<Integer> {
                 spec.commandLine().getOut(), err);
     }
 
-    private List<org.parpe.core.run.Stimulus> stimuli(Program program) throws UsageException {
-        if (stimulus == null) {
-            return List.of();
-        }
-        Inputs.check(stimulus);
-        try {
-            return org.parpe.core.run.StimulusParser.parse(stimulus.toString(),
-                    org.parpe.core.xml.InputFiles.readText(stimulus), program);
-        } catch (IOException e) {
-            throw new UsageException("cannot read stimulus file '" + stimulus + "': " + e.getMessage());
-        } catch (org.parpe.core.run.StimulusParser.StimulusException e) {
-            throw new UsageException(e.getMessage());
-        }
-    }
 
     /** The board of {@code --board}, checked against the target and the target's other options. */
     private Board board(boolean arduino) throws UsageException {

@@ -60,7 +60,7 @@ final class RobotExport {
             return 1;
         }
         RobotModel m = RobotModel.of(config, a);
-        String base = baseName(config, q.robot());
+        String base = baseName(q.robot());
         Map<String, String> files = new LinkedHashMap<>();
         switch (q.target()) {
             case "mjcf" -> files.put(base + ".xml", Mjcf.of(m));
@@ -101,7 +101,7 @@ final class RobotExport {
         }
     }
 
-    private static String baseName(RobotConfig config, String robot) {
+    private static String baseName(String robot) {
         String name = Path.of(robot).getFileName().toString().replaceFirst("\\.xml$", "");
         name = name.replaceAll("[^A-Za-z0-9_.-]", "_");
         return name.isEmpty() ? "robot" : name;
