@@ -165,9 +165,9 @@ class RecordPlaybackTest {
                 }
             }
         }
-        Thread.sleep(500);
         for (int k = 0; k < 3; k++) {
-            assertEquals(POSES[2][k], bus.emulator.angle(new int[] {4, 2, 3}[k]), 0.01, "the modules end in the last pose");
+            int module = new int[] {4, 2, 3}[k];
+            Settle.angle(POSES[2][k], () -> bus.emulator.angle(module), 0.01, () -> "the modules end in the last pose");
         }
     }
 
@@ -228,10 +228,11 @@ class RecordPlaybackTest {
             }
             Cli r = Cli.run("run", rec.toString(), "--hardware", profile.toString(), "--port", bus.port());
             assertEquals(0, r.code, r.toString());
-            Thread.sleep(500);
+            String recorded = Files.readString(rec);
             for (int k = 0; k < 3; k++) {
-                assertEquals(zero[k] + dir[k] * POSES[1][k], bus.emulator.angle(servos[k]), 0.2,
-                        "servo " + servos[k] + " ends in the last pose; " + r + Files.readString(rec));
+                int servo = servos[k];
+                Settle.angle(zero[k] + dir[k] * POSES[1][k], () -> bus.emulator.angle(servo), 0.2,
+                        () -> "servo " + servo + " ends in the last pose; " + r + recorded);
             }
         }
     }
