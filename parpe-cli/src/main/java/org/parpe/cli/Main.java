@@ -1,14 +1,11 @@
 package org.parpe.cli;
 
-import java.io.IOException;
 import java.io.PrintStream;
 import java.io.PrintWriter;
-import java.io.StringWriter;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import org.parpe.cli.bench.BenchCommand;
 import org.parpe.core.expr.Names;
-import org.parpe.core.io.AtomicFiles;
+import org.parpe.core.io.CrashReport;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
@@ -155,16 +152,7 @@ public final class Main implements Runnable {
     }
 
     private static int internalError(Throwable ex, PrintWriter err) {
-        StringWriter trace = new StringWriter();
-        ex.printStackTrace(new PrintWriter(trace));
-        String where;
-        try {
-            Path f = Files.createTempFile("parpe-crash-", ".txt"); // a new name of its own, then the output rules
-            AtomicFiles.write(f, "PARPE " + org.parpe.core.Version.NUMBER + " internal error\n" + trace);
-            where = f.toString();
-        } catch (IOException io) {
-            where = "(could not write a crash file: " + io.getMessage() + ")";
-        }
+        String where = CrashReport.write(Path.of(System.getProperty("java.io.tmpdir")), "running a command", ex);
         err.println("parpe: internal error: " + ex + "; please attach " + where + " to a bug report");
         return INTERNAL_ERROR;
     }
