@@ -5,6 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -22,20 +24,16 @@ import org.parpe.core.load.ScriptLoader;
 
 /** {@code parpe sweep}, {@code optimize} and {@code merge} end to end, and the Slurm array script. */
 class SweepCommandTest {
-    static final String SNAKE = """
-            <program>
-              <robot><structure><body elements="0..5"/></structure></robot>
-              <parameters>
-                <bend   value="10"  min="0"   max="60"/>
-                <period value="4"   min="0.5" max="5"/>
-                <phase  value="0.9" min="0"   max="1"/>
-              </parameters>
-              <main><go/></main>
-              <behaviors><go><wave group="body" phase="phase" period="period"/></go></behaviors>
-              <automata><wave states="up, down"/></automata>
-              <states><up angles="bend" interp="smooth"/><down angles="-bend" interp="smooth"/></states>
-            </program>
-            """;
+    /** The sweep tests' wave snake with bounded parameters, shared with parpe-sim's sweep tests. */
+    static final String SNAKE = read(Path.of("../parpe-sim/src/test/resources/sweep-snake.xml"));
+
+    private static String read(Path file) {
+        try {
+            return Files.readString(file);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
 
     @TempDir
     Path dir;

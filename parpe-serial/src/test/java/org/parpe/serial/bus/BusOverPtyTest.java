@@ -3,27 +3,21 @@ package org.parpe.serial.bus;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
-import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeAll;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
-import org.junit.jupiter.api.io.TempDir;
 import org.parpe.core.run.RunInfo;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.serial.emu.BusEmulator;
 import org.parpe.serial.emu.EmulatorListener;
 import org.parpe.serial.emu.EmulatorOptions;
 import org.parpe.serial.link.LinkOpener;
-import org.parpe.serial.link.PtyPair;
+import org.parpe.serial.link.OverPty;
 import org.parpe.serial.servo.profile.HardwareProfile;
 import org.parpe.serial.servo.run.ServoDriver;
 
@@ -34,12 +28,9 @@ import org.parpe.serial.servo.run.ServoDriver;
  * was folded into ServoDriver; they pass unchanged but for how the driver is opened.)
  */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
-class BusOverPtyTest {
+class BusOverPtyTest extends OverPty {
     static final int[] IDS = {0, 1, 2, 3, 4, 5, 6, 7};
 
-    @TempDir
-    Path dir;
-    PtyPair pty;
     BusEmulator emulator;
     ServoDriver bus;
     final Map<Integer, double[]> received = new ConcurrentHashMap<>();
@@ -50,27 +41,9 @@ class BusOverPtyTest {
     volatile long unplugNanos;
     final List<String> whys = new CopyOnWriteArrayList<>();
 
-    @BeforeAll
-    static void needSocat() {
-        assumeTrue(PtyPair.available(), "socat is not installed (./test-all installs it)");
-    }
-
-    @BeforeEach
-    void pair() throws Exception {
-        pty = PtyPair.start(dir.resolve("a"), dir.resolve("b"));
-    }
-
-    @AfterEach
-    void cleanUp() {
-        if (bus != null) {
-            bus.close();
-        }
-        if (emulator != null) {
-            emulator.close();
-        }
-        if (pty != null) {
-            pty.close();
-        }
+    @Override
+    protected AutoCloseable[] openEnds() {
+        return new AutoCloseable[] {bus, emulator};
     }
 
     void startEmulator(EmulatorOptions o) throws Exception {

@@ -3,23 +3,17 @@ package org.parpe.serial.servo.host;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
-import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeAll;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
-import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import org.parpe.serial.bus.BusConfig;
 import org.parpe.serial.emu.EmulatorListener;
 import org.parpe.serial.emu.EmulatorOptions;
 import org.parpe.serial.link.LinkOpener;
-import org.parpe.serial.link.PtyPair;
+import org.parpe.serial.link.OverPty;
 import org.parpe.serial.servo.ServoBus;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.ServoProtocol;
@@ -27,36 +21,15 @@ import org.parpe.serial.servo.emu.ServoEmulator;
 
 /** Each servo protocol's host driver against its emulator over a socat pty pair. */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
-class ServoBusOverPtyTest {
+class ServoBusOverPtyTest extends OverPty {
     static final int[] IDS = {1, 2, 3, 4};
 
-    @TempDir
-    Path dir;
-    PtyPair pty;
     ServoEmulator emulator;
     ServoBus bus;
 
-    @BeforeAll
-    static void needSocat() {
-        assumeTrue(PtyPair.available(), "socat is not installed (./test-all installs it)");
-    }
-
-    @BeforeEach
-    void pair() throws Exception {
-        pty = PtyPair.start(dir.resolve("a"), dir.resolve("b"));
-    }
-
-    @AfterEach
-    void cleanUp() {
-        if (bus != null) {
-            bus.close();
-        }
-        if (emulator != null) {
-            emulator.close();
-        }
-        if (pty != null) {
-            pty.close();
-        }
+    @Override
+    protected AutoCloseable[] openEnds() {
+        return new AutoCloseable[] {bus, emulator};
     }
 
     void start(ServoModel[] models, EmulatorOptions o) throws Exception {
