@@ -8,6 +8,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -87,5 +89,38 @@ class GradeShardsTest {
         Cli both = Cli.run("grade", c.toString(), s.toString(), "--out", split.toString(), "--merge", "2", "--shard", "2/2");
         assertEquals(2, both.code);
         assertTrue(both.err.contains("give one of them"), both.err);
+    }
+
+    /**
+     * {@code scripts/sweep.slurm --grade} run with bash and the variables Slurm sets for each task
+     * of an array numbered from 1 (docs/cluster.md, "Grading a class on a cluster"): the merge
+     * gives the one-machine report.
+     */
+    @Test
+    void theSlurmArrayScriptGradesShardsThatMergeIntoTheOneMachineReport() throws Exception {
+        Path s = students();
+        Path c = challenge();
+        Path one = dir.resolve("one");
+        assertEquals(0, Cli.run("grade", c.toString(), s.toString(), "--out", one.toString()).code);
+        Path out = dir.resolve("array");
+        String javaBin = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+        for (int id = 2; id >= 1; id--) {
+            ProcessBuilder pb = new ProcessBuilder("bash", "../scripts/sweep.slurm", "--grade", out.toString(), c.toString(),
+                    s.toString()).redirectErrorStream(true).redirectOutput(dir.resolve("task.log").toFile());
+            pb.environment().keySet().removeIf(k -> k.startsWith("SLURM_"));
+            pb.environment().put("PARPE", javaBin + " -cp " + System.getProperty("java.class.path") + " org.parpe.cli.Main");
+            pb.environment().putAll(Map.of("SLURM_ARRAY_TASK_ID", Integer.toString(id), "SLURM_ARRAY_TASK_MIN", "1",
+                    "SLURM_ARRAY_TASK_COUNT", "2", "SLURM_ARRAY_TASK_MAX", "2", "SLURM_CPUS_PER_TASK", "1"));
+            Process p = pb.start();
+            assertTrue(p.waitFor(180, TimeUnit.SECONDS), "a shard took more than 3 minutes");
+            assertEquals(0, p.exitValue(), Files.readString(dir.resolve("task.log")));
+        }
+        assertTrue(Files.readString(dir.resolve("task.log")).contains("runs shard 1/2 on 1 core(s)"));
+        Cli merged = Cli.run("grade", c.toString(), s.toString(), "--out", out.toString(), "--merge", "2");
+        assertEquals(0, merged.code, merged.toString());
+        assertEquals(files(one), files(out));
+        for (String f : files(one)) {
+            assertArrayEquals(Files.readAllBytes(one.resolve(f)), Files.readAllBytes(out.resolve(f)), f);
+        }
     }
 }

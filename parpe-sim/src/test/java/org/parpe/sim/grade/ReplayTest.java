@@ -37,7 +37,7 @@ class ReplayTest {
         Path worldFile = Path.of("../examples/worlds/race-track.xml").toAbsolutePath().normalize();
         DiagnosticList found = new DiagnosticList();
         World world = WorldReader.read(worldFile, found);
-        Challenge c = new Challenge(dir.resolve("c.xml"), worldFile, "snake:n=8", 3, 0.01, Map.of(), 8,
+        Challenge c = new Challenge(dir.resolve("c.xml"), worldFile, "snake:n=8", 3, 0.01, Map.of(), 8, java.util.Set.of(),
                 Challenge.TieBreak.DISTANCE);
         String script = "<program>\n  <robot><structure><body elements=\"0..7\"/></structure></robot>\n"
                 + "  <main><race/></main>\n"
@@ -79,7 +79,7 @@ class ReplayTest {
     void aFileThatIsNoTraceIsRefusedWithItsName() throws Exception {
         Path worldFile = Path.of("../examples/worlds/race-track.xml").toAbsolutePath().normalize();
         World world = WorldReader.read(worldFile, new DiagnosticList());
-        Challenge c = new Challenge(dir.resolve("c.xml"), worldFile, "snake:n=8", 3, 0.01, Map.of(), 8,
+        Challenge c = new Challenge(dir.resolve("c.xml"), worldFile, "snake:n=8", 3, 0.01, Map.of(), 8, java.util.Set.of(),
                 Challenge.TieBreak.DISTANCE);
         Path bad = Files.writeString(dir.resolve("bad.csv"), "time,m0\n0.000000,x\n");
         Exception e = assertThrows(java.io.IOException.class, () -> Replay.of(c, world, bad));
