@@ -158,6 +158,7 @@ public final class ClassWindow {
         DirectoryDialog d = new DirectoryDialog(shell);
         d.setText("The Students' Folder");
         d.setMessage("A folder with one script per student, or one folder per student");
+        d.setFilterPath((students != null ? students.toAbsolutePath().getParent() : FileDialogs.start()).toString());
         String chosen = d.open();
         if (chosen != null) {
             load(challenge == null ? null : challenge.file(), Path.of(chosen));
