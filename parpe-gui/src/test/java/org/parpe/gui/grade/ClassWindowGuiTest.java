@@ -140,6 +140,30 @@ class ClassWindowGuiTest {
         assertTrue(window.problem().getText().contains("unknown section <automaton>"), window.problem().getText());
     }
 
+    @Test
+    void stopEndsTheGradingAndItsRuns() throws Exception {
+        Path dir = Files.createTempDirectory("parpe-class-stop");
+        Path students = Files.createDirectories(dir.resolve("class"));
+        for (String name : List.of("a.xml", "b.xml", "c.xml")) {
+            Files.writeString(students.resolve(name), snake("30").replace("<main>", "<main cycles=\"forever\">"));
+        }
+        Path world = Path.of(System.getProperty("parpe.examples", "../examples"), "worlds", "race-track.xml")
+                .toAbsolutePath().normalize();
+        Path challenge = Files.writeString(dir.resolve("race.xml"), "<challenge world=\"" + world
+                + "\" robot=\"snake:n=8\" duration=\"3600\"/>\n");
+        ide = Gui.openIde(Files.createTempDirectory("parpe-class-home"));
+        window = ClassWindow.open(ide.shell());
+        window.load(challenge, students);
+        window.gradeButton().notifyListeners(SWT.Selection, new Event());
+        Gui.pump(() -> ProcessHandle.current().children().findAny().isPresent(), "a student's run to start", 60_000);
+        assertTrue(window.stopButton().isEnabled());
+        window.stopButton().notifyListeners(SWT.Selection, new Event());
+        Gui.pump(() -> !window.running(), "the grading to stop", 60_000);
+        assertEquals("grading stopped", window.message());
+        Gui.pump(() -> ProcessHandle.current().children().findAny().isEmpty(), "no run left", 30_000);
+        assertTrue(window.gradeButton().isEnabled(), "the class can be graded again");
+    }
+
     private static List<String> texts(ClassWindow w, int row) {
         String[] t = new String[RankingTable.TITLES.length];
         for (int k = 0; k < t.length; k++) {
