@@ -6,7 +6,8 @@
 #   A. `parpe` on the PATH: the merge job must complete and equal a one-machine sweep, byte for byte;
 #   B. PARPE set: one task is cancelled while it runs; the merge must name that shard, and the
 #      page's rerun block must then reach the same CSV;
-#   C. a stepped array and a bare --array=2 must be refused.
+#   C. a stepped array and a bare --array=2 must be refused;
+#   D. a class graded as an array (sweep.slurm --grade): the merged report equals one machine's.
 # Needs root (daemons) and a built parpe-cli/target/parpe.jar. The daemons are stopped by their
 # PIDs at the end, also when a check fails. KEEP=1 keeps the temporary folder.
 set -euo pipefail
@@ -125,7 +126,7 @@ block() {
         found && /^```/ { if (inside) exit; inside = 1; next }
         inside { print }' "$root/docs/cluster.md"
 }
-for tag in sweep submit rerun; do
+for tag in sweep submit rerun grade grade-submit; do
     [ -n "$(block $tag)" ] || fail "docs/cluster.md has no block marked test-slurm: $tag"
 done
 # The page's sweep, small: 18 runs in 3 shards of 6.
@@ -206,4 +207,29 @@ grep -q "must be a step-1 range" "$site/results/c-step-1.log" || fail "C: a step
 grep -q "would run the whole sweep as shard 1/1" "$site/results/c-one-2.log" || fail "C: --array=2 was not refused"
 [ ! -e "$site/results/c" ] || [ -z "$(ls -A "$site/results/c")" ] || fail "C: a refused array wrote shards"
 log "C: a stepped array and a bare --array=2 are refused"
+# --- D: a class graded as an array (the page's grade-submit block) -----------------------------
+mkdir -p "$site/class"
+for bend in 20 35 50; do
+    cat >"$site/class/s$bend.xml" <<XML
+<program>
+  <robot><structure><body elements="0..7"/></structure></robot>
+  <main><race/></main>
+  <behaviors><race><wave group="body" phase="0.2" period="1.5"/></race></behaviors>
+  <automata><wave states="up, down"/></automata>
+  <states><up angles="$bend" interp="smooth"/><down angles="-$bend" interp="smooth"/></states>
+</program>
+XML
+done
+printf '<program>\n  <robot>\n</program>\n' >"$site/class/broken.xml"
+echo '<challenge world="examples/worlds/race-track.xml" robot="snake:n=8" duration="2" max-modules="8"/>' \
+    >"$site/class.xml"
+chown -R "$user" "$site/class" "$site/class.xml"
+su "$user" -s /bin/bash -c "cd $site && app/parpe grade class.xml class --out one-grade >/dev/null 2>&1" \
+    || fail "D: the one-machine grading failed"
+as_user d "export PARPE=$site/app/parpe; out=results/d; n=3; grade=(class.xml class)" grade-submit
+settle
+for f in report.csv report.html; do
+    cmp "$site/one-grade/$f" "$site/results/d/$f" || fail "D: the merged $f differs from the one-machine grading"
+done
+log "D (grading): the merged report equals the one-machine grading"
 log "all checks passed"

@@ -106,7 +106,7 @@ final class CheckCommand implements Callable<Integer> {
 
     private List<Path> scriptsIn(Path dir) {
         try (Stream<Path> s = Files.list(dir)) {
-            return s.filter(p -> Inputs.isScript(p) && Files.isRegularFile(p)).sorted().toList();
+            return s.filter(p -> InputFiles.isScript(p) && Files.isRegularFile(p)).sorted().toList();
         } catch (IOException | RuntimeException e) {
             return List.of();
         }

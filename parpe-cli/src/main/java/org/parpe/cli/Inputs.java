@@ -34,13 +34,6 @@ public final class Inputs {
         }
     }
 
-    /** Whether {@code file} is named as a script ({@code .xml} or {@code .parsl}, any case): what a folder of scripts holds. */
-    public static boolean isScript(Path file) {
-        Path name = file.getFileName();
-        String n = name == null ? "" : name.toString().toLowerCase(java.util.Locale.ROOT);
-        return n.endsWith(".xml") || n.endsWith(".parsl");
-    }
-
     /** The assignments of stimulus file {@code stimulus} for {@code program}; none without a file. */
     public static java.util.List<org.parpe.core.run.Stimulus> stimuli(Path stimulus, org.parpe.core.model.Program program)
             throws UsageException {

@@ -4,20 +4,23 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
-import java.util.concurrent.atomic.AtomicInteger;
 import org.parpe.cli.Inputs;
 import org.parpe.cli.OutputFile;
 import org.parpe.cli.UsageException;
 import org.parpe.core.diag.DiagnosticList;
-import org.parpe.core.io.AtomicFiles;
 import org.parpe.core.io.OutputPlan;
+import org.parpe.cli.sweep.SweepCommand;
+import org.parpe.sim.grade.GradeShard;
+import org.parpe.sim.grade.Grading;
+import org.parpe.sim.grade.Isolation;
+import org.parpe.sim.grade.Report;
+import org.parpe.sim.grade.ReportPage;
+import org.parpe.sim.grade.Row;
+import org.parpe.sim.grade.Students;
+import org.parpe.sim.sweep.SweepSpec;
 import org.parpe.sim.world.Challenge;
 import org.parpe.sim.world.ChallengeReader;
 import org.parpe.sim.world.World;
@@ -51,12 +54,21 @@ public final class GradeCommand implements Callable<Integer> {
     @Option(names = {"-j", "--jobs"}, paramLabel = "N", description = "Runs at once (default: one per core).")
     Integer jobs;
 
-    @Option(names = "--cpu-limit", paramLabel = "SECONDS", defaultValue = "300",
+    @Option(names = "--cpu-limit", paramLabel = "SECONDS", defaultValue = Isolation.Limits.DEFAULT_CPU_SECONDS,
             description = "CPU time one run may use, its JVM's start included (default ${DEFAULT-VALUE}).")
     double cpuLimit;
 
-    @Option(names = "--memory", paramLabel = "MB", defaultValue = "512", description = "Heap of one run (default ${DEFAULT-VALUE}).")
+    @Option(names = "--memory", paramLabel = "MB", defaultValue = Isolation.Limits.DEFAULT_MEMORY_MB, description = "Heap of one run (default ${DEFAULT-VALUE}).")
     int memoryMb;
+
+    @Option(names = "--shard", paramLabel = "K/N", description = "Grade only the K-th of N equal shares of the students"
+            + " (1 <= K <= N), into REPORT_DIR/shard-K-of-N.grade and the traces; then --merge N writes the report"
+            + " (docs/cluster.md).")
+    String shard;
+
+    @Option(names = "--merge", paramLabel = "N", description = "Run nobody: rank the files of the N shards in REPORT_DIR"
+            + " (--shard K/N) into the report one machine would have written.")
+    Integer merge;
 
     @Spec
     CommandSpec spec;
@@ -88,6 +100,9 @@ public final class GradeCommand implements Callable<Integer> {
         if (!Files.isDirectory(studentsDir)) {
             throw new UsageException("'" + studentsDir + "' is not a folder of students' scripts");
         }
+        if (shard != null && merge != null) {
+            throw new UsageException("--shard K/N grades one shard and --merge N ranks them all: give one of them");
+        }
         if (!(cpuLimit > 0) || memoryMb < 64) {
             throw new UsageException("--cpu-limit must be > 0 s and --memory at least 64 MB, got " + cpuLimit + " and " + memoryMb);
         }
@@ -95,7 +110,7 @@ public final class GradeCommand implements Callable<Integer> {
         if (n < 1) {
             throw new UsageException("--jobs must be at least 1, got " + n);
         }
-        Path traces = prepare();
+        prepare();
         OutputPlan plan = OutputFile.plan(List.of(challengeFile, c.world()));
         OutputFile csv = OutputFile.of(plan, "--out", out.resolve("report.csv").toString());
         OutputFile html = OutputFile.of(plan, "--out", out.resolve("report.html").toString());
@@ -105,7 +120,24 @@ public final class GradeCommand implements Callable<Integer> {
         } catch (IOException e) {
             throw new UsageException("cannot list '" + studentsDir + "': " + e.getMessage());
         }
-        List<Row> rows = Row.ranked(runAll(students, c, traces, n, err), c.tieBreak());
+        Grading grading = new Grading(challengeFile, c, studentsDir, out, new Isolation.Limits(cpuLimit, memoryMb));
+        Grading.Listener progress = (done, total, s) -> {
+            err.println(String.format(Locale.ROOT, "graded %d/%d: %s", done, total, oneLine(s.name())));
+            err.flush();
+        };
+        if (shard != null) {
+            int[] kn = SweepCommand.parseShard(shard);
+            int[] range = SweepSpec.shard(students.size(), kn[0], kn[1]);
+            List<Row> part = grading.run(students, range[0], range[1], n, progress);
+            Path file = out.resolve(GradeShard.fileName(kn[0], kn[1]));
+            OutputFile.of(plan, "--out", file.toString()).write(GradeShard.format(kn[0], kn[1], range[0], students.size(), part));
+            PrintWriter o = spec.commandLine().getOut();
+            o.println(String.format(Locale.ROOT, "shard %d/%d: students %d..%d of %d graded into %s", kn[0], kn[1],
+                    range[0] + 1, range[1], students.size(), file));
+            o.flush();
+            return 0;
+        }
+        List<Row> rows = merge != null ? Shards.merge(grading, students, merge) : grading.run(students, n, progress);
         csv.write(Report.csv(rows));
         html.write(ReportPage.html(rows, c, world));
         PrintWriter o = spec.commandLine().getOut();
@@ -120,71 +152,11 @@ public final class GradeCommand implements Callable<Integer> {
     }
 
     /** Makes the report folder and its traces folder; refuses one inside the students' folder. */
-    private Path prepare() throws UsageException {
-        try {
-            Path existing = out.toAbsolutePath().normalize();
-            while (!Files.exists(existing)) { // the part of --out that exists, links followed
-                existing = existing.getParent();
-            }
-            if (existing.toRealPath().startsWith(studentsDir.toRealPath())) {
-                throw new UsageException("--out must not be inside the students' folder '" + studentsDir + "'");
-            }
-            Files.createDirectories(out);
-            return Files.createDirectories(out.resolve("traces"));
-        } catch (IOException e) {
-            throw new UsageException("cannot make the report folder '" + out + "': " + e.getMessage());
+    private void prepare() throws UsageException {
+        String why = Grading.prepare(out, studentsDir, "--out");
+        if (why != null) {
+            throw new UsageException(why);
         }
-    }
-
-    private List<Row> runAll(List<Students.Student> students, Challenge c, Path traces, int n, PrintWriter err)
-            throws InterruptedException {
-        ExecutorService pool = Executors.newFixedThreadPool(n);
-        AtomicInteger done = new AtomicInteger();
-        List<Future<Row>> futures = new ArrayList<>();
-        for (int i = 0; i < students.size(); i++) {
-            Students.Student s = students.get(i);
-            String trace = String.format(Locale.ROOT, "traces/%03d.csv", i + 1);
-            futures.add(pool.submit(() -> {
-                Row r = runOne(s, c, traces, trace);
-                synchronized (err) {
-                    err.println(String.format(Locale.ROOT, "graded %d/%d: %s", done.incrementAndGet(), students.size(),
-                            oneLine(s.name())));
-                    err.flush();
-                }
-                return r;
-            }));
-        }
-        pool.shutdown();
-        List<Row> rows = new ArrayList<>();
-        try {
-            for (Future<Row> f : futures) {
-                rows.add(f.get());
-            }
-        } catch (java.util.concurrent.ExecutionException e) {
-            throw new IllegalStateException("grading failed", e.getCause());
-        } finally {
-            pool.shutdownNow();
-        }
-        return rows;
-    }
-
-    private Row runOne(Students.Student s, Challenge c, Path traces, String trace) throws IOException, InterruptedException {
-        if (!s.problem().isEmpty()) {
-            return new Row(s, Outcome.failed(s.problem()), "", new double[0], 0);
-        }
-        Path target = out.resolve(trace);
-        Path part = traces.resolve(target.getFileName() + ".part");
-        Files.deleteIfExists(part);
-        Outcome o = Isolation.run(challengeFile, studentsDir, s.script(), s.root(), part,
-                new Isolation.Limits(cpuLimit, memoryMb));
-        boolean keep = Files.isRegularFile(part) && (o.ranked() || o.reason().contains("run-time error"));
-        if (!keep) {
-            Files.deleteIfExists(part);
-            Files.deleteIfExists(target);
-            return new Row(s, o, "", new double[0], 0);
-        }
-        AtomicFiles.moveIntoPlace(part, target);
-        return new Row(s, o, trace, TracePath.read(target), 0);
     }
 
     /** A name on one terminal line: control characters shown as '?'. */

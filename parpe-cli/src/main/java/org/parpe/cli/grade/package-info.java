@@ -1,6 +1,5 @@
 /**
- * {@code parpe grade}: a class's scripts run in a challenge, each in a child JVM of its own
- * ({@link org.parpe.cli.grade.GradeChild}) with a CPU-time and memory limit and confined to its
- * student's folder, then ranked into a CSV table and a self-contained HTML page.
+ * {@code parpe grade}: the command line of class grading; the grading itself (isolation,
+ * confinement, ranking, the report) is {@link org.parpe.sim.grade}, shared with the IDE.
  */
 package org.parpe.cli.grade;

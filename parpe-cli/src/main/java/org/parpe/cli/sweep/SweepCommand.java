@@ -220,9 +220,11 @@ public final class SweepCommand extends SimSweepCommand {
     }
 
     private int[] shard() throws UsageException {
-        if (shard == null) {
-            return null;
-        }
+        return shard == null ? null : parseShard(shard);
+    }
+
+    /** K and N of {@code --shard K/N} (sweep's and grade's): whole numbers, 1 <= K <= N <= 999999. */
+    public static int[] parseShard(String shard) throws UsageException {
         String[] kn = shard.trim().split("/", -1);
         if (kn.length != 2 || !kn[0].matches("\\d+") || !kn[1].matches("\\d+")) {
             throw new UsageException("--shard expects K/N with whole numbers, for example 2/8, got '" + shard + "'");

@@ -20,6 +20,7 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.parpe.cli.Cli;
+import org.parpe.sim.grade.Report;
 
 /**
  * Issue 37's acceptance: a class of 30 scripts, good and bad, graded. Every good script is

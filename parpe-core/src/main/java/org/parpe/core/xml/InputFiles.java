@@ -26,6 +26,13 @@ public final class InputFiles {
     private InputFiles() {
     }
 
+    /** Whether {@code file} is named as a script ({@code .xml} or {@code .parsl}, any case): what a folder of scripts holds. */
+    public static boolean isScript(Path file) {
+        Path name = file.getFileName();
+        String n = name == null ? "" : name.toString().toLowerCase(java.util.Locale.ROOT);
+        return n.endsWith(".xml") || n.endsWith(".parsl");
+    }
+
     /** Checks that {@code file} can be read as an input file, without opening it. */
     public static void check(Path file) throws IOException {
         checkKind(file);

@@ -21,6 +21,7 @@ import org.eclipse.swt.widgets.Menu;
 import org.eclipse.swt.widgets.MenuItem;
 import org.eclipse.swt.widgets.Text;
 import org.parpe.gui.help.TutorialWindow;
+import org.parpe.gui.grade.ClassWindow;
 import org.parpe.gui.sweep.SweepDialog;
 import org.parpe.gui.sweep.SweepHost;
 import org.parpe.core.diagram.SectionEdits;
@@ -31,6 +32,7 @@ final class MenuBar {
     private final IdeWindow ide;
     private FindReplaceDialog find;
     private SweepDialog sweep;
+    private ClassWindow classWindow;
 
     MenuBar(IdeWindow ide) {
         this.ide = ide;
@@ -202,6 +204,16 @@ final class MenuBar {
         new MenuItem(m, SWT.SEPARATOR);
         item(m, "&Hardware\u2026", 0, () -> HardwareDialog.open(ide));
         item(m, "S&weep / Optimise\u2026", 0, this::openSweep);
+        item(m, "Grade a &Class\u2026", 0, this::openClass);
+    }
+
+    /** Run → Grade a Class…: one Class window per IDE window. */
+    private void openClass() {
+        if (classWindow == null || classWindow.shell().isDisposed()) {
+            classWindow = ClassWindow.open(ide.shell());
+        } else {
+            classWindow.activate();
+        }
     }
 
     /** Run → Sweep / Optimise…: one dialog per window, on the editor's script. */

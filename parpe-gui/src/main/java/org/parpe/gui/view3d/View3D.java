@@ -30,6 +30,7 @@ public final class View3D {
     private Supplier<SimSnapshot> source = () -> null;
     private Supplier<Set<Integer>> highlighted = Set::of;
     private Supplier<String> overlay = () -> "";
+    private String emptyText = "No robot yet: open a script and press Run";
     private boolean track = true;
     private boolean labels;
     private boolean animating;
@@ -152,6 +153,12 @@ public final class View3D {
     /** Which modules to highlight (those driven by the current behavior). */
     public void setHighlighted(Supplier<Set<Integer>> highlighted) {
         this.highlighted = highlighted;
+    }
+
+    /** The text in the corner while there is no robot to draw (a hint what to do). */
+    public void setEmptyText(String text) {
+        emptyText = text;
+        canvas.redraw();
     }
 
     /** A line of text drawn in the corner (simulated time). */
@@ -402,7 +409,7 @@ public final class View3D {
     public String hudText() {
         SimSnapshot snap = last;
         double d = distanceFromStart();
-        String text = snap == null ? "No robot yet: open a script and press Run" : overlay.get();
+        String text = snap == null ? emptyText : overlay.get();
         return snap != null && track && !Double.isNaN(d)
                 ? text + String.format(java.util.Locale.ROOT, "%s%.2f m from the start", text.isEmpty() ? "" : "   ", d) : text;
     }

@@ -2,6 +2,7 @@ package org.parpe.sim.world;
 
 import java.nio.file.Path;
 import java.util.Map;
+import java.util.Set;
 
 /**
  * A class challenge (format in {@code docs/simulator.md}, "Challenges"): the world every student's
@@ -16,10 +17,12 @@ import java.util.Map;
  * @param tick        the scheduler tick, s
  * @param parameters  values given to the scripts' parameters of these names (the others keep their defaults)
  * @param maxModules  the most modules a script's robot may declare
+ * @param sensors     the sensor types a script may declare and read ({@code angle}, {@code accel},
+ *                    {@code touch}, {@code dock}); all of them unless the challenge names some
  * @param tieBreak    how runs with equal scores are ordered
  */
 public record Challenge(Path file, Path world, String robot, double duration, double tick,
-                        Map<String, Double> parameters, int maxModules, TieBreak tieBreak) {
+                        Map<String, Double> parameters, int maxModules, Set<String> sensors, TieBreak tieBreak) {
     /** How runs with equal scores are ordered; runs still equal share a rank (1, 1, 3). */
     public enum TieBreak {
         /** The one that went further forwards (+x) ranks first. */
@@ -30,5 +33,6 @@ public record Challenge(Path file, Path world, String robot, double duration, do
 
     public Challenge {
         parameters = Map.copyOf(parameters);
+        sensors = Set.copyOf(sensors);
     }
 }

@@ -5,6 +5,8 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeMap;
+import java.util.TreeSet;
+import org.parpe.core.lang.Vocabulary;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.xml.FlatXmlFile;
@@ -18,7 +20,8 @@ import org.parpe.core.xml.FlatXmlFile;
 public final class ChallengeReader {
     /** The most modules a challenge may allow: the size limit of robot configurations. */
     public static final int MAX_MODULES = 1000;
-    private static final Set<String> ROOT = Set.of("world", "robot", "duration", "tick", "max-modules", "tie-break");
+    private static final Set<String> ROOT = Set.of("world", "robot", "duration", "tick", "max-modules", "sensors",
+            "tie-break");
 
     private ChallengeReader() {
     }
@@ -36,6 +39,7 @@ public final class ChallengeReader {
         double duration = xml.number(a, "duration", 60, xml.root(), false, 0.01, 3600);
         double tick = xml.number(a, "tick", 0.01, xml.root(), false, 0.001, 1);
         int maxModules = (int) xml.number(a, "max-modules", 32, xml.root(), true, 1, MAX_MODULES);
+        Set<String> sensors = sensors(xml, a.get("sensors"), xml.root());
         Challenge.TieBreak tie = tieBreak(xml, a.getOrDefault("tie-break", "distance"), xml.root());
         Map<String, Double> parameters = new TreeMap<>();
         for (FlatXmlFile.Element e : xml.children()) {
@@ -46,7 +50,7 @@ public final class ChallengeReader {
         }
         Path parent = path.toAbsolutePath().getParent();
         Path world = parent.resolve(a.get("world").trim()).normalize();
-        return new Challenge(path, world, a.get("robot").trim(), duration, tick, parameters, maxModules, tie);
+        return new Challenge(path, world, a.get("robot").trim(), duration, tick, parameters, maxModules, sensors, tie);
     }
 
     private static void parameter(FlatXmlFile xml, FlatXmlFile.Element e, Map<String, Double> into) {
@@ -64,6 +68,26 @@ public final class ChallengeReader {
         if (into.put(a.get("name"), v) != null) {
             xml.error(e.at(), "the parameter '" + a.get("name") + "' is set twice");
         }
+    }
+
+    /** The sensor types of {@code v} (comma-separated; "" allows none); all of them without the attribute. */
+    private static Set<String> sensors(FlatXmlFile xml, String v, SourcePos at) {
+        if (v == null) {
+            return Set.copyOf(Vocabulary.SENSOR_TYPES);
+        }
+        Set<String> out = new TreeSet<>();
+        for (String t : v.split(",")) {
+            String type = t.trim();
+            if (type.isEmpty()) {
+                continue;
+            }
+            if (!Vocabulary.SENSOR_TYPES.contains(type)) {
+                xml.error(at, "sensors lists sensor types (" + String.join(", ", Vocabulary.SENSOR_TYPES) + "), got '"
+                        + type + "'");
+            }
+            out.add(type);
+        }
+        return out;
     }
 
     private static Challenge.TieBreak tieBreak(FlatXmlFile xml, String v, SourcePos at) {

@@ -1,4 +1,4 @@
-package org.parpe.cli.grade;
+package org.parpe.sim.grade;
 
 import java.io.IOException;
 import java.io.PrintStream;
@@ -83,6 +83,14 @@ public final class GradeChild {
         if (modules > c.maxModules()) {
             return Outcome.failed(script + ": error: the robot has " + modules + " modules; this challenge allows at most "
                     + c.maxModules() + " (max-modules)");
+        }
+        List<String> forbidden = r.program().robot().sensors().stream().filter(d -> !c.sensors().contains(d.type()))
+                .map(d -> new Diagnostic(Severity.ERROR, d.pos(), "the script declares the " + d.type() + " sensor, which this"
+                        + " challenge does not allow (it allows " + (c.sensors().isEmpty() ? "no sensors"
+                        : String.join(", ", new java.util.TreeSet<>(c.sensors()))) + "; the sensors rule of the challenge)")
+                        .format()).toList();
+        if (!forbidden.isEmpty()) {
+            return Outcome.failed(String.join("\n", forbidden.subList(0, Math.min(MAX_MESSAGES, forbidden.size()))));
         }
         SimTarget target = new SimTarget(c.robot(), world);
         DiagnosticList runDiags = new DiagnosticList();

@@ -1,4 +1,4 @@
-package org.parpe.cli.grade;
+package org.parpe.sim.grade;
 
 import java.util.LinkedHashMap;
 import java.util.Locale;
@@ -19,10 +19,10 @@ import org.parpe.sim.SimMetrics;
  * @param fell      whether the robot fell over
  * @param time      simulated seconds the run lasted
  */
-record Outcome(boolean ranked, String reason, double score, String parts, double dx, double distance, boolean fell,
+public record Outcome(boolean ranked, String reason, double score, String parts, double dx, double distance, boolean fell,
                double time) {
 
-    static Outcome failed(String reason) {
+    public static Outcome failed(String reason) {
         return new Outcome(false, reason, 0, "", 0, 0, false, 0);
     }
 
@@ -34,7 +34,7 @@ record Outcome(boolean ranked, String reason, double score, String parts, double
     String format() {
         StringBuilder b = new StringBuilder();
         b.append("ranked=").append(ranked).append('\n');
-        b.append("reason=").append(reason.replace("\\", "\\\\").replace("\n", "\\n").replace("\r", "\\r")).append('\n');
+        b.append("reason=").append(escape(reason)).append('\n');
         b.append(String.format(Locale.ROOT, "score=%.6f%ndx=%.6f%ndistance=%.6f%ntime=%.6f%n", score, dx, distance, time));
         b.append("parts=").append(parts).append('\n');
         b.append("fell=").append(fell).append('\n');
@@ -63,7 +63,12 @@ record Outcome(boolean ranked, String reason, double score, String parts, double
         }
     }
 
-    private static String unescape(String s) {
+    /** {@code s} on one line: backslashes, newlines and carriage returns escaped ({@link #unescape} reads it). */
+    static String escape(String s) {
+        return s.replace("\\", "\\\\").replace("\n", "\\n").replace("\r", "\\r");
+    }
+
+    static String unescape(String s) {
         StringBuilder b = new StringBuilder();
         for (int i = 0; i < s.length(); i++) {
             char c = s.charAt(i);

@@ -1,4 +1,4 @@
-package org.parpe.cli.grade;
+package org.parpe.sim.grade;
 
 import java.util.List;
 import java.util.Locale;
@@ -10,14 +10,14 @@ import org.parpe.sim.world.Challenge;
  * for spreadsheets ({@link CsvCells}), numbers with fixed decimals so that the same runs give the
  * same bytes. The HTML page is {@link ReportPage}.
  */
-final class Report {
-    static final String HEADER = "rank,student,script,score,parts,forward_m,distance_m,fell,time_s,trace,problem";
+public final class Report {
+    public static final String HEADER = "rank,student,script,score,parts,forward_m,distance_m,fell,time_s,trace,problem";
 
     private Report() {
     }
 
     /** The CSV of {@code rows} (already in rank order). */
-    static String csv(List<Row> rows) {
+    public static String csv(List<Row> rows) {
         StringBuilder b = new StringBuilder(HEADER).append('\n');
         for (Row r : rows) {
             Outcome o = r.outcome();
@@ -36,7 +36,7 @@ final class Report {
     }
 
     /** A one-line summary for the terminal: how many were ranked and how many failed. */
-    static String summary(List<Row> rows, Challenge c) {
+    public static String summary(List<Row> rows, Challenge c) {
         long ranked = rows.stream().filter(r -> r.rank() > 0).count();
         return String.format(Locale.ROOT, "%d students: %d ranked, %d with problems (challenge %s, %s, %.0f s)",
                 rows.size(), ranked, rows.size() - ranked, c.file().getFileName(), c.robot(), c.duration());

@@ -1,4 +1,4 @@
-package org.parpe.cli.grade;
+package org.parpe.sim.grade;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -7,7 +7,7 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import java.util.stream.Stream;
-import org.parpe.cli.Inputs;
+import org.parpe.core.xml.InputFiles;
 
 /**
  * The students of a folder, in name order: each script directly in it is a student handed in as a
@@ -17,7 +17,7 @@ import org.parpe.cli.Inputs;
  * leads out of its folder is refused by the loader. Names are listed, never read: only the
  * child JVMs read scripts.
  */
-final class Students {
+public final class Students {
     /**
      * One student.
      *
@@ -26,14 +26,14 @@ final class Students {
      * @param root     what the script may read, relative to the students' folder
      * @param problem  why the student cannot be run (""), for example a folder without a script
      */
-    record Student(String name, Path script, Path root, String problem) {
+    public record Student(String name, Path script, Path root, String problem) {
     }
 
     private Students() {
     }
 
     /** The students of {@code dir}, sorted by name (hidden entries left out). */
-    static List<Student> of(Path dir) throws IOException {
+    public static List<Student> of(Path dir) throws IOException {
         List<Student> students = new ArrayList<>();
         for (Path p : list(dir)) {
             String name = p.getFileName().toString();
@@ -46,7 +46,7 @@ final class Students {
                         + " (the confinement rule of parpe grade)"));
             } else if (Files.isDirectory(p)) {
                 students.add(folder(dir, p, name));
-            } else if (Inputs.isScript(p)) {
+            } else if (InputFiles.isScript(p)) {
                 students.add(new Student(name, Path.of(name), Path.of(name), ""));
             }
         }
@@ -54,7 +54,7 @@ final class Students {
     }
 
     private static Student folder(Path dir, Path folder, String name) throws IOException {
-        List<Path> scripts = list(folder).stream().filter(Inputs::isScript)
+        List<Path> scripts = list(folder).stream().filter(InputFiles::isScript)
                 .filter(p -> !p.getFileName().toString().startsWith(".")).toList();
         Path chosen = scripts.size() == 1 ? scripts.get(0)
                 : scripts.stream().filter(p -> p.getFileName().toString().equals("main.xml")).findFirst().orElse(null);

@@ -1,4 +1,4 @@
-package org.parpe.cli.grade;
+package org.parpe.sim.grade;
 
 import java.io.BufferedReader;
 import java.io.IOException;

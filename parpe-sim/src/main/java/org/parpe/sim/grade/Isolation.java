@@ -1,4 +1,4 @@
-package org.parpe.cli.grade;
+package org.parpe.sim.grade;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -18,7 +18,7 @@ import org.parpe.core.xml.FlatXmlFile;
  * down costs only its own row. The CPU time is the child's own ({@link ProcessHandle.Info}),
  * polled; a child that waits without using CPU is stopped at a wall-clock limit of its own.
  */
-final class Isolation {
+public final class Isolation {
     /** Exit status of a JVM that ran out of heap with {@code -XX:+ExitOnOutOfMemoryError}. */
     private static final int OUT_OF_MEMORY = 3;
     /** The most of a child's standard output read: the outcome is a few lines. */
@@ -30,7 +30,14 @@ final class Isolation {
      * @param cpuSeconds  CPU time the child may use (JVM start included)
      * @param memoryMb    the child's heap, MB
      */
-    record Limits(double cpuSeconds, int memoryMb) {
+    public record Limits(double cpuSeconds, int memoryMb) {
+        /** The default CPU time of a run, s (as text: a command-line option's default). */
+        public static final String DEFAULT_CPU_SECONDS = "300";
+        /** The default heap of a run, MB. */
+        public static final String DEFAULT_MEMORY_MB = "512";
+        /** The default limits. */
+        public static final Limits DEFAULTS = new Limits(Double.parseDouble(DEFAULT_CPU_SECONDS), Integer.parseInt(DEFAULT_MEMORY_MB));
+
         double wallSeconds() {
             return 3 * cpuSeconds + 30;
         }
@@ -55,7 +62,13 @@ final class Isolation {
         Process p = new ProcessBuilder(cmd).directory(dir.toFile()).redirectError(ProcessBuilder.Redirect.DISCARD).start();
         p.getOutputStream().close();
         CompletableFuture<String> out = CompletableFuture.supplyAsync(() -> read(p.getInputStream()));
-        String stopped = watch(p, limits);
+        String stopped;
+        try {
+            stopped = watch(p, limits);
+        } catch (InterruptedException e) {
+            p.destroyForcibly(); // grading stopped (the IDE's Stop): no child outlives it
+            throw e;
+        }
         if (stopped != null) {
             return Outcome.failed(stopped);
         }

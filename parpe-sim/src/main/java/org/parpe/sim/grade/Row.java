@@ -1,4 +1,4 @@
-package org.parpe.cli.grade;
+package org.parpe.sim.grade;
 
 import java.util.ArrayList;
 import java.util.Comparator;
@@ -9,7 +9,7 @@ import org.parpe.sim.world.Challenge;
  * One line of the report: a student, the outcome of its run, its trace (relative to the report's
  * folder, "" without one), its centre-of-mass path (x, y pairs) and its rank (0: not ranked).
  */
-record Row(Students.Student student, Outcome outcome, String trace, double[] path, int rank) {
+public record Row(Students.Student student, Outcome outcome, String trace, double[] path, int rank) {
 
     /**
      * {@code rows} in report order with their ranks: ranked runs by score, then (with
@@ -17,7 +17,7 @@ record Row(Students.Student student, Outcome outcome, String trace, double[] pat
      * rank and the next rank skips (competition ranking, 1, 1, 3, as {@code parpe race}); then the
      * runs that failed, each in name order.
      */
-    static List<Row> ranked(List<Row> rows, Challenge.TieBreak tie) {
+    public static List<Row> ranked(List<Row> rows, Challenge.TieBreak tie) {
         Comparator<Row> key = Comparator.comparingDouble((Row r) -> -r.outcome().score());
         if (tie == Challenge.TieBreak.DISTANCE) {
             key = key.thenComparingDouble(r -> -r.outcome().dx());

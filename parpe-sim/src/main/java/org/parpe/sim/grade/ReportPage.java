@@ -1,4 +1,4 @@
-package org.parpe.cli.grade;
+package org.parpe.sim.grade;
 
 import java.util.List;
 import java.util.Locale;
@@ -12,7 +12,7 @@ import org.parpe.sim.world.World;
  * robot's centre-of-mass path. Every text that comes from a file name or a message is escaped;
  * the page loads nothing (no scripts, no links but to the traces beside it).
  */
-final class ReportPage {
+public final class ReportPage {
     private static final String[] COLOURS = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf",
         "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22"};
     private static final String STYLE = "body{font-family:sans-serif;margin:1.5em;color:#222}"
@@ -26,7 +26,7 @@ final class ReportPage {
     }
 
     /** The page for {@code rows} (in rank order) of challenge {@code c} in {@code world}. */
-    static String html(List<Row> rows, Challenge c, World world) {
+    public static String html(List<Row> rows, Challenge c, World world) {
         StringBuilder b = new StringBuilder("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n");
         b.append("<title>Results: ").append(esc(c.file().getFileName().toString())).append("</title>\n");
         b.append("<style>").append(STYLE).append("</style>\n</head>\n<body>\n");
