@@ -67,6 +67,28 @@ class RobotProblemsTest {
         }
     }
 
+    /**
+     * Issue 33 item 6: the Fig. 2 humanoid of examples/configs is the humanoid generator's robot:
+     * the same parts and every piece in the same place (1e-9 m) and the same hinges.
+     */
+    @Test
+    void theHumanoidFileIsTheGeneratorsHumanoid() {
+        DiagnosticList d = new DiagnosticList();
+        Assembly file = Assembly.build(RobotConfigs.resolve("../examples/configs/humanoid15.xml", new int[0], d), d);
+        Assembly gen = Assembly.build(RobotConfigs.resolve("humanoid", new int[0], d), d);
+        assertTrue(d.all().isEmpty(), d.all().toString());
+        assertEquals(gen.pieces().size(), file.pieces().size());
+        for (int i = 0; i < gen.pieces().size(); i++) {
+            Assembly.PlacedPiece a = gen.pieces().get(i);
+            Assembly.PlacedPiece b = file.pieces().get(i);
+            assertEquals(a.part().name(), b.part().name());
+            assertEquals(a.part().moduleId(), b.part().moduleId());
+            assertTrue(org.parpe.sim.Geo.sub(a.position(), b.position()).length() < 1e-9, a + " vs " + b);
+            assertTrue(org.parpe.sim.Geo.angleBetween(a.rotation(), b.rotation()) < 1e-9, a + " vs " + b);
+        }
+        assertEquals(gen.hinges().size(), file.hinges().size());
+    }
+
     @Test
     void aPlateUsedTwiceNamesTheFirstConnection() throws IOException {
         List<Diagnostic> e = errors("twice.xml", """
