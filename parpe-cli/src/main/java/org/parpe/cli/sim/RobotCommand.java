@@ -67,8 +67,8 @@ public final class RobotCommand implements Callable<Integer> {
             Inputs.check(kit);
             inputs.add(kit);
         }
-        Path config = Path.of(robot.trim());
         if (RobotConfigs.isFile(robot)) {
+            Path config = Path.of(robot.trim());
             Inputs.check(config);
             inputs.add(config);
         }

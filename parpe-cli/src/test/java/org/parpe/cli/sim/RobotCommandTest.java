@@ -93,7 +93,7 @@ class RobotCommandTest {
         assertEquals("snake:n=6: ok (6 segments); the kit keeps 2 segments, 0 nodes, 8 feet, 0 hubs\n", fits.out);
         Cli over = Cli.run("robot", "../examples/configs/wheel6.xml", "--kit", kit.toString(), "--check");
         assertEquals(1, over.code, over::toString);
-        assertTrue(over.err.contains("wheel6.xml:5:3: error: hub 'hub' is one more than the kit has"), over.err);
+        assertTrue(over.err.contains("wheel6.xml:5:3: error: hub 'hub' is beyond the kit"), over.err);
     }
 
     @Test

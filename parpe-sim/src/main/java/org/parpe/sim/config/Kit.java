@@ -81,7 +81,7 @@ public record Kit(String name, Map<PartType, Integer> owned, Map<PartType, Sourc
             int n = used.merge(p.type(), 1, Integer::sum);
             if (n == owned(p.type()) + 1) {
                 SourcePos at = where.getOrDefault(p.type(), SourcePos.NONE);
-                diags.error(p.pos(), p.type().xmlName() + " '" + p.name() + "' is one more than the kit has: the robot uses "
+                diags.error(p.pos(), p.type().xmlName() + " '" + p.name() + "' is beyond the kit: the robot uses "
                         + p.type().count(total.get(p.type())) + ", kit " + name + " has "
                         + owned(p.type()) + (at.line() > 0 ? " (line " + at.line() + ")" : ""));
                 fits = false;

@@ -41,8 +41,8 @@ class KitTest {
         RobotConfig tee = robot("../examples/configs/tee-snake.xml");
         assertFalse(kit.check(tee, d));
         assertEquals(1, d.all().size(), d.all().toString());
-        assertEquals(Path.of("..", "examples", "configs", "tee-snake.xml") + ":11:3: error: segment 'right' is one more"
-                + " than the kit has: the robot uses 5 segments, kit " + f + " has 4 (line 2)", d.all().get(0).toString());
+        assertEquals(Path.of("..", "examples", "configs", "tee-snake.xml") + ":11:3: error: segment 'right' is beyond"
+                + " the kit: the robot uses 5 segments, kit " + f + " has 4 (line 2)", d.all().get(0).toString());
         assertEquals(Map.of(PartType.SEGMENT, -1, PartType.NODE, 0, PartType.FOOT, 0, PartType.HUB, 0), kit.left(tee));
     }
 
@@ -51,7 +51,7 @@ class KitTest {
         Kit kit = Kit.of("class 4B", Map.of(PartType.SEGMENT, 8, PartType.FOOT, 8));
         DiagnosticList d = new DiagnosticList();
         assertFalse(kit.check(robot("wheel"), d));
-        assertTrue(d.all().toString().contains("hub 'hub' is one more than the kit has: the robot uses 1 hub,"
+        assertTrue(d.all().toString().contains("hub 'hub' is beyond the kit: the robot uses 1 hub,"
                 + " kit class 4B has 0"), d.all().toString());
         DiagnosticList fine = new DiagnosticList();
         assertTrue(kit.check(robot("snake:n=8"), fine));
