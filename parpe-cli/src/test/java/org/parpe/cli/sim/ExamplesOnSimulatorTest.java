@@ -116,17 +116,6 @@ class ExamplesOnSimulatorTest {
         assertFalse(m.fell(), m.toJson());
     }
 
-    /**
-     * Issue 33 item 6: the Fig. 2 humanoid's crouched shuffle keeps it on its feet and creeps
-     * forwards (a few centimetres: what a short search found, not yet a walk).
-     */
-    @Test
-    void theHumanoidShufflesForwardsWithoutFalling() {
-        SimMetrics m = run("humanoid-shuffle.xml", "../examples/configs/humanoid15.xml", 20);
-        assertTrue(m.dx() >= 0.02, m.toJson());
-        assertFalse(m.fell(), m.toJson());
-    }
-
     @ParameterizedTest
     @CsvSource({"frog-hop.xml, ../examples/configs/frog.xml", "flipper-tumble.xml, ../examples/configs/flipper.xml",
         "hello-snake.xml, snake", "wheel.xml, wheel", "centipede-walk.xml, centipede",
