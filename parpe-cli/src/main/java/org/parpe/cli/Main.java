@@ -17,6 +17,7 @@ import picocli.CommandLine.Command;
             RunCommand.class,
             BenchCommand.class,
             org.parpe.cli.sim.RaceCommand.class,
+            org.parpe.cli.sim.RobotCommand.class,
             org.parpe.cli.grade.GradeCommand.class,
             org.parpe.cli.sweep.SweepCommand.class,
             org.parpe.cli.sweep.OptimizeCommand.class,

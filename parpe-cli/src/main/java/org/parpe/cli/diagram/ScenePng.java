@@ -15,11 +15,11 @@ import org.parpe.cli.Canvas;
 import org.parpe.core.diagram.Scene;
 
 /** Draws a {@link Scene} with Java2D on the command line's white {@link Canvas}, for PNG files. */
-final class ScenePng {
+public final class ScenePng {
     /** The smallest width asked for with --width, pixels. */
-    static final int MIN_SIDE = 16;
+    public static final int MIN_SIDE = 16;
     /** The largest width asked for with --width, pixels: 10 000 × 10 000 takes 400 MB to draw. */
-    static final int MAX_WIDTH = 10_000;
+    public static final int MAX_WIDTH = 10_000;
     /** The widest and tallest PNG drawn, px: what image viewers and browsers open. */
     static final int MAX_SIDE = 32_767;
     /** The most pixels of a PNG drawn: 64 Mi, a 256 MiB image in memory. */
@@ -33,7 +33,7 @@ final class ScenePng {
      * {@link #MAX_SIDE} or {@link #MAX_PIXELS} (10 000 {@code <main>} entries made a program
      * lane over a million pixels wide, gigabytes in memory). SVG has no such limit.
      */
-    static String tooLarge(Scene scene, int width) {
+    public static String tooLarge(Scene scene, int width) {
         long height = height(scene, width);
         long pixels = (long) width * height;
         if (width <= MAX_SIDE && height <= MAX_SIDE && pixels <= MAX_PIXELS) {
@@ -50,7 +50,7 @@ final class ScenePng {
     }
 
     /** The scene scaled to {@code width} pixels wide, its height in proportion ({@link #height}). */
-    static BufferedImage draw(Scene scene, int width) {
+    public static BufferedImage draw(Scene scene, int width) {
         Canvas c = Canvas.white(width, (int) height(scene, width));
         Graphics2D g = c.graphics();
         if (width != scene.width()) {

@@ -93,8 +93,32 @@ class ExamplesOnSimulatorTest {
         assertTrue(m.dx() >= 0.1, m.toJson());
     }
 
+    /**
+     * Issue 33 item 6: the paper's frog-like robot hops forwards (+x) on its own configuration,
+     * and stays on its feet.
+     */
+    @Test
+    void theFrogHopsForwards() {
+        SimMetrics m = run("frog-hop.xml", "../examples/configs/frog.xml", 20);
+        assertTrue(m.dx() >= 0.3, m.toJson());
+        assertTrue(Math.abs(m.dy()) < m.dx() / 3, "it hops straight: " + m.toJson());
+        assertFalse(m.fell(), m.toJson());
+    }
+
+    /**
+     * Issue 33 item 6: the flipping/rolling ring goes over side after side, forwards, and
+     * flipping is not falling (it is judged by its axle, which stays level).
+     */
+    @Test
+    void theFlipperTumblesForwards() {
+        SimMetrics m = run("flipper-tumble.xml", "../examples/configs/flipper.xml", 20);
+        assertTrue(m.dx() >= 0.4, m.toJson());
+        assertFalse(m.fell(), m.toJson());
+    }
+
     @ParameterizedTest
-    @CsvSource({"hello-snake.xml, snake", "wheel.xml, wheel", "centipede-walk.xml, centipede",
+    @CsvSource({"frog-hop.xml, ../examples/configs/frog.xml", "flipper-tumble.xml, ../examples/configs/flipper.xml",
+        "hello-snake.xml, snake", "wheel.xml, wheel", "centipede-walk.xml, centipede",
         "gait-table-12.xml, snake", "standup-walk.xml, centipede", "teleop-dirwave.xml, snake:axes=alternate",
         "param-loop.xml, loop", "sensor-exit.xml, snake"})
     void tenSimulatedMinutesStaySane(String file, String spec) {

@@ -200,6 +200,13 @@ public final class FlatXmlFile {
     private void document(XMLStreamReader2 r, String what, String root, String expected) throws XMLStreamException {
         int ev = r.next();
         while (ev != XMLStreamConstants.START_ELEMENT && ev != XMLStreamConstants.END_DOCUMENT) {
+            if (ev == XMLStreamConstants.DTD) {
+                // as XmlReader says for scripts: the parser reads no DTD, so its entities would
+                // only be "undeclared" later on; say what is refused, where it is
+                error(here(r), "DOCTYPE declarations are not allowed in a " + what
+                        + " (their entities, external files among them, are never read)");
+                return;
+            }
             ev = r.next();
         }
         if (ev != XMLStreamConstants.START_ELEMENT) {

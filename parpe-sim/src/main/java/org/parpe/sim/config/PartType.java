@@ -32,6 +32,12 @@ public enum PartType {
         return name().toLowerCase(Locale.ROOT);
     }
 
+    /** {@code n} parts of this type in words: "1 segment", "12 segments", "2 feet". */
+    public String count(long n) {
+        String word = this == FOOT ? (n == 1 ? "foot" : "feet") : xmlName() + (n == 1 ? "" : "s");
+        return n + " " + word;
+    }
+
     /** The type called {@code name} in configuration files, or {@code null}. */
     public static PartType ofXmlName(String name) {
         for (PartType t : values()) {

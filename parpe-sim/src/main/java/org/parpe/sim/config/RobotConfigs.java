@@ -39,12 +39,18 @@ public final class RobotConfigs {
     public static RobotConfig resolve(String specOrPath, int[] moduleIds, DiagnosticSink diags) {
         String spec = specOrPath.trim();
         RobotConfig config;
-        if (spec.endsWith(".xml") || spec.contains("/") || Files.isRegularFile(Path.of(spec))) {
+        if (isFile(spec)) {
             config = ConfigReader.read(Path.of(spec), diags);
         } else {
             config = generate(spec, moduleIds, diags);
         }
         return config;
+    }
+
+    /** Whether {@code specOrPath} names a configuration file (not a generator), as {@link #resolve} takes it. */
+    public static boolean isFile(String specOrPath) {
+        String spec = specOrPath.trim();
+        return spec.endsWith(".xml") || spec.contains("/") || Files.isRegularFile(Path.of(spec));
     }
 
     private static RobotConfig generate(String spec, int[] moduleIds, DiagnosticSink diags) {

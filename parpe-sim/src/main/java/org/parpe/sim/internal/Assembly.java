@@ -142,7 +142,8 @@ public final class Assembly {
         if (!placement.run()) {
             return null;
         }
-        return assemble(config, check.geometries(), placement, diags);
+        Assembly a = assemble(config, check.geometries(), placement, diags);
+        return a == null || !Overlaps.check(a.pieces, a.hinges, diags) ? null : a;
     }
 
     private static Assembly assemble(RobotConfig config, List<PartGeometry> geos, Placement placement,

@@ -44,7 +44,7 @@ final class ConfigCheck {
             error(SourcePos.NONE, "root part '" + config.root().part() + "' is not defined"
                     + Names.suggest(config.root().part(), index.keySet()));
         }
-        Set<String> usedPlates = new HashSet<>();
+        Map<String, SourcePos> usedPlates = new HashMap<>();
         for (Connection c : config.connections()) {
             checkConnection(c, usedPlates);
         }
@@ -76,7 +76,7 @@ final class ConfigCheck {
         }
     }
 
-    private void checkConnection(Connection c, Set<String> usedPlates) {
+    private void checkConnection(Connection c, Map<String, SourcePos> usedPlates) {
         boolean known = checkEnd(c, c.from(), c.fromPlate(), usedPlates);
         known &= checkEnd(c, c.to(), c.toPlate(), usedPlates);
         if (known && c.from().equals(c.to())) {
@@ -87,7 +87,7 @@ final class ConfigCheck {
         }
     }
 
-    private boolean checkEnd(Connection c, String part, int plate, Set<String> usedPlates) {
+    private boolean checkEnd(Connection c, String part, int plate, Map<String, SourcePos> usedPlates) {
         Integer i = index.get(part);
         if (i == null) {
             error(c.pos(), "part '" + part + "' is not defined" + Names.suggest(part, index.keySet()));
@@ -99,8 +99,10 @@ final class ConfigCheck {
                     + (count - 1) + ", got " + plate);
             return false;
         }
-        if (!usedPlates.add(part + "." + plate)) {
-            error(c.pos(), "plate " + plate + " of part '" + part + "' is already connected");
+        SourcePos first = usedPlates.putIfAbsent(part + "." + plate, c.pos());
+        if (first != null) {
+            error(c.pos(), "plate " + plate + " of part '" + part + "' is already connected"
+                    + (first.line() > 0 ? " (line " + first.line() + ")" : "") + "; a plate takes one connection");
         }
         return true;
     }

@@ -58,13 +58,14 @@ final class Placement {
         boolean ok = true;
         Deque<Integer> queue = Assembly.queueOf(rootIndex);
         boolean[] done = new boolean[config.parts().size()];
+        List<List<Connection>> byPart = connectionsByPart();
         while (!queue.isEmpty()) {
             int part = queue.poll();
             if (done[part]) {
                 continue;
             }
             done[part] = true;
-            for (Connection c : config.connections()) {
+            for (Connection c : byPart.get(part)) {
                 int a = index.get(c.from());
                 int b = index.get(c.to());
                 if (a == part && !done[b]) {
@@ -82,6 +83,26 @@ final class Placement {
             }
         }
         return ok;
+    }
+
+    /**
+     * Each part's connections in configuration order: looking through all of them for every
+     * part grew with parts × connections, 10^8 steps for a robot of 10 000 parts.
+     */
+    private List<List<Connection>> connectionsByPart() {
+        List<List<Connection>> out = new java.util.ArrayList<>();
+        for (int i = 0; i < config.parts().size(); i++) {
+            out.add(new java.util.ArrayList<>());
+        }
+        for (Connection c : config.connections()) {
+            int a = index.get(c.from());
+            int b = index.get(c.to());
+            out.get(a).add(c);
+            if (b != a) {
+                out.get(b).add(c);
+            }
+        }
+        return out;
     }
 
     /** Places part {@code b} against plate {@code pa} of placed part {@code a}, or checks the fit. */

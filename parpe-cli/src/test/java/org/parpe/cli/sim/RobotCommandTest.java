@@ -1,0 +1,107 @@
+package org.parpe.cli.sim;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.parpe.cli.Cli;
+
+/**
+ * {@code parpe robot}: located problems with {@code --check} and {@code --kit}, and the
+ * worksheet drawing, compared byte for byte with the golden SVGs in
+ * {@code src/test/resources/robots} (rendered as PNG and looked at when they were made; run with
+ * {@code -Dparpe.updateGolden=true} to write them again, and with them docs/images/robots).
+ */
+class RobotCommandTest {
+    private static final Path GOLDEN = Path.of("src/test/resources/robots");
+    private static final Path DOCS = Path.of("../docs/images/robots");
+    private static final boolean UPDATE = Boolean.getBoolean("parpe.updateGolden");
+
+    @TempDir
+    Path dir;
+
+    @ParameterizedTest
+    @ValueSource(strings = {"tee-snake", "wheel6"})
+    void theSheetOfAnExampleIsItsGoldenSvg(String name) throws Exception {
+        Path out = dir.resolve(name + ".svg");
+        Cli r = Cli.run("robot", "../examples/configs/" + name + ".xml", "--out", out.toString());
+        assertEquals(0, r.code, r::toString);
+        String svg = Files.readString(out);
+        Path golden = GOLDEN.resolve(name + ".svg");
+        if (UPDATE) {
+            Files.writeString(golden, svg);
+            Files.createDirectories(DOCS);
+            assertEquals(0, Cli.run("robot", "../examples/configs/" + name + ".xml", "--out",
+                    DOCS.resolve(name + ".png").toString()).code);
+        }
+        assertEquals(Files.readString(golden), svg, "differs from " + golden + "; look at both, then update");
+    }
+
+    @Test
+    void aPngIsTheSheetsSizeAndShowsTheModules(@TempDir Path d) throws Exception {
+        Path out = d.resolve("h.png");
+        Cli r = Cli.run("robot", "humanoid", "--out", out.toString());
+        assertEquals(0, r.code, r::toString);
+        BufferedImage img = ImageIO.read(out.toFile());
+        assertEquals(980, img.getWidth());
+        // three views and 20 rows of parts (the list ends below the views)
+        assertTrue(img.getHeight() > 390 + 20 * 16, img.getWidth() + " x " + img.getHeight());
+        int segment = 0;
+        for (int y = 0; y < img.getHeight(); y++) {
+            for (int x = 0; x < img.getWidth(); x++) {
+                segment += (img.getRGB(x, y) & 0xffffff) == 0x0072b2 ? 1 : 0;
+            }
+        }
+        assertTrue(segment > 500, "segments are drawn in their colour: " + segment + " pixels");
+    }
+
+    @Test
+    void checkReportsEveryProblemLocatedAndExitsOne() throws Exception {
+        Path f = dir.resolve("bad.xml");
+        Files.writeString(f, """
+                <robot-config>
+                  <part name="a" type="segment" id="0"/>
+                  <part name="b" type="segmnt" id="1"/>
+                  <part name="c" type="segment" id="2"/>
+                  <connect from="a.1" to="c.0"/>
+                  <connect from="a.1" to="c.1"/>
+                </robot-config>
+                """);
+        Cli r = Cli.run("robot", f.toString(), "--check");
+        assertEquals(1, r.code, r::toString);
+        assertTrue(r.err.contains(f + ":3:3: error: unknown part type 'segmnt'"), r.err);
+        assertFalse(r.err.contains("Exception"), r.err);
+        Cli ok = Cli.run("robot", "../examples/configs/tee-snake.xml", "--check");
+        assertEquals(0, ok.code, ok::toString);
+        assertEquals("../examples/configs/tee-snake.xml: ok (5 segments, 1 node, 2 feet)\n", ok.out);
+    }
+
+    @Test
+    void theKitIsCheckedAndWhatIsLeftIsSaid() throws Exception {
+        Path kit = dir.resolve("kit.xml");
+        Files.writeString(kit, "<kit>\n  <part type=\"segment\" count=\"8\"/>\n  <part type=\"foot\" count=\"8\"/>\n</kit>\n");
+        Cli fits = Cli.run("robot", "snake:n=6", "--kit", kit.toString());
+        assertEquals(0, fits.code, fits::toString);
+        assertEquals("snake:n=6: ok (6 segments); the kit keeps 2 segments, 0 nodes, 8 feet, 0 hubs\n", fits.out);
+        Cli over = Cli.run("robot", "../examples/configs/wheel6.xml", "--kit", kit.toString(), "--check");
+        assertEquals(1, over.code, over::toString);
+        assertTrue(over.err.contains("wheel6.xml:5:3: error: hub 'hub' is beyond the kit"), over.err);
+    }
+
+    @Test
+    void usageErrors() {
+        assertEquals(2, Cli.run("robot", "snake", "--out", dir.resolve("x.pdf").toString()).code);
+        assertEquals(2, Cli.run("robot", "snake", "--check", "--out", dir.resolve("x.svg").toString()).code);
+        Cli missing = Cli.run("robot", dir.resolve("nope.xml").toString());
+        assertEquals(2, missing.code, missing::toString);
+        assertTrue(missing.err.startsWith("parpe: cannot read '"), missing.err);
+    }
+}

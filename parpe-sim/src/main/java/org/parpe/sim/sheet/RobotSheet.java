@@ -1,0 +1,204 @@
+package org.parpe.sim.sheet;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import org.parpe.core.diagram.Scene;
+import org.parpe.sim.BodyShape;
+import org.parpe.sim.Geo;
+import org.parpe.sim.Mat3;
+import org.parpe.sim.PartKind;
+import org.parpe.sim.Vec3;
+import org.parpe.sim.config.PartSpec;
+import org.parpe.sim.config.PartType;
+import org.parpe.sim.config.RobotConfig;
+import org.parpe.sim.internal.Assembly;
+
+/**
+ * A worksheet drawing of an assembled robot at its initial pose: three orthographic views (top,
+ * front, side) at one scale with each segment's module ID, and a list of the parts. Laid out
+ * once as a {@link Scene}, so it is written as SVG or drawn as PNG like the script diagrams.
+ */
+public final class RobotSheet {
+    /** The most parts listed; the rest are counted. */
+    static final int MAX_LISTED = 60;
+    private static final int VIEW = 300;
+    private static final int MARGIN = 20;
+    private static final int TITLE = 40;
+    private static final int ROW = 16;
+    private static final int INK = 0x222222;
+    private static final int GREY = 0x888888;
+    private static final Map<PartKind, Integer> COLOURS = Map.of(PartKind.SEGMENT_BASE, 0x0072b2,
+            PartKind.SEGMENT_ARM, 0x56b4e9, PartKind.NODE, 0x555555, PartKind.FOOT, 0x009e73, PartKind.HUB, 0xd55e00);
+
+    /** A view: screen right and screen up as world directions. */
+    private record View(String title, Vec3 right, Vec3 up) {
+    }
+
+    private static final List<View> VIEWS = List.of(
+            new View("top (from above: x right, y up)", new Vec3(1, 0, 0), new Vec3(0, 1, 0)),
+            new View("front (from -y: x right, z up)", new Vec3(1, 0, 0), new Vec3(0, 0, 1)),
+            new View("side (from +x: y right, z up)", new Vec3(0, 1, 0), new Vec3(0, 0, 1)));
+
+    private RobotSheet() {
+    }
+
+    /** The sheet of {@code config} as {@code assembly} placed it. */
+    public static Scene of(RobotConfig config, Assembly assembly) {
+        List<PartSpec> parts = config.parts();
+        int listed = Math.min(parts.size(), MAX_LISTED);
+        int listTop = TITLE + VIEW + 50;
+        int height = listTop + ROW * (listed + 2 + (parts.size() > listed ? 1 : 0)) + MARGIN;
+        Scene sc = new Scene(2 * MARGIN + 3 * VIEW + 2 * MARGIN, height);
+        String name = Path.of(config.name()).getFileName() == null ? config.name()
+                : Path.of(config.name()).getFileName().toString();
+        sc.add(new Scene.Text(MARGIN, 26, "Robot " + name + ": " + summary(parts), 16, -1, INK, true));
+        double scale = scale(assembly);
+        for (int v = 0; v < VIEWS.size(); v++) {
+            view(sc, assembly, VIEWS.get(v), MARGIN + v * (VIEW + MARGIN), TITLE, scale);
+        }
+        sc.add(new Scene.Text(MARGIN, TITLE + VIEW + 24, String.format(Locale.ROOT,
+                "scale: the grey bar is 10 cm; the robot is %.0f x %.0f x %.0f cm (x, y, z)",
+                extent(assembly, 0) * 100, extent(assembly, 1) * 100, extent(assembly, 2) * 100), 12, -1, GREY, false));
+        partList(sc, parts, listTop);
+        return sc;
+    }
+
+    /** What the robot is made of, in words: "12 segments, 1 node, 4 feet". */
+    public static String summary(List<PartSpec> parts) {
+        StringBuilder s = new StringBuilder();
+        for (PartType t : PartType.values()) {
+            long n = parts.stream().filter(p -> p.type() == t).count();
+            if (n > 0) {
+                s.append(s.length() == 0 ? "" : ", ").append(t.count(n));
+            }
+        }
+        return s.toString();
+    }
+
+    private static void view(Scene sc, Assembly a, View v, double x0, double y0, double scale) {
+        sc.add(new Scene.Rect(x0, y0, VIEW, VIEW, Scene.NONE, 0xcccccc, 1, null));
+        sc.add(new Scene.Text(x0 + 6, y0 + 16, v.title(), 12, -1, INK, false));
+        double[] lo = {Double.MAX_VALUE, Double.MAX_VALUE};
+        double[] hi = {-Double.MAX_VALUE, -Double.MAX_VALUE};
+        for (Assembly.PlacedPiece p : a.pieces()) {
+            for (Vec3 c : corners(p)) {
+                double u = Geo.dot(c, v.right());
+                double w = Geo.dot(c, v.up());
+                lo[0] = Math.min(lo[0], u);
+                hi[0] = Math.max(hi[0], u);
+                lo[1] = Math.min(lo[1], w);
+                hi[1] = Math.max(hi[1], w);
+            }
+        }
+        double cx = x0 + VIEW / 2.0 - scale * (lo[0] + hi[0]) / 2;
+        double cy = y0 + 12 + VIEW / 2.0 + scale * (lo[1] + hi[1]) / 2;
+        for (Assembly.PlacedPiece p : a.pieces()) {
+            int colour = COLOURS.getOrDefault(p.def().kind(), INK);
+            Vec3[] c = corners(p);
+            for (int[] e : edges(p)) {
+                sc.add(new Scene.Line(cx + scale * Geo.dot(c[e[0]], v.right()), cy - scale * Geo.dot(c[e[0]], v.up()),
+                        cx + scale * Geo.dot(c[e[1]], v.right()), cy - scale * Geo.dot(c[e[1]], v.up()), colour, 1, 0));
+            }
+        }
+        for (Assembly.Hinge h : a.hinges()) {
+            Vec3 m = Geo.scale(Geo.add(a.pieces().get(h.base()).position(), a.pieces().get(h.arm()).position()), 0.5);
+            sc.add(new Scene.Text(cx + scale * Geo.dot(m, v.right()), cy - scale * Geo.dot(m, v.up()) + 4,
+                    Integer.toString(h.moduleId()), 11, 0, INK, true));
+        }
+        sc.add(new Scene.Line(x0 + 10, y0 + VIEW - 10, x0 + 10 + scale * 0.1, y0 + VIEW - 10, GREY, 3, 0));
+    }
+
+    /** One scale for the three views: the robot's largest extent fills a view with a margin. */
+    private static double scale(Assembly a) {
+        double most = Math.max(extent(a, 0), Math.max(extent(a, 1), extent(a, 2)));
+        return (VIEW - 60) / Math.max(most, 0.05);
+    }
+
+    /** The robot's extent along world axis {@code axis} (0 x, 1 y, 2 z), m. */
+    private static double extent(Assembly a, int axis) {
+        double lo = Double.MAX_VALUE;
+        double hi = -Double.MAX_VALUE;
+        for (Assembly.PlacedPiece p : a.pieces()) {
+            for (Vec3 c : corners(p)) {
+                double x = axis == 0 ? c.x() : axis == 1 ? c.y() : c.z();
+                lo = Math.min(lo, x);
+                hi = Math.max(hi, x);
+            }
+        }
+        return hi - lo;
+    }
+
+    /** Corners of a piece in the world: a box's eight, a disc's rims as two 16-gons. */
+    private static Vec3[] corners(Assembly.PlacedPiece p) {
+        BodyShape s = p.def().shape();
+        Vec3[] local;
+        if (s instanceof BodyShape.Box b) {
+            local = new Vec3[8];
+            for (int i = 0; i < 8; i++) {
+                local[i] = new Vec3((i & 1) == 0 ? -b.hx() : b.hx(), (i & 2) == 0 ? -b.hy() : b.hy(),
+                        (i & 4) == 0 ? -b.hz() : b.hz());
+            }
+        } else {
+            double r = s instanceof BodyShape.Cylinder c ? c.radius() : ((BodyShape.Sphere) s).radius();
+            double h = s instanceof BodyShape.Cylinder c ? c.length() / 2 : 0;
+            local = new Vec3[32];
+            for (int i = 0; i < 16; i++) {
+                double t = 2 * Math.PI * i / 16;
+                local[i] = new Vec3(r * Math.cos(t), r * Math.sin(t), -h);
+                local[16 + i] = new Vec3(r * Math.cos(t), r * Math.sin(t), h);
+            }
+        }
+        Mat3 r = p.rotation();
+        Vec3[] world = new Vec3[local.length];
+        for (int i = 0; i < local.length; i++) {
+            world[i] = Geo.add(p.position(), Geo.mul(r, local[i]));
+        }
+        return world;
+    }
+
+    /** Edges between {@link #corners}: a box's twelve; a disc's rims and four lines across. */
+    private static int[][] edges(Assembly.PlacedPiece p) {
+        if (p.def().shape() instanceof BodyShape.Box) {
+            return BOX_EDGES;
+        }
+        int[][] e = new int[36][];
+        for (int i = 0; i < 16; i++) {
+            e[i] = new int[] {i, (i + 1) % 16};
+            e[16 + i] = new int[] {16 + i, 16 + (i + 1) % 16};
+        }
+        for (int k = 0; k < 4; k++) {
+            e[32 + k] = new int[] {4 * k, 16 + 4 * k};
+        }
+        return e;
+    }
+
+    private static final int[][] BOX_EDGES = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3}, {4, 6}, {5, 7},
+        {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+
+    private static void partList(Scene sc, List<PartSpec> parts, double top) {
+        double[] col = {MARGIN, MARGIN + 200, MARGIN + 300, MARGIN + 400, MARGIN + 500, MARGIN + 580};
+        String[] head = {"part", "type", "module ID", "angle", "limp", "defined at"};
+        for (int i = 0; i < head.length; i++) {
+            sc.add(new Scene.Text(col[i], top, head[i], 12, -1, INK, true));
+        }
+        sc.add(new Scene.Line(MARGIN, top + 4, sc.width() - MARGIN, top + 4, GREY, 1, 0));
+        double y = top;
+        for (int k = 0; k < Math.min(parts.size(), MAX_LISTED); k++) {
+            PartSpec p = parts.get(k);
+            y += ROW;
+            String[] cells = {p.name(), p.type().xmlName() + (p.type() == PartType.HUB ? " (" + p.plates() + " plates)" : ""),
+                p.isSegment() ? Integer.toString(p.moduleId()) : "",
+                p.isSegment() ? org.parpe.core.xml.FlatXmlFile.plain(p.angle()) + "°" : "",
+                p.limp() ? "limp" : "", p.pos().line() > 0 ? "line " + p.pos().line() : ""};
+            for (int i = 0; i < cells.length; i++) {
+                sc.add(new Scene.Text(col[i], y, cells[i], 12, -1, i == 2 ? 0x0072b2 : INK, i == 2));
+            }
+        }
+        if (parts.size() > MAX_LISTED) {
+            sc.add(new Scene.Text(MARGIN, y + ROW, "... and " + (parts.size() - MAX_LISTED) + " more parts", 12, -1, GREY,
+                    false));
+        }
+    }
+}
