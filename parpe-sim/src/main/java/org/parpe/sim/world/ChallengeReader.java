@@ -7,9 +7,14 @@ import java.util.Set;
 import java.util.TreeMap;
 import java.util.TreeSet;
 import org.parpe.core.lang.Vocabulary;
+import org.parpe.core.diag.Diagnostic;
+import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.xml.FlatXmlFile;
+import org.parpe.sim.config.Kit;
+import org.parpe.sim.config.RobotConfig;
+import org.parpe.sim.config.RobotConfigs;
 
 /**
  * Reads a challenge file with the project's flat XML reader, as world files and robot
@@ -21,7 +26,7 @@ public final class ChallengeReader {
     /** The most modules a challenge may allow: the size limit of robot configurations. */
     public static final int MAX_MODULES = 1000;
     private static final Set<String> ROOT = Set.of("world", "robot", "duration", "tick", "max-modules", "sensors",
-            "tie-break");
+            "kit", "tie-break");
 
     private ChallengeReader() {
     }
@@ -50,7 +55,34 @@ public final class ChallengeReader {
         }
         Path parent = path.toAbsolutePath().getParent();
         Path world = parent.resolve(a.get("world").trim()).normalize();
+        if (a.containsKey("kit") && !fitsKit(parent, a, xml.root(), diags)) {
+            return null;
+        }
         return new Challenge(path, world, a.get("robot").trim(), duration, tick, parameters, maxModules, sensors, tie);
+    }
+
+    /**
+     * The kit rule: the challenge's robot must be one the class can build from its kit (the
+     * kit file, named relative to the challenge). A problem on a generated robot, which has no
+     * file of its own, is reported at the challenge's element.
+     */
+    private static boolean fitsKit(Path folder, Map<String, String> a, SourcePos at, DiagnosticSink diags) {
+        Kit kit = Kit.read(folder.resolve(a.get("kit").trim()).normalize(), diags);
+        if (kit == null) {
+            return false;
+        }
+        String robot = a.get("robot").trim();
+        String spec = RobotConfigs.isFile(robot) ? folder.resolve(robot).normalize().toString() : robot;
+        DiagnosticList found = new DiagnosticList();
+        RobotConfig config = RobotConfigs.resolve(spec, new int[0], found);
+        if (config != null) {
+            kit.check(config, found);
+        }
+        for (Diagnostic d : found.all()) {
+            diags.report(d.pos().line() > 0 ? d : new Diagnostic(d.severity(), at,
+                    "the challenge's robot " + robot + ": " + d.message() + " (the kit rule of the challenge)"));
+        }
+        return config != null && !found.hasErrors();
     }
 
     private static void parameter(FlatXmlFile xml, FlatXmlFile.Element e, Map<String, Double> into) {

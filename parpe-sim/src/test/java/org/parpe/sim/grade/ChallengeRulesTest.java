@@ -69,4 +69,25 @@ class ChallengeRulesTest {
         assertEquals(List.of("race.xml:1:1: error: sensors lists sensor types (angle, accel, touch, dock), got 'sonar'"),
                 found.all().stream().map(d -> d.format().replace(dir.toString() + "/", "")).toList());
     }
+
+    /**
+     * The kit rule: a challenge names the class's kit and its robot must be one the class can
+     * build; a generated robot beyond the kit is refused at the challenge's element, naming the
+     * rule, and one within it is read.
+     */
+    @Test
+    void aChallengeWhoseRobotNeedsMorePartsThanTheKitIsRefusedNamingTheRule() throws Exception {
+        Files.writeString(dir.resolve("kit.xml"), "<kit>\n  <part type=\"segment\" count=\"6\"/>\n</kit>\n");
+        DiagnosticList found = new DiagnosticList();
+        assertEquals(null, ChallengeReader.read(challenge(" kit=\"kit.xml\""), found));
+        assertEquals(1, found.all().size(), found.all().toString());
+        String message = found.all().get(0).format();
+        assertTrue(message.startsWith(dir.resolve("race.xml") + ":1:1: error: the challenge's robot snake:n=8: "), message);
+        assertTrue(message.contains("beyond the kit") && message.endsWith("(the kit rule of the challenge)"), message);
+
+        Files.writeString(dir.resolve("kit.xml"), "<kit>\n  <part type=\"segment\" count=\"8\"/>\n</kit>\n");
+        DiagnosticList fits = new DiagnosticList();
+        Challenge c = ChallengeReader.read(challenge(" kit=\"kit.xml\""), fits);
+        assertTrue(c != null && fits.all().isEmpty(), fits.all().toString());
+    }
 }
