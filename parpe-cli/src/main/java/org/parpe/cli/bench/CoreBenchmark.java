@@ -15,7 +15,8 @@ import org.parpe.core.run.RunOptions;
 /**
  * Core figures: scheduler module updates per second for a 1 000-module snake whose angles are
  * expressions (goal ≥ 30 M/s on one core, issue 36), bytes allocated per tick (goal 0), and load +
- * validate time of a generated 10 000-module script (goal ≤ 200 ms).
+ * validate time of a generated 10 000-module script (goal ≤ 200 ms). The scheduler's rate is per
+ * second of the thread's CPU time (median of five rounds; {@code _wall} per wall-clock second).
  */
 public final class CoreBenchmark implements Benchmark {
     @Override
@@ -56,25 +57,32 @@ public final class CoreBenchmark implements Benchmark {
         }
         com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
         double[] rates = new double[5];
+        double[] wallRates = new double[rates.length];
         long allocBefore = mx.getThreadAllocatedBytes(Thread.currentThread().getId());
         long ticks = 0;
         for (int round = 0; round < rates.length; round++) {
-            long start = System.nanoTime();
+            // the thread's CPU time, as the simulator benchmark: on a shared machine the wall clock
+            // also counts the time other processes had the core
+            long cpu = mx.getCurrentThreadCpuTime();
+            long wall = System.nanoTime();
             long count = 0;
-            while (System.nanoTime() - start < 600_000_000L) {
+            while (mx.getCurrentThreadCpuTime() - cpu < 600_000_000L) {
                 for (int i = 0; i < 100; i++) {
                     e.step();
                 }
                 count += 100;
             }
-            rates[round] = count * (double) n / ((System.nanoTime() - start) / 1e9);
+            rates[round] = count * (double) n / ((mx.getCurrentThreadCpuTime() - cpu) / 1e9);
+            wallRates[round] = count * (double) n / ((System.nanoTime() - wall) / 1e9);
             ticks += count;
         }
         long alloc = mx.getThreadAllocatedBytes(Thread.currentThread().getId()) - allocBefore;
         Arrays.sort(rates);
+        Arrays.sort(wallRates);
         out.printf(Locale.ROOT, "scheduler.modules=%d%n", n);
         out.printf(Locale.ROOT, "scheduler.module_updates_per_s=%.0f%n", rates[rates.length / 2]);
         out.printf(Locale.ROOT, "scheduler.module_updates_per_s_min=%.0f%n", rates[0]);
+        out.printf(Locale.ROOT, "scheduler.module_updates_per_s_wall=%.0f%n", wallRates[wallRates.length / 2]);
         out.printf(Locale.ROOT, "scheduler.bytes_allocated_per_tick=%.2f%n", alloc / (double) ticks);
     }
 
