@@ -425,8 +425,8 @@ final class InstanceRun {
         if (interp[s] == Interp.STEP) {
             return g;
         }
-        // from the start of the state (p0 = 0), (p − 0) / (1 − 0) is p exactly: no division
-        double q = p0[k] == 0 ? p[k] : (p[k] - p0[k]) / (1 - p0[k]);
+        // from the start of the state (p0 = +0.0), (p − 0) / (1 − 0) is p exactly, −0.0 too: no division
+        double q = Double.doubleToRawLongBits(p0[k]) == 0 ? p[k] : (p[k] - p0[k]) / (1 - p0[k]);
         return a0[k] + (g - a0[k]) * interp[s].shape(q);
     }
 
