@@ -18,6 +18,14 @@ public interface Benchmark {
     void run(PrintStream out) throws Exception;
 
     /**
+     * The goals of the figures this benchmark prints; {@code parpe bench} shows each beside its
+     * figure with whether it holds.
+     */
+    default List<Goal> goals() {
+        return List.of();
+    }
+
+    /**
      * Options of the JVM the measurements must run in, such as the garbage collector the command
      * being measured runs with; when not empty the benchmark always gets a JVM of its own.
      */

@@ -14,13 +14,20 @@ import org.parpe.core.run.RunOptions;
 
 /**
  * Core figures: scheduler module updates per second for a 1 000-module snake whose angles are
- * expressions (goal ≥ 10 M/s on one core), bytes allocated per tick (goal 0), and load +
- * validate time of a generated 10 000-module script (goal ≤ 200 ms).
+ * expressions (goal ≥ 30 M/s on one core, issue 36), bytes allocated per tick (goal 0), and load +
+ * validate time of a generated 10 000-module script (goal ≤ 200 ms). The scheduler's rate is per
+ * second of the thread's CPU time (median of five rounds; {@code _wall} per wall-clock second).
  */
 public final class CoreBenchmark implements Benchmark {
     @Override
     public String name() {
         return "core";
+    }
+
+    @Override
+    public java.util.List<Goal> goals() {
+        return java.util.List.of(Goal.atLeast("scheduler.module_updates_per_s", 30e6),
+                Goal.atMost("scheduler.bytes_allocated_per_tick", 0), Goal.atMost("load.validate_ms_median", 200));
     }
 
     @Override
@@ -50,27 +57,35 @@ public final class CoreBenchmark implements Benchmark {
         }
         com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
         double[] rates = new double[5];
-        long allocBefore = mx.getThreadAllocatedBytes(Thread.currentThread().getId());
-        long ticks = 0;
+        double[] wallRates = new double[rates.length];
+        // the fewest bytes per tick of a round: a tick that allocates does so in every round, while a
+        // one-off allocation of the JVM on this thread (a deoptimisation after late compilation) hits one
+        double bytesPerTick = Double.POSITIVE_INFINITY;
         for (int round = 0; round < rates.length; round++) {
-            long start = System.nanoTime();
+            // the thread's CPU time, as the simulator benchmark: on a shared machine the wall clock
+            // also counts the time other processes had the core
+            long allocBefore = mx.getThreadAllocatedBytes(Thread.currentThread().getId());
+            long cpu = mx.getCurrentThreadCpuTime();
+            long wall = System.nanoTime();
             long count = 0;
-            while (System.nanoTime() - start < 600_000_000L) {
+            while (mx.getCurrentThreadCpuTime() - cpu < 600_000_000L) {
                 for (int i = 0; i < 100; i++) {
                     e.step();
                 }
                 count += 100;
             }
-            rates[round] = count * (double) n / ((System.nanoTime() - start) / 1e9);
-            ticks += count;
+            rates[round] = count * (double) n / ((mx.getCurrentThreadCpuTime() - cpu) / 1e9);
+            wallRates[round] = count * (double) n / ((System.nanoTime() - wall) / 1e9);
+            long alloc = mx.getThreadAllocatedBytes(Thread.currentThread().getId()) - allocBefore;
+            bytesPerTick = Math.min(bytesPerTick, alloc / (double) count);
         }
-        long alloc = mx.getThreadAllocatedBytes(Thread.currentThread().getId()) - allocBefore;
         Arrays.sort(rates);
+        Arrays.sort(wallRates);
         out.printf(Locale.ROOT, "scheduler.modules=%d%n", n);
         out.printf(Locale.ROOT, "scheduler.module_updates_per_s=%.0f%n", rates[rates.length / 2]);
         out.printf(Locale.ROOT, "scheduler.module_updates_per_s_min=%.0f%n", rates[0]);
-        out.printf(Locale.ROOT, "scheduler.goal_module_updates_per_s=10000000%n");
-        out.printf(Locale.ROOT, "scheduler.bytes_allocated_per_tick=%.2f%n", alloc / (double) ticks);
+        out.printf(Locale.ROOT, "scheduler.module_updates_per_s_wall=%.0f%n", wallRates[wallRates.length / 2]);
+        out.printf(Locale.ROOT, "scheduler.bytes_allocated_per_tick=%.2f%n", bytesPerTick);
     }
 
     /** A script with {@code groups} groups of {@code size} modules, sensors, states and one instance per group. */
@@ -113,7 +128,6 @@ public final class CoreBenchmark implements Benchmark {
         out.printf(Locale.ROOT, "load.script_bytes=%d%n", text.length());
         out.printf(Locale.ROOT, "load.validate_ms_median=%.1f%n", ms[ms.length / 2]);
         out.printf(Locale.ROOT, "load.validate_ms_min=%.1f%n", ms[0]);
-        out.printf(Locale.ROOT, "load.goal_ms=200%n");
     }
 
     private static Program load(String text, String name) {

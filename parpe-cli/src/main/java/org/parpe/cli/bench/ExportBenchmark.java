@@ -35,6 +35,11 @@ public final class ExportBenchmark implements Benchmark {
     }
 
     @Override
+    public List<Goal> goals() {
+        return List.of(Goal.atLeast("export.c_over_java", 3));
+    }
+
+    @Override
     public void run(PrintStream out) throws Exception {
         Program snake = load(Path.of("bench-snake.xml"), CoreBenchmark.snake(MODULES));
         double java = javaTicksPerSecond(snake);

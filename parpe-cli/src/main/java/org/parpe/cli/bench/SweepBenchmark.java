@@ -73,6 +73,12 @@ public final class SweepBenchmark implements Benchmark {
         return "sweep";
     }
 
+    /** Issue 36: with every core, at least 0.9 × the number of cores the speed of one job. */
+    @Override
+    public List<Goal> goals() {
+        return List.of(Goal.atLeast("sweep.*.speedup", 0.9 * Runtime.getRuntime().availableProcessors()));
+    }
+
     /** The collector {@code parpe sweep} and {@code parpe optimize} run with (the launcher's default). */
     @Override
     public List<String> jvmOptions() {

@@ -40,13 +40,18 @@ public final class SerialBenchmark implements Benchmark {
         return "serial";
     }
 
+    /** docs/hardware-protocol.md: the driver at 0.9 of the wire or more, at most 50 µs of CPU per frame. */
+    @Override
+    public java.util.List<org.parpe.cli.bench.Goal> goals() {
+        return java.util.List.of(org.parpe.cli.bench.Goal.atLeast("serial.driver_fraction_of_wire_*", 0.9),
+                org.parpe.cli.bench.Goal.atMost("serial.*_cpu_us_per_frame", 50));
+    }
+
     @Override
     public void run(PrintStream out) throws Exception {
         int frame = Protocol.setpointFrameLength(MODULES);
         print(out, "serial.modules", MODULES);
         print(out, "serial.frame_bytes", frame);
-        print(out, "serial.goal_fraction_of_wire", 0.9);
-        print(out, "serial.goal_cpu_us_per_frame", 50);
         codec(out);
         for (int baud : new int[] {115_200, 1_000_000}) {
             double limit = baud / 10.0 / frame;

@@ -70,6 +70,12 @@ public final class ServoBenchmark implements Benchmark {
         return "servo";
     }
 
+    /** docs/hardware-profile.md: at most 50 µs of the host's CPU per full cycle. */
+    @Override
+    public List<org.parpe.cli.bench.Goal> goals() {
+        return List.of(org.parpe.cli.bench.Goal.atMost("servo.*.cpu_us_per_cycle", 50));
+    }
+
     @Override
     public void run(PrintStream out) throws Exception {
         for (String model : new String[] {"xl430-w250", "sts3215", "scs0009"}) {

@@ -33,6 +33,17 @@ public final class SimBenchmark implements Benchmark {
         return "sim";
     }
 
+    /** Issue 36's goals: real-time factors on one core, at most 1 KB allocated per tick. */
+    @Override
+    public List<org.parpe.cli.bench.Goal> goals() {
+        return List.of(org.parpe.cli.bench.Goal.atLeast("sim.snake8.realtime_factor", 400),
+                org.parpe.cli.bench.Goal.atLeast("sim.centipede55.realtime_factor", 60),
+                org.parpe.cli.bench.Goal.atLeast("sim.snake200.realtime_factor", 20),
+                org.parpe.cli.bench.Goal.atLeast("sim.centipede55_rubble.realtime_factor", 45),
+                org.parpe.cli.bench.Goal.atLeast("sim.snake8_race_track.realtime_factor", 100),
+                org.parpe.cli.bench.Goal.atMost("sim.*.bytes_per_tick", 1024));
+    }
+
     @Override
     public void run(PrintStream out) throws Exception {
         measure(out, "snake8", "snake:n=8", snakeScript(8), null);

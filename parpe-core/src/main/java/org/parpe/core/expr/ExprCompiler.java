@@ -133,7 +133,7 @@ public final class ExprCompiler {
             case "||": return new Nodes.Or(a, b);
             default:
                 int code = List.of(Nodes.Binary.SYMBOLS).indexOf(op.getSymbol());
-                return new Nodes.Binary(code, a, b);
+                return Nodes.Binary.of(code, a, b);
         }
     }
 

@@ -142,7 +142,7 @@ final class Nodes {
     }
 
     /** Binary arithmetic and comparison operators. */
-    static final class Binary extends Node {
+    static class Binary extends Node {
         static final int ADD = 0, SUB = 1, MUL = 2, DIV = 3, MOD = 4, POW = 5,
                 LT = 6, GT = 7, LE = 8, GE = 9, EQ = 10, NE = 11;
         static final String[] SYMBOLS = {"+", "-", "*", "/", "%", "^", "<", ">", "<=", ">=", "==", "!="};
@@ -156,10 +156,27 @@ final class Nodes {
             this.right = right;
         }
 
+        /**
+         * The node for {@code left op right}: with a constant side, one that does not evaluate
+         * the constant per call (half the calls of {@code 2*pi*$phase}); the same arithmetic.
+         */
+        static Binary of(int op, Node left, Node right) {
+            if (left instanceof Const && !(right instanceof Const)) {
+                return new ConstLeft(op, left, right);
+            }
+            if (right instanceof Const && !(left instanceof Const)) {
+                return new ConstRight(op, left, right);
+            }
+            return new Binary(op, left, right);
+        }
+
         @Override
         public double eval(EvalContext c) {
             double a = left.eval(c);
-            double b = right.eval(c);
+            return apply(op, a, right.eval(c));
+        }
+
+        static double apply(int op, double a, double b) {
             switch (op) {
                 case ADD: return finite(a + b, "a sum");
                 case SUB: return finite(a - b, "a difference");
@@ -188,6 +205,36 @@ final class Nodes {
                 case EQ: return a == b ? 1 : 0;
                 default: return a != b ? 1 : 0;
             }
+        }
+    }
+
+    /** A {@link Binary} whose left side is a constant. */
+    static final class ConstLeft extends Binary {
+        private final double k;
+
+        ConstLeft(int op, Node left, Node right) {
+            super(op, left, right);
+            this.k = ((Const) left).value;
+        }
+
+        @Override
+        public double eval(EvalContext c) {
+            return apply(op, k, right.eval(c));
+        }
+    }
+
+    /** A {@link Binary} whose right side is a constant. */
+    static final class ConstRight extends Binary {
+        private final double k;
+
+        ConstRight(int op, Node left, Node right) {
+            super(op, left, right);
+            this.k = ((Const) right).value;
+        }
+
+        @Override
+        public double eval(EvalContext c) {
+            return apply(op, left.eval(c), k);
         }
     }
 

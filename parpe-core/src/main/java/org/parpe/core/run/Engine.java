@@ -386,7 +386,7 @@ public final class Engine implements Evaluator {
                 r.reanchor(commanded);
                 r.wasActive = true;
             }
-            r.prepareTick(this, r.model.period());
+            r.prepareTick(this, r.model.period(), dt);
             for (int k = 0; k < r.n; k++) {
                 if (!r.fin[k]) {
                     r.advance(this, k, dt, commanded);

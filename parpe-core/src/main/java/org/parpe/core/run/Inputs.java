@@ -21,6 +21,10 @@ final class Inputs {
     private final EvalContext ctx;
     private final SensorTable sensors;
     private final double[] overrides;
+    /** The slots a stimulus has overridden so far, in the order they were first set: each tick visits these, not every slot. */
+    private final int[] overridden;
+    private final boolean[] listed;
+    private int overriddenCount;
     private final Stimulus[] stimuli;
     private final ConcurrentLinkedQueue<Runnable> commands = new ConcurrentLinkedQueue<>();
     private int nextStimulus;
@@ -34,6 +38,8 @@ final class Inputs {
         List<Stimulus> sorted = new ArrayList<>(stimuli);
         sorted.sort((a, b) -> Double.compare(a.time(), b.time())); // stable: equal times keep file order
         this.stimuli = sorted.toArray(new Stimulus[0]);
+        this.overridden = new int[(int) Math.min(overrides.length, this.stimuli.length)];
+        this.listed = new boolean[overrides.length];
         ctx.controls = new double[program.controls().size()];
         for (int i = 0; i < ctx.controls.length; i++) {
             ctx.controls[i] = program.controls().get(i).value();
@@ -95,6 +101,10 @@ final class Inputs {
             if (s.target() == Stimulus.Kind.CONTROL) {
                 ctx.controls[s.index()] = s.value();
             } else {
+                if (!listed[s.index()]) {
+                    listed[s.index()] = true;
+                    overridden[overriddenCount++] = s.index();
+                }
                 overrides[s.index()] = s.value();
             }
         }
@@ -105,7 +115,8 @@ final class Inputs {
                 sensors.set(i, Channel.ANGLE, commanded[i]);
             }
         }
-        for (int slot = 0; slot < overrides.length; slot++) {
+        for (int i = 0; i < overriddenCount; i++) {
+            int slot = overridden[i];
             if (!Double.isNaN(overrides[slot])) {
                 sensors.setSlot(slot, overrides[slot]);
             }

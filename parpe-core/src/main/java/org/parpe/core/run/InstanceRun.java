@@ -63,6 +63,16 @@ final class InstanceRun {
     final int[] exitedFrom;
 
     private final double[] tBuf;
+    /**
+     * Per state, derived from {@link #tBuf}, {@link #sumT} and {@link #scale} whenever they
+     * change ({@link #derive}): its length this tick, the progress and the cycle position a
+     * whole tick inside it adds, and the durations of the states before it. The same
+     * operations in the same order as computed per module before, so traces stay bit for bit.
+     */
+    private final double[] dBuf;
+    private final double[] tickProgress;
+    private final double[] tickU;
+    private final double[] cumBuf;
     private double sumT;
     private double scale;
     private double limit;
@@ -125,6 +135,10 @@ final class InstanceRun {
         exitedFrom = new int[n];
         Arrays.fill(exitedFrom, -1);
         tBuf = new double[ns];
+        dBuf = new double[ns];
+        tickProgress = new double[ns];
+        tickU = new double[ns];
+        cumBuf = new double[ns];
     }
 
     /** Whether every module has finished its cycles. */
@@ -254,17 +268,33 @@ final class InstanceRun {
         }
     }
 
-    /** Evaluates the period for this tick (instance scope). */
-    void prepareTick(Evaluator ev, Expression period) {
+    /** Evaluates the period for this tick (instance scope) and, unless they are per module, the durations. */
+    void prepareTick(Evaluator ev, Expression period, double dt) {
         double per = period == null ? Double.NaN : ev.eval(period);
         if (period != null && !(per > 0)) {
             throw ev.error(period.pos(), "period of automaton '" + automaton + "' must be > 0, got " + Numbers.brief(per));
         }
+        scale = per;
         if (!timesPerModule) {
             enter(ev.ctx(), 0);
             evalTimes(ev);
+            derive(dt);
         }
-        scale = per;
+    }
+
+    /** Fills the per-state values derived from the durations, the period and the tick {@code dt}. */
+    private void derive(double dt) {
+        double cum = 0;
+        for (int j = 0; j < ns; j++) {
+            double t = tBuf[j];
+            // §13 rule 22: (T · period) / ΣT, in that order
+            double d = Double.isNaN(scale) ? t : t * scale / sumT;
+            dBuf[j] = d;
+            tickProgress[j] = dt / d;
+            tickU[j] = dt / d * t / sumT;
+            cumBuf[j] = cum;
+            cum += t;
+        }
     }
 
     /**
@@ -276,6 +306,7 @@ final class InstanceRun {
         enter(c, k);
         if (timesPerModule) {
             evalTimes(ev);
+            derive(dt);
         }
         double lim = uk[k] + limit;
         int s = st[k];
@@ -294,12 +325,12 @@ final class InstanceRun {
             p[k] = p0[k] = 0;
         }
         double r = dt;
+        boolean wholeTick = true;
         int skips = 0;
         int transitions = 0;
         while (true) {
             double t = tBuf[s];
-            // §13 rule 22: (T · period) / ΣT, in that order
-            double d = Double.isNaN(scale) ? t : t * scale / sumT;
+            double d = dBuf[s];
             if (d <= 0) {
                 if (++skips > ns) {
                     throw ev.error(model.pos(), "every state of automaton '" + automaton + "' has a duration <= 0");
@@ -312,17 +343,19 @@ final class InstanceRun {
             }
             double need = (1 - p[k]) * d;
             if (r < need - EPS) {
-                double du = r / d * t / sumT;
+                // a whole tick inside the state (the common case) was worked out for every module at once
+                double du = wholeTick ? tickU[s] : r / d * t / sumT;
                 if (u[k] + du >= lim - EPS) {
                     finishInside(ev, k, s, lim);
                     return;
                 }
-                p[k] += r / d;
+                p[k] += wholeTick ? tickProgress[s] : r / d;
                 u[k] += du;
                 break;
             }
             double du = (1 - p[k]) * t / sumT;
             r -= need;
+            wholeTick = false;
             skips = 0;
             if (++transitions > MAX_TRANSITIONS_PER_TICK) {
                 throw ev.error(model.pos(), "automaton '" + automaton + "' makes more than " + MAX_TRANSITIONS_PER_TICK
@@ -392,7 +425,8 @@ final class InstanceRun {
         if (interp[s] == Interp.STEP) {
             return g;
         }
-        double q = (p[k] - p0[k]) / (1 - p0[k]);
+        // from the start of the state (p0 = +0.0), (p − 0) / (1 − 0) is p exactly, −0.0 too: no division
+        double q = Double.doubleToRawLongBits(p0[k]) == 0 ? p[k] : (p[k] - p0[k]) / (1 - p0[k]);
         return a0[k] + (g - a0[k]) * interp[s].shape(q);
     }
 
@@ -403,10 +437,6 @@ final class InstanceRun {
     }
 
     private double phaseOf(int s, double prog) {
-        double cum = 0;
-        for (int j = 0; j < s; j++) {
-            cum += tBuf[j];
-        }
-        return (cum + prog * tBuf[s]) / sumT;
+        return (cumBuf[s] + prog * tBuf[s]) / sumT;
     }
 }

@@ -1,0 +1,88 @@
+package org.parpe.cli.bench;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.PrintStream;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.parpe.cli.Cli;
+
+/** Goals beside the figures of {@code parpe bench}, saved runs and two runs side by side (issue 36). */
+class BenchResultsTest {
+    private static final List<Goal> GOALS = List.of(Goal.atLeast("scheduler.module_updates_per_s", 30e6),
+            Goal.atMost("sim.*.bytes_per_tick", 1024), Goal.atLeast("sweep.*.speedup", 1.8));
+
+    @Test
+    void aFigureWithAGoalShowsTheGoalAndWhetherItHolds() {
+        BenchResults r = new BenchResults(GOALS);
+        assertEquals("scheduler.module_updates_per_s=31000000  # goal >= 30000000: holds",
+                r.take("scheduler.module_updates_per_s=31000000"));
+        assertEquals("sim.centipede55.bytes_per_tick=2048  # goal <= 1024: MISSED", r.take("sim.centipede55.bytes_per_tick=2048"));
+        assertEquals("sim.snake8.bytes_per_tick=0  # goal <= 1024: holds", r.take("sim.snake8.bytes_per_tick=0"));
+        assertEquals("scheduler.modules=1000", r.take("scheduler.modules=1000"));
+        assertEquals("# core", r.take("# core"));
+        assertEquals("serial.pty_fps=skipped (socat is not installed)", r.take("serial.pty_fps=skipped (socat is not installed)"));
+        // a line that already carries its verdict (the output of a forked benchmark, a saved output) is read as its figure
+        assertEquals("sim.snake8.bytes_per_tick=10  # goal <= 1024: holds", r.take("sim.snake8.bytes_per_tick=10  # goal <= 1024: holds"));
+        assertEquals("# goals: 2 held, 1 missed (sim.centipede55.bytes_per_tick); not measured: sweep.*.speedup", r.summary());
+    }
+
+    @Test
+    void aPatternStandsForAnyPartOfANameOnly() {
+        Goal g = Goal.atLeast("sweep.*.speedup", 1.8);
+        assertTrue(g.appliesTo("sweep.snake8.speedup"));
+        assertTrue(!g.appliesTo("sweep.snake8.speedup_of_medians"));
+        assertTrue(!g.appliesTo("sweepXsnake8Xspeedup"), "the dots are dots, not any character");
+    }
+
+    @Test
+    void linesPrintedByABenchmarkReachTheOutputWithTheirGoals() {
+        BenchResults r = new BenchResults(GOALS);
+        StringWriter shown = new StringWriter();
+        PrintStream out = r.printer(new PrintWriter(shown, true));
+        out.printf("scheduler.module_updates_per_s=%d%n", 12_000_000);
+        out.println("scheduler.modules=1000");
+        assertEquals("scheduler.module_updates_per_s=12000000  # goal >= 30000000: MISSED\nscheduler.modules=1000\n",
+                shown.toString().replace(System.lineSeparator(), "\n"));
+        assertEquals("scheduler.module_updates_per_s=12000000\nscheduler.modules=1000\n", r.text());
+    }
+
+    @Test
+    void twoSavedRunsSideBySide(@TempDir Path dir) throws Exception {
+        Path before = dir.resolve("before.txt");
+        Path after = dir.resolve("after.txt");
+        Files.writeString(before, "# core\nscheduler.modules=1000\nscheduler.module_updates_per_s=20000000"
+                + "  # goal >= 30000000: MISSED\nscheduler.bytes_allocated_per_tick=0.00\n", StandardCharsets.UTF_8);
+        Files.writeString(after, "scheduler.modules=1000\nscheduler.module_updates_per_s=31000000\n"
+                + "scheduler.bytes_allocated_per_tick=0.00\nexport.c_over_java=3.10\n", StandardCharsets.UTF_8);
+        Cli c = Cli.run("bench", "--compare", before.toString(), "--compare", after.toString());
+        assertEquals(0, c.code, c::toString);
+        List<String> lines = c.out.lines().map(String::stripTrailing).toList();
+        assertEquals(5, lines.size(), c::toString);
+        assertTrue(lines.get(0).matches("figure +" + java.util.regex.Pattern.quote(before.toString()) + " +"
+                + java.util.regex.Pattern.quote(after.toString()) + " +change +goal"), lines.get(0));
+        assertTrue(lines.get(1).matches("scheduler\\.modules +1000 +1000 +\\+0\\.0%"), lines.get(1));
+        assertTrue(lines.get(2).matches("scheduler\\.module_updates_per_s +20000000 +31000000 +\\+55\\.0%"
+                + " +>= 30000000: MISSED -> holds"), lines.get(2));
+        assertTrue(lines.get(3).matches("scheduler\\.bytes_allocated_per_tick +0\\.00 +0\\.00 +<= 0: holds -> holds"),
+                lines.get(3));
+        assertTrue(lines.get(4).matches("export\\.c_over_java +- +3\\.10 +>= 3: - -> holds"), lines.get(4));
+    }
+
+    @Test
+    void compareRefusesAThirdFileAndAnUnreadableOne(@TempDir Path dir) {
+        Path missing = dir.resolve("missing.txt");
+        Cli c = Cli.run("bench", "--compare", missing.toString());
+        assertEquals(2, c.code, c::toString);
+        assertTrue(c.err.contains("cannot read " + missing), c::toString);
+        Cli three = Cli.run("bench", "--compare", "a", "--compare", "b", "--compare", "c");
+        assertEquals(2, three.code, three::toString);
+    }
+}
