@@ -55,6 +55,10 @@ final class RobotExport {
         if (a != null) {
             checkNames(config, q.target(), diags);
         }
+        if (a != null && config.roots().size() > 1) {
+            diags.error(org.parpe.core.diag.SourcePos.origin(config.name()), "the configuration holds "
+                    + config.roots().size() + " robots (one per <root>); an export writes one robot");
+        }
         if (diags.hasErrors()) {
             diags.all().forEach(d -> err.println(d.format()));
             return 1;

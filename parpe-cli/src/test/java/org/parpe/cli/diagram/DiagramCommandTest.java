@@ -50,7 +50,11 @@ class DiagramCommandTest {
                 new Snapshot("gait-table-12-gait", "../examples/gait-table-12.xml", List.of("--view", "gait", "--duration", "4")),
                 new Snapshot("hello-snake-phase", "../examples/hello-snake.xml", List.of("--view", "phase")),
                 new Snapshot("island-ring", "src/test/resources/diagrams/island.xml", List.of("--view", "ring")),
-                new Snapshot("island-phase", "src/test/resources/diagrams/island.xml", List.of("--view", "phase")));
+                new Snapshot("island-phase", "src/test/resources/diagrams/island.xml", List.of("--view", "phase")),
+                // docking (PARSL 1.1 §14): the dock readings an exit waits on, the latch mark of a state
+                new Snapshot("docking-program", "../examples/docking-snake-loop.xml", List.of("--view", "program")),
+                new Snapshot("docking-ring", "src/test/resources/diagrams/docking-ring.xml",
+                        List.of("--view", "ring", "--automaton", "reach")));
     }
 
     @ParameterizedTest(name = "{0}")

@@ -155,4 +155,13 @@ class BridgeExportTest {
         assertTrue(r.err.contains("--target mjcf needs --robot"), r.err);
     }
 
+    /** A configuration of several robots (one per root, docs/simulator.md) is refused: an export writes one robot. */
+    @Test
+    void aConfigurationOfTwoRobotsIsRefused() throws Exception {
+        Path out = dir.resolve("two");
+        Cli r = Cli.run("export", "--target", "urdf", "--robot", "../examples/configs/two-snakes.xml", "--out", out.toString());
+        assertEquals(1, r.code, r.toString());
+        assertTrue(r.err.contains("the configuration holds 2 robots (one per <root>)"), r.err);
+        assertFalse(Files.exists(out), "nothing written");
+    }
 }

@@ -31,14 +31,15 @@ public final class Diagrams {
 
     /** The {@code <main>} lane, or empty for a program without {@code <main>}. */
     public static Optional<ProgramLane> program(Program p) {
-        return p.mainDef().map(Diagrams::lane);
+        return p.mainDef().map(m -> lane(m, p.moduleIds()));
     }
 
-    private static ProgramLane lane(MainDef m) {
+    private static ProgramLane lane(MainDef m, int[] ids) {
         List<ProgramLane.Step> steps = new ArrayList<>();
         for (MainEntry e : m.entries()) {
             List<String> macros = e.macros().stream().map(a -> a.name() + "=" + a.text()).toList();
-            steps.add(new ProgramLane.Step(steps.size(), e.behavior(), text(e.time()), text(e.exit()), macros, e.pos()));
+            steps.add(new ProgramLane.Step(steps.size(), e.behavior(), text(e.time()), text(e.exit()),
+                    DockReads.words(e.exit(), ids), macros, e.pos()));
         }
         return new ProgramLane(m.cyclesText() == null ? "1" : m.cyclesText(), steps, m.pos());
     }
@@ -158,7 +159,7 @@ public final class Diagrams {
             List<String> angles = a.states().get(i).angles().stream().map(Expression::text).toList();
             List<Double> pose = group == null ? List.of() : pose(p, a.states().get(i), group, on.mirror());
             arcs.add(new Ring.Arc(i, a.states().get(i).name(), t.duration().text(), text(t.exit()), angles, pose,
-                    seconds[i], plates(a.states().get(i)), at, i == n - 1 ? 1.0 : at + share, a.states().get(i).pos()));
+                    seconds[i], plates(a.states().get(i)), DockReads.words(t.exit(), p.moduleIds()), at, i == n - 1 ? 1.0 : at + share, a.states().get(i).pos()));
             at += share;
         }
         return new Ring(a.name(), a.table(), group == null ? null : (on.mirror() ? "!" : "") + group.name(),

@@ -18,6 +18,8 @@ public final class Layouts {
     static final int GREY = 0x888888;
     static final int LIGHT = 0xeeeeee;
     static final int RED = 0xcc0000;
+    /** The colour of docking (PARSL.md §14): a state's plate actions, the dock readings an exit waits on. */
+    static final int LATCH = 0x1f5fbf;
     private static final double CHAR = 0.6;
 
     private Layouts() {
@@ -30,6 +32,7 @@ public final class Layouts {
     /** The {@code <main>} lane: one box per entry, left to right, with the repeat arrow under them. */
     public static Scene program(ProgramLane lane) {
         List<List<String>> boxes = new ArrayList<>();
+        List<Integer> dockLine = new ArrayList<>();
         double total = 40;
         List<Double> widths = new ArrayList<>();
         for (ProgramLane.Step s : lane.steps()) {
@@ -38,6 +41,10 @@ public final class Layouts {
             lines.add(s.time() == null ? "until its automata end" : "time " + s.time() + " s");
             if (s.exit() != null) {
                 lines.add("exit when " + s.exit());
+            }
+            dockLine.add(s.dock().isEmpty() ? -1 : lines.size());
+            if (!s.dock().isEmpty()) {
+                lines.add(s.dock());
             }
             s.macros().forEach(lines::add);
             boxes.add(lines);
@@ -63,7 +70,8 @@ public final class Layouts {
             sc.add(new Scene.Rect(x + 3, y + 3, w - 6, boxH - 6, 0xffffff, Scene.NONE, 0, null));
             List<String> lines = boxes.get(i);
             for (int k = 0; k < lines.size(); k++) {
-                sc.add(new Scene.Text(x + 12, y + 24 + k * 18, lines.get(k), 13, -1, INK, k == 0));
+                boolean dock = k == dockLine.get(i);
+                sc.add(new Scene.Text(x + 12, y + 24 + k * 18, lines.get(k), 13, -1, dock ? LATCH : INK, k == 0));
             }
             x += w + 40;
         }

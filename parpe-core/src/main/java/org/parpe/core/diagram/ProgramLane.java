@@ -23,10 +23,12 @@ public record ProgramLane(String cycles, List<Step> steps, SourcePos pos) {
      * @param behavior the behavior invoked
      * @param time     the {@code time} expression as written, or {@code null}
      * @param exit     the {@code exit} condition as written, or {@code null}
+     * @param dock     the {@code dock} readings the exit condition waits on, in words, or empty (PARSL.md §14)
      * @param macros   each macro value as {@code name=value}, in the behavior's order
      * @param pos      the entry's element
      */
-    public record Step(int index, String behavior, String time, String exit, List<String> macros, SourcePos pos) {
+    public record Step(int index, String behavior, String time, String exit, String dock, List<String> macros,
+                       SourcePos pos) {
 
         public Step {
             macros = List.copyOf(macros);

@@ -35,12 +35,13 @@ public record Ring(String automaton, boolean table, String group, int modules, L
      *                 {@code group}, or empty when they are known only while running
      * @param seconds  its duration in seconds, or {@code NaN} when it is not a constant
      * @param plates   what entering it does to the connection plates (PARSL.md §14) in words, or empty
+     * @param dock     the {@code dock} readings its exit condition waits on, in words, or empty (§14)
      * @param from     where the arc starts, as a fraction of the circle (0 at the top, clockwise)
      * @param to       where it ends
      * @param pos      the state's definition
      */
     public record Arc(int index, String state, String duration, String exit, List<String> angles, List<Double> pose,
-                      double seconds, String plates,
+                      double seconds, String plates, String dock,
                       double from, double to, SourcePos pos) {
 
         public Arc {

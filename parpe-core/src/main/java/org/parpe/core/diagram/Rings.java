@@ -2,6 +2,7 @@ package org.parpe.core.diagram;
 
 import static org.parpe.core.diagram.Layouts.GREY;
 import static org.parpe.core.diagram.Layouts.INK;
+import static org.parpe.core.diagram.Layouts.LATCH;
 import static org.parpe.core.diagram.Layouts.PALETTE;
 import static org.parpe.core.diagram.Layouts.RED;
 
@@ -32,8 +33,6 @@ final class Rings {
     private static final double COLUMN = R1 + 40;
     private static final double GAP = 8;
     private static final int PREVIEW = 0x009e73;
-    /** The colour of a state's plate actions (PARSL.md §14). */
-    private static final int LATCH = 0x1f5fbf;
 
     /** How many times larger than at scale 1 the text is. */
     private final double t;
@@ -130,6 +129,9 @@ final class Rings {
         }
         if (a.exit() != null) {
             out.add(new Labels.Line(Labels.fit("exit when " + a.exit(), 12 * t, true, room), 12 * t, true, RED));
+        }
+        if (!a.dock().isEmpty()) {
+            out.add(new Labels.Line(Labels.fit(a.dock(), 12 * t, false, room), 12 * t, false, LATCH));
         }
         return out;
     }

@@ -38,8 +38,12 @@ public final class PlatesByHand implements PlateSink {
             SourcePos at = where[j] == null ? SourcePos.origin("run") : where[j];
             warnings.warning(at, String.format(Locale.ROOT, "at t=%.3f s module %d %s plate %d, but %s have no"
                     + " latching plates: %s by hand (told once per plate)", time, ids[j >> 1],
-                    act == ARM ? "arms" : "releases", j & 1, what,
-                    act == ARM ? "join that plate to the plate it meets" : "part that plate from the one it holds"));
+                    act == ARM ? "arms" : "releases", j & 1, what, task(act)));
         }
+    }
+
+    /** What the user does by hand for action {@code act} ({@link #ARM} or {@link #RELEASE}) on a plate. */
+    public static String task(byte act) {
+        return act == ARM ? "join that plate to the plate it meets" : "part that plate from the one it holds";
     }
 }

@@ -311,6 +311,8 @@ public final class RunActions implements ControlPanel.ControlSink {
             hardwareState = st.driver() == null ? "Hardware: not connected" : "Hardware: " + st.driver().name() + what;
         }
         servos = st.driver();
+        // the servos do not latch: the user joins and parts plates by hand while the run waits (PARSL.md §14)
+        run.plates(new HandDocking(ide, controller, run.engine().moduleIds()));
         run.closeAtEnd(() -> {
             servos = null;
             hardwareState = "Hardware: disconnected";

@@ -55,7 +55,8 @@ public final class Screenshot {
         }
     }
 
-    private static void write(ImageData data, Path file) throws IOException {
+    /** Writes {@code data} as a PNG to {@code file} (a picture drawn off screen, such as the 3D view's). */
+    public static void write(ImageData data, Path file) throws IOException {
         Path abs = file.toAbsolutePath();
         if (abs.getParent() != null) {
             Files.createDirectories(abs.getParent());

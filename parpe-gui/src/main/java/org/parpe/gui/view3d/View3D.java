@@ -447,19 +447,21 @@ public final class View3D {
     /** Points the camera at the robot from a distance that shows all of it. */
     private void frame(SimSnapshot snap) {
         framedFor = snap;
-        double minX = 1e9, minY = 1e9, maxX = -1e9, maxY = -1e9;
+        double minX = 1e9, minY = 1e9, maxX = -1e9, maxY = -1e9, maxZ = -1e9;
         for (SimBody b : snap.bodies()) {
             Vec3 p = b.position();
             minX = Math.min(minX, p.x());
             maxX = Math.max(maxX, p.x());
             minY = Math.min(minY, p.y());
             maxY = Math.max(maxY, p.y());
+            maxZ = Math.max(maxZ, p.z());
         }
         if (snap.bodies().isEmpty()) {
             return;
         }
-        double size = Math.max(0.2, Math.max(maxX - minX, maxY - minY));
-        camera.lookAt((minX + maxX) / 2, (minY + maxY) / 2, 0.03);
+        // a robot that stands up (a loop, lesson 15) is framed on its height as well as its footprint
+        double size = Math.max(0.2, Math.max(Math.max(maxX - minX, maxY - minY), maxZ));
+        camera.lookAt((minX + maxX) / 2, (minY + maxY) / 2, Math.max(0.03, maxZ / 2));
         camera.setDistance(size * 1.25 + 0.2);
     }
 }

@@ -97,6 +97,30 @@ class View3DGuiTest {
         assertEquals(5.075, view.target()[0], 1e-9, "the next run, starting 5 m away, is framed, not off the screen");
     }
 
+    /**
+     * Issue 35: a snake curled into a standing loop (lesson 15) was framed on its footprint at
+     * floor level, and the top of the loop, where its ends latch, was off the picture.
+     */
+    @Test
+    void aStandingLoopIsFramedWhole() {
+        view.setTrackRobot(false);
+        List<SimBody> bodies = new ArrayList<>();
+        int n = 10;
+        for (int i = 0; i < n; i++) {
+            double a = 2 * Math.PI * i / n;
+            bodies.add(new SimBody(i, "base", PartKind.SEGMENT_BASE, new BodyShape.Box(0.02, 0.02, 0.02),
+                    new Vec3(0.1 * Math.sin(a), 0, 0.12 - 0.1 * Math.cos(a)), Mat3.IDENTITY));
+        }
+        draw(new SimSnapshot(0, bodies, List.of(), new Vec3(0, 0, 0.12), new TreeMap<>(), new TreeMap<>(), new TreeSet<>()));
+        view.resetView();
+        draw(new SimSnapshot(0.01, bodies, List.of(), new Vec3(0, 0, 0.12), new TreeMap<>(), new TreeMap<>(),
+                new TreeSet<>()));
+        for (int i = 0; i < n; i++) {
+            org.eclipse.swt.graphics.Point p = view.screenPoint(i);
+            assertTrue(p != null && p.x >= 0 && p.x < 500 && p.y >= 0 && p.y < 400, "module " + i + " at " + p);
+        }
+    }
+
     @Test
     void moduleIdLabelsNeverOverlap() {
         view.setTrackRobot(false);

@@ -22,7 +22,7 @@ final class ConfigReader {
     private final FlatXmlFile xml;
     private final List<PartSpec> parts = new ArrayList<>();
     private final List<Connection> connections = new ArrayList<>();
-    private RootPose root;
+    private final List<RootPose> roots = new ArrayList<>();
 
     private ConfigReader(FlatXmlFile xml) {
         this.xml = xml;
@@ -50,14 +50,14 @@ final class ConfigReader {
         if (!xml.ok()) {
             return null;
         }
-        if (r.root == null && !r.parts.isEmpty()) {
-            r.root = new RootPose(r.parts.get(0).name(), 0, 0, 0, 0, 0);
+        if (r.roots.isEmpty() && !r.parts.isEmpty()) {
+            r.roots.add(new RootPose(r.parts.get(0).name(), 0, 0, 0, 0, 0));
         }
         if (r.parts.isEmpty()) {
             xml.error(xml.start(), "the configuration defines no <part>");
             return null;
         }
-        return new RobotConfig(path.toString(), r.parts, r.connections, r.root);
+        return new RobotConfig(path.toString(), r.parts, r.connections, r.roots);
     }
 
     private void part(Map<String, String> a, SourcePos at) {
@@ -117,19 +117,20 @@ final class ConfigReader {
     }
 
     private void root(Map<String, String> a, SourcePos at) {
-        if (root != null) {
-            error(at, "<root> is given twice");
-            return;
-        }
         if (!known(a, ROOT_ATTRS, "root", at) || !required(a, at, "root", "part")) {
             return;
         }
-        root = new RootPose(a.get("part"), number(a, "x", 0, at, false), number(a, "y", 0, at, false),
+        if (roots.stream().anyMatch(r -> r.part().equals(a.get("part")))) {
+            error(at, "part '" + a.get("part") + "' is already a root; each <root> starts a robot of its own");
+            return;
+        }
+        RootPose root = new RootPose(a.get("part"), number(a, "x", 0, at, false), number(a, "y", 0, at, false),
                 number(a, "roll", 0, at, false), number(a, "pitch", 0, at, false), number(a, "yaw", 0, at, false),
                 number(a, "height", RootPose.RESTING, at, false));
         if (root.height() < 0) {
             error(at, "height must be >= 0 m, got " + root.height());
         }
+        roots.add(root);
     }
 
     private boolean known(Map<String, String> a, Set<String> allowed, String element, SourcePos at) {

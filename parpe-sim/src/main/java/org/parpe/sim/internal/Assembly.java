@@ -178,10 +178,9 @@ public final class Assembly {
         if (!ok) {
             return null;
         }
-        // Placement reached every part from the root, so one connection more than a tree has closes a loop.
-        boolean loop = config.connections().size() >= parts.size();
-        return place(parts, geos, placement, first, cluster, config.root().height(), loop,
-                plateSites(config, geos, first, index));
+        // Placement reached every part from a root, so one connection more than a tree per root has closes a loop.
+        boolean loop = config.connections().size() > parts.size() - config.roots().size();
+        return place(config, geos, placement, first, cluster, loop, plateSites(config, geos, first, index));
     }
 
     /** The plates of every part relative to their pieces (a piece turns with its plate, so joint angles do not matter). */
@@ -206,8 +205,9 @@ public final class Assembly {
         return out;
     }
 
-    private static Assembly place(List<PartSpec> parts, List<PartGeometry> geos, Placement placement,
-                                  int[] first, int[] cluster, double height, boolean loop, List<PlateSite> plates) {
+    private static Assembly place(RobotConfig config, List<PartGeometry> geos, Placement placement,
+                                  int[] first, int[] cluster, boolean loop, List<PlateSite> plates) {
+        List<PartSpec> parts = config.parts();
         List<PlacedPiece> placed = new ArrayList<>();
         List<Hinge> hinges = new ArrayList<>();
         for (int i = 0; i < parts.size(); i++) {
@@ -230,7 +230,31 @@ public final class Assembly {
         int root = placement.rootIndex();
         Assembly a = new Assembly(placed, hinges, plates, clusters, first[root],
                 axleOf(parts, placed, hinges, first, root, loop));
-        return a.moved(Mat3.IDENTITY, Vec3.ZERO, new Vec3(0, 0, height - lowest(placed)));
+        int[] chainOfPiece = new int[placed.size()];
+        for (int i = 0; i < parts.size(); i++) {
+            Arrays.fill(chainOfPiece, first[i], first[i] + geos.get(i).pieces().size(), placement.chain(i));
+        }
+        double[] lift = new double[config.roots().size()];
+        for (int k = 0; k < lift.length; k++) {
+            lift[k] = config.roots().get(k).height() - lowest(placed, chainOfPiece, k);
+        }
+        return a.lifted(chainOfPiece, lift);
+    }
+
+    /** This robot with each piece of robot {@code k} (of {@code chainOfPiece}) raised by {@code lift[k]}. */
+    private Assembly lifted(int[] chainOfPiece, double[] lift) {
+        List<PlacedPiece> out = new ArrayList<>();
+        for (int i = 0; i < pieces.size(); i++) {
+            PlacedPiece pp = pieces.get(i);
+            out.add(new PlacedPiece(pp.part(), pp.def(), movedPoint(pp.position(), Mat3.IDENTITY, Vec3.ZERO,
+                    new Vec3(0, 0, lift[chainOfPiece[i]])), Geo.mul(Mat3.IDENTITY, pp.rotation()), pp.cluster()));
+        }
+        List<Hinge> outHinges = new ArrayList<>();
+        for (Hinge h : hinges) {
+            outHinges.add(new Hinge(h.moduleId(), h.base(), h.arm(), movedPoint(h.anchor(), Mat3.IDENTITY, Vec3.ZERO,
+                    new Vec3(0, 0, lift[chainOfPiece[h.base()]])), Geo.mul(Mat3.IDENTITY, h.axis()), h.angle(), h.limp()));
+        }
+        return new Assembly(out, outHinges, plates, clusterCount, rootPiece, axle);
     }
 
     /**
@@ -291,9 +315,17 @@ public final class Assembly {
 
     /** The lowest z of any piece. */
     private static double lowest(List<PlacedPiece> placed) {
+        return lowest(placed, new int[placed.size()], 0);
+    }
+
+    /** The lowest z of any piece of robot {@code k}. */
+    private static double lowest(List<PlacedPiece> placed, int[] chainOfPiece, int k) {
         double min = Double.POSITIVE_INFINITY;
-        for (PlacedPiece pp : placed) {
-            min = Math.min(min, pp.position().z() - halfHeight(pp.def().shape(), pp.rotation()));
+        for (int i = 0; i < placed.size(); i++) {
+            PlacedPiece pp = placed.get(i);
+            if (chainOfPiece[i] == k) {
+                min = Math.min(min, pp.position().z() - halfHeight(pp.def().shape(), pp.rotation()));
+            }
         }
         return min;
     }

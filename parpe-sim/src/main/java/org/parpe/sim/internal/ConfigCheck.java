@@ -40,9 +40,11 @@ final class ConfigCheck {
             error(SourcePos.NONE, "configuration '" + config.name() + "' has no parts");
             return false;
         }
-        if (!index.containsKey(config.root().part())) {
-            error(SourcePos.NONE, "root part '" + config.root().part() + "' is not defined"
-                    + Names.suggest(config.root().part(), index.keySet()));
+        for (org.parpe.sim.config.RootPose root : config.roots()) {
+            if (!index.containsKey(root.part())) {
+                error(SourcePos.NONE, "root part '" + root.part() + "' is not defined"
+                        + Names.suggest(root.part(), index.keySet()));
+            }
         }
         Map<String, SourcePos> usedPlates = new HashMap<>();
         for (Connection c : config.connections()) {

@@ -2,11 +2,16 @@ package org.parpe.sim.internal;
 
 import java.util.Arrays;
 import java.util.List;
+import org.ode4j.math.DMatrix3;
 import org.ode4j.math.DMatrix3C;
+import org.ode4j.math.DQuaternion;
+import org.ode4j.math.DVector3;
 import org.ode4j.math.DVector3C;
 import org.ode4j.ode.DBody;
 import org.ode4j.ode.DFixedJoint;
 import org.ode4j.ode.OdeHelper;
+import org.parpe.sim.Geo;
+import org.parpe.sim.Mat3;
 import org.parpe.sim.Vec3;
 
 /**
@@ -17,7 +22,9 @@ import org.parpe.sim.Vec3;
  * centres and a damped torque that squares the plates, both capped, act on the two bodies at
  * every physics step, as a latch's funnel and pins pull a plate home. Once the plates are within
  * {@link #LOCK_DISTANCE} and {@link #LOCK_ANGLE} the latch closes: an ODE fixed joint holds the
- * two bodies as they are until a release destroys it, and the two latched bodies no longer
+ * two bodies with the plates exactly aligned (the pins pull the plates home; the joint's error
+ * correction takes up the last millimetre and degrees within a few steps) until a release
+ * destroys it, and the two latched bodies no longer
  * collide with each other, as if the configuration bolted them. A plate reads
  * {@link #FREE}, {@link #IN_REACH} (a plate it could join is within {@link #REACH_DISTANCE} and
  * faces it within {@link #REACH_ANGLE}) or {@link #LATCHED}.
@@ -352,11 +359,53 @@ public final class Docking {
         DBody b = world.bodyOfPiece(sites[o].piece());
         DFixedJoint j = OdeHelper.createFixedJoint(world.odeWorld());
         j.attach(a, b);
+        // the latch's pins are home: the joint holds b where plate o sits exactly on plate s
+        DVector3 position = new DVector3(b.getPosition());
+        DQuaternion orientation = new DQuaternion(b.getQuaternion());
+        alignOnto(s, o, b);
         j.setFixed();
+        b.setPosition(position);
+        b.setQuaternion(orientation);
         joint[s] = j;
         joint[o] = j;
         partner[s] = o;
         partner[o] = s;
         world.contacts().latch(cluster[s], cluster[o]);
+    }
+
+    /**
+     * Moves body {@code b} so that plate {@code o} lies exactly on plate {@code s}: centres
+     * together, faces opposite, "up" on the nearest 90° step of {@code s}'s.
+     */
+    private void alignOnto(int s, int o, DBody b) {
+        Vec3 ns = vec(n, s);
+        Vec3 us = vec(u, s);
+        double cos = dot(u, s, o);
+        double sin = Geo.dot(Geo.cross(us, vec(u, o)), ns);
+        int steps = (int) Math.floorMod(Math.round(Math.atan2(sin, cos) / (Math.PI / 2)), 4L);
+        Vec3 side = Geo.cross(ns, us);
+        Vec3 up = switch (steps) {
+            case 0 -> us;
+            case 1 -> side;
+            case 2 -> Geo.scale(us, -1);
+            default -> Geo.scale(side, -1);
+        };
+        Vec3 face = Geo.scale(ns, -1);
+        Mat3 target = Geo.columns(face, up, Geo.cross(face, up));
+        Vec3 no = vec(n, o);
+        Vec3 uo = vec(u, o);
+        Mat3 turn = Geo.mul(target, Geo.transpose(Geo.columns(no, uo, Geo.cross(no, uo))));
+        DVector3C p = b.getPosition();
+        Vec3 moved = Geo.add(vec(c, s), Geo.mul(turn, Geo.sub(new Vec3(p.get0(), p.get1(), p.get2()), vec(c, o))));
+        DMatrix3C r = b.getRotation();
+        Mat3 rot = Geo.mul(turn, new Mat3(r.get00(), r.get01(), r.get02(), r.get10(), r.get11(), r.get12(),
+                r.get20(), r.get21(), r.get22()));
+        b.setPosition(moved.x(), moved.y(), moved.z());
+        b.setRotation(new DMatrix3(rot.m00(), rot.m01(), rot.m02(), rot.m10(), rot.m11(), rot.m12(),
+                rot.m20(), rot.m21(), rot.m22()));
+    }
+
+    private static Vec3 vec(double[] v, int site) {
+        return new Vec3(v[3 * site], v[3 * site + 1], v[3 * site + 2]);
     }
 }

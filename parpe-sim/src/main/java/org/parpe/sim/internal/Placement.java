@@ -1,5 +1,6 @@
 package org.parpe.sim.internal;
 
+import java.util.ArrayList;
 import java.util.Deque;
 import java.util.HashMap;
 import java.util.List;
@@ -16,7 +17,8 @@ import org.parpe.sim.config.RootPose;
 /**
  * Places every part of a configuration in the world at its initial joint angles, breadth first
  * from the root part along the connections. A connection between two parts already placed
- * closes a loop and must fit (plates together within 3 mm and 3°).
+ * closes a loop and must fit (plates together within 3 mm and 3°). A configuration with several
+ * roots is placed robot by robot, each from its own root's pose.
  */
 final class Placement {
     private final RobotConfig config;
@@ -25,6 +27,7 @@ final class Placement {
     private final Map<String, Integer> index = new HashMap<>();
     private final Mat3[] rotation;
     private final Vec3[] position;
+    private final int[] chain;
     private int rootIndex;
 
     Placement(RobotConfig config, List<PartGeometry> geos, DiagnosticSink diags) {
@@ -36,6 +39,7 @@ final class Placement {
         }
         rotation = new Mat3[config.parts().size()];
         position = new Vec3[config.parts().size()];
+        chain = new int[config.parts().size()];
     }
 
     Mat3 rotation(int part) {
@@ -50,21 +54,53 @@ final class Placement {
         return rootIndex;
     }
 
+    /** Which root's robot part {@code part} belongs to (an index into the configuration's roots). */
+    int chain(int part) {
+        return chain[part];
+    }
+
     boolean run() {
-        RootPose root = config.root();
-        rootIndex = index.get(root.part());
-        rotation[rootIndex] = Geo.clean(Geo.rollPitchYaw(root.roll(), root.pitch(), root.yaw()));
-        position[rootIndex] = new Vec3(root.x(), root.y(), 0);
         boolean ok = true;
-        Deque<Integer> queue = Assembly.queueOf(rootIndex);
         boolean[] done = new boolean[config.parts().size()];
         List<List<Connection>> byPart = connectionsByPart();
+        List<RootPose> roots = config.roots();
+        rootIndex = index.get(roots.get(0).part());
+        for (int k = 0; k < roots.size(); k++) {
+            RootPose root = roots.get(k);
+            int part = index.get(root.part());
+            if (done[part]) {
+                PartSpec p = config.parts().get(part);
+                diags.error(p.pos(), "part '" + p.name() + "' is a root but is connected to root part '"
+                        + roots.get(chain[part]).part() + "'; each <root> starts a robot of its own");
+                ok = false;
+                continue;
+            }
+            rotation[part] = Geo.clean(Geo.rollPitchYaw(root.roll(), root.pitch(), root.yaw()));
+            position[part] = new Vec3(root.x(), root.y(), 0);
+            ok &= placeFrom(part, k, done, byPart);
+        }
+        for (int i = 0; i < done.length; i++) {
+            if (!done[i]) {
+                PartSpec p = config.parts().get(i);
+                diags.error(p.pos(), "part '" + p.name() + "' is not connected to the root part '"
+                        + roots.get(0).part() + "'" + (roots.size() > 1 ? " or another root" : ""));
+                ok = false;
+            }
+        }
+        return ok;
+    }
+
+    /** Places every part reached from the placed part {@code start}, breadth first, as robot {@code k}. */
+    private boolean placeFrom(int start, int k, boolean[] done, List<List<Connection>> byPart) {
+        boolean ok = true;
+        Deque<Integer> queue = Assembly.queueOf(start);
         while (!queue.isEmpty()) {
             int part = queue.poll();
             if (done[part]) {
                 continue;
             }
             done[part] = true;
+            chain[part] = k;
             for (Connection c : byPart.get(part)) {
                 int a = index.get(c.from());
                 int b = index.get(c.to());
@@ -75,13 +111,6 @@ final class Placement {
                 }
             }
         }
-        for (int i = 0; i < done.length; i++) {
-            if (!done[i]) {
-                PartSpec p = config.parts().get(i);
-                diags.error(p.pos(), "part '" + p.name() + "' is not connected to the root part '" + root.part() + "'");
-                ok = false;
-            }
-        }
         return ok;
     }
 
@@ -90,9 +119,9 @@ final class Placement {
      * part grew with parts × connections, 10^8 steps for a robot of 10 000 parts.
      */
     private List<List<Connection>> connectionsByPart() {
-        List<List<Connection>> out = new java.util.ArrayList<>();
+        List<List<Connection>> out = new ArrayList<>();
         for (int i = 0; i < config.parts().size(); i++) {
-            out.add(new java.util.ArrayList<>());
+            out.add(new ArrayList<>());
         }
         for (Connection c : config.connections()) {
             int a = index.get(c.from());

@@ -32,7 +32,7 @@ class ConfigFileTest {
 
     @Test
     void theExampleConfigurationsLoad() {
-        for (String f : List.of("wheel6.xml", "tee-snake.xml")) {
+        for (String f : List.of("wheel6.xml", "tee-snake.xml", "two-snakes.xml")) {
             DiagnosticList d = new DiagnosticList();
             Path p = Path.of("..", "examples", "configs", f);
             RobotConfig c = RobotConfigs.resolve(p.toString(), new int[0], d);
@@ -77,6 +77,53 @@ class ConfigFileTest {
                 """);
         String all = e.toString();
         assertTrue(all.contains("did you mean 'tail'"), all);
+    }
+
+    /** Several roots, one robot each (docs/simulator.md, "Configuration files"): each placed at its own pose. */
+    @Test
+    void eachRootPlacesARobotOfItsOwn() throws IOException {
+        Path f = dir.resolve("two.xml");
+        Files.writeString(f, """
+                <robot-config>
+                  <part name="a" type="segment" id="0"/>
+                  <part name="b" type="segment" id="1"/>
+                  <root part="a" x="0" y="0"/>
+                  <root part="b" x="1" y="0.5" yaw="90"/>
+                </robot-config>
+                """);
+        DiagnosticList d = new DiagnosticList();
+        RobotConfig c = RobotConfigs.resolve(f.toString(), new int[0], d);
+        assertNotNull(c, d.all().toString());
+        assertEquals(List.of("a", "b"), c.roots().stream().map(RootPose::part).toList());
+        assertEquals(1.0, c.roots().get(1).x());
+        assertDoesNotThrow(() -> SimTarget.blueprint(f.toString(), new int[0]));
+    }
+
+    @Test
+    void rootsThatShareARobotOrLeaveAPartOutAreLocated() throws IOException {
+        String twice = errors("twice.xml", """
+                <robot-config>
+                  <part name="a" type="segment" id="0"/>
+                  <part name="b" type="segment" id="1"/>
+                  <connect from="a.1" to="b.0"/>
+                  <root part="a"/>
+                  <root part="a" x="1"/>
+                </robot-config>
+                """).toString();
+        assertTrue(twice.contains("twice.xml:6:3: error: part 'a' is already a root"), twice);
+        String joined = errors("joined.xml", """
+                <robot-config>
+                  <part name="a" type="segment" id="0"/>
+                  <part name="b" type="segment" id="1"/>
+                  <part name="c" type="foot"/>
+                  <connect from="a.1" to="b.0"/>
+                  <root part="a"/>
+                  <root part="b" x="1"/>
+                </robot-config>
+                """).toString();
+        assertTrue(joined.contains("joined.xml:3:3: error: part 'b' is a root but is connected to root part 'a'"), joined);
+        assertTrue(joined.contains("joined.xml:4:3: error: part 'c' is not connected to the root part 'a' or another root"),
+                joined);
     }
 
     @Test
