@@ -2,6 +2,7 @@ package org.parpe.core.print;
 
 import java.util.List;
 import java.util.stream.Collectors;
+import org.parpe.core.edit.ElementWriter;
 import org.parpe.core.expr.Expression;
 import org.parpe.core.model.Automaton;
 import org.parpe.core.model.Behavior;
@@ -195,7 +196,7 @@ public final class ProgramPrinter {
         }
         line(2, "<" + a.name() + times + ">");
         for (StateDef row : a.states()) {
-            line(3, escape(row.angles().stream().map(Expression::text).collect(Collectors.joining(", "))));
+            line(3, ElementWriter.text(row.angles().stream().map(Expression::text).collect(Collectors.joining(", "))));
         }
         line(2, "</" + a.name() + ">");
     }
@@ -220,16 +221,7 @@ public final class ProgramPrinter {
     }
 
     private static String attr(String name, String value) {
-        return " " + name + "=\"" + attributeText(value) + "\"";
-    }
-
-    /** {@code value} written inside a double-quoted attribute: {@code & < > "} as entities. */
-    public static String attributeText(String value) {
-        return escape(value).replace("\"", "&quot;");
-    }
-
-    private static String escape(String s) {
-        return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;");
+        return " " + name + "=\"" + ElementWriter.attributeText(value) + "\"";
     }
 
     private void line(int depth, String text) {

@@ -11,6 +11,7 @@ import org.parpe.core.diag.Severity;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.diagram.BehaviorEdits;
 import org.parpe.core.diagram.DiagramEdits;
+import org.parpe.core.edit.ScriptEdits;
 import org.parpe.core.diagram.Diagrams;
 import org.parpe.core.diagram.Gait;
 import org.parpe.core.diagram.GaitDiagram;
@@ -21,9 +22,9 @@ import org.parpe.core.diagram.PhaseWheel;
 import org.parpe.core.diagram.ProgramLane;
 import org.parpe.core.diagram.Ring;
 import org.parpe.core.diagram.Scene;
-import org.parpe.core.diagram.SectionEdits;
+import org.parpe.core.edit.SectionEdits;
 import org.parpe.core.diagram.Swimlanes;
-import org.parpe.core.diagram.TextEdit;
+import org.parpe.core.edit.TextEdit;
 import org.parpe.core.diagram.Workbench;
 import org.parpe.core.lang.Numbers;
 import org.parpe.core.load.LoadResult;
@@ -285,7 +286,7 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
             if (mine(s.pos(), file)) {
                 targets.put(s.pos(), new Target("the " + Numbers.ordinal(s.index()) + " <main> entry: " + s.behavior(), List.of(
                         new Field("time", s.time() == null ? "" : s.time(),
-                                v -> DiagramEdits.setAttribute(text, s.pos(), "time", v))), s.index(),
+                                v -> ScriptEdits.setAttribute(text, s.pos(), "time", v))), s.index(),
                         to -> DiagramEdits.moveEntry(text, main, s.index(), to),
                         List.of(new Action("Remove entry", List.of(), v -> BehaviorEdits.removeEntry(text, main, s.index())))));
             }
@@ -369,11 +370,11 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
     private static Target instanceTarget(String text, Path file, String title, SourcePos pos, String phase, String offset,
                                          String period, Group g) {
         List<Field> fields = new ArrayList<>(List.of(
-                new Field("phase", phase == null ? "" : phase, v -> DiagramEdits.setAttribute(text, pos, "phase", v)),
-                new Field("offset", offset == null ? "" : offset, v -> DiagramEdits.setAttribute(text, pos, "offset", v)),
-                new Field("period", period == null ? "" : period, v -> DiagramEdits.setAttribute(text, pos, "period", v))));
+                new Field("phase", phase == null ? "" : phase, v -> ScriptEdits.setAttribute(text, pos, "phase", v)),
+                new Field("offset", offset == null ? "" : offset, v -> ScriptEdits.setAttribute(text, pos, "offset", v)),
+                new Field("period", period == null ? "" : period, v -> ScriptEdits.setAttribute(text, pos, "period", v))));
         if (g != null && !g.implicit() && mine(g.pos(), file)) {
-            fields.add(new Field("elements", g.elements(), v -> DiagramEdits.setAttribute(text, g.pos(), "elements", v)));
+            fields.add(new Field("elements", g.elements(), v -> ScriptEdits.setAttribute(text, g.pos(), "elements", v)));
         }
         return new Target(title, fields);
     }

@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import org.parpe.core.diagram.DiagramEdits;
+import org.parpe.core.edit.ScriptEdits;
 import org.parpe.core.diagram.Ring;
 import org.parpe.core.diagram.RingEdits;
 import org.parpe.core.model.Automaton;
@@ -31,7 +32,7 @@ final class StateTargets {
         fields.add(new Field("exit", arc.exit() == null ? "" : arc.exit(), v -> RingEdits.setExit(text, a, k, v)));
         p.state(arc.state()).filter(d -> Projection.mine(d.pos(), file)).ifPresent(d -> fields.add(new Field("angles",
                 d.pos().span().value("angles") == null ? "" : String.join(", ", arc.angles()),
-                v -> DiagramEdits.setAttribute(text, d.pos(), "angles", v))));
+                v -> ScriptEdits.setAttribute(text, d.pos(), "angles", v))));
         List<Action> actions = new ArrayList<>();
         if (k > 0) {
             actions.add(new Action("Earlier", List.of(), v -> RingEdits.moveState(text, a, k, k - 1)));

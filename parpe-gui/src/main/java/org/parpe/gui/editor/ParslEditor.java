@@ -29,6 +29,8 @@ import org.eclipse.swt.graphics.GC;
 import org.eclipse.swt.graphics.Rectangle;
 import org.eclipse.swt.widgets.Canvas;
 import org.eclipse.swt.widgets.Composite;
+import org.parpe.core.edit.Replacement;
+import org.parpe.core.edit.TextEdit;
 import org.parpe.core.diag.Diagnostic;
 
 /**
@@ -104,8 +106,8 @@ public final class ParslEditor {
      *
      * @throws BadLocationException when the text has changed since the edit was made
      */
-    public int apply(org.parpe.core.diagram.TextEdit edit) throws BadLocationException {
-        java.util.List<org.parpe.core.diagram.TextEdit.Replacement> rs = edit.replacements();
+    public int apply(TextEdit edit) throws BadLocationException {
+        List<Replacement> rs = edit.replacements();
         if (rs.isEmpty()) {
             return -1;
         }

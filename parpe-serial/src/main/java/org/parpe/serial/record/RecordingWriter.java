@@ -1,6 +1,8 @@
 package org.parpe.serial.record;
 
+import java.util.List;
 import java.util.Locale;
+import org.parpe.core.edit.ElementWriter;
 
 /**
  * Writes a {@link PoseRecording} as a PARSL file (PARSL.md §12): a robot with the recorded group,
@@ -71,8 +73,13 @@ public final class RecordingWriter {
         for (double ti : t) {
             cycle += ti;
         }
-        String play = (rate == 1 ? "" : String.format(Locale.ROOT, " period=\"%.4f\"", cycle / rate))
-                + (loop ? "" : " cycles=\"1\"");
+        ElementWriter instance = ElementWriter.tag("rec_" + g).attr("group", g);
+        if (rate != 1) {
+            instance.attr("period", String.format(Locale.ROOT, "%.4f", cycle / rate));
+        }
+        if (!loop) {
+            instance.attr("cycles", "1");
+        }
         return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
                 + "<!-- Pose recording (PARSL.md section 12): " + r.size() + " poses of group " + g + " (modules "
                 + ids + ")" + comment(origin) + ".\n"
@@ -80,12 +87,13 @@ public final class RecordingWriter {
                 + "     play_" + g + " plays it " + (loop ? "over and over" : "once") + "; include this file to play rec_" + g
                 + " on other groups. -->\n"
                 + "<program>\n"
-                + "  <robot>\n    <structure>\n      <" + g + " elements=\"" + ids + "\"/>\n    </structure>\n  </robot>\n"
-                + "  <automata>\n    <rec_" + g + " times=\"" + times + "\">\n" + rows + "    </rec_" + g + ">\n"
-                + "  </automata>\n"
-                + "  <behaviors>\n    <play_" + g + ">\n      <rec_" + g + " group=\"" + g + "\"" + play + "/>\n"
-                + "    </play_" + g + ">\n  </behaviors>\n"
-                + "  <main>\n    <play_" + g + "/>\n  </main>\n"
+                + "  <robot>\n    <structure>\n      " + ElementWriter.tag(g).attr("elements", ids.toString()).empty()
+                + "\n    </structure>\n  </robot>\n"
+                + "  <automata>\n    " + ElementWriter.tag("rec_" + g).attr("times", times.toString()).open() + "\n" + rows
+                + "    " + ElementWriter.close("rec_" + g) + "\n  </automata>\n"
+                + "  <behaviors>\n    " + ElementWriter.tag("play_" + g).lines("    ", List.of(instance.empty()))
+                + "\n  </behaviors>\n"
+                + "  <main>\n    " + ElementWriter.tag("play_" + g).empty() + "\n  </main>\n"
                 + "</program>\n";
     }
 

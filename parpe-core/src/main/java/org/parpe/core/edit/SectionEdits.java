@@ -1,4 +1,4 @@
-package org.parpe.core.diagram;
+package org.parpe.core.edit;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -46,7 +46,7 @@ public final class SectionEdits {
         if (!blank(text)) {
             throw new IllegalArgumentException("the file has a script already; a robot is started only in an empty file");
         }
-        BehaviorEdits.name(group, "group");
+        ElementWriter.name(group, "group");
         if (modules < 1 || modules > MAX_MODULES) {
             throw new IllegalArgumentException("a robot has 1 to " + MAX_MODULES + " modules, not " + modules);
         }
@@ -66,7 +66,7 @@ public final class SectionEdits {
      * {@code element} gives the element's text for the indentation of its first line (its
      * further lines carry that indentation themselves).
      */
-    static TextEdit add(String text, String file, Function<String, String> element, String... path) {
+    public static TextEdit add(String text, String file, Function<String, String> element, String... path) {
         DiagnosticList diags = new DiagnosticList();
         XElement parent = XmlReader.read(new SourceText(file, text), diags);
         if (parent == null) {
@@ -87,11 +87,11 @@ public final class SectionEdits {
         SourceSpan ps = parent.span();
         if (!kids.isEmpty()) {
             SourceSpan last = kids.get(kids.size() - 1).span();
-            return TextEdit.of(last.end(), 0, "\n" + BehaviorEdits.indent(text, last.start())
-                    + element.apply(BehaviorEdits.indent(text, last.start())));
+            return TextEdit.of(last.end(), 0, "\n" + ElementWriter.indent(text, last.start())
+                    + element.apply(ElementWriter.indent(text, last.start())));
         }
-        String inner = BehaviorEdits.indent(text, ps.start()) + "  ";
-        return BehaviorEdits.appendChild(text, ps, parent.name(), null, element.apply(inner));
+        String inner = ElementWriter.indent(text, ps.start()) + "  ";
+        return ScriptEdits.appendChild(text, ps, parent.name(), null, element.apply(inner));
     }
 
     /**
@@ -133,15 +133,15 @@ public final class SectionEdits {
             }
         }
         XElement like = before != null ? before : kids.isEmpty() ? null : kids.get(0);
-        String indent = like == null ? BehaviorEdits.indent(text, parent.span().start()) + "  "
-                : BehaviorEdits.indent(text, like.span().start());
+        String indent = like == null ? ElementWriter.indent(text, parent.span().start()) + "  "
+                : ElementWriter.indent(text, like.span().start());
         if (before != null) {
             return TextEdit.of(before.span().end(), 0, "\n" + indent + nested.apply(indent));
         }
         if (like != null) {
             return TextEdit.of(like.span().start(), 0, nested.apply(indent) + "\n" + indent);
         }
-        return BehaviorEdits.appendChild(text, parent.span(), parent.name(), null, nested.apply(indent));
+        return ScriptEdits.appendChild(text, parent.span(), parent.name(), null, nested.apply(indent));
     }
 
     /**
@@ -178,7 +178,7 @@ public final class SectionEdits {
         if (program == null) {
             throw new IllegalArgumentException("the script is not well-formed XML; mend it first (see Problems)");
         }
-        List<TextEdit.Replacement> out = new ArrayList<>();
+        List<Replacement> out = new ArrayList<>();
         for (XElement s : sections) {
             XElement have = child(program, s.name());
             if (have == null) {
