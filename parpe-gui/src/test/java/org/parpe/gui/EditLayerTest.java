@@ -56,4 +56,19 @@ class EditLayerTest {
             .and().doNotHaveFullyQualifiedName("org.parpe.sim.world.WorldReader")
             .and().doNotHaveFullyQualifiedName("org.parpe.gui.help.CommandNames")
             .should().dependOnClassesThat().resideInAPackage("java.util.regex..");
+
+    /**
+     * Issue 32, item 3 ("resolve once"): the loader binds every instance to its automaton and
+     * group and every {@code <main>} entry to its behavior, so no later stage looks a name up in
+     * the program again. Looking up is left to loading, to editing (is a new name free?) and to
+     * the places that resolve a name the user typed or chose (a command-line option, a
+     * dialog's field, a view's chooser).
+     */
+    @ArchTest
+    static final ArchRule NAMES_ARE_LOOKED_UP_ONLY_BY_LOADING_EDITING_AND_USER_INPUT = classes()
+            .that().resideInAPackage("org.parpe..")
+            .and().resideOutsideOfPackages("org.parpe.core.load..", "org.parpe.core.model..", "org.parpe.core.edit..")
+            .and().haveSimpleNameNotEndingWith("Edits")
+            .and(DescribedPredicate.not(NameLookups.RESOLVE_USER_INPUT))
+            .should(NameLookups.NOT_LOOK_A_NAME_UP);
 }

@@ -72,8 +72,7 @@ public final class GaitTableExpansion {
      * or a profile other than linear, and {@code start} and {@code cycles} must not be written.
      */
     public static Table expand(Program p, Instance in, Group g) {
-        Automaton a = p.automaton(in.automaton()).orElseThrow(() -> new IllegalArgumentException(
-                "no automaton '" + in.automaton() + "'"));
+        Automaton a = in.automaton();
         if (a.table()) {
             throw new IllegalArgumentException("'" + a.name() + "' is a gait table already");
         }
@@ -143,7 +142,7 @@ public final class GaitTableExpansion {
         var s = ScriptEdits.span(in.pos());
         List<Replacement> edits = new ArrayList<>(PaletteEdits.addGaitTable(text, p, name, t.rowTexts(), t.times())
                 .replacements());
-        edits.addAll(ScriptEdits.rename(text, s, in.automaton(), ElementWriter.name(name, "gait table")));
+        edits.addAll(ScriptEdits.rename(text, s, in.name(), ElementWriter.name(name, "gait table")));
         for (String attr : List.of("phase", "offset")) {
             if (s.value(attr) != null) {
                 edits.addAll(ScriptEdits.setAttribute(text, in.pos(), attr, "0").replacements());
@@ -195,7 +194,7 @@ public final class GaitTableExpansion {
      * renamed, its {@code phase} set; offset and period stay).
      */
     public static TextEdit writeCycle(String text, Program p, Instance in, Group g, String name) {
-        Automaton table = p.automaton(in.automaton()).orElseThrow();
+        Automaton table = in.automaton();
         Cycle c = cycleOf(table, g.size());
         ElementWriter.name(name, "automaton");
         List<Double> values = new ArrayList<>();
@@ -229,7 +228,7 @@ public final class GaitTableExpansion {
         } else {
             edits.add(new Replacement(p.states().get(p.states().size() - 1).pos().span().end(), 0, poses.toString()));
         }
-        edits.addAll(ScriptEdits.rename(text, ScriptEdits.span(in.pos()), in.automaton(), name));
+        edits.addAll(ScriptEdits.rename(text, ScriptEdits.span(in.pos()), in.name(), name));
         edits.addAll(ScriptEdits.setAttribute(text, in.pos(), "phase", Numbers.format(c.phase())).replacements());
         return new TextEdit(edits);
     }

@@ -179,7 +179,7 @@ public final class ProgramPrinter {
                 line(depth, "</if>");
             } else {
                 Instance i = (Instance) item;
-                line(depth, "<" + i.automaton() + attr("group", i.group()) + opt("phase", i.phase())
+                line(depth, "<" + i.name() + attr("group", i.group()) + opt("phase", i.phase())
                         + opt("offset", i.offset()) + opt("period", i.period()) + opt("start", i.start())
                         + opt("cycles", i.cycles()) + "/>");
             }

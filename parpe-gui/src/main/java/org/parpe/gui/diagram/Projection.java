@@ -327,10 +327,11 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         for (Swimlanes.Lane l : s.lanes()) {
             for (Swimlanes.Bar b : l.bars()) {
                 if (mine(b.pos(), file)) {
+                    Instance in = behavior.instances().get(b.index());
+                    Group g = Diagrams.groupOf(p, behavior, in).orElse(null);
                     targets.put(b.pos(), instanceTarget(text, file, "instance " + b.index() + ": " + b.automaton() + " on "
-                            + (b.mirrored() ? "!" : "") + l.group(), b.pos(), b.phase(), b.offset(), b.period(),
-                            p.group(l.group()).orElse(null)).with(expand(text, p, behavior.instances().get(b.index()),
-                            p.group(l.group()).orElse(null))));
+                            + (b.mirrored() ? "!" : "") + l.group(), b.pos(), b.phase(), b.offset(), b.period(), g)
+                            .with(expand(text, p, in, g)));
                 }
             }
         }
@@ -358,7 +359,7 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         if (g == null) {
             return List.of();
         }
-        if (p.automaton(in.automaton()).map(Automaton::table).orElse(false)) {
+        if (in.automaton().table()) {
             return List.of(new Action("Make phase automaton", List.of("automaton"),
                     v -> GaitTableExpansion.writeCycle(text, p, in, g, v.get(0))));
         }
@@ -395,14 +396,13 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
             for (Ring.Arc arc : r.arcs()) {
                 targets.putIfAbsent(arc.pos(), a.table() ? new Target("the " + Numbers.ordinal(arc.index()) + " row of " + a.name(), List.of(
                         new Field("duration", arc.duration(), v -> DiagramEdits.retime(text, a, arc.index(), v))))
-                        : StateTargets.of(text, file, p, a, arc));
+                        : StateTargets.of(text, file, a, arc));
             }
         }
         List<List<String>> automata = new ArrayList<>();
         if (p.main() != null) {
             for (var e : p.main().entries()) {
-                automata.add(p.behavior(e.behavior()).map(b -> b.instances().stream().map(Instance::automaton).toList())
-                        .orElse(List.of()));
+                automata.add(e.definition().instances().stream().map(Instance::name).toList());
             }
         }
         return new Projection(text, file, View.RING, names, chosen, Layouts.ring(r), targets, islands(r.islands().size()),
@@ -415,7 +415,7 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         for (Behavior b : p.behaviors()) {
             List<Instance> list = b.instances();
             for (int i = 0; i < list.size(); i++) {
-                String label = b.name() + ", " + Numbers.ordinal(i) + ": " + list.get(i).automaton() + " on " + list.get(i).group();
+                String label = b.name() + ", " + Numbers.ordinal(i) + ": " + list.get(i).name() + " on " + list.get(i).group();
                 all.put(label, list.get(i));
                 of.put(label, b);
             }
