@@ -223,8 +223,8 @@ public final class GaitTableExpansion {
         if (fresh) {
             int close = text.indexOf("</automata>", last.end());
             String outer = indent.length() >= 2 ? indent.substring(2) : "";
-            edits.add(new Replacement(close + "</automata>".length(), 0, "\n" + outer + "<states>" + poses + "\n" + outer
-                    + "</states>"));
+            edits.add(new Replacement(close + "</automata>".length(), 0, "\n" + outer + ElementWriter.tag("states").open() + poses
+                    + "\n" + outer + ElementWriter.close("states")));
         } else {
             edits.add(new Replacement(p.states().get(p.states().size() - 1).pos().span().end(), 0, poses.toString()));
         }

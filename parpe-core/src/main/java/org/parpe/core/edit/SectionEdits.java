@@ -55,8 +55,9 @@ public final class SectionEdits {
             end--;
         }
         String elements = modules == 1 ? "0" : "0.." + (modules - 1);
-        String program = String.join("\n", "<program>", "  <robot>", "    <structure>",
-                "      <" + group + " elements=\"" + elements + "\"/>", "    </structure>", "  </robot>", "</program>", "");
+        String robot = ElementWriter.tag("robot").lines("  ", List.of(ElementWriter.tag("structure").lines("    ",
+                List.of(ElementWriter.tag(group).attr("elements", elements).empty()))));
+        String program = ElementWriter.tag(Vocabulary.ROOT).lines("", List.of(robot)) + "\n";
         return TextEdit.of(end, text.length() - end, (end == 0 ? "" : "\n") + program);
     }
 
@@ -106,8 +107,8 @@ public final class SectionEdits {
             StringBuilder close = new StringBuilder();
             String at = indent;
             for (int k = level; k < path.length; k++) {
-                open.append(k == level ? "" : "\n" + at).append('<').append(path[k]).append('>');
-                close.insert(0, "\n" + at + "</" + path[k] + ">");
+                open.append(k == level ? "" : "\n" + at).append(ElementWriter.tag(path[k]).open());
+                close.insert(0, "\n" + at + ElementWriter.close(path[k]));
                 at += "  ";
             }
             return open + "\n" + at + element.apply(at) + close;
@@ -155,7 +156,8 @@ public final class SectionEdits {
      * @throws IllegalArgumentException when the script is not well-formed, or a section is read from another file
      */
     public static TextEdit placeSections(String text, String file, String snippet) {
-        String wrapped = "<" + Vocabulary.ROOT + ">\n" + snippet + "\n</" + Vocabulary.ROOT + ">";
+        String wrapped = ElementWriter.tag(Vocabulary.ROOT).open() + "\n" + snippet + "\n"
+                + ElementWriter.close(Vocabulary.ROOT);
         XElement root = XmlReader.read(new SourceText("snippet", wrapped), new DiagnosticList());
         List<XElement> sections = root == null ? List.of() : root.children();
         if (sections.size() == 1 && sections.get(0).name().equals(Vocabulary.ROOT)) {
@@ -165,14 +167,15 @@ public final class SectionEdits {
             return null;
         }
         if (blank(text)) {
-            StringBuilder program = new StringBuilder("<" + Vocabulary.ROOT + ">\n");
+            StringBuilder program = new StringBuilder(ElementWriter.tag(Vocabulary.ROOT).open() + "\n");
             sections.stream().sorted(java.util.Comparator.comparingInt(s -> ORDER.indexOf(s.name())))
                     .forEach(s -> program.append("  ").append(reindent(wrapped, s.span().start(), s.span().end(), "  ")).append('\n'));
             int end = text.length();
             while (end > 0 && Character.isWhitespace(text.charAt(end - 1))) {
                 end--;
             }
-            return TextEdit.of(end, text.length() - end, (end == 0 ? "" : "\n") + program + "</" + Vocabulary.ROOT + ">\n");
+            return TextEdit.of(end, text.length() - end, (end == 0 ? "" : "\n") + program
+                    + ElementWriter.close(Vocabulary.ROOT) + "\n");
         }
         XElement program = XmlReader.read(new SourceText(file, text), new DiagnosticList());
         if (program == null) {
