@@ -577,7 +577,7 @@ public final class IdeWindow implements HardwareHost {
     /** Jumps the editor to {@code pos} (if it is in this file). */
     void reveal(SourcePos pos) {
         if (pos != null && pos.line() > 0 && sameFile(pos, files.pathForLoading().toAbsolutePath().normalize())) {
-            editor.reveal(pos.line(), pos.column());
+            editor.reveal(pos);
         }
     }
 
