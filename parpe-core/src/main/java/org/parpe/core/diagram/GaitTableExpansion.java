@@ -3,9 +3,11 @@ package org.parpe.core.diagram;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.TreeSet;
+import org.parpe.core.diag.SourceSpan;
 import org.parpe.core.edit.ElementWriter;
 import org.parpe.core.edit.Replacement;
 import org.parpe.core.edit.ScriptEdits;
+import org.parpe.core.edit.SectionEdits;
 import org.parpe.core.edit.TextEdit;
 import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.Automaton;
@@ -221,9 +223,9 @@ public final class GaitTableExpansion {
                     .attr("angles", Numbers.format(values.get(i))).empty());
         }
         if (fresh) {
-            int close = text.indexOf("</automata>", last.end());
+            SourceSpan automata = SectionEdits.sectionAt(text, p.file(), "automata", last.start());
             String outer = indent.length() >= 2 ? indent.substring(2) : "";
-            edits.add(new Replacement(close + "</automata>".length(), 0, "\n" + outer + ElementWriter.tag("states").open() + poses
+            edits.add(new Replacement(automata.end(), 0, "\n" + outer + ElementWriter.tag("states").open() + poses
                     + "\n" + outer + ElementWriter.close("states")));
         } else {
             edits.add(new Replacement(p.states().get(p.states().size() - 1).pos().span().end(), 0, poses.toString()));

@@ -212,6 +212,20 @@ public final class SectionEdits {
         return out.toString();
     }
 
+    /**
+     * The span of the section {@code name} (a child of the root) that holds {@code offset}, or
+     * null when there is none (or the text is not well-formed).
+     */
+    public static SourceSpan sectionAt(String text, String file, String name, int offset) {
+        XElement root = XmlReader.read(new SourceText(file, text), new DiagnosticList());
+        for (XElement s : root == null ? List.<XElement>of() : root.children()) {
+            if (s.name().equals(name) && s.span().start() <= offset && offset < s.span().end()) {
+                return s.span();
+            }
+        }
+        return null;
+    }
+
     private static XElement child(XElement parent, String name) {
         return parent.children().stream().filter(c -> c.name().equals(name)).findFirst().orElse(null);
     }
