@@ -1,13 +1,19 @@
 package org.parpe.cli;
 
+import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.classes;
 import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.noClasses;
 import static com.tngtech.archunit.library.Architectures.layeredArchitecture;
 import static com.tngtech.archunit.library.dependencies.SlicesRuleDefinition.slices;
 
+import com.tngtech.archunit.core.domain.JavaClass;
+import com.tngtech.archunit.core.domain.JavaMethodCall;
 import com.tngtech.archunit.core.importer.ImportOption;
 import com.tngtech.archunit.junit.AnalyzeClasses;
 import com.tngtech.archunit.junit.ArchTest;
+import com.tngtech.archunit.lang.ArchCondition;
 import com.tngtech.archunit.lang.ArchRule;
+import com.tngtech.archunit.lang.ConditionEvents;
+import com.tngtech.archunit.lang.SimpleConditionEvent;
 
 /**
  * The module layering of STYLE.md ("One direction of dependencies"), over every module this one
@@ -57,4 +63,28 @@ class ModuleLayersTest {
     @ArchTest
     static final ArchRule NO_SWT_BELOW_THE_IDE = noClasses().that().resideInAPackage("org.parpe..")
             .should().dependOnClassesThat().resideInAPackage("org.eclipse..");
+
+    /**
+     * Issue 32, item 3 ("resolve once", as the IDE's EditLayerTest checks for its modules): the
+     * loader binds instances and entries, so no command looks a name up in the program but to
+     * resolve a name the user gave as an option ({@code parpe diagram --behavior/--automaton},
+     * {@code parpe record --group}).
+     */
+    @ArchTest
+    static final ArchRule COMMANDS_LOOK_UP_ONLY_THE_NAMES_THE_USER_GAVE = classes().that().resideInAPackage("org.parpe.cli..")
+            .and().doNotHaveFullyQualifiedName("org.parpe.cli.diagram.DiagramCommand")
+            .and().doNotHaveFullyQualifiedName("org.parpe.cli.hw.RecordCommand")
+            .should(new ArchCondition<JavaClass>("not look a name up in the program") {
+                @Override
+                public void check(JavaClass c, ConditionEvents events) {
+                    for (JavaMethodCall call : c.getMethodCallsFromSelf()) {
+                        String owner = call.getTargetOwner().getName();
+                        if ((owner.equals("org.parpe.core.model.Program") || owner.equals("org.parpe.core.model.Robot"))
+                                && call.getTarget().getRawParameterTypes().size() == 1
+                                && call.getTarget().getRawParameterTypes().get(0).isEquivalentTo(String.class)) {
+                            events.add(SimpleConditionEvent.violated(c, call.getDescription()));
+                        }
+                    }
+                }
+            });
 }

@@ -29,6 +29,7 @@ class ArchitectureTest {
             .layer("expr").definedBy("org.parpe.core.expr..")
             .layer("model").definedBy("org.parpe.core.model..")
             .layer("load").definedBy("org.parpe.core.load..")
+            .layer("edit").definedBy("org.parpe.core.edit..")
             .layer("print").definedBy("org.parpe.core.print..")
             .layer("run").definedBy("org.parpe.core.run..")
             .layer("export").definedBy("org.parpe.core.export..")
@@ -39,13 +40,15 @@ class ArchitectureTest {
             .whereLayer("export").mayNotBeAccessedByAnyLayer()
             .whereLayer("load").mayOnlyBeAccessedByLayers("diagram")
             .whereLayer("print").mayOnlyBeAccessedByLayers("diagram")
+            .whereLayer("edit").mayOnlyBeAccessedByLayers("print", "diagram")
             .whereLayer("run").mayOnlyBeAccessedByLayers("diagram", "export", "plot")
             .whereLayer("model").mayOnlyBeAccessedByLayers("load", "print", "run", "export", "diagram")
             .whereLayer("expr").mayOnlyBeAccessedByLayers("model", "load", "print", "run", "export", "diagram")
-            .whereLayer("xml").mayOnlyBeAccessedByLayers("expr", "model", "load", "print", "run", "export", "diagram")
+            .whereLayer("xml").mayOnlyBeAccessedByLayers("expr", "model", "load", "edit", "print", "run", "export",
+                    "diagram")
             .whereLayer("sensor").mayOnlyBeAccessedByLayers("expr", "load", "run", "export", "diagram", "plot")
-            .whereLayer("lang").mayOnlyBeAccessedByLayers("xml", "expr", "model", "load", "print", "run", "export",
-                    "diagram");
+            .whereLayer("lang").mayOnlyBeAccessedByLayers("xml", "expr", "model", "load", "edit", "print", "run",
+                    "export", "diagram");
 
     @ArchTest
     static final ArchRule NO_OTHER_MODULE_OR_THEIR_LIBRARIES = noClasses().that().resideInAPackage("org.parpe.core..")

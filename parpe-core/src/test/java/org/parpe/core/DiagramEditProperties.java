@@ -18,10 +18,11 @@ import net.jqwik.api.Provide;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.diagram.BehaviorEdits;
 import org.parpe.core.diagram.DiagramEdits;
+import org.parpe.core.edit.ScriptEdits;
 import org.parpe.core.diagram.Diagrams;
 import org.parpe.core.diagram.PaletteEdits;
 import org.parpe.core.diagram.RingEdits;
-import org.parpe.core.diagram.TextEdit;
+import org.parpe.core.edit.TextEdit;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
 import org.parpe.core.model.Automaton;
@@ -102,7 +103,7 @@ class DiagramEditProperties {
                 }
                 Instance i = all.get(c.a() % all.size());
                 String attr = c.b() % 2 == 0 ? "phase" : "offset";
-                api = DiagramEdits.setAttribute(text, i.pos(), attr, value).apply(text);
+                api = ScriptEdits.setAttribute(text, i.pos(), attr, value).apply(text);
                 hand = HandEdits.setAttribute(text, i.pos().line(), i.pos().column(), attr, value);
             }
             case 1 -> {
@@ -233,7 +234,7 @@ class DiagramEditProperties {
                     return;
                 }
                 StateDef d = all.get(c.a() % all.size());
-                api = DiagramEdits.setAttribute(text, d.pos(), "angles", value).apply(text);
+                api = ScriptEdits.setAttribute(text, d.pos(), "angles", value).apply(text);
                 hand = HandEdits.setAttribute(text, d.pos().line(), d.pos().column(), "angles", value);
             }
             default -> {
@@ -357,10 +358,10 @@ class DiagramEditProperties {
                 + "<automata><w states=\"s\"/></automata><states><s angles=\"1\"/></states></program>";
         Program p = ScriptLoader.loadText(Path.of("t.xml"), text, Map.of()).program();
         SourcePos entry = p.main().entries().get(0).pos();
-        String e1 = DiagramEdits.setAttribute(text, entry, "time", "$btime < 3 & \"x\" 'y'").apply(text);
+        String e1 = ScriptEdits.setAttribute(text, entry, "time", "$btime < 3 & \"x\" 'y'").apply(text);
         assertTrue(e1.contains("<go time='$btime &lt; 3 &amp; \"x\" &apos;y&apos;'/>"), e1);
         Instance w = p.behaviors().get(0).instances().get(0);
-        String e2 = DiagramEdits.setAttribute(text, w.pos(), "phase", "a<b").apply(text);
+        String e2 = ScriptEdits.setAttribute(text, w.pos(), "phase", "a<b").apply(text);
         assertTrue(e2.contains("<w group=\"b\" phase=\"a&lt;b\"/>"), e2);
         String e3 = DiagramEdits.retime(text, p.automaton("w").orElseThrow(), 0, "0.5").apply(text);
         assertTrue(e3.contains("<w states=\"s\" times=\"0.5\"/>"), e3);

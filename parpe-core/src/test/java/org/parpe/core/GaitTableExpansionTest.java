@@ -156,6 +156,9 @@ class GaitTableExpansionTest {
         // the table's modules all start at its first row, the automaton's at their phase: the same places
         assertEquals(trace(x.file(), x.text(), 10), trace(x.file(), made, 10));
         assertTrue(made.contains("<travelCycle group="), made);
+        // the new <states> right after the <automata> that holds the table (found by its span), indented as it
+        assertTrue(made.contains("  </automata>\n  <states>\n    <travelCycle_0 angles=\"15\"/>\n"
+                + "    <travelCycle_1 angles=\"-15\"/>\n  </states>"), made);
     }
 
     @Test

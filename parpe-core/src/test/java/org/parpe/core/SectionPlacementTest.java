@@ -4,7 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 
 import org.junit.jupiter.api.Test;
-import org.parpe.core.diagram.SectionEdits;
+import org.parpe.core.edit.SectionEdits;
 
 /**
  * Issue 31: the tutorial's "Insert this code" put a lesson's {@code <states>} at the caret, inside

@@ -58,7 +58,7 @@ public final class DiagramBenchmark implements Benchmark {
         views.put("program", () -> Layouts.program(Diagrams.program(p).orElseThrow()));
         views.put("lanes", () -> Layouts.lanes(Diagrams.swimlanes(p, b)));
         views.put("ring", () -> Layouts.ring(Diagrams.ring(p, p.automata().get(0))));
-        views.put("phase", () -> Layouts.wheel(Diagrams.wheel(first, p.group(first.group()).orElseThrow())));
+        views.put("phase", () -> Layouts.wheel(Diagrams.wheel(first, first.on())));
         views.put("gait", () -> Layouts.gait(Gait.record(p, new RunOptions(0.01, 0, List.of()), 2)));
         out.printf(Locale.ROOT, "diagram.modules=%d%n", p.moduleIds().length);
         for (var v : views.entrySet()) {

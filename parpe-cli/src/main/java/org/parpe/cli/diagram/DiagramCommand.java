@@ -161,7 +161,7 @@ public final class DiagramCommand implements Callable<Integer> {
                     + Names.suggest(behavior, p.behaviors().stream().map(Behavior::name).toList())));
         }
         if (p.main() != null && !p.main().entries().isEmpty()) {
-            return p.behavior(p.main().entries().get(0).behavior()).orElseThrow();
+            return p.main().entries().get(0).definition();
         }
         if (p.behaviors().isEmpty()) {
             throw new UsageException(file + " has no behaviors");

@@ -4,7 +4,9 @@ package org.parpe.core.diag;
  * One problem found in a script, with its place.
  *
  * @param severity error or warning
- * @param pos      where the problem is
+ * @param pos      where the problem is: file, line and column, and for a problem in a file's text
+ *                 the offset of its characters ({@link SourcePos#offset()}), which the editor
+ *                 and the grid mark
  * @param message  what was found and what was expected
  */
 public record Diagnostic(Severity severity, SourcePos pos, String message) {

@@ -4,19 +4,23 @@ package org.parpe.core.diag;
  * A place in a source file: 1-based line and column. Every model node and every diagnostic
  * carries one so that messages can be printed as {@code FILE:LINE:COL}. The place of an
  * element read from a file also carries the element's {@link SourceSpan}, so that an editor
- * can rewrite one attribute of the node exactly; the span is extra knowledge about the same
- * place and takes no part in equality.
+ * can rewrite one attribute of the node exactly, and its character offset, so that the editor
+ * and the grid put a diagnostic on its characters without turning line and column into an
+ * offset again; span and offset are extra knowledge about the same place and take no part in
+ * equality.
  *
  * @param file   the file as the user named it (relative paths stay relative)
  * @param line   1-based line
  * @param column 1-based column
  * @param span   the element's offsets in its file's text, or {@code null} when unknown
+ * @param offset the place's character offset in its file's text (for a place past the end of
+ *               its line, the line's end), or -1 when unknown
  */
-public record SourcePos(String file, int line, int column, SourceSpan span) {
+public record SourcePos(String file, int line, int column, SourceSpan span, int offset) {
 
-    /** A place without a span. */
+    /** A place without a span or an offset. */
     public SourcePos(String file, int line, int column) {
-        this(file, line, column, null);
+        this(file, line, column, null, -1);
     }
 
     /** A position for things that come from no file (command line, generated code). */
@@ -33,12 +37,12 @@ public record SourcePos(String file, int line, int column, SourceSpan span) {
 
     /** The position {@code delta} columns to the right on the same line. */
     public SourcePos shift(int delta) {
-        return new SourcePos(file, line, column + delta);
+        return new SourcePos(file, line, column + delta, null, offset < 0 ? -1 : offset + delta);
     }
 
     /** This place with the element's span. */
     public SourcePos withSpan(SourceSpan s) {
-        return new SourcePos(file, line, column, s);
+        return new SourcePos(file, line, column, s, offset);
     }
 
     /** Equal when file, line and column are: the span does not make another place. */

@@ -2,9 +2,12 @@ package org.parpe.core.diagram;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.regex.Pattern;
 import org.parpe.core.diag.SourcePos;
-import org.parpe.core.diag.SourceSpan;
+import org.parpe.core.edit.ElementWriter;
+import org.parpe.core.edit.Replacement;
+import org.parpe.core.edit.ScriptEdits;
+import org.parpe.core.edit.SectionEdits;
+import org.parpe.core.edit.TextEdit;
 import org.parpe.core.model.Behavior;
 import org.parpe.core.model.MainDef;
 import org.parpe.core.model.Program;
@@ -17,20 +20,18 @@ import org.parpe.core.model.Program;
  * with {@link DiagramEdits} nothing else of the text changes.
  */
 public final class BehaviorEdits {
-    private static final Pattern NAME = Pattern.compile("[A-Za-z_][A-Za-z0-9_.-]*");
-
     private BehaviorEdits() {
     }
 
     /** Adds an instance of automaton {@code automaton} on group {@code group} as {@code b}'s last item. */
     public static TextEdit addInstance(String text, Behavior b, String automaton, String group) {
-        name(automaton, "automaton");
+        ElementWriter.name(automaton, "automaton");
         if (group.isBlank()) {
             throw new IllegalArgumentException("an instance needs a group");
         }
         SourcePos last = b.items().isEmpty() ? null : b.items().get(b.items().size() - 1).pos();
-        return appendChild(text, DiagramEdits.span(b.pos()), b.name(), last,
-                "<" + automaton + " group=\"" + DiagramEdits.escape(group.trim(), '"') + "\"/>");
+        return ScriptEdits.appendChild(text, ScriptEdits.span(b.pos()), b.name(),
+                last == null ? null : ScriptEdits.span(last), ElementWriter.tag(automaton).attr("group", group.trim()).empty());
     }
 
     /**
@@ -41,19 +42,17 @@ public final class BehaviorEdits {
      */
     public static TextEdit addBehavior(String text, Program p, String name, String automaton, String group,
                                        String time) {
-        name(name, "behavior");
+        ElementWriter.name(name, "behavior");
         if (p.behavior(name).isPresent()) {
             throw new IllegalArgumentException("a behavior named '" + name + "' exists already");
         }
-        String quoted = DiagramEdits.escape(group.trim(), '"');
-        String instance = "<" + name(automaton, "automaton") + " group=\"" + quoted + "\"/>";
-        String entry = "<" + name + (time == null || time.isBlank() ? "" : " time=\"" + DiagramEdits.escape(time.trim(), '"')
-                + "\"") + "/>";
+        String instance = ElementWriter.tag(ElementWriter.name(automaton, "automaton")).attr("group", group.trim()).empty();
+        String entry = ElementWriter.tag(name).attrIfGiven("time", time == null ? null : time.trim()).empty();
         // <main> before <behaviors> when both are new and go to the same place (SectionEdits.ORDER)
-        List<TextEdit.Replacement> edits = new ArrayList<>(SectionEdits.add(text, p.file(), indent -> entry, "main")
+        List<Replacement> edits = new ArrayList<>(SectionEdits.add(text, p.file(), indent -> entry, "main")
                 .replacements());
-        edits.addAll(SectionEdits.add(text, p.file(), indent -> "<" + name + ">\n" + indent + "  " + instance + "\n" + indent
-                + "</" + name + ">", "behaviors").replacements());
+        edits.addAll(SectionEdits.add(text, p.file(), indent -> ElementWriter.tag(name).lines(indent, List.of(instance)),
+                "behaviors").replacements());
         return new TextEdit(edits);
     }
 
@@ -71,7 +70,7 @@ public final class BehaviorEdits {
             throw new IllegalArgumentException("behavior '" + behavior + "' takes macros (" + String.join(", ", b.macros())
                     + "); write its <main> entry with their values in the text");
         }
-        return SectionEdits.add(text, p.file(), indent -> "<" + behavior + "/>", "main");
+        return SectionEdits.add(text, p.file(), indent -> ElementWriter.tag(behavior).empty(), "main");
     }
 
     /**
@@ -83,49 +82,6 @@ public final class BehaviorEdits {
         if (index < 0 || index >= n) {
             throw new IllegalArgumentException("<main> has entries 0.." + (n - 1) + ", not " + index);
         }
-        return removeElement(text, DiagramEdits.span(main.entries().get(index).pos()));
-    }
-
-    /** Removes the element {@code s}, with its line when it stands alone on it. */
-    static TextEdit removeElement(String text, SourceSpan s) {
-        int from = s.start();
-        int to = s.end();
-        int lineStart = text.lastIndexOf('\n', from - 1) + 1;
-        int lineEnd = text.indexOf('\n', to);
-        if (text.substring(lineStart, from).isBlank() && lineEnd >= 0 && text.substring(to, lineEnd).isBlank()) {
-            from = lineStart;
-            to = lineEnd + 1;
-        }
-        return TextEdit.of(from, to - from, "");
-    }
-
-    /** {@code element} as the last child of the element {@code parent} (named {@code tag}), after {@code last}. */
-    static TextEdit appendChild(String text, SourceSpan parent, String tag, SourcePos last, String element) {
-        if (last != null) {
-            SourceSpan ls = DiagramEdits.span(last);
-            return TextEdit.of(ls.end(), 0, "\n" + indent(text, ls.start()) + element);
-        }
-        String indent = indent(text, parent.start());
-        if (parent.empty()) {
-            return TextEdit.of(parent.tagEnd(), 2, ">\n" + indent + "  " + element + "\n" + indent + "</" + tag + ">");
-        }
-        int endTag = text.lastIndexOf("</", parent.end() - 1);
-        int at = DiagramEdits.trim(text, parent.tagEnd() + 1, endTag)[1];
-        return TextEdit.of(at, 0, "\n" + indent + "  " + element);
-    }
-
-    /** The spaces before {@code offset} on its line when only spaces are there, else none. */
-    static String indent(String text, int offset) {
-        int lineStart = text.lastIndexOf('\n', offset - 1) + 1;
-        String before = text.substring(lineStart, offset);
-        return before.isBlank() ? before : "";
-    }
-
-    static String name(String name, String what) {
-        if (!NAME.matcher(name).matches()) {
-            throw new IllegalArgumentException("'" + name + "' cannot name a " + what
-                    + ": a letter or _ first, then letters, digits, _, . or -");
-        }
-        return name;
+        return ScriptEdits.removeElement(text, ScriptEdits.span(main.entries().get(index).pos()));
     }
 }

@@ -68,7 +68,7 @@ public final class Diagrams {
         List<Boolean> mirrors = new ArrayList<>();
         for (Placed x : placed) {
             MainEntry.GroupRef ref = entry != null ? entry.groupOf(x.instance) : x.instance.groupRef();
-            Group g = p.group(ref.name()).orElse(null);
+            Group g = entry != null ? entry.boundGroup(x.instance) : x.instance.on();
             if (g == null) {
                 islands.add(new TextIsland("group '" + x.instance.group() + "' is a macro without a value here",
                         x.instance.pos()));
@@ -94,7 +94,7 @@ public final class Diagrams {
             Instance in = x.instance;
             String lane = g == null ? in.groupRef().name() : g.name();
             modules.putIfAbsent(lane, g == null ? List.of() : g.modules());
-            bars.computeIfAbsent(lane, k -> new ArrayList<>()).add(new Swimlanes.Bar(i, in.automaton(), mirrors.get(i),
+            bars.computeIfAbsent(lane, k -> new ArrayList<>()).add(new Swimlanes.Bar(i, in.name(), mirrors.get(i),
                     text(in.phase()), text(in.offset()), text(in.period()), text(in.start()), text(in.cycles()),
                     x.conditions, others, shared, in.pos()));
         }
@@ -125,8 +125,8 @@ public final class Diagrams {
      * carries its pose on the group the automaton is first played on ({@link #pose}).
      */
     public static Ring ring(Program p, Automaton a) {
-        MainEntry.GroupRef on = playedOn(p, a);
-        Group group = on == null ? null : p.group(on.name()).orElse(null);
+        Played on = playedOn(p, a);
+        Group group = on == null ? null : on.group();
         int n = a.states().size();
         double[] seconds = new double[n];
         double known = 0;
@@ -182,14 +182,19 @@ public final class Diagrams {
         return (plates.size() == 1 ? "plate " : "plates ") + String.join(", ", plates.stream().map(String::valueOf).toList());
     }
 
+    /** The group an automaton is played on, as bound at load, and whether mirrored. */
+    private record Played(Group group, boolean mirror) {
+    }
+
     /** The group of the first instance of {@code a} (behaviors in order), or {@code null}. */
-    private static MainEntry.GroupRef playedOn(Program p, Automaton a) {
+    private static Played playedOn(Program p, Automaton a) {
         for (Behavior b : p.behaviors()) {
             for (Instance in : b.instances()) {
-                if (in.automaton().equals(a.name())) {
+                if (in.name().equals(a.name())) {
                     MainEntry entry = p.main() == null ? null : p.main().entries().stream()
                             .filter(e -> e.behavior().equals(b.name())).findFirst().orElse(null);
-                    return entry != null ? entry.groupOf(in) : in.groupRef();
+                    return new Played(entry != null ? entry.boundGroup(in) : in.on(),
+                            (entry != null ? entry.groupOf(in) : in.groupRef()).mirror());
                 }
             }
         }
@@ -246,7 +251,7 @@ public final class Diagrams {
             double d = offset + i * phase;
             ticks.add(new PhaseWheel.Tick(i, group.modules().get(i), d - Math.floor(d)));
         }
-        return new PhaseWheel(instance.automaton(), instance.group(), phase, offset, ticks, islands, instance.pos());
+        return new PhaseWheel(instance.name(), instance.group(), phase, offset, ticks, islands, instance.pos());
     }
 
     /**
@@ -257,8 +262,7 @@ public final class Diagrams {
     public static Optional<Group> groupOf(Program p, Behavior behavior, Instance instance) {
         MainEntry entry = p.main() == null ? null
                 : p.main().entries().stream().filter(e -> e.behavior().equals(behavior.name())).findFirst().orElse(null);
-        String name = (entry != null ? entry.groupOf(instance) : instance.groupRef()).name();
-        return p.group(name);
+        return Optional.ofNullable(entry != null ? entry.boundGroup(instance) : instance.on());
     }
 
     private static double cycles(Expression e, String what, List<TextIsland> islands) {

@@ -79,12 +79,12 @@ public final class Gait {
 
     private static List<List<GaitDiagram.Instance>> legend(Program p) {
         List<List<GaitDiagram.Instance>> out = new ArrayList<>();
-        for (String name : entries(p)) {
-            Behavior b = p.behavior(name).orElseThrow();
+        for (MainEntry e : p.main() == null ? List.<MainEntry>of() : p.main().entries()) {
+            Behavior b = e.definition();
             List<GaitDiagram.Instance> list = new ArrayList<>();
             for (Instance i : b.instances()) {
-                List<String> states = p.automaton(i.automaton()).orElseThrow().states().stream().map(StateDef::name).toList();
-                list.add(new GaitDiagram.Instance(i.automaton(), states));
+                List<String> states = i.automaton().states().stream().map(StateDef::name).toList();
+                list.add(new GaitDiagram.Instance(i.name(), states));
             }
             out.add(list);
         }

@@ -3,6 +3,12 @@ package org.parpe.core.diagram;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.TreeSet;
+import org.parpe.core.diag.SourceSpan;
+import org.parpe.core.edit.ElementWriter;
+import org.parpe.core.edit.Replacement;
+import org.parpe.core.edit.ScriptEdits;
+import org.parpe.core.edit.SectionEdits;
+import org.parpe.core.edit.TextEdit;
 import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.Automaton;
 import org.parpe.core.expr.Expression;
@@ -68,8 +74,7 @@ public final class GaitTableExpansion {
      * or a profile other than linear, and {@code start} and {@code cycles} must not be written.
      */
     public static Table expand(Program p, Instance in, Group g) {
-        Automaton a = p.automaton(in.automaton()).orElseThrow(() -> new IllegalArgumentException(
-                "no automaton '" + in.automaton() + "'"));
+        Automaton a = in.automaton();
         if (a.table()) {
             throw new IllegalArgumentException("'" + a.name() + "' is a gait table already");
         }
@@ -136,17 +141,13 @@ public final class GaitTableExpansion {
      */
     public static TextEdit write(String text, Program p, Instance in, Group g, String name) {
         Table t = expand(p, in, g);
-        var s = DiagramEdits.span(in.pos());
-        List<TextEdit.Replacement> edits = new ArrayList<>(PaletteEdits.addGaitTable(text, p, name, t.rowTexts(), t.times())
+        var s = ScriptEdits.span(in.pos());
+        List<Replacement> edits = new ArrayList<>(PaletteEdits.addGaitTable(text, p, name, t.rowTexts(), t.times())
                 .replacements());
-        edits.add(new TextEdit.Replacement(s.start() + 1, in.automaton().length(), BehaviorEdits.name(name, "gait table")));
-        if (!s.empty()) {
-            int close = text.lastIndexOf("</", s.end() - 1) + 2;
-            edits.add(new TextEdit.Replacement(close, in.automaton().length(), name));
-        }
+        edits.addAll(ScriptEdits.rename(text, s, in.name(), ElementWriter.name(name, "gait table")));
         for (String attr : List.of("phase", "offset")) {
             if (s.value(attr) != null) {
-                edits.addAll(DiagramEdits.setAttribute(text, in.pos(), attr, "0").replacements());
+                edits.addAll(ScriptEdits.setAttribute(text, in.pos(), attr, "0").replacements());
             }
         }
         return new TextEdit(edits);
@@ -195,9 +196,9 @@ public final class GaitTableExpansion {
      * renamed, its {@code phase} set; offset and period stay).
      */
     public static TextEdit writeCycle(String text, Program p, Instance in, Group g, String name) {
-        Automaton table = p.automaton(in.automaton()).orElseThrow();
+        Automaton table = in.automaton();
         Cycle c = cycleOf(table, g.size());
-        BehaviorEdits.name(name, "automaton");
+        ElementWriter.name(name, "automaton");
         List<Double> values = new ArrayList<>();
         List<String> states = new ArrayList<>();
         for (double v : c.angles()) {
@@ -210,31 +211,27 @@ public final class GaitTableExpansion {
         for (double t : c.seconds()) {
             times.append(times.length() == 0 ? "" : ", ").append(Numbers.format(t));
         }
-        List<TextEdit.Replacement> edits = new ArrayList<>(PaletteEdits.addAutomaton(text, p, name, String.join(", ", states),
+        List<Replacement> edits = new ArrayList<>(PaletteEdits.addAutomaton(text, p, name, String.join(", ", states),
                 times.toString()).replacements());
-        var last = DiagramEdits.span(table.pos());
-        String indent = BehaviorEdits.indent(text, last.start());
+        var last = ScriptEdits.span(table.pos());
+        String indent = ElementWriter.indent(text, last.start());
         StringBuilder poses = new StringBuilder();
         boolean fresh = p.states().stream().noneMatch(d -> d.pos().span() != null && d.pos().file().equals(p.file()));
-        String inner = fresh ? indent : BehaviorEdits.indent(text, p.states().get(p.states().size() - 1).pos().span().start());
+        String inner = fresh ? indent : ElementWriter.indent(text, p.states().get(p.states().size() - 1).pos().span().start());
         for (int i = 0; i < values.size(); i++) {
-            poses.append('\n').append(inner).append('<').append(name).append('_').append(i).append(" angles=\"")
-                    .append(Numbers.format(values.get(i))).append("\"/>");
+            poses.append('\n').append(inner).append(ElementWriter.tag(name + "_" + i)
+                    .attr("angles", Numbers.format(values.get(i))).empty());
         }
         if (fresh) {
-            int close = text.indexOf("</automata>", last.end());
+            SourceSpan automata = SectionEdits.sectionAt(text, p.file(), "automata", last.start());
             String outer = indent.length() >= 2 ? indent.substring(2) : "";
-            edits.add(new TextEdit.Replacement(close + "</automata>".length(), 0, "\n" + outer + "<states>" + poses + "\n" + outer
-                    + "</states>"));
+            edits.add(new Replacement(automata.end(), 0, "\n" + outer + ElementWriter.tag("states").open() + poses
+                    + "\n" + outer + ElementWriter.close("states")));
         } else {
-            edits.add(new TextEdit.Replacement(p.states().get(p.states().size() - 1).pos().span().end(), 0, poses.toString()));
+            edits.add(new Replacement(p.states().get(p.states().size() - 1).pos().span().end(), 0, poses.toString()));
         }
-        var s = DiagramEdits.span(in.pos());
-        edits.add(new TextEdit.Replacement(s.start() + 1, in.automaton().length(), name));
-        if (!s.empty()) {
-            edits.add(new TextEdit.Replacement(text.lastIndexOf("</", s.end() - 1) + 2, in.automaton().length(), name));
-        }
-        edits.addAll(DiagramEdits.setAttribute(text, in.pos(), "phase", Numbers.format(c.phase())).replacements());
+        edits.addAll(ScriptEdits.rename(text, ScriptEdits.span(in.pos()), in.name(), name));
+        edits.addAll(ScriptEdits.setAttribute(text, in.pos(), "phase", Numbers.format(c.phase())).replacements());
         return new TextEdit(edits);
     }
 

@@ -1,6 +1,10 @@
 package org.parpe.core.diagram;
 
+import java.util.Collections;
 import java.util.List;
+import org.parpe.core.edit.ElementWriter;
+import org.parpe.core.edit.SectionEdits;
+import org.parpe.core.edit.TextEdit;
 import org.parpe.core.model.Program;
 
 /**
@@ -18,7 +22,7 @@ public final class PaletteEdits {
     /** Defines group {@code name} of modules {@code elements} (as the {@code elements} attribute is written). */
     public static TextEdit addGroup(String text, Program p, String name, String elements) {
         free(p.group(name).isPresent(), name, "group");
-        String e = "<" + BehaviorEdits.name(name, "group") + " elements=\"" + value(elements, "elements") + "\"/>";
+        String e = element(name, "group").attr("elements", value(elements, "elements")).empty();
         return SectionEdits.add(text, p.file(), indent -> e, "robot", "structure");
     }
 
@@ -29,20 +33,20 @@ public final class PaletteEdits {
     public static TextEdit addParameter(String text, Program p, String name, String value, String min, String max,
                                         String label) {
         free(p.parameters().stream().anyMatch(x -> x.name().equals(name)), name, "parameter");
-        StringBuilder e = new StringBuilder("<").append(BehaviorEdits.name(name, "parameter")).append(" value=\"")
-                .append(value(value, "value")).append('"');
+        ElementWriter e = element(name, "parameter").attr("value", value(value, "value"));
         for (String[] optional : List.of(new String[] {"min", min}, new String[] {"max", max}, new String[] {"label", label})) {
             if (optional[1] != null && !optional[1].isBlank()) {
-                e.append(' ').append(optional[0]).append("=\"").append(value(optional[1], optional[0])).append('"');
+                e.attr(optional[0], value(optional[1], optional[0]));
             }
         }
-        return SectionEdits.add(text, p.file(), indent -> e + "/>", "parameters");
+        String written = e.empty();
+        return SectionEdits.add(text, p.file(), indent -> written, "parameters");
     }
 
     /** Defines state (a pose) {@code name} with {@code angles} (one, or one per module of its group). */
     public static TextEdit addPose(String text, Program p, String name, String angles) {
         free(p.state(name).isPresent(), name, "state");
-        String e = "<" + BehaviorEdits.name(name, "state") + " angles=\"" + value(angles, "angles") + "\"/>";
+        String e = element(name, "state").attr("angles", value(angles, "angles")).empty();
         return SectionEdits.add(text, p.file(), indent -> e, "states");
     }
 
@@ -52,8 +56,8 @@ public final class PaletteEdits {
      */
     public static TextEdit addAutomaton(String text, Program p, String name, String states, String times) {
         free(p.automaton(name).isPresent(), name, "automaton");
-        String t = times == null || times.isBlank() ? "" : " times=\"" + DiagramEdits.escape(times.trim(), '"') + "\"";
-        String e = "<" + BehaviorEdits.name(name, "automaton") + " states=\"" + value(states, "states") + "\"" + t + "/>";
+        String e = element(name, "automaton").attr("states", value(states, "states"))
+                .attrIfGiven("times", times == null ? null : times.trim()).empty();
         return SectionEdits.add(text, p.file(), indent -> e, "automata");
     }
 
@@ -66,18 +70,9 @@ public final class PaletteEdits {
         if (rows.isEmpty() || rows.stream().anyMatch(String::isBlank)) {
             throw new IllegalArgumentException("a gait table needs at least one row, and no row may be empty");
         }
-        StringBuilder head = new StringBuilder("<").append(BehaviorEdits.name(name, "gait table"));
-        if (times != null && !times.isBlank()) {
-            head.append(" times=\"").append(DiagramEdits.escape(times.trim(), '"')).append('"');
-        }
-        head.append('>');
-        return SectionEdits.add(text, p.file(), indent -> {
-            StringBuilder e = new StringBuilder(head);
-            for (String row : rows) {
-                e.append('\n').append(indent).append("  ").append(DiagramEdits.escape(row.trim(), '"').replace("&quot;", "\""));
-            }
-            return e.append('\n').append(indent).append("</").append(name).append('>').toString();
-        }, "automata");
+        ElementWriter table = element(name, "gait table").attrIfGiven("times", times == null ? null : times.trim());
+        List<String> lines = rows.stream().map(row -> ElementWriter.text(row.trim())).toList();
+        return SectionEdits.add(text, p.file(), indent -> table.lines(indent, lines), "automata");
     }
 
     /**
@@ -88,8 +83,8 @@ public final class PaletteEdits {
     public static TextEdit addGaitTable(String text, Program p, String name, String rows, String modules, String times) {
         int r = count(rows, "rows", 1000);
         int m = count(modules, "modules", 1000);
-        String row = String.join(", ", java.util.Collections.nCopies(m, "0"));
-        return addGaitTable(text, p, name, java.util.Collections.nCopies(r, row), times);
+        String row = String.join(", ", Collections.nCopies(m, "0"));
+        return addGaitTable(text, p, name, Collections.nCopies(r, row), times);
     }
 
     private static int count(String n, String what, int max) {
@@ -115,6 +110,10 @@ public final class PaletteEdits {
         if (v == null || v.isBlank()) {
             throw new IllegalArgumentException(attribute + " must not be empty");
         }
-        return DiagramEdits.escape(v.trim(), '"');
+        return v.trim();
+    }
+
+    private static ElementWriter element(String name, String what) {
+        return ElementWriter.tag(ElementWriter.name(name, what));
     }
 }

@@ -1,5 +1,9 @@
 package org.parpe.core.diagram;
 
+import org.parpe.core.edit.ElementWriter;
+import org.parpe.core.edit.Replacement;
+import org.parpe.core.edit.ScriptEdits;
+import org.parpe.core.edit.TextEdit;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
@@ -28,13 +32,13 @@ public final class RingEdits {
         if (n == 1) {
             throw new IllegalArgumentException("'" + a.name() + "' has only one state; an automaton needs at least one");
         }
-        List<TextEdit.Replacement> edits = new ArrayList<>();
+        List<Replacement> edits = new ArrayList<>();
         for (String attr : List.of("states", "times")) {
             List<int[]> items = items(text, a, attr);
             if (items != null) {
                 int from = state == 0 ? items.get(0)[0] : items.get(state - 1)[1];
                 int to = state == 0 ? items.get(1)[0] : items.get(state)[1];
-                edits.add(new TextEdit.Replacement(from, to - from, ""));
+                edits.add(new Replacement(from, to - from, ""));
             }
         }
         return new TextEdit(edits);
@@ -48,7 +52,7 @@ public final class RingEdits {
     public static TextEdit moveState(String text, Automaton a, int from, int to) {
         checked(a, from);
         checked(a, to);
-        List<TextEdit.Replacement> edits = new ArrayList<>();
+        List<Replacement> edits = new ArrayList<>();
         if (from == to) {
             return new TextEdit(edits);
         }
@@ -62,7 +66,7 @@ public final class RingEdits {
             for (int k = Math.min(from, to); k <= Math.max(from, to); k++) {
                 int[] place = items.get(k);
                 int[] moved = order.get(k);
-                edits.add(new TextEdit.Replacement(place[0], place[1] - place[0], text.substring(moved[0], moved[1])));
+                edits.add(new Replacement(place[0], place[1] - place[0], text.substring(moved[0], moved[1])));
             }
         }
         return new TextEdit(edits);
@@ -77,22 +81,22 @@ public final class RingEdits {
     public static TextEdit setExit(String text, Automaton a, int state, String exit) {
         int n = checked(a, state);
         String condition = exit.isBlank() ? "" : "[" + exit.trim() + "]";
-        SourceSpan.Range r = DiagramEdits.span(a.pos()).value("times");
+        SourceSpan.Range r = ScriptEdits.span(a.pos()).value("times");
         if (r == null) {
             if (condition.isEmpty()) {
                 return new TextEdit(List.of());
             }
             List<String> times = new ArrayList<>(Collections.nCopies(n, "1"));
             times.set(state, "1" + condition);
-            return DiagramEdits.setAttribute(text, a.pos(), "times", String.join(", ", times));
+            return ScriptEdits.setAttribute(text, a.pos(), "times", String.join(", ", times));
         }
         int[] item = items(text, a, "times").get(state);
         int bracket = text.indexOf('[', item[0]);
         if (bracket < 0 || bracket >= item[1]) {
-            return TextEdit.of(item[1], 0, DiagramEdits.escape(condition, text.charAt(r.offset() - 1)));
+            return TextEdit.of(item[1], 0, ElementWriter.attributeText(condition, text.charAt(r.offset() - 1)));
         }
-        int from = DiagramEdits.trim(text, item[0], bracket)[1];
-        return TextEdit.of(from, item[1] - from, DiagramEdits.escape(condition, text.charAt(r.offset() - 1)));
+        int from = ScriptEdits.trim(text, item[0], bracket)[1];
+        return TextEdit.of(from, item[1] - from, ElementWriter.attributeText(condition, text.charAt(r.offset() - 1)));
     }
 
     private static int checked(Automaton a, int state) {
@@ -108,13 +112,13 @@ public final class RingEdits {
 
     /** The items of attribute {@code attr}, each trimmed of spaces, or {@code null} when it is not written. */
     private static List<int[]> items(String text, Automaton a, String attr) {
-        SourceSpan.Range r = DiagramEdits.span(a.pos()).value(attr);
+        SourceSpan.Range r = ScriptEdits.span(a.pos()).value(attr);
         if (r == null) {
             return null;
         }
         List<int[]> out = new ArrayList<>();
         for (int[] item : ListItem.ranges(text, r.offset(), r.end(), ',')) {
-            out.add(DiagramEdits.trim(text, item[0], item[1]));
+            out.add(ScriptEdits.trim(text, item[0], item[1]));
         }
         if (out.size() != a.states().size()) {
             throw new IllegalArgumentException("'" + a.name() + "' has " + a.states().size() + " states but " + out.size()

@@ -97,7 +97,7 @@ public final class Workbench {
         for (Behavior b : p.behaviors()) {
             if (!run.contains(b.name())) {
                 List<String> lines = new ArrayList<>(List.of(b.name(), "not run by <main>"));
-                b.instances().stream().limit(3).forEach(in -> lines.add(in.automaton() + " on " + in.group()));
+                b.instances().stream().limit(3).forEach(in -> lines.add(in.name() + " on " + in.group()));
                 if (b.instances().size() > 3) {
                     lines.add("… " + (b.instances().size() - 3) + " more");
                 }
@@ -111,7 +111,7 @@ public final class Workbench {
     public static List<Node> freeAutomata(Program p) {
         Set<String> played = new HashSet<>();
         for (Behavior b : p.behaviors()) {
-            b.instances().stream().map(Instance::automaton).forEach(played::add);
+            b.instances().stream().map(Instance::name).forEach(played::add);
         }
         List<Node> out = new ArrayList<>();
         for (Automaton a : p.automata()) {

@@ -13,9 +13,11 @@ import org.parpe.core.expr.Names;
 import org.parpe.core.expr.Scope;
 import org.parpe.core.lang.Vocabulary;
 import org.parpe.core.lang.Vocabulary.Element;
+import org.parpe.core.model.Automaton;
 import org.parpe.core.model.Behavior;
 import org.parpe.core.model.BehaviorItem;
 import org.parpe.core.model.Conditional;
+import org.parpe.core.model.Group;
 import org.parpe.core.model.Instance;
 import org.parpe.core.model.MainEntry;
 import org.parpe.core.model.Robot;
@@ -54,7 +56,7 @@ final class BehaviorResolver {
     private final InstanceChecks checks;
     /** Builds a scope of a kind with the given macros (name → index) and group macros. */
     private final ScopeFactory scopes;
-    private final Map<String, ?> automata;
+    private final Map<String, Automaton> automata;
     private final Set<String> brokenAutomata;
     private final Set<String> broken = new java.util.HashSet<>();
     private final Set<String> brokenGroups;
@@ -245,7 +247,8 @@ final class BehaviorResolver {
         if (!ok || group == null) {
             return null;
         }
-        Instance inst = new Instance(c.name(), group.value().trim(), e[0], e[1], e[2], e[3], e[4], c.pos());
+        Group on = groupMacros.contains(base) ? null : robot.group(base).orElseThrow();
+        Instance inst = new Instance(automata.get(c.name()), group.value().trim(), on, e[0], e[1], e[2], e[3], e[4], c.pos());
         infos.add(new InstanceInfo(inst, conditional, base, mirror, groupMacros.contains(base)));
         return inst;
     }

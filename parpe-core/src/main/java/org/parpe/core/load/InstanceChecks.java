@@ -91,7 +91,7 @@ final class InstanceChecks {
     }
 
     private void shape(BehaviorResolver.InstanceInfo info, Group g, String note) {
-        Automaton a = automata.get(info.model().automaton());
+        Automaton a = info.model().automaton();
         if (a == null) {
             return;
         }

@@ -136,7 +136,7 @@ final class MainResolver {
             Instance i = (Instance) item;
             MainEntry.GroupRef ref = i.groupRef().through(macros);
             Group group = robot == null ? null : robot.group(ref.name()).orElse(null);
-            Automaton automaton = automata.get(i.automaton());
+            Automaton automaton = i.automaton();
             if (group != null && automaton != null) {
                 out.add(new MainEntry.Binding(i, automaton, group, ref.mirror(), conds));
             }

@@ -78,6 +78,19 @@ public record MainEntry(String behavior, Behavior definition, Expression time, E
         }
     }
 
+    /**
+     * The group {@code instance} (an instance of this entry's behavior) drives, as bound at load
+     * ({@link Binding}); {@code null} when its group macro names no group.
+     */
+    public Group boundGroup(Instance instance) {
+        for (Binding b : bindings) {
+            if (b.instance() == instance) {
+                return b.group();
+            }
+        }
+        return null;
+    }
+
     /** The group {@code instance} drives when this entry's macro values are applied. */
     public GroupRef groupOf(Instance instance) {
         return instance.groupRef().through(macros);

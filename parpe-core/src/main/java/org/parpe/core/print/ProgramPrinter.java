@@ -2,6 +2,7 @@ package org.parpe.core.print;
 
 import java.util.List;
 import java.util.stream.Collectors;
+import org.parpe.core.edit.ElementWriter;
 import org.parpe.core.expr.Expression;
 import org.parpe.core.model.Automaton;
 import org.parpe.core.model.Behavior;
@@ -42,94 +43,100 @@ public final class ProgramPrinter {
     private void program(Program p) {
         codes = p.radioWords();
         line(0, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>");
-        line(0, "<program>");
+        open(0, "program");
         robot(p);
         if (!p.parameters().isEmpty()) {
-            line(1, "<parameters>");
+            open(1, "parameters");
             p.parameters().forEach(this::parameter);
-            line(1, "</parameters>");
+            close(1, "parameters");
         }
         if (!p.controls().isEmpty()) {
-            line(1, "<controls>");
+            open(1, "controls");
             p.controls().forEach(this::control);
-            line(1, "</controls>");
+            close(1, "controls");
         }
         if (p.main() != null) {
             main(p.main());
         }
         if (!p.behaviors().isEmpty()) {
-            line(1, "<behaviors>");
+            open(1, "behaviors");
             p.behaviors().forEach(this::behavior);
-            line(1, "</behaviors>");
+            close(1, "behaviors");
         }
         if (!p.automata().isEmpty()) {
-            line(1, "<automata>");
+            open(1, "automata");
             p.automata().forEach(this::automaton);
-            line(1, "</automata>");
+            close(1, "automata");
         }
         List<StateDef> named = p.states();
         if (!named.isEmpty()) {
-            line(1, "<states>");
+            open(1, "states");
             named.forEach(this::state);
-            line(1, "</states>");
+            close(1, "states");
         }
-        line(0, "</program>");
+        close(0, "program");
     }
 
     private void robot(Program p) {
-        line(1, "<robot>");
-        line(2, "<structure>");
+        open(1, "robot");
+        open(2, "structure");
         for (Group g : p.robot().groups()) {
             if (!g.implicit()) {
-                line(3, "<" + g.name() + attr("elements", g.elements()) + "/>");
+                line(3, tag(g.name()).attr("elements", g.elements()).empty());
             }
         }
-        line(2, "</structure>");
+        close(2, "structure");
         if (!p.robot().sensors().isEmpty()) {
-            line(2, "<sensors>");
+            open(2, "sensors");
             for (SensorDecl s : p.robot().sensors()) {
-                line(3, "<" + s.type() + attr("elements", s.elements()) + "/>");
+                line(3, tag(s.type()).attr("elements", s.elements()).empty());
             }
-            line(2, "</sensors>");
+            close(2, "sensors");
         }
         if (!p.robot().actuators().isEmpty()) {
-            line(2, "<actuators>");
+            open(2, "actuators");
             for (ActuatorDecl a : p.robot().actuators()) {
-                line(3, "<" + a.type() + attr("elements", a.elements()) + "/>");
+                line(3, tag(a.type()).attr("elements", a.elements()).empty());
             }
-            line(2, "</actuators>");
+            close(2, "actuators");
         }
-        line(1, "</robot>");
+        close(1, "robot");
     }
 
     private void parameter(Parameter p) {
-        line(2, "<" + p.name() + attr("value", Numbers.format(p.value()))
-                + (p.min() == null ? "" : attr("min", Numbers.format(p.min())))
-                + (p.max() == null ? "" : attr("max", Numbers.format(p.max())))
-                + (p.label().isEmpty() ? "" : attr("label", p.label())) + "/>");
+        ElementWriter e = tag(p.name()).attr("value", Numbers.format(p.value()));
+        if (p.min() != null) {
+            e.attr("min", Numbers.format(p.min()));
+        }
+        if (p.max() != null) {
+            e.attr("max", Numbers.format(p.max()));
+        }
+        if (!p.label().isEmpty()) {
+            e.attr("label", p.label());
+        }
+        line(2, e.empty());
     }
 
     private void control(Control c) {
-        StringBuilder a = new StringBuilder(attr("type", c.type().word()));
+        ElementWriter e = tag(c.name()).attr("type", c.type().word());
         if (c.type() == Control.ControlType.RADIO) {
-            a.append(attr("values", String.join(", ", c.words())));
-            a.append(attr("value", wordOf(c)));
+            e.attr("values", String.join(", ", c.words())).attr("value", wordOf(c));
         } else {
             if (c.min() != null) {
-                a.append(attr("min", Numbers.format(c.min()))).append(attr("max", Numbers.format(c.max())));
+                e.attr("min", Numbers.format(c.min())).attr("max", Numbers.format(c.max()));
             }
-            a.append(attr("value", Numbers.format(c.value())));
+            e.attr("value", Numbers.format(c.value()));
             if (c.step() != null) {
-                a.append(attr("step", Numbers.format(c.step())));
+                e.attr("step", Numbers.format(c.step()));
             }
         }
         if (!c.keys().isEmpty()) {
-            a.append(attr("keys", String.join(", ", c.keys())));
+            e.attr("keys", String.join(", ", c.keys()));
         }
         if (!c.label().isEmpty()) {
-            a.append(attr("label", c.label()));
+            e.attr("label", c.label());
         }
-        line(2, "<" + c.name() + a + "/>");
+        line(2, e.empty());
     }
 
     private String wordOf(Control c) {
@@ -141,63 +148,74 @@ public final class ProgramPrinter {
     private java.util.Map<String, Integer> codes = java.util.Map.of();
 
     private void main(MainDef m) {
-        line(1, "<main" + (m.cyclesText() == null ? "" : attr("cycles", m.cyclesText())) + ">");
-        for (MainEntry e : m.entries()) {
-            StringBuilder a = new StringBuilder();
-            if (e.time() != null) {
-                a.append(attr("time", e.time().text()));
-            }
-            if (e.exit() != null) {
-                a.append(attr("exit", e.exit().text()));
-            }
-            for (MainEntry.MacroArg arg : e.macros()) {
-                a.append(attr(arg.name(), arg.text()));
-            }
-            line(2, "<" + e.behavior() + a + "/>");
+        ElementWriter main = tag("main");
+        if (m.cyclesText() != null) {
+            main.attr("cycles", m.cyclesText());
         }
-        line(1, "</main>");
+        line(1, main.open());
+        for (MainEntry e : m.entries()) {
+            ElementWriter entry = tag(e.behavior());
+            opt(entry, "time", e.time());
+            opt(entry, "exit", e.exit());
+            for (MainEntry.MacroArg arg : e.macros()) {
+                entry.attr(arg.name(), arg.text());
+            }
+            line(2, entry.empty());
+        }
+        close(1, "main");
     }
 
     private void behavior(Behavior b) {
-        String macros = b.macros().isEmpty() ? "" : attr("macros", String.join(", ", b.macros()));
+        ElementWriter e = tag(b.name());
+        if (!b.macros().isEmpty()) {
+            e.attr("macros", String.join(", ", b.macros()));
+        }
         if (b.items().isEmpty()) {
-            line(2, "<" + b.name() + macros + "/>");
+            line(2, e.empty());
             return;
         }
-        line(2, "<" + b.name() + macros + ">");
+        line(2, e.open());
         items(b.items(), 3);
-        line(2, "</" + b.name() + ">");
+        close(2, b.name());
     }
 
     private void items(List<BehaviorItem> items, int depth) {
         for (BehaviorItem item : items) {
             if (item instanceof Conditional) {
                 Conditional c = (Conditional) item;
-                line(depth, "<if" + attr("cond", c.condition().text()) + ">");
+                line(depth, tag("if").attr("cond", c.condition().text()).open());
                 items(c.items(), depth + 1);
-                line(depth, "</if>");
+                close(depth, "if");
             } else {
                 Instance i = (Instance) item;
-                line(depth, "<" + i.automaton() + attr("group", i.group()) + opt("phase", i.phase())
-                        + opt("offset", i.offset()) + opt("period", i.period()) + opt("start", i.start())
-                        + opt("cycles", i.cycles()) + "/>");
+                ElementWriter e = tag(i.name()).attr("group", i.group());
+                opt(e, "phase", i.phase());
+                opt(e, "offset", i.offset());
+                opt(e, "period", i.period());
+                opt(e, "start", i.start());
+                opt(e, "cycles", i.cycles());
+                line(depth, e.empty());
             }
         }
     }
 
     private void automaton(Automaton a) {
-        String times = a.timesText() == null ? "" : attr("times", a.times().stream().map(ProgramPrinter::timing)
-                .collect(Collectors.joining(", ")));
+        ElementWriter e = tag(a.name());
         if (!a.table()) {
-            String states = a.states().stream().map(StateDef::name).collect(Collectors.joining(", "));
-            line(2, "<" + a.name() + attr("states", states) + times + "/>");
+            e.attr("states", a.states().stream().map(StateDef::name).collect(Collectors.joining(", ")));
+        }
+        if (a.timesText() != null) {
+            e.attr("times", a.times().stream().map(ProgramPrinter::timing).collect(Collectors.joining(", ")));
+        }
+        if (!a.table()) {
+            line(2, e.empty());
             return;
         }
-        line(2, "<" + a.name() + times + ">");
+        line(2, e.open());
         for (StateDef row : a.states()) {
-            line(3, escape(row.angles().stream().map(Expression::text).collect(Collectors.joining(", "))));
+            line(3, ElementWriter.text(row.angles().stream().map(Expression::text).collect(Collectors.joining(", "))));
         }
-        line(2, "</" + a.name() + ">");
+        close(2, a.name());
     }
 
     private static String timing(Timing t) {
@@ -205,31 +223,38 @@ public final class ProgramPrinter {
     }
 
     private void state(StateDef s) {
-        String angles = s.angles().stream().map(Expression::text).collect(Collectors.joining(", "));
-        line(2, "<" + s.name() + attr("angles", angles)
-                + (s.interp() == Interp.LINEAR ? "" : attr("interp", s.interp().word()))
-                + plates("latch", s.latch()) + plates("unlatch", s.unlatch()) + "/>");
+        ElementWriter e = tag(s.name()).attr("angles", s.angles().stream().map(Expression::text)
+                .collect(Collectors.joining(", ")));
+        if (s.interp() != Interp.LINEAR) {
+            e.attr("interp", s.interp().word());
+        }
+        plates(e, "latch", s.latch());
+        plates(e, "unlatch", s.unlatch());
+        line(2, e.empty());
     }
 
-    private static String plates(String name, List<Integer> plates) {
-        return plates.isEmpty() ? "" : attr(name, plates.stream().map(String::valueOf).collect(Collectors.joining(", ")));
+    private static void plates(ElementWriter e, String name, List<Integer> plates) {
+        if (!plates.isEmpty()) {
+            e.attr(name, plates.stream().map(String::valueOf).collect(Collectors.joining(", ")));
+        }
     }
 
-    private static String opt(String name, Expression e) {
-        return e == null ? "" : attr(name, e.text());
+    private static void opt(ElementWriter e, String name, Expression x) {
+        if (x != null) {
+            e.attr(name, x.text());
+        }
     }
 
-    private static String attr(String name, String value) {
-        return " " + name + "=\"" + attributeText(value) + "\"";
+    private static ElementWriter tag(String name) {
+        return ElementWriter.tag(name);
     }
 
-    /** {@code value} written inside a double-quoted attribute: {@code & < > "} as entities. */
-    public static String attributeText(String value) {
-        return escape(value).replace("\"", "&quot;");
+    private void open(int depth, String tag) {
+        line(depth, ElementWriter.tag(tag).open());
     }
 
-    private static String escape(String s) {
-        return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;");
+    private void close(int depth, String tag) {
+        line(depth, ElementWriter.close(tag));
     }
 
     private void line(int depth, String text) {

@@ -126,13 +126,13 @@ public final class Breakpoints {
             automaton = new String[entries.size()][];
             states = new String[entries.size()][][];
             for (int i = 0; i < entries.size(); i++) {
-                Behavior b = p.behavior(entries.get(i).behavior()).orElseThrow();
+                Behavior b = entries.get(i).definition();
                 List<Instance> list = b.instances();
                 automaton[i] = new String[list.size()];
                 states[i] = new String[list.size()][];
                 for (int k = 0; k < list.size(); k++) {
-                    automaton[i][k] = list.get(k).automaton();
-                    states[i][k] = p.automaton(list.get(k).automaton()).orElseThrow().states().stream()
+                    automaton[i][k] = list.get(k).name();
+                    states[i][k] = list.get(k).automaton().states().stream()
                             .map(StateDef::name).toArray(String[]::new);
                 }
             }

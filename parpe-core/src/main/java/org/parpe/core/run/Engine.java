@@ -424,8 +424,8 @@ public final class Engine implements Evaluator {
         long key = (long) entry << 40 | (long) earlier << 20 | later.docIndex;
         if (warnedPairs.add(key)) {
             InstanceRun first = plans[entry].runs[earlier];
-            warnings.warning(later.model.pos(), "instances '" + first.model.automaton() + "' on group '"
-                    + first.model.group() + "' (line " + first.model.pos().line() + ") and '" + later.model.automaton()
+            warnings.warning(later.model.pos(), "instances '" + first.model.name() + "' on group '"
+                    + first.model.group() + "' (line " + first.model.pos().line() + ") and '" + later.model.name()
                     + "' on group '" + later.model.group() + "' both drive module " + ids[module] + " at t="
                     + String.format(java.util.Locale.ROOT, "%.6f", ctx.time) + " s; the later one wins");
         }

@@ -42,11 +42,21 @@ public final class SourceText {
         int o = Math.max(0, Math.min(offset, text.length()));
         int i = Arrays.binarySearch(lineStarts, o);
         int line = i >= 0 ? i : -i - 2;
-        return new SourcePos(file, line + 1, o - lineStarts[line] + 1);
+        return new SourcePos(file, line + 1, o - lineStarts[line] + 1, null, o);
     }
 
-    /** The position of a 1-based line and column (as reported by the XML parser). */
+    /**
+     * The position of a 1-based line and column (as reported by the XML parser); its offset is
+     * at most its line's end, and unknown for a line the text does not have.
+     */
     public SourcePos pos(int line, int column) {
-        return new SourcePos(file, Math.max(1, line), Math.max(1, column));
+        int l = Math.max(1, line);
+        int c = Math.max(1, column);
+        int offset = -1;
+        if (l <= lineStarts.length) {
+            int end = l < lineStarts.length ? lineStarts[l] - 1 : text.length();
+            offset = Math.min(lineStarts[l - 1] + c - 1, end);
+        }
+        return new SourcePos(file, l, c, null, offset);
     }
 }

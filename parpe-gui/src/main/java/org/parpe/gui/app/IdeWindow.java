@@ -432,7 +432,7 @@ public final class IdeWindow implements HardwareHost {
 
     /** Whether the editor holds no script yet (nothing, white space, or a declaration and comments): the Diagram's "Start a robot". */
     boolean emptyScript() {
-        return org.parpe.core.diagram.SectionEdits.blank(editor.document().get());
+        return org.parpe.core.edit.SectionEdits.blank(editor.document().get());
     }
 
     /**
@@ -577,7 +577,7 @@ public final class IdeWindow implements HardwareHost {
     /** Jumps the editor to {@code pos} (if it is in this file). */
     void reveal(SourcePos pos) {
         if (pos != null && pos.line() > 0 && sameFile(pos, files.pathForLoading().toAbsolutePath().normalize())) {
-            editor.reveal(pos.line(), pos.column());
+            editor.reveal(pos);
         }
     }
 

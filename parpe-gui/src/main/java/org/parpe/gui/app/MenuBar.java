@@ -24,8 +24,8 @@ import org.parpe.gui.help.TutorialWindow;
 import org.parpe.gui.grade.ClassWindow;
 import org.parpe.gui.sweep.SweepDialog;
 import org.parpe.gui.sweep.SweepHost;
-import org.parpe.core.diagram.SectionEdits;
-import org.parpe.core.diagram.TextEdit;
+import org.parpe.core.edit.SectionEdits;
+import org.parpe.core.edit.TextEdit;
 
 /** The menu bar: File, Edit, Run, View and Help. Every item acts; none is a placeholder. */
 final class MenuBar {

@@ -21,7 +21,7 @@ import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.Text;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.diag.SourceSpan;
-import org.parpe.core.diagram.TextEdit;
+import org.parpe.core.edit.TextEdit;
 import org.parpe.gui.diagram.Projection.View;
 import org.parpe.gui.editor.AfterChange;
 import org.parpe.gui.editor.ParslEditor;

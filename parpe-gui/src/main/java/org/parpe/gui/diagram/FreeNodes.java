@@ -6,7 +6,7 @@ import org.eclipse.swt.graphics.Point;
 import org.eclipse.swt.widgets.Event;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.diagram.Scene;
-import org.parpe.core.diagram.TextEdit;
+import org.parpe.core.edit.TextEdit;
 import org.parpe.core.diagram.Workbench;
 
 /**

@@ -11,6 +11,7 @@ import org.parpe.core.diag.Severity;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.diagram.BehaviorEdits;
 import org.parpe.core.diagram.DiagramEdits;
+import org.parpe.core.edit.ScriptEdits;
 import org.parpe.core.diagram.Diagrams;
 import org.parpe.core.diagram.Gait;
 import org.parpe.core.diagram.GaitDiagram;
@@ -21,9 +22,9 @@ import org.parpe.core.diagram.PhaseWheel;
 import org.parpe.core.diagram.ProgramLane;
 import org.parpe.core.diagram.Ring;
 import org.parpe.core.diagram.Scene;
-import org.parpe.core.diagram.SectionEdits;
+import org.parpe.core.edit.SectionEdits;
 import org.parpe.core.diagram.Swimlanes;
-import org.parpe.core.diagram.TextEdit;
+import org.parpe.core.edit.TextEdit;
 import org.parpe.core.diagram.Workbench;
 import org.parpe.core.lang.Numbers;
 import org.parpe.core.load.LoadResult;
@@ -285,7 +286,7 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
             if (mine(s.pos(), file)) {
                 targets.put(s.pos(), new Target("the " + Numbers.ordinal(s.index()) + " <main> entry: " + s.behavior(), List.of(
                         new Field("time", s.time() == null ? "" : s.time(),
-                                v -> DiagramEdits.setAttribute(text, s.pos(), "time", v))), s.index(),
+                                v -> ScriptEdits.setAttribute(text, s.pos(), "time", v))), s.index(),
                         to -> DiagramEdits.moveEntry(text, main, s.index(), to),
                         List.of(new Action("Remove entry", List.of(), v -> BehaviorEdits.removeEntry(text, main, s.index())))));
             }
@@ -326,10 +327,11 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         for (Swimlanes.Lane l : s.lanes()) {
             for (Swimlanes.Bar b : l.bars()) {
                 if (mine(b.pos(), file)) {
+                    Instance in = behavior.instances().get(b.index());
+                    Group g = Diagrams.groupOf(p, behavior, in).orElse(null);
                     targets.put(b.pos(), instanceTarget(text, file, "instance " + b.index() + ": " + b.automaton() + " on "
-                            + (b.mirrored() ? "!" : "") + l.group(), b.pos(), b.phase(), b.offset(), b.period(),
-                            p.group(l.group()).orElse(null)).with(expand(text, p, behavior.instances().get(b.index()),
-                            p.group(l.group()).orElse(null))));
+                            + (b.mirrored() ? "!" : "") + l.group(), b.pos(), b.phase(), b.offset(), b.period(), g)
+                            .with(expand(text, p, in, g)));
                 }
             }
         }
@@ -357,7 +359,7 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         if (g == null) {
             return List.of();
         }
-        if (p.automaton(in.automaton()).map(Automaton::table).orElse(false)) {
+        if (in.automaton().table()) {
             return List.of(new Action("Make phase automaton", List.of("automaton"),
                     v -> GaitTableExpansion.writeCycle(text, p, in, g, v.get(0))));
         }
@@ -369,11 +371,11 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
     private static Target instanceTarget(String text, Path file, String title, SourcePos pos, String phase, String offset,
                                          String period, Group g) {
         List<Field> fields = new ArrayList<>(List.of(
-                new Field("phase", phase == null ? "" : phase, v -> DiagramEdits.setAttribute(text, pos, "phase", v)),
-                new Field("offset", offset == null ? "" : offset, v -> DiagramEdits.setAttribute(text, pos, "offset", v)),
-                new Field("period", period == null ? "" : period, v -> DiagramEdits.setAttribute(text, pos, "period", v))));
+                new Field("phase", phase == null ? "" : phase, v -> ScriptEdits.setAttribute(text, pos, "phase", v)),
+                new Field("offset", offset == null ? "" : offset, v -> ScriptEdits.setAttribute(text, pos, "offset", v)),
+                new Field("period", period == null ? "" : period, v -> ScriptEdits.setAttribute(text, pos, "period", v))));
         if (g != null && !g.implicit() && mine(g.pos(), file)) {
-            fields.add(new Field("elements", g.elements(), v -> DiagramEdits.setAttribute(text, g.pos(), "elements", v)));
+            fields.add(new Field("elements", g.elements(), v -> ScriptEdits.setAttribute(text, g.pos(), "elements", v)));
         }
         return new Target(title, fields);
     }
@@ -394,14 +396,13 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
             for (Ring.Arc arc : r.arcs()) {
                 targets.putIfAbsent(arc.pos(), a.table() ? new Target("the " + Numbers.ordinal(arc.index()) + " row of " + a.name(), List.of(
                         new Field("duration", arc.duration(), v -> DiagramEdits.retime(text, a, arc.index(), v))))
-                        : StateTargets.of(text, file, p, a, arc));
+                        : StateTargets.of(text, file, a, arc));
             }
         }
         List<List<String>> automata = new ArrayList<>();
         if (p.main() != null) {
             for (var e : p.main().entries()) {
-                automata.add(p.behavior(e.behavior()).map(b -> b.instances().stream().map(Instance::automaton).toList())
-                        .orElse(List.of()));
+                automata.add(e.definition().instances().stream().map(Instance::name).toList());
             }
         }
         return new Projection(text, file, View.RING, names, chosen, Layouts.ring(r), targets, islands(r.islands().size()),
@@ -414,7 +415,7 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         for (Behavior b : p.behaviors()) {
             List<Instance> list = b.instances();
             for (int i = 0; i < list.size(); i++) {
-                String label = b.name() + ", " + Numbers.ordinal(i) + ": " + list.get(i).automaton() + " on " + list.get(i).group();
+                String label = b.name() + ", " + Numbers.ordinal(i) + ": " + list.get(i).name() + " on " + list.get(i).group();
                 all.put(label, list.get(i));
                 of.put(label, b);
             }

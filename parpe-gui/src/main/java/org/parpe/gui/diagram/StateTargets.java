@@ -3,11 +3,12 @@ package org.parpe.gui.diagram;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import org.parpe.core.diagram.DiagramEdits;
+import org.parpe.core.edit.ScriptEdits;
 import org.parpe.core.diagram.Ring;
 import org.parpe.core.diagram.RingEdits;
 import org.parpe.core.model.Automaton;
-import org.parpe.core.model.Program;
 import org.parpe.gui.diagram.Projection.Action;
 import org.parpe.gui.diagram.Projection.Field;
 import org.parpe.gui.diagram.Projection.Target;
@@ -23,15 +24,16 @@ final class StateTargets {
     }
 
     /** The target of {@code arc} of {@code a}'s ring, {@code a} being a phase automaton in the open file. */
-    static Target of(String text, Path file, Program p, Automaton a, Ring.Arc arc) {
+    static Target of(String text, Path file, Automaton a, Ring.Arc arc) {
         int k = arc.index();
         int n = a.states().size();
         List<Field> fields = new ArrayList<>();
         fields.add(new Field("duration", arc.duration(), v -> DiagramEdits.retime(text, a, k, v)));
         fields.add(new Field("exit", arc.exit() == null ? "" : arc.exit(), v -> RingEdits.setExit(text, a, k, v)));
-        p.state(arc.state()).filter(d -> Projection.mine(d.pos(), file)).ifPresent(d -> fields.add(new Field("angles",
+        // the automaton holds its states, bound at load: the arc's state is a.states().get(k)
+        Optional.of(a.states().get(k)).filter(d -> Projection.mine(d.pos(), file)).ifPresent(d -> fields.add(new Field("angles",
                 d.pos().span().value("angles") == null ? "" : String.join(", ", arc.angles()),
-                v -> DiagramEdits.setAttribute(text, d.pos(), "angles", v))));
+                v -> ScriptEdits.setAttribute(text, d.pos(), "angles", v))));
         List<Action> actions = new ArrayList<>();
         if (k > 0) {
             actions.add(new Action("Earlier", List.of(), v -> RingEdits.moveState(text, a, k, k - 1)));

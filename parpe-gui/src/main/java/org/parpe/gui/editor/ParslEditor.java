@@ -29,7 +29,10 @@ import org.eclipse.swt.graphics.GC;
 import org.eclipse.swt.graphics.Rectangle;
 import org.eclipse.swt.widgets.Canvas;
 import org.eclipse.swt.widgets.Composite;
+import org.parpe.core.edit.Replacement;
+import org.parpe.core.edit.TextEdit;
 import org.parpe.core.diag.Diagnostic;
+import org.parpe.core.diag.SourcePos;
 
 /**
  * The PARSL source editor: a JFace {@link SourceViewer} with XML colouring, line numbers,
@@ -104,8 +107,8 @@ public final class ParslEditor {
      *
      * @throws BadLocationException when the text has changed since the edit was made
      */
-    public int apply(org.parpe.core.diagram.TextEdit edit) throws BadLocationException {
-        java.util.List<org.parpe.core.diagram.TextEdit.Replacement> rs = edit.replacements();
+    public int apply(TextEdit edit) throws BadLocationException {
+        List<Replacement> rs = edit.replacements();
         if (rs.isEmpty()) {
             return -1;
         }
@@ -199,8 +202,9 @@ public final class ParslEditor {
     /** Shows {@code diagnostics} (those of this document) as markers. */
     public void setDiagnostics(List<Diagnostic> diagnostics) {
         annotations.removeAllAnnotations();
+        String text = document.get();
         for (Diagnostic d : diagnostics.subList(0, Math.min(diagnostics.size(), MARKER_LIMIT))) {
-            int[] span = span(d.pos().line(), d.pos().column());
+            int[] span = span(d.pos(), text);
             if (span != null) {
                 annotations.addAnnotation(new ProblemAnnotation(d), new Position(span[0], span[1]));
             }
@@ -231,13 +235,42 @@ public final class ParslEditor {
 
     /** Selects the word at 1-based {@code line}, {@code column}, scrolls to it and focuses the editor. */
     public void reveal(int line, int column) {
-        int[] span = span(line, column);
+        reveal(span(line, column));
+    }
+
+    /** Selects the word at {@code pos} (a place in this document), scrolls to it and focuses the editor. */
+    public void reveal(SourcePos pos) {
+        reveal(span(pos, document.get()));
+    }
+
+    private void reveal(int[] span) {
         if (span == null) {
             return;
         }
         viewer.setSelectedRange(span[0], span[1]);
         viewer.revealRange(span[0], span[1]);
         widget().setFocus();
+    }
+
+    /**
+     * The offset and length of the name at {@code pos} in {@code text} (the document's, got once
+     * for all markers): at the offset the loader recorded (a place at a line's end names the
+     * line's last character, as {@link #span(int, int)} does), else at its line and column.
+     */
+    private int[] span(SourcePos pos, String text) {
+        int off = pos.offset();
+        if (off < 0 || off > text.length()) {
+            return span(pos.line(), pos.column());
+        }
+        int lineStart = text.lastIndexOf('\n', off - 1) + 1;
+        while (off > lineStart && (off == text.length() || text.charAt(off) == '\n' || text.charAt(off) == '\r')) {
+            off--;
+        }
+        int end = off;
+        while (end < text.length() && (XmlScanners.isNameChar(text.charAt(end)) || end == off && text.charAt(end) == '<')) {
+            end++;
+        }
+        return new int[] {off, Math.max(1, end - off)};
     }
 
     /** The offset and length of the name at a 1-based place (at least one character), or null. */

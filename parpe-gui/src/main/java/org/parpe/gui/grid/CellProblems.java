@@ -24,7 +24,8 @@ final class CellProblems {
     static void place(IDocument doc, GaitTable table, List<Diagnostic> diagnostics, Map<Long, String> problems,
                       List<String> others) {
         for (Diagnostic d : diagnostics) {
-            int offset = offset(doc, d.pos().line(), d.pos().column());
+            // the offset the loader recorded; a place without one (not in a script's text) by line and column
+            int offset = d.pos().offset() >= 0 ? d.pos().offset() : offset(doc, d.pos().line(), d.pos().column());
             long cell = offset < 0 ? -1 : cellAt(table, offset);
             if (cell >= 0) {
                 problems.merge(cell, d.message(), (a, b) -> a + "\n" + b);

@@ -20,6 +20,7 @@ import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Control;
 import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.Table;
+import org.parpe.core.edit.Replacement;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.load.ListItem;
 import org.parpe.core.model.Program;
@@ -363,7 +364,7 @@ public final class GridPane implements GridView.Actions {
         box.layout();
     }
 
-    private void apply(Change ch) {
+    private void apply(Replacement ch) {
         if (!editable() || ch.empty()) {
             return;
         }

@@ -3,7 +3,6 @@ package org.parpe.gui.grid;
 import java.util.List;
 import org.parpe.core.model.BehaviorItem;
 import org.parpe.core.model.Conditional;
-import org.parpe.core.model.Group;
 import org.parpe.core.model.Instance;
 import org.parpe.core.model.Program;
 
@@ -18,7 +17,7 @@ final class Modules {
             return null;
         }
         for (var b : p.behaviors()) {
-            List<Integer> m = in(p, b.items(), automaton);
+            List<Integer> m = in(b.items(), automaton);
             if (m != null) {
                 return m;
             }
@@ -46,7 +45,7 @@ final class Modules {
 
     private static Instance instance(List<BehaviorItem> items, String automaton) {
         for (BehaviorItem item : items) {
-            if (item instanceof Instance i && i.automaton().equals(automaton)) {
+            if (item instanceof Instance i && i.name().equals(automaton)) {
                 return i;
             } else if (item instanceof Conditional c) {
                 Instance i = instance(c.items(), automaton);
@@ -58,15 +57,16 @@ final class Modules {
         return null;
     }
 
-    private static List<Integer> in(Program p, List<BehaviorItem> items, String automaton) {
+    private static List<Integer> in(List<BehaviorItem> items, String automaton) {
         for (BehaviorItem item : items) {
-            if (item instanceof Instance i && i.automaton().equals(automaton)) {
-                List<Integer> m = p.group(i.group()).map(Group::modules).orElse(null);
+            if (item instanceof Instance i && i.name().equals(automaton)) {
+                // the group bound at load; a mirrored or macro group gives no modules here, as before
+                List<Integer> m = i.on() == null || i.groupRef().mirror() ? null : i.on().modules();
                 if (m != null) {
                     return m;
                 }
             } else if (item instanceof Conditional c) {
-                List<Integer> m = in(p, c.items(), automaton);
+                List<Integer> m = in(c.items(), automaton);
                 if (m != null) {
                     return m;
                 }

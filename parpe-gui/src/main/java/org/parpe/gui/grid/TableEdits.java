@@ -4,9 +4,10 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Map;
+import org.parpe.core.edit.Replacement;
 
 /**
- * Turns edits of the grid into one {@link Change} of the document that touches only the table's
+ * Turns edits of the grid into one {@link Replacement} of the document that touches only the table's
  * rows and its {@code times} value, so the rest of the file keeps its comments and layout.
  * Changing entries keeps each one in its place: a new entry is right-aligned in the room the old
  * one had (its spaces included), so aligned columns stay aligned. Adding or removing rows and
@@ -28,8 +29,8 @@ public final class TableEdits {
      * Sets the entries in {@code values}; entries past a row's end are appended (the gap filled
      * with 0). A time set on a table without {@code times} adds the attribute, 1 for the other rows.
      */
-    public static Change setCells(String doc, GaitTable t, Map<At, String> values) {
-        List<Edit> edits = new ArrayList<>();
+    public static Replacement setCells(String doc, GaitTable t, Map<At, String> values) {
+        List<Replacement> edits = new ArrayList<>();
         for (var e : values.entrySet()) {
             At at = e.getKey();
             String value = e.getValue().trim();
@@ -49,15 +50,12 @@ public final class TableEdits {
         }
         if (values.keySet().stream().anyMatch(a -> a.row() == TIMES) && t.times() == null) {
             String times = String.join(", ", mergedTimes(t, values).stream().map(Entities::encodeAttribute).toList());
-            edits.add(new Edit(t.attrInsert(), t.attrInsert(), " times=\"" + times + "\""));
+            edits.add(new Replacement(t.attrInsert(), 0, " times=\"" + times + "\""));
         }
         return apply(doc, edits);
     }
 
-    private record Edit(int start, int end, String text) {
-    }
-
-    private static Edit replaceIn(String doc, Cell c, String value) {
+    private static Replacement replaceIn(String doc, Cell c, String value) {
         String lead = doc.substring(c.slotStart(), c.start());
         int room = lead.length() + (c.end() - c.start());
         String newLead;
@@ -70,34 +68,34 @@ public final class TableEdits {
         } else {
             newLead = " ";
         }
-        return new Edit(c.slotStart(), c.end(), newLead + value);
+        return new Replacement(c.slotStart(), c.end() - c.slotStart(), newLead + value);
     }
 
-    private static Edit append(List<Cell> row, int column, String value) {
+    private static Replacement append(List<Cell> row, int column, String value) {
         Cell last = row.get(row.size() - 1);
         StringBuilder s = new StringBuilder();
         for (int c = row.size(); c < column; c++) {
             s.append(", 0");
         }
         s.append(", ").append(value);
-        return new Edit(last.end(), last.end(), s.toString());
+        return new Replacement(last.end(), 0, s.toString());
     }
 
-    private static Change apply(String doc, List<Edit> edits) {
+    private static Replacement apply(String doc, List<Replacement> edits) {
         if (edits.isEmpty()) {
-            return new Change(0, 0, "");
+            return new Replacement(0, 0, "");
         }
-        edits.sort(Comparator.comparingInt(Edit::start));
-        int from = edits.get(0).start();
-        int to = edits.stream().mapToInt(Edit::end).max().orElse(from);
+        edits.sort(Comparator.comparingInt(Replacement::offset));
+        int from = edits.get(0).offset();
+        int to = edits.stream().mapToInt(Replacement::end).max().orElse(from);
         StringBuilder out = new StringBuilder();
         int at = from;
-        for (Edit e : edits) {
-            out.append(doc, at, e.start()).append(e.text());
+        for (Replacement e : edits) {
+            out.append(doc, at, e.offset()).append(e.text());
             at = e.end();
         }
         out.append(doc, at, to);
-        return Change.between(from, doc.substring(from, to), out.toString());
+        return Replacement.between(from, doc.substring(from, to), out.toString());
     }
 
     private static List<String> mergedTimes(GaitTable t, Map<At, String> values) {
@@ -114,7 +112,7 @@ public final class TableEdits {
     }
 
     /** Inserts a copy of row {@code copyOf} at {@code at} (its time copied too). */
-    public static Change insertRow(String doc, GaitTable t, int at, int copyOf) {
+    public static Replacement insertRow(String doc, GaitTable t, int at, int copyOf) {
         List<List<String>> rows = new ArrayList<>(t.texts());
         rows.add(at, rows.get(copyOf));
         List<String> times = t.times() == null ? null : new ArrayList<>(t.timeTexts());
@@ -125,7 +123,7 @@ public final class TableEdits {
     }
 
     /** Removes the rows {@code from..to} (inclusive) and their times; a table keeps at least one row. */
-    public static Change deleteRows(String doc, GaitTable t, int from, int to) {
+    public static Replacement deleteRows(String doc, GaitTable t, int from, int to) {
         List<List<String>> rows = new ArrayList<>(t.texts());
         List<String> times = t.times() == null ? null : new ArrayList<>(t.timeTexts());
         for (int r = Math.min(to, rows.size() - 1); r >= from && rows.size() > 1; r--) {
@@ -138,7 +136,7 @@ public final class TableEdits {
     }
 
     /** Inserts a column at {@code at} in every row, holding a copy of column {@code copyOf} (0 where a row has none). */
-    public static Change insertColumn(String doc, GaitTable t, int at, int copyOf) {
+    public static Replacement insertColumn(String doc, GaitTable t, int at, int copyOf) {
         List<List<String>> rows = new ArrayList<>();
         for (List<String> r : t.texts()) {
             List<String> row = new ArrayList<>(r);
@@ -150,7 +148,7 @@ public final class TableEdits {
     }
 
     /** Removes the columns {@code from..to} (inclusive) from every row; each row keeps at least one entry. */
-    public static Change deleteColumns(String doc, GaitTable t, int from, int to) {
+    public static Replacement deleteColumns(String doc, GaitTable t, int from, int to) {
         List<List<String>> rows = new ArrayList<>();
         for (List<String> r : t.texts()) {
             List<String> row = new ArrayList<>(r);
@@ -163,7 +161,7 @@ public final class TableEdits {
     }
 
     /** Writes the rows (and the times, when not {@code null}) again, aligned. */
-    static Change rewrite(String doc, GaitTable t, List<List<String>> rows, List<String> times) {
+    static Replacement rewrite(String doc, GaitTable t, List<List<String>> rows, List<String> times) {
         String region = doc.substring(t.start(), t.end());
         String indent = indent(doc, t);
         int last = region.length();
@@ -202,7 +200,7 @@ public final class TableEdits {
             }
         }
         int tailLen = doc.length() - t.end();
-        return Change.between(from, doc.substring(from, t.end()), newDoc.substring(from, newDoc.length() - tailLen));
+        return Replacement.between(from, doc.substring(from, t.end()), newDoc.substring(from, newDoc.length() - tailLen));
     }
 
     /** The smallest indentation of the rows that start their line, else the start tag's plus two spaces. */

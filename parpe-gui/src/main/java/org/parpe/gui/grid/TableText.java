@@ -14,22 +14,13 @@ import org.parpe.core.xml.XmlReader;
  * Finds the gait tables of a script's text with the core's XML reader, which places every
  * character of element text and attribute values; the rows are then split as the loader splits
  * them (lines or {@code ;}, then top-level commas), on the text as written, so that each entry
- * keeps its exact range in the document.
+ * keeps its exact range in the document (the reader's offsets: no line index of its own).
  */
 public final class TableText {
     private final String text;
-    private final int[] lineStarts;
 
     private TableText(String text) {
         this.text = text;
-        List<Integer> starts = new ArrayList<>();
-        starts.add(0);
-        for (int i = 0; i < text.length(); i++) {
-            if (text.charAt(i) == '\n') {
-                starts.add(i + 1);
-            }
-        }
-        lineStarts = starts.stream().mapToInt(Integer::intValue).toArray();
     }
 
     /** The gait tables of {@code text} in document order, or {@code null} if it is not well-formed XML. */
@@ -53,8 +44,9 @@ public final class TableText {
         return out;
     }
 
-    private int offset(SourcePos p) {
-        return Math.min(text.length(), lineStarts[Math.min(p.line(), lineStarts.length) - 1] + p.column() - 1);
+    /** The offset the reader recorded for {@code p} (every place it gives has one). */
+    private static int offset(SourcePos p) {
+        return p.offset();
     }
 
     private GaitTable table(XElement e) {

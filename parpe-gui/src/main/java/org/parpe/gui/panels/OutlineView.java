@@ -95,7 +95,7 @@ public final class OutlineView {
         for (Behavior b : p.behaviors()) {
             TreeItem bi = node(behaviors, b.name(), b.pos());
             for (Instance in : b.instances()) {
-                node(bi, in.automaton() + " on " + in.group(), in.pos());
+                node(bi, in.name() + " on " + in.group(), in.pos());
             }
         }
         p.mainDef().ifPresent(m -> {

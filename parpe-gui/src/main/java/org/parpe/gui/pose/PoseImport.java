@@ -41,8 +41,8 @@ final class PoseImport {
                     return found;
                 }
             } else if (item instanceof Instance i && (group == null || i.group().equals(group))) {
-                Group g = program.group(i.group()).orElse(null);
-                Automaton a = program.automaton(i.automaton()).orElse(null);
+                Group g = i.groupRef().mirror() ? null : i.on();
+                Automaton a = i.automaton();
                 if (g != null && a != null && a.table()) {
                     Optional<PoseList> l = table(g, a);
                     if (l.isPresent()) {

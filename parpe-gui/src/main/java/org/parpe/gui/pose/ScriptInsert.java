@@ -1,12 +1,17 @@
 package org.parpe.gui.pose;
 
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Set;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
+import org.parpe.core.diag.DiagnosticList;
+import org.parpe.core.diag.SourceSpan;
+import org.parpe.core.edit.ElementWriter;
+import org.parpe.core.edit.Replacement;
+import org.parpe.core.edit.ScriptEdits;
+import org.parpe.core.edit.TextEdit;
 import org.parpe.core.lang.Vocabulary;
 import org.parpe.core.model.Automaton;
 import org.parpe.core.model.Behavior;
@@ -14,6 +19,9 @@ import org.parpe.core.model.Group;
 import org.parpe.core.model.Program;
 import org.parpe.core.model.StateDef;
 import org.parpe.serial.record.PoseRecording;
+import org.parpe.core.xml.SourceText;
+import org.parpe.core.xml.XElement;
+import org.parpe.core.xml.XmlReader;
 import org.parpe.serial.record.RecordingWriter;
 
 /**
@@ -21,11 +29,10 @@ import org.parpe.serial.record.RecordingWriter;
  * pose, PARSL.md §12) and a behavior that plays it on the chosen groups with a period, a phase and
  * an offset, group {@code k} (from 0) lagging by {@code k × offset} cycles; adds a {@code <main>}
  * entry when the script has no {@code <main>} or an empty one. Names that the script already uses
- * get a number. Pure text in, text out; comments are left alone.
+ * get a number. Pure text in, text out; the sections are found by their source spans (so a
+ * section's name in a comment is not taken for it) and the elements written by the edit layer.
  */
 final class ScriptInsert {
-    private static final Pattern ROOT_END = Pattern.compile("</\\s*[A-Za-z_][\\w.-]*\\s*>\\s*$");
-
     /** How many cycles a behavior put first in a {@code <main>} that had entries plays before them. */
     static final int FIRST_CYCLES = 3;
 
@@ -110,66 +117,70 @@ final class ScriptInsert {
         String auto = unique("rec_" + r.recording().group(), taken);
         taken.add(auto);
         String beh = unique("play_" + r.recording().group(), taken);
-        String masked = maskComments(text);
-        List<Edit> edits = new ArrayList<>();
-        section(masked, "automata", automaton(auto, r.recording()), edits);
-        section(masked, "behaviors", behavior(beh, auto, r), edits);
+        XElement root = XmlReader.read(new SourceText(program.file(), text), new DiagnosticList());
+        if (root == null) {
+            throw new IllegalArgumentException("the script is not well-formed XML; mend it first (see Problems)");
+        }
+        List<Replacement> edits = new ArrayList<>();
+        edits.add(section(text, root, "automata", automaton(auto, r.recording())));
+        edits.add(section(text, root, "behaviors", behavior(beh, auto, r)));
         boolean emptyMain = program.mainDef().map(m -> m.entries().isEmpty()).orElse(true);
         Main main = emptyMain ? Main.ONLY : r.playFirst() ? Main.FIRST : Main.UNCHANGED;
         double first = FIRST_CYCLES * r.period();
         if (main == Main.ONLY) {
-            section(masked, "main", "<" + beh + "/>\n", edits);
+            edits.add(section(text, root, "main", ElementWriter.tag(beh).empty() + "\n"));
         } else if (main == Main.FIRST) {
-            first(masked, "<" + beh + " time=\"" + number(first) + "\"/>", edits);
+            XElement m = child(root, "main", false);
+            edits.addAll(ScriptEdits.prependChild(text, m.span(),
+                    ElementWriter.tag(beh).attr("time", number(first)).empty()).replacements());
         }
-        edits.sort((a, b) -> Integer.compare(b.at, a.at));
-        StringBuilder out = new StringBuilder(text);
-        for (Edit e : edits) {
-            out.replace(e.at, e.at + e.length, e.text);
-        }
-        return new Result(out.toString(), auto, beh, main, main == Main.FIRST ? first : 0);
+        // a later insertion at the same place goes before an earlier one, as the sections were always written
+        Collections.reverse(edits);
+        return new Result(new TextEdit(edits).apply(text), auto, beh, main, main == Main.FIRST ? first : 0);
     }
 
-    /** Puts {@code entry} first in the (non-empty) {@code <main>}, on its own line. */
-    private static void first(String masked, String entry, List<Edit> edits) {
-        Matcher open = Pattern.compile("<\\s*main(\\s[^>]*)?(?<!/)>").matcher(masked);
-        if (open.find()) {
-            edits.add(new Edit(open.end(), 0, "\n" + indentAt(masked, open.start()) + "  " + entry));
+    /**
+     * Adds {@code body} (lines, unindented) at the end of section {@code name} (a child of the
+     * root, found by its span), creating it at the end of the root if needed.
+     */
+    private static Replacement section(String text, XElement root, String name, String body) {
+        XElement open = child(root, name, false);
+        if (open != null) {
+            int at = text.lastIndexOf("</", open.span().end() - 1);
+            String indent = indentAt(text, at);
+            int lineStart = text.lastIndexOf('\n', at - 1) + 1;
+            String block = ElementWriter.indentLines(body, indent + "  ");
+            return text.substring(lineStart, at).isBlank() ? new Replacement(lineStart, 0, block)
+                    : new Replacement(at, 0, "\n" + block + indent);
         }
+        XElement empty = child(root, name, true);
+        if (empty != null) {
+            SourceSpan s = empty.span();
+            String indent = indentAt(text, s.start());
+            String attrs = text.substring(s.start() + 1 + name.length(), s.tagEnd()).stripTrailing();
+            return new Replacement(s.start(), s.end() - s.start(), "<" + name + attrs + ">\n"
+                    + ElementWriter.indentLines(body, indent + "  ") + indent + ElementWriter.close(name));
+        }
+        int end = root.span().empty() ? text.length() : text.lastIndexOf("</", root.span().end() - 1);
+        int lineStart = text.lastIndexOf('\n', end - 1) + 1;
+        String block = "  " + ElementWriter.tag(name).open() + "\n" + ElementWriter.indentLines(body, "    ") + "  "
+                + ElementWriter.close(name) + "\n";
+        return text.substring(lineStart, end).isBlank() ? new Replacement(lineStart, 0, block)
+                : new Replacement(end, 0, "\n" + block);
     }
 
-    private record Edit(int at, int length, String text) {
-    }
-
-    /** Adds {@code body} (lines, unindented) at the end of section {@code name}, creating it if needed. */
-    private static void section(String masked, String name, String body, List<Edit> edits) {
-        Matcher close = Pattern.compile("</\\s*" + name + "\\s*>").matcher(masked);
-        int at = -1;
-        while (close.find()) {
-            at = close.start();
+    /**
+     * The last child of {@code root} named {@code name} written with an end tag, or
+     * ({@code empty}) the first written as {@code <name/>}; null when there is none.
+     */
+    private static XElement child(XElement root, String name, boolean empty) {
+        XElement found = null;
+        for (XElement c : root.children()) {
+            if (c.name().equals(name) && c.span().empty() == empty && (found == null || !empty)) {
+                found = c;
+            }
         }
-        if (at >= 0) {
-            String indent = indentAt(masked, at);
-            int lineStart = masked.lastIndexOf('\n', at - 1) + 1;
-            boolean ownLine = masked.substring(lineStart, at).isBlank();
-            String block = indent(body, indent + "  ");
-            edits.add(ownLine ? new Edit(lineStart, 0, block) : new Edit(at, 0, "\n" + block + indent));
-            return;
-        }
-        Matcher empty = Pattern.compile("<\\s*" + name + "(\\s[^>]*)?/>").matcher(masked);
-        if (empty.find()) {
-            String indent = indentAt(masked, empty.start());
-            String attrs = empty.group(1) == null ? "" : empty.group(1).stripTrailing();
-            edits.add(new Edit(empty.start(), empty.end() - empty.start(),
-                    "<" + name + attrs + ">\n" + indent(body, indent + "  ") + indent + "</" + name + ">"));
-            return;
-        }
-        Matcher root = ROOT_END.matcher(masked);
-        int end = root.find() ? root.start() : masked.length();
-        int lineStart = masked.lastIndexOf('\n', end - 1) + 1;
-        boolean ownLine = masked.substring(lineStart, end).isBlank();
-        String block = "  <" + name + ">\n" + indent(body, "    ") + "  </" + name + ">\n";
-        edits.add(ownLine ? new Edit(lineStart, 0, block) : new Edit(end, 0, "\n" + block));
+        return found;
     }
 
     private static String automaton(String name, PoseRecording rec) {
@@ -186,29 +197,21 @@ final class ScriptInsert {
             rows.append('\n');
         }
         return "<!-- " + rec.size() + " poses of group " + rec.group() + ", recorded in the Pose panel -->\n"
-                + "<" + name + " times=\"" + times + "\">\n" + rows + "</" + name + ">\n";
+                + ElementWriter.tag(name).attr("times", times.toString()).open() + "\n" + rows + ElementWriter.close(name) + "\n";
     }
 
     private static String behavior(String name, String auto, Request r) {
-        StringBuilder b = new StringBuilder("<" + name + ">\n");
+        StringBuilder b = new StringBuilder(ElementWriter.tag(name).open()).append('\n');
         for (int k = 0; k < r.targets().size(); k++) {
-            b.append(String.format(Locale.ROOT, "  <%s group=\"%s\" period=\"%s\" phase=\"%s\" offset=\"%s\"/>%n", auto,
-                    r.targets().get(k), number(r.period()), number(r.phase()), number(k * r.offset())));
+            b.append("  ").append(ElementWriter.tag(auto).attr("group", r.targets().get(k)).attr("period", number(r.period()))
+                    .attr("phase", number(r.phase())).attr("offset", number(k * r.offset())).empty()).append('\n');
         }
-        return b.append("</").append(name).append(">\n").toString().replace(System.lineSeparator(), "\n");
+        return b.append(ElementWriter.close(name)).append('\n').toString();
     }
 
     private static String number(double v) {
         String s = String.format(Locale.ROOT, "%.4f", v == 0 ? 0.0 : v).replaceFirst("0+$", "");
         return s.endsWith(".") ? s.substring(0, s.length() - 1) : s;
-    }
-
-    private static String indent(String body, String indent) {
-        StringBuilder b = new StringBuilder();
-        for (String line : body.split("\n")) {
-            b.append(indent).append(line).append('\n');
-        }
-        return b.toString();
     }
 
     private static String indentAt(String text, int at) {
@@ -218,27 +221,6 @@ final class ScriptInsert {
             i++;
         }
         return text.substring(lineStart, i);
-    }
-
-    /** The text with every comment's characters (but not its line breaks) replaced by spaces. */
-    static String maskComments(String text) {
-        StringBuilder b = new StringBuilder(text);
-        int from = 0;
-        while (true) {
-            int s = text.indexOf("<!--", from);
-            if (s < 0) {
-                break;
-            }
-            int e = text.indexOf("-->", s + 4);
-            e = e < 0 ? text.length() : e + 3;
-            for (int i = s; i < e; i++) {
-                if (b.charAt(i) != '\n') {
-                    b.setCharAt(i, ' ');
-                }
-            }
-            from = e;
-        }
-        return b.toString();
     }
 
     /** Every name the program defines, and the reserved words are never free either. */

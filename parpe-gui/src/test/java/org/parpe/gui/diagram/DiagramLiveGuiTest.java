@@ -93,7 +93,7 @@ class DiagramLiveGuiTest {
         String[] out = new String[a.inst().length];
         for (int m = 0; m < out.length; m++) {
             if (a.inst()[m] >= 0) {
-                String name = walk.get(a.inst()[m]).automaton();
+                String name = walk.get(a.inst()[m]).name();
                 out[m] = name + "." + p.automaton(name).orElseThrow().states().get(a.state()[m]).name();
             }
         }

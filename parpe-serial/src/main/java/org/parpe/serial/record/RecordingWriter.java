@@ -1,6 +1,9 @@
 package org.parpe.serial.record;
 
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
+import org.parpe.core.edit.ElementWriter;
 
 /**
  * Writes a {@link PoseRecording} as a PARSL file (PARSL.md §12): a robot with the recorded group,
@@ -57,36 +60,42 @@ public final class RecordingWriter {
         }
         double[] t = rowTimes(r);
         StringBuilder times = new StringBuilder();
-        StringBuilder rows = new StringBuilder();
+        List<String> rows = new ArrayList<>();
         for (int i = 0; i < r.size(); i++) {
             times.append(i == 0 ? "" : ", ").append(String.format(Locale.ROOT, "%.2f", t[i]));
-            rows.append("      ");
+            StringBuilder row = new StringBuilder();
             double[] p = r.pose(i);
             for (int k = 0; k < p.length; k++) {
-                rows.append(k == 0 ? "" : ", ").append(String.format(Locale.ROOT, "%.2f", p[k] == 0 ? 0.0 : p[k]));
+                row.append(k == 0 ? "" : ", ").append(String.format(Locale.ROOT, "%.2f", p[k] == 0 ? 0.0 : p[k]));
             }
-            rows.append('\n');
+            rows.add(row.toString());
         }
         double cycle = 0;
         for (double ti : t) {
             cycle += ti;
         }
-        String play = (rate == 1 ? "" : String.format(Locale.ROOT, " period=\"%.4f\"", cycle / rate))
-                + (loop ? "" : " cycles=\"1\"");
+        ElementWriter instance = ElementWriter.tag("rec_" + g).attr("group", g);
+        if (rate != 1) {
+            instance.attr("period", String.format(Locale.ROOT, "%.4f", cycle / rate));
+        }
+        if (!loop) {
+            instance.attr("cycles", "1");
+        }
         return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
                 + "<!-- Pose recording (PARSL.md section 12): " + r.size() + " poses of group " + g + " (modules "
                 + ids + ")" + comment(origin) + ".\n"
                 + "     rec_" + g + " holds one row per pose; row times are the intervals between captures.\n"
                 + "     play_" + g + " plays it " + (loop ? "over and over" : "once") + "; include this file to play rec_" + g
                 + " on other groups. -->\n"
-                + "<program>\n"
-                + "  <robot>\n    <structure>\n      <" + g + " elements=\"" + ids + "\"/>\n    </structure>\n  </robot>\n"
-                + "  <automata>\n    <rec_" + g + " times=\"" + times + "\">\n" + rows + "    </rec_" + g + ">\n"
-                + "  </automata>\n"
-                + "  <behaviors>\n    <play_" + g + ">\n      <rec_" + g + " group=\"" + g + "\"" + play + "/>\n"
-                + "    </play_" + g + ">\n  </behaviors>\n"
-                + "  <main>\n    <play_" + g + "/>\n  </main>\n"
-                + "</program>\n";
+                + ElementWriter.tag("program").lines("", List.of(
+                        ElementWriter.tag("robot").lines("  ", List.of(ElementWriter.tag("structure").lines("    ",
+                                List.of(ElementWriter.tag(g).attr("elements", ids.toString()).empty())))),
+                        ElementWriter.tag("automata").lines("  ", List.of(ElementWriter.tag("rec_" + g)
+                                .attr("times", times.toString()).lines("    ", rows))),
+                        ElementWriter.tag("behaviors").lines("  ", List.of(ElementWriter.tag("play_" + g)
+                                .lines("    ", List.of(instance.empty())))),
+                        ElementWriter.tag("main").lines("  ", List.of(ElementWriter.tag("play_" + g).empty()))))
+                + "\n";
     }
 
     private static String comment(String origin) {

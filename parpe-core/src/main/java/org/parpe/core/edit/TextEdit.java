@@ -1,13 +1,14 @@
-package org.parpe.core.diagram;
+package org.parpe.core.edit;
 
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 
 /**
- * An edit of a script's text: replacements of ranges of the original text that do not overlap.
- * A diagram edit becomes one of these, so the editor applies it as one Undo step and everything
- * outside the replaced ranges (comments, order, layout) stays byte for byte.
+ * An edit of a script's (or any XML file's) text: {@link Replacement}s of ranges of the original
+ * text that do not overlap. A diagram edit becomes one of these, so the editor applies it as one
+ * Undo step and everything outside the replaced ranges (comments, order, layout) stays byte for
+ * byte.
  *
  * @param replacements the replacements, in text order
  */
@@ -27,20 +28,6 @@ public record TextEdit(List<Replacement> replacements) {
     /** An edit of one range. */
     public static TextEdit of(int offset, int length, String text) {
         return new TextEdit(List.of(new Replacement(offset, length, text)));
-    }
-
-    /**
-     * Replaces {@code length} characters at {@code offset} by {@code text}.
-     *
-     * @param offset the first replaced character, in the original text
-     * @param length how many characters are replaced (0 inserts)
-     * @param text   the new characters
-     */
-    public record Replacement(int offset, int length, String text) {
-        /** Just after the replaced range. */
-        public int end() {
-            return offset + length;
-        }
     }
 
     /** {@code text} with every replacement made. */

@@ -1,4 +1,4 @@
-package org.parpe.core.diagram;
+package org.parpe.core.edit;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -46,7 +46,7 @@ public final class SectionEdits {
         if (!blank(text)) {
             throw new IllegalArgumentException("the file has a script already; a robot is started only in an empty file");
         }
-        BehaviorEdits.name(group, "group");
+        ElementWriter.name(group, "group");
         if (modules < 1 || modules > MAX_MODULES) {
             throw new IllegalArgumentException("a robot has 1 to " + MAX_MODULES + " modules, not " + modules);
         }
@@ -55,8 +55,9 @@ public final class SectionEdits {
             end--;
         }
         String elements = modules == 1 ? "0" : "0.." + (modules - 1);
-        String program = String.join("\n", "<program>", "  <robot>", "    <structure>",
-                "      <" + group + " elements=\"" + elements + "\"/>", "    </structure>", "  </robot>", "</program>", "");
+        String robot = ElementWriter.tag("robot").lines("  ", List.of(ElementWriter.tag("structure").lines("    ",
+                List.of(ElementWriter.tag(group).attr("elements", elements).empty()))));
+        String program = ElementWriter.tag(Vocabulary.ROOT).lines("", List.of(robot)) + "\n";
         return TextEdit.of(end, text.length() - end, (end == 0 ? "" : "\n") + program);
     }
 
@@ -66,7 +67,7 @@ public final class SectionEdits {
      * {@code element} gives the element's text for the indentation of its first line (its
      * further lines carry that indentation themselves).
      */
-    static TextEdit add(String text, String file, Function<String, String> element, String... path) {
+    public static TextEdit add(String text, String file, Function<String, String> element, String... path) {
         DiagnosticList diags = new DiagnosticList();
         XElement parent = XmlReader.read(new SourceText(file, text), diags);
         if (parent == null) {
@@ -87,11 +88,11 @@ public final class SectionEdits {
         SourceSpan ps = parent.span();
         if (!kids.isEmpty()) {
             SourceSpan last = kids.get(kids.size() - 1).span();
-            return TextEdit.of(last.end(), 0, "\n" + BehaviorEdits.indent(text, last.start())
-                    + element.apply(BehaviorEdits.indent(text, last.start())));
+            return TextEdit.of(last.end(), 0, "\n" + ElementWriter.indent(text, last.start())
+                    + element.apply(ElementWriter.indent(text, last.start())));
         }
-        String inner = BehaviorEdits.indent(text, ps.start()) + "  ";
-        return BehaviorEdits.appendChild(text, ps, parent.name(), null, element.apply(inner));
+        String inner = ElementWriter.indent(text, ps.start()) + "  ";
+        return ScriptEdits.appendChild(text, ps, parent.name(), null, element.apply(inner));
     }
 
     /**
@@ -106,8 +107,8 @@ public final class SectionEdits {
             StringBuilder close = new StringBuilder();
             String at = indent;
             for (int k = level; k < path.length; k++) {
-                open.append(k == level ? "" : "\n" + at).append('<').append(path[k]).append('>');
-                close.insert(0, "\n" + at + "</" + path[k] + ">");
+                open.append(k == level ? "" : "\n" + at).append(ElementWriter.tag(path[k]).open());
+                close.insert(0, "\n" + at + ElementWriter.close(path[k]));
                 at += "  ";
             }
             return open + "\n" + at + element.apply(at) + close;
@@ -133,15 +134,15 @@ public final class SectionEdits {
             }
         }
         XElement like = before != null ? before : kids.isEmpty() ? null : kids.get(0);
-        String indent = like == null ? BehaviorEdits.indent(text, parent.span().start()) + "  "
-                : BehaviorEdits.indent(text, like.span().start());
+        String indent = like == null ? ElementWriter.indent(text, parent.span().start()) + "  "
+                : ElementWriter.indent(text, like.span().start());
         if (before != null) {
             return TextEdit.of(before.span().end(), 0, "\n" + indent + nested.apply(indent));
         }
         if (like != null) {
             return TextEdit.of(like.span().start(), 0, nested.apply(indent) + "\n" + indent);
         }
-        return BehaviorEdits.appendChild(text, parent.span(), parent.name(), null, nested.apply(indent));
+        return ScriptEdits.appendChild(text, parent.span(), parent.name(), null, nested.apply(indent));
     }
 
     /**
@@ -155,7 +156,8 @@ public final class SectionEdits {
      * @throws IllegalArgumentException when the script is not well-formed, or a section is read from another file
      */
     public static TextEdit placeSections(String text, String file, String snippet) {
-        String wrapped = "<" + Vocabulary.ROOT + ">\n" + snippet + "\n</" + Vocabulary.ROOT + ">";
+        String wrapped = ElementWriter.tag(Vocabulary.ROOT).open() + "\n" + snippet + "\n"
+                + ElementWriter.close(Vocabulary.ROOT);
         XElement root = XmlReader.read(new SourceText("snippet", wrapped), new DiagnosticList());
         List<XElement> sections = root == null ? List.of() : root.children();
         if (sections.size() == 1 && sections.get(0).name().equals(Vocabulary.ROOT)) {
@@ -165,20 +167,21 @@ public final class SectionEdits {
             return null;
         }
         if (blank(text)) {
-            StringBuilder program = new StringBuilder("<" + Vocabulary.ROOT + ">\n");
+            StringBuilder program = new StringBuilder(ElementWriter.tag(Vocabulary.ROOT).open() + "\n");
             sections.stream().sorted(java.util.Comparator.comparingInt(s -> ORDER.indexOf(s.name())))
                     .forEach(s -> program.append("  ").append(reindent(wrapped, s.span().start(), s.span().end(), "  ")).append('\n'));
             int end = text.length();
             while (end > 0 && Character.isWhitespace(text.charAt(end - 1))) {
                 end--;
             }
-            return TextEdit.of(end, text.length() - end, (end == 0 ? "" : "\n") + program + "</" + Vocabulary.ROOT + ">\n");
+            return TextEdit.of(end, text.length() - end, (end == 0 ? "" : "\n") + program
+                    + ElementWriter.close(Vocabulary.ROOT) + "\n");
         }
         XElement program = XmlReader.read(new SourceText(file, text), new DiagnosticList());
         if (program == null) {
             throw new IllegalArgumentException("the script is not well-formed XML; mend it first (see Problems)");
         }
-        List<TextEdit.Replacement> out = new ArrayList<>();
+        List<Replacement> out = new ArrayList<>();
         for (XElement s : sections) {
             XElement have = child(program, s.name());
             if (have == null) {
@@ -207,6 +210,20 @@ public final class SectionEdits {
             out.append('\n').append(line.isBlank() ? "" : indent + line.substring(strip));
         }
         return out.toString();
+    }
+
+    /**
+     * The span of the section {@code name} (a child of the root) that holds {@code offset}, or
+     * null when there is none (or the text is not well-formed).
+     */
+    public static SourceSpan sectionAt(String text, String file, String name, int offset) {
+        XElement root = XmlReader.read(new SourceText(file, text), new DiagnosticList());
+        for (XElement s : root == null ? List.<XElement>of() : root.children()) {
+            if (s.name().equals(name) && s.span().start() <= offset && offset < s.span().end()) {
+                return s.span();
+            }
+        }
+        return null;
     }
 
     private static XElement child(XElement parent, String name) {
