@@ -35,6 +35,8 @@ public final class PhysicsWorld implements AutoCloseable {
     private final DSpace space;
     private final DJointGroup contactGroup;
     private final DBody[] bodies;
+    /** Mass of each body, kg ({@link DBody#getMass} makes a new object on every call). */
+    private final double[] bodyMass;
     private final DGeom[] geoms;
     private final DHingeJoint[] hinges;
     private final double[] offset;
@@ -70,9 +72,11 @@ public final class PhysicsWorld implements AutoCloseable {
                 .setData(new WorldBodies.Surface(scene == null ? params.groundFriction() : scene.floorFriction()));
         bodies = new DBody[assembly.clusterCount()];
         geoms = new DGeom[assembly.pieces().size()];
+        bodyMass = new double[bodies.length];
         double mass = 0;
         for (int c = 0; c < bodies.length; c++) {
-            mass += createBody(c);
+            bodyMass[c] = createBody(c);
+            mass += bodyMass[c];
         }
         totalMass = mass;
         int n = assembly.hinges().size();
@@ -257,9 +261,9 @@ public final class PhysicsWorld implements AutoCloseable {
         double x = 0;
         double y = 0;
         double z = 0;
-        for (DBody b : bodies) {
-            double m = b.getMass().getMass();
-            DVector3C p = b.getPosition();
+        for (int c = 0; c < bodies.length; c++) {
+            double m = bodyMass[c];
+            DVector3C p = bodies[c].getPosition();
             x += m * p.get0();
             y += m * p.get1();
             z += m * p.get2();
