@@ -62,6 +62,7 @@ public class DxJointGroup extends DBase implements DJointGroup
 			return null;
 		}
 		DxJointContact j = spareContacts.remove(last);
+		j.reviveForReuse();
 		j.tag = 0;
 		j.dJointSetData(null);
 		j.flags = 0;

@@ -2,7 +2,7 @@
  * PARPE: a patched copy of ODE4j 0.5.3's org/ode4j/ode/internal/joints/OdeJointsFactoryImpl.java (tag parent-0.5.3), used under
  * ODE4j's BSD licence (its notice follows, unchanged). It takes the place of the class in the
  * ODE4j jar (this module's classes come first on the class path and in the shaded jar). The one
- * change: a contact joint made in a group is one the group destroyed before where it has one ({@code DxJointGroup.takeSpareContact}), a new one otherwise (issue 36; docs/decisions.md, "The simulator's tick allocates nothing"). The
+ * change: a contact joint made in a group is one the group destroyed before where it has one ({@code DxJointGroup.takeSpareContact}), a new one otherwise; its argument check makes its array only when it fails (issue 36; docs/decisions.md, "The simulator's tick allocates nothing"). The
  * arithmetic is untouched.
  */
 /*************************************************************************
@@ -110,7 +110,9 @@ public class OdeJointsFactoryImpl {
 	public DxJointContact dJointCreateContact (DWorld w, DJointGroup group,
 			final DContact c)
 	{
-		dAASSERT (w, c);
+		if (w == null || c == null) {
+			dAASSERT (w, c); // PARPE: the check's array only where it fails
+		}
 		DxJointContact spare = group == null ? null : ((DxJointGroup) group).takeSpareContact((DxWorld) w);
 		DxJointContact j = createJoint(spare != null ? spare : new DxJointContact((DxWorld) w), group);
 		j.setContact(c);
