@@ -32,6 +32,8 @@ public final class PhysicsWorld implements AutoCloseable {
     private final Assembly assembly;
     private final PhysicsParams params;
     private final DWorld world;
+    /** The world's QuickStep without ODE4j's per-step task framework (allocates nothing; same results). */
+    private final org.ode4j.ode.internal.processmem.SequentialQuickStep quickStep;
     private final DSpace space;
     private final DJointGroup contactGroup;
     private final DBody[] bodies;
@@ -66,6 +68,7 @@ public final class PhysicsWorld implements AutoCloseable {
         world.setContactMaxCorrectingVel(0.2);
         world.setContactSurfaceLayer(0.0005);
         world.setAutoDisableFlag(false);
+        quickStep = new org.ode4j.ode.internal.processmem.SequentialQuickStep(world);
         space = OdeHelper.createSapSpace(org.ode4j.ode.DSapSpace.AXES.XYZ);
         contactGroup = OdeHelper.createJointGroup();
         OdeHelper.createPlane(space, 0, 0, 1, 0)
@@ -196,7 +199,7 @@ public final class PhysicsWorld implements AutoCloseable {
             // QuickStep reorders constraints with ODE's global random generator; seeding it from
             // this world's own step count keeps runs reproducible whatever else uses ODE.
             DMisc.dRandSetSeed(stepCount++);
-            world.quickStep(h);
+            quickStep.step(h);
             contactGroup.empty();
         }
         time += dt;
