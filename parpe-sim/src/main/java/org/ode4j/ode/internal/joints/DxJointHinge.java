@@ -2,7 +2,7 @@
  * PARPE: a patched copy of ODE4j 0.5.3's org/ode4j/ode/internal/joints/DxJointHinge.java (tag parent-0.5.3), used under
  * ODE4j's BSD licence (its notice follows, unchanged). It takes the place of the class in the
  * ODE4j jar (this module's classes come first on the class path and in the shaded jar). The one
- * change: the temporary vectors of getInfo2 are this thread's, kept from call to call, instead of new in every call (issue 36; docs/decisions.md, "The simulator's tick allocates nothing"). The
+ * change: the temporary vectors of getInfo2, dJointGetHingeAngleRate and dJointAddHingeTorque are this thread's, kept from call to call, instead of new in every call (issue 36; docs/decisions.md, "The simulator's tick allocates nothing"). The
  * arithmetic is untouched.
  */
 /*************************************************************************
@@ -116,7 +116,7 @@ public class DxJointHinge extends DxJoint implements DHingeJoint
 	 * @see DxJoint#getInfo2(double, double, int, double[], int, double[], int, int, double[], int, double[], int, int[], int)
 	 */
 
-	/** PARPE: this thread's temporary vectors of {@link #getInfo2}, zeroed before each use as new ones would be. */
+	/** PARPE: this thread's temporary vectors of {@link #getInfo2} (and the first of the angle rate and the torque), zeroed before each use as new ones would be. */
 	private static final ThreadLocal<DVector3[]> SCRATCH = ThreadLocal.withInitial(() -> new DVector3[] {
 			new DVector3(), new DVector3(), new DVector3(), new DVector3(), new DVector3()});
 
@@ -340,7 +340,7 @@ public class DxJointHinge extends DxJoint implements DHingeJoint
 	{
 		if ( node[0].body!=null )
 		{
-			DVector3 axis = new DVector3();
+			DVector3 axis = SCRATCH.get()[0].setZero();
 			dMultiply0_331( axis, node[0].body.posr().R(), axis1 );
 			double rate = dCalcVectorDot3( axis, node[0].body.avel );
 			if ( node[1].body!=null ) rate -= dCalcVectorDot3( axis, node[1].body.avel );
@@ -354,7 +354,7 @@ public class DxJointHinge extends DxJoint implements DHingeJoint
 //	void dJointAddHingeTorque( dxJointHinge j, double torque )
 	void dJointAddHingeTorque( double torque )
 	{
-		DVector3 axis = new DVector3();
+		DVector3 axis = SCRATCH.get()[0].setZero();
 
 		if ( isFlagsReverse() )
 			torque = -torque;
