@@ -136,7 +136,9 @@ final class Referee {
     private double tally(boolean keep) {
         int delivered = 0;
         double points = 0;
-        for (World.Delivery d : rules.deliveries()) {
+        // Indexed loops: this runs every tick, and a list's iterator is an object (issue 36).
+        for (int di = 0; di < rules.deliveries().size(); di++) {
+            World.Delivery d = rules.deliveries().get(di);
             for (int i = 0; i < scene.objects().size(); i++) {
                 if (scene.objects().get(i).name().startsWith(d.objects())) {
                     world.objectCentre(i, objectCentre);
@@ -148,7 +150,8 @@ final class Referee {
             }
         }
         int presses = 0;
-        for (World.Presses p : rules.presses()) {
+        for (int pi = 0; pi < rules.presses().size(); pi++) {
+            World.Presses p = rules.presses().get(pi);
             presses += pressCount[p.lever()];
             points += p.points() * pressCount[p.lever()];
         }

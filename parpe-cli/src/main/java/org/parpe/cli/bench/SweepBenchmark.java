@@ -30,7 +30,9 @@ import org.parpe.sim.sweep.SweepSpec;
  * on their own), as the median of eleven interleaved rounds, in a JVM with the collector
  * {@code parpe sweep} runs with. The machine's load
  * average is printed too: with other processes on the cores, the wall-clock speed-up of more
- * jobs shrinks while the CPU time per simulation ({@code cpu_s_per_sim}) shows the overhead.
+ * jobs shrinks while the CPU time per simulation ({@code cpu_s_per_sim}, or its inverse
+ * {@code sims_per_cpu_s}) shows the overhead; {@code efficiency} is the speed-up divided by the
+ * number of cores (1: every core adds a whole job's worth).
  */
 public final class SweepBenchmark implements Benchmark {
     private static final int BUDGET = 300;
@@ -154,6 +156,12 @@ public final class SweepBenchmark implements Benchmark {
         out.printf(Locale.ROOT, "sweep.%s.speedup=%.2f%n", label, median(ratios)[0]);
         out.printf(Locale.ROOT, "sweep.%s.speedup_of_medians=%.2f%n", label, all[0] / one[0]);
         out.printf(Locale.ROOT, "sweep.%s.speedup_per_round=%s%n", label, each);
+        // Runs per CPU-second (every thread of this process, the JIT and the collector too): the
+        // cost of a run whatever else the machine is doing; and the speed-up's efficiency, the
+        // share of the ideal (one more core, one more job's worth) that every core gave.
+        out.printf(Locale.ROOT, "sweep.%s.sims_per_cpu_s.jobs1=%.2f%n", label, 1 / one[1]);
+        out.printf(Locale.ROOT, "sweep.%s.sims_per_cpu_s.jobs%d=%.2f%n", label, cores, 1 / all[1]);
+        out.printf(Locale.ROOT, "sweep.%s.efficiency=%.2f%n", label, median(ratios)[0] / cores);
         out.printf(Locale.ROOT, "sweep.%s.cpu_s_per_sim.jobs1=%.3f%n", label, one[1]);
         out.printf(Locale.ROOT, "sweep.%s.cpu_s_per_sim.jobs%d=%.3f%n", label, cores, all[1]);
         out.printf(Locale.ROOT, "sweep.%s.jit_share_while_measuring=%.3f%n", label, jitShare);

@@ -29,6 +29,8 @@ final class Contacts implements DGeom.DNearCallback {
     private final DJointGroup group;
     private final PhysicsParams params;
     private final DContactBuffer buffer = new DContactBuffer(PER_PAIR);
+    /** The buffer's contact geoms ({@link DContactBuffer#getGeomBuffer} makes a new view on every call). */
+    private final org.ode4j.ode.DContactGeomBuffer geomBuffer = buffer.getGeomBuffer();
     private final int[] clusterOf;
     private final int[] hingeOf;
     private final boolean[] sideSensing;
@@ -132,7 +134,7 @@ final class Contacts implements DGeom.DNearCallback {
         if (b1 == null && b2 == null || b1 == b2) {
             return; // two fixed things (the floor and a wall), or two pieces of one object
         }
-        int n = Math.min(used, OdeHelper.collide(g1, g2, PER_PAIR, buffer.getGeomBuffer()));
+        int n = Math.min(used, OdeHelper.collide(g1, g2, PER_PAIR, geomBuffer));
         double mu = friction(p1, g1, p2, g2);
         for (int i = 0; i < n; i++) {
             DContact c = buffer.get(i);

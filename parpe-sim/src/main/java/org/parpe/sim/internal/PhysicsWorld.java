@@ -32,9 +32,13 @@ public final class PhysicsWorld implements AutoCloseable {
     private final Assembly assembly;
     private final PhysicsParams params;
     private final DWorld world;
+    /** The world's QuickStep without ODE4j's per-step task framework (allocates nothing; same results). */
+    private final org.ode4j.ode.internal.processmem.SequentialQuickStep quickStep;
     private final DSpace space;
     private final DJointGroup contactGroup;
     private final DBody[] bodies;
+    /** Mass of each body, kg ({@link DBody#getMass} makes a new object on every call). */
+    private final double[] bodyMass;
     private final DGeom[] geoms;
     private final DHingeJoint[] hinges;
     private final double[] offset;
@@ -64,15 +68,18 @@ public final class PhysicsWorld implements AutoCloseable {
         world.setContactMaxCorrectingVel(0.2);
         world.setContactSurfaceLayer(0.0005);
         world.setAutoDisableFlag(false);
+        quickStep = new org.ode4j.ode.internal.processmem.SequentialQuickStep(world);
         space = OdeHelper.createSapSpace(org.ode4j.ode.DSapSpace.AXES.XYZ);
         contactGroup = OdeHelper.createJointGroup();
         OdeHelper.createPlane(space, 0, 0, 1, 0)
                 .setData(new WorldBodies.Surface(scene == null ? params.groundFriction() : scene.floorFriction()));
         bodies = new DBody[assembly.clusterCount()];
         geoms = new DGeom[assembly.pieces().size()];
+        bodyMass = new double[bodies.length];
         double mass = 0;
         for (int c = 0; c < bodies.length; c++) {
-            mass += createBody(c);
+            bodyMass[c] = createBody(c);
+            mass += bodyMass[c];
         }
         totalMass = mass;
         int n = assembly.hinges().size();
@@ -192,7 +199,7 @@ public final class PhysicsWorld implements AutoCloseable {
             // QuickStep reorders constraints with ODE's global random generator; seeding it from
             // this world's own step count keeps runs reproducible whatever else uses ODE.
             DMisc.dRandSetSeed(stepCount++);
-            world.quickStep(h);
+            quickStep.step(h);
             contactGroup.empty();
         }
         time += dt;
@@ -257,9 +264,9 @@ public final class PhysicsWorld implements AutoCloseable {
         double x = 0;
         double y = 0;
         double z = 0;
-        for (DBody b : bodies) {
-            double m = b.getMass().getMass();
-            DVector3C p = b.getPosition();
+        for (int c = 0; c < bodies.length; c++) {
+            double m = bodyMass[c];
+            DVector3C p = bodies[c].getPosition();
             x += m * p.get0();
             y += m * p.get1();
             z += m * p.get2();
