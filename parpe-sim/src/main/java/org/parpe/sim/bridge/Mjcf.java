@@ -22,6 +22,8 @@ public final class Mjcf {
      * (docs/bridges.md gives the cross-check).
      */
     static final double KP = 3;
+    /** The site on a rolling robot's axle (see {@link RobotModel#axle()}), its z axis the axle. */
+    public static final String AXLE = "axle";
     /** MuJoCo's step, s. */
     static final double STEP = 0.001;
 
@@ -108,6 +110,11 @@ public final class Mjcf {
         x.start("inertial").attr("pos", 0, 0, 0).attr("mass", l.mass()).attr("diaginertia", inertia.x(), inertia.y(),
                 inertia.z()).end();
         geom(x, l.shape());
+        if (m.axle() != null && m.axle().piece() == i) {
+            // the runner judges a rolling robot's fall by this axis, as PARPE's metrics do (a rolling robot's root turns over)
+            Vec3 a = m.axle().local();
+            x.start("site").attr("name", AXLE).attr("zaxis", a.x(), a.y(), a.z()).end();
+        }
         for (RobotModel.Joint c : m.joints()) {
             if (c.parent() == i) {
                 body(x, m, c.child(), i);
