@@ -4,8 +4,10 @@
     python3 play_mujoco.py ROBOT.xml ROBOT.ctrl.csv --out trace.csv
 
 ROBOT.ctrl.csv holds one row per tick: the time and, per module m<ID>, the commanded angle in
-radians. Each row's angles become the controls of the position actuators m<ID> for one tick
-(the model's steps of its own timestep). The trace has PARPE's columns: time, the measured
+radians. Each row's angles drive the position actuators m<ID> for one tick (the model's steps of
+its own timestep), through the servo's speed limit as PARPE's servo has it: at every step the
+control is at most speed/gain ahead of the measured angle (the model's custom numeric
+"servo_speed", rad/s, and its actuators' kp/kv), so the servo turns at most that fast. The trace has PARPE's columns: time, the measured
 angle a<ID> of every module in degrees, and the robot's centre of mass com_x, com_y, com_z.
 With --metrics, also what `parpe run --metrics` writes: how far the centre of mass moved (distance,
 dx, dy, speed) and the largest tilt in degrees (of the root's initially upward axis, or for a
@@ -38,6 +40,7 @@ def main():
     root = model.body("world").id
     tick = float(rows[1][0]) - float(rows[0][0]) if len(rows) > 1 else model.opt.timestep
     steps = max(1, round(tick / model.opt.timestep))
+    lead = [speed_lead(model, act) for act in actuators]
     out = sys.stdout if a.out == "-" else open(a.out, "w", newline="")
     out.write(",".join(["time"] + ["a" + n[1:] for n in names] + ["com_x", "com_y", "com_z"]) + "\n")
     mujoco.mj_forward(model, data)
@@ -51,9 +54,12 @@ def main():
         out.write(",".join(values) + "\n")
         if i == len(rows) - 1:
             break
-        for k, act in enumerate(actuators):
-            data.ctrl[act] = float(row[1 + k])
-        mujoco.mj_step(model, data, nstep=steps)
+        targets = [float(x) for x in row[1:]]
+        for _ in range(steps):
+            for k, act in enumerate(actuators):
+                q = data.qpos[joints[k]]
+                data.ctrl[act] = q + max(-lead[k], min(lead[k], targets[k] - q))
+            mujoco.mj_step(model, data)
         tilt.update()
     if out is not sys.stdout:
         out.close()
@@ -67,6 +73,15 @@ def main():
         else:
             with open(a.metrics, "w") as f:
                 f.write(text)
+
+
+def speed_lead(model, act):
+    """How far, rad, the control may lead the angle: the servo's speed over its gain kp/kv."""
+    speed = [i for i in range(model.nnumeric) if model.numeric(i).name == "servo_speed"]
+    kp, kv = -model.actuator_biasprm[act][1], -model.actuator_biasprm[act][2]
+    if not speed or kp <= 0 or kv <= 0:
+        return math.inf
+    return float(model.numeric_data[model.numeric_adr[speed[0]]]) * kv / kp
 
 
 class Tilt:

@@ -16,12 +16,16 @@ import org.parpe.sim.Vec3;
  */
 public final class Mjcf {
     /**
-     * Position gain of the servos, N·m/rad: PARPE's servo is a velocity loop (the speed it is told
-     * grows with the error) with a torque cap; as a position servo its stiffness depends on the
-     * load, and 3 N·m/rad is the figure at which hello-snake travels as far in MuJoCo as in PARPE
-     * (docs/bridges.md gives the cross-check).
+     * Position gain of the servos, N·m/rad. PARPE's servo is a velocity loop (ODE's joint motor,
+     * a constraint: it holds the speed it is told, gain × error capped at the servo's speed, with
+     * up to its torque); as an MJCF servo that is {@code kv·(gain·(ctrl − q) − q̇)}, stiffer the
+     * larger kv. kv = 0.2 N·m·s/rad (kp = 40 × 0.2 = 8) is the stiffest that MuJoCo's 1 ms step
+     * keeps stable on a snake (0.5 diverges); its joint angles then follow PARPE's within 1–2°
+     * (docs/simulator.md, "PARPE against MuJoCo").
      */
-    static final double KP = 3;
+    static final double KP = 8;
+    /** The custom numeric that tells a runner the servo's speed limit, rad/s. */
+    public static final String SERVO_SPEED = "servo_speed";
     /** The site on a rolling robot's axle (see {@link RobotModel#axle()}), its z axis the axle. */
     public static final String AXLE = "axle";
     /** MuJoCo's step, s. */
@@ -39,6 +43,10 @@ public final class Mjcf {
         x.start("compiler").attr("angle", "radian").attr("inertiafromgeom", "false").end();
         // MuJoCo's constraints are soft: a 1 ms step (PARPE's is 5 ms) keeps a closed loop within 1 mm
         // the implicit integrator: a servo's velocity feedback on a 40 g segment half is far too stiff for Euler's
+        // MJCF has no actuator speed limit: the runner keeps the control within speed/gain of the angle (play_mujoco.py)
+        x.start("custom");
+        x.start("numeric").attr("name", SERVO_SPEED).attr("data", RobotModel.speed()).end();
+        x.end();
         x.start("option").attr("timestep", STEP).attr("integrator", "implicit").attr("gravity", 0, 0, -9.81).end();
         x.start("default");
         x.start("geom").attr("friction", RobotModel.selfFriction(), 0.005, 0.0001).attr("condim", "3").end();
