@@ -11,16 +11,16 @@ import org.parpe.sim.Vec3;
  * module's angle in radians ({@code ref} is the initial angle); a position servo {@code m<ID>} per
  * joint whose control is that angle, with the servo's torque as its force range; loops
  * closed by {@code weld} equality constraints; the simulator's contact exclusions; friction on
- * the floor and between parts; a 1 ms step (MuJoCo's loop closures are soft constraints, and
- * PARPE's 5 ms step lets a 12-module loop open by 6 mm there).
+ * the floor and between parts; a 0.5 ms step (the servo's stiffness needs it; MuJoCo's loop
+ * closures are soft constraints, and PARPE's 5 ms step lets a 12-module loop open by 6 mm there).
  */
 public final class Mjcf {
     /**
      * Position gain of the servos, N·m/rad. PARPE's servo is a velocity loop (ODE's joint motor,
      * a constraint: it holds the speed it is told, gain × error capped at the servo's speed, with
      * up to its torque); as an MJCF servo that is {@code kv·(gain·(ctrl − q) − q̇)}, stiffer the
-     * larger kv. kv = 0.2 N·m·s/rad (kp = 40 × 0.2 = 8) is the stiffest that MuJoCo's 1 ms step
-     * keeps stable on a snake (0.5 diverges); its joint angles then follow PARPE's within 1–2°
+     * larger kv. With kv = 0.2 N·m·s/rad (kp = 40 × 0.2 = 8) the joint angles follow PARPE's
+     * within 1–2°; it needs MuJoCo's step at 0.5 ms (at 1 ms the optimised race snake diverges)
      * (docs/simulator.md, "PARPE against MuJoCo").
      */
     static final double KP = 8;
@@ -28,8 +28,8 @@ public final class Mjcf {
     public static final String SERVO_SPEED = "servo_speed";
     /** The site on a rolling robot's axle (see {@link RobotModel#axle()}), its z axis the axle. */
     public static final String AXLE = "axle";
-    /** MuJoCo's step, s. */
-    static final double STEP = 0.001;
+    /** MuJoCo's step, s: stable with the servo's {@link #KP} and keeps a loop closed within 0.5 mm. */
+    static final double STEP = 0.0005;
 
     private Mjcf() {
     }
@@ -41,7 +41,7 @@ public final class Mjcf {
                 + " modules; a control is the module's angle in radians.");
         x.start("mujoco").attr("model", m.name());
         x.start("compiler").attr("angle", "radian").attr("inertiafromgeom", "false").end();
-        // MuJoCo's constraints are soft: a 1 ms step (PARPE's is 5 ms) keeps a closed loop within 1 mm
+        // a 0.5 ms step: the stiff servo is stable (KP), and a closed loop (a soft constraint) stays within 1 mm
         // the implicit integrator: a servo's velocity feedback on a 40 g segment half is far too stiff for Euler's
         // MJCF has no actuator speed limit: the runner keeps the control within speed/gain of the angle (play_mujoco.py)
         x.start("custom");
