@@ -92,10 +92,10 @@ class BridgeExportTest {
     }
 
     @Test
-    void aGaitPlaysInMujocoAsInParpe() throws Exception {
+    void aGaitPlaysInMujocoWithOneRowPerTick() throws Exception {
         String py = BridgeTools.python();
         Path out = dir.resolve("hs");
-        Cli r = Cli.run("export", "--target", "mjcf", "--robot", "snake:n=8", "--out", out.toString(), "--duration", "20",
+        Cli r = Cli.run("export", "--target", "mjcf", "--robot", "snake:n=8", "--out", out.toString(), "--duration", "2",
                 "../examples/hello-snake.xml");
         assertEquals(0, r.code, r.toString());
         assertTrue(Files.exists(out.resolve("play_mujoco.py")) && Files.exists(out.resolve("snake_n_8.ctrl.csv")), r.out);
@@ -103,24 +103,11 @@ class BridgeExportTest {
         BridgeTools.run(dir, List.of(py, out.resolve("play_mujoco.py").toString(), out.resolve("snake_n_8.xml").toString(),
                 out.resolve("snake_n_8.ctrl.csv").toString(), "--out", trace.toString()));
         Path parpe = dir.resolve("parpe.csv");
-        Cli run = Cli.run("run", "../examples/hello-snake.xml", "--sim", "snake:n=8", "--duration", "20", "--trace", parpe.toString());
+        Cli run = Cli.run("run", "../examples/hello-snake.xml", "--sim", "snake:n=8", "--duration", "2", "--trace", parpe.toString());
         assertEquals(0, run.code, run.toString());
-        double mj = travel(trace);
-        double pk = travel(parpe);
         assertEquals(Files.readAllLines(parpe).size(), Files.readAllLines(trace).size(), "one row per tick in both");
-        // the cross-check of docs/bridges.md: hello-snake's distance in MuJoCo within 20 % of PARPE's
-        assertTrue(Math.abs(mj - pk) <= 0.2 * pk, "MuJoCo " + mj + " m, PARPE " + pk + " m");
-    }
-
-    /** How far the centre of mass moved in the plane from the first row to the last, m. */
-    static double travel(Path trace) throws Exception {
-        List<String> rows = Files.readAllLines(trace);
-        List<String> head = List.of(rows.get(0).split(","));
-        int x = head.indexOf("com_x");
-        int y = head.indexOf("com_y");
-        String[] a = rows.get(1).split(",");
-        String[] b = rows.get(rows.size() - 1).split(",");
-        return Math.hypot(Double.parseDouble(b[x]) - Double.parseDouble(a[x]), Double.parseDouble(b[y]) - Double.parseDouble(a[y]));
+        assertTrue(Files.readAllLines(trace).get(0).matches("time(,a[0-9]+){8},com_x,com_y,com_z"), "PARPE's trace columns");
+        // how far it goes in both is MujocoCrossCheckTest's
     }
 
     @Test

@@ -11,19 +11,25 @@ import org.parpe.sim.Vec3;
  * module's angle in radians ({@code ref} is the initial angle); a position servo {@code m<ID>} per
  * joint whose control is that angle, with the servo's torque as its force range; loops
  * closed by {@code weld} equality constraints; the simulator's contact exclusions; friction on
- * the floor and between parts; a 1 ms step (MuJoCo's loop closures are soft constraints, and
- * PARPE's 5 ms step lets a 12-module loop open by 6 mm there).
+ * the floor and between parts; a 0.5 ms step (the servo's stiffness needs it; MuJoCo's loop
+ * closures are soft constraints, and PARPE's 5 ms step lets a 12-module loop open by 6 mm there).
  */
 public final class Mjcf {
     /**
-     * Position gain of the servos, N·m/rad: PARPE's servo is a velocity loop (the speed it is told
-     * grows with the error) with a torque cap; as a position servo its stiffness depends on the
-     * load, and 3 N·m/rad is the figure at which hello-snake travels as far in MuJoCo as in PARPE
-     * (docs/bridges.md gives the cross-check).
+     * Position gain of the servos, N·m/rad. PARPE's servo is a velocity loop (ODE's joint motor,
+     * a constraint: it holds the speed it is told, gain × error capped at the servo's speed, with
+     * up to its torque); as an MJCF servo that is {@code kv·(gain·(ctrl − q) − q̇)}, stiffer the
+     * larger kv. With kv = 0.2 N·m·s/rad (kp = 40 × 0.2 = 8) the joint angles follow PARPE's
+     * within 1–2°; it needs MuJoCo's step at 0.5 ms (at 1 ms the optimised race snake diverges)
+     * (docs/simulator.md, "PARPE against MuJoCo").
      */
-    static final double KP = 3;
-    /** MuJoCo's step, s. */
-    static final double STEP = 0.001;
+    static final double KP = 8;
+    /** The custom numeric that tells a runner the servo's speed limit, rad/s. */
+    public static final String SERVO_SPEED = "servo_speed";
+    /** The site on a rolling robot's axle (see {@link RobotModel#axle()}), its z axis the axle. */
+    public static final String AXLE = "axle";
+    /** MuJoCo's step, s: stable with the servo's {@link #KP} and keeps a loop closed within 0.5 mm. */
+    static final double STEP = 0.0005;
 
     private Mjcf() {
     }
@@ -35,8 +41,12 @@ public final class Mjcf {
                 + " modules; a control is the module's angle in radians.");
         x.start("mujoco").attr("model", m.name());
         x.start("compiler").attr("angle", "radian").attr("inertiafromgeom", "false").end();
-        // MuJoCo's constraints are soft: a 1 ms step (PARPE's is 5 ms) keeps a closed loop within 1 mm
+        // a 0.5 ms step: the stiff servo is stable (KP), and a closed loop (a soft constraint) stays within 1 mm
         // the implicit integrator: a servo's velocity feedback on a 40 g segment half is far too stiff for Euler's
+        // MJCF has no actuator speed limit: the runner keeps the control within speed/gain of the angle (play_mujoco.py)
+        x.start("custom");
+        x.start("numeric").attr("name", SERVO_SPEED).attr("data", RobotModel.speed()).end();
+        x.end();
         x.start("option").attr("timestep", STEP).attr("integrator", "implicit").attr("gravity", 0, 0, -9.81).end();
         x.start("default");
         x.start("geom").attr("friction", RobotModel.selfFriction(), 0.005, 0.0001).attr("condim", "3").end();
@@ -108,6 +118,11 @@ public final class Mjcf {
         x.start("inertial").attr("pos", 0, 0, 0).attr("mass", l.mass()).attr("diaginertia", inertia.x(), inertia.y(),
                 inertia.z()).end();
         geom(x, l.shape());
+        if (m.axle() != null && m.axle().piece() == i) {
+            // the runner judges a rolling robot's fall by this axis, as PARPE's metrics do (a rolling robot's root turns over)
+            Vec3 a = m.axle().local();
+            x.start("site").attr("name", AXLE).attr("zaxis", a.x(), a.y(), a.z()).end();
+        }
         for (RobotModel.Joint c : m.joints()) {
             if (c.parent() == i) {
                 body(x, m, c.child(), i);

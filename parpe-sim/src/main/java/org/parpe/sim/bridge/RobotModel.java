@@ -75,9 +75,12 @@ public final class RobotModel {
     private final List<Joint> joints;
     private final List<Closure> closures;
     private final List<int[]> excluded;
+    private final Assembly.Axle axle;
 
-    private RobotModel(String name, List<Link> links, List<Joint> joints, List<Closure> closures, List<int[]> excluded) {
+    private RobotModel(String name, List<Link> links, List<Joint> joints, List<Closure> closures, List<int[]> excluded,
+                       Assembly.Axle axle) {
         this.name = name;
+        this.axle = axle;
         this.links = List.copyOf(links);
         this.joints = List.copyOf(joints);
         this.closures = List.copyOf(closures);
@@ -130,7 +133,7 @@ public final class RobotModel {
             adjacent.get(edges.get(e)[1]).add(e);
         }
         List<Joint> joints = orient(a.rootPiece(), links, edges, what, adjacent);
-        return new RobotModel(config.name(), links, joints, closures, excludedPairs(a, joints));
+        return new RobotModel(config.name(), links, joints, closures, excludedPairs(a, joints), a.axle());
     }
 
     private static int pieceOf(Assembly a, Map<String, Integer> firstPiece, String part, int plate) {
@@ -234,6 +237,15 @@ public final class RobotModel {
 
     public List<int[]> excluded() {
         return excluded;
+    }
+
+    /**
+     * The axle a rolling robot (a wheel, a loop) is judged by for falling, as the simulator judges
+     * it: a link (index) and a unit direction in its frame; null for a robot that does not roll.
+     * Link {@code i} is piece {@code i} of the assembly, in the same frame.
+     */
+    public Assembly.Axle axle() {
+        return axle;
     }
 
     /** The root link: the one no joint has as its child. */
