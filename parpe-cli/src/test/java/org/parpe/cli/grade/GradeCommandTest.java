@@ -96,9 +96,14 @@ class GradeCommandTest {
     }
 
     private Path challenge() throws Exception {
+        return challenge(2);
+    }
+
+    private Path challenge(double duration) throws Exception {
         Path world = Path.of("../examples/worlds/race-track.xml").toAbsolutePath().normalize();
         Path c = dir.resolve("race.xml");
-        Files.writeString(c, "<challenge world=\"" + world + "\" robot=\"snake:n=8\" duration=\"2\" tick=\"0.01\""
+        Files.writeString(c, "<challenge world=\"" + world + "\" robot=\"snake:n=8\" duration=\"" + duration
+                + "\" tick=\"0.01\""
                 + " max-modules=\"8\" tie-break=\"distance\"/>\n");
         return c;
     }
@@ -199,7 +204,8 @@ class GradeCommandTest {
     void aRunPastItsCpuLimitIsStoppedAndCostsOnlyItsRow() throws Exception {
         Path s = Files.createDirectories(dir.resolve("students"));
         Files.writeString(s.resolve("slow.xml"), snake("30", "<main cycles=\"forever\"><race/></main>"));
-        Cli r = Cli.run("grade", challenge().toString(), s.toString(), "--out", dir.resolve("r").toString(),
+        // an hour of simulated time: far more than 0.3 s of CPU however fast the simulator gets
+        Cli r = Cli.run("grade", challenge(3600).toString(), s.toString(), "--out", dir.resolve("r").toString(),
                 "--cpu-limit", "0.3", "--memory", "128");
         assertEquals(0, r.code, r.toString());
         List<List<String>> rows = parse(Files.readString(dir.resolve("r/report.csv")));
