@@ -46,19 +46,8 @@ class TickAllocationTest {
                 + "<states><up angles=\"30\"/><down angles=\"-30\"/></states></program>";
     }
 
-    /** The paper's centipede walk (examples/centipede-walk.xml) on the {@code centipede} generator's IDs. */
-    static final String CENTIPEDE = "<program><robot><structure><leftSwing elements=\"0,2,4,6,8,10,12\"/>"
-            + "<leftLift elements=\"1,3,5,7,9,11,13\"/><rightSwing elements=\"14,16,18,20,22,24,26\"/>"
-            + "<rightLift elements=\"15,17,19,21,23,25,27\"/><spine elements=\"28..54\"/></structure></robot>"
-            + "<main><walk/></main><behaviors><walk>"
-            + "<swing group=\"!leftSwing\" offset=\"0\" phase=\"0.75\" period=\"3\"/>"
-            + "<swing group=\"rightSwing\" offset=\"0.5\" phase=\"0.75\" period=\"3\"/>"
-            + "<step group=\"leftLift\" offset=\"0\" phase=\"0.75\" period=\"3\"/>"
-            + "<step group=\"rightLift\" offset=\"0.5\" phase=\"0.75\" period=\"3\"/></walk></behaviors>"
-            + "<automata><swing states=\"reach, push\" times=\"1, 2\"/>"
-            + "<step states=\"raise, lower, stance\" times=\"0.5, 0.5, 2\"/></automata>"
-            + "<states><reach angles=\"25\"/><push angles=\"-25\"/><raise angles=\"20\"/>"
-            + "<lower angles=\"-60\"/><stance angles=\"-60\"/></states></program>";
+    /** The paper's centipede walk on the {@code centipede} generator's IDs. */
+    static final Path CENTIPEDE = Path.of("../examples/centipede-walk.xml");
 
     @Test
     void snakeTickAllocatesNothing() throws Exception {
@@ -67,7 +56,7 @@ class TickAllocationTest {
 
     @Test
     void centipedeTickAllocatesNothing() throws Exception {
-        assertSteadyTickAllocatesNothing("centipede", CENTIPEDE, null);
+        assertSteadyTickAllocatesNothing("centipede", Files.readString(CENTIPEDE), null);
     }
 
     /**
@@ -95,7 +84,7 @@ class TickAllocationTest {
         World world = WorldReader.read(file, found);
         assertNotNull(world, () -> found.all().toString());
         assertTrue(world.objects().size() == 5 && !world.solids().isEmpty(), "movable objects and rubble");
-        assertSteadyTickAllocatesNothing("centipede", CENTIPEDE, world);
+        assertSteadyTickAllocatesNothing("centipede", Files.readString(CENTIPEDE), world);
     }
 
     private static void assertSteadyTickAllocatesNothing(String robot, String script, World world) throws Exception {
