@@ -42,7 +42,8 @@ class EditLayerTest {
     /**
      * The classes allowed regular expressions, each over something that is not a script's text:
      * the XML reader of flat files, the editor's forgiving scanner, names inside expressions and
-     * attribute values, CSV cells, stimulus and world files, command names in help pages.
+     * attribute values, CSV cells, stimulus and world files, the head line of a grading shard's
+     * file, command names in help pages.
      */
     @ArchTest
     static final ArchRule NO_PATTERNS_OVER_SCRIPT_TEXT = noClasses().that().resideInAPackage("org.parpe..")
@@ -54,6 +55,7 @@ class EditLayerTest {
             .and().doNotHaveFullyQualifiedName("org.parpe.core.run.StimulusParser")
             .and().doNotHaveFullyQualifiedName("org.parpe.sim.sweep.SweepCsv")
             .and().doNotHaveFullyQualifiedName("org.parpe.sim.world.WorldReader")
+            .and().doNotHaveFullyQualifiedName("org.parpe.sim.grade.GradeShard")
             .and().doNotHaveFullyQualifiedName("org.parpe.gui.help.CommandNames")
             .should().dependOnClassesThat().resideInAPackage("java.util.regex..");
 
