@@ -14,7 +14,7 @@ import org.parpe.sim.config.RobotConfigs;
 
 /**
  * The bar above the 3D view: the simulated robot (automatic, one of the simulator's generators,
- * or a configuration file), the world it runs in, TrackRobot, module IDs and a reset of the camera.
+ * or a configuration file), the world it runs in, Track robot, module IDs and a reset of the camera.
  */
 public final class ViewBar {
     private static final String BROWSE = "Configuration file\u2026";
@@ -50,7 +50,7 @@ public final class ViewBar {
         robot.addListener(SWT.Selection, e -> chosen());
         world = new WorldPicker(bar, ide, prefs, this::worldChosen);
         track = new Button(bar, SWT.CHECK);
-        track.setText("TrackRobot");
+        track.setText("Track robot");
         track.setSelection(Boolean.parseBoolean(prefs.get("view.track", "true")));
         ids = new Button(bar, SWT.CHECK);
         ids.setText("Module IDs");
