@@ -6,6 +6,7 @@ import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.TreeSet;
 import org.parpe.core.diagram.Labels;
 import org.parpe.core.diagram.Scene;
 import org.parpe.sim.BodyShape;
@@ -114,9 +115,9 @@ public final class RobotSheet {
             double py = cy - scale * Geo.dot(m, v.up());
             IdLabel same = labels.stream().filter(l -> Math.hypot(l.px - px, l.py - py) < 1).findFirst().orElse(null);
             if (same != null) {
-                same.ids.append(", ").append(h.moduleId());
+                same.ids.add(h.moduleId());
             } else {
-                labels.add(new IdLabel(new StringBuilder().append(h.moduleId()), px, py));
+                labels.add(new IdLabel(new TreeSet<>(List.of(h.moduleId())), px, py));
             }
         }
         placeIds(sc, labels, x0, y0);
@@ -125,20 +126,38 @@ public final class RobotSheet {
 
     /** The IDs of the hinges drawn at one point of a view ("3, 4": lined up along the view), and where it is. */
     private static final class IdLabel {
-        final StringBuilder ids;
+        final TreeSet<Integer> ids;
         final double px;
         final double py;
         double dx;
         double dy;
 
-        IdLabel(StringBuilder ids, double px, double py) {
+        IdLabel(TreeSet<Integer> ids, double px, double py) {
             this.ids = ids;
             this.px = px;
             this.py = py;
         }
 
         Scene.Text text() {
-            return new Scene.Text(px + dx, py + dy + 4, ids.toString(), 11, 0, INK, true);
+            return new Scene.Text(px + dx, py + dy + 4, text(ids), 11, 0, INK, true);
+        }
+
+        /** "3", "3, 4", "0, 1, 2", "3, 5-9": runs of four or more IDs as ranges. */
+        static String text(TreeSet<Integer> ids) {
+            StringBuilder s = new StringBuilder();
+            List<Integer> all = List.copyOf(ids);
+            for (int i = 0; i < all.size(); i++) {
+                int j = i;
+                while (j + 1 < all.size() && all.get(j + 1) == all.get(j) + 1) {
+                    j++;
+                }
+                s.append(s.length() == 0 ? "" : ", ").append(all.get(i));
+                if (j >= i + 3) {
+                    s.append('-').append(all.get(j));
+                    i = j;
+                }
+            }
+            return s.toString();
         }
     }
 
@@ -158,7 +177,7 @@ public final class RobotSheet {
             if (met == null || nudge(l, placed, x0, y0)) {
                 placed.add(l);
             } else {
-                met.ids.append(", ").append(l.ids);
+                met.ids.addAll(l.ids);
             }
         }
         for (IdLabel l : placed) {
@@ -189,10 +208,10 @@ public final class RobotSheet {
         return false;
     }
 
-    /** The first of {@code placed} whose text meets {@code l}'s, or null. */
+    /** The first of {@code placed} other than {@code l} whose text meets {@code l}'s, or null. */
     private static IdLabel meets(IdLabel l, List<IdLabel> placed) {
         Labels.Box b = Labels.box(l.text());
-        return placed.stream().filter(p -> Labels.box(p.text()).overlaps(b)).findFirst().orElse(null);
+        return placed.stream().filter(p -> p != l && Labels.box(p.text()).overlaps(b)).findFirst().orElse(null);
     }
 
     /** One scale for the three views: the robot's largest extent fills a view with a margin. */
