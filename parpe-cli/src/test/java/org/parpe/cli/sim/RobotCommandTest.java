@@ -7,12 +7,19 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.TreeSet;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.parpe.cli.Cli;
+import org.parpe.core.diagram.Labels;
+import org.parpe.core.diagram.Scene;
 
 /**
  * {@code parpe robot}: located problems with {@code --check} and {@code --kit}, and the
@@ -43,6 +50,49 @@ class RobotCommandTest {
                     DOCS.resolve(name + ".png").toString()).code);
         }
         assertEquals(Files.readString(golden), svg, "differs from " + golden + "; look at both, then update");
+    }
+
+    /** A module-ID label of the sheet's views: bold, 11 px, centred. */
+    private static final Pattern ID_LABEL = Pattern.compile("<text x=\"([0-9.]+)\" y=\"([0-9.]+)\" font-size=\"11\""
+            + " text-anchor=\"middle\" font-weight=\"bold\" fill=\"#222222\">([^<]*)</text>");
+
+    /**
+     * In each of the three views no two module IDs meet (boxes as {@link Labels#box} estimates
+     * them), and every hinge's ID is still there, alone or in a merged label "3, 4" or "5-9"
+     * (humanoid15's front view also moves labels aside with a leader line).
+     */
+    @ParameterizedTest
+    @ValueSource(strings = {"tee-snake", "wheel6", "humanoid15"})
+    void theModuleIdsOfAViewNeverOverlap(String name) throws Exception {
+        Path out = dir.resolve(name + ".svg");
+        assertEquals(0, Cli.run("robot", "../examples/configs/" + name + ".xml", "--out", out.toString()).code);
+        List<List<Scene.Text>> views = List.of(new ArrayList<>(), new ArrayList<>(), new ArrayList<>());
+        Matcher m = ID_LABEL.matcher(Files.readString(out));
+        while (m.find()) {
+            Scene.Text t = new Scene.Text(Double.parseDouble(m.group(1)), Double.parseDouble(m.group(2)), m.group(3), 11, 0,
+                    0x222222, true);
+            views.get((int) ((t.x() - 20) / 320)).add(t);
+        }
+        int hinges = java.util.Map.of("tee-snake", 5, "wheel6", 6, "humanoid15", 15).get(name);
+        for (int v = 0; v < 3; v++) {
+            List<Scene.Text> texts = views.get(v);
+            TreeSet<Integer> ids = new TreeSet<>();
+            for (Scene.Text t : texts) {
+                for (String run : t.text().split(", ")) {
+                    String[] ends = run.split("-");
+                    for (int id = Integer.parseInt(ends[0]); id <= Integer.parseInt(ends[ends.length - 1]); id++) {
+                        assertTrue(ids.add(id), "view " + v + " shows " + id + " twice");
+                    }
+                }
+            }
+            assertEquals(hinges, ids.size(), "view " + v + " shows " + ids);
+            for (int i = 0; i < texts.size(); i++) {
+                for (int j = i + 1; j < texts.size(); j++) {
+                    assertFalse(Labels.box(texts.get(i)).overlaps(Labels.box(texts.get(j))), "view " + v + ": '"
+                            + texts.get(i).text() + "' meets '" + texts.get(j).text() + "'");
+                }
+            }
+        }
     }
 
     @Test

@@ -1,9 +1,13 @@
 package org.parpe.sim.sheet;
 
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.TreeSet;
+import org.parpe.core.diagram.Labels;
 import org.parpe.core.diagram.Scene;
 import org.parpe.sim.BodyShape;
 import org.parpe.sim.Geo;
@@ -102,12 +106,112 @@ public final class RobotSheet {
                         cx + scale * Geo.dot(c[e[1]], v.right()), cy - scale * Geo.dot(c[e[1]], v.up()), colour, 1, 0));
             }
         }
-        for (Assembly.Hinge h : a.hinges()) {
+        List<IdLabel> labels = new ArrayList<>();
+        List<Assembly.Hinge> hinges = new ArrayList<>(a.hinges());
+        hinges.sort(Comparator.comparingInt(Assembly.Hinge::moduleId));
+        for (Assembly.Hinge h : hinges) {
             Vec3 m = Geo.scale(Geo.add(a.pieces().get(h.base()).position(), a.pieces().get(h.arm()).position()), 0.5);
-            sc.add(new Scene.Text(cx + scale * Geo.dot(m, v.right()), cy - scale * Geo.dot(m, v.up()) + 4,
-                    Integer.toString(h.moduleId()), 11, 0, INK, true));
+            double px = cx + scale * Geo.dot(m, v.right());
+            double py = cy - scale * Geo.dot(m, v.up());
+            IdLabel same = labels.stream().filter(l -> Math.hypot(l.px - px, l.py - py) < 1).findFirst().orElse(null);
+            if (same != null) {
+                same.ids.add(h.moduleId());
+            } else {
+                labels.add(new IdLabel(new TreeSet<>(List.of(h.moduleId())), px, py));
+            }
         }
+        placeIds(sc, labels, x0, y0);
         sc.add(new Scene.Line(x0 + 10, y0 + VIEW - 10, x0 + 10 + scale * 0.1, y0 + VIEW - 10, GREY, 3, 0));
+    }
+
+    /** The IDs of the hinges drawn at one point of a view ("3, 4": lined up along the view), and where it is. */
+    private static final class IdLabel {
+        final TreeSet<Integer> ids;
+        final double px;
+        final double py;
+        double dx;
+        double dy;
+
+        IdLabel(TreeSet<Integer> ids, double px, double py) {
+            this.ids = ids;
+            this.px = px;
+            this.py = py;
+        }
+
+        Scene.Text text() {
+            return new Scene.Text(px + dx, py + dy + 4, text(ids), 11, 0, INK, true);
+        }
+
+        /** "3", "3, 4", "0, 1, 2", "3, 5-9": runs of four or more IDs as ranges. */
+        static String text(TreeSet<Integer> ids) {
+            StringBuilder s = new StringBuilder();
+            List<Integer> all = List.copyOf(ids);
+            for (int i = 0; i < all.size(); i++) {
+                int j = i;
+                while (j + 1 < all.size() && all.get(j + 1) == all.get(j) + 1) {
+                    j++;
+                }
+                s.append(s.length() == 0 ? "" : ", ").append(all.get(i));
+                if (j >= i + 3) {
+                    s.append('-').append(all.get(j));
+                    i = j;
+                }
+            }
+            return s.toString();
+        }
+    }
+
+    /** Where a label that meets one placed before may go: {label widths right, px down}; up, down, right, left, further. */
+    private static final double[][] NUDGES = {{0, -14}, {0, 14}, {1, 0}, {-1, 0}, {0, -28}, {0, 28}, {1, -14},
+        {-1, -14}, {1, 14}, {-1, 14}};
+
+    /**
+     * Adds the ID labels of a view, each at its hinge unless its text would meet one placed
+     * before: then at the first free nudge inside the view with a thin leader line to its hinge,
+     * or, with no free place, merged into the label it meets.
+     */
+    private static void placeIds(Scene sc, List<IdLabel> labels, double x0, double y0) {
+        List<IdLabel> placed = new ArrayList<>();
+        for (IdLabel l : labels) {
+            IdLabel met = meets(l, placed);
+            if (met == null || nudge(l, placed, x0, y0)) {
+                placed.add(l);
+            } else {
+                met.ids.addAll(l.ids);
+            }
+        }
+        for (IdLabel l : placed) {
+            Scene.Text t = l.text();
+            if (l.dx != 0 || l.dy != 0) {
+                Labels.Box b = Labels.box(t);
+                sc.add(new Scene.Line(l.px, l.py, Math.max(b.x(), Math.min(l.px, b.x() + b.w())),
+                        Math.max(b.y(), Math.min(l.py, b.y() + b.h())), GREY, 0.5, 0));
+            }
+            sc.add(t);
+        }
+    }
+
+    /** Moves {@code l} to the first nudge inside the view where it meets none of {@code placed}; false if none. */
+    private static boolean nudge(IdLabel l, List<IdLabel> placed, double x0, double y0) {
+        double w = Labels.box(l.text()).w();
+        for (double[] n : NUDGES) {
+            l.dx = n[0] * (w + 8);
+            l.dy = n[1];
+            Labels.Box b = Labels.box(l.text());
+            if (b.x() > x0 + 2 && b.x() + b.w() < x0 + VIEW - 2 && b.y() > y0 + 20 && b.y() + b.h() < y0 + VIEW - 16
+                    && meets(l, placed) == null) {
+                return true;
+            }
+        }
+        l.dx = 0;
+        l.dy = 0;
+        return false;
+    }
+
+    /** The first of {@code placed} other than {@code l} whose text meets {@code l}'s, or null. */
+    private static IdLabel meets(IdLabel l, List<IdLabel> placed) {
+        Labels.Box b = Labels.box(l.text());
+        return placed.stream().filter(p -> p != l && Labels.box(p.text()).overlaps(b)).findFirst().orElse(null);
     }
 
     /** One scale for the three views: the robot's largest extent fills a view with a margin. */
