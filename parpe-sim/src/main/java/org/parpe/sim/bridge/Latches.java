@@ -38,8 +38,8 @@ public final class Latches {
         }
 
         /**
-         * The pose of b's link in a's link's frame when plate b lies on plate a with its "up"
-         * {@code step} quarter turns about a's normal from a's "up": position, then rotation.
+         * The orientation of b's link in a's link's frame when plate b lies on plate a with its
+         * "up" {@code step} quarter turns about a's normal from a's "up".
          */
         Mat3 rotation(int step) {
             Vec3 n = a.normal();
@@ -54,6 +54,7 @@ public final class Latches {
             return Geo.mul(Geo.columns(face, up, Geo.cross(face, up)), Geo.transpose(b.frame()));
         }
 
+        /** The position of b's link in a's link's frame in that pose. */
         Vec3 position(int step) {
             return Geo.sub(a.centre(), Geo.mul(rotation(step), b.centre()));
         }
@@ -62,7 +63,10 @@ public final class Latches {
     private Latches() {
     }
 
-    /** The latchable pairs of assembly {@code a} (its piece i is link i of {@code m}) for the modules {@code latch}. */
+    /**
+     * The latchable pairs of assembly {@code a} for the modules {@code latch}, in ascending module
+     * ID and plate; a plate's link is its piece's index, link i of the assembly's {@link RobotModel}.
+     */
     public static List<Pair> of(Assembly a, Set<Integer> latch) {
         List<Plate> plates = new ArrayList<>();
         for (Assembly.PlateSite s : a.plates()) {
