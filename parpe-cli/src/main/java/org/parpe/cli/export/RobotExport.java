@@ -9,18 +9,22 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Set;
+import java.util.TreeSet;
 import java.util.regex.Pattern;
 import org.parpe.cli.UsageException;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.Severity;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.model.Program;
+import org.parpe.core.run.PlateSink;
 import org.parpe.core.run.Run;
 import org.parpe.core.run.RunOptions;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.core.run.Stimulus;
 import org.parpe.core.run.TargetException;
 import org.parpe.sim.SimTarget;
+import org.parpe.sim.bridge.Latches;
 import org.parpe.sim.bridge.Mjcf;
 import org.parpe.sim.bridge.RobotModel;
 import org.parpe.sim.bridge.Sdf;
@@ -64,15 +68,16 @@ final class RobotExport {
             return 1;
         }
         RobotModel m = RobotModel.of(config, a);
+        List<Latches.Pair> latches = q.program() == null ? List.of() : Latches.of(a, latchModules(q.program()));
         String base = baseName(q.robot());
         Map<String, String> files = new LinkedHashMap<>();
         switch (q.target()) {
-            case "mjcf" -> files.put(base + ".xml", Mjcf.of(m));
+            case "mjcf" -> files.put(base + ".xml", Mjcf.of(m, latches));
             case "urdf" -> files.put(base + ".urdf", Urdf.of(m));
             default -> files.put(base + ".sdf", Sdf.of(m));
         }
         if (q.program() != null) {
-            String gait = gait(q, m, diags);
+            String gait = gait(q, m, q.target().equals("mjcf") ? plates(latches) : List.of(), diags);
             diags.all().stream().filter(d -> d.severity() != Severity.ERROR).forEach(d -> err.println(d.format()));
             if (gait == null) {
                 diags.all().stream().filter(d -> d.severity() == Severity.ERROR).forEach(d -> err.println(d.format()));
@@ -87,7 +92,9 @@ final class RobotExport {
         out.println("wrote " + files.size() + (files.size() == 1 ? " file" : " files") + " to " + q.out() + ": "
                 + String.join(", ", files.keySet()));
         out.println(m.links().size() + " links, " + m.joints().stream().filter(RobotModel.Joint::revolute).count()
-                + " servo joints, " + m.closures().size() + (m.closures().size() == 1 ? " loop" : " loops"));
+                + " servo joints, " + m.closures().size() + (m.closures().size() == 1 ? " loop" : " loops")
+                + (q.target().equals("mjcf") && !latches.isEmpty() ? ", " + latches.size() + " latchable plate "
+                + (latches.size() == 1 ? "pair" : "pairs") : ""));
         if (q.target().equals("mjcf") && q.program() != null) {
             out.println("play: python3 " + q.out().resolve("play_mujoco.py") + " " + q.out().resolve(base + ".xml") + " "
                     + q.out().resolve(base + ".ctrl.csv") + " --out trace.csv");
@@ -105,6 +112,24 @@ final class RobotExport {
         }
     }
 
+    /** The modules of {@code p} that carry the latch actuator (PARSL.md §14). */
+    private static Set<Integer> latchModules(Program p) {
+        Set<Integer> out = new TreeSet<>();
+        p.robot().actuators().stream().filter(d -> d.type().equals("latch")).forEach(d -> out.addAll(d.modules()));
+        return out;
+    }
+
+    /** The plates of {@code latches}, each once, in ascending module ID and plate. */
+    private static List<Latches.Plate> plates(List<Latches.Pair> latches) {
+        Set<Latches.Plate> out = new TreeSet<>((x, y) -> x.moduleId() != y.moduleId()
+                ? Integer.compare(x.moduleId(), y.moduleId()) : Integer.compare(x.plate(), y.plate()));
+        latches.forEach(l -> {
+            out.add(l.a());
+            out.add(l.b());
+        });
+        return new ArrayList<>(out);
+    }
+
     private static String baseName(String robot) {
         String name = Path.of(robot).getFileName().toString().replaceFirst("\\.xml$", "");
         name = name.replaceAll("[^A-Za-z0-9_.-]", "_");
@@ -114,9 +139,12 @@ final class RobotExport {
     /**
      * The commanded angles of a run of the script on the robot in the simulator, one row per
      * tick: for MJCF the module angles (the actuators' controls), for URDF and SDF the joint
-     * values (module angle minus initial angle), radians, columns m&lt;ID&gt; in ascending ID.
+     * values (module angle minus initial angle), radians, columns m&lt;ID&gt; in ascending ID;
+     * then per latchable plate a column plate&lt;ID&gt;_&lt;P&gt; with the tick's plate action
+     * ({@link PlateSink#NONE} 0, {@link PlateSink#ARM} 1, {@link PlateSink#RELEASE} 2).
      */
-    private static String gait(Request q, RobotModel m, DiagnosticList diags) throws UsageException {
+    private static String gait(Request q, RobotModel m, List<Latches.Plate> plates, DiagnosticList diags)
+            throws UsageException {
         List<RobotModel.Joint> joints = new ArrayList<>(m.joints().stream().filter(RobotModel.Joint::revolute).toList());
         joints.sort((x, y) -> Integer.compare(x.moduleId(), y.moduleId()));
         int[] ids = q.program().moduleIds();
@@ -128,7 +156,13 @@ final class RobotExport {
         }
         StringBuilder csv = new StringBuilder("time");
         joints.forEach(j -> csv.append(',').append(j.name()));
+        plates.forEach(p -> csv.append(',').append(p.name()));
         csv.append('\n');
+        int[] plateAt = new int[plates.size()];
+        for (int k = 0; k < plateAt.length; k++) {
+            plateAt[k] = 2 * java.util.Arrays.binarySearch(ids, plates.get(k).moduleId()) + plates.get(k).plate();
+        }
+        byte[] acts = new byte[2 * ids.length];
         Run.Builder b = Run.builder(q.program(), new RunOptions(q.tick(), 0, q.stimuli()), diags);
         try {
             b.attach(new SimTarget(q.robot()));
@@ -136,12 +170,20 @@ final class RobotExport {
             e.diagnostics().forEach(diags::report);
             return null;
         }
+        if (!plates.isEmpty()) {
+            // a tick's plate actions come before its setpoints reach the observer (Engine)
+            b.plates((tick, time, actions, where) -> System.arraycopy(actions, 0, acts, 0, acts.length));
+        }
         b.observer((tick, time, commanded) -> {
             csv.append(String.format(Locale.ROOT, "%.6f", time));
             for (int k = 0; k < column.length; k++) {
                 double deg = column[k] < 0 ? Math.toDegrees(joints.get(k).initial()) : commanded[column[k]];
                 csv.append(',').append(String.format(Locale.ROOT, "%.9f", Math.toRadians(deg) - offset[k]));
             }
+            for (int at : plateAt) {
+                csv.append(',').append(acts[at]);
+            }
+            java.util.Arrays.fill(acts, PlateSink.NONE);
             csv.append('\n');
         });
         RunOutcome o = b.duration(q.duration()).build().execute();

@@ -110,6 +110,47 @@ class BridgeExportTest {
         // how far it goes in both is MujocoCrossCheckTest's
     }
 
+    /**
+     * Issue 35 item 3: a script with latches (PARSL 1.1 §14) exports its latchable plate pair as
+     * inactive welds that both MuJoCo 2.2.2's compiler and MuJoCo 3 load with no warning; the
+     * gait carries the run's plate actions, and played in MuJoCo the curled snake's ends latch
+     * (a weld switches on) and the release parts them (it switches off).
+     */
+    @Test
+    void aDockingSnakeLatchesAndLetsGoInMujoco() throws Exception {
+        BridgeTools.require("mujoco-compile");
+        String py = BridgeTools.python();
+        Path out = dir.resolve("dock");
+        Cli r = Cli.run("export", "--target", "mjcf", "--robot", "snake:n=10", "--out", out.toString(), "--duration", "25",
+                "../examples/docking-snake-loop.xml");
+        assertEquals(0, r.code, r.toString());
+        assertTrue(r.out.contains("1 latchable plate pair"), r.out);
+        Path model = out.resolve("snake_n_10.xml");
+        String mjcf = Files.readString(model);
+        // the end modules 0 and 9 carry the latches; their free plates are 0.0 and 9.1, four welds (one per 90° step)
+        assertEquals(4, mjcf.split("<weld name=\"latch_plate0_0__plate9_1_r").length - 1, mjcf);
+        assertEquals(4, mjcf.split("active=\"false\"").length - 1, mjcf);
+        List<String> gait = Files.readAllLines(out.resolve("snake_n_10.ctrl.csv"));
+        assertTrue(gait.get(0).endsWith(",m9,plate0_0,plate9_1"), gait.get(0));
+        assertTrue(gait.stream().anyMatch(l -> l.endsWith(",2,2")), "the let_go state releases both plates");
+        assertTrue(BridgeTools.run(dir, List.of("mujoco-compile", model.toString(), dir.resolve("dock.mjb").toString()))
+                .contains("Done"));
+        String check = BridgeTools.run(dir, List.of(py, Path.of("src/test/resources/bridge/mujoco_check.py")
+                .toAbsolutePath().toString(), model + "@1"));
+        assertTrue(check.contains("warnings=none") && check.contains("finite=True"), check);
+        Path events = dir.resolve("latches.csv");
+        BridgeTools.run(dir, List.of(py, out.resolve("play_mujoco.py").toString(), model.toString(),
+                out.resolve("snake_n_10.ctrl.csv").toString(), "--out", dir.resolve("mj.csv").toString(), "--latches",
+                events.toString()));
+        List<String> lines = Files.readAllLines(events);
+        assertEquals(3, lines.size(), "one latch, one release: " + lines);
+        assertTrue(lines.get(1).matches("[0-9.]+,latch,latch_plate0_0__plate9_1_r[0-9]+"), lines.toString());
+        assertTrue(lines.get(2).matches("[0-9.]+,release,latch_plate0_0__plate9_1_r[0-9]+"), lines.toString());
+        double latched = Double.parseDouble(lines.get(1).split(",")[0]);
+        double released = Double.parseDouble(lines.get(2).split(",")[0]);
+        assertTrue(latched < released, lines.toString());
+    }
+
     @Test
     void badInputGetsLocatedMessagesAndWritesNothing() throws Exception {
         Path config = dir.resolve("bad.xml");

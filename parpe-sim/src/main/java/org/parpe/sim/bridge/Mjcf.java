@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.parpe.sim.BodyShape;
 import org.parpe.sim.Vec3;
+import org.parpe.sim.internal.Docking;
 
 /**
  * A robot as MuJoCo MJCF, in the subset that MuJoCo 2.2 and 3 both read: nested bodies at the
@@ -34,8 +35,26 @@ public final class Mjcf {
     private Mjcf() {
     }
 
+    /**
+     * The custom numeric that tells a runner when an armed pair latches: the distance between plate
+     * centres, m, and the misalignment, rad, from which PARPE's latch draws a plate in
+     * ({@link Docking#DRAW_DISTANCE}, {@link Docking#DRAW_ANGLE}). MuJoCo has no draw force; the
+     * weld, a soft constraint, pulls the plates home as the draw and the pins do (docs/bridges.md).
+     */
+    public static final String LATCH_CATCH = "latch_catch";
+
     /** The MJCF text of {@code m}. */
     public static String of(RobotModel m) {
+        return of(m, List.of());
+    }
+
+    /**
+     * The MJCF text of {@code m} with the plate pairs {@code latches} as welds that start inactive,
+     * four per pair (one per 90° step of the aligned pose, {@link Latches.Pair#weld}), and a site
+     * per latchable plate (x its face's normal, y its "up"); a runner switches a weld on when the
+     * pair latches and off when it is released (docs/bridges.md).
+     */
+    public static String of(RobotModel m, List<Latches.Pair> latches) {
         XmlOut x = new XmlOut();
         x.comment("PARPE robot '" + m.name() + "' (parpe export --target mjcf). Joints and actuators m<ID> are the"
                 + " modules; a control is the module's angle in radians.");
@@ -46,6 +65,9 @@ public final class Mjcf {
         // MJCF has no actuator speed limit: the runner keeps the control within speed/gain of the angle (play_mujoco.py)
         x.start("custom");
         x.start("numeric").attr("name", SERVO_SPEED).attr("data", RobotModel.speed()).end();
+        if (!latches.isEmpty()) {
+            x.start("numeric").attr("name", LATCH_CATCH).attr("data", Docking.DRAW_DISTANCE, Docking.DRAW_ANGLE).end();
+        }
         x.end();
         x.start("option").attr("timestep", STEP).attr("integrator", "implicit").attr("gravity", 0, 0, -9.81).end();
         x.start("default");
@@ -63,7 +85,7 @@ public final class Mjcf {
         x.start("light").attr("pos", 0, 0, 3).attr("dir", 0, 0, -1).end();
         x.start("geom").attr("name", "floor").attr("type", "plane").attr("size", 10, 10, 0.1)
                 .attr("friction", RobotModel.groundFriction(), 0.005, 0.0001).end();
-        body(x, m, m.root(), -1);
+        body(x, m, m.root(), -1, plates(latches));
         x.end();
         if (!m.excluded().isEmpty()) {
             x.start("contact");
@@ -72,11 +94,20 @@ public final class Mjcf {
             }
             x.end();
         }
-        if (!m.closures().isEmpty()) {
+        if (!m.closures().isEmpty() || !latches.isEmpty()) {
             x.start("equality");
             for (RobotModel.Closure c : m.closures()) {
                 x.start("weld").attr("name", c.name()).attr("solref", 2 * STEP, 1).attr("body1", m.links().get(c.a()).name())
                         .attr("body2", m.links().get(c.b()).name()).end();
+            }
+            for (Latches.Pair p : latches) {
+                for (int step = 0; step < 4; step++) {
+                    Vec3 at = p.position(step);
+                    double[] q = Frames.quaternion(p.rotation(step));
+                    x.start("weld").attr("name", p.weld(step)).attr("active", "false").attr("solref", 2 * STEP, 1)
+                            .attr("body1", m.links().get(p.a().link()).name()).attr("body2", m.links().get(p.b().link()).name())
+                            .attr("relpose", at.x(), at.y(), at.z(), q[0], q[1], q[2], q[3]).end();
+                }
             }
             x.end();
         }
@@ -98,7 +129,19 @@ public final class Mjcf {
         return out;
     }
 
-    private static void body(XmlOut x, RobotModel m, int i, int parent) {
+    private static List<Latches.Plate> plates(List<Latches.Pair> latches) {
+        List<Latches.Plate> out = new ArrayList<>();
+        for (Latches.Pair p : latches) {
+            for (Latches.Plate plate : List.of(p.a(), p.b())) {
+                if (!out.contains(plate)) {
+                    out.add(plate);
+                }
+            }
+        }
+        return out;
+    }
+
+    private static void body(XmlOut x, RobotModel m, int i, int parent, List<Latches.Plate> plates) {
         RobotModel.Link l = m.links().get(i);
         x.start("body").attr("name", l.name());
         Vec3 p = parent < 0 ? l.position() : m.relativePosition(parent, i);
@@ -123,9 +166,16 @@ public final class Mjcf {
             Vec3 a = m.axle().local();
             x.start("site").attr("name", AXLE).attr("zaxis", a.x(), a.y(), a.z()).end();
         }
+        for (Latches.Plate plate : plates) {
+            if (plate.link() == i) {
+                Vec3 c = plate.centre();
+                x.start("site").attr("name", plate.name()).attr("pos", c.x(), c.y(), c.z())
+                        .attr("quat", Frames.quaternion(plate.frame())).end();
+            }
+        }
         for (RobotModel.Joint c : m.joints()) {
             if (c.parent() == i) {
-                body(x, m, c.child(), i);
+                body(x, m, c.child(), i, plates);
             }
         }
         x.end();
