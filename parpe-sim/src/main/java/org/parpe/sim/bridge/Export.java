@@ -8,7 +8,6 @@ import java.util.Collection;
 import java.util.LinkedHashMap;
 import java.util.Locale;
 import java.util.Map;
-import java.util.regex.Pattern;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
@@ -28,9 +27,6 @@ import org.parpe.sim.internal.Assembly;
 public final class Export {
     /** The formats, as {@code --target} names them. */
     public static final java.util.List<String> TARGETS = java.util.List.of("mjcf", "urdf", "sdf");
-
-    /** Names every format takes: letters, digits, {@code _ . -}, not starting with a digit. */
-    private static final Pattern NAME = Pattern.compile("[A-Za-z_][A-Za-z0-9_.-]*");
 
     private Export() {
     }
@@ -107,11 +103,27 @@ public final class Export {
     /** Refuses part names that the format cannot carry, at the part. */
     private static void checkNames(RobotConfig config, String target, DiagnosticSink diags) {
         for (PartSpec p : config.parts()) {
-            if (!NAME.matcher(p.name()).matches() || p.name().equals("world")) {
+            if (!validName(p.name()) || p.name().equals("world")) {
                 diags.error(p.pos(), "part name '" + p.name() + "' cannot be a " + target.toUpperCase(Locale.ROOT)
                         + " name: use letters, digits, '_', '.' and '-', not starting with a digit, and not 'world'");
             }
         }
+    }
+
+    /** Whether every format takes {@code name}: ASCII letters, digits, {@code _ . -}, not starting with a digit or {@code . -}. */
+    static boolean validName(String name) {
+        if (name.isEmpty()) {
+            return false;
+        }
+        for (int i = 0; i < name.length(); i++) {
+            char c = name.charAt(i);
+            boolean letter = c >= 'A' && c <= 'Z' || c >= 'a' && c <= 'z' || c == '_';
+            boolean other = c >= '0' && c <= '9' || c == '.' || c == '-';
+            if (!letter && (i == 0 || !other)) {
+                return false;
+            }
+        }
+        return true;
     }
 
     private static String baseName(String robot) {
