@@ -84,6 +84,9 @@ public final class ExportRobotDialog {
                                          Consumer<List<Diagnostic>> problems) {
         ExportRobotDialog d = new ExportRobotDialog(parent, program, currentRobot, problems);
         d.shell.pack();
+        org.eclipse.swt.graphics.Rectangle over = parent.getBounds();
+        org.eclipse.swt.graphics.Point size = d.shell.getSize();
+        d.shell.setLocation(over.x + Math.max(0, (over.width - size.x) / 2), over.y + Math.max(0, (over.height - size.y) / 3));
         d.shell.open();
         return d;
     }
