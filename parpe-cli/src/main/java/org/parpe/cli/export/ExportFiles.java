@@ -3,20 +3,17 @@ package org.parpe.cli.export;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
-import java.nio.file.LinkOption;
 import java.nio.file.Path;
-import java.util.LinkedHashMap;
 import java.util.Map;
 import org.parpe.cli.UsageException;
-import org.parpe.core.io.AtomicFiles;
-import org.parpe.core.io.Content;
+import org.parpe.sim.bridge.Export;
 
 /**
  * Writes an export's files into a folder by the output rules (docs/cli.md). Only files of the
  * export's own names are replaced, and a sketch ({@code .ino}) only if it is still the one PARPE
  * generated: board code a user added to it is never overwritten. The folder changes as one:
  * every file is written in full to a random temporary name before any replaces its old version
- * ({@link AtomicFiles#writeAll}), so a full disk leaves the old export whole, never a new header
+ * ({@link Export#write}), so a full disk leaves the old export whole, never a new header
  * with old tables.
  */
 final class ExportFiles {
@@ -27,24 +24,17 @@ final class ExportFiles {
     }
 
     static void write(Path dir, Map<String, String> files) throws IOException, UsageException {
-        if (Files.exists(dir) && !Files.isDirectory(dir)) {
-            throw new UsageException("--out '" + dir + "' is a file, not a folder");
+        String refused = Export.refusal(dir, files.keySet());
+        if (refused != null) {
+            throw new UsageException("--out: " + refused);
         }
-        Files.createDirectories(dir);
-        Map<Path, Content> contents = new LinkedHashMap<>();
-        for (Map.Entry<String, String> f : files.entrySet()) {
-            Path p = dir.resolve(f.getKey());
-            if (Files.exists(p, LinkOption.NOFOLLOW_LINKS) && !Files.isRegularFile(p, LinkOption.NOFOLLOW_LINKS)) {
-                throw new UsageException("'" + p + "' is not a regular file (a link, directory, device or FIFO);"
-                        + " an export replaces its own regular files only: move it away or export to another folder");
-            }
-            if (f.getKey().endsWith(".ino") && Files.exists(p)
-                    && !Files.readString(p, StandardCharsets.UTF_8).startsWith(MARK)) {
+        for (String name : files.keySet()) {
+            Path p = dir.resolve(name);
+            if (name.endsWith(".ino") && Files.exists(p) && !Files.readString(p, StandardCharsets.UTF_8).startsWith(MARK)) {
                 throw new UsageException("'" + p + "' was edited (it no longer starts with '" + MARK
                         + "'); move it away or export to another folder");
             }
-            contents.put(p, Content.text(f.getValue()));
         }
-        AtomicFiles.writeAll(contents);
+        Export.write(dir, files);
     }
 }

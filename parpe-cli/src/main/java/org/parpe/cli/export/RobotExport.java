@@ -11,9 +11,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeSet;
-import java.util.regex.Pattern;
 import org.parpe.cli.UsageException;
-import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.Severity;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.model.Program;
@@ -24,14 +22,9 @@ import org.parpe.core.run.RunOutcome;
 import org.parpe.core.run.Stimulus;
 import org.parpe.core.run.TargetException;
 import org.parpe.sim.SimTarget;
+import org.parpe.sim.bridge.Export;
 import org.parpe.sim.bridge.Latches;
-import org.parpe.sim.bridge.Mjcf;
 import org.parpe.sim.bridge.RobotModel;
-import org.parpe.sim.bridge.Sdf;
-import org.parpe.sim.bridge.Urdf;
-import org.parpe.sim.config.RobotConfig;
-import org.parpe.sim.config.RobotConfigs;
-import org.parpe.sim.internal.Assembly;
 
 /**
  * {@code parpe export --target mjcf|urdf|sdf --robot ROBOT --out DIR [SCRIPT]}: the robot in
@@ -39,9 +32,6 @@ import org.parpe.sim.internal.Assembly;
  * (for MJCF with a Python runner that plays them in MuJoCo). docs/bridges.md says how to use them.
  */
 final class RobotExport {
-    /** Names every format takes: letters, digits, {@code _ . -}, not starting with a digit. */
-    private static final Pattern NAME = Pattern.compile("[A-Za-z_][A-Za-z0-9_.-]*");
-
     private RobotExport() {
     }
 
@@ -54,28 +44,16 @@ final class RobotExport {
     static int run(Request q, PrintWriter out, PrintWriter err) throws IOException, UsageException {
         DiagnosticList diags = new DiagnosticList();
         int[] ids = q.program() == null ? new int[0] : q.program().moduleIds();
-        RobotConfig config = RobotConfigs.resolve(q.robot(), ids, diags);
-        Assembly a = config == null ? null : Assembly.build(config, diags);
-        if (a != null) {
-            checkNames(config, q.target(), diags);
-        }
-        if (a != null && config.roots().size() > 1) {
-            diags.error(org.parpe.core.diag.SourcePos.origin(config.name()), "the configuration holds "
-                    + config.roots().size() + " robots (one per <root>); an export writes one robot");
-        }
-        if (diags.hasErrors()) {
+        Set<Integer> latching = q.program() == null ? Set.of() : latchModules(q.program());
+        Export.Robot robot = Export.robot(q.target(), q.robot(), ids, latching, diags);
+        if (robot == null) {
             diags.all().forEach(d -> err.println(d.format()));
             return 1;
         }
-        RobotModel m = RobotModel.of(config, a);
-        List<Latches.Pair> latches = q.program() == null ? List.of() : Latches.of(a, latchModules(q.program()));
-        String base = baseName(q.robot());
-        Map<String, String> files = new LinkedHashMap<>();
-        switch (q.target()) {
-            case "mjcf" -> files.put(base + ".xml", Mjcf.of(m, latches));
-            case "urdf" -> files.put(base + ".urdf", Urdf.of(m));
-            default -> files.put(base + ".sdf", Sdf.of(m));
-        }
+        RobotModel m = robot.model();
+        String base = robot.base();
+        Map<String, String> files = new LinkedHashMap<>(robot.files());
+        List<Latches.Pair> latches = robot.latches();
         if (q.program() != null) {
             String gait = gait(q, m, q.target().equals("mjcf") ? plates(latches) : List.of(), diags);
             diags.all().stream().filter(d -> d.severity() != Severity.ERROR).forEach(d -> err.println(d.format()));
@@ -91,25 +69,12 @@ final class RobotExport {
         ExportFiles.write(q.out(), files);
         out.println("wrote " + files.size() + (files.size() == 1 ? " file" : " files") + " to " + q.out() + ": "
                 + String.join(", ", files.keySet()));
-        out.println(m.links().size() + " links, " + m.joints().stream().filter(RobotModel.Joint::revolute).count()
-                + " servo joints, " + m.closures().size() + (m.closures().size() == 1 ? " loop" : " loops")
-                + (q.target().equals("mjcf") && !latches.isEmpty() ? ", " + latches.size() + " latchable plate "
-                + (latches.size() == 1 ? "pair" : "pairs") : ""));
+        out.println(robot.summary());
         if (q.target().equals("mjcf") && q.program() != null) {
             out.println("play: python3 " + q.out().resolve("play_mujoco.py") + " " + q.out().resolve(base + ".xml") + " "
                     + q.out().resolve(base + ".ctrl.csv") + " --out trace.csv");
         }
         return 0;
-    }
-
-    /** Refuses part names that the format cannot carry, at the part. */
-    private static void checkNames(RobotConfig config, String target, DiagnosticSink diags) {
-        for (org.parpe.sim.config.PartSpec p : config.parts()) {
-            if (!NAME.matcher(p.name()).matches() || p.name().equals("world")) {
-                diags.error(p.pos(), "part name '" + p.name() + "' cannot be a " + target.toUpperCase(Locale.ROOT)
-                        + " name: use letters, digits, '_', '.' and '-', not starting with a digit, and not 'world'");
-            }
-        }
     }
 
     /** The modules of {@code p} that carry the latch actuator (PARSL.md §14). */
@@ -128,12 +93,6 @@ final class RobotExport {
             out.add(l.b());
         });
         return new ArrayList<>(out);
-    }
-
-    private static String baseName(String robot) {
-        String name = Path.of(robot).getFileName().toString().replaceFirst("\\.xml$", "");
-        name = name.replaceAll("[^A-Za-z0-9_.-]", "_");
-        return name.isEmpty() ? "robot" : name;
     }
 
     /**

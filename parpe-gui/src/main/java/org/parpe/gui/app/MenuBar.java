@@ -2,6 +2,7 @@ package org.parpe.gui.app;
 
 import org.parpe.gui.editor.FindReplaceDialog;
 import org.parpe.gui.files.Examples;
+import org.parpe.gui.files.ExportRobotDialog;
 import org.parpe.gui.files.FileActions;
 import org.parpe.gui.hardware.HardwareDialog;
 import org.parpe.gui.help.HelpText;
@@ -33,6 +34,7 @@ final class MenuBar {
     private FindReplaceDialog find;
     private SweepDialog sweep;
     private ClassWindow classWindow;
+    private ExportRobotDialog exportRobot;
 
     MenuBar(IdeWindow ide) {
         this.ide = ide;
@@ -78,7 +80,19 @@ final class MenuBar {
         item(m, "&Save\tCtrl+S", SWT.MOD1 + 'S', f::save);
         item(m, "Save &As\u2026\tCtrl+Shift+S", SWT.MOD1 + SWT.SHIFT + 'S', f::saveAs);
         new MenuItem(m, SWT.SEPARATOR);
+        item(m, "Export Ro&bot\u2026", 0, this::openExportRobot);
+        new MenuItem(m, SWT.SEPARATOR);
         item(m, "E&xit\tCtrl+Q", SWT.MOD1 + 'Q', () -> ide.shell().close());
+    }
+
+    /** File → Export Robot…: one window per IDE window, on the open script's robot choice. */
+    ExportRobotDialog openExportRobot() {
+        if (exportRobot == null || exportRobot.shell().isDisposed()) {
+            exportRobot = ExportRobotDialog.open(ide.shell(), ide::program, ide.robotChoice(), ide::showRunDiagnostics);
+        } else {
+            exportRobot.shell().setActive();
+        }
+        return exportRobot;
     }
 
     private void fillRecent(Menu recent) {

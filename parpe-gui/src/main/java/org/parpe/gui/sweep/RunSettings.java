@@ -1,5 +1,6 @@
 package org.parpe.gui.sweep;
 
+import org.parpe.gui.panels.RobotChoice;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.widgets.Combo;

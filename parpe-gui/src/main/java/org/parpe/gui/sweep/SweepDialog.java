@@ -1,5 +1,6 @@
 package org.parpe.gui.sweep;
 
+import org.parpe.gui.panels.RobotChoice;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;

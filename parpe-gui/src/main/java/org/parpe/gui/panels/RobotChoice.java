@@ -1,4 +1,4 @@
-package org.parpe.gui.sweep;
+package org.parpe.gui.panels;
 
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Combo;
@@ -9,9 +9,9 @@ import org.parpe.sim.config.RobotConfigs;
 /**
  * The robot to simulate, with the choices of the IDE's runs: {@code auto} (the standard robot
  * that fits the script), one of the simulator's generators, or a robot configuration file.
- * Starts on the robot the IDE's run uses.
+ * Starts on the robot the IDE's run uses. The Sweep dialog and File → Export Robot… show it.
  */
-final class RobotChoice {
+public final class RobotChoice {
     private static final String AUTO_TEXT = SimTarget.AUTO + " (from the script)";
     private static final String BROWSE = "Configuration file\u2026";
 
@@ -19,7 +19,7 @@ final class RobotChoice {
     private String file;
     private String previous;
 
-    RobotChoice(Composite parent, String current) {
+    public RobotChoice(Composite parent, String current) {
         combo = new Combo(parent, SWT.READ_ONLY);
         combo.add(AUTO_TEXT);
         RobotConfigs.generatorNames().forEach(combo::add);
@@ -34,7 +34,7 @@ final class RobotChoice {
         combo.addListener(SWT.Selection, e -> chosen());
     }
 
-    Combo control() {
+    public Combo control() {
         return combo;
     }
 
@@ -43,7 +43,7 @@ final class RobotChoice {
             previous = combo.getText();
             return;
         }
-        java.nio.file.Path chosen = org.parpe.gui.panels.FileDialogs.ask(combo.getShell(), SWT.OPEN, "Robot configuration file", "*.xml", null, null);
+        java.nio.file.Path chosen = FileDialogs.ask(combo.getShell(), SWT.OPEN, "Robot configuration file", "*.xml", null, null);
         if (chosen == null) {
             combo.select(combo.indexOf(previous));
             return;
@@ -54,7 +54,7 @@ final class RobotChoice {
     }
 
     /** Adds the configuration file {@code path} (replacing the previous one) and selects it. */
-    void useFile(String path) {
+    public void useFile(String path) {
         if (file != null) {
             combo.remove(file);
         }
@@ -64,13 +64,13 @@ final class RobotChoice {
     }
 
     /** {@code auto}, a generator name, or a configuration file path. */
-    String robot() {
+    public String robot() {
         String t = combo.getText();
         return AUTO_TEXT.equals(t) || BROWSE.equals(t) ? SimTarget.AUTO : t;
     }
 
     /** Selects a generator by name (tests, automation). */
-    void select(String name) {
+    public void select(String name) {
         int at = combo.indexOf(name);
         if (at >= 0) {
             combo.select(at);
