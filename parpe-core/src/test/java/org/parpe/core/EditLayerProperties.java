@@ -91,4 +91,34 @@ class EditLayerProperties {
         assertEquals("a\"b&apos;", ElementWriter.attributeText("a\"b'", '\''));
         assertEquals("a&quot;b'", ElementWriter.attributeText("a\"b'", '"'));
     }
+
+    /**
+     * A child put into an element that holds only white space (a robot file just started:
+     * {@code <robot-config>} and its end tag on the next line) goes on a line of its own between
+     * the tags, the end tag staying on its line.
+     */
+    @Test
+    void aChildOfAnElementHoldingOnlyWhiteSpaceGoesBetweenItsTags() {
+        String text = "<?xml version=\"1.0\" ?>\n<robot-config>\n</robot-config>\n";
+        XElement root = read(text);
+        String after = ScriptEdits.appendChild(text, root.span(), "robot-config", null, "<part/>").apply(text);
+        assertEquals("<?xml version=\"1.0\" ?>\n<robot-config>\n  <part/>\n</robot-config>\n", after);
+        String indented = "<program>\n  <main>\n  </main>\n</program>\n";
+        XElement main = read(indented).children().get(0);
+        assertEquals("<program>\n  <main>\n    <a/>\n  </main>\n</program>\n",
+                ScriptEdits.appendChild(indented, main.span(), "main", null, "<a/>").apply(indented));
+    }
+
+    @Property(tries = 200)
+    void removeAttributeTakesTheAttributeAndTheSpaceBeforeIt(@ForAll("values") String v, @ForAll boolean single,
+                                                             @ForAll boolean last) {
+        String q = single ? "'" : "\"";
+        String a = "a = " + q + ElementWriter.attributeText(v, q.charAt(0)) + q;
+        String text = "<program>\n  <x " + (last ? "b=\"2\" " + a : a + "\n     b=\"2\"") + "/>\n</program>\n";
+        XElement x = read(text).children().get(0);
+        String after = ScriptEdits.removeAttribute(text, x.pos(), "a").apply(text);
+        assertEquals("<program>\n  <x" + (last ? " b=\"2\"" : "\n     b=\"2\"") + "/>\n</program>\n", after);
+        assertEquals(0, ScriptEdits.removeAttribute(after, read(after).children().get(0).pos(), "a").replacements().size(),
+                "an attribute that is not written is not removed");
+    }
 }

@@ -41,6 +41,33 @@ public final class ScriptEdits {
         return TextEdit.of(afterAttributes(text, s), 0, " " + name + "=\"" + ElementWriter.attributeText(value) + "\"");
     }
 
+    /**
+     * Removes attribute {@code name} of the element of {@code node} (a value back to its
+     * default, as a robot builder writes orientation 0): the name, its value and the white space
+     * before the name go; nothing when it is not written.
+     */
+    public static TextEdit removeAttribute(String text, SourcePos node, String name) {
+        SourceSpan s = span(node);
+        SourceSpan.Range r = s.value(name);
+        if (r == null) {
+            return new TextEdit(List.of());
+        }
+        int from = skipSpaceBack(text, r.offset() - 2); // on the '=' before the opening quote
+        from = skipSpaceBack(text, from - 1) - name.length() + 1;
+        while (from > s.start() && Character.isWhitespace(text.charAt(from - 1))) {
+            from--;
+        }
+        return TextEdit.of(from, r.end() + 1 - from, "");
+    }
+
+    /** The offset of the last character at or before {@code at} that is not white space. */
+    private static int skipSpaceBack(String text, int at) {
+        while (Character.isWhitespace(text.charAt(at))) {
+            at--;
+        }
+        return at;
+    }
+
     /** Where a new attribute goes: after the last attribute's closing quote, or after the name. */
     private static int afterAttributes(String text, SourceSpan s) {
         int at = s.start() + 1;
@@ -70,7 +97,12 @@ public final class ScriptEdits {
             return TextEdit.of(parent.tagEnd(), 2, ">\n" + indent + "  " + element + "\n" + indent + ElementWriter.close(tag));
         }
         int endTag = text.lastIndexOf("</", parent.end() - 1);
-        int at = trim(text, parent.tagEnd() + 1, endTag)[1];
+        int[] content = trim(text, parent.tagEnd() + 1, endTag);
+        // content of white space only: just after the start tag, so the end tag keeps its line
+        int at = content[0] == content[1] ? parent.tagEnd() + 1 : content[1];
+        if (at == endTag) {
+            return TextEdit.of(at, 0, "\n" + indent + "  " + element + "\n" + indent);
+        }
         return TextEdit.of(at, 0, "\n" + indent + "  " + element);
     }
 

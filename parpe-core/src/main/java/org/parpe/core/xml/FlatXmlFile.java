@@ -47,6 +47,8 @@ public final class FlatXmlFile {
 
     private final String file;
     private final DiagnosticSink diags;
+    /** The text being read when it was given as text (then every element gets its span), else null. */
+    private SourceText source;
     private final Map<String, String> rootAttributes = new LinkedHashMap<>();
     private final List<Element> children = new ArrayList<>();
     private SourcePos rootAt;
@@ -82,6 +84,34 @@ public final class FlatXmlFile {
             f.rootAt = null;
         } catch (IOException e) {
             f.error(f.start(), "cannot read the " + what + ": " + e.getMessage());
+            f.rootAt = null;
+        }
+        return f;
+    }
+
+    /**
+     * Reads {@code text}, the contents of {@code file} (for example an editor's text), as
+     * {@link #read(Path, String, String, String, DiagnosticSink)} reads a file, with the same
+     * checks and messages; the place of the root and of every child element also carries the
+     * element's {@link org.parpe.core.diag.SourceSpan} and offset, so that an editor can change
+     * it through the edit layer ({@code org.parpe.core.edit}).
+     */
+    public static FlatXmlFile read(String file, String text, String what, String root, String expected,
+                                   DiagnosticSink diags) {
+        FlatXmlFile f = new FlatXmlFile(file, diags);
+        f.source = new SourceText(file, text);
+        try {
+            XMLStreamReader2 r = (XMLStreamReader2) FACTORY.createXMLStreamReader(new java.io.StringReader(text));
+            try {
+                f.document(r, what, root, expected);
+            } finally {
+                r.close();
+            }
+        } catch (XMLStreamException e) {
+            f.notWellFormed(e);
+            f.rootAt = null;
+        } catch (WstxLazyException e) {
+            f.notWellFormed((XMLStreamException) e.getCause());
             f.rootAt = null;
         }
         return f;
@@ -220,6 +250,7 @@ public final class FlatXmlFile {
                     + "; expected " + expected);
             return;
         }
+        Spanned rootSpan = spanned(r, rootName);
         rootAt = at;
         rootAttributes.putAll(attributes(r));
         Text text = new Text();
@@ -233,6 +264,7 @@ public final class FlatXmlFile {
             }
         }
         text.reportIfAny(root);
+        rootAt = rootSpan.at(r, at);
         // What follows the root is read to the end, as XmlReader reads a script: the parser
         // refuses a second element or text there, so every file PARPE reads has one rule.
         while (r.hasNext()) {
@@ -248,6 +280,7 @@ public final class FlatXmlFile {
     private void child(XMLStreamReader2 r) throws XMLStreamException {
         String name = r.getLocalName();
         SourcePos at = here(r);
+        Spanned spanned = spanned(r, name);
         Map<String, String> attrs = attributes(r);
         List<SourcePos> places = new ArrayList<>();
         List<String> inner = new ArrayList<>(); // null for text
@@ -270,7 +303,25 @@ public final class FlatXmlFile {
             error(inner.get(i) != null ? places.get(i) : bare ? at : places.get(i),
                     "<" + name + "> may not contain " + (inner.get(i) == null ? "text" : "<" + inner.get(i) + ">"));
         }
-        children.add(new Element(name, attrs, at));
+        children.add(new Element(name, attrs, spanned.at(r, at)));
+    }
+
+    /** The start tag the reader stands on, scanned for its span when the file was given as text; else null. */
+    private Spanned spanned(XMLStreamReader2 r, String name) {
+        return new Spanned(source == null ? null
+                : TagScanner.element(source, (int) r.getLocationInfo().getStartingCharOffset(), name));
+    }
+
+    /** An element whose span is known once the reader reaches its end tag ({@code tag} null: not read from text). */
+    private record Spanned(XElement tag) {
+        /** {@code at} with the element's span and offset, the reader on the element's end. */
+        SourcePos at(XMLStreamReader2 r, SourcePos at) {
+            if (tag == null) {
+                return at;
+            }
+            tag.close((int) r.getLocationInfo().getStartingCharOffset());
+            return new SourcePos(at.file(), at.line(), at.column(), tag.span(), tag.span().start());
+        }
     }
 
     /** Text between two tags: where its first non-blank character stands, if it has one. */

@@ -19,6 +19,11 @@ final class ConfigReader {
     private static final Set<String> CONNECT_ATTRS = Set.of("from", "to", "orientation");
     private static final Set<String> ROOT_ATTRS = Set.of("part", "x", "y", "roll", "pitch", "yaw", "height");
 
+    private static final String WHAT = "robot configuration";
+    private static final String ROOT = "robot-config";
+    private static final String EXPECTED =
+            "a <robot-config> element with <part> and <connect> elements, or a generator such as snake";
+
     private final FlatXmlFile xml;
     private final List<PartSpec> parts = new ArrayList<>();
     private final List<Connection> connections = new ArrayList<>();
@@ -30,14 +35,25 @@ final class ConfigReader {
 
     /** Reads {@code path}; returns {@code null} after reporting errors. */
     static RobotConfig read(Path path, DiagnosticSink diags) {
-        FlatXmlFile xml = FlatXmlFile.read(path, "robot configuration", "robot-config",
-                "a <robot-config> element with <part> and <connect> elements, or a generator such as snake", diags);
+        return read(FlatXmlFile.read(path, WHAT, ROOT, EXPECTED, diags), path.toString(), false).config();
+    }
+
+    /**
+     * Reads {@code text}, the contents of {@code file}, as {@link #read(Path, DiagnosticSink)}
+     * reads a file; every element's place carries its span. A configuration without parts is
+     * no error here (a file being built starts so); its configuration is null.
+     */
+    static ConfigFile read(String file, String text, DiagnosticSink diags) {
+        return read(FlatXmlFile.read(file, text, WHAT, ROOT, EXPECTED, diags), file, true);
+    }
+
+    private static ConfigFile read(FlatXmlFile xml, String name, boolean emptyAllowed) {
         if (xml.root() == null) {
-            return null;
+            return new ConfigFile(null, null, List.of());
         }
         ConfigReader r = new ConfigReader(xml);
-        for (String name : xml.rootAttributes().keySet()) {
-            xml.error(xml.root(), "unexpected '" + name + "' in <robot-config>; expected <part>, <connect> or <root>");
+        for (String attr : xml.rootAttributes().keySet()) {
+            xml.error(xml.root(), "unexpected '" + attr + "' in <robot-config>; expected <part>, <connect> or <root>");
         }
         for (FlatXmlFile.Element e : xml.children()) {
             switch (e.name()) {
@@ -48,16 +64,18 @@ final class ConfigReader {
             }
         }
         if (!xml.ok()) {
-            return null;
+            return new ConfigFile(null, xml.root(), xml.children());
         }
         if (r.roots.isEmpty() && !r.parts.isEmpty()) {
             r.roots.add(new RootPose(r.parts.get(0).name(), 0, 0, 0, 0, 0));
         }
         if (r.parts.isEmpty()) {
-            xml.error(xml.start(), "the configuration defines no <part>");
-            return null;
+            if (!emptyAllowed) {
+                xml.error(xml.start(), "the configuration defines no <part>");
+            }
+            return new ConfigFile(null, xml.root(), xml.children());
         }
-        return new RobotConfig(path.toString(), r.parts, r.connections, r.roots);
+        return new ConfigFile(new RobotConfig(name, r.parts, r.connections, r.roots), xml.root(), xml.children());
     }
 
     private void part(Map<String, String> a, SourcePos at) {
@@ -126,7 +144,7 @@ final class ConfigReader {
         }
         RootPose root = new RootPose(a.get("part"), number(a, "x", 0, at, false), number(a, "y", 0, at, false),
                 number(a, "roll", 0, at, false), number(a, "pitch", 0, at, false), number(a, "yaw", 0, at, false),
-                number(a, "height", RootPose.RESTING, at, false));
+                number(a, "height", RootPose.RESTING, at, false), at);
         if (root.height() < 0) {
             error(at, "height must be >= 0 m, got " + root.height());
         }

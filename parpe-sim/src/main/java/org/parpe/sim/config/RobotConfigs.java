@@ -47,6 +47,15 @@ public final class RobotConfigs {
         return config;
     }
 
+    /**
+     * Reads the configuration file text {@code text} (of {@code file}, the name used in
+     * messages), as {@link #resolve} reads a file, problems to {@code diags}; a text that defines
+     * no part yet is no problem here (its configuration is null), so a builder can start from it.
+     */
+    public static ConfigFile read(String file, String text, DiagnosticSink diags) {
+        return ConfigReader.read(file, text, diags);
+    }
+
     /** Whether {@code specOrPath} names a configuration file (not a generator), as {@link #resolve} takes it. */
     public static boolean isFile(String specOrPath) {
         String spec = specOrPath.trim();

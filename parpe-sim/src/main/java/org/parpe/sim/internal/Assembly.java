@@ -392,11 +392,13 @@ public final class Assembly {
         return q;
     }
 
-    static double loopGap() {
+    /** How far apart, m, the plates of a connection that closes a loop may be at the initial pose. */
+    public static double loopGap() {
         return LOOP_GAP;
     }
 
-    static double loopTwist() {
+    /** How far, rad, the plates of a connection that closes a loop may be turned against each other at the initial pose. */
+    public static double loopTwist() {
         return LOOP_TWIST;
     }
 }
