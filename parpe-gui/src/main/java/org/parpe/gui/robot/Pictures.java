@@ -1,0 +1,59 @@
+package org.parpe.gui.robot;
+
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeMap;
+import java.util.TreeSet;
+import org.parpe.sim.SimBody;
+import org.parpe.sim.SimSnapshot;
+import org.parpe.sim.Vec3;
+import org.parpe.sim.build.RobotDraft;
+
+/** The Robot tab's pictures for the 3D view: the robot at rest, and a part previewed on it. */
+final class Pictures {
+    private Pictures() {
+    }
+
+    /** The pieces of {@code after} that {@code before} lacks, where they go on the robot drawn now. */
+    static List<SimBody> ghosts(RobotDraft before, RobotDraft after) {
+        Set<String> had = new HashSet<>(before.partNames());
+        Vec3 shift = Vec3.ZERO;
+        String root = before.root();
+        SimBody a = first(before.bodies(), root);
+        SimBody b = first(after.bodies(), root);
+        if (a != null && b != null) {
+            // the whole robot may sit differently on the floor with the new part: draw it on the robot as it is
+            shift = new Vec3(b.position().x() - a.position().x(), b.position().y() - a.position().y(),
+                    b.position().z() - a.position().z());
+        }
+        List<SimBody> out = new ArrayList<>();
+        for (SimBody s : after.bodies()) {
+            if (!had.contains(s.part())) {
+                Vec3 p = s.position();
+                out.add(new SimBody(s.moduleId(), s.part(), s.kind(), s.shape(),
+                        new Vec3(p.x() - shift.x(), p.y() - shift.y(), p.z() - shift.z()), s.rotation()));
+            }
+        }
+        return out;
+    }
+
+    static SimBody first(List<SimBody> bodies, String part) {
+        return part == null ? null : bodies.stream().filter(s -> s.part().equals(part)).findFirst().orElse(null);
+    }
+
+    /** A picture of the robot at rest for the view. */
+    static SimSnapshot snapshot(List<SimBody> bodies) {
+        double x = 0, y = 0, z = 0;
+        for (SimBody b : bodies) {
+            x += b.position().x();
+            y += b.position().y();
+            z += b.position().z();
+        }
+        int n = Math.max(1, bodies.size());
+        return new SimSnapshot(0, bodies, List.of(), new Vec3(x / n, y / n, z / n), new TreeMap<>(Map.of()),
+                new TreeMap<>(Map.of()), new TreeSet<>());
+    }
+}

@@ -1,0 +1,241 @@
+package org.parpe.gui.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.eclipse.swt.graphics.Point;
+import org.eclipse.swt.graphics.Rectangle;
+import org.eclipse.swt.widgets.Button;
+import org.eclipse.swt.widgets.Control;
+import org.eclipse.swt.widgets.Display;
+import org.eclipse.swt.widgets.Event;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.parpe.core.diag.Diagnostic;
+import org.parpe.gui.prefs.Prefs;
+import org.parpe.gui.robot.Outside;
+import org.parpe.gui.robot.RobotTab;
+
+/**
+ * Issue 33's Robot tab beside the text, with real widgets under Xvfb at 1366×768: an edit in the
+ * text shows in the tab, an edit in the tab changes only its line of the text and Undo takes it
+ * back; a bad configuration is located in Problems and on the tab; a script's robot is shown
+ * read-only with its latch plates marked (issue 35) and "Make editable" writes it beside the
+ * script; every control of the tab stays in the window at 1366×768 and at twice the text size.
+ */
+class RobotTabEditingGuiTest {
+    private IdeWindow ide;
+    private Path dir;
+
+    @BeforeEach
+    void open() throws Exception {
+        Gui.display();
+        dir = Files.createTempDirectory("parpe-robot-edit");
+        ide = new IdeWindow(Display.getDefault(), new Prefs(dir.resolve("home")));
+        ide.open(null, true);
+        Gui.pump(() -> ide.validations() > 0, "the first validation");
+        ide.shell().setBounds(0, 0, 1366, 768);
+        Gui.settle();
+    }
+
+    @AfterEach
+    void close() {
+        Gui.closeIde(ide);
+    }
+
+    private RobotTab tab() {
+        return ide.robotTab();
+    }
+
+    /** Opens a copy of {@code text} as {@code name}, waits until it is checked and shows the Robot tab. */
+    private Path openCopy(String name, String text) throws Exception {
+        Path f = dir.resolve(name);
+        Files.writeString(f, text);
+        int before = ide.validations();
+        Gui.open(ide, f);
+        Gui.pump(() -> ide.validations() > before, "the check of " + name);
+        tab().showTab();
+        Gui.settle();
+        return f;
+    }
+
+    private Button button(String text) {
+        for (Control c : tab().controls()) {
+            if (c instanceof Button b && b.getText().equals(text)) {
+                return b;
+            }
+        }
+        throw new AssertionError("the Robot tab has no button '" + text + "'");
+    }
+
+    /** Presses {@code b} as a click does (its selection listeners on the UI thread). */
+    private static void press(Button b) {
+        assertTrue(b.isEnabled(), "'" + b.getText() + "' is enabled");
+        b.notifyListeners(org.eclipse.swt.SWT.Selection, new Event());
+        Gui.settle();
+    }
+
+    /** Clicks the part {@code part} on the canvas (a press and a release where it is drawn). */
+    private void clickPart(String part) {
+        tab().view().resetView();
+        Gui.settle();
+        Point p = tab().partPoint(part);
+        assertNotNull(p, part + " is drawn");
+        for (int type : new int[] {org.eclipse.swt.SWT.MouseDown, org.eclipse.swt.SWT.MouseUp}) {
+            Event e = new Event();
+            e.button = 1;
+            e.x = p.x;
+            e.y = p.y;
+            tab().view().control().notifyListeners(type, e);
+        }
+        Gui.pump(() -> part.equals(tab().selectedPart()), part + " selected: " + tab().message());
+    }
+
+    @Test
+    void theTextAndTheTabFollowEachOtherAndUndoTakesATabEditBack() throws Exception {
+        String text = Files.readString(Gui.example("configs/tee-snake.xml"));
+        openCopy("tee.xml", text);
+        assertEquals(-20, tab().draft().part("left").orElseThrow().angle());
+        // typed in the text: the tab follows after the check
+        String typed = text.replace("angle=\"-20\"", "angle=\"-35\"");
+        int before = ide.validations();
+        ide.editor().document().set(typed);
+        Gui.pump(() -> ide.validations() > before, "the check of the edited text");
+        assertEquals(-35, tab().draft().part("left").orElseThrow().angle(), "the tab shows the text as typed");
+        // an edit in the tab changes one line of the text
+        clickPart("t1");
+        press(button("Turn 90\u00B0"));
+        String after = ide.editor().document().get();
+        List<String> a = typed.lines().toList();
+        List<String> b = after.lines().toList();
+        assertEquals(a.size(), b.size(), after);
+        int changed = 0;
+        for (int i = 0; i < a.size(); i++) {
+            if (!a.get(i).equals(b.get(i))) {
+                changed++;
+                assertTrue(b.get(i).contains("to=\"t1.0\"") && b.get(i).contains("orientation=\"90\""), b.get(i));
+            }
+        }
+        assertEquals(1, changed, "one line changed:\n" + after);
+        assertEquals(after, tab().draft().text(), "the tab shows the text");
+        // one Undo step
+        press(button("Undo"));
+        assertEquals(typed, ide.editor().document().get(), "Undo gives back the text before the edit");
+        assertEquals(typed, tab().draft().text(), "and the tab shows it");
+        press(button("Redo"));
+        assertEquals(after, ide.editor().document().get());
+    }
+
+    @Test
+    void aBadConfigurationIsLocatedInProblemsAndOnTheTabWithoutAnException() throws Exception {
+        String text = String.join("\n", "<?xml version=\"1.0\" ?>", "<robot-config>",
+                "  <part name=\"a\" type=\"segment\" id=\"0\"/>",
+                "  <part name=\"b\" type=\"wing\"/>",
+                "  <part name=\"c\" type=\"segment\" id=\"1\"/>",
+                "  <connect from=\"a.1\" to=\"c.0\"/>",
+                "  <connect from=\"a.1\" to=\"b.0\"/>",
+                "  <root part=\"a\"/>", "</robot-config>", "");
+        Path f = openCopy("bad.xml", text);
+        Gui.pump(() -> ide.problems().errorCount() > 0, "the problems in Problems");
+        List<Diagnostic> shown = ide.problems().shown();
+        assertTrue(shown.stream().anyMatch(d -> d.pos().line() == 4 && d.format().contains("wing")),
+                "the unknown type is located on its line: " + shown);
+        for (Diagnostic d : shown) {
+            assertTrue(d.pos().line() > 0 && d.pos().column() > 0 && Path.of(d.pos().file()).getFileName().equals(f.getFileName()),
+                    "located in the file: " + d.format());
+            assertFalse(d.format().contains("Exception"), d.format());
+        }
+        assertTrue(tab().fitText().contains("problem") && tab().fitText().contains(":4:"), "the tab says where: " + tab().fitText());
+        assertTrue(ide.status().message().contains("error"), ide.status().message());
+        // the window still answers
+        long t0 = System.currentTimeMillis();
+        Gui.settle();
+        assertTrue(System.currentTimeMillis() - t0 < 5000);
+    }
+
+    @Test
+    void aScriptsRobotIsReadOnlyWithItsLatchPlatesMarkedAndMakeEditableWritesItBeside() throws Exception {
+        Path script = openCopy("docking-snake-loop.xml", Files.readString(Gui.example("docking-snake-loop.xml")));
+        Gui.pump(() -> ide.program() != null && tab().draft() != null, "the script and its robot");
+        assertEquals(10, tab().draft().config().moduleIds().length, "auto's snake of the script's ten modules");
+        assertFalse(button("Place").isEnabled(), "read-only");
+        assertFalse(tab().latchingParts().isEmpty(), "the end modules' plates are marked: they can latch");
+        assertEquals(2, tab().latchingParts().size(), tab().latchingParts().toString());
+        Path target = dir.resolve("docking-snake-loop-robot.xml");
+        tab().answerWith(new Outside.Questions() {
+            @Override
+            public Path saveRobotAs(Path proposed) {
+                assertEquals(target, proposed, "proposed beside the script");
+                return proposed;
+            }
+
+            @Override
+            public Path open(String title) {
+                return null;
+            }
+        });
+        press(button("Make editable\u2026"));
+        assertTrue(Files.isRegularFile(target), "written");
+        assertEquals(target.toString(), ide.robotChoice(), "the script's robot is the file now");
+        assertTrue(button("Edit robot").isEnabled());
+        press(button("Edit robot"));
+        Gui.pump(() -> target.equals(ide.files().file()), "the robot's file in the editor");
+        Gui.pump(() -> button("Place").isEnabled() || tab().draft().text().equals(ide.editor().document().get()), "the tab on the file");
+        assertEquals(Files.readString(target), tab().draft().text());
+        assertTrue(script.toFile().exists());
+    }
+
+    @Test
+    void everyControlIsInTheWindowAt1366x768AndAtTwiceTheTextSize() throws Exception {
+        openCopy("tee.xml", Files.readString(Gui.example("configs/tee-snake.xml")));
+        allInside("normal text");
+        Gui.screenshot(ide.shell(), "robot-tab-1366x768.png");
+        Control probe = tab().controls().get(0);
+        int normal = probe.getFont().getFontData()[0].getHeight();
+        while (probe.getFont().getFontData()[0].getHeight() < 2 * normal) {
+            ide.zoom(1);
+        }
+        Gui.settle();
+        Gui.screenshot(ide.shell(), "robot-tab-zoom-200.png");
+        allInside("twice the text");
+        Path out = Path.of(System.getProperty("parpe.ideImages", "../docs/images/ide"));
+        Files.createDirectories(out);
+        org.parpe.gui.automation.Screenshot.save(ide.shell(), out.resolve("robot-zoom-200.png"));
+    }
+
+    /**
+     * Every control of the tab, brought into sight (the rows scroll when the text is large), is
+     * visible, at least 8 px each way, and wholly inside the window, the tab and the part of the
+     * rows' box in sight.
+     */
+    private void allInside(String when) {
+        Rectangle window = ide.shell().getClientArea();
+        Rectangle windowOnScreen = ide.shell().getDisplay().map(ide.shell(), null, window);
+        Rectangle tabArea = tab().control().getDisplay().map(tab().control(), null, ((org.eclipse.swt.widgets.Composite) tab().control()).getClientArea());
+        for (Control c : tab().controls()) {
+            tab().reveal(c);
+            Gui.settle();
+            Rectangle r = c.getDisplay().map(c.getParent(), null, c.getBounds());
+            for (Control up = c.getParent(); up != tab().control(); up = up.getParent()) {
+                Rectangle seen = c.getDisplay().map(up, null, ((org.eclipse.swt.widgets.Composite) up).getClientArea());
+                assertTrue(seen.contains(r.x, r.y) && seen.contains(r.x + r.width - 1, r.y + r.height - 1),
+                        when + ": " + c + " at " + r + " is in sight in " + up + " " + seen);
+            }
+            String what = when + ": " + c + " at " + r;
+            assertTrue(c.isVisible(), what + " is visible");
+            assertTrue(r.width >= 8 && r.height >= 8, what + " has room");
+            assertTrue(windowOnScreen.contains(r.x, r.y) && windowOnScreen.contains(r.x + r.width - 1, r.y + r.height - 1),
+                    what + " is inside the window " + windowOnScreen);
+            assertTrue(tabArea.contains(r.x, r.y) && tabArea.contains(r.x + r.width - 1, r.y + r.height - 1),
+                    what + " is inside the tab " + tabArea);
+        }
+        Rectangle canvas = tab().view().control().getBounds();
+        assertTrue(canvas.height >= 150 && canvas.width >= 250, when + ": the 3D view keeps room: " + canvas);
+    }
+}
