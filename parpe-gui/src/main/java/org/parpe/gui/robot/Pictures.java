@@ -56,4 +56,18 @@ final class Pictures {
         return new SimSnapshot(0, bodies, List.of(), new Vec3(x / n, y / n, z / n), new TreeMap<>(Map.of()),
                 new TreeMap<>(Map.of()), new TreeSet<>());
     }
+
+    /** The largest extent of {@code bodies}' centres along x, y or z, m (0 for none). */
+    static double size(List<SimBody> bodies) {
+        double[] lo = {Double.MAX_VALUE, Double.MAX_VALUE, Double.MAX_VALUE};
+        double[] hi = {-Double.MAX_VALUE, -Double.MAX_VALUE, -Double.MAX_VALUE};
+        for (SimBody b : bodies) {
+            double[] p = {b.position().x(), b.position().y(), b.position().z()};
+            for (int k = 0; k < 3; k++) {
+                lo[k] = Math.min(lo[k], p[k]);
+                hi[k] = Math.max(hi[k], p[k]);
+            }
+        }
+        return bodies.isEmpty() ? 0 : Math.max(hi[0] - lo[0], Math.max(hi[1] - lo[1], hi[2] - lo[2]));
+    }
 }

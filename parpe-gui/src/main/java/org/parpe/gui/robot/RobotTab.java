@@ -38,6 +38,8 @@ public final class RobotTab {
     private final Outside outside;
     private Shown shown = new Shown(Shown.Kind.NOTHING, null, null, null, "");
     private SimSnapshot picture;
+    /** The size of the robot when the view last framed it, m. */
+    private double framed;
     private BuildEdit pending;
     /** The last script that loaded (what "Try it" runs and what the parts are coloured by) and its file. */
     private Program script;
@@ -181,12 +183,17 @@ public final class RobotTab {
 
     private void show(Shown s) {
         boolean wasEmpty = shown.draft() == null || shown.draft().bodies().isEmpty();
+        if (s.kind() != shown.kind() || !java.util.Objects.equals(s.config(), shown.config())) {
+            ui.line(ui.message, s.editable() ? s.note() : ""); // another robot: what to do with it
+        }
         shown = s;
         RobotDraft d = s.draft();
         List<SimBody> bodies = d == null ? List.of() : d.bodies();
         picture = bodies.isEmpty() ? null : Pictures.snapshot(bodies);
-        if (wasEmpty && !bodies.isEmpty()) {
-            ui.view.clear(); // the first part: frame it
+        double size = Pictures.size(bodies);
+        if (wasEmpty && !bodies.isEmpty() || size > framed * 1.25 || size < framed * 0.8) {
+            ui.view.clear(); // the first part, or the robot grew or shrank (a wheel stood up): frame it again
+            framed = size;
         }
         targets.plates = d == null ? List.of() : d.freePlates();
         Colours.paint(targets, d, script, s.editable());
@@ -410,7 +417,9 @@ public final class RobotTab {
     private void update() {
         boolean edit = shown.editable();
         RobotDraft d = shown.draft();
-        ui.source.setText(shown.note());
+        ui.source.setText(shown.kind() == Shown.Kind.GENERATOR ? shown.spec()
+                : shown.config() != null ? shown.config().getFileName().toString() : "");
+        ui.source.setToolTipText(shown.note());
         ui.editRobot.setEnabled(shown.kind() == Shown.Kind.FILE);
         ui.makeEditable.setEnabled(shown.kind() == Shown.Kind.GENERATOR);
         ui.tryIt.setEnabled(d != null && d.config() != null);
@@ -434,12 +443,13 @@ public final class RobotTab {
         ui.turn.setEnabled(edit && p != null && !root);
         ui.delete.setEnabled(edit && p != null);
         ui.makeRoot.setEnabled(edit && p != null && !p.name().equals(d.root()));
-        ui.fit.setText(Colours.fit(d, script, outside.kit()));
+        String fit = Colours.fit(d, script, outside.kit());
+        ui.line(ui.fit, shown.editable() ? fit : shown.note() + (fit.isEmpty() ? "" : "\n" + fit));
         ui.relayout();
     }
 
     private void say(String message) {
-        ui.message.setText(message == null ? "" : message);
+        ui.line(ui.message, message == null ? "" : message);
         host.say(message);
     }
 

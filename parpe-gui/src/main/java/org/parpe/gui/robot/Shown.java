@@ -42,7 +42,8 @@ record Shown(Kind kind, RobotDraft draft, Path config, String spec, String note)
     static Shown of(Path file, String text, Program program, String choice) {
         if (isConfig(text)) {
             RobotDraft d = SectionEdits.blank(text) ? RobotDraft.empty(file.toString()) : RobotDraft.of(file.toString(), text);
-            return new Shown(Kind.EDITOR, d, file, null, file.getFileName() + ": click a plate, pick a part, Place");
+            return new Shown(Kind.EDITOR, d, file, null, file.getFileName()
+                    + ": click a blue disc (a free plate), pick a part and how it is turned, then Place");
         }
         if (!SimTarget.AUTO.equals(choice) && Files.isRegularFile(Path.of(choice))) {
             return ofFile(Path.of(choice).toAbsolutePath().normalize());

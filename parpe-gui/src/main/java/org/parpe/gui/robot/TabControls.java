@@ -73,12 +73,14 @@ final class TabControls {
 
         Composite top = row();
         source = new Label(top, SWT.NONE);
-        editRobot = button(top, "Edit robot", "Open the robot's configuration file in the editor");
-        makeEditable = button(top, "Make editable\u2026", "Write the generator's robot to a file beside the script and use it");
         tryIt = button(top, "Try it", "Run the script on this robot in the simulator now");
         undo = button(top, "Undo", "Take back the last change (Ctrl+Z)");
         redo = button(top, "Redo", "Make the change taken back again (Ctrl+Y)");
+        connect = button(top, "Connect", "Close a loop: join the two plates selected (click one, Ctrl+click the other)");
+        assignIds = button(top, "Assign IDs", "Give every segment a module ID in chain order from the root");
         kit = button(top, "Kit\u2026", "Choose the kit file: how many parts of each kind the class owns");
+        editRobot = button(top, "Edit robot", "Open the robot's configuration file in the editor");
+        makeEditable = button(top, "Make editable\u2026", "Write the generator's robot to a file beside the script and use it");
 
         Composite palette = row();
         new Label(palette, SWT.NONE).setText("Add:");
@@ -100,8 +102,6 @@ final class TabControls {
         }
         turns[0].setSelection(true);
         place = button(palette, "Place", "Snap the part previewed onto the plate selected (or double-click the plate)");
-        connect = button(palette, "Connect", "Close a loop: join the two plates selected (Ctrl+click the second)");
-        assignIds = button(palette, "Assign IDs", "Give every segment a module ID in chain order from the root");
 
         Composite props = row();
         partName = new Label(props, SWT.NONE);
@@ -175,8 +175,22 @@ final class TabControls {
         Label l = new Label(root, SWT.WRAP);
         GridData gd = new GridData(SWT.FILL, SWT.TOP, true, false);
         gd.widthHint = 100;
+        gd.exclude = true; // empty: no room taken ({@link #line})
         l.setLayoutData(gd);
+        l.setVisible(false);
         return l;
+    }
+
+    /** Shows {@code text} in {@code label} (one of the lines under the view); an empty line takes no room. */
+    void line(Label label, String text) {
+        if (label.getText().equals(text)) {
+            return;
+        }
+        label.setText(text);
+        boolean empty = text.isEmpty();
+        ((GridData) label.getLayoutData()).exclude = empty;
+        label.setVisible(!empty);
+        root.layout(true, true);
     }
 
     private static Button button(Composite parent, String text, String tip) {
