@@ -74,7 +74,10 @@ public final class RobotTab {
         for (org.eclipse.swt.widgets.Button c : ui.types) {
             c.addListener(SWT.Selection, e -> chosen(c));
         }
-        typed(ui.hubPlates, () -> preview());
+        typed(ui.hubPlates, () -> {
+            preview();
+            update();
+        });
         for (org.eclipse.swt.widgets.Button c : ui.turns) {
             c.addListener(SWT.Selection, e -> chosen(c));
         }
@@ -127,6 +130,7 @@ public final class RobotTab {
     private void chosen(org.eclipse.swt.widgets.Button b) {
         if (b.getSelection()) { // the button let go of sends its event too
             preview();
+            update();
         }
     }
 
@@ -250,7 +254,6 @@ public final class RobotTab {
             targets.ghosts = Pictures.ghosts(d, d.apply(pending));
         }
         ui.view.control().redraw();
-        update();
     }
 
     /** The hub plates typed, or the default when the box holds no whole number. */
@@ -391,6 +394,7 @@ public final class RobotTab {
                 say("Plate " + p.part() + "." + p.plate() + ": pick a part and how it is turned, then Place (or double-click)");
             }
             preview();
+            update();
             if (twice && !adding) {
                 place();
             }
@@ -417,8 +421,8 @@ public final class RobotTab {
     private void update() {
         boolean edit = shown.editable();
         RobotDraft d = shown.draft();
-        ui.source.setText(shown.kind() == Shown.Kind.GENERATOR ? shown.spec()
-                : shown.config() != null ? shown.config().getFileName().toString() : "");
+        String sourceText = shown.kind() == Shown.Kind.GENERATOR ? shown.spec()
+                : shown.config() != null ? shown.config().getFileName().toString() : "";
         ui.source.setToolTipText(shown.note());
         ui.editRobot.setEnabled(shown.kind() == Shown.Kind.FILE);
         ui.makeEditable.setEnabled(shown.kind() == Shown.Kind.GENERATOR);
@@ -429,7 +433,7 @@ public final class RobotTab {
         ui.connect.setEnabled(edit && targets.first != null && targets.second != null);
         ui.assignIds.setEnabled(edit && d != null && d.config() != null);
         PartSpec p = d == null || targets.part == null ? null : d.part(targets.part).orElse(null);
-        ui.partName.setText(p == null ? "No part selected" : p.name() + " (" + p.type().xmlName() + ")");
+        String partText = p == null ? "No part selected" : p.name() + " (" + p.type().xmlName() + ")";
         boolean seg = edit && p != null && p.isSegment();
         ui.moduleId.setEnabled(seg);
         ui.angle.setEnabled(seg);
@@ -445,7 +449,11 @@ public final class RobotTab {
         ui.makeRoot.setEnabled(edit && p != null && !p.name().equals(d.root()));
         String fit = Colours.fit(d, script, outside.kit());
         ui.line(ui.fit, shown.editable() ? fit : shown.note() + (fit.isEmpty() ? "" : "\n" + fit));
-        ui.relayout();
+        if (!ui.partName.getText().equals(partText) || !ui.source.getText().equals(sourceText)) {
+            ui.partName.setText(partText);
+            ui.source.setText(sourceText);
+            ui.relayout(); // only a label of the rows changes their size
+        }
     }
 
     private void say(String message) {

@@ -190,7 +190,7 @@ final class TabControls {
         boolean empty = text.isEmpty();
         ((GridData) label.getLayoutData()).exclude = empty;
         label.setVisible(!empty);
-        root.layout(true, true);
+        root.layout(new Control[] {label});
     }
 
     private static Button button(Composite parent, String text, String tip) {
@@ -254,10 +254,13 @@ final class TabControls {
      */
     void relayout() {
         for (Text t : boxes) {
-            GC gc = new GC(t);
-            int w = gc.textExtent("0".repeat((Integer) t.getData("chars"))).x;
-            gc.dispose();
-            t.setLayoutData(new RowData(w + 16, SWT.DEFAULT));
+            if (t.getData("font") != t.getFont()) { // sized for each font (the zoom), not at each layout
+                GC gc = new GC(t);
+                int w = gc.textExtent("0".repeat((Integer) t.getData("chars"))).x;
+                gc.dispose();
+                t.setLayoutData(new RowData(w + 16, SWT.DEFAULT));
+                t.setData("font", t.getFont());
+            }
         }
         int width = Math.max(50, root.getClientArea().width);
         Point want = rowsBox.computeSize(width, SWT.DEFAULT, true);
