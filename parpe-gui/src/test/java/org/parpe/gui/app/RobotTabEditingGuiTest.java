@@ -132,6 +132,27 @@ class RobotTabEditingGuiTest {
         assertEquals(after, ide.editor().document().get());
     }
 
+    /**
+     * "Edit robot" opens a configuration wherever the user was: with the Diagram tab in front the
+     * diagram of a robot configuration (no script, nothing to select) failed with an internal
+     * error (a NullPointerException in the edit row), which the event loop of this test throws.
+     */
+    @Test
+    void aConfigurationOpensWithTheDiagramTabInFront() throws Exception {
+        ide.diagram().showTab();
+        Gui.settle();
+        Path f = dir.resolve("tee.xml");
+        Files.writeString(f, Files.readString(Gui.example("configs/tee-snake.xml")));
+        int before = ide.validations();
+        Gui.open(ide, f);
+        Gui.pump(() -> ide.validations() > before, "the check of the configuration");
+        Gui.settle();
+        assertEquals(0L, ide.problems().errorCount(), () -> ide.problems().shown().toString());
+        tab().showTab();
+        Gui.settle();
+        assertEquals(8, tab().draft().partNames().size());
+    }
+
     @Test
     void aBadConfigurationIsLocatedInProblemsAndOnTheTabWithoutAnException() throws Exception {
         String text = String.join("\n", "<?xml version=\"1.0\" ?>", "<robot-config>",
