@@ -249,7 +249,7 @@ public final class RobotTab {
             pending = d.add(targets.first.part(), targets.first.plate(), type, 0, quarter, hubPlates(), outside.kit());
         }
         if (pending != null && pending.refused()) {
-            say(pending.refusal());
+            say(targets.first == null ? pending.refusal() : "Plate " + targets.first.ref() + ": " + pending.refusal());
         } else if (pending != null) {
             targets.ghosts = Pictures.ghosts(d, d.apply(pending));
         }
@@ -284,7 +284,7 @@ public final class RobotTab {
         BuildEdit e = shown.draft().closeLoop(a.part(), a.plate(), b.part(), b.plate());
         if (e.refused()) {
             double gap = shown.draft().gap(a.part(), a.plate(), b.part(), b.plate());
-            say(e.refusal() + String.format(java.util.Locale.ROOT, " (the plates are %.1f mm apart)", gap * 1000));
+            say(e.refusal() + (e.refusal().contains("apart") ? "" : String.format(java.util.Locale.ROOT, " (the plates are %.1f mm apart)", gap * 1000)));
             return;
         }
         apply(e);
@@ -384,16 +384,17 @@ public final class RobotTab {
         public void plate(BuildPlate p, boolean adding, boolean twice) {
             targets.part = null;
             if (adding && targets.first != null && !Targets.same(p, targets.first)) {
-                targets.second = p;
+                targets.second = p; // the part previewed on the first plate stays as it is
                 double gap = shown.draft().gap(targets.first.part(), targets.first.plate(), p.part(), p.plate());
-                say(String.format(java.util.Locale.ROOT, "Plates %s.%d and %s.%d are %.1f mm apart: Connect joins them if they meet",
-                        targets.first.part(), targets.first.plate(), p.part(), p.plate(), gap * 1000));
+                say(String.format(java.util.Locale.ROOT, "Plates %s and %s are %.1f mm apart: Connect joins them if they meet",
+                        targets.first.ref(), p.ref(), gap * 1000));
+                ui.view.control().redraw();
             } else {
                 targets.first = p;
                 targets.second = null;
-                say("Plate " + p.part() + "." + p.plate() + ": pick a part and how it is turned, then Place (or double-click)");
+                say("Plate " + p.ref() + ": pick a part and how it is turned, then Place (or double-click)");
+                preview();
             }
-            preview();
             update();
             if (twice && !adding) {
                 place();

@@ -83,18 +83,41 @@ class RobotTabEditingGuiTest {
 
     /** Clicks the part {@code part} on the canvas (a press and a release where it is drawn). */
     private void clickPart(String part) {
+        Point p = inSight(() -> tab().partPoint(part), part);
+        press(p, 0);
+        Gui.pump(() -> part.equals(tab().selectedPart()), part + " selected: " + tab().message());
+    }
+
+    /** Clicks the disc of free plate {@code part.plate} ({@code ctrl}: with Ctrl held, a second plate). */
+    private void clickPlate(String part, int plate, boolean ctrl) {
+        Point p = inSight(() -> tab().platePoint(part, plate), part + "." + plate);
+        press(p, ctrl ? org.eclipse.swt.SWT.MOD1 : 0);
+        Gui.pump(() -> tab().message().contains(part + "." + plate), part + "." + plate + " selected: " + tab().message());
+    }
+
+    /** The point {@code where} gives, the view framed on the robot and turned round it until it is clickable. */
+    private Point inSight(java.util.function.Supplier<Point> where, String what) {
         tab().view().resetView();
         Gui.settle();
-        Point p = tab().partPoint(part);
-        assertNotNull(p, part + " is drawn");
+        for (int turn = 0; turn < 8 && where.get() == null; turn++) {
+            tab().view().rotate(Math.PI / 4, 0);
+            Gui.settle();
+        }
+        Point p = where.get();
+        assertNotNull(p, what + " can be clicked");
+        return p;
+    }
+
+    /** A press and a release of the left button at {@code p} on the canvas. */
+    private void press(Point p, int stateMask) {
         for (int type : new int[] {org.eclipse.swt.SWT.MouseDown, org.eclipse.swt.SWT.MouseUp}) {
             Event e = new Event();
             e.button = 1;
             e.x = p.x;
             e.y = p.y;
+            e.stateMask = stateMask;
             tab().view().control().notifyListeners(type, e);
         }
-        Gui.pump(() -> part.equals(tab().selectedPart()), part + " selected: " + tab().message());
     }
 
     @Test
@@ -151,6 +174,57 @@ class RobotTabEditingGuiTest {
         tab().showTab();
         Gui.settle();
         assertEquals(8, tab().draft().partNames().size());
+    }
+
+    @Test
+    void theKitLimitsTheBuilderAndConnectSaysHowFarApartThePlatesAre() throws Exception {
+        Path kit = dir.resolve("kit.xml");
+        Files.writeString(kit, "<kit>\n  <part type=\"segment\" count=\"3\"/>\n  <part type=\"foot\" count=\"1\"/>\n</kit>\n");
+        openCopy("two.xml", String.join("\n", "<?xml version=\"1.0\" ?>", "<robot-config>",
+                "  <part name=\"a\" type=\"segment\" id=\"0\"/>", "  <part name=\"b\" type=\"segment\" id=\"1\"/>",
+                "  <connect from=\"a.1\" to=\"b.0\"/>", "</robot-config>", ""));
+        tab().answerWith(new Outside.Questions() {
+            @Override
+            public Path saveRobotAs(Path proposed) {
+                return null;
+            }
+
+            @Override
+            public Path open(String title) {
+                return kit;
+            }
+        });
+        press(button("Kit\u2026"));
+        assertTrue(tab().fitText().contains("1 segment") && tab().fitText().contains("1 foot"),
+                "what the kit has left: " + tab().fitText());
+        clickPlate("b", 1, false);
+        press(button("Place"));
+        Gui.pump(() -> tab().draft().partNames().size() == 3, "the third segment");
+        assertTrue(tab().fitText().contains("0 segments"), tab().fitText());
+        clickPlate("s0", 1, false);
+        assertFalse(button("Place").isEnabled(), "no segment left in the kit");
+        assertTrue(tab().message().contains("kit has no segment left"), tab().message());
+        // two free plates of a straight chain do not meet: refused, saying how far apart
+        clickPlate("a", 0, false);
+        clickPlate("s0", 1, true);
+        String before = ide.editor().document().get();
+        press(button("Connect"));
+        assertTrue(tab().message().contains("mm") && tab().message().contains("apart"), tab().message());
+        assertEquals(before, ide.editor().document().get(), "nothing written");
+    }
+
+    @Test
+    void tryItRunsTheScriptLastOpenOnTheConfigurationInTheEditor() throws Exception {
+        openCopy("wheel.xml", Files.readString(Gui.example("wheel.xml")));
+        Gui.pump(() -> ide.program() != null, "the wheel script");
+        Path robot = openCopy("wheel6.xml", Files.readString(Gui.example("configs/wheel6.xml")));
+        assertTrue(button("Try it").isEnabled());
+        press(button("Try it"));
+        Gui.pump(() -> ide.runs().running() || ide.runs().lastOutcome() != null, "the run on the robot");
+        assertTrue(tab().message().startsWith("Trying wheel.xml"), tab().message());
+        Gui.pump(() -> ide.runs().snapshot() != null && ide.runs().snapshot().bodies().size() == tab().draft().bodies().size(),
+                "the robot of " + robot.getFileName() + " in the 3D view");
+        Gui.endRun(ide);
     }
 
     @Test
