@@ -19,7 +19,6 @@ import org.parpe.sim.SimSnapshot;
 import org.parpe.sim.build.BuildEdit;
 import org.parpe.sim.build.BuildPlate;
 import org.parpe.sim.build.RobotDraft;
-import org.parpe.sim.config.Connection;
 import org.parpe.sim.config.PartSpec;
 import org.parpe.sim.config.PartType;
 
@@ -74,7 +73,7 @@ public final class RobotTab {
         for (org.eclipse.swt.widgets.Button c : ui.types) {
             c.addListener(SWT.Selection, e -> chosen(c));
         }
-        typed(ui.hubPlates, () -> {
+        PartEdits.typed(ui.hubPlates, () -> {
             preview();
             update();
         });
@@ -84,46 +83,7 @@ public final class RobotTab {
         ui.place.addListener(SWT.Selection, e -> place());
         ui.connect.addListener(SWT.Selection, e -> connect());
         ui.assignIds.addListener(SWT.Selection, e -> edit(d -> d.assignIds()));
-        typed(ui.moduleId, () -> number(ui.moduleId, "ID").ifPresent(v -> property(p -> p.moduleId() != v,
-                d -> d.setModuleId(targets.part, (int) Math.round(v)))));
-        typed(ui.angle, () -> number(ui.angle, "angle").ifPresent(v -> property(p -> p.angle() != v,
-                d -> d.setAngle(targets.part, v))));
-        ui.limp.addListener(SWT.Selection, e -> property(p -> p.limp() != ui.limp.getSelection(),
-                d -> d.setLimp(targets.part, ui.limp.getSelection())));
-        typed(ui.roll, () -> number(ui.roll, "roll").ifPresent(v -> property(p -> p.name().equals(shown.draft().root())
-                && shown.draft().config() != null && shown.draft().config().root().roll() != v,
-                d -> d.setRootPose("roll", v))));
-        ui.turn.addListener(SWT.Selection, e -> property(p -> true, d -> d.turn(targets.part, (turnOf(targets.part) + 1) % 4)));
-        ui.delete.addListener(SWT.Selection, e -> deletePart());
-        ui.makeRoot.addListener(SWT.Selection, e -> property(p -> true, d -> d.makeRoot(targets.part)));
-        ui.view.control().addListener(SWT.KeyDown, e -> {
-            if ((e.keyCode == SWT.DEL || e.keyCode == SWT.BS) && targets.part != null) {
-                deletePart();
-            }
-        });
-    }
-
-    /** {@code then} runs when a value typed into {@code box} is entered (Enter, or the focus leaves it). */
-    private static void typed(org.eclipse.swt.widgets.Text box, Runnable then) {
-        box.addListener(SWT.DefaultSelection, e -> then.run());
-        box.addListener(SWT.FocusOut, e -> then.run());
-    }
-
-    /** The number in {@code box}, or empty after saying it is not one. */
-    private java.util.OptionalDouble number(org.eclipse.swt.widgets.Text box, String what) {
-        if (box.getText().isBlank() || targets.part == null) {
-            return java.util.OptionalDouble.empty();
-        }
-        try {
-            double v = Double.parseDouble(box.getText().trim());
-            if (Double.isFinite(v)) {
-                return java.util.OptionalDouble.of(v);
-            }
-        } catch (NumberFormatException e) {
-            // said below
-        }
-        say("The " + what + " must be a number, got '" + box.getText().trim() + "'");
-        return java.util.OptionalDouble.empty();
+        new PartEdits(ui, () -> shown, () -> targets.part, this::apply, this::say);
     }
 
     /** A radio button of the palette was pressed: the preview follows the one now chosen. */
@@ -290,46 +250,10 @@ public final class RobotTab {
         apply(e);
     }
 
-    private void deletePart() {
-        if (targets.part != null) {
-            String gone = targets.part;
-            property(p -> true, d -> d.remove(gone));
-        }
-    }
-
-    /** A change of the selected part, made when {@code changed} holds for it. */
-    private void property(java.util.function.Predicate<PartSpec> changed, java.util.function.Function<RobotDraft, BuildEdit> make) {
-        RobotDraft d = shown.draft();
-        if (targets.part == null || d == null || !shown.editable()) {
-            return;
-        }
-        PartSpec p = d.part(targets.part).orElse(null);
-        if (p != null && changed.test(p)) {
-            apply(make.apply(d));
-        }
-    }
-
     private void edit(java.util.function.Function<RobotDraft, BuildEdit> make) {
         if (shown.editable() && shown.draft() != null) {
             apply(make.apply(shown.draft()));
         }
-    }
-
-    /** The orientation (quarter turns) of the connection that attaches {@code part} to its parent. */
-    private int turnOf(String part) {
-        RobotDraft d = shown.draft();
-        BuildPlate at = d.attachment(part).orElse(null);
-        if (at == null || d.config() == null) {
-            return 0;
-        }
-        for (Connection c : d.config().connections()) {
-            boolean down = c.from().equals(at.part()) && c.fromPlate() == at.plate() && c.to().equals(part);
-            boolean up = c.to().equals(at.part()) && c.toPlate() == at.plate() && c.from().equals(part);
-            if (down || up) {
-                return c.quarterTurns();
-            }
-        }
-        return 0;
     }
 
     /**
