@@ -12,7 +12,7 @@ import org.parpe.sim.SimSnapshot;
 import org.parpe.sim.Vec3;
 import org.parpe.sim.build.RobotDraft;
 
-/** The Robot tab's pictures for the 3D view: the robot at rest, and a part previewed on it. */
+/** The Robot tab's pictures for the 3D view (the robot at rest, a part previewed on it), and a robot's start in a blank file. */
 final class Pictures {
     private Pictures() {
     }
@@ -69,5 +69,21 @@ final class Pictures {
             }
         }
         return bodies.isEmpty() ? 0 : Math.max(hi[0] - lo[0], Math.max(hi[1] - lo[1], hi[2] - lo[2]));
+    }
+
+    /**
+     * The edit that writes configuration {@code config} into a blank document {@code doc} (white
+     * space, an XML declaration, comments): after what the document holds, which stays, without
+     * a second declaration.
+     */
+    static org.parpe.core.edit.TextEdit startIn(String doc, String config) {
+        String body = config;
+        if (doc.stripLeading().startsWith("<?xml") && body.startsWith("<?xml")) {
+            int end = body.indexOf("?>");
+            body = body.substring(end + 2).stripLeading();
+        }
+        String kept = doc.strip();
+        return kept.isEmpty() ? org.parpe.core.edit.TextEdit.of(0, doc.length(), config)
+                : org.parpe.core.edit.TextEdit.of(0, doc.length(), kept + "\n" + body);
     }
 }

@@ -101,17 +101,22 @@ public final class RobotTab {
 
     /**
      * The text in the editor was checked ({@code program}: the script it loaded to, or null):
-     * the tab shows its robot again. True when the editor holds a robot configuration (or is
-     * blank); then {@link #problems()} are the file's problems, not the script loader's.
+     * the tab shows its robot again. True when the editor holds a robot configuration (not a
+     * blank file, which the tab shows as an empty robot and the IDE as an empty script); then
+     * {@link #problems()} are the file's problems, not the script loader's.
      */
     public boolean documentChecked(Program program) {
         String text = host.editor().document().get();
         if (Shown.isConfig(text)) {
-            if (!shown.editable() || !shown.draft().text().equals(text) && !text.isBlank()) {
+            boolean blank = org.parpe.core.edit.SectionEdits.blank(text);
+            // shown already: the same text, or (blank) the empty robot of the same file
+            boolean same = shown.editable() && (blank ? shown.draft().partNames().isEmpty() && host.file().equals(shown.config())
+                    : shown.draft().text().equals(text));
+            if (!same) {
                 show(Shown.of(host.file(), text, null, null));
             }
             // a blank file is the IDE's (an empty script or an empty robot): nothing to report
-            return !text.isBlank();
+            return !blank;
         }
         if (program != null && java.nio.file.Files.isRegularFile(host.file())) { // an untitled script is no one's robot test
             script = program;
@@ -270,12 +275,12 @@ public final class RobotTab {
         RobotDraft d = shown.draft();
         TextEdit edit = e.edit();
         if (!d.text().equals(doc)) {
-            if (!doc.isBlank()) {
+            if (!org.parpe.core.edit.SectionEdits.blank(doc)) {
                 show(Shown.of(host.file(), doc, null, null));
                 say("The text changed meanwhile; the robot is shown as it is now: try again");
                 return;
             }
-            edit = TextEdit.of(0, doc.length(), d.apply(e).text()); // a blank file: the empty configuration and the part at once
+            edit = Pictures.startIn(doc, d.apply(e).text()); // a blank file: the empty configuration and the part at once
         }
         try {
             host.editor().apply(edit);

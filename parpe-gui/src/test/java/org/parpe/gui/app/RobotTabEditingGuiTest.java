@@ -227,6 +227,27 @@ class RobotTabEditingGuiTest {
         Gui.endRun(ide);
     }
 
+    /**
+     * A blank file (a declaration and a comment) is an empty script to the IDE (the status bar
+     * says how to begin) and an empty robot to the tab: the first part writes the configuration
+     * after what the file holds, as one Undo step.
+     */
+    @Test
+    void aBlankFileStartsARobotKeepingItsComment() throws Exception {
+        String blank = "<?xml version=\"1.0\"?>\n<!-- my first robot -->\n";
+        openCopy("nothing.xml", blank);
+        Gui.pump(() -> ide.status().message().startsWith("The file is empty"), "the status bar saying the file is empty");
+        assertTrue(tab().draft().partNames().isEmpty());
+        press(button("Place"));
+        String text = ide.editor().document().get();
+        assertTrue(text.startsWith(blank.strip() + "\n<robot-config>"), text);
+        assertEquals(text.indexOf("<?xml"), text.lastIndexOf("<?xml"), "one declaration: " + text);
+        assertEquals(1, tab().draft().partNames().size(), text);
+        assertTrue(tab().draft().problems().isEmpty(), () -> tab().draft().problems().toString());
+        press(button("Undo"));
+        assertEquals(blank, ide.editor().document().get(), "one Undo step gives the blank file back");
+    }
+
     @Test
     void aBadConfigurationIsLocatedInProblemsAndOnTheTabWithoutAnException() throws Exception {
         String text = String.join("\n", "<?xml version=\"1.0\" ?>", "<robot-config>",
