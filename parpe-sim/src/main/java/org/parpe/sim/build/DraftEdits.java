@@ -99,7 +99,7 @@ final class DraftEdits {
         if (refused == null && i < 0) {
             refused = noPart(part);
         }
-        List<Integer> gone = i < 0 ? List.of() : draft.tree().subtree(i);
+        List<Integer> gone = i < 0 ? List.of() : draft.tree().hangingOn(i);
         RootPose root = i < 0 ? null : draft.tree().rootOf(i);
         if (refused == null && root != null && root.part().equals(part) && gone.size() > 1) {
             refused = "'" + part + "' is the root and " + (gone.size() - 1) + " part" + (gone.size() == 2 ? "" : "s")

@@ -206,8 +206,9 @@ public final class RobotDraft {
     }
 
     /**
-     * Removes {@code part} with every part that hangs on it away from the root, and every
-     * connection of those parts. The root is removed only when nothing hangs on it (then the
+     * Removes {@code part} with every part that hangs on it away from the root (what the robot
+     * no longer holds without it; in a loop, what the other way round still holds stays), and
+     * every connection of those parts. The root is removed only when nothing hangs on it (then the
      * file has no part); else refused: make another part the root first.
      */
     public BuildEdit remove(String part) {
