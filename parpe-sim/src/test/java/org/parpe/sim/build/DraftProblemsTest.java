@@ -146,4 +146,16 @@ class DraftProblemsTest {
         assertTrue(p.get(0).message().startsWith("DOCTYPE declarations are not allowed in a robot configuration"));
         assertFalse(p.toString().contains("s3cr3t"));
     }
+
+    @Test
+    void aRootPartThatIsNotDefinedIsReportedAtItsRootElement() throws Exception {
+        List<Diagnostic> p = problems("root.xml", """
+                <robot-config>
+                  <part name="head" type="segment" id="0"/>
+                  <root part="haed"/>
+                </robot-config>
+                """);
+        assertTrue(p.get(0).format().endsWith("root.xml:3:3: error: root part 'haed' is not defined (did you mean 'head'?)"),
+                p.toString());
+    }
 }
