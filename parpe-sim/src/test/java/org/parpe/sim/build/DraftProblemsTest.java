@@ -47,6 +47,11 @@ class DraftProblemsTest {
         return d.problems();
     }
 
+    private RobotDraft draft(String name) throws Exception {
+        Path f = dir.resolve(name);
+        return RobotDraft.of(f.toString(), Files.readString(f));
+    }
+
     @Test
     void overlappingParts() throws Exception {
         List<Diagnostic> p = problems("overlap.xml", """
@@ -63,6 +68,7 @@ class DraftProblemsTest {
                 </robot-config>
                 """);
         assertTrue(p.get(0).format().contains("overlap.xml:6:3: error: part 'd' overlaps part 'body'"), p.toString());
+        assertEquals("d", draft("overlap.xml").partAt(p.get(0).pos()).orElseThrow(), "the builder marks the part at fault");
     }
 
     @Test
@@ -79,7 +85,8 @@ class DraftProblemsTest {
         assertTrue(p.get(0).format().endsWith("twice.xml:6:3: error: plate 1 of part 'a' is already connected (line 5);"
                 + " a plate takes one connection"), p.toString());
         // what reads but does not assemble can be mended by the builder
-        RobotDraft d = RobotDraft.of("twice.xml", Files.readString(dir.resolve("twice.xml")));
+        RobotDraft d = draft("twice.xml");
+        assertEquals("c", d.partAt(p.get(0).pos()).orElseThrow(), "the part the second connection would attach");
         assertTrue(d.apply(d.remove("c")).problems().isEmpty());
     }
 
@@ -106,6 +113,7 @@ class DraftProblemsTest {
         List<Diagnostic> p = problems("type.xml", text);
         assertTrue(p.get(0).format().endsWith("type.xml:2:3: error: unknown part type 'wheel'; expected segment, node,"
                 + " foot or hub"), p.toString());
+        assertEquals("w", draft("type.xml").partAt(p.get(0).pos()).orElseThrow());
         // what does not read cannot be edited by the builder, only in the text
         assertEquals("the configuration has problems; mend them first (see Problems)",
                 RobotDraft.of("type.xml", text).remove("w").refusal());
