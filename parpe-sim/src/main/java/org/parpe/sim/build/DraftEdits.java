@@ -22,10 +22,8 @@ import org.parpe.sim.config.RootPose;
 import org.parpe.sim.internal.Assembly;
 
 /**
- * The edits of a {@link RobotDraft}, each made of the edit layer's span edits on the draft's
- * text: a new {@code <part>} after the last {@code <part>}, a new {@code <connect>} after the
- * last {@code <connect>}, each with that element's indentation; an attribute set or, back at
- * its default, left out; elements removed with their lines.
+ * The edits of a {@link RobotDraft}: what each means for the configuration, and when it is
+ * refused and why; {@link DraftPlaces} writes them into the text through the edit layer.
  */
 final class DraftEdits {
     private static final String ROOT = "robot-config";
