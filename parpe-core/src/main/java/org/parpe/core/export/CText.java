@@ -2,7 +2,7 @@ package org.parpe.core.export;
 
 import java.nio.charset.StandardCharsets;
 
-/** Pieces of C text shared by the generators (and by parpe-cli's sketch writer). */
+/** Pieces of C text shared by the generators (and by parpe-serial's sketch writer). */
 public final class CText {
     /** The longest string literal a C99 compiler must accept (C99 5.2.4.1; gcc -pedantic warns above it). */
     static final int MAX_LITERAL = 4095;
