@@ -27,6 +27,22 @@ public final class CText {
             """;
 
     /**
+     * The values of sub-expressions kept per module ({@link ModuleConstants}): a format of the
+     * count of values and of positions (the instances' groups), twice. Not on AVR boards, whose
+     * RAM (2 KB) they would take, and where the code is then what it was without them.
+     */
+    static final String KEEP = """
+            #if !defined(__AVR__)
+            /* Sub-expressions of angles that are the same for a module at every tick: computed at its
+               first tick, then read, by instance and position (r->group_off + r->index). */
+            #define PARSL_KEEP 1
+            static double parsl_kept[%d][%d];
+            static uint8_t parsl_kept_ok[%d][%d];
+            #endif
+
+            """;
+
+    /**
      * {@code s} made safe for a C comment or a {@code //} line: only printable ASCII, without
      * {@code \\} (a line splice), {@code ?} (trigraphs such as {@code ??/}), and no {@code *} next
      * to a {@code /} (which would end the comment or open one inside it);
