@@ -9,20 +9,15 @@ import java.util.function.Consumer;
 import java.util.function.Supplier;
 import org.eclipse.jface.dialogs.MessageDialog;
 import org.eclipse.swt.SWT;
-import org.eclipse.swt.layout.GridData;
-import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Combo;
-import org.eclipse.swt.widgets.DirectoryDialog;
 import org.eclipse.swt.widgets.Display;
-import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.Shell;
 import org.eclipse.swt.widgets.Text;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.export.Board;
 import org.parpe.core.model.Program;
-import org.parpe.gui.panels.FileDialogs;
 import org.parpe.serial.export.ProgramExport;
 import org.parpe.serial.export.SketchOptions;
 import org.parpe.sim.bridge.Export;
@@ -40,15 +35,12 @@ public final class ExportProgramDialog {
     private static final String[] SERVOS = {"pwm", "dxl", "sts"};
     private static final String[] SERVO_LABELS = {"Hobby PWM servos on pins", "Dynamixel 2.0 bus", "Feetech STS bus"};
 
-    private final Shell shell;
+    private final ExportWindow window;
     private final Combo target;
     private final Combo board;
     private final Combo servo;
     private final Button consoleSensors;
     private final Text tick;
-    private final Text folder;
-    private final Button export;
-    private final Text message;
     private final Supplier<Program> program;
     private final Consumer<List<Diagnostic>> problems;
     private FileActions.Questions questions;
@@ -57,34 +49,21 @@ public final class ExportProgramDialog {
     private ExportProgramDialog(Shell parent, Supplier<Program> program, Consumer<List<Diagnostic>> problems) {
         this.program = program;
         this.problems = problems;
-        shell = new Shell(parent, SWT.DIALOG_TRIM | SWT.RESIZE | SWT.MODELESS);
-        shell.setText("Export Program as C/Arduino");
-        shell.setLayout(new GridLayout(3, false));
-        target = combo("Target:", TARGETS);
-        board = combo("Board:", new String[0]);
-        servo = combo("Servos:", SERVO_LABELS);
-        new Label(shell, SWT.NONE);
+        window = new ExportWindow(parent, "Export Program as C/Arduino");
+        Shell shell = window.shell();
+        target = window.combo("Target:", TARGETS);
+        board = window.combo("Board:", new String[0]);
+        servo = window.combo("Servos:", SERVO_LABELS);
+        window.label("");
         consoleSensors = new Button(shell, SWT.CHECK);
         consoleSensors.setText("Take accel and touch readings from console commands");
-        consoleSensors.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false, 2, 1));
-        new Label(shell, SWT.NONE).setText("Tick (s):");
+        consoleSensors.setLayoutData(ExportWindow.span());
+        window.label("Tick (s):");
         tick = new Text(shell, SWT.BORDER);
         tick.setText("0.01");
-        tick.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false, 2, 1));
-        new Label(shell, SWT.NONE).setText("Folder:");
-        folder = new Text(shell, SWT.BORDER);
-        folder.setText(FileDialogs.start().resolve("program-export").toString());
-        GridData fd = new GridData(SWT.FILL, SWT.CENTER, true, false);
-        fd.widthHint = 420;
-        folder.setLayoutData(fd);
-        button("Browse\u2026", this::askFolder);
-        message = new Text(shell, SWT.MULTI | SWT.READ_ONLY | SWT.WRAP | SWT.V_SCROLL | SWT.BORDER);
-        GridData md = new GridData(SWT.FILL, SWT.FILL, true, true, 3, 1);
-        md.heightHint = 110;
-        message.setLayoutData(md);
-        new Label(shell, SWT.NONE).setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false, 2, 1));
-        export = button("Export", this::export);
-        shell.setDefaultButton(export);
+        tick.setLayoutData(ExportWindow.span());
+        window.finish("program-export", "The folder the program's files are written into (a sketch gets a folder of"
+                + " its own in it)", 110, this::export);
         questions = (title, text, buttons) -> new MessageDialog(shell, title, null, text, MessageDialog.QUESTION,
                 buttons, 0).open();
         target.addListener(SWT.Selection, e -> targetChanged());
@@ -97,16 +76,12 @@ public final class ExportProgramDialog {
      */
     public static ExportProgramDialog open(Shell parent, Supplier<Program> program, Consumer<List<Diagnostic>> problems) {
         ExportProgramDialog d = new ExportProgramDialog(parent, program, problems);
-        d.shell.pack();
-        org.eclipse.swt.graphics.Rectangle over = parent.getBounds();
-        org.eclipse.swt.graphics.Point size = d.shell.getSize();
-        d.shell.setLocation(over.x + Math.max(0, (over.width - size.x) / 2), over.y + Math.max(0, (over.height - size.y) / 3));
-        d.shell.open();
+        d.window.open(parent);
         return d;
     }
 
     public Shell shell() {
-        return shell;
+        return window.shell();
     }
 
     /** Chooses the target by its {@code --target} name, c or arduino (tests, automation). */
@@ -121,7 +96,7 @@ public final class ExportProgramDialog {
     }
 
     public void setFolder(Path dir) {
-        folder.setText(dir.toString());
+        window.setFolder(dir);
     }
 
     /** Answers the replace question with {@code q} instead of a dialog (tests). */
@@ -131,30 +106,12 @@ public final class ExportProgramDialog {
 
     /** What the last export wrote or why it refused ("" before one). */
     public String message() {
-        return message.getText();
+        return window.message();
     }
 
     /** Whether an export is being prepared or written. */
     public boolean busy() {
         return busy;
-    }
-
-    private Combo combo(String label, String[] items) {
-        new Label(shell, SWT.NONE).setText(label);
-        Combo c = new Combo(shell, SWT.READ_ONLY);
-        for (String s : items) {
-            c.add(s);
-        }
-        c.select(0);
-        c.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false, 2, 1));
-        return c;
-    }
-
-    private Button button(String text, Runnable action) {
-        Button b = new Button(shell, SWT.PUSH);
-        b.setText(text);
-        b.addListener(SWT.Selection, e -> action.run());
-        return b;
     }
 
     private ProgramExport.Target chosenTarget() {
@@ -174,17 +131,6 @@ public final class ExportProgramDialog {
         consoleSensors.setEnabled(sketch);
     }
 
-    private void askFolder() {
-        DirectoryDialog d = new DirectoryDialog(shell);
-        d.setText("Export Into");
-        d.setMessage("The folder the program's files are written into (a sketch gets a folder of its own in it)");
-        d.setFilterPath(FileDialogs.start().toString());
-        String chosen = d.open();
-        if (chosen != null) {
-            folder.setText(chosen);
-        }
-    }
-
     /** The choices of the window as an export request, or null after saying what is wrong. */
     private ProgramExport.Request request() {
         ProgramExport.Target t = chosenTarget();
@@ -195,10 +141,10 @@ public final class ExportProgramDialog {
                     consoleSensors.getSelection()) : null;
             return new ProgramExport.Request(t, t.boards().get(Math.max(0, board.getSelectionIndex())), dt, sketch);
         } catch (NumberFormatException e) {
-            message.setText("Nothing written: the tick must be a number of seconds such as 0.01, got '"
+            window.say("Nothing written: the tick must be a number of seconds such as 0.01, got '"
                     + tick.getText().trim() + "'");
         } catch (IllegalArgumentException e) {
-            message.setText("Nothing written: " + e.getMessage());
+            window.say("Nothing written: " + e.getMessage());
         }
         return null;
     }
@@ -210,18 +156,18 @@ public final class ExportProgramDialog {
         }
         Program p = program.get();
         if (p == null) {
-            message.setText("Nothing written: there is no script without errors open (see Problems)");
+            window.say("Nothing written: there is no script without errors open (see Problems)");
             return;
         }
         ProgramExport.Request q = request();
         if (q == null) {
             return;
         }
-        Path out = Path.of(folder.getText().trim()).toAbsolutePath();
+        Path out = window.folder();
         busy = true;
-        export.setEnabled(false);
-        message.setText("Exporting " + Path.of(p.file()).getFileName() + " as " + q.target().word() + "\u2026");
-        Display display = shell.getDisplay();
+        window.exporting(true);
+        window.say("Exporting " + Path.of(p.file()).getFileName() + " as " + q.target().word() + "\u2026");
+        Display display = window.shell().getDisplay();
         background(() -> {
             DiagnosticList diags = new DiagnosticList();
             ProgramExport.Result r = ProgramExport.export(p, q, diags);
@@ -248,7 +194,7 @@ public final class ExportProgramDialog {
 
     /** On the UI thread: asks before replacing files, then writes on a thread of its own. */
     private void prepared(ProgramExport.Result r, Path out, String refused, List<String> existing, List<Diagnostic> found) {
-        if (shell.isDisposed()) {
+        if (window.shell().isDisposed()) {
             busy = false;
             return;
         }
@@ -265,7 +211,7 @@ public final class ExportProgramDialog {
             done("Nothing written: the files in " + dir + " were kept");
             return;
         }
-        Display display = shell.getDisplay();
+        Display display = window.shell().getDisplay();
         background(() -> {
             String text;
             try {
@@ -291,10 +237,10 @@ public final class ExportProgramDialog {
 
     private void done(String text) {
         busy = false;
-        if (shell.isDisposed()) {
+        if (window.shell().isDisposed()) {
             return;
         }
-        export.setEnabled(true);
-        message.setText(text);
+        window.exporting(false);
+        window.say(text);
     }
 }
