@@ -31,8 +31,8 @@ final class Nodes {
         }
     }
 
-    /** A logical variable or other context field ({@link #of} gives the specialised node of each). */
-    static class Var extends Node {
+    /** A logical variable or other context field: one subclass per variable ({@link #of}), so no switch per evaluation. */
+    abstract static class Var extends Node {
         static final int TIME = 0, BTIME = 1, INDEX = 2, COUNT = 3, ID = 4, PHASE = 5, CYCLE = 6;
         final int which;
 
@@ -40,22 +40,9 @@ final class Nodes {
             this.which = which;
         }
 
-        /** The node reading variable {@code which}: one class per variable, so no switch per evaluation. */
+        /** The node reading variable {@code which}. */
         static Var of(int which) {
             return Arith.variable(which);
-        }
-
-        @Override
-        public double eval(EvalContext c) {
-            switch (which) {
-                case TIME: return c.time;
-                case BTIME: return c.btime;
-                case INDEX: return c.index;
-                case COUNT: return c.count;
-                case ID: return c.id;
-                case PHASE: return c.phase;
-                default: return c.cycle;
-            }
         }
     }
 
