@@ -4,9 +4,7 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.concurrent.Callable;
 import org.parpe.cli.ClockOptions;
 import org.parpe.cli.Inputs;
@@ -15,12 +13,11 @@ import org.parpe.cli.UsageException;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.export.Board;
-import org.parpe.core.export.CExport;
-import org.parpe.core.export.CRuntime;
-import org.parpe.core.export.DriverCost;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
 import org.parpe.core.model.Program;
+import org.parpe.serial.export.ProgramExport;
+import org.parpe.serial.export.SketchOptions;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -119,27 +116,26 @@ public final class ExportCommand implements Callable<Integer> {
             throw new UsageException("--robot and --stimulus are for --target mjcf, urdf and sdf");
         }
         Inputs.check(file);
-        Board b = board(arduino);
-        if (arduino) {
-            ArduinoSketch.tickMicros(tick);
-        }
-        SketchOptions sketch = arduino ? SketchOptions.of(servo, pins, baud, model, consoleSensors) : null;
+        ProgramExport.Request request = request(arduino);
         LoadResult r = ScriptLoader.load(file, ParamValues.parse(params));
         int refused = org.parpe.cli.LoadReport.exitCode(r, err::println);
         if (refused != 0) {
             return refused;
         }
         DiagnosticList diags = new DiagnosticList();
-        if (sketch != null) {
-            sketch.check(r.program(), diags);
-        }
-        DriverCost driver = sketch == null ? DriverCost.NONE : sketch.cost(r.program().moduleIds().length);
-        CExport.Result result = diags.hasErrors() ? null : CExport.export(r.program(), tick, b, driver, diags);
+        ProgramExport.Result result = ProgramExport.export(r.program(), request, diags);
         diags.all().forEach(d -> err.println(d.format()));
         if (result == null) {
             return 1;
         }
-        write(r.program(), result, sketch);
+        Path dir = result.dir(out);
+        ExportFiles.write(dir, result.files());
+        PrintWriter o = spec.commandLine().getOut();
+        o.println(result.memory().format());
+        o.println("wrote " + result.files().size() + " files to " + dir);
+        if (!arduino) {
+            o.println("build: cc -std=c99 -O2 -o program " + dir + "/*.c -lm");
+        }
         return 0;
     }
 
@@ -177,38 +173,21 @@ public final class ExportCommand implements Callable<Integer> {
     }
 
 
-    /** The board of {@code --board}, checked against the target and the target's other options. */
-    private Board board(boolean arduino) throws UsageException {
-        Board b = board == null ? (arduino ? Board.UNO : Board.HOST) : Board.of(board);
+    /** The export's choices from the options: {@code --board} checked against the target, the sketch's servo driver. */
+    private ProgramExport.Request request(boolean arduino) throws UsageException {
+        ProgramExport.Target t = arduino ? ProgramExport.Target.ARDUINO : ProgramExport.Target.C;
+        Board b = board == null ? t.defaultBoard() : Board.of(board);
         if (b == null) {
             throw new UsageException("--board must be uno, nano, esp32 or host, got '" + board + "'");
-        }
-        if (arduino && b == Board.HOST) {
-            throw new UsageException("--board host is for --target c; an Arduino sketch runs on uno, nano or esp32");
         }
         if (!arduino && (!pins.isEmpty() || model != null || !servo.equals("pwm") || consoleSensors)) {
             throw new UsageException("--servo, --pins, --model and --console-sensors are for --target arduino");
         }
-        return b;
-    }
-
-    /** Writes the runtime, the program and (for a sketch) the .ino into the folder, and says what it did. */
-    private void write(Program program, CExport.Result result, SketchOptions sketch) throws IOException, UsageException {
-        Map<String, String> files = new LinkedHashMap<>(CRuntime.runtime(sketch == null));
-        files.putAll(result.files());
-        Path dir = out;
-        if (sketch != null) {
-            String name = ArduinoSketch.sketchName(file);
-            dir = out.resolve(name);
-            files.put(name + ".ino", ArduinoSketch.ino(program, sketch, tick));
-            files.put("parsl_servo.h", ServoTables.header(sketch));
-        }
-        ExportFiles.write(dir, files);
-        PrintWriter o = spec.commandLine().getOut();
-        o.println(result.memory().format());
-        o.println("wrote " + files.size() + " files to " + dir);
-        if (sketch == null) {
-            o.println("build: cc -std=c99 -O2 -o program " + dir + "/*.c -lm");
+        try {
+            SketchOptions sketch = arduino ? SketchOptions.of(servo, pins, baud, model, consoleSensors) : null;
+            return new ProgramExport.Request(t, b, tick, sketch);
+        } catch (IllegalArgumentException e) {
+            throw new UsageException(e.getMessage());
         }
     }
 

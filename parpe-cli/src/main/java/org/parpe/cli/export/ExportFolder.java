@@ -4,13 +4,11 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.LinkedHashMap;
 import java.util.Map;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.export.Board;
-import org.parpe.core.export.CExport;
-import org.parpe.core.export.CRuntime;
 import org.parpe.core.model.Program;
+import org.parpe.serial.export.ProgramExport;
 
 /** Writes a complete host export (runtime, tables, trace program) for tools such as the benchmark. */
 public final class ExportFolder {
@@ -24,13 +22,12 @@ public final class ExportFolder {
      */
     public static void writeHost(Program program, double dt, Path dir) throws IOException {
         DiagnosticList d = new DiagnosticList();
-        CExport.Result r = CExport.export(program, dt, Board.HOST, d);
+        ProgramExport.Result r = ProgramExport.export(program,
+                new ProgramExport.Request(ProgramExport.Target.C, Board.HOST, dt, null), d);
         if (r == null) {
             throw new IllegalArgumentException(ExportCommand.lines(d.all()));
         }
-        Map<String, String> files = new LinkedHashMap<>(CRuntime.runtime(true));
-        files.putAll(r.files());
-        for (Map.Entry<String, String> f : files.entrySet()) {
+        for (Map.Entry<String, String> f : r.files().entrySet()) {
             Files.writeString(dir.resolve(f.getKey()), f.getValue(), StandardCharsets.UTF_8);
         }
     }

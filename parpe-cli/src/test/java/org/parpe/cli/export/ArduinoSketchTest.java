@@ -58,7 +58,7 @@ class ArduinoSketchTest {
         assertEquals(0, export.code, () -> "export: " + export);
         assertTrue(export.out.contains("memory (" + (esp32 ? "esp32" : "uno") + ", estimate): RAM "), export.out);
         Path sketch = tmp.resolve("teleop_dirwave");
-        assertTrue(Files.readString(sketch.resolve("teleop_dirwave.ino")).startsWith(ExportFiles.MARK));
+        assertTrue(Files.readString(sketch.resolve("teleop_dirwave.ino")).startsWith(org.parpe.serial.export.ProgramExport.MARK));
         List<String> lines = runSketch(sketch, "direction=backward", esp32).lines().toList();
         List<double[]> expected = interpreter(TICKS + 1, "0.05 $direction=backward\n");
         String console = servo.equals("pwm") || esp32 ? "serial: ok" : "console: ok";

@@ -89,7 +89,7 @@ class ExportEqualityTest {
             }
         }
         for (String n : List.of("functions", "divide-by-zero", "negative-duration", "period-zero", "huge-angles", "total-zero",
-                "pow-huge", "exp-huge", "transitions")) {
+                "pow-huge", "exp-huge", "transitions", "kept-values", "kept-divide-by-zero")) {
             out.add(new Case(n, Path.of("src/test/resources/export/" + n + ".xml").toAbsolutePath(),
                     List.of("--duration", "3", "--seed", "7"), false));
         }

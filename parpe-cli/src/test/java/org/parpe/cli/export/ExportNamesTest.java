@@ -56,7 +56,7 @@ class ExportNamesTest {
             ino = dir.resolve(dir.getFileName() + ".ino");
         }
         String first = Files.readAllLines(ino).get(0);
-        assertTrue(first.startsWith(ExportFiles.MARK) && first.contains("x_#error injected through a file name_.xml"),
+        assertTrue(first.startsWith(org.parpe.serial.export.ProgramExport.MARK) && first.contains("x_#error injected through a file name_.xml"),
                 first);
         assertFalse(Files.readString(ino).lines().anyMatch(l -> l.startsWith("#error")), "no line of the name in the .ino");
     }

@@ -95,7 +95,7 @@ class SimulatedUnoTest {
         String servo = v[1];
         Program program = ScriptLoader.load(script, Map.of()).program();
         int n = program.moduleIds().length;
-        if (servo.equals("pwm") && n > SketchOptions.MAX_PWM) {
+        if (servo.equals("pwm") && n > org.parpe.serial.export.SketchOptions.MAX_PWM) {
             return; // refused at export (ArduinoSketchTest); such robots go on a bus
         }
         Path out = Files.createTempDirectory(tmp, "sketch");

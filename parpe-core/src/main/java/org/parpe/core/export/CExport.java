@@ -153,8 +153,22 @@ public final class CExport {
         return 4000 + 9500L * c.modules() + driver.cycles();
     }
 
-    /** Generated statements (indented lines), the measure of expression code for the flash estimate. */
+    /**
+     * Generated statements (indented lines), the measure of expression code for the flash
+     * estimate; the lines that keep values per module are not compiled on AVR and not counted.
+     */
     private static long statements(String source) {
-        return source.lines().filter(l -> l.startsWith("    ")).count();
+        long n = 0;
+        boolean keep = false;
+        for (String l : source.lines().toList()) {
+            if (l.equals("#ifdef PARSL_KEEP")) {
+                keep = true;
+            } else if (keep && l.equals("#endif")) {
+                keep = false;
+            } else if (!keep && l.startsWith("    ")) {
+                n++;
+            }
+        }
+        return n;
     }
 }

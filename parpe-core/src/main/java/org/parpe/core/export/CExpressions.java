@@ -17,18 +17,43 @@ final class CExpressions implements ExprTree.Visitor<String> {
 
     private final StringBuilder body = new StringBuilder();
     private final int[] sensorSlot;
+    private final Kept kept;
+    private boolean keeping;
     private int temps;
     private int depth = 1;
 
-    /** {@code sensorSlot} maps the interpreter's flat sensor slots to the compact C table (−1: none). */
-    private CExpressions(int[] sensorSlot) {
+    /** The values kept per module so far, numbered across the program's expressions ({@link ModuleConstants}). */
+    static final class Kept {
+        private int count;
+
+        /** How many values are kept per module. */
+        int count() {
+            return count;
+        }
+    }
+
+    /**
+     * {@code sensorSlot} maps the interpreter's flat sensor slots to the compact C table (−1: none);
+     * {@code kept} numbers the values kept per module, null where none are (not a state's angle).
+     */
+    private CExpressions(int[] sensorSlot, Kept kept) {
         this.sensorSlot = sensorSlot;
+        this.kept = kept;
     }
 
     /** The C function {@code static double NAME(parsl_rt *r)} evaluating {@code root}. */
     static String function(String name, Node root, int[] sensorSlot) {
-        CExpressions c = new CExpressions(sensorSlot);
-        String result = ExprTree.visit(root, c);
+        return function(name, root, sensorSlot, null);
+    }
+
+    /**
+     * As {@link #function(String, Node, int[])} for a state's angle, which is evaluated for one
+     * module at a time: sub-expressions that are the same for a module at every tick are kept in
+     * {@code parsl_kept}, numbered by {@code kept}, where {@code PARSL_KEEP} is defined.
+     */
+    static String function(String name, Node root, int[] sensorSlot, Kept kept) {
+        CExpressions c = new CExpressions(sensorSlot, kept);
+        String result = c.emit(root);
         StringBuilder out = new StringBuilder("static double ").append(name).append("(parsl_rt *r)\n{\n");
         if (c.temps > 0) {
             out.append("    double ");
@@ -51,6 +76,30 @@ final class CExpressions implements ExprTree.Visitor<String> {
             return (1 / v < 0) ? "(-0.0)" : "0.0";
         }
         return "(" + Double.toHexString(v) + ")";
+    }
+
+    /**
+     * The C of node {@code n}; a value worth keeping per module is computed as before where no
+     * kept value is there yet (the first tick, or a board without {@code PARSL_KEEP}) and read
+     * afterwards. An error raised computing it keeps nothing, so it is raised again next time, as
+     * the interpreter does.
+     */
+    private String emit(Node n) {
+        if (kept == null || keeping || !ModuleConstants.worthKeeping(n)) {
+            return ExprTree.visit(n, this);
+        }
+        int at = body.length();
+        String pad = "    ".repeat(depth);
+        keeping = true;
+        String v = ExprTree.visit(n, this); // a temporary: every costly node's value is one
+        keeping = false;
+        String slot = "[" + kept.count++ + "][r->group_off + r->index]";
+        body.insert(at, "#ifdef PARSL_KEEP\n" + pad + "if (parsl_kept_ok" + slot + ") {\n" + pad + "    " + v
+                + " = parsl_kept" + slot + ";\n" + pad + "} else {\n#endif\n");
+        body.append("#ifdef PARSL_KEEP\n").append(pad).append("    parsl_kept").append(slot).append(" = ").append(v)
+                .append(";\n").append(pad).append("    parsl_kept_ok").append(slot).append(" = 1;\n").append(pad)
+                .append("}\n#endif\n");
+        return v;
     }
 
     private String temp() {
@@ -105,14 +154,14 @@ final class CExpressions implements ExprTree.Visitor<String> {
 
     @Override
     public String unary(boolean not, Node arg) {
-        String a = ExprTree.visit(arg, this);
+        String a = emit(arg);
         return set(not ? "(" + a + " == 0 ? 1.0 : 0.0)" : "-" + a);
     }
 
     @Override
     public String binary(String op, Node left, Node right) {
-        String a = ExprTree.visit(left, this);
-        String b = ExprTree.visit(right, this);
+        String a = emit(left);
+        String b = emit(right);
         switch (op) {
             case "+": return checked(a + " + " + b, "PARSL_E_SUM");
             case "-": return checked(a + " - " + b, "PARSL_E_DIFF");
@@ -141,11 +190,11 @@ final class CExpressions implements ExprTree.Visitor<String> {
 
     @Override
     public String logic(boolean and, Node left, Node right) {
-        String a = ExprTree.visit(left, this);
+        String a = emit(left);
         String t = temp();
         line("if (" + a + (and ? " != 0" : " == 0") + ") {");
         depth++;
-        String b = ExprTree.visit(right, this);
+        String b = emit(right);
         line(t + " = " + b + " != 0 ? 1.0 : 0.0;");
         depth--;
         line("} else {");
@@ -156,15 +205,15 @@ final class CExpressions implements ExprTree.Visitor<String> {
 
     @Override
     public String conditional(Node cond, Node then, Node otherwise) {
-        String c = ExprTree.visit(cond, this);
+        String c = emit(cond);
         String t = temp();
         line("if (" + c + " != 0) {");
         depth++;
-        line(t + " = " + ExprTree.visit(then, this) + ";");
+        line(t + " = " + emit(then) + ";");
         depth--;
         line("} else {");
         depth++;
-        line(t + " = " + ExprTree.visit(otherwise, this) + ";");
+        line(t + " = " + emit(otherwise) + ";");
         depth--;
         line("}");
         return t;
@@ -172,7 +221,7 @@ final class CExpressions implements ExprTree.Visitor<String> {
 
     @Override
     public String function1(String name, Node arg) {
-        String x = ExprTree.visit(arg, this);
+        String x = emit(arg);
         String t = set(c1(name, x));
         line("if (!isfinite(" + t + ")) parsl_raise(r, PARSL_E_FUNC, " + x + ", 0, " + FUNCTIONS.indexOf(name) + ");");
         return t;
@@ -197,8 +246,8 @@ final class CExpressions implements ExprTree.Visitor<String> {
 
     @Override
     public String function2(String name, Node a, Node b) {
-        String x = ExprTree.visit(a, this);
-        String y = ExprTree.visit(b, this);
+        String x = emit(a);
+        String y = emit(b);
         switch (name) {
             case "atan2": return set("atan2(" + x + ", " + y + ")");
             case "mod":
@@ -214,7 +263,7 @@ final class CExpressions implements ExprTree.Visitor<String> {
     public String sum(List<Node> args) {
         String s = set("0.0");
         for (Node n : args) {
-            String v = ExprTree.visit(n, this);
+            String v = emit(n);
             line(s + " += " + v + ";");
         }
         line("if (!isfinite(" + s + ")) parsl_raise(r, PARSL_E_SUMF, 0, 0, 0);");

@@ -19,15 +19,21 @@ public final class CRuntime {
             List.of("parsl_rt.h", "parsl_rt.c", "parsl_inst.h", "parsl_inst.c", "parsl_io.c");
     /** The host trace program's main. */
     public static final String HOST_MAIN = "parsl_host.c";
-    /** The Arduino board code the sketch appends. */
-    public static final String SKETCH = "sketch.inc";
 
     private CRuntime() {
     }
 
     /** The content of resource {@code c/NAME}. */
     public static String read(String name) {
-        try (InputStream in = CRuntime.class.getResourceAsStream("c/" + name)) {
+        return read(CRuntime.class, "c/" + name);
+    }
+
+    /**
+     * The C text of the resource {@code name} beside class {@code owner} (also the board code
+     * kept beside the Arduino sketch's writer in parpe-serial).
+     */
+    public static String read(Class<?> owner, String name) {
+        try (InputStream in = owner.getResourceAsStream(name)) {
             if (in == null) {
                 throw new IllegalStateException("the runtime file " + name + " is missing from the PARPE jar");
             }

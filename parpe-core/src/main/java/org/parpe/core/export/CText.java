@@ -2,7 +2,7 @@ package org.parpe.core.export;
 
 import java.nio.charset.StandardCharsets;
 
-/** Pieces of C text shared by the generators (and by parpe-cli's sketch writer). */
+/** Pieces of C text shared by the generators (and by parpe-serial's sketch writer). */
 public final class CText {
     /** The longest string literal a C99 compiler must accept (C99 5.2.4.1; gcc -pedantic warns above it). */
     static final int MAX_LITERAL = 4095;
@@ -22,6 +22,22 @@ public final class CText {
             #define PARSL_NO_TABLE __attribute__((optimize("no-tree-switch-conversion")))
             #else
             #define PARSL_NO_TABLE
+            #endif
+
+            """;
+
+    /**
+     * The values of sub-expressions kept per module ({@link ModuleConstants}): a format of the
+     * count of values and of positions (the instances' groups), twice. Not on AVR boards, whose
+     * RAM (2 KB) they would take, and where the code is then what it was without them.
+     */
+    static final String KEEP = """
+            #if !defined(__AVR__)
+            /* Sub-expressions of angles that are the same for a module at every tick: computed at its
+               first tick, then read, by instance and position (r->group_off + r->index). */
+            #define PARSL_KEEP 1
+            static double parsl_kept[%d][%d];
+            static uint8_t parsl_kept_ok[%d][%d];
             #endif
 
             """;

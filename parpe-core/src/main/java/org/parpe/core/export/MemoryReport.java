@@ -11,7 +11,7 @@ import java.util.List;
  * @param board      the board
  * @param stateBytes RAM of the runtime state
  * @param boardBytes RAM of the board code around it (the board's own share plus the driver's buffers)
- * @param ramBytes   RAM in all
+ * @param ramBytes   RAM in all, with the values kept per module where they are (64-bit doubles; {@link ModuleConstants})
  * @param flashBytes flash: runtime, expressions and tables
  */
 public record MemoryReport(Board board, long stateBytes, long boardBytes, long ramBytes, long flashBytes) {
@@ -33,7 +33,9 @@ public record MemoryReport(Board board, long stateBytes, long boardBytes, long r
         long flash = board.runtimeFlash() + p.tableBytes(board.doubleBytes()) + (FLASH_PER_4_STATEMENTS * codeLines + 3) / 4
                 + FLASH_PER_CONTROL * p.controls() + driver.flash();
         long boardRam = board.boardRam() + driver.ram();
-        return new MemoryReport(board, state, boardRam, state + boardRam, flash);
+        // kept values (a double and a flag each) are not compiled for AVR boards (32-bit double)
+        long kept = board.doubleBytes() == 8 ? 9 * p.keptValues() : 0;
+        return new MemoryReport(board, state, boardRam, state + boardRam + kept, flash);
     }
 
     /** {@code sizeof(parsl_rt)}: the fields of {@code parsl_rt.h} in order, laid out as a C compiler does. */
@@ -111,7 +113,8 @@ public record MemoryReport(Board board, long stateBytes, long boardBytes, long r
             return "memory (host): " + stateBytes + " bytes of state, " + flashBytes + " bytes of code and tables (estimate)";
         }
         return "memory (" + board.word() + ", estimate): RAM " + ramBytes + " of " + board.ram() + " bytes (state "
-                + stateBytes + ", board code " + boardBytes + "), flash " + flashBytes + " of " + board.flash()
+                + stateBytes + ", board code " + boardBytes + (ramBytes > stateBytes + boardBytes ? ", kept values "
+                + (ramBytes - stateBytes - boardBytes) : "") + "), flash " + flashBytes + " of " + board.flash()
                 + " bytes";
     }
 }

@@ -153,12 +153,12 @@ public final class ExprCompiler {
             case "atan2": case "mod": case "min": case "max":
                 return new Nodes.Func2(Functions.F2.valueOf(name.toUpperCase(Locale.ROOT)), args[0], args[1]);
             default:
-                return new Nodes.Func1(Functions.F1.valueOf(name.toUpperCase(Locale.ROOT)), args[0]);
+                return Nodes.Func1.of(Functions.F1.valueOf(name.toUpperCase(Locale.ROOT)), args[0]);
         }
     }
 
     /** Replaces a node whose inputs are all constant by its value, unless evaluating fails. */
-    private static Node fold(Node n) {
+    static Node fold(Node n) {
         if (n instanceof Nodes.Rand || !Fold.childrenConstant(n)) {
             return n;
         }

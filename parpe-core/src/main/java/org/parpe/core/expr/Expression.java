@@ -46,6 +46,19 @@ public final class Expression {
         return root.eval(ctx);
     }
 
+    /**
+     * This expression as seen by the module at position {@code index} of a group of
+     * {@code count} modules whose ID is {@code id}: those three variables replaced by their
+     * values and the parts that then depend on nothing else computed, with the same text and
+     * place (for messages); this expression itself when it reads none of them. The result
+     * evaluates to the same value as this expression with the context entered for that module,
+     * bit for bit, and fails where and as this one does.
+     */
+    public Expression bind(int index, int count, int id) {
+        Node bound = ModuleBinding.bind(root, index, count, id);
+        return bound == root ? this : new Expression(text, pos, bound, perModule);
+    }
+
     /** Whether the value does not depend on anything that changes during a run. */
     public boolean isConstant() {
         return root instanceof Nodes.Const;

@@ -140,7 +140,7 @@ final class NameResolver {
             int which = Vocabulary.LOGICAL_VARIABLES.indexOf(name);
             perModule |= which == Nodes.Var.INDEX || which == Nodes.Var.ID || which == Nodes.Var.PHASE
                     || which == Nodes.Var.CYCLE;
-            return new Nodes.Var(which);
+            return Nodes.Var.of(which);
         }
         if (scope.controls().containsKey(name)) {
             return new Nodes.ControlRef(scope.controls().get(name));

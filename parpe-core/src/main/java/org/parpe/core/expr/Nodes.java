@@ -31,8 +31,8 @@ final class Nodes {
         }
     }
 
-    /** A logical variable or other context field. */
-    static final class Var extends Node {
+    /** A logical variable or other context field: one subclass per variable ({@link #of}), so no switch per evaluation. */
+    abstract static class Var extends Node {
         static final int TIME = 0, BTIME = 1, INDEX = 2, COUNT = 3, ID = 4, PHASE = 5, CYCLE = 6;
         final int which;
 
@@ -40,17 +40,9 @@ final class Nodes {
             this.which = which;
         }
 
-        @Override
-        public double eval(EvalContext c) {
-            switch (which) {
-                case TIME: return c.time;
-                case BTIME: return c.btime;
-                case INDEX: return c.index;
-                case COUNT: return c.count;
-                case ID: return c.id;
-                case PHASE: return c.phase;
-                default: return c.cycle;
-            }
+        /** The node reading variable {@code which}. */
+        static Var of(int which) {
+            return Arith.variable(which);
         }
     }
 
@@ -161,6 +153,10 @@ final class Nodes {
          * the constant per call (half the calls of {@code 2*pi*$phase}); the same arithmetic.
          */
         static Binary of(int op, Node left, Node right) {
+            Binary special = Arith.binary(op, left, right);
+            if (special != null) {
+                return special;
+            }
             if (left instanceof Const && !(right instanceof Const)) {
                 return new ConstLeft(op, left, right);
             }
@@ -178,14 +174,10 @@ final class Nodes {
 
         static double apply(int op, double a, double b) {
             switch (op) {
-                case ADD: return finite(a + b, "a sum");
-                case SUB: return finite(a - b, "a difference");
-                case MUL: return finite(a * b, "a product");
-                case DIV:
-                    if (b == 0) {
-                        throw new EvalException("division by zero");
-                    }
-                    return finite(a / b, "a quotient");
+                case ADD: return add(a, b);
+                case SUB: return sub(a, b);
+                case MUL: return mul(a, b);
+                case DIV: return div(a, b);
                 case MOD:
                     if (b == 0) {
                         throw new EvalException("remainder of a division by zero");
@@ -205,6 +197,25 @@ final class Nodes {
                 case EQ: return a == b ? 1 : 0;
                 default: return a != b ? 1 : 0;
             }
+        }
+
+        static double add(double a, double b) {
+            return finite(a + b, "a sum");
+        }
+
+        static double sub(double a, double b) {
+            return finite(a - b, "a difference");
+        }
+
+        static double mul(double a, double b) {
+            return finite(a * b, "a product");
+        }
+
+        static double div(double a, double b) {
+            if (b == 0) {
+                throw new EvalException("division by zero");
+            }
+            return finite(a / b, "a quotient");
         }
     }
 
@@ -288,8 +299,8 @@ final class Nodes {
         }
     }
 
-    /** One-argument functions. */
-    static final class Func1 extends Node {
+    /** One-argument functions ({@link #of} gives a specialised node for the commonest). */
+    static class Func1 extends Node {
         final Functions.F1 f;
         final Node arg;
 
@@ -298,10 +309,20 @@ final class Nodes {
             this.arg = arg;
         }
 
+        /** The node for {@code f(arg)}. */
+        static Func1 of(Functions.F1 f, Node arg) {
+            Func1 special = Arith.function(f, arg);
+            return special != null ? special : new Func1(f, arg);
+        }
+
         @Override
         public double eval(EvalContext c) {
             double x = arg.eval(c);
-            double v = f.apply(x);
+            return checked(f.apply(x), x);
+        }
+
+        /** {@code v}, the value of the function at {@code x}, unless it is not finite. */
+        final double checked(double v, double x) {
             if (Double.isFinite(v)) {
                 return v;
             }

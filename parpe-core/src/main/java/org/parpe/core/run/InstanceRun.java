@@ -110,7 +110,7 @@ final class InstanceRun {
                 stateActs[2 * i + plate] = PlateSink.RELEASE;
             }
             acts |= s.hasPlateActions();
-            angles[i] = s.angles().toArray(new Expression[0]);
+            angles[i] = bindTargets(s.angles().toArray(new Expression[0]));
             angles0[i] = angles[i][0];
             interp[i] = s.interp();
             stateNames[i] = s.name();
@@ -139,6 +139,24 @@ final class InstanceRun {
         tickProgress = new double[ns];
         tickU = new double[ns];
         cumBuf = new double[ns];
+    }
+
+    /**
+     * The targets of a state, bound to each module of the group ({@link Expression#bind}) when
+     * they read {@code $index}, {@code $count} or {@code $id}, so that what depends only on the
+     * module is computed once per run instead of per tick: one expression for every module, or
+     * one per module. {@code bindTargets} runs before the modules' arrays exist; it reads only
+     * {@link #ids} and {@link #n}.
+     */
+    private Expression[] bindTargets(Expression[] written) {
+        Expression[] bound = new Expression[written.length == 1 ? n : written.length];
+        boolean changed = false;
+        for (int k = 0; k < bound.length; k++) {
+            Expression e = written[written.length == 1 ? 0 : k];
+            bound[k] = k < n ? e.bind(k, n, ids[k]) : e;
+            changed |= bound[k] != e;
+        }
+        return changed ? bound : written;
     }
 
     /** Whether every module has finished its cycles. */

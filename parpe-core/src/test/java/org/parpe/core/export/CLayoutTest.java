@@ -33,7 +33,6 @@ class CLayoutTest {
     private static List<String> runtimeSources() {
         List<String> all = new ArrayList<>(CRuntime.RUNTIME);
         all.add(CRuntime.HOST_MAIN);
-        all.add(CRuntime.SKETCH);
         return all.stream().map(CRuntime::read).toList();
     }
 

@@ -163,4 +163,37 @@ class FlatXmlFileTest {
         DiagnosticList d = new DiagnosticList();
         assertTrue(read("<things/>\n<!-- a note -->\n<?pi x?>\n", d).ok(), lines(d).toString());
     }
+
+    /**
+     * Read from text (a builder's), a file gives the same places and messages as from disk, and
+     * every element's place carries its span: the element's characters and each value's, with
+     * Windows line ends too.
+     */
+    @Test
+    void textGivesEveryElementItsSpanAndTheMessagesOfTheFile() throws Exception {
+        for (String nl : List.of("\n", "\r\n")) {
+            String text = ("<?xml version=\"1.0\"?>\n<!-- c -->\n<things size='3'>\n  <thing a=\"&lt;1\" b = 'x' />\n"
+                    + "  <other></other>\n  <bad x=\"1\"><in/></bad>\n</things>\n").replace("\n", nl);
+            DiagnosticList fromFile = new DiagnosticList();
+            read(text, fromFile);
+            DiagnosticList fromText = new DiagnosticList();
+            FlatXmlFile f = FlatXmlFile.read(dir.resolve("f.xml").toString(), text, "thing list", "things",
+                    "a <things> element with <thing> elements", fromText);
+            assertEquals(lines(fromFile), lines(fromText));
+            assertEquals(1, fromText.all().size(), lines(fromText).toString());
+            var root = f.root().span();
+            assertEquals(text.indexOf("<things"), root.start());
+            assertEquals(text.indexOf("</things>") + 9, root.end());
+            assertEquals("3", root.value("size").of(text));
+            var thing = f.children().get(0).at();
+            assertEquals(text.indexOf("<thing "), thing.span().start());
+            assertEquals(thing.span().start(), thing.offset());
+            assertEquals("<thing a=\"&lt;1\" b = 'x' />", text.substring(thing.span().start(), thing.span().end()));
+            assertEquals("&lt;1", thing.span().value("a").of(text));
+            assertEquals("x", thing.span().value("b").of(text));
+            var other = f.children().get(1).at().span();
+            assertEquals("<other></other>", text.substring(other.start(), other.end()));
+            assertEquals(4, f.children().get(0).at().line());
+        }
+    }
 }

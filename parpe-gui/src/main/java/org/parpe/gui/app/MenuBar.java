@@ -2,6 +2,7 @@ package org.parpe.gui.app;
 
 import org.parpe.gui.editor.FindReplaceDialog;
 import org.parpe.gui.files.Examples;
+import org.parpe.gui.files.ExportProgramDialog;
 import org.parpe.gui.files.ExportRobotDialog;
 import org.parpe.gui.files.FileActions;
 import org.parpe.gui.hardware.HardwareDialog;
@@ -35,6 +36,7 @@ final class MenuBar {
     private SweepDialog sweep;
     private ClassWindow classWindow;
     private ExportRobotDialog exportRobot;
+    private ExportProgramDialog exportProgram;
 
     MenuBar(IdeWindow ide) {
         this.ide = ide;
@@ -81,6 +83,7 @@ final class MenuBar {
         item(m, "Save &As\u2026\tCtrl+Shift+S", SWT.MOD1 + SWT.SHIFT + 'S', f::saveAs);
         new MenuItem(m, SWT.SEPARATOR);
         item(m, "Export Ro&bot\u2026", 0, this::openExportRobot);
+        item(m, "Export &Program as C/Arduino\u2026", 0, this::openExportProgram);
         new MenuItem(m, SWT.SEPARATOR);
         item(m, "E&xit\tCtrl+Q", SWT.MOD1 + 'Q', () -> ide.shell().close());
     }
@@ -93,6 +96,16 @@ final class MenuBar {
             exportRobot.shell().setActive();
         }
         return exportRobot;
+    }
+
+    /** File → Export Program as C/Arduino…: one window per IDE window, on the open script. */
+    ExportProgramDialog openExportProgram() {
+        if (exportProgram == null || exportProgram.shell().isDisposed()) {
+            exportProgram = ExportProgramDialog.open(ide.shell(), ide::program, ide::showRunDiagnostics);
+        } else {
+            exportProgram.shell().setActive();
+        }
+        return exportProgram;
     }
 
     private void fillRecent(Menu recent) {

@@ -6,20 +6,12 @@ import java.util.List;
 import java.util.Locale;
 import java.util.function.Consumer;
 import java.util.function.Supplier;
-import org.eclipse.swt.SWT;
-import org.eclipse.swt.layout.GridData;
-import org.eclipse.swt.layout.GridLayout;
-import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Combo;
-import org.eclipse.swt.widgets.DirectoryDialog;
 import org.eclipse.swt.widgets.Display;
-import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.Shell;
-import org.eclipse.swt.widgets.Text;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.model.Program;
-import org.parpe.gui.panels.FileDialogs;
 import org.parpe.gui.panels.RobotChoice;
 import org.parpe.sim.SimTarget;
 import org.parpe.sim.bridge.Export;
@@ -34,12 +26,9 @@ import org.parpe.sim.bridge.Export;
 public final class ExportRobotDialog {
     private static final String[] LABELS = {"MJCF (MuJoCo)", "URDF (ROS tools)", "SDF (Gazebo)"};
 
-    private final Shell shell;
+    private final ExportWindow window;
     private final Combo target;
     private final RobotChoice robot;
-    private final Text folder;
-    private final Button export;
-    private final Text message;
     private final Supplier<Program> program;
     private final Consumer<List<Diagnostic>> problems;
     private volatile boolean busy;
@@ -47,33 +36,12 @@ public final class ExportRobotDialog {
     private ExportRobotDialog(Shell parent, Supplier<Program> program, String currentRobot, Consumer<List<Diagnostic>> problems) {
         this.program = program;
         this.problems = problems;
-        shell = new Shell(parent, SWT.DIALOG_TRIM | SWT.RESIZE | SWT.MODELESS);
-        shell.setText("Export Robot");
-        shell.setLayout(new GridLayout(3, false));
-        new Label(shell, SWT.NONE).setText("Format:");
-        target = new Combo(shell, SWT.READ_ONLY);
-        for (String l : LABELS) {
-            target.add(l);
-        }
-        target.select(0);
-        target.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false, 2, 1));
-        new Label(shell, SWT.NONE).setText("Robot:");
-        robot = new RobotChoice(shell, currentRobot);
-        robot.control().setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false, 2, 1));
-        new Label(shell, SWT.NONE).setText("Folder:");
-        folder = new Text(shell, SWT.BORDER);
-        folder.setText(FileDialogs.start().resolve("robot-export").toString());
-        GridData fd = new GridData(SWT.FILL, SWT.CENTER, true, false);
-        fd.widthHint = 420;
-        folder.setLayoutData(fd);
-        button("Browse\u2026", this::askFolder);
-        message = new Text(shell, SWT.MULTI | SWT.READ_ONLY | SWT.WRAP | SWT.V_SCROLL | SWT.BORDER);
-        GridData md = new GridData(SWT.FILL, SWT.FILL, true, true, 3, 1);
-        md.heightHint = 90;
-        message.setLayoutData(md);
-        new Label(shell, SWT.NONE).setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false, 2, 1));
-        export = button("Export", this::export);
-        shell.setDefaultButton(export);
+        window = new ExportWindow(parent, "Export Robot");
+        target = window.combo("Format:", LABELS);
+        window.label("Robot:");
+        robot = new RobotChoice(window.shell(), currentRobot);
+        robot.control().setLayoutData(ExportWindow.span());
+        window.finish("robot-export", "The folder the robot's file is written into", 90, this::export);
     }
 
     /**
@@ -83,16 +51,12 @@ public final class ExportRobotDialog {
     public static ExportRobotDialog open(Shell parent, Supplier<Program> program, String currentRobot,
                                          Consumer<List<Diagnostic>> problems) {
         ExportRobotDialog d = new ExportRobotDialog(parent, program, currentRobot, problems);
-        d.shell.pack();
-        org.eclipse.swt.graphics.Rectangle over = parent.getBounds();
-        org.eclipse.swt.graphics.Point size = d.shell.getSize();
-        d.shell.setLocation(over.x + Math.max(0, (over.width - size.x) / 2), over.y + Math.max(0, (over.height - size.y) / 3));
-        d.shell.open();
+        d.window.open(parent);
         return d;
     }
 
     public Shell shell() {
-        return shell;
+        return window.shell();
     }
 
     /** Chooses the format by its {@code --target} name: mjcf, urdf or sdf (tests, automation). */
@@ -101,7 +65,7 @@ public final class ExportRobotDialog {
     }
 
     public void setFolder(Path dir) {
-        folder.setText(dir.toString());
+        window.setFolder(dir);
     }
 
     /** The robot choice (tests). */
@@ -111,30 +75,12 @@ public final class ExportRobotDialog {
 
     /** What the last export wrote or why it refused ("" before one). */
     public String message() {
-        return message.getText();
+        return window.message();
     }
 
     /** Whether an export is being written. */
     public boolean busy() {
         return busy;
-    }
-
-    private Button button(String text, Runnable action) {
-        Button b = new Button(shell, SWT.PUSH);
-        b.setText(text);
-        b.addListener(SWT.Selection, e -> action.run());
-        return b;
-    }
-
-    private void askFolder() {
-        DirectoryDialog d = new DirectoryDialog(shell);
-        d.setText("Export Into");
-        d.setMessage("The folder the robot's file is written into");
-        d.setFilterPath(FileDialogs.start().toString());
-        String chosen = d.open();
-        if (chosen != null) {
-            folder.setText(chosen);
-        }
     }
 
     /** Starts the export of the chosen robot into the chosen folder on a thread of its own. */
@@ -146,17 +92,17 @@ public final class ExportRobotDialog {
         String spec = robot.robot();
         Program program = this.program.get();
         if (SimTarget.AUTO.equals(spec) && program == null) {
-            message.setText("'auto' picks the robot from the script, and there is no script without errors open:"
+            window.say("'auto' picks the robot from the script, and there is no script without errors open:"
                     + " choose a robot (a generator or a configuration file)");
             return;
         }
         String chosen = SimTarget.AUTO.equals(spec) ? SimTarget.autoSpec(program) : spec;
         int[] ids = program == null ? new int[0] : program.moduleIds();
-        Path dir = Path.of(folder.getText().trim()).toAbsolutePath();
+        Path dir = window.folder();
         busy = true;
-        export.setEnabled(false);
-        message.setText("Exporting " + chosen + " as " + format.toUpperCase(Locale.ROOT) + "\u2026");
-        Display display = shell.getDisplay();
+        window.exporting(true);
+        window.say("Exporting " + chosen + " as " + format.toUpperCase(Locale.ROOT) + "\u2026");
+        Display display = window.shell().getDisplay();
         Thread t = new Thread(() -> {
             DiagnosticList diags = new DiagnosticList();
             String text = write(format, chosen, ids, dir, diags);
@@ -188,11 +134,11 @@ public final class ExportRobotDialog {
 
     private void done(String text, List<Diagnostic> diagnostics) {
         busy = false;
-        if (shell.isDisposed()) {
+        if (window.shell().isDisposed()) {
             return;
         }
-        export.setEnabled(true);
-        message.setText(text);
+        window.exporting(false);
+        window.say(text);
         if (!diagnostics.isEmpty()) {
             problems.accept(diagnostics);
         }

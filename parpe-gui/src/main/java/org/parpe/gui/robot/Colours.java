@@ -49,7 +49,7 @@ final class Colours {
             }
             if (showFaults) {
                 for (Diagnostic g : d.problems()) {
-                    parts.stream().filter(p -> p.pos().line() == g.pos().line()).forEach(p -> paint.put(p.name(), Targets.FAULT));
+                    d.partAt(g.pos()).ifPresent(name -> paint.put(name, Targets.FAULT)); // the part the problem is about
                 }
             }
         }

@@ -4,7 +4,8 @@
  * the ODE4j jar (this module's classes come first on the class path and in the shaded jar). The one
  * change: the solver's work arrays and call contexts come from a per-thread {@code Work} kept from
  * step to step instead of new objects in every step (issue 36; docs/decisions.md, "The simulator's
- * tick allocates nothing"). The arithmetic is untouched.
+ * tick allocates nothing"), and the single-threaded LCP sweep runs its rows in one loop
+ * ({@code dxQuickStepIsland_Stage4LCP_IterationSteps}). The arithmetic is untouched.
  */
 /*************************************************************************
  *                                                                       *
@@ -2331,9 +2332,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
     {
 	    dxQuickStepperLocalContext localContext = stage4CallContext.m_localContext;
 	    int m = localContext.m_m;
-        for (int i = 0; i != m; ++i) {
-            dxQuickStepIsland_Stage4LCP_IterationStep(stage4CallContext, i);
-        }
+        dxQuickStepIsland_Stage4LCP_IterationSteps(stage4CallContext, 0, m);
     }
 
 	//***************************************************************************
@@ -2351,24 +2350,38 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
     private static
     void dxQuickStepIsland_Stage4LCP_IterationStep(dxQuickStepperStage4CallContext stage4CallContext, int i)
     {
-    	
+        dxQuickStepIsland_Stage4LCP_IterationSteps(stage4CallContext, i, i + 1);
+    }
+
+    /**
+     * PARPE (issue 36): the rows {@code from} (inclusive) to {@code to} of the order, one after
+     * the other, as {@code dxQuickStepIsland_Stage4LCP_IterationStep} did one call per row. The
+     * body is too large for the JIT to inline into the loop of rows, so each row paid a call and
+     * read its seven arrays again; with the loop here they are read once. Same rows, same order,
+     * same arithmetic.
+     */
+    private static
+    void dxQuickStepIsland_Stage4LCP_IterationSteps(dxQuickStepperStage4CallContext stage4CallContext, int from, int to)
+    {
     	dxQuickStepperLocalContext localContext = stage4CallContext.m_localContext;
         IndexError[ ]order = stage4CallContext.m_order;
+        double[] lambda = stage4CallContext.m_lambda;
+		double[] J = localContext.m_J;
+        double[] fc = stage4CallContext.m_cforce;
+        int[] jb = localContext.m_jb;
+        int[] findex = localContext.m_findex;
+	    double[] iMJ = stage4CallContext.m_iMJ;
+      for (int i = from; i != to; ++i) {
         int index = order[i].index;
 
         double delta = 0;
         
-        double[] lambda = stage4CallContext.m_lambda;
 		double old_lambda = lambda[index];
 
-		double[] J = localContext.m_J;
         int J_ptr = index * JME__MAX;
 
         delta = J[J_ptr + JME_RHS] - old_lambda * J[J_ptr + JME_CFM];
 
-        double[] fc = stage4CallContext.m_cforce;
-
-        int[] jb = localContext.m_jb;
         int b1 = jb[index * 2];
         int b2 = jb[index * 2 + 1];
         
@@ -2396,7 +2409,6 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 	    // once per iteration per constraint row.
 	    // the constraints are ordered so that all lambda[] values needed have
 	    // already been computed.
-        int[] findex = localContext.m_findex;
 	    if (findex[index] != -1) {
 	        hi_act = dFabs (J[J_ptr + JME_HI] * lambda[findex[index]]);
 	        lo_act = -hi_act;
@@ -2423,7 +2435,6 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 		//@@@ a trick that may or may not help
 		//dReal ramp = (1-((dReal)(iteration+1)/(dReal)num_iterations));
 		//delta *= ramp;
-	    double[] iMJ = stage4CallContext.m_iMJ;
 	    final int iMJ_ptr = index * IMJ__MAX;
 		// update fc.
 		// @@@ potential optimization: SIMD for this and the b2 >= 0 case
@@ -2444,6 +2455,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 			fc[fc_ptr2 + CFE_AY] += delta * iMJ[iMJ_ptr + 10];
 			fc[fc_ptr2 + CFE_AZ] += delta * iMJ[iMJ_ptr + 11];
 		}
+      }
     }  
 
 	private static boolean IsStage4bJointInfosIterationRequired(dxQuickStepperLocalContext localContext) {

@@ -24,22 +24,10 @@ final class ConfigText {
     static String of(RobotConfig c, String spec) {
         List<String> lines = new ArrayList<>();
         for (PartSpec p : c.parts()) {
-            ElementWriter e = ElementWriter.tag("part").attr("name", p.name()).attr("type", p.type().xmlName());
-            if (p.isSegment()) {
-                e.attr("id", String.valueOf(p.moduleId()));
-                attr(e, "angle", p.angle(), 0);
-                if (p.limp()) {
-                    e.attr("limp", "true");
-                }
-            }
-            if (p.type() == PartType.HUB && p.plates() != PartType.HUB.defaultPlates()) {
-                e.attr("plates", String.valueOf(p.plates()));
-            }
-            lines.add(e.empty());
+            lines.add(part(p));
         }
         for (Connection k : c.connections()) {
-            lines.add(DraftEdits.connectElement(k.from() + "." + k.fromPlate(), k.to() + "." + k.toPlate(),
-                    k.quarterTurns()));
+            lines.add(connect(k.from() + "." + k.fromPlate(), k.to() + "." + k.toPlate(), k.quarterTurns()));
         }
         for (RootPose r : c.roots()) {
             ElementWriter e = ElementWriter.tag("root").attr("part", r.part());
@@ -53,6 +41,31 @@ final class ConfigText {
         }
         return "<?xml version=\"1.0\" ?>\n<!-- Made editable from the generator " + ElementWriter.text(spec)
                 .replace("--", "- -") + ". -->\n" + ElementWriter.tag("robot-config").lines("", lines) + "\n";
+    }
+
+    /** A {@code <part>}: name and type, a segment's id, angle and limp, a hub's plates, each left out at its default. */
+    static String part(PartSpec p) {
+        ElementWriter e = ElementWriter.tag("part").attr("name", p.name()).attr("type", p.type().xmlName());
+        if (p.isSegment()) {
+            e.attr("id", String.valueOf(p.moduleId()));
+            attr(e, "angle", p.angle(), 0);
+            if (p.limp()) {
+                e.attr("limp", "true");
+            }
+        }
+        if (p.type() == PartType.HUB && p.plates() != PartType.HUB.defaultPlates()) {
+            e.attr("plates", String.valueOf(p.plates()));
+        }
+        return e.empty();
+    }
+
+    /** A {@code <connect>} of plates {@code from} and {@code to} ("part.plate"), the orientation left out at 0. */
+    static String connect(String from, String to, int quarterTurns) {
+        ElementWriter e = ElementWriter.tag("connect").attr("from", from).attr("to", to);
+        if (quarterTurns != 0) {
+            e.attr("orientation", String.valueOf(quarterTurns * 90));
+        }
+        return e.empty();
     }
 
     private static void attr(ElementWriter e, String name, double value, double fallback) {

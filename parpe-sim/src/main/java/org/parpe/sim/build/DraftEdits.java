@@ -22,10 +22,8 @@ import org.parpe.sim.config.RootPose;
 import org.parpe.sim.internal.Assembly;
 
 /**
- * The edits of a {@link RobotDraft}, each made of the edit layer's span edits on the draft's
- * text: a new {@code <part>} after the last {@code <part>}, a new {@code <connect>} after the
- * last {@code <connect>}, each with that element's indentation; an attribute set or, back at
- * its default, left out; elements removed with their lines.
+ * The edits of a {@link RobotDraft}: what each means for the configuration, and when it is
+ * refused and why; {@link DraftPlaces} writes them into the text through the edit layer.
  */
 final class DraftEdits {
     private static final String ROOT = "robot-config";
@@ -34,11 +32,13 @@ final class DraftEdits {
     private final RobotDraft draft;
     private final String text;
     private final RobotConfig config;
+    private final DraftPlaces places;
 
     DraftEdits(RobotDraft draft) {
         this.draft = draft;
         this.text = draft.text();
         this.config = draft.config();
+        this.places = new DraftPlaces(draft);
     }
 
     BuildEdit first(PartType type, int hubPlates) {
@@ -47,7 +47,7 @@ final class DraftEdits {
             return BuildEdit.refuse(refused);
         }
         String name = freeName(type);
-        String part = partElement(name, type, 0, hubPlates);
+        String part = ConfigText.part(newPart(name, type, 0, hubPlates));
         String what = "Start with " + type.xmlName() + " " + name;
         if (draft.read().root() == null) {
             if (!XmlReader.noElement(text)) {
@@ -87,9 +87,9 @@ final class DraftEdits {
             return BuildEdit.refuse(refused);
         }
         String name = freeName(type);
-        String newPart = partElement(name, type, freeId(), hubPlates);
-        String connect = connectElement(part + "." + plate, name + "." + newPlate, quarterTurns);
-        return BuildEdit.of(insert(newPart, connect), "Add " + type.xmlName() + " " + name + " on " + part + "." + plate
+        String newPart = ConfigText.part(newPart(name, type, freeId(), hubPlates));
+        String connect = ConfigText.connect(part + "." + plate, name + "." + newPlate, quarterTurns);
+        return BuildEdit.of(places.insert(newPart, connect), "Add " + type.xmlName() + " " + name + " on " + part + "." + plate
                 + (quarterTurns == 0 ? "" : " turned " + quarterTurns * 90 + "°"));
     }
 
@@ -99,7 +99,7 @@ final class DraftEdits {
         if (refused == null && i < 0) {
             refused = noPart(part);
         }
-        List<Integer> gone = i < 0 ? List.of() : draft.tree().subtree(i);
+        List<Integer> gone = i < 0 ? List.of() : draft.tree().hangingOn(i);
         RootPose root = i < 0 ? null : draft.tree().rootOf(i);
         if (refused == null && root != null && root.part().equals(part) && gone.size() > 1) {
             refused = "'" + part + "' is the root and " + (gone.size() - 1) + " part" + (gone.size() == 2 ? "" : "s")
@@ -113,16 +113,16 @@ final class DraftEdits {
         for (int k : gone) {
             PartSpec p = config.parts().get(k);
             names.add(p.name());
-            out.addAll(removed(p.pos().span()));
+            out.addAll(places.removed(p.pos().span()));
         }
         for (Connection c : config.connections()) {
             if (names.contains(c.from()) || names.contains(c.to())) {
-                out.addAll(removed(c.pos().span()));
+                out.addAll(places.removed(c.pos().span()));
             }
         }
         for (RootPose r : config.roots()) {
             if (names.contains(r.part()) && r.pos().span() != null) {
-                out.addAll(removed(r.pos().span()));
+                out.addAll(places.removed(r.pos().span()));
             }
         }
         int more = gone.size() - 1;
@@ -148,7 +148,7 @@ final class DraftEdits {
         if (refused != null) {
             return BuildEdit.refuse(refused);
         }
-        return BuildEdit.of(setOrDrop(c.pos(), "orientation", String.valueOf(quarterTurns * 90), quarterTurns == 0),
+        return BuildEdit.of(places.setOrDrop(c.pos(), "orientation", String.valueOf(quarterTurns * 90), quarterTurns == 0),
                 "Turn " + part + " to " + quarterTurns * 90 + "°");
     }
 
@@ -184,7 +184,7 @@ final class DraftEdits {
         if (refused != null) {
             return BuildEdit.refuse(refused);
         }
-        return BuildEdit.of(setOrDrop(p.pos(), "angle", ConfigText.number(degrees), degrees == 0),
+        return BuildEdit.of(places.setOrDrop(p.pos(), "angle", ConfigText.number(degrees), degrees == 0),
                 "Set the angle of " + part + " to " + ConfigText.number(degrees) + "°");
     }
 
@@ -197,7 +197,7 @@ final class DraftEdits {
         if (refused != null) {
             return BuildEdit.refuse(refused);
         }
-        return BuildEdit.of(setOrDrop(p.pos(), "limp", "true", !limp), "Make " + part + (limp ? " limp" : " stiff"));
+        return BuildEdit.of(places.setOrDrop(p.pos(), "limp", "true", !limp), "Make " + part + (limp ? " limp" : " stiff"));
     }
 
     BuildEdit makeRoot(String part) {
@@ -220,7 +220,7 @@ final class DraftEdits {
         if (root.pos().span() != null) {
             return BuildEdit.of(ScriptEdits.setAttribute(text, root.pos(), "part", part), what);
         }
-        return BuildEdit.of(appendLast(ElementWriter.tag("root").attr("part", part).empty()), what);
+        return BuildEdit.of(places.appendLast(ElementWriter.tag("root").attr("part", part).empty()), what);
     }
 
     BuildEdit setRootPose(String attribute, double value) {
@@ -251,9 +251,9 @@ final class DraftEdits {
         boolean isDefault = value == (attribute.equals("height") ? RootPose.RESTING : 0);
         String what = "Set the root's " + attribute + " to " + ConfigText.number(value);
         if (root.pos().span() != null) {
-            return BuildEdit.of(setOrDrop(root.pos(), attribute, ConfigText.number(value), isDefault), what);
+            return BuildEdit.of(places.setOrDrop(root.pos(), attribute, ConfigText.number(value), isDefault), what);
         }
-        return BuildEdit.of(appendLast(ElementWriter.tag("root").attr("part", root.part())
+        return BuildEdit.of(places.appendLast(ElementWriter.tag("root").attr("part", root.part())
                 .attr(attribute, ConfigText.number(value)).empty()), what);
     }
 
@@ -280,8 +280,8 @@ final class DraftEdits {
                     + " within %.0f mm and %.0f degrees", gap * 1000, angle, Assembly.loopGap() * 1000,
                     Math.toDegrees(Assembly.loopTwist())));
         }
-        String connect = connectElement(ca.ref(), cb.ref(), turnsBetween(ca, cb));
-        BuildEdit e = BuildEdit.of(insert(null, connect), "Close the loop " + ca.ref() + " – " + cb.ref());
+        String connect = ConfigText.connect(ca.ref(), cb.ref(), turnsBetween(ca, cb));
+        BuildEdit e = BuildEdit.of(places.insert(null, connect), "Close the loop " + ca.ref() + " – " + cb.ref());
         RobotDraft after = draft.apply(e);
         if (after.problems().size() > draft.problems().size()) {
             return BuildEdit.refuse(after.problems().get(after.problems().size() - 1).message());
@@ -332,46 +332,6 @@ final class DraftEdits {
             }
         }
         return best;
-    }
-
-    /** A new part (or none) after the last {@code <part>} and a new connection after the last {@code <connect>}. */
-    private TextEdit insert(String part, String connect) {
-        SourceSpan lastPart = last("part");
-        SourceSpan lastConnect = last("connect");
-        List<Replacement> out = new ArrayList<>();
-        if (lastConnect == null) {
-            String both = (part == null ? "" : part + "\n" + ElementWriter.indent(text, lastPart.start())) + connect;
-            return ScriptEdits.appendChild(text, draft.read().root().span(), ROOT, lastPart, both);
-        }
-        if (part != null) {
-            out.addAll(ScriptEdits.appendChild(text, draft.read().root().span(), ROOT, lastPart, part).replacements());
-        }
-        out.addAll(ScriptEdits.appendChild(text, draft.read().root().span(), ROOT, lastConnect, connect).replacements());
-        return new TextEdit(out);
-    }
-
-    /** {@code element} after the root's last child. */
-    private TextEdit appendLast(String element) {
-        List<FlatXmlFile.Element> all = draft.read().elements();
-        return ScriptEdits.appendChild(text, draft.read().root().span(), ROOT, all.get(all.size() - 1).at().span(), element);
-    }
-
-    private SourceSpan last(String element) {
-        SourceSpan s = null;
-        for (FlatXmlFile.Element e : draft.read().elements()) {
-            if (e.name().equals(element)) {
-                s = e.at().span();
-            }
-        }
-        return s;
-    }
-
-    private TextEdit setOrDrop(org.parpe.core.diag.SourcePos node, String attribute, String value, boolean drop) {
-        return drop ? ScriptEdits.removeAttribute(text, node, attribute) : ScriptEdits.setAttribute(text, node, attribute, value);
-    }
-
-    private List<Replacement> removed(SourceSpan s) {
-        return ScriptEdits.removeElement(text, s).replacements();
     }
 
     private String needConfig() {
@@ -428,23 +388,9 @@ final class DraftEdits {
         return null;
     }
 
-    private String partElement(String name, PartType type, int id, int hubPlates) {
-        ElementWriter e = ElementWriter.tag("part").attr("name", name).attr("type", type.xmlName());
-        if (type == PartType.SEGMENT) {
-            e.attr("id", String.valueOf(id));
-        }
-        if (type == PartType.HUB && hubPlates != PartType.HUB.defaultPlates()) {
-            e.attr("plates", String.valueOf(hubPlates));
-        }
-        return e.empty();
-    }
-
-    static String connectElement(String from, String to, int quarterTurns) {
-        ElementWriter e = ElementWriter.tag("connect").attr("from", from).attr("to", to);
-        if (quarterTurns != 0) {
-            e.attr("orientation", String.valueOf(quarterTurns * 90));
-        }
-        return e.empty();
+    private static PartSpec newPart(String name, PartType type, int id, int hubPlates) {
+        return new PartSpec(name, type, type == PartType.SEGMENT ? id : -1, 0,
+                type == PartType.HUB ? hubPlates : type.defaultPlates(), false, org.parpe.core.diag.SourcePos.NONE);
     }
 
     /** The first of {@code s0, s1…} ({@code node0…}, {@code foot0…}, {@code hub0…}) no element of the file names. */

@@ -25,6 +25,7 @@ final class DraftTree {
     private final int[] robot;
     private final List<List<Integer>> children = new ArrayList<>();
     private final List<Integer> chain = new ArrayList<>();
+    private final List<List<Connection>> byPart;
 
     DraftTree(RobotConfig config) {
         this.config = config;
@@ -38,11 +39,11 @@ final class DraftTree {
         robot = new int[n];
         java.util.Arrays.fill(parentPart, -1);
         java.util.Arrays.fill(robot, -1);
-        List<List<Connection>> byPart = byPart();
+        byPart = byPart();
         for (int k = 0; k < config.roots().size(); k++) {
             Integer root = index.get(config.roots().get(k).part());
             if (root != null && robot[root] < 0) {
-                reach(root, k, byPart);
+                reach(root, k);
             }
         }
         for (int k = 0; k < config.roots().size(); k++) {
@@ -70,7 +71,7 @@ final class DraftTree {
     }
 
     /** Breadth first from {@code root}: each part reached gets its parent connection. */
-    private void reach(int root, int k, List<List<Connection>> byPart) {
+    private void reach(int root, int k) {
         Deque<Integer> queue = new ArrayDeque<>();
         robot[root] = k;
         queue.add(root);
@@ -134,15 +135,35 @@ final class DraftTree {
         return chain;
     }
 
-    /** Part {@code i} and every part that hangs on it, directly or through others. */
-    List<Integer> subtree(int i) {
-        List<Integer> out = new ArrayList<>();
-        Deque<Integer> stack = new ArrayDeque<>();
-        stack.push(i);
-        while (!stack.isEmpty()) {
-            int p = stack.pop();
-            out.add(p);
-            children.get(p).forEach(stack::push);
+    /**
+     * Part {@code i} and every part that hangs on it away from its robot's root: those its robot
+     * no longer reaches without {@code i} (in a loop, parts still held by the other way round stay).
+     */
+    List<Integer> hangingOn(int i) {
+        List<Integer> out = new ArrayList<>(List.of(i));
+        if (robot[i] < 0) {
+            return out;
+        }
+        int root = index.get(config.roots().get(robot[i]).part());
+        boolean[] kept = new boolean[robot.length];
+        if (root != i) {
+            Deque<Integer> queue = new ArrayDeque<>(List.of(root));
+            kept[root] = true;
+            while (!queue.isEmpty()) {
+                int p = queue.poll();
+                for (Connection c : byPart.get(p)) {
+                    int other = index.get(c.from()) == p ? index.get(c.to()) : index.get(c.from());
+                    if (other != i && !kept[other]) {
+                        kept[other] = true;
+                        queue.add(other);
+                    }
+                }
+            }
+        }
+        for (int p = 0; p < robot.length; p++) {
+            if (p != i && robot[p] == robot[i] && !kept[p]) {
+                out.add(p);
+            }
         }
         return out;
     }

@@ -9,6 +9,8 @@ import java.util.Optional;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.diag.SourcePos;
+import org.parpe.core.diag.SourceSpan;
+import org.parpe.core.xml.FlatXmlFile;
 import org.parpe.sim.Geo;
 import org.parpe.sim.SimBody;
 import org.parpe.sim.config.ConfigFile;
@@ -176,6 +178,30 @@ public final class RobotDraft {
         return p == null ? Optional.empty() : Optional.of(p.where());
     }
 
+    /**
+     * The part a problem (or any place in the text) is about, for a builder to mark: the part
+     * whose {@code <part>} element holds {@code pos}, the part a {@code <connect>} holding it
+     * attaches (its {@code to} side) or a {@code <root>} names; empty elsewhere.
+     */
+    public Optional<String> partAt(SourcePos pos) {
+        for (FlatXmlFile.Element e : read.elements()) {
+            SourceSpan s = e.at().span();
+            boolean holds = pos.offset() >= 0 && s != null ? s.start() <= pos.offset() && pos.offset() < s.end()
+                    : e.at().equals(pos);
+            String ref = switch (e.name()) {
+                case "part" -> e.attributes().get("name");
+                case "connect" -> e.attributes().get("to");
+                case "root" -> e.attributes().get("part");
+                default -> null;
+            };
+            if (holds && ref != null) {
+                int dot = e.name().equals("connect") ? ref.lastIndexOf('.') : -1;
+                return Optional.of(dot > 0 ? ref.substring(0, dot) : ref);
+            }
+        }
+        return Optional.empty();
+    }
+
     /** The parts of each type the robot leaves in {@code kit} (negative: parts the kit lacks); the whole kit before the first part. */
     public Map<PartType, Integer> left(Kit kit) {
         if (config() != null) {
@@ -217,8 +243,9 @@ public final class RobotDraft {
     }
 
     /**
-     * Removes {@code part} with every part that hangs on it away from the root, and every
-     * connection of those parts. The root is removed only when nothing hangs on it (then the
+     * Removes {@code part} with every part that hangs on it away from the root (what the robot
+     * no longer holds without it; in a loop, what the other way round still holds stays), and
+     * every connection of those parts. The root is removed only when nothing hangs on it (then the
      * file has no part); else refused: make another part the root first.
      */
     public BuildEdit remove(String part) {

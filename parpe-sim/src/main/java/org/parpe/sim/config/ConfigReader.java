@@ -127,7 +127,8 @@ final class ConfigReader {
     /** {@code "name.plate"} split in two, or {@code null} after an error. */
     private String[] plateRef(String ref, SourcePos at) {
         int dot = ref.lastIndexOf('.');
-        if (dot <= 0 || !ref.substring(dot + 1).matches("[0-9]{1,2}")) {
+        String plate = ref.substring(dot + 1);
+        if (dot <= 0 || plate.isEmpty() || plate.length() > 2 || !plate.chars().allMatch(c -> c >= '0' && c <= '9')) {
             error(at, "expected PART.PLATE such as 's3.1', got '" + ref + "'");
             return null;
         }

@@ -42,7 +42,7 @@ final class ConfigCheck {
         }
         for (org.parpe.sim.config.RootPose root : config.roots()) {
             if (!index.containsKey(root.part())) {
-                error(SourcePos.NONE, "root part '" + root.part() + "' is not defined"
+                error(root.pos(), "root part '" + root.part() + "' is not defined"
                         + Names.suggest(root.part(), index.keySet()));
             }
         }

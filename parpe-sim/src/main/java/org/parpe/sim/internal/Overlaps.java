@@ -95,7 +95,9 @@ final class Overlaps {
         for (long x = cell(c.x() - r); x <= cell(c.x() + r); x++) {
             for (long y = cell(c.y() - r); y <= cell(c.y() + r); y++) {
                 for (long z = cell(c.z() - r); z <= cell(c.z() + r); z++) {
-                    out.add((x & 0x1fffff) << 42 | (y & 0x1fffff) << 21 | (z & 0x1fffff));
+                    // mixed by an odd multiplier (one to one): packed coordinates alone share their low
+                    // bits along a chain, which piled a long robot's cells into a few hash buckets
+                    out.add(((x & 0x1fffff) << 42 | (y & 0x1fffff) << 21 | (z & 0x1fffff)) * 0x9E3779B97F4A7C15L);
                 }
             }
         }

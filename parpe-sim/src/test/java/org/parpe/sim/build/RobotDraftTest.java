@@ -57,6 +57,16 @@ class RobotDraftTest {
     }
 
     @Test
+    void theFirstPartOfABlankFileWritesTheConfigurationAfterWhatTheFileHolds() {
+        RobotDraft d = RobotDraft.of("blank.xml", "<!-- my robot -->\n");
+        BuildEdit e = d.first(PartType.HUB, 6);
+        assertEquals("<!-- my robot -->\n<robot-config>\n  <part name=\"hub0\" type=\"hub\" plates=\"6\"/>\n</robot-config>\n",
+                applied(d, e));
+        assertEquals("the file is not a robot configuration yet; mend it first (see Problems)",
+                RobotDraft.of("x.xml", "<program/>").first(PartType.NODE, 8).refusal());
+    }
+
+    @Test
     void addWritesThePartAfterTheLastPartAndTheConnectionAfterTheLastConnection() {
         RobotDraft d = tee();
         BuildEdit e = d.add("body", 2, PartType.SEGMENT, 0, 1, 8, null);

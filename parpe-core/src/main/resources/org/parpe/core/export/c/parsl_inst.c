@@ -65,6 +65,23 @@ static void add_p(parsl_rt *r, int16_t q, double dp)
 #define add_u(r, q, du, lim) ((r)->u[q] += (du))
 #endif
 
+#ifdef PARSL_EXACT_TIME
+#define STEP_KEPT(v, s, rem, dt) 0
+#define STEP(v, f) 0.0
+#define STEP_KEEP(v, s, d, du, dp)
+#else
+/*
+ * A module that spends the whole tick in state s steps by what the module before it in s did:
+ * d, du and dp are computed from the tick, the state's duration, the scale and the sum of the
+ * durations, the same for all (unless durations are per module), so they are equal bit for bit;
+ * only their divisions are saved. Not with 32-bit floats: the AVR's code stays as it was.
+ */
+#define STEP_KEPT(v, s, rem, dt) ((v)->step_s == (s) && (rem) == (dt))
+#define STEP(v, f) ((v)->step_##f)
+#define STEP_KEEP(v, s, d, du, dp) \
+    ((v)->step_s = (int16_t) ((v)->per_module ? -1 : (s)), (v)->step_d = (d), (v)->step_du = (du), (v)->step_dp = (dp))
+#endif
+
 static void state_error(parsl_rt *r, int16_t code, int16_t pos, double a, int16_t what)
 {
     r->err_code = code;
@@ -87,6 +104,9 @@ void parsl_view(parsl_rt *r, int16_t slot, int16_t row, inst_view *v)
     v->tb = PARSL_I16(parsl_inst[row], PARSL_I_TBUF);
     v->mirror = (uint8_t) PARSL_I16(parsl_inst[row], PARSL_I_MIRROR);
     v->is = &r->inst[slot];
+#ifndef PARSL_EXACT_TIME
+    v->step_s = -1;
+#endif
 }
 
 int16_t parsl_module_of(const inst_view *v, int16_t k)
@@ -297,7 +317,7 @@ static void next_state(parsl_rt *r, const inst_view *v, int16_t q, int16_t *s)
     P_RESET(r, q);
 }
 
-void parsl_advance(parsl_rt *r, const inst_view *v, int16_t k, double dt)
+void parsl_advance(parsl_rt *r, inst_view *v, int16_t k, double dt)
 {
     parsl_inst_state *is = v->is;
     int16_t q = v->pool + k;
@@ -326,9 +346,11 @@ void parsl_advance(parsl_rt *r, const inst_view *v, int16_t k, double dt)
     }
     for (;;) {
         double t = r->tbuf[v->tb + s];
-        double d = is->has_scale ? t * is->scale / is->sum_t : t;
+        int kept = STEP_KEPT(v, s, rem, dt);
+        double d = kept ? STEP(v, d) : is->has_scale ? t * is->scale / is->sum_t : t;
         double need;
         double du;
+        double dp;
         if (d <= 0) {
             if (++skips > v->ns) {
                 state_error(r, PARSL_E_ALLZERO, PARSL_I16(parsl_inst[v->row], PARSL_I_POS), 0, v->aut);
@@ -339,12 +361,21 @@ void parsl_advance(parsl_rt *r, const inst_view *v, int16_t k, double dt)
         }
         need = (1 - r->p[q]) * d;
         if (rem < need - EPS) {
-            du = U_STEP(rem, d, t, is);
+            if (kept) {
+                du = STEP(v, du);
+                dp = STEP(v, dp);
+            } else {
+                du = U_STEP(rem, d, t, is);
+                dp = rem / d;
+                if (rem == dt) {
+                    STEP_KEEP(v, s, d, du, dp);
+                }
+            }
             if (REACHES(r, q, du, lim)) {
                 finish_inside(r, v, k, s, lim);
                 return;
             }
-            add_p(r, q, rem / d);
+            add_p(r, q, dp);
             add_u(r, q, du, &lim);
             break;
         }

@@ -20,6 +20,14 @@ typedef struct {
     uint8_t mirror;
     uint8_t per_module;
     parsl_inst_state *is;
+#ifndef PARSL_EXACT_TIME
+    /* a whole tick's step in state step_s (-1: none yet), the same for every module that spends
+       the tick in it: kept from the module before (see parsl_advance) */
+    int16_t step_s;
+    double step_d;
+    double step_du;
+    double step_dp;
+#endif
 } inst_view;
 
 /* Fills v for the instance table row `row`, using state slot `slot` of the running entry. */
@@ -33,7 +41,7 @@ void parsl_reanchor(parsl_rt *r, const inst_view *v);
 /* Evaluates the period and, unless they depend on the module, the durations for this tick. */
 void parsl_prepare_tick(parsl_rt *r, const inst_view *v);
 /* Advances module k by dt and computes its setpoint. */
-void parsl_advance(parsl_rt *r, const inst_view *v, int16_t k, double dt);
+void parsl_advance(parsl_rt *r, inst_view *v, int16_t k, double dt);
 /* Computes module k's setpoint without advancing (the instance's first tick). */
 void parsl_hold(parsl_rt *r, const inst_view *v, int16_t k);
 

@@ -1,8 +1,7 @@
-package org.parpe.cli.export;
+package org.parpe.serial.export;
 
 import java.nio.file.Path;
 import java.util.Locale;
-import org.parpe.cli.UsageException;
 import org.parpe.core.export.CRuntime;
 import org.parpe.core.export.CText;
 import org.parpe.core.model.Program;
@@ -11,7 +10,8 @@ import org.parpe.core.model.Program;
  * The {@code .ino} of an exported sketch: runs the scheduler at the fixed tick from
  * {@code micros()}, sends the setpoints to the servos, and reads control and sensor assignments
  * ({@code speed=1.5}, {@code direction=backward}, {@code $3_touch_left=1}) as lines on the USB
- * serial console. The servo code is {@code sketch.inc} (a resource), driven by {@code parsl_servo.h}.
+ * serial console. The servo code is {@code sketch.inc} (a resource beside this class), driven by
+ * {@code parsl_servo.h}.
  */
 final class ArduinoSketch {
     private ArduinoSketch() {
@@ -30,18 +30,18 @@ final class ArduinoSketch {
      * not a whole number of microseconds would make the board's clock run fast or slow against the
      * script's {@code $time}, so it is refused.
      */
-    static long tickMicros(double tick) throws UsageException {
+    static long tickMicros(double tick) {
         double us = tick * 1e6;
         long whole = Math.round(us);
         if (Math.abs(us - whole) > 1e-9 * us) {
-            throw new UsageException("--tick for an Arduino sketch must be a whole number of microseconds (the board"
+            throw new IllegalArgumentException("--tick for an Arduino sketch must be a whole number of microseconds (the board"
                     + " counts time with micros()), got " + tick + " s = " + us + " us; use " + whole / 1e6 + " s");
         }
         return whole;
     }
 
-    static String ino(Program p, SketchOptions s, double tick) throws UsageException {
-        StringBuilder b = new StringBuilder(ExportFiles.MARK).append(" from ")
+    static String ino(Program p, SketchOptions s, double tick) {
+        StringBuilder b = new StringBuilder(ProgramExport.MARK).append(" from ")
                 .append(CText.comment(Path.of(p.file()).getFileName().toString())).append(" (")
                 .append(s.driver().name().toLowerCase(Locale.ROOT)).append(" servos, tick ").append(tick).append(" s).\n");
         b.append("// Board code may be added below the generated part; parpe export then refuses to overwrite this file.\n");
@@ -55,7 +55,12 @@ final class ArduinoSketch {
             }
             b.append("};\n");
         }
-        b.append(CRuntime.read(CRuntime.SKETCH));
+        b.append(boardCode());
         return b.toString();
+    }
+
+    /** The sketch's board code, {@code sketch.inc}: the servo drivers, the console and the tick loop. */
+    static String boardCode() {
+        return CRuntime.read(ArduinoSketch.class, "sketch.inc");
     }
 }

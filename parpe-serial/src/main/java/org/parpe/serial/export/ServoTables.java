@@ -1,9 +1,10 @@
-package org.parpe.cli.export;
+package org.parpe.serial.export;
 
 import java.util.Locale;
 import org.parpe.serial.protocol.Crc16;
 import org.parpe.serial.servo.Registers;
 import org.parpe.serial.servo.ServoModel;
+import org.parpe.serial.servo.ServoProtocol;
 import org.parpe.serial.servo.wire.PacketCodec;
 
 /**
@@ -31,7 +32,7 @@ final class ServoTables {
         h.append("#define PARSL_INST_SYNC_WRITE 0x").append(hex(PacketCodec.SYNC_WRITE)).append('\n');
         h.append("#define PARSL_BROADCAST 0x").append(hex(PacketCodec.BROADCAST)).append('\n');
         h.append("#define PARSL_DXL_CRC_POLY 0x").append(hex(DXL_CRC_POLY)).append('\n');
-        ServoModel m = s.model() == null ? ServoModel.defaultFor(org.parpe.serial.servo.ServoProtocol.DXL2) : s.model();
+        ServoModel m = s.model() == null ? ServoModel.defaultFor(ServoProtocol.DXL2) : s.model();
         Registers r = m.registers();
         h.append("\n/* ").append(m.label()).append(s.model() == null ? " (unused by PWM)" : "").append(" */\n");
         h.append("#define PARSL_SERVO_CENTRE ").append(m.centre()).append('\n');
@@ -43,6 +44,7 @@ final class ServoTables {
         h.append("#define PARSL_REG_TORQUE ").append(r.torque()).append('\n');
         h.append("#define PARSL_REG_GOAL ").append(r.goal()).append('\n');
         h.append("#define PARSL_GOAL_SIZE ").append(r.goalSize()).append('\n');
+        SketchConstants.appendC(h, m);
         h.append("\n#endif\n");
         return h.toString();
     }
