@@ -76,6 +76,7 @@ public final class IdeWindow implements HardwareHost {
     private final FileActions files;
     private final RunActions runs;
     private final PosePanel pose;
+    private final org.parpe.gui.robot.RobotTab robotTab;
     private final CTabItem poseTab;
     private final SashForm editorSplit;
     private SashForm mainSash;
@@ -163,6 +164,8 @@ public final class IdeWindow implements HardwareHost {
         diagram = new DiagramPane(viewFolder, editor, files::pathForLoading);
         diagram.sayPlacesWith(status::setMessage);
         Panels.tab(viewFolder, "Diagram", diagram.control());
+        robotTab = new org.parpe.gui.robot.RobotTab(viewFolder, new RobotBridge(this));
+        Panels.tab(viewFolder, "Robot", robotTab.control());
         diagram.follow(runs.controller().live(), runs::running);
         diagram.breakpoints(runs.controller().breakpoints(), () -> runs.controller().setPaused(false), this::runStateChanged);
         viewFolder.addListener(SWT.Selection, e -> {
@@ -183,9 +186,10 @@ public final class IdeWindow implements HardwareHost {
         bottom.addListener(SWT.Selection, e -> fitBottom());
     }
 
-    /** Whether {@code viewFolder} shows the Diagram tab. */
+    /** Whether {@code viewFolder} shows the Diagram tab or the Robot tab (both want the room). */
     private boolean diagramShown(CTabFolder viewFolder) {
-        return diagram != null && viewFolder.getSelection() != null && viewFolder.getSelection().getControl() == diagram.control();
+        var shown = viewFolder.getSelection() == null ? null : viewFolder.getSelection().getControl();
+        return shown != null && (diagram != null && shown == diagram.control() || robotTab != null && shown == robotTab.control());
     }
 
     /** The Pose panel needs more room than Problems and the Run log. */
@@ -287,6 +291,7 @@ public final class IdeWindow implements HardwareHost {
         gaitGrid.zoom(zoom);
         org.parpe.gui.panels.ChartView.zoomAll(zoom);
         diagram.zoom(zoom);
+        robotTab.zoom(zoom);
         status.setMessage(zoom == 0 ? "Text at its normal size (Ctrl+0)" : "Text " + (zoom > 0 ? "+" : "") + zoom * 2
                 + " points (View > Zoom In, Ctrl+plus; Zoom Out, Ctrl+minus; Reset Zoom, Ctrl+0)");
     }
@@ -391,6 +396,7 @@ public final class IdeWindow implements HardwareHost {
         problems.clearRunDiagnostics();
         runs.forgetPreview();
         view.clear();
+        robotTab.documentSwitched();
     }
 
     private void documentChanged() {
@@ -409,6 +415,11 @@ public final class IdeWindow implements HardwareHost {
     /** Shows a load result: markers, Problems, outline, controls, plots and the robot preview. */
     void showValidation(LoadResult r) {
         validations++;
+        if (robotTab.documentChecked(r.program())) { // a robot configuration: its own problems
+            problems.setLoadDiagnostics(robotTab.problems());
+            status.setMessage(problemCounts());
+            return;
+        }
         if (emptyScript()) {
             showEmpty();
             return;
@@ -806,6 +817,12 @@ public final class IdeWindow implements HardwareHost {
     /** The user picked {@code robot} for the file in the editor. */
     void robotChosen(String robot) {
         choices.robotChosen(robot);
+        robotTab.robotChosen();
+    }
+
+    /** The Robot tab beside the 3D view. */
+    public org.parpe.gui.robot.RobotTab robotTab() {
+        return robotTab;
     }
 
     /** The user picked {@code world} ({@link WorldPicker#FLAT} or a world file) for the file in the editor. */

@@ -21,8 +21,8 @@ import org.parpe.sim.config.RobotConfigs;
 
 /**
  * {@code parpe gui --bench}: measures how long the window takes to come up, how many frames
- * per second the 3D view draws for the 55-module centipede, and how opening a generated 10 MB
- * script goes, and prints {@code name=value} lines. A measurement, not a test: nothing here
+ * per second the 3D view draws for the 55-module centipede, the Robot tab with a 200-module
+ * robot, and how opening a generated 10 MB script goes, and prints {@code name=value} lines. A measurement, not a test: nothing here
  * passes or fails on a timing.
  */
 public final class Bench {
@@ -83,6 +83,7 @@ public final class Bench {
         print("view_fullscreen_height_px", c.getSize().y);
         print("fps_centipede_fullscreen", fps(display, view));
         LiveDiagramBench.run(display, ide);
+        RobotTabBench.run(display, ide, home);
         try {
             openLarge(display, ide, home);
         } catch (java.io.IOException e) {
@@ -203,7 +204,7 @@ public final class Bench {
         }
     }
 
-    private static void print(String name, double value) {
+    static void print(String name, double value) {
         System.out.println(name + "=" + (value == Math.rint(value) ? Long.toString((long) value)
                 : String.format(Locale.ROOT, "%.1f", value)));
     }

@@ -859,8 +859,9 @@ public final class DiagramPane {
 
     /** The edit row: the selected node's values as fields (Enter in one writes it) and its actions ({@link EditRow}). */
     private void showFields() {
-        Projection.Target t = offered != null ? offered
-                : shown == null ? null : shown.targets().get(selected != null ? selected : shown.home());
+        SourcePos key = selected != null ? selected : shown == null ? null : shown.home();
+        // a file with no script (a robot configuration) has no home node: nothing to edit
+        Projection.Target t = offered != null ? offered : key == null ? null : shown.targets().get(key);
         EditRow.fill(fields, t, shown == null ? null : org.parpe.gui.editor.NameIndex.of(shown.text()), this::write, this::act,
                 pose);
         // a view with nothing to select or edit (the gait diagram) has no edit row

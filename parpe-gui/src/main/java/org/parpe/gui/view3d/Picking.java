@@ -20,14 +20,20 @@ final class Picking {
     }
 
     static int moduleAt(Camera cam, SimSnapshot snap, int x, int y) {
+        SimBody b = bodyAt(cam, snap, x, y, true);
+        return b == null ? -1 : b.moduleId();
+    }
+
+    /** The piece under (x, y) nearest the eye ({@code modulesOnly}: of the active modules), or null. */
+    static SimBody bodyAt(Camera cam, SimSnapshot snap, int x, int y, boolean modulesOnly) {
         if (snap == null) {
-            return -1;
+            return null;
         }
         double[] c = new double[3];
-        int best = -1;
+        SimBody best = null;
         double bestDepth = Double.POSITIVE_INFINITY;
         for (SimBody b : snap.bodies()) {
-            if (b.moduleId() < 0) {
+            if (modulesOnly && b.moduleId() < 0) {
                 continue;
             }
             Vec3 p = b.position();
@@ -40,7 +46,7 @@ final class Picking {
             double dy = cam.screenY(c[1], c[2]) - y;
             if (dx * dx + dy * dy <= r * r && c[2] < bestDepth) {
                 bestDepth = c[2];
-                best = b.moduleId();
+                best = b;
             }
         }
         return best;

@@ -47,10 +47,22 @@ final class SceneRenderer {
         this.near = near;
     }
 
-    /** Which modules to highlight, whether to label module IDs, and the module a drag would turn (−1: none). */
-    record Style(Set<Integer> highlighted, boolean labels, int hover) {
+    /**
+     * Which modules to highlight, whether to label module IDs, the module a drag would turn (−1:
+     * none), and a builder's colour for each piece (null, or −1 from it: the usual colour).
+     */
+    record Style(Set<Integer> highlighted, boolean labels, int hover, java.util.function.ToIntFunction<SimBody> paint) {
         Style(Set<Integer> highlighted, boolean labels) {
-            this(highlighted, labels, -1);
+            this(highlighted, labels, -1, null);
+        }
+
+        Style(Set<Integer> highlighted, boolean labels, int hover) {
+            this(highlighted, labels, hover, null);
+        }
+
+        int colour(SimBody b) {
+            int own = paint == null ? -1 : paint.applyAsInt(b);
+            return own >= 0 ? own : b.moduleId() >= 0 && b.moduleId() == hover ? HOVER : baseColor(b, highlighted);
         }
     }
 
@@ -71,12 +83,29 @@ final class SceneRenderer {
             solid(cam, b, baseColor(b, style.highlighted()));
         }
         for (SimBody b : snap.bodies()) {
-            solid(cam, b, b.moduleId() >= 0 && b.moduleId() == style.hover() ? HOVER : baseColor(b, style.highlighted()));
+            solid(cam, b, style.colour(b));
         }
         paintFaces(gc);
         if (style.labels()) {
             labels(gc, cam, snap, style.highlighted());
         }
+    }
+
+    /** The colour of a piece not yet placed (drawn translucent over the robot). */
+    private static final int GHOST = 0x3FBF6A;
+
+    /** Pieces not yet placed (a builder's preview), translucent over what is drawn. */
+    void ghosts(GC gc, Camera cam, java.util.List<SimBody> bodies) {
+        if (bodies.isEmpty()) {
+            return;
+        }
+        faces.clear();
+        for (SimBody b : bodies) {
+            solid(cam, b, GHOST);
+        }
+        gc.setAlpha(140);
+        paintFaces(gc);
+        gc.setAlpha(255);
     }
 
     /** The colour of the module a drag would bend (the mouse is over it). */

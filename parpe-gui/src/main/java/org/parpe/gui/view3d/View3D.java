@@ -30,6 +30,8 @@ public final class View3D {
     private Supplier<SimSnapshot> source = () -> null;
     private Supplier<Set<Integer>> highlighted = Set::of;
     private Supplier<String> overlay = () -> "";
+    private BuildLayer builder;
+    private Point pressed;
     private String emptyText = "No robot yet: open a script and press Run";
     private boolean track = true;
     private boolean labels;
@@ -57,6 +59,7 @@ public final class View3D {
         canvas.addListener(SWT.Paint, this::paint);
         canvas.addListener(SWT.MouseDown, e -> {
             drag = new Point(e.x, e.y);
+            pressed = drag;
             dragButton = e.button == 1 && (e.stateMask & SWT.SHIFT) != 0 ? 2 : e.button;
             turning = e.button == 1 && (e.stateMask & SWT.SHIFT) == 0 ? grab(e) : -1;
             canvas.setFocus();
@@ -64,6 +67,12 @@ public final class View3D {
         canvas.addListener(SWT.MouseUp, e -> {
             drag = null;
             turning = -1;
+            BuildLayer b = builder;
+            // a click, not the end of a drag: the builder picks what is under it
+            if (b != null && e.button == 1 && pressed != null && Math.abs(e.x - pressed.x) + Math.abs(e.y - pressed.y) < CLICK_SLOP) {
+                b.clicked(e.x, e.y, e.stateMask, false);
+            }
+            pressed = null;
         });
         canvas.addListener(SWT.MouseMove, this::mouseMove);
         canvas.addListener(SWT.MouseExit, e -> hoverAt(-1, -1));
@@ -78,7 +87,54 @@ public final class View3D {
             camera.zoom(e.count > 0 ? 0.88 : 1.0 / 0.88);
             canvas.redraw();
         });
-        canvas.addListener(SWT.MouseDoubleClick, e -> resetView());
+        canvas.addListener(SWT.MouseDoubleClick, e -> {
+            BuildLayer b = builder;
+            if (b == null || !b.clicked(e.x, e.y, e.stateMask, true)) {
+                resetView();
+            }
+        });
+    }
+
+    /** Pixels the mouse may move between press and release and still click (not drag). */
+    private static final int CLICK_SLOP = 5;
+
+    /**
+     * Building on the view (the Robot tab): it draws over each frame, picks on clicks, paints
+     * pieces in its own colours and shows pieces not yet placed translucent. Null: none.
+     */
+    public void setBuilder(BuildLayer b) {
+        builder = b;
+        canvas.redraw();
+    }
+
+    /**
+     * Where world point {@code p} appears on the canvas with the camera of the last frame drawn,
+     * as {x, y, pixels per metre there}, or null when it is behind the eye.
+     */
+    public double[] project(Vec3 p) {
+        double[] c = new double[3];
+        camera.toCamera(p.x(), p.y(), p.z(), c);
+        if (c[2] < SceneRenderer.NEAR_VIEW) {
+            return null;
+        }
+        return new double[] {camera.screenX(c[0], c[2]), camera.screenY(c[1], c[2]), camera.scale(c[2])};
+    }
+
+    /** The camera's eye in world coordinates in the last frame drawn (x, y, z). */
+    public double[] eye() {
+        return camera.eye().clone();
+    }
+
+    /** The part under canvas point (x, y) in the last frame drawn (any piece, active or passive), or null. */
+    public String partAt(int x, int y) {
+        SimBody b = Picking.bodyAt(camera, last, x, y, false);
+        return b == null ? null : b.part();
+    }
+
+    /** Turns the view around the robot by the given angles, radians (the benchmark, tests). */
+    public void rotate(double dYaw, double dPitch) {
+        camera.rotate(dYaw, dPitch);
+        canvas.redraw();
     }
 
     /** The canvas. */
@@ -388,9 +444,15 @@ public final class View3D {
             camera.follow(c.x(), c.y(), Math.max(0.0, c.z()), 0.25);
         }
         gc.setAntialias(SWT.ON);
-        renderer.draw(gc, camera, snap, new SceneRenderer.Style(highlighted.get(), labels, hover), width, height);
+        BuildLayer b = builder;
+        renderer.draw(gc, camera, snap, new SceneRenderer.Style(highlighted.get(), labels, hover,
+                b == null ? null : b::colour), width, height);
         if (snap != null && track) {
             renderer.trail(gc, camera, trail);
+        }
+        if (b != null) {
+            renderer.ghosts(gc, camera, b.ghosts());
+            b.decorate(gc);
         }
         gc.setAntialias(SWT.DEFAULT);
         hud(gc, snap);

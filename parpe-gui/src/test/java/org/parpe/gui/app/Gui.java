@@ -5,6 +5,7 @@ import org.parpe.gui.prefs.Prefs;
 import org.parpe.gui.automation.Screenshot;
 import org.parpe.gui.files.Examples;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
 
@@ -117,6 +118,27 @@ public final class Gui {
         if (ide != null && !ide.shell().isDisposed()) {
             endRun(ide);
             ide.shell().dispose();
+        }
+    }
+
+    /**
+     * Runs xdotool, which moves and presses the pointer through the X server (XTest), so that
+     * GTK makes the double and triple clicks from the real events' times as it does for a user.
+     * SWT's Display.post cannot: on GTK 3 it queues one synthetic event with time 0.
+     */
+    public static void xdotool(String... args) {
+        java.util.List<String> cmd = new java.util.ArrayList<>(java.util.List.of("xdotool"));
+        cmd.addAll(java.util.List.of(args));
+        try {
+            Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
+            String out = new String(p.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+            assertTrue(p.waitFor(20, java.util.concurrent.TimeUnit.SECONDS), "xdotool did not finish");
+            assertEquals(0, p.exitValue(), "xdotool " + String.join(" ", args) + " failed: " + out);
+        } catch (java.io.IOException e) {
+            throw new AssertionError("these tests need xdotool (apt-get install xdotool; ./test-all installs it): " + e.getMessage(), e);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new AssertionError("interrupted", e);
         }
     }
 }

@@ -146,7 +146,7 @@ class TextGesturesGuiTest {
     /** {@code count} presses of mouse {@code button} on the character at {@code offset} of {@code w}. */
     private static void click(StyledText w, int offset, int button, int count) {
         Point p = pointAt(w, offset);
-        xdotool("mousemove", "--sync", Integer.toString(p.x), Integer.toString(p.y),
+        Gui.xdotool("mousemove", "--sync", Integer.toString(p.x), Integer.toString(p.y),
                 "click", "--repeat", Integer.toString(count), "--delay", "60", Integer.toString(button));
         Gui.settle();
     }
@@ -161,13 +161,13 @@ class TextGesturesGuiTest {
         w.setSelection(w.getCaretOffset());
         Point a = pointAt(w, from);
         Point b = pointAt(w, to);
-        xdotool("mousemove", "--sync", Integer.toString(a.x), Integer.toString(a.y), "mousedown", "1");
+        Gui.xdotool("mousemove", "--sync", Integer.toString(a.x), Integer.toString(a.y), "mousedown", "1");
         Gui.settle();
         for (int i = 1; i <= 4; i++) {
-            xdotool("mousemove", "--sync", Integer.toString(a.x + (b.x - a.x) * i / 4), Integer.toString(b.y));
+            Gui.xdotool("mousemove", "--sync", Integer.toString(a.x + (b.x - a.x) * i / 4), Integer.toString(b.y));
             Gui.settle();
         }
-        xdotool("mouseup", "1");
+        Gui.xdotool("mouseup", "1");
         Gui.settle();
     }
 
@@ -188,24 +188,4 @@ class TextGesturesGuiTest {
         return on;
     }
 
-    /**
-     * Runs xdotool, which moves and presses the pointer through the X server (XTest), so that
-     * GTK makes the double and triple clicks from the real events' times as it does for a user.
-     * SWT's Display.post cannot: on GTK 3 it queues one synthetic event with time 0.
-     */
-    private static void xdotool(String... args) {
-        java.util.List<String> cmd = new java.util.ArrayList<>(java.util.List.of("xdotool"));
-        cmd.addAll(java.util.List.of(args));
-        try {
-            Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
-            String out = new String(p.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
-            assertTrue(p.waitFor(20, java.util.concurrent.TimeUnit.SECONDS), "xdotool did not finish");
-            assertEquals(0, p.exitValue(), "xdotool " + String.join(" ", args) + " failed: " + out);
-        } catch (java.io.IOException e) {
-            throw new AssertionError("these tests need xdotool (apt-get install xdotool; ./test-all installs it): " + e.getMessage(), e);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            throw new AssertionError("interrupted", e);
-        }
-    }
 }

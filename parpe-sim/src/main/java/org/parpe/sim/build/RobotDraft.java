@@ -88,11 +88,22 @@ public final class RobotDraft {
      * @throws IllegalArgumentException with the located messages when {@code spec} is not a generator's
      */
     public static RobotDraft fromGenerator(String file, String spec) {
+        return fromGenerator(file, spec, new int[0]);
+    }
+
+    /**
+     * "Make editable" for a script: the robot a run of a script with modules {@code moduleIds}
+     * simulates for {@code spec} (a generator sized by the script's modules, as
+     * {@link RobotConfigs#resolve} sizes it), written out as text.
+     *
+     * @throws IllegalArgumentException with the located messages when {@code spec} is not a generator's
+     */
+    public static RobotDraft fromGenerator(String file, String spec, int[] moduleIds) {
         DiagnosticList diags = new DiagnosticList();
         if (RobotConfigs.isFile(spec)) {
             throw new IllegalArgumentException("'" + spec + "' is a configuration file, not a generator; open it");
         }
-        RobotConfig c = RobotConfigs.resolve(spec, new int[0], diags);
+        RobotConfig c = RobotConfigs.resolve(spec, moduleIds, diags);
         if (c == null) {
             throw new IllegalArgumentException(String.join("\n", diags.all().stream().map(Diagnostic::format).toList()));
         }

@@ -1,0 +1,71 @@
+package org.parpe.gui.app;
+
+import java.nio.file.Path;
+import org.parpe.core.model.Program;
+import org.parpe.core.run.RunOutcome;
+import org.parpe.gui.editor.ParslEditor;
+import org.parpe.gui.prefs.Prefs;
+import org.parpe.gui.robot.RobotHost;
+import org.parpe.gui.run.RunOn;
+
+/** The IDE window as the Robot tab sees it. UI thread only. */
+final class RobotBridge implements RobotHost {
+    private final IdeWindow ide;
+
+    RobotBridge(IdeWindow ide) {
+        this.ide = ide;
+    }
+
+    @Override
+    public ParslEditor editor() {
+        return ide.editor();
+    }
+
+    @Override
+    public Path file() {
+        return ide.files().pathForLoading();
+    }
+
+    @Override
+    public String robotChoice() {
+        return ide.robotChoice();
+    }
+
+    @Override
+    public void chooseRobot(String robot) {
+        ide.viewBar().show(robot);
+        ide.robotChosen(robot);
+    }
+
+    @Override
+    public void open(Path file) {
+        if (ide.files().confirmDiscard()) {
+            ide.files().openPath(file);
+        }
+    }
+
+    @Override
+    public boolean save() {
+        return ide.files().file() != null && !ide.files().dirty() || ide.files().save();
+    }
+
+    @Override
+    public void tryIt(Program program, String robot) {
+        // the one run path: the Pose panel's playback runs a program made elsewhere on a robot of its choice
+        ide.runs().play(program, RunOn.SIMULATOR, robot, outcome -> {
+            if (outcome.status() == RunOutcome.Status.ERROR) {
+                ide.sayLater("Try it: " + outcome.message());
+            }
+        });
+    }
+
+    @Override
+    public void say(String message) {
+        ide.status().setMessage(message);
+    }
+
+    @Override
+    public Prefs prefs() {
+        return ide.prefs();
+    }
+}

@@ -1,0 +1,93 @@
+package org.parpe.gui.robot;
+
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeSet;
+import java.util.stream.Collectors;
+import org.parpe.core.diag.Diagnostic;
+import org.parpe.core.model.Program;
+import org.parpe.sim.build.RobotDraft;
+import org.parpe.sim.build.ScriptFit;
+import org.parpe.sim.config.Kit;
+import org.parpe.sim.config.PartSpec;
+import org.parpe.sim.config.PartType;
+
+/**
+ * How the Robot tab marks a robot for a script: parts in the colours of the script's groups,
+ * parts at fault red, the plates of modules that declare the {@code latch} actuator (PARSL.md
+ * §14) marked; and the line that says what the script misses, what it leaves unused and what
+ * the kit has left.
+ */
+final class Colours {
+    /** One colour per group, in the order the groups are first met (then again from the start). */
+    private static final int[] GROUPS = {0x2E9E5B, 0x8E5CC8, 0xD9822B, 0x2B8FD9, 0xC2477D, 0x6B8E23, 0x7A6A56, 0x1F9FA0};
+
+    private Colours() {
+    }
+
+    /** Sets {@code t}'s colours and latch marks for draft {@code d} and the script {@code script} (may be null). */
+    static void paint(Targets t, RobotDraft d, Program script, boolean showFaults) {
+        Map<String, Integer> paint = new HashMap<>();
+        Set<String> latching = new TreeSet<>();
+        if (d != null && d.config() != null) {
+            List<PartSpec> parts = d.config().parts();
+            if (script != null) {
+                Map<Integer, String> groupOf = ScriptFit.of(script, d.config()).groupOf();
+                Map<String, Integer> groupColour = new LinkedHashMap<>();
+                for (PartSpec p : parts) {
+                    String g = p.isSegment() ? groupOf.get(p.moduleId()) : null;
+                    if (g != null) {
+                        paint.put(p.name(), groupColour.computeIfAbsent(g, k -> GROUPS[groupColour.size() % GROUPS.length]));
+                    }
+                    if (p.isSegment() && script.robot().actuates(p.moduleId(), "latch")) {
+                        latching.add(p.name());
+                    }
+                }
+            }
+            if (showFaults) {
+                for (Diagnostic g : d.problems()) {
+                    d.partAt(g.pos()).ifPresent(name -> paint.put(name, Targets.FAULT)); // the part the problem is about
+                }
+            }
+        }
+        t.paint = paint;
+        t.latching = latching;
+    }
+
+    /** What the robot lacks for the script and leaves unused, what the kit has left, and the first problem. */
+    static String fit(RobotDraft d, Program script, Kit kit) {
+        if (d == null) {
+            return "";
+        }
+        StringBuilder s = new StringBuilder();
+        if (d.config() == null) {
+            List<Diagnostic> p = d.problems();
+            return p.isEmpty() ? "" : p.size() + (p.size() == 1 ? " problem" : " problems") + " (see Problems): " + p.get(0).format();
+        }
+        if (script != null) {
+            ScriptFit f = ScriptFit.of(script, d.config());
+            s.append("Script ").append(java.nio.file.Path.of(script.file()).getFileName()).append(": ");
+            s.append(f.missing().isEmpty() && f.unused().isEmpty() ? "every module it uses is here, none is left over"
+                    : (f.missing().isEmpty() ? "" : "the robot lacks modules " + ids(f.missing()))
+                    + (!f.missing().isEmpty() && !f.unused().isEmpty() ? "; " : "")
+                    + (f.unused().isEmpty() ? "" : "no group uses modules " + ids(f.unused())));
+        }
+        if (kit != null) {
+            Map<PartType, Integer> left = d.left(kit);
+            s.append(s.length() == 0 ? "" : "   ").append("Kit ").append(kit.name()).append(" left: ")
+                    .append(left.entrySet().stream().filter(e -> kit.owned(e.getKey()) > 0)
+                            .map(e -> e.getKey().count(e.getValue())).collect(Collectors.joining(", ")));
+        }
+        if (!d.problems().isEmpty()) {
+            s.append(s.length() == 0 ? "" : "   ").append(d.problems().size()).append(" problem(s): ").append(d.problems().get(0).format());
+        }
+        return s.toString();
+    }
+
+    private static String ids(List<Integer> ids) {
+        return ids.stream().map(String::valueOf).collect(Collectors.joining(", "));
+    }
+}

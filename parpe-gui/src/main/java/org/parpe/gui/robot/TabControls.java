@@ -1,0 +1,277 @@
+package org.parpe.gui.robot;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.custom.ScrolledComposite;
+import org.eclipse.swt.graphics.GC;
+import org.eclipse.swt.graphics.Point;
+import org.eclipse.swt.layout.GridData;
+import org.eclipse.swt.layout.GridLayout;
+import org.eclipse.swt.layout.RowData;
+import org.eclipse.swt.layout.RowLayout;
+import org.eclipse.swt.widgets.Button;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Control;
+import org.eclipse.swt.widgets.Label;
+import org.eclipse.swt.widgets.Text;
+import org.parpe.gui.view3d.View3D;
+import org.parpe.sim.config.PartType;
+
+/**
+ * The Robot tab's widgets, laid out: over the 3D view, what is shown and its buttons, the kit
+ * palette with the orientation, and the selected part's properties, in rows that wrap; under
+ * it, how the robot fits the script and the kit, and what the last action did. The rows scroll
+ * when they would take more than {@link #ROWS_SHARE} of the tab (twice the text on a 1366×768
+ * screen), so that every control stays reachable and the view keeps its room.
+ */
+final class TabControls {
+    /** The most of the tab's height the rows of controls take before they scroll. */
+    static final double ROWS_SHARE = 0.4;
+
+    final Composite root;
+    private final ScrolledComposite scroll;
+    private final Composite rowsBox;
+    final Label source;
+    final Button editRobot;
+    final Button makeEditable;
+    final Button tryIt;
+    final Button undo;
+    final Button redo;
+    final Button kit;
+    final Button[] types = new Button[PartType.values().length];
+    final Text hubPlates;
+    /** 0°, 90°, 180°, 270°: how the new part is turned on its plate. */
+    final Button[] turns = new Button[4];
+    final Button place;
+    final Button connect;
+    final Button assignIds;
+    final View3D view;
+    final Label partName;
+    final Text moduleId;
+    final Text angle;
+    final Button limp;
+    /** The root's roll, degrees (a wheel stands on its rim at 90). */
+    final Text roll;
+    final Button turn;
+    final Button delete;
+    final Button makeRoot;
+    final Label fit;
+    final Label message;
+    private final List<Composite> rows = new ArrayList<>();
+    private final List<Text> boxes = new ArrayList<>();
+
+    TabControls(Composite parent) {
+        root = new Composite(parent, SWT.NONE);
+        root.setLayout(grid(0, 2));
+        scroll = new ScrolledComposite(root, SWT.V_SCROLL);
+        scroll.setExpandHorizontal(true);
+        scroll.setLayoutData(new GridData(SWT.FILL, SWT.TOP, true, false));
+        rowsBox = new Composite(scroll, SWT.NONE);
+        rowsBox.setLayout(grid(0, 0));
+        scroll.setContent(rowsBox);
+
+        Composite top = row();
+        source = new Label(top, SWT.NONE);
+        tryIt = button(top, "Try it", "Run the script on this robot in the simulator now");
+        undo = button(top, "Undo", "Take back the last change (Ctrl+Z)");
+        redo = button(top, "Redo", "Make the change taken back again (Ctrl+Y)");
+        connect = button(top, "Connect", "Close a loop: join the two plates selected (click one, Ctrl+click the other)");
+        assignIds = button(top, "Assign IDs", "Give every segment a module ID in chain order from the root");
+        kit = button(top, "Kit\u2026", "Choose the kit file: how many parts of each kind the class owns");
+        editRobot = button(top, "Edit robot", "Open the robot's configuration file in the editor");
+        makeEditable = button(top, "Make editable\u2026", "Write the generator's robot to a file beside the script and use it");
+
+        Composite palette = row();
+        new Label(palette, SWT.NONE).setText("Add:");
+        Composite typeBox = group(palette); // radio buttons of one parent exclude each other
+        for (PartType t : PartType.values()) {
+            Button b = new Button(typeBox, SWT.RADIO);
+            b.setText(t.xmlName().substring(0, 1).toUpperCase(java.util.Locale.ROOT) + t.xmlName().substring(1));
+            types[t.ordinal()] = b;
+        }
+        types[PartType.SEGMENT.ordinal()].setSelection(true);
+        hubPlates = box(palette, "Plates round a hub's rim (3 to 12; Enter)", 3);
+        hubPlates.setText(Integer.toString(PartType.HUB.defaultPlates()));
+        new Label(palette, SWT.NONE).setText("Turned:");
+        Composite turnBox = group(palette);
+        for (int q = 0; q < 4; q++) {
+            turns[q] = new Button(turnBox, SWT.RADIO);
+            turns[q].setText(q * 90 + "\u00B0");
+            turns[q].setToolTipText("How the new part is turned on its plate (previewed before Place)");
+        }
+        turns[0].setSelection(true);
+        place = button(palette, "Place", "Snap the part previewed onto the plate selected (or double-click the plate)");
+
+        Composite props = row();
+        partName = new Label(props, SWT.NONE);
+        new Label(props, SWT.NONE).setText("ID");
+        moduleId = box(props, "The segment's module ID (Enter)", 4);
+        new Label(props, SWT.NONE).setText("Angle");
+        angle = box(props, "The segment's initial joint angle, degrees (Enter)", 6);
+        limp = new Button(props, SWT.CHECK);
+        limp.setText("Limp");
+        limp.setToolTipText("The segment's servo starts limp (back-drivable)");
+        new Label(props, SWT.NONE).setText("Roll");
+        roll = box(props, "The root part's roll, degrees: how the robot lies on the floor (a wheel stands at 90; Enter)", 5);
+        turn = button(props, "Turn 90\u00B0", "Turn the part on the plate it hangs on");
+        delete = button(props, "Delete", "Take the part away with everything that hangs on it");
+        makeRoot = button(props, "Make root", "Make this part the robot's root");
+
+        view = new View3D(root);
+        view.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
+        view.setTrackRobot(false);
+        view.setEmptyText("No robot here yet: pick a part in Add, then Place");
+        fit = wrapped();
+        message = wrapped();
+        root.addListener(SWT.Resize, e -> relayout());
+    }
+
+    private static GridLayout grid(int margin, int spacing) {
+        GridLayout gl = new GridLayout(1, false);
+        gl.marginWidth = margin;
+        gl.marginHeight = margin;
+        gl.verticalSpacing = spacing;
+        return gl;
+    }
+
+    private Composite row() {
+        Composite c = new Composite(rowsBox, SWT.NONE);
+        RowLayout rl = new RowLayout(SWT.HORIZONTAL);
+        rl.wrap = true;
+        rl.center = true;
+        rl.marginTop = 1;
+        rl.marginBottom = 1;
+        rl.spacing = 4;
+        c.setLayout(rl);
+        c.setLayoutData(new GridData(SWT.FILL, SWT.TOP, true, false));
+        rows.add(c);
+        return c;
+    }
+
+    /** A row of radio buttons inside a row. */
+    private static Composite group(Composite parent) {
+        Composite c = new Composite(parent, SWT.NONE);
+        RowLayout rl = new RowLayout(SWT.HORIZONTAL);
+        rl.marginLeft = 0;
+        rl.marginRight = 0;
+        rl.marginTop = 0;
+        rl.marginBottom = 0;
+        rl.spacing = 2;
+        c.setLayout(rl);
+        return c;
+    }
+
+    /** A box for a number of up to {@code chars} characters (its width follows the font). */
+    private Text box(Composite parent, String tip, int chars) {
+        Text t = new Text(parent, SWT.BORDER | SWT.SINGLE);
+        t.setToolTipText(tip);
+        t.setData("chars", chars);
+        boxes.add(t);
+        return t;
+    }
+
+    private Label wrapped() {
+        Label l = new Label(root, SWT.WRAP);
+        GridData gd = new GridData(SWT.FILL, SWT.TOP, true, false);
+        gd.widthHint = 100;
+        gd.exclude = true; // empty: no room taken ({@link #line})
+        l.setLayoutData(gd);
+        l.setVisible(false);
+        return l;
+    }
+
+    /** Shows {@code text} in {@code label} (one of the lines under the view); an empty line takes no room. */
+    void line(Label label, String text) {
+        if (label.getText().equals(text)) {
+            return;
+        }
+        label.setText(text);
+        boolean empty = text.isEmpty();
+        ((GridData) label.getLayoutData()).exclude = empty;
+        label.setVisible(!empty);
+        root.layout(new Control[] {label});
+    }
+
+    private static Button button(Composite parent, String text, String tip) {
+        Button b = new Button(parent, SWT.PUSH);
+        b.setText(text);
+        b.setToolTipText(tip);
+        return b;
+    }
+
+    /** The orientation chosen, in quarter turns. */
+    int quarterTurns() {
+        for (int q = 0; q < 4; q++) {
+            if (turns[q].getSelection()) {
+                return q;
+            }
+        }
+        return 0;
+    }
+
+    /** The part type chosen in the palette. */
+    PartType type() {
+        for (PartType t : PartType.values()) {
+            if (types[t.ordinal()].getSelection()) {
+                return t;
+            }
+        }
+        return PartType.SEGMENT;
+    }
+
+    /** Every control of the tab but the 3D view (to zoom their text, and tests), in order. */
+    List<Control> all() {
+        List<Control> out = new ArrayList<>();
+        for (Composite r : rows) {
+            for (Control c : r.getChildren()) {
+                if (c instanceof Composite box) {
+                    out.addAll(List.of(box.getChildren()));
+                } else {
+                    out.add(c);
+                }
+            }
+        }
+        out.add(fit);
+        out.add(message);
+        return out;
+    }
+
+    /** Brings {@code c} (one of the rows' controls) into sight in the rows' scrolled box. */
+    void reveal(Control c) {
+        for (Control up = c; up != null; up = up.getParent()) {
+            if (up == rowsBox) {
+                scroll.showControl(c);
+                return;
+            }
+        }
+    }
+
+    /**
+     * Lays the tab out again for its size and text: the number boxes as wide as their longest
+     * value, the rows wrapped to the width, and scrolling when they would take more than
+     * {@link #ROWS_SHARE} of the height.
+     */
+    void relayout() {
+        for (Text t : boxes) {
+            if (t.getData("font") != t.getFont()) { // sized for each font (the zoom), not at each layout
+                GC gc = new GC(t);
+                int w = gc.textExtent("0".repeat((Integer) t.getData("chars"))).x;
+                gc.dispose();
+                t.setLayoutData(new RowData(w + 16, SWT.DEFAULT));
+                t.setData("font", t.getFont());
+            }
+        }
+        int width = Math.max(50, root.getClientArea().width);
+        Point want = rowsBox.computeSize(width, SWT.DEFAULT, true);
+        int most = (int) (root.getClientArea().height * ROWS_SHARE);
+        boolean scrolls = want.y > most && most > 0;
+        int inner = scrolls ? width - scroll.getVerticalBar().getSize().x : width;
+        want = rowsBox.computeSize(inner, SWT.DEFAULT, true);
+        rowsBox.setSize(inner, want.y);
+        scroll.setMinHeight(want.y);
+        ((GridData) scroll.getLayoutData()).heightHint = scrolls ? most : want.y;
+        root.layout(true, true);
+        rowsBox.setSize(inner, want.y);
+    }
+}
