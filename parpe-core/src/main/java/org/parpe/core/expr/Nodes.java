@@ -1,5 +1,8 @@
 package org.parpe.core.expr;
 
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
+
 
 /**
  * The node kinds of compiled expressions. Every operator and function checks that its result
@@ -10,11 +13,11 @@ final class Nodes {
     private Nodes() {
     }
 
-    static double finite(double v, String what) {
+    static double finite(double v, Msg what) {
         if (Double.isFinite(v)) {
             return v;
         }
-        throw new EvalException(what + " is not a finite number");
+        throw new EvalException(Msg.NOT_FINITE, Message.of(what));
     }
 
     /** A number. */
@@ -178,24 +181,24 @@ final class Nodes {
 
         static double apply(int op, double a, double b) {
             switch (op) {
-                case ADD: return finite(a + b, "a sum");
-                case SUB: return finite(a - b, "a difference");
-                case MUL: return finite(a * b, "a product");
+                case ADD: return finite(a + b, Msg.A_SUM);
+                case SUB: return finite(a - b, Msg.A_DIFFERENCE);
+                case MUL: return finite(a * b, Msg.A_PRODUCT);
                 case DIV:
                     if (b == 0) {
-                        throw new EvalException("division by zero");
+                        throw new EvalException(Msg.DIVISION_BY_ZERO);
                     }
-                    return finite(a / b, "a quotient");
+                    return finite(a / b, Msg.A_QUOTIENT);
                 case MOD:
                     if (b == 0) {
-                        throw new EvalException("remainder of a division by zero");
+                        throw new EvalException(Msg.REMAINDER_BY_ZERO);
                     }
                     return a % b;
                 case POW:
                     double pw = Math.pow(a, b);
                     if (!Double.isFinite(pw)) {
-                        throw new EvalException(org.parpe.core.lang.Numbers.brief(a) + "^" + org.parpe.core.lang.Numbers.brief(b)
-                                + " is not a finite number");
+                        throw new EvalException(Msg.NOT_FINITE,
+                                org.parpe.core.lang.Numbers.brief(a) + "^" + org.parpe.core.lang.Numbers.brief(b));
                     }
                     return pw;
                 case LT: return a < b ? 1 : 0;
@@ -305,7 +308,7 @@ final class Nodes {
             if (Double.isFinite(v)) {
                 return v;
             }
-            throw new EvalException(f.label() + " of " + org.parpe.core.lang.Numbers.brief(x) + " is not a finite number");
+            throw new EvalException(Msg.FUNCTION_NOT_FINITE, f.label(), org.parpe.core.lang.Numbers.brief(x));
         }
     }
 
@@ -341,7 +344,7 @@ final class Nodes {
             for (Node n : args) {
                 s += n.eval(c);
             }
-            return finite(s, "sum()");
+            return finite(s, Msg.SUM_CALL);
         }
     }
 

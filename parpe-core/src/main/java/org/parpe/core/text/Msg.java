@@ -1,0 +1,272 @@
+package org.parpe.core.text;
+
+import java.util.Locale;
+
+/**
+ * The keys of PARPE's messages: the loader's diagnostics, expression errors, run-time errors and
+ * warnings, and the export's. Each constant is a key of {@code Messages.properties} (English) and
+ * of its translations beside it; {@code MessagesTest} fails on a key missing from a bundle, on a
+ * bundle key without a constant here, on a constant no code uses and on placeholders that differ
+ * from the English ones.
+ */
+public enum Msg implements Key {
+    // Names.suggest
+    DID_YOU_MEAN,
+
+    // Attrs
+    TAKES_NO_ATTRIBUTES,
+    ALLOWED_ATTRIBUTES,
+    UNKNOWN_ATTRIBUTE,
+    NEEDS_ATTRIBUTE,
+    NO_TEXT_INSIDE,
+    NO_ELEMENTS_INSIDE,
+    INVALID_NAME,
+    RESERVED_NAME,
+
+    // Assembly
+    NO_SCRIPT_YET,
+    NOT_A_SCRIPT_HARDWARE,
+    NOT_A_SCRIPT_ROBOT_CONFIG,
+    NOT_A_SCRIPT_WORLD,
+    UNKNOWN_SECTION,
+    DID_YOU_MEAN_ELEMENT,
+    SECTIONS_ARE,
+    SECTION_TWICE,
+    CANNOT_INCLUDE,
+    CONFINED_TO_FOLDER,
+    CONFINED_TO_FILE,
+    INCLUDE_CYCLE,
+    INCLUDE_TOO_DEEP,
+    CANNOT_READ_INCLUDED,
+    CANNOT_READ_FILE,
+
+    // RobotResolver
+    NO_ROBOT_SECTION,
+    ROBOT_FILE_AND_ELEMENTS,
+    CANNOT_READ_ROBOT_FILE,
+    ROBOT_FILE_ROOT,
+    UNKNOWN_ROBOT_ELEMENT,
+    ROBOT_NEEDS_STRUCTURE,
+    ROBOT_PART_TWICE,
+    EMPTY_ELEMENT_ITEM,
+    MODULE_ID_TOO_LARGE,
+    MODULE_TWICE,
+    ELEMENTS_EMPTY,
+    RANGE_END_NOT_CONSTANT,
+    RANGE_END_NOT_WHOLE,
+    RANGE_END_TOO_LARGE,
+    ALL_IN_STRUCTURE,
+    NOT_AN_ELEMENT,
+    GROUP_DEFINED_LATER,
+    GROUP_NOT_DEFINED,
+    NOT_IMPLEMENTED,
+    DECLARED_TWICE_IN,
+    CARRIER_NOT_IN_STRUCTURE,
+
+    // kinds of names (Msg.kind) and a kind with its name (Msg.named)
+    NAMED,
+    KIND_GROUP,
+    KIND_STATE,
+    KIND_AUTOMATON,
+    KIND_BEHAVIOR,
+    KIND_MACRO,
+    KIND_PARAMETER,
+    KIND_CONTROL,
+    KIND_RADIO_WORD,
+    KIND_SLIDER,
+    KIND_RADIO,
+    KIND_SENSOR,
+    KIND_ACTUATOR,
+
+    // StateResolver, BehaviorResolver, MainResolver
+    ALREADY_DEFINED,
+    DEFINED_AT,
+    AN_EARLIER_PLACE,
+    BAD_INTERP,
+    EMPTY_PLATE_ITEM,
+    BAD_PLATE,
+    LATCH_AND_UNLATCH,
+    EMPTY_ANGLE_ITEM,
+    STATES_AND_ROWS,
+    NEEDS_STATES_OR_ROWS,
+    EMPTY_STATE_ITEM,
+    STATE_NOT_DEFINED,
+    GAIT_TABLE_ROW,
+    TIMES_COUNT,
+    ONE_STATE,
+    N_STATES,
+    BAD_TIME_CONDITION,
+    EMPTY_DURATION,
+    EMPTY_MACRO_ITEM,
+    MACRO_NAME_TAKEN,
+    MACRO_TWICE,
+    AUTOMATON_NOT_DEFINED,
+    BAD_CYCLES,
+    BEHAVIOR_NOT_DEFINED,
+    MACRO_VALUE_MISSING,
+    MACRO_NOT_A_GROUP,
+
+    // Parameter, Declarations
+    PARAMETER_NOT_FINITE,
+    PARAMETER_BELOW_MIN,
+    PARAMETER_ABOVE_MAX,
+    UNKNOWN_PARAMETER,
+    NO_PARAMETERS,
+    PARAMETER_TYPE,
+    NOT_A_PLAIN_NUMBER,
+    MIN_ABOVE_MAX,
+    VALUE_OUT_OF_BOUNDS,
+    CONTROL_NAME_TAKEN,
+    BAD_CONTROL_TYPE,
+    STEP_NOT_POSITIVE,
+    SLIDER_KEYS,
+    RADIO_KEYS,
+    EMPTY_RADIO_ITEM,
+    RADIO_WORD_TWICE,
+    RADIO_VALUE,
+    UNKNOWN_KEY,
+    KEY_COUNT,
+
+    // InstanceChecks, NameRegistry
+    IN_THIS_INVOCATION,
+    GROUPS_OVERLAP,
+    ANGLE_COUNT,
+    ONE_MODULE,
+    N_MODULES,
+    WITH_NOTE,
+    LINE_N,
+    AT_PLACE,
+    LATCHES_WITHOUT_LATCH,
+    UNLATCHES_WITHOUT_LATCH,
+    LOCAL_GROUP_TOO_SMALL,
+    LOCAL_MODULE_WITHOUT_SENSOR,
+    LOCAL_GROUP_WITHOUT_SENSOR,
+    NAME_CLASH,
+
+    // expressions: Lexer, Syntax, ExprCompiler, NameResolver, Channel
+    IN_EXPRESSION,
+    CANNOT_PARSE_EXPRESSION,
+    DOLLAR_ALONE,
+    UNTERMINATED_STRING,
+    SINGLE_EQUALS,
+    SINGLE_AMPERSAND,
+    SINGLE_BAR,
+    NOT_ASCII_DIGIT,
+    UNEXPECTED_CHARACTER,
+    EMPTY_EXPRESSION,
+    VALUE_EXPECTED_BEFORE,
+    UNMATCHED_CLOSE,
+    COMMA_OUTSIDE_CALL,
+    DECIMAL_COMMA,
+    OPERATOR_MISSING,
+    LETTER_O,
+    VALUE_EXPECTED_AFTER,
+    UNCLOSED_OPEN,
+    SUM_NEEDS_ARGUMENT,
+    ONE_ARGUMENT,
+    N_ARGUMENTS,
+    UNKNOWN_FUNCTION,
+    NUMBER_TOO_LARGE,
+    NOT_A_RADIO_WORD,
+    GROUP_MACRO_IN_EXPRESSION,
+    GROUP_IN_EXPRESSION,
+    CONTROL_WITHOUT_DOLLAR,
+    FUNCTION_NOT_CALLED,
+    ONLY_PARAMETERS_HERE,
+    UNKNOWN_NAME,
+    VARIABLE_NOT_HERE,
+    COUNT_WHERE,
+    VARIABLE_WHERE,
+    NAME_WITH_DOLLAR,
+    UNKNOWN_DOLLAR_NAME,
+    SENSORS_NOT_HERE,
+    MODULE_NOT_IN_ROBOT,
+    MODULE_WITHOUT_SENSOR,
+    LOCAL_SENSOR_NOT_HERE,
+    ANGLE_NO_ARGUMENT,
+    ACCEL_NEEDS_AXIS,
+    TOUCH_NEEDS_SIDE,
+    DOCK_NEEDS_PLATE,
+
+    // XmlReader
+    NO_DOCTYPE,
+    MALFORMED_XML_UNKNOWN,
+    MALFORMED_XML,
+    QUOTE_THE_VALUE,
+
+    // run time: Nodes, Functions, Engine, InstanceRun, ScriptRuntimeError, PlatesByHand, Run
+    NOT_FINITE,
+    A_SUM,
+    A_DIFFERENCE,
+    A_PRODUCT,
+    A_QUOTIENT,
+    SUM_CALL,
+    DIVISION_BY_ZERO,
+    REMAINDER_BY_ZERO,
+    FUNCTION_NOT_FINITE,
+    MOD_BY_ZERO,
+    VALUE_NOT_FINITE,
+    AT_TIME,
+    NEGATIVE_DURATION,
+    TOTAL_DURATION,
+    PERIOD_NOT_POSITIVE,
+    NO_POSITIVE_DURATION,
+    TOO_MANY_TRANSITIONS,
+    INSTANCES_OVERLAP,
+    ARMS_BY_HAND,
+    RELEASES_BY_HAND,
+    JOIN_BY_HAND,
+    PART_BY_HAND,
+    WHILE_CLOSING,
+
+    // export: CExport, MemoryReport
+    EXPORT_NEEDS_MAIN,
+    TICK_NOT_POSITIVE,
+    NAME_TOO_LONG_FOR_C,
+    TABLES_TOO_LARGE,
+    TOO_LITTLE_RAM,
+    TOO_LITTLE_FLASH,
+    TICK_TOO_SLOW,
+    EXPORT_ARMS_PLATES,
+    EXPORT_RELEASES_PLATES,
+    FLOAT_CLOCK_WAVE,
+
+    // InputFiles (exception texts, formatted when thrown)
+    IS_A_DIRECTORY,
+    NO_SUCH_FILE,
+    NOT_A_REGULAR_FILE,
+    PERMISSION_DENIED,
+    NOT_UTF8,
+    FILE_TOO_LARGE,
+    N_BYTES,
+    MORE_THAN_BYTES;
+
+    /** The bundle of these keys. */
+    public static final String BUNDLE = "org.parpe.core.text.Messages";
+
+    @Override
+    public String bundle() {
+        return BUNDLE;
+    }
+
+    /**
+     * The word for a kind of name as the loader names it internally ({@code group},
+     * {@code radio word}, {@code sensor}, ...): {@code KIND_GROUP}, {@code KIND_RADIO_WORD}, ...
+     */
+    public static Message kind(String kind) {
+        return Message.of(valueOf("KIND_" + kind.toUpperCase(Locale.ROOT).replace(' ', '_')));
+    }
+
+    /** A kind of name with the name: {@code group 'legs'}. */
+    public static Message named(String kind, String name) {
+        return Message.of(NAMED, kind(kind), name);
+    }
+
+    /**
+     * {@code " (defined at PLACE)"} where a definition is reported at {@code anchor} (the include
+     * that brought it in) rather than at its own {@code place}; no text without an anchor.
+     */
+    public static Message definedAt(Object anchor, Object place) {
+        return anchor == null ? Message.EMPTY : Message.of(DEFINED_AT, place);
+    }
+}
