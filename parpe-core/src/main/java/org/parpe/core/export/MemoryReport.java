@@ -107,10 +107,8 @@ public record MemoryReport(Board board, long stateBytes, long boardBytes, long r
     /** The report printed by {@code parpe export}. */
     public String format() {
         if (board == Board.HOST) {
-            return "memory (host): " + stateBytes + " bytes of state, " + flashBytes + " bytes of code and tables (estimate)";
+            return Msg.MEMORY_HOST.text(stateBytes, flashBytes);
         }
-        return "memory (" + board.word() + ", estimate): RAM " + ramBytes + " of " + board.ram() + " bytes (state "
-                + stateBytes + ", board code " + boardBytes + "), flash " + flashBytes + " of " + board.flash()
-                + " bytes";
+        return Msg.MEMORY_BOARD.text(board.word(), ramBytes, board.ram(), stateBytes, boardBytes, flashBytes, board.flash());
     }
 }

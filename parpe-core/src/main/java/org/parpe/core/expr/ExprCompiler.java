@@ -105,11 +105,11 @@ public final class ExprCompiler {
                     stack.add(fold(function(((FunctionToken) t).getFunction(), stack)));
                     break;
                 default:
-                    throw new IllegalStateException("unexpected token in RPN");
+                    throw new IllegalStateException(Msg.UNEXPECTED_TOKEN.text());
             }
         }
         if (stack.size() != 1) {
-            throw new IllegalStateException("malformed expression");
+            throw new IllegalStateException(Msg.MALFORMED_EXPRESSION.text());
         }
         return stack.get(0);
     }

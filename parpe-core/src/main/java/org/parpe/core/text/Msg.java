@@ -146,6 +146,8 @@ public enum Msg implements Key {
     // expressions: Lexer, Syntax, ExprCompiler, NameResolver, Channel
     IN_EXPRESSION,
     CANNOT_PARSE_EXPRESSION,
+    UNEXPECTED_TOKEN,
+    MALFORMED_EXPRESSION,
     DOLLAR_ALONE,
     UNTERMINATED_STRING,
     SINGLE_EQUALS,
@@ -230,6 +232,8 @@ public enum Msg implements Key {
     EXPORT_ARMS_PLATES,
     EXPORT_RELEASES_PLATES,
     FLOAT_CLOCK_WAVE,
+    MEMORY_HOST,
+    MEMORY_BOARD,
 
     // InputFiles (exception texts, formatted when thrown)
     IS_A_DIRECTORY,
