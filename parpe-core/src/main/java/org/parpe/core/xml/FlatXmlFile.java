@@ -1,5 +1,8 @@
 package org.parpe.core.xml;
 
+import org.parpe.core.text.Key;
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 import com.ctc.wstx.exc.WstxLazyException;
 import java.io.IOException;
 import java.io.InputStream;
@@ -64,7 +67,7 @@ public final class FlatXmlFile {
      * &lt;hardware&gt; element with &lt;servo&gt; elements"). Read errors and a wrong root are
      * reported; then {@link #root()} is null.
      */
-    public static FlatXmlFile read(Path path, String what, String root, String expected, DiagnosticSink diags) {
+    public static FlatXmlFile read(Path path, Message what, String root, Message expected, DiagnosticSink diags) {
         FlatXmlFile f = new FlatXmlFile(path.toString(), diags);
         try (InputStream in = InputFiles.open(path)) {
             XMLStreamReader2 r = (XMLStreamReader2) FACTORY.createXMLStreamReader(in);
@@ -81,7 +84,7 @@ public final class FlatXmlFile {
             f.notWellFormed((XMLStreamException) e.getCause());
             f.rootAt = null;
         } catch (IOException e) {
-            f.error(f.start(), "cannot read the " + what + ": " + e.getMessage());
+            f.error(f.start(), Msg.CANNOT_READ_THE, what, e.getMessage());
             f.rootAt = null;
         }
         return f;
@@ -104,7 +107,7 @@ public final class FlatXmlFile {
         if (l != null && l.getLineNumber() > 0) {
             at = pos(l);
         }
-        error(at == null ? start() : at, "not well-formed XML: " + message);
+        error(at == null ? start() : at, Msg.NOT_WELL_FORMED, message);
     }
 
     /** Where the root element starts; null when the file could not be read or has another root. */
@@ -132,9 +135,9 @@ public final class FlatXmlFile {
         return ok;
     }
 
-    /** Reports an error at {@code at}; {@link #ok} turns false. */
-    public void error(SourcePos at, String message) {
-        diags.error(at, message);
+    /** Reports an error at {@code at}, the text of {@code key} with {@code args}; {@link #ok} turns false. */
+    public void error(SourcePos at, Key key, Object... args) {
+        diags.error(at, key, args);
         ok = false;
         errors++;
     }
@@ -149,8 +152,7 @@ public final class FlatXmlFile {
         boolean good = true;
         for (String k : a.keySet()) {
             if (!allowed.contains(k)) {
-                error(at, "<" + element + "> has no attribute '" + k + "'; it takes "
-                        + String.join(", ", allowed.stream().sorted().toList()));
+                error(at, Msg.HAS_NO_ATTRIBUTE, element, k, String.join(", ", allowed.stream().sorted().toList()));
                 good = false;
             }
         }
@@ -162,7 +164,7 @@ public final class FlatXmlFile {
         boolean good = true;
         for (String k : keys) {
             if (!a.containsKey(k) || a.get(k).isEmpty()) {
-                error(at, "<" + element + "> needs the attribute '" + k + "'");
+                error(at, Msg.NEEDS_THE_ATTRIBUTE, element, k);
                 good = false;
             }
         }
@@ -182,11 +184,11 @@ public final class FlatXmlFile {
         }
         Double d = Numbers.parsePlain(v);
         if (d == null || whole && d != Math.rint(d)) {
-            error(at, key + " must be " + (whole ? "a whole number" : "a number") + ", got '" + v + "'");
+            error(at, whole ? Msg.MUST_BE_WHOLE : Msg.MUST_BE_NUMBER, key, v);
             return fallback;
         }
         if (d < lo || d > hi) {
-            error(at, key + " must be in " + plain(lo) + ".." + plain(hi) + ", got " + v);
+            error(at, Msg.MUST_BE_IN_RANGE, key, plain(lo), plain(hi), v);
             return fallback;
         }
         return d;
@@ -197,27 +199,25 @@ public final class FlatXmlFile {
         return d == Math.rint(d) ? String.valueOf((long) d) : String.format(Locale.ROOT, "%.2f", d);
     }
 
-    private void document(XMLStreamReader2 r, String what, String root, String expected) throws XMLStreamException {
+    private void document(XMLStreamReader2 r, Message what, String root, Message expected) throws XMLStreamException {
         int ev = r.next();
         while (ev != XMLStreamConstants.START_ELEMENT && ev != XMLStreamConstants.END_DOCUMENT) {
             if (ev == XMLStreamConstants.DTD) {
                 // as XmlReader says for scripts: the parser reads no DTD, so its entities would
                 // only be "undeclared" later on; say what is refused, where it is
-                error(here(r), "DOCTYPE declarations are not allowed in a " + what
-                        + " (their entities, external files among them, are never read)");
+                error(here(r), Msg.NO_DOCTYPE_IN, what);
                 return;
             }
             ev = r.next();
         }
         if (ev != XMLStreamConstants.START_ELEMENT) {
-            error(start(), "expected " + expected);
+            error(start(), Msg.EXPECTED_ROOT, expected);
             return;
         }
         SourcePos at = here(r);
         String rootName = r.getLocalName();
         if (!root.equals(rootName)) {
-            error(at, "<" + rootName + "> is not a " + what + ("program".equals(rootName) ? " but a PARSL script" : "")
-                    + "; expected " + expected);
+            error(at, "program".equals(rootName) ? Msg.NOT_THIS_KIND_BUT_SCRIPT : Msg.NOT_THIS_KIND, rootName, what, expected);
             return;
         }
         rootAt = at;
@@ -267,8 +267,12 @@ public final class FlatXmlFile {
         // without attributes and elements the element is text only: the text is placed at the element
         boolean bare = attrs.isEmpty() && inner.stream().allMatch(java.util.Objects::isNull);
         for (int i = 0; i < places.size(); i++) {
-            error(inner.get(i) != null ? places.get(i) : bare ? at : places.get(i),
-                    "<" + name + "> may not contain " + (inner.get(i) == null ? "text" : "<" + inner.get(i) + ">"));
+            SourcePos where = inner.get(i) != null ? places.get(i) : bare ? at : places.get(i);
+            if (inner.get(i) == null) {
+                error(where, Msg.MAY_NOT_CONTAIN_TEXT, name);
+            } else {
+                error(where, Msg.MAY_NOT_CONTAIN_ELEMENT, name, inner.get(i));
+            }
         }
         children.add(new Element(name, attrs, at));
     }
@@ -294,7 +298,7 @@ public final class FlatXmlFile {
 
         void reportIfAny(String element) {
             if (first != null) {
-                error(first, "<" + element + "> may not contain text");
+                error(first, Msg.MAY_NOT_CONTAIN_TEXT, element);
             }
         }
     }

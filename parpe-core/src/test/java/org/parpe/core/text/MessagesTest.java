@@ -107,9 +107,21 @@ class MessagesTest {
                 "expr/Names.java", "expr/Nodes.java", "expr/Functions.java", "expr/EvalException.java",
                 "xml/XmlReader.java", "xml/InputFiles.java", "run/InstanceRun.java", "run/PlatesByHand.java",
                 "run/ScriptRuntimeError.java", "run/Engine.java", "export/CExport.java", "export/MemoryReport.java",
-                "model/Parameter.java", "sensor/Channel.java", "diag/Diagnostic.java")) {
+                "model/Parameter.java", "sensor/Channel.java", "diag/Diagnostic.java", "xml/FlatXmlFile.java",
+                "run/TargetException.java")) {
             files.add(core.resolve(f));
         }
+        // the simulator's and the servo buses' file readers and targets (their other messages are still English)
+        Path sim = ROOT.resolve("parpe-sim/src/main/java/org/parpe/sim");
+        for (String f : List.of("config/ConfigReader.java", "config/GeneratorArgs.java", "config/RobotConfigs.java",
+                "config/Kit.java", "internal/ConfigCheck.java", "internal/Placement.java", "internal/Overlaps.java",
+                "world/WorldReader.java", "world/Scenery.java", "world/Movables.java", "world/ScoringReader.java",
+                "world/ChallengeReader.java")) {
+            files.add(sim.resolve(f));
+        }
+        Path serial = ROOT.resolve("parpe-serial/src/main/java/org/parpe/serial");
+        files.add(serial.resolve("servo/profile/ProfileReader.java"));
+        files.add(serial.resolve("servo/run/ServoTarget.java"));
         return files.stream();
     }
 

@@ -70,9 +70,8 @@ public final class RobotConfigs {
             default -> null;
         };
         if (config == null) {
-            diags.error(new SourcePos("--sim " + spec, 1, 1), "unknown robot '" + name + "'; expected one of "
-                    + String.join(", ", GENERATORS) + " or a configuration file ending in .xml"
-                    + Names.suggest(name, GENERATORS));
+            diags.error(new SourcePos("--sim " + spec, 1, 1), org.parpe.core.text.Msg.UNKNOWN_ROBOT, name,
+                    String.join(", ", GENERATORS), Names.suggest(name, GENERATORS));
             return null;
         }
         return args.finish(name) ? config : null;
