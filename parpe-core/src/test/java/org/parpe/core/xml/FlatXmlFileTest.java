@@ -22,7 +22,8 @@ class FlatXmlFileTest {
     private FlatXmlFile read(String text, DiagnosticList d) throws Exception {
         Path f = dir.resolve("f.xml");
         Files.writeString(f, text);
-        return FlatXmlFile.read(f, "thing list", "things", "a <things> element with <thing> elements", d);
+        return FlatXmlFile.read(f, org.parpe.core.text.Message.verbatim("thing list"), "things",
+                org.parpe.core.text.Message.verbatim("a <things> element with <thing> elements"), d);
     }
 
     private static List<String> lines(DiagnosticList d) {
