@@ -377,7 +377,10 @@ public enum Msg implements Key {
 
     // simulator: building the robot
     CANNOT_BUILD_ROBOT_ONE,
-    CANNOT_BUILD_ROBOT;
+    CANNOT_BUILD_ROBOT,
+
+    // simulator: the script and the robot
+    ROBOT_LACKS_MODULES;
 
     /** The bundle of these keys. */
     public static final String BUNDLE = "org.parpe.core.text.Messages";

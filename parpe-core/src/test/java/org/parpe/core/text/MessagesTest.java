@@ -78,7 +78,8 @@ class MessagesTest {
             Matcher m = Pattern.compile("\"((?:[^\"\\\\\\n]|\\\\.)*)\"").matcher(text);
             while (m.find()) {
                 String s = m.group(1);
-                if (PROSE.matcher(s).find() && !ALLOWED.contains(s)) {
+                // a literal with a backslash escape is a pattern (the parser's place note), not prose
+                if (PROSE.matcher(s).find() && !ALLOWED.contains(s) && !s.contains("\\\\")) {
                     found.add(p.getFileName() + ": \"" + s + "\"");
                 }
             }
@@ -95,7 +96,8 @@ class MessagesTest {
             "PARSL evaluates its own node tree",       // an exp4j callback PARPE never calls (internal)
             "Message:",                                // a marker in the XML parser's own message
             "ParseError at [",                         // the same
-            "Expected a quote");                       // words of the XML parser's message, matched
+            "Expected a quote",                        // words of the XML parser's message, matched
+            "simulated robot ");                       // a place, as "bus /dev/ttyUSB0": places stay as they are
 
     private static Stream<Path> converted() throws IOException {
         Path core = ROOT.resolve("parpe-core/src/main/java/org/parpe/core");

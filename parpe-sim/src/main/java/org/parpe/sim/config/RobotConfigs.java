@@ -91,8 +91,8 @@ public final class RobotConfigs {
             }
         }
         if (missing > 0) {
-            diags.warning(SourcePos.origin("simulated robot " + config.name()), "it has no module " + list
-                    + " of the script (it has " + have.length + " modules); commands to them are ignored");
+            diags.warning(SourcePos.origin("simulated robot " + config.name()), org.parpe.core.text.Msg.ROBOT_LACKS_MODULES,
+                    list, have.length);
         }
         return missing;
     }
