@@ -162,8 +162,8 @@ public final class Main implements Runnable {
         if (!Lang.current().equals(Locale.ENGLISH)) {
             cl.setResourceBundle(Message.bundle(HELP, Lang.current()));
         }
-        cl.setOut(new PrintWriter(new java.io.OutputStreamWriter(out, terminal), true));
-        cl.setErr(new PrintWriter(new java.io.OutputStreamWriter(err, terminal), true));
+        cl.setOut(new PrintWriter(out, true, terminal));
+        cl.setErr(new PrintWriter(err, true, terminal));
         cl.setExecutionExceptionHandler(Main::failed);
         cl.setExecutionStrategy(Main::executeMatched);
         cl.setParameterExceptionHandler((ex, args2) -> {
@@ -232,7 +232,7 @@ public final class Main implements Runnable {
 
     /** Reports a failure of PARPE itself: one line for the user, the details in a file. */
     static int internalError(Throwable ex, PrintStream err) {
-        PrintWriter w = new PrintWriter(new java.io.OutputStreamWriter(err, terminal), true);
+        PrintWriter w = new PrintWriter(err, true, terminal);
         int code = internalError(ex, w);
         w.flush();
         return code;
