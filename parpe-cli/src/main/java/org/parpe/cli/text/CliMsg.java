@@ -37,7 +37,33 @@ public enum CliMsg implements Key {
     PARAM_NOT_A_NUMBER,
     TICK_OUT_OF_RANGE,
     DURATION_NEGATIVE,
-    TOO_MANY_TICKS;
+    TOO_MANY_TICKS,
+
+    // export
+    CANNOT_WRITE,
+    BAD_TARGET,
+    TARGET_NEEDS_SCRIPT,
+    ROBOT_OPTIONS_ONLY,
+    TARGET_NEEDS_ROBOT,
+    BOARD_OPTIONS_ONLY,
+    EXPORT_DURATION,
+    GAIT_NEEDS_SCRIPT,
+    BAD_BOARD,
+    HOST_IS_FOR_C,
+    SKETCH_OPTIONS_ONLY,
+    WROTE_FILES,
+    BUILD_WITH,
+    BAD_SERVO,
+    PINS_FOR_PWM,
+    BAD_PIN,
+    BAD_BAUD,
+    MODEL_FOR_BUS,
+    MODEL_NOT_OF_SERVO,
+    SKETCH_SENSORS,
+    PIN_COUNT,
+    TOO_MANY_PWM,
+    MODULE_NOT_SERVO_ID,
+    SKETCH_TICK;
 
     /** The bundle of these keys. */
     public static final String BUNDLE = "org.parpe.cli.text.CliMessages";

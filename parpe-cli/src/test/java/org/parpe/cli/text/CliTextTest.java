@@ -128,7 +128,8 @@ class CliTextTest {
         List<String> found = new ArrayList<>();
         Path cli = Path.of("src/main/java/org/parpe/cli");
         for (String f : List.of("Main.java", "CheckCommand.java", "RunCommand.java", "Inputs.java", "ParamValues.java",
-                "ClockOptions.java", "Progress.java")) {
+                // (ArduinoSketch's one message is converted; its other literals are the sketch's C code)
+                "ClockOptions.java", "Progress.java", "export/ExportCommand.java", "export/SketchOptions.java")) {
             String text = withoutAnnotations(read(cli.resolve(f)).replaceAll("(?s)/\\*.*?\\*/", "").replaceAll("(?m)//.*$", ""));
             Matcher m = Pattern.compile("\"((?:[^\"\\\\\\n]|\\\\.)*)\"").matcher(text);
             while (m.find()) {
