@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.stream.Stream;
+import org.parpe.cli.text.CliMsg;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.xml.InputFiles;
@@ -30,7 +31,8 @@ import picocli.CommandLine.Model.CommandSpec;
 @Command(name = "check", mixinStandardHelpOptions = true, description = "Check PARSL scripts; errors are printed as FILE:LINE:COL."
         + " A folder checks the .xml and .parsl files directly in it.")
 final class CheckCommand implements Callable<Integer> {
-    @Parameters(arity = "1..*", paramLabel = "FILE|DIR", description = "PARSL scripts, or folders of them, to check.")
+    @Parameters(arity = "1..*", paramLabel = "FILE|DIR", descriptionKey = "files",
+            description = "PARSL scripts, or folders of them, to check.")
     List<Path> files;
 
     @Spec
@@ -47,7 +49,7 @@ final class CheckCommand implements Callable<Integer> {
             }
             List<Path> inside = scriptsIn(f);
             if (inside.isEmpty()) {
-                spec.commandLine().getErr().println("parpe: the folder '" + f + "' has no .xml or .parsl scripts");
+                spec.commandLine().getErr().println("parpe: " + CliMsg.EMPTY_FOLDER.text(f));
                 code = 2;
             }
             scripts.addAll(inside);
@@ -70,10 +72,9 @@ final class CheckCommand implements Callable<Integer> {
             }
             if (r.program() == null) {
                 code = Math.max(code, 1);
-                spec.commandLine().getErr().println(f + ": " + r.errors().size()
-                        + (r.errors().size() == 1 ? " error" : " errors"));
+                spec.commandLine().getErr().println(f + ": " + errors(r.errors().size()));
             } else {
-                spec.commandLine().getOut().println(f + ": ok");
+                spec.commandLine().getOut().println(f + ": " + CliMsg.OK.text());
             }
         }
         return code;
@@ -96,12 +97,16 @@ final class CheckCommand implements Callable<Integer> {
         }
         found.all().forEach(d -> spec.commandLine().getErr().println(d.format()));
         if (found.hasErrors()) {
-            spec.commandLine().getErr().println(f + ": " + found.errorCount()
-                    + (found.errorCount() == 1 ? " error" : " errors"));
+            spec.commandLine().getErr().println(f + ": " + errors(found.errorCount()));
             return 1;
         }
-        spec.commandLine().getOut().println(f + ": ok (challenge)");
+        spec.commandLine().getOut().println(f + ": " + CliMsg.OK_CHALLENGE.text());
         return 0;
+    }
+
+    /** {@code 1 error}, {@code 3 errors}: the summary of a file that does not load. */
+    private static String errors(long n) {
+        return (n == 1 ? CliMsg.ONE_ERROR : CliMsg.N_ERRORS).text(n);
     }
 
     private List<Path> scriptsIn(Path dir) {

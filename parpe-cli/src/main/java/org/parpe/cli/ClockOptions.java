@@ -1,5 +1,6 @@
 package org.parpe.cli;
 
+import org.parpe.cli.text.CliMsg;
 import org.parpe.core.lang.Numbers;
 
 /**
@@ -20,19 +21,17 @@ public final class ClockOptions {
     /** Checks a tick and an optional duration (seconds); the problem names the value and the bound. */
     public static void check(double tick, Double duration) throws UsageException {
         if (!(tick >= MIN_TICK && tick <= MAX_TICK)) {
-            throw new UsageException("--tick must be within [" + Numbers.format(MIN_TICK) + ", "
-                    + Numbers.format(MAX_TICK) + "] seconds, got " + tick);
+            throw new UsageException(CliMsg.TICK_OUT_OF_RANGE.text(Numbers.format(MIN_TICK), Numbers.format(MAX_TICK), tick));
         }
         if (duration == null) {
             return;
         }
         if (!(duration >= 0)) {
-            throw new UsageException("--duration must be >= 0 seconds, got " + duration);
+            throw new UsageException(CliMsg.DURATION_NEGATIVE.text(duration));
         }
         if (duration / tick > MAX_TICKS) {
-            throw new UsageException("--duration " + Numbers.brief(duration) + " at --tick " + Numbers.brief(tick)
-                    + " is " + Numbers.brief(duration / tick) + " ticks; a run may take at most "
-                    + Numbers.format(MAX_TICKS) + " ticks");
+            throw new UsageException(CliMsg.TOO_MANY_TICKS.text(Numbers.brief(duration), Numbers.brief(tick),
+                    Numbers.brief(duration / tick), Numbers.format(MAX_TICKS)));
         }
     }
 }

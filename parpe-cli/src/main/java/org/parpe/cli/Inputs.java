@@ -2,6 +2,7 @@ package org.parpe.cli;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import org.parpe.cli.text.CliMsg;
 import org.parpe.core.xml.InputFiles;
 
 /** Checks of the input files named on the command line, made before anything is loaded. */
@@ -18,7 +19,7 @@ public final class Inputs {
         try {
             InputFiles.check(file);
         } catch (IOException e) {
-            throw new UsageException("cannot read '" + file + "': " + e.getMessage());
+            throw new UsageException(CliMsg.CANNOT_READ.text(file, e.getMessage()));
         }
     }
 
@@ -30,7 +31,7 @@ public final class Inputs {
         try {
             InputFiles.checkKind(file);
         } catch (IOException e) {
-            throw new UsageException("cannot read '" + file + "': " + e.getMessage());
+            throw new UsageException(CliMsg.CANNOT_READ.text(file, e.getMessage()));
         }
     }
 
@@ -44,7 +45,7 @@ public final class Inputs {
         try {
             text = InputFiles.readText(stimulus);
         } catch (IOException e) {
-            throw new UsageException("cannot read stimulus file '" + stimulus + "': " + e.getMessage());
+            throw new UsageException(CliMsg.CANNOT_READ_STIMULUS.text(stimulus, e.getMessage()));
         }
         try {
             return org.parpe.core.run.StimulusParser.parse(stimulus.toString(), text, program);

@@ -3,11 +3,17 @@ package org.parpe.cli;
 import java.io.PrintStream;
 import java.io.PrintWriter;
 import java.nio.file.Path;
+import java.util.Locale;
+import java.util.function.UnaryOperator;
 import org.parpe.cli.bench.BenchCommand;
+import org.parpe.cli.text.CliMsg;
 import org.parpe.core.expr.Names;
 import org.parpe.core.io.CrashReport;
+import org.parpe.core.text.Lang;
+import org.parpe.core.text.Message;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
 
 /** The {@code parpe} command line: checks and runs PARSL scripts headless. */
 @Command(name = "parpe", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
@@ -39,6 +45,18 @@ public final class Main implements Runnable {
     /** The exit code of a failure of PARPE itself, distinct from a script's run-time error (3). */
     public static final int INTERNAL_ERROR = 4;
 
+    /** The encoding of the streams picocli writes to: the JVM's, or UTF-8 after {@link #utf8Terminal}. */
+    private static java.nio.charset.Charset terminal = java.nio.charset.Charset.defaultCharset();
+
+    /** The bundle of the help texts in German, Spanish and Japanese (English is in the annotations). */
+    public static final String HELP = "org.parpe.cli.text.Help";
+
+    /** Every command takes it: picocli lists it; {@link #execute} has read it before picocli parses. */
+    @Option(names = "--lang", paramLabel = "CODE", scope = CommandLine.ScopeType.INHERIT,
+            description = "Language of messages and help: en, de, es or ja (default: from LC_ALL, LC_MESSAGES or LANG;"
+                    + " English if none names one of them).")
+    String lang;
+
     static {
         // Plots are drawn with AWT into images; the command line never opens a window, so AWT
         // must not load its X11 toolkit even where a display is set (and X libraries are absent).
@@ -55,7 +73,34 @@ public final class Main implements Runnable {
 
     /** Runs the command line and exits with its code. */
     public static void main(String[] args) {
+        utf8Terminal(System::getenv);
         System.exit(execute(args, System.out, System.err));
+    }
+
+    /**
+     * Writes UTF-8 to standard output and error when the locale variables name a UTF-8 locale
+     * ({@code LC_ALL}, else {@code LC_CTYPE}, else {@code LANG}) but Java chose another encoding:
+     * the JVM falls back to ASCII where the named locale is not installed (a fresh container with
+     * {@code LANG=de_DE.UTF-8}), and would print umlauts and Japanese as {@code ?}.
+     */
+    static void utf8Terminal(UnaryOperator<String> env) {
+        terminal = java.nio.charset.Charset.defaultCharset();
+        String chosen = null;
+        for (String v : new String[] {"LC_ALL", "LC_CTYPE", "LANG"}) {
+            String value = env.apply(v);
+            if (value != null && !value.isEmpty()) {
+                chosen = value.toLowerCase(Locale.ROOT);
+                break;
+            }
+        }
+        if (chosen != null && (chosen.contains("utf-8") || chosen.contains("utf8"))
+                && !java.nio.charset.Charset.defaultCharset().equals(java.nio.charset.StandardCharsets.UTF_8)) {
+            System.setOut(new PrintStream(new java.io.FileOutputStream(java.io.FileDescriptor.out), true,
+                    java.nio.charset.StandardCharsets.UTF_8));
+            System.setErr(new PrintStream(new java.io.FileOutputStream(java.io.FileDescriptor.err), true,
+                    java.nio.charset.StandardCharsets.UTF_8));
+            terminal = java.nio.charset.StandardCharsets.UTF_8;
+        }
     }
 
     /** {@code --version}: PARPE's version from the build. */
@@ -68,35 +113,76 @@ public final class Main implements Runnable {
 
     /** Runs the command line with the given streams; returns the exit code. */
     public static int execute(String[] args, PrintStream out, PrintStream err) {
+        return execute(args, out, err, System::getenv);
+    }
+
+    /**
+     * Runs the command line with the given streams in the language that {@code --lang} or the
+     * environment {@code env} chooses ({@link Lang}); returns the exit code. The language is the
+     * process's until the command ends.
+     */
+    public static int execute(String[] args, PrintStream out, PrintStream err, UnaryOperator<String> env) {
         // Without the IDE (the command-line jar alone), `parpe` with no arguments prints the usage.
         if (Ide.wanted(args) && (args.length > 0 || Ide.present())) {
             return Ide.open(args, err);
         }
+        Locale before = Lang.current();
+        try {
+            Lang.use(Lang.fromEnvironment(env));
+            String code = langOption(args);
+            if (code != null) {
+                Locale chosen = Lang.parse(code);
+                if (chosen == null) {
+                    err.println("parpe: " + CliMsg.UNKNOWN_LANGUAGE.text(code, Lang.codes()));
+                    return 2;
+                }
+                Lang.use(chosen);
+            }
+            return executeIn(args, out, err);
+        } finally {
+            Lang.use(before);
+        }
+    }
+
+    /** The value of {@code --lang CODE} or {@code --lang=CODE} before any {@code --}; null without one. */
+    static String langOption(String[] args) {
+        for (int i = 0; i < args.length && !args[i].equals("--"); i++) {
+            if (args[i].equals("--lang")) {
+                return i + 1 < args.length ? args[i + 1] : "";
+            }
+            if (args[i].startsWith("--lang=")) {
+                return args[i].substring("--lang=".length());
+            }
+        }
+        return null;
+    }
+
+    private static int executeIn(String[] args, PrintStream out, PrintStream err) {
         CommandLine cl = new CommandLine(new Main());
-        cl.setOut(new PrintWriter(out, true));
-        cl.setErr(new PrintWriter(err, true));
+        if (!Lang.current().equals(Locale.ENGLISH)) {
+            cl.setResourceBundle(Message.bundle(HELP, Lang.current()));
+        }
+        cl.setOut(new PrintWriter(out, true, terminal));
+        cl.setErr(new PrintWriter(err, true, terminal));
         cl.setExecutionExceptionHandler(Main::failed);
         cl.setExecutionStrategy(Main::executeMatched);
         cl.setParameterExceptionHandler((ex, args2) -> {
             String command = unknownCommand(ex, cl);
             if (command != null) {
-                err.println("parpe: unknown command '" + command + "'" + Names.suggest(command,
-                        cl.getSubcommands().keySet()) + "; commands are " + String.join(", ", cl.getSubcommands().keySet())
-                        + " and gui");
+                err.println("parpe: " + CliMsg.UNKNOWN_COMMAND.text(command, Names.suggest(command, cl.getSubcommands().keySet()),
+                        String.join(", ", cl.getSubcommands().keySet())));
             } else {
                 err.println("parpe: " + ex.getMessage());
                 CommandLine.UnmatchedArgumentException.printSuggestions(ex, err);
             }
-            err.println("Try 'parpe " + (ex.getCommandLine() == cl ? "" : ex.getCommandLine().getCommandName() + " ")
-                    + "--help' for usage.");
+            err.println(CliMsg.TRY_HELP.text(ex.getCommandLine() == cl ? "" : ex.getCommandLine().getCommandName() + " "));
             return 2;
         });
         try {
             return cl.execute(args);
         } catch (OutOfMemoryError e) {
             // inputs are capped at 16 MiB, which loads in well under 1 GiB; a smaller heap may not do
-            err.println("parpe: out of memory with a Java heap of " + (Runtime.getRuntime().maxMemory() >> 20)
-                    + " MiB; allow more with JAVA_TOOL_OPTIONS=-Xmx1g");
+            err.println("parpe: " + CliMsg.OUT_OF_MEMORY.text(Runtime.getRuntime().maxMemory() >> 20));
             return INTERNAL_ERROR;
         }
     }
@@ -146,7 +232,7 @@ public final class Main implements Runnable {
 
     /** Reports a failure of PARPE itself: one line for the user, the details in a file. */
     static int internalError(Throwable ex, PrintStream err) {
-        PrintWriter w = new PrintWriter(err, true);
+        PrintWriter w = new PrintWriter(err, true, terminal);
         int code = internalError(ex, w);
         w.flush();
         return code;
@@ -154,7 +240,7 @@ public final class Main implements Runnable {
 
     private static int internalError(Throwable ex, PrintWriter err) {
         String where = CrashReport.write(Path.of(System.getProperty("java.io.tmpdir")), "running a command", ex);
-        err.println("parpe: internal error: " + ex + "; please attach " + where + " to a bug report");
+        err.println("parpe: " + CliMsg.INTERNAL_ERROR.text(ex, where));
         return INTERNAL_ERROR;
     }
 }

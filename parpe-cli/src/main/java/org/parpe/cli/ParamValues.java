@@ -3,6 +3,7 @@ package org.parpe.cli;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.parpe.cli.text.CliMsg;
 import org.parpe.core.lang.Numbers;
 
 /** The {@code --param NAME=VALUE} options of run, sweep, optimize and export. */
@@ -16,12 +17,12 @@ public final class ParamValues {
         for (String p : params) {
             int eq = p.indexOf('=');
             if (eq <= 0) {
-                throw new UsageException("--param expects NAME=VALUE, got '" + p + "'");
+                throw new UsageException(CliMsg.PARAM_SYNTAX.text(p));
             }
             String name = p.substring(0, eq).trim();
             Double v = Numbers.parsePlain(p.substring(eq + 1));
             if (v == null) {
-                throw new UsageException("parameter '" + name + "' must be a number, got '" + p.substring(eq + 1) + "'");
+                throw new UsageException(CliMsg.PARAM_NOT_A_NUMBER.text(name, p.substring(eq + 1)));
             }
             out.put(name, v);
         }

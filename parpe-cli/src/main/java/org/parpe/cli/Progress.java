@@ -37,7 +37,8 @@ final class Progress implements JointSink {
             return;
         }
         String of = Double.isInfinite(limit) ? "" : String.format(Locale.ROOT, " / %.1f s (%.0f%%)", limit, 100 * t / limit);
-        line.show(String.format(Locale.ROOT, "parpe: t = %.1f s%s, %.1fx real time", t, of, t / ((now - start) / 1e9)));
+        line.show(org.parpe.cli.text.CliMsg.PROGRESS.text(String.format(Locale.ROOT, "%.1f", t), of,
+                String.format(Locale.ROOT, "%.1f", t / ((now - start) / 1e9))));
     }
 
     @Override

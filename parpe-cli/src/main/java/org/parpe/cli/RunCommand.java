@@ -14,6 +14,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import org.parpe.cli.hw.HardwareOptions;
+import org.parpe.cli.text.CliMsg;
 import org.parpe.cli.sim.SimOptions;
 import org.parpe.core.io.OutputPlan;
 import org.parpe.core.load.LoadResult;
@@ -34,9 +35,10 @@ import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code parpe run}: runs a script headless, on the simulator, on hardware, or both (PARSL.md §11). */
-@Command(name = "run", mixinStandardHelpOptions = true, description = "Run a PARSL script. Without --sim or --port only setpoints are computed, as fast as possible.")
+@Command(name = "run", mixinStandardHelpOptions = true,
+        description = "Run a PARSL script. Without --sim or --port only setpoints are computed, as fast as possible.")
 final class RunCommand implements Callable<Integer> {
-    @Parameters(index = "0", paramLabel = "FILE", description = "The PARSL script.")
+    @Parameters(index = "0", paramLabel = "FILE", descriptionKey = "file", description = "The PARSL script.")
     Path file;
 
     @Option(names = "--duration", paramLabel = "SECONDS", description = "Stop after this much simulated time (default: when <main> ends).")
@@ -90,7 +92,7 @@ final class RunCommand implements Callable<Integer> {
         }
         Program program = r.program();
         if (program.main() == null) {
-            err.println(file + ": warning: the program has no <main>; there is nothing to run");
+            err.println(file + ": warning: " + CliMsg.NOTHING_TO_RUN.text());
             return 0;
         }
         checkOutputs(r);
@@ -100,8 +102,7 @@ final class RunCommand implements Callable<Integer> {
             duration = sim.world(err).timeLimit(); // a world's challenge lasts its time limit
         }
         if (duration == null) {
-            err.println("parpe: no --duration: the run lasts until <main> ends or Ctrl-C; use --duration SECONDS"
-                    + " to bound it");
+            err.println("parpe: " + CliMsg.NO_DURATION.text());
         }
         RunOptions options = new RunOptions(tick, seed, stimuli(program));
         // Equal warnings of the run (a bus warning said again and again) fold as in the IDE.
@@ -151,10 +152,9 @@ final class RunCommand implements Callable<Integer> {
             diagnostics.finish();
         }
         if (outcome.status() == RunOutcome.Status.STOPPED) {
-            err.println("parpe: stopped at t=" + String.format(Locale.ROOT, "%.3f", outcome.time()) + " s");
+            err.println("parpe: " + CliMsg.STOPPED_AT.text(String.format(Locale.ROOT, "%.3f", outcome.time())));
         } else if (worldLimit && outcome.status() == RunOutcome.Status.COMPLETED && outcome.time() >= duration - 1e-6) {
-            err.println("parpe: the run ended at the world's time limit of " + org.parpe.core.lang.Numbers.format(duration)
-                    + " s (" + sim.world(err).name() + "); --duration SECONDS runs longer");
+            err.println("parpe: " + CliMsg.WORLD_TIME_LIMIT.text(org.parpe.core.lang.Numbers.format(duration), sim.world(err).name()));
         }
         return sim.outputsWritten(outcome.status() == RunOutcome.Status.ERROR ? 3 : 0);
     }

@@ -110,8 +110,8 @@ public final class SimTarget implements RunTarget {
         Assembly assembly = config == null ? null : Assembly.build(config, found);
         if (assembly == null) {
             long n = found.errorCount();
-            throw new TargetException("cannot build the simulated robot '" + spec + "' (" + n + " error"
-                    + (n == 1 ? "" : "s") + ")", found.all());
+            throw new TargetException((n == 1 ? org.parpe.core.text.Msg.CANNOT_BUILD_ROBOT_ONE
+                    : org.parpe.core.text.Msg.CANNOT_BUILD_ROBOT).text(spec, n), found.all());
         }
         RobotConfigs.checkModules(config, moduleIds, found);
         return new Blueprint(config, assembly, world, List.copyOf(found.all()));

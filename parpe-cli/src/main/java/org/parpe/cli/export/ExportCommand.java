@@ -1,5 +1,7 @@
 package org.parpe.cli.export;
 
+import org.parpe.cli.text.CliMsg;
+
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
@@ -94,7 +96,7 @@ public final class ExportCommand implements Callable<Integer> {
         try {
             return execute(err);
         } catch (IOException e) {
-            err.println("parpe: cannot write '" + out + "': " + e.getMessage());
+            err.println("parpe: " + CliMsg.CANNOT_WRITE.text(out, e.getMessage()));
             return 2;
         }
     }
@@ -107,13 +109,13 @@ public final class ExportCommand implements Callable<Integer> {
         boolean arduino = switch (target) {
             case "c" -> false;
             case "arduino" -> true;
-            default -> throw new UsageException("--target must be c, arduino, mjcf, urdf or sdf, got '" + target + "'");
+            default -> throw new UsageException(CliMsg.BAD_TARGET.text(target));
         };
         if (file == null) {
-            throw new UsageException("--target " + target + " exports a script: give the SCRIPT");
+            throw new UsageException(CliMsg.TARGET_NEEDS_SCRIPT.text(target));
         }
         if (robot != null || stimulus != null) {
-            throw new UsageException("--robot and --stimulus are for --target mjcf, urdf and sdf");
+            throw new UsageException(CliMsg.ROBOT_OPTIONS_ONLY.text());
         }
         Inputs.check(file);
         ProgramExport.Request request = request(arduino);
@@ -132,9 +134,9 @@ public final class ExportCommand implements Callable<Integer> {
         ExportFiles.write(dir, result.files());
         PrintWriter o = spec.commandLine().getOut();
         o.println(result.memory().format());
-        o.println("wrote " + result.files().size() + " files to " + dir);
+        o.println(CliMsg.WROTE_FILES.text(result.files().size(), dir));
         if (!arduino) {
-            o.println("build: cc -std=c99 -O2 -o program " + dir + "/*.c -lm");
+            o.println(CliMsg.BUILD_WITH.text("cc -std=c99 -O2 -o program " + dir + "/*.c -lm"));
         }
         return 0;
     }
@@ -142,14 +144,13 @@ public final class ExportCommand implements Callable<Integer> {
     /** MJCF, URDF or SDF of {@code --robot}, with the gait of the script if one is given. */
     private int exportRobot(PrintWriter err) throws UsageException, IOException {
         if (robot == null) {
-            throw new UsageException("--target " + target + " needs --robot: a configuration file or a generator"
-                    + " (snake:n=12, centipede, wheel, loop, humanoid)");
+            throw new UsageException(CliMsg.TARGET_NEEDS_ROBOT.text(target));
         }
         if (board != null || !pins.isEmpty() || model != null || !servo.equals("pwm") || consoleSensors) {
-            throw new UsageException("--board, --servo, --pins, --model and --console-sensors are for --target c and arduino");
+            throw new UsageException(CliMsg.BOARD_OPTIONS_ONLY.text());
         }
         if (!(duration > 0) || !Double.isFinite(duration)) {
-            throw new UsageException("--duration must be a number of seconds > 0, got " + duration);
+            throw new UsageException(CliMsg.EXPORT_DURATION.text(duration));
         }
         Program program = null;
         List<org.parpe.core.run.Stimulus> stimuli = List.of();
@@ -166,7 +167,7 @@ public final class ExportCommand implements Callable<Integer> {
             }
             stimuli = Inputs.stimuli(stimulus, program);
         } else if (stimulus != null || !params.isEmpty()) {
-            throw new UsageException("--stimulus and --param need a SCRIPT whose gait is exported");
+            throw new UsageException(CliMsg.GAIT_NEEDS_SCRIPT.text());
         }
         return RobotExport.run(new RobotExport.Request(target, robot, program, stimuli, duration, tick, out),
                 spec.commandLine().getOut(), err);
@@ -178,10 +179,10 @@ public final class ExportCommand implements Callable<Integer> {
         ProgramExport.Target t = arduino ? ProgramExport.Target.ARDUINO : ProgramExport.Target.C;
         Board b = board == null ? t.defaultBoard() : Board.of(board);
         if (b == null) {
-            throw new UsageException("--board must be uno, nano, esp32 or host, got '" + board + "'");
+            throw new UsageException(CliMsg.BAD_BOARD.text(board));
         }
         if (!arduino && (!pins.isEmpty() || model != null || !servo.equals("pwm") || consoleSensors)) {
-            throw new UsageException("--servo, --pins, --model and --console-sensors are for --target arduino");
+            throw new UsageException(org.parpe.core.text.Msg.SKETCH_OPTIONS_ONLY.text());
         }
         try {
             SketchOptions sketch = arduino ? SketchOptions.of(servo, pins, baud, model, consoleSensors) : null;

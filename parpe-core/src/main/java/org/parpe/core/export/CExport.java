@@ -12,6 +12,8 @@ import org.parpe.core.diag.SourcePos;
 import org.parpe.core.expr.Expression;
 import org.parpe.core.model.Control;
 import org.parpe.core.model.Program;
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 
 /**
  * Exports a loaded program as C for the embedded runtime: checks what the target cannot do,
@@ -46,19 +48,17 @@ public final class CExport {
     public static Result export(Program program, double dt, Board board, DriverCost driver, DiagnosticSink diags) {
         SourcePos root = new SourcePos(program.file(), 1, 1);
         if (program.main() == null) {
-            diags.error(root, "the program has no <main>; an exported program needs one to run");
+            diags.error(root, Msg.EXPORT_NEEDS_MAIN);
             return null;
         }
         if (!(dt > 0) || !Double.isFinite(dt)) {
-            diags.error(root, "the tick must be > 0 s, got " + dt);
+            diags.error(root, Msg.TICK_NOT_POSITIVE, dt);
             return null;
         }
         for (Control k : program.controls()) {
             for (String name : Stream.concat(Stream.of(k.name()), k.words().stream()).toList()) {
                 if (name.length() > CText.MAX_LITERAL) {
-                    diags.error(k.pos(), "the control name or word '" + name.substring(0, 20) + "…' has " + name.length()
-                            + " characters; an exported program compares names as C strings of at most "
-                            + CText.MAX_LITERAL);
+                    diags.error(k.pos(), Msg.NAME_TOO_LONG_FOR_C, name.substring(0, 20), name.length(), CText.MAX_LITERAL);
                     return null;
                 }
             }
@@ -68,9 +68,7 @@ public final class CExport {
         }
         CProgram c = CProgram.of(program, dt);
         if (c.largestTableValue() > TABLE_LIMIT || c.modules() > TABLE_LIMIT / 6) {
-            diags.error(program.robot().pos(), "the program is too large for the embedded tables (their entries are"
-                    + " 16-bit: at most " + TABLE_LIMIT / 6 + " modules and " + TABLE_LIMIT
-                    + " expressions, instances or table rows)");
+            diags.error(program.robot().pos(), Msg.TABLES_TOO_LARGE, TABLE_LIMIT / 6, TABLE_LIMIT);
             return null;
         }
         Map<String, String> files = new LinkedHashMap<>();
@@ -78,17 +76,15 @@ public final class CExport {
         String source = c.source();
         files.put("parsl_program.c", source);
         MemoryReport m = MemoryReport.of(c, board, statements(source), driver);
-        for (String problem : m.problems()) {
-            diags.error(program.robot().pos(), problem);
+        for (Message problem : m.problems()) {
+            diags.report(new org.parpe.core.diag.Diagnostic(org.parpe.core.diag.Severity.ERROR, program.robot().pos(), problem));
         }
         if (board.cyclesPerSecond() > 0) {
             double seconds = tickCycles(c, driver) / (double) board.cyclesPerSecond();
             if (seconds > dt) {
-                diags.warning(program.robot().pos(), String.format(Locale.ROOT, "a tick may take about %.1f ms to"
-                        + " compute on %s (estimate), longer than the tick of %.1f ms: the robot would move slower than"
-                        + " the script says (the sketch reports overruns on its console); use --tick %s or more, or"
-                        + " fewer modules", seconds * 1e3, board.word(), dt * 1e3,
-                        BigDecimal.valueOf(seconds * 1.2).round(new MathContext(2, RoundingMode.UP)).toPlainString()));
+                diags.warning(program.robot().pos(), Msg.TICK_TOO_SLOW, String.format(Locale.ROOT, "%.1f", seconds * 1e3),
+                        board.word(), String.format(Locale.ROOT, "%.1f", dt * 1e3),
+                        BigDecimal.valueOf(seconds * 1.2).round(new MathContext(2, RoundingMode.UP)).toPlainString());
             }
         }
         if (board.doubleBytes() == 4) {
@@ -107,9 +103,7 @@ public final class CExport {
         for (org.parpe.core.model.Automaton a : program.automata()) {
             for (org.parpe.core.model.StateDef s : a.states()) {
                 if (s.hasPlateActions() && seen.add(s.name())) {
-                    diags.error(s.pos(), "state '" + s.name() + "' " + (s.latch().isEmpty() ? "releases" : "arms")
-                            + " connection plates (latch/unlatch, PARSL 1.1 §14); an exported program has no latches to"
-                            + " work: run docking scripts in the simulator, or remove the plate actions to export");
+                    diags.error(s.pos(), s.latch().isEmpty() ? Msg.EXPORT_RELEASES_PLATES : Msg.EXPORT_ARMS_PLATES, s.name());
                 }
             }
         }
@@ -126,10 +120,7 @@ public final class CExport {
     private static void warnOfClockWaves(CProgram c, Board board, DiagnosticSink diags) {
         for (Expression e : c.expressions()) {
             if (ClockWaves.periodicOfClock(e)) {
-                diags.warning(e.pos(), "on " + board.word() + " $time and $btime are 32-bit floats, with steps of"
-                        + " 0.24 ms after an hour, 7.8 ms after a day and 62.5 ms after a week, so a wave made from"
-                        + " them loses its phase as the board runs (30*sin(2*pi*$time) is off by 0.05 degrees after"
-                        + " an hour, 1.9 after a day, 12 after a week); a gait driven by an automaton's $phase does not");
+                diags.warning(e.pos(), Msg.FLOAT_CLOCK_WAVE, board.word());
             }
         }
     }

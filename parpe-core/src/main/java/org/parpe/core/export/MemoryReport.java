@@ -2,6 +2,8 @@ package org.parpe.core.export;
 
 import java.util.ArrayList;
 import java.util.List;
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 
 /**
  * The RAM and flash an exported program needs on a {@link Board}: the runtime state
@@ -93,16 +95,13 @@ public record MemoryReport(Board board, long stateBytes, long boardBytes, long r
     }
 
     /** What does not fit, one message per memory; empty if it fits. */
-    public List<String> problems() {
-        List<String> out = new ArrayList<>();
+    public List<Message> problems() {
+        List<Message> out = new ArrayList<>();
         if (ramBytes > board.ram()) {
-            out.add("the program needs about " + ramBytes + " bytes of RAM on " + board.word() + " (" + stateBytes
-                    + " for the scheduler's state, " + boardBytes + " for the board code), but it has "
-                    + board.ram() + "; use fewer modules or instances per <main> entry, or a board with more RAM (esp32)");
+            out.add(Message.of(Msg.TOO_LITTLE_RAM, ramBytes, board.word(), stateBytes, boardBytes, board.ram()));
         }
         if (flashBytes > board.flash()) {
-            out.add("the program needs about " + flashBytes + " bytes of flash on " + board.word() + ", but it has "
-                    + board.flash());
+            out.add(Message.of(Msg.TOO_LITTLE_FLASH, flashBytes, board.word(), board.flash()));
         }
         return out;
     }
@@ -110,11 +109,11 @@ public record MemoryReport(Board board, long stateBytes, long boardBytes, long r
     /** The report printed by {@code parpe export}. */
     public String format() {
         if (board == Board.HOST) {
-            return "memory (host): " + stateBytes + " bytes of state, " + flashBytes + " bytes of code and tables (estimate)";
+            return Msg.MEMORY_HOST.text(stateBytes, flashBytes);
         }
-        return "memory (" + board.word() + ", estimate): RAM " + ramBytes + " of " + board.ram() + " bytes (state "
-                + stateBytes + ", board code " + boardBytes + (ramBytes > stateBytes + boardBytes ? ", kept values "
-                + (ramBytes - stateBytes - boardBytes) : "") + "), flash " + flashBytes + " of " + board.flash()
-                + " bytes";
+        long kept = ramBytes - stateBytes - boardBytes;
+        return kept > 0
+                ? Msg.MEMORY_BOARD_KEPT.text(board.word(), ramBytes, board.ram(), stateBytes, boardBytes, flashBytes, board.flash(), kept)
+                : Msg.MEMORY_BOARD.text(board.word(), ramBytes, board.ram(), stateBytes, boardBytes, flashBytes, board.flash());
     }
 }

@@ -17,6 +17,7 @@ import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.expr.Lexer.Type;
 import org.parpe.core.sensor.Channel;
 import org.parpe.core.xml.XText;
+import org.parpe.core.text.Msg;
 
 /**
  * Compiles PARSL expressions (JEP syntax, PARSL.md §8) once at load. Our lexer places every
@@ -47,13 +48,13 @@ public final class ExprCompiler {
         try {
             tokens = Lexer.lex(text);
         } catch (Lexer.LexError e) {
-            diags.error(src.posAt(e.index), e.getMessage() + " in '" + text.trim() + "'");
+            diags.error(src.posAt(e.index), Msg.IN_EXPRESSION, e.text, text.trim());
             return null;
         }
         int[] argCounts = new int[tokens.size()];
         Syntax.Problem p = Syntax.check(tokens, argCounts);
         if (p != null) {
-            diags.error(src.posAt(p.index()), p.message() + " in '" + text.trim() + "'");
+            diags.error(src.posAt(p.index()), Msg.IN_EXPRESSION, p.message(), text.trim());
             return null;
         }
         NameResolver r = new NameResolver(src, scope, diags);
@@ -81,7 +82,7 @@ public final class ExprCompiler {
                     r.variableNames(), false);
             root = build(rpn, r.nodes);
         } catch (RuntimeException e) {
-            diags.error(src.pos(), "cannot parse expression '" + text.trim() + "': " + e.getMessage());
+            diags.error(src.pos(), Msg.CANNOT_PARSE_EXPRESSION, text.trim(), e.getMessage());
             return null;
         }
         return new Result(new Expression(text.trim(), src.pos(), root, r.perModule), r.perModule, List.copyOf(r.locals));
@@ -104,11 +105,11 @@ public final class ExprCompiler {
                     stack.add(fold(function(((FunctionToken) t).getFunction(), stack)));
                     break;
                 default:
-                    throw new IllegalStateException("unexpected token in RPN");
+                    throw new IllegalStateException(Msg.UNEXPECTED_TOKEN.text());
             }
         }
         if (stack.size() != 1) {
-            throw new IllegalStateException("malformed expression");
+            throw new IllegalStateException(Msg.MALFORMED_EXPRESSION.text());
         }
         return stack.get(0);
     }

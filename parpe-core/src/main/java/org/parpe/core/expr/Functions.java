@@ -59,7 +59,7 @@ final class Functions {
                 case ATAN2: return Math.atan2(a, b);
                 case MOD:
                     if (b == 0) {
-                        throw new EvalException("mod() by zero");
+                        throw new EvalException(org.parpe.core.text.Msg.MOD_BY_ZERO);
                     }
                     return a % b;
                 case MIN: return Math.min(a, b);

@@ -2,6 +2,8 @@ package org.parpe.core.expr;
 
 import java.util.ArrayList;
 import java.util.List;
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 
 /** Splits an expression into tokens with their character positions. */
 final class Lexer {
@@ -13,10 +15,12 @@ final class Lexer {
     /** Thrown for a character that starts no token. */
     static final class LexError extends Exception {
         final int index;
+        final Message text;
 
-        LexError(String message, int index) {
-            super(message, null, false, false);
+        LexError(Message text, int index) {
+            super(text.format(java.util.Locale.ENGLISH), null, false, false);
             this.index = index;
+            this.text = text;
         }
     }
 
@@ -46,14 +50,14 @@ final class Lexer {
                     end++;
                 }
                 if (end == i + 1) {
-                    throw new LexError("'$' must be followed by a control, variable or sensor name", i);
+                    throw new LexError(Message.of(Msg.DOLLAR_ALONE), i);
                 }
                 out.add(new Token(Type.DOLLAR, s.substring(i + 1, end), i, end));
                 i = end;
             } else if (c == '"') {
                 int close = s.indexOf('"', i + 1);
                 if (close < 0) {
-                    throw new LexError("unterminated string literal", i);
+                    throw new LexError(Message.of(Msg.UNTERMINATED_STRING), i);
                 }
                 out.add(new Token(Type.STRING, s.substring(i + 1, close), i, close + 1));
                 i = close + 1;
@@ -64,12 +68,12 @@ final class Lexer {
             } else {
                 String op = operator(s, i);
                 if (op == null) {
-                    throw new LexError(c == '=' ? "'=' is not an operator; use '==' to compare"
-                            : c == '&' ? "'&' is not an operator; use '&&'"
-                            : c == '|' ? "'|' is not an operator; use '||'"
-                            : Character.isDigit(c) ? String.format(java.util.Locale.ROOT, "'%c' (U+%04X) is not an ASCII digit; numbers are"
-                                    + " written with the digits 0-9", c, (int) c)
-                            : "unexpected character '" + c + "'", i);
+                    throw new LexError(c == '=' ? Message.of(Msg.SINGLE_EQUALS)
+                            : c == '&' ? Message.of(Msg.SINGLE_AMPERSAND)
+                            : c == '|' ? Message.of(Msg.SINGLE_BAR)
+                            : Character.isDigit(c) ? Message.of(Msg.NOT_ASCII_DIGIT, c,
+                                    String.format(java.util.Locale.ROOT, "%04X", (int) c))
+                            : Message.of(Msg.UNEXPECTED_CHARACTER, c), i);
                 }
                 out.add(new Token(Type.OP, op, i, i + op.length()));
                 i += op.length();

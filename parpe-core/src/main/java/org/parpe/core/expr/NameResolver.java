@@ -12,6 +12,8 @@ import net.objecthunter.exp4j.function.Function;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.lang.Vocabulary;
 import org.parpe.core.sensor.Channel;
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 import org.parpe.core.xml.XText;
 
 /**
@@ -49,7 +51,7 @@ final class NameResolver {
         String name = t.text();
         int arity = Vocabulary.arity(name);
         if (arity == -1 || !name.equals(name.toLowerCase(Locale.ROOT))) {
-            error(t, "unknown function '" + name + "()'" + Names.suggest(name, Vocabulary.functions()));
+            error(t, Msg.UNKNOWN_FUNCTION, name, Names.suggest(name, Vocabulary.functions()));
             return "rand";
         }
         String key = arity == -2 ? "sum" + args : name;
@@ -77,7 +79,7 @@ final class NameResolver {
     private Node number(Lexer.Token t) {
         double v = Double.parseDouble(t.text());
         if (!Double.isFinite(v)) {
-            error(t, "the number " + t.text() + " is too large");
+            error(t, Msg.NUMBER_TOO_LARGE, t.text());
             return null;
         }
         return new Nodes.Const(v);
@@ -86,8 +88,7 @@ final class NameResolver {
     private Node word(Lexer.Token t) {
         Integer code = scope.kind() == Scope.Kind.PARAMETERS_ONLY ? null : scope.radioWords().get(t.text());
         if (code == null) {
-            error(t, "\"" + t.text() + "\" is not a radio word; string literals are only for radio words"
-                    + Names.suggest(t.text(), scope.radioWords().keySet()));
+            error(t, Msg.NOT_A_RADIO_WORD, t.text(), Names.suggest(t.text(), scope.radioWords().keySet()));
             return null;
         }
         return new Nodes.Const(code);
@@ -112,20 +113,20 @@ final class NameResolver {
             return new Nodes.Const(scope.radioWords().get(name));
         }
         if (scope.groupMacros().contains(name)) {
-            error(t, "macro '" + name + "' names a group; it cannot be used in an arithmetic expression");
+            error(t, Msg.GROUP_MACRO_IN_EXPRESSION, name);
         } else if (scope.groups().contains(name)) {
-            error(t, "'" + name + "' is a group; groups cannot be used in expressions");
+            error(t, Msg.GROUP_IN_EXPRESSION, name);
         } else if (scope.controls().containsKey(name)) {
-            error(t, "control '" + name + "' is written '$" + name + "' in expressions");
+            error(t, Msg.CONTROL_WITHOUT_DOLLAR, name);
         } else if (Vocabulary.arity(name) != -1) {
-            error(t, "'" + name + "' is a function; call it as " + name + "(...)");
+            error(t, Msg.FUNCTION_NOT_CALLED, name);
         } else {
             List<String> known = new ArrayList<>(scope.parameters().keySet());
             known.addAll(scope.macros().keySet());
             known.addAll(scope.radioWords().keySet());
             known.addAll(Vocabulary.CONSTANTS);
-            String where = scope.kind() == Scope.Kind.PARAMETERS_ONLY ? " (only parameters are allowed here)" : "";
-            error(t, "unknown name '" + name + "'" + where + Names.suggest(name, known));
+            Message where = scope.kind() == Scope.Kind.PARAMETERS_ONLY ? Message.of(Msg.ONLY_PARAMETERS_HERE) : Message.EMPTY;
+            error(t, Msg.UNKNOWN_NAME, name, where, Names.suggest(name, known));
         }
         return null;
     }
@@ -134,7 +135,7 @@ final class NameResolver {
         String name = t.text();
         if (Vocabulary.LOGICAL_VARIABLES.contains(name)) {
             if (!scope.sees(name)) {
-                error(t, "'$" + name + "' is not available here" + logicalWhere(name));
+                error(t, Msg.VARIABLE_NOT_HERE, name, logicalWhere(name));
                 return null;
             }
             int which = Vocabulary.LOGICAL_VARIABLES.indexOf(name);
@@ -155,20 +156,19 @@ final class NameResolver {
         }
         if (scope.parameters().containsKey(name) || scope.macros().containsKey(name)) {
             String kind = scope.parameters().containsKey(name) ? "parameter" : "macro";
-            error(t, kind + " '" + name + "' is written without '$': " + name + " ('$' is for controls, sensors and"
-                    + " variables such as $time)");
+            error(t, Msg.NAME_WITH_DOLLAR, Msg.named(kind, name), name);
             return null;
         }
         List<String> known = new ArrayList<>();
         scope.controls().keySet().forEach(c -> known.add(c));
         known.addAll(Vocabulary.LOGICAL_VARIABLES);
-        error(t, "unknown control or variable '$" + name + "'" + Names.suggest(name, known, "$"));
+        error(t, Msg.UNKNOWN_DOLLAR_NAME, name, Names.suggest(name, known, "$"));
         return null;
     }
 
     private Channel channel(Lexer.Token t, String sensor, String arg) {
         if (!Vocabulary.SENSOR_TYPES.contains(sensor)) {
-            error(t, "sensor '" + sensor + "' is not implemented; available: " + String.join(", ", Vocabulary.SENSOR_TYPES));
+            error(t, Msg.NOT_IMPLEMENTED, Msg.named("sensor", sensor), String.join(", ", Vocabulary.SENSOR_TYPES));
             return null;
         }
         Channel c = Channel.of(sensor, arg == null ? "" : arg);
@@ -180,7 +180,7 @@ final class NameResolver {
 
     private Node globalSensor(Lexer.Token t, Matcher m) {
         if (scope.sensors() == null) {
-            error(t, "sensor references are not allowed here");
+            error(t, Msg.SENSORS_NOT_HERE);
             return null;
         }
         Channel c = channel(t, m.group(2), m.group(3));
@@ -190,11 +190,11 @@ final class NameResolver {
         int id = m.group(1).length() > 7 ? -1 : Integer.parseInt(m.group(1));
         int index = id < 0 ? -1 : scope.sensors().moduleIndex(id);
         if (index < 0) {
-            error(t, "module " + m.group(1) + " is not part of the robot");
+            error(t, Msg.MODULE_NOT_IN_ROBOT, m.group(1));
             return null;
         }
         if (!scope.sensors().carries(id, c)) {
-            error(t, "module " + id + " has no " + c.sensor() + " sensor (declare it in <sensors>)");
+            error(t, Msg.MODULE_WITHOUT_SENSOR, id, c.sensor());
             return null;
         }
         return new Nodes.GlobalSensor(Nodes.slot(index, c.ordinal()));
@@ -202,7 +202,7 @@ final class NameResolver {
 
     private Node localSensor(Lexer.Token t, Matcher m) {
         if (scope.kind() != Scope.Kind.MODULE) {
-            error(t, "local sensor references ($_" + m.group(1) + "_...) are only allowed in states, times and exit conditions");
+            error(t, Msg.LOCAL_SENSOR_NOT_HERE, m.group(1));
             return null;
         }
         Channel c = channel(t, m.group(2), m.group(3));
@@ -217,16 +217,16 @@ final class NameResolver {
         return new Nodes.LocalSensor(position, c.ordinal());
     }
 
-    private static String logicalWhere(String name) {
+    private static Message logicalWhere(String name) {
         switch (name) {
-            case "count": return " ($count is defined in states, times and instance attributes)";
-            case "time": case "btime": return " (only parameters are allowed here)";
-            default: return " ($" + name + " is defined in states and automaton times)";
+            case "count": return Message.of(Msg.COUNT_WHERE);
+            case "time": case "btime": return Message.of(Msg.ONLY_PARAMETERS_HERE);
+            default: return Message.of(Msg.VARIABLE_WHERE, name);
         }
     }
 
-    private void error(Lexer.Token t, String message) {
-        diags.error(src.posAt(t.start()), message);
+    private void error(Lexer.Token t, Msg key, Object... args) {
+        diags.error(src.posAt(t.start()), key, args);
         failed = true;
     }
 }

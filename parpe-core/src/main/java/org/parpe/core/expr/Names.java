@@ -1,21 +1,23 @@
 package org.parpe.core.expr;
 
 import java.util.Collection;
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 
 /** "Did you mean" suggestions by edit distance. */
 public final class Names {
     private Names() {
     }
 
-    /** {@code " (did you mean 'x'?)"} for the closest candidate, or an empty string. */
-    public static String suggest(String name, Collection<String> candidates) {
+    /** {@code " (did you mean 'x'?)"} for the closest candidate, or no text ({@link Message#EMPTY}). */
+    public static Message suggest(String name, Collection<String> candidates) {
         return suggest(name, candidates, "");
     }
 
     /** As {@link #suggest(String, Collection)}, writing the suggestion with {@code prefix}. */
-    public static String suggest(String name, Collection<String> candidates, String prefix) {
+    public static Message suggest(String name, Collection<String> candidates, String prefix) {
         String best = closest(name, candidates);
-        return best == null ? "" : " (did you mean '" + prefix + best + "'?)";
+        return best == null ? Message.EMPTY : Message.of(Msg.DID_YOU_MEAN, prefix + best);
     }
 
     /** The candidate closest to {@code name} if it is close enough, else {@code null}. */

@@ -1,5 +1,8 @@
 package org.parpe.core.expr;
 
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
+
 
 /**
  * The node kinds of compiled expressions. Every operator and function checks that its result
@@ -10,11 +13,11 @@ final class Nodes {
     private Nodes() {
     }
 
-    static double finite(double v, String what) {
+    static double finite(double v, Msg what) {
         if (Double.isFinite(v)) {
             return v;
         }
-        throw new EvalException(what + " is not a finite number");
+        throw new EvalException(Msg.NOT_FINITE, Message.of(what));
     }
 
     /** A number. */
@@ -180,14 +183,14 @@ final class Nodes {
                 case DIV: return div(a, b);
                 case MOD:
                     if (b == 0) {
-                        throw new EvalException("remainder of a division by zero");
+                        throw new EvalException(Msg.REMAINDER_BY_ZERO);
                     }
                     return a % b;
                 case POW:
                     double pw = Math.pow(a, b);
                     if (!Double.isFinite(pw)) {
-                        throw new EvalException(org.parpe.core.lang.Numbers.brief(a) + "^" + org.parpe.core.lang.Numbers.brief(b)
-                                + " is not a finite number");
+                        throw new EvalException(Msg.NOT_FINITE,
+                                org.parpe.core.lang.Numbers.brief(a) + "^" + org.parpe.core.lang.Numbers.brief(b));
                     }
                     return pw;
                 case LT: return a < b ? 1 : 0;
@@ -200,22 +203,22 @@ final class Nodes {
         }
 
         static double add(double a, double b) {
-            return finite(a + b, "a sum");
+            return finite(a + b, Msg.A_SUM);
         }
 
         static double sub(double a, double b) {
-            return finite(a - b, "a difference");
+            return finite(a - b, Msg.A_DIFFERENCE);
         }
 
         static double mul(double a, double b) {
-            return finite(a * b, "a product");
+            return finite(a * b, Msg.A_PRODUCT);
         }
 
         static double div(double a, double b) {
             if (b == 0) {
-                throw new EvalException("division by zero");
+                throw new EvalException(Msg.DIVISION_BY_ZERO);
             }
-            return finite(a / b, "a quotient");
+            return finite(a / b, Msg.A_QUOTIENT);
         }
     }
 
@@ -326,7 +329,7 @@ final class Nodes {
             if (Double.isFinite(v)) {
                 return v;
             }
-            throw new EvalException(f.label() + " of " + org.parpe.core.lang.Numbers.brief(x) + " is not a finite number");
+            throw new EvalException(Msg.FUNCTION_NOT_FINITE, f.label(), org.parpe.core.lang.Numbers.brief(x));
         }
     }
 
@@ -362,7 +365,7 @@ final class Nodes {
             for (Node n : args) {
                 s += n.eval(c);
             }
-            return finite(s, "sum()");
+            return finite(s, Msg.SUM_CALL);
         }
     }
 

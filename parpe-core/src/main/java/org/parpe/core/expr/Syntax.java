@@ -6,6 +6,8 @@ import java.util.List;
 import org.parpe.core.expr.Lexer.Token;
 import org.parpe.core.expr.Lexer.Type;
 import org.parpe.core.lang.Vocabulary;
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 
 /**
  * Checks the token sequence of an expression (operand/operator alternation, parentheses,
@@ -14,7 +16,10 @@ import org.parpe.core.lang.Vocabulary;
  */
 final class Syntax {
     /** A syntax error at a character index. */
-    record Problem(String message, int index) {
+    record Problem(Message message, int index) {
+        Problem(Msg key, int index, Object... args) {
+            this(Message.of(key, args), index);
+        }
     }
 
     private record Frame(boolean call, Token open, String function, int[] args) {
@@ -26,7 +31,7 @@ final class Syntax {
     /** Returns the first problem, or {@code null}; fills {@code argCounts[i]} for call tokens. */
     static Problem check(List<Token> tokens, int[] argCounts) {
         if (tokens.isEmpty()) {
-            return new Problem("empty expression", 0);
+            return new Problem(Msg.EMPTY_EXPRESSION, 0);
         }
         Deque<Frame> frames = new ArrayDeque<>();
         boolean expectOperand = true;
@@ -53,14 +58,14 @@ final class Syntax {
                 } else if (t.type() == Type.OP && (t.text().equals("-") || t.text().equals("+") || t.text().equals("!"))) {
                     continue;
                 } else {
-                    return new Problem("expected a value before '" + t.text() + "'", t.start());
+                    return new Problem(Msg.VALUE_EXPECTED_BEFORE, t.start(), t.text());
                 }
             } else {
                 if (t.type() == Type.OP && !t.text().equals("!")) {
                     expectOperand = true;
                 } else if (t.type() == Type.RPAREN) {
                     if (frames.isEmpty()) {
-                        return new Problem("')' has no matching '('", t.start());
+                        return new Problem(Msg.UNMATCHED_CLOSE, t.start());
                     }
                     Frame f = frames.pop();
                     if (f.call()) {
@@ -71,22 +76,21 @@ final class Syntax {
                     }
                 } else if (t.type() == Type.COMMA) {
                     if (frames.isEmpty() || !frames.peek().call()) {
-                        return new Problem("',' is only allowed between function arguments" + decimalComma(tokens.get(i - 1), t, next),
-                                t.start());
+                        return new Problem(Msg.COMMA_OUTSIDE_CALL, t.start(), decimalComma(tokens.get(i - 1), t, next));
                     }
                     frames.peek().args()[1]++;
                     expectOperand = true;
                 } else {
-                    return new Problem("missing operator before '" + t.text() + "'" + letterO(tokens.get(i - 1), t), t.start());
+                    return new Problem(Msg.OPERATOR_MISSING, t.start(), t.text(), letterO(tokens.get(i - 1), t));
                 }
             }
         }
         Token last = tokens.get(tokens.size() - 1);
         if (expectOperand) {
-            return new Problem("incomplete expression: expected a value after '" + last.text() + "'", last.start());
+            return new Problem(Msg.VALUE_EXPECTED_AFTER, last.start(), last.text());
         }
         if (!frames.isEmpty()) {
-            return new Problem("missing ')' to close the '(' here", frames.peek().open().start());
+            return new Problem(Msg.UNCLOSED_OPEN, frames.peek().open().start());
         }
         return null;
     }
@@ -95,26 +99,24 @@ final class Syntax {
      * What to type instead when {@code comma} is a decimal comma, {@code 0,25} (half of Europe
      * writes decimals so): a number, the comma and a number, with nothing between them.
      */
-    private static String decimalComma(Token before, Token comma, Token after) {
+    private static Message decimalComma(Token before, Token comma, Token after) {
         if (before.type() == Type.NUMBER && after != null && after.type() == Type.NUMBER && before.end() == comma.start()
                 && after.start() == comma.end() && !before.text().contains(".")) {
-            return "; a decimal number takes a point: write " + before.text() + "." + after.text() + ", not "
-                    + before.text() + "," + after.text();
+            return Message.of(Msg.DECIMAL_COMMA, before.text(), after.text());
         }
-        return "";
+        return Message.EMPTY;
     }
 
     /**
      * What to type instead when {@code name} right after a number is made of the letter O where
      * the digit 0 (zero) was meant, as in {@code 3O}.
      */
-    private static String letterO(Token before, Token name) {
+    private static Message letterO(Token before, Token name) {
         if (before.type() == Type.NUMBER && name.type() == Type.NAME && before.end() == name.start()
                 && name.text().matches("[oO][0-9oO]*")) {
-            return ": is it the letter O where the digit 0 (zero) is meant? Write " + before.text()
-                    + name.text().replace('o', '0').replace('O', '0');
+            return Message.of(Msg.LETTER_O, before.text() + name.text().replace('o', '0').replace('O', '0'));
         }
-        return "";
+        return Message.EMPTY;
     }
 
     private static Problem close(Frame f, int[] argCounts, Token at, boolean empty) {
@@ -125,11 +127,10 @@ final class Syntax {
             return null; // an unknown function is reported by name resolution
         }
         if (arity == -2) {
-            return n >= 1 ? null : new Problem("sum() needs at least one argument", at.start());
+            return n >= 1 ? null : new Problem(Msg.SUM_NEEDS_ARGUMENT, at.start());
         }
         if (n != arity) {
-            return new Problem(f.function() + "() takes " + arity + (arity == 1 ? " argument" : " arguments")
-                    + ", got " + n, f.open().start());
+            return new Problem(arity == 1 ? Msg.ONE_ARGUMENT : Msg.N_ARGUMENTS, f.open().start(), f.function(), arity, n);
         }
         return null;
     }

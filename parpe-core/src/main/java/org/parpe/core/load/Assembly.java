@@ -13,6 +13,8 @@ import org.parpe.core.diag.SourcePos;
 import org.parpe.core.expr.Names;
 import org.parpe.core.lang.Vocabulary;
 import org.parpe.core.lang.Vocabulary.Element;
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 import org.parpe.core.xml.InputFiles;
 import org.parpe.core.xml.SourceText;
 import org.parpe.core.xml.XElement;
@@ -103,15 +105,14 @@ final class Assembly {
         SourceText src = new SourceText(file.toString(), text);
         if (XmlReader.noElement(text)) {
             // a beginner's new file: say what is missing rather than the parser's "Unexpected EOF in prolog"
-            diags.error(src.pos(0), "the file holds no script yet: a script is one element, conventionally <program>,"
-                    + " with at least a <robot> section (PARSL.md §1)");
+            diags.error(src.pos(0), Msg.NO_SCRIPT_YET);
             return;
         }
         XElement root = XmlReader.read(src, diags);
         if (root == null) {
             return;
         }
-        String other = otherKind(root);
+        Msg other = otherKind(root);
         if (other != null) {
             diags.error(root.pos(), other);
             return;
@@ -132,17 +133,17 @@ final class Assembly {
      * error in a script, would bury that; {@code null} for anything else. A script's root may have
      * any name (PARSL.md §1), so a script called {@code <world>} with its robot stays a script.
      */
-    private static String otherKind(XElement root) {
-        String option = switch (root.name()) {
-            case "hardware" -> "a hardware profile, not a PARSL script; give it to run, record or calibrate with --hardware";
-            case "robot-config" -> "a robot configuration of the simulator, not a PARSL script; give it with --sim";
-            case "world" -> "a world file, not a PARSL script; give it with --world";
+    private static Msg otherKind(XElement root) {
+        Msg option = switch (root.name()) {
+            case "hardware" -> Msg.NOT_A_SCRIPT_HARDWARE;
+            case "robot-config" -> Msg.NOT_A_SCRIPT_ROBOT_CONFIG;
+            case "world" -> Msg.NOT_A_SCRIPT_WORLD;
             default -> null;
         };
         if (option == null || root.children().stream().anyMatch(c -> c.name().equals("robot") || c.name().equals("include"))) {
             return null;
         }
-        return "this is " + option;
+        return option;
     }
 
     private static Path key(Path p) {
@@ -159,12 +160,12 @@ final class Assembly {
             }
             if (!Vocabulary.SECTIONS.contains(name)) {
                 String best = Names.closest(name, Vocabulary.SECTIONS);
-                diags.error(s.pos(), "unknown section <" + name + ">" + (best != null ? " (did you mean <" + best + ">?)"
-                        : " (sections are " + String.join(", ", Vocabulary.SECTIONS) + " and include)"));
+                diags.error(s.pos(), Msg.UNKNOWN_SECTION, name, best != null ? Message.of(Msg.DID_YOU_MEAN_ELEMENT, best)
+                        : Message.of(Msg.SECTIONS_ARE, String.join(", ", Vocabulary.SECTIONS)));
                 continue;
             }
             if (!seen.add(name)) {
-                diags.error(s.pos(), "section <" + name + "> appears twice in " + s.source().file());
+                diags.error(s.pos(), Msg.SECTION_TWICE, name, s.source().file());
                 continue;
             }
             if (name.equals("robot") && isMain) {
@@ -187,9 +188,9 @@ final class Assembly {
             return;
         }
         Path target = resolve(from, rel.value().trim());
-        String outside = outside(target, confinedTo);
+        Message outside = outside(target, confinedTo);
         if (outside != null) {
-            diags.error(rel.pos(), "cannot include '" + rel.value().trim() + "': " + outside);
+            diags.error(rel.pos(), Msg.CANNOT_INCLUDE, rel.value().trim(), outside);
             return;
         }
         Path k = key(target);
@@ -197,12 +198,11 @@ final class Assembly {
             List<String> chain = new ArrayList<>();
             stack.descendingIterator().forEachRemaining(p -> chain.add(p.getFileName().toString()));
             chain.add(target.getFileName().toString());
-            diags.error(rel.pos(), "include cycle: " + String.join(" -> ", chain));
+            diags.error(rel.pos(), Msg.INCLUDE_CYCLE, String.join(" -> ", chain));
             return;
         }
         if (stack.size() > MAX_INCLUDE_DEPTH) {
-            diags.error(rel.pos(), "this include would nest " + stack.size() + " levels deep; includes nest at most "
-                    + MAX_INCLUDE_DEPTH + " levels");
+            diags.error(rel.pos(), Msg.INCLUDE_TOO_DEEP, stack.size(), MAX_INCLUDE_DEPTH);
             return;
         }
         if (!done.add(k)) {
@@ -213,7 +213,7 @@ final class Assembly {
             files.add(target);
             text = InputFiles.readText(target);
         } catch (IOException e) {
-            diags.error(rel.pos(), "cannot read included file '" + target + "': " + e.getMessage());
+            diags.error(rel.pos(), Msg.CANNOT_READ_INCLUDED, target, e.getMessage());
             return;
         }
         XElement root = XmlReader.read(new SourceText(target.toString(), text), diags);
@@ -237,7 +237,7 @@ final class Assembly {
      * script (null: it may, or there is no confinement): it lies outside, by its name or by a link. Graded
      * scripts are confined to their student's folder (docs/tutorial/teachers.md).
      */
-    static String outside(Path target, Path root) {
+    static Message outside(Path target, Path root) {
         if (root == null) {
             return null;
         }
@@ -253,8 +253,7 @@ final class Assembly {
         if (inside) {
             return null;
         }
-        return (java.nio.file.Files.isDirectory(root) ? "a graded script may only read files inside its own folder '"
-                + root.getFileName() + "'" : "a graded script handed in as a lone file may read no other file")
-                + " (the confinement rule of parpe grade)";
+        return java.nio.file.Files.isDirectory(root) ? Message.of(Msg.CONFINED_TO_FOLDER, root.getFileName())
+                : Message.of(Msg.CONFINED_TO_FILE);
     }
 }

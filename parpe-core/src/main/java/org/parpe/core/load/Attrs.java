@@ -5,6 +5,8 @@ import java.util.regex.Pattern;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.expr.Names;
 import org.parpe.core.lang.Vocabulary;
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 import org.parpe.core.xml.XElement;
 import org.parpe.core.xml.XText;
 
@@ -19,12 +21,12 @@ final class Attrs {
     static void allow(XElement e, DiagnosticSink d, List<String> allowed) {
         for (XElement.XAttr a : e.attributes().values()) {
             if (!allowed.contains(a.name())) {
-                String hint = Names.suggest(a.name(), allowed);
-                if (hint.isEmpty()) {
-                    hint = allowed.isEmpty() ? " (<" + e.name() + "> takes no attributes)"
-                            : " (allowed: " + String.join(", ", allowed) + ")";
+                Message hint = Names.suggest(a.name(), allowed);
+                if (hint.equals(Message.EMPTY)) {
+                    hint = allowed.isEmpty() ? Message.of(Msg.TAKES_NO_ATTRIBUTES, e.name())
+                            : Message.of(Msg.ALLOWED_ATTRIBUTES, String.join(", ", allowed));
                 }
-                d.error(a.pos(), "unknown attribute '" + a.name() + "' on <" + e.name() + ">" + hint);
+                d.error(a.pos(), Msg.UNKNOWN_ATTRIBUTE, a.name(), e.name(), hint);
             }
         }
     }
@@ -33,7 +35,7 @@ final class Attrs {
     static XText require(XElement e, String name, DiagnosticSink d) {
         XElement.XAttr a = e.attr(name);
         if (a == null) {
-            d.error(e.pos(), "<" + e.name() + "> needs a '" + name + "' attribute");
+            d.error(e.pos(), Msg.NEEDS_ATTRIBUTE, e.name(), name);
             return null;
         }
         return a.value();
@@ -53,26 +55,25 @@ final class Attrs {
             while (first < v.length() && Character.isWhitespace(v.charAt(first))) {
                 first++;
             }
-            d.error(t.posAt(first), "text is not allowed inside <" + e.name() + ">");
+            d.error(t.posAt(first), Msg.NO_TEXT_INSIDE, e.name());
         }
     }
 
     /** Reports child elements of {@code e}. */
     static void noChildren(XElement e, DiagnosticSink d) {
         for (XElement c : e.children()) {
-            d.error(c.pos(), "<" + e.name() + "> cannot contain elements (found <" + c.name() + ">)");
+            d.error(c.pos(), Msg.NO_ELEMENTS_INSIDE, e.name(), c.name());
         }
     }
 
     /** Checks a name (PARSL.md §1, §13 rule 10); returns whether it is usable. */
     static boolean validName(String name, String kind, org.parpe.core.diag.SourcePos pos, DiagnosticSink d) {
         if (!NAME.matcher(name).matches()) {
-            d.error(pos, "invalid name '" + name + "' for a " + kind
-                    + ": names are letters, digits and '_', not starting with a digit");
+            d.error(pos, Msg.INVALID_NAME, name, Msg.kind(kind));
             return false;
         }
         if (Vocabulary.isReserved(name) && !(kind.equals("group") && name.equals("all"))) {
-            d.error(pos, "'" + name + "' is a reserved word and cannot name a " + kind);
+            d.error(pos, Msg.RESERVED_NAME, name, Msg.kind(kind));
             return false;
         }
         return true;

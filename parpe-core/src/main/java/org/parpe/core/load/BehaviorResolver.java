@@ -12,6 +12,8 @@ import org.parpe.core.expr.Expression;
 import org.parpe.core.expr.Names;
 import org.parpe.core.expr.Scope;
 import org.parpe.core.lang.Vocabulary;
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 import org.parpe.core.lang.Vocabulary.Element;
 import org.parpe.core.model.Automaton;
 import org.parpe.core.model.Behavior;
@@ -117,8 +119,8 @@ final class BehaviorResolver {
             return;
         }
         if (behaviors.containsKey(name)) {
-            d.error(s.reportAt(e.pos()), "behavior '" + name + "'" + (s.anchor() == null ? "" : " (defined at " + e.pos() + ")")
-                    + " is already defined at " + behaviors.get(name).model().pos());
+            d.error(s.reportAt(e.pos()), Msg.ALREADY_DEFINED, Msg.named("behavior", name), Msg.definedAt(s.anchor(), e.pos()),
+                    behaviors.get(name).model().pos());
             return;
         }
         int before = errorCount;
@@ -151,12 +153,12 @@ final class BehaviorResolver {
         for (XText m : ListItem.split(attr, ',')) {
             String name = m.value();
             if (name.isEmpty()) {
-                d.error(m.pos(), "empty item in macros");
+                d.error(m.pos(), Msg.EMPTY_MACRO_ITEM);
             } else if (name.equals("time") || name.equals("exit")) {
-                d.error(m.pos(), "a macro cannot be named '" + name + "' (it is an attribute of <main> entries)");
+                d.error(m.pos(), Msg.MACRO_NAME_TAKEN, name);
             } else if (Attrs.validName(name, "macro", m.pos(), d)) {
                 if (out.contains(name)) {
-                    d.error(m.pos(), "macro '" + name + "' is declared twice");
+                    d.error(m.pos(), Msg.MACRO_TWICE, name);
                     continue;
                 }
                 out.add(name);
@@ -214,7 +216,7 @@ final class BehaviorResolver {
         if (!automata.containsKey(c.name()) && brokenAutomata.contains(c.name())) {
             ok = false;
         } else if (!automata.containsKey(c.name())) {
-            d.error(c.pos(), "automaton '" + c.name() + "' is not defined in <automata>" + Names.suggest(c.name(), automata.keySet()));
+            d.error(c.pos(), Msg.AUTOMATON_NOT_DEFINED, c.name(), Names.suggest(c.name(), automata.keySet()));
             ok = false;
         }
         XText group = Attrs.require(c, "group", d);
@@ -230,7 +232,7 @@ final class BehaviorResolver {
                 List<String> known = new ArrayList<>();
                 robot.groups().forEach(x -> known.add(x.name()));
                 known.addAll(groupMacros);
-                d.error(group.pos(), "group '" + base + "' is not defined" + Names.suggest(base, known));
+                d.error(group.pos(), Msg.GROUP_NOT_DEFINED, base, Names.suggest(base, known));
                 ok = false;
             }
         }

@@ -12,6 +12,8 @@ import org.parpe.core.diag.Severity;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.expr.Names;
 import org.parpe.core.lang.Vocabulary;
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 import org.parpe.core.lang.Vocabulary.Element;
 import org.parpe.core.model.Control;
 import org.parpe.core.model.Control.ControlType;
@@ -94,11 +96,11 @@ final class Declarations {
             Parameter p = parameters.stream().filter(q -> q.name().equals(o.getKey())).findFirst().orElse(null);
             if (p == null) {
                 parameterErrors.add(new Diagnostic(Severity.ERROR, SourcePos.origin("--param " + o.getKey()),
-                        "unknown parameter '" + o.getKey() + "'" + Names.suggest(o.getKey(), values.keySet())
-                        + (values.isEmpty() ? " (the script has no parameters)" : "")));
+                        Msg.UNKNOWN_PARAMETER, o.getKey(), Names.suggest(o.getKey(), values.keySet()),
+                        values.isEmpty() ? Message.of(Msg.NO_PARAMETERS) : Message.EMPTY));
                 continue;
             }
-            String problem = p.check(o.getValue());
+            Message problem = p.problem(o.getValue());
             if (problem != null) {
                 // Located at the definition, whose min and max the value breaks.
                 parameterErrors.add(new Diagnostic(Severity.ERROR, p.pos(), problem));
@@ -116,17 +118,18 @@ final class Declarations {
         boolean okName = Attrs.validName(name, "parameter", e.pos(), d);
         XText type = Attrs.optional(e, "type");
         if (type != null && !type.value().trim().equals("text")) {
-            d.error(type.pos(), "parameter type must be 'text', got '" + type.value() + "'");
+            d.error(type.pos(), Msg.PARAMETER_TYPE, type.value());
         }
-        Double value = number(e, "value", true, "parameter '" + name + "'");
-        Double min = number(e, "min", false, "parameter '" + name + "'");
-        Double max = number(e, "max", false, "parameter '" + name + "'");
+        Message what = Msg.named("parameter", name);
+        Double value = number(e, "value", true, what);
+        Double min = number(e, "min", false, what);
+        Double max = number(e, "max", false, what);
         if (value == null || !okName) {
             return;
         }
         // A value outside its bounds is reported here; the parameter is still defined so that its
         // uses are not reported again as unknown names (one mistake, one message).
-        bounds(e, value, min, max, "parameter '" + name + "'");
+        bounds(e, value, min, max, what);
         XText label = Attrs.optional(e, "label");
         Parameter p = new Parameter(name, value, min, max, label == null ? "" : label.value(), e.pos());
         if (values.containsKey(name)) {
@@ -148,27 +151,26 @@ final class Declarations {
     }
 
     /** Reads a plain-number attribute; reports a malformed or missing one. */
-    private Double number(XElement e, String attr, boolean required, String what) {
+    private Double number(XElement e, String attr, boolean required, Message what) {
         XText t = required ? Attrs.require(e, attr, d) : Attrs.optional(e, attr);
         if (t == null) {
             return null;
         }
         Double v = Numbers.parsePlain(t.value());
         if (v == null) {
-            d.error(t.pos(), attr + " of " + what + " must be a plain number, got '" + t.value() + "'");
+            d.error(t.pos(), Msg.NOT_A_PLAIN_NUMBER, attr, what, t.value());
         }
         return v;
     }
 
-    private boolean bounds(XElement e, Double value, Double min, Double max, String what) {
+    private boolean bounds(XElement e, Double value, Double min, Double max, Message what) {
         if (min != null && max != null && min > max) {
-            d.error(e.attr("min").pos(), "min of " + what + " (" + Numbers.format(min) + ") is greater than max ("
-                    + Numbers.format(max) + ")");
+            d.error(e.attr("min").pos(), Msg.MIN_ABOVE_MAX, what, Numbers.format(min), Numbers.format(max));
             return false;
         }
         if (value != null && (min != null && value < min || max != null && value > max)) {
-            d.error(e.attr("value").pos(), "value of " + what + " must be within [" + (min == null ? "-inf" : Numbers.format(min))
-                    + ", " + (max == null ? "inf" : Numbers.format(max)) + "], got " + Numbers.format(value));
+            d.error(e.attr("value").pos(), Msg.VALUE_OUT_OF_BOUNDS, what, min == null ? "-inf" : Numbers.format(min),
+                    max == null ? "inf" : Numbers.format(max), Numbers.format(value));
             return false;
         }
         return true;
@@ -191,7 +193,7 @@ final class Declarations {
         String name = e.name();
         boolean ok = Attrs.validName(name, "control", e.pos(), d);
         if (Vocabulary.LOGICAL_VARIABLES.contains(name)) {
-            d.error(e.pos(), "a control cannot be named '" + name + "' ($" + name + " is a logical variable)");
+            d.error(e.pos(), Msg.CONTROL_NAME_TAKEN, name);
             ok = false;
         }
         XText typeText = Attrs.optional(e, "type");
@@ -202,7 +204,7 @@ final class Declarations {
             case "text": c = text(e, name); break;
             case "radio": c = radio(e, name, s, index); break;
             default:
-                d.error(typeText.pos(), "control type must be slider, text or radio, got '" + type + "'");
+                d.error(typeText.pos(), Msg.BAD_CONTROL_TYPE, type);
                 return;
         }
         names.define(name, "control", order(s, index), s.reportAt(e.pos()), e.pos(), "");
@@ -219,16 +221,16 @@ final class Declarations {
 
     private Control slider(XElement e, String name) {
         Attrs.allow(e, d, Element.SLIDER.attributes());
-        String what = "slider '" + name + "'";
+        Message what = Msg.named("slider", name);
         Double min = number(e, "min", true, what);
         Double max = number(e, "max", true, what);
         Double value = number(e, "value", true, what);
         Double step = number(e, "step", false, what);
         if (step != null && step <= 0) {
-            d.error(e.attr("step").pos(), "step of " + what + " must be > 0, got " + Numbers.format(step));
+            d.error(e.attr("step").pos(), Msg.STEP_NOT_POSITIVE, what, Numbers.format(step));
             return null;
         }
-        List<String> keys = keys(e, 2, "a slider's keys name two keys: increase, decrease");
+        List<String> keys = keys(e, 2, Message.of(Msg.SLIDER_KEYS));
         if (!bounds(e, value, min, max, what) || min == null || max == null || value == null || keys == null) {
             return null;
         }
@@ -237,7 +239,7 @@ final class Declarations {
 
     private Control text(XElement e, String name) {
         Attrs.allow(e, d, Element.TEXT_CONTROL.attributes());
-        Double value = number(e, "value", true, "control '" + name + "'");
+        Double value = number(e, "value", true, Msg.named("control", name));
         return value == null ? null
                 : new Control(name, ControlType.TEXT, value, null, null, null, label(e), List.of(), List.of(), e.pos());
     }
@@ -253,14 +255,14 @@ final class Declarations {
         for (XText w : ListItem.split(values, ',')) {
             String word = w.value();
             if (word.isEmpty()) {
-                d.error(w.pos(), "empty item in the values of radio '" + name + "'");
+                d.error(w.pos(), Msg.EMPTY_RADIO_ITEM, name);
                 return null;
             }
             if (!Attrs.validName(word, "radio word", w.pos(), d)) {
                 return null;
             }
             if (words.contains(word)) {
-                d.error(w.pos(), "radio '" + name + "' lists '" + word + "' twice");
+                d.error(w.pos(), Msg.RADIO_WORD_TWICE, name, word);
                 return null;
             }
             words.add(word);
@@ -269,11 +271,10 @@ final class Declarations {
         XText initial = Attrs.optional(e, "value");
         String first = words.get(0);
         if (initial != null && !words.contains(initial.value().trim())) {
-            d.error(initial.pos(), "value of radio '" + name + "' must be one of " + String.join(", ", words)
-                    + ", got '" + initial.value() + "'");
+            d.error(initial.pos(), Msg.RADIO_VALUE, name, String.join(", ", words), initial.value());
             return null;
         }
-        List<String> keys = keys(e, words.size(), "a radio's keys name one key per word (" + words.size() + ")");
+        List<String> keys = keys(e, words.size(), Message.of(Msg.RADIO_KEYS, words.size()));
         if (keys == null) {
             return null;
         }
@@ -284,7 +285,7 @@ final class Declarations {
         return new Control(name, ControlType.RADIO, radioWords.get(start), null, null, null, label(e), words, keys, e.pos());
     }
 
-    private List<String> keys(XElement e, int count, String rule) {
+    private List<String> keys(XElement e, int count, Message rule) {
         XText t = Attrs.optional(e, "keys");
         if (t == null) {
             return List.of();
@@ -292,13 +293,13 @@ final class Declarations {
         List<String> keys = new ArrayList<>();
         for (XText k : ListItem.split(t, ',')) {
             if (!Vocabulary.keyNames().contains(k.value())) {
-                d.error(k.pos(), "unknown key '" + k.value() + "' (keys are a-z, 0-9, Up, Down, Left, Right, space)");
+                d.error(k.pos(), Msg.UNKNOWN_KEY, k.value());
                 return null;
             }
             keys.add(k.value());
         }
         if (keys.size() != count) {
-            d.error(t.pos(), rule + ", got " + keys.size());
+            d.error(t.pos(), Msg.KEY_COUNT, rule, keys.size());
             return null;
         }
         return keys;

@@ -10,6 +10,8 @@ import org.parpe.core.model.MainEntry;
 import org.parpe.core.model.Robot;
 import org.parpe.core.model.StateDef;
 import org.parpe.core.sensor.Channel;
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 
 /**
  * The checks made where an automaton meets a group (PARSL.md §7, §13 rule 13): overlapping
@@ -49,7 +51,7 @@ final class InstanceChecks {
         if (robot == null) {
             return;
         }
-        String note = args == null ? "" : " (in this invocation of '" + behavior + "')";
+        Message note = args == null ? Message.EMPTY : Message.of(Msg.IN_THIS_INVOCATION, behavior);
         for (int i = 0; i < infos.size(); i++) {
             BehaviorResolver.InstanceInfo later = infos.get(i);
             Group g = group(later, args);
@@ -69,9 +71,7 @@ final class InstanceChecks {
                 Group h = relevant && !earlier.conditional() ? group(earlier, args) : null;
                 Integer shared = h == null ? null : overlap.shared(g, h);
                 if (shared != null) {
-                    d.error(later.model().pos(), "group '" + g.name() + "' overlaps group '" + h.name()
-                            + "' of an earlier instance (module " + shared + ")" + note
-                            + "; instances outside <if> must drive different modules");
+                    d.error(later.model().pos(), Msg.GROUPS_OVERLAP, g.name(), h.name(), shared, note);
                     break;
                 }
             }
@@ -90,7 +90,7 @@ final class InstanceChecks {
         return robot.group(name).orElse(null);
     }
 
-    private void shape(BehaviorResolver.InstanceInfo info, Group g, String note) {
+    private void shape(BehaviorResolver.InstanceInfo info, Group g, Message note) {
         Automaton a = info.model().automaton();
         if (a == null) {
             return;
@@ -99,61 +99,60 @@ final class InstanceChecks {
         for (StateDef s : a.states()) {
             int k = s.angles().size();
             if (k != 1 && k != n) {
-                String what = a.table() ? "row " + s.name().substring(a.name().length()) + " of gait table '" + a.name() + "'"
-                        : "state '" + s.name() + "'";
-                d.error(info.model().pos(), what + " has " + k + " angles but group '" + g.name() + "' has " + n
-                        + (n == 1 ? " module" : " modules") + " (give 1 angle or " + n + ")" + note);
+                Message what = a.table()
+                        ? Message.of(Msg.GAIT_TABLE_ROW, s.name().substring(a.name().length()), a.name())
+                        : Msg.named("state", s.name());
+                d.error(info.model().pos(), Msg.ANGLE_COUNT, what, k, g.name(),
+                        Message.of(n == 1 ? Msg.ONE_MODULE : Msg.N_MODULES, n), n, note);
                 return;
             }
         }
-        String latchless = latchless(a, g, info.model().pos());
+        Message latchless = latchless(a, g, info.model().pos());
         if (latchless != null) {
-            d.error(info.model().pos(), latchless + note);
+            d.error(info.model().pos(), Msg.WITH_NOTE, latchless, note);
             return;
         }
         for (ExprCompiler.LocalUse u : locals.getOrDefault(a.name(), List.of())) {
-            String problem = local(u, g);
+            Message problem = local(u, g);
             if (problem != null) {
-                d.error(info.model().pos(), problem + note);
+                d.error(info.model().pos(), Msg.WITH_NOTE, problem, note);
                 return;
             }
         }
     }
 
     /** A problem when a state of {@code a} acts on plates of a module of {@code g} without a latch (PARSL.md §14). */
-    private String latchless(Automaton a, Group g, org.parpe.core.diag.SourcePos at) {
+    private Message latchless(Automaton a, Group g, org.parpe.core.diag.SourcePos at) {
         for (StateDef s : a.states()) {
             if (!s.hasPlateActions()) {
                 continue;
             }
             for (int id : g.modules()) {
                 if (!robot.actuates(id, "latch")) {
-                    String what = s.latch().isEmpty() ? "unlatches" : "latches";
                     // the state's line, and its file only where it is not the instance's (an included file)
-                    String where = s.pos().file().equals(at.file()) ? "line " + s.pos().line() : "at " + s.pos();
-                    return "state '" + s.name() + "' (" + where + ") " + what + " connection plates, but module " + id
-                            + " of group '" + g.name() + "' has no latch actuator (declare it in <actuators>)";
+                    Message where = s.pos().file().equals(at.file()) ? Message.of(Msg.LINE_N, s.pos().line())
+                            : Message.of(Msg.AT_PLACE, s.pos());
+                    return Message.of(s.latch().isEmpty() ? Msg.UNLATCHES_WITHOUT_LATCH : Msg.LATCHES_WITHOUT_LATCH,
+                            s.name(), where, id, g.name());
                 }
             }
         }
         return null;
     }
 
-    private String local(ExprCompiler.LocalUse u, Group g) {
+    private Message local(ExprCompiler.LocalUse u, Group g) {
         Channel c = u.channel();
         if (u.position() >= 0) {
             if (u.position() >= g.size()) {
-                return "'" + u.text() + "' (at " + u.pos() + ") needs a group of more than " + u.position()
-                        + " modules; group '" + g.name() + "' has " + g.size();
+                return Message.of(Msg.LOCAL_GROUP_TOO_SMALL, u.text(), u.pos(), u.position(), g.name(), g.size());
             }
             int id = g.modules().get(u.position());
-            return carries(id, c.sensor()) ? null : "'" + u.text() + "' (at " + u.pos() + ") reads module " + id
-                    + " of group '" + g.name() + "', which has no " + c.sensor() + " sensor";
+            return carries(id, c.sensor()) ? null
+                    : Message.of(Msg.LOCAL_MODULE_WITHOUT_SENSOR, u.text(), u.pos(), id, g.name(), c.sensor());
         }
         for (int id : g.modules()) {
             if (!carries(id, c.sensor())) {
-                return "'" + u.text() + "' (at " + u.pos() + ") needs every module of group '" + g.name()
-                        + "' to carry a " + c.sensor() + " sensor; module " + id + " has none";
+                return Message.of(Msg.LOCAL_GROUP_WITHOUT_SENSOR, u.text(), u.pos(), g.name(), c.sensor(), id);
             }
         }
         return null;

@@ -11,6 +11,8 @@ import org.parpe.core.expr.Expression;
 import org.parpe.core.expr.Names;
 import org.parpe.core.expr.Scope;
 import org.parpe.core.lang.Vocabulary;
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 import org.parpe.core.lang.Vocabulary.Element;
 import org.parpe.core.model.Automaton;
 import org.parpe.core.model.Behavior;
@@ -68,7 +70,7 @@ final class MainResolver {
         }
         double v = r.expression().isConstant() ? r.expression().eval(null) : Double.NaN;
         if (v != Math.rint(v) || v < 1) {
-            d.error(t.pos(), "<main cycles> must be a whole number >= 1 or 'forever', got '" + t.value() + "'");
+            d.error(t.pos(), Msg.BAD_CYCLES, t.value());
             return 1;
         }
         return (long) v;
@@ -82,8 +84,7 @@ final class MainResolver {
             return null;
         }
         if (info == null) {
-            d.error(e.pos(), "behavior '" + e.name() + "' is not defined in <behaviors>"
-                    + Names.suggest(e.name(), behaviors.behaviors().keySet()));
+            d.error(e.pos(), Msg.BEHAVIOR_NOT_DEFINED, e.name(), Names.suggest(e.name(), behaviors.behaviors().keySet()));
             return null;
         }
         Behavior b = info.model();
@@ -98,7 +99,7 @@ final class MainResolver {
         for (String m : b.macros()) {
             XElement.XAttr a = e.attr(m);
             if (a == null) {
-                d.error(e.pos(), "<" + e.name() + "> must give a value for macro '" + m + "'");
+                d.error(e.pos(), Msg.MACRO_VALUE_MISSING, e.name(), m);
                 ok = false;
                 continue;
             }
@@ -158,8 +159,7 @@ final class MainResolver {
         String base = written.name();
         if (robot != null && robot.group(base).isEmpty()) {
             List<String> known = robot.groups().stream().map(g -> g.name()).toList();
-            d.error(a.value().pos(), "macro '" + macro + "' names a group, but '" + base + "' is not a group"
-                    + Names.suggest(base, known));
+            d.error(a.value().pos(), Msg.MACRO_NOT_A_GROUP, macro, base, Names.suggest(base, known));
             return null;
         }
         return new MainEntry.MacroArg(macro, v, base, written.mirror(), null, a.value().pos());

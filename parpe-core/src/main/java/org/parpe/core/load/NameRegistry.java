@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Map;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
+import org.parpe.core.text.Msg;
 
 /**
  * The shared expression namespace of groups, parameters, controls, radio words and macros
@@ -39,9 +40,9 @@ final class NameRegistry {
             List<Def> earlier = seen.computeIfAbsent(def.name(), k -> new ArrayList<>());
             for (Def e : earlier) {
                 if (clash(e, def)) {
-                    String where = def.reportAt().equals(def.own()) ? "" : " (defined at " + def.own() + ")";
-                    d.error(def.reportAt(), def.kind() + " '" + def.name() + "'" + where + " clashes with the "
-                            + e.kind() + " '" + e.name() + "' defined at " + e.own());
+                    d.error(def.reportAt(), Msg.NAME_CLASH, Msg.named(def.kind(), def.name()),
+                            Msg.definedAt(def.reportAt().equals(def.own()) ? null : def.own(), def.own()),
+                            Msg.named(e.kind(), e.name()), e.own());
                     break;
                 }
             }

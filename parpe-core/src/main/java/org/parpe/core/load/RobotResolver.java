@@ -26,6 +26,8 @@ import org.parpe.core.xml.SourceText;
 import org.parpe.core.xml.XElement;
 import org.parpe.core.xml.XText;
 import org.parpe.core.xml.XmlReader;
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 
 /** Resolves {@code <robot>} (PARSL.md §2, §13 rule 11): groups, modules and sensors. */
 final class RobotResolver {
@@ -64,7 +66,7 @@ final class RobotResolver {
      * @param ioError     why it could not be read, or {@code null}
      * @param diagnostics what parsing it reported
      */
-    record FileRead(Path path, XElement root, String ioError, List<Diagnostic> diagnostics) {
+    record FileRead(Path path, XElement root, Message ioError, List<Diagnostic> diagnostics) {
         FileRead {
             diagnostics = List.copyOf(diagnostics);
         }
@@ -75,7 +77,7 @@ final class RobotResolver {
             try {
                 text = InputFiles.readText(path);
             } catch (java.io.IOException e) {
-                return new FileRead(path, null, e.getMessage(), List.of());
+                return new FileRead(path, null, Message.verbatim(String.valueOf(e.getMessage())), List.of());
             }
             DiagnosticList found = new DiagnosticList();
             XElement root = XmlReader.read(new SourceText(path.toString(), text), found);
@@ -103,7 +105,7 @@ final class RobotResolver {
 
     private Robot resolve(XElement robot, int order, Path mainFile, FileRead robotFile, SourcePos rootPos) {
         if (robot == null) {
-            d.error(rootPos, "the program has no <robot> section (it is required)");
+            d.error(rootPos, Msg.NO_ROBOT_SECTION);
             return null;
         }
         Attrs.allow(robot, d, Element.ROBOT.attributes());
@@ -113,13 +115,13 @@ final class RobotResolver {
         String fileName = "";
         if (file != null) {
             if (!robot.children().isEmpty()) {
-                d.error(robot.pos(), "<robot file=...> cannot also contain elements");
+                d.error(robot.pos(), Msg.ROBOT_FILE_AND_ELEMENTS);
                 return null;
             }
             Path p = Assembly.resolve(mainFile, file.value().trim());
             this.file = p;
             if (robotFile.ioError() != null) {
-                d.error(file.pos(), "cannot read robot file '" + p + "': " + robotFile.ioError());
+                d.error(file.pos(), Msg.CANNOT_READ_ROBOT_FILE, p, robotFile.ioError());
                 return null;
             }
             robotFile.diagnostics().forEach(d::report);
@@ -128,7 +130,7 @@ final class RobotResolver {
                 return null;
             }
             if (!body.name().equals("robot")) {
-                d.error(body.pos(), "a robot file's root element must be <robot>, got <" + body.name() + ">");
+                d.error(body.pos(), Msg.ROBOT_FILE_ROOT, body.name());
                 return null;
             }
             Attrs.allow(body, d, Element.SECTION.attributes());
@@ -154,11 +156,11 @@ final class RobotResolver {
                     actuatorsEl = duplicate(actuatorsEl, c);
                     break;
                 default:
-                    d.error(c.pos(), "unknown element <" + c.name() + "> in <robot> (expected structure, sensors, actuators)");
+                    d.error(c.pos(), Msg.UNKNOWN_ROBOT_ELEMENT, c.name());
             }
         }
         if (structure == null) {
-            d.error(body.pos(), "<robot> needs a <structure> with the robot's groups");
+            d.error(body.pos(), Msg.ROBOT_NEEDS_STRUCTURE);
             return null;
         }
         preScan(structure);
@@ -180,7 +182,7 @@ final class RobotResolver {
 
     private XElement duplicate(XElement previous, XElement c) {
         if (previous != null) {
-            d.error(c.pos(), "<" + c.name() + "> appears twice in <robot>");
+            d.error(c.pos(), Msg.ROBOT_PART_TWICE, c.name());
             return previous;
         }
         Attrs.allow(c, d, Element.ROBOT_PART.attributes());
@@ -202,7 +204,7 @@ final class RobotResolver {
             if (elements == null || !ok || groups.containsKey(name)) {
                 continue;
             }
-            List<Integer> ids = elements(elements, true, "group '" + name + "'");
+            List<Integer> ids = elements(elements, true, Msg.named("group", name));
             if (ids != null) {
                 groups.put(name, new Group(name, ids, elements.value(), false, g.pos()));
                 modules.addAll(ids);
@@ -213,7 +215,7 @@ final class RobotResolver {
     }
 
     /** Expands an element list; {@code structure} selects the rules of §13 rule 11. */
-    private List<Integer> elements(XText text, boolean structure, String what) {
+    private List<Integer> elements(XText text, boolean structure, Message what) {
         List<Integer> out = new ArrayList<>();
         java.util.Set<Integer> seen = new java.util.HashSet<>();
         boolean ok = true;
@@ -221,15 +223,14 @@ final class RobotResolver {
             String v = item.value();
             List<Integer> ids;
             if (v.isEmpty()) {
-                d.error(item.pos(), "empty item in the elements of " + what);
+                d.error(item.pos(), Msg.EMPTY_ELEMENT_ITEM, what);
                 ok = false;
                 continue;
             } else if (v.matches("\\d+")) {
                 // leading zeros do not change the value (007 is module 7); compare the value, not the length
                 String digits = v.replaceFirst("^0+(?=\\d)", "");
                 if (digits.length() > 5 || Integer.parseInt(digits) > MAX_ID) {
-                    d.error(item.pos(), "module ID " + v + " is too large: module IDs are whole numbers 0.." + MAX_ID
-                            + " (PARSL 1.0.1 section 13 rule 23)");
+                    d.error(item.pos(), Msg.MODULE_ID_TOO_LARGE, v, MAX_ID);
                     ok = false;
                     continue;
                 }
@@ -245,7 +246,7 @@ final class RobotResolver {
             }
             for (int id : ids) {
                 if (!seen.add(id)) {
-                    d.error(item.pos(), "module " + id + " appears twice in " + what);
+                    d.error(item.pos(), Msg.MODULE_TWICE, id, what);
                     ok = false;
                 } else {
                     out.add(id);
@@ -253,7 +254,7 @@ final class RobotResolver {
             }
         }
         if (ok && out.isEmpty()) {
-            d.error(text.pos(), what + " is empty");
+            d.error(text.pos(), Msg.ELEMENTS_EMPTY, what);
             return null;
         }
         return ok ? out : null;
@@ -284,17 +285,16 @@ final class RobotResolver {
         }
         Expression e = r.expression();
         if (!e.isConstant()) {
-            d.error(t.pos(), "range ends must be whole numbers over parameters; '" + t.value() + "' is not");
+            d.error(t.pos(), Msg.RANGE_END_NOT_CONSTANT, t.value());
             return null;
         }
         double v = e.eval(null);
         if (v != Math.rint(v) || v < 0) {
-            d.error(t.pos(), "range end '" + t.value() + "' must be a whole number >= 0, got " + Numbers.format(v));
+            d.error(t.pos(), Msg.RANGE_END_NOT_WHOLE, t.value(), Numbers.format(v));
             return null;
         }
         if (v > MAX_ID) {
-            d.error(t.pos(), "range end '" + t.value() + "' is module ID " + Numbers.format(v)
-                    + ", too large: module IDs are whole numbers 0.." + MAX_ID + " (PARSL 1.0.1 section 13 rule 23)");
+            d.error(t.pos(), Msg.RANGE_END_TOO_LARGE, t.value(), Numbers.format(v), MAX_ID);
             return null;
         }
         return (int) v;
@@ -303,7 +303,7 @@ final class RobotResolver {
     private List<Integer> groupRef(XText item, boolean structure) {
         String name = item.value();
         if (name.equals("all") && structure && !groups.containsKey("all")) {
-            d.error(item.pos(), "'all' cannot be used inside <structure> (it is every module of the structure)");
+            d.error(item.pos(), Msg.ALL_IN_STRUCTURE);
             return null;
         }
         Group g = groups.get(name);
@@ -314,11 +314,11 @@ final class RobotResolver {
             return null;
         }
         if (!Attrs.isName(name)) {
-            d.error(item.pos(), "'" + name + "' is not a module ID, a range a..b or a group name");
+            d.error(item.pos(), Msg.NOT_AN_ELEMENT, name);
         } else if (structure && laterNames.contains(name)) {
-            d.error(item.pos(), "group '" + name + "' is defined later in <structure>; a group may only use groups defined before it");
+            d.error(item.pos(), Msg.GROUP_DEFINED_LATER, name);
         } else {
-            d.error(item.pos(), "group '" + name + "' is not defined" + Names.suggest(name, groups.keySet()));
+            d.error(item.pos(), Msg.GROUP_NOT_DEFINED, name, Names.suggest(name, groups.keySet()));
         }
         return null;
     }
@@ -342,23 +342,23 @@ final class RobotResolver {
             Attrs.noText(e, d);
             Attrs.noChildren(e, d);
             if (!types.contains(e.name())) {
-                d.error(e.pos(), kind + " '" + e.name() + "' is not implemented; available: " + String.join(", ", types));
+                d.error(e.pos(), Msg.NOT_IMPLEMENTED, Msg.named(kind, e.name()), String.join(", ", types));
                 continue;
             }
             Attrs.allow(e, d, element.attributes());
             if (!seen.add(e.name())) {
-                d.error(e.pos(), kind + " '" + e.name() + "' is declared twice in <" + section.name() + ">");
+                d.error(e.pos(), Msg.DECLARED_TWICE_IN, Msg.named(kind, e.name()), section.name());
                 continue;
             }
             XText elements = Attrs.require(e, "elements", d);
-            List<Integer> ids = elements == null ? null : elements(elements, false, kind + " '" + e.name() + "'");
+            List<Integer> ids = elements == null ? null : elements(elements, false, Msg.named(kind, e.name()));
             if (ids == null) {
                 continue;
             }
             boolean ok = true;
             for (int id : ids) {
                 if (!modules.contains(id)) {
-                    d.error(elements.pos(), "module " + id + " carries a " + e.name() + " " + kind + " but is not in <structure>");
+                    d.error(elements.pos(), Msg.CARRIER_NOT_IN_STRUCTURE, id, e.name(), Msg.kind(kind));
                     ok = false;
                 }
             }

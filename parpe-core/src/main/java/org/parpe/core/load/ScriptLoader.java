@@ -19,6 +19,8 @@ import org.parpe.core.sensor.Channel;
 import org.parpe.core.sensor.SensorTable;
 import org.parpe.core.xml.InputFiles;
 import org.parpe.core.xml.XText;
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 
 /**
  * Loads a PARSL program: XML with positions → parse tree → resolution and validation →
@@ -41,17 +43,21 @@ public final class ScriptLoader {
     public static LoadResult load(Path file, Map<String, Double> parameters, Path confinedTo) {
         String text;
         try {
-            String outside = Assembly.outside(file, confinedTo);
+            Message outside = Assembly.outside(file, confinedTo);
             if (outside != null) {
-                throw new IOException(outside);
+                return unreadable(file, outside);
             }
             text = InputFiles.readText(file);
         } catch (IOException e) {
-            DiagnosticList d = new DiagnosticList();
-            d.error(new SourcePos(file.toString(), 1, 1), "cannot read file '" + file + "': " + e.getMessage());
-            return new LoadResult(null, d.all(), List.of(), List.of(file));
+            return unreadable(file, Message.verbatim(String.valueOf(e.getMessage())));
         }
         return bind(read(file, text, confinedTo), parameters);
+    }
+
+    private static LoadResult unreadable(Path file, Message why) {
+        DiagnosticList d = new DiagnosticList();
+        d.error(new SourcePos(file.toString(), 1, 1), Msg.CANNOT_READ_FILE, file, why);
+        return new LoadResult(null, d.all(), List.of(), List.of(file));
     }
 
     /**
@@ -76,7 +82,7 @@ public final class ScriptLoader {
         Assembly.Assembled a = Assembly.read(file, text, d, confinedTo);
         XText robotRef = a.robot() == null ? null : Attrs.optional(a.robot(), "file");
         Path robotPath = robotRef == null ? null : Assembly.resolve(file, robotRef.value().trim());
-        String outside = robotPath == null ? null : Assembly.outside(robotPath, confinedTo);
+        Message outside = robotPath == null ? null : Assembly.outside(robotPath, confinedTo);
         RobotResolver.FileRead robotFile = robotRef == null ? null
                 : outside != null ? new RobotResolver.FileRead(robotPath, null, outside, List.of())
                 : RobotResolver.FileRead.of(robotPath);

@@ -11,6 +11,8 @@ import org.parpe.core.expr.Expression;
 import org.parpe.core.expr.Names;
 import org.parpe.core.expr.Scope;
 import org.parpe.core.lang.Vocabulary;
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 import org.parpe.core.lang.Vocabulary.Element;
 import org.parpe.core.model.Automaton;
 import org.parpe.core.model.Interp;
@@ -79,8 +81,8 @@ final class StateResolver {
         String name = e.name();
         boolean ok = Attrs.validName(name, "state", e.pos(), d);
         if (stateElements.containsKey(name)) {
-            d.error(s.reportAt(e.pos()), "state '" + name + "'" + (s.anchor() == null ? "" : " (defined at " + e.pos() + ")")
-                    + " is already defined at " + stateElements.get(name).pos());
+            d.error(s.reportAt(e.pos()), Msg.ALREADY_DEFINED, Msg.named("state", name), Msg.definedAt(s.anchor(), e.pos()),
+                    stateElements.get(name).pos());
             return;
         }
         stateElements.put(name, e);
@@ -91,7 +93,7 @@ final class StateResolver {
             try {
                 interp = Interp.valueOf(it.value().trim().toUpperCase(java.util.Locale.ROOT));
             } catch (IllegalArgumentException ex) {
-                d.error(it.pos(), "interp must be linear, step or smooth, got '" + it.value() + "'");
+                d.error(it.pos(), Msg.BAD_INTERP, it.value());
                 ok = false;
             }
         }
@@ -99,7 +101,7 @@ final class StateResolver {
         List<Integer> unlatch = plates(e, "unlatch");
         ok &= latch != null && unlatch != null && bothLists(e, latch, unlatch);
         List<ExprCompiler.LocalUse> uses = new ArrayList<>();
-        List<Expression> list = angles == null ? null : expressions(angles, uses, "state '" + name + "'");
+        List<Expression> list = angles == null ? null : expressions(angles, uses, Msg.named("state", name));
         if (ok && list != null) {
             states.put(name, new StateDef(name, list, interp, latch, unlatch, e.pos()));
             stateLocals.put(name, uses);
@@ -122,9 +124,11 @@ final class StateResolver {
         for (XText item : ListItem.split(text, ',')) {
             int plate = Vocabulary.PLATES.indexOf(item.value());
             if (plate < 0) {
-                d.error(item.pos(), item.value().isEmpty() ? "empty item in " + attribute + " of state '" + e.name() + "'"
-                        : "a module's connection plates are 0 and 1; " + attribute + " of state '" + e.name()
-                        + "' lists '" + item.value() + "'");
+                if (item.value().isEmpty()) {
+                    d.error(item.pos(), Msg.EMPTY_PLATE_ITEM, attribute, e.name());
+                } else {
+                    d.error(item.pos(), Msg.BAD_PLATE, attribute, e.name(), item.value());
+                }
                 ok = false;
             } else {
                 out.add(plate);
@@ -137,8 +141,7 @@ final class StateResolver {
     private boolean bothLists(XElement e, List<Integer> latch, List<Integer> unlatch) {
         for (int plate : latch) {
             if (unlatch.contains(plate)) {
-                d.error(Attrs.optional(e, "unlatch").pos(), "state '" + e.name() + "' both latches and unlatches plate "
-                        + plate + "; a plate may be in latch or in unlatch, not both");
+                d.error(Attrs.optional(e, "unlatch").pos(), Msg.LATCH_AND_UNLATCH, e.name(), plate);
                 return false;
             }
         }
@@ -146,12 +149,12 @@ final class StateResolver {
     }
 
     /** Compiles a comma list of angle expressions; {@code null} after errors. */
-    private List<Expression> expressions(XText text, List<ExprCompiler.LocalUse> uses, String what) {
+    private List<Expression> expressions(XText text, List<ExprCompiler.LocalUse> uses, Message what) {
         List<Expression> out = new ArrayList<>();
         boolean ok = true;
         for (XText item : ListItem.split(text, ',')) {
             if (item.value().isEmpty()) {
-                d.error(item.pos(), "empty item in the angles of " + what);
+                d.error(item.pos(), Msg.EMPTY_ANGLE_ITEM, what);
                 ok = false;
                 continue;
             }
@@ -184,8 +187,8 @@ final class StateResolver {
             return;
         }
         if (automata.containsKey(name) || locals.containsKey(name)) {
-            d.error(s.reportAt(e.pos()), "automaton '" + name + "'" + (s.anchor() == null ? "" : " (defined at " + e.pos() + ")")
-                    + " is already defined at " + (automata.containsKey(name) ? automata.get(name).pos() : "an earlier place"));
+            d.error(s.reportAt(e.pos()), Msg.ALREADY_DEFINED, Msg.named("automaton", name), Msg.definedAt(s.anchor(), e.pos()),
+                    automata.containsKey(name) ? automata.get(name).pos() : Message.of(Msg.AN_EARLIER_PLACE));
             return;
         }
         XText statesAttr = Attrs.optional(e, "states");
@@ -195,14 +198,14 @@ final class StateResolver {
         broken.add(name);
         List<StateDef> list;
         if (statesAttr != null && table) {
-            d.error(e.pos(), "automaton '" + name + "' has both states=\"...\" and gait-table rows; use one of them");
+            d.error(e.pos(), Msg.STATES_AND_ROWS, name);
             return;
         } else if (statesAttr != null) {
             list = stateList(statesAttr, uses);
         } else if (table) {
             list = rows(e, name, uses);
         } else {
-            d.error(e.pos(), "automaton '" + name + "' needs states=\"...\" or gait-table rows inside it");
+            d.error(e.pos(), Msg.NEEDS_STATES_OR_ROWS, name);
             return;
         }
         if (list == null) {
@@ -222,12 +225,12 @@ final class StateResolver {
         for (XText item : ListItem.split(attr, ',')) {
             StateDef st = states.get(item.value());
             if (item.value().isEmpty()) {
-                d.error(item.pos(), "empty item in states");
+                d.error(item.pos(), Msg.EMPTY_STATE_ITEM);
                 ok = false;
             } else if (st == null && broken.contains(item.value())) {
                 ok = false;
             } else if (st == null) {
-                d.error(item.pos(), "state '" + item.value() + "' is not defined in <states>" + Names.suggest(item.value(), states.keySet()));
+                d.error(item.pos(), Msg.STATE_NOT_DEFINED, item.value(), Names.suggest(item.value(), states.keySet()));
                 ok = false;
             } else {
                 out.add(st);
@@ -247,7 +250,7 @@ final class StateResolver {
                         continue;
                     }
                     String rowName = name + "[" + out.size() + "]";
-                    List<Expression> angles = expressions(row, uses, "row " + out.size() + " of gait table '" + name + "'");
+                    List<Expression> angles = expressions(row, uses, Message.of(Msg.GAIT_TABLE_ROW, out.size(), name));
                     if (angles == null) {
                         ok = false;
                         out.add(null);
@@ -271,8 +274,7 @@ final class StateResolver {
     private List<Timing> times(XText attr, int n, List<ExprCompiler.LocalUse> uses, String name) {
         List<XText> items = ListItem.split(attr, ',');
         if (items.size() != n) {
-            d.error(attr.pos(), "times of automaton '" + name + "' has " + items.size() + " entries but it has "
-                    + n + (n == 1 ? " state" : " states"));
+            d.error(attr.pos(), Msg.TIMES_COUNT, name, items.size(), Message.of(n == 1 ? Msg.ONE_STATE : Msg.N_STATES, n));
             return null;
         }
         List<Timing> out = new ArrayList<>();
@@ -284,7 +286,7 @@ final class StateResolver {
             int open = v.indexOf('[');
             if (open >= 0) {
                 if (!v.endsWith("]")) {
-                    d.error(item.pos(), "a time with an exit condition is written T[E], got '" + v + "'");
+                    d.error(item.pos(), Msg.BAD_TIME_CONDITION, v);
                     ok = false;
                     continue;
                 }
@@ -293,7 +295,7 @@ final class StateResolver {
             }
             ExprCompiler.Result tr = t.value().isEmpty() ? null : ExprCompiler.compile(t, scope, d);
             if (t.value().isEmpty()) {
-                d.error(item.pos(), "empty duration in times of automaton '" + name + "'");
+                d.error(item.pos(), Msg.EMPTY_DURATION, name);
             }
             ExprCompiler.Result cr = cond == null ? null : ExprCompiler.compile(cond, scope, d);
             if (tr == null || cond != null && cr == null) {

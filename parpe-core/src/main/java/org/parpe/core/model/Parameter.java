@@ -2,6 +2,8 @@ package org.parpe.core.model;
 
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.lang.Numbers;
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 
 /**
  * A run-time parameter (PARSL.md §3).
@@ -23,14 +25,20 @@ public record Parameter(String name, double value, Double min, Double max, Strin
 
     /** An error message if {@code v} is not allowed, else {@code null}. */
     public String check(double v) {
+        Message m = problem(v);
+        return m == null ? null : m.toString();
+    }
+
+    /** What is wrong with {@code v} for this parameter, or {@code null} if it is allowed. */
+    public Message problem(double v) {
         if (!Double.isFinite(v)) {
-            return "parameter '" + name + "' must be a finite number, got " + v;
+            return Message.of(Msg.PARAMETER_NOT_FINITE, name, v);
         }
         if (min != null && v < min) {
-            return "parameter '" + name + "' must be >= " + Numbers.format(min) + ", got " + Numbers.format(v);
+            return Message.of(Msg.PARAMETER_BELOW_MIN, name, Numbers.format(min), Numbers.format(v));
         }
         if (max != null && v > max) {
-            return "parameter '" + name + "' must be <= " + Numbers.format(max) + ", got " + Numbers.format(v);
+            return Message.of(Msg.PARAMETER_ABOVE_MAX, name, Numbers.format(max), Numbers.format(v));
         }
         return null;
     }

@@ -17,6 +17,8 @@ import org.parpe.core.model.MainEntry;
 import org.parpe.core.model.Program;
 import org.parpe.core.sensor.Channel;
 import org.parpe.core.sensor.SensorTable;
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 
 /**
  * The PARSL scheduler (PARSL.md §7, §11, §13). Stepped one tick at a time by whoever owns the
@@ -424,10 +426,9 @@ public final class Engine implements Evaluator {
         long key = (long) entry << 40 | (long) earlier << 20 | later.docIndex;
         if (warnedPairs.add(key)) {
             InstanceRun first = plans[entry].runs[earlier];
-            warnings.warning(later.model.pos(), "instances '" + first.model.name() + "' on group '"
-                    + first.model.group() + "' (line " + first.model.pos().line() + ") and '" + later.model.name()
-                    + "' on group '" + later.model.group() + "' both drive module " + ids[module] + " at t="
-                    + String.format(java.util.Locale.ROOT, "%.6f", ctx.time) + " s; the later one wins");
+            warnings.warning(later.model.pos(), Msg.INSTANCES_OVERLAP, first.model.name(), first.model.group(),
+                    first.model.pos().line(), later.model.name(), later.model.group(), ids[module],
+                    String.format(java.util.Locale.ROOT, "%.6f", ctx.time));
         }
     }
 
@@ -482,16 +483,16 @@ public final class Engine implements Evaluator {
             double v = e.eval(ctx);
             if (!Double.isFinite(v)) {
                 // a reading or control can only be non-finite if a plant reported one
-                throw new EvalException("the value " + v + " is not a finite number");
+                throw new EvalException(Msg.VALUE_NOT_FINITE, v);
             }
             return v;
         } catch (EvalException ex) {
-            throw error(e.pos(), ex.getMessage() + " in '" + e.text() + "'");
+            throw error(e.pos(), Message.of(Msg.IN_EXPRESSION, ex.text(), e.text()));
         }
     }
 
     @Override
-    public ScriptRuntimeError error(SourcePos pos, String message) {
+    public ScriptRuntimeError error(SourcePos pos, Message message) {
         return new ScriptRuntimeError(pos, message, ctx.time);
     }
 }

@@ -13,5 +13,10 @@ interface Evaluator {
     double eval(Expression e);
 
     /** A run-time error at {@code pos} during the current tick. */
-    ScriptRuntimeError error(SourcePos pos, String message);
+    ScriptRuntimeError error(SourcePos pos, org.parpe.core.text.Message message);
+
+    /** A run-time error at {@code pos}: the text of {@code key} with {@code args}. */
+    default ScriptRuntimeError error(SourcePos pos, org.parpe.core.text.Msg key, Object... args) {
+        return error(pos, org.parpe.core.text.Message.of(key, args));
+    }
 }

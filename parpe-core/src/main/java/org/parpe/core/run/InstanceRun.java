@@ -9,6 +9,7 @@ import org.parpe.core.model.Instance;
 import org.parpe.core.model.Interp;
 import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.StateDef;
+import org.parpe.core.text.Msg;
 
 /**
  * The run-time state of one automaton instance of one {@code <main>} entry: per module the
@@ -273,16 +274,14 @@ final class InstanceRun {
             double t = ev.eval(times[j]);
             if (t < 0) {
                 // §13 rule 21: a negative duration is an error, not a skipped state
-                throw ev.error(times[j].pos(), "state '" + stateNames[j] + "' of automaton '" + automaton
-                        + "' has a negative duration: " + Numbers.brief(t) + " s (durations must be >= 0)");
+                throw ev.error(times[j].pos(), Msg.NEGATIVE_DURATION, stateNames[j], automaton, Numbers.brief(t));
             }
             tBuf[j] = t;
             s += t;
         }
         sumT = s;
         if (!(s > 0)) {
-            throw ev.error(model.pos(), "the states of automaton '" + automaton + "' last " + Numbers.brief(s)
-                    + " s in total; the total must be > 0");
+            throw ev.error(model.pos(), Msg.TOTAL_DURATION, automaton, Numbers.brief(s));
         }
     }
 
@@ -290,7 +289,7 @@ final class InstanceRun {
     void prepareTick(Evaluator ev, Expression period, double dt) {
         double per = period == null ? Double.NaN : ev.eval(period);
         if (period != null && !(per > 0)) {
-            throw ev.error(period.pos(), "period of automaton '" + automaton + "' must be > 0, got " + Numbers.brief(per));
+            throw ev.error(period.pos(), Msg.PERIOD_NOT_POSITIVE, automaton, Numbers.brief(per));
         }
         scale = per;
         if (!timesPerModule) {
@@ -351,7 +350,7 @@ final class InstanceRun {
             double d = dBuf[s];
             if (d <= 0) {
                 if (++skips > ns) {
-                    throw ev.error(model.pos(), "every state of automaton '" + automaton + "' has a duration <= 0");
+                    throw ev.error(model.pos(), Msg.NO_POSITIVE_DURATION, automaton);
                 }
                 a0[k] = target(ev, s, k);
                 st[k] = s = (s + 1) % ns;
@@ -376,8 +375,7 @@ final class InstanceRun {
             wholeTick = false;
             skips = 0;
             if (++transitions > MAX_TRANSITIONS_PER_TICK) {
-                throw ev.error(model.pos(), "automaton '" + automaton + "' makes more than " + MAX_TRANSITIONS_PER_TICK
-                        + " state changes in one tick; its states are far shorter than the tick (" + Numbers.brief(dt) + " s)");
+                throw ev.error(model.pos(), Msg.TOO_MANY_TRANSITIONS, automaton, MAX_TRANSITIONS_PER_TICK, Numbers.brief(dt));
             }
             if (u[k] + du >= lim - EPS) {
                 if (u[k] + du <= lim + EPS) {

@@ -3,6 +3,7 @@ package org.parpe.core.run;
 import java.util.Locale;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
+import org.parpe.core.text.Msg;
 
 /**
  * The plate actions of a run on a robot without latching plates (PARSL.md §14): each action is
@@ -36,14 +37,13 @@ public final class PlatesByHand implements PlateSink {
             }
             told[j] |= act;
             SourcePos at = where[j] == null ? SourcePos.origin("run") : where[j];
-            warnings.warning(at, String.format(Locale.ROOT, "at t=%.3f s module %d %s plate %d, but %s have no"
-                    + " latching plates: %s by hand (told once per plate)", time, ids[j >> 1],
-                    act == ARM ? "arms" : "releases", j & 1, what, task(act)));
+            warnings.warning(at, act == ARM ? Msg.ARMS_BY_HAND : Msg.RELEASES_BY_HAND,
+                    String.format(Locale.ROOT, "%.3f", time), ids[j >> 1], j & 1, what);
         }
     }
 
     /** What the user does by hand for action {@code act} ({@link #ARM} or {@link #RELEASE}) on a plate. */
     public static String task(byte act) {
-        return act == ARM ? "join that plate to the plate it meets" : "part that plate from the one it holds";
+        return (act == ARM ? Msg.JOIN_BY_HAND : Msg.PART_BY_HAND).text();
     }
 }

@@ -117,8 +117,8 @@ public final class Run {
             try {
                 list.get(i).close();
             } catch (Exception e) {
-                diagnostics.warning(org.parpe.core.diag.SourcePos.origin("parpe"),
-                        "while closing " + list.get(i) + ": " + (e.getMessage() == null ? e : e.getMessage()));
+                diagnostics.warning(org.parpe.core.diag.SourcePos.origin("parpe"), org.parpe.core.text.Msg.WHILE_CLOSING,
+                        list.get(i), e.getMessage() == null ? e : e.getMessage());
             }
         }
     }

@@ -3,6 +3,8 @@ package org.parpe.core.run;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.Severity;
 import org.parpe.core.diag.SourcePos;
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 
 /**
  * A run-time error of the script (a non-finite value, a period ≤ 0, …). Its message is the
@@ -12,18 +14,20 @@ import org.parpe.core.diag.SourcePos;
 public final class ScriptRuntimeError extends RuntimeException {
     private final SourcePos pos;
     private final double time;
-    private final String detail;
+    private final transient Message detail;
 
     /** An error at {@code pos} during the tick at {@code time}. */
-    public ScriptRuntimeError(SourcePos pos, String message, double time) {
-        super(new Diagnostic(Severity.ERROR, pos, detail(message, time)).format(), null, false, false);
+    public ScriptRuntimeError(SourcePos pos, Message message, double time) {
+        super(null, null, false, false);
         this.pos = pos;
         this.time = time;
-        this.detail = detail(message, time);
+        this.detail = Message.of(Msg.AT_TIME, message, String.format(java.util.Locale.ROOT, "%.6f", time));
     }
 
-    private static String detail(String message, double time) {
-        return message + String.format(java.util.Locale.ROOT, " (at t=%.6f s)", time);
+    /** The located diagnostic {@code FILE:LINE:COL: error: …}, in the chosen language. */
+    @Override
+    public String getMessage() {
+        return diagnostic().format();
     }
 
     /** The error as a located diagnostic (its {@code format()} is this exception's message). */

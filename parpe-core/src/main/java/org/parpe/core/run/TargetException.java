@@ -26,6 +26,15 @@ public final class TargetException extends Exception {
         this(where + ": " + message, List.of(new Diagnostic(Severity.ERROR, where, message)));
     }
 
+    /** A failure with one error at {@code where}: the text of {@code key} with {@code args}. */
+    public TargetException(SourcePos where, org.parpe.core.text.Key key, Object... args) {
+        this(new Diagnostic(Severity.ERROR, where, key, args));
+    }
+
+    private TargetException(Diagnostic d) {
+        this(d.pos() + ": " + d.message(), List.of(d));
+    }
+
     /** What is wrong, with places. */
     public List<Diagnostic> diagnostics() {
         return diagnostics;

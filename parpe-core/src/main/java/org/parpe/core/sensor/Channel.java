@@ -63,12 +63,12 @@ public enum Channel {
     }
 
     /** What a reference to sensor type {@code sensor} must add after the type, for messages. */
-    public static String argumentHint(String sensor) {
+    public static org.parpe.core.text.Msg argumentHint(String sensor) {
         switch (sensor) {
-            case "angle": return "the angle sensor takes no argument";
-            case "accel": return "accel needs an axis: _x, _y or _z";
-            case "touch": return "touch needs a side: _left or _right";
-            default: return "dock needs a plate: _0 or _1";
+            case "angle": return org.parpe.core.text.Msg.ANGLE_NO_ARGUMENT;
+            case "accel": return org.parpe.core.text.Msg.ACCEL_NEEDS_AXIS;
+            case "touch": return org.parpe.core.text.Msg.TOUCH_NEEDS_SIDE;
+            default: return org.parpe.core.text.Msg.DOCK_NEEDS_PLATE;
         }
     }
 

@@ -1,5 +1,8 @@
 package org.parpe.core.xml;
 
+import org.parpe.core.text.Key;
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 import com.ctc.wstx.exc.WstxLazyException;
 import java.io.IOException;
 import java.io.InputStream;
@@ -66,7 +69,7 @@ public final class FlatXmlFile {
      * &lt;hardware&gt; element with &lt;servo&gt; elements"). Read errors and a wrong root are
      * reported; then {@link #root()} is null.
      */
-    public static FlatXmlFile read(Path path, String what, String root, String expected, DiagnosticSink diags) {
+    public static FlatXmlFile read(Path path, Message what, String root, Message expected, DiagnosticSink diags) {
         FlatXmlFile f = new FlatXmlFile(path.toString(), diags);
         try (InputStream in = InputFiles.open(path)) {
             XMLStreamReader2 r = (XMLStreamReader2) FACTORY.createXMLStreamReader(in);
@@ -83,7 +86,7 @@ public final class FlatXmlFile {
             f.notWellFormed((XMLStreamException) e.getCause());
             f.rootAt = null;
         } catch (IOException e) {
-            f.error(f.start(), "cannot read the " + what + ": " + e.getMessage());
+            f.error(f.start(), Msg.CANNOT_READ_THE, what, e.getMessage());
             f.rootAt = null;
         }
         return f;
@@ -91,12 +94,12 @@ public final class FlatXmlFile {
 
     /**
      * Reads {@code text}, the contents of {@code file} (for example an editor's text), as
-     * {@link #read(Path, String, String, String, DiagnosticSink)} reads a file, with the same
+     * {@link #read(Path, Message, String, Message, DiagnosticSink)} reads a file, with the same
      * checks and messages; the place of the root and of every child element also carries the
      * element's {@link org.parpe.core.diag.SourceSpan} and offset, so that an editor can change
      * it through the edit layer ({@code org.parpe.core.edit}).
      */
-    public static FlatXmlFile read(String file, String text, String what, String root, String expected,
+    public static FlatXmlFile read(String file, String text, Message what, String root, Message expected,
                                    DiagnosticSink diags) {
         FlatXmlFile f = new FlatXmlFile(file, diags);
         f.source = new SourceText(file, text);
@@ -134,7 +137,7 @@ public final class FlatXmlFile {
         if (l != null && l.getLineNumber() > 0) {
             at = pos(l);
         }
-        error(at == null ? start() : at, "not well-formed XML: " + message);
+        error(at == null ? start() : at, Msg.NOT_WELL_FORMED, message);
     }
 
     /** Where the root element starts; null when the file could not be read or has another root. */
@@ -162,9 +165,9 @@ public final class FlatXmlFile {
         return ok;
     }
 
-    /** Reports an error at {@code at}; {@link #ok} turns false. */
-    public void error(SourcePos at, String message) {
-        diags.error(at, message);
+    /** Reports an error at {@code at}, the text of {@code key} with {@code args}; {@link #ok} turns false. */
+    public void error(SourcePos at, Key key, Object... args) {
+        diags.error(at, key, args);
         ok = false;
         errors++;
     }
@@ -179,8 +182,7 @@ public final class FlatXmlFile {
         boolean good = true;
         for (String k : a.keySet()) {
             if (!allowed.contains(k)) {
-                error(at, "<" + element + "> has no attribute '" + k + "'; it takes "
-                        + String.join(", ", allowed.stream().sorted().toList()));
+                error(at, Msg.HAS_NO_ATTRIBUTE, element, k, String.join(", ", allowed.stream().sorted().toList()));
                 good = false;
             }
         }
@@ -192,7 +194,7 @@ public final class FlatXmlFile {
         boolean good = true;
         for (String k : keys) {
             if (!a.containsKey(k) || a.get(k).isEmpty()) {
-                error(at, "<" + element + "> needs the attribute '" + k + "'");
+                error(at, Msg.NEEDS_THE_ATTRIBUTE, element, k);
                 good = false;
             }
         }
@@ -212,11 +214,11 @@ public final class FlatXmlFile {
         }
         Double d = Numbers.parsePlain(v);
         if (d == null || whole && d != Math.rint(d)) {
-            error(at, key + " must be " + (whole ? "a whole number" : "a number") + ", got '" + v + "'");
+            error(at, whole ? Msg.MUST_BE_WHOLE : Msg.MUST_BE_NUMBER, key, v);
             return fallback;
         }
         if (d < lo || d > hi) {
-            error(at, key + " must be in " + plain(lo) + ".." + plain(hi) + ", got " + v);
+            error(at, Msg.MUST_BE_IN_RANGE, key, plain(lo), plain(hi), v);
             return fallback;
         }
         return d;
@@ -227,27 +229,25 @@ public final class FlatXmlFile {
         return d == Math.rint(d) ? String.valueOf((long) d) : String.format(Locale.ROOT, "%.2f", d);
     }
 
-    private void document(XMLStreamReader2 r, String what, String root, String expected) throws XMLStreamException {
+    private void document(XMLStreamReader2 r, Message what, String root, Message expected) throws XMLStreamException {
         int ev = r.next();
         while (ev != XMLStreamConstants.START_ELEMENT && ev != XMLStreamConstants.END_DOCUMENT) {
             if (ev == XMLStreamConstants.DTD) {
                 // as XmlReader says for scripts: the parser reads no DTD, so its entities would
                 // only be "undeclared" later on; say what is refused, where it is
-                error(here(r), "DOCTYPE declarations are not allowed in a " + what
-                        + " (their entities, external files among them, are never read)");
+                error(here(r), Msg.NO_DOCTYPE_IN, what);
                 return;
             }
             ev = r.next();
         }
         if (ev != XMLStreamConstants.START_ELEMENT) {
-            error(start(), "expected " + expected);
+            error(start(), Msg.EXPECTED_ROOT, expected);
             return;
         }
         SourcePos at = here(r);
         String rootName = r.getLocalName();
         if (!root.equals(rootName)) {
-            error(at, "<" + rootName + "> is not a " + what + ("program".equals(rootName) ? " but a PARSL script" : "")
-                    + "; expected " + expected);
+            error(at, "program".equals(rootName) ? Msg.NOT_THIS_KIND_BUT_SCRIPT : Msg.NOT_THIS_KIND, rootName, what, expected);
             return;
         }
         Spanned rootSpan = spanned(r, rootName);
@@ -300,8 +300,12 @@ public final class FlatXmlFile {
         // without attributes and elements the element is text only: the text is placed at the element
         boolean bare = attrs.isEmpty() && inner.stream().allMatch(java.util.Objects::isNull);
         for (int i = 0; i < places.size(); i++) {
-            error(inner.get(i) != null ? places.get(i) : bare ? at : places.get(i),
-                    "<" + name + "> may not contain " + (inner.get(i) == null ? "text" : "<" + inner.get(i) + ">"));
+            SourcePos where = inner.get(i) != null ? places.get(i) : bare ? at : places.get(i);
+            if (inner.get(i) == null) {
+                error(where, Msg.MAY_NOT_CONTAIN_TEXT, name);
+            } else {
+                error(where, Msg.MAY_NOT_CONTAIN_ELEMENT, name, inner.get(i));
+            }
         }
         children.add(new Element(name, attrs, spanned.at(r, at)));
     }
@@ -345,7 +349,7 @@ public final class FlatXmlFile {
 
         void reportIfAny(String element) {
             if (first != null) {
-                error(first, "<" + element + "> may not contain text");
+                error(first, Msg.MAY_NOT_CONTAIN_TEXT, element);
             }
         }
     }

@@ -11,13 +11,15 @@ import java.nio.file.AccessDeniedException;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import org.parpe.core.text.Msg;
 
 /**
  * Opens every file PARPE reads as input (scripts, included and robot files, stimulus files,
  * simulator robot configurations): only regular files, at most {@link #MAX_BYTES} bytes.
  * Devices such as {@code /dev/zero} and FIFOs are refused before they are opened, so an endless
  * input or a FIFO without a writer ends in a message instead of running out of memory or
- * blocking. Messages of the {@link IOException}s say what is wrong, without the file name.
+ * blocking. Messages of the {@link IOException}s say what is wrong, without the file name, in the
+ * chosen language ({@link org.parpe.core.text.Lang}).
  */
 public final class InputFiles {
     /** The largest input file, 16 MiB: far beyond any script, small enough to load in little memory. */
@@ -38,7 +40,7 @@ public final class InputFiles {
         checkKind(file);
         long size = Files.size(file);
         if (size > MAX_BYTES) {
-            throw tooLarge(size + " bytes");
+            throw tooLarge(Msg.N_BYTES.text(size));
         }
     }
 
@@ -49,16 +51,16 @@ public final class InputFiles {
      */
     public static void checkKind(Path file) throws IOException {
         if (Files.isDirectory(file)) {
-            throw new IOException("it is a directory");
+            throw new IOException(Msg.IS_A_DIRECTORY.text());
         }
         if (!Files.exists(file)) {
-            throw new IOException("no such file");
+            throw new IOException(Msg.NO_SUCH_FILE.text());
         }
         if (!Files.isRegularFile(file)) {
-            throw new IOException("it is not a regular file (a device, FIFO or socket); input files must be regular files");
+            throw new IOException(Msg.NOT_A_REGULAR_FILE.text());
         }
         if (!Files.isReadable(file)) {
-            throw new IOException("permission denied");
+            throw new IOException(Msg.PERMISSION_DENIED.text());
         }
     }
 
@@ -68,9 +70,9 @@ public final class InputFiles {
         try {
             return new Bounded(Files.newInputStream(file));
         } catch (NoSuchFileException e) {
-            throw new IOException("no such file", e);
+            throw new IOException(Msg.NO_SUCH_FILE.text(), e);
         } catch (AccessDeniedException e) {
-            throw new IOException("permission denied", e);
+            throw new IOException(Msg.PERMISSION_DENIED.text(), e);
         }
     }
 
@@ -85,14 +87,13 @@ public final class InputFiles {
             s = StandardCharsets.UTF_8.newDecoder().onMalformedInput(CodingErrorAction.REPORT)
                     .onUnmappableCharacter(CodingErrorAction.REPORT).decode(ByteBuffer.wrap(bytes)).toString();
         } catch (CharacterCodingException e) {
-            throw new IOException("it is not UTF-8 text", e);
+            throw new IOException(Msg.NOT_UTF8.text(), e);
         }
         return s.startsWith("\uFEFF") ? s.substring(1) : s;
     }
 
     private static IOException tooLarge(String size) {
-        return new IOException("it is " + size + ", larger than the limit of " + (MAX_BYTES >> 20)
-                + " MiB for an input file");
+        return new IOException(Msg.FILE_TOO_LARGE.text(size, MAX_BYTES >> 20));
     }
 
     /** Fails once more than {@link #MAX_BYTES} bytes were read. */
@@ -124,7 +125,7 @@ public final class InputFiles {
         private void count(int n) throws IOException {
             count += n;
             if (count > MAX_BYTES) {
-                throw tooLarge("more than " + MAX_BYTES + " bytes");
+                throw tooLarge(Msg.MORE_THAN_BYTES.text(MAX_BYTES));
             }
         }
     }

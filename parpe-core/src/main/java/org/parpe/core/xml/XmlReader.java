@@ -11,6 +11,8 @@ import javax.xml.stream.XMLStreamConstants;
 import javax.xml.stream.XMLStreamException;
 import org.codehaus.stax2.XMLStreamReader2;
 import org.parpe.core.diag.DiagnosticSink;
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 
 /**
  * Reads a PARSL file into an {@link XElement} tree with StAX (Woodstox). DTDs and external
@@ -121,7 +123,7 @@ public final class XmlReader {
                     && !open.isEmpty() && !r.getText().isBlank()) {
                 open.peek().addText(TagScanner.text(source, offset, r.getText()));
             } else if (ev == XMLStreamConstants.DTD) {
-                diags.error(source.pos(offset), "DOCTYPE declarations are not allowed in PARSL files");
+                diags.error(source.pos(offset), Msg.NO_DOCTYPE);
                 return null;
             }
         }
@@ -131,36 +133,37 @@ public final class XmlReader {
 
     private static void report(SourceText source, DiagnosticSink diags, XMLStreamException e) {
         Location loc = e.getLocation();
-        String msg = e.getMessage() == null ? "malformed XML" : e.getMessage();
+        String msg = e.getMessage() == null ? Msg.MALFORMED_XML_UNKNOWN.text() : e.getMessage();
         int cut = msg.indexOf("\n at [");
         msg = (cut >= 0 ? msg.substring(0, cut) : msg).replace('\n', ' ').trim();
         if (msg.startsWith("ParseError at [")) {
             msg = msg.substring(msg.indexOf("Message:") + 8).trim();
         }
         diags.error(loc == null ? source.pos(0) : source.pos(loc.getLineNumber(), loc.getColumnNumber()),
-                "malformed XML: " + msg + (loc == null ? "" : unquoted(source.text(), loc.getLineNumber(), loc.getColumnNumber(), msg)));
+                Msg.MALFORMED_XML, msg,
+                loc == null ? Message.EMPTY : unquoted(source.text(), loc.getLineNumber(), loc.getColumnNumber(), msg));
     }
 
     /**
      * What to type instead when the parser wanted a quote: an attribute value without quotes, as
      * {@code period=1}; empty otherwise.
      */
-    static String unquoted(String text, int line, int column, String msg) {
+    static Message unquoted(String text, int line, int column, String msg) {
         if (!msg.contains("Expected a quote")) {
-            return "";
+            return Message.EMPTY;
         }
         int at = 0;
         for (int l = 1; l < line && at >= 0; l++) {
             at = text.indexOf('\n', at) + 1;
             if (at == 0) {
-                return "";
+                return Message.EMPTY;
             }
         }
         int end = Math.min(text.length(), at + Math.max(0, column - 1));
         // The parser stops at the value's first character or just after it: go back to the '='.
         int eq = text.lastIndexOf('=', end);
         if (eq < 0 || eq < text.lastIndexOf('<', end)) {
-            return "";
+            return Message.EMPTY;
         }
         int nameEnd = eq;
         while (nameEnd > 0 && Character.isWhitespace(text.charAt(nameEnd - 1))) {
@@ -180,10 +183,10 @@ public final class XmlReader {
             valueEnd++;
         }
         if (nameStart == nameEnd || valueStart == valueEnd) {
-            return "";
+            return Message.EMPTY;
         }
         String name = text.substring(nameStart, nameEnd);
-        return "; an attribute's value goes in quotes: write " + name + "=\"" + text.substring(valueStart, valueEnd) + "\"";
+        return Message.of(Msg.QUOTE_THE_VALUE, name, text.substring(valueStart, valueEnd));
     }
 
     private static boolean isNameChar(char c) {

@@ -22,7 +22,8 @@ class FlatXmlFileTest {
     private FlatXmlFile read(String text, DiagnosticList d) throws Exception {
         Path f = dir.resolve("f.xml");
         Files.writeString(f, text);
-        return FlatXmlFile.read(f, "thing list", "things", "a <things> element with <thing> elements", d);
+        return FlatXmlFile.read(f, org.parpe.core.text.Message.verbatim("thing list"), "things",
+                org.parpe.core.text.Message.verbatim("a <things> element with <thing> elements"), d);
     }
 
     private static List<String> lines(DiagnosticList d) {
@@ -177,8 +178,9 @@ class FlatXmlFileTest {
             DiagnosticList fromFile = new DiagnosticList();
             read(text, fromFile);
             DiagnosticList fromText = new DiagnosticList();
-            FlatXmlFile f = FlatXmlFile.read(dir.resolve("f.xml").toString(), text, "thing list", "things",
-                    "a <things> element with <thing> elements", fromText);
+            FlatXmlFile f = FlatXmlFile.read(dir.resolve("f.xml").toString(), text,
+                    org.parpe.core.text.Message.verbatim("thing list"), "things",
+                    org.parpe.core.text.Message.verbatim("a <things> element with <thing> elements"), fromText);
             assertEquals(lines(fromFile), lines(fromText));
             assertEquals(1, fromText.all().size(), lines(fromText).toString());
             var root = f.root().span();

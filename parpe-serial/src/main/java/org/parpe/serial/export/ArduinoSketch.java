@@ -1,5 +1,6 @@
 package org.parpe.serial.export;
 
+import org.parpe.core.text.Msg;
 import java.nio.file.Path;
 import java.util.Locale;
 import org.parpe.core.export.CRuntime;
@@ -34,8 +35,7 @@ final class ArduinoSketch {
         double us = tick * 1e6;
         long whole = Math.round(us);
         if (Math.abs(us - whole) > 1e-9 * us) {
-            throw new IllegalArgumentException("--tick for an Arduino sketch must be a whole number of microseconds (the board"
-                    + " counts time with micros()), got " + tick + " s = " + us + " us; use " + whole / 1e6 + " s");
+            throw new IllegalArgumentException(Msg.SKETCH_TICK.text(tick, us, whole / 1e6));
         }
         return whole;
     }

@@ -1,5 +1,6 @@
 package org.parpe.serial.export;
 
+import org.parpe.core.text.Msg;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -77,10 +78,10 @@ public final class ProgramExport {
          */
         public Request {
             if (!target.boards().contains(board)) {
-                throw new IllegalArgumentException("--board host is for --target c; an Arduino sketch runs on uno, nano or esp32");
+                throw new IllegalArgumentException(Msg.HOST_IS_FOR_C.text());
             }
             if ((sketch != null) != (target == Target.ARDUINO)) {
-                throw new IllegalArgumentException("--servo, --pins, --model and --console-sensors are for --target arduino");
+                throw new IllegalArgumentException(Msg.SKETCH_OPTIONS_ONLY.text());
             }
             if (target == Target.ARDUINO) {
                 ArduinoSketch.tickMicros(tick);
@@ -143,8 +144,7 @@ public final class ProgramExport {
             Path p = dir.resolve(name);
             if (name.endsWith(".ino") && Files.isRegularFile(p)
                     && !Files.readString(p, StandardCharsets.UTF_8).startsWith(MARK)) {
-                return "'" + p + "' was edited (it no longer starts with '" + MARK
-                        + "'); move it away or export to another folder";
+                return Msg.SKETCH_EDITED.text(p, MARK);
             }
         }
         return null;

@@ -1,5 +1,6 @@
 package org.parpe.serial.export;
 
+import org.parpe.core.text.Msg;
 import java.util.List;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.export.DriverCost;
@@ -39,30 +40,29 @@ public record SketchOptions(Driver driver, List<Integer> pins, int baud, ServoMo
             case "pwm" -> Driver.PWM;
             case "dxl" -> Driver.DXL;
             case "sts" -> Driver.STS;
-            default -> throw new IllegalArgumentException("--servo must be pwm, dxl or sts, got '" + servo + "'");
+            default -> throw new IllegalArgumentException(Msg.BAD_SERVO.text(servo));
         };
         if (d != Driver.PWM && !pins.isEmpty()) {
-            throw new IllegalArgumentException("--pins is for --servo pwm; a " + servo + " bus addresses servos by ID");
+            throw new IllegalArgumentException(Msg.PINS_FOR_PWM.text(servo));
         }
         for (int p : pins) {
             if (p < 0 || p > 99) {
-                throw new IllegalArgumentException("--pins must be pin numbers 0..99, got " + p);
+                throw new IllegalArgumentException(Msg.BAD_PIN.text(p));
             }
         }
         if (!(baud >= 9600 && baud <= 4_500_000)) {
-            throw new IllegalArgumentException("--baud must be within [9600, 4500000], got " + baud);
+            throw new IllegalArgumentException(Msg.BAD_BAUD.text(baud));
         }
         if (d == Driver.PWM) {
             if (modelName != null) {
-                throw new IllegalArgumentException("--model is for --servo dxl or sts");
+                throw new IllegalArgumentException(Msg.MODEL_FOR_BUS.text());
             }
             return new SketchOptions(d, List.copyOf(pins), baud, null, consoleSensors);
         }
         ServoProtocol protocol = d == Driver.DXL ? ServoProtocol.DXL2 : ServoProtocol.STS;
         ServoModel m = modelName == null ? ServoModel.defaultFor(protocol) : ServoModel.named(modelName);
         if (m == null || m.protocol() != protocol) {
-            throw new IllegalArgumentException("--model '" + modelName + "' is not a " + servo + " servo; known: "
-                    + ServoModel.names(protocol));
+            throw new IllegalArgumentException(Msg.MODEL_NOT_OF_SERVO.text(modelName, servo, ServoModel.names(protocol)));
         }
         return new SketchOptions(d, List.of(), baud, m, consoleSensors);
     }
@@ -91,28 +91,23 @@ public record SketchOptions(Driver driver, List<Integer> pins, int baud, ServoMo
     public void check(Program p, DiagnosticSink diags) {
         for (SensorDecl s : p.robot().sensors()) {
             if (!s.type().equals("angle") && !consoleSensors) {
-                diags.error(s.pos(), "an Arduino sketch cannot read '" + s.type() + "' sensors (it drives servos only);"
-                        + " export with --console-sensors to take their readings from console commands such as '$"
-                        + s.modules().get(0) + "_" + (s.type().equals("touch") ? "touch_left" : "accel_z")
-                        + "=1', or with --target c and read them in your board code (parsl_set_reading)");
+                diags.error(s.pos(), Msg.SKETCH_SENSORS, s.type(),
+                        "$" + s.modules().get(0) + "_" + (s.type().equals("touch") ? "touch_left" : "accel_z") + "=1");
             }
         }
         int[] ids = p.moduleIds();
         if (driver == Driver.PWM) {
             if (!pins.isEmpty() && pins.size() != ids.length) {
-                diags.error(p.robot().pos(), "--pins names " + pins.size() + " pins but the robot has " + ids.length
-                        + " modules; give one pin per module, in ascending ID order");
+                diags.error(p.robot().pos(), Msg.PIN_COUNT, pins.size(), ids.length);
             } else if (pins.isEmpty() && ids.length > MAX_PWM) {
-                diags.error(p.robot().pos(), "the robot has " + ids.length + " modules but an Arduino drives at most "
-                        + MAX_PWM + " PWM servos; use --servo dxl or sts (a bus of up to 253 servos)");
+                diags.error(p.robot().pos(), Msg.TOO_MANY_PWM, ids.length, MAX_PWM);
             }
             return;
         }
         int max = driver == Driver.DXL ? 252 : 253;
         for (int id : ids) {
             if (id > max) {
-                diags.error(p.robot().pos(), "module " + id + " cannot be a " + model.name() + " servo ID (0.." + max
-                        + "); the sketch uses module IDs as servo IDs");
+                diags.error(p.robot().pos(), Msg.MODULE_NOT_SERVO_ID, id, model.name(), max);
                 return;
             }
         }

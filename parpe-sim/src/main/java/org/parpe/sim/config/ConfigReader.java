@@ -7,6 +7,8 @@ import java.util.Map;
 import java.util.Set;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 import org.parpe.core.xml.FlatXmlFile;
 
 /**
@@ -19,10 +21,9 @@ final class ConfigReader {
     private static final Set<String> CONNECT_ATTRS = Set.of("from", "to", "orientation");
     private static final Set<String> ROOT_ATTRS = Set.of("part", "x", "y", "roll", "pitch", "yaw", "height");
 
-    private static final String WHAT = "robot configuration";
+    private static final Message WHAT = Message.of(Msg.FILE_ROBOT_CONFIG);
     private static final String ROOT = "robot-config";
-    private static final String EXPECTED =
-            "a <robot-config> element with <part> and <connect> elements, or a generator such as snake";
+    private static final Message EXPECTED = Message.of(Msg.EXPECTED_ROBOT_CONFIG);
 
     private final FlatXmlFile xml;
     private final List<PartSpec> parts = new ArrayList<>();
@@ -53,14 +54,14 @@ final class ConfigReader {
         }
         ConfigReader r = new ConfigReader(xml);
         for (String attr : xml.rootAttributes().keySet()) {
-            xml.error(xml.root(), "unexpected '" + attr + "' in <robot-config>; expected <part>, <connect> or <root>");
+            xml.error(xml.root(), Msg.CONFIG_UNEXPECTED_ATTRIBUTE, attr);
         }
         for (FlatXmlFile.Element e : xml.children()) {
             switch (e.name()) {
                 case "part" -> r.part(e.attributes(), e.at());
                 case "connect" -> r.connect(e.attributes(), e.at());
                 case "root" -> r.root(e.attributes(), e.at());
-                default -> xml.error(e.at(), "unknown element <" + e.name() + ">; expected <part>, <connect> or <root>");
+                default -> xml.error(e.at(), Msg.CONFIG_UNKNOWN_ELEMENT, e.name());
             }
         }
         if (!xml.ok()) {
@@ -71,7 +72,7 @@ final class ConfigReader {
         }
         if (r.parts.isEmpty()) {
             if (!emptyAllowed) {
-                xml.error(xml.start(), "the configuration defines no <part>");
+                xml.error(xml.start(), Msg.CONFIG_NO_PART);
             }
             return new ConfigFile(null, xml.root(), xml.children());
         }
@@ -84,25 +85,25 @@ final class ConfigReader {
         }
         PartType type = PartType.ofXmlName(a.get("type"));
         if (type == null) {
-            error(at, "unknown part type '" + a.get("type") + "'; expected segment, node, foot or hub");
+            error(at, Msg.UNKNOWN_PART_TYPE, a.get("type"));
             return;
         }
         if (type == PartType.SEGMENT && !a.containsKey("id")) {
-            error(at, "a segment needs an id (its logical module ID)");
+            error(at, Msg.SEGMENT_NEEDS_ID);
             return;
         }
         if (type != PartType.SEGMENT && (a.containsKey("id") || a.containsKey("angle") || a.containsKey("limp"))) {
-            error(at, "only segments take id, angle and limp; '" + a.get("name") + "' is a " + type.xmlName());
+            error(at, Msg.ONLY_SEGMENTS_TAKE, a.get("name"), type.xmlName());
         }
         if (type != PartType.HUB && a.containsKey("plates")) {
-            error(at, "only hubs take plates; '" + a.get("name") + "' is a " + type.xmlName());
+            error(at, Msg.ONLY_HUBS_TAKE_PLATES, a.get("name"), type.xmlName());
         }
         int id = type == PartType.SEGMENT ? (int) number(a, "id", 0, at, true) : -1;
         double angle = number(a, "angle", 0, at, false);
         int plates = (int) number(a, "plates", type.defaultPlates(), at, true);
         String limp = a.getOrDefault("limp", "false");
         if (!limp.equals("true") && !limp.equals("false")) {
-            error(at, "limp must be true or false, got '" + limp + "'");
+            error(at, Msg.LIMP_TRUE_OR_FALSE, limp);
         }
         parts.add(new PartSpec(a.get("name"), type, id, angle, plates, limp.equals("true"), at));
     }
@@ -115,7 +116,7 @@ final class ConfigReader {
         String[] to = plateRef(a.get("to"), at);
         double deg = number(a, "orientation", 0, at, false);
         if (deg % 90 != 0 || deg < 0 || deg >= 360) {
-            error(at, "orientation must be 0, 90, 180 or 270 (degrees), got " + a.get("orientation"));
+            error(at, Msg.BAD_ORIENTATION, a.get("orientation"));
             return;
         }
         if (from != null && to != null) {
@@ -129,7 +130,7 @@ final class ConfigReader {
         int dot = ref.lastIndexOf('.');
         String plate = ref.substring(dot + 1);
         if (dot <= 0 || plate.isEmpty() || plate.length() > 2 || !plate.chars().allMatch(c -> c >= '0' && c <= '9')) {
-            error(at, "expected PART.PLATE such as 's3.1', got '" + ref + "'");
+            error(at, Msg.BAD_PLATE_REF, ref);
             return null;
         }
         return new String[] {ref.substring(0, dot), ref.substring(dot + 1)};
@@ -140,14 +141,14 @@ final class ConfigReader {
             return;
         }
         if (roots.stream().anyMatch(r -> r.part().equals(a.get("part")))) {
-            error(at, "part '" + a.get("part") + "' is already a root; each <root> starts a robot of its own");
+            error(at, Msg.ALREADY_A_ROOT, a.get("part"));
             return;
         }
         RootPose root = new RootPose(a.get("part"), number(a, "x", 0, at, false), number(a, "y", 0, at, false),
                 number(a, "roll", 0, at, false), number(a, "pitch", 0, at, false), number(a, "yaw", 0, at, false),
                 number(a, "height", RootPose.RESTING, at, false), at);
         if (root.height() < 0) {
-            error(at, "height must be >= 0 m, got " + root.height());
+            error(at, Msg.HEIGHT_NEGATIVE, root.height());
         }
         roots.add(root);
     }
@@ -164,7 +165,7 @@ final class ConfigReader {
         return xml.number(a, key, fallback, at, whole, Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY);
     }
 
-    private void error(SourcePos at, String message) {
-        xml.error(at, message);
+    private void error(SourcePos at, Msg key, Object... args) {
+        xml.error(at, key, args);
     }
 }

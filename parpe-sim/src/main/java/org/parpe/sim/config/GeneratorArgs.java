@@ -1,5 +1,6 @@
 package org.parpe.sim.config;
 
+import org.parpe.core.text.Msg;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -36,9 +37,9 @@ final class GeneratorArgs {
             String t = item.trim();
             int eq = t.indexOf('=');
             if (eq <= 0) {
-                a.error(col, "expected key=value, got '" + t + "'");
+                a.error(col, Msg.EXPECTED_KEY_VALUE, t);
             } else if (a.values.put(t.substring(0, eq).trim(), t.substring(eq + 1).trim()) != null) {
-                a.error(col, "'" + t.substring(0, eq).trim() + "' is given twice");
+                a.error(col, Msg.GIVEN_TWICE, t.substring(0, eq).trim());
             } else {
                 a.columns.put(t.substring(0, eq).trim(), col);
             }
@@ -65,12 +66,12 @@ final class GeneratorArgs {
             }
             int n = Integer.parseInt(v);
             if (n < min || n > max) {
-                error(columns.get(key), key + " must be in " + min + ".." + max + ", got " + n);
+                error(columns.get(key), Msg.MUST_BE_IN_RANGE, key, min, max, n);
                 return fallback;
             }
             return n;
         } catch (NumberFormatException e) {
-            error(columns.get(key), key + " must be a whole number, got '" + v + "'");
+            error(columns.get(key), Msg.MUST_BE_WHOLE, key, v);
             return fallback;
         }
     }
@@ -87,7 +88,7 @@ final class GeneratorArgs {
                 return c;
             }
         }
-        error(columns.get(key), key + " must be one of " + String.join(", ", choices) + ", got '" + v + "'");
+        error(columns.get(key), Msg.MUST_BE_ONE_OF, key, String.join(", ", choices), v);
         return choices[0];
     }
 
@@ -95,15 +96,15 @@ final class GeneratorArgs {
     boolean finish(String generator) {
         for (Map.Entry<String, Integer> e : columns.entrySet()) {
             if (!known.contains(e.getKey())) {
-                error(e.getValue(), "generator '" + generator + "' has no parameter '" + e.getKey() + "'; it takes "
-                        + String.join(", ", known) + Names.suggest(e.getKey(), known));
+                error(e.getValue(), Msg.GENERATOR_NO_PARAMETER, generator, e.getKey(), String.join(", ", known),
+                        Names.suggest(e.getKey(), known));
             }
         }
         return ok;
     }
 
-    void error(int column, String message) {
-        diags.error(new SourcePos(origin, 1, column), message);
+    void error(int column, Msg key, Object... args) {
+        diags.error(new SourcePos(origin, 1, column), key, args);
         ok = false;
     }
 }

@@ -1,5 +1,7 @@
 package org.parpe.sim.config;
 
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 import java.nio.file.Path;
 import java.util.Collections;
 import java.util.EnumMap;
@@ -81,9 +83,8 @@ public record Kit(String name, Map<PartType, Integer> owned, Map<PartType, Sourc
             int n = used.merge(p.type(), 1, Integer::sum);
             if (n == owned(p.type()) + 1) {
                 SourcePos at = where.getOrDefault(p.type(), SourcePos.NONE);
-                diags.error(p.pos(), p.type().xmlName() + " '" + p.name() + "' is beyond the kit: the robot uses "
-                        + p.type().count(total.get(p.type())) + ", kit " + name + " has "
-                        + owned(p.type()) + (at.line() > 0 ? " (line " + at.line() + ")" : ""));
+                diags.error(p.pos(), Msg.BEYOND_THE_KIT, p.type().xmlName(), p.name(), p.type().count(total.get(p.type())), name,
+                        owned(p.type()), at.line() > 0 ? Message.of(Msg.LINE_NOTE, at.line()) : Message.EMPTY);
                 fits = false;
             }
         }
@@ -92,13 +93,12 @@ public record Kit(String name, Map<PartType, Integer> owned, Map<PartType, Sourc
 
     /** Reads kit file {@code path}; returns {@code null} after reporting errors to {@code diags}. */
     public static Kit read(Path path, DiagnosticSink diags) {
-        FlatXmlFile xml = FlatXmlFile.read(path, "kit", "kit",
-                "a <kit> element with <part type=\"segment\" count=\"12\"/> elements", diags);
+        FlatXmlFile xml = FlatXmlFile.read(path, Message.of(Msg.FILE_KIT), "kit", Message.of(Msg.EXPECTED_KIT), diags);
         if (xml.root() == null) {
             return null;
         }
         for (String a : xml.rootAttributes().keySet()) {
-            xml.error(xml.root(), "unexpected '" + a + "' in <kit>; expected <part type=\"...\" count=\"...\"/> elements");
+            xml.error(xml.root(), Msg.KIT_UNEXPECTED_ATTRIBUTE, a);
         }
         Map<PartType, Integer> owned = new EnumMap<>(PartType.class);
         Map<PartType, SourcePos> where = new EnumMap<>(PartType.class);
@@ -106,7 +106,7 @@ public record Kit(String name, Map<PartType, Integer> owned, Map<PartType, Sourc
         for (FlatXmlFile.Element e : xml.children()) {
             Map<String, String> a = e.attributes();
             if (!e.name().equals("part")) {
-                xml.error(e.at(), "unknown element <" + e.name() + ">; expected <part type=\"...\" count=\"...\"/>");
+                xml.error(e.at(), Msg.KIT_UNKNOWN_ELEMENT, e.name());
                 continue;
             }
             if (!xml.known(a, PART_ATTRS, "part", e.at()) || !xml.required(a, e.at(), "part", "type", "count")) {
@@ -114,13 +114,13 @@ public record Kit(String name, Map<PartType, Integer> owned, Map<PartType, Sourc
             }
             PartType t = PartType.ofXmlName(a.get("type"));
             if (t == null) {
-                xml.error(e.at(), "unknown part type '" + a.get("type") + "'; expected one of " + String.join(", ", types)
-                        + Names.suggest(a.get("type"), types));
+                xml.error(e.at(), Msg.KIT_UNKNOWN_PART_TYPE, a.get("type"), String.join(", ", types),
+                        Names.suggest(a.get("type"), types));
                 continue;
             }
             int count = (int) xml.number(a, "count", 0, e.at(), true, 0, MAX_COUNT);
             if (where.containsKey(t)) {
-                xml.error(e.at(), "the kit gives " + t.xmlName() + " twice (first on line " + where.get(t).line() + ")");
+                xml.error(e.at(), Msg.KIT_TWICE, t.xmlName(), where.get(t).line());
                 continue;
             }
             owned.put(t, count);
@@ -130,7 +130,7 @@ public record Kit(String name, Map<PartType, Integer> owned, Map<PartType, Sourc
             return null;
         }
         if (owned.isEmpty()) {
-            xml.error(xml.root(), "the kit names no <part>; give how many of each type the class owns");
+            xml.error(xml.root(), Msg.KIT_EMPTY);
             return null;
         }
         return new Kit(path.toString(), owned, where);

@@ -79,9 +79,8 @@ public final class RobotConfigs {
             default -> null;
         };
         if (config == null) {
-            diags.error(new SourcePos("--sim " + spec, 1, 1), "unknown robot '" + name + "'; expected one of "
-                    + String.join(", ", GENERATORS) + " or a configuration file ending in .xml"
-                    + Names.suggest(name, GENERATORS));
+            diags.error(new SourcePos("--sim " + spec, 1, 1), org.parpe.core.text.Msg.UNKNOWN_ROBOT, name,
+                    String.join(", ", GENERATORS), Names.suggest(name, GENERATORS));
             return null;
         }
         return args.finish(name) ? config : null;
@@ -101,8 +100,8 @@ public final class RobotConfigs {
             }
         }
         if (missing > 0) {
-            diags.warning(SourcePos.origin("simulated robot " + config.name()), "it has no module " + list
-                    + " of the script (it has " + have.length + " modules); commands to them are ignored");
+            diags.warning(SourcePos.origin("simulated robot " + config.name()), org.parpe.core.text.Msg.ROBOT_LACKS_MODULES,
+                    list, have.length);
         }
         return missing;
     }

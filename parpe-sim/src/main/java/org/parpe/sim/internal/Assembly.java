@@ -170,8 +170,7 @@ public final class Assembly {
         boolean ok = true;
         for (int i = 0; i < parts.size(); i++) {
             if (parts.get(i).isSegment() && cluster[first[i]] == cluster[first[i] + 1]) {
-                diags.error(parts.get(i).pos(), "segment '" + parts.get(i).name()
-                        + "' cannot turn: its two plates are rigidly connected to each other through other parts");
+                diags.error(parts.get(i).pos(), org.parpe.core.text.Msg.SEGMENT_CANNOT_TURN, parts.get(i).name());
                 ok = false;
             }
         }

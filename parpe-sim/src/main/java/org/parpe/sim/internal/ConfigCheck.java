@@ -1,5 +1,7 @@
 package org.parpe.sim.internal;
 
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 import org.parpe.core.expr.Names;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -37,13 +39,12 @@ final class ConfigCheck {
     boolean run() {
         checkParts();
         if (config.parts().isEmpty()) {
-            error(SourcePos.NONE, "configuration '" + config.name() + "' has no parts");
+            error(SourcePos.NONE, Msg.CONFIG_HAS_NO_PARTS, config.name());
             return false;
         }
         for (org.parpe.sim.config.RootPose root : config.roots()) {
             if (!index.containsKey(root.part())) {
-                error(root.pos(), "root part '" + root.part() + "' is not defined"
-                        + Names.suggest(root.part(), index.keySet()));
+                error(root.pos(), Msg.ROOT_PART_NOT_DEFINED, root.part(), Names.suggest(root.part(), index.keySet()));
             }
         }
         Map<String, SourcePos> usedPlates = new HashMap<>();
@@ -57,20 +58,20 @@ final class ConfigCheck {
         Set<Integer> ids = new HashSet<>();
         for (PartSpec p : config.parts()) {
             if (index.putIfAbsent(p.name(), index.size()) != null) {
-                error(p.pos(), "part name '" + p.name() + "' is used twice");
+                error(p.pos(), Msg.PART_NAME_TWICE, p.name());
             }
             if (p.isSegment()) {
                 if (p.moduleId() < 0) {
-                    error(p.pos(), "segment '" + p.name() + "' needs a module id >= 0, got " + p.moduleId());
+                    error(p.pos(), Msg.SEGMENT_ID_NEGATIVE, p.name(), p.moduleId());
                 } else if (!ids.add(p.moduleId())) {
-                    error(p.pos(), "module id " + p.moduleId() + " is used by two segments");
+                    error(p.pos(), Msg.MODULE_ID_TWICE, p.moduleId());
                 }
                 if (!(Math.abs(p.angle()) <= 90)) {
-                    error(p.pos(), "initial angle must be within -90..90 degrees, got " + p.angle());
+                    error(p.pos(), Msg.INITIAL_ANGLE_RANGE, p.angle());
                 }
             }
             if (p.type() == PartType.HUB && (p.plates() < 3 || p.plates() > MAX_HUB_PLATES)) {
-                error(p.pos(), "a hub has 3.." + MAX_HUB_PLATES + " plates, got " + p.plates());
+                error(p.pos(), Msg.HUB_PLATES, MAX_HUB_PLATES, p.plates());
             }
             geometries.add(p.type() == PartType.HUB && (p.plates() < 3 || p.plates() > MAX_HUB_PLATES)
                     ? PartGeometry.of(PartSpec.hub(p.name(), PartType.HUB.defaultPlates()))
@@ -82,35 +83,34 @@ final class ConfigCheck {
         boolean known = checkEnd(c, c.from(), c.fromPlate(), usedPlates);
         known &= checkEnd(c, c.to(), c.toPlate(), usedPlates);
         if (known && c.from().equals(c.to())) {
-            error(c.pos(), "part '" + c.from() + "' is connected to itself");
+            error(c.pos(), Msg.CONNECTED_TO_ITSELF, c.from());
         }
         if (c.quarterTurns() < 0 || c.quarterTurns() > 3) {
-            error(c.pos(), "orientation must be 0, 90, 180 or 270 degrees, got " + c.quarterTurns() * 90);
+            error(c.pos(), Msg.BAD_ORIENTATION_DEGREES, c.quarterTurns() * 90);
         }
     }
 
     private boolean checkEnd(Connection c, String part, int plate, Map<String, SourcePos> usedPlates) {
         Integer i = index.get(part);
         if (i == null) {
-            error(c.pos(), "part '" + part + "' is not defined" + Names.suggest(part, index.keySet()));
+            error(c.pos(), Msg.PART_NOT_DEFINED, part, Names.suggest(part, index.keySet()));
             return false;
         }
         int count = geometries.get(i).plates().size();
         if (plate < 0 || plate >= count) {
-            error(c.pos(), "part '" + part + "' (" + config.parts().get(i).type().xmlName() + ") has plates 0.."
-                    + (count - 1) + ", got " + plate);
+            error(c.pos(), Msg.PART_PLATES, part, config.parts().get(i).type().xmlName(), count - 1, plate);
             return false;
         }
         SourcePos first = usedPlates.putIfAbsent(part + "." + plate, c.pos());
         if (first != null) {
-            error(c.pos(), "plate " + plate + " of part '" + part + "' is already connected"
-                    + (first.line() > 0 ? " (line " + first.line() + ")" : "") + "; a plate takes one connection");
+            error(c.pos(), Msg.PLATE_ALREADY_CONNECTED, plate, part,
+                    first.line() > 0 ? Message.of(Msg.LINE_NOTE, first.line()) : Message.EMPTY);
         }
         return true;
     }
 
-    private void error(SourcePos pos, String message) {
-        diags.error(pos, message);
+    private void error(SourcePos pos, Msg key, Object... args) {
+        diags.error(pos, key, args);
         ok = false;
     }
 }

@@ -64,13 +64,13 @@ final class Overlaps {
                     continue;
                 }
                 if (reported.size() > MAX_REPORTED) {
-                    diags.error(pb.pos(), "more parts overlap; these are the first " + MAX_REPORTED);
+                    diags.error(pb.pos(), org.parpe.core.text.Msg.MORE_OVERLAPS, MAX_REPORTED);
                     return false;
                 }
-                diags.error(pb.pos(), String.format(Locale.ROOT, "part '%s' overlaps part '%s'%s by %.1f mm at the"
-                        + " initial pose (at most %.0f mm); change an initial angle or where it is connected",
-                        pb.name(), pa.name(), pa.pos().line() > 0 ? " (line " + pa.pos().line() + ")" : "",
-                        depth * 1000, TOLERANCE * 1000));
+                diags.error(pb.pos(), org.parpe.core.text.Msg.PARTS_OVERLAP, pb.name(), pa.name(),
+                        pa.pos().line() > 0 ? org.parpe.core.text.Message.of(org.parpe.core.text.Msg.LINE_NOTE, pa.pos().line())
+                                : org.parpe.core.text.Message.EMPTY,
+                        String.format(Locale.ROOT, "%.1f", depth * 1000), String.format(Locale.ROOT, "%.0f", TOLERANCE * 1000));
             }
         }
         return reported.isEmpty();

@@ -70,8 +70,7 @@ final class Placement {
             int part = index.get(root.part());
             if (done[part]) {
                 PartSpec p = config.parts().get(part);
-                diags.error(p.pos(), "part '" + p.name() + "' is a root but is connected to root part '"
-                        + roots.get(chain[part]).part() + "'; each <root> starts a robot of its own");
+                diags.error(p.pos(), org.parpe.core.text.Msg.ROOT_CONNECTED_TO_ROOT, p.name(), roots.get(chain[part]).part());
                 ok = false;
                 continue;
             }
@@ -82,8 +81,8 @@ final class Placement {
         for (int i = 0; i < done.length; i++) {
             if (!done[i]) {
                 PartSpec p = config.parts().get(i);
-                diags.error(p.pos(), "part '" + p.name() + "' is not connected to the root part '"
-                        + roots.get(0).part() + "'" + (roots.size() > 1 ? " or another root" : ""));
+                diags.error(p.pos(), roots.size() > 1 ? org.parpe.core.text.Msg.NOT_CONNECTED_TO_ROOTS
+                        : org.parpe.core.text.Msg.NOT_CONNECTED_TO_ROOT, p.name(), roots.get(0).part());
                 ok = false;
             }
         }
@@ -153,11 +152,9 @@ final class Placement {
         double gap = Geo.sub(p, position[b]).length();
         double twist = Geo.angleBetween(r, rotation[b]);
         if (gap > Assembly.loopGap() || twist > Assembly.loopTwist()) {
-            diags.error(c.pos(), String.format(java.util.Locale.ROOT,
-                    "connection %s.%d -> %s.%d closes a loop but does not fit: the plates are %.1f mm and %.1f"
-                            + " degrees apart (at most %.0f mm and %.0f degrees); check the initial angles",
-                    c.from(), c.fromPlate(), c.to(), c.toPlate(), gap * 1000, Math.toDegrees(twist),
-                    Assembly.loopGap() * 1000, Math.toDegrees(Assembly.loopTwist())));
+            diags.error(c.pos(), org.parpe.core.text.Msg.LOOP_DOES_NOT_FIT, c.from(), c.fromPlate(), c.to(), c.toPlate(),
+                    one(gap * 1000), one(Math.toDegrees(twist)), none(Assembly.loopGap() * 1000),
+                    none(Math.toDegrees(Assembly.loopTwist())));
             return false;
         }
         return true;
@@ -178,5 +175,13 @@ final class Placement {
     }
 
     private record Frame(Vec3 centre, Vec3 normal, Vec3 up) {
+    }
+
+    private static String one(double v) {
+        return String.format(java.util.Locale.ROOT, "%.1f", v);
+    }
+
+    private static String none(double v) {
+        return String.format(java.util.Locale.ROOT, "%.0f", v);
     }
 }

@@ -1,5 +1,7 @@
 package org.parpe.sim.world;
 
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.Map;
@@ -33,8 +35,8 @@ public final class ChallengeReader {
 
     /** Reads {@code path}; returns {@code null} after reporting errors to {@code diags}. */
     public static Challenge read(Path path, DiagnosticSink diags) {
-        FlatXmlFile xml = FlatXmlFile.read(path, "challenge file", "challenge",
-                "a <challenge world=\"...\" robot=\"...\"> element with <parameter> elements", diags);
+        FlatXmlFile xml = FlatXmlFile.read(path, Message.of(Msg.FILE_CHALLENGE), "challenge",
+                Message.of(Msg.EXPECTED_CHALLENGE), diags);
         if (xml.root() == null) {
             return null;
         }
@@ -79,16 +81,14 @@ public final class ChallengeReader {
             kit.check(config, found);
         }
         for (Diagnostic d : found.all()) {
-            diags.report(d.pos().line() > 0 ? d : new Diagnostic(d.severity(), at,
-                    "the challenge's robot " + robot + ": " + d.message() + " (the kit rule of the challenge)"));
+            diags.report(d.pos().line() > 0 ? d : new Diagnostic(d.severity(), at, Msg.KIT_RULE, robot, d.text()));
         }
         return config != null && !found.hasErrors();
     }
 
     private static void parameter(FlatXmlFile xml, FlatXmlFile.Element e, Map<String, Double> into) {
         if (!e.name().equals("parameter")) {
-            xml.error(e.at(), "unknown element <" + e.name() + "> in a challenge; it holds <parameter name=\"...\""
-                    + " value=\"...\"> elements");
+            xml.error(e.at(), Msg.CHALLENGE_UNKNOWN_ELEMENT, e.name());
             return;
         }
         Map<String, String> a = e.attributes();
@@ -98,7 +98,7 @@ public final class ChallengeReader {
         }
         double v = xml.number(a, "value", Double.NaN, e.at(), false, -1e9, 1e9);
         if (into.put(a.get("name"), v) != null) {
-            xml.error(e.at(), "the parameter '" + a.get("name") + "' is set twice");
+            xml.error(e.at(), Msg.PARAMETER_SET_TWICE, a.get("name"));
         }
     }
 
@@ -114,8 +114,7 @@ public final class ChallengeReader {
                 continue;
             }
             if (!Vocabulary.SENSOR_TYPES.contains(type)) {
-                xml.error(at, "sensors lists sensor types (" + String.join(", ", Vocabulary.SENSOR_TYPES) + "), got '"
-                        + type + "'");
+                xml.error(at, Msg.SENSORS_LIST, String.join(", ", Vocabulary.SENSOR_TYPES), type);
             }
             out.add(type);
         }
@@ -128,7 +127,7 @@ public final class ChallengeReader {
                 return t;
             }
         }
-        xml.error(at, "tie-break must be 'distance' or 'none', got '" + v + "'");
+        xml.error(at, Msg.BAD_TIE_BREAK, v);
         return Challenge.TieBreak.DISTANCE;
     }
 }

@@ -72,9 +72,7 @@ final class Movables {
         double w = Math.min(0.004, radius / 4);
         if (!(h > w)) {
             // the wall boards would have no height left above the base (ODE refuses the box)
-            r.error(at, "a cup's height must be more than its base's thickness ("
-                    + Numbers.brief(w) + " m: 4 mm, or a quarter of"
-                    + " the radius when that is less), got " + a.get("height"));
+            r.error(at, org.parpe.core.text.Msg.CUP_HEIGHT, Numbers.brief(w), a.get("height"));
             return;
         }
         List<World.Piece> pieces = new ArrayList<>();
@@ -101,10 +99,10 @@ final class Movables {
         String axisName = a.getOrDefault("axis", "vertical");
         String turn = a.getOrDefault("turn", "left");
         if (!axisName.equals("vertical") && !axisName.equals("horizontal")) {
-            r.error(at, "axis must be vertical or horizontal, got '" + axisName + "'");
+            r.error(at, org.parpe.core.text.Msg.BAD_AXIS, axisName);
         }
         if (!turn.equals("left") && !turn.equals("right")) {
-            r.error(at, "turn must be left or right, got '" + turn + "'");
+            r.error(at, org.parpe.core.text.Msg.BAD_TURN, turn);
         }
         double rad = Math.toRadians(yaw);
         Vec3 along = new Vec3(Math.cos(rad), Math.sin(rad), 0);
@@ -113,7 +111,7 @@ final class Movables {
         double press = r.num(a, "press-angle", 20, at, 1, 90);
         double max = r.num(a, "max-angle", 45, at, 1, 170);
         if (max < press) {
-            r.error(at, "max-angle must be >= press-angle (" + a.getOrDefault("press-angle", "20") + "), got " + max);
+            r.error(at, org.parpe.core.text.Msg.MAX_BELOW_MIN, "max-angle", "press-angle", a.getOrDefault("press-angle", "20"), max);
         }
         Vec3 pivot = new Vec3(x, y, r.num(a, "height", 0.03, at, 0, WorldReader.FAR));
         BodyShape arm = new BodyShape.Box(len / 2, r.length(a, "width", 0.02, at) / 2,

@@ -114,7 +114,7 @@ final class Scenery {
         double y1 = r.coord(a, "y1", 0, at);
         double len = Math.hypot(x1 - x0, y1 - y0);
         if (len == 0) {
-            r.error(at, "a wall needs two different ends, got (" + a.get("x0") + ", " + a.get("y0") + ") twice");
+            r.error(at, org.parpe.core.text.Msg.WALL_ENDS, a.get("x0"), a.get("y0"));
             return;
         }
         double h = r.length(a, "height", 0.2, at);
@@ -153,7 +153,7 @@ final class Scenery {
         double max = r.length(a, "max-size", 0.08, at);
         double tilt = r.num(a, "max-tilt", 20, at, 0, 90);
         if (max < min) {
-            r.error(at, "max-size must be >= min-size (" + a.get("min-size") + "), got " + a.get("max-size"));
+            r.error(at, org.parpe.core.text.Msg.MAX_BELOW_MIN, "max-size", "min-size", a.get("min-size"), a.get("max-size"));
             return;
         }
         double friction = r.friction(a, at);

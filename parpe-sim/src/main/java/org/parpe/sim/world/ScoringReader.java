@@ -1,5 +1,7 @@
 package org.parpe.sim.world;
 
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
@@ -42,7 +44,7 @@ final class ScoringReader {
                         World.Region z = zone(a.get("zone"), at);
                         String prefix = a.get("objects");
                         if (scenery.objects().stream().noneMatch(o -> o.name().startsWith(prefix))) {
-                            r.error(at, "no object's name starts with '" + prefix + "'");
+                            r.error(at, Msg.NO_OBJECT_PREFIX, prefix);
                         }
                         deliveries.add(new World.Delivery(z, prefix, r.num(a, "points", 10, at, -1e6, 1e6)));
                     }
@@ -56,7 +58,7 @@ final class ScoringReader {
 
     private void goal(Map<String, String> a, SourcePos at) {
         if (goal != null) {
-            r.error(at, "<goal> is given twice");
+            r.error(at, Msg.ELEMENT_GIVEN_TWICE, "goal");
             return;
         }
         if (r.known(a, at, "goal", "zone", "points", "per-second-left") && r.required(a, at, "goal", "zone")) {
@@ -69,7 +71,7 @@ final class ScoringReader {
         if (r.known(a, at, "press", "lever", "points") && r.required(a, at, "press", "lever")) {
             int lever = scenery.lever(a.get("lever"));
             if (lever < 0) {
-                r.error(at, "no <lever> is called '" + a.get("lever") + "'" + known(scenery.levers().stream()
+                r.error(at, Msg.NO_LEVER_CALLED, a.get("lever"), known(scenery.levers().stream()
                         .map(World.Lever::name).toList()));
                 return;
             }
@@ -79,7 +81,7 @@ final class ScoringReader {
 
     private void disqualify(Map<String, String> a, SourcePos at) {
         if (disqualifySeen) {
-            r.error(at, "<disqualify> is given twice");
+            r.error(at, Msg.ELEMENT_GIVEN_TWICE, "disqualify");
             return;
         }
         disqualifySeen = true;
@@ -87,7 +89,7 @@ final class ScoringReader {
             maxTilt = r.num(a, "tilt", Double.NaN, at, 1, 180);
             String leave = a.getOrDefault("leave-arena", "false");
             if (!leave.equals("true") && !leave.equals("false")) {
-                r.error(at, "leave-arena must be true or false, got '" + leave + "'");
+                r.error(at, Msg.TRUE_OR_FALSE, "leave-arena", leave);
             }
             leaveArena = leave.equals("true");
         }
@@ -100,11 +102,11 @@ final class ScoringReader {
                 return z;
             }
         }
-        r.error(at, "no <zone> is called '" + name + "'" + known(zones.stream().map(World.Region::name).toList()));
+        r.error(at, Msg.NO_ZONE_CALLED, name, known(zones.stream().map(World.Region::name).toList()));
         return new World.Region(name, 0, 0, 0, 0, at);
     }
 
-    private static String known(List<String> names) {
-        return names.isEmpty() ? "; the world defines none" : "; expected one of " + String.join(", ", names);
+    private static Message known(List<String> names) {
+        return names.isEmpty() ? Message.of(Msg.WORLD_DEFINES_NONE) : Message.of(Msg.EXPECTED_ONE_OF, String.join(", ", names));
     }
 }

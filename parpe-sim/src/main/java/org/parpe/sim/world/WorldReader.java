@@ -1,5 +1,7 @@
 package org.parpe.sim.world;
 
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashSet;
@@ -32,9 +34,9 @@ public final class WorldReader {
     /** Smallest and largest mass of a movable object, kg (1 g … 1 t). */
     static final double LIGHT = 0.001;
     static final double HEAVY = 1000;
-    private static final String CHILDREN = "<start>, <arena>, <box>, <step>, <ramp>, <wall>, <cylinder>, <rubble>,"
-            + " <chip>, <ball>, <cup>, <lever>, <zone>, <checkpoint>, <goal>, <path-score>, <deliver>, <press>"
-            + " or <disqualify>";
+    private static final String CHILDREN = String.join(", ", "<start>", "<arena>", "<box>", "<step>", "<ramp>", "<wall>",
+            "<cylinder>", "<rubble>", "<chip>", "<ball>", "<cup>", "<lever>", "<zone>", "<checkpoint>", "<goal>",
+            "<path-score>", "<deliver>", "<press>"); // and <disqualify>, the last, in the message
 
     /** How a script names the world it is written for: {@code <?parpe world="../worlds/rubble.xml"?>}. */
     private static final java.util.regex.Pattern DECLARED =
@@ -76,8 +78,7 @@ public final class WorldReader {
 
     /** Reads {@code path}; returns {@code null} after reporting errors to {@code diags}. */
     public static World read(Path path, DiagnosticSink diags) {
-        FlatXmlFile xml = FlatXmlFile.read(path, "world file", "world",
-                "a <world> element with <box>, <ramp>, <zone> and other elements", diags);
+        FlatXmlFile xml = FlatXmlFile.read(path, Message.of(Msg.FILE_WORLD), "world", Message.of(Msg.EXPECTED_WORLD), diags);
         if (xml.root() == null) {
             return null;
         }
@@ -91,7 +92,7 @@ public final class WorldReader {
         }
         World.Scoring scoring = new ScoringReader(r, r.zones, r.scenery).read(r.scoreElements);
         if (scoring.leaveArena() && r.arena == null) {
-            xml.error(xml.root(), "<disqualify leave-arena=\"true\"> needs an <arena>");
+            xml.error(xml.root(), Msg.LEAVE_ARENA_NEEDS_ARENA);
         }
         if (!xml.ok()) {
             return null;
@@ -107,7 +108,7 @@ public final class WorldReader {
             case "start" -> start(a, at);
             case "arena" -> {
                 if (arena != null) {
-                    error(at, "<arena> is given twice");
+                    error(at, Msg.ELEMENT_GIVEN_TWICE, "arena");
                 } else if (known(a, at, "arena", "x0", "y0", "x1", "y1")) {
                     arena = region("arena", a, at);
                 }
@@ -126,13 +127,13 @@ public final class WorldReader {
             case "box", "step", "ramp", "wall", "cylinder", "rubble" -> scenery.solid(e.name(), a, at);
             case "chip", "ball", "cup", "lever" -> scenery.movable(e.name(), a, at);
             case "goal", "path-score", "deliver", "press", "disqualify" -> scoreElements.add(Map.entry(e, e.name()));
-            default -> error(at, "unknown element <" + e.name() + ">; expected " + CHILDREN);
+            default -> error(at, Msg.WORLD_UNKNOWN_ELEMENT, e.name(), CHILDREN, "<disqualify>");
         }
     }
 
     private void start(Map<String, String> a, SourcePos at) {
         if (start != null) {
-            error(at, "<start> is given twice");
+            error(at, Msg.ELEMENT_GIVEN_TWICE, "start");
             return;
         }
         if (known(a, at, "start", "x", "y", "z", "yaw", "pitch")) {
@@ -150,8 +151,7 @@ public final class WorldReader {
         double x1 = coord(a, "x1", 0, at);
         double y1 = coord(a, "y1", 0, at);
         if (a.containsKey("x1") && a.containsKey("y1") && (!(x0 < x1) || !(y0 < y1))) {
-            error(at, "a region needs x0 < x1 and y0 < y1, got x0=" + a.get("x0") + " x1=" + a.get("x1")
-                    + " y0=" + a.get("y0") + " y1=" + a.get("y1"));
+            error(at, Msg.BAD_REGION, a.get("x0"), a.get("x1"), a.get("y0"), a.get("y1"));
         }
         return new World.Region(name, x0, y0, x1, y1, at);
     }
@@ -159,7 +159,7 @@ public final class WorldReader {
     /** Whether {@code name} is not yet the name of a zone or object (else an error). */
     boolean unique(String name, SourcePos at) {
         if (!names.add(name)) {
-            error(at, "the name '" + name + "' is used twice");
+            error(at, Msg.NAME_USED_TWICE, name);
             return false;
         }
         return true;
@@ -198,8 +198,7 @@ public final class WorldReader {
         int before = xml.errors();
         double v = num(a, key, fallback, at, 0, hi);
         if (xml.errors() == before && a.containsKey(key) && v < lo) {
-            error(at, key + " must be at least " + Numbers.format(lo) + " " + unit + ", got "
-                    + a.get(key));
+            error(at, Msg.AT_LEAST, key, Numbers.format(lo), unit, a.get(key));
             return fallback;
         }
         return v;
@@ -222,8 +221,8 @@ public final class WorldReader {
         return (long) xml.number(a, key, fallback, at, true, lo, hi);
     }
 
-    void error(SourcePos at, String message) {
-        xml.error(at, message);
+    void error(SourcePos at, Msg key, Object... args) {
+        xml.error(at, key, args);
     }
 
     /** A box with half extents {@code hx, hy, hz}. */

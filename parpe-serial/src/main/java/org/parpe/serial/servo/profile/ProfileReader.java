@@ -1,5 +1,7 @@
 package org.parpe.serial.servo.profile;
 
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -44,8 +46,8 @@ public final class ProfileReader {
 
     /** Reads {@code path}; returns null after reporting every problem to {@code diags}. */
     public static HardwareProfile read(Path path, DiagnosticSink diags) {
-        FlatXmlFile xml = FlatXmlFile.read(path, "hardware profile", "hardware",
-                "a <hardware protocol=\"…\"> element with <servo> elements", diags);
+        FlatXmlFile xml = FlatXmlFile.read(path, Message.of(Msg.FILE_HARDWARE), "hardware",
+                Message.of(Msg.EXPECTED_HARDWARE), diags);
         if (xml.root() == null) {
             return null;
         }
@@ -60,32 +62,32 @@ public final class ProfileReader {
             if (e.name().equals("servo")) {
                 servoElements.add(e);
             } else {
-                error(e.at(), "unknown element <" + e.name() + "> in <hardware>; expected <servo>");
+                error(e.at(), Msg.PROFILE_UNKNOWN_ELEMENT, e.name());
             }
         }
         String key = root.get("protocol");
         ServoProtocol protocol = key == null ? null : ServoProtocol.of(key.toLowerCase(Locale.ROOT));
         if (key == null) {
-            error(rootPos, "<hardware> needs the attribute 'protocol' (" + ServoProtocol.keys() + ")");
+            error(rootPos, Msg.PROFILE_NEEDS_PROTOCOL, ServoProtocol.keys());
         } else if (protocol == null) {
-            error(rootPos, "unknown protocol '" + key + "'; expected one of " + ServoProtocol.keys());
+            error(rootPos, Msg.UNKNOWN_PROTOCOL, key, ServoProtocol.keys());
         }
         int baud = protocol == null ? 0 : (int) number(root, "baud", protocol.scanBauds().get(0), rootPos, 1, 10_000_000);
         int watchdog = (int) number(root, "watchdog", HardwareProfile.DEFAULT_WATCHDOG_MS, rootPos, 0, 2540);
         String fault = root.getOrDefault("on-fault", "hold");
         if (!fault.equals("hold") && !fault.equals("limp")) {
-            error(rootPos, "on-fault must be hold or limp, got '" + fault + "'");
+            error(rootPos, Msg.BAD_ON_FAULT, fault);
         }
         String port = root.get("port");
         if (port != null && port.isEmpty()) {
-            error(rootPos, "port is empty; give the serial device (e.g. /dev/ttyUSB0) or leave the attribute out");
+            error(rootPos, Msg.EMPTY_PORT);
         }
         // With an unknown protocol the servos are still checked, as far as they can be without one.
         for (FlatXmlFile.Element e : servoElements) {
             servo(protocol, e.attributes(), e.at());
         }
         if (servoElements.isEmpty()) {
-            error(rootPos, "the profile maps no module: add <servo module=\"0\" id=\"1\"/> elements");
+            error(rootPos, Msg.PROFILE_NO_SERVO);
         }
         return xml.ok() ? new HardwareProfile(file, protocol, port, baud, fault.equals("limp") ? SafeMode.LIMP : SafeMode.HOLD,
                 watchdog, servos) : null;
@@ -109,21 +111,20 @@ public final class ProfileReader {
         if (protocol != null && a.containsKey("model")) {
             model = ServoModel.named(a.get("model"));
             if (model == null || model.protocol() != protocol) {
-                error(at, "unknown " + protocol.key() + " servo model '" + a.get("model") + "'; expected one of "
-                        + ServoModel.names(protocol));
+                error(at, Msg.UNKNOWN_SERVO_MODEL, protocol.key(), a.get("model"), ServoModel.names(protocol));
                 model = null;
             }
         }
         double zero = number(a, "zero", 0, at, -360, 360);
         double direction = number(a, "direction", 1, at, -1, 1);
         if (direction != 1 && direction != -1) {
-            error(at, "direction must be 1 or -1, got '" + a.get("direction") + "'");
+            error(at, Msg.BAD_DIRECTION, a.get("direction"));
         }
         double min = number(a, "min", -DEFAULT_LIMIT, at, -360, 360);
         double max = number(a, "max", DEFAULT_LIMIT, at, -360, 360);
         boolean limits = min < max;
         if (!limits) {
-            error(at, String.format(Locale.ROOT, "min must be below max, got min %s and max %s", fmt(min), fmt(max)));
+            error(at, Msg.MIN_NOT_BELOW_MAX, fmt(min), fmt(max));
         }
         ServoMapping m = model == null || !limits ? null
                 : new ServoMapping(module, id, model, zero, direction == -1 ? -1 : 1, min, max, at);
@@ -131,9 +132,8 @@ public final class ProfileReader {
             for (double joint : new double[] {min, max}) {
                 double s = m.servoAngle(joint);
                 if (s < model.minDegrees() - 1e-9 || s > model.maxDegrees() + 1e-9) {
-                    error(at, String.format(Locale.ROOT, "joint angle %s° is servo angle %s°, outside the %s's range "
-                            + "%s..%s°; narrow min/max or change zero", fmt(joint), fmt(s), model.name(),
-                            fmt(model.minDegrees()), fmt(model.maxDegrees())));
+                    error(at, Msg.SERVO_RANGE, fmt(joint), fmt(s), model.name(), fmt(model.minDegrees()),
+                            fmt(model.maxDegrees()));
                 }
             }
         }
@@ -142,12 +142,11 @@ public final class ProfileReader {
         }
         SourcePos firstOfModule = byModule.putIfAbsent(module, at);
         if (firstOfModule != null) {
-            error(at, "module " + module + " is mapped twice; first at " + firstOfModule);
+            error(at, Msg.MODULE_MAPPED_TWICE, module, firstOfModule);
         }
         Placed sameId = byId.putIfAbsent(id, new Placed(module, at));
         if (sameId != null) {
-            error(at, "servo ID " + id + " drives two modules (" + sameId.module() + " at " + sameId.where()
-                    + " and " + module + ")");
+            error(at, Msg.SERVO_ID_TWICE, id, sameId.module(), sameId.where(), module);
         }
         if (m != null && firstOfModule == null && sameId == null) {
             servos.add(m);
@@ -163,7 +162,7 @@ public final class ProfileReader {
         return FlatXmlFile.plain(d);
     }
 
-    private void error(SourcePos at, String message) {
-        xml.error(at, message);
+    private void error(SourcePos at, Msg key, Object... args) {
+        xml.error(at, key, args);
     }
 }

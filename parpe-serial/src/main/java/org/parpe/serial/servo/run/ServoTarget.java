@@ -1,5 +1,7 @@
 package org.parpe.serial.servo.run;
 
+import org.parpe.core.text.Message;
+import org.parpe.core.text.Msg;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
@@ -72,10 +74,8 @@ public final class ServoTarget implements RunTarget {
     public void attach(Run.Builder run) throws TargetException {
         boolean modules = profile == null;
         if (port == null || port.isBlank() || opener == null) {
-            throw modules ? new TargetException(SourcePos.origin("hardware"), "no serial port chosen; choose the port "
-                    + "the robot is connected to (e.g. /dev/ttyUSB0 or COM3)")
-                    : new TargetException(SourcePos.origin(profile.file()), "no serial port: give --port or a port "
-                    + "attribute in the profile (e.g. /dev/ttyUSB0 or COM3)");
+            throw modules ? new TargetException(SourcePos.origin("hardware"), Msg.NO_PORT_CHOSEN)
+                    : new TargetException(SourcePos.origin(profile.file()), Msg.NO_PORT_IN_PROFILE);
         }
         SourcePos where = SourcePos.origin("bus " + port);
         DiagnosticSink diags = run.diagnostics();
@@ -85,20 +85,18 @@ public final class ServoTarget implements RunTarget {
         try {
             d = ServoDriver.open(opener, config, p, ids, HostPlant.reportTo(where, diags, notes));
         } catch (IOException e) {
-            throw new TargetException(where, "cannot open the serial device: " + HostPlant.message(e));
+            throw new TargetException(where, Msg.CANNOT_OPEN_PORT, HostPlant.message(e));
         }
         run.closeAtEnd(d);
         List<Integer> unmapped = d.unmapped();
         if (!modules && !unmapped.isEmpty()) {
-            diags.warning(SourcePos.origin(profile.file()), "modules " + Discovery.format(unmapped)
-                    + " of the script have no <servo> in the profile; they will not move");
+            diags.warning(SourcePos.origin(profile.file()), Msg.MODULES_UNMAPPED, Discovery.format(unmapped));
         }
         List<Integer> found;
         try {
             found = d.discover();
         } catch (IOException e) {
-            throw new TargetException(where, "the bus failed while looking for " + (modules ? "modules" : "servos")
-                    + ": " + HostPlant.message(e));
+            throw new TargetException(where, modules ? Msg.BUS_FAILED_MODULES : Msg.BUS_FAILED_SERVOS, HostPlant.message(e));
         }
         List<Integer> other = d.answeredAsOtherModel();
         List<Integer> missing = new ArrayList<>();
@@ -114,55 +112,54 @@ public final class ServoTarget implements RunTarget {
         }
         List<Integer> limp = d.limp();
         if (!limp.isEmpty()) {
-            throw new TargetException(where, "the servos of modules " + Discovery.format(limp) + " answer but their "
-                    + "torque did not come on (see the warnings above); they would stay limp while the run drives "
-                    + "the others, so it does not start");
+            throw new TargetException(where, Msg.SERVOS_LIMP, Discovery.format(limp));
         }
         HostPlant.attachTo(run, d, ids);
         // neither G1 modules nor servos latch: plate actions (PARSL.md §14) are the user's to do by hand
-        run.plates(new PlatesByHand(diags, ids, modules ? "the modules on " + port : "the servos of the profile"));
+        run.plates(new PlatesByHand(diags, ids, modules ? Msg.THE_MODULES_ON.text(port) : Msg.THE_SERVOS_OF_THE_PROFILE.text()));
         driver = d;
     }
 
     /** What discovery found among the script's G1 modules, in the words of modules. */
     private void reportModules(DiagnosticSink diags, SourcePos where, int[] ids, List<Integer> found,
                                List<Integer> missing, List<Integer> unaddressable) throws TargetException {
-        notes.accept("bus " + port + ": " + found.size() + " of " + ids.length + " modules answer"
-                + (found.isEmpty() ? "" : " (" + Discovery.format(found) + ")"));
+        notes.accept("bus " + port + ": " + Msg.MODULES_ANSWER.text(found.size(), ids.length,
+                found.isEmpty() ? Message.EMPTY : Message.of(Msg.IN_PARENTHESES, Discovery.format(found))));
         if (!missing.isEmpty()) {
             // they are asked again every half second and driven once they answer (ServoSetUp.bringIn)
-            diags.warning(where, missing.size() == 1
-                    ? "module " + missing.get(0) + " of the script does not answer; it moves once it answers"
-                    : "modules " + Discovery.format(missing) + " of the script do not answer; each moves once it answers");
+            if (missing.size() == 1) {
+                diags.warning(where, Msg.MODULE_SILENT, missing.get(0));
+            } else {
+                diags.warning(where, Msg.MODULES_SILENT, Discovery.format(missing));
+            }
         }
         if (!unaddressable.isEmpty()) {
-            diags.warning(where, (unaddressable.size() == 1 ? "module " + unaddressable.get(0) + " cannot be on the bus (IDs 0..254); it"
-                    : "modules " + Discovery.format(unaddressable) + " cannot be on the bus (IDs 0..254); they") + " will not move");
+            if (unaddressable.size() == 1) {
+                diags.warning(where, Msg.MODULE_UNADDRESSABLE, unaddressable.get(0));
+            } else {
+                diags.warning(where, Msg.MODULES_UNADDRESSABLE, Discovery.format(unaddressable));
+            }
         }
         if (found.isEmpty()) {
-            throw new TargetException(where, "no module answers on " + port + " at " + config.baud()
-                    + " baud (is the robot powered and connected, and is the baud rate right?)");
+            throw new TargetException(where, Msg.NO_MODULE_ANSWERS, port, config.baud());
         }
     }
 
     /** What discovery found among the servos of the profile. */
     private void reportServos(DiagnosticSink diags, SourcePos where, int mapped, List<Integer> found,
                               List<Integer> missing, List<Integer> other) throws TargetException {
-        notes.accept("bus " + port + " (" + profile.protocol().key() + ", " + profile.baud() + " baud): " + found.size()
-                + " of " + mapped + " servos answer" + (found.isEmpty() ? "" : " (modules "
-                + Discovery.format(found) + ")") + (other.isEmpty() ? "" : "; " + other.size() + " more answer as another model"));
+        notes.accept("bus " + port + " (" + profile.protocol().key() + ", " + profile.baud() + " baud): "
+                + Msg.SERVOS_ANSWER.text(found.size(), mapped,
+                found.isEmpty() ? Message.EMPTY : Message.of(Msg.MODULES_IN_PARENTHESES, Discovery.format(found)),
+                other.isEmpty() ? Message.EMPTY : Message.of(Msg.MORE_AS_OTHER_MODEL, other.size())));
         if (!missing.isEmpty()) {
-            diags.warning(where, "the servos of modules " + Discovery.format(missing) + " do not answer; they will not move");
+            diags.warning(where, Msg.SERVOS_SILENT, Discovery.format(missing));
         }
         if (found.isEmpty() && !other.isEmpty()) {
-            throw new TargetException(where, "the servos on " + port + " answer, but not as the model the profile "
-                    + "says (modules " + Discovery.format(other) + "; see the warnings above): correct model= in "
-                    + profile.file() + ", or run parpe scan");
+            throw new TargetException(where, Msg.SERVOS_OTHER_MODEL, port, Discovery.format(other), profile.file());
         }
         if (found.isEmpty()) {
-            throw new TargetException(where, "no servo answers on " + port + " at " + profile.baud() + " baud ("
-                    + profile.protocol().key() + "; is the robot powered, and are protocol and baud rate right? "
-                    + "parpe scan finds them)");
+            throw new TargetException(where, Msg.NO_SERVO_ANSWERS, port, profile.baud(), profile.protocol().key());
         }
     }
 

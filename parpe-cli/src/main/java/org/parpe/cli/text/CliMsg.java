@@ -1,0 +1,62 @@
+package org.parpe.cli.text;
+
+import org.parpe.core.text.Key;
+
+/**
+ * The keys of the command line's own messages (those of the loader, the simulator and the
+ * buses are {@link org.parpe.core.text.Msg}'s). Each constant is a key of
+ * {@code CliMessages.properties} and its translations; {@code CliTextTest} fails on a missing,
+ * unused or mismatched one.
+ */
+public enum CliMsg implements Key {
+    // Main
+    UNKNOWN_LANGUAGE,
+    UNKNOWN_COMMAND,
+    TRY_HELP,
+    OUT_OF_MEMORY,
+    INTERNAL_ERROR,
+
+    // check
+    EMPTY_FOLDER,
+    OK,
+    OK_CHALLENGE,
+    ONE_ERROR,
+    N_ERRORS,
+
+    // run
+    NOTHING_TO_RUN,
+    NO_DURATION,
+    STOPPED_AT,
+    WORLD_TIME_LIMIT,
+    PROGRESS,
+
+    // options shared by commands: Inputs, ParamValues, ClockOptions
+    CANNOT_READ,
+    CANNOT_READ_STIMULUS,
+    PARAM_SYNTAX,
+    PARAM_NOT_A_NUMBER,
+    TICK_OUT_OF_RANGE,
+    DURATION_NEGATIVE,
+    TOO_MANY_TICKS,
+
+    // export
+    CANNOT_WRITE,
+    BAD_TARGET,
+    TARGET_NEEDS_SCRIPT,
+    ROBOT_OPTIONS_ONLY,
+    TARGET_NEEDS_ROBOT,
+    BOARD_OPTIONS_ONLY,
+    EXPORT_DURATION,
+    GAIT_NEEDS_SCRIPT,
+    BAD_BOARD,
+    WROTE_FILES,
+    BUILD_WITH;
+
+    /** The bundle of these keys. */
+    public static final String BUNDLE = "org.parpe.cli.text.CliMessages";
+
+    @Override
+    public String bundle() {
+        return BUNDLE;
+    }
+}
