@@ -1,6 +1,7 @@
 package org.parpe.gui.files;
 
 import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
@@ -35,6 +36,7 @@ public final class ExportRobotDialog {
     private static final String[] LABELS = {"MJCF (MuJoCo)", "URDF (ROS tools)", "SDF (Gazebo)"};
 
     private final Shell shell;
+    private final Display display;
     private final Combo target;
     private final RobotChoice robot;
     private final Text folder;
@@ -43,11 +45,13 @@ public final class ExportRobotDialog {
     private final Supplier<Program> program;
     private final Consumer<List<Diagnostic>> problems;
     private volatile boolean busy;
+    private FileActions.Questions questions;
 
     private ExportRobotDialog(Shell parent, Supplier<Program> program, String currentRobot, Consumer<List<Diagnostic>> problems) {
         this.program = program;
         this.problems = problems;
         shell = new Shell(parent, SWT.DIALOG_TRIM | SWT.RESIZE | SWT.MODELESS);
+        display = shell.getDisplay();
         shell.setText("Export Robot");
         shell.setLayout(new GridLayout(3, false));
         new Label(shell, SWT.NONE).setText("Format:");
@@ -74,6 +78,8 @@ public final class ExportRobotDialog {
         new Label(shell, SWT.NONE).setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false, 2, 1));
         export = button("Export", this::export);
         shell.setDefaultButton(export);
+        questions = (title, text, buttons) -> new org.eclipse.jface.dialogs.MessageDialog(shell, title, null, text,
+                org.eclipse.jface.dialogs.MessageDialog.QUESTION, buttons, 1).open();
     }
 
     /**
@@ -112,6 +118,11 @@ public final class ExportRobotDialog {
     /** What the last export wrote or why it refused ("" before one). */
     public String message() {
         return message.getText();
+    }
+
+    /** Answers this window's questions with {@code q} instead of dialogs (tests). */
+    public void answerWith(FileActions.Questions q) {
+        questions = q;
     }
 
     /** Whether an export is being written. */
@@ -156,28 +167,65 @@ public final class ExportRobotDialog {
         busy = true;
         export.setEnabled(false);
         message.setText("Exporting " + chosen + " as " + format.toUpperCase(Locale.ROOT) + "\u2026");
-        Display display = shell.getDisplay();
-        Thread t = new Thread(() -> {
+        background(() -> {
             DiagnosticList diags = new DiagnosticList();
-            String text = write(format, chosen, ids, dir, diags);
-            display.asyncExec(() -> done(text, diags.all()));
-        }, "parpe-export-robot");
+            Export.Robot r = Export.robot(format, chosen, ids, diags);
+            String refused = r == null ? null : Export.refusal(dir, r.files().keySet());
+            List<Path> taken = r == null || refused != null ? List.of() : taken(dir, r);
+            if (r == null) {
+                StringBuilder b = new StringBuilder("Nothing written: the robot '" + chosen + "' cannot be exported\n");
+                diags.all().forEach(d -> b.append(d.format()).append('\n'));
+                finish(b.toString().trim(), diags.all());
+            } else if (refused != null) {
+                finish("Nothing written: " + refused, List.of());
+            } else if (taken.isEmpty()) {
+                finish(write(r, chosen, dir), List.of());
+            } else {
+                display.asyncExec(() -> askToReplace(r, chosen, dir, taken));
+            }
+        });
+    }
+
+    /** The files of {@code r} that are in {@code dir} already (regular files: {@link Export#refusal} refused others). */
+    private static List<Path> taken(Path dir, Export.Robot r) {
+        return r.files().keySet().stream().map(dir::resolve).filter(Files::exists).toList();
+    }
+
+    /**
+     * The folder has files of the export's names: they are the user's (an earlier export, perhaps
+     * edited since), so they are replaced only when the user says so; the CLI's {@code --out}
+     * names the folder on purpose and replaces them (docs/cli.md, output rules).
+     */
+    private void askToReplace(Export.Robot r, String spec, Path dir, List<Path> taken) {
+        if (shell.isDisposed()) {
+            busy = false;
+            return;
+        }
+        String names = taken.stream().map(Path::toString).collect(java.util.stream.Collectors.joining(", "));
+        int answer = questions.ask("Replace " + (taken.size() == 1 ? "file" : "files"), "The folder " + dir + " already has "
+                + names + ". Replace " + (taken.size() == 1 ? "it" : "them") + " with the export of " + spec + "?",
+                "Replace", "Cancel");
+        if (answer == 0) {
+            background(() -> finish(write(r, spec, dir), List.of()));
+        } else {
+            done("Nothing written: " + names + (taken.size() == 1 ? " is" : " are") + " kept", List.of());
+        }
+    }
+
+    /** Runs {@code work} on a thread of its own (an export reads configurations and writes files). */
+    private static void background(Runnable work) {
+        Thread t = new Thread(work, "parpe-export-robot");
         t.setDaemon(true);
         t.start();
     }
 
-    /** Resolves, checks and writes; returns what to tell the user (off the UI thread). */
-    private static String write(String format, String spec, int[] ids, Path dir, DiagnosticList diags) {
-        Export.Robot r = Export.robot(format, spec, ids, diags);
-        if (r == null) {
-            StringBuilder b = new StringBuilder("Nothing written: the robot '" + spec + "' cannot be exported\n");
-            diags.all().forEach(d -> b.append(d.format()).append('\n'));
-            return b.toString().trim();
-        }
-        String refused = Export.refusal(dir, r.files().keySet());
-        if (refused != null) {
-            return "Nothing written: " + refused;
-        }
+    /** Shows the outcome of an export, from any thread. */
+    private void finish(String text, List<Diagnostic> diagnostics) {
+        display.asyncExec(() -> done(text, diagnostics));
+    }
+
+    /** Writes the files of {@code r}, all or nothing; returns what to tell the user (off the UI thread). */
+    private static String write(Export.Robot r, String spec, Path dir) {
         try {
             Export.write(dir, r.files());
         } catch (IOException e) {
