@@ -202,8 +202,9 @@ public final class ExportRobotDialog {
             return;
         }
         String names = taken.stream().map(Path::toString).collect(java.util.stream.Collectors.joining(", "));
+        String files = taken.stream().map(p -> p.getFileName().toString()).collect(java.util.stream.Collectors.joining(", "));
         int answer = questions.ask("Replace " + (taken.size() == 1 ? "file" : "files"), "The folder " + dir + " already has "
-                + names + ". Replace " + (taken.size() == 1 ? "it" : "them") + " with the export of " + spec + "?",
+                + files + ". Replace " + (taken.size() == 1 ? "it" : "them") + " with the export of " + spec + "?",
                 "Replace", "Cancel");
         if (answer == 0) {
             background(() -> finish(write(r, spec, dir), List.of()));
