@@ -21,11 +21,26 @@ import org.parpe.cli.Cli;
  * ({@code parpe run --metrics}) and, from the same commanded angles, in MuJoCo
  * ({@code parpe export --target mjcf} and its runner's {@code --metrics}); the two must agree on
  * how far the centre of mass went (within 20 %), its heading (within 15°) and whether the
- * robot fell (tilt over 90°), both stepped in 2 ms. Each gait is held to the bounds it meets; docs/simulator.md
- * ("PARPE against MuJoCo") gives every figure and why the others differ.
+ * robot fell (tilt over 90°), both run at a 1 ms tick. The Fig. 7 wheel rolls in neither engine
+ * at that tick (PARPE's roll at 2 and 5 ms is its solver's, not the model's), so it is held to
+ * staying where it is in both. docs/simulator.md ("PARPE against MuJoCo") gives every figure
+ * and why the others differ.
  */
 class MujocoCrossCheckTest {
-    enum Check { DISTANCE, HEADING, FELL }
+    enum Check {
+        DISTANCE, HEADING, FELL,
+        /**
+         * Neither engine moves the robot as far as a wheel's spoke pitch ({@link #PITCH}): a gait
+         * that goes nowhere in both, whose few centimetres of rocking are no distance to compare.
+         */
+        STAYS
+    }
+
+    /**
+     * The arc from one foot of the 8-spoke wheel to the next, m: 2π × 0.16 m (the feet's outer
+     * faces) / 8. A wheel that rolled onto its next foot and stayed there has gone this far.
+     */
+    static final double PITCH = 2 * Math.PI * 0.1604 / 8;
 
     record Gait(String script, String robot, Set<Check> checks) {
         @Override
@@ -35,19 +50,23 @@ class MujocoCrossCheckTest {
     }
 
     static List<Gait> gaits() {
+        Set<Check> moves = EnumSet.of(Check.DISTANCE, Check.HEADING, Check.FELL);
         return List.of(
-                new Gait("../examples/hello-snake.xml", "snake:n=8", EnumSet.allOf(Check.class)),
-                new Gait("../examples/centipede-walk.xml", "centipede", EnumSet.allOf(Check.class)),
-                new Gait("../examples/tutorial/10-race-snake.xml", "snake:n=8", EnumSet.allOf(Check.class)),
-                new Gait("../examples/standup-walk.xml", "centipede", EnumSet.of(Check.HEADING, Check.FELL)),
-                new Gait("../examples/wheel.xml", "wheel", EnumSet.of(Check.FELL)));
+                new Gait("../examples/hello-snake.xml", "snake:n=8", moves),
+                new Gait("../examples/centipede-walk.xml", "centipede", moves),
+                new Gait("../examples/tutorial/10-race-snake.xml", "snake:n=8", moves),
+                new Gait("../examples/standup-walk.xml", "centipede", moves),
+                new Gait("../examples/wheel.xml", "wheel", EnumSet.of(Check.STAYS, Check.FELL)));
     }
 
     /**
-     * The tick of both runs, s: 2 ms, so that PARPE steps its physics in 2 ms (its default 5 ms
-     * sub-step is the larger part of the disagreement: the snakes go a third less far with it).
+     * The tick of both runs, s: 1 ms, so that PARPE steps its physics in 1 ms. At its default 5 ms
+     * sub-step (10 solver iterations) PARPE's figures are not converged: the snakes go a third less
+     * far, standup-walk 0.10 m instead of 0.28 m, and the wheel rolls 1.6 m that it does not roll
+     * at 1 ms or with more iterations; at 2 ms standup-walk still goes 0.245 m (MuJoCo 1.34 ×) and
+     * the wheel 0.8 m (docs/simulator.md, "PARPE against MuJoCo").
      */
-    static final String TICK = "0.002";
+    static final String TICK = "0.001";
 
     @TempDir
     Path dir;
@@ -86,6 +105,9 @@ class MujocoCrossCheckTest {
         if (g.checks().contains(Check.HEADING)) {
             double diff = Math.abs(Math.IEEEremainder(mujoco.headingDeg() - parpe.headingDeg(), 360));
             assertTrue(diff <= 15, "heading differs by " + diff + "°: " + figures);
+        }
+        if (g.checks().contains(Check.STAYS)) {
+            assertTrue(parpe.distance() < PITCH && mujoco.distance() < PITCH, "stays within " + PITCH + " m: " + figures);
         }
         assertEquals(parpe.fell(), mujoco.fell(), "fell: " + figures);
     }

@@ -7,7 +7,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.function.Consumer;
 import java.util.function.Supplier;
-import org.eclipse.jface.dialogs.MessageDialog;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Combo;
@@ -43,7 +42,6 @@ public final class ExportProgramDialog {
     private final Text tick;
     private final Supplier<Program> program;
     private final Consumer<List<Diagnostic>> problems;
-    private FileActions.Questions questions;
     private volatile boolean busy;
 
     private ExportProgramDialog(Shell parent, Supplier<Program> program, Consumer<List<Diagnostic>> problems) {
@@ -64,8 +62,6 @@ public final class ExportProgramDialog {
         tick.setLayoutData(ExportWindow.span());
         window.finish("program-export", "The folder the program's files are written into (a sketch gets a folder of"
                 + " its own in it)", 110, this::export);
-        questions = (title, text, buttons) -> new MessageDialog(shell, title, null, text, MessageDialog.QUESTION,
-                buttons, 0).open();
         target.addListener(SWT.Selection, e -> targetChanged());
         targetChanged();
     }
@@ -101,7 +97,7 @@ public final class ExportProgramDialog {
 
     /** Answers the replace question with {@code q} instead of a dialog (tests). */
     public void answerWith(FileActions.Questions q) {
-        questions = q;
+        window.answerWith(q);
     }
 
     /** What the last export wrote or why it refused ("" before one). */
@@ -172,7 +168,7 @@ public final class ExportProgramDialog {
             DiagnosticList diags = new DiagnosticList();
             ProgramExport.Result r = ProgramExport.export(p, q, diags);
             String refused = r == null ? "the program cannot be exported:\n" + lines(diags.all()) : refusal(r, out);
-            List<String> existing = r == null ? List.of() : existing(r.dir(out), r.files());
+            List<Path> existing = r == null ? List.of() : ExportWindow.existing(r.dir(out), r.files().keySet());
             display.asyncExec(() -> prepared(r, out, refused, existing, diags.all()));
         });
     }
@@ -188,12 +184,8 @@ public final class ExportProgramDialog {
         }
     }
 
-    private static List<String> existing(Path dir, Map<String, String> files) {
-        return files.keySet().stream().filter(n -> Files.exists(dir.resolve(n))).toList();
-    }
-
     /** On the UI thread: asks before replacing files, then writes on a thread of its own. */
-    private void prepared(ProgramExport.Result r, Path out, String refused, List<String> existing, List<Diagnostic> found) {
+    private void prepared(ProgramExport.Result r, Path out, String refused, List<Path> existing, List<Diagnostic> found) {
         if (window.shell().isDisposed()) {
             busy = false;
             return;
@@ -206,9 +198,9 @@ public final class ExportProgramDialog {
             return;
         }
         Path dir = r.dir(out);
-        if (!existing.isEmpty() && questions.ask("Replace Exported Files", dir + " already holds " + existing.size()
-                + " of the export's files (" + String.join(", ", existing) + "). Replace them?", "Replace", "Cancel") != 0) {
-            done("Nothing written: the files in " + dir + " were kept");
+        if (!window.mayReplace(dir, existing, "the program")) {
+            busy = false;
+            window.exporting(false);
             return;
         }
         Display display = window.shell().getDisplay();

@@ -78,6 +78,11 @@ public final class ExportRobotDialog {
         return window.message();
     }
 
+    /** Answers this window's questions with {@code q} instead of dialogs (tests). */
+    public void answerWith(FileActions.Questions q) {
+        window.answerWith(q);
+    }
+
     /** Whether an export is being written. */
     public boolean busy() {
         return busy;
@@ -103,27 +108,49 @@ public final class ExportRobotDialog {
         window.exporting(true);
         window.say("Exporting " + chosen + " as " + format.toUpperCase(Locale.ROOT) + "\u2026");
         Display display = window.shell().getDisplay();
-        Thread t = new Thread(() -> {
+        background(() -> {
             DiagnosticList diags = new DiagnosticList();
-            String text = write(format, chosen, ids, dir, diags);
-            display.asyncExec(() -> done(text, diags.all()));
-        }, "parpe-export-robot");
+            Export.Robot r = Export.robot(format, chosen, ids, diags);
+            String refused = r == null ? null : Export.refusal(dir, r.files().keySet());
+            if (r == null) {
+                StringBuilder b = new StringBuilder("Nothing written: the robot '" + chosen + "' cannot be exported\n");
+                diags.all().forEach(d -> b.append(d.format()).append('\n'));
+                display.asyncExec(() -> done(b.toString().trim(), diags.all()));
+            } else if (refused != null) {
+                display.asyncExec(() -> done("Nothing written: " + refused, List.of()));
+            } else {
+                List<Path> taken = ExportWindow.existing(dir, r.files().keySet());
+                display.asyncExec(() -> replaceAndWrite(r, chosen, dir, taken));
+            }
+        });
+    }
+
+    /** UI thread: asks before replacing the user's files, then writes on a thread of its own. */
+    private void replaceAndWrite(Export.Robot r, String spec, Path dir, List<Path> taken) {
+        if (window.shell().isDisposed()) {
+            busy = false;
+            return;
+        }
+        if (!window.mayReplace(dir, taken, spec)) {
+            busy = false;
+            window.exporting(false);
+            return;
+        }
+        Display display = window.shell().getDisplay();
+        background(() -> {
+            String text = write(r, spec, dir);
+            display.asyncExec(() -> done(text, List.of()));
+        });
+    }
+
+    private static void background(Runnable work) {
+        Thread t = new Thread(work, "parpe-export-robot");
         t.setDaemon(true);
         t.start();
     }
 
-    /** Resolves, checks and writes; returns what to tell the user (off the UI thread). */
-    private static String write(String format, String spec, int[] ids, Path dir, DiagnosticList diags) {
-        Export.Robot r = Export.robot(format, spec, ids, diags);
-        if (r == null) {
-            StringBuilder b = new StringBuilder("Nothing written: the robot '" + spec + "' cannot be exported\n");
-            diags.all().forEach(d -> b.append(d.format()).append('\n'));
-            return b.toString().trim();
-        }
-        String refused = Export.refusal(dir, r.files().keySet());
-        if (refused != null) {
-            return "Nothing written: " + refused;
-        }
+    /** Writes the files of {@code r}, all or nothing; returns what to tell the user (off the UI thread). */
+    private static String write(Export.Robot r, String spec, Path dir) {
         try {
             Export.write(dir, r.files());
         } catch (IOException e) {

@@ -1,6 +1,7 @@
 package org.parpe.gui.files;
 
 import java.nio.file.Path;
+import java.util.List;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.graphics.Point;
 import org.eclipse.swt.graphics.Rectangle;
@@ -24,11 +25,45 @@ final class ExportWindow {
     private Text folder;
     private Text message;
     private Button export;
+    private FileActions.Questions questions;
 
     ExportWindow(Shell parent, String title) {
         shell = new Shell(parent, SWT.DIALOG_TRIM | SWT.RESIZE | SWT.MODELESS);
         shell.setText(title);
         shell.setLayout(new GridLayout(3, false));
+        questions = (t, text, buttons) -> new org.eclipse.jface.dialogs.MessageDialog(shell, t, null, text,
+                org.eclipse.jface.dialogs.MessageDialog.QUESTION, buttons, 1).open();
+    }
+
+    /** Answers this window's questions with {@code q} instead of dialogs (tests). */
+    void answerWith(FileActions.Questions q) {
+        questions = q;
+    }
+
+    /** The files of {@code names} that are in {@code dir} already. */
+    static List<Path> existing(Path dir, java.util.Collection<String> names) {
+        return names.stream().map(dir::resolve).filter(java.nio.file.Files::exists).toList();
+    }
+
+    /**
+     * UI thread: whether the export of {@code what} may replace {@code taken}, files in {@code dir}
+     * that are the user's (an earlier export, perhaps edited since): asked when there are any, and
+     * on Cancel the message says they are kept. The CLI's {@code --out} names its folder on purpose
+     * and replaces them (docs/cli.md, output rules).
+     */
+    boolean mayReplace(Path dir, List<Path> taken, String what) {
+        if (taken.isEmpty()) {
+            return true;
+        }
+        String files = taken.stream().map(p -> p.getFileName().toString()).collect(java.util.stream.Collectors.joining(", "));
+        boolean one = taken.size() == 1;
+        if (questions.ask(one ? "Replace File" : "Replace Files", "The folder " + dir + " already has " + files
+                + ". Replace " + (one ? "it" : "them") + " with the export of " + what + "?", "Replace", "Cancel") == 0) {
+            return true;
+        }
+        say("Nothing written: " + taken.stream().map(Path::toString).collect(java.util.stream.Collectors.joining(", "))
+                + (one ? " is" : " are") + " kept");
+        return false;
     }
 
     Shell shell() {

@@ -57,6 +57,42 @@ class ExportRobotGuiTest {
         }
     }
 
+    /**
+     * A file of the export's name in the folder is the user's (an earlier export, perhaps edited
+     * since): the IDE asks before it replaces it, keeps it on Cancel and replaces it, whole, on Replace.
+     */
+    @Test
+    void aFileOfTheSameNameIsReplacedOnlyAfterAsking() throws Exception {
+        ide = Gui.openIde(Files.createTempDirectory("parpe-export-home"));
+        Gui.open(ide, Gui.example("tutorial/03-hello-snake.xml"));
+        Gui.pump(() -> ide.program() != null, "the lesson to load");
+        Path out = Files.createTempDirectory("parpe-export");
+        Path mine = Files.writeString(out.resolve("snake.xml"), "<mujoco model=\"edited by hand\"/>");
+        ExportRobotDialog d = ide.menus().openExportRobot();
+        d.setTarget("mjcf");
+        d.setFolder(out);
+        List<String> asked = new ArrayList<>();
+        d.answerWith((title, message, buttons) -> {
+            asked.add(message + " " + String.join("/", buttons));
+            return 1;
+        });
+        d.export();
+        Gui.pump(() -> !d.busy(), "the export");
+        assertEquals(1, asked.size(), "asked once before replacing: " + asked);
+        assertTrue(asked.get(0).startsWith("The folder " + out + " already has snake.xml.") && asked.get(0).endsWith("Replace/Cancel"),
+                asked.get(0));
+        assertEquals("<mujoco model=\"edited by hand\"/>", Files.readString(mine), "Cancel keeps the user's file");
+        assertEquals("Nothing written: " + mine + " is kept", d.message());
+        try (var list = Files.list(out)) {
+            assertEquals(List.of(mine), list.toList(), "nothing else written beside it");
+        }
+        d.answerWith((title, message, buttons) -> 0);
+        d.export();
+        Gui.pump(() -> !d.busy(), "the export");
+        assertTrue(d.message().startsWith("Wrote snake.xml to " + out), d.message());
+        assertTrue(Files.readString(mine).contains("<joint name=\"m6\""), "Replace writes the export in its place");
+    }
+
     @Test
     void aFolderThatIsAFileIsRefusedAndNothingIsWritten() throws Exception {
         ide = Gui.openIde(Files.createTempDirectory("parpe-export-home"));

@@ -21,8 +21,11 @@ public final class Mjcf {
      * a constraint: it holds the speed it is told, gain × error capped at the servo's speed, with
      * up to its torque); as an MJCF servo that is {@code kv·(gain·(ctrl − q) − q̇)}, stiffer the
      * larger kv. With kv = 0.2 N·m·s/rad (kp = 40 × 0.2 = 8) the joint angles follow PARPE's
-     * within 1–2°; it needs MuJoCo's step at 0.5 ms (at 1 ms the optimised race snake diverges)
-     * (docs/simulator.md, "PARPE against MuJoCo").
+     * within 1–2°; it needs MuJoCo's step at 0.5 ms (at 1 ms the optimised race snake diverges).
+     * It is still far softer than ODE's motor (hello-snake goes 0.82 × as far in MuJoCo), but kv 1
+     * already makes the optimised snake diverge at 0.5 ms: MuJoCo's implicit integrator treats the
+     * velocity feedback as damping also while the force range clamps it (docs/simulator.md,
+     * "PARPE against MuJoCo").
      */
     static final double KP = 8;
     /** The custom numeric that tells a runner the servo's speed limit, rad/s. */
