@@ -31,6 +31,8 @@ public final class RobotSheet {
     private static final int MARGIN = 20;
     private static final int TITLE = 40;
     private static final int ROW = 16;
+    /** The least room between two ID labels on one line, px. */
+    private static final double GAP = 4;
     private static final int INK = 0x222222;
     private static final int GREY = 0x888888;
     private static final Map<PartKind, Integer> COLOURS = Map.of(PartKind.SEGMENT_BASE, 0x0072b2,
@@ -161,24 +163,39 @@ public final class RobotSheet {
         }
     }
 
-    /** Where a label that meets one placed before may go: {label widths right, px down}; up, down, right, left, further. */
-    private static final double[][] NUDGES = {{0, -14}, {0, 14}, {1, 0}, {-1, 0}, {0, -28}, {0, 28}, {1, -14},
-        {-1, -14}, {1, 14}, {-1, 14}};
+    /**
+     * Where a label that meets one placed before may go: {label widths right, px down}; up, down,
+     * right, left, then further out, row by row, above and below (a long robot's views have room
+     * there: the centipede's 55 IDs need it).
+     */
+    private static final double[][] NUDGES = nudges();
+
+    private static double[][] nudges() {
+        List<double[]> n = new ArrayList<>(List.of(new double[] {0, -14}, new double[] {0, 14}, new double[] {1, 0},
+                new double[] {-1, 0}, new double[] {0, -28}, new double[] {0, 28}, new double[] {1, -14},
+                new double[] {-1, -14}, new double[] {1, 14}, new double[] {-1, 14}));
+        for (int row = 2; row <= 9; row++) {
+            for (int side : new int[] {-1, 1}) {
+                if (row > 2) {
+                    n.add(new double[] {0, side * 14 * row});
+                }
+                n.add(new double[] {0.5, side * 14 * row});
+                n.add(new double[] {-0.5, side * 14 * row});
+            }
+        }
+        return n.toArray(double[][]::new);
+    }
 
     /**
      * Adds the ID labels of a view, each at its hinge unless its text would meet one placed
      * before: then at the first free nudge inside the view with a thin leader line to its hinge,
-     * or, with no free place, merged into the label it meets.
+     * or, with no free place, merged into the label it meets, which is then placed again (grown,
+     * it may meet others).
      */
     private static void placeIds(Scene sc, List<IdLabel> labels, double x0, double y0) {
         List<IdLabel> placed = new ArrayList<>();
         for (IdLabel l : labels) {
-            IdLabel met = meets(l, placed);
-            if (met == null || nudge(l, placed, x0, y0)) {
-                placed.add(l);
-            } else {
-                met.ids.addAll(l.ids);
-            }
+            place(l, placed, x0, y0);
         }
         for (IdLabel l : placed) {
             Scene.Text t = l.text();
@@ -191,15 +208,31 @@ public final class RobotSheet {
         }
     }
 
+    /**
+     * Adds {@code l} to {@code placed}: at its hinge if free and inside the view, else nudged, else
+     * merged (each merge leaves one label fewer, so this ends).
+     */
+    private static void place(IdLabel l, List<IdLabel> placed, double x0, double y0) {
+        IdLabel met = meets(l, placed);
+        boolean free = met == null && inside(l, x0, y0);
+        if (free || nudge(l, placed, x0, y0) || met == null) {
+            placed.add(l); // at its hinge, nudged, or (only sticking out of the view) at its hinge
+            return;
+        }
+        placed.remove(met);
+        met.ids.addAll(l.ids);
+        met.dx = 0;
+        met.dy = 0;
+        place(met, placed, x0, y0);
+    }
+
     /** Moves {@code l} to the first nudge inside the view where it meets none of {@code placed}; false if none. */
     private static boolean nudge(IdLabel l, List<IdLabel> placed, double x0, double y0) {
         double w = Labels.box(l.text()).w();
         for (double[] n : NUDGES) {
             l.dx = n[0] * (w + 8);
             l.dy = n[1];
-            Labels.Box b = Labels.box(l.text());
-            if (b.x() > x0 + 2 && b.x() + b.w() < x0 + VIEW - 2 && b.y() > y0 + 20 && b.y() + b.h() < y0 + VIEW - 16
-                    && meets(l, placed) == null) {
+            if (inside(l, x0, y0) && meets(l, placed) == null) {
                 return true;
             }
         }
@@ -208,9 +241,19 @@ public final class RobotSheet {
         return false;
     }
 
-    /** The first of {@code placed} other than {@code l} whose text meets {@code l}'s, or null. */
-    private static IdLabel meets(IdLabel l, List<IdLabel> placed) {
+    /** Whether {@code l}'s text is inside the view at ({@code x0}, {@code y0}), clear of its title and scale bar. */
+    private static boolean inside(IdLabel l, double x0, double y0) {
         Labels.Box b = Labels.box(l.text());
+        return b.x() > x0 + 2 && b.x() + b.w() < x0 + VIEW - 2 && b.y() > y0 + 20 && b.y() + b.h() < y0 + VIEW - 16;
+    }
+
+    /**
+     * The first of {@code placed} other than {@code l} whose text meets {@code l}'s or comes
+     * closer than {@link #GAP} beside it (IDs "52" and "50" side by side would read "5250"), or null.
+     */
+    private static IdLabel meets(IdLabel l, List<IdLabel> placed) {
+        Labels.Box t = Labels.box(l.text());
+        Labels.Box b = new Labels.Box(t.x() - GAP, t.y(), t.w() + 2 * GAP, t.h());
         return placed.stream().filter(p -> p != l && Labels.box(p.text()).overlaps(b)).findFirst().orElse(null);
     }
 
