@@ -4,6 +4,7 @@ import java.io.PrintStream;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import org.parpe.cli.bench.BenchCommand;
+import org.parpe.cli.options.UsageException;
 import org.parpe.core.expr.Names;
 import org.parpe.core.io.CrashReport;
 import picocli.CommandLine;

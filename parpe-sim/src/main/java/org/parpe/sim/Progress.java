@@ -1,6 +1,7 @@
 package org.parpe.sim;
 
 import org.ode4j.math.DMatrix3C;
+import org.parpe.sim.geom.Vec3;
 import org.parpe.sim.internal.Assembly;
 import org.parpe.sim.internal.PhysicsWorld;
 

@@ -20,6 +20,7 @@ import org.parpe.sim.internal.Docking;
 import org.parpe.sim.internal.PhysicsParams;
 import org.parpe.sim.internal.PhysicsWorld;
 import org.parpe.sim.internal.SnapshotBuffer;
+import org.parpe.sim.snapshot.SimSnapshot;
 import org.parpe.sim.world.World;
 
 /**

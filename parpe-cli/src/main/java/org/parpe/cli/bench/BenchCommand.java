@@ -62,8 +62,8 @@ public final class BenchCommand implements Callable<Integer> {
             return usage("--compare takes one earlier run to set beside this one, or two files to set side by side"
                     + " (then nothing runs: no --only or --save)");
         }
-        org.parpe.cli.OutputFile saved = save == null ? null
-                : org.parpe.cli.OutputFile.of(org.parpe.cli.OutputFile.plan(compare), "--save", save);
+        org.parpe.cli.options.OutputFile saved = save == null ? null
+                : org.parpe.cli.options.OutputFile.of(org.parpe.cli.options.OutputFile.plan(compare), "--save", save);
         List<Goal> everyGoal = all.stream().flatMap(b -> b.goals().stream()).toList();
         List<BenchResults> earlier = new ArrayList<>();
         for (Path file : compare) {

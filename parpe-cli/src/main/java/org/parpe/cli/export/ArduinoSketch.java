@@ -2,7 +2,7 @@ package org.parpe.cli.export;
 
 import java.nio.file.Path;
 import java.util.Locale;
-import org.parpe.cli.UsageException;
+import org.parpe.cli.options.UsageException;
 import org.parpe.core.export.CRuntime;
 import org.parpe.core.export.CText;
 import org.parpe.core.model.Program;

@@ -1,7 +1,7 @@
 package org.parpe.cli.export;
 
 import java.util.List;
-import org.parpe.cli.UsageException;
+import org.parpe.cli.options.UsageException;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.export.DriverCost;
 import org.parpe.core.model.Program;

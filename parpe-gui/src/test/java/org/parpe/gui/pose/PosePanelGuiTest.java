@@ -465,7 +465,7 @@ class PosePanelGuiTest {
         assertTrue(!group.isEmpty(), "the posed group is highlighted");
         double x = 0, y = 0, z = 0;
         int n = 0;
-        for (org.parpe.sim.SimBody b : view.lastSnapshot().bodies()) {
+        for (org.parpe.sim.snapshot.SimBody b : view.lastSnapshot().bodies()) {
             if (group.contains(b.moduleId())) {
                 x += b.position().x();
                 y += b.position().y();

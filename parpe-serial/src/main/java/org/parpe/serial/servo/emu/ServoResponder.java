@@ -3,7 +3,7 @@ package org.parpe.serial.servo.emu;
 import java.util.Arrays;
 import org.parpe.serial.emu.EmulatorListener;
 import org.parpe.serial.servo.ServoProtocol;
-import org.parpe.serial.servo.wire.Dxl2Codec;
+import org.parpe.serial.dynamixel.Dxl2Codec;
 import org.parpe.serial.servo.wire.Packet;
 import org.parpe.serial.servo.wire.PacketCodec;
 

@@ -5,7 +5,7 @@ import java.util.List;
 import org.parpe.serial.servo.Registers;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.ServoProtocol;
-import org.parpe.serial.servo.wire.Dxl2Codec;
+import org.parpe.serial.dynamixel.Dxl2Codec;
 
 /** Error bytes and error registers of the servo protocols in words, for messages. */
 final class Faults {

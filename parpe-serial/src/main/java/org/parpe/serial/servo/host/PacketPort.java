@@ -8,7 +8,7 @@ import java.util.concurrent.locks.ReentrantLock;
 import org.parpe.serial.link.ByteLink;
 import org.parpe.serial.link.ReadLoop;
 import org.parpe.serial.link.StreamDecoder;
-import org.parpe.serial.servo.wire.Dxl2Codec;
+import org.parpe.serial.dynamixel.Dxl2Codec;
 import org.parpe.serial.servo.wire.Packet;
 import org.parpe.serial.servo.wire.PacketCodec;
 import org.parpe.serial.servo.wire.PacketDecoder;

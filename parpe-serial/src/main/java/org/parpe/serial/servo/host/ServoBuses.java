@@ -2,6 +2,7 @@ package org.parpe.serial.servo.host;
 
 import java.io.IOException;
 import org.parpe.serial.bus.BusConfig;
+import org.parpe.serial.g1.G1Bus;
 import org.parpe.serial.link.LinkOpener;
 import org.parpe.serial.servo.ServoBus;
 import org.parpe.serial.servo.ServoProtocol;

@@ -22,7 +22,7 @@ public interface PacketCodec {
     int SYNC_WRITE = 0x83;
     /**
      * Dynamixel 2.0 Fast Sync Read: asked like Sync Read, answered by one status packet from the
-     * broadcast ID that every servo adds its block to ({@link Dxl2Codec#fastStatus}).
+     * broadcast ID that every servo adds its block to ({@link org.parpe.serial.dynamixel.Dxl2Codec#fastStatus}).
      */
     int FAST_SYNC_READ = 0x8A;
     /** Dynamixel 2.0 Bulk Read: {@code id, addr, len} per servo, each replies in turn. */

@@ -12,8 +12,8 @@ import org.parpe.serial.emu.EmulatorListener;
 import org.parpe.serial.servo.Registers;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.ServoProtocol;
-import org.parpe.serial.servo.wire.Dxl2Codec;
-import org.parpe.serial.servo.wire.FeetechCodec;
+import org.parpe.serial.dynamixel.Dxl2Codec;
+import org.parpe.serial.feetech.FeetechCodec;
 import org.parpe.serial.servo.wire.Packet;
 import org.parpe.serial.servo.wire.PacketCodec;
 
