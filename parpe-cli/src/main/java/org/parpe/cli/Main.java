@@ -5,6 +5,7 @@ import java.io.PrintWriter;
 import java.nio.file.Path;
 import org.parpe.cli.bench.BenchCommand;
 import org.parpe.cli.options.UsageException;
+import org.parpe.cli.terminal.ExitCode;
 import org.parpe.core.expr.Names;
 import org.parpe.core.io.CrashReport;
 import picocli.CommandLine;
@@ -37,9 +38,6 @@ import picocli.CommandLine.Command;
                   "", "Exit codes: 0 success, 1 script errors, 2 usage errors, 3 run-time error,",
                   "            4 internal error."})
 public final class Main implements Runnable {
-    /** The exit code of a failure of PARPE itself, distinct from a script's run-time error (3). */
-    public static final int INTERNAL_ERROR = 4;
-
     static {
         // Plots are drawn with AWT into images; the command line never opens a window, so AWT
         // must not load its X11 toolkit even where a display is set (and X libraries are absent).
@@ -98,7 +96,7 @@ public final class Main implements Runnable {
             // inputs are capped at 16 MiB, which loads in well under 1 GiB; a smaller heap may not do
             err.println("parpe: out of memory with a Java heap of " + (Runtime.getRuntime().maxMemory() >> 20)
                     + " MiB; allow more with JAVA_TOOL_OPTIONS=-Xmx1g");
-            return INTERNAL_ERROR;
+            return ExitCode.INTERNAL_ERROR;
         }
     }
 
@@ -156,6 +154,6 @@ public final class Main implements Runnable {
     private static int internalError(Throwable ex, PrintWriter err) {
         String where = CrashReport.write(Path.of(System.getProperty("java.io.tmpdir")), "running a command", ex);
         err.println("parpe: internal error: " + ex + "; please attach " + where + " to a bug report");
-        return INTERNAL_ERROR;
+        return ExitCode.INTERNAL_ERROR;
     }
 }

@@ -10,6 +10,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.ServiceLoader;
 import java.util.concurrent.Callable;
+import org.parpe.cli.terminal.ExitCode;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -88,7 +89,7 @@ public final class BenchCommand implements Callable<Integer> {
                 shown.flush();
             } else if (fork(b, shown) != 0) {
                 spec.commandLine().getErr().println("parpe: benchmark '" + b.name() + "' failed");
-                return org.parpe.cli.Main.INTERNAL_ERROR;
+                return ExitCode.INTERNAL_ERROR;
             }
         }
         out.println(results.summary());

@@ -13,11 +13,12 @@ import org.parpe.core.diag.DiagnosticSink;
  * {@code … (×3)}). A bus warning said again and again (a servo stopping on its watchdog at every
  * stall of the host) is then two lines, not one per stop. Any thread: the bus reports from its own.
  */
-final class FoldedDiagnostics implements DiagnosticSink {
+public final class FoldedDiagnostics implements DiagnosticSink {
     private final Consumer<String> out;
     private final Map<Diagnostic, int[]> seen = new LinkedHashMap<>();
 
-    FoldedDiagnostics(Consumer<String> out) {
+    /** Folds the diagnostics printed to {@code out}. */
+    public FoldedDiagnostics(Consumer<String> out) {
         this.out = out;
     }
 
@@ -29,7 +30,7 @@ final class FoldedDiagnostics implements DiagnosticSink {
     }
 
     /** The end of the run: each diagnostic that came more than once, with its count. */
-    synchronized void finish() {
+    public synchronized void finish() {
         for (Map.Entry<Diagnostic, int[]> e : seen.entrySet()) {
             if (e.getValue()[0] > 1) {
                 out.accept(e.getKey().format(e.getValue()[0]));

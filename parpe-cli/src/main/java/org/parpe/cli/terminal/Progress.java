@@ -10,7 +10,7 @@ import org.parpe.core.run.RunOutcome;
  * run that rewrites its line at most five times a second, from one second on, and clears it
  * at the end. Silent when standard error is not a terminal.
  */
-final class Progress implements JointSink {
+public final class Progress implements JointSink {
     private final TerminalLine line;
     private final double limit;
     private long start;
@@ -21,7 +21,7 @@ final class Progress implements JointSink {
     }
 
     /** Progress of a run of at most {@code limit} s ({@code +∞}: unknown) on {@code err}. */
-    static Progress forStderr(PrintStream err, double limit) {
+    public static Progress forStderr(PrintStream err, double limit) {
         return new Progress(TerminalLine.onStderr(err), limit);
     }
 

@@ -16,11 +16,12 @@ import org.parpe.serial.servo.wire.PacketDecoder;
  * e-Manual ("DYNAMIXEL Protocol 2.0", sections Ping, Read, Write, Sync Read, Sync Write), in both
  * directions: our encoder builds them and our decoder accepts them.
  */
-class Dxl2CodecTest {
+public class Dxl2CodecTest {
     final Dxl2Codec codec = new Dxl2Codec();
     final byte[] out = new byte[codec.bufferSize()];
 
-    static byte[] hex(String s) {
+    /** Bytes of hex pairs separated by blanks (the manuals' way of writing packets); FeetechCodecTest uses it too. */
+    public static byte[] hex(String s) {
         String[] w = s.trim().split("\\s+");
         byte[] b = new byte[w.length];
         for (int i = 0; i < w.length; i++) {
@@ -29,7 +30,7 @@ class Dxl2CodecTest {
         return b;
     }
 
-    static byte[] params(int... v) {
+    public static byte[] params(int... v) {
         byte[] b = new byte[v.length];
         for (int i = 0; i < v.length; i++) {
             b[i] = (byte) v[i];
@@ -53,7 +54,7 @@ class Dxl2CodecTest {
         return got;
     }
 
-    static String hexOf(byte[] b) {
+    public static String hexOf(byte[] b) {
         StringBuilder s = new StringBuilder();
         for (byte x : b) {
             s.append(String.format("%02X", x & 0xFF));
