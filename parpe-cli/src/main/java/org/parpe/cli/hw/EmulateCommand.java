@@ -121,7 +121,7 @@ public final class EmulateCommand implements Callable<Integer> {
             throw new UsageException("--protocol must be one of " + ServoProtocol.keys() + ", got '" + protocol + "'");
         }
         int rate = baud == null ? p.scanBauds().get(0) : baud;
-        if (p != ServoProtocol.G1) {
+        if (p.controlTable()) {
             return new ServoEmulation(port, rate, servoModel(p), o, duration, log, err).serve();
         }
         if (model != null) {

@@ -130,6 +130,57 @@ public final class Dxl2Codec implements PacketCodec {
         return p.error;
     }
 
+    /** Status error numbers 1…7 (e-Manual, Protocol 2.0, Status Packet: Error). */
+    private static final String[] PACKET_ERRORS = {"result fail", "instruction error", "CRC error",
+        "data range error", "data length error", "data limit error", "access error"};
+
+    @Override
+    public String family() {
+        return "Dynamixel";
+    }
+
+    @Override
+    public int addressBytes() {
+        return 2;
+    }
+
+    @Override
+    public int pingReplyParams() {
+        return 3;
+    }
+
+    @Override
+    public boolean marksStatus() {
+        return true;
+    }
+
+    @Override
+    public boolean broadcastPing() {
+        return true;
+    }
+
+    @Override
+    public boolean fastAndBulkRead() {
+        return true;
+    }
+
+    @Override
+    public boolean busWatchdog() {
+        return true;
+    }
+
+    /** Only with the alert bit: the error number in the low bits is about the packet. */
+    @Override
+    public boolean faulty(int statusError) {
+        return (statusError & ERROR_ALERT) != 0;
+    }
+
+    @Override
+    public String packetError(int statusError) {
+        int number = statusError & 0x7F;
+        return number >= 1 && number <= PACKET_ERRORS.length ? PACKET_ERRORS[number - 1] : null;
+    }
+
     @Override
     public int packetLength(int params) {
         return HEAD + 1 + params + 2;

@@ -64,6 +64,52 @@ public final class FeetechCodec implements PacketCodec {
     }
 
     @Override
+    public String family() {
+        return "Feetech";
+    }
+
+    @Override
+    public int addressBytes() {
+        return 1;
+    }
+
+    @Override
+    public int pingReplyParams() {
+        return 0;
+    }
+
+    @Override
+    public boolean marksStatus() {
+        return false;
+    }
+
+    @Override
+    public boolean broadcastPing() {
+        return false;
+    }
+
+    @Override
+    public boolean fastAndBulkRead() {
+        return false;
+    }
+
+    @Override
+    public boolean busWatchdog() {
+        return false;
+    }
+
+    /** Every bit of the status byte is a fault of the servo. */
+    @Override
+    public boolean faulty(int statusError) {
+        return statusError != 0;
+    }
+
+    @Override
+    public String packetError(int statusError) {
+        return null;
+    }
+
+    @Override
     public int packetLength(int params) {
         return HEAD + 2 + params;
     }

@@ -48,7 +48,7 @@ final class EmulatedServo {
         this.table = new byte[ct.length];
         this.pending = new byte[ct.length];
         this.dxl = model.protocol() == ServoProtocol.DXL2;
-        this.bigEndian = model.protocol() == ServoProtocol.SCS;
+        this.bigEndian = model.protocol().bigEndian();
         idItem = ct.named("ID");
         torque = ct.named("Torque Enable");
         goal = ct.named("Goal Position");

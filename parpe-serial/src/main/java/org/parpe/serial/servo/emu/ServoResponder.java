@@ -60,7 +60,7 @@ final class ServoResponder {
         this.listener = listener;
         this.protocol = protocol;
         this.dxl = protocol == ServoProtocol.DXL2;
-        this.addrBytes = dxl ? 2 : 1;
+        this.addrBytes = codec.addressBytes();
         this.out = new byte[codec.bufferSize()];
         this.view = new double[servos.length];
     }
@@ -91,7 +91,7 @@ final class ServoResponder {
             case ACTION -> action(target);
             case PacketCodec.SYNC_WRITE -> syncWrite(p);
             case PacketCodec.SYNC_READ -> {
-                if (protocol != ServoProtocol.SCS) {
+                if (protocol.syncRead()) {
                     syncRead(p);
                 }
             }

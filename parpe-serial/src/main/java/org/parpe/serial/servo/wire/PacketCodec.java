@@ -50,6 +50,53 @@ public interface PacketCodec {
     /** Bytes on the wire of a packet with {@code params} parameters (without stuffing). */
     int packetLength(int params);
 
+    // What tells the families apart: each codec answers for its family, so that the host
+    // driver and the emulator never compare protocols.
+
+    /** The family in messages: {@code Dynamixel}, {@code Feetech}. */
+    String family();
+
+    /** Bytes of a control-table address, and of a length, in instruction parameters. */
+    int addressBytes();
+
+    /**
+     * Parameters of a reply to Ping: the model number (2 bytes) and firmware version on
+     * Dynamixel 2.0 (e-Manual, Protocol 2.0, Ping: Parameters 1–3); none on Feetech, whose
+     * model is read from the control table.
+     */
+    int pingReplyParams();
+
+    /**
+     * Whether a status packet is told from an instruction by its instruction field
+     * ({@link #STATUS}, Dynamixel 2.0): the host then ignores other packets it hears (its own,
+     * echoed by a half-duplex adapter). On Feetech that field is the status packet's error byte.
+     */
+    boolean marksStatus();
+
+    /**
+     * Whether the servos answer a broadcast Ping one after another in ID order, so that a scan
+     * asks them all at once (Dynamixel 2.0); Feetech servos are pinged one by one.
+     */
+    boolean broadcastPing();
+
+    /** Whether Fast Sync Read and Bulk Read exist ({@link #FAST_SYNC_READ}, {@link #BULK_READ}). */
+    boolean fastAndBulkRead();
+
+    /**
+     * Whether the servos stop on their own when the host falls silent (Dynamixel Bus Watchdog,
+     * e-Manual, X series, Bus Watchdog(98)); Feetech servos hold their last goal.
+     */
+    boolean busWatchdog();
+
+    /**
+     * Whether a non-zero status error byte reports a fault of the servo: on Dynamixel 2.0 only
+     * with the alert bit (the low bits number an error of the packet); on Feetech every bit is one.
+     */
+    boolean faulty(int statusError);
+
+    /** The error of a packet a status error byte names in words ({@code CRC error}), or null for none. */
+    String packetError(int statusError);
+
     /** An unsigned little-endian value of {@code size} bytes of {@code b} at {@code off}. */
     static int le(byte[] b, int off, int size) {
         int v = 0;
