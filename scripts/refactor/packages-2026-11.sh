@@ -69,8 +69,19 @@ parpe-serial/src/test/java/org/parpe/serial/protocol/FrameCodecTest.java        
 EOF
 )
 
+# Issue 32 item 6: one of each pair of classes with the same simple name gets the name of what
+# it is (class, its new name; same package).
+RENAMES=$(cat <<'EOF'
+org.parpe.sim.Progress                    MotionTracker
+org.parpe.core.load.Assembly              Includes
+org.parpe.core.run.Evaluator              ExpressionEvaluator
+org.parpe.core.run.Inputs                 TickInputs
+org.parpe.gui.hardware.DialogHardware     ConnectedRobot
+EOF
+)
+
 MOVES=$(grep -v '^#' <<<"$MOVES" | grep -v '^ *$')
-export MOVES EXTRA_TESTS
+export MOVES EXTRA_TESTS RENAMES
 
 python3 - <<'PY'
 import os, re, subprocess
@@ -207,7 +218,31 @@ for fqn, new in moves:
             if old2 == old and new2 != new:
                 refer(f, new2 + "." + name2)
 
-# 4. No import of a file's own package.
+# 4. Renames within a package: the file (and ClassTest), the fully qualified name everywhere,
+# and the simple name in the files of its package and in those that import it (unless they
+# import another class of that name).
+renames = [l.split() for l in os.environ["RENAMES"].splitlines() if l.strip()]
+for fqn, new_name in renames:
+    pkg, old_name = fqn.rsplit(".", 1)
+    for root in ROOTS:
+        for suffix in ("", "Test"):
+            src = os.path.join(pkg_dir(root, pkg), old_name + suffix + ".java")
+            if os.path.exists(src):
+                git_mv(src, os.path.join(pkg_dir(root, pkg), new_name + suffix + ".java"))
+    targets = set(java_files_of(pkg))
+    for f in texts:
+        if os.path.exists(f) and re.search(re.escape(fqn) + r"\b", open(f, encoding="utf-8").read()):
+            targets.add(f)
+    for f in sorted(targets):
+        s = open(f, encoding="utf-8").read()
+        t = re.sub(re.escape(fqn) + r"(Test)?\b", pkg + "." + new_name + r"\1", s)
+        other = re.search(r"^import (?!" + re.escape(pkg) + r"\.)[\w.]+\." + old_name + ";", t, re.M)
+        if f.endswith(".java") and not other:
+            t = re.sub(r"(?<![\w.])" + old_name + r"(Test)?\b", new_name + r"\1", t)
+        if t != s:
+            open(f, "w", encoding="utf-8").write(t)
+
+# 5. No import of a file's own package.
 for root in ROOTS:
     for d, _, fs in os.walk(root):
         for f in fs:
@@ -221,7 +256,7 @@ for root in ROOTS:
                 open(p, "w", encoding="utf-8").write(t)
 PY
 
-# 5. A package-info for each new package; the old G1 package's goes with its classes.
+# 6. A package-info for each new package; the old G1 package's goes with its classes.
 info() { # module package text
     local f="$1/src/main/java/${2//.//}/package-info.java"
     if [ ! -e "$f" ]; then
