@@ -116,7 +116,7 @@ final class RobotResolver {
                 d.error(robot.pos(), "<robot file=...> cannot also contain elements");
                 return null;
             }
-            Path p = Assembly.resolve(mainFile, file.value().trim());
+            Path p = Includes.resolve(mainFile, file.value().trim());
             this.file = p;
             if (robotFile.ioError() != null) {
                 d.error(file.pos(), "cannot read robot file '" + p + "': " + robotFile.ioError());

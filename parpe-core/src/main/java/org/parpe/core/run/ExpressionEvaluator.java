@@ -5,7 +5,7 @@ import org.parpe.core.expr.EvalContext;
 import org.parpe.core.expr.Expression;
 
 /** Evaluates expressions for the scheduler, turning failures into located run-time errors. */
-interface Evaluator {
+interface ExpressionEvaluator {
     /** The shared evaluation context. */
     EvalContext ctx();
 

@@ -14,7 +14,7 @@ import org.parpe.core.sensor.SensorTable;
  * What flows into the scheduler at step 1 of a tick (PARSL.md §11): control changes queued by
  * other threads, due stimuli, and sensor readings with the stimulus overrides on top.
  */
-final class Inputs {
+final class TickInputs {
     private static final double EPS = 1e-9;
 
     private final Program program;
@@ -29,7 +29,7 @@ final class Inputs {
     private final ConcurrentLinkedQueue<Runnable> commands = new ConcurrentLinkedQueue<>();
     private int nextStimulus;
 
-    Inputs(Program program, EvalContext ctx, SensorTable sensors, List<Stimulus> stimuli) {
+    TickInputs(Program program, EvalContext ctx, SensorTable sensors, List<Stimulus> stimuli) {
         this.program = program;
         this.ctx = ctx;
         this.sensors = sensors;

@@ -11,7 +11,7 @@ import org.parpe.sim.internal.PhysicsWorld;
  * axle's, which rolling does not turn: twice the angle the axle tipped from its starting slope,
  * so that a wheel lying flat reads 180° as a walker on its back does.
  */
-final class Progress {
+final class MotionTracker {
     private final PhysicsWorld world;
     private final double[] com = new double[3];
     private final double[] start = new double[3];
@@ -25,7 +25,7 @@ final class Progress {
     private double markedTime = Double.NaN;
     private double markedMaxTilt;
 
-    Progress(PhysicsWorld world) {
+    MotionTracker(PhysicsWorld world) {
         this.world = world;
         this.axle = world.assembly().axle();
         reset();

@@ -13,11 +13,11 @@ import org.parpe.serial.servo.profile.ServoMapping;
  * starter profile maps it ({@link ServoMapping#starter}: servo angle 0 is joint angle 0, ±90°). Limp, hold and moves go through the dialog's
  * {@link HardwareSession} (its own thread); angles are the dialog's last poll.
  */
-public final class DialogHardware implements PoseHardware {
+public final class ConnectedRobot implements PoseHardware {
     private final HardwareDialog dialog;
     private final HardwareProfile profile;
 
-    public DialogHardware(HardwareDialog dialog, HardwareProfile profile) {
+    public ConnectedRobot(HardwareDialog dialog, HardwareProfile profile) {
         this.dialog = dialog;
         this.profile = profile;
     }

@@ -23,7 +23,7 @@ import org.parpe.core.xml.XmlReader;
  * Reads the main file and its includes (PARSL.md §1, §9) and lists their sections in document
  * order, the content of an include standing where its {@code <include>} is.
  */
-final class Assembly {
+final class Includes {
     /** How deep includes may nest: far beyond real use, and the assembly recurses once per level. */
     static final int MAX_INCLUDE_DEPTH = 64;
     private static final List<String> MERGED = List.of("parameters", "controls", "states", "automata", "behaviors");
@@ -83,7 +83,7 @@ final class Assembly {
     private final Set<Path> done = new HashSet<>();
     private int order;
 
-    private Assembly(DiagnosticSink diags, Path confinedTo) {
+    private Includes(DiagnosticSink diags, Path confinedTo) {
         this.diags = diags;
         this.confinedTo = confinedTo;
     }
@@ -93,7 +93,7 @@ final class Assembly {
      * includes; with {@code confinedTo} (null: anywhere) only includes inside that folder.
      */
     static Assembled read(Path file, String text, DiagnosticSink diags, Path confinedTo) {
-        Assembly a = new Assembly(diags, confinedTo);
+        Includes a = new Includes(diags, confinedTo);
         a.addMain(file, text);
         return new Assembled(a.sections, a.files, a.root, a.robot, a.robotOrder, a.main);
     }
