@@ -159,9 +159,30 @@ public final class Dxl2Codec implements PacketCodec {
         return true;
     }
 
+    /** Every instruction of {@link PacketCodec}. */
     @Override
-    public boolean fastAndBulkRead() {
+    public boolean knows(int instruction) {
+        return switch (instruction) {
+            case PING, READ, WRITE, REG_WRITE, ACTION, REBOOT, SYNC_READ, SYNC_WRITE, FAST_SYNC_READ, BULK_READ,
+                 BULK_WRITE -> true;
+            default -> false;
+        };
+    }
+
+    @Override
+    public boolean errorNumbers() {
         return true;
+    }
+
+    /** The alert bit when the servo has a hardware error, and the error number. */
+    @Override
+    public int statusByte(int hardwareError, int errorNumber) {
+        return (hardwareError != 0 ? ERROR_ALERT : 0) | errorNumber;
+    }
+
+    @Override
+    public boolean answers(int level, boolean read) {
+        return level >= 2 || read && level >= 1;
     }
 
     @Override

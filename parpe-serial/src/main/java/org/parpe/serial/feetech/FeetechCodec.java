@@ -88,9 +88,29 @@ public final class FeetechCodec implements PacketCodec {
         return false;
     }
 
+    /** The instructions of Feetech's protocol manual: none of Dynamixel 2.0's additions. */
     @Override
-    public boolean fastAndBulkRead() {
+    public boolean knows(int instruction) {
+        return switch (instruction) {
+            case PING, READ, WRITE, REG_WRITE, ACTION, SYNC_READ, SYNC_WRITE -> true;
+            default -> false;
+        };
+    }
+
+    @Override
+    public boolean errorNumbers() {
         return false;
+    }
+
+    /** The servo's status bits; there are no error numbers. */
+    @Override
+    public int statusByte(int hardwareError, int errorNumber) {
+        return hardwareError;
+    }
+
+    @Override
+    public boolean answers(int level, boolean read) {
+        return read || level >= 1;
     }
 
     @Override

@@ -15,16 +15,20 @@ import org.parpe.serial.servo.wire.PacketCodec;
  */
 public enum ServoProtocol {
     /** PARPE's reconstructed PolyBot G1 module bus (docs/hardware-protocol.md). */
-    G1("g1", 254, false, List.of(115_200, 1_000_000, 57_600, 9_600), true, false, false, "g1-segment", null),
+    G1("g1", 254, false, List.of(115_200, 1_000_000, 57_600, 9_600), true, false, false, false,
+            "g1-segment", null),
     /** Dynamixel Protocol 2.0 (X series: XL330, XL430, XM430, …). */
     DXL2("dxl2", 252, true, List.of(57_600, 1_000_000, 115_200, 2_000_000, 3_000_000, 4_000_000, 9_600), false,
-            true, false, "xl430-w250", Dxl2Codec::new),
+            true, true, false, "xl430-w250", Dxl2Codec::new),
     /** Feetech STS series (STS3215, …): little-endian control table. */
     STS("sts", 253, true, List.of(1_000_000, 500_000, 115_200, 57_600, 250_000, 128_000, 76_800, 38_400), false,
-            true, false, "sts3215", FeetechCodec::new),
-    /** Feetech SCS series (SCS15, SCS0009, …): big-endian control table, no Sync Read. */
+            true, true, false, "sts3215", FeetechCodec::new),
+    /**
+     * Feetech SCS series (SCS15, SCS0009, …): big-endian control table, no Sync Read, no answer
+     * to a broadcast Ping.
+     */
     SCS("scs", 253, true, List.of(1_000_000, 500_000, 115_200, 57_600, 250_000, 128_000, 76_800, 38_400), false,
-            false, true, "scs0009", FeetechCodec::new);
+            false, false, true, "scs0009", FeetechCodec::new);
 
     private final String key;
     private final int maxId;
@@ -32,18 +36,21 @@ public enum ServoProtocol {
     private final List<Integer> scanBauds;
     private final boolean modules;
     private final boolean syncRead;
+    private final boolean answersBroadcastPing;
     private final boolean bigEndian;
     private final String defaultModel;
     private final Supplier<PacketCodec> codec;
 
     ServoProtocol(String key, int maxId, boolean groupRead, List<Integer> scanBauds, boolean modules,
-                  boolean syncRead, boolean bigEndian, String defaultModel, Supplier<PacketCodec> codec) {
+                  boolean syncRead, boolean answersBroadcastPing, boolean bigEndian, String defaultModel,
+                  Supplier<PacketCodec> codec) {
         this.key = key;
         this.maxId = maxId;
         this.groupRead = groupRead;
         this.scanBauds = scanBauds;
         this.modules = modules;
         this.syncRead = syncRead;
+        this.answersBroadcastPing = answersBroadcastPing;
         this.bigEndian = bigEndian;
         this.defaultModel = defaultModel;
         this.codec = codec;
@@ -91,6 +98,14 @@ public enum ServoProtocol {
      */
     public boolean syncRead() {
         return syncRead;
+    }
+
+    /**
+     * Whether every servo answers a broadcast Ping, in the order of its ID (Dynamixel 2.0 and
+     * Feetech STS; not SCS, nor G1 modules, which never reply to the broadcast address).
+     */
+    public boolean answersBroadcastPing() {
+        return answersBroadcastPing;
     }
 
     /** The name of the model a bus assumes when the servo's own is not known. */

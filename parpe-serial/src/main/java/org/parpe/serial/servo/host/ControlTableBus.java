@@ -222,11 +222,11 @@ public final class ControlTableBus implements ServoBus {
                 }
                 port.requestEach(PacketCodec.READ, params, k, replyIds, expected);
             }
-        } else if (layouts.size() == 1 || !codec.fastAndBulkRead()) {
+        } else if (layouts.size() == 1 || !codec.knows(PacketCodec.BULK_READ)) {
             for (Registers r : layouts) {
                 int k = putAddress(0, r.present(), r.presentSize());
                 expected = 0;
-                boolean fast = codec.fastAndBulkRead();
+                boolean fast = codec.knows(PacketCodec.FAST_SYNC_READ);
                 for (int i = 0; i < n; i++) {
                     if (models[i].registers() == r) {
                         params[k++] = (byte) ids[i];

@@ -418,7 +418,7 @@ final class PacketPort {
         if (codec.marksStatus() && p.code != PacketCodec.STATUS) {
             return;
         }
-        if (codec.fastAndBulkRead() && p.id == PacketCodec.BROADCAST) {
+        if (codec.knows(PacketCodec.FAST_SYNC_READ) && p.id == PacketCodec.BROADCAST) {
             onFastStatus(p);
             return;
         }

@@ -14,6 +14,10 @@ public interface PacketCodec {
     int READ = 0x02;
     /** Write {@code addr, data…} to the control table. */
     int WRITE = 0x03;
+    /** Reg Write: a Write kept until Action. */
+    int REG_WRITE = 0x04;
+    /** Action: carries out the kept Reg Write. */
+    int ACTION = 0x05;
     /** Dynamixel 2.0 Reboot: restarts the servo, which clears a hardware error. */
     int REBOOT = 0x08;
     /** Sync Read: the same {@code addr, len} from several servos, each replies in turn. */
@@ -27,6 +31,8 @@ public interface PacketCodec {
     int FAST_SYNC_READ = 0x8A;
     /** Dynamixel 2.0 Bulk Read: {@code id, addr, len} per servo, each replies in turn. */
     int BULK_READ = 0x92;
+    /** Dynamixel 2.0 Bulk Write: {@code id, addr, len, data…} per servo. */
+    int BULK_WRITE = 0x93;
     /** Dynamixel 2.0: the instruction field of a status packet. */
     int STATUS = 0x55;
 
@@ -79,8 +85,31 @@ public interface PacketCodec {
      */
     boolean broadcastPing();
 
-    /** Whether Fast Sync Read and Bulk Read exist ({@link #FAST_SYNC_READ}, {@link #BULK_READ}). */
-    boolean fastAndBulkRead();
+    /**
+     * Whether the family's servos carry out {@code instruction}, one of the codes above: Reboot,
+     * Fast Sync Read, Bulk Read and Bulk Write are Dynamixel 2.0's. (Sync Read also depends on
+     * the series: {@code ServoProtocol.syncRead}.)
+     */
+    boolean knows(int instruction);
+
+    /**
+     * Whether the error byte of a status packet numbers what was wrong with the instruction
+     * (Dynamixel 2.0: instruction, data range, access error …), so that a servo refuses a bad
+     * write with an error; Feetech servos ignore a write to a read-only address and keep a goal
+     * inside their limits instead.
+     */
+    boolean errorNumbers();
+
+    /** The error byte of a status packet from a servo with these hardware error bits and error number. */
+    int statusByte(int hardwareError, int errorNumber);
+
+    /**
+     * Whether a servo with status level {@code level} answers a Read ({@code read}) or another
+     * instruction other than Ping, which is always answered: Dynamixel Status Return Level 0
+     * answers Ping only, 1 also Read, 2 everything (e-Manual, X series, Status Return Level(68));
+     * Feetech Response Status Level 0 answers Ping and Read only, 1 everything.
+     */
+    boolean answers(int level, boolean read);
 
     /**
      * Whether the servos stop on their own when the host falls silent (Dynamixel Bus Watchdog,
