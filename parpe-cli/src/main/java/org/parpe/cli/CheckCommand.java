@@ -9,6 +9,8 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.stream.Stream;
 import org.parpe.cli.text.CliMsg;
+import org.parpe.cli.options.Inputs;
+import org.parpe.cli.options.UsageException;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.xml.InputFiles;

@@ -7,6 +7,8 @@ import java.util.Locale;
 import java.util.function.UnaryOperator;
 import org.parpe.cli.bench.BenchCommand;
 import org.parpe.cli.text.CliMsg;
+import org.parpe.cli.options.UsageException;
+import org.parpe.cli.terminal.ExitCode;
 import org.parpe.core.expr.Names;
 import org.parpe.core.io.CrashReport;
 import org.parpe.core.text.Lang;
@@ -42,9 +44,6 @@ import picocli.CommandLine.Option;
                   "", "Exit codes: 0 success, 1 script errors, 2 usage errors, 3 run-time error,",
                   "            4 internal error."})
 public final class Main implements Runnable {
-    /** The exit code of a failure of PARPE itself, distinct from a script's run-time error (3). */
-    public static final int INTERNAL_ERROR = 4;
-
     /** The encoding of the streams picocli writes to: the JVM's, or UTF-8 after {@link #utf8Terminal}. */
     private static java.nio.charset.Charset terminal = java.nio.charset.Charset.defaultCharset();
 
@@ -183,7 +182,7 @@ public final class Main implements Runnable {
         } catch (OutOfMemoryError e) {
             // inputs are capped at 16 MiB, which loads in well under 1 GiB; a smaller heap may not do
             err.println("parpe: " + CliMsg.OUT_OF_MEMORY.text(Runtime.getRuntime().maxMemory() >> 20));
-            return INTERNAL_ERROR;
+            return ExitCode.INTERNAL_ERROR;
         }
     }
 
@@ -241,6 +240,6 @@ public final class Main implements Runnable {
     private static int internalError(Throwable ex, PrintWriter err) {
         String where = CrashReport.write(Path.of(System.getProperty("java.io.tmpdir")), "running a command", ex);
         err.println("parpe: " + CliMsg.INTERNAL_ERROR.text(ex, where));
-        return INTERNAL_ERROR;
+        return ExitCode.INTERNAL_ERROR;
     }
 }

@@ -11,6 +11,8 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.parpe.cli.BadInputTest.Result;
+import org.parpe.cli.options.OutputFile;
+import org.parpe.cli.options.UsageException;
 
 /**
  * Outputs (trace, metrics, plot, recording) go through {@link OutputFile}: devices, directories,

@@ -120,7 +120,7 @@ final class Referee {
 
     /**
      * Remembers the score of the tick being emitted, before the plant moves on (as
-     * {@link Progress#mark} does for the distance).
+     * {@link MotionTracker#mark} does for the distance).
      */
     void mark() {
         marked = true;

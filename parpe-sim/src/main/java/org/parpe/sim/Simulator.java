@@ -20,6 +20,7 @@ import org.parpe.sim.internal.Docking;
 import org.parpe.sim.internal.PhysicsParams;
 import org.parpe.sim.internal.PhysicsWorld;
 import org.parpe.sim.internal.SnapshotBuffer;
+import org.parpe.sim.snapshot.SimSnapshot;
 import org.parpe.sim.world.World;
 
 /**
@@ -48,7 +49,7 @@ public final class Simulator implements JointSink, SensorSource, PlateSink, Auto
     private final SnapshotBuffer snapshots;
     private final int[] hingeIds;
     private final AtomicIntegerArray limpRequests;
-    private final Progress progress;
+    private final MotionTracker progress;
     private int[] programHinge = new int[0];
     private int[] programIds = new int[0];
     private double dt = DEFAULT_TICK;
@@ -102,7 +103,7 @@ public final class Simulator implements JointSink, SensorSource, PlateSink, Auto
         this.scene = scene;
         hingeIds = assembly.hinges().stream().mapToInt(Assembly.Hinge::moduleId).toArray();
         limpRequests = new AtomicIntegerArray(hingeIds.length);
-        progress = new Progress(world);
+        progress = new MotionTracker(world);
         snapshots = new SnapshotBuffer(world);
         traceValues = new double[hingeIds.length + 3 + 2 * world.objectCount()];
         docking = world.docking();

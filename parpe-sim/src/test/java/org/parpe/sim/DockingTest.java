@@ -14,7 +14,12 @@ import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
 import org.parpe.core.run.Run;
 import org.parpe.core.run.RunOptions;
+import org.parpe.sim.geom.Geo;
+import org.parpe.sim.geom.PartKind;
+import org.parpe.sim.geom.Vec3;
 import org.parpe.sim.internal.Docking;
+import org.parpe.sim.snapshot.SimBody;
+import org.parpe.sim.snapshot.SimSnapshot;
 
 /**
  * Docking in the simulator (PARSL.md §14, docs/simulator.md "Docking"): armed plates draw in a

@@ -11,6 +11,10 @@ import org.parpe.core.sensor.SensorTable;
 import org.parpe.sim.config.PartSpec;
 import org.parpe.sim.config.RobotConfig;
 import org.parpe.sim.config.RootPose;
+import org.parpe.sim.geom.Mat3;
+import org.parpe.sim.geom.PartKind;
+import org.parpe.sim.geom.Vec3;
+import org.parpe.sim.snapshot.SimSnapshot;
 
 /** Physical plausibility: free fall, energy, servo tracking, determinism. */
 class PhysicsTest {

@@ -7,6 +7,9 @@ import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.run.RunInfo;
 import org.parpe.sim.config.RobotConfig;
 import org.parpe.sim.config.RobotConfigs;
+import org.parpe.sim.geom.PartKind;
+import org.parpe.sim.snapshot.SimBody;
+import org.parpe.sim.snapshot.SimSnapshot;
 
 /** Helpers shared by the simulator tests. */
 final class SimTestSupport {

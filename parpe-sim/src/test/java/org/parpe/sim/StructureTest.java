@@ -5,6 +5,10 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
+import org.parpe.sim.geom.PartKind;
+import org.parpe.sim.geom.Vec3;
+import org.parpe.sim.snapshot.SimBody;
+import org.parpe.sim.snapshot.SimSnapshot;
 
 /** Generated structures, closed loops and collisions between modules. */
 class StructureTest {

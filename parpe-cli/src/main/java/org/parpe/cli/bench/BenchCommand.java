@@ -10,6 +10,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.ServiceLoader;
 import java.util.concurrent.Callable;
+import org.parpe.cli.terminal.ExitCode;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -62,8 +63,8 @@ public final class BenchCommand implements Callable<Integer> {
             return usage("--compare takes one earlier run to set beside this one, or two files to set side by side"
                     + " (then nothing runs: no --only or --save)");
         }
-        org.parpe.cli.OutputFile saved = save == null ? null
-                : org.parpe.cli.OutputFile.of(org.parpe.cli.OutputFile.plan(compare), "--save", save);
+        org.parpe.cli.options.OutputFile saved = save == null ? null
+                : org.parpe.cli.options.OutputFile.of(org.parpe.cli.options.OutputFile.plan(compare), "--save", save);
         List<Goal> everyGoal = all.stream().flatMap(b -> b.goals().stream()).toList();
         List<BenchResults> earlier = new ArrayList<>();
         for (Path file : compare) {
@@ -88,7 +89,7 @@ public final class BenchCommand implements Callable<Integer> {
                 shown.flush();
             } else if (fork(b, shown) != 0) {
                 spec.commandLine().getErr().println("parpe: benchmark '" + b.name() + "' failed");
-                return org.parpe.cli.Main.INTERNAL_ERROR;
+                return ExitCode.INTERNAL_ERROR;
             }
         }
         out.println(results.summary());

@@ -11,7 +11,7 @@ import java.awt.geom.Ellipse2D;
 import java.awt.geom.Line2D;
 import java.awt.geom.Rectangle2D;
 import java.awt.image.BufferedImage;
-import org.parpe.cli.Canvas;
+import org.parpe.cli.plot.Canvas;
 import org.parpe.core.diagram.Scene;
 
 /** Draws a {@link Scene} with Java2D on the command line's white {@link Canvas}, for PNG files. */

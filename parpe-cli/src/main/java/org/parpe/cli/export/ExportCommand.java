@@ -8,10 +8,10 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
-import org.parpe.cli.ClockOptions;
-import org.parpe.cli.Inputs;
-import org.parpe.cli.ParamValues;
-import org.parpe.cli.UsageException;
+import org.parpe.cli.options.ClockOptions;
+import org.parpe.cli.options.Inputs;
+import org.parpe.cli.options.ParamValues;
+import org.parpe.cli.options.UsageException;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.export.Board;
@@ -120,7 +120,7 @@ public final class ExportCommand implements Callable<Integer> {
         Inputs.check(file);
         ProgramExport.Request request = request(arduino);
         LoadResult r = ScriptLoader.load(file, ParamValues.parse(params));
-        int refused = org.parpe.cli.LoadReport.exitCode(r, err::println);
+        int refused = org.parpe.cli.terminal.LoadReport.exitCode(r, err::println);
         if (refused != 0) {
             return refused;
         }
@@ -157,7 +157,7 @@ public final class ExportCommand implements Callable<Integer> {
         if (file != null) {
             Inputs.check(file);
             LoadResult r = ScriptLoader.load(file, ParamValues.parse(params));
-            int refused = org.parpe.cli.LoadReport.exitCode(r, err::println);
+            int refused = org.parpe.cli.terminal.LoadReport.exitCode(r, err::println);
             if (refused != 0) {
                 return refused;
             }

@@ -3,7 +3,7 @@ package org.parpe.cli.export;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Map;
-import org.parpe.cli.UsageException;
+import org.parpe.cli.options.UsageException;
 import org.parpe.serial.export.ProgramExport;
 import org.parpe.sim.bridge.Export;
 

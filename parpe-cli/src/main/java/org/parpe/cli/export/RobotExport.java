@@ -11,7 +11,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeSet;
-import org.parpe.cli.UsageException;
+import org.parpe.cli.options.UsageException;
 import org.parpe.core.diag.Severity;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.model.Program;

@@ -5,7 +5,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import org.parpe.cli.UsageException;
+import org.parpe.cli.options.UsageException;
 import org.parpe.sim.grade.GradeShard;
 import org.parpe.sim.grade.Grading;
 import org.parpe.sim.grade.Row;

@@ -1,6 +1,6 @@
 package org.parpe.cli.hw;
 
-import org.parpe.cli.UsageException;
+import org.parpe.cli.options.UsageException;
 import org.parpe.serial.bus.BusConfig;
 import org.parpe.serial.bus.SafeMode;
 import picocli.CommandLine.Option;

@@ -11,7 +11,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import org.parpe.cli.UsageException;
+import org.parpe.cli.options.UsageException;
 import org.parpe.core.run.TargetException;
 import org.parpe.serial.bus.BusConfig;
 import org.parpe.serial.link.LinkOpener;

@@ -4,8 +4,8 @@ import java.util.Locale;
 import java.util.function.BiFunction;
 import java.util.function.IntFunction;
 import java.util.function.Supplier;
-import org.parpe.serial.emu.BusEmulator;
-import org.parpe.serial.protocol.Protocol;
+import org.parpe.serial.g1.emu.BusEmulator;
+import org.parpe.serial.g1.Protocol;
 
 /**
  * The emulator's console, the same for every protocol: {@code pose ID DEGREES} (move a limp device

@@ -14,9 +14,9 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.function.Function;
-import org.parpe.cli.OutputFile;
-import org.parpe.cli.UsageException;
-import org.parpe.serial.emu.BusEmulator;
+import org.parpe.cli.options.OutputFile;
+import org.parpe.cli.options.UsageException;
+import org.parpe.serial.g1.emu.BusEmulator;
 import org.parpe.serial.emu.EmulatorListener;
 import org.parpe.serial.emu.EmulatorOptions;
 import org.parpe.serial.link.LinkOpener;
@@ -121,7 +121,7 @@ public final class EmulateCommand implements Callable<Integer> {
             throw new UsageException("--protocol must be one of " + ServoProtocol.keys() + ", got '" + protocol + "'");
         }
         int rate = baud == null ? p.scanBauds().get(0) : baud;
-        if (p != ServoProtocol.G1) {
+        if (p.controlTable()) {
             return new ServoEmulation(port, rate, servoModel(p), o, duration, log, err).serve();
         }
         if (model != null) {

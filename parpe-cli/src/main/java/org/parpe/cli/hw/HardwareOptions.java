@@ -3,7 +3,7 @@ package org.parpe.cli.hw;
 import java.io.PrintStream;
 import java.nio.file.Path;
 import java.util.List;
-import org.parpe.cli.UsageException;
+import org.parpe.cli.options.UsageException;
 import org.parpe.core.run.Run;
 import org.parpe.core.run.SensorSource;
 import org.parpe.core.run.SourceKind;

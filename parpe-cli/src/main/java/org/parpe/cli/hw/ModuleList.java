@@ -3,9 +3,9 @@ package org.parpe.cli.hw;
 import java.util.Arrays;
 import java.util.LinkedHashSet;
 import java.util.Set;
-import org.parpe.cli.UsageException;
+import org.parpe.cli.options.UsageException;
 import org.parpe.serial.bus.Discovery;
-import org.parpe.serial.protocol.Protocol;
+import org.parpe.serial.g1.Protocol;
 
 /** Parses module lists of the command line: {@code 0..7}, {@code 0,2,5}, {@code 0..3,8..9}. */
 final class ModuleList {

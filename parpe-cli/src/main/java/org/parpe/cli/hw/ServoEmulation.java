@@ -4,7 +4,7 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.Locale;
-import org.parpe.cli.UsageException;
+import org.parpe.cli.options.UsageException;
 import org.parpe.serial.emu.EmulatorOptions;
 import org.parpe.serial.link.LinkOpener;
 import org.parpe.serial.servo.ServoModel;

@@ -6,7 +6,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import org.knowm.xchart.XYChart;
-import org.parpe.cli.PngCharts;
+import org.parpe.cli.plot.PngCharts;
 import org.parpe.core.plot.AngleRecorder;
 import org.parpe.core.plot.PlotStyle;
 

@@ -9,9 +9,9 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import org.parpe.cli.ClockOptions;
-import org.parpe.cli.Inputs;
-import org.parpe.cli.UsageException;
+import org.parpe.cli.options.ClockOptions;
+import org.parpe.cli.options.Inputs;
+import org.parpe.cli.options.UsageException;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
@@ -65,7 +65,7 @@ public final class RaceCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         List<Entry> entries = new ArrayList<>();
-        java.io.PrintStream errStream = new java.io.PrintStream(new org.parpe.cli.WriterStream(err), true,
+        java.io.PrintStream errStream = new java.io.PrintStream(new org.parpe.cli.terminal.WriterStream(err), true,
                 java.nio.charset.StandardCharsets.UTF_8);
         World scene;
         try {

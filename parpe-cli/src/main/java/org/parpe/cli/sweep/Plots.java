@@ -8,7 +8,7 @@ import java.util.Map;
 import java.util.TreeMap;
 import java.util.function.Predicate;
 import org.knowm.xchart.XYChart;
-import org.parpe.cli.PngCharts;
+import org.parpe.cli.plot.PngCharts;
 import org.parpe.core.plot.PlotStyle;
 import org.parpe.sim.sweep.Axis;
 import org.parpe.sim.sweep.Evaluation;

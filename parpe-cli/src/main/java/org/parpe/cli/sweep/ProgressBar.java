@@ -2,7 +2,7 @@ package org.parpe.cli.sweep;
 
 import java.io.PrintWriter;
 import java.util.Locale;
-import org.parpe.cli.TerminalLine;
+import org.parpe.cli.terminal.TerminalLine;
 import org.parpe.sim.sweep.SweepListener;
 import org.parpe.sim.sweep.SweepRow;
 

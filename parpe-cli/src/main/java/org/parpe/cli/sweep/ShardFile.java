@@ -15,7 +15,7 @@ import java.nio.file.Files;
 import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
-import org.parpe.cli.UsageException;
+import org.parpe.cli.options.UsageException;
 import org.parpe.core.io.AtomicFiles;
 import org.parpe.sim.sweep.SweepCsv;
 

@@ -3,7 +3,7 @@ package org.parpe.cli.sweep;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
-import org.parpe.cli.InterruptHook;
+import org.parpe.cli.terminal.InterruptHook;
 import org.parpe.sim.sweep.Cancellation;
 import org.parpe.sim.sweep.SweepException;
 import picocli.CommandLine.Mixin;
@@ -15,7 +15,7 @@ import picocli.CommandLine.Spec;
  * What {@code sweep} and {@code optimize} share: a script run many times on the simulator with
  * {@link SimSweepOptions}, and how they run: Ctrl-C or SIGTERM cancels the work (the runs in
  * progress stop at their next tick) and waits until the outputs are written; a sweep error is
- * one line and exit code 2, as a {@link org.parpe.cli.UsageException} is ({@link org.parpe.cli.Main#failed}).
+ * one line and exit code 2, as a {@link org.parpe.cli.options.UsageException} is ({@link org.parpe.cli.Main#failed}).
  */
 abstract class SimSweepCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "FILE", description = "The PARSL script.")

@@ -22,9 +22,9 @@ import org.parpe.core.model.Program;
 import org.parpe.core.run.Engine;
 import org.parpe.core.run.RunOptions;
 import org.parpe.core.run.StimulusParser;
-import org.parpe.serial.protocol.Crc16;
+import org.parpe.serial.bus.Crc16;
 import org.parpe.serial.servo.ServoModel;
-import org.parpe.serial.servo.wire.FeetechCodec;
+import org.parpe.serial.feetech.FeetechCodec;
 
 /**
  * The Arduino sketch compiles with the host compiler against a tiny Arduino API shim

@@ -12,7 +12,7 @@ import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.parpe.cli.UsageException;
+import org.parpe.cli.options.UsageException;
 
 /**
  * How an export's folder is written (issue 21, items 13 and 14): a link planted at the name the

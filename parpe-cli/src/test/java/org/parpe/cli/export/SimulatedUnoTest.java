@@ -23,9 +23,9 @@ import org.parpe.core.model.Program;
 import org.parpe.core.run.Engine;
 import org.parpe.core.run.RunOptions;
 import org.parpe.core.run.StimulusParser;
-import org.parpe.serial.protocol.Crc16;
+import org.parpe.serial.bus.Crc16;
 import org.parpe.serial.servo.ServoModel;
-import org.parpe.serial.servo.wire.FeetechCodec;
+import org.parpe.serial.feetech.FeetechCodec;
 
 /**
  * Every example's and tutorial script's Uno sketch, built with the real Arduino AVR core

@@ -5,12 +5,12 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
 import org.parpe.serial.bus.BusConfig;
-import org.parpe.serial.bus.BusMaster;
-import org.parpe.serial.emu.BusEmulator;
+import org.parpe.serial.g1.BusMaster;
+import org.parpe.serial.g1.emu.BusEmulator;
 import org.parpe.serial.emu.EmulatorListener;
 import org.parpe.serial.emu.EmulatorOptions;
 import org.parpe.serial.link.PipeLink;
-import org.parpe.serial.protocol.Command;
+import org.parpe.serial.g1.Command;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.emu.ServoEmulator;
 

@@ -6,7 +6,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
-import org.parpe.serial.emu.BusEmulator;
+import org.parpe.serial.g1.emu.BusEmulator;
 import org.parpe.serial.emu.EmulatorListener;
 import org.parpe.serial.emu.EmulatorOptions;
 import org.parpe.serial.link.LinkOpener;

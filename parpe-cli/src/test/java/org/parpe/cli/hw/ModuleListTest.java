@@ -6,7 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
-import org.parpe.cli.UsageException;
+import org.parpe.cli.options.UsageException;
 
 class ModuleListTest {
 

@@ -17,7 +17,7 @@ import org.parpe.core.model.Program;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.core.sensor.Channel;
 import org.parpe.core.sensor.SensorTable;
-import org.parpe.sim.SimBody;
+import org.parpe.sim.snapshot.SimBody;
 import org.parpe.sim.SimMetrics;
 import org.parpe.sim.Simulator;
 import org.parpe.sim.config.RobotConfigs;

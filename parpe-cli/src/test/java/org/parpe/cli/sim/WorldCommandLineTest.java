@@ -16,7 +16,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.parpe.cli.Cli;
-import org.parpe.cli.PngCharts;
+import org.parpe.cli.plot.PngCharts;
 
 /**
  * The example worlds on the command line: each is deterministic (the same trace bit for bit,

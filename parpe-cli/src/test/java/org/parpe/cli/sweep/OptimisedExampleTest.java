@@ -15,7 +15,7 @@ import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
 import org.parpe.core.run.RunOutcome;
-import org.parpe.sim.SimBody;
+import org.parpe.sim.snapshot.SimBody;
 import org.parpe.sim.Simulator;
 import org.parpe.sim.config.RobotConfigs;
 

@@ -14,7 +14,7 @@ import org.junit.jupiter.api.Test;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYSeries;
 import org.knowm.xchart.style.Styler;
-import org.parpe.cli.PngCharts;
+import org.parpe.cli.plot.PngCharts;
 import org.parpe.core.plot.PlotStyle;
 import org.parpe.sim.sweep.Axis;
 import org.parpe.sim.sweep.Evaluation;

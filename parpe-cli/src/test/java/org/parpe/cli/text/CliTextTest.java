@@ -127,9 +127,9 @@ class CliTextTest {
     void convertedCodeHasNoProseLiterals() throws IOException {
         List<String> found = new ArrayList<>();
         Path cli = Path.of("src/main/java/org/parpe/cli");
-        for (String f : List.of("Main.java", "CheckCommand.java", "RunCommand.java", "Inputs.java", "ParamValues.java",
+        for (String f : List.of("Main.java", "CheckCommand.java", "RunCommand.java", "options/Inputs.java", "options/ParamValues.java",
                 // (the Arduino sketch's options and checks are in parpe-serial now: core's MessagesTest scans them)
-                "ClockOptions.java", "Progress.java", "export/ExportCommand.java")) {
+                "options/ClockOptions.java", "terminal/Progress.java", "export/ExportCommand.java")) {
             String text = withoutAnnotations(read(cli.resolve(f)).replaceAll("(?s)/\\*.*?\\*/", "").replaceAll("(?m)//.*$", ""));
             Matcher m = Pattern.compile("\"((?:[^\"\\\\\\n]|\\\\.)*)\"").matcher(text);
             while (m.find()) {

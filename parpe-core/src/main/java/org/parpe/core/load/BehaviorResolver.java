@@ -94,14 +94,14 @@ final class BehaviorResolver {
      */
     static Resolved resolve(DiagnosticSink d, NameRegistry names, RobotResolver.Resolved robot,
                             StateResolver.Resolved states, InstanceChecks checks, ScopeFactory scopes,
-                            List<Assembly.Section> sections) {
+                            List<Includes.Section> sections) {
         BehaviorResolver r = new BehaviorResolver(d, names, robot, states, checks, scopes);
         r.behaviors(sections);
         return new Resolved(r.behaviors, r.broken);
     }
 
-    private void behaviors(List<Assembly.Section> sections) {
-        for (Assembly.Section s : sections) {
+    private void behaviors(List<Includes.Section> sections) {
+        for (Includes.Section s : sections) {
             Attrs.allow(s.element(), d, Element.SECTION.attributes());
             Attrs.noText(s.element(), d);
             int index = 0;
@@ -111,7 +111,7 @@ final class BehaviorResolver {
         }
     }
 
-    private void behavior(XElement e, Assembly.Section s, int index) {
+    private void behavior(XElement e, Includes.Section s, int index) {
         Attrs.allow(e, d, Element.BEHAVIOR.attributes());
         Attrs.noText(e, d);
         String name = e.name();
@@ -143,7 +143,7 @@ final class BehaviorResolver {
         }
     }
 
-    private List<String> macros(XElement e, Assembly.Section s, int index) {
+    private List<String> macros(XElement e, Includes.Section s, int index) {
         XText attr = Attrs.optional(e, "macros");
         List<String> out = new ArrayList<>();
         if (attr == null) {

@@ -69,7 +69,7 @@ final class Declarations {
     }
 
     /** Resolves the {@code <parameters>} sections, with the values given from outside ({@code overrides}). */
-    static Parameters parameters(List<Assembly.Section> sections, Map<String, Double> overrides, DiagnosticSink d,
+    static Parameters parameters(List<Includes.Section> sections, Map<String, Double> overrides, DiagnosticSink d,
                                  NameRegistry names) {
         Declarations decl = new Declarations(d, names);
         decl.readParameters(sections, overrides);
@@ -77,14 +77,14 @@ final class Declarations {
     }
 
     /** Resolves the {@code <controls>} sections. */
-    static Controls controls(List<Assembly.Section> sections, DiagnosticSink d, NameRegistry names) {
+    static Controls controls(List<Includes.Section> sections, DiagnosticSink d, NameRegistry names) {
         Declarations decl = new Declarations(d, names);
         decl.readControls(sections);
         return new Controls(decl.controls, decl.controlIndex, decl.radioWords);
     }
 
-    private void readParameters(List<Assembly.Section> sections, Map<String, Double> overrides) {
-        for (Assembly.Section s : sections) {
+    private void readParameters(List<Includes.Section> sections, Map<String, Double> overrides) {
+        for (Includes.Section s : sections) {
             Attrs.allow(s.element(), d, Element.SECTION.attributes());
             Attrs.noText(s.element(), d);
             int i = 0;
@@ -110,7 +110,7 @@ final class Declarations {
         }
     }
 
-    private void parameter(XElement e, Assembly.Section s, int index) {
+    private void parameter(XElement e, Includes.Section s, int index) {
         Attrs.allow(e, d, Element.PARAMETER.attributes());
         Attrs.noText(e, d);
         Attrs.noChildren(e, d);
@@ -141,7 +141,7 @@ final class Declarations {
         names.define(name, "parameter", order(s, index), s.reportAt(e.pos()), e.pos(), "");
     }
 
-    static long order(Assembly.Section s, int index) {
+    static long order(Includes.Section s, int index) {
         return order(s.order(), index, 0);
     }
 
@@ -176,8 +176,8 @@ final class Declarations {
         return true;
     }
 
-    private void readControls(List<Assembly.Section> sections) {
-        for (Assembly.Section s : sections) {
+    private void readControls(List<Includes.Section> sections) {
+        for (Includes.Section s : sections) {
             Attrs.allow(s.element(), d, Element.SECTION.attributes());
             Attrs.noText(s.element(), d);
             int i = 0;
@@ -187,7 +187,7 @@ final class Declarations {
         }
     }
 
-    private void control(XElement e, Assembly.Section s, int index) {
+    private void control(XElement e, Includes.Section s, int index) {
         Attrs.noText(e, d);
         Attrs.noChildren(e, d);
         String name = e.name();
@@ -244,7 +244,7 @@ final class Declarations {
                 : new Control(name, ControlType.TEXT, value, null, null, null, label(e), List.of(), List.of(), e.pos());
     }
 
-    private Control radio(XElement e, String name, Assembly.Section s, int index) {
+    private Control radio(XElement e, String name, Includes.Section s, int index) {
         Attrs.allow(e, d, Element.RADIO.attributes());
         XText values = Attrs.require(e, "values", d);
         if (values == null) {

@@ -14,11 +14,11 @@ import org.parpe.core.diag.Diagnostic;
  */
 public final class ParsedScript {
     final Path file;
-    final Assembly.Assembled assembled;
+    final Includes.Assembled assembled;
     final List<Diagnostic> readDiagnostics;
     final RobotResolver.FileRead robotFile;
 
-    ParsedScript(Path file, Assembly.Assembled assembled, List<Diagnostic> readDiagnostics,
+    ParsedScript(Path file, Includes.Assembled assembled, List<Diagnostic> readDiagnostics,
                  RobotResolver.FileRead robotFile) {
         this.file = file;
         this.assembled = assembled;

@@ -118,7 +118,7 @@ final class RobotResolver {
                 d.error(robot.pos(), Msg.ROBOT_FILE_AND_ELEMENTS);
                 return null;
             }
-            Path p = Assembly.resolve(mainFile, file.value().trim());
+            Path p = Includes.resolve(mainFile, file.value().trim());
             this.file = p;
             if (robotFile.ioError() != null) {
                 d.error(file.pos(), Msg.CANNOT_READ_ROBOT_FILE, p, robotFile.ioError());

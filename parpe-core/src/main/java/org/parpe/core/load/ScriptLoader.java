@@ -43,7 +43,7 @@ public final class ScriptLoader {
     public static LoadResult load(Path file, Map<String, Double> parameters, Path confinedTo) {
         String text;
         try {
-            Message outside = Assembly.outside(file, confinedTo);
+            Message outside = Includes.outside(file, confinedTo);
             if (outside != null) {
                 return unreadable(file, outside);
             }
@@ -79,10 +79,10 @@ public final class ScriptLoader {
     /** {@link #read(Path, String)} reading no file outside the folder {@code confinedTo} (null: anywhere). */
     public static ParsedScript read(Path file, String text, Path confinedTo) {
         DiagnosticList d = new DiagnosticList();
-        Assembly.Assembled a = Assembly.read(file, text, d, confinedTo);
+        Includes.Assembled a = Includes.read(file, text, d, confinedTo);
         XText robotRef = a.robot() == null ? null : Attrs.optional(a.robot(), "file");
-        Path robotPath = robotRef == null ? null : Assembly.resolve(file, robotRef.value().trim());
-        Message outside = robotPath == null ? null : Assembly.outside(robotPath, confinedTo);
+        Path robotPath = robotRef == null ? null : Includes.resolve(file, robotRef.value().trim());
+        Message outside = robotPath == null ? null : Includes.outside(robotPath, confinedTo);
         RobotResolver.FileRead robotFile = robotRef == null ? null
                 : outside != null ? new RobotResolver.FileRead(robotPath, null, outside, List.of())
                 : RobotResolver.FileRead.of(robotPath);
@@ -95,7 +95,7 @@ public final class ScriptLoader {
      */
     public static LoadResult bind(ParsedScript script, Map<String, Double> parameters) {
         Path file = script.file;
-        Assembly.Assembled a = script.assembled;
+        Includes.Assembled a = script.assembled;
         DiagnosticList d = new DiagnosticList();
         script.readDiagnostics.forEach(d::report);
         if (d.hasErrors() && a.nothing()) {

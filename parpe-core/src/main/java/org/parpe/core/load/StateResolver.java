@@ -56,16 +56,16 @@ final class StateResolver {
     }
 
     /** Resolves the {@code <states>} and then the {@code <automata>} sections, in {@code moduleScope}. */
-    static Resolved resolve(DiagnosticSink d, Scope moduleScope, List<Assembly.Section> stateSections,
-                            List<Assembly.Section> automataSections) {
+    static Resolved resolve(DiagnosticSink d, Scope moduleScope, List<Includes.Section> stateSections,
+                            List<Includes.Section> automataSections) {
         StateResolver r = new StateResolver(d, moduleScope);
         r.states(stateSections);
         r.automata(automataSections);
         return new Resolved(r.states, r.automata, r.locals, r.broken);
     }
 
-    private void states(List<Assembly.Section> sections) {
-        for (Assembly.Section s : sections) {
+    private void states(List<Includes.Section> sections) {
+        for (Includes.Section s : sections) {
             Attrs.allow(s.element(), d, Element.SECTION.attributes());
             Attrs.noText(s.element(), d);
             for (XElement e : s.element().children()) {
@@ -74,7 +74,7 @@ final class StateResolver {
         }
     }
 
-    private void state(XElement e, Assembly.Section s) {
+    private void state(XElement e, Includes.Section s) {
         Attrs.allow(e, d, Element.STATE.attributes());
         Attrs.noText(e, d);
         Attrs.noChildren(e, d);
@@ -169,8 +169,8 @@ final class StateResolver {
         return ok ? out : null;
     }
 
-    private void automata(List<Assembly.Section> sections) {
-        for (Assembly.Section s : sections) {
+    private void automata(List<Includes.Section> sections) {
+        for (Includes.Section s : sections) {
             Attrs.allow(s.element(), d, Element.SECTION.attributes());
             Attrs.noText(s.element(), d);
             for (XElement e : s.element().children()) {
@@ -179,7 +179,7 @@ final class StateResolver {
         }
     }
 
-    private void automaton(XElement e, Assembly.Section s) {
+    private void automaton(XElement e, Includes.Section s) {
         Attrs.allow(e, d, Element.AUTOMATON.attributes());
         Attrs.noChildren(e, d);
         String name = e.name();

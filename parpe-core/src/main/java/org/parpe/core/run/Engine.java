@@ -29,7 +29,7 @@ import org.parpe.core.text.Msg;
  * {@link #setControlWord} and {@link #requestStop}, which queue commands drained at the next
  * tick boundary. Ticks do not allocate once the run has started.
  */
-public final class Engine implements Evaluator {
+public final class Engine implements ExpressionEvaluator {
     private static final double EPS = 1e-9;
 
     private final Program program;
@@ -43,7 +43,7 @@ public final class Engine implements Evaluator {
     private final int[] driverPos;
     private final SensorTable sensors;
     private final EvalContext ctx = new EvalContext();
-    private final Inputs inputs;
+    private final TickInputs inputs;
     private final List<JointSink> plants = new ArrayList<>();
     private final List<JointSink> observers = new ArrayList<>();
     private final List<PlateSink> plateSinks = new ArrayList<>();
@@ -77,7 +77,7 @@ public final class Engine implements Evaluator {
         this.plateWhere = new SourcePos[2 * ids.length];
         ctx.sensors = sensors;
         ctx.random = new SplittableRandom(options.seed());
-        this.inputs = new Inputs(program, ctx, sensors, options.stimuli());
+        this.inputs = new TickInputs(program, ctx, sensors, options.stimuli());
         MainDef main = program.main();
         this.mainCycles = main == null ? 0 : main.cycles();
         this.plans = main == null ? new EntryPlan[0]

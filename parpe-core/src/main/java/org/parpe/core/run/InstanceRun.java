@@ -209,7 +209,7 @@ final class InstanceRun {
      * {@code $phase = u_k}, {@code $cycle = 0}, never those of an earlier run of the entry.
      * With {@code cycles ≤ 0} nothing is placed or evaluated: the modules are never driven.
      */
-    void init(Evaluator ev, double phase, double offset, double cycles, double[] commanded) {
+    void init(ExpressionEvaluator ev, double phase, double offset, double cycles, double[] commanded) {
         started = true;
         limit = cycles;
         Arrays.fill(exitedFrom, -1);
@@ -268,7 +268,7 @@ final class InstanceRun {
         }
     }
 
-    private void evalTimes(Evaluator ev) {
+    private void evalTimes(ExpressionEvaluator ev) {
         double s = 0;
         for (int j = 0; j < ns; j++) {
             double t = ev.eval(times[j]);
@@ -286,7 +286,7 @@ final class InstanceRun {
     }
 
     /** Evaluates the period for this tick (instance scope) and, unless they are per module, the durations. */
-    void prepareTick(Evaluator ev, Expression period, double dt) {
+    void prepareTick(ExpressionEvaluator ev, Expression period, double dt) {
         double per = period == null ? Double.NaN : ev.eval(period);
         if (period != null && !(per > 0)) {
             throw ev.error(period.pos(), Msg.PERIOD_NOT_POSITIVE, automaton, Numbers.brief(per));
@@ -318,7 +318,7 @@ final class InstanceRun {
      * Advances module {@code k} by {@code dt} (§7.1, §13 rules 7–9, 20, 22) and computes its
      * setpoint into {@code out}.
      */
-    void advance(Evaluator ev, int k, double dt, double[] commanded) {
+    void advance(ExpressionEvaluator ev, int k, double dt, double[] commanded) {
         EvalContext c = ev.ctx();
         enter(c, k);
         if (timesPerModule) {
@@ -403,14 +403,14 @@ final class InstanceRun {
      * that cycle position and holds the interpolated angle there, seen with the updated
      * {@code $phase} and {@code $cycle}.
      */
-    private void finishInside(Evaluator ev, int k, int s, double lim) {
+    private void finishInside(ExpressionEvaluator ev, int k, int s, double lim) {
         p[k] = Math.min(1, p[k] + (lim - u[k]) * sumT / tBuf[s]);
         seeFinalPosition(ev.ctx(), k, s);
         finish(k, setpoint(ev, k, s));
     }
 
     /** The limit is the end of state {@code s}: the module holds its target, seen with the updated values. */
-    private void finishAtEnd(Evaluator ev, int k, int s) {
+    private void finishAtEnd(ExpressionEvaluator ev, int k, int s) {
         p[k] = 1;
         seeFinalPosition(ev.ctx(), k, s);
         finish(k, target(ev, s, k));
@@ -423,7 +423,7 @@ final class InstanceRun {
     }
 
     /** Computes module {@code k}'s setpoint without advancing (initialisation tick). */
-    void hold(Evaluator ev, int k) {
+    void hold(ExpressionEvaluator ev, int k) {
         enter(ev.ctx(), k);
         out[k] = setpoint(ev, k, st[k]);
     }
@@ -436,7 +436,7 @@ final class InstanceRun {
         cyc[k] = Math.floor(limit + EPS);
     }
 
-    private double setpoint(Evaluator ev, int k, int s) {
+    private double setpoint(ExpressionEvaluator ev, int k, int s) {
         double g = target(ev, s, k);
         if (interp[s] == Interp.STEP) {
             return g;
@@ -446,7 +446,7 @@ final class InstanceRun {
         return a0[k] + (g - a0[k]) * interp[s].shape(q);
     }
 
-    private double target(Evaluator ev, int s, int k) {
+    private double target(ExpressionEvaluator ev, int s, int k) {
         Expression e = angles[s].length == 1 ? angles0[s] : angles[s][k];
         double v = ev.eval(e);
         return mirror ? -v : v;

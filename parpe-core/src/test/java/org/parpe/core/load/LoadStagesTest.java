@@ -34,7 +34,7 @@ class LoadStagesTest {
     @Test
     void eachStageReturnsAnImmutableResultTheNextTakes() {
         DiagnosticList d = new DiagnosticList();
-        Assembly.Assembled a = Assembly.read(FILE, SCRIPT, d, null);
+        Includes.Assembled a = Includes.read(FILE, SCRIPT, d, null);
         assertEquals(1, a.of("states").size());
         assertThrows(UnsupportedOperationException.class, () -> a.sections().clear());
         assertThrows(UnsupportedOperationException.class, () -> a.files().clear());

@@ -1,6 +1,6 @@
 package org.parpe.gui.app;
 
-import org.parpe.gui.hardware.DialogHardware;
+import org.parpe.gui.hardware.ConnectedRobot;
 import org.parpe.gui.hardware.HardwareDialog;
 
 import java.nio.file.Path;
@@ -112,6 +112,6 @@ final class PoseBridge implements PoseHost {
                 return null;
             }
         }
-        return new DialogHardware(d, profile);
+        return new ConnectedRobot(d, profile);
     }
 }

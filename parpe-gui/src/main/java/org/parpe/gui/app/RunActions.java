@@ -37,7 +37,7 @@ import org.parpe.serial.servo.profile.HardwareProfile;
 import org.parpe.serial.servo.profile.ProfileReader;
 import org.parpe.serial.servo.run.ServoDriver;
 import org.parpe.serial.servo.run.ServoTarget;
-import org.parpe.sim.SimSnapshot;
+import org.parpe.sim.snapshot.SimSnapshot;
 import org.parpe.sim.SimTarget;
 import org.parpe.sim.Simulator;
 import org.parpe.sim.world.World;

@@ -6,7 +6,6 @@ import java.io.IOException;
 import org.eclipse.swt.widgets.Display;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.run.RunOutcome;
-import org.parpe.gui.automation.LaunchOptions;
 import org.parpe.gui.run.Speed;
 import org.parpe.gui.run.RunOn;
 

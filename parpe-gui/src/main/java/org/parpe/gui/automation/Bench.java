@@ -14,7 +14,7 @@ import org.eclipse.swt.widgets.Canvas;
 import org.eclipse.swt.widgets.Display;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.gui.view3d.View3D;
-import org.parpe.sim.SimSnapshot;
+import org.parpe.sim.snapshot.SimSnapshot;
 import org.parpe.sim.Simulator;
 import org.parpe.sim.config.RobotConfig;
 import org.parpe.sim.config.RobotConfigs;

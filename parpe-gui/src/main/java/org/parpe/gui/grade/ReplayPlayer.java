@@ -3,7 +3,7 @@ package org.parpe.gui.grade;
 import java.nio.file.Path;
 import java.util.function.Consumer;
 import org.eclipse.swt.widgets.Display;
-import org.parpe.sim.SimSnapshot;
+import org.parpe.sim.snapshot.SimSnapshot;
 import org.parpe.sim.grade.Replay;
 import org.parpe.sim.world.Challenge;
 import org.parpe.sim.world.World;

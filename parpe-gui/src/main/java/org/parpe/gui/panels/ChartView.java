@@ -14,8 +14,6 @@ import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Event;
 import org.parpe.core.plot.NiceTicks;
 import org.parpe.core.plot.PlotStyle;
-import org.parpe.gui.panels.Theme;
-import org.parpe.gui.panels.Zoom;
 
 /**
  * The IDE's one chart component (the live joint-angle plot and the sweep's results plot): axes

@@ -8,7 +8,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.run.TargetException;
-import org.parpe.sim.SimSnapshot;
+import org.parpe.sim.snapshot.SimSnapshot;
 import org.parpe.sim.SimTarget;
 import org.parpe.sim.Simulator;
 

@@ -7,9 +7,9 @@ import java.util.Map;
 import java.util.Set;
 import java.util.TreeMap;
 import java.util.TreeSet;
-import org.parpe.sim.SimBody;
-import org.parpe.sim.SimSnapshot;
-import org.parpe.sim.Vec3;
+import org.parpe.sim.snapshot.SimBody;
+import org.parpe.sim.snapshot.SimSnapshot;
+import org.parpe.sim.geom.Vec3;
 import org.parpe.sim.build.RobotDraft;
 
 /** The Robot tab's pictures for the 3D view (the robot at rest, a part previewed on it), and a robot's start in a blank file. */

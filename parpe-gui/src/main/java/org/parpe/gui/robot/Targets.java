@@ -10,8 +10,8 @@ import org.eclipse.swt.graphics.GC;
 import org.eclipse.swt.graphics.Point;
 import org.parpe.gui.view3d.BuildLayer;
 import org.parpe.gui.view3d.View3D;
-import org.parpe.sim.SimBody;
-import org.parpe.sim.Vec3;
+import org.parpe.sim.snapshot.SimBody;
+import org.parpe.sim.geom.Vec3;
 import org.parpe.sim.build.BuildPlate;
 
 /**

@@ -1,7 +1,7 @@
 package org.parpe.gui.view3d;
 
 import org.eclipse.swt.graphics.GC;
-import org.parpe.sim.SimBody;
+import org.parpe.sim.snapshot.SimBody;
 
 /**
  * What a builder (the Robot tab) adds to a {@link View3D}: it draws over each frame, picks on

@@ -7,11 +7,11 @@ import org.eclipse.swt.graphics.GC;
 import org.eclipse.swt.graphics.Rectangle;
 import org.eclipse.swt.widgets.Canvas;
 import org.eclipse.swt.widgets.Composite;
-import org.parpe.sim.BodyShape;
-import org.parpe.sim.PartKind;
-import org.parpe.sim.SimBody;
-import org.parpe.sim.SimSnapshot;
-import org.parpe.sim.Vec3;
+import org.parpe.sim.geom.BodyShape;
+import org.parpe.sim.geom.PartKind;
+import org.parpe.sim.snapshot.SimBody;
+import org.parpe.sim.snapshot.SimSnapshot;
+import org.parpe.sim.geom.Vec3;
 
 /**
  * What a camera on one module sees, as the paper's snake carried a CCD camera through the rubble:

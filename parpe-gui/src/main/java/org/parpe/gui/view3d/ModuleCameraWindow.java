@@ -8,7 +8,6 @@ import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.Shell;
 import org.eclipse.swt.widgets.Spinner;
-import org.parpe.gui.view3d.ModuleCameraView;
 
 /**
  * A small window beside the IDE with the camera of a chosen module (the paper's snake carried a
@@ -22,7 +21,7 @@ public final class ModuleCameraWindow {
     private final Spinner id;
     private final ModuleCameraView view;
 
-    private ModuleCameraWindow(Shell parent, java.util.function.Supplier<org.parpe.sim.SimSnapshot> source, int[] ids) {
+    private ModuleCameraWindow(Shell parent, java.util.function.Supplier<org.parpe.sim.snapshot.SimSnapshot> source, int[] ids) {
         shell = new Shell(parent, SWT.SHELL_TRIM | SWT.TOOL);
         shell.setText("Module camera");
         shell.setLayout(new GridLayout(1, false));
@@ -52,7 +51,7 @@ public final class ModuleCameraWindow {
      * Opens the window over {@code parent}, showing what {@code source} gives at each frame, looking from
      * the last of the script's modules {@code ids} (module 0 when there are none).
      */
-    public static ModuleCameraWindow open(Shell parent, java.util.function.Supplier<org.parpe.sim.SimSnapshot> source, int[] ids) {
+    public static ModuleCameraWindow open(Shell parent, java.util.function.Supplier<org.parpe.sim.snapshot.SimSnapshot> source, int[] ids) {
         ModuleCameraWindow w = new ModuleCameraWindow(parent, source, ids);
         w.shell.open();
         w.tick();

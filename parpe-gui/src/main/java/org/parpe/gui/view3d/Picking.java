@@ -1,10 +1,10 @@
 package org.parpe.gui.view3d;
 
 import org.eclipse.swt.graphics.Point;
-import org.parpe.sim.BodyShape;
-import org.parpe.sim.SimBody;
-import org.parpe.sim.SimSnapshot;
-import org.parpe.sim.Vec3;
+import org.parpe.sim.geom.BodyShape;
+import org.parpe.sim.snapshot.SimBody;
+import org.parpe.sim.snapshot.SimSnapshot;
+import org.parpe.sim.geom.Vec3;
 
 /**
  * Finds the module under a point of the 3D view, with the camera of the last frame drawn: each

@@ -7,12 +7,12 @@ import java.util.Set;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.graphics.Color;
 import org.eclipse.swt.graphics.GC;
-import org.parpe.sim.BodyShape;
-import org.parpe.sim.Mat3;
-import org.parpe.sim.PartKind;
-import org.parpe.sim.SimBody;
-import org.parpe.sim.SimSnapshot;
-import org.parpe.sim.Vec3;
+import org.parpe.sim.geom.BodyShape;
+import org.parpe.sim.geom.Mat3;
+import org.parpe.sim.geom.PartKind;
+import org.parpe.sim.snapshot.SimBody;
+import org.parpe.sim.snapshot.SimSnapshot;
+import org.parpe.sim.geom.Vec3;
 
 /**
  * Draws a {@link SimSnapshot} with a {@link Camera} on a GC: every box, cylinder and sphere is

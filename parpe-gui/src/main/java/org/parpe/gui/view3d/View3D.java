@@ -9,9 +9,9 @@ import org.eclipse.swt.graphics.Rectangle;
 import org.eclipse.swt.widgets.Canvas;
 import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Event;
-import org.parpe.sim.SimBody;
-import org.parpe.sim.SimSnapshot;
-import org.parpe.sim.Vec3;
+import org.parpe.sim.snapshot.SimBody;
+import org.parpe.sim.snapshot.SimSnapshot;
+import org.parpe.sim.geom.Vec3;
 
 /**
  * The 3D view in the spirit of PBSim: draws the latest simulator snapshot on a double-buffered

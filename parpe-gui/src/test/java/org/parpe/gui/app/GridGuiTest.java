@@ -25,10 +25,8 @@ import org.eclipse.swt.widgets.Table;
 import org.eclipse.swt.widgets.Text;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
-import org.junit.jupiter.api.MethodOrderer;
-import org.junit.jupiter.api.Order;
+import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.TestMethodOrder;
 import org.eclipse.jface.text.ITextOperationTarget;
 import org.parpe.gui.grid.GridPane;
 
@@ -39,7 +37,6 @@ import org.parpe.gui.grid.GridPane;
  * message, a travelling wave fills the table. Examples open as copies that Save never writes
  * back; Save keeps a file's permissions. Screenshots go to {@code target/gui-test-artefacts}.
  */
-@TestMethodOrder(MethodOrderer.OrderAnnotation.class)
 class GridGuiTest {
     private static IdeWindow ide;
     private static Path home;
@@ -54,6 +51,20 @@ class GridGuiTest {
     @AfterAll
     static void closeWindow() {
         Gui.closeIde(ide);
+    }
+
+    /**
+     * Every test starts from a fresh untitled copy of the example with its table in the grid
+     * (unsaved edits of the test before are discarded), so that no test depends on another's
+     * order or leftovers (issue 32, item 6).
+     */
+    @BeforeEach
+    void openTheExampleCopy() {
+        ide.files().openExample(Gui.example("gait-table-12.xml"));
+        Gui.pump(() -> !ide.files().reading() && ide.files().example() != null && !ide.files().dirty()
+                && grid().visible() && grid().widget().getColumnCount() == 15
+                && "12".equals(grid().widget().getColumn(13).getText()) && "travel".equals(grid().table().name()),
+                "the example copy and its grid, headed by module IDs once the script has loaded");
     }
 
     private static GridPane grid() {
@@ -102,7 +113,6 @@ class GridGuiTest {
     }
 
     @Test
-    @Order(1)
     void anExampleOpensAsACopyWithItsTableInTheGrid() throws Exception {
         Path example = Gui.example("gait-table-12.xml");
         String before = Files.readString(example);
@@ -120,7 +130,6 @@ class GridGuiTest {
     }
 
     @Test
-    @Order(2)
     void editingACellChangesOnlyThatEntryInTheText() {
         int rowLine = lineOf("-15,  15,  15,  15,  15, -15", true);
         String[] lines = ide.editor().document().get().split("\n", -1);
@@ -150,7 +159,6 @@ class GridGuiTest {
     }
 
     @Test
-    @Order(3)
     void editingTheTextChangesTheGrid() throws Exception {
         int rowLine = lineOf("-15, -15, -15, -15,  15,  15,  15,  15", true);
         int offset = ide.editor().document().getLineOffset(rowLine - 1) + line(rowLine).indexOf("-15, -15, -15, -15");
@@ -160,7 +168,6 @@ class GridGuiTest {
     }
 
     @Test
-    @Order(4)
     void aBadEntryIsTintedWithTheScriptsOwnMessage() throws Exception {
         click(2, 5, 0);
         key(SWT.F2, '\0');
@@ -188,7 +195,6 @@ class GridGuiTest {
     }
 
     @Test
-    @Order(5)
     void theWaveDialogAndCtrlVFillTheSelection() throws Exception {
         click(0, 2, 0);
         click(7, 13, SWT.SHIFT);
@@ -262,7 +268,6 @@ class GridGuiTest {
     }
 
     @Test
-    @Order(6)
     void rowButtonsAddAndRemoveRowsAndUndoTakesThemBack() throws Exception {
         String before = ide.editor().document().get();
         click(2, 3, 0);
@@ -295,7 +300,6 @@ class GridGuiTest {
     }
 
     @Test
-    @Order(7)
     void theCaretInAnotherTableShowsThatTable() throws Exception {
         String doc = ide.editor().document().get();
         int end = doc.indexOf("</automata>");
@@ -312,7 +316,6 @@ class GridGuiTest {
     }
 
     @Test
-    @Order(8)
     void savingTheCopyAsksWhereAndNeverWritesTheExample() throws Exception {
         Path example = Gui.example("gait-table-12.xml");
         String before = Files.readString(example);
@@ -331,7 +334,6 @@ class GridGuiTest {
     }
 
     @Test
-    @Order(9)
     void savingKeepsTheFilesPermissions() throws Exception {
         Path script = home.resolve("shared.xml");
         Files.writeString(script, Files.readString(Gui.example("gait-table-12.xml")));

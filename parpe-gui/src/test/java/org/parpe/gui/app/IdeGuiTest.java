@@ -15,10 +15,7 @@ import java.util.List;
 import java.util.concurrent.atomic.AtomicReference;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
-import org.junit.jupiter.api.MethodOrderer;
-import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.TestMethodOrder;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.gui.editor.ProblemAnnotation;
 import org.parpe.gui.run.Speed;
@@ -29,7 +26,6 @@ import org.parpe.gui.run.RunOn;
  * steer it with a control, stop it; a broken script gets a marker at the right line. Every wait
  * is bounded; screenshots are kept under {@code target/gui-test-artefacts} as evidence.
  */
-@TestMethodOrder(MethodOrderer.OrderAnnotation.class)
 class IdeGuiTest {
     private static IdeWindow ide;
 
@@ -55,7 +51,6 @@ class IdeGuiTest {
     }
 
     @Test
-    @Order(1)
     void runsAnExampleInTheSimulatorAndSteersItWithAControl() throws Exception {
         Gui.open(ide, Gui.example("teleop-dirwave.xml"));
         int before = ide.validations();
@@ -89,7 +84,6 @@ class IdeGuiTest {
     }
 
     @Test
-    @Order(2)
     void aBrokenScriptShowsAnErrorMarkerAtTheRightLine() throws Exception {
         Gui.open(ide, Gui.example("hello-snake.xml"));
         String text = Files.readString(Gui.example("hello-snake.xml"));
@@ -121,9 +115,13 @@ class IdeGuiTest {
         assertFalse(ide.runs().running());
     }
 
+    /** On its own text, not the one the broken-script test leaves (no test depends on another's order). */
     @Test
-    @Order(3)
-    void unsavedTextIsKeptForRecovery() {
+    void unsavedTextIsKeptForRecovery() throws Exception {
+        Gui.open(ide, Gui.example("hello-snake.xml"));
+        String text = Files.readString(Gui.example("hello-snake.xml"));
+        ide.editor().document().set(text.replace("states=\"up, down\"", "states=\"up, dwn\""));
+        assertTrue(ide.files().dirty(), "an edited file should be marked dirty");
         ide.files().autosaveNow();
         List<Autosave.Copy> copies = ide.files().autosave().own();
         assertEquals(1, copies.size(), "expected one autosave copy of the unsaved text: " + copies);

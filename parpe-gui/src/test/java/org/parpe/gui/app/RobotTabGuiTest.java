@@ -28,7 +28,7 @@ import org.parpe.core.run.RunOutcome;
 import org.parpe.gui.automation.Screenshot;
 import org.parpe.gui.prefs.Prefs;
 import org.parpe.gui.robot.RobotTab;
-import org.parpe.sim.SimBody;
+import org.parpe.sim.snapshot.SimBody;
 import org.parpe.sim.SimTarget;
 import org.parpe.sim.build.RobotDraft;
 import org.parpe.sim.config.PartType;

@@ -20,8 +20,8 @@ import org.parpe.core.run.RunOutcome;
 import org.parpe.gui.run.Speed;
 import org.parpe.gui.run.RunOn;
 import org.parpe.gui.view3d.ModuleCameraView;
-import org.parpe.sim.PartKind;
-import org.parpe.sim.SimSnapshot;
+import org.parpe.sim.geom.PartKind;
+import org.parpe.sim.snapshot.SimSnapshot;
 import org.parpe.sim.world.World;
 
 /**

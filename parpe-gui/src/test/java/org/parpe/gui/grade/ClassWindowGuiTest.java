@@ -21,7 +21,7 @@ import org.junit.jupiter.api.Test;
 import org.parpe.gui.app.Gui;
 import org.parpe.gui.app.IdeWindow;
 import org.parpe.gui.automation.Screenshot;
-import org.parpe.sim.SimSnapshot;
+import org.parpe.sim.snapshot.SimSnapshot;
 
 /**
  * Issue 37, item 4: the Class window grades a folder (three good scripts, one that does not

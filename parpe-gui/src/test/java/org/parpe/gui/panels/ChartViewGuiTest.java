@@ -25,8 +25,6 @@ import org.parpe.core.run.Run;
 import org.parpe.core.run.RunOptions;
 import org.parpe.core.sensor.Channel;
 import org.parpe.gui.app.Gui;
-import org.parpe.gui.panels.PlotView;
-import org.parpe.gui.panels.Theme;
 
 /**
  * The IDE's one chart (issue 19 item 6, issue 23 item 7) with real widgets under Xvfb: the live

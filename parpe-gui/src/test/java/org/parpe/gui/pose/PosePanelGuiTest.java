@@ -19,10 +19,9 @@ import org.eclipse.swt.widgets.Event;
 import org.eclipse.swt.widgets.Scale;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
-import org.junit.jupiter.api.MethodOrderer;
-import org.junit.jupiter.api.Order;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.TestInfo;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.TestMethodOrder;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.gui.app.IdeAccess;
 import org.parpe.gui.app.IdeWindow;
@@ -35,9 +34,10 @@ import org.parpe.serial.record.RecordingWriter;
  * with the sliders and by dragging a module in the 3D view, edit the list, play it in the
  * simulator, save it, reopen the recording and run it (the trace goes through the poses), and
  * write it into a script for two other pairs (the trace shows the phase delay; one Undo takes it
- * back). Widgets are driven with the events a user's clicks send; every wait is bounded.
+ * back). Widgets are driven with the events a user's clicks send; every wait is bounded. Each
+ * test poses its own copy of the script (poses stay with their script), so that none depends
+ * on another's order or poses (issue 32, item 6).
  */
-@TestMethodOrder(MethodOrderer.OrderAnnotation.class)
 class PosePanelGuiTest {
     static final String PAIRS = """
             <?xml version="1.0"?>
@@ -57,21 +57,44 @@ class PosePanelGuiTest {
             """;
     private static IdeWindow ide;
     private static Path dir;
-    private static Path script;
     private static PosePanel panel;
+    /** This test's own copy of the script, in a folder of its own: its poses are this test's. */
+    private Path script;
 
     @BeforeAll
     static void openWindow() throws Exception {
         dir = Files.createTempDirectory("parpe-pose-test");
         ide = IdeAccess.openIde(dir.resolve("home"));
-        script = dir.resolve("pairs-centipede.xml");
+    }
+
+    @BeforeEach
+    void poseTheFrontPairOfAFreshScript(TestInfo test) throws Exception {
+        Path own = Files.createDirectories(dir.resolve(test.getTestMethod().orElseThrow().getName()));
+        script = own.resolve("pairs-centipede.xml");
         Files.writeString(script, PAIRS);
         openScript(script);
         ide.showPosePanel();
         panel = ide.pose();
         panel.pollNow();
         panel.chooseGroup("front");
-        IdeAccess.pump(() -> panel.posingReady() && panel.poses() != null, "the posed centipede to be built");
+        IdeAccess.pump(() -> panel.posingReady() && panel.poses() != null && "front".equals(panel.poses().group()),
+                "the posed centipede to be built");
+    }
+
+    /** The three poses of the first test, by the sliders: what playing, saving and using start from. */
+    private static void captureThreePoses() {
+        double[][] poses = {{-25, 20, -25, -60}, {-25, -60, -25, -60}, {25, -60, 25, 20}};
+        for (int i = 0; i < poses.length; i++) {
+            slide(0, (int) poses[i][0]);
+            slide(1, (int) poses[i][1]);
+            slide(14, (int) poses[i][2]);
+            slide(15, (int) poses[i][3]);
+            if (i == 1) {
+                panel.table().timeBox().setText("0.5");
+            }
+            press("Capture");
+        }
+        assertEquals(3, panel.poses().size());
     }
 
     @AfterAll
@@ -129,7 +152,6 @@ class PosePanelGuiTest {
     }
 
     @Test
-    @Order(1)
     void posesThreePosesWithSlidersAndDraggingAndEditsTheList() throws Exception {
         assertEquals("front", panel.poses().group());
         slide(0, -25);
@@ -188,13 +210,14 @@ class PosePanelGuiTest {
         press("Up");
         assertArrayEquals(second, panel.poses().get(1).angles());
         assertTrue(panel.table().table().getItem(1).getText(1).equals("0.80"), "the list shows the new time");
-        assertEquals(List.of("3 poses of front in pairs-centipede.xml"), panel.unsaved(), "closing the window would ask before losing them");
+        assertTrue(panel.unsaved().contains("3 poses of front in pairs-centipede.xml"),
+                "closing the window would ask before losing them: " + panel.unsaved());
         IdeAccess.screenshot(ide.shell(), "pose-panel-posed.png");
     }
 
     @Test
-    @Order(2)
     void playsThePosesInTheSimulatorAtTwiceTheRate() {
+        captureThreePoses();
         panel.output().choose(2, false, RunOn.SIMULATOR);
         AtomicReference<RunOutcome> outcome = new AtomicReference<>();
         assertTrue(panel.output().play(outcome::set), "playback did not start: " + IdeAccess.status(ide));
@@ -211,13 +234,14 @@ class PosePanelGuiTest {
     }
 
     @Test
-    @Order(3)
     void savesTheRecordingAndTheReopenedFileRunsThroughThePoses() throws Exception {
+        captureThreePoses();
         List<PoseList.Pose> poses = panel.poses().poses();
         double[] times = RecordingWriter.rowTimes(panel.poses().toRecording());
-        Path saved = dir.resolve("front-poses.xml");
+        Path saved = script.resolveSibling("front-poses.xml");
+        List<String> unsavedBefore = panel.unsaved();
         assertTrue(panel.output().save(saved), IdeAccess.status(ide));
-        assertTrue(panel.unsaved().isEmpty(), "saved poses are kept: " + panel.unsaved());
+        assertEquals(unsavedBefore.size() - 1, panel.unsaved().size(), "saved poses are kept: " + panel.unsaved());
         openScript(saved);
         Traces trace = Traces.run(ide.program(), 10);
         int[] modules = {0, 1, 14, 15};
@@ -239,7 +263,7 @@ class PosePanelGuiTest {
         // Issue 18 item 4: "Save recording..." over the script open in the editor (or a link to it)
         // replaced it on disk behind the editor's back; it is refused and the script stays.
         String open = Files.readString(saved);
-        Path link = Files.createSymbolicLink(dir.resolve("link-to-open.xml"), saved);
+        Path link = Files.createSymbolicLink(script.resolveSibling("link-to-open.xml"), saved);
         for (Path over : List.of(saved, link)) {
             assertFalse(panel.output().save(over), "saved over the open script through " + over);
             assertTrue(IdeAccess.status(ide).contains("it is the script open in the editor"), IdeAccess.status(ide));
@@ -316,10 +340,9 @@ class PosePanelGuiTest {
     }
 
     @Test
-    @Order(4)
     void usedOnTwoOtherPairsTheScriptRunsThemWithThePhaseDelayAndOneUndoTakesItBack() throws Exception {
+        captureThreePoses();
         PoseList recorded = panel.poses();
-        openScript(script);
         String before = ide.editor().document().get();
         assertNotNull(recorded);
         // The dialog is modal: fill it in from a timer while the button's nested event loop runs.
@@ -351,7 +374,6 @@ class PosePanelGuiTest {
     }
 
     @Test
-    @Order(5)
     void ctrlClickInThe3DViewPicksModulesToPose() {
         View3D view = ide.view();
         IdeAccess.pump(() -> panel.posingReady(), "the posed robot");
@@ -368,7 +390,6 @@ class PosePanelGuiTest {
 
     /** The documented {@code ./parpe gui examples/tutorial/01-recorded-leg-centipede.xml --pose-panel --screenshot …}. */
     @Test
-    @Order(6)
     void posePanelOptionShowsTheRecordedLegsPoses() throws Exception {
         Path example = Path.of(System.getProperty("parpe.examples", "../examples"), "tutorial", "01-recorded-leg-centipede.xml");
         assertTrue(Files.isRegularFile(example), "no " + example);
@@ -396,9 +417,8 @@ class PosePanelGuiTest {
      * quitting asks one question that names both.
      */
     @Test
-    @Order(7)
     void posesStayWithTheirScriptAndQuittingAsksOnce() throws Exception {
-        Path first = dir.resolve("first-centipede.xml");
+        Path first = script.resolveSibling("first-centipede.xml");
         Files.writeString(first, PAIRS);
         openScript(first);
         panel.chooseGroup("front");
@@ -411,7 +431,7 @@ class PosePanelGuiTest {
         List<String> lost = panel.unsaved();
         assertTrue(lost.contains("2 poses of front in first-centipede.xml"), lost.toString());
 
-        Path second = dir.resolve("second-centipede.xml");
+        Path second = script.resolveSibling("second-centipede.xml");
         Files.writeString(second, PAIRS);
         openScript(second);
         panel.chooseGroup("front");
@@ -438,12 +458,7 @@ class PosePanelGuiTest {
      * zoomed on the body's centre rather than the group being posed.
      */
     @Test
-    @Order(8)
     void hoverSaysWhatADragDoesAndTheWheelZoomsOnTheGroup() throws Exception {
-        openScript(script);
-        ide.showPosePanel();
-        panel.chooseGroup("front");
-        IdeAccess.pump(() -> panel.posingReady() && panel.poses() != null, "front to pose");
         View3D view = ide.view();
         view.focus(panel.posedModules());
         IdeAccess.settle();
@@ -465,7 +480,7 @@ class PosePanelGuiTest {
         assertTrue(!group.isEmpty(), "the posed group is highlighted");
         double x = 0, y = 0, z = 0;
         int n = 0;
-        for (org.parpe.sim.SimBody b : view.lastSnapshot().bodies()) {
+        for (org.parpe.sim.snapshot.SimBody b : view.lastSnapshot().bodies()) {
             if (group.contains(b.moduleId())) {
                 x += b.position().x();
                 y += b.position().y();

@@ -5,7 +5,7 @@ public interface EmulatorListener {
 
     /**
      * A SETPOINTS frame reached the modules: {@code seq}, and for each emulated module (in the
-     * order of {@link BusEmulator#moduleIds()}) the commanded angle, or NaN when the frame left
+     * order of {@link org.parpe.serial.g1.emu.BusEmulator#moduleIds()}) the commanded angle, or NaN when the frame left
      * it unchanged. The array is reused.
      */
     default void onSetpoints(int seq, double[] angles) {

@@ -3,7 +3,7 @@ package org.parpe.serial.emu;
 import java.util.Arrays;
 
 /**
- * How {@link BusEmulator} behaves.
+ * How {@link org.parpe.serial.g1.emu.BusEmulator} behaves.
  *
  * @param modules        the emulated module IDs (0…254), in any order
  * @param drop           probability that a frame, in either direction, is lost
@@ -20,9 +20,9 @@ public record EmulatorOptions(int[] modules, double drop, double corrupt, double
     public EmulatorOptions {
         modules = modules.clone();
         for (int id : modules) {
-            if (id < 0 || id > org.parpe.serial.protocol.Protocol.MAX_MODULE_ID) {
+            if (id < 0 || id > org.parpe.serial.g1.Protocol.MAX_MODULE_ID) {
                 throw new IllegalArgumentException("module ID must be in 0.."
-                        + org.parpe.serial.protocol.Protocol.MAX_MODULE_ID + ", got " + id);
+                        + org.parpe.serial.g1.Protocol.MAX_MODULE_ID + ", got " + id);
             }
         }
         if (Arrays.stream(modules).distinct().count() != modules.length) {

@@ -1,7 +1,7 @@
 package org.parpe.serial.export;
 
 import java.util.Locale;
-import org.parpe.serial.protocol.Crc16;
+import org.parpe.serial.bus.Crc16;
 import org.parpe.serial.servo.Registers;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.ServoProtocol;

@@ -79,12 +79,7 @@ public record ServoModel(ServoProtocol protocol, int number, String name, int re
 
     /** The model a bus assumes for {@code protocol} when the servo's own is not known. */
     public static ServoModel defaultFor(ServoProtocol protocol) {
-        return switch (protocol) {
-            case G1 -> named("g1-segment");
-            case DXL2 -> named("xl430-w250");
-            case STS -> named("sts3215");
-            case SCS -> named("scs0009");
-        };
+        return named(protocol.defaultModel());
     }
 
     /** Degrees per tick. */

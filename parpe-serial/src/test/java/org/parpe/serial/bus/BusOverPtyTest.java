@@ -13,7 +13,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.parpe.core.run.RunInfo;
 import org.parpe.core.run.RunOutcome;
-import org.parpe.serial.emu.BusEmulator;
+import org.parpe.serial.g1.emu.BusEmulator;
 import org.parpe.serial.emu.EmulatorListener;
 import org.parpe.serial.emu.EmulatorOptions;
 import org.parpe.serial.link.LinkOpener;

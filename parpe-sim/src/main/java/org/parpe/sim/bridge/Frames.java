@@ -1,6 +1,6 @@
 package org.parpe.sim.bridge;
 
-import org.parpe.sim.Mat3;
+import org.parpe.sim.geom.Mat3;
 
 /** Orientations as the formats write them: MJCF's quaternions (w x y z), URDF's and SDF's roll, pitch and yaw. */
 final class Frames {

@@ -3,9 +3,9 @@ package org.parpe.sim.bridge;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
-import org.parpe.sim.Geo;
-import org.parpe.sim.Mat3;
-import org.parpe.sim.Vec3;
+import org.parpe.sim.geom.Geo;
+import org.parpe.sim.geom.Mat3;
+import org.parpe.sim.geom.Vec3;
 import org.parpe.sim.internal.Assembly;
 
 /**

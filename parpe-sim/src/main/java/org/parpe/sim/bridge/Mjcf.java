@@ -2,8 +2,8 @@ package org.parpe.sim.bridge;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.parpe.sim.BodyShape;
-import org.parpe.sim.Vec3;
+import org.parpe.sim.geom.BodyShape;
+import org.parpe.sim.geom.Vec3;
 import org.parpe.sim.internal.Docking;
 
 /**

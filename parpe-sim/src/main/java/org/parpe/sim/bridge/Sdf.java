@@ -1,6 +1,6 @@
 package org.parpe.sim.bridge;
 
-import org.parpe.sim.Vec3;
+import org.parpe.sim.geom.Vec3;
 
 /**
  * A robot as SDF 1.7, for Gazebo: a model with a link per piece at the initial pose, a revolute
@@ -88,18 +88,18 @@ public final class Sdf {
 
     private static void geometry(XmlOut x, RobotModel.Link l) {
         x.start("geometry");
-        if (l.shape() instanceof org.parpe.sim.BodyShape.Box b) {
+        if (l.shape() instanceof org.parpe.sim.geom.BodyShape.Box b) {
             x.start("box");
             x.text("size", 2 * b.hx(), 2 * b.hy(), 2 * b.hz());
             x.end();
-        } else if (l.shape() instanceof org.parpe.sim.BodyShape.Cylinder c) {
+        } else if (l.shape() instanceof org.parpe.sim.geom.BodyShape.Cylinder c) {
             x.start("cylinder");
             x.text("radius", c.radius());
             x.text("length", c.length());
             x.end();
         } else {
             x.start("sphere");
-            x.text("radius", ((org.parpe.sim.BodyShape.Sphere) l.shape()).radius());
+            x.text("radius", ((org.parpe.sim.geom.BodyShape.Sphere) l.shape()).radius());
             x.end();
         }
         x.end();

@@ -1,9 +1,9 @@
 package org.parpe.sim.bridge;
 
-import org.parpe.sim.BodyShape;
-import org.parpe.sim.Geo;
-import org.parpe.sim.Mat3;
-import org.parpe.sim.Vec3;
+import org.parpe.sim.geom.BodyShape;
+import org.parpe.sim.geom.Geo;
+import org.parpe.sim.geom.Mat3;
+import org.parpe.sim.geom.Vec3;
 
 /**
  * A robot as URDF, for ROS tools: a link per piece with its inertia, collision and visual box

@@ -1,6 +1,6 @@
 package org.parpe.sim.build;
 
-import org.parpe.sim.Vec3;
+import org.parpe.sim.geom.Vec3;
 
 /**
  * A connection plate of a robot being built, where it is at the robot's rest pose: what a

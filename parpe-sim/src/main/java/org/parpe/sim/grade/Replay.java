@@ -10,7 +10,7 @@ import java.util.List;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.run.RunInfo;
 import org.parpe.core.run.TargetException;
-import org.parpe.sim.SimSnapshot;
+import org.parpe.sim.snapshot.SimSnapshot;
 import org.parpe.sim.SimTarget;
 import org.parpe.sim.Simulator;
 import org.parpe.sim.world.Challenge;

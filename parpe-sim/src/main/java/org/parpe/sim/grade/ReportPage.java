@@ -2,7 +2,7 @@ package org.parpe.sim.grade;
 
 import java.util.List;
 import java.util.Locale;
-import org.parpe.sim.BodyShape;
+import org.parpe.sim.geom.BodyShape;
 import org.parpe.sim.world.Challenge;
 import org.parpe.sim.world.World;
 

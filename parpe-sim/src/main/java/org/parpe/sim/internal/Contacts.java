@@ -57,7 +57,7 @@ final class Contacts implements DGeom.DNearCallback {
         for (int i = 0; i < n; i++) {
             clusterOf[i] = assembly.pieces().get(i).cluster();
             hingeOf[i] = -1;
-            if (assembly.pieces().get(i).def().shape() instanceof org.parpe.sim.BodyShape.Box b) {
+            if (assembly.pieces().get(i).def().shape() instanceof org.parpe.sim.geom.BodyShape.Box b) {
                 halfY[i] = b.hy();
             }
         }

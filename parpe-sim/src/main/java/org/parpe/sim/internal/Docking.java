@@ -10,9 +10,9 @@ import org.ode4j.math.DVector3C;
 import org.ode4j.ode.DBody;
 import org.ode4j.ode.DFixedJoint;
 import org.ode4j.ode.OdeHelper;
-import org.parpe.sim.Geo;
-import org.parpe.sim.Mat3;
-import org.parpe.sim.Vec3;
+import org.parpe.sim.geom.Geo;
+import org.parpe.sim.geom.Mat3;
+import org.parpe.sim.geom.Vec3;
 
 /**
  * Latching connection plates during a run (PARSL.md §14; the rules are in docs/simulator.md,

@@ -8,10 +8,10 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 import org.parpe.core.diag.DiagnosticSink;
-import org.parpe.sim.BodyShape;
-import org.parpe.sim.Geo;
-import org.parpe.sim.Mat3;
-import org.parpe.sim.Vec3;
+import org.parpe.sim.geom.BodyShape;
+import org.parpe.sim.geom.Geo;
+import org.parpe.sim.geom.Mat3;
+import org.parpe.sim.geom.Vec3;
 import org.parpe.sim.config.PartSpec;
 
 /**

@@ -2,11 +2,11 @@ package org.parpe.sim.internal;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.parpe.sim.BodyShape;
-import org.parpe.sim.Geo;
-import org.parpe.sim.Mat3;
-import org.parpe.sim.PartKind;
-import org.parpe.sim.Vec3;
+import org.parpe.sim.geom.BodyShape;
+import org.parpe.sim.geom.Geo;
+import org.parpe.sim.geom.Mat3;
+import org.parpe.sim.geom.PartKind;
+import org.parpe.sim.geom.Vec3;
 import org.parpe.sim.config.PartSpec;
 
 /**

@@ -12,8 +12,8 @@ import org.ode4j.ode.DMisc;
 import org.ode4j.ode.DSpace;
 import org.ode4j.ode.DWorld;
 import org.ode4j.ode.OdeHelper;
-import org.parpe.sim.BodyShape;
-import org.parpe.sim.Vec3;
+import org.parpe.sim.geom.BodyShape;
+import org.parpe.sim.geom.Vec3;
 import org.parpe.sim.world.World;
 
 /**

@@ -9,12 +9,12 @@ import java.util.TreeSet;
 import org.ode4j.math.DMatrix3C;
 import org.ode4j.math.DVector3C;
 import org.ode4j.ode.DGeom;
-import org.parpe.sim.Mat3;
-import org.parpe.sim.PartKind;
-import org.parpe.sim.SimBody;
-import org.parpe.sim.SimContact;
-import org.parpe.sim.SimSnapshot;
-import org.parpe.sim.Vec3;
+import org.parpe.sim.geom.Mat3;
+import org.parpe.sim.geom.PartKind;
+import org.parpe.sim.snapshot.SimBody;
+import org.parpe.sim.snapshot.SimContact;
+import org.parpe.sim.snapshot.SimSnapshot;
+import org.parpe.sim.geom.Vec3;
 
 /**
  * Double-buffered world state for snapshots: the engine thread fills the back buffer after

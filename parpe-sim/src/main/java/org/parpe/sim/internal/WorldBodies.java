@@ -12,10 +12,10 @@ import org.ode4j.ode.DMassC;
 import org.ode4j.ode.DSpace;
 import org.ode4j.ode.DWorld;
 import org.ode4j.ode.OdeHelper;
-import org.parpe.sim.BodyShape;
-import org.parpe.sim.Geo;
-import org.parpe.sim.Mat3;
-import org.parpe.sim.Vec3;
+import org.parpe.sim.geom.BodyShape;
+import org.parpe.sim.geom.Geo;
+import org.parpe.sim.geom.Mat3;
+import org.parpe.sim.geom.Vec3;
 import org.parpe.sim.world.World;
 
 /**

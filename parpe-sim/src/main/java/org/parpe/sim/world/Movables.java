@@ -5,10 +5,10 @@ import java.util.List;
 import java.util.Map;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.lang.Numbers;
-import org.parpe.sim.BodyShape;
-import org.parpe.sim.Mat3;
-import org.parpe.sim.Vec3;
-import org.parpe.sim.Geo;
+import org.parpe.sim.geom.BodyShape;
+import org.parpe.sim.geom.Mat3;
+import org.parpe.sim.geom.Vec3;
+import org.parpe.sim.geom.Geo;
 
 /** The movable objects of a world file: chips, balls, cups and levers. */
 final class Movables {

@@ -5,10 +5,10 @@ import java.util.List;
 import java.util.Map;
 import java.util.SplittableRandom;
 import org.parpe.core.diag.SourcePos;
-import org.parpe.sim.BodyShape;
-import org.parpe.sim.Mat3;
-import org.parpe.sim.Vec3;
-import org.parpe.sim.Geo;
+import org.parpe.sim.geom.BodyShape;
+import org.parpe.sim.geom.Mat3;
+import org.parpe.sim.geom.Vec3;
+import org.parpe.sim.geom.Geo;
 
 /** The solids and movable objects of a world file, element by element, with the rubble generated. */
 final class Scenery {

@@ -3,9 +3,9 @@ package org.parpe.sim.world;
 import java.util.List;
 import java.util.Optional;
 import org.parpe.core.diag.SourcePos;
-import org.parpe.sim.BodyShape;
-import org.parpe.sim.Mat3;
-import org.parpe.sim.Vec3;
+import org.parpe.sim.geom.BodyShape;
+import org.parpe.sim.geom.Mat3;
+import org.parpe.sim.geom.Vec3;
 
 /**
  * A world for the simulator, read from a world file (format in {@code docs/simulator.md}):

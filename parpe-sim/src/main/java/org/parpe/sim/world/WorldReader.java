@@ -12,10 +12,10 @@ import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.lang.Numbers;
 import org.parpe.core.xml.FlatXmlFile;
-import org.parpe.sim.BodyShape;
-import org.parpe.sim.Mat3;
-import org.parpe.sim.Vec3;
-import org.parpe.sim.Geo;
+import org.parpe.sim.geom.BodyShape;
+import org.parpe.sim.geom.Mat3;
+import org.parpe.sim.geom.Vec3;
+import org.parpe.sim.geom.Geo;
 
 /**
  * Reads a world file (format in {@code docs/simulator.md}) with the project's flat XML reader,

@@ -17,8 +17,8 @@ import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
 import org.parpe.core.run.Run;
 import org.parpe.core.run.RunOptions;
-import org.parpe.sim.Geo;
-import org.parpe.sim.SimBody;
+import org.parpe.sim.geom.Geo;
+import org.parpe.sim.snapshot.SimBody;
 import org.parpe.sim.SimTarget;
 import org.parpe.sim.config.PartType;
 

@@ -130,8 +130,8 @@ class RobotDraftTest {
             for (int i = 0; i < a.pieces().size(); i++) {
                 var p = a.pieces().get(i);
                 var b = d.bodies().get(i);
-                assertTrue(org.parpe.sim.Geo.sub(p.position(), b.position()).length() < 1e-9, spec + " " + b);
-                assertTrue(org.parpe.sim.Geo.angleBetween(p.rotation(), b.rotation()) < 1e-9, spec + " " + b);
+                assertTrue(org.parpe.sim.geom.Geo.sub(p.position(), b.position()).length() < 1e-9, spec + " " + b);
+                assertTrue(org.parpe.sim.geom.Geo.angleBetween(p.rotation(), b.rotation()) < 1e-9, spec + " " + b);
             }
         }
     }

@@ -83,8 +83,8 @@ class RobotProblemsTest {
             Assembly.PlacedPiece b = file.pieces().get(i);
             assertEquals(a.part().name(), b.part().name());
             assertEquals(a.part().moduleId(), b.part().moduleId());
-            assertTrue(org.parpe.sim.Geo.sub(a.position(), b.position()).length() < 1e-9, a + " vs " + b);
-            assertTrue(org.parpe.sim.Geo.angleBetween(a.rotation(), b.rotation()) < 1e-9, a + " vs " + b);
+            assertTrue(org.parpe.sim.geom.Geo.sub(a.position(), b.position()).length() < 1e-9, a + " vs " + b);
+            assertTrue(org.parpe.sim.geom.Geo.angleBetween(a.rotation(), b.rotation()) < 1e-9, a + " vs " + b);
         }
         assertEquals(gen.hinges().size(), file.hinges().size());
     }

@@ -1,7 +1,7 @@
 package org.parpe.serial.servo.emu;
 
 import org.parpe.serial.servo.ServoModel;
-import org.parpe.serial.servo.ServoProtocol;
+import org.parpe.serial.servo.wire.PacketCodec;
 
 /**
  * One emulated servo: its control table as the maker documents it ({@link ControlTable}), the
@@ -23,7 +23,7 @@ final class EmulatedServo {
     final ServoModel model;
     final ControlTable ct;
     final byte[] table;
-    private final boolean dxl;
+    private final PacketCodec codec;
     private final boolean bigEndian;
     private final ControlTable.Item idItem;
     private final ControlTable.Item torque;
@@ -47,16 +47,16 @@ final class EmulatedServo {
         this.ct = ControlTable.of(model);
         this.table = new byte[ct.length];
         this.pending = new byte[ct.length];
-        this.dxl = model.protocol() == ServoProtocol.DXL2;
-        this.bigEndian = model.protocol() == ServoProtocol.SCS;
+        this.codec = model.protocol().codec();
+        this.bigEndian = model.protocol().bigEndian();
         idItem = ct.named("ID");
         torque = ct.named("Torque Enable");
         goal = ct.named("Goal Position");
         present = ct.named("Present Position");
-        error = ct.named(dxl ? "Hardware Error Status" : "Status");
+        error = ct.at(model.registers().error());
         watchdog = ct.has("Bus Watchdog") ? ct.named("Bus Watchdog") : null;
         returnDelay = ct.named("Return Delay Time");
-        statusLevel = ct.named(dxl ? "Status Return Level" : "Response Status Level");
+        statusLevel = ct.named(ct.has("Status Return Level") ? "Status Return Level" : "Response Status Level");
         registered = ct.has("Registered Instruction") ? ct.named("Registered Instruction") : null;
         minLimit = ct.named(ct == ControlTable.XL320 ? "CW Angle Limit" : "Min Position Limit");
         maxLimit = ct.named(ct == ControlTable.XL320 ? "CCW Angle Limit" : "Max Position Limit");
@@ -88,7 +88,7 @@ final class EmulatedServo {
 
     /** Whether it answers Fast Sync Read: its model has it from the firmware version it reports. */
     boolean fastSyncRead() {
-        return dxl && model.fastSyncRead(table[ct.named("Firmware Version").addr()] & 0xFF);
+        return codec.knows(PacketCodec.FAST_SYNC_READ) && model.fastSyncRead(table[ct.named("Firmware Version").addr()] & 0xFF);
     }
 
     /** Return Delay Time in nanoseconds (the item counts units of 2 µs). */
@@ -106,10 +106,7 @@ final class EmulatedServo {
         if (ping) {
             return true;
         }
-        if (dxl) {
-            return level >= 2 || read && level >= 1;
-        }
-        return read || level >= 1;
+        return codec.answers(level, read);
     }
 
     /** Sets the hardware error bits (0 clears); a fault turns the torque off. */
@@ -160,7 +157,7 @@ final class EmulatedServo {
                 table[indirect(addr + k)] = data[off + k];
             }
         }
-        if (!dxl && covers(addr, len, goal)) {
+        if (!codec.errorNumbers() && covers(addr, len, goal)) {
             // Feetech servos keep a goal inside their angle limits. On STS bit 15 is its sign, so
             // −100 (0x8064) lies below the minimum, not above the maximum; SCS goals are unsigned
             // (the SDK's SCSCL WritePos takes a u16).
@@ -187,12 +184,12 @@ final class EmulatedServo {
         for (int a = addr; a < addr + len; ) {
             ControlTable.Item i = ct.at(a);
             if (i == null || !i.writable()) {
-                return dxl ? ACCESS_ERROR : OK;
+                return codec.errorNumbers() ? ACCESS_ERROR : OK;
             }
             if (i.addr() < addr || i.addr() + i.size() > addr + len) {
                 return DATA_LENGTH_ERROR;
             }
-            if (dxl && i.eeprom() && torqueOn()) {
+            if (codec.errorNumbers() && i.eeprom() && torqueOn()) {
                 return ACCESS_ERROR;
             }
             long v = value(data, off + i.addr() - addr, i.size(), i.signed());
@@ -200,7 +197,7 @@ final class EmulatedServo {
                 if (watchdogTripped()) {
                     return DATA_RANGE_ERROR;
                 }
-                if (dxl && (v < get(minLimit.addr(), minLimit.size()) || v > get(maxLimit.addr(), maxLimit.size()))) {
+                if (codec.errorNumbers() && (v < get(minLimit.addr(), minLimit.size()) || v > get(maxLimit.addr(), maxLimit.size()))) {
                     return DATA_RANGE_ERROR;
                 }
             } else if (i.min() != ControlTable.ANY && (v < i.min() || v > i.max())) {

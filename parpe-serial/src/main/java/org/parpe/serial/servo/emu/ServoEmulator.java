@@ -10,8 +10,6 @@ import org.parpe.serial.link.ByteLink;
 import org.parpe.serial.link.LinkOpener;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.ServoProtocol;
-import org.parpe.serial.servo.wire.Dxl2Codec;
-import org.parpe.serial.servo.wire.FeetechCodec;
 import org.parpe.serial.servo.wire.Packet;
 import org.parpe.serial.servo.wire.PacketCodec;
 import org.parpe.serial.servo.wire.PacketDecoder;
@@ -56,7 +54,7 @@ public final class ServoEmulator extends ServedLine {
                           EmulatorListener listener) {
         super(opener, first, options, listener, "servo-emulator");
         this.protocol = models[0].protocol();
-        this.codec = protocol == ServoProtocol.DXL2 ? new Dxl2Codec() : new FeetechCodec();
+        this.codec = protocol.codec();
         int[] ids = options.modules();
         servos = new EmulatedServo[ids.length];
         for (int i = 0; i < ids.length; i++) {
@@ -91,7 +89,7 @@ public final class ServoEmulator extends ServedLine {
                     + options.modules().length + " servos");
         }
         for (ServoModel m : models) {
-            if (m.protocol() == ServoProtocol.G1 || m.protocol() != models[0].protocol()) {
+            if (!m.protocol().controlTable() || m.protocol() != models[0].protocol()) {
                 throw new IllegalArgumentException("servos of one protocol other than G1 needed, got " + m.label());
             }
         }

@@ -1,9 +1,9 @@
 package org.parpe.serial.servo.emu;
 
 import java.util.Arrays;
+import org.parpe.serial.dynamixel.Dxl2Codec;
 import org.parpe.serial.emu.EmulatorListener;
 import org.parpe.serial.servo.ServoProtocol;
-import org.parpe.serial.servo.wire.Dxl2Codec;
 import org.parpe.serial.servo.wire.Packet;
 import org.parpe.serial.servo.wire.PacketCodec;
 
@@ -28,10 +28,6 @@ final class ServoResponder {
 
     /** Reply slot per ID after a broadcast Ping: the time ROBOTIS's DynamixelSDK allows each ID (3 ms). */
     static final long SLOT_NANOS = 3_000_000;
-    /** Instructions this responder knows beyond those in {@link PacketCodec}. */
-    static final int REG_WRITE = 0x04;
-    static final int ACTION = 0x05;
-    static final int BULK_WRITE = 0x93;
 
     private final PacketCodec codec;
     /** The Dynamixel codec, which builds the Fast Sync Read status; null on Feetech. */
@@ -43,7 +39,6 @@ final class ServoResponder {
     private final Sender sender;
     private final EmulatorListener listener;
     private final ServoProtocol protocol;
-    private final boolean dxl;
     private final int addrBytes;
     private final byte[] out;
     private final byte[] data = new byte[Packet.MAX_PARAMS];
@@ -59,15 +54,14 @@ final class ServoResponder {
         this.sender = sender;
         this.listener = listener;
         this.protocol = protocol;
-        this.dxl = protocol == ServoProtocol.DXL2;
-        this.addrBytes = dxl ? 2 : 1;
+        this.addrBytes = codec.addressBytes();
         this.out = new byte[codec.bufferSize()];
         this.view = new double[servos.length];
     }
 
     /** Executes one valid instruction packet received at {@code now}. */
     void execute(Packet p, long now) {
-        if (dxl && p.code == PacketCodec.STATUS) {
+        if (codec.marksStatus() && p.code == PacketCodec.STATUS) {
             return;
         }
         boolean broadcast = p.id == PacketCodec.BROADCAST;
@@ -87,24 +81,24 @@ final class ServoResponder {
                     readReply(target, p.le(0, addrBytes), p.le(addrBytes, addrBytes), true);
                 }
             }
-            case PacketCodec.WRITE, REG_WRITE -> write(p, target, p.code == REG_WRITE);
-            case ACTION -> action(target);
+            case PacketCodec.WRITE, PacketCodec.REG_WRITE -> write(p, target, p.code == PacketCodec.REG_WRITE);
+            case PacketCodec.ACTION -> action(target);
             case PacketCodec.SYNC_WRITE -> syncWrite(p);
             case PacketCodec.SYNC_READ -> {
-                if (protocol != ServoProtocol.SCS) {
+                if (protocol.syncRead()) {
                     syncRead(p);
                 }
             }
             case PacketCodec.BULK_READ -> bulkRead(p);
             case PacketCodec.FAST_SYNC_READ -> {
-                if (dxl) {
+                if (codec.knows(PacketCodec.FAST_SYNC_READ)) {
                     fastSyncRead(p);
                 }
             }
-            case BULK_WRITE -> bulkWrite(p);
+            case PacketCodec.BULK_WRITE -> bulkWrite(p);
             case PacketCodec.REBOOT -> reboot(target);
             default -> {
-                if (target != null && dxl) {
+                if (target != null && codec.errorNumbers()) {
                     status(target, EmulatedServo.INSTRUCTION_ERROR, 0, target.returnDelayNanos(), true);
                 }
             }
@@ -129,7 +123,7 @@ final class ServoResponder {
             pingReply(target, target.returnDelayNanos());
             return;
         }
-        if (protocol == ServoProtocol.SCS) {
+        if (!protocol.answersBroadcastPing()) {
             return;
         }
         java.util.Arrays.sort(byId, (a, b) -> Integer.compare(a.id(), b.id()));
@@ -139,7 +133,7 @@ final class ServoResponder {
     }
 
     private void pingReply(EmulatedServo s, long at) {
-        if (dxl) {
+        if (codec.pingReplyParams() > 0) {
             // Model number (2 bytes) and firmware version, read from the servo's own table.
             s.read(0, 2, data);
             data[2] = s.table[s.ct.named("Firmware Version").addr()];
@@ -170,14 +164,14 @@ final class ServoResponder {
             if (target == null || s == target) {
                 boolean done = s.action();
                 if (target != null && s.answers(false, false)) {
-                    status(s, done || !dxl ? 0 : EmulatedServo.INSTRUCTION_ERROR, 0, s.returnDelayNanos(), true);
+                    status(s, done ? 0 : EmulatedServo.INSTRUCTION_ERROR, 0, s.returnDelayNanos(), true);
                 }
             }
         }
     }
 
     private void reboot(EmulatedServo target) {
-        if (!dxl) {
+        if (!codec.knows(PacketCodec.REBOOT)) {
             return;
         }
         for (EmulatedServo s : servos) {
@@ -223,7 +217,7 @@ final class ServoResponder {
 
     /** Dynamixel Bulk Write: {@code id, addr (2), len (2), data…} per servo. */
     private void bulkWrite(Packet p) {
-        if (!dxl) {
+        if (!codec.knows(PacketCodec.BULK_WRITE)) {
             return;
         }
         for (int off = 0; off + 5 <= p.length; ) {
@@ -302,7 +296,7 @@ final class ServoResponder {
     }
 
     private void bulkRead(Packet p) {
-        if (!dxl) {
+        if (!codec.knows(PacketCodec.BULK_READ)) {
             return;
         }
         boolean first = true;
@@ -318,7 +312,7 @@ final class ServoResponder {
     private void readReply(EmulatedServo s, int addr, int len, boolean first) {
         int e = len <= data.length ? s.read(addr, len, data) : EmulatedServo.ACCESS_ERROR;
         if (e != EmulatedServo.OK) {
-            status(s, dxl ? e : 0, 0, s.returnDelayNanos(), first);
+            status(s, e, 0, s.returnDelayNanos(), first);
             return;
         }
         status(s, 0, len, s.returnDelayNanos(), first);
@@ -326,7 +320,7 @@ final class ServoResponder {
 
     /** A status packet from {@code s} with {@code errorNumber} (Dynamixel) and {@code data[0…len)}. */
     private void status(EmulatedServo s, int errorNumber, int len, long wait, boolean fromRequest) {
-        int error = dxl ? (s.hardwareError() != 0 ? Dxl2Codec.ERROR_ALERT : 0) | errorNumber : s.hardwareError();
+        int error = codec.statusByte(s.hardwareError(), errorNumber);
         int n = codec.status(out, s.id(), error, data, len);
         sender.send(out, n, wait, fromRequest);
     }

@@ -6,8 +6,6 @@ import org.parpe.serial.servo.Registers;
 import org.parpe.serial.servo.ServoBus;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.ServoProtocol;
-import org.parpe.serial.servo.wire.Dxl2Codec;
-import org.parpe.serial.servo.wire.FeetechCodec;
 import org.parpe.serial.servo.wire.Packet;
 import org.parpe.serial.servo.wire.PacketCodec;
 
@@ -36,6 +34,7 @@ public final class ControlTableBus implements ServoBus {
     private final ServoProtocol protocol;
     private final int baud;
     private final boolean bigEndian;
+    private final PacketCodec codec;
     private final PacketPort port;
     private final byte[] params = new byte[Packet.MAX_PARAMS];
     private final int[] replyIds = new int[256];
@@ -47,14 +46,14 @@ public final class ControlTableBus implements ServoBus {
 
     /** Starts talking {@code protocol} (not G1) over {@code link} running at {@code baud}. */
     public ControlTableBus(ServoProtocol protocol, ByteLink link, int baud, int timeoutMs) {
-        if (protocol == ServoProtocol.G1) {
-            throw new IllegalArgumentException("G1 is not a control-table protocol; use G1Bus");
+        if (!protocol.controlTable()) {
+            throw new IllegalArgumentException(protocol.name() + " is not a control-table protocol; use G1Bus");
         }
         this.protocol = protocol;
         this.baud = baud;
-        this.bigEndian = protocol == ServoProtocol.SCS;
-        PacketCodec codec = protocol == ServoProtocol.DXL2 ? new Dxl2Codec() : new FeetechCodec();
-        this.port = new PacketPort(link, codec, protocol == ServoProtocol.DXL2, bigEndian, baud, timeoutMs);
+        this.bigEndian = protocol.bigEndian();
+        this.codec = protocol.codec();
+        this.port = new PacketPort(link, codec, bigEndian, baud, timeoutMs);
         java.util.Arrays.fill(firmware, -1);
     }
 
@@ -72,7 +71,7 @@ public final class ControlTableBus implements ServoBus {
     public int ping(int id, int attempts) throws IOException {
         for (int a = 0; a < attempts; a++) {
             if (port.request(id, PacketCodec.PING, params, 0, id) && pingReply(id)) {
-                if (protocol == ServoProtocol.DXL2) {
+                if (codec.pingReplyParams() > 0) {
                     firmware[id] = port.value(id) >>> 16 & 0xFF;
                     return port.value(id) & 0xFFFF;
                 }
@@ -90,7 +89,7 @@ public final class ControlTableBus implements ServoBus {
      * request (an interrupted run's position read) and says nothing about the servo's model.
      */
     private boolean pingReply(int id) {
-        return port.size(id) == (protocol == ServoProtocol.DXL2 ? 3 : 0);
+        return port.size(id) == codec.pingReplyParams();
     }
 
     /**
@@ -103,7 +102,7 @@ public final class ControlTableBus implements ServoBus {
     @Override
     public int[] scan(int[] ids) throws IOException {
         port.flushInput(FLUSH_QUIET_MS, FLUSH_MAX_MS);
-        if (protocol != ServoProtocol.DXL2) {
+        if (!codec.broadcastPing()) {
             return ServoBus.super.scan(ids);
         }
         int[] models = new int[ids.length];
@@ -212,7 +211,7 @@ public final class ControlTableBus implements ServoBus {
     public int readPositions(int[] ids, ServoModel[] models, int n, double[] degrees, int[] errors) throws IOException {
         java.util.List<Registers> layouts = layouts(models, n);
         int expected = 0;
-        if (protocol == ServoProtocol.SCS) {
+        if (!protocol.syncRead()) {
             for (Registers r : layouts) {
                 int k = putAddress(0, r.present(), r.presentSize());
                 expected = 0;
@@ -223,11 +222,11 @@ public final class ControlTableBus implements ServoBus {
                 }
                 port.requestEach(PacketCodec.READ, params, k, replyIds, expected);
             }
-        } else if (layouts.size() == 1 || protocol != ServoProtocol.DXL2) {
+        } else if (layouts.size() == 1 || !codec.knows(PacketCodec.BULK_READ)) {
             for (Registers r : layouts) {
                 int k = putAddress(0, r.present(), r.presentSize());
                 expected = 0;
-                boolean fast = protocol == ServoProtocol.DXL2;
+                boolean fast = codec.knows(PacketCodec.FAST_SYNC_READ);
                 for (int i = 0; i < n; i++) {
                     if (models[i].registers() == r) {
                         params[k++] = (byte) ids[i];
@@ -300,7 +299,7 @@ public final class ControlTableBus implements ServoBus {
         if (statusError <= 0) {
             return false;
         }
-        return protocol != ServoProtocol.DXL2 || Faults.alert(statusError);
+        return codec.faulty(statusError);
     }
 
     @Override
@@ -311,8 +310,8 @@ public final class ControlTableBus implements ServoBus {
 
     @Override
     public String watchdog(int[] ids, ServoModel[] models, int n, int ms, boolean limp) throws IOException {
-        if (protocol != ServoProtocol.DXL2) {
-            return "Feetech servos have no watchdog: they hold their last goal when the host falls silent";
+        if (!codec.busWatchdog()) {
+            return codec.family() + " servos have no watchdog: they hold their last goal when the host falls silent";
         }
         // Units of 20 ms; writing 0 first also clears an earlier Bus Watchdog error.
         int units = watchdogUnits(ms);
@@ -324,7 +323,7 @@ public final class ControlTableBus implements ServoBus {
             }
         }
         return covered + " of " + n + " servos stop and hold after " + units * 20 + " ms without a packet (Bus Watchdog)"
-                + (limp ? "; Dynamixel servos cannot go limp on their own, PARPE turns their torque off when it can" : "");
+                + (limp ? "; " + codec.family() + " servos cannot go limp on their own, PARPE turns their torque off when it can" : "");
     }
 
     @Override
@@ -409,18 +408,12 @@ public final class ControlTableBus implements ServoBus {
 
     /** Address (and length unless {@code size} < 0) as the protocol encodes them, from {@code k}. */
     private int putAddress(int k, int addr, int size) {
-        if (protocol == ServoProtocol.DXL2) {
-            PacketCodec.putLe(params, k, 2, addr);
-            k += 2;
-            if (size >= 0) {
-                PacketCodec.putLe(params, k, 2, size);
-                k += 2;
-            }
-            return k;
-        }
-        params[k++] = (byte) addr;
+        int n = codec.addressBytes();
+        PacketCodec.putLe(params, k, n, addr);
+        k += n;
         if (size >= 0) {
-            params[k++] = (byte) size;
+            PacketCodec.putLe(params, k, n, size);
+            k += n;
         }
         return k;
     }

@@ -8,7 +8,7 @@ import java.util.concurrent.locks.ReentrantLock;
 import org.parpe.serial.link.ByteLink;
 import org.parpe.serial.link.ReadLoop;
 import org.parpe.serial.link.StreamDecoder;
-import org.parpe.serial.servo.wire.Dxl2Codec;
+import org.parpe.serial.dynamixel.Dxl2Codec;
 import org.parpe.serial.servo.wire.Packet;
 import org.parpe.serial.servo.wire.PacketCodec;
 import org.parpe.serial.servo.wire.PacketDecoder;
@@ -29,7 +29,6 @@ final class PacketPort {
 
     private final ByteLink link;
     private final PacketCodec codec;
-    private final boolean dxl;
     private final boolean bigEndian;
     private final int baud;
     private final int timeoutMs;
@@ -70,10 +69,9 @@ final class PacketPort {
     private long timeouts;
     private long stray;
 
-    PacketPort(ByteLink link, PacketCodec codec, boolean dxl, boolean bigEndian, int baud, int timeoutMs) {
+    PacketPort(ByteLink link, PacketCodec codec, boolean bigEndian, int baud, int timeoutMs) {
         this.link = link;
         this.codec = codec;
-        this.dxl = dxl;
         this.bigEndian = bigEndian;
         this.baud = baud;
         this.timeoutMs = timeoutMs;
@@ -417,10 +415,10 @@ final class PacketPort {
 
     /** On the reader thread with {@link #lock} held. */
     private void onPacket(Packet p) {
-        if (dxl && p.code != PacketCodec.STATUS) {
+        if (codec.marksStatus() && p.code != PacketCodec.STATUS) {
             return;
         }
-        if (dxl && p.id == PacketCodec.BROADCAST) {
+        if (codec.knows(PacketCodec.FAST_SYNC_READ) && p.id == PacketCodec.BROADCAST) {
             onFastStatus(p);
             return;
         }

@@ -4,7 +4,7 @@ import java.util.List;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.serial.bus.BusConfig;
 import org.parpe.serial.bus.SafeMode;
-import org.parpe.serial.protocol.Protocol;
+import org.parpe.serial.g1.Protocol;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.ServoProtocol;
 

@@ -45,7 +45,7 @@ final class ServoSetUp {
 
     /** A servo in messages: {@code servo 3 (module 1)}, or {@code module 1} where they are one (G1 by ID). */
     static String who(ServoProtocol protocol, ServoMapping m) {
-        return protocol == ServoProtocol.G1 && m.servo() == m.module() ? "module " + m.module()
+        return protocol.modules() && m.servo() == m.module() ? "module " + m.module()
                 : "servo " + m.servo() + " (module " + m.module() + ")";
     }
 

@@ -14,6 +14,10 @@ public interface PacketCodec {
     int READ = 0x02;
     /** Write {@code addr, data…} to the control table. */
     int WRITE = 0x03;
+    /** Reg Write: a Write kept until Action. */
+    int REG_WRITE = 0x04;
+    /** Action: carries out the kept Reg Write. */
+    int ACTION = 0x05;
     /** Dynamixel 2.0 Reboot: restarts the servo, which clears a hardware error. */
     int REBOOT = 0x08;
     /** Sync Read: the same {@code addr, len} from several servos, each replies in turn. */
@@ -22,11 +26,13 @@ public interface PacketCodec {
     int SYNC_WRITE = 0x83;
     /**
      * Dynamixel 2.0 Fast Sync Read: asked like Sync Read, answered by one status packet from the
-     * broadcast ID that every servo adds its block to ({@link Dxl2Codec#fastStatus}).
+     * broadcast ID that every servo adds its block to ({@link org.parpe.serial.dynamixel.Dxl2Codec#fastStatus}).
      */
     int FAST_SYNC_READ = 0x8A;
     /** Dynamixel 2.0 Bulk Read: {@code id, addr, len} per servo, each replies in turn. */
     int BULK_READ = 0x92;
+    /** Dynamixel 2.0 Bulk Write: {@code id, addr, len, data…} per servo. */
+    int BULK_WRITE = 0x93;
     /** Dynamixel 2.0: the instruction field of a status packet. */
     int STATUS = 0x55;
 
@@ -49,6 +55,76 @@ public interface PacketCodec {
 
     /** Bytes on the wire of a packet with {@code params} parameters (without stuffing). */
     int packetLength(int params);
+
+    // What tells the families apart: each codec answers for its family, so that the host
+    // driver and the emulator never compare protocols.
+
+    /** The family in messages: {@code Dynamixel}, {@code Feetech}. */
+    String family();
+
+    /** Bytes of a control-table address, and of a length, in instruction parameters. */
+    int addressBytes();
+
+    /**
+     * Parameters of a reply to Ping: the model number (2 bytes) and firmware version on
+     * Dynamixel 2.0 (e-Manual, Protocol 2.0, Ping: Parameters 1–3); none on Feetech, whose
+     * model is read from the control table.
+     */
+    int pingReplyParams();
+
+    /**
+     * Whether a status packet is told from an instruction by its instruction field
+     * ({@link #STATUS}, Dynamixel 2.0): the host then ignores other packets it hears (its own,
+     * echoed by a half-duplex adapter). On Feetech that field is the status packet's error byte.
+     */
+    boolean marksStatus();
+
+    /**
+     * Whether the servos answer a broadcast Ping one after another in ID order, so that a scan
+     * asks them all at once (Dynamixel 2.0); Feetech servos are pinged one by one.
+     */
+    boolean broadcastPing();
+
+    /**
+     * Whether the family's servos carry out {@code instruction}, one of the codes above: Reboot,
+     * Fast Sync Read, Bulk Read and Bulk Write are Dynamixel 2.0's. (Sync Read also depends on
+     * the series: {@code ServoProtocol.syncRead}.)
+     */
+    boolean knows(int instruction);
+
+    /**
+     * Whether the error byte of a status packet numbers what was wrong with the instruction
+     * (Dynamixel 2.0: instruction, data range, access error …), so that a servo refuses a bad
+     * write with an error; Feetech servos ignore a write to a read-only address and keep a goal
+     * inside their limits instead.
+     */
+    boolean errorNumbers();
+
+    /** The error byte of a status packet from a servo with these hardware error bits and error number. */
+    int statusByte(int hardwareError, int errorNumber);
+
+    /**
+     * Whether a servo with status level {@code level} answers a Read ({@code read}) or another
+     * instruction other than Ping, which is always answered: Dynamixel Status Return Level 0
+     * answers Ping only, 1 also Read, 2 everything (e-Manual, X series, Status Return Level(68));
+     * Feetech Response Status Level 0 answers Ping and Read only, 1 everything.
+     */
+    boolean answers(int level, boolean read);
+
+    /**
+     * Whether the servos stop on their own when the host falls silent (Dynamixel Bus Watchdog,
+     * e-Manual, X series, Bus Watchdog(98)); Feetech servos hold their last goal.
+     */
+    boolean busWatchdog();
+
+    /**
+     * Whether a non-zero status error byte reports a fault of the servo: on Dynamixel 2.0 only
+     * with the alert bit (the low bits number an error of the packet); on Feetech every bit is one.
+     */
+    boolean faulty(int statusError);
+
+    /** The error of a packet a status error byte names in words ({@code CRC error}), or null for none. */
+    String packetError(int statusError);
 
     /** An unsigned little-endian value of {@code size} bytes of {@code b} at {@code off}. */
     static int le(byte[] b, int off, int size) {

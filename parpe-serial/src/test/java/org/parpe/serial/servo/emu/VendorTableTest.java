@@ -12,8 +12,8 @@ import org.parpe.serial.emu.EmulatorListener;
 import org.parpe.serial.servo.Registers;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.ServoProtocol;
-import org.parpe.serial.servo.wire.Dxl2Codec;
-import org.parpe.serial.servo.wire.FeetechCodec;
+import org.parpe.serial.dynamixel.Dxl2Codec;
+import org.parpe.serial.feetech.FeetechCodec;
 import org.parpe.serial.servo.wire.Packet;
 import org.parpe.serial.servo.wire.PacketCodec;
 
@@ -242,20 +242,20 @@ class VendorTableTest {
         // Write is an Instruction Error (0x02).
         servos("xl430-w250", 1, 2);
         send(1, PacketCodec.WRITE, 64, 0, 1);
-        assertEquals(0, send(1, ServoResponder.REG_WRITE, 116, 0, 0x00, 0x0C, 0, 0).get(0).error());
+        assertEquals(0, send(1, PacketCodec.REG_WRITE, 116, 0, 0x00, 0x0C, 0, 0).get(0).error());
         assertEquals(2048, read(1, 116, 4).le(0, 4), "not yet");
         assertEquals(1, read(1, 69, 1).le(0, 1));
-        assertEquals(0, send(PacketCodec.BROADCAST, ServoResponder.ACTION).size(), "no status to a broadcast");
+        assertEquals(0, send(PacketCodec.BROADCAST, PacketCodec.ACTION).size(), "no status to a broadcast");
         assertEquals(3072, read(1, 116, 4).le(0, 4));
         assertEquals(0, read(1, 69, 1).le(0, 1));
-        assertEquals(EmulatedServo.INSTRUCTION_ERROR, send(2, ServoResponder.ACTION).get(0).error() & 0x7F);
+        assertEquals(EmulatedServo.INSTRUCTION_ERROR, send(2, PacketCodec.ACTION).get(0).error() & 0x7F);
     }
 
     @Test
     void bulkWriteWritesEachServoItsOwnItem() {
         // ROBOTIS e-Manual, Protocol 2.0, Bulk Write (0x93): ID, address, length and data per device.
         servos("xl430-w250", 1, 2);
-        assertEquals(0, send(PacketCodec.BROADCAST, ServoResponder.BULK_WRITE,
+        assertEquals(0, send(PacketCodec.BROADCAST, PacketCodec.BULK_WRITE,
                 1, 65, 0, 1, 0, 1,
                 2, 9, 0, 1, 0, 0).size());
         assertEquals(1, read(1, 65, 1).le(0, 1), "LED of servo 1");

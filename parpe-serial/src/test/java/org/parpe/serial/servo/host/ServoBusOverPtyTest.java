@@ -208,7 +208,7 @@ class ServoBusOverPtyTest extends OverPty {
 
     @Test
     void g1ModulesBehindTheSameInterface() throws Exception {
-        org.parpe.serial.emu.BusEmulator g1 = org.parpe.serial.emu.BusEmulator.start(
+        org.parpe.serial.g1.emu.BusEmulator g1 = org.parpe.serial.g1.emu.BusEmulator.start(
                 LinkOpener.serial(pty.b().toString(), 115_200), EmulatorOptions.of(IDS), new EmulatorListener() { });
         try {
             ServoModel model = ServoModel.defaultFor(ServoProtocol.G1);
@@ -263,7 +263,7 @@ class ServoBusOverPtyTest extends OverPty {
         org.parpe.serial.link.ByteLink servoSide = org.parpe.serial.link.SerialLink.open(pty.b().toString(), 1_000_000);
         bus = ServoBuses.open(ServoProtocol.DXL2, LinkOpener.serial(pty.a().toString(), 1_000_000),
                 BusConfig.defaults().withBaud(1_000_000).withReads(10, 0));
-        org.parpe.serial.servo.wire.Dxl2Codec codec = new org.parpe.serial.servo.wire.Dxl2Codec();
+        org.parpe.serial.dynamixel.Dxl2Codec codec = new org.parpe.serial.dynamixel.Dxl2Codec();
         Thread stale = new Thread(() -> {
             byte[] out = new byte[64];
             byte[] position = {0, 8, 0, 0};
@@ -298,7 +298,7 @@ class ServoBusOverPtyTest extends OverPty {
         ControlTableBus b = new ControlTableBus(ServoProtocol.DXL2, LinkOpener.serial(pty.a().toString(), 1_000_000)
                 .open(), 1_000_000, 20);
         bus = b;
-        org.parpe.serial.servo.wire.Dxl2Codec codec = new org.parpe.serial.servo.wire.Dxl2Codec();
+        org.parpe.serial.dynamixel.Dxl2Codec codec = new org.parpe.serial.dynamixel.Dxl2Codec();
         Thread late = new Thread(() -> {
             byte[] in = new byte[256];
             byte[] out = new byte[64];

@@ -22,7 +22,7 @@ import org.parpe.core.run.RunOutcome;
 import org.parpe.serial.bus.BusConfig;
 import org.parpe.serial.bus.BusReport;
 import org.parpe.serial.bus.SafeMode;
-import org.parpe.serial.emu.BusEmulator;
+import org.parpe.serial.g1.emu.BusEmulator;
 import org.parpe.serial.emu.EmulatorListener;
 import org.parpe.serial.emu.EmulatorOptions;
 import org.parpe.serial.link.LinkOpener;
