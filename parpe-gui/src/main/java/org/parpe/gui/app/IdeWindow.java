@@ -138,6 +138,7 @@ public final class IdeWindow implements HardwareHost {
         Panels.tab(controlFolder, "Controls", controls.control());
         CTabFolder plotFolder = Panels.folder(right);
         plots = new PlotView(plotFolder);
+        org.parpe.gui.panels.ChartView.zoomAll(0); // a new window starts at the normal size, its plots too
         Panels.tab(plotFolder, "Joint angles", plots.control());
         right.setWeights(54, 18, 28);
         main.setWeights(15, 43, 42);

@@ -78,6 +78,26 @@ class ZoomAndThemeGuiTest {
         assertReadable(ide);
     }
 
+    /**
+     * A new window starts with its plots at their normal size, as its editor does: the plots'
+     * zoom was kept from a window zoomed before (in one JVM: the tests), so Ctrl+= after a
+     * 200 % test made the plot's text smaller, not larger.
+     */
+    @Test
+    void aNewWindowsPlotsStartAtTheNormalSize() throws Exception {
+        ide = Gui.openIde(Files.createTempDirectory("parpe-zoom"));
+        Gui.open(ide, Gui.example("hello-snake.xml"));
+        int plotNormal = plotPoints();
+        ide.zoom(1);
+        ide.zoom(1);
+        Gui.pump(() -> plotPoints() == plotNormal + 4, "two zoom steps on the plot");
+        Gui.closeIde(ide);
+        ide = Gui.openIde(Files.createTempDirectory("parpe-zoom"));
+        Gui.open(ide, Gui.example("hello-snake.xml"));
+        Gui.settle();
+        assertEquals(plotNormal, plotPoints(), "the new window's plot text");
+    }
+
     /** The editor's colours stand out from its background in the theme the test runs with. */
     static void assertReadable(IdeWindow ide) {
         RGB bg = ide.editor().widget().getBackground().getRGB();
