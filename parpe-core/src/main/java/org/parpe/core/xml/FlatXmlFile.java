@@ -72,19 +72,7 @@ public final class FlatXmlFile {
     public static FlatXmlFile read(Path path, Message what, String root, Message expected, DiagnosticSink diags) {
         FlatXmlFile f = new FlatXmlFile(path.toString(), diags);
         try (InputStream in = InputFiles.open(path)) {
-            XMLStreamReader2 r = (XMLStreamReader2) FACTORY.createXMLStreamReader(in);
-            try {
-                f.document(r, what, root, expected);
-            } finally {
-                r.close();
-            }
-        } catch (XMLStreamException e) {
-            f.notWellFormed(e);
-            f.rootAt = null;
-        } catch (WstxLazyException e) {
-            // Woodstox defers some errors in text (an undefined entity) until the text is read
-            f.notWellFormed((XMLStreamException) e.getCause());
-            f.rootAt = null;
+            f.parse(() -> (XMLStreamReader2) FACTORY.createXMLStreamReader(in), what, root, expected);
         } catch (IOException e) {
             f.error(f.start(), Msg.CANNOT_READ_THE, what, e.getMessage());
             f.rootAt = null;
@@ -103,21 +91,33 @@ public final class FlatXmlFile {
                                    DiagnosticSink diags) {
         FlatXmlFile f = new FlatXmlFile(file, diags);
         f.source = new SourceText(file, text);
+        f.parse(() -> (XMLStreamReader2) FACTORY.createXMLStreamReader(new java.io.StringReader(text)), what, root, expected);
+        return f;
+    }
+
+    /** Where a document is read from: a reader over a file or over text. */
+    @FunctionalInterface
+    private interface ReaderSource {
+        XMLStreamReader2 open() throws XMLStreamException;
+    }
+
+    /** Reads the document {@code source} opens; a document that is not well formed is reported at its place. */
+    private void parse(ReaderSource source, Message what, String root, Message expected) {
         try {
-            XMLStreamReader2 r = (XMLStreamReader2) FACTORY.createXMLStreamReader(new java.io.StringReader(text));
+            XMLStreamReader2 r = source.open();
             try {
-                f.document(r, what, root, expected);
+                document(r, what, root, expected);
             } finally {
                 r.close();
             }
         } catch (XMLStreamException e) {
-            f.notWellFormed(e);
-            f.rootAt = null;
+            notWellFormed(e);
+            rootAt = null;
         } catch (WstxLazyException e) {
-            f.notWellFormed((XMLStreamException) e.getCause());
-            f.rootAt = null;
+            // Woodstox defers some errors in text (an undefined entity) until the text is read
+            notWellFormed((XMLStreamException) e.getCause());
+            rootAt = null;
         }
-        return f;
     }
 
     /**
