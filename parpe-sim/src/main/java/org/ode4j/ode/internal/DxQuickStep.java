@@ -5,7 +5,10 @@
  * change: the solver's work arrays and call contexts come from a per-thread {@code Work} kept from
  * step to step instead of new objects in every step (issue 36; docs/decisions.md, "The simulator's
  * tick allocates nothing"), and the single-threaded LCP sweep runs its rows in one loop
- * ({@code dxQuickStepIsland_Stage4LCP_IterationSteps}). The arithmetic is untouched.
+ * ({@code dxQuickStepIsland_Stage4LCP_IterationSteps}). The arithmetic is untouched. And, only when
+ * a world asks for it ({@link WarmStart}, set per thread by {@code SequentialQuickStep}), the rows
+ * start from the forces of the step before instead of zero, as ODE's C solver did with
+ * {@code WARM_STARTING} ({@code warmStartRows}, {@code keepRows}).
  */
 /*************************************************************************
  *                                                                       *
@@ -257,6 +260,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 		private static final int INVI = 0, J = 1, JCOPY = 2, RHS_TMP = 3, LAMBDA = 4, CFORCE = 5, IMJ = 6, LAST_LAMBDA = 7;
 		private static final int MINDEX = 0, JB = 1, FINDEX = 2;
 		private final double[][] doubles = new double[8][0];
+		WarmStart warm;
 		private final int[][] ints = new int[3][0];
 		private DJointWithInfo1[] jointinfos = new DJointWithInfo1[0];
 		private IndexError[] order = new IndexError[0];
@@ -1458,6 +1462,9 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 				IFTIMING_dTimerNow ("solving LCP problem");
 				dxQuickStepIsland_Stage4LCP_iMJComputation(stage4CallContext);
 	            dxQuickStepIsland_Stage4LCP_STfcComputation(stage4CallContext);
+	            if (work.warm != null) {
+	                warmStartRows(stage4CallContext, work.warm);
+	            }
 	            dxQuickStepIsland_Stage4LCP_AdComputation(stage4CallContext);
 	            dxQuickStepIsland_Stage4LCP_ReorderPrep(stage4CallContext);
 	            
@@ -1469,6 +1476,9 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 						dxQuickStepIsland_Stage4LCP_ConstraintsShuffling(stage4CallContext, iteration);
 					}
 					dxQuickStepIsland_Stage4LCP_STIteration(stage4CallContext);
+	            }
+	            if (work.warm != null) {
+	                keepRows(stage4CallContext, work.warm);
 	            }
 	            dxQuickStepIsland_Stage4b(stage4CallContext);
 	            dxQuickStepIsland_Stage5(stage5CallContext);
@@ -2774,6 +2784,73 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 	    return result;
 	}
 
+
+	/**
+	 * PARPE: what the QuickSteps on this thread start their rows from: {@code warm}'s forces of the
+	 * step before, or (null) zero as in ODE4j.
+	 */
+	public static void warmStartOnThisThread(WarmStart warm) {
+		Work.get().warm = warm;
+	}
+
+	/** PARPE: lambda of each row from the step before ({@link WarmStart}), and fc = iMJ * lambda. */
+	private static void warmStartRows(dxQuickStepperStage4CallContext ctx, WarmStart warm) {
+		dxQuickStepperLocalContext local = ctx.m_localContext;
+		double[] lambda = ctx.m_lambda;
+		int[] mindex = local.m_mindex;
+		DJointWithInfo1[] infos = local.m_jointinfos;
+		for (int ji = 0; ji < local.m_nj; ji++) {
+			DxJoint joint = infos[ji].joint;
+			int from = getMIndex(mindex, ji);
+			int rows = getMIndex(mindex, ji + 1) - from;
+			if (joint instanceof org.ode4j.ode.internal.joints.DxJointContact) {
+				warm.startContact((org.ode4j.ode.internal.joints.DxJointContact) joint, lambda, from, rows);
+			} else {
+				for (int r = 0; r < rows; r++) {
+					lambda[from + r] = joint.lambda[r] * warm.scale;
+				}
+			}
+		}
+		double[] fc = ctx.m_cforce;
+		double[] iMJ = ctx.m_iMJ;
+		int[] jb = local.m_jb;
+		for (int i = 0; i < local.m_m; i++) {
+			double l = lambda[i];
+			if (l == 0) {
+				continue;
+			}
+			int p = i * IMJ__MAX;
+			int f1 = jb[2 * i] * CFE__MAX;
+			for (int k = 0; k < CFE__MAX; k++) {
+				fc[f1 + k] += l * iMJ[p + k];
+			}
+			int b2 = jb[2 * i + 1];
+			if (b2 != -1) {
+				int f2 = b2 * CFE__MAX;
+				for (int k = 0; k < CFE__MAX; k++) {
+					fc[f2 + k] += l * iMJ[p + IMJ__2_MIN + k];
+				}
+			}
+		}
+	}
+
+	/** PARPE: each joint keeps the forces its rows ended with, each contact in {@code warm}, for the next step. */
+	private static void keepRows(dxQuickStepperStage4CallContext ctx, WarmStart warm) {
+		dxQuickStepperLocalContext local = ctx.m_localContext;
+		double[] lambda = ctx.m_lambda;
+		int[] mindex = local.m_mindex;
+		DJointWithInfo1[] infos = local.m_jointinfos;
+		for (int ji = 0; ji < local.m_nj; ji++) {
+			DxJoint joint = infos[ji].joint;
+			int from = getMIndex(mindex, ji);
+			int rows = getMIndex(mindex, ji + 1) - from;
+			if (joint instanceof org.ode4j.ode.internal.joints.DxJointContact) {
+				warm.keepContact((org.ode4j.ode.internal.joints.DxJointContact) joint, lambda, from, rows);
+			} else {
+				System.arraycopy(lambda, from, joint.lambda, 0, rows);
+			}
+		}
+	}
 
 	@Override
 	public int run(int activeThreadCount, int allowedThreadCount) {

@@ -68,7 +68,8 @@ public final class PhysicsWorld implements AutoCloseable {
         world.setContactMaxCorrectingVel(0.2);
         world.setContactSurfaceLayer(0.0005);
         world.setAutoDisableFlag(false);
-        quickStep = new org.ode4j.ode.internal.processmem.SequentialQuickStep(world);
+        quickStep = new org.ode4j.ode.internal.processmem.SequentialQuickStep(world,
+                params.warmStart() > 0 ? new org.ode4j.ode.internal.WarmStart(params.warmStart()) : null);
         space = OdeHelper.createSapSpace(org.ode4j.ode.DSapSpace.AXES.XYZ);
         contactGroup = OdeHelper.createJointGroup();
         OdeHelper.createPlane(space, 0, 0, 1, 0)

@@ -29,13 +29,17 @@ public final class SequentialQuickStep {
     private DxStepperProcessingCallContext context;
     private double contextStepSize = Double.NaN;
 
-    public SequentialQuickStep(DWorld world) {
+    private final org.ode4j.ode.internal.WarmStart warm;
+
+    public SequentialQuickStep(DWorld world, org.ode4j.ode.internal.WarmStart warm) {
         this.world = (DxWorld) world;
+        this.warm = warm;
     }
 
     /** One step of {@code stepSize} seconds, as {@code world.quickStep(stepSize)}. */
     public void step(double stepSize) {
         if (world.GetThreadingIslandsMaxThreadsCount(null) != 1) {
+            DxQuickStep.warmStartOnThisThread(null);
             world.quickStep(stepSize);
             return;
         }
@@ -44,6 +48,10 @@ public final class SequentialQuickStep {
         }
         world.wmem.SureGetWorldProcessingContext().EnsureStepperSyncObjectsAreAllocated(world);
         int islands = buildIslands(stepSize);
+        if (warm != null) {
+            warm.beginStep();
+        }
+        DxQuickStep.warmStartOnThisThread(warm);
         if (context == null || stepSize != contextStepSize) {
             context = new DxStepperProcessingCallContext(world, stepSize, 1, arena, bodies, joints);
             contextStepSize = stepSize;
@@ -58,6 +66,7 @@ public final class SequentialQuickStep {
             bodyStart += bcount;
             jointStart += jcount;
         }
+        DxQuickStep.warmStartOnThisThread(null);
     }
 
     /**
