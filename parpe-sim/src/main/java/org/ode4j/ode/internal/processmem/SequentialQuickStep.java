@@ -4,6 +4,7 @@ import org.ode4j.ode.DWorld;
 import org.ode4j.ode.internal.DxBody;
 import org.ode4j.ode.internal.DxQuickStep;
 import org.ode4j.ode.internal.DxWorld;
+import org.ode4j.ode.internal.WarmStart;
 import org.ode4j.ode.internal.joints.DxJoint;
 import org.ode4j.ode.internal.joints.DxJointNode;
 
@@ -29,9 +30,13 @@ public final class SequentialQuickStep {
     private DxStepperProcessingCallContext context;
     private double contextStepSize = Double.NaN;
 
-    private final org.ode4j.ode.internal.WarmStart warm;
+    private final WarmStart warm;
 
-    public SequentialQuickStep(DWorld world, org.ode4j.ode.internal.WarmStart warm) {
+    /**
+     * Steps {@code world}; {@code warm} (or null: from zero, as ODE4j) is what its rows start from,
+     * on one thread only (a world stepped on several goes through ODE4j's QuickStep, cold).
+     */
+    public SequentialQuickStep(DWorld world, WarmStart warm) {
         this.world = (DxWorld) world;
         this.warm = warm;
     }
