@@ -68,14 +68,13 @@ public final class ProfileReader {
         try {
             InputFiles.check(file);
         } catch (java.io.IOException e) {
-            throw new TargetException(SourcePos.origin(origin), "cannot read the hardware profile '" + file + "': "
-                    + e.getMessage());
+            throw new TargetException(SourcePos.origin(origin), Msg.PROFILE_UNREADABLE, file, e.getMessage());
         }
         DiagnosticList diags = new DiagnosticList();
         HardwareProfile p = read(file, diags);
         if (p == null) {
-            throw new TargetException("the hardware profile " + file + " has " + diags.errorCount() + " error"
-                    + (diags.errorCount() == 1 ? "" : "s"), diags.all());
+            long n = diags.errorCount();
+            throw new TargetException((n == 1 ? Msg.PROFILE_ERRORS_ONE : Msg.PROFILE_ERRORS).text(file, n), diags.all());
         }
         return port == null ? p : p.withPort(port);
     }
