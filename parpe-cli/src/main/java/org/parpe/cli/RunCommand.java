@@ -89,12 +89,17 @@ final class RunCommand implements Callable<Integer> {
         return new PrintStream(new WriterStream(spec.commandLine().getErr()), true, StandardCharsets.UTF_8);
     }
 
-    private int execute(PrintStream err) throws Exception {
+    /** The options of the clock, and the script and stimulus files, checked before anything is read. */
+    private void checkInputs() throws Exception {
         ClockOptions.check(tick, duration);
         Inputs.check(file);
         if (stimulus != null) {
             Inputs.check(stimulus);
         }
+    }
+
+    private int execute(PrintStream err) throws Exception {
+        checkInputs();
         LoadResult r = ScriptLoader.load(file, ParamValues.parse(params));
         int refused = LoadReport.exitCode(r, err::println);
         if (refused != 0) {
@@ -137,13 +142,26 @@ final class RunCommand implements Callable<Integer> {
             builder.abandon();
             throw e;
         }
-        boolean toStdout = "-".equals(trace);
         if (out != null) {
             builder.trace(out);
         }
         builder.observer(Progress.forStderr(err, duration == null ? Double.POSITIVE_INFINITY : duration));
         builder.pacer(sim.realtime() || builder.realtimeRequired() ? new WallClockPacer(1) : Pacer.NONE);
-        Run run = builder.build();
+        RunOutcome outcome = execute(builder.build(), out, diagnostics);
+        if (outcome.status() == RunOutcome.Status.STOPPED) {
+            err.println("parpe: " + CliMsg.STOPPED_AT.text(String.format(Locale.ROOT, "%.3f", outcome.time())));
+        } else if (worldLimit && outcome.status() == RunOutcome.Status.COMPLETED && outcome.time() >= duration - 1e-6) {
+            err.println("parpe: " + CliMsg.WORLD_TIME_LIMIT.text(org.parpe.core.lang.Numbers.format(duration), sim.world(err).name()));
+        }
+        return sim.outputsWritten(outcome.status() == RunOutcome.Status.ERROR ? 3 : 0);
+    }
+
+    /**
+     * Runs {@code run} until it ends or Ctrl-C stops it, then replaces the trace file {@code out}
+     * (also after a run-time error: its rows are kept) or flushes standard output.
+     */
+    private RunOutcome execute(Run run, Writer out, FoldedDiagnostics diagnostics) throws UsageException {
+        boolean toStdout = "-".equals(trace);
         RunOutcome outcome;
         try (InterruptHook hook = new InterruptHook(run::requestStop, 3)) {
             outcome = run.execute();
@@ -161,12 +179,7 @@ final class RunCommand implements Callable<Integer> {
             OutputFile.abort(out); // after a failure of PARPE itself no temporary trace file is left; after close, nothing
             diagnostics.finish();
         }
-        if (outcome.status() == RunOutcome.Status.STOPPED) {
-            err.println("parpe: " + CliMsg.STOPPED_AT.text(String.format(Locale.ROOT, "%.3f", outcome.time())));
-        } else if (worldLimit && outcome.status() == RunOutcome.Status.COMPLETED && outcome.time() >= duration - 1e-6) {
-            err.println("parpe: " + CliMsg.WORLD_TIME_LIMIT.text(org.parpe.core.lang.Numbers.format(duration), sim.world(err).name()));
-        }
-        return sim.outputsWritten(outcome.status() == RunOutcome.Status.ERROR ? 3 : 0);
+        return outcome;
     }
 
     private List<Stimulus> stimuli(Program program) throws UsageException {

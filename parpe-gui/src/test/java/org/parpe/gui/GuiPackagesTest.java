@@ -1,5 +1,7 @@
 package org.parpe.gui;
 
+import static com.tngtech.archunit.base.DescribedPredicate.describe;
+import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.classes;
 import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.noClasses;
 import static com.tngtech.archunit.library.dependencies.SlicesRuleDefinition.slices;
 
@@ -25,4 +27,16 @@ class GuiPackagesTest {
     static final ArchRule ONLY_THE_TOP_KNOWS_THE_WINDOW = noClasses().that().resideInAPackage("org.parpe.gui.(*)..")
             .and().resideOutsideOfPackages("org.parpe.gui.app..", "org.parpe.gui.automation..")
             .should().dependOnClassesThat().resideInAPackage("org.parpe.gui.app..");
+
+    /**
+     * Issue 32's acceptance: a feature's package reaches the window through a narrow host
+     * interface of its own ({@code HardwareHost}, {@code PoseHost}, {@code RobotHost}), and only
+     * the window's package implements one, so a feature never hands another feature's object in
+     * as the window. (ArchUnit fails a rule that no class meets, so this one cannot pass empty.)
+     */
+    @ArchTest
+    static final ArchRule ONLY_THE_WINDOW_IMPLEMENTS_THE_HOST_INTERFACES = classes().that().areNotInterfaces()
+            .and().implement(describe("an IDE host interface (org.parpe.gui..*Host)",
+                    i -> i.getName().startsWith("org.parpe.gui.") && i.getSimpleName().endsWith("Host")))
+            .should().resideInAPackage("org.parpe.gui.app..");
 }

@@ -100,16 +100,7 @@ public final class GradeCommand implements Callable<Integer> {
         if (!Files.isDirectory(studentsDir)) {
             throw new UsageException("'" + studentsDir + "' is not a folder of students' scripts");
         }
-        if (shard != null && merge != null) {
-            throw new UsageException("--shard K/N grades one shard and --merge N ranks them all: give one of them");
-        }
-        if (!(cpuLimit > 0) || memoryMb < 64) {
-            throw new UsageException("--cpu-limit must be > 0 s and --memory at least 64 MB, got " + cpuLimit + " and " + memoryMb);
-        }
-        int n = jobs == null ? Runtime.getRuntime().availableProcessors() : jobs;
-        if (n < 1) {
-            throw new UsageException("--jobs must be at least 1, got " + n);
-        }
+        int n = jobs();
         prepare();
         OutputPlan plan = OutputFile.plan(List.of(challengeFile, c.world()));
         OutputFile csv = OutputFile.of(plan, "--out", out.resolve("report.csv").toString());
@@ -149,6 +140,21 @@ public final class GradeCommand implements Callable<Integer> {
         o.println(Report.summary(rows, c) + "; report in " + out.resolve("report.html"));
         o.flush();
         return 0;
+    }
+
+    /** Checks the options of sharding and limits; returns how many students are graded at once. */
+    private int jobs() throws UsageException {
+        if (shard != null && merge != null) {
+            throw new UsageException("--shard K/N grades one shard and --merge N ranks them all: give one of them");
+        }
+        if (!(cpuLimit > 0) || memoryMb < 64) {
+            throw new UsageException("--cpu-limit must be > 0 s and --memory at least 64 MB, got " + cpuLimit + " and " + memoryMb);
+        }
+        int n = jobs == null ? Runtime.getRuntime().availableProcessors() : jobs;
+        if (n < 1) {
+            throw new UsageException("--jobs must be at least 1, got " + n);
+        }
+        return n;
     }
 
     /** Makes the report folder and its traces folder; refuses one inside the students' folder. */

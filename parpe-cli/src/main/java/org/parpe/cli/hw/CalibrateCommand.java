@@ -19,6 +19,7 @@ import org.parpe.serial.record.PoseRecorder;
 import org.parpe.serial.servo.ServoBus;
 import org.parpe.serial.servo.host.ServoBuses;
 import org.parpe.serial.servo.profile.HardwareProfile;
+import org.parpe.serial.servo.profile.ProfileReader;
 import org.parpe.serial.servo.profile.ProfileWriter;
 import org.parpe.serial.servo.profile.ServoMapping;
 import picocli.CommandLine.Command;
@@ -54,7 +55,7 @@ public final class CalibrateCommand implements Callable<Integer> {
     private int calibrate(PrintWriter err) throws UsageException, IOException {
         HardwareProfile saved;
         try {
-            saved = Profiles.load(hardware, null);
+            saved = ProfileReader.load(hardware, null, "--hardware");
         } catch (TargetException e) {
             StringBuilder b = new StringBuilder(e.getMessage() + ":");
             e.diagnostics().forEach(d -> b.append('\n').append(d.format()));

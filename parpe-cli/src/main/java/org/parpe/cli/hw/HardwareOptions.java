@@ -55,8 +55,7 @@ public class HardwareOptions {
         }
         SensorSource sim = run.sensorSource(SourceKind.SIMULATOR);
         checkDiverge(sim);
-        ServoTarget target = hardware != null ? new ServoTarget(Profiles.load(hardware, port), bus.config(), err::println)
-                : ServoTarget.modules(port, bus.config(), err::println);
+        ServoTarget target = ServoTarget.open(hardware, port, "--hardware", bus.config(), err::println);
         run.attach(target);
         // Ctrl-C: the emergency stop must leave before jSerialComm closes the port at shutdown.
         SerialLink.beforePortsClose(target.driver()::emergencyStopIfRunning);

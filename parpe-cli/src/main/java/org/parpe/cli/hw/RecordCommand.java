@@ -32,6 +32,7 @@ import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.ServoProtocol;
 import org.parpe.serial.servo.host.ServoBuses;
 import org.parpe.serial.servo.profile.HardwareProfile;
+import org.parpe.serial.servo.profile.ProfileReader;
 import org.parpe.serial.servo.profile.ServoMapping;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
@@ -189,7 +190,7 @@ public final class RecordCommand implements Callable<Integer> {
             return null;
         }
         try {
-            return Profiles.load(hardware, port);
+            return ProfileReader.load(hardware, port, "--hardware");
         } catch (TargetException e) {
             StringBuilder b = new StringBuilder(e.getMessage() + ":");
             e.diagnostics().forEach(d -> b.append('\n').append(d.format()));

@@ -122,17 +122,7 @@ public final class ServoBenchmark implements Benchmark {
         int[] ticks = new int[n];
         double[] degrees = new double[n];
         int[] errors = new int[n];
-        HalfDuplexLine fast = HalfDuplexLine.open(100 * BAUD, "warm-up");
-        try (ServoEmulator emu = fastReplies(ServoEmulator.start(fast::servos, model, EmulatorOptions.of(ids),
-                new EmulatorListener() { }));
-             ControlTableBus bus = new ControlTableBus(model.protocol(), fast.host(), 100 * BAUD, 20)) {
-            pingAll(bus, ids);
-            long warmEnd = System.nanoTime() + (long) (Math.min(WARM_UP_SECONDS, seconds) * 1e9);
-            for (long k = 0; k < WARM_UP_CYCLES && System.nanoTime() < warmEnd; k++) {
-                cycle(bus, model, ids, models, ticks, degrees, errors, n, k);
-            }
-            checkClean(emu);
-        }
+        warmUp(model, ids, models, ticks, degrees, errors, seconds);
         HalfDuplexLine line = HalfDuplexLine.open(BAUD, "line");
         ThreadMXBean mx = ManagementFactory.getThreadMXBean();
         try (ServoEmulator emu = fastReplies(ServoEmulator.start(line::servos, model, EmulatorOptions.of(ids),
@@ -176,6 +166,23 @@ public final class ServoBenchmark implements Benchmark {
             // A timeout costs the read timeout (20 ms): a stall of the host, not the line; shown so
             // that a low fraction can be told apart from a slow host cycle.
             print(out, key + "timeouts", bus.counters().timeouts() - timeouts0);
+            checkClean(emu);
+        }
+    }
+
+    /** Cycles on a line a hundred times faster than the measured one, until the JIT has compiled the host's code. */
+    private static void warmUp(ServoModel model, int[] ids, ServoModel[] models, int[] ticks, double[] degrees, int[] errors,
+                               double seconds) throws Exception {
+        int n = ids.length;
+        HalfDuplexLine fast = HalfDuplexLine.open(100 * BAUD, "warm-up");
+        try (ServoEmulator emu = fastReplies(ServoEmulator.start(fast::servos, model, EmulatorOptions.of(ids),
+                new EmulatorListener() { }));
+             ControlTableBus bus = new ControlTableBus(model.protocol(), fast.host(), 100 * BAUD, 20)) {
+            pingAll(bus, ids);
+            long warmEnd = System.nanoTime() + (long) (Math.min(WARM_UP_SECONDS, seconds) * 1e9);
+            for (long k = 0; k < WARM_UP_CYCLES && System.nanoTime() < warmEnd; k++) {
+                cycle(bus, model, ids, models, ticks, degrees, errors, n, k);
+            }
             checkClean(emu);
         }
     }

@@ -153,19 +153,47 @@ public final class MergeCommand implements Callable<Integer> {
         return end < 0 ? text : text.substring(0, end).replace("\r", "");
     }
 
+    /** Plots the merged rows {@code kept} into {@code png}. */
+    private void plot(OutputFile png, List<String> kept, Objective goal, PrintWriter err) throws SweepException, UsageException {
+        SweepResult result = SweepCsv.read(kept);
+        png.write(o -> Plots.sweep(o, (out.equals("-") ? "merged sweep" : Path.of(out).getFileName()) + ", "
+                + result.rows().size() + " runs", axes(result.rows()), result.rows(), goal, countFallen));
+        err.println("parpe: plot in " + png);
+    }
+
+    /** The shards named, each read once; a file given twice is refused. */
+    private Map<String, SweepCsv.Source> shards() throws UsageException, IOException {
+        Map<String, SweepCsv.Source> shards = new LinkedHashMap<>();
+        for (Path f : files) {
+            Inputs.checkKind(f);
+            if (shards.containsKey(f.toString())) {
+                throw new UsageException("'" + f + "' is given twice");
+            }
+            shards.put(f.toString(), source(f));
+        }
+        return shards;
+    }
+
+    /** Closes the {@code --out} file, or flushes standard output; false (said on {@code err}) when that failed. */
+    private static boolean finish(Writer w, boolean stdout, PrintWriter err) throws IOException {
+        if (stdout) {
+            w.flush();
+            if (((PrintWriter) w).checkError()) {
+                err.println("parpe: cannot write to standard output: it is closed or its pipe is broken");
+                return false;
+            }
+        } else {
+            w.close();
+        }
+        return true;
+    }
+
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
-        Map<String, SweepCsv.Source> shards = new LinkedHashMap<>();
         Writer w = null;
         try {
-            for (Path f : files) {
-                Inputs.checkKind(f);
-                if (shards.containsKey(f.toString())) {
-                    throw new UsageException("'" + f + "' is given twice");
-                }
-                shards.put(f.toString(), source(f));
-            }
+            Map<String, SweepCsv.Source> shards = shards();
             Objective goal = SimSweepOptions.objective(objective, true);
             OutputPlan plan = OutputFile.plan(files);
             OutputFile target = OutputFile.ofOptional(plan, "--out", out);
@@ -196,21 +224,12 @@ public final class MergeCommand implements Callable<Integer> {
                 err.println(e.getMessage().contains(": error: ") ? e.getMessage() : "parpe: " + e.getMessage());
                 return 1;
             }
-            if (target == null) {
-                w.flush();
-                if (((PrintWriter) w).checkError()) {
-                    err.println("parpe: cannot write to standard output: it is closed or its pipe is broken");
-                    return 2;
-                }
-            } else {
-                w.close();
+            if (!finish(w, target == null, err)) {
+                return 2;
             }
             err.println("parpe: merged " + runs + " runs from " + files.size() + " files");
             if (png != null) {
-                SweepResult result = SweepCsv.read(kept);
-                png.write(o -> Plots.sweep(o, (out.equals("-") ? "merged sweep" : Path.of(out).getFileName()) + ", "
-                        + result.rows().size() + " runs", axes(result.rows()), result.rows(), goal, countFallen));
-                err.println("parpe: plot in " + png);
+                plot(png, kept, goal, err);
             }
             return 0;
         } catch (UsageException e) {

@@ -136,23 +136,7 @@ public final class SweepCommand extends SimSweepCommand {
             }
             boolean scored = options.world != null;
             target.write(SweepCsv.header(sweep.spec().axes(), scored) + "\n");
-            final Writer file = w;
-            ProgressBar bar = new ProgressBar(err, new SweepListener() {
-                @Override
-                public void row(SweepRow row) {
-                    try {
-                        target.write(SweepCsv.line(row, total, scored) + "\n");
-                        if (share != null) {
-                            target.flush(); // each finished row reaches the file: a killed task keeps it
-                        }
-                        if (file == null && stdout.checkError()) {
-                            throw new IOException(STDOUT_CLOSED);
-                        }
-                    } catch (IOException e) {
-                        throw new java.io.UncheckedIOException(e);
-                    }
-                }
-            });
+            ProgressBar bar = new ProgressBar(err, rows(target, w == null ? stdout : null, total, scored, share != null));
             result = sweep.run(range[0], range[1], options.jobs(), bar, cancel);
             bar.clear();
             if (share != null && !result.cancelled()) {
@@ -187,6 +171,29 @@ public final class SweepCommand extends SimSweepCommand {
             }
         }
         return result;
+    }
+
+    /**
+     * Writes each finished row to {@code target} as a CSV line, flushed at once for a shard (a
+     * killed task keeps it); a write to {@code stdout} (null for a file) that fails is an error.
+     */
+    private static SweepListener rows(Writer target, PrintWriter stdout, int total, boolean scored, boolean shard) {
+        return new SweepListener() {
+            @Override
+            public void row(SweepRow row) {
+                try {
+                    target.write(SweepCsv.line(row, total, scored) + "\n");
+                    if (shard) {
+                        target.flush(); // each finished row reaches the file: a killed task keeps it
+                    }
+                    if (stdout != null && stdout.checkError()) {
+                        throw new IOException(STDOUT_CLOSED);
+                    }
+                } catch (IOException e) {
+                    throw new java.io.UncheckedIOException(e);
+                }
+            }
+        };
     }
 
     private void summary(PrintWriter err, SweepResult result, int expected, Objective goal, List<Axis> axes,

@@ -264,21 +264,7 @@ public final class Layouts {
         double plotW = plot[2];
         double rowH = plot[3];
         List<String> names = g.stateNames();
-        Map<String, Integer> colourOf = new java.util.HashMap<>();
-        for (int i = 0; i < names.size(); i++) {
-            colourOf.put(names.get(i), i);
-        }
-        // per entry, instance and state: its colour (looked up once, not per segment)
-        int[][][] colour = new int[g.legend().size()][][];
-        for (int e = 0; e < colour.length; e++) {
-            colour[e] = new int[g.legend().get(e).size()][];
-            for (int i = 0; i < colour[e].length; i++) {
-                colour[e][i] = new int[g.legend().get(e).get(i).states().size()];
-                for (int k = 0; k < colour[e][i].length; k++) {
-                    colour[e][i][k] = colourOf.getOrDefault(g.stateName(e, i, k), 0);
-                }
-            }
-        }
+        int[][][] colour = stateColours(g);
         int legendRows = Math.min(names.size(), 24);
         double h = top + n * rowH + 50 + ((legendRows + 3) / 4) * 18 + 20;
         Scene sc = new Scene((int) (left + plotW + 30), (int) h);
@@ -320,6 +306,29 @@ public final class Layouts {
                     + " more states (colours repeat)", 11, -1, GREY, false));
         }
         return sc;
+    }
+
+    /**
+     * The colour index of every entry's instance's state of {@code g}, by its name's place in
+     * {@link GaitDiagram#stateNames()} (looked up once, not per segment).
+     */
+    private static int[][][] stateColours(GaitDiagram g) {
+        List<String> names = g.stateNames();
+        Map<String, Integer> colourOf = new java.util.HashMap<>();
+        for (int i = 0; i < names.size(); i++) {
+            colourOf.put(names.get(i), i);
+        }
+        int[][][] colour = new int[g.legend().size()][][];
+        for (int e = 0; e < colour.length; e++) {
+            colour[e] = new int[g.legend().get(e).size()][];
+            for (int i = 0; i < colour[e].length; i++) {
+                colour[e][i] = new int[g.legend().get(e).get(i).states().size()];
+                for (int k = 0; k < colour[e][i].length; k++) {
+                    colour[e][i][k] = colourOf.getOrDefault(g.stateName(e, i, k), 0);
+                }
+            }
+        }
+        return colour;
     }
 
     /** At least {@code min}, and wide enough for every island's line. */

@@ -6,12 +6,11 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 import net.objecthunter.exp4j.function.Function;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.lang.Vocabulary;
 import org.parpe.core.sensor.Channel;
+import org.parpe.core.sensor.SensorRef;
 import org.parpe.core.text.Message;
 import org.parpe.core.text.Msg;
 import org.parpe.core.xml.XText;
@@ -22,9 +21,6 @@ import org.parpe.core.xml.XText;
  * the exp4j variable name it stands under in the rewritten text.
  */
 final class NameResolver {
-    static final Pattern GLOBAL = Pattern.compile("(\\d+)_([A-Za-z]+)(?:_([A-Za-z0-9]+))?");
-    static final Pattern LOCAL = Pattern.compile("_(\\d+|self|prev|next)_([A-Za-z]+)(?:_([A-Za-z0-9]+))?");
-
     final XText src;
     final Scope scope;
     final DiagnosticSink diags;
@@ -146,13 +142,9 @@ final class NameResolver {
         if (scope.controls().containsKey(name)) {
             return new Nodes.ControlRef(scope.controls().get(name));
         }
-        Matcher g = GLOBAL.matcher(name);
-        if (g.matches()) {
-            return globalSensor(t, g);
-        }
-        Matcher l = LOCAL.matcher(name);
-        if (l.matches()) {
-            return localSensor(t, l);
+        SensorRef ref = SensorRef.parse(name);
+        if (ref != null) {
+            return ref.local() ? localSensor(t, ref) : globalSensor(t, ref);
         }
         if (scope.parameters().containsKey(name) || scope.macros().containsKey(name)) {
             String kind = scope.parameters().containsKey(name) ? "parameter" : "macro";
@@ -166,31 +158,31 @@ final class NameResolver {
         return null;
     }
 
-    private Channel channel(Lexer.Token t, String sensor, String arg) {
-        if (!Vocabulary.SENSOR_TYPES.contains(sensor)) {
-            error(t, Msg.NOT_IMPLEMENTED, Msg.named("sensor", sensor), String.join(", ", Vocabulary.SENSOR_TYPES));
+    private Channel channel(Lexer.Token t, SensorRef ref) {
+        if (!Vocabulary.SENSOR_TYPES.contains(ref.sensor())) {
+            error(t, Msg.NOT_IMPLEMENTED, Msg.named("sensor", ref.sensor()), String.join(", ", Vocabulary.SENSOR_TYPES));
             return null;
         }
-        Channel c = Channel.of(sensor, arg == null ? "" : arg);
+        Channel c = ref.channel();
         if (c == null) {
-            error(t, Channel.argumentHint(sensor));
+            error(t, Channel.argumentHint(ref.sensor()));
         }
         return c;
     }
 
-    private Node globalSensor(Lexer.Token t, Matcher m) {
+    private Node globalSensor(Lexer.Token t, SensorRef ref) {
         if (scope.sensors() == null) {
             error(t, Msg.SENSORS_NOT_HERE);
             return null;
         }
-        Channel c = channel(t, m.group(2), m.group(3));
+        Channel c = channel(t, ref);
         if (c == null) {
             return null;
         }
-        int id = m.group(1).length() > 7 ? -1 : Integer.parseInt(m.group(1));
+        int id = ref.moduleId();
         int index = id < 0 ? -1 : scope.sensors().moduleIndex(id);
         if (index < 0) {
-            error(t, Msg.MODULE_NOT_IN_ROBOT, m.group(1));
+            error(t, Msg.MODULE_NOT_IN_ROBOT, ref.module());
             return null;
         }
         if (!scope.sensors().carries(id, c)) {
@@ -200,16 +192,16 @@ final class NameResolver {
         return new Nodes.GlobalSensor(Nodes.slot(index, c.ordinal()));
     }
 
-    private Node localSensor(Lexer.Token t, Matcher m) {
+    private Node localSensor(Lexer.Token t, SensorRef ref) {
         if (scope.kind() != Scope.Kind.MODULE) {
-            error(t, Msg.LOCAL_SENSOR_NOT_HERE, m.group(1));
+            error(t, Msg.LOCAL_SENSOR_NOT_HERE, ref.module());
             return null;
         }
-        Channel c = channel(t, m.group(2), m.group(3));
+        Channel c = channel(t, ref);
         if (c == null) {
             return null;
         }
-        String which = m.group(1);
+        String which = ref.module();
         int position = which.equals("self") ? Nodes.LocalSensor.SELF : which.equals("prev") ? Nodes.LocalSensor.PREV
                 : which.equals("next") ? Nodes.LocalSensor.NEXT : which.length() > 7 ? Integer.MAX_VALUE : Integer.parseInt(which);
         perModule = true;

@@ -61,28 +61,11 @@ final class Syntax {
                     return new Problem(Msg.VALUE_EXPECTED_BEFORE, t.start(), t.text());
                 }
             } else {
-                if (t.type() == Type.OP && !t.text().equals("!")) {
-                    expectOperand = true;
-                } else if (t.type() == Type.RPAREN) {
-                    if (frames.isEmpty()) {
-                        return new Problem(Msg.UNMATCHED_CLOSE, t.start());
-                    }
-                    Frame f = frames.pop();
-                    if (f.call()) {
-                        Problem p = close(f, argCounts, t, false);
-                        if (p != null) {
-                            return p;
-                        }
-                    }
-                } else if (t.type() == Type.COMMA) {
-                    if (frames.isEmpty() || !frames.peek().call()) {
-                        return new Problem(Msg.COMMA_OUTSIDE_CALL, t.start(), decimalComma(tokens.get(i - 1), t, next));
-                    }
-                    frames.peek().args()[1]++;
-                    expectOperand = true;
-                } else {
-                    return new Problem(Msg.OPERATOR_MISSING, t.start(), t.text(), letterO(tokens.get(i - 1), t));
+                Problem p = afterOperand(tokens, i, frames, argCounts);
+                if (p != null) {
+                    return p;
                 }
+                expectOperand = t.type() == Type.OP || t.type() == Type.COMMA;
             }
         }
         Token last = tokens.get(tokens.size() - 1);
@@ -93,6 +76,33 @@ final class Syntax {
             return new Problem(Msg.UNCLOSED_OPEN, frames.peek().open().start());
         }
         return null;
+    }
+
+    /**
+     * Checks token {@code i}, which follows an operand: an operator, a parenthesis closing a
+     * group or call, or a comma between a call's arguments; returns the problem, or null.
+     */
+    private static Problem afterOperand(List<Token> tokens, int i, Deque<Frame> frames, int[] argCounts) {
+        Token t = tokens.get(i);
+        if (t.type() == Type.OP && !t.text().equals("!")) {
+            return null;
+        }
+        if (t.type() == Type.RPAREN) {
+            if (frames.isEmpty()) {
+                return new Problem(Msg.UNMATCHED_CLOSE, t.start());
+            }
+            Frame f = frames.pop();
+            return f.call() ? close(f, argCounts, t, false) : null;
+        }
+        if (t.type() == Type.COMMA) {
+            if (frames.isEmpty() || !frames.peek().call()) {
+                Token next = i + 1 < tokens.size() ? tokens.get(i + 1) : null;
+                return new Problem(Msg.COMMA_OUTSIDE_CALL, t.start(), decimalComma(tokens.get(i - 1), t, next));
+            }
+            frames.peek().args()[1]++;
+            return null;
+        }
+        return new Problem(Msg.OPERATOR_MISSING, t.start(), t.text(), letterO(tokens.get(i - 1), t));
     }
 
     /**

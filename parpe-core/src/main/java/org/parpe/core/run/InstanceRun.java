@@ -326,21 +326,10 @@ final class InstanceRun {
             derive(dt);
         }
         double lim = uk[k] + limit;
-        int s = st[k];
-        exitedFrom[k] = -1;
-        if (exits[s] != null && ev.eval(exits[s]) != 0) {
-            exitedFrom[k] = s;
-            double du = (1 - p[k]) * tBuf[s] / sumT;
-            if (u[k] + du >= lim - EPS) {
-                finish(k, commanded[mod[k]]);
-                return;
-            }
-            u[k] += du;
-            a0[k] = commanded[mod[k]];
-            st[k] = s = (s + 1) % ns;
-            entering(k, s);
-            p[k] = p0[k] = 0;
+        if (!takeExit(ev, k, lim, commanded)) {
+            return;
         }
+        int s = st[k];
         double r = dt;
         boolean wholeTick = true;
         int skips = 0;
@@ -353,9 +342,7 @@ final class InstanceRun {
                     throw ev.error(model.pos(), Msg.NO_POSITIVE_DURATION, automaton);
                 }
                 a0[k] = target(ev, s, k);
-                st[k] = s = (s + 1) % ns;
-                entering(k, s);
-                p[k] = p0[k] = 0;
+                s = next(k, s);
                 continue;
             }
             double need = (1 - p[k]) * d;
@@ -378,24 +365,63 @@ final class InstanceRun {
                 throw ev.error(model.pos(), Msg.TOO_MANY_TRANSITIONS, automaton, MAX_TRANSITIONS_PER_TICK, Numbers.brief(dt));
             }
             if (u[k] + du >= lim - EPS) {
-                if (u[k] + du <= lim + EPS) {
-                    finishAtEnd(ev, k, s);
-                } else {
-                    finishInside(ev, k, s, lim);
-                }
+                finishInState(ev, k, s, lim, u[k] + du);
                 return;
             }
             u[k] += du;
             a0[k] = target(ev, s, k);
-            st[k] = s = (s + 1) % ns;
-            entering(k, s);
-            p[k] = p0[k] = 0;
+            s = next(k, s);
         }
         ph[k] = phaseOf(s, p[k]);
         cyc[k] = Math.floor(u[k] - uk[k] + EPS);
         c.phase = ph[k];
         c.cycle = cyc[k];
         out[k] = setpoint(ev, k, s);
+    }
+
+    /**
+     * The {@code cycles} limit {@code lim} is reached before state {@code s} ends, at cycle
+     * position {@code end}: at the state's end when that is within rounding, else inside it.
+     */
+    private void finishInState(ExpressionEvaluator ev, int k, int s, double lim, double end) {
+        if (end <= lim + EPS) {
+            finishAtEnd(ev, k, s);
+        } else {
+            finishInside(ev, k, s, lim);
+        }
+    }
+
+    /**
+     * The exit condition of module {@code k}'s state, evaluated first in its tick (§7.1): when it
+     * holds, the module leaves the state from where it is, starting the next from the angle it
+     * was commanded. Returns false when that reached the {@code cycles} limit {@code lim} and the
+     * module finished.
+     */
+    private boolean takeExit(ExpressionEvaluator ev, int k, double lim, double[] commanded) {
+        int s = st[k];
+        exitedFrom[k] = -1;
+        if (exits[s] == null || ev.eval(exits[s]) == 0) {
+            return true;
+        }
+        exitedFrom[k] = s;
+        double du = (1 - p[k]) * tBuf[s] / sumT;
+        if (u[k] + du >= lim - EPS) {
+            finish(k, commanded[mod[k]]);
+            return false;
+        }
+        u[k] += du;
+        a0[k] = commanded[mod[k]];
+        next(k, s);
+        return true;
+    }
+
+    /** Module {@code k} leaves state {@code s} for the next; returns that state. */
+    private int next(int k, int s) {
+        int n = (s + 1) % ns;
+        st[k] = n;
+        entering(k, n);
+        p[k] = p0[k] = 0;
+        return n;
     }
 
     /**

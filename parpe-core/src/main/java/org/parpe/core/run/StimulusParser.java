@@ -8,6 +8,7 @@ import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.Control;
 import org.parpe.core.model.Program;
 import org.parpe.core.sensor.Channel;
+import org.parpe.core.sensor.SensorRef;
 import org.parpe.core.sensor.SensorTable;
 
 /**
@@ -16,7 +17,6 @@ import org.parpe.core.sensor.SensorTable;
  */
 public final class StimulusParser {
     private static final Pattern LINE = Pattern.compile("(\\S+)\\s+\\$([A-Za-z0-9_]+)\\s*=\\s*(\\S+)");
-    private static final Pattern SENSOR = Pattern.compile("(\\d+)_([a-z]+)(?:_([a-z0-9]+))?");
 
     /** A malformed stimulus file. */
     public static final class StimulusException extends Exception {
@@ -64,19 +64,19 @@ public final class StimulusParser {
                 return new Stimulus(time, line, Stimulus.Kind.CONTROL, c, controlValue(where, ctl, value, program), text);
             }
         }
-        Matcher s = SENSOR.matcher(name);
-        if (!s.matches() || !org.parpe.core.lang.Vocabulary.SENSOR_TYPES.contains(s.group(2))) {
+        SensorRef s = SensorRef.parse(name);
+        if (s == null || s.local() || !org.parpe.core.lang.Vocabulary.SENSOR_TYPES.contains(s.sensor())) {
             throw new StimulusException(where + "unknown control or sensor '$" + name + "'"
                     + org.parpe.core.expr.Names.suggest(name, controls.stream().map(Control::name).toList(), "$"));
         }
-        int id = s.group(1).length() > 7 ? -1 : Integer.parseInt(s.group(1));
-        Channel ch = Channel.of(s.group(2), s.group(3) == null ? "" : s.group(3));
+        int id = s.moduleId();
+        Channel ch = s.channel();
         int index = id < 0 ? -1 : java.util.Arrays.binarySearch(ids, id);
         if (ch == null) {
             throw new StimulusException(where + "'$" + name + "' is not a sensor reading (use angle, accel_x|y|z, touch_left|right, dock_0|1)");
         }
         if (index < 0) {
-            throw new StimulusException(where + "module " + s.group(1) + " is not part of the robot");
+            throw new StimulusException(where + "module " + s.module() + " is not part of the robot");
         }
         if (!program.robot().carries(id, ch.sensor())) {
             throw new StimulusException(where + "module " + id + " has no " + ch.sensor() + " sensor");

@@ -71,14 +71,4 @@ public enum Channel {
             default: return org.parpe.core.text.Msg.DOCK_NEEDS_PLATE;
         }
     }
-
-    /** The channel whose {@link #suffix()} is {@code suffix}, or {@code null}. */
-    public static Channel ofSuffix(String suffix) {
-        for (Channel c : ALL) {
-            if (c.suffix().equals(suffix)) {
-                return c;
-            }
-        }
-        return null;
-    }
 }

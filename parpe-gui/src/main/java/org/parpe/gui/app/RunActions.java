@@ -33,8 +33,6 @@ import org.parpe.gui.run.RunController;
 import org.parpe.gui.run.RunOn;
 import org.parpe.serial.bus.BusConfig;
 import org.parpe.sim.SimMetrics;
-import org.parpe.serial.servo.profile.HardwareProfile;
-import org.parpe.serial.servo.profile.ProfileReader;
 import org.parpe.serial.servo.run.ServoDriver;
 import org.parpe.serial.servo.run.ServoTarget;
 import org.parpe.sim.snapshot.SimSnapshot;
@@ -268,11 +266,11 @@ public final class RunActions implements ControlPanel.ControlSink {
      */
     private void attach(Run.Builder run, RunOn target, String spec, World world, String port, String profile,
                         AngleRecorder recorder) throws TargetException {
-        if (target.hardware() && profile != null) {
-            attachServos(run, profile, port);
-        } else if (target.hardware()) {
-            hardwareState = "Hardware: connecting to " + port + "\u2026";
-            attachDriver(run, ServoTarget.modules(port, BusConfig.defaults(), ide::logLater), "");
+        if (target.hardware()) {
+            ServoTarget st = ServoTarget.open(profile == null ? null : Path.of(profile), port, "Hardware profile",
+                    BusConfig.defaults(), ide::logLater);
+            hardwareState = "Hardware: connecting to " + (st.port() == null ? "" : st.port()) + "\u2026";
+            attachDriver(run, st, st.profile() == null ? "" : " (" + st.profile().protocol().key() + ")");
         }
         if (target.sim()) {
             SimTarget st = new SimTarget(spec, world);
@@ -286,21 +284,6 @@ public final class RunActions implements ControlPanel.ControlSink {
             });
         }
         recorder.attachTo(run);
-    }
-
-    /** The servos of a hardware profile (any protocol); the port box, when filled, replaces the profile's port. */
-    private void attachServos(Run.Builder run, String file, String port) throws TargetException {
-        DiagnosticList problems = new DiagnosticList();
-        HardwareProfile profile = ProfileReader.read(Path.of(file), problems);
-        if (profile == null) {
-            throw new TargetException("the hardware profile " + file + " has errors", problems.all());
-        }
-        if (!port.isEmpty()) {
-            profile = profile.withPort(port);
-        }
-        hardwareState = "Hardware: connecting to " + profile.port() + "\u2026";
-        attachDriver(run, new ServoTarget(profile, BusConfig.defaults(), ide::logLater),
-                " (" + profile.protocol().key() + ")");
     }
 
     /** Attaches {@code st}; the status line names its device, then {@code what}. */

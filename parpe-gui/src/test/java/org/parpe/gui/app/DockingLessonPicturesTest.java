@@ -23,7 +23,6 @@ import org.parpe.core.run.Run;
 import org.parpe.core.run.RunOptions;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.gui.automation.Screenshot;
-import org.parpe.gui.prefs.Prefs;
 import org.parpe.gui.run.RunOn;
 import org.parpe.gui.run.Speed;
 import org.parpe.sim.SimTarget;
@@ -51,9 +50,7 @@ class DockingLessonPicturesTest {
         script = TutorialScreenshotsTest.tutorialFolder().resolve("15-docking-snake.xml");
         images = Path.of(System.getProperty("parpe.tutorialImages", "../docs/tutorial/img"));
         Files.createDirectories(images);
-        ide = new IdeWindow(display, new Prefs(Files.createTempDirectory("parpe-docking-pictures")));
-        ide.open(null, true);
-        Gui.pump(() -> ide.validations() > 0, "the first validation");
+        ide = Gui.openIde(Files.createTempDirectory("parpe-docking-pictures"));
     }
 
     @AfterAll

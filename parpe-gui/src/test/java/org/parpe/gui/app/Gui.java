@@ -113,6 +113,14 @@ public final class Gui {
         return ide;
     }
 
+    /** As {@link #openIde(Path)}, in a window of {@code width} × {@code height} pixels at the screen's corner. */
+    public static IdeWindow openIde(Path home, int width, int height) {
+        IdeWindow ide = openIde(home);
+        ide.shell().setBounds(0, 0, width, height);
+        settle();
+        return ide;
+    }
+
     /** Ends any run of {@code ide} and closes its window (for {@code @AfterAll}). */
     public static void closeIde(IdeWindow ide) {
         if (ide != null && !ide.shell().isDisposed()) {

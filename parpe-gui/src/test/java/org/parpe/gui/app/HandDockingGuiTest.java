@@ -20,7 +20,6 @@ import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.parpe.core.run.RunOutcome;
-import org.parpe.gui.prefs.Prefs;
 import org.parpe.gui.run.RunOn;
 import org.parpe.gui.run.Speed;
 import org.parpe.serial.emu.EmulatorListener;
@@ -51,17 +50,12 @@ class HandDockingGuiTest {
     static void openWindow() throws Exception {
         display = Gui.display();
         dir = Files.createTempDirectory("parpe-hand-docking");
-        ide = new IdeWindow(display, new Prefs(dir.resolve("home")));
-        ide.open(null, true);
-        Gui.pump(() -> ide.validations() > 0, "the first validation");
+        ide = Gui.openIde(dir.resolve("home"));
     }
 
     @AfterAll
     static void closeWindow() {
-        if (ide != null && !ide.shell().isDisposed()) {
-            Gui.endRun(ide);
-            ide.shell().dispose();
-        }
+        Gui.closeIde(ide);
     }
 
     /** The open question, or null. */

@@ -1,6 +1,5 @@
 package org.parpe.gui.app;
 
-import org.parpe.gui.prefs.Prefs;
 
 import org.parpe.gui.files.Autosave;
 
@@ -32,9 +31,7 @@ class IdeGuiTest {
     @BeforeAll
     static void openWindow() throws Exception {
         Path home = Files.createTempDirectory("parpe-gui-test");
-        ide = new IdeWindow(Gui.display(), new Prefs(home));
-        ide.open(null, true);
-        Gui.pump(() -> ide.validations() > 0, "the first validation");
+        ide = Gui.openIde(home);
     }
 
     @AfterAll

@@ -12,13 +12,11 @@ import org.eclipse.swt.graphics.Point;
 import org.eclipse.swt.graphics.Rectangle;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Control;
-import org.eclipse.swt.widgets.Display;
 import org.eclipse.swt.widgets.Event;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.parpe.core.diag.Diagnostic;
-import org.parpe.gui.prefs.Prefs;
 import org.parpe.gui.robot.Outside;
 import org.parpe.gui.robot.RobotTab;
 
@@ -37,11 +35,7 @@ class RobotTabEditingGuiTest {
     void open() throws Exception {
         Gui.display();
         dir = Files.createTempDirectory("parpe-robot-edit");
-        ide = new IdeWindow(Display.getDefault(), new Prefs(dir.resolve("home")));
-        ide.open(null, true);
-        Gui.pump(() -> ide.validations() > 0, "the first validation");
-        ide.shell().setBounds(0, 0, 1366, 768);
-        Gui.settle();
+        ide = Gui.openIde(dir.resolve("home"), 1366, 768);
     }
 
     @AfterEach

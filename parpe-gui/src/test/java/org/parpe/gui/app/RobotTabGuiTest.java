@@ -26,7 +26,6 @@ import org.parpe.core.run.Run;
 import org.parpe.core.run.RunOptions;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.gui.automation.Screenshot;
-import org.parpe.gui.prefs.Prefs;
 import org.parpe.gui.robot.RobotTab;
 import org.parpe.sim.snapshot.SimBody;
 import org.parpe.sim.SimTarget;
@@ -51,11 +50,7 @@ class RobotTabGuiTest {
     static void openWindow() throws Exception {
         display = Gui.display();
         dir = Files.createTempDirectory("parpe-robot-tab");
-        ide = new IdeWindow(display, new Prefs(dir.resolve("home")));
-        ide.open(null, true);
-        Gui.pump(() -> ide.validations() > 0, "the first validation");
-        ide.shell().setBounds(0, 0, 1366, 768);
-        Gui.settle();
+        ide = Gui.openIde(dir.resolve("home"), 1366, 768);
     }
 
     @AfterAll

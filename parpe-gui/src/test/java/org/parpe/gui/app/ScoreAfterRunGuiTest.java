@@ -30,8 +30,7 @@ class ScoreAfterRunGuiTest {
 
     @BeforeAll
     static void open() {
-        ide = Gui.openIde(home);
-        ide.shell().setBounds(0, 0, 1366, 768);
+        ide = Gui.openIde(home, 1366, 768);
     }
 
     @AfterAll

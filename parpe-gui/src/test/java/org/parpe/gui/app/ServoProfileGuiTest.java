@@ -1,12 +1,10 @@
 package org.parpe.gui.app;
 
-import org.parpe.gui.prefs.Prefs;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assertions.fail;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.nio.file.Files;
@@ -48,15 +46,9 @@ class ServoProfileGuiTest {
 
     @BeforeAll
     static void openWindow() throws Exception {
-        String x = System.getenv("DISPLAY");
-        if (x == null || x.isBlank()) {
-            fail("No X display (DISPLAY is not set). The GUI tests need one: run them under xvfb-run, as ./test-all does.");
-        }
+        display = Gui.display();
         dir = Files.createTempDirectory("parpe-servo-gui");
-        display = Display.getDefault();
-        ide = new IdeWindow(display, new Prefs(dir.resolve("home")));
-        ide.open(null, true);
-        pump(() -> ide.validations() > 0, "the first validation");
+        ide = Gui.openIde(dir.resolve("home"));
     }
 
     @AfterAll

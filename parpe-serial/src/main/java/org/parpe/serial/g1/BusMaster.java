@@ -7,6 +7,7 @@ import java.util.concurrent.locks.ReentrantLock;
 import org.parpe.serial.bus.BusConfig;
 import org.parpe.serial.bus.SafeMode;
 import org.parpe.serial.link.ByteLink;
+import org.parpe.serial.link.LinkCloser;
 import org.parpe.serial.link.ReadLoop;
 
 /**
@@ -16,7 +17,6 @@ import org.parpe.serial.link.ReadLoop;
  * thread at a time; plain frames (setpoints, emergency stop) may be sent from any thread.
  */
 public final class BusMaster implements AutoCloseable {
-    private static final long LINGER_MS = 50;
     private final ByteLink link;
     private final BusConfig config;
     private final FrameEncoder tx = new FrameEncoder();
@@ -155,31 +155,13 @@ public final class BusMaster implements AutoCloseable {
      * port may discard what is still queued (the final HOLD, for instance).
      */
     public void drain(long timeoutMs) {
-        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);
-        while (linkError == null && link.pendingOutput() > 0 && System.nanoTime() < deadline) {
-            java.util.concurrent.locks.LockSupport.parkNanos(200_000);
-        }
+        LinkCloser.drain(link, () -> linkError != null, timeoutMs);
     }
 
-    /**
-     * Lets queued bytes leave (at most 250 ms) and gives the far end {@value #LINGER_MS} ms after
-     * the last write before the port is closed: closing may flush what the other side has not
-     * read yet (a pty's queue, a USB adapter's buffer). Then stops the reader and closes the link.
-     */
+    /** Lets what was written reach the far end, then stops the reader and closes the link ({@link LinkCloser#close}). */
     @Override
     public void close() {
-        drain(250);
-        long linger = lastWriteNanos + TimeUnit.MILLISECONDS.toNanos(LINGER_MS) - System.nanoTime();
-        if (linger > 0 && linkError == null) {
-            java.util.concurrent.locks.LockSupport.parkNanos(linger);
-        }
-        running = false;
-        link.close();
-        try {
-            reader.join(1000);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+        LinkCloser.close(link, () -> linkError != null, () -> lastWriteNanos, () -> running = false, reader);
     }
 
     private boolean transact(int id, Command cmd, Command replyCmd, Reply out, int attempts) throws IOException {

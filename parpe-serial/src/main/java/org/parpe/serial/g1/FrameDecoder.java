@@ -1,6 +1,7 @@
 package org.parpe.serial.g1;
 
 import org.parpe.serial.bus.Crc16;
+import org.parpe.serial.link.ReceiveBuffer;
 import org.parpe.serial.link.StreamDecoder;
 
 /**
@@ -11,9 +12,8 @@ import org.parpe.serial.link.StreamDecoder;
  */
 public final class FrameDecoder implements StreamDecoder {
     private final FrameHandler handler;
-    private final byte[] buf = new byte[2 * Protocol.MAX_FRAME];
-    private int start;
-    private int end;
+    private final ReceiveBuffer rx = new ReceiveBuffer(2 * Protocol.MAX_FRAME);
+    private final byte[] buf = rx.bytes();
     private long frames;
     private long checksumErrors;
     private long garbageBytes;
@@ -26,12 +26,7 @@ public final class FrameDecoder implements StreamDecoder {
     /** Feeds {@code len} received bytes; complete frames are handed over before it returns. */
     public void feed(byte[] data, int off, int len) {
         while (len > 0) {
-            if (end == buf.length) {
-                compact();
-            }
-            int n = Math.min(len, buf.length - end);
-            System.arraycopy(data, off, buf, end, n);
-            end += n;
+            int n = rx.append(data, off, len);
             off += n;
             len -= n;
             parse();
@@ -43,18 +38,17 @@ public final class FrameDecoder implements StreamDecoder {
      * length was probably corrupted), so it is dropped byte by byte and the rest rescanned.
      */
     public void idle() {
-        while (end > start) {
-            start++;
+        while (rx.pending() > 0) {
+            rx.consumeTo(rx.start() + 1);
             garbageBytes++;
             parse();
         }
-        start = 0;
-        end = 0;
+        rx.clear();
     }
 
     /** Bytes received but not yet part of a complete frame. */
     public int pending() {
-        return end - start;
+        return rx.pending();
     }
 
     /** Frames recognised so far. */
@@ -73,7 +67,8 @@ public final class FrameDecoder implements StreamDecoder {
     }
 
     private void parse() {
-        int p = start;
+        int p = rx.start();
+        int end = rx.end();
         while (true) {
             while (p < end && (buf[p] & 0xFF) != Protocol.SYNC1) {
                 p++;
@@ -105,20 +100,10 @@ public final class FrameDecoder implements StreamDecoder {
                 continue;
             }
             frames++;
-            start = p + total;
+            rx.consumeTo(p + total);
             handler.onFrame(buf[p + 2] & 0xFF, buf[p + 5] & 0xFF, buf, p + 6, len);
-            p = start;
+            p += total;
         }
-        start = p;
-        if (start == end) {
-            start = 0;
-            end = 0;
-        }
-    }
-
-    private void compact() {
-        System.arraycopy(buf, start, buf, 0, end - start);
-        end -= start;
-        start = 0;
+        rx.settle(p);
     }
 }

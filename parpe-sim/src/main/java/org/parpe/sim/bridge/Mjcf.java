@@ -97,6 +97,23 @@ public final class Mjcf {
             }
             x.end();
         }
+        equality(x, m, latches);
+        List<RobotModel.Joint> servos = servos(m);
+        if (!servos.isEmpty()) {
+            x.start("actuator");
+            for (RobotModel.Joint j : servos) {
+                x.start("general").attr("name", j.name()).attr("joint", j.name()).end();
+            }
+            x.end();
+        }
+        return x.toString();
+    }
+
+    /**
+     * The robot's closed loops as welds, and the plate pairs {@code latches} as four inactive
+     * welds each (one per 90° step of the aligned pose).
+     */
+    private static void equality(XmlOut x, RobotModel m, List<Latches.Pair> latches) {
         if (!m.closures().isEmpty() || !latches.isEmpty()) {
             x.start("equality");
             for (RobotModel.Closure c : m.closures()) {
@@ -114,15 +131,6 @@ public final class Mjcf {
             }
             x.end();
         }
-        List<RobotModel.Joint> servos = servos(m);
-        if (!servos.isEmpty()) {
-            x.start("actuator");
-            for (RobotModel.Joint j : servos) {
-                x.start("general").attr("name", j.name()).attr("joint", j.name()).end();
-            }
-            x.end();
-        }
-        return x.toString();
     }
 
     /** The servo joints in ascending module ID, the order of a trace's columns. */

@@ -8,12 +8,10 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.parpe.core.diag.Diagnostic;
-import org.parpe.core.run.TargetException;
-import org.parpe.sim.SimTarget;
+import org.parpe.sim.config.BadConfigs;
 
 /**
  * Issue 33's bad configurations opened in the builder: {@link RobotDraft#of} never throws, and
@@ -34,8 +32,7 @@ class DraftProblemsTest {
         Path f = dir.resolve(name);
         Files.writeString(f, text, StandardCharsets.ISO_8859_1);
         RobotDraft d = RobotDraft.of(f.toString(), text);
-        List<Diagnostic> run = org.junit.jupiter.api.Assertions.assertThrows(TargetException.class,
-                () -> SimTarget.blueprint(f.toString(), new int[0])).diagnostics();
+        List<Diagnostic> run = BadConfigs.runErrors(f);
         if (asRun) {
             assertEquals(run.stream().map(Diagnostic::format).toList(), d.problems().stream().map(Diagnostic::format).toList());
         }
@@ -54,34 +51,14 @@ class DraftProblemsTest {
 
     @Test
     void overlappingParts() throws Exception {
-        List<Diagnostic> p = problems("overlap.xml", """
-                <robot-config>
-                  <part name="body" type="node"/>
-                  <part name="a" type="segment" id="0" angle="90"/>
-                  <part name="b" type="segment" id="1" angle="90"/>
-                  <part name="c" type="segment" id="2" angle="90"/>
-                  <part name="d" type="segment" id="3"/>
-                  <connect from="body.0" to="a.0"/>
-                  <connect from="a.1" to="b.0"/>
-                  <connect from="b.1" to="c.0"/>
-                  <connect from="c.1" to="d.0"/>
-                </robot-config>
-                """);
+        List<Diagnostic> p = problems("overlap.xml", BadConfigs.OVERLAP);
         assertTrue(p.get(0).format().contains("overlap.xml:6:3: error: part 'd' overlaps part 'body'"), p.toString());
         assertEquals("d", draft("overlap.xml").partAt(p.get(0).pos()).orElseThrow(), "the builder marks the part at fault");
     }
 
     @Test
     void aPlateUsedTwice() throws Exception {
-        List<Diagnostic> p = problems("twice.xml", """
-                <robot-config>
-                  <part name="a" type="segment" id="0"/>
-                  <part name="b" type="segment" id="1"/>
-                  <part name="c" type="segment" id="2"/>
-                  <connect from="a.1" to="b.0"/>
-                  <connect from="a.1" to="c.0"/>
-                </robot-config>
-                """);
+        List<Diagnostic> p = problems("twice.xml", BadConfigs.PLATE_TWICE);
         assertTrue(p.get(0).format().endsWith("twice.xml:6:3: error: plate 1 of part 'a' is already connected (line 5);"
                 + " a plate takes one connection"), p.toString());
         // what reads but does not assemble can be mended by the builder
@@ -92,24 +69,13 @@ class DraftProblemsTest {
 
     @Test
     void aLoopThatDoesNotClose() throws Exception {
-        List<Diagnostic> p = problems("open.xml", """
-                <robot-config>
-                  <part name="a" type="segment" id="0" angle="90"/>
-                  <part name="b" type="segment" id="1" angle="90"/>
-                  <part name="c" type="segment" id="2" angle="90"/>
-                  <part name="d" type="segment" id="3" angle="80"/>
-                  <connect from="a.1" to="b.0"/>
-                  <connect from="b.1" to="c.0"/>
-                  <connect from="c.1" to="d.0"/>
-                  <connect from="d.1" to="a.0"/>
-                </robot-config>
-                """);
+        List<Diagnostic> p = problems("open.xml", BadConfigs.OPEN_LOOP);
         assertTrue(p.get(0).message().contains("closes a loop but does not fit"), p.toString());
     }
 
     @Test
     void anUnknownPartType() throws Exception {
-        String text = "<robot-config>\n  <part name=\"w\" type=\"wheel\"/>\n</robot-config>\n";
+        String text = BadConfigs.UNKNOWN_TYPE;
         List<Diagnostic> p = problems("type.xml", text);
         assertTrue(p.get(0).format().endsWith("type.xml:2:3: error: unknown part type 'wheel'; expected segment, node,"
                 + " foot or hub"), p.toString());
@@ -121,24 +87,13 @@ class DraftProblemsTest {
 
     @Test
     void tenThousandPartsFoldedOntoThemselves() throws Exception {
-        StringBuilder x = new StringBuilder("<robot-config>\n");
-        int n = 10_000;
-        for (int i = 0; i < n; i++) {
-            x.append("  <part name=\"s").append(i).append("\" type=\"segment\" id=\"").append(i)
-                    .append(i % 2 == 1 ? "\" angle=\"90\"/>\n" : "\"/>\n");
-        }
-        for (int i = 0; i + 1 < n; i++) {
-            x.append("  <connect from=\"s").append(i).append(".1\" to=\"s").append(i + 1).append(".0\"/>\n");
-        }
-        List<Diagnostic> p = problems("folded.xml", x.append("</robot-config>\n").toString());
+        List<Diagnostic> p = problems("folded.xml", BadConfigs.chain(true));
         assertEquals(21, p.size(), "the first 20 overlaps and a note that there are more");
     }
 
     @Test
     void binaryText() throws Exception {
-        byte[] noise = new byte[4096];
-        new Random(33).nextBytes(noise);
-        List<Diagnostic> p = problems("noise.xml", new String(noise, StandardCharsets.ISO_8859_1), false);
+        List<Diagnostic> p = problems("noise.xml", new String(BadConfigs.noise(), StandardCharsets.ISO_8859_1), false);
         assertTrue(p.get(0).pos().line() == 1, p.toString());
         assertEquals(1, p.size(), p.toString());
         assertTrue(p.get(0).message().startsWith("not well-formed XML"), p.toString());
@@ -148,8 +103,7 @@ class DraftProblemsTest {
     void anExternalEntity() throws Exception {
         Path secret = dir.resolve("secret.txt");
         Files.writeString(secret, "s3cr3t");
-        List<Diagnostic> p = problems("xxe.xml", "<?xml version=\"1.0\"?>\n<!DOCTYPE robot-config [<!ENTITY x SYSTEM \""
-                + secret.toUri() + "\">]>\n<robot-config>\n  <part name=\"&x;\" type=\"segment\" id=\"0\"/>\n</robot-config>\n");
+        List<Diagnostic> p = problems("xxe.xml", BadConfigs.externalEntity(secret));
         assertEquals(1, p.size(), p.toString());
         assertTrue(p.get(0).message().startsWith("DOCTYPE declarations are not allowed in a robot configuration"));
         assertFalse(p.toString().contains("s3cr3t"));

@@ -14,7 +14,6 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.DiagnosticList;
-import org.parpe.core.run.TargetException;
 import org.parpe.sim.SimTarget;
 
 /** Configuration files and generator specs: good ones load, bad ones give located messages. */
@@ -22,12 +21,9 @@ class ConfigFileTest {
     @TempDir
     Path dir;
 
+    /** Read, generated and assembled as a run does it, so errors of every stage are found. */
     private List<Diagnostic> errors(String name, String text) throws IOException {
-        Path f = dir.resolve(name);
-        Files.writeString(f, text);
-        // read, generated and assembled as a run does it, so errors of every stage are found
-        return org.junit.jupiter.api.Assertions.assertThrows(TargetException.class,
-                () -> SimTarget.blueprint(f.toString(), new int[0])).diagnostics();
+        return BadConfigs.runErrors(BadConfigs.write(dir, name, text));
     }
 
     @Test

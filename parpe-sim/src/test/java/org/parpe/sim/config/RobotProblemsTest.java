@@ -10,13 +10,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
-import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.DiagnosticList;
-import org.parpe.core.run.TargetException;
-import org.parpe.sim.SimTarget;
 import org.parpe.sim.internal.Assembly;
 
 /**
@@ -29,28 +26,12 @@ class RobotProblemsTest {
     Path dir;
 
     private List<Diagnostic> errors(String name, String text) throws IOException {
-        Path f = dir.resolve(name);
-        Files.writeString(f, text);
-        return org.junit.jupiter.api.Assertions.assertThrows(TargetException.class,
-                () -> SimTarget.blueprint(f.toString(), new int[0])).diagnostics();
+        return BadConfigs.runErrors(BadConfigs.write(dir, name, text));
     }
 
     @Test
     void overlappingPartsAreReportedAtTheLaterPart() throws IOException {
-        // three segments bent 90 degrees the same way curl the fourth back into the node
-        List<Diagnostic> e = errors("overlap.xml", """
-                <robot-config>
-                  <part name="body" type="node"/>
-                  <part name="a" type="segment" id="0" angle="90"/>
-                  <part name="b" type="segment" id="1" angle="90"/>
-                  <part name="c" type="segment" id="2" angle="90"/>
-                  <part name="d" type="segment" id="3"/>
-                  <connect from="body.0" to="a.0"/>
-                  <connect from="a.1" to="b.0"/>
-                  <connect from="b.1" to="c.0"/>
-                  <connect from="c.1" to="d.0"/>
-                </robot-config>
-                """);
+        List<Diagnostic> e = errors("overlap.xml", BadConfigs.OVERLAP);
         assertEquals(1, e.size(), e.toString());
         assertTrue(e.get(0).toString().startsWith(dir.resolve("overlap.xml") + ":6:3: error: part 'd' overlaps part"
                 + " 'body' (line 2) by "), e.toString());
@@ -91,33 +72,14 @@ class RobotProblemsTest {
 
     @Test
     void aPlateUsedTwiceNamesTheFirstConnection() throws IOException {
-        List<Diagnostic> e = errors("twice.xml", """
-                <robot-config>
-                  <part name="a" type="segment" id="0"/>
-                  <part name="b" type="segment" id="1"/>
-                  <part name="c" type="segment" id="2"/>
-                  <connect from="a.1" to="b.0"/>
-                  <connect from="a.1" to="c.0"/>
-                </robot-config>
-                """);
+        List<Diagnostic> e = errors("twice.xml", BadConfigs.PLATE_TWICE);
         assertEquals(dir.resolve("twice.xml") + ":6:3: error: plate 1 of part 'a' is already connected (line 5);"
                 + " a plate takes one connection", e.get(0).toString(), e.toString());
     }
 
     @Test
     void aLoopThatDoesNotCloseSaysHowFarApartThePlatesAre() throws IOException {
-        List<Diagnostic> e = errors("open.xml", """
-                <robot-config>
-                  <part name="a" type="segment" id="0" angle="90"/>
-                  <part name="b" type="segment" id="1" angle="90"/>
-                  <part name="c" type="segment" id="2" angle="90"/>
-                  <part name="d" type="segment" id="3" angle="80"/>
-                  <connect from="a.1" to="b.0"/>
-                  <connect from="b.1" to="c.0"/>
-                  <connect from="c.1" to="d.0"/>
-                  <connect from="d.1" to="a.0"/>
-                </robot-config>
-                """);
+        List<Diagnostic> e = errors("open.xml", BadConfigs.OPEN_LOOP);
         assertEquals(1, e.size(), e.toString());
         assertTrue(e.get(0).toString().matches("(?s).*open\\.xml:[89]:3: error: connection [a-d]\\.1 -> [a-d]\\.0 closes a loop but"
                 + " does not fit: the plates are [0-9.]+ mm and 10\\.0 degrees apart.*"), e.toString());
@@ -125,11 +87,7 @@ class RobotProblemsTest {
 
     @Test
     void anUnknownPartTypeSuggestsTheKnownOnes() throws IOException {
-        List<Diagnostic> e = errors("type.xml", """
-                <robot-config>
-                  <part name="w" type="wheel"/>
-                </robot-config>
-                """);
+        List<Diagnostic> e = errors("type.xml", BadConfigs.UNKNOWN_TYPE);
         assertEquals(dir.resolve("type.xml") + ":2:3: error: unknown part type 'wheel'; expected segment, node, foot or hub",
                 e.get(0).toString());
     }
@@ -157,28 +115,13 @@ class RobotProblemsTest {
 
     /** A chain of 10 000 segments, every other one bent 90 degrees if {@code folded}. */
     private Path chain(boolean folded) throws IOException {
-        StringBuilder x = new StringBuilder("<robot-config>\n");
-        int n = 10_000;
-        for (int i = 0; i < n; i++) {
-            x.append("  <part name=\"s").append(i).append("\" type=\"segment\" id=\"").append(i)
-                    .append(i % 2 == 1 && folded ? "\" angle=\"90\"/>\n" : "\"/>\n");
-        }
-        for (int i = 0; i + 1 < n; i++) {
-            x.append("  <connect from=\"s").append(i).append(".1\" to=\"s").append(i + 1).append(".0\"/>\n");
-        }
-        Path f = dir.resolve(folded ? "folded.xml" : "straight.xml");
-        Files.writeString(f, x.append("</robot-config>\n"));
-        return f;
+        return BadConfigs.write(dir, folded ? "folded.xml" : "straight.xml", BadConfigs.chain(folded));
     }
 
     @Test
     void aBinaryFileIsNotWellFormedXmlAtItsStart() throws IOException {
-        Path f = dir.resolve("noise.xml");
-        byte[] noise = new byte[4096];
-        new Random(33).nextBytes(noise);
-        Files.write(f, noise);
-        List<Diagnostic> e = org.junit.jupiter.api.Assertions.assertThrows(TargetException.class,
-                () -> SimTarget.blueprint(f.toString(), new int[0])).diagnostics();
+        Path f = Files.write(dir.resolve("noise.xml"), BadConfigs.noise());
+        List<Diagnostic> e = BadConfigs.runErrors(f);
         assertEquals(1, e.size(), e.toString());
         assertTrue(e.get(0).toString().startsWith(f + ":1:"), e.toString());
         assertTrue(e.get(0).message().startsWith("not well-formed XML"), e.toString());
@@ -188,8 +131,7 @@ class RobotProblemsTest {
     void externalEntitiesAreRefusedWithTheirDoctype() throws IOException {
         Path secret = dir.resolve("secret.txt");
         Files.writeString(secret, "s3cr3t");
-        List<Diagnostic> e = errors("xxe.xml", "<?xml version=\"1.0\"?>\n<!DOCTYPE robot-config [<!ENTITY x SYSTEM \""
-                + secret.toUri() + "\">]>\n<robot-config>\n  <part name=\"&x;\" type=\"segment\" id=\"0\"/>\n</robot-config>\n");
+        List<Diagnostic> e = errors("xxe.xml", BadConfigs.externalEntity(secret));
         assertEquals(1, e.size(), e.toString());
         assertTrue(e.get(0).toString().startsWith(dir.resolve("xxe.xml") + ":2:"), e.toString());
         assertTrue(e.get(0).message().startsWith("DOCTYPE declarations are not allowed in a robot configuration"),

@@ -6,6 +6,7 @@ import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.LockSupport;
 import java.util.concurrent.locks.ReentrantLock;
 import org.parpe.serial.link.ByteLink;
+import org.parpe.serial.link.LinkCloser;
 import org.parpe.serial.link.ReadLoop;
 import org.parpe.serial.link.StreamDecoder;
 import org.parpe.serial.dynamixel.Dxl2Codec;
@@ -22,7 +23,6 @@ import org.parpe.serial.servo.wire.PacketDecoder;
  * time; plain sends may come from any thread.
  */
 final class PacketPort {
-    private static final long LINGER_MS = 50;
     private static final long IDLE_GAP_NANOS = 5_000_000;
     /** The longest Return Delay Time a servo can be set to: 254 × 2 µs (Dynamixel and Feetech alike). */
     private static final long MAX_RETURN_DELAY_NANOS = 508_000;
@@ -298,23 +298,9 @@ final class PacketPort {
         }
     }
 
-    /** Lets queued bytes leave and the far end read them, then stops the reader and closes the link. */
+    /** Lets what was written reach the far end, then stops the reader and closes the link ({@link LinkCloser#close}). */
     void close() {
-        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(250);
-        while (linkError == null && link.pendingOutput() > 0 && System.nanoTime() < deadline) {
-            LockSupport.parkNanos(200_000);
-        }
-        long linger = lastWriteNanos + TimeUnit.MILLISECONDS.toNanos(LINGER_MS) - System.nanoTime();
-        if (linger > 0 && linkError == null) {
-            LockSupport.parkNanos(linger);
-        }
-        running = false;
-        link.close();
-        try {
-            reader.join(1000);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+        LinkCloser.close(link, () -> linkError != null, () -> lastWriteNanos, () -> running = false, reader);
     }
 
     /** Adds {@code id} to the replies awaited, with {@link #lock} held. */

@@ -8,9 +8,12 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
+import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.diag.SourcePos;
+import org.parpe.core.run.TargetException;
 import org.parpe.core.xml.FlatXmlFile;
+import org.parpe.core.xml.InputFiles;
 import org.parpe.serial.bus.SafeMode;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.ServoProtocol;
@@ -53,6 +56,27 @@ public final class ProfileReader {
         }
         HardwareProfile profile = new ProfileReader(xml).build(path.toString());
         return xml.ok() ? profile : null;
+    }
+
+    /**
+     * Reads the profile {@code file} a run or command was given as {@code origin} (an option, a
+     * field); {@code port}, when given, replaces the profile's port.
+     *
+     * @throws TargetException with every problem of the file, located
+     */
+    public static HardwareProfile load(Path file, String port, String origin) throws TargetException {
+        try {
+            InputFiles.check(file);
+        } catch (java.io.IOException e) {
+            throw new TargetException(SourcePos.origin(origin), Msg.PROFILE_UNREADABLE, file, e.getMessage());
+        }
+        DiagnosticList diags = new DiagnosticList();
+        HardwareProfile p = read(file, diags);
+        if (p == null) {
+            long n = diags.errorCount();
+            throw new TargetException((n == 1 ? Msg.PROFILE_ERRORS_ONE : Msg.PROFILE_ERRORS).text(file, n), diags.all());
+        }
+        return port == null ? p : p.withPort(port);
     }
 
     private HardwareProfile build(String file) {

@@ -3,6 +3,7 @@ package org.parpe.serial.servo.run;
 import org.parpe.core.text.Message;
 import org.parpe.core.text.Msg;
 import java.io.IOException;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Consumer;
@@ -17,6 +18,7 @@ import org.parpe.serial.bus.Discovery;
 import org.parpe.serial.bus.HostPlant;
 import org.parpe.serial.link.LinkOpener;
 import org.parpe.serial.servo.profile.HardwareProfile;
+import org.parpe.serial.servo.profile.ProfileReader;
 
 /**
  * Servos on a serial bus as a run target, for the command line's {@code --hardware} and
@@ -57,6 +59,22 @@ public final class ServoTarget implements RunTarget {
     }
 
     /**
+     * What the command line's {@code --hardware}/{@code --port} and the IDE's Hardware target
+     * both drive: the servos of the hardware profile {@code profile} (read here; {@code port},
+     * when given, replaces its port), or without a profile the script's G1 modules on
+     * {@code port}. A blank port is none.
+     *
+     * @param origin what named the profile, for a file that cannot be read ({@code --hardware})
+     * @throws TargetException when the profile cannot be read or has errors, every problem located
+     */
+    public static ServoTarget open(Path profile, String port, String origin, BusConfig config, Consumer<String> notes)
+            throws TargetException {
+        String p = port == null || port.isBlank() ? null : port;
+        return profile == null ? modules(p, config, notes)
+                : new ServoTarget(ProfileReader.load(profile, p, origin), config, notes);
+    }
+
+    /**
      * The script's G1 modules on serial device {@code port}, without a profile: each module is
      * its own device ({@link HardwareProfile#ofModules}), with the line and watchdog of
      * {@code config}.
@@ -68,6 +86,16 @@ public final class ServoTarget implements RunTarget {
     /** The script's G1 modules reached through {@code opener} (tests, benchmarks), named {@code port} in messages. */
     public static ServoTarget modules(String port, BusConfig config, LinkOpener opener, Consumer<String> notes) {
         return new ServoTarget(null, port, config, opener, notes);
+    }
+
+    /** The serial device it drives, or null when none was given. */
+    public String port() {
+        return port;
+    }
+
+    /** The hardware profile whose servos it drives, or null for the script's G1 modules. */
+    public HardwareProfile profile() {
+        return profile;
     }
 
     @Override

@@ -1,5 +1,6 @@
 package org.parpe.serial.servo.wire;
 
+import org.parpe.serial.link.ReceiveBuffer;
 import org.parpe.serial.link.StreamDecoder;
 
 /**
@@ -9,11 +10,10 @@ import org.parpe.serial.link.StreamDecoder;
  */
 public abstract class PacketDecoder implements StreamDecoder {
     private final PacketHandler handler;
-    /** Received bytes not consumed yet, {@code buf[start … end)}. */
-    protected final byte[] buf = new byte[4 * Packet.MAX_PARAMS + 64];
+    private final ReceiveBuffer rx = new ReceiveBuffer(4 * Packet.MAX_PARAMS + 64);
+    /** Received bytes; those not consumed yet are from the position {@link #tryPacket} is given on. */
+    protected final byte[] buf = rx.bytes();
     private final Packet packet = new Packet();
-    private int start;
-    private int end;
     private long packets;
     private long checksumErrors;
 
@@ -25,14 +25,7 @@ public abstract class PacketDecoder implements StreamDecoder {
     /** Feeds received bytes; complete packets are handed over before it returns. */
     public final void feed(byte[] data, int off, int len) {
         while (len > 0) {
-            if (end == buf.length) {
-                System.arraycopy(buf, start, buf, 0, end - start);
-                end -= start;
-                start = 0;
-            }
-            int n = Math.min(len, buf.length - end);
-            System.arraycopy(data, off, buf, end, n);
-            end += n;
+            int n = rx.append(data, off, len);
             off += n;
             len -= n;
             parse();
@@ -41,17 +34,16 @@ public abstract class PacketDecoder implements StreamDecoder {
 
     /** A silence on the line: a pending partial packet cannot complete, so its bytes are rescanned one further. */
     public final void idle() {
-        while (end > start) {
-            start++;
+        while (rx.pending() > 0) {
+            rx.consumeTo(rx.start() + 1);
             parse();
         }
-        start = 0;
-        end = 0;
+        rx.clear();
     }
 
     /** Bytes received but not yet part of a packet. */
     public final int pending() {
-        return end - start;
+        return rx.pending();
     }
 
     /** Packets recognised. */
@@ -78,7 +70,8 @@ public abstract class PacketDecoder implements StreamDecoder {
     protected abstract int tryPacket(int p, int avail, Packet out);
 
     private void parse() {
-        int p = start;
+        int p = rx.start();
+        int end = rx.end();
         while (p < end) {
             int r = tryPacket(p, end - p, packet);
             if (r == INCOMPLETE) {
@@ -93,13 +86,9 @@ public abstract class PacketDecoder implements StreamDecoder {
             packet.rawLength = r;
             packets++;
             p += r;
-            start = p;
+            rx.consumeTo(p);
             handler.onPacket(packet);
         }
-        start = p;
-        if (start == end) {
-            start = 0;
-            end = 0;
-        }
+        rx.settle(p);
     }
 }

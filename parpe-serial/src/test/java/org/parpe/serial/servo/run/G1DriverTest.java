@@ -2,20 +2,15 @@ package org.parpe.serial.servo.run;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.IntStream;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
-import org.junit.jupiter.api.io.TempDir;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.run.RunInfo;
 import org.parpe.core.run.RunOutcome;
@@ -26,7 +21,7 @@ import org.parpe.serial.g1.emu.BusEmulator;
 import org.parpe.serial.emu.EmulatorListener;
 import org.parpe.serial.emu.EmulatorOptions;
 import org.parpe.serial.link.LinkOpener;
-import org.parpe.serial.link.PtyPair;
+import org.parpe.serial.link.OverPty;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.ServoProtocol;
 import org.parpe.serial.servo.profile.HardwareProfile;
@@ -37,24 +32,15 @@ import org.parpe.serial.servo.profile.ServoMapping;
  * read: each module is one READ transaction, waiting for its reply.
  */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
-class G1DriverTest {
+class G1DriverTest extends OverPty {
     static final int[] MODULES = IntStream.rangeClosed(1, 20).toArray();
 
-    @TempDir
-    Path dir;
-    PtyPair pty;
     BusEmulator g1;
     ServoDriver driver;
     final List<String> reports = new CopyOnWriteArrayList<>();
 
-    @BeforeAll
-    static void needSocat() {
-        assumeTrue(PtyPair.available(), "socat is not installed (./test-all installs it)");
-    }
-
     @BeforeEach
     void open() throws Exception {
-        pty = PtyPair.start(dir.resolve("a"), dir.resolve("b"));
         g1 = BusEmulator.start(LinkOpener.serial(pty.b().toString(), 115_200), EmulatorOptions.of(MODULES),
                 new EmulatorListener() { });
         ServoModel model = ServoModel.defaultFor(ServoProtocol.G1);
@@ -74,11 +60,9 @@ class G1DriverTest {
         assertEquals(all, driver.discover(), reports.toString());
     }
 
-    @AfterEach
-    void cleanUp() {
-        driver.close();
-        g1.close();
-        pty.close();
+    @Override
+    protected AutoCloseable[] openEnds() {
+        return new AutoCloseable[] {driver, g1};
     }
 
     @Test

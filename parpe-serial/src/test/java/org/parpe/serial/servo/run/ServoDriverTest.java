@@ -3,20 +3,15 @@ package org.parpe.serial.servo.run;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
-import org.junit.jupiter.api.io.TempDir;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.run.RunInfo;
 import org.parpe.core.run.RunOutcome;
@@ -26,7 +21,7 @@ import org.parpe.serial.bus.SafeMode;
 import org.parpe.serial.emu.EmulatorListener;
 import org.parpe.serial.emu.EmulatorOptions;
 import org.parpe.serial.link.LinkOpener;
-import org.parpe.serial.link.PtyPair;
+import org.parpe.serial.link.OverPty;
 import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.ServoProtocol;
 import org.parpe.serial.servo.emu.ServoEmulator;
@@ -35,25 +30,16 @@ import org.parpe.serial.servo.profile.ServoMapping;
 
 /** The run driver of profile servos against emulated Dynamixel servos over a socat pty: emergency stop and a vanished device. */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
-class ServoDriverTest {
+class ServoDriverTest extends OverPty {
     static final int[] MODULES = {0, 1, 2};
     static final ServoModel XL430 = ServoModel.named("xl430-w250");
 
-    @TempDir
-    Path dir;
-    PtyPair pty;
     ServoEmulator emulator;
     ServoDriver driver;
     final List<String> reports = new CopyOnWriteArrayList<>();
 
-    @BeforeAll
-    static void needSocat() {
-        assumeTrue(PtyPair.available(), "socat is not installed (./test-all installs it)");
-    }
-
     @BeforeEach
-    void pair() throws Exception {
-        pty = PtyPair.start(dir.resolve("a"), dir.resolve("b"));
+    void startEmulator() throws Exception {
         emulator = ServoEmulator.start(LinkOpener.serial(pty.b().toString(), 1_000_000), XL430,
                 EmulatorOptions.of(11, 12, 13), new EmulatorListener() { });
         // The first packets of a fresh emulator load its classes, which on a loaded machine takes
@@ -67,13 +53,9 @@ class ServoDriverTest {
         }
     }
 
-    @AfterEach
-    void cleanUp() {
-        if (driver != null) {
-            driver.close();
-        }
-        emulator.close();
-        pty.close();
+    @Override
+    protected AutoCloseable[] openEnds() {
+        return new AutoCloseable[] {driver, emulator};
     }
 
     void start(SafeMode onFault) throws Exception {
