@@ -78,14 +78,16 @@ static void add_p(parsl_rt *r, int16_t q, double dp)
  * only their divisions are saved. Not with 32-bit floats: the AVR's code stays as it was.
  */
 #define STEP_KEPT(v, s, rem, dt) ((v)->step_s == (s) && (rem) == (dt))
-/* floor(c): a conversion below 2^52 (without SSE4.1 floor is some twenty instructions); -0 keeps floor's sign */
+#define STEP(v, f) ((v)->step_##f)
+#define STEP_KEEP(v, s, d, du, dp) \
+    ((v)->step_s = (int16_t) ((v)->per_module ? -1 : (s)), (v)->step_d = (d), (v)->step_du = (du), (v)->step_dp = (dp))
+
+/* floor(c) of the cycle count: a conversion below 2^52 (without SSE4.1 gcc inlines floor as some
+   twenty instructions); -0 and the rest go to floor, which keeps their sign */
 static double whole(double c)
 {
     return c > 0 && c < 0x1p52 ? (double) (int64_t) c : floor(c);
 }
-#define STEP(v, f) ((v)->step_##f)
-#define STEP_KEEP(v, s, d, du, dp) \
-    ((v)->step_s = (int16_t) ((v)->per_module ? -1 : (s)), (v)->step_d = (d), (v)->step_du = (du), (v)->step_dp = (dp))
 #endif
 
 static void state_error(parsl_rt *r, int16_t code, int16_t pos, double a, int16_t what)
