@@ -16,7 +16,7 @@ import java.util.Map;
 public final class CRuntime {
     /** The runtime's files, in every export. */
     public static final List<String> RUNTIME =
-            List.of("parsl_rt.h", "parsl_rt.c", "parsl_inst.h", "parsl_inst.c", "parsl_io.c");
+            List.of("parsl_rt.h", "parsl_rt.c", "parsl_inst.h", "parsl_inst.c", "parsl_io.c", "parsl_maths.h");
     /** The host trace program's main. */
     public static final String HOST_MAIN = "parsl_host.c";
 

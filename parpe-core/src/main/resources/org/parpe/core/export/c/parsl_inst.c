@@ -4,6 +4,7 @@
  * with 32-bit floats (PARSL_EXACT_TIME) the progress is summed in fixed point (below).
  */
 #include "parsl_inst.h"
+#include "parsl_maths.h"
 #include <math.h>
 
 #define EPS 1e-9
@@ -80,6 +81,13 @@ static void add_p(parsl_rt *r, int16_t q, double dp)
 #define STEP(v, f) ((v)->step_##f)
 #define STEP_KEEP(v, s, d, du, dp) \
     ((v)->step_s = (int16_t) ((v)->per_module ? -1 : (s)), (v)->step_d = (d), (v)->step_du = (du), (v)->step_dp = (dp))
+
+/* floor(c) of the cycle count: a conversion below 2^52 (without SSE4.1 gcc inlines floor as some
+   twenty instructions); -0 and the rest go to floor, which keeps their sign */
+static double whole(double c)
+{
+    return c > 0 && c < 0x1p52 ? (double) (int64_t) c : floor(c);
+}
 #endif
 
 static void state_error(parsl_rt *r, int16_t code, int16_t pos, double a, int16_t what)
@@ -107,11 +115,6 @@ void parsl_view(parsl_rt *r, int16_t slot, int16_t row, inst_view *v)
 #ifndef PARSL_EXACT_TIME
     v->step_s = -1;
 #endif
-}
-
-int16_t parsl_module_of(const inst_view *v, int16_t k)
-{
-    return PARSL_I16(parsl_inst_mod, v->mod + k);
 }
 
 static void enter(parsl_rt *r, const inst_view *v, int16_t k)
@@ -230,7 +233,7 @@ void parsl_prepare_tick(parsl_rt *r, const inst_view *v)
     v->is->has_scale = x >= 0;
 }
 
-static double target(parsl_rt *r, const inst_view *v, int16_t s, int16_t k)
+PARSL_HOT double target(parsl_rt *r, const inst_view *v, int16_t s, int16_t k)
 {
     int16_t row = v->s0 + s;
     int16_t first = PARSL_I16(parsl_state[row], PARSL_S_ANGLES);
@@ -240,7 +243,7 @@ static double target(parsl_rt *r, const inst_view *v, int16_t s, int16_t k)
     return v->mirror ? -a : a;
 }
 
-static double setpoint(parsl_rt *r, const inst_view *v, int16_t k, int16_t s)
+PARSL_HOT double setpoint(parsl_rt *r, const inst_view *v, int16_t k, int16_t s)
 {
     int16_t q = v->pool + k;
     int16_t interp = PARSL_I16(parsl_state[v->s0 + s], PARSL_S_INTERP);
@@ -251,7 +254,7 @@ static double setpoint(parsl_rt *r, const inst_view *v, int16_t k, int16_t s)
         return g;
     }
     qq = (r->p[q] - r->p0[q]) / (1 - r->p0[q]);
-    shape = interp == PARSL_SMOOTH ? (1.0 - cos(3.141592653589793 * qq)) / 2.0 : qq;
+    shape = interp == PARSL_SMOOTH ? (1.0 - parsl_cos(3.141592653589793 * qq)) / 2.0 : qq;
     return r->a0[q] + (g - r->a0[q]) * shape;
 }
 
@@ -399,7 +402,7 @@ void parsl_advance(parsl_rt *r, inst_view *v, int16_t k, double dt)
     }
     r->ph[q] = phase_of(r, v, s, r->p[q]);
 #ifndef PARSL_EXACT_TIME
-    r->cyc[q] = floor(r->u[q] - r->uk[q] + EPS);
+    r->cyc[q] = whole(r->u[q] - r->uk[q] + EPS);
 #endif
     r->phase = r->ph[q];
     r->cycle = r->cyc[q];

@@ -33,7 +33,14 @@ typedef struct {
 /* Fills v for the instance table row `row`, using state slot `slot` of the running entry. */
 void parsl_view(parsl_rt *r, int16_t slot, int16_t row, inst_view *v);
 /* The module index (ascending ID order) of position k of the instance's group. */
-int16_t parsl_module_of(const inst_view *v, int16_t k);
+#define parsl_module_of(v, k) PARSL_I16(parsl_inst_mod, (v)->mod + (k))
+/* The helpers of a module's tick, inlined where double has 64 bits (the PC's speed, issue 36);
+   an AVR's code stays as the compiler chose it for size. */
+#if defined(__AVR__)
+#define PARSL_HOT static
+#else
+#define PARSL_HOT static inline
+#endif
 /* Places every module when the instance starts; r->commanded holds the angles of the last tick. */
 void parsl_inst_init(parsl_rt *r, const inst_view *v, double phase, double offset, double cycles);
 /* Re-anchors after a suspension: motion resumes from the current angle. */

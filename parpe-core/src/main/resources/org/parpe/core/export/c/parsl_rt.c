@@ -166,7 +166,7 @@ void parsl_set_reading(parsl_rt *r, int16_t i, int16_t channel, double value)
 }
 /* ---- the scheduler (Engine) ---- */
 
-static void drive(parsl_rt *r, const inst_view *v, int16_t k)
+PARSL_HOT void drive(parsl_rt *r, const inst_view *v, int16_t k)
 {
     int16_t m = parsl_module_of(v, k);
     if (r->driven[m] && r->driver[m] != v->row && r->overlap != NULL) {
