@@ -1,5 +1,6 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.text.UiMsg;
 import org.parpe.gui.hardware.HardwareDialog;
 
 import java.nio.file.Path;
@@ -61,7 +62,7 @@ public final class RunActions implements ControlPanel.ControlSink {
     private volatile Simulator sim;
     private volatile ServoDriver servos;
     private volatile SimSnapshot preview;
-    private volatile String hardwareState = "Hardware: not connected";
+    private volatile String hardwareState = UiMsg.HW_NOT_CONNECTED.text();
     private String previewKey = "";
     private RunOutcome lastOutcome;
     /** Whether the run going on was ended by the emergency stop. */
@@ -120,8 +121,13 @@ public final class RunActions implements ControlPanel.ControlSink {
 
     String hardwareState() {
         long since = hardwareSilentSince();
-        return since < 0 ? hardwareState : "Hardware: robot not responding since " + java.time.LocalTime.ofInstant(
-                java.time.Instant.ofEpochMilli(since), java.time.ZoneId.systemDefault()).withNano(0);
+        return since < 0 ? hardwareState : UiMsg.HW_NOT_RESPONDING.text(silentTime(since));
+    }
+
+    /** The wall-clock time {@code since} (ms), as the status bar says when the robot went silent. */
+    static String silentTime(long since) {
+        return java.time.LocalTime.ofInstant(java.time.Instant.ofEpochMilli(since), java.time.ZoneId.systemDefault())
+                .withNano(0).toString();
     }
 
     /** Since when (wall-clock ms) the run's servos or G1 modules have not answered; −1 while they do or none are driven. */
@@ -146,14 +152,14 @@ public final class RunActions implements ControlPanel.ControlSink {
         }
         if (ide.toolbar().target().hardware() && ide.hardwareHeld() != null) {
             // Two owners of one serial port would garble each other's packets.
-            String why = "the Hardware dialog holds the bus; close it first";
-            ide.status().setMessage("Cannot run: " + why + ".");
+            String why = UiMsg.HARDWARE_DIALOG_HOLDS_BUS.text();
+            ide.status().setMessage(UiMsg.CANNOT_RUN.text(why));
             ide.shell().getDisplay().beep();
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, why));
             return;
         }
         if (ide.emptyScript()) {
-            ide.status().setMessage("Cannot run: t" + IdeWindow.EMPTY.substring(1));
+            ide.status().setMessage(UiMsg.CANNOT_RUN.text(UiMsg.FILE_EMPTY.text()));
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, "the file is empty"));
             return;
         }
@@ -162,7 +168,7 @@ public final class RunActions implements ControlPanel.ControlSink {
         LoadResult first = Validator.load(path, text, Map.of());
         ide.showValidation(first);
         if (first.program() == null) {
-            ide.status().setMessage("Cannot run: fix the " + first.errors().size() + " error(s) listed in Problems first.");
+            ide.status().setMessage(UiMsg.CANNOT_RUN_ERRORS.text(first.errors().size()));
             ide.showProblems();
             ide.shell().getDisplay().beep();
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, "script has errors"));
@@ -170,7 +176,7 @@ public final class RunActions implements ControlPanel.ControlSink {
         }
         Map<String, Double> params = parameters(first.program(), interactive);
         if (params == null) {
-            ide.status().setMessage("Run cancelled.");
+            ide.status().setMessage(UiMsg.RUN_CANCELLED.text());
             return;
         }
         LoadResult loaded = params.isEmpty() ? first : Validator.load(path, text, params);
@@ -178,9 +184,9 @@ public final class RunActions implements ControlPanel.ControlSink {
             ide.showValidation(loaded);
             ide.clearRunProblems();
             loaded.parameterErrors().forEach(ide::runProblemLater);
-            String why = loaded.parameterErrors().isEmpty() ? "the script has errors with these parameter values"
+            String why = loaded.parameterErrors().isEmpty() ? UiMsg.ERRORS_WITH_PARAMETERS.text()
                     : loaded.parameterErrors().get(0).message();
-            ide.status().setMessage("Cannot run: " + why);
+            ide.status().setMessage(UiMsg.CANNOT_RUN.text(why));
             ide.showProblems();
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, why));
             return;
@@ -222,7 +228,7 @@ public final class RunActions implements ControlPanel.ControlSink {
             return;
         }
         if (target.hardware() && ide.hardwareHeld() != null) {
-            ide.status().setMessage("Cannot play on the robot: the Hardware dialog holds the bus; close it first.");
+            ide.status().setMessage(UiMsg.CANNOT_PLAY_ON_ROBOT.text());
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, "the Hardware dialog holds the bus"));
             return;
         }
@@ -271,7 +277,7 @@ public final class RunActions implements ControlPanel.ControlSink {
         if (target.hardware() && profile != null) {
             attachServos(run, profile, port);
         } else if (target.hardware()) {
-            hardwareState = "Hardware: connecting to " + port + "\u2026";
+            hardwareState = UiMsg.HW_CONNECTING.text(port);
             attachDriver(run, ServoTarget.modules(port, BusConfig.defaults(), ide::logLater), "");
         }
         if (target.sim()) {
@@ -298,7 +304,7 @@ public final class RunActions implements ControlPanel.ControlSink {
         if (!port.isEmpty()) {
             profile = profile.withPort(port);
         }
-        hardwareState = "Hardware: connecting to " + profile.port() + "\u2026";
+        hardwareState = UiMsg.HW_CONNECTING.text(profile.port());
         attachDriver(run, new ServoTarget(profile, BusConfig.defaults(), ide::logLater),
                 " (" + profile.protocol().key() + ")");
     }
@@ -308,14 +314,14 @@ public final class RunActions implements ControlPanel.ControlSink {
         try {
             run.attach(st);
         } finally {
-            hardwareState = st.driver() == null ? "Hardware: not connected" : "Hardware: " + st.driver().name() + what;
+            hardwareState = st.driver() == null ? UiMsg.HW_NOT_CONNECTED.text() : UiMsg.HW_DRIVER.text(st.driver().name() + what);
         }
         servos = st.driver();
         // the servos do not latch: the user joins and parts plates by hand while the run waits (PARSL.md §14)
         run.plates(new HandDocking(ide, controller, run.engine().moduleIds()));
         run.closeAtEnd(() -> {
             servos = null;
-            hardwareState = "Hardware: disconnected";
+            hardwareState = UiMsg.HW_DISCONNECTED.text();
         });
     }
 
@@ -327,8 +333,8 @@ public final class RunActions implements ControlPanel.ControlSink {
         SimMetrics m = lastMetrics;
         lastMetrics = null;
         boolean measured = m != null && outcome.status() != RunOutcome.Status.ERROR;
-        String travelled = !measured ? "" : String.format(java.util.Locale.ROOT,
-                "; the robot travelled %.3f m (%.3f m/s, forward %+.3f m)", m.distance(), m.speed(), m.dx());
+        String travelled = !measured ? "" : UiMsg.RUN_TRAVELLED.text(String.format(java.util.Locale.ROOT, "%.3f", m.distance()),
+                String.format(java.util.Locale.ROOT, "%.3f", m.speed()), String.format(java.util.Locale.ROOT, "%+.3f", m.dx()));
         WorldScore score = measured ? m.score() : null;
         finalScore = score;
         if (m != null && m.fell()) {
@@ -337,21 +343,20 @@ public final class RunActions implements ControlPanel.ControlSink {
                     java.util.Locale.ROOT, "the robot fell over (it tilted %.0f\u00b0, more than %.0f\u00b0)%s", m.maxTiltDeg(),
                     SimMetrics.FALL_TILT_DEG, SimTarget.AUTO.equals(choice) ? "" : "; is the " + choice + " the robot"
                             + " this script is written for? Robot: auto picks the one that fits")));
-            travelled += "; it fell over (see Problems)";
+            travelled += UiMsg.RUN_FELL_OVER.text();
         }
         String said = switch (outcome.status()) {
-            case COMPLETED -> (outcome.time() >= worldLimit - 1e-6 ? "Run ended at the world's time limit, t = "
-                    : "Run completed at t = ") + t + travelled;
+            case COMPLETED -> (outcome.time() >= worldLimit - 1e-6 ? UiMsg.RUN_TIME_LIMIT : UiMsg.RUN_COMPLETED).text(t, travelled);
             // An emergency stop is not an ordinary stop: the log and the status bar say which it was.
-            case STOPPED -> (emergency ? "Emergency stop at t = " : "Run stopped at t = ") + t + travelled;
-            case ERROR -> "Run failed: " + outcome.message();
+            case STOPPED -> (emergency ? UiMsg.RUN_EMERGENCY_STOPPED : UiMsg.RUN_STOPPED).text(t, travelled);
+            case ERROR -> UiMsg.RUN_FAILED.text(outcome.message());
         };
         ide.log(said);
         if (score == null) {
             ide.status().setMessage(said);
         } else {
             // What a teacher records comes first: the status bar cuts a long message at its end.
-            String points = String.format(java.util.Locale.ROOT, "Score %.1f", score.score());
+            String points = UiMsg.RUN_SCORE.text(String.format(java.util.Locale.ROOT, "%.1f", score.score()));
             ide.log(points + ": " + score.inWords());
             ide.status().setMessage(points + " (" + score.inWords() + ") \u2014 " + Character.toLowerCase(said.charAt(0))
                     + said.substring(1));
@@ -391,7 +396,7 @@ public final class RunActions implements ControlPanel.ControlSink {
     void pause() {
         if (controller.running()) {
             controller.setPaused(!controller.paused());
-            ide.status().setMessage(controller.paused() ? "Paused" : "Running");
+            ide.status().setMessage(controller.paused() ? UiMsg.RUN_PAUSED.text() : UiMsg.RUN_RUNNING.text());
             ide.runStateChanged();
         }
     }
@@ -410,7 +415,7 @@ public final class RunActions implements ControlPanel.ControlSink {
         if (controller.running()) {
             emergency = true;
             ide.log("EMERGENCY STOP");
-            ide.status().setMessage("Emergency stop");
+            ide.status().setMessage(UiMsg.RUN_EMERGENCY_STOP.text());
         }
     }
 
@@ -482,10 +487,10 @@ public final class RunActions implements ControlPanel.ControlSink {
         Simulator s = sim;
         if (s == null || s.world() == null) {
             WorldScore f = finalScore;
-            return f == null ? "" : String.format(java.util.Locale.ROOT, "   final score %.1f", f.score());
+            return f == null ? "" : UiMsg.SCORE_FINAL.text(String.format(java.util.Locale.ROOT, "%.1f", f.score()));
         }
-        return String.format(java.util.Locale.ROOT, "   score %.1f   (time limit %.0f s)", s.liveScore(),
-                s.world().timeLimit());
+        return UiMsg.SCORE_LIVE.text(String.format(java.util.Locale.ROOT, "%.1f", s.liveScore()),
+                String.format(java.util.Locale.ROOT, "%.0f", s.world().timeLimit()));
     }
 
     /** Drops the robot shown for the previous script, and the score of its last run. */
