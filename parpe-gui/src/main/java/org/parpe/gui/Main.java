@@ -104,7 +104,7 @@ public final class Main {
                 String file = ide.internalError(e);
                 System.err.println("parpe gui: " + UiMsg.INTERNAL_ERROR_EVENT.text(e, file));
                 if (auto != null) {
-                    auto.fail("internal error: " + e);
+                    auto.fail(UiMsg.INTERNAL_ERROR_EVENT.text(e, file));
                 }
             }
         }
