@@ -1,0 +1,63 @@
+package org.parpe.gui.app;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import org.eclipse.jface.dialogs.IDialogConstants;
+import org.eclipse.jface.dialogs.InputDialog;
+import org.eclipse.swt.widgets.MenuItem;
+import org.parpe.gui.automation.Screenshot;
+import org.parpe.gui.prefs.Prefs;
+import org.parpe.gui.text.IdeLanguage;
+
+/**
+ * A fresh IDE process for {@link LanguageGuiTest}: chooses the language as {@code parpe gui}
+ * does ({@code --lang}, the preference of the settings folder, the environment), opens the window
+ * at 1366×768 with JFace's Go to Line dialog over it, prints what a user reads (the menu bar, the
+ * status bar, the dialog's buttons) as {@code name=text} lines and saves a picture of it.
+ * Arguments: settings folder, picture file, and {@code --lang CODE} or nothing.
+ */
+final class LanguageProbe {
+    private LanguageProbe() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        Prefs prefs = new Prefs(Path.of(args[0]));
+        IdeLanguage.use(IdeLanguage.choose(args.length > 3 ? args[3] : null, prefs.get(IdeLanguage.PREFERENCE, null),
+                System::getenv));
+        IdeWindow ide = Gui.openIde(Path.of(args[0]));
+        ide.shell().setBounds(0, 0, 1366, 768);
+        Gui.open(ide, Gui.example("tutorial/02-gait-table-snake.xml"));
+        Gui.pump(() -> ide.program() != null, "lesson 2 to load");
+        List<String> menus = new ArrayList<>();
+        for (MenuItem m : ide.shell().getMenuBar().getItems()) {
+            menus.add(m.getText());
+        }
+        InputDialog d = new InputDialog(ide.shell(), "?", "?", "", null);
+        d.setBlockOnOpen(false);
+        d.open();
+        Gui.settle();
+        Gui.settle();
+        Screenshot.save(ide.shell(), Path.of(args[1]));
+        System.out.println("menus=" + String.join("|", menus));
+        System.out.println("status=" + ide.status().sim() + "|" + ide.status().hardware());
+        // the dialog's own buttons in GTK's order (Cancel, OK, as JFace labels them), then JFace's Yes and No
+        System.out.println("buttons=" + String.join("|", buttons(d.getShell())) + "|" + IDialogConstants.YES_LABEL
+                + "|" + IDialogConstants.NO_LABEL);
+        d.close();
+        Gui.closeIde(ide);
+        System.exit(0);
+    }
+
+    private static List<String> buttons(org.eclipse.swt.widgets.Composite c) {
+        List<String> out = new ArrayList<>();
+        for (org.eclipse.swt.widgets.Control k : c.getChildren()) {
+            if (k instanceof org.eclipse.swt.widgets.Button b && (b.getStyle() & org.eclipse.swt.SWT.PUSH) != 0) {
+                out.add(b.getText());
+            } else if (k instanceof org.eclipse.swt.widgets.Composite inner) {
+                out.addAll(buttons(inner));
+            }
+        }
+        return out;
+    }
+}
