@@ -160,7 +160,7 @@ public final class RunActions implements ControlPanel.ControlSink {
         }
         if (ide.emptyScript()) {
             ide.status().setMessage(UiMsg.CANNOT_RUN.text(UiMsg.FILE_EMPTY.text()));
-            report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, "the file is empty"));
+            report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, UiMsg.OUTCOME_FILE_EMPTY.text()));
             return;
         }
         Path path = ide.files().pathForLoading();
@@ -171,7 +171,7 @@ public final class RunActions implements ControlPanel.ControlSink {
             ide.status().setMessage(UiMsg.CANNOT_RUN_ERRORS.text(first.errors().size()));
             ide.showProblems();
             ide.shell().getDisplay().beep();
-            report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, "script has errors"));
+            report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, UiMsg.OUTCOME_SCRIPT_ERRORS.text()));
             return;
         }
         Map<String, Double> params = parameters(first.program(), interactive);
@@ -199,7 +199,7 @@ public final class RunActions implements ControlPanel.ControlSink {
         start(program, target, robotSpec(program), runFor, onEnd);
         String misfit = target.sim() ? misfit(program, ide.robotChoice()) : null;
         if (misfit != null) {
-            ide.runProblemLater(new Diagnostic(Severity.WARNING, SourcePos.origin("Robot " + ide.robotChoice()), misfit));
+            ide.runProblemLater(new Diagnostic(Severity.WARNING, SourcePos.origin(UiMsg.ORIGIN_ROBOT.text(ide.robotChoice())), misfit));
         }
     }
 
@@ -213,8 +213,7 @@ public final class RunActions implements ControlPanel.ControlSink {
             return null;
         }
         String fits = SimTarget.autoSpec(program);
-        return fits.equals(choice) ? null : "this script is written for the " + fits + " (Robot: auto picks it), but it runs"
-                + " on the " + choice + "; choose auto in Robot above the 3D view unless you mean it";
+        return fits.equals(choice) ? null : UiMsg.ROBOT_MISFIT.text(fits, choice);
     }
 
     /**
@@ -224,12 +223,12 @@ public final class RunActions implements ControlPanel.ControlSink {
      */
     void play(Program program, RunOn target, String spec, Consumer<RunOutcome> onEnd) {
         if (controller.running()) {
-            report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, "a run is going on"));
+            report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, UiMsg.OUTCOME_RUN_GOING_ON.text()));
             return;
         }
         if (target.hardware() && ide.hardwareHeld() != null) {
             ide.status().setMessage(UiMsg.CANNOT_PLAY_ON_ROBOT.text());
-            report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, "the Hardware dialog holds the bus"));
+            report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, UiMsg.HARDWARE_DIALOG_HOLDS_BUS.text()));
             return;
         }
         start(program, target, spec, -1, onEnd);
@@ -242,8 +241,8 @@ public final class RunActions implements ControlPanel.ControlSink {
         ide.plots().setModules(program.moduleIds());
         ide.plots().setRecorder(recorder);
         ide.clearRunProblems();
-        ide.log("Run " + ide.files().name() + " on " + target.label().toLowerCase() + (target.sim() ? " (robot: " + spec + ")" : "")
-                + (target.hardware() ? " (port " + port + (profile == null ? "" : ", profile " + profile) + ")" : ""));
+        ide.log(UiMsg.LOG_RUN.text(ide.files().name(), target.label(), target.sim() ? UiMsg.LOG_RUN_ROBOT.text(spec) : "",
+                !target.hardware() ? "" : profile == null ? UiMsg.LOG_RUN_PORT.text(port) : UiMsg.LOG_RUN_PORT_PROFILE.text(port, profile)));
         controller.setSpeed(ide.toolbar().speed());
         finalScore = null;
         Run.Builder run = Run.builder(program, RunOptions.defaults(), ide::runProblemLater);
@@ -299,7 +298,7 @@ public final class RunActions implements ControlPanel.ControlSink {
         DiagnosticList problems = new DiagnosticList();
         HardwareProfile profile = ProfileReader.read(Path.of(file), problems);
         if (profile == null) {
-            throw new TargetException("the hardware profile " + file + " has errors", problems.all());
+            throw new TargetException(UiMsg.PROFILE_HAS_ERRORS.text(file), problems.all());
         }
         if (!port.isEmpty()) {
             profile = profile.withPort(port);
@@ -339,10 +338,9 @@ public final class RunActions implements ControlPanel.ControlSink {
         finalScore = score;
         if (m != null && m.fell()) {
             String choice = ide.robotChoice();
-            ide.runProblemLater(new Diagnostic(Severity.WARNING, SourcePos.origin("Robot " + choice), String.format(
-                    java.util.Locale.ROOT, "the robot fell over (it tilted %.0f\u00b0, more than %.0f\u00b0)%s", m.maxTiltDeg(),
-                    SimMetrics.FALL_TILT_DEG, SimTarget.AUTO.equals(choice) ? "" : "; is the " + choice + " the robot"
-                            + " this script is written for? Robot: auto picks the one that fits")));
+            ide.runProblemLater(new Diagnostic(Severity.WARNING, SourcePos.origin(UiMsg.ORIGIN_ROBOT.text(choice)), UiMsg.ROBOT_FELL,
+                    String.format(java.util.Locale.ROOT, "%.0f", m.maxTiltDeg()), String.format(java.util.Locale.ROOT, "%.0f",
+                    SimMetrics.FALL_TILT_DEG), SimTarget.AUTO.equals(choice) ? "" : UiMsg.ROBOT_FELL_WHICH.text(choice)));
             travelled += UiMsg.RUN_FELL_OVER.text();
         }
         String said = switch (outcome.status()) {
@@ -414,7 +412,7 @@ public final class RunActions implements ControlPanel.ControlSink {
         }
         if (controller.running()) {
             emergency = true;
-            ide.log("EMERGENCY STOP");
+            ide.log(UiMsg.LOG_EMERGENCY_STOP.text());
             ide.status().setMessage(UiMsg.RUN_EMERGENCY_STOP.text());
         }
     }
@@ -443,7 +441,7 @@ public final class RunActions implements ControlPanel.ControlSink {
         } catch (IllegalArgumentException ex) {
             Program p = e.program();
             SourcePos where = p.controls().stream().filter(c -> c.name().equals(name)).map(c -> c.pos())
-                    .findFirst().orElse(SourcePos.origin("control " + name));
+                    .findFirst().orElse(SourcePos.origin(UiMsg.ORIGIN_CONTROL.text(name)));
             ide.runProblemLater(new Diagnostic(Severity.ERROR, where, ex.getMessage()));
         }
     }
@@ -471,10 +469,10 @@ public final class RunActions implements ControlPanel.ControlSink {
                 String misfit = s.misfit();
                 if (!misfit.isEmpty()) {
                     // said when the robot or the world is chosen, not only when a run starts
-                    ide.sayLater("Robot " + spec + " " + misfit);
+                    ide.sayLater(UiMsg.ROBOT_MISFIT_SAY.text(spec, misfit));
                 }
             } catch (RuntimeException e) {
-                ide.logLater("cannot show the robot '" + spec + "': " + e.getMessage());
+                ide.logLater(UiMsg.CANNOT_SHOW_ROBOT.text(spec, e.getMessage()));
             }
         });
     }

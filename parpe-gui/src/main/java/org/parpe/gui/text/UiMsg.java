@@ -207,7 +207,28 @@ public enum UiMsg implements Key {
     RUN_FELL_OVER,
     RUN_SCORE,
     SCORE_LIVE,
-    SCORE_FINAL;
+    SCORE_FINAL,
+    OUTCOME_FILE_EMPTY,
+    OUTCOME_SCRIPT_ERRORS,
+    OUTCOME_RUN_GOING_ON,
+    ORIGIN_ROBOT,
+    ORIGIN_CONTROL,
+    ROBOT_MISFIT,
+    ROBOT_FELL,
+    ROBOT_FELL_WHICH,
+    LOG_RUN,
+    LOG_RUN_ROBOT,
+    LOG_RUN_PORT,
+    LOG_RUN_PORT_PROFILE,
+    PROFILE_HAS_ERRORS,
+    PROFILE_HAS_ERRORS_FIRST,
+    LOG_EMERGENCY_STOP,
+    ROBOT_MISFIT_SAY,
+    CANNOT_SHOW_ROBOT,
+    TRY_IT_FAILED,
+    INTERNAL_ERROR_RUN,
+    DURING_PREPARING,
+    DURING_RUN;
 
     /** The bundle of these keys. */
     public static final String BUNDLE = "org.parpe.gui.text.Ui";
