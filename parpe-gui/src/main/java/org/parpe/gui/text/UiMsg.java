@@ -228,7 +228,27 @@ public enum UiMsg implements Key {
     TRY_IT_FAILED,
     INTERNAL_ERROR_RUN,
     DURING_PREPARING,
-    DURING_RUN;
+    DURING_RUN,
+
+    // the tutorial window's chrome (TutorialWindow); the lessons' own files are chosen elsewhere
+    TUTORIAL_WINDOW_TITLE,
+    TUTORIAL_PREVIOUS,
+    TUTORIAL_NEXT,
+    TUTORIAL_OPEN_SCRIPT,
+    TUTORIAL_OPEN_NAMED,
+    TUTORIAL_CANNOT_READ,
+    TUTORIAL_PICTURE,
+    TUTORIAL_FULL_SIZE,
+    TUTORIAL_INSERT_CODE,
+
+    // joining plates by hand (HandDocking)
+    HAND_TITLE,
+    HAND_AT,
+    HAND_ARMS,
+    HAND_RELEASES,
+    HAND_DO_IT,
+    HAND_PAUSED,
+    HAND_CONTINUE;
 
     /** The bundle of these keys. */
     public static final String BUNDLE = "org.parpe.gui.text.Ui";
