@@ -159,7 +159,7 @@ public final class RunActions implements ControlPanel.ControlSink {
             return;
         }
         if (ide.emptyScript()) {
-            ide.status().setMessage(UiMsg.CANNOT_RUN.text(UiMsg.FILE_EMPTY.text()));
+            ide.status().setMessage(UiMsg.CANNOT_RUN_EMPTY.text());
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, UiMsg.OUTCOME_FILE_EMPTY.text()));
             return;
         }

@@ -328,7 +328,8 @@ public enum UiMsg implements Key {
     EXPORT_BUTTON,
     EXPORT_INTO,
     EXPORT_FORMAT_URDF,
-    COPY_BELONGS_TO_RUNNING;
+    COPY_BELONGS_TO_RUNNING,
+    CANNOT_RUN_EMPTY;
 
     /** The bundle of these keys. */
     public static final String BUNDLE = "org.parpe.gui.text.Ui";
