@@ -469,7 +469,24 @@ public enum UiMsg implements Key {
     ASSIST_FOREVER,
     ASSIST_LOGICAL_VARIABLE,
     ASSIST_FUNCTION,
-    ASSIST_CONSTANT;
+    ASSIST_CONSTANT,
+
+    // the IDE's automation for documentation and tests (Automation, Bench, Screenshot)
+    AUTO_SCRIPT_ERRORS,
+    AUTO_NO_GAIT_TABLE,
+    AUTO_HAS_NONE,
+    AUTO_FIRST_IS,
+    AUTO_RUN_TOO_LONG,
+    AUTO_RUN_FAILED,
+    AUTO_RAN,
+    AUTO_SCREENSHOT_SAVED,
+    BENCH_NO_TEMP,
+    BENCH_NO_CENTIPEDE,
+    BENCH_NO_LARGE_SCRIPT,
+    BENCH_NO_CENTIPEDE_WALK,
+    BENCH_NO_ROBOT_200,
+    SCREENSHOT_CANNOT_CAPTURE,
+    SCREENSHOT_CANNOT_WRITE;
 
     /** The bundle of these keys. */
     public static final String BUNDLE = "org.parpe.gui.text.Ui";
