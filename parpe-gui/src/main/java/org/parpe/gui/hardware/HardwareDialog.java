@@ -107,7 +107,9 @@ public final class HardwareDialog {
             {UiMsg.HW_COL_POSITION.text(), "100"}, {UiMsg.HW_COL_TORQUE.text(), "80"}, {UiMsg.HW_COL_STATUS.text(), "260"}}) {
             TableColumn col = new TableColumn(table, SWT.LEFT);
             col.setText(c[0]);
-            col.setWidth(Integer.parseInt(c[1]));
+            // at least as wide as its header, which is longer in some languages ("Drehmoment")
+            col.pack();
+            col.setWidth(Math.max(col.getWidth(), Integer.parseInt(c[1])));
         }
         table.addListener(SWT.Selection, e -> selected());
 

@@ -43,6 +43,7 @@ class LanguageGuiTest {
         assertEquals("&Datei|&Bearbeiten|&Ausführen|&Ansicht|&Hilfe", seen.get("menus"));
         assertEquals("Simulator: bereit|Hardware: nicht verbunden", seen.get("status"));
         assertEquals("Abbrechen|OK|&Ja|&Nein", seen.get("buttons"));
+        assertEquals("", seen.get("clipped"), "the Hardware dialog's column headers fit their German words");
     }
 
     @Test
@@ -50,6 +51,7 @@ class LanguageGuiTest {
         Map<String, String> seen = probe(Files.createTempDirectory("parpe-lang-ja"), "ja", "--lang", "ja");
         assertEquals("ファイル(&F)|編集(&E)|実行(&R)|表示(&V)|ヘルプ(&H)", seen.get("menus"));
         assertEquals("キャンセル|OK|はい(&Y)|いいえ(&N)", seen.get("buttons"));
+        assertEquals("", seen.get("clipped"), "the Hardware dialog's column headers fit their Japanese words");
     }
 
     /** The preference chooses when there is no --lang (the tests' environment is LC_ALL=C.UTF-8: English); --lang beats it. */
@@ -120,7 +122,7 @@ class LanguageGuiTest {
         Map<String, String> seen = new HashMap<>();
         for (String line : out.split("\n")) {
             int eq = line.indexOf('=');
-            if (eq > 0 && line.matches("(menus|status|buttons)=.*")) {
+            if (eq > 0 && line.matches("(menus|status|buttons|clipped)=.*")) {
                 seen.put(line.substring(0, eq), line.substring(eq + 1));
             }
         }

@@ -13,8 +13,9 @@ import org.parpe.gui.text.IdeLanguage;
 /**
  * A fresh IDE process for {@link LanguageGuiTest}: chooses the language as {@code parpe gui}
  * does ({@code --lang}, the preference of the settings folder, the environment), opens the window
- * at 1366×768 with JFace's Go to Line dialog over it, prints what a user reads (the menu bar, the
- * status bar, the dialog's buttons) as {@code name=text} lines and saves a picture of it.
+ * at 1366×768 with JFace's input dialog over it, prints what a user reads (the menu bar, the
+ * status bar, the dialog's buttons) as {@code name=text} lines and saves a picture of it and one
+ * of the Hardware dialog ({@code …-hardware.png}).
  * Arguments: settings folder, picture file, and {@code --lang CODE} or nothing.
  */
 final class LanguageProbe {
@@ -45,8 +46,34 @@ final class LanguageProbe {
         System.out.println("buttons=" + String.join("|", buttons(d.getShell())) + "|" + IDialogConstants.YES_LABEL
                 + "|" + IDialogConstants.NO_LABEL);
         d.close();
+        // the biggest dialog of the window's own, beside the main window's picture
+        org.parpe.gui.hardware.HardwareDialog hardware = org.parpe.gui.hardware.HardwareDialog.open(ide);
+        Gui.settle();
+        Gui.settle();
+        Screenshot.save(hardware.shell(), Path.of(args[1].replace(".png", "-hardware.png")));
+        System.out.println("clipped=" + String.join("|", clippedHeaders(hardware.shell())));
+        hardware.shell().close();
         Gui.closeIde(ide);
         System.exit(0);
+    }
+
+    /** The column headers of the tables in {@code c} narrower than their text (and the header's padding). */
+    private static List<String> clippedHeaders(org.eclipse.swt.widgets.Composite c) {
+        List<String> out = new ArrayList<>();
+        for (org.eclipse.swt.widgets.Control k : c.getChildren()) {
+            if (k instanceof org.eclipse.swt.widgets.Table t) {
+                org.eclipse.swt.graphics.GC gc = new org.eclipse.swt.graphics.GC(t);
+                for (org.eclipse.swt.widgets.TableColumn col : t.getColumns()) {
+                    if (col.getWidth() < gc.textExtent(col.getText()).x + 12) {
+                        out.add(col.getText());
+                    }
+                }
+                gc.dispose();
+            } else if (k instanceof org.eclipse.swt.widgets.Composite inner) {
+                out.addAll(clippedHeaders(inner));
+            }
+        }
+        return out;
     }
 
     private static List<String> buttons(org.eclipse.swt.widgets.Composite c) {
