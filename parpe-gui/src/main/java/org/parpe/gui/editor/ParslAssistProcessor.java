@@ -85,7 +85,9 @@ public final class ParslAssistProcessor implements IContentAssistProcessor {
             names.automata().forEach(s -> m.put(s, Msg.KIND_AUTOMATON.text()));
         }
         for (String word : Vocabulary.fixedChildren(path)) {
-            m.put(word, describe(Vocabulary.elementAt(path, word)));
+            // a section is explained as the quick reference explains it, in the IDE's language
+            String holds = path.size() == 1 ? org.parpe.gui.help.HelpText.sectionHolds(word) : null;
+            m.put(word, holds != null ? holds : describe(Vocabulary.elementAt(path, word)));
         }
         return m;
     }

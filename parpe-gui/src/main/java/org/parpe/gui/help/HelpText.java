@@ -21,6 +21,16 @@ public final class HelpText {
         };
     }
 
+    /** What section {@code name} ({@code states}, without brackets) holds, as the quick reference says; null for another word. */
+    public static String sectionHolds(String name) {
+        for (String[] row : sections()) {
+            if (row[0].equals("<" + name + ">")) {
+                return row[1];
+            }
+        }
+        return null;
+    }
+
     /** The lines under the table; the first is the one above it. */
     public static String[] notes() {
         return new String[] {UiMsg.NOTE_SECTIONS.text(), UiMsg.NOTE_EDITING.text(), UiMsg.NOTE_RUNNING.text(),
