@@ -23,6 +23,8 @@ public final class Main {
     }
 
     public static void main(String[] args) {
+        // as the command line: its messages in UTF-8 where the locale says so though Java fell back to ASCII
+        org.parpe.core.text.Terminal.utf8WhereNamed(System::getenv);
         System.exit(run(args));
     }
 

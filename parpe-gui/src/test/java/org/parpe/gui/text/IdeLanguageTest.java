@@ -31,6 +31,23 @@ class IdeLanguageTest {
         assertEquals("unknown language 'fr'; PARPE speaks en, de, es, ja", e.getMessage());
     }
 
+    /**
+     * {@code LC_ALL=ja_JP.UTF-8} where that locale is not installed (a fresh container): Java
+     * falls back to ASCII, and {@code parpe gui}'s messages came out as {@code ?}; they are UTF-8,
+     * as the command line's are.
+     */
+    @Test
+    void messagesAreUtf8WhereTheLocaleSaysSoThoughItIsNotInstalled() throws Exception {
+        ProcessBuilder pb = new ProcessBuilder(java.nio.file.Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-cp", System.getProperty("java.class.path"), "org.parpe.gui.Main", "--lang", "ja", "--run-for", "x");
+        pb.environment().put("LC_ALL", "ja_JP.UTF-8");
+        pb.redirectErrorStream(true);
+        Process p = pb.start();
+        String out = new String(p.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+        assertEquals(2, p.waitFor());
+        assertTrue(out.contains("--run-for は 0 以上の秒数でなければなりません"), out);
+    }
+
     @Test
     void parpeGuiTakesLang() {
         assertEquals("de", LaunchOptions.parse(List.of("x.xml", "--lang", "de")).lang());
