@@ -49,6 +49,7 @@ public final class RunToolBar {
         for (Speed s : Speed.values()) {
             speed.add(s.label());
         }
+        fitItems(speed);
         speed.select(index(Speed.values(), prefs.get("run.speed", Speed.REAL_TIME.name()), Speed::name));
         speed.addListener(SWT.Selection, e -> {
             actions.controller().setSpeed(speed());
@@ -58,6 +59,7 @@ public final class RunToolBar {
         for (RunOn t : RunOn.values()) {
             target.add(t.label());
         }
+        fitItems(target);
         // Every session starts on the simulator; each file keeps its own target (RunChoices).
         target.select(RunOn.SIMULATOR.ordinal());
         target.setToolTipText(UiMsg.TOOL_TARGET_TIP.text());
@@ -130,6 +132,12 @@ public final class RunToolBar {
         gd.widthHint = width;
         c.setLayoutData(gd);
         return c;
+    }
+
+    /** Widens {@code c} to its longest item, which is longer in some languages ("So schnell wie möglich"). */
+    private static void fitItems(Combo c) {
+        GridData gd = (GridData) c.getLayoutData();
+        gd.widthHint = Math.max(gd.widthHint, c.computeSize(SWT.DEFAULT, SWT.DEFAULT).x);
     }
 
     private void updatePort() {

@@ -44,6 +44,7 @@ class LanguageGuiTest {
         assertEquals("Simulator: bereit|Hardware: nicht verbunden", seen.get("status"));
         assertEquals("Abbrechen|OK|&Ja|&Nein", seen.get("buttons"));
         assertEquals("", seen.get("clipped"), "the Hardware dialog's column headers fit their German words");
+        assertEquals("", seen.get("cut"), "the window's choice boxes fit their German items");
     }
 
     @Test
@@ -52,6 +53,7 @@ class LanguageGuiTest {
         assertEquals("ファイル(&F)|編集(&E)|実行(&R)|表示(&V)|ヘルプ(&H)", seen.get("menus"));
         assertEquals("キャンセル|OK|はい(&Y)|いいえ(&N)", seen.get("buttons"));
         assertEquals("", seen.get("clipped"), "the Hardware dialog's column headers fit their Japanese words");
+        assertEquals("", seen.get("cut"), "the window's choice boxes fit their Japanese items");
     }
 
     /** The preference chooses when there is no --lang (the tests' environment is LC_ALL=C.UTF-8: English); --lang beats it. */
@@ -122,7 +124,7 @@ class LanguageGuiTest {
         Map<String, String> seen = new HashMap<>();
         for (String line : out.split("\n")) {
             int eq = line.indexOf('=');
-            if (eq > 0 && line.matches("(menus|status|buttons|clipped)=.*")) {
+            if (eq > 0 && line.matches("(menus|status|buttons|clipped|cut)=.*")) {
                 seen.put(line.substring(0, eq), line.substring(eq + 1));
             }
         }

@@ -41,6 +41,7 @@ final class LanguageProbe {
         Gui.settle();
         Screenshot.save(ide.shell(), Path.of(args[1]));
         System.out.println("menus=" + String.join("|", menus));
+        System.out.println("cut=" + String.join("|", cutCombos(ide.shell())));
         System.out.println("status=" + ide.status().sim() + "|" + ide.status().hardware());
         // the dialog's own buttons in GTK's order (Cancel, OK, as JFace labels them), then JFace's Yes and No
         System.out.println("buttons=" + String.join("|", buttons(d.getShell())) + "|" + IDialogConstants.YES_LABEL
@@ -55,6 +56,21 @@ final class LanguageProbe {
         hardware.shell().close();
         Gui.closeIde(ide);
         System.exit(0);
+    }
+
+    /** The shown texts of the visible choice boxes in {@code c} narrower than their longest item. */
+    private static List<String> cutCombos(org.eclipse.swt.widgets.Composite c) {
+        List<String> out = new ArrayList<>();
+        for (org.eclipse.swt.widgets.Control k : c.getChildren()) {
+            if (k instanceof org.eclipse.swt.widgets.Combo box && box.isVisible()
+                    && (box.getStyle() & org.eclipse.swt.SWT.READ_ONLY) != 0
+                    && box.getSize().x < box.computeSize(org.eclipse.swt.SWT.DEFAULT, org.eclipse.swt.SWT.DEFAULT).x) {
+                out.add(box.getText());
+            } else if (k instanceof org.eclipse.swt.widgets.Composite inner) {
+                out.addAll(cutCombos(inner));
+            }
+        }
+        return out;
     }
 
     /** The column headers of the tables in {@code c} narrower than their text (and the header's padding). */
