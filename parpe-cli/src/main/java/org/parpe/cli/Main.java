@@ -76,30 +76,9 @@ public final class Main implements Runnable {
         System.exit(execute(args, System.out, System.err));
     }
 
-    /**
-     * Writes UTF-8 to standard output and error when the locale variables name a UTF-8 locale
-     * ({@code LC_ALL}, else {@code LC_CTYPE}, else {@code LANG}) but Java chose another encoding:
-     * the JVM falls back to ASCII where the named locale is not installed (a fresh container with
-     * {@code LANG=de_DE.UTF-8}), and would print umlauts and Japanese as {@code ?}.
-     */
+    /** Standard output and error in UTF-8 where the locale names it ({@link org.parpe.core.text.Terminal}). */
     static void utf8Terminal(UnaryOperator<String> env) {
-        terminal = java.nio.charset.Charset.defaultCharset();
-        String chosen = null;
-        for (String v : new String[] {"LC_ALL", "LC_CTYPE", "LANG"}) {
-            String value = env.apply(v);
-            if (value != null && !value.isEmpty()) {
-                chosen = value.toLowerCase(Locale.ROOT);
-                break;
-            }
-        }
-        if (chosen != null && (chosen.contains("utf-8") || chosen.contains("utf8"))
-                && !java.nio.charset.Charset.defaultCharset().equals(java.nio.charset.StandardCharsets.UTF_8)) {
-            System.setOut(new PrintStream(new java.io.FileOutputStream(java.io.FileDescriptor.out), true,
-                    java.nio.charset.StandardCharsets.UTF_8));
-            System.setErr(new PrintStream(new java.io.FileOutputStream(java.io.FileDescriptor.err), true,
-                    java.nio.charset.StandardCharsets.UTF_8));
-            terminal = java.nio.charset.StandardCharsets.UTF_8;
-        }
+        terminal = org.parpe.core.text.Terminal.utf8WhereNamed(env);
     }
 
     /** {@code --version}: PARPE's version from the build. */

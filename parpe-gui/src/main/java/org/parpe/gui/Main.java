@@ -11,9 +11,11 @@ import org.parpe.gui.automation.Automation;
 import org.parpe.gui.automation.Bench;
 import org.parpe.gui.app.IdeWindow;
 import org.parpe.gui.prefs.Prefs;
+import org.parpe.gui.text.IdeLanguage;
+import org.parpe.gui.text.UiMsg;
 
 /**
- * Entry point of the IDE: {@code parpe gui [FILE] [--run-for S] [--screenshot F] [--exit] [--bench]}.
+ * Entry point of the IDE: {@code parpe gui [FILE] [--run-for S] [--screenshot F] [--exit] [--bench] [--lang CODE]}.
  * Exit codes: 0 success, 1 the script had errors or the run failed, 2 usage or start-up problems.
  */
 public final class Main {
@@ -21,6 +23,8 @@ public final class Main {
     }
 
     public static void main(String[] args) {
+        // as the command line: its messages in UTF-8 where the locale says so though Java fell back to ASCII
+        org.parpe.core.text.Terminal.utf8WhereNamed(System::getenv);
         System.exit(run(args));
     }
 
@@ -31,12 +35,21 @@ public final class Main {
         if (!list.isEmpty() && list.get(0).equals("gui")) {
             list = list.subList(1, list.size());
         }
+        Prefs prefs = new Prefs(Prefs.defaultHome());
+        // the language of the preference or the environment for the options' own messages, until --lang is read
+        org.parpe.core.text.Lang.use(IdeLanguage.choose(null, prefs.get(IdeLanguage.PREFERENCE, null), System::getenv));
         LaunchOptions options;
         try {
             options = LaunchOptions.parse(list);
         } catch (IllegalArgumentException e) {
             System.err.println("parpe gui: error: " + e.getMessage());
             System.err.println(LaunchOptions.USAGE);
+            return 2;
+        }
+        try {
+            IdeLanguage.use(IdeLanguage.choose(options.lang(), prefs.get(IdeLanguage.PREFERENCE, null), System::getenv));
+        } catch (IllegalArgumentException e) {
+            System.err.println("parpe gui: error: " + e.getMessage());
             return 2;
         }
         if (options.help()) {
@@ -48,7 +61,7 @@ public final class Main {
                 // the command line's rule for an input file: the same words for a folder, a FIFO, a missing file
                 org.parpe.core.xml.InputFiles.checkKind(options.file());
             } catch (java.io.IOException e) {
-                System.err.println("parpe gui: error: cannot read " + options.file() + ": " + e.getMessage());
+                System.err.println("parpe gui: error: " + UiMsg.CANNOT_READ_FILE.text(options.file(), e.getMessage()));
                 return 2;
             }
         }
@@ -57,22 +70,20 @@ public final class Main {
         try {
             display = new Display();
         } catch (SWTError | UnsatisfiedLinkError e) {
-            System.err.println("parpe gui: error: cannot open a window (" + e.getMessage() + "); "
-                    + "is there a display? DISPLAY=" + System.getenv("DISPLAY")
-                    + ". On a machine without a screen, run it under xvfb-run.");
+            System.err.println("parpe gui: error: " + UiMsg.NO_DISPLAY.text(e.getMessage(), System.getenv("DISPLAY")));
             return 2;
         }
         try {
-            return options.bench() ? Bench.run(display, started) : loop(display, options);
+            return options.bench() ? Bench.run(display, started) : loop(display, options, prefs);
         } finally {
             display.dispose();
         }
     }
 
-    private static int loop(Display display, LaunchOptions options) {
+    private static int loop(Display display, LaunchOptions options, Prefs prefs) {
         // The installed PARPE copies its examples to the user's own folder on first use.
         org.parpe.gui.files.Examples.folder();
-        IdeWindow ide = new IdeWindow(display, new Prefs(Prefs.defaultHome()));
+        IdeWindow ide = new IdeWindow(display, prefs);
         ide.open(options.file(), options.automated());
         Automation auto = options.automated() ? Automation.start(ide, options) : null;
         return dispatch(display, ide, auto);
@@ -93,9 +104,9 @@ public final class Main {
                 }
             } catch (RuntimeException | Error e) {
                 String file = ide.internalError(e);
-                System.err.println("parpe gui: internal error (" + e + "); details in " + file);
+                System.err.println("parpe gui: " + UiMsg.INTERNAL_ERROR_EVENT.text(e, file));
                 if (auto != null) {
-                    auto.fail("internal error: " + e);
+                    auto.fail(UiMsg.INTERNAL_ERROR_EVENT.text(e, file));
                 }
             }
         }

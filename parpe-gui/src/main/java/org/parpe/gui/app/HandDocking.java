@@ -1,5 +1,6 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.text.UiMsg;
 import java.util.Locale;
 import org.eclipse.jface.dialogs.MessageDialog;
 import org.eclipse.swt.widgets.Shell;
@@ -17,7 +18,9 @@ import org.parpe.gui.run.RunController;
  */
 final class HandDocking implements PlateSink {
     /** The question's title (tests find its window by it). */
-    static final String TITLE = "Join or part plates by hand";
+    static String title() {
+        return UiMsg.HAND_TITLE.text();
+    }
 
     private final IdeWindow ide;
     private final RunController controller;
@@ -33,15 +36,14 @@ final class HandDocking implements PlateSink {
     /** On the engine thread: pauses the run and asks on the UI thread. */
     @Override
     public void plates(long tick, double time, byte[] actions, SourcePos[] where) {
-        StringBuilder what = new StringBuilder(String.format(Locale.ROOT, "At t = %.3f s the script", time));
+        StringBuilder what = new StringBuilder(UiMsg.HAND_AT.text(String.format(Locale.ROOT, "%.3f", time)));
         for (int j = 0; j < actions.length; j++) {
             if (actions[j] != NONE) {
-                what.append(String.format(Locale.ROOT, "%n\u2022 %s plate %d of module %d: %s", actions[j] == ARM
-                        ? "arms" : "releases", j & 1, ids[j >> 1], PlatesByHand.task(actions[j])));
+                what.append('\n').append((actions[j] == ARM ? UiMsg.HAND_ARMS : UiMsg.HAND_RELEASES).text(j & 1, ids[j >> 1],
+                        PlatesByHand.task(actions[j])));
             }
         }
-        what.append(String.format(Locale.ROOT, "%n%nThese modules have no latching plates. The run is paused: "
-                + "do it by hand, then press Continue."));
+        what.append("\n\n").append(UiMsg.HAND_DO_IT.text());
         controller.setPaused(true);
         String text = what.toString();
         Shell shell = ide.shell();
@@ -54,10 +56,10 @@ final class HandDocking implements PlateSink {
         if (ide.shell().isDisposed() || !controller.running()) {
             return;
         }
-        ide.status().setMessage("Paused: join or part plates by hand, then Continue");
+        ide.status().setMessage(UiMsg.HAND_PAUSED.text());
         ide.runStateChanged();
-        MessageDialog d = new MessageDialog(ide.shell(), TITLE, null, text, MessageDialog.INFORMATION, 0,
-                "Continue", "Stop") {
+        MessageDialog d = new MessageDialog(ide.shell(), title(), null, text, MessageDialog.INFORMATION, 0,
+                UiMsg.HAND_CONTINUE.text(), UiMsg.TOOL_STOP.text()) {
             @Override
             protected void buttonPressed(int button) {
                 super.buttonPressed(button);
@@ -65,7 +67,7 @@ final class HandDocking implements PlateSink {
                     controller.stop();
                 } else if (controller.running()) {
                     controller.setPaused(false);
-                    ide.status().setMessage("Running");
+                    ide.status().setMessage(UiMsg.RUN_RUNNING.text());
                 }
                 ide.runStateChanged();
             }

@@ -1,5 +1,6 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.text.UiMsg;
 import org.parpe.gui.prefs.Prefs;
 import org.parpe.gui.run.CrashLog;
 
@@ -65,6 +66,8 @@ public final class IdeWindow implements HardwareHost {
     private final StyledText log;
     private String lastCrash;
     private String lastCrashFile;
+    /** The problem counts the status bar says now (renewed when Problems changes), or null. */
+    private String shownCounts;
     private final OutlineView outline;
     private final View3D view;
     private final ViewBar viewBar;
@@ -105,7 +108,7 @@ public final class IdeWindow implements HardwareHost {
         main.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
         CTabFolder left = Panels.folder(main);
         outline = new OutlineView(left, this::reveal);
-        Panels.tab(left, "Outline", outline.control());
+        Panels.tab(left, UiMsg.TAB_OUTLINE.text(), outline.control());
 
         SashForm middle = new SashForm(main, SWT.VERTICAL);
         editorSplit = middle;
@@ -117,11 +120,11 @@ public final class IdeWindow implements HardwareHost {
         editorTab = Panels.tab(editorFolder, "untitled.xml", editorBox);
         bottom = Panels.folder(middle);
         problems = new ProblemsView(bottom, d -> reveal(d.pos()), this::markProblems);
-        Panels.tab(bottom, "Problems", problems.control());
+        Panels.tab(bottom, UiMsg.TAB_PROBLEMS.text(), problems.control());
         // Wrapped: a run's last lines (its score and parts) are read without scrolling sideways.
         log = new StyledText(bottom, SWT.READ_ONLY | SWT.V_SCROLL | SWT.MULTI | SWT.WRAP);
         log.setFont(org.eclipse.jface.resource.JFaceResources.getTextFont());
-        Panels.tab(bottom, "Run log", log);
+        Panels.tab(bottom, UiMsg.TAB_RUN_LOG.text(), log);
         middle.setWeights(72, 28);
 
         SashForm right = new SashForm(main, SWT.VERTICAL);
@@ -132,14 +135,14 @@ public final class IdeWindow implements HardwareHost {
         view = new View3D(viewBox);
         view.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
         viewBar.attach(view);
-        Panels.tab(viewFolder, "3D view", viewBox);
+        Panels.tab(viewFolder, UiMsg.TAB_3D_VIEW.text(), viewBox);
         CTabFolder controlFolder = Panels.folder(right);
         controls = new ControlPanel(controlFolder, runs);
-        Panels.tab(controlFolder, "Controls", controls.control());
+        Panels.tab(controlFolder, UiMsg.TAB_CONTROLS.text(), controls.control());
         CTabFolder plotFolder = Panels.folder(right);
         plots = new PlotView(plotFolder);
         org.parpe.gui.panels.ChartView.zoomAll(0); // a new window starts at the normal size, its plots too
-        Panels.tab(plotFolder, "Joint angles", plots.control());
+        Panels.tab(plotFolder, UiMsg.TAB_JOINT_ANGLES.text(), plots.control());
         right.setWeights(54, 18, 28);
         main.setWeights(15, 43, 42);
         tutorialDock = new TutorialDock(left, main);
@@ -164,9 +167,9 @@ public final class IdeWindow implements HardwareHost {
         org.parpe.gui.panels.FileDialogs.follow(files::file, org.parpe.gui.files.Examples.bundled());
         diagram = new DiagramPane(viewFolder, editor, files::pathForLoading);
         diagram.sayPlacesWith(status::setMessage);
-        Panels.tab(viewFolder, "Diagram", diagram.control());
+        Panels.tab(viewFolder, UiMsg.TAB_DIAGRAM.text(), diagram.control());
         robotTab = new org.parpe.gui.robot.RobotTab(viewFolder, new RobotBridge(this));
-        Panels.tab(viewFolder, "Robot", robotTab.control());
+        Panels.tab(viewFolder, UiMsg.TAB_ROBOT.text(), robotTab.control());
         diagram.follow(runs.controller().live(), runs::running);
         diagram.breakpoints(runs.controller().breakpoints(), () -> runs.controller().setPaused(false), this::runStateChanged);
         viewFolder.addListener(SWT.Selection, e -> {
@@ -181,7 +184,7 @@ public final class IdeWindow implements HardwareHost {
         wire(display);
         // After wire(): the panel shows its posed robot in the 3D view, and the run's otherwise.
         pose = new PosePanel(bottom, new PoseBridge(this));
-        poseTab = Panels.tab(bottom, "Pose", pose.control());
+        poseTab = Panels.tab(bottom, UiMsg.TAB_POSE.text(), pose.control());
         diagram.usePoses(pose::selectedAngles);
         diagram.openTablesWith(gaitGrid::showTable);
         bottom.addListener(SWT.Selection, e -> fitBottom());
@@ -211,7 +214,7 @@ public final class IdeWindow implements HardwareHost {
         view.setHighlighted(runs::driven);
         view.setOverlay(() -> {
             var st = runs.controller().status();
-            String entry = st == null || st.entry().isEmpty() || !runs.running() ? "" : "   behavior: " + st.entry();
+            String entry = st == null || st.entry().isEmpty() || !runs.running() ? "" : UiMsg.OVERLAY_BEHAVIOR.text(st.entry());
             var snap = runs.snapshot();
             return String.format(java.util.Locale.ROOT, "t = %.2f s%s", snap == null ? 0 : snap.time(), entry)
                     + runs.scoreText();
@@ -293,8 +296,7 @@ public final class IdeWindow implements HardwareHost {
         org.parpe.gui.panels.ChartView.zoomAll(zoom);
         diagram.zoom(zoom);
         robotTab.zoom(zoom);
-        status.setMessage(zoom == 0 ? "Text at its normal size (Ctrl+0)" : "Text " + (zoom > 0 ? "+" : "") + zoom * 2
-                + " points (View > Zoom In, Ctrl+plus; Zoom Out, Ctrl+minus; Reset Zoom, Ctrl+0)");
+        status.setMessage(zoom == 0 ? UiMsg.ZOOM_NORMAL.text() : UiMsg.ZOOM_POINTS.text((zoom > 0 ? "+" : "") + zoom * 2));
     }
 
     /** How many steps of 2 points the text is zoomed in (negative: out). */
@@ -314,16 +316,16 @@ public final class IdeWindow implements HardwareHost {
             }
             boolean running = runs.running();
             var st = runs.controller().status();
-            String simState = !toolbar.target().sim() ? "Simulator: off"
-                    : running ? (runs.controller().paused() ? "Simulator: paused" : "Simulator: running")
-                    : "Simulator: idle";
+            String simState = (!toolbar.target().sim() ? UiMsg.SIM_OFF
+                    : running ? (runs.controller().paused() ? UiMsg.SIM_PAUSED : UiMsg.SIM_RUNNING)
+                    : UiMsg.SIM_IDLE).text();
             status.setSim(simState);
             String held = hardwareHeld;
-            boolean silent = running && runs.hardwareSilentSince() >= 0;
+            long since = runs.hardwareSilentSince();
+            boolean silent = running && since >= 0;
             String hardware = held != null && !running ? held : runs.hardwareState();
-            status.setHardware(hardware, silent);
-            alarm.show(silent ? hardware.replaceFirst("^Hardware: r", "R")
-                    + ". Check the servo supply and the cable; Esc stops the run." : null);
+            status.setHardware(hardware, silent ? UiMsg.ROBOT_SILENT_MESSAGE.text(RunActions.silentTime(since)) : null);
+            alarm.show(silent ? UiMsg.ROBOT_SILENT_BANNER.text(RunActions.silentTime(since)) : null);
             if (st != null) {
                 status.setTime(st.time());
             }
@@ -358,7 +360,7 @@ public final class IdeWindow implements HardwareHost {
             }
         } else if (file != null && !file.toAbsolutePath().normalize().equals(files.file())) {
             // The recovered text stays in the editor until it is saved or set aside.
-            status.setMessage("Recovered unsaved text; " + file.getFileName() + " was not opened (File > Open it when ready).");
+            status.setMessage(UiMsg.RECOVERED_NOT_OPENED.text(file.getFileName()));
         }
         editor.widget().setFocus();
         if (!automated && (prefs.get(FIRST_START, null) == null || tutorialAtStart(prefs))) {
@@ -418,7 +420,7 @@ public final class IdeWindow implements HardwareHost {
         validations++;
         if (robotTab.documentChecked(r.program())) { // a robot configuration: its own problems
             problems.setLoadDiagnostics(robotTab.problems());
-            status.setMessage(problemCounts());
+            showProblemCounts("");
             return;
         }
         if (emptyScript()) {
@@ -437,8 +439,7 @@ public final class IdeWindow implements HardwareHost {
             runs.updatePreview(program);
         }
         if (!runs.running()) {
-            status.setMessage(problemCounts()
-                    + (editor.plain() ? "   \u2014   no colouring: the file is over " + ParslEditor.COLOUR_LIMIT / 1_000_000 + " MB" : ""));
+            showProblemCounts(editor.plain() ? UiMsg.NO_COLOURING.text(ParslEditor.COLOUR_LIMIT / 1_000_000) : "");
         }
     }
 
@@ -460,12 +461,14 @@ public final class IdeWindow implements HardwareHost {
             controls.show(null);
             runs.forgetPreview();
             view.clear();
-            status.setMessage(EMPTY);
+            status.setMessage(empty());
         }
     }
 
     /** What the status bar says of an empty file. */
-    static final String EMPTY = "The file is empty: start a robot in the Diagram tab, or type a script";
+    static String empty() {
+        return UiMsg.FILE_EMPTY.text();
+    }
 
     /**
      * What Problems holds, in words: "No problems" only when it is empty. The status bar says this
@@ -475,10 +478,17 @@ public final class IdeWindow implements HardwareHost {
         long errors = problems.errorCount();
         long warnings = problems.shown().size() - errors;
         if (errors == 0 && warnings == 0) {
-            return "No problems";
+            return UiMsg.NO_PROBLEMS.text();
         }
-        return (errors == 0 ? "" : errors + (errors == 1 ? " error" : " errors")) + (errors > 0 && warnings > 0 ? ", " : "")
-                + (warnings == 0 ? "" : warnings + (warnings == 1 ? " warning" : " warnings")) + ": see Problems";
+        String e = errors == 1 ? UiMsg.ERRORS_ONE.text() : UiMsg.ERRORS_N.text(errors);
+        String w = warnings == 1 ? UiMsg.WARNINGS_ONE.text() : UiMsg.WARNINGS_N.text(warnings);
+        return UiMsg.SEE_PROBLEMS.text(warnings == 0 ? e : errors == 0 ? w : UiMsg.ERRORS_AND_WARNINGS.text(e, w));
+    }
+
+    /** Says {@link #problemCounts()} in the status bar, then {@code more}; {@link #markProblems} renews it. */
+    private void showProblemCounts(String more) {
+        shownCounts = problemCounts() + more;
+        status.setMessage(shownCounts);
     }
 
     /** Where the tutorial docks: a tab beside Outline. */
@@ -507,8 +517,8 @@ public final class IdeWindow implements HardwareHost {
     /** The Problems view changed: mark this file's problems in the editor. */
     private void markProblems() {
         String now = status.message();
-        if (now.equals("No problems") || now.endsWith(": see Problems") || now.contains(": see Problems   ")) {
-            status.setMessage(problemCounts());
+        if (now.equals(shownCounts)) {
+            showProblemCounts("");
         }
         status.setProblems(problems.errorCount(), problems.shown().size() - problems.errorCount());
         Path mine = files.pathForLoading().toAbsolutePath().normalize();
@@ -601,7 +611,7 @@ public final class IdeWindow implements HardwareHost {
         wasRunning = running;
         toolbar.update(running, running && runs.controller().paused());
         String keys = running ? steeringKeys(runs.controller().engine() == null ? program : runs.controller().engine().program()) : "";
-        status.setKeys(keys.isEmpty() ? "" : "\u2328 " + keys + ": steer the robot");
+        status.setKeys(keys.isEmpty() ? "" : UiMsg.STATUS_STEER.text(keys));
         plots.refresh();
         if (!running && program != null) {
             controls.show(program);
@@ -644,8 +654,7 @@ public final class IdeWindow implements HardwareHost {
             lastCrashFile = CrashLog.write("handling a UI event", e);
         }
         try {
-            String message = "Internal error of PARPE (" + e + "); please attach " + lastCrashFile
-                    + " to a bug report. Your text is still in the editor.";
+            String message = UiMsg.INTERNAL_ERROR_UI.text(e, lastCrashFile);
             log(message);
             status.setMessage(message);
         } catch (RuntimeException | Error notShown) {

@@ -8,6 +8,8 @@ import org.parpe.gui.files.FileActions;
 import org.parpe.gui.hardware.HardwareDialog;
 import org.parpe.gui.help.HelpText;
 import org.parpe.gui.help.QuickReference;
+import org.parpe.gui.text.IdeLanguage;
+import org.parpe.gui.text.UiMsg;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -44,11 +46,11 @@ final class MenuBar {
 
     void install() {
         Menu bar = new Menu(ide.shell(), SWT.BAR);
-        fileMenu(submenu(bar, "&File"));
-        editMenu(submenu(bar, "&Edit"));
-        runMenu(submenu(bar, "&Run"));
-        viewMenu(submenu(bar, "&View"));
-        helpMenu(submenu(bar, "&Help"));
+        fileMenu(submenu(bar, UiMsg.MENU_FILE.text()));
+        editMenu(submenu(bar, UiMsg.MENU_EDIT.text()));
+        runMenu(submenu(bar, UiMsg.MENU_RUN.text()));
+        viewMenu(submenu(bar, UiMsg.MENU_VIEW.text()));
+        helpMenu(submenu(bar, UiMsg.MENU_HELP.text()));
         ide.shell().setMenuBar(bar);
     }
 
@@ -72,20 +74,20 @@ final class MenuBar {
 
     private void fileMenu(Menu m) {
         FileActions f = ide.files();
-        item(m, "&New\tCtrl+N", SWT.MOD1 + 'N', f::newFile);
-        item(m, "&Open\u2026\tCtrl+O", SWT.MOD1 + 'O', f::open);
-        Menu recent = submenu(m, "Open &Recent");
+        item(m, UiMsg.MENU_NEW.text() + "\tCtrl+N", SWT.MOD1 + 'N', f::newFile);
+        item(m, UiMsg.MENU_OPEN.text() + "\tCtrl+O", SWT.MOD1 + 'O', f::open);
+        Menu recent = submenu(m, UiMsg.MENU_OPEN_RECENT.text());
         recent.addListener(SWT.Show, e -> fillRecent(recent));
-        Menu examples = submenu(m, "&Examples");
+        Menu examples = submenu(m, UiMsg.MENU_EXAMPLES.text());
         examples.addListener(SWT.Show, e -> fillExamples(examples));
         new MenuItem(m, SWT.SEPARATOR);
-        item(m, "&Save\tCtrl+S", SWT.MOD1 + 'S', f::save);
-        item(m, "Save &As\u2026\tCtrl+Shift+S", SWT.MOD1 + SWT.SHIFT + 'S', f::saveAs);
+        item(m, UiMsg.MENU_SAVE.text() + "\tCtrl+S", SWT.MOD1 + 'S', f::save);
+        item(m, UiMsg.MENU_SAVE_AS.text() + "\tCtrl+Shift+S", SWT.MOD1 + SWT.SHIFT + 'S', f::saveAs);
         new MenuItem(m, SWT.SEPARATOR);
-        item(m, "Export Ro&bot\u2026", 0, this::openExportRobot);
-        item(m, "Export &Program as C/Arduino\u2026", 0, this::openExportProgram);
+        item(m, UiMsg.MENU_EXPORT_ROBOT.text(), 0, this::openExportRobot);
+        item(m, UiMsg.MENU_EXPORT_PROGRAM.text(), 0, this::openExportProgram);
         new MenuItem(m, SWT.SEPARATOR);
-        item(m, "E&xit\tCtrl+Q", SWT.MOD1 + 'Q', () -> ide.shell().close());
+        item(m, UiMsg.MENU_EXIT.text() + "\tCtrl+Q", SWT.MOD1 + 'Q', () -> ide.shell().close());
     }
 
     /** File → Export Robot…: one window per IDE window, on the open script's robot choice. */
@@ -114,7 +116,7 @@ final class MenuBar {
         }
         List<Path> files = ide.prefs().recentFiles();
         if (files.isEmpty()) {
-            new MenuItem(recent, SWT.PUSH).setText("(no recent files)");
+            new MenuItem(recent, SWT.PUSH).setText(UiMsg.NO_RECENT_FILES.text());
             recent.getItem(0).setEnabled(false);
             return;
         }
@@ -123,12 +125,12 @@ final class MenuBar {
                 if (Files.isRegularFile(p)) {
                     ide.files().openConfirmed(p);
                 } else {
-                    MessageDialog.openError(ide.shell(), "File not found", p + " no longer exists.");
+                    MessageDialog.openError(ide.shell(), UiMsg.FILE_NOT_FOUND.text(), UiMsg.NO_LONGER_EXISTS.text(p));
                 }
             });
         }
         new MenuItem(recent, SWT.SEPARATOR);
-        item(recent, "Clear list", 0, ide.prefs()::clearRecent);
+        item(recent, UiMsg.CLEAR_LIST.text(), 0, ide.prefs()::clearRecent);
     }
 
     private void fillExamples(Menu examples) {
@@ -138,7 +140,7 @@ final class MenuBar {
         List<Path> list = Examples.list();
         if (list.isEmpty()) {
             MenuItem none = new MenuItem(examples, SWT.PUSH);
-            none.setText("(no examples folder found; set -Dparpe.examples=DIR)");
+            none.setText(UiMsg.NO_EXAMPLES_FOLDER.text());
             none.setEnabled(false);
         }
         for (Path p : list) {
@@ -147,7 +149,7 @@ final class MenuBar {
         List<Path> lessons = Examples.lessons();
         if (!lessons.isEmpty()) {
             new MenuItem(examples, SWT.SEPARATOR);
-            Menu tutorial = submenu(examples, "&Tutorial lessons");
+            Menu tutorial = submenu(examples, UiMsg.MENU_TUTORIAL_LESSONS.text());
             for (Path p : lessons) {
                 item(tutorial, p.getFileName().toString(), 0, () -> ide.files().openExample(p));
             }
@@ -155,21 +157,21 @@ final class MenuBar {
     }
 
     private void editMenu(Menu m) {
-        item(m, "&Undo\tCtrl+Z", SWT.MOD1 + 'Z', () -> ide.editor().run(ITextOperationTarget.UNDO));
-        item(m, "&Redo\tCtrl+Y", SWT.MOD1 + 'Y', () -> ide.editor().run(ITextOperationTarget.REDO));
+        item(m, UiMsg.MENU_UNDO.text() + "\tCtrl+Z", SWT.MOD1 + 'Z', () -> ide.editor().run(ITextOperationTarget.UNDO));
+        item(m, UiMsg.MENU_REDO.text() + "\tCtrl+Y", SWT.MOD1 + 'Y', () -> ide.editor().run(ITextOperationTarget.REDO));
         new MenuItem(m, SWT.SEPARATOR);
-        item(m, "Cu&t\tCtrl+X", SWT.MOD1 + 'X', () -> textOp(ITextOperationTarget.CUT));
-        item(m, "&Copy\tCtrl+C", SWT.MOD1 + 'C', () -> textOp(ITextOperationTarget.COPY));
-        item(m, "&Paste\tCtrl+V", SWT.MOD1 + 'V', () -> textOp(ITextOperationTarget.PASTE));
-        item(m, "Select &All\tCtrl+A", SWT.MOD1 + 'A', () -> textOp(ITextOperationTarget.SELECT_ALL));
+        item(m, UiMsg.MENU_CUT.text() + "\tCtrl+X", SWT.MOD1 + 'X', () -> textOp(ITextOperationTarget.CUT));
+        item(m, UiMsg.MENU_COPY.text() + "\tCtrl+C", SWT.MOD1 + 'C', () -> textOp(ITextOperationTarget.COPY));
+        item(m, UiMsg.MENU_PASTE.text() + "\tCtrl+V", SWT.MOD1 + 'V', () -> textOp(ITextOperationTarget.PASTE));
+        item(m, UiMsg.MENU_SELECT_ALL.text() + "\tCtrl+A", SWT.MOD1 + 'A', () -> textOp(ITextOperationTarget.SELECT_ALL));
         new MenuItem(m, SWT.SEPARATOR);
-        item(m, "&Find/Replace\u2026\tCtrl+F", SWT.MOD1 + 'F', this::openFind);
+        item(m, UiMsg.MENU_FIND_REPLACE.text() + "\tCtrl+F", SWT.MOD1 + 'F', this::openFind);
         // The editor's key (ParslEditor); GTK would not show "Ctrl+Space" after a tab.
-        item(m, "Content &Assist (Ctrl+Space)", 0, () -> {
+        item(m, UiMsg.MENU_CONTENT_ASSIST.text(), 0, () -> {
             ide.editor().widget().setFocus();
             ide.editor().run(ISourceViewer.CONTENTASSIST_PROPOSALS);
         });
-        item(m, "&Go to Line\u2026\tCtrl+L", SWT.MOD1 + 'L', this::gotoLine);
+        item(m, UiMsg.MENU_GO_TO_LINE.text() + "\tCtrl+L", SWT.MOD1 + 'L', this::gotoLine);
     }
 
     /** Clipboard operations go to the text field that has the focus, else to the editor. */
@@ -207,12 +209,12 @@ final class MenuBar {
 
     private void gotoLine() {
         int lines = ide.editor().document().getNumberOfLines();
-        InputDialog d = new InputDialog(ide.shell(), "Go to Line", "Line (1\u2013" + lines + "):", "", s -> {
+        InputDialog d = new InputDialog(ide.shell(), UiMsg.GO_TO_LINE.text(), UiMsg.LINE_RANGE.text(lines), "", s -> {
             try {
                 int n = Integer.parseInt(s.trim());
-                return n >= 1 && n <= lines ? null : "Enter a line between 1 and " + lines;
+                return n >= 1 && n <= lines ? null : UiMsg.ENTER_LINE_BETWEEN.text(lines);
             } catch (NumberFormatException e) {
-                return "Enter a line number";
+                return UiMsg.ENTER_LINE_NUMBER.text();
             }
         });
         if (d.open() == Window.OK) {
@@ -222,16 +224,16 @@ final class MenuBar {
 
     private void runMenu(Menu m) {
         RunActions r = ide.runs();
-        item(m, "&Run\tF5", SWT.F5, () -> r.run(true, -1, null));
-        item(m, "&Pause/Resume\tF6", SWT.F6, r::pause);
-        item(m, "&Stop\tShift+F5", SWT.SHIFT + SWT.F5, r::stop);
+        item(m, UiMsg.MENU_RUN_RUN.text() + "\tF5", SWT.F5, () -> r.run(true, -1, null));
+        item(m, UiMsg.MENU_PAUSE_RESUME.text() + "\tF6", SWT.F6, r::pause);
+        item(m, UiMsg.MENU_STOP.text() + "\tShift+F5", SWT.SHIFT + SWT.F5, r::stop);
         // Esc is the window's (IdeWindow's key filter: anywhere, dialogs too), not a menu accelerator, and GTK shows
         // the text after a tab only for a key it can read (not Esc): the key is named in the label, as on the tool bar.
-        item(m, "&Emergency Stop (Esc)", 0, r::emergencyStop);
+        item(m, UiMsg.MENU_EMERGENCY_STOP.text(), 0, r::emergencyStop);
         new MenuItem(m, SWT.SEPARATOR);
-        item(m, "&Hardware\u2026", 0, () -> HardwareDialog.open(ide));
-        item(m, "S&weep / Optimise\u2026", 0, this::openSweep);
-        item(m, "Grade a &Class\u2026", 0, this::openClass);
+        item(m, UiMsg.MENU_HARDWARE.text(), 0, () -> HardwareDialog.open(ide));
+        item(m, UiMsg.MENU_SWEEP.text(), 0, this::openSweep);
+        item(m, UiMsg.MENU_GRADE_CLASS.text(), 0, this::openClass);
     }
 
     /** Run → Grade a Class…: one Class window per IDE window. */
@@ -256,22 +258,50 @@ final class MenuBar {
     private void viewMenu(Menu m) {
         // The keys are the window's own (a filter catches them wherever the focus is, the keypad's
         // too); the accelerators only show them, so that a key press is one step, not two.
-        item(m, "Zoom &In\tCtrl++", SWT.MOD1 + '+', () -> ide.zoom(1));
-        item(m, "Zoom &Out\tCtrl+\u2212", SWT.MOD1 + '-', () -> ide.zoom(-1));
-        item(m, "Reset &Zoom\tCtrl+0", SWT.MOD1 + '0', () -> ide.zoom(0));
+        item(m, UiMsg.MENU_ZOOM_IN.text() + "\tCtrl++", SWT.MOD1 + '+', () -> ide.zoom(1));
+        item(m, UiMsg.MENU_ZOOM_OUT.text() + "\tCtrl+\u2212", SWT.MOD1 + '-', () -> ide.zoom(-1));
+        item(m, UiMsg.MENU_RESET_ZOOM.text() + "\tCtrl+0", SWT.MOD1 + '0', () -> ide.zoom(0));
         new MenuItem(m, SWT.SEPARATOR);
-        item(m, "Reset &3D View", 0, () -> ide.view().resetView());
-        item(m, "Clear Run &Log", 0, ide::clearLog);
+        item(m, UiMsg.MENU_RESET_3D.text(), 0, () -> ide.view().resetView());
+        item(m, UiMsg.MENU_CLEAR_LOG.text(), 0, ide::clearLog);
+        new MenuItem(m, SWT.SEPARATOR);
+        languageMenu(submenu(m, UiMsg.MENU_LANGUAGE.text()));
+    }
+
+    /**
+     * View → Language: as the system, or one of the languages PARPE speaks, each named in itself;
+     * kept in the preferences, spoken from the next start (docs/ide.md, "Language").
+     */
+    private void languageMenu(Menu m) {
+        String chosen = ide.prefs().get(IdeLanguage.PREFERENCE, "");
+        language(m, UiMsg.LANGUAGE_SYSTEM.text(), "", chosen);
+        new MenuItem(m, SWT.SEPARATOR);
+        for (java.util.Locale l : org.parpe.core.text.Lang.SUPPORTED) {
+            String name = l.getDisplayLanguage(l);
+            language(m, name.substring(0, 1).toUpperCase(l) + name.substring(1), l.getLanguage(), chosen);
+        }
+    }
+
+    private void language(Menu m, String text, String code, String chosen) {
+        MenuItem it = new MenuItem(m, SWT.RADIO);
+        it.setText(text);
+        it.setSelection(code.equals(chosen));
+        it.addListener(SWT.Selection, e -> {
+            if (it.getSelection() && !code.equals(ide.prefs().get(IdeLanguage.PREFERENCE, ""))) {
+                ide.prefs().put(IdeLanguage.PREFERENCE, code);
+                MessageDialog.openInformation(ide.shell(), UiMsg.LANGUAGE_TITLE.text(), UiMsg.LANGUAGE_AFTER_RESTART.text());
+            }
+        });
     }
 
     private void helpMenu(Menu m) {
-        item(m, "&Tutorial", 0, this::openTutorial);
+        item(m, UiMsg.MENU_TUTORIAL.text(), 0, this::openTutorial);
         MenuItem atStart = new MenuItem(m, SWT.CHECK);
-        atStart.setText("Open the Tutorial at &Every Start");
+        atStart.setText(UiMsg.MENU_TUTORIAL_AT_START.text());
         atStart.setSelection(IdeWindow.tutorialAtStart(ide.prefs()));
         atStart.addListener(SWT.Selection, e -> ide.prefs().put(IdeWindow.TUTORIAL_AT_START, atStart.getSelection() ? "yes" : "no"));
-        item(m, "PARSL &Quick Reference", SWT.F1, () -> QuickReference.open(ide.shell()));
-        item(m, "&About PARPE", 0, () -> MessageDialog.openInformation(ide.shell(), "About PARPE", HelpText.ABOUT));
+        item(m, UiMsg.MENU_QUICK_REFERENCE.text(), SWT.F1, () -> QuickReference.open(ide.shell()));
+        item(m, UiMsg.MENU_ABOUT.text(), 0, () -> MessageDialog.openInformation(ide.shell(), UiMsg.ABOUT_TITLE.text(), HelpText.about()));
     }
 
     /**
@@ -282,8 +312,7 @@ final class MenuBar {
     TutorialWindow openTutorial() {
         Path folder = Examples.tutorialFolder();
         if (folder == null) {
-            MessageDialog.openInformation(ide.shell(), "Tutorial", "The tutorial (docs/tutorial) was not found next to the"
-                    + " examples. It is also online with the PARPE sources, in docs/tutorial/index.md.");
+            MessageDialog.openInformation(ide.shell(), UiMsg.TUTORIAL_TITLE.text(), UiMsg.TUTORIAL_NOT_FOUND.text());
             return null;
         }
         java.util.function.Consumer<Path> open = p -> ide.files().openExample(p);
@@ -313,7 +342,7 @@ final class MenuBar {
         try {
             edit = SectionEdits.placeSections(text, ide.files().name(), code);
         } catch (IllegalArgumentException e) {
-            ide.status().setMessage("The lesson's code was not inserted: " + e.getMessage());
+            ide.status().setMessage(UiMsg.LESSON_CODE_NOT_INSERTED.text(e.getMessage()));
             return;
         }
         if (edit == null) {
@@ -323,11 +352,11 @@ final class MenuBar {
         try {
             at = ide.editor().apply(edit);
         } catch (org.eclipse.jface.text.BadLocationException e) {
-            ide.status().setMessage("The lesson's code was not inserted: " + e.getMessage());
+            ide.status().setMessage(UiMsg.LESSON_CODE_NOT_INSERTED.text(e.getMessage()));
             return;
         }
         if (at < 0) {
-            ide.status().setMessage("The lesson's code adds nothing: its sections are empty.");
+            ide.status().setMessage(UiMsg.LESSON_CODE_ADDS_NOTHING.text());
             return;
         }
         String now = ide.editor().document().get();
@@ -335,7 +364,6 @@ final class MenuBar {
             at++;
         }
         ide.shell().forceActive();
-        ide.status().setMessage("The lesson's code is in the editor from line " + (w.getLineAtOffset(at) + 1)
-                + " (Edit > Undo takes it back).");
+        ide.status().setMessage(UiMsg.LESSON_CODE_INSERTED.text(w.getLineAtOffset(at) + 1));
     }
 }

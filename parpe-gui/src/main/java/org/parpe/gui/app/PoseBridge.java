@@ -1,5 +1,6 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.text.UiMsg;
 import org.parpe.gui.hardware.ConnectedRobot;
 import org.parpe.gui.hardware.HardwareDialog;
 
@@ -107,8 +108,8 @@ final class PoseBridge implements PoseHost {
             DiagnosticList problems = new DiagnosticList();
             profile = ProfileReader.read(Path.of(file), problems);
             if (profile == null) {
-                ide.status().setMessage("The hardware profile " + file + " has errors: "
-                        + (problems.all().isEmpty() ? "" : problems.all().get(0).format()));
+                ide.status().setMessage(UiMsg.PROFILE_HAS_ERRORS_FIRST.text(file,
+                        problems.all().isEmpty() ? "" : problems.all().get(0).format()));
                 return null;
             }
         }

@@ -1,5 +1,6 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.text.UiMsg;
 import java.nio.file.Path;
 import org.parpe.core.model.Program;
 import org.parpe.core.run.RunOutcome;
@@ -54,7 +55,7 @@ final class RobotBridge implements RobotHost {
         // the one run path: the Pose panel's playback runs a program made elsewhere on a robot of its choice
         ide.runs().play(program, RunOn.SIMULATOR, robot, outcome -> {
             if (outcome.status() == RunOutcome.Status.ERROR) {
-                ide.sayLater("Try it: " + outcome.message());
+                ide.sayLater(UiMsg.TRY_IT_FAILED.text(outcome.message()));
             }
         });
     }

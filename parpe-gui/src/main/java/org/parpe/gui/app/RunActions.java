@@ -1,5 +1,6 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.text.UiMsg;
 import org.parpe.gui.hardware.HardwareDialog;
 
 import java.nio.file.Path;
@@ -59,7 +60,7 @@ public final class RunActions implements ControlPanel.ControlSink {
     private volatile Simulator sim;
     private volatile ServoDriver servos;
     private volatile SimSnapshot preview;
-    private volatile String hardwareState = "Hardware: not connected";
+    private volatile String hardwareState = UiMsg.HW_NOT_CONNECTED.text();
     private String previewKey = "";
     private RunOutcome lastOutcome;
     /** Whether the run going on was ended by the emergency stop. */
@@ -118,8 +119,13 @@ public final class RunActions implements ControlPanel.ControlSink {
 
     String hardwareState() {
         long since = hardwareSilentSince();
-        return since < 0 ? hardwareState : "Hardware: robot not responding since " + java.time.LocalTime.ofInstant(
-                java.time.Instant.ofEpochMilli(since), java.time.ZoneId.systemDefault()).withNano(0);
+        return since < 0 ? hardwareState : UiMsg.HW_NOT_RESPONDING.text(silentTime(since));
+    }
+
+    /** The wall-clock time {@code since} (ms), as the status bar says when the robot went silent. */
+    static String silentTime(long since) {
+        return java.time.LocalTime.ofInstant(java.time.Instant.ofEpochMilli(since), java.time.ZoneId.systemDefault())
+                .withNano(0).toString();
     }
 
     /** Since when (wall-clock ms) the run's servos or G1 modules have not answered; −1 while they do or none are driven. */
@@ -144,15 +150,15 @@ public final class RunActions implements ControlPanel.ControlSink {
         }
         if (ide.toolbar().target().hardware() && ide.hardwareHeld() != null) {
             // Two owners of one serial port would garble each other's packets.
-            String why = "the Hardware dialog holds the bus; close it first";
-            ide.status().setMessage("Cannot run: " + why + ".");
+            String why = UiMsg.HARDWARE_DIALOG_HOLDS_BUS.text();
+            ide.status().setMessage(UiMsg.CANNOT_RUN.text(why));
             ide.shell().getDisplay().beep();
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, why));
             return;
         }
         if (ide.emptyScript()) {
-            ide.status().setMessage("Cannot run: t" + IdeWindow.EMPTY.substring(1));
-            report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, "the file is empty"));
+            ide.status().setMessage(UiMsg.CANNOT_RUN_EMPTY.text());
+            report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, UiMsg.OUTCOME_FILE_EMPTY.text()));
             return;
         }
         Path path = ide.files().pathForLoading();
@@ -160,15 +166,15 @@ public final class RunActions implements ControlPanel.ControlSink {
         LoadResult first = Validator.load(path, text, Map.of());
         ide.showValidation(first);
         if (first.program() == null) {
-            ide.status().setMessage("Cannot run: fix the " + first.errors().size() + " error(s) listed in Problems first.");
+            ide.status().setMessage(UiMsg.CANNOT_RUN_ERRORS.text(first.errors().size()));
             ide.showProblems();
             ide.shell().getDisplay().beep();
-            report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, "script has errors"));
+            report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, UiMsg.OUTCOME_SCRIPT_ERRORS.text()));
             return;
         }
         Map<String, Double> params = parameters(first.program(), interactive);
         if (params == null) {
-            ide.status().setMessage("Run cancelled.");
+            ide.status().setMessage(UiMsg.RUN_CANCELLED.text());
             return;
         }
         LoadResult loaded = params.isEmpty() ? first : Validator.load(path, text, params);
@@ -176,9 +182,9 @@ public final class RunActions implements ControlPanel.ControlSink {
             ide.showValidation(loaded);
             ide.clearRunProblems();
             loaded.parameterErrors().forEach(ide::runProblemLater);
-            String why = loaded.parameterErrors().isEmpty() ? "the script has errors with these parameter values"
+            String why = loaded.parameterErrors().isEmpty() ? UiMsg.ERRORS_WITH_PARAMETERS.text()
                     : loaded.parameterErrors().get(0).message();
-            ide.status().setMessage("Cannot run: " + why);
+            ide.status().setMessage(UiMsg.CANNOT_RUN.text(why));
             ide.showProblems();
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, why));
             return;
@@ -191,7 +197,7 @@ public final class RunActions implements ControlPanel.ControlSink {
         start(program, target, robotSpec(program), runFor, onEnd);
         String misfit = target.sim() ? misfit(program, ide.robotChoice()) : null;
         if (misfit != null) {
-            ide.runProblemLater(new Diagnostic(Severity.WARNING, SourcePos.origin("Robot " + ide.robotChoice()), misfit));
+            ide.runProblemLater(new Diagnostic(Severity.WARNING, SourcePos.origin(UiMsg.ORIGIN_ROBOT.text(ide.robotChoice())), misfit));
         }
     }
 
@@ -205,8 +211,7 @@ public final class RunActions implements ControlPanel.ControlSink {
             return null;
         }
         String fits = SimTarget.autoSpec(program);
-        return fits.equals(choice) ? null : "this script is written for the " + fits + " (Robot: auto picks it), but it runs"
-                + " on the " + choice + "; choose auto in Robot above the 3D view unless you mean it";
+        return fits.equals(choice) ? null : UiMsg.ROBOT_MISFIT.text(fits, choice);
     }
 
     /**
@@ -216,12 +221,12 @@ public final class RunActions implements ControlPanel.ControlSink {
      */
     void play(Program program, RunOn target, String spec, Consumer<RunOutcome> onEnd) {
         if (controller.running()) {
-            report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, "a run is going on"));
+            report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, UiMsg.OUTCOME_RUN_GOING_ON.text()));
             return;
         }
         if (target.hardware() && ide.hardwareHeld() != null) {
-            ide.status().setMessage("Cannot play on the robot: the Hardware dialog holds the bus; close it first.");
-            report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, "the Hardware dialog holds the bus"));
+            ide.status().setMessage(UiMsg.CANNOT_PLAY_ON_ROBOT.text());
+            report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, UiMsg.HARDWARE_DIALOG_HOLDS_BUS.text()));
             return;
         }
         start(program, target, spec, -1, onEnd);
@@ -234,8 +239,8 @@ public final class RunActions implements ControlPanel.ControlSink {
         ide.plots().setModules(program.moduleIds());
         ide.plots().setRecorder(recorder);
         ide.clearRunProblems();
-        ide.log("Run " + ide.files().name() + " on " + target.label().toLowerCase() + (target.sim() ? " (robot: " + spec + ")" : "")
-                + (target.hardware() ? " (port " + port + (profile == null ? "" : ", profile " + profile) + ")" : ""));
+        ide.log(UiMsg.LOG_RUN.text(ide.files().name(), target.label(), target.sim() ? UiMsg.LOG_RUN_ROBOT.text(spec) : "",
+                !target.hardware() ? "" : profile == null ? UiMsg.LOG_RUN_PORT.text(port) : UiMsg.LOG_RUN_PORT_PROFILE.text(port, profile)));
         controller.setSpeed(ide.toolbar().speed());
         finalScore = null;
         Run.Builder run = Run.builder(program, RunOptions.defaults(), ide::runProblemLater);
@@ -267,9 +272,9 @@ public final class RunActions implements ControlPanel.ControlSink {
     private void attach(Run.Builder run, RunOn target, String spec, World world, String port, String profile,
                         AngleRecorder recorder) throws TargetException {
         if (target.hardware()) {
-            ServoTarget st = ServoTarget.open(profile == null ? null : Path.of(profile), port, "Hardware profile",
+            ServoTarget st = ServoTarget.open(profile == null ? null : Path.of(profile), port, UiMsg.HARDWARE_PROFILE.text(),
                     BusConfig.defaults(), ide::logLater);
-            hardwareState = "Hardware: connecting to " + (st.port() == null ? "" : st.port()) + "\u2026";
+            hardwareState = UiMsg.HW_CONNECTING.text(st.port() == null ? "" : st.port());
             attachDriver(run, st, st.profile() == null ? "" : " (" + st.profile().protocol().key() + ")");
         }
         if (target.sim()) {
@@ -291,14 +296,14 @@ public final class RunActions implements ControlPanel.ControlSink {
         try {
             run.attach(st);
         } finally {
-            hardwareState = st.driver() == null ? "Hardware: not connected" : "Hardware: " + st.driver().name() + what;
+            hardwareState = st.driver() == null ? UiMsg.HW_NOT_CONNECTED.text() : UiMsg.HW_DRIVER.text(st.driver().name() + what);
         }
         servos = st.driver();
         // the servos do not latch: the user joins and parts plates by hand while the run waits (PARSL.md §14)
         run.plates(new HandDocking(ide, controller, run.engine().moduleIds()));
         run.closeAtEnd(() -> {
             servos = null;
-            hardwareState = "Hardware: disconnected";
+            hardwareState = UiMsg.HW_DISCONNECTED.text();
         });
     }
 
@@ -310,31 +315,29 @@ public final class RunActions implements ControlPanel.ControlSink {
         SimMetrics m = lastMetrics;
         lastMetrics = null;
         boolean measured = m != null && outcome.status() != RunOutcome.Status.ERROR;
-        String travelled = !measured ? "" : String.format(java.util.Locale.ROOT,
-                "; the robot travelled %.3f m (%.3f m/s, forward %+.3f m)", m.distance(), m.speed(), m.dx());
+        String travelled = !measured ? "" : UiMsg.RUN_TRAVELLED.text(String.format(java.util.Locale.ROOT, "%.3f", m.distance()),
+                String.format(java.util.Locale.ROOT, "%.3f", m.speed()), String.format(java.util.Locale.ROOT, "%+.3f", m.dx()));
         WorldScore score = measured ? m.score() : null;
         finalScore = score;
         if (m != null && m.fell()) {
             String choice = ide.robotChoice();
-            ide.runProblemLater(new Diagnostic(Severity.WARNING, SourcePos.origin("Robot " + choice), String.format(
-                    java.util.Locale.ROOT, "the robot fell over (it tilted %.0f\u00b0, more than %.0f\u00b0)%s", m.maxTiltDeg(),
-                    SimMetrics.FALL_TILT_DEG, SimTarget.AUTO.equals(choice) ? "" : "; is the " + choice + " the robot"
-                            + " this script is written for? Robot: auto picks the one that fits")));
-            travelled += "; it fell over (see Problems)";
+            ide.runProblemLater(new Diagnostic(Severity.WARNING, SourcePos.origin(UiMsg.ORIGIN_ROBOT.text(choice)), UiMsg.ROBOT_FELL,
+                    String.format(java.util.Locale.ROOT, "%.0f", m.maxTiltDeg()), String.format(java.util.Locale.ROOT, "%.0f",
+                    SimMetrics.FALL_TILT_DEG), SimTarget.AUTO.equals(choice) ? "" : UiMsg.ROBOT_FELL_WHICH.text(choice)));
+            travelled += UiMsg.RUN_FELL_OVER.text();
         }
         String said = switch (outcome.status()) {
-            case COMPLETED -> (outcome.time() >= worldLimit - 1e-6 ? "Run ended at the world's time limit, t = "
-                    : "Run completed at t = ") + t + travelled;
+            case COMPLETED -> (outcome.time() >= worldLimit - 1e-6 ? UiMsg.RUN_TIME_LIMIT : UiMsg.RUN_COMPLETED).text(t, travelled);
             // An emergency stop is not an ordinary stop: the log and the status bar say which it was.
-            case STOPPED -> (emergency ? "Emergency stop at t = " : "Run stopped at t = ") + t + travelled;
-            case ERROR -> "Run failed: " + outcome.message();
+            case STOPPED -> (emergency ? UiMsg.RUN_EMERGENCY_STOPPED : UiMsg.RUN_STOPPED).text(t, travelled);
+            case ERROR -> UiMsg.RUN_FAILED.text(outcome.message());
         };
         ide.log(said);
         if (score == null) {
             ide.status().setMessage(said);
         } else {
             // What a teacher records comes first: the status bar cuts a long message at its end.
-            String points = String.format(java.util.Locale.ROOT, "Score %.1f", score.score());
+            String points = UiMsg.RUN_SCORE.text(String.format(java.util.Locale.ROOT, "%.1f", score.score()));
             ide.log(points + ": " + score.inWords());
             ide.status().setMessage(points + " (" + score.inWords() + ") \u2014 " + Character.toLowerCase(said.charAt(0))
                     + said.substring(1));
@@ -374,7 +377,7 @@ public final class RunActions implements ControlPanel.ControlSink {
     void pause() {
         if (controller.running()) {
             controller.setPaused(!controller.paused());
-            ide.status().setMessage(controller.paused() ? "Paused" : "Running");
+            ide.status().setMessage(controller.paused() ? UiMsg.RUN_PAUSED.text() : UiMsg.RUN_RUNNING.text());
             ide.runStateChanged();
         }
     }
@@ -392,8 +395,8 @@ public final class RunActions implements ControlPanel.ControlSink {
         }
         if (controller.running()) {
             emergency = true;
-            ide.log("EMERGENCY STOP");
-            ide.status().setMessage("Emergency stop");
+            ide.log(UiMsg.LOG_EMERGENCY_STOP.text());
+            ide.status().setMessage(UiMsg.RUN_EMERGENCY_STOP.text());
         }
     }
 
@@ -421,7 +424,7 @@ public final class RunActions implements ControlPanel.ControlSink {
         } catch (IllegalArgumentException ex) {
             Program p = e.program();
             SourcePos where = p.controls().stream().filter(c -> c.name().equals(name)).map(c -> c.pos())
-                    .findFirst().orElse(SourcePos.origin("control " + name));
+                    .findFirst().orElse(SourcePos.origin(UiMsg.ORIGIN_CONTROL.text(name)));
             ide.runProblemLater(new Diagnostic(Severity.ERROR, where, ex.getMessage()));
         }
     }
@@ -449,10 +452,10 @@ public final class RunActions implements ControlPanel.ControlSink {
                 String misfit = s.misfit();
                 if (!misfit.isEmpty()) {
                     // said when the robot or the world is chosen, not only when a run starts
-                    ide.sayLater("Robot " + spec + " " + misfit);
+                    ide.sayLater(UiMsg.ROBOT_MISFIT_SAY.text(spec, misfit));
                 }
             } catch (RuntimeException e) {
-                ide.logLater("cannot show the robot '" + spec + "': " + e.getMessage());
+                ide.logLater(UiMsg.CANNOT_SHOW_ROBOT.text(spec, e.getMessage()));
             }
         });
     }
@@ -465,10 +468,10 @@ public final class RunActions implements ControlPanel.ControlSink {
         Simulator s = sim;
         if (s == null || s.world() == null) {
             WorldScore f = finalScore;
-            return f == null ? "" : String.format(java.util.Locale.ROOT, "   final score %.1f", f.score());
+            return f == null ? "" : UiMsg.SCORE_FINAL.text(String.format(java.util.Locale.ROOT, "%.1f", f.score()));
         }
-        return String.format(java.util.Locale.ROOT, "   score %.1f   (time limit %.0f s)", s.liveScore(),
-                s.world().timeLimit());
+        return UiMsg.SCORE_LIVE.text(String.format(java.util.Locale.ROOT, "%.1f", s.liveScore()),
+                String.format(java.util.Locale.ROOT, "%.0f", s.world().timeLimit()));
     }
 
     /** Drops the robot shown for the previous script, and the score of its last run. */

@@ -1,5 +1,6 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.text.UiMsg;
 import org.parpe.gui.prefs.Prefs;
 import java.nio.file.Path;
 
@@ -39,64 +40,64 @@ public final class RunToolBar {
         ToolBar tb = new ToolBar(bar, SWT.FLAT | SWT.RIGHT);
         overflow.pin(tb);
         Icons icons = Icons.of(parent.getDisplay());
-        run = item(tb, icons.run, "Run", "Run the script (F5)", () -> actions.run(true, -1, null));
-        pause = item(tb, icons.pause, "Pause", "Pause or resume the run (F6)", actions::pause);
-        stop = item(tb, icons.stop, "Stop", "Stop the run (Shift+F5)", actions::stop);
+        run = item(tb, icons.run, UiMsg.TOOL_RUN.text(), UiMsg.TOOL_RUN_TIP.text(), () -> actions.run(true, -1, null));
+        pause = item(tb, icons.pause, UiMsg.TOOL_PAUSE.text(), UiMsg.TOOL_PAUSE_TIP.text(), actions::pause);
+        stop = item(tb, icons.stop, UiMsg.TOOL_STOP.text(), UiMsg.TOOL_STOP_TIP.text(), actions::stop);
         new ToolItem(tb, SWT.SEPARATOR);
-        estop = item(tb, icons.estop, "Emergency stop (Esc)", "Stops everything at once, hardware included", actions::emergencyStop);
-        speed = combo("Speed:", 150);
+        estop = item(tb, icons.estop, UiMsg.TOOL_ESTOP.text(), UiMsg.TOOL_ESTOP_TIP.text(), actions::emergencyStop);
+        speed = combo(UiMsg.TOOL_SPEED.text(), 150);
         for (Speed s : Speed.values()) {
             speed.add(s.label());
         }
+        fitItems(speed);
         speed.select(index(Speed.values(), prefs.get("run.speed", Speed.REAL_TIME.name()), Speed::name));
         speed.addListener(SWT.Selection, e -> {
             actions.controller().setSpeed(speed());
             prefs.put("run.speed", speed().name());
         });
-        target = combo("Target:", 170);
+        target = combo(UiMsg.TOOL_TARGET.text(), 170);
         for (RunOn t : RunOn.values()) {
             target.add(t.label());
         }
+        fitItems(target);
         // Every session starts on the simulator; each file keeps its own target (RunChoices).
         target.select(RunOn.SIMULATOR.ordinal());
-        target.setToolTipText("Where this file runs: the simulator, the robot on the serial port, or both"
-                + " (each file keeps its own; every session starts on the simulator)");
+        target.setToolTipText(UiMsg.TOOL_TARGET_TIP.text());
         target.addListener(SWT.Selection, e -> {
             actions.targetChosen(target());
             updatePort();
         });
         Label portLabel = new Label(bar, SWT.NONE);
-        portLabel.setText("Port:");
+        portLabel.setText(UiMsg.TOOL_PORT.text());
         port = new Combo(bar, SWT.DROP_DOWN);
         GridData gd = new GridData(SWT.LEFT, SWT.CENTER, false, false);
         gd.widthHint = 160;
         port.setLayoutData(gd);
-        port.setToolTipText("Serial port of the robot's bus (type a path, or pick one)");
+        port.setToolTipText(UiMsg.TOOL_PORT_TIP.text());
         port.setText(prefs.get("run.port", ""));
         port.addListener(SWT.MouseDown, e -> refreshPorts());
         port.addListener(SWT.Modify, e -> prefs.put("run.port", port.getText()));
         Label profileLabel = new Label(bar, SWT.NONE);
-        profileLabel.setText("Profile:");
+        profileLabel.setText(UiMsg.TOOL_PROFILE.text());
         profile = new Combo(bar, SWT.DROP_DOWN);
         GridData pd = new GridData(SWT.LEFT, SWT.CENTER, false, false);
         pd.widthHint = 180;
         profile.setLayoutData(pd);
-        profile.setToolTipText("Hardware profile of Dynamixel, Feetech or G1 servos (docs/hardware-profile.md); "
-                + "empty: G1 modules on the port. A port typed here replaces the profile's.");
+        profile.setToolTipText(UiMsg.TOOL_PROFILE_TIP.text());
         profile.setText(prefs.get("run.hardware", ""));
         profile.addListener(SWT.Modify, e -> prefs.put("run.hardware", profile.getText()));
         browse = new Button(bar, SWT.PUSH);
         browse.setText("\u2026");
-        browse.setToolTipText("Choose a hardware profile");
+        browse.setToolTipText(UiMsg.TOOL_PROFILE_BROWSE_TIP.text());
         browse.addListener(SWT.Selection, e -> {
-            Path chosen = org.parpe.gui.panels.FileDialogs.ask(bar.getShell(), SWT.OPEN, "Hardware profile", "*.xml", null, null);
+            Path chosen = org.parpe.gui.panels.FileDialogs.ask(bar.getShell(), SWT.OPEN, UiMsg.HARDWARE_PROFILE.text(), "*.xml", null, null);
             if (chosen != null) {
                 profile.setText(chosen.toString());
             }
         });
         Button hardware = new Button(bar, SWT.PUSH);
-        hardware.setText("Hardware\u2026");
-        hardware.setToolTipText("Find the servos on the port, move them one by one, save a profile (Run > Hardware\u2026)");
+        hardware.setText(UiMsg.TOOL_HARDWARE.text());
+        hardware.setToolTipText(UiMsg.TOOL_HARDWARE_TIP.text());
         hardware.addListener(SWT.Selection, e -> actions.openHardware());
         refreshPorts();
         updatePort();
@@ -131,6 +132,12 @@ public final class RunToolBar {
         gd.widthHint = width;
         c.setLayoutData(gd);
         return c;
+    }
+
+    /** Widens {@code c} to its longest item, which is longer in some languages ("So schnell wie möglich"). */
+    private static void fitItems(Combo c) {
+        GridData gd = (GridData) c.getLayoutData();
+        gd.widthHint = Math.max(gd.widthHint, c.computeSize(SWT.DEFAULT, SWT.DEFAULT).x);
     }
 
     private void updatePort() {
@@ -217,7 +224,7 @@ public final class RunToolBar {
         run.setEnabled(!running);
         pause.setEnabled(running);
         Icons icons = Icons.of(pause.getDisplay());
-        pause.setText(paused ? "Resume" : "Pause");
+        pause.setText(paused ? UiMsg.TOOL_RESUME.text() : UiMsg.TOOL_PAUSE.text());
         pause.setImage(paused ? icons.run : icons.pause);
         stop.setEnabled(running);
         estop.setEnabled(true);

@@ -1,5 +1,6 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.text.UiMsg;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.graphics.GC;
 import org.eclipse.swt.layout.GridData;
@@ -37,9 +38,8 @@ public final class StatusBar {
         separator();
         counts = field(SWT.DEFAULT, false);
         counts.setText("\u2716 0  \u26a0 0");
-        counts.setToolTipText("Errors and warnings in Problems");
-        keys.setToolTipText("During a run these keys steer the robot, even in the editor (they never type into the script);"
-                + " in a box for a value they type. Esc stops the run.");
+        counts.setToolTipText(UiMsg.STATUS_COUNTS_TIP.text());
+        keys.setToolTipText(UiMsg.STATUS_KEYS_TIP.text());
         separator();
         sim = field(230, false);
         separator();
@@ -48,8 +48,8 @@ public final class StatusBar {
         time = field(120, false);
         separator();
         caret = field(70, false);
-        sim.setText("Simulator: idle");
-        hardware.setText("Hardware: not connected");
+        sim.setText(UiMsg.SIM_IDLE.text());
+        hardware.setText(UiMsg.HW_NOT_CONNECTED.text());
         time.setText("t = 0.00 s");
     }
 
@@ -145,7 +145,7 @@ public final class StatusBar {
         String t = "\u2716 " + errors + "  \u26a0 " + warnings;
         if (!t.equals(counts.getText())) {
             counts.setText(t);
-            counts.setToolTipText(errors + " error(s) and " + warnings + " warning(s) in Problems");
+            counts.setToolTipText(UiMsg.STATUS_COUNTS_NOW_TIP.text(errors, warnings));
             bar.layout(true);
         }
     }
@@ -163,14 +163,15 @@ public final class StatusBar {
     }
 
     public void setHardware(String text) {
-        setHardware(text, false);
+        setHardware(text, null);
     }
 
     /**
-     * The hardware field; {@code alarm} (the robot stopped answering) shows it white on red, so
-     * that it is seen from across a classroom, and repeats it in the message field.
+     * The hardware field; {@code alarm} (the robot stopped answering: what to do, or null) shows it
+     * white on red, so that it is seen from across a classroom, and is said in the message field.
      */
-    public void setHardware(String text, boolean alarm) {
+    public void setHardware(String text, String alarmMessage) {
+        boolean alarm = alarmMessage != null;
         if (!text.equals(hardware.getText())) {
             hardware.setText(text);
             hardware.setToolTipText(text);
@@ -180,7 +181,7 @@ public final class StatusBar {
             hardware.setBackground(alarm ? bar.getDisplay().getSystemColor(SWT.COLOR_RED) : null);
             hardware.setForeground(alarm ? bar.getDisplay().getSystemColor(SWT.COLOR_WHITE) : null);
             if (alarm) {
-                setMessage(text.replaceFirst("^Hardware: r", "R") + ": check the servo supply and the cable");
+                setMessage(alarmMessage);
             }
         }
     }

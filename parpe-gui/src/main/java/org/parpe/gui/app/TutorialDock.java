@@ -1,5 +1,6 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.text.UiMsg;
 import java.util.function.Function;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.custom.CTabFolder;
@@ -46,7 +47,7 @@ final class TutorialDock {
     TutorialWindow open(Function<Composite, TutorialWindow> make) {
         if (tab == null || tab.isDisposed()) {
             tab = new CTabItem(folder, SWT.CLOSE);
-            tab.setText("Tutorial");
+            tab.setText(UiMsg.TAB_TUTORIAL.text());
             tutorial = make.apply(folder);
             tab.setControl(tutorial.control());
             tab.addListener(SWT.Dispose, e -> {

@@ -1,5 +1,6 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.text.UiMsg;
 import org.parpe.gui.prefs.Prefs;
 import java.nio.file.Path;
 import org.eclipse.swt.SWT;
@@ -17,7 +18,8 @@ import org.parpe.sim.config.RobotConfigs;
  * or a configuration file), the world it runs in, Track robot, module IDs and a reset of the camera.
  */
 public final class ViewBar {
-    private static final String BROWSE = "Configuration file\u2026";
+    /** The last choice, which asks for a file. */
+    private final String browseItem = UiMsg.VIEW_ROBOT_FILE.text();
 
     private final IdeWindow ide;
     private final Combo robot;
@@ -35,33 +37,33 @@ public final class ViewBar {
         // In a narrow 3D pane the check boxes and Reset view go behind a chevron (») instead of off the edge.
         bar = new org.parpe.gui.panels.OverflowBar(parent).control();
         bar.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
-        new Label(bar, SWT.NONE).setText("Robot:");
+        new Label(bar, SWT.NONE).setText(UiMsg.VIEW_ROBOT.text());
         robot = new Combo(bar, SWT.READ_ONLY);
-        robot.add(SimTarget.AUTO + " (from the script)");
+        robot.add(UiMsg.VIEW_ROBOT_AUTO.text(SimTarget.AUTO));
         RobotConfigs.generatorNames().forEach(robot::add);
         file = prefs.get("view.robotFile", null);
         if (file != null) {
             robot.add(file);
         }
-        robot.add(BROWSE);
+        robot.add(browseItem);
         // Each file has its own robot (RunChoices): auto until the file is shown.
         robot.select(0);
-        robot.setToolTipText("The simulated robot; 'auto' picks a standard robot that fits the script");
+        robot.setToolTipText(UiMsg.VIEW_ROBOT_TIP.text());
         robot.addListener(SWT.Selection, e -> chosen());
         world = new WorldPicker(bar, ide, prefs, this::worldChosen);
         track = new Button(bar, SWT.CHECK);
-        track.setText("Track robot");
+        track.setText(UiMsg.VIEW_TRACK.text());
         track.setSelection(Boolean.parseBoolean(prefs.get("view.track", "true")));
         ids = new Button(bar, SWT.CHECK);
-        ids.setText("Module IDs");
+        ids.setText(UiMsg.VIEW_IDS.text());
         ids.setSelection(Boolean.parseBoolean(prefs.get("view.ids", "false")));
         reset = new Button(bar, SWT.PUSH);
-        reset.setText("Reset view");
+        reset.setText(UiMsg.VIEW_RESET.text());
         Button cameraButton = new Button(bar, SWT.PUSH);
-        cameraButton.setText("Camera\u2026");
-        cameraButton.setToolTipText("What a camera on one module sees (for driving through rubble)");
+        cameraButton.setText(UiMsg.VIEW_CAMERA.text());
+        cameraButton.setToolTipText(UiMsg.VIEW_CAMERA_TIP.text());
         cameraButton.addListener(SWT.Selection, e -> ide.openModuleCamera());
-        reset.setToolTipText("Frame the whole robot again (or double-click the view). Drag: rotate; right-drag: pan; wheel: zoom");
+        reset.setToolTipText(UiMsg.VIEW_RESET_TIP.text());
         track.addListener(SWT.Selection, e -> prefs.put("view.track", Boolean.toString(track.getSelection())));
         ids.addListener(SWT.Selection, e -> prefs.put("view.ids", Boolean.toString(ids.getSelection())));
     }
@@ -85,8 +87,8 @@ public final class ViewBar {
     }
 
     private void chosen() {
-        if (BROWSE.equals(robot.getText())) {
-            Path p = org.parpe.gui.panels.FileDialogs.ask(robot.getShell(), SWT.OPEN, "Robot configuration file", "*.xml", null, null);
+        if (browseItem.equals(robot.getText())) {
+            Path p = org.parpe.gui.panels.FileDialogs.ask(robot.getShell(), SWT.OPEN, UiMsg.ROBOT_CONFIG_FILE.text(), "*.xml", null, null);
             if (p == null) {
                 robot.select(0);
                 return;

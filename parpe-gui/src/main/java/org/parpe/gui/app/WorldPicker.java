@@ -1,5 +1,6 @@
 package org.parpe.gui.app;
 
+import org.parpe.gui.text.UiMsg;
 import org.parpe.gui.prefs.Prefs;
 
 import org.parpe.gui.files.Examples;
@@ -23,8 +24,10 @@ import org.parpe.sim.world.WorldReader;
  * the choice then falls back to the flat floor.
  */
 final class WorldPicker {
-    static final String FLAT = "flat floor";
-    private static final String BROWSE = "World file\u2026";
+    /** The flat floor as {@link RunChoices} keeps it (a word, not the text shown). */
+    static final String FLAT = "flat";
+    /** The last choice, which asks for a file. */
+    private final String browseItem = UiMsg.WORLD_FILE.text();
 
     private final Combo combo;
     private final List<Path> files = new ArrayList<>();
@@ -36,21 +39,21 @@ final class WorldPicker {
     WorldPicker(Composite bar, IdeWindow ide, Prefs prefs, Runnable changed) {
         this.ide = ide;
         this.prefs = prefs;
-        new Label(bar, SWT.NONE).setText("World:");
+        new Label(bar, SWT.NONE).setText(UiMsg.VIEW_WORLD.text());
         combo = new Combo(bar, SWT.READ_ONLY);
-        combo.setToolTipText("Where the simulated robot runs: the flat floor or a world with a score");
-        combo.add(FLAT);
+        combo.setToolTipText(UiMsg.VIEW_WORLD_TIP.text());
+        combo.add(UiMsg.WORLD_FLAT.text());
         Examples.worlds().forEach(this::add);
         String file = prefs.get("view.worldFile", null);
         Path last = file == null ? null : Path.of(file).toAbsolutePath().normalize();
         if (last != null && Files.isRegularFile(last) && !files.contains(last)) {
             add(last);
         }
-        combo.add(BROWSE);
+        combo.add(browseItem);
         // Each file has its own world (RunChoices): the flat floor until the file is shown.
         combo.select(0);
         combo.addListener(SWT.Selection, e -> {
-            if (BROWSE.equals(combo.getText()) && !browse()) {
+            if (browseItem.equals(combo.getText()) && !browse()) {
                 combo.select(0);
             }
             changed.run();
@@ -96,7 +99,7 @@ final class WorldPicker {
     }
 
     private boolean browse() {
-        Path p = org.parpe.gui.panels.FileDialogs.ask(combo.getShell(), SWT.OPEN, "World file", "*.xml", null, null);
+        Path p = org.parpe.gui.panels.FileDialogs.ask(combo.getShell(), SWT.OPEN, UiMsg.WORLD_FILE_TITLE.text(), "*.xml", null, null);
         if (p == null) {
             return false;
         }

@@ -1,5 +1,6 @@
 package org.parpe.gui.automation;
 
+import org.parpe.gui.text.UiMsg;
 import org.parpe.gui.app.IdeWindow;
 
 import java.io.IOException;
@@ -76,7 +77,7 @@ public final class Automation {
                 for (Diagnostic d : ide.problems().shown()) {
                     System.err.println(d.format());
                 }
-                fail("the script has errors; not run");
+                fail(UiMsg.AUTO_SCRIPT_ERRORS.text());
                 later(SETTLE_MS, this::shoot);
                 return;
             }
@@ -119,8 +120,8 @@ public final class Automation {
     private void showGrid(String name) {
         var grid = ide.grid();
         if (!grid.showTable(name)) {
-            fail("no gait table '" + name + "' in " + ide.files().name()
-                    + (grid.table() == null ? " (it has none)" : " (its first is '" + grid.table().name() + "')"));
+            fail(UiMsg.AUTO_NO_GAIT_TABLE.text(name, ide.files().name(),
+                    grid.table() == null ? UiMsg.AUTO_HAS_NONE.text() : UiMsg.AUTO_FIRST_IS.text(grid.table().name())));
             return;
         }
         // Focus (and the entry selected in the text) on the first cell, the selection to the last.
@@ -132,7 +133,7 @@ public final class Automation {
         int limitMs = (int) Math.min(Integer.MAX_VALUE, 120_000 + options.runFor() * 10_000);
         later(limitMs, () -> {
             if (!done && ide.runs().running()) {
-                fail("the run did not finish within " + limitMs / 1000 + " s; stopped");
+                fail(UiMsg.AUTO_RUN_TOO_LONG.text(limitMs / 1000));
                 ide.runs().stop();
             }
         });
@@ -140,9 +141,10 @@ public final class Automation {
 
     private void ran(RunOutcome outcome) {
         if (outcome.status() == RunOutcome.Status.ERROR) {
-            fail("run failed: " + outcome.message());
+            fail(UiMsg.AUTO_RUN_FAILED.text(outcome.message()));
         } else {
-            System.out.printf(java.util.Locale.ROOT, "parpe gui: ran %s to t = %.2f s%n", ide.files().name(), outcome.time());
+            System.out.println("parpe gui: " + UiMsg.AUTO_RAN.text(ide.files().name(),
+                    String.format(java.util.Locale.ROOT, "%.2f", outcome.time())));
         }
         later(SETTLE_MS, this::shoot);
     }
@@ -155,7 +157,7 @@ public final class Automation {
         if (options.screenshot() != null) {
             try {
                 Screenshot.save(ide.shell(), options.screenshot());
-                System.out.println("parpe gui: screenshot saved to " + options.screenshot());
+                System.out.println("parpe gui: " + UiMsg.AUTO_SCREENSHOT_SAVED.text(options.screenshot()));
             } catch (IOException e) {
                 System.err.println("parpe gui: error: " + e.getMessage());
                 exitCode = 2;

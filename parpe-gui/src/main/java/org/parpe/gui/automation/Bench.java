@@ -1,5 +1,6 @@
 package org.parpe.gui.automation;
 
+import org.parpe.gui.text.UiMsg;
 import org.parpe.gui.app.IdeWindow;
 import org.parpe.gui.prefs.Prefs;
 import org.parpe.gui.files.Examples;
@@ -39,7 +40,7 @@ public final class Bench {
         try {
             home = Files.createTempDirectory("parpe-bench");
         } catch (java.io.IOException e) {
-            System.err.println("parpe gui: error: cannot create a temporary folder: " + e.getMessage());
+            System.err.println("parpe gui: error: " + UiMsg.BENCH_NO_TEMP.text(e.getMessage()));
             return 2;
         }
         IdeWindow ide = new IdeWindow(display, new Prefs(home));
@@ -56,7 +57,7 @@ public final class Bench {
         DiagnosticList diags = new DiagnosticList();
         RobotConfig config = RobotConfigs.resolve("centipede", new int[0], diags);
         if (config == null) {
-            System.err.println("parpe gui: error: cannot build the centipede: " + diags.all());
+            System.err.println("parpe gui: error: " + UiMsg.BENCH_NO_CENTIPEDE.text(diags.all()));
             return 1;
         }
         SimSnapshot snap;
@@ -87,7 +88,7 @@ public final class Bench {
         try {
             openLarge(display, ide, home);
         } catch (java.io.IOException e) {
-            System.err.println("parpe gui: error: cannot write the large script: " + e.getMessage());
+            System.err.println("parpe gui: error: " + UiMsg.BENCH_NO_LARGE_SCRIPT.text(e.getMessage()));
             return 2;
         }
         ide.shell().dispose();

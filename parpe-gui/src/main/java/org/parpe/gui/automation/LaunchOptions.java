@@ -3,6 +3,7 @@ package org.parpe.gui.automation;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import org.parpe.gui.text.UiMsg;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -19,9 +20,10 @@ import picocli.CommandLine.Parameters;
  * @param posePanel  whether to bring the Pose panel to the front with the poses the script plays
  * @param grid       the gait table to show in the grid editor (selected whole), or {@code null}
  * @param help       whether {@code --help} was asked for (nothing else is done then)
+ * @param lang       the language code of {@code --lang}, or {@code null} ({@link org.parpe.gui.text.IdeLanguage})
  */
 public record LaunchOptions(Path file, double runFor, Path screenshot, boolean exit, boolean bench,
-                            boolean posePanel, String grid, boolean help) {
+                            boolean posePanel, String grid, boolean help, String lang) {
 
     /** The usage text printed for {@code --help} and bad arguments. */
     public static final String USAGE = new CommandLine(new Arguments()).getUsageMessage().stripTrailing();
@@ -55,6 +57,10 @@ public record LaunchOptions(Path file, double runFor, Path screenshot, boolean e
                 + " and opening a 10 MB script as name=value lines, then exit")
         boolean bench;
 
+        @Option(names = "--lang", paramLabel = "CODE", description = "language of the IDE: en, de, es or ja (default: the"
+                + " Language preference, else LC_ALL, LC_MESSAGES or LANG)")
+        String lang;
+
         @Option(names = {"-h", "--help"}, usageHelp = true, description = "show this help and exit")
         boolean help;
     }
@@ -77,11 +83,10 @@ public record LaunchOptions(Path file, double runFor, Path screenshot, boolean e
             throw new IllegalArgumentException(e.getMessage(), e);
         }
         if (a.files.size() > 1) {
-            throw new IllegalArgumentException("only one FILE may be given, got '" + a.files.get(0) + "' and '"
-                    + a.files.get(1) + "'");
+            throw new IllegalArgumentException(UiMsg.ONLY_ONE_FILE.text(a.files.get(0), a.files.get(1)));
         }
         return new LaunchOptions(a.files.isEmpty() ? null : a.files.get(0), a.runFor == null ? -1 : seconds(a.runFor),
-                a.screenshot, a.exit, a.bench, a.posePanel, a.grid, a.help);
+                a.screenshot, a.exit, a.bench, a.posePanel, a.grid, a.help, a.lang);
     }
 
     private static double seconds(String text) {
@@ -92,7 +97,7 @@ public record LaunchOptions(Path file, double runFor, Path screenshot, boolean e
             }
             return v;
         } catch (NumberFormatException e) {
-            throw new IllegalArgumentException("--run-for must be a number of seconds >= 0, got '" + text + "'");
+            throw new IllegalArgumentException(UiMsg.RUN_FOR_SECONDS.text(text));
         }
     }
 }

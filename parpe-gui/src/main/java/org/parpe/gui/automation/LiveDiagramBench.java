@@ -1,5 +1,6 @@
 package org.parpe.gui.automation;
 
+import org.parpe.gui.text.UiMsg;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
@@ -29,7 +30,7 @@ final class LiveDiagramBench {
     static void run(Display display, IdeWindow ide) {
         Path script = Examples.folder() == null ? null : Examples.folder().resolve("centipede-walk.xml");
         if (script == null || !Files.isRegularFile(script)) {
-            System.err.println("parpe gui: warning: examples/centipede-walk.xml not found; no live diagram figures");
+            System.err.println("parpe gui: warning: " + UiMsg.BENCH_NO_CENTIPEDE_WALK.text());
             return;
         }
         ide.files().openPath(script);

@@ -1,5 +1,6 @@
 package org.parpe.gui.automation;
 
+import org.parpe.gui.text.UiMsg;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -30,7 +31,7 @@ final class RobotTabBench {
         try {
             Files.writeString(file, RobotDraft.fromGenerator(file.toString(), "snake:n=200").text());
         } catch (IOException e) {
-            System.err.println("parpe gui: warning: cannot write the 200-module robot: " + e.getMessage());
+            System.err.println("parpe gui: warning: " + UiMsg.BENCH_NO_ROBOT_200.text(e.getMessage()));
             return;
         }
         RobotTab tab = ide.robotTab();

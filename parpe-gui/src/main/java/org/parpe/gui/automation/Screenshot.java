@@ -1,5 +1,6 @@
 package org.parpe.gui.automation;
 
+import org.parpe.gui.text.UiMsg;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -49,7 +50,7 @@ public final class Screenshot {
             }
             write(image.getImageData(), file);
         } catch (org.eclipse.swt.SWTException e) {
-            throw new IOException("cannot capture the window: " + e.getMessage(), e);
+            throw new IOException(UiMsg.SCREENSHOT_CANNOT_CAPTURE.text(e.getMessage()), e);
         } finally {
             image.dispose();
         }
@@ -66,7 +67,7 @@ public final class Screenshot {
         try {
             AtomicFiles.write(abs, out -> loader.save(out, SWT.IMAGE_PNG)); // the output rules: whole or not at all
         } catch (org.eclipse.swt.SWTException e) {
-            throw new IOException("cannot write " + abs + ": " + e.getMessage(), e);
+            throw new IOException(UiMsg.SCREENSHOT_CANNOT_WRITE.text(abs, e.getMessage()), e);
         }
     }
 

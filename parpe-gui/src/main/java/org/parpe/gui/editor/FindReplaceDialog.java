@@ -1,5 +1,6 @@
 package org.parpe.gui.editor;
 
+import org.parpe.gui.text.UiMsg;
 import org.eclipse.jface.dialogs.Dialog;
 import org.eclipse.jface.text.IFindReplaceTarget;
 import org.eclipse.jface.text.IFindReplaceTargetExtension3;
@@ -38,32 +39,32 @@ public final class FindReplaceDialog extends Dialog {
     @Override
     protected void configureShell(Shell shell) {
         super.configureShell(shell);
-        shell.setText("Find/Replace");
+        shell.setText(UiMsg.FIND_TITLE.text());
     }
 
     @Override
     protected Control createDialogArea(Composite parent) {
         Composite c = (Composite) super.createDialogArea(parent);
         c.setLayout(new GridLayout(2, false));
-        new Label(c, SWT.NONE).setText("Find:");
+        new Label(c, SWT.NONE).setText(UiMsg.FIND_FIND.text());
         find = new Text(c, SWT.BORDER);
         find.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         find.addListener(SWT.DefaultSelection, e -> find(true));
-        new Label(c, SWT.NONE).setText("Replace with:");
+        new Label(c, SWT.NONE).setText(UiMsg.FIND_REPLACE_WITH.text());
         replace = new Text(c, SWT.BORDER);
         replace.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         caseSensitive = new Button(c, SWT.CHECK);
-        caseSensitive.setText("Case sensitive");
+        caseSensitive.setText(UiMsg.FIND_CASE.text());
         wholeWord = new Button(c, SWT.CHECK);
-        wholeWord.setText("Whole word");
+        wholeWord.setText(UiMsg.FIND_WHOLE_WORD.text());
         Composite buttons = new Composite(c, SWT.NONE);
         buttons.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false, 2, 1));
         buttons.setLayout(new GridLayout(5, true));
-        button(buttons, "Next", () -> find(true));
-        button(buttons, "Previous", () -> find(false));
-        button(buttons, "Replace", this::replaceOne);
-        button(buttons, "Replace All", this::replaceAll);
-        button(buttons, "Close", this::close);
+        button(buttons, UiMsg.FIND_NEXT.text(), () -> find(true));
+        button(buttons, UiMsg.FIND_PREVIOUS.text(), () -> find(false));
+        button(buttons, UiMsg.BUTTON_REPLACE.text(), this::replaceOne);
+        button(buttons, UiMsg.FIND_REPLACE_ALL.text(), this::replaceAll);
+        button(buttons, UiMsg.BUTTON_CLOSE.text(), this::close);
         status = new Label(c, SWT.NONE);
         status.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false, 2, 1));
         String sel = target.getSelectionText();
@@ -97,7 +98,7 @@ public final class FindReplaceDialog extends Dialog {
         int at = findFrom(start, forward, what);
         if (at < 0) {
             at = findFrom(forward ? 0 : Integer.MAX_VALUE / 2, forward, what);
-            status.setText(at < 0 ? "'" + what + "' not found" : "Wrapped around");
+            status.setText(at < 0 ? UiMsg.FIND_NOT_FOUND.text(what) : UiMsg.FIND_WRAPPED.text());
         } else {
             status.setText("");
         }
@@ -136,6 +137,6 @@ public final class FindReplaceDialog extends Dialog {
             offset = at + replace.getText().length();
             n++;
         }
-        status.setText(n + " replaced");
+        status.setText(UiMsg.FIND_REPLACED.text(n));
     }
 }

@@ -1,5 +1,7 @@
 package org.parpe.gui.editor;
 
+import org.parpe.core.text.Msg;
+import org.parpe.gui.text.UiMsg;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -78,24 +80,26 @@ public final class ParslAssistProcessor implements IContentAssistProcessor {
         Map<String, String> m = new LinkedHashMap<>();
         List<String> path = ctx.path();
         if (path.size() == 2 && path.get(1).equals("main")) {
-            names.behaviorNames().forEach(s -> m.put(s, "behavior"));
+            names.behaviorNames().forEach(s -> m.put(s, Msg.KIND_BEHAVIOR.text()));
         } else if (path.size() >= 3 && path.get(1).equals("behaviors")) {
-            names.automata().forEach(s -> m.put(s, "automaton"));
+            names.automata().forEach(s -> m.put(s, Msg.KIND_AUTOMATON.text()));
         }
         for (String word : Vocabulary.fixedChildren(path)) {
-            m.put(word, describe(Vocabulary.elementAt(path, word)));
+            // a section is explained as the quick reference explains it, in the IDE's language
+            String holds = path.size() == 1 ? org.parpe.gui.help.HelpText.sectionHolds(word) : null;
+            m.put(word, holds != null ? holds : describe(Vocabulary.elementAt(path, word)));
         }
         return m;
     }
 
     private static String describe(Element kind) {
         return switch (kind) {
-            case PROGRAM -> "root element";
-            case ROBOT_PART -> "robot part";
-            case SENSOR -> "sensor";
-            case ACTUATOR -> "actuator";
-            case CONDITIONAL -> "conditional block";
-            default -> "section";
+            case PROGRAM -> UiMsg.ASSIST_ROOT.text();
+            case ROBOT_PART -> UiMsg.ASSIST_ROBOT_PART.text();
+            case SENSOR -> Msg.KIND_SENSOR.text();
+            case ACTUATOR -> Msg.KIND_ACTUATOR.text();
+            case CONDITIONAL -> UiMsg.ASSIST_CONDITIONAL.text();
+            default -> UiMsg.ASSIST_SECTION.text();
         };
     }
 
@@ -113,7 +117,8 @@ public final class ParslAssistProcessor implements IContentAssistProcessor {
         if (kind == Element.ENTRY) {
             attrs.addAll(names.macros(el));
         }
-        attrs.forEach(a -> m.put(a, "attribute of <" + el + ">"));
+        String of = UiMsg.ASSIST_ATTRIBUTE_OF.text(el);
+        attrs.forEach(a -> m.put(a, of));
         return m;
     }
 
@@ -123,23 +128,23 @@ public final class ParslAssistProcessor implements IContentAssistProcessor {
         String parent = ctx.parent();
         switch (attr) {
             case "group" -> {
-                names.groups().forEach(g -> m.put(g, "group"));
+                names.groups().forEach(g -> m.put(g, Msg.KIND_GROUP.text()));
                 if (ctx.path().size() >= 3 && ctx.path().get(1).equals("behaviors")) {
-                    names.macros(ctx.path().get(2)).forEach(g -> m.put(g, "macro"));
+                    names.macros(ctx.path().get(2)).forEach(g -> m.put(g, Msg.KIND_MACRO.text()));
                 }
             }
-            case "states" -> names.states().forEach(s -> m.put(s, "state"));
-            case "elements" -> names.groups().forEach(g -> m.put(g, "group"));
-            case "interp" -> Vocabulary.INTERP_WORDS.forEach(s -> m.put(s, "motion profile"));
-            case "latch", "unlatch" -> Vocabulary.PLATES.forEach(p -> m.put(p, "connection plate"));
-            case "keys" -> Vocabulary.keyNames().forEach(k -> m.put(k, "key"));
+            case "states" -> names.states().forEach(s -> m.put(s, Msg.KIND_STATE.text()));
+            case "elements" -> names.groups().forEach(g -> m.put(g, Msg.KIND_GROUP.text()));
+            case "interp" -> Vocabulary.INTERP_WORDS.forEach(s -> m.put(s, UiMsg.ASSIST_MOTION_PROFILE.text()));
+            case "latch", "unlatch" -> Vocabulary.PLATES.forEach(p -> m.put(p, UiMsg.ASSIST_PLATE.text()));
+            case "keys" -> Vocabulary.keyNames().forEach(k -> m.put(k, UiMsg.ASSIST_KEY.text()));
             case "type" -> (parent.equals("controls") ? Vocabulary.CONTROL_TYPES : Vocabulary.PARAMETER_TYPES)
-                    .forEach(s -> m.put(s, "type"));
+                    .forEach(s -> m.put(s, UiMsg.ASSIST_TYPE.text()));
             default -> {
                 if (Vocabulary.EXPRESSION_ATTRIBUTES.contains(attr) || parent.equals("main")) {
                     expressionNames(names, m);
                     if (attr.equals("cycles") && ctx.path().size() == 1) {
-                        m.put(Vocabulary.FOREVER, "repeat until stopped");
+                        m.put(Vocabulary.FOREVER, UiMsg.ASSIST_FOREVER.text());
                     }
                 }
             }
@@ -148,12 +153,12 @@ public final class ParslAssistProcessor implements IContentAssistProcessor {
     }
 
     private static void expressionNames(NameIndex names, Map<String, String> m) {
-        names.controls().forEach(c -> m.put("$" + c, "control"));
-        names.parameters().forEach(p -> m.put(p, "parameter"));
-        names.radioWords().forEach(w -> m.put(w, "radio word"));
-        Vocabulary.LOGICAL_VARIABLES.forEach(v -> m.put("$" + v, "logical variable"));
-        Vocabulary.functions().forEach(f -> m.put(f, "function"));
-        Vocabulary.CONSTANTS.forEach(c -> m.put(c, "constant"));
+        names.controls().forEach(c -> m.put("$" + c, Msg.KIND_CONTROL.text()));
+        names.parameters().forEach(p -> m.put(p, Msg.KIND_PARAMETER.text()));
+        names.radioWords().forEach(w -> m.put(w, Msg.KIND_RADIO_WORD.text()));
+        Vocabulary.LOGICAL_VARIABLES.forEach(v -> m.put("$" + v, UiMsg.ASSIST_LOGICAL_VARIABLE.text()));
+        Vocabulary.functions().forEach(f -> m.put(f, UiMsg.ASSIST_FUNCTION.text()));
+        Vocabulary.CONSTANTS.forEach(c -> m.put(c, UiMsg.ASSIST_CONSTANT.text()));
     }
 
     @Override

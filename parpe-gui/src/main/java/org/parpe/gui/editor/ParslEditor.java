@@ -1,5 +1,6 @@
 package org.parpe.gui.editor;
 
+import org.parpe.gui.text.UiMsg;
 import java.util.ArrayList;
 import java.util.Iterator;
 import java.util.List;
@@ -314,7 +315,7 @@ public final class ParslEditor {
     private static final class Access implements IAnnotationAccess, IAnnotationAccessExtension {
         @Override
         public String getTypeLabel(Annotation annotation) {
-            return annotation instanceof ProblemAnnotation p && p.isError() ? "Error" : "Warning";
+            return (annotation instanceof ProblemAnnotation p && p.isError() ? UiMsg.ANNOTATION_ERROR : UiMsg.ANNOTATION_WARNING).text();
         }
 
         @Override

@@ -1,5 +1,6 @@
 package org.parpe.gui.editor;
 
+import org.parpe.gui.text.UiMsg;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
@@ -88,7 +89,7 @@ public final class Validator implements AutoCloseable {
             return ScriptLoader.loadText(file, text, params);
         } catch (RuntimeException | StackOverflowError e) {
             Diagnostic d = new Diagnostic(Severity.ERROR, new SourcePos(file.toString(), 1, 1),
-                    "internal error while loading (please report it): " + e);
+                    UiMsg.INTERNAL_ERROR_LOADING, e);
             return new LoadResult(null, List.of(d), List.of());
         }
     }

@@ -1,5 +1,6 @@
 package org.parpe.gui.files;
 
+import org.parpe.gui.text.UiMsg;
 import java.io.IOException;
 import java.nio.channels.FileChannel;
 import java.nio.channels.FileLock;
@@ -50,7 +51,7 @@ public final class Autosave implements AutoCloseable {
         /** How the user knows the document: the file's name, "a copy of the example NAME", or an untitled script. */
         public String describe() {
             return file != null ? file.getFileName().toString()
-                    : example != null ? "your copy of the example " + example.getFileName() : "an untitled script";
+                    : example != null ? UiMsg.COPY_OF_EXAMPLE.text(example.getFileName()) : UiMsg.AN_UNTITLED_SCRIPT.text();
         }
     }
 
@@ -155,7 +156,7 @@ public final class Autosave implements AutoCloseable {
      */
     public String adopt(Copy c) throws IOException {
         if (alive(c.owner())) {
-            throw new IOException("the copy belongs to a running IDE");
+            throw new IOException(UiMsg.COPY_BELONGS_TO_RUNNING.text());
         }
         String slot = c.file() == null ? untitledSlot() : slotFor(c.file());
         write(slot, c.file(), c.example(), c.text());

@@ -1,5 +1,6 @@
 package org.parpe.gui.files;
 
+import org.parpe.gui.text.UiMsg;
 import java.io.IOException;
 import java.net.URISyntaxException;
 import java.nio.file.Files;
@@ -67,8 +68,7 @@ public final class Examples {
             }
             return copy;
         } catch (IOException | SecurityException e) {
-            System.err.println("parpe gui: cannot copy the examples to " + copy + " (" + e.getMessage()
-                    + "); using the installed ones, which open as copies");
+            System.err.println("parpe gui: " + UiMsg.CANNOT_COPY_EXAMPLES.text(copy, e.getMessage()));
             return bundled;
         }
     }

@@ -1,5 +1,6 @@
 package org.parpe.gui.files;
 
+import org.parpe.gui.text.UiMsg;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
@@ -28,9 +29,7 @@ import org.parpe.sim.bridge.Export;
  * and shows what it wrote or why it refused (located errors also in Problems). Widgets on the UI thread only.
  */
 public final class ExportProgramDialog {
-    private static final String[] TARGETS = {"C (runtime, tables and a PC trace program)", "Arduino sketch"};
     private static final String[] SERVOS = {"pwm", "dxl", "sts"};
-    private static final String[] SERVO_LABELS = {"Hobby PWM servos on pins", "Dynamixel 2.0 bus", "Feetech STS bus"};
 
     private final ExportWindow window;
     private final Combo target;
@@ -45,21 +44,21 @@ public final class ExportProgramDialog {
     private ExportProgramDialog(Shell parent, Supplier<Program> program, Consumer<List<Diagnostic>> problems) {
         this.program = program;
         this.problems = problems;
-        window = new ExportWindow(parent, "Export Program as C/Arduino");
+        window = new ExportWindow(parent, UiMsg.EXPORT_PROGRAM_TITLE.text());
         Shell shell = window.shell();
-        target = window.combo("Target:", TARGETS);
-        board = window.combo("Board:", new String[0]);
-        servo = window.combo("Servos:", SERVO_LABELS);
+        target = window.combo(UiMsg.EXPORT_TARGET.text(), new String[] {UiMsg.EXPORT_TARGET_C.text(), UiMsg.EXPORT_TARGET_ARDUINO.text()});
+        board = window.combo(UiMsg.EXPORT_BOARD.text(), new String[0]);
+        servo = window.combo(UiMsg.EXPORT_SERVOS.text(), new String[] {UiMsg.EXPORT_SERVO_PWM.text(), UiMsg.EXPORT_SERVO_DXL.text(),
+                UiMsg.EXPORT_SERVO_STS.text()});
         window.label("");
         consoleSensors = new Button(shell, SWT.CHECK);
-        consoleSensors.setText("Take accel and touch readings from console commands");
+        consoleSensors.setText(UiMsg.EXPORT_CONSOLE_SENSORS.text());
         consoleSensors.setLayoutData(ExportWindow.span());
-        window.label("Tick (s):");
+        window.label(UiMsg.EXPORT_TICK.text());
         tick = new Text(shell, SWT.BORDER);
         tick.setText("0.01");
         tick.setLayoutData(ExportWindow.span());
-        window.finish("program-export", "The folder the program's files are written into (a sketch gets a folder of"
-                + " its own in it)", 110, this::export);
+        window.finish("program-export", UiMsg.EXPORT_PROGRAM_FOLDER.text(), 110, this::export);
         target.addListener(SWT.Selection, e -> targetChanged());
         targetChanged();
     }
@@ -135,10 +134,9 @@ public final class ExportProgramDialog {
                     consoleSensors.getSelection()) : null;
             return new ProgramExport.Request(t, t.boards().get(Math.max(0, board.getSelectionIndex())), dt, sketch);
         } catch (NumberFormatException e) {
-            window.say("Nothing written: the tick must be a number of seconds such as 0.01, got '"
-                    + tick.getText().trim() + "'");
+            window.say(UiMsg.NOTHING_WRITTEN.text(UiMsg.TICK_NOT_A_NUMBER.text(tick.getText().trim())));
         } catch (IllegalArgumentException e) {
-            window.say("Nothing written: " + e.getMessage());
+            window.say(UiMsg.NOTHING_WRITTEN.text(e.getMessage()));
         }
         return null;
     }
@@ -150,7 +148,7 @@ public final class ExportProgramDialog {
         }
         Program p = program.get();
         if (p == null) {
-            window.say("Nothing written: there is no script without errors open (see Problems)");
+            window.say(UiMsg.NOTHING_WRITTEN.text(UiMsg.NO_SCRIPT_WITHOUT_ERRORS.text()));
             return;
         }
         ProgramExport.Request q = request();
@@ -160,12 +158,12 @@ public final class ExportProgramDialog {
         Path out = window.folder();
         busy = true;
         window.exporting(true);
-        window.say("Exporting " + Path.of(p.file()).getFileName() + " as " + q.target().word() + "\u2026");
+        window.say(UiMsg.EXPORTING.text(Path.of(p.file()).getFileName(), q.target().word()));
         Display display = window.shell().getDisplay();
         background(() -> {
             DiagnosticList diags = new DiagnosticList();
             ProgramExport.Result r = ProgramExport.export(p, q, diags);
-            String refused = r == null ? "the program cannot be exported:\n" + lines(diags.all()) : refusal(r, out);
+            String refused = r == null ? UiMsg.PROGRAM_CANNOT_BE_EXPORTED.text(lines(diags.all())) : refusal(r, out);
             List<Path> existing = r == null ? List.of() : ExportWindow.existing(r.dir(out), r.files().keySet());
             display.asyncExec(() -> prepared(r, out, refused, existing, diags.all()));
         });
@@ -178,7 +176,7 @@ public final class ExportProgramDialog {
         try {
             return refused != null ? refused : ProgramExport.editedSketch(dir, r.files().keySet());
         } catch (IOException e) {
-            return "cannot read '" + dir + "': " + e.getMessage();
+            return UiMsg.CANNOT_READ_FOLDER.text(dir, e.getMessage());
         }
     }
 
@@ -192,11 +190,11 @@ public final class ExportProgramDialog {
             problems.accept(found);
         }
         if (refused != null) {
-            done("Nothing written: " + refused);
+            done(UiMsg.NOTHING_WRITTEN.text(refused));
             return;
         }
         Path dir = r.dir(out);
-        if (!window.mayReplace(dir, existing, "the program")) {
+        if (!window.mayReplace(dir, existing, UiMsg.THE_PROGRAM.text())) {
             busy = false;
             window.exporting(false);
             return;
@@ -206,9 +204,9 @@ public final class ExportProgramDialog {
             String text;
             try {
                 Export.write(dir, r.files());
-                text = "Wrote " + r.files().size() + " files to " + dir + "\n" + r.memory().format();
+                text = UiMsg.WROTE_FILES.text(r.files().size(), dir, r.memory().format());
             } catch (IOException e) {
-                text = "Nothing written: cannot write into '" + dir + "': " + e.getMessage();
+                text = UiMsg.NOTHING_WRITTEN.text(UiMsg.CANNOT_WRITE_INTO.text(dir, e.getMessage()));
             }
             String said = text;
             display.asyncExec(() -> done(said));

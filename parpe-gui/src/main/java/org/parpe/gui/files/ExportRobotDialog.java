@@ -1,5 +1,6 @@
 package org.parpe.gui.files;
 
+import org.parpe.gui.text.UiMsg;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
@@ -24,7 +25,6 @@ import org.parpe.sim.bridge.Export;
  * wrote or why it refused (located, also in Problems) shows in the window. Widgets on the UI thread only.
  */
 public final class ExportRobotDialog {
-    private static final String[] LABELS = {"MJCF (MuJoCo)", "URDF (ROS tools)", "SDF (Gazebo)"};
 
     private final ExportWindow window;
     private final Combo target;
@@ -36,12 +36,12 @@ public final class ExportRobotDialog {
     private ExportRobotDialog(Shell parent, Supplier<Program> program, String currentRobot, Consumer<List<Diagnostic>> problems) {
         this.program = program;
         this.problems = problems;
-        window = new ExportWindow(parent, "Export Robot");
-        target = window.combo("Format:", LABELS);
-        window.label("Robot:");
+        window = new ExportWindow(parent, UiMsg.EXPORT_ROBOT_TITLE.text());
+        target = window.combo(UiMsg.EXPORT_FORMAT.text(), new String[] {"MJCF (MuJoCo)", UiMsg.EXPORT_FORMAT_URDF.text(), "SDF (Gazebo)"});
+        window.label(UiMsg.VIEW_ROBOT.text());
         robot = new RobotChoice(window.shell(), currentRobot);
         robot.control().setLayoutData(ExportWindow.span());
-        window.finish("robot-export", "The folder the robot's file is written into", 90, this::export);
+        window.finish("robot-export", UiMsg.EXPORT_ROBOT_FOLDER.text(), 90, this::export);
     }
 
     /**
@@ -97,8 +97,7 @@ public final class ExportRobotDialog {
         String spec = robot.robot();
         Program program = this.program.get();
         if (SimTarget.AUTO.equals(spec) && program == null) {
-            window.say("'auto' picks the robot from the script, and there is no script without errors open:"
-                    + " choose a robot (a generator or a configuration file)");
+            window.say(UiMsg.AUTO_NEEDS_SCRIPT.text());
             return;
         }
         String chosen = SimTarget.AUTO.equals(spec) ? SimTarget.autoSpec(program) : spec;
@@ -106,18 +105,18 @@ public final class ExportRobotDialog {
         Path dir = window.folder();
         busy = true;
         window.exporting(true);
-        window.say("Exporting " + chosen + " as " + format.toUpperCase(Locale.ROOT) + "\u2026");
+        window.say(UiMsg.EXPORTING.text(chosen, format.toUpperCase(Locale.ROOT)));
         Display display = window.shell().getDisplay();
         background(() -> {
             DiagnosticList diags = new DiagnosticList();
             Export.Robot r = Export.robot(format, chosen, ids, diags);
             String refused = r == null ? null : Export.refusal(dir, r.files().keySet());
             if (r == null) {
-                StringBuilder b = new StringBuilder("Nothing written: the robot '" + chosen + "' cannot be exported\n");
+                StringBuilder b = new StringBuilder(UiMsg.NOTHING_WRITTEN.text(UiMsg.ROBOT_CANNOT_BE_EXPORTED.text(chosen)) + "\n");
                 diags.all().forEach(d -> b.append(d.format()).append('\n'));
                 display.asyncExec(() -> done(b.toString().trim(), diags.all()));
             } else if (refused != null) {
-                display.asyncExec(() -> done("Nothing written: " + refused, List.of()));
+                display.asyncExec(() -> done(UiMsg.NOTHING_WRITTEN.text(refused), List.of()));
             } else {
                 List<Path> taken = ExportWindow.existing(dir, r.files().keySet());
                 display.asyncExec(() -> replaceAndWrite(r, chosen, dir, taken));
@@ -154,9 +153,9 @@ public final class ExportRobotDialog {
         try {
             Export.write(dir, r.files());
         } catch (IOException e) {
-            return "Nothing written: cannot write into '" + dir + "': " + e.getMessage();
+            return UiMsg.NOTHING_WRITTEN.text(UiMsg.CANNOT_WRITE_INTO.text(dir, e.getMessage()));
         }
-        return "Wrote " + String.join(", ", r.files().keySet()) + " to " + dir + " (" + spec + ": " + r.summary() + ")";
+        return UiMsg.WROTE_ROBOT.text(String.join(", ", r.files().keySet()), dir, spec, r.summary());
     }
 
     private void done(String text, List<Diagnostic> diagnostics) {

@@ -1,5 +1,6 @@
 package org.parpe.gui.files;
 
+import org.parpe.gui.text.UiMsg;
 import java.nio.file.Path;
 import java.util.List;
 import org.eclipse.swt.SWT;
@@ -57,12 +58,13 @@ final class ExportWindow {
         }
         String files = taken.stream().map(p -> p.getFileName().toString()).collect(java.util.stream.Collectors.joining(", "));
         boolean one = taken.size() == 1;
-        if (questions.ask(one ? "Replace File" : "Replace Files", "The folder " + dir + " already has " + files
-                + ". Replace " + (one ? "it" : "them") + " with the export of " + what + "?", "Replace", "Cancel") == 0) {
+        if (questions.ask((one ? UiMsg.REPLACE_FILE_TITLE : UiMsg.REPLACE_FILES_TITLE).text(),
+                (one ? UiMsg.REPLACE_IT : UiMsg.REPLACE_THEM).text(dir, files, what), UiMsg.BUTTON_REPLACE.text(),
+                org.eclipse.jface.dialogs.IDialogConstants.CANCEL_LABEL) == 0) {
             return true;
         }
-        say("Nothing written: " + taken.stream().map(Path::toString).collect(java.util.stream.Collectors.joining(", "))
-                + (one ? " is" : " are") + " kept");
+        say(UiMsg.NOTHING_WRITTEN.text((one ? UiMsg.FILE_KEPT : UiMsg.FILES_KEPT).text(
+                taken.stream().map(Path::toString).collect(java.util.stream.Collectors.joining(", ")))));
         return false;
     }
 
@@ -98,19 +100,19 @@ final class ExportWindow {
      * Export, which runs {@code action}.
      */
     void finish(String name, String browse, int height, Runnable action) {
-        label("Folder:");
+        label(UiMsg.EXPORT_FOLDER.text());
         folder = new Text(shell, SWT.BORDER);
         folder.setText(FileDialogs.start().resolve(name).toString());
         GridData fd = new GridData(SWT.FILL, SWT.CENTER, true, false);
         fd.widthHint = 420;
         folder.setLayoutData(fd);
-        button("Browse\u2026", () -> askFolder(browse));
+        button(UiMsg.EXPORT_BROWSE.text(), () -> askFolder(browse));
         message = new Text(shell, SWT.MULTI | SWT.READ_ONLY | SWT.WRAP | SWT.V_SCROLL | SWT.BORDER);
         GridData md = new GridData(SWT.FILL, SWT.FILL, true, true, 3, 1);
         md.heightHint = height;
         message.setLayoutData(md);
         new Label(shell, SWT.NONE).setLayoutData(span());
-        export = button("Export", action);
+        export = button(UiMsg.EXPORT_BUTTON.text(), action);
         shell.setDefaultButton(export);
     }
 
@@ -155,7 +157,7 @@ final class ExportWindow {
 
     private void askFolder(String what) {
         DirectoryDialog d = new DirectoryDialog(shell);
-        d.setText("Export Into");
+        d.setText(UiMsg.EXPORT_INTO.text());
         d.setMessage(what);
         d.setFilterPath(FileDialogs.start().toString());
         String chosen = d.open();

@@ -1,5 +1,6 @@
 package org.parpe.gui.files;
 
+import org.parpe.gui.text.UiMsg;
 import org.parpe.gui.prefs.Prefs;
 
 import java.io.IOException;
@@ -21,9 +22,11 @@ import org.parpe.gui.editor.ParslEditor;
  * background thread, so opening a large one never freezes the window. UI thread only.
  */
 public final class FileActions {
-    public static final String TEMPLATE = String.join("\n",
+    /** The text of File > New: a crawling snake, its first line pointing to the tutorial in the IDE's language. */
+    public static String template() {
+        return String.join("\n",
             "<?xml version=\"1.0\"?>",
-            "<!-- New to PARPE? Help > Tutorial teaches it step by step, from a first pose to a race. -->",
+            "<!-- " + UiMsg.NEW_SCRIPT_COMMENT.text() + " -->",
             "<program>",
             "  <robot>",
             "    <structure>",
@@ -47,6 +50,8 @@ public final class FileActions {
             "  </states>",
             "</program>",
             "");
+    }
+
     private static final int AUTOSAVE_MS = 3000;
 
     /** Asks a question with buttons and returns the index of the answer (-1: dialog closed); tests answer without a dialog. */
@@ -150,7 +155,7 @@ public final class FileActions {
     }
 
     public String name() {
-        return file == null && example != null ? fileName() + " (example copy)" : fileName();
+        return file == null && example != null ? UiMsg.EXAMPLE_COPY_NAME.text(fileName()) : fileName();
     }
 
     /** The file's name, or the name Save As proposes for an untitled document. */
@@ -190,7 +195,7 @@ public final class FileActions {
 
     public void newFile() {
         if (confirmDiscard()) {
-            show(null, TEMPLATE, TEMPLATE, null);
+            show(null, template(), template(), null);
         }
     }
 
@@ -198,7 +203,7 @@ public final class FileActions {
         if (!confirmDiscard()) {
             return;
         }
-        Path p = org.parpe.gui.panels.FileDialogs.ask(shell, SWT.OPEN, "Open a PARSL script", "*.xml;*.parsl", null, null);
+        Path p = org.parpe.gui.panels.FileDialogs.ask(shell, SWT.OPEN, UiMsg.OPEN_SCRIPT_TITLE.text(), "*.xml;*.parsl", null, null);
         if (p != null) {
             openPath(p);
         }
@@ -230,7 +235,7 @@ public final class FileActions {
         long gen = ++opening;
         reading = true;
         editor.viewer().setEditable(false);
-        message.accept("Opening " + abs.getFileName() + "\u2026");
+        message.accept(UiMsg.OPENING.text(abs.getFileName()));
         org.eclipse.swt.widgets.Display display = shell.getDisplay();
         reader.execute(() -> {
             String text = null;
@@ -257,12 +262,12 @@ public final class FileActions {
         if (text == null) {
             stopReading();
             message.accept("");
-            MessageDialog.openError(shell, "Cannot open file", "Cannot read " + abs + ":\n" + error);
+            MessageDialog.openError(shell, UiMsg.CANNOT_OPEN_FILE.text(), UiMsg.CANNOT_READ_ERROR.text(abs, error));
             return;
         }
         if (copy) {
             show(null, text, text, null, abs);
-            message.accept("A copy of the example " + abs.getFileName() + ": Save asks where to keep your version.");
+            message.accept(UiMsg.EXAMPLE_COPY_OPENED.text(abs.getFileName()));
             return;
         }
         show(abs, text, text, null);
@@ -314,8 +319,8 @@ public final class FileActions {
 
     public boolean save() {
         if (file != null && changedOnDisk()) {
-            int a = questions.ask("File changed on disk", name() + " was changed on disk by another program since it was"
-                    + " opened or saved. Replace it with the text in the editor?", "Replace", "Cancel");
+            int a = questions.ask(UiMsg.FILE_CHANGED_TITLE.text(), UiMsg.FILE_CHANGED_REPLACE.text(name()),
+                    UiMsg.BUTTON_REPLACE.text(), org.eclipse.jface.dialogs.IDialogConstants.CANCEL_LABEL);
             if (a != 0) {
                 return false;
             }
@@ -352,16 +357,16 @@ public final class FileActions {
         String now = readOrNull(file);
         if (now == null) {
             savedText = "\u0000"; // nothing on disk equals the editor's text: it is unsaved
-            message.accept(name() + " was deleted or moved by another program; Save writes it again.");
+            message.accept(UiMsg.FILE_DELETED_ON_DISK.text(name()));
             changed.run();
             return;
         }
-        String why = name() + " was changed on disk by another program.";
-        int a = questions.ask("File changed on disk", dirty() ? why + " Reload it and lose the changes in the editor,"
-                + " or keep the editor's text?" : why + " Reload it, or keep the editor's text?", "Reload", "Keep Editor Text");
+        String why = UiMsg.FILE_CHANGED_BY_OTHER.text(name());
+        int a = questions.ask(UiMsg.FILE_CHANGED_TITLE.text(), (dirty() ? UiMsg.RELOAD_LOSE_CHANGES : UiMsg.RELOAD_OR_KEEP).text(why),
+                UiMsg.BUTTON_RELOAD.text(), UiMsg.BUTTON_KEEP_EDITOR.text());
         if (a == 0) {
             show(file, now, now, null);
-            message.accept("Reloaded " + name() + " from disk.");
+            message.accept(UiMsg.RELOADED.text(name()));
         } else {
             savedText = now; // the editor's text no longer is what is on disk: it is unsaved
             changed.run();
@@ -375,8 +380,7 @@ public final class FileActions {
         }
         Path target = chosen.toAbsolutePath().normalize();
         if (example != null && target.equals(example)) {
-            MessageDialog.openError(shell, "Cannot save over the example", target + " is the example this text was copied"
-                    + " from; examples are never overwritten. Choose another name or folder.");
+            MessageDialog.openError(shell, UiMsg.CANNOT_SAVE_OVER_EXAMPLE.text(), UiMsg.EXAMPLE_NEVER_OVERWRITTEN.text(target));
             return false;
         }
         if (write(target)) {
@@ -402,8 +406,7 @@ public final class FileActions {
             changed.run();
             return true;
         } catch (IOException | RuntimeException e) {
-            MessageDialog.openError(shell, "Cannot save", "Cannot write " + target + ":\n" + describe(e)
-                    + "\n\nYour text is still in the editor (and in the autosave copy). Try Save As.");
+            MessageDialog.openError(shell, UiMsg.CANNOT_SAVE.text(), UiMsg.CANNOT_WRITE_KEPT.text(target, describe(e)));
             return false;
         }
     }
@@ -422,11 +425,10 @@ public final class FileActions {
         if (!dirty()) {
             return true;
         }
-        String message = (recovered
-                ? name() + " holds recovered text that is not saved. Save it?\n\nIf you don't, the recovered copy is kept"
-                        + " and offered again when PARPE starts."
-                : name() + " has unsaved changes. Save them?") + (alsoLost == null ? "" : "\n\n" + alsoLost);
-        return switch (questions.ask("Unsaved changes", message, "Save", "Don't Save", "Cancel")) {
+        String message = (recovered ? UiMsg.RECOVERED_NOT_SAVED : UiMsg.UNSAVED_CHANGES_SAVE).text(name())
+                + (alsoLost == null ? "" : "\n\n" + alsoLost);
+        return switch (questions.ask(UiMsg.UNSAVED_CHANGES_TITLE.text(), message, UiMsg.BUTTON_SAVE.text(),
+                UiMsg.BUTTON_DONT_SAVE.text(), org.eclipse.jface.dialogs.IDialogConstants.CANCEL_LABEL)) {
             case 0 -> save();
             case 1 -> {
                 if (!recovered) {
@@ -450,8 +452,8 @@ public final class FileActions {
     public boolean offerRecovery() {
         for (Autosave.Copy c : autosave.orphans()) {
             String where = c.describe();
-            int answer = questions.ask("Recover unsaved work", "A PARPE window closed without saving " + where
-                    + ". Recover its unsaved text?", "Recover", "Discard", "Not Now");
+            int answer = questions.ask(UiMsg.RECOVER_TITLE.text(), UiMsg.RECOVER_QUESTION.text(where),
+                    UiMsg.BUTTON_RECOVER.text(), UiMsg.BUTTON_DISCARD.text(), UiMsg.BUTTON_NOT_NOW.text());
             if (answer == 1) {
                 autosave.discard(c);
             } else if (answer == 0) {
@@ -468,7 +470,7 @@ public final class FileActions {
         try {
             adopted = autosave.adopt(c);
         } catch (IOException e) {
-            MessageDialog.openError(shell, "Cannot recover", "Cannot take over the copy of unsaved text: " + describe(e));
+            MessageDialog.openError(shell, UiMsg.CANNOT_RECOVER.text(), UiMsg.CANNOT_TAKE_OVER.text(describe(e)));
             return false;
         }
         String saved = "";

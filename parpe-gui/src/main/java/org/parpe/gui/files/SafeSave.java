@@ -1,5 +1,6 @@
 package org.parpe.gui.files;
 
+import org.parpe.gui.text.UiMsg;
 import java.io.IOException;
 import java.nio.file.Path;
 import org.eclipse.swt.SWT;
@@ -23,6 +24,6 @@ final class SafeSave {
 
     /** The Save As dialog, starting in {@code folder} with {@code name}; the chosen file, or {@code null}. */
     static Path ask(Shell shell, Path folder, String name) {
-        return org.parpe.gui.panels.FileDialogs.ask(shell, SWT.SAVE, "Save the script as", "*.xml", name, folder);
+        return org.parpe.gui.panels.FileDialogs.ask(shell, SWT.SAVE, UiMsg.SAVE_SCRIPT_TITLE.text(), "*.xml", name, folder);
     }
 }

@@ -1,5 +1,6 @@
 package org.parpe.gui.grade;
 
+import org.parpe.gui.text.UiMsg;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -66,17 +67,17 @@ public final class ClassWindow {
 
     private ClassWindow(Shell parent) {
         shell = new Shell(parent, SWT.SHELL_TRIM | SWT.MODELESS);
-        shell.setText("Class");
+        shell.setText(UiMsg.CLASS_TITLE.text());
         shell.setLayout(new GridLayout(1, false));
         Composite files = row(shell, 3);
-        challengeBox = field(files, "Challenge:", this::askChallenge);
-        studentsBox = field(files, "Students:", this::askStudents);
-        new Label(files, SWT.NONE).setText("Report:");
+        challengeBox = field(files, UiMsg.CLASS_CHALLENGE.text(), this::askChallenge);
+        studentsBox = field(files, UiMsg.CLASS_STUDENTS.text(), this::askStudents);
+        new Label(files, SWT.NONE).setText(UiMsg.CLASS_REPORT.text());
         reportLabel = new Label(files, SWT.NONE);
         reportLabel.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false, 2, 1));
         Composite bar = row(shell, 4);
-        grade = button(bar, "Grade", this::grade);
-        stop = button(bar, "Stop", this::stopGrading);
+        grade = button(bar, UiMsg.CLASS_GRADE.text(), this::grade);
+        stop = button(bar, UiMsg.TOOL_STOP.text(), this::stopGrading);
         progress = new ProgressBar(bar, SWT.HORIZONTAL);
         progress.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         counts = new Label(bar, SWT.NONE);
@@ -92,7 +93,7 @@ public final class ClassWindow {
         view = new View3D(beside);
         view.setSource(() -> player == null ? null : player.snapshot());
         view.setOverlay(() -> player == null ? "" : player.caption());
-        view.setEmptyText("Grade the class, then click a student to replay the run");
+        view.setEmptyText(UiMsg.CLASS_EMPTY.text());
         Composite right = new Composite(beside, SWT.NONE);
         GridLayout gl = new GridLayout(1, false);
         gl.marginWidth = 0;
@@ -136,7 +137,7 @@ public final class ClassWindow {
         new Label(parent, SWT.NONE).setText(label);
         Text t = new Text(parent, SWT.BORDER | SWT.READ_ONLY);
         t.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
-        button(parent, "Open\u2026", ask);
+        button(parent, UiMsg.CLASS_OPEN.text(), ask);
         return t;
     }
 
@@ -148,7 +149,7 @@ public final class ClassWindow {
     }
 
     private void askChallenge() {
-        Path f = FileDialogs.ask(shell, SWT.OPEN, "Open a Challenge", "*.xml", null, null);
+        Path f = FileDialogs.ask(shell, SWT.OPEN, UiMsg.CLASS_OPEN_CHALLENGE.text(), "*.xml", null, null);
         if (f != null) {
             load(f, students);
         }
@@ -156,8 +157,8 @@ public final class ClassWindow {
 
     private void askStudents() {
         DirectoryDialog d = new DirectoryDialog(shell);
-        d.setText("The Students' Folder");
-        d.setMessage("A folder with one script per student, or one folder per student");
+        d.setText(UiMsg.CLASS_STUDENTS_FOLDER.text());
+        d.setMessage(UiMsg.CLASS_STUDENTS_FOLDER_TIP.text());
         d.setFilterPath((students != null ? students.toAbsolutePath().getParent() : FileDialogs.start()).toString());
         String chosen = d.open();
         if (chosen != null) {
@@ -177,9 +178,9 @@ public final class ClassWindow {
             challengeBox.setText(challengeFile.toString());
             challenge = w == null ? null : c;
             world = w;
-            say(w == null ? (found.all().isEmpty() ? challengeFile + ": the challenge has errors"
+            say(w == null ? (found.all().isEmpty() ? UiMsg.CLASS_CHALLENGE_ERRORS.text(challengeFile)
                     : found.all().get(0).format()) : "");
-            shell.setText("Class \u2014 " + challengeFile.getFileName());
+            shell.setText(UiMsg.CLASS_TITLE_NAMED.text(challengeFile.getFileName()));
         }
         if (studentsDir != null) {
             students = studentsDir;
@@ -195,12 +196,12 @@ public final class ClassWindow {
         if (challenge == null || students == null || running()) {
             return;
         }
-        String why = Grading.prepare(report, students, "the report folder");
+        String why = Grading.prepare(report, students, UiMsg.CLASS_REPORT_FOLDER.text());
         List<Students.Student> list;
         try {
             list = why == null ? Students.of(students) : List.of();
         } catch (IOException e) {
-            why = "cannot list '" + students + "': " + e.getMessage();
+            why = UiMsg.CLASS_CANNOT_LIST.text(students, e.getMessage());
             list = List.of();
         }
         if (why != null) {
@@ -211,7 +212,7 @@ public final class ClassWindow {
         ranking.show(List.of());
         progress.setMaximum(Math.max(1, list.size()));
         progress.setSelection(0);
-        counts.setText("0 of " + list.size() + " graded");
+        counts.setText(UiMsg.CLASS_GRADED.text(0, list.size()));
         say("");
         Grading g = new Grading(challenge.file(), challenge, students, report, Isolation.Limits.DEFAULTS);
         int jobs = Runtime.getRuntime().availableProcessors();
@@ -231,15 +232,15 @@ public final class ClassWindow {
         try {
             rows = g.run(list, jobs, (done, total, s) -> ui(() -> {
                 progress.setSelection(done);
-                counts.setText(done + " of " + total + " graded: " + s.name().replaceAll("\\p{Cntrl}", "?"));
+                counts.setText(UiMsg.CLASS_GRADED_NAME.text(done, total, s.name().replaceAll("\\p{Cntrl}", "?")));
             }));
             AtomicFiles.write(g.out().resolve("report.csv"), Report.csv(rows));
             AtomicFiles.write(g.out().resolve("report.html"), ReportPage.html(rows, c, w));
-            end = Report.summary(rows, c) + "; report in " + g.out().resolve("report.html");
+            end = UiMsg.CLASS_REPORT_IN.text(Report.summary(rows, c), g.out().resolve("report.html"));
         } catch (InterruptedException e) {
-            end = "grading stopped";
+            end = UiMsg.CLASS_STOPPED.text();
         } catch (IOException e) {
-            end = "cannot write the report in '" + g.out() + "': " + e.getMessage();
+            end = UiMsg.CLASS_CANNOT_WRITE_REPORT.text(g.out(), e.getMessage());
         }
         List<Row> shown = rows;
         String said = end;
@@ -277,8 +278,8 @@ public final class ClassWindow {
             return;
         }
         problem.setText(r.student().name().replaceAll("\\p{Cntrl}", "?")
-                + (r.outcome().reason().isEmpty() ? String.format(Locale.ROOT, ": rank %d, score %.1f (%s)", r.rank(),
-                r.outcome().score(), r.outcome().parts()) : ":\n" + r.outcome().reason()));
+                + (r.outcome().reason().isEmpty() ? UiMsg.CLASS_RANK_SCORE.text(r.rank(),
+                String.format(Locale.ROOT, "%.1f", r.outcome().score()), r.outcome().parts()) : ":\n" + r.outcome().reason()));
         script.setText(scriptText(r.student()));
         stopReplay();
         view.clear();
@@ -300,7 +301,7 @@ public final class ClassWindow {
             InputFiles.check(f);
             return Files.readString(f, java.nio.charset.StandardCharsets.UTF_8);
         } catch (IOException e) {
-            return "(cannot show '" + s.script() + "': " + e.getMessage() + ")";
+            return UiMsg.CLASS_CANNOT_SHOW.text(s.script(), e.getMessage());
         }
     }
 

@@ -1,5 +1,6 @@
 package org.parpe.gui.grade;
 
+import org.parpe.gui.text.UiMsg;
 import java.util.List;
 import java.util.Locale;
 import org.eclipse.swt.SWT;
@@ -16,8 +17,12 @@ import org.parpe.sim.grade.Row;
  * as the line's tool tip is the Problem box's).
  */
 final class RankingTable {
-    static final String[] TITLES = {"rank", "student", "score", "parts", "forward (m)", "distance (m)", "fell", "time (s)",
-        "problem"};
+    /** The columns' titles, in the IDE's language. */
+    static String[] titles() {
+        return new String[] {UiMsg.CLASS_COL_RANK.text(), UiMsg.CLASS_COL_STUDENT.text(), UiMsg.CLASS_COL_SCORE.text(),
+            UiMsg.CLASS_COL_PARTS.text(), UiMsg.CLASS_COL_FORWARD.text(), UiMsg.CLASS_COL_DISTANCE.text(),
+            UiMsg.CLASS_COL_FELL.text(), UiMsg.CLASS_COL_TIME.text(), UiMsg.CLASS_COL_PROBLEM.text()};
+    }
     private static final int[] WIDTHS = {50, 180, 70, 240, 105, 110, 45, 75, 420};
     private final Table table;
     private List<Row> rows = List.of();
@@ -26,9 +31,10 @@ final class RankingTable {
         table = new Table(parent, SWT.BORDER | SWT.FULL_SELECTION | SWT.SINGLE | SWT.V_SCROLL | SWT.H_SCROLL);
         table.setHeaderVisible(true);
         table.setLinesVisible(true);
-        for (int i = 0; i < TITLES.length; i++) {
+        String[] titles = titles();
+        for (int i = 0; i < titles.length; i++) {
             TableColumn c = new TableColumn(table, i == 0 || (i >= 2 && i != 3 && i != 6 && i != 8) ? SWT.RIGHT : SWT.LEFT);
-            c.setText(TITLES[i]);
+            c.setText(titles[i]);
             c.setWidth(WIDTHS[i]);
         }
     }
@@ -71,6 +77,6 @@ final class RankingTable {
         }
         return new String[] {Integer.toString(r.rank()), name, String.format(Locale.ROOT, "%.1f", o.score()), o.parts(),
             String.format(Locale.ROOT, "%.3f", o.dx()), String.format(Locale.ROOT, "%.3f", o.distance()),
-            o.fell() ? "yes" : "no", String.format(Locale.ROOT, "%.2f", o.time()), problem};
+            (o.fell() ? UiMsg.CLASS_YES : UiMsg.CLASS_NO).text(), String.format(Locale.ROOT, "%.2f", o.time()), problem};
     }
 }

@@ -1,5 +1,6 @@
 package org.parpe.gui.grade;
 
+import org.parpe.gui.text.UiMsg;
 import java.nio.file.Path;
 import java.util.function.Consumer;
 import org.eclipse.swt.widgets.Display;
@@ -49,7 +50,7 @@ final class ReplayPlayer {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         } catch (Exception e) {
-            tell(said, "cannot replay: " + e.getMessage());
+            tell(said, UiMsg.CLASS_CANNOT_REPLAY.text(e.getMessage()));
         } finally {
             replay = null;
         }
@@ -70,7 +71,7 @@ final class ReplayPlayer {
     /** The line the 3D view shows in its corner: whose run, and the simulated time. */
     String caption() {
         SimSnapshot s = snapshot();
-        return s == null ? "" : String.format(java.util.Locale.ROOT, "replay of %s   t = %.2f s", name, s.time());
+        return s == null ? "" : UiMsg.CLASS_REPLAY_OF.text(name, String.format(java.util.Locale.ROOT, "%.2f", s.time()));
     }
 
     /** Whether the replay is still playing or showing its last picture. */

@@ -1,7 +1,7 @@
 package org.parpe.gui.hardware;
 
+import org.parpe.gui.text.UiMsg;
 import java.util.List;
-import java.util.Locale;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.gui.pose.PoseHardware;
 import org.parpe.serial.servo.profile.HardwareProfile;
@@ -25,7 +25,8 @@ public final class ConnectedRobot implements PoseHardware {
     @Override
     public String describe() {
         int n = dialog.servos().size();
-        return n + " servo" + (n == 1 ? "" : "s") + (profile == null ? "" : " (profile " + profile.file() + ")");
+        String which = profile == null ? "" : UiMsg.HW_DESCRIBE_PROFILE.text(profile.file());
+        return n == 1 ? UiMsg.HW_DESCRIBE_ONE.text(which) : UiMsg.HW_DESCRIBE_N.text(n, which);
     }
 
     /** The dialog's row of module {@code id}'s servo, or −1. */
@@ -46,7 +47,7 @@ public final class ConnectedRobot implements PoseHardware {
         }
         for (HardwareSession.Servo s : dialog.servos()) {
             if (s.id() == id && s.model() != null) {
-                return ServoMapping.starter(id, id, s.model(), SourcePos.origin("Hardware dialog"));
+                return ServoMapping.starter(id, id, s.model(), SourcePos.origin(UiMsg.HW_TITLE.text()));
             }
         }
         return null;
@@ -72,13 +73,13 @@ public final class ConnectedRobot implements PoseHardware {
         for (int k = 0; k < modules.length; k++) {
             int r = row(modules[k]);
             if (r < 0) {
-                throw new IllegalStateException("module " + modules[k] + " has no servo in the Hardware dialog"
-                        + (profile == null ? " (servo ID = module ID without a hardware profile)" : " and " + profile.file()));
+                throw new IllegalStateException(UiMsg.HW_MODULE_NO_SERVO.text(modules[k], profile == null
+                        ? UiMsg.HW_MODULE_NO_SERVO_PLAIN.text() : UiMsg.HW_MODULE_NO_SERVO_PROFILE.text(profile.file())));
             }
             HardwareSession.Servo s = servos.get(r);
             if (Double.isNaN(s.degrees()) || !s.status().isEmpty()) {
-                throw new IllegalStateException(String.format(Locale.ROOT, "module %d (servo %d) has no good reading%s",
-                        modules[k], s.id(), s.status().isEmpty() ? "" : ": " + s.status()));
+                throw new IllegalStateException(UiMsg.HW_NO_GOOD_READING.text(modules[k], s.id(),
+                        s.status().isEmpty() ? "" : ": " + s.status()));
             }
             out[k] = mapping(modules[k]).jointAngle(s.degrees());
         }

@@ -1,6 +1,7 @@
 package org.parpe.gui.hardware;
 
 
+import org.parpe.gui.text.UiMsg;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
@@ -63,25 +64,25 @@ public final class HardwareDialog {
     private HardwareDialog(HardwareHost ide) {
         this.ide = ide;
         shell = new Shell(ide.shell(), SWT.DIALOG_TRIM | SWT.RESIZE);
-        shell.setText("Hardware");
+        shell.setText(UiMsg.HW_TITLE.text());
         // Reports reach widgets through asyncExec, after the constructor has made them.
         session = new HardwareSession(new ToUi());
         shell.setLayout(new GridLayout(1, false));
         Composite top = row(9);
-        label(top, "Port:");
+        label(top, UiMsg.TOOL_PORT.text());
         port = new Combo(top, SWT.DROP_DOWN);
         port.setLayoutData(width(170));
         port.setText(ide.port());
-        port.setToolTipText("Serial device of the servo bus (type a path, or pick one)");
+        port.setToolTipText(UiMsg.HW_PORT_TIP.text());
         port.addListener(SWT.MouseDown, e -> listPorts());
-        label(top, "Protocol:");
+        label(top, UiMsg.HW_PROTOCOL.text());
         protocol = new Combo(top, SWT.READ_ONLY);
         protocol.add(ANY);
         for (ServoProtocol p : ServoProtocol.values()) {
             protocol.add(p.key());
         }
         protocol.select(0);
-        label(top, "Baud:");
+        label(top, UiMsg.HW_BAUD.text());
         baud = new Combo(top, SWT.DROP_DOWN);
         baud.setLayoutData(width(100));
         baud.add(ANY);
@@ -89,8 +90,8 @@ public final class HardwareDialog {
             baud.add(String.valueOf(b));
         }
         baud.select(0);
-        button(top, "Connect", "Look for servos with this protocol and baud rate (\"any\": try them all)", this::connect);
-        button(top, "Scan", "Try every protocol at every common baud rate", () -> {
+        button(top, UiMsg.HW_CONNECT.text(), UiMsg.HW_CONNECT_TIP.text(), this::connect);
+        button(top, UiMsg.HW_SCAN.text(), UiMsg.HW_SCAN_TIP.text(), () -> {
             protocol.select(0);
             baud.select(0);
             connect();
@@ -102,30 +103,29 @@ public final class HardwareDialog {
         GridData td = new GridData(SWT.FILL, SWT.FILL, true, true);
         td.heightHint = 220;
         table.setLayoutData(td);
-        for (String[] c : new String[][] {{"ID", "50"}, {"Model", "170"}, {"Position", "100"}, {"Torque", "80"},
-            {"Status", "260"}}) {
+        for (String[] c : new String[][] {{UiMsg.HW_COL_ID.text(), "50"}, {UiMsg.HW_COL_MODEL.text(), "170"},
+            {UiMsg.HW_COL_POSITION.text(), "100"}, {UiMsg.HW_COL_TORQUE.text(), "80"}, {UiMsg.HW_COL_STATUS.text(), "260"}}) {
             TableColumn col = new TableColumn(table, SWT.LEFT);
             col.setText(c[0]);
-            col.setWidth(Integer.parseInt(c[1]));
+            // at least as wide as its header, which is longer in some languages ("Drehmoment")
+            col.pack();
+            col.setWidth(Math.max(col.getWidth(), Integer.parseInt(c[1])));
         }
         table.addListener(SWT.Selection, e -> selected());
 
         Composite torque = row(5);
-        button(torque, "Limp all", "Torque off for every servo: they can be moved by hand", () -> session.torque(-1, false));
-        button(torque, "Hold all", "Torque on for every servo, holding where they are", () -> session.torque(-1, true));
-        button(torque, "Limp", "Torque off for the selected servo", () -> onSelected(r -> session.torque(r, false)));
-        button(torque, "Hold", "Torque on for the selected servo, holding where it is",
+        button(torque, UiMsg.HW_LIMP_ALL.text(), UiMsg.HW_LIMP_ALL_TIP.text(), () -> session.torque(-1, false));
+        button(torque, UiMsg.HW_HOLD_ALL.text(), UiMsg.HW_HOLD_ALL_TIP.text(), () -> session.torque(-1, true));
+        button(torque, UiMsg.HW_LIMP.text(), UiMsg.HW_LIMP_TIP.text(), () -> onSelected(r -> session.torque(r, false)));
+        button(torque, UiMsg.HW_HOLD.text(), UiMsg.HW_HOLD_TIP.text(),
                 () -> onSelected(r -> session.torque(r, true)));
 
         Composite jog = row(3);
-        label(jog, "Jog selected to:");
+        label(jog, UiMsg.HW_JOG.text());
         jogBox = new Spinner(jog, SWT.BORDER);
         jogBox.setLayoutData(width(90));
         jogBox.setEnabled(false);
-        jogBox.setToolTipText("Goal of the selected servo in degrees: starts at its position; the arrows (or Up/Down) "
-                + "move it 1°, Page Up/Down 5°, or type an angle and press Enter. Its torque comes on; it moves at "
-                + "most " + (int) HardwareSession.JOG_DEG_PER_S + "°/s, within the joint limits of the tool bar's "
-                + "profile, or ±90° without one");
+        jogBox.setToolTipText(UiMsg.HW_JOG_TIP.text((int) HardwareSession.JOG_DEG_PER_S));
         jogBox.addListener(SWT.Selection, e -> jog());
         jogBox.addListener(SWT.DefaultSelection, e -> jog());
         jogValue = new Label(jog, SWT.NONE);
@@ -136,12 +136,12 @@ public final class HardwareDialog {
         md.widthHint = 640;
         md.heightHint = 40;
         message.setLayoutData(md);
-        message.setText("Pick the port, then Connect (protocol and baud known) or Scan.");
+        message.setText(UiMsg.HW_START.text());
 
         Composite bottom = row(2);
-        button(bottom, "Save profile\u2026", "Write a starter hardware profile of these servos and use it for runs",
+        button(bottom, UiMsg.HW_SAVE_PROFILE.text(), UiMsg.HW_SAVE_PROFILE_TIP.text(),
                 this::chooseProfileFile);
-        button(bottom, "Close", "Close the bus and this dialog", shell::close);
+        button(bottom, UiMsg.BUTTON_CLOSE.text(), UiMsg.HW_CLOSE_TIP.text(), shell::close);
 
         shell.addListener(SWT.Dispose, e -> {
             session.close();
@@ -198,13 +198,9 @@ public final class HardwareDialog {
         port.setItems(found.toArray(new String[0]));
         port.setText(typed);
         if (found.isEmpty() && message != null && servos.isEmpty()) {
-            show(NO_ADAPTER, false);
+            show(UiMsg.HW_NO_ADAPTER.text(), false);
         }
     }
-
-    /** What the dialog says when the system lists no serial port. */
-    static final String NO_ADAPTER = "No serial adapters found: plug in the USB adapter of the servo bus (U2D2, "
-            + "Bus Servo Adapter, …), or type the device's path (e.g. /dev/ttyUSB0 or COM3).";
 
     /** Opens the dialog, or brings the open one to the front. */
     public static HardwareDialog open(HardwareHost ide) {
@@ -250,7 +246,7 @@ public final class HardwareDialog {
     void connect() {
         String p = port.getText().trim();
         if (p.isEmpty()) {
-            show("Give the serial port first (e.g. /dev/ttyUSB0 or COM3).", true);
+            show(UiMsg.HW_GIVE_PORT.text(), true);
             return;
         }
         ServoProtocol proto = protocol.getSelectionIndex() <= 0 ? null : ServoProtocol.of(protocol.getText());
@@ -263,20 +259,20 @@ public final class HardwareDialog {
                 rate = -1;
             }
             if (rate <= 0) {
-                show("Baud must be a whole number > 0 or 'any', got '" + b + "'.", true);
+                show(UiMsg.HW_BAD_BAUD.text(b), true);
                 return;
             }
         }
         ide.setPort(p);
         setServos(List.of());
-        show(proto == null || rate == null ? "Scanning " + p + "\u2026" : "Connecting\u2026", false);
+        show(proto == null || rate == null ? UiMsg.HW_SCANNING_PORT.text(p) : UiMsg.HW_CONNECTING_NOW.text(), false);
         session.connect(p, proto, rate, null);
     }
 
     private void onSelected(java.util.function.IntConsumer action) {
         int r = table.getSelectionIndex();
         if (r < 0) {
-            show("Select a servo in the table first.", true);
+            show(UiMsg.HW_SELECT_SERVO.text(), true);
             return;
         }
         action.accept(r);
@@ -296,13 +292,13 @@ public final class HardwareDialog {
         jogAwaitsPosition = m != null && Double.isNaN(deg);
         if (m == null || Double.isNaN(deg)) {
             jogBox.setEnabled(false);
-            jogValue.setText(m == null ? "" : "position not known yet");
+            jogValue.setText(m == null ? "" : UiMsg.HW_POSITION_UNKNOWN.text());
             return;
         }
         double min = m.minDegrees();
         double max = m.maxDegrees();
         ServoMapping limits = profileLimits(servos.get(r).id(), m);
-        String whose = limits == null ? "starter limits" : "module " + limits.module() + "'s limits";
+        String whose = limits == null ? UiMsg.HW_STARTER_LIMITS.text() : UiMsg.HW_MODULE_LIMITS.text(limits.module());
         if (limits == null) {
             limits = ServoMapping.starter(servos.get(r).id(), servos.get(r).id(), m, SourcePos.NONE);
         }
@@ -314,7 +310,7 @@ public final class HardwareDialog {
         int hi = (int) Math.floor(max * STEPS_PER_DEG + 1e-9);
         jogBox.setEnabled(lo <= hi);
         if (lo > hi) {
-            jogValue.setText("no angle within " + whose);
+            jogValue.setText(UiMsg.HW_NO_ANGLE_WITHIN.text(whose));
             return;
         }
         int at = (int) Math.max(lo, Math.min(hi, Math.round(deg * STEPS_PER_DEG)));
@@ -350,12 +346,12 @@ public final class HardwareDialog {
             return;
         }
         double deg = jogBox.getSelection() / (double) STEPS_PER_DEG;
-        jogValue.setText("moving to " + degrees(deg));
+        jogValue.setText(UiMsg.HW_MOVING_TO.text(degrees(deg)));
         session.jog(r, deg);
     }
 
     private void chooseProfileFile() {
-        Path f = org.parpe.gui.panels.FileDialogs.ask(shell, SWT.SAVE, "Save the hardware profile", "*.xml", "hardware.xml", null);
+        Path f = org.parpe.gui.panels.FileDialogs.ask(shell, SWT.SAVE, UiMsg.HW_SAVE_PROFILE_TITLE.text(), "*.xml", "hardware.xml", null);
         if (f != null) {
             saveProfile(f);
         }
@@ -365,8 +361,7 @@ public final class HardwareDialog {
     public void saveProfile(Path file) {
         for (Path open : ide.openFiles()) {
             if (OutputPlan.sameFile(open, file)) {
-                show("Cannot write the profile over " + file.getFileName() + ": it is the script open in the editor;"
-                        + " choose another name.", true);
+                show(UiMsg.HW_PROFILE_OVER_SCRIPT.text(file.getFileName()), true);
                 return;
             }
         }
@@ -391,9 +386,9 @@ public final class HardwareDialog {
         for (int i = 0; i < list.size(); i++) {
             HardwareSession.Servo s = list.get(i);
             table.getItem(i).setText(new String[] {String.valueOf(s.id()),
-                s.model() == null ? "unknown (" + s.modelNumber() + ")" : s.model().label(),
-                Double.isNaN(s.degrees()) ? "?" : degrees(s.degrees()), s.torque() == null ? "?" : s.torque() ? "hold" : "limp",
-                s.status().isEmpty() ? "ok" : s.status()});
+                s.model() == null ? UiMsg.HW_MODEL_UNKNOWN_ROW.text(s.modelNumber()) : s.model().label(),
+                Double.isNaN(s.degrees()) ? "?" : degrees(s.degrees()), s.torque() == null ? "?" : (s.torque() ? UiMsg.HW_TORQUE_HOLD : UiMsg.HW_TORQUE_LIMP).text(),
+                s.status().isEmpty() ? UiMsg.HW_STATUS_OK.text() : s.status()});
         }
         if (!sameRows) {
             selected();
@@ -442,9 +437,9 @@ public final class HardwareDialog {
                     protocol.select(protocol.indexOf(p.key()));
                     baud.setText(String.valueOf(rate));
                 }
-                ide.setHardwareHeld(list.isEmpty() ? null : String.format(Locale.ROOT,
-                        "Hardware: %d servo%s connected (%s, %s)", list.size(), list.size() == 1 ? "" : "s",
-                        p.key().toUpperCase(Locale.ROOT), device));
+                ide.setHardwareHeld(list.isEmpty() ? null : list.size() == 1
+                        ? UiMsg.HW_HELD_ONE.text(p.key().toUpperCase(Locale.ROOT), device)
+                        : UiMsg.HW_HELD_N.text(list.size(), p.key().toUpperCase(Locale.ROOT), device));
             });
         }
 

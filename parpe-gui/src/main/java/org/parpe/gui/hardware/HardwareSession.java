@@ -1,5 +1,6 @@
 package org.parpe.gui.hardware;
 
+import org.parpe.gui.text.UiMsg;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
@@ -94,19 +95,15 @@ public final class HardwareSession {
         {
             ServoScanner.Result found;
             if (p != null && rate != null) {
-                listener.message(String.format(Locale.ROOT, "Looking for %s servos on %s at %d baud\u2026", p.key(), port,
-                        rate), false);
+                listener.message(UiMsg.HW_LOOKING.text(p.key(), port, rate), false);
                 found = new ServoScanner.Result(p, rate, ServoScanner.scanOne(port, p, rate, ServoScanner.idsFor(p, ids)));
             } else {
                 found = ServoScanner.scan(port, p == null ? ServoScanner.allProtocols() : List.of(p), rate, ids,
-                        (q, r) -> listener.message(String.format(Locale.ROOT, "Scanning: %s at %d baud\u2026", q.key(), r),
-                                false), () -> closing);
+                        (q, r) -> listener.message(UiMsg.HW_SCANNING_AT.text(q.key(), r), false), () -> closing);
             }
             if (found == null || found.servos().isEmpty()) {
-                listener.message("No servo answers on " + port + (p == null ? "" : " (" + p.key()
-                        + (rate == null ? "" : " at " + rate + " baud") + ")")
-                        + ". Is the robot powered, and is the adapter for this bus? Try Scan with protocol and baud 'any'.",
-                        true);
+                listener.message(UiMsg.HW_NO_SERVO_ANSWERS.text(port, p == null ? ""
+                        : rate == null ? UiMsg.HW_PROTOCOL_ONLY.text(p.key()) : UiMsg.HW_PROTOCOL_AT.text(p.key(), rate)), true);
                 listener.connected(List.of(), p, rate == null ? 0 : rate, port);
                 return;
             }
@@ -121,10 +118,10 @@ public final class HardwareSession {
         baud = found.baud();
         this.port = port;
         servos = found.servos().stream().map(f -> new Servo(f.id(), f.modelNumber(), f.model(), f.degrees(), null,
-                f.model() == null ? "model " + f.modelNumber() + " unknown to PARPE" : "")).toList();
+                f.model() == null ? UiMsg.HW_MODEL_UNKNOWN.text(f.modelNumber()) : "")).toList();
         listener.connected(servos, protocol, baud, port);
-        listener.message(String.format(Locale.ROOT, "%d servo%s on %s (%s at %d baud).", servos.size(),
-                servos.size() == 1 ? "" : "s", port, protocol.key(), baud), false);
+        listener.message(servos.size() == 1 ? UiMsg.HW_FOUND_ONE.text(port, protocol.key(), baud)
+                : UiMsg.HW_FOUND_N.text(servos.size(), port, protocol.key(), baud), false);
     }
 
     /** Torque on (hold where it is) or off (limp) for servo {@code row}, or all when {@code row} < 0. */
@@ -156,8 +153,7 @@ public final class HardwareSession {
             servos = List.of(next);
             listener.updated(servos);
             if (held < ids.length) {
-                listener.message((ids.length - held) + " of " + ids.length + " servos did not answer; they were not told"
-                        + " to hold and may still be limp. Check their power and cable, then press Hold again.", true);
+                listener.message(UiMsg.HW_NOT_HELD.text(ids.length - held, ids.length), true);
             }
         });
     }
@@ -179,14 +175,13 @@ public final class HardwareSession {
             double[] j = jogs.get(row);
             if (j == null) {
                 if (Double.isNaN(s.degrees())) {
-                    listener.message("Servo " + s.id() + "'s position is not known yet; wait for a reading.", true);
+                    listener.message(UiMsg.HW_SERVO_POSITION_UNKNOWN.text(s.id()), true);
                     return;
                 }
                 if (!Boolean.TRUE.equals(s.torque())) {
                     // Hold where it is first: the move starts from the present position, not an old goal.
                     if (bus.holdHere(new int[] {s.id()}, new ServoModel[] {m}, 1) == 0) {
-                        listener.message("Servo " + s.id() + " did not answer; it was not moved and may still be limp."
-                                + " Check its power and cable, then try again.", true);
+                        listener.message(UiMsg.HW_SERVO_DID_NOT_ANSWER.text(s.id()), true);
                         return;
                     }
                     Servo[] next = servos.toArray(new Servo[0]);
@@ -259,20 +254,19 @@ public final class HardwareSession {
     void saveProfile(Path file, Consumer<Path> done) {
         submit(() -> {
             if (bus == null || servos.isEmpty()) {
-                listener.message("No servos connected: connect or scan first.", true);
+                listener.message(UiMsg.HW_NONE_CONNECTED.text(), true);
                 return;
             }
             List<ServoScanner.Found> found = servos.stream()
                     .map(s -> new ServoScanner.Found(s.id(), s.modelNumber(), s.model(), s.degrees())).toList();
             HardwareProfile profile = ServoScanner.starterProfile(file.toString(), protocol, port, baud, found);
             try {
-                ProfileWriter.write(profile, file, "written by the PARPE IDE's Hardware dialog: one module per servo, "
-                        + "in ID order; set module, direction and limits, then run parpe calibrate");
+                ProfileWriter.write(profile, file, UiMsg.HW_PROFILE_COMMENT.text());
             } catch (IOException e) {
-                listener.message("Cannot write " + file + ": " + e.getMessage(), true);
+                listener.message(UiMsg.HW_CANNOT_WRITE.text(file, e.getMessage()), true);
                 return;
             }
-            listener.message("Profile written to " + file + " (" + profile.servos().size() + " servos).", false);
+            listener.message(UiMsg.HW_PROFILE_WRITTEN.text(file, profile.servos().size()), false);
             done.accept(file);
         });
     }
@@ -314,7 +308,7 @@ public final class HardwareSession {
             Servo[] next = servos.toArray(new Servo[0]);
             for (int i = 0; i < rows.length; i++) {
                 Servo s = next[rows[i]];
-                String status = err[i] == ServoBus.NO_REPLY ? "no reply"
+                String status = err[i] == ServoBus.NO_REPLY ? UiMsg.HW_NO_REPLY.text()
                         : bus.faulty(err[i]) ? describe(s, err[i]) : "";
                 next[rows[i]] = s.with(err[i] == ServoBus.NO_REPLY ? s.degrees() : deg[i], s.torque(), status);
             }
@@ -323,7 +317,7 @@ public final class HardwareSession {
         } catch (IOException e) {
             lost(e);
         } catch (RuntimeException e) {
-            listener.message("Internal error while reading the servos: " + e, true);
+            listener.message(UiMsg.HW_READ_FAILED.text(e), true);
         }
     }
 
@@ -333,7 +327,7 @@ public final class HardwareSession {
     }
 
     private void lost(IOException e) {
-        listener.message("The bus failed: " + e.getMessage() + ". Connect again when the device is back.", true);
+        listener.message(UiMsg.HW_BUS_FAILED.text(e.getMessage()), true);
         disconnect();
         listener.connected(List.of(), protocol, baud, port);
     }
@@ -364,7 +358,7 @@ public final class HardwareSession {
             } catch (IllegalArgumentException e) {
                 listener.message(e.getMessage(), true);
             } catch (RuntimeException e) {
-                listener.message("Internal error: " + e + " (please report it)", true);
+                listener.message(UiMsg.HW_INTERNAL_ERROR.text(e), true);
             }
         });
     }

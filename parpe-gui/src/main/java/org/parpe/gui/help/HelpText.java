@@ -1,33 +1,45 @@
 package org.parpe.gui.help;
 
-/** The texts of the Help menu. */
+import org.parpe.gui.text.UiMsg;
+
+/** The texts of the Help menu, in the IDE's language; PARSL's words and examples stay as they are written. */
 public final class HelpText {
-    /** The quick reference's table: one row per section of a PARSL program (section, what it holds, an example). */
-    public static final String[][] SECTIONS = {
-        {"<robot>", "groups of modules; <sensors>", "<legs elements=\"0..5, 8\"/>"},
-        {"<parameters>", "numbers asked before the run", "<N value=\"10\" min=\"4\" max=\"40\"/>"},
-        {"<controls>", "live inputs: slider, radio, text; used as $name", "<speed type=\"slider\" min=\"0.5\" max=\"4\" value=\"1\"/>"},
-        {"<states>", "target angles in degrees", "<up angles=\"30\"/>"},
-        {"<automata>", "states in turn, or a gait table", "<wave states=\"up, down\" times=\"1, 1\"/>"},
-        {"<behaviors>", "automata on groups", "<wave group=\"legs\" phase=\"0.25\" period=\"2\"/>"},
-        {"<main>", "behaviors in sequence", "<walk time=\"10\"/>"},
-    };
-    /** The lines under the table. */
-    public static final String[] NOTES = {
-        "A PARSL program has these sections, in any order.",
-        "Editing: Ctrl+Space completes names; errors are underlined and listed in Problems. Ctrl+plus / Ctrl+minus / Ctrl+0: text size.",
-        "Running: F5 runs, F6 pauses, Shift+F5 stops, Esc is the emergency stop.",
-        "3D view: drag to rotate, right-drag to pan, wheel to zoom, double-click to reframe.",
-        "The full language is specified in PARSL.md; Help > Tutorial teaches it step by step.",
-    };
-    public static final String ABOUT = String.join("\n",
-            "PARPE " + org.parpe.core.Version.NUMBER + ": PolyKinetic Phase Automata Robot Programming Environment",
-            "",
-            "An open reimplementation of PARC's PolyKinetic environment for PolyBot modular robots:",
-            "write PARSL, run it in the simulator or on the robot, steer it live.",
-            "",
-            "Java " + System.getProperty("java.version") + ", SWT " + org.eclipse.swt.SWT.getVersion());
 
     private HelpText() {
+    }
+
+    /** The quick reference's table: one row per section of a PARSL program (section, what it holds, an example). */
+    public static String[][] sections() {
+        return new String[][] {
+            {"<robot>", UiMsg.SECTION_ROBOT.text(), "<legs elements=\"0..5, 8\"/>"},
+            {"<parameters>", UiMsg.SECTION_PARAMETERS.text(), "<N value=\"10\" min=\"4\" max=\"40\"/>"},
+            {"<controls>", UiMsg.SECTION_CONTROLS.text(), "<speed type=\"slider\" min=\"0.5\" max=\"4\" value=\"1\"/>"},
+            {"<states>", UiMsg.SECTION_STATES.text(), "<up angles=\"30\"/>"},
+            {"<automata>", UiMsg.SECTION_AUTOMATA.text(), "<wave states=\"up, down\" times=\"1, 1\"/>"},
+            {"<behaviors>", UiMsg.SECTION_BEHAVIORS.text(), "<wave group=\"legs\" phase=\"0.25\" period=\"2\"/>"},
+            {"<main>", UiMsg.SECTION_MAIN.text(), "<walk time=\"10\"/>"},
+        };
+    }
+
+    /** What section {@code name} ({@code states}, without brackets) holds, as the quick reference says; null for another word. */
+    public static String sectionHolds(String name) {
+        for (String[] row : sections()) {
+            if (row[0].equals("<" + name + ">")) {
+                return row[1];
+            }
+        }
+        return null;
+    }
+
+    /** The lines under the table; the first is the one above it. */
+    public static String[] notes() {
+        return new String[] {UiMsg.NOTE_SECTIONS.text(), UiMsg.NOTE_EDITING.text(), UiMsg.NOTE_RUNNING.text(),
+            UiMsg.NOTE_3D.text(), UiMsg.NOTE_LANGUAGE.text()};
+    }
+
+    /** Help → About PARPE. */
+    public static String about() {
+        return UiMsg.ABOUT.text(org.parpe.core.Version.NUMBER, System.getProperty("java.version"),
+                org.eclipse.swt.SWT.getVersion());
     }
 }

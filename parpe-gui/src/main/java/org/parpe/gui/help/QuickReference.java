@@ -1,5 +1,6 @@
 package org.parpe.gui.help;
 
+import org.parpe.gui.text.UiMsg;
 import org.eclipse.jface.resource.JFaceResources;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.GridData;
@@ -24,18 +25,18 @@ public final class QuickReference {
     /** Opens the quick reference beside {@code parent}; returns its window. */
     public static Shell open(Shell parent) {
         Shell shell = new Shell(parent, SWT.SHELL_TRIM | SWT.MODELESS);
-        shell.setText("PARSL quick reference");
+        shell.setText(UiMsg.QUICK_REFERENCE_TITLE.text());
         shell.setLayout(new GridLayout(1, false));
         Label intro = new Label(shell, SWT.WRAP);
-        intro.setText(HelpText.NOTES[0]);
+        intro.setText(HelpText.notes()[0]);
         Table table = new Table(shell, SWT.BORDER | SWT.FULL_SELECTION | SWT.MULTI);
         table.setHeaderVisible(true);
         table.setLinesVisible(true);
         table.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
-        for (String h : new String[] {"Section", "What it holds", "Example"}) {
+        for (String h : new String[] {UiMsg.COLUMN_SECTION.text(), UiMsg.COLUMN_HOLDS.text(), UiMsg.COLUMN_EXAMPLE.text()}) {
             new TableColumn(table, SWT.LEFT).setText(h);
         }
-        for (String[] row : HelpText.SECTIONS) {
+        for (String[] row : HelpText.sections()) {
             TableItem item = new TableItem(table, SWT.NONE);
             item.setText(row);
             item.setFont(0, JFaceResources.getTextFont());
@@ -68,11 +69,12 @@ public final class QuickReference {
                 clip.dispose();
             }
         });
-        for (int i = 1; i < HelpText.NOTES.length; i++) {
-            new Label(shell, SWT.WRAP).setText(HelpText.NOTES[i]);
+        String[] notes = HelpText.notes();
+        for (int i = 1; i < notes.length; i++) {
+            new Label(shell, SWT.WRAP).setText(notes[i]);
         }
         Button close = new Button(shell, SWT.PUSH);
-        close.setText("Close");
+        close.setText(org.eclipse.jface.dialogs.IDialogConstants.CLOSE_LABEL);
         close.setLayoutData(new GridData(SWT.END, SWT.CENTER, false, false));
         close.addListener(SWT.Selection, e -> shell.close());
         shell.setDefaultButton(close);

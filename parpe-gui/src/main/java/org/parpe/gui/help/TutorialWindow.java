@@ -1,5 +1,6 @@
 package org.parpe.gui.help;
 
+import org.parpe.gui.text.UiMsg;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -103,7 +104,7 @@ public final class TutorialWindow {
                     shell.dispose();
                 }
             });
-            shell.setText("PARPE tutorial");
+            shell.setText(UiMsg.TUTORIAL_WINDOW_TITLE.text());
             root = shell;
         }
         root.setLayout(new GridLayout(1, false));
@@ -151,9 +152,9 @@ public final class TutorialWindow {
         Composite buttons = new Composite(root, SWT.NONE);
         buttons.setLayout(new GridLayout(3, false));
         buttons.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
-        Button previous = button(buttons, "\u2190 Previous", () -> show(index.getSelectionIndex() - 1));
-        Button next = button(buttons, "Next \u2192", () -> show(index.getSelectionIndex() + 1));
-        open = button(buttons, "Open the lesson's script", () -> {
+        Button previous = button(buttons, UiMsg.TUTORIAL_PREVIOUS.text(), () -> show(index.getSelectionIndex() - 1));
+        Button next = button(buttons, UiMsg.TUTORIAL_NEXT.text(), () -> show(index.getSelectionIndex() + 1));
+        open = button(buttons, UiMsg.TUTORIAL_OPEN_SCRIPT.text(), () -> {
             if (script != null) {
                 openScript.accept(script);
             }
@@ -319,7 +320,7 @@ public final class TutorialWindow {
         try {
             page = Markdown.parse(CommandNames.forInstall(Files.readString(pages.get(i), StandardCharsets.UTF_8), installed));
         } catch (IOException | RuntimeException e) {
-            text.setText("Cannot read " + pages.get(i) + ": " + e.getMessage());
+            text.setText(UiMsg.TUTORIAL_CANNOT_READ.text(pages.get(i), e.getMessage()));
             return;
         }
         render(page, pages.get(i).getParent());
@@ -327,7 +328,7 @@ public final class TutorialWindow {
                 .map(l -> pages.get(0).getParent().resolve(l).normalize())
                 .filter(Files::isRegularFile).findFirst().orElse(null);
         open.setEnabled(script != null);
-        open.setText(script == null ? "Open the lesson's script" : "Open " + script.getFileName());
+        open.setText(script == null ? UiMsg.TUTORIAL_OPEN_SCRIPT.text() : UiMsg.TUTORIAL_OPEN_NAMED.text(script.getFileName()));
         open.getParent().layout();
         text.setTopPixel(0);
     }
@@ -352,12 +353,12 @@ public final class TutorialWindow {
                     Path file = dir.resolve(b.target()).normalize();
                     Image img = image(file);
                     if (img == null) {
-                        all.append("[picture: ").append(b.text()).append(']');
+                        all.append(UiMsg.TUTORIAL_PICTURE.text(b.text()));
                     } else {
                         all.append(OBJECT);
                         // scaled to the column, a screenshot is past reading: a click shows it at full size
                         links.add(new LinkRange(start, 1, file.toString(), null));
-                        String full = "\n\u25b6 See the picture at full size";
+                        String full = "\n" + UiMsg.TUTORIAL_FULL_SIZE.text();
                         links.add(new LinkRange(start + 2, full.length() - 1, file.toString(), null));
                         styles.add(linkStyle(start + 2, full.length() - 1, link));
                         all.append(full);
@@ -377,7 +378,7 @@ public final class TutorialWindow {
                     styles.add(r);
                     if (insertCode != null && b.text().strip().startsWith("<")) {
                         // A lesson's XML goes to the editor with one click (where it belongs, one undo).
-                        String action = "\n\u25b6 Insert this code into the editor";
+                        String action = "\n" + UiMsg.TUTORIAL_INSERT_CODE.text();
                         int at = all.length() + 1;
                         all.append(action);
                         links.add(new LinkRange(at, action.length() - 1, null, b.text()));

@@ -1,5 +1,6 @@
 package org.parpe.gui.run;
 
+import org.parpe.gui.text.UiMsg;
 import java.util.function.Consumer;
 import org.eclipse.swt.widgets.Display;
 import org.parpe.core.run.Breakpoints;
@@ -97,7 +98,7 @@ public final class RunController {
             return new RunOutcome(RunOutcome.Status.ERROR, 0, ex.getMessage());
         } catch (RuntimeException | LinkageError ex) {
             builder.abandon();
-            return crashed(e, "preparing the run", ex, onCrash);
+            return crashed(e, UiMsg.DURING_PREPARING, ex, onCrash);
         }
         if (runFor >= 0) {
             builder.duration(runFor);
@@ -123,13 +124,14 @@ public final class RunController {
             status = safeStatus(e);
             return outcome;
         } catch (RuntimeException | LinkageError ex) {
-            return crashed(e, "the run", ex, onCrash);
+            return crashed(e, UiMsg.DURING_RUN, ex, onCrash);
         }
     }
 
-    private RunOutcome crashed(Engine e, String during, Throwable ex, Consumer<String> onCrash) {
-        String file = CrashLog.write(during, ex);
-        String message = "internal error during " + during + " (" + ex + "); details for a bug report in " + file;
+    private RunOutcome crashed(Engine e, UiMsg during, Throwable ex, Consumer<String> onCrash) {
+        // the crash file is for the bug report: English, whatever the IDE speaks
+        String file = CrashLog.write(org.parpe.core.text.Message.of(during).format(java.util.Locale.ENGLISH), ex);
+        String message = UiMsg.INTERNAL_ERROR_RUN.text(during.text(), ex, file);
         onCrash.accept(message);
         return new RunOutcome(RunOutcome.Status.ERROR, e.time(), message);
     }

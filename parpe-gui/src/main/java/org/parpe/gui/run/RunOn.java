@@ -1,19 +1,22 @@
 package org.parpe.gui.run;
 
+import org.parpe.core.text.Key;
+import org.parpe.gui.text.UiMsg;
+
 /** What a run drives. */
 public enum RunOn {
-    SIMULATOR("Simulator"),
-    HARDWARE("Hardware"),
-    BOTH("Simulator + hardware");
+    SIMULATOR(UiMsg.RUN_ON_SIMULATOR),
+    HARDWARE(UiMsg.RUN_ON_HARDWARE),
+    BOTH(UiMsg.RUN_ON_BOTH);
 
-    private final String label;
+    private final Key label;
 
-    RunOn(String label) {
+    RunOn(Key label) {
         this.label = label;
     }
 
     public String label() {
-        return label;
+        return label.text();
     }
 
     /** Whether the simulator takes part: in every run but one on the hardware alone. */

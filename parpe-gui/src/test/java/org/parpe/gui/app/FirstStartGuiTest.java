@@ -113,11 +113,11 @@ class FirstStartGuiTest {
             assertTrue(t.getHeaderVisible());
             assertEquals(List.of("Section", "What it holds", "Example"),
                     Arrays.stream(t.getColumns()).map(org.eclipse.swt.widgets.TableColumn::getText).toList());
-            assertEquals(HelpText.SECTIONS.length, t.getItemCount());
+            assertEquals(HelpText.sections().length, t.getItemCount());
             for (int r = 0; r < t.getItemCount(); r++) {
                 org.eclipse.swt.widgets.TableItem item = t.getItem(r);
                 for (int c = 0; c < 3; c++) {
-                    assertEquals(HelpText.SECTIONS[r][c], item.getText(c));
+                    assertEquals(HelpText.sections()[r][c], item.getText(c));
                     org.eclipse.swt.graphics.GC gc = new org.eclipse.swt.graphics.GC(t);
                     try {
                         gc.setFont(item.getFont(c));

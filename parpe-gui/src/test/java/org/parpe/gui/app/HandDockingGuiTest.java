@@ -61,7 +61,7 @@ class HandDockingGuiTest {
     /** The open question, or null. */
     private static Shell question() {
         return Arrays.stream(display.getShells()).filter(s -> !s.isDisposed() && s.isVisible()
-                && HandDocking.TITLE.equals(s.getText())).findFirst().orElse(null);
+                && HandDocking.title().equals(s.getText())).findFirst().orElse(null);
     }
 
     private static String text(Composite c) {

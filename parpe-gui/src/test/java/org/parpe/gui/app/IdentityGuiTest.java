@@ -20,6 +20,6 @@ class IdentityGuiTest {
             Gui.closeIde(ide);
         }
         // Version.NUMBER is the pom's version (VersionTest)
-        assertTrue(HelpText.ABOUT.startsWith("PARPE " + org.parpe.core.Version.NUMBER + ":"), HelpText.ABOUT);
+        assertTrue(HelpText.about().startsWith("PARPE " + org.parpe.core.Version.NUMBER + ":"), HelpText.about());
     }
 }

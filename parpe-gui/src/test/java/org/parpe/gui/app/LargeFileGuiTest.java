@@ -50,7 +50,7 @@ class LargeFileGuiTest {
                 + " length=" + ide.editor().document().getLength()));
         ide.files().openPath(big);
         Gui.pump(() -> seen.get() != null, "an event posted before the open");
-        assertEquals("reading=true length=" + FileActions.TEMPLATE.length(), seen.get(),
+        assertEquals("reading=true length=" + FileActions.template().length(), seen.get(),
                 "the UI thread was busy with the file: it should be read in the background");
         assertFalse(ide.editor().viewer().isEditable(), "the editor should be read-only while the file is read");
 

@@ -95,7 +95,7 @@ class RecoveryGuiTest {
         crashed.close();
 
         ide = open(home, 2); // Not Now
-        assertEquals(FileActions.TEMPLATE, ide.editor().document().get());
+        assertEquals(FileActions.template(), ide.editor().document().get());
         ide.shell().dispose();
         assertEquals(List.of("<program/>"), orphanTexts(home));
 

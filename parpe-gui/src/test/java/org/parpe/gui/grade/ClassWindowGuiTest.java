@@ -165,7 +165,7 @@ class ClassWindowGuiTest {
     }
 
     private static List<String> texts(ClassWindow w, int row) {
-        String[] t = new String[RankingTable.TITLES.length];
+        String[] t = new String[RankingTable.titles().length];
         for (int k = 0; k < t.length; k++) {
             t[k] = w.ranking().control().getItem(row).getText(k);
         }

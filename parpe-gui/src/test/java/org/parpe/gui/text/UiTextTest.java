@@ -1,0 +1,227 @@
+package org.parpe.gui.text;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.Locale;
+import java.util.ResourceBundle;
+import java.util.Set;
+import java.util.TreeSet;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.parpe.core.text.BundleCheck;
+import org.parpe.core.text.Lang;
+
+/**
+ * The translators' check of the IDE (issue 38: "a test fails on any user-visible string literal in
+ * widget code"; "every bundle has every key; no unused keys"). Run it with
+ * {@code mvn -B -o -pl parpe-gui -am test -Dtest=UiTextTest -Dsurefire.failIfNoSpecifiedTests=false}.
+ */
+class UiTextTest {
+    private static final Path MAIN = Path.of("src/main/java/org/parpe/gui");
+
+    /**
+     * The packages whose texts move into their own bundle, {@code org.parpe.gui.text.Panels}
+     * (issue 38, helper "uib"): to be removed from here when that is merged.
+     */
+    static final List<String> PENDING_PANELS = List.of("pose/", "diagram/", "robot/", "sweep/", "panels/", "grid/", "view3d/");
+
+    /**
+     * Whole literals that are not prose though they look like it: the command's name before the
+     * error and warning prefixes tools parse (English, as the command line's), the comments of the settings and autosave files, what a crash file
+     * (English, for the bug report) says PARPE was doing.
+     */
+    private static final Set<String> ALLOWED = Set.of("parpe gui: error: ", "parpe gui: warning: ", "parpe gui: ",
+            "PARPE IDE settings", "PARPE autosave", "handling a UI event");
+
+    /** A menu accelerator's text after the tab: key names as GTK shows them. */
+    private static final Pattern KEYS = Pattern.compile("\t(Ctrl\\+|Shift\\+|Alt\\+)*[^\\s]+");
+
+    /** Two letters, a space and a letter: words; or a capitalised word; or a letter outside ASCII. */
+    private static final Pattern PROSE = Pattern.compile("\\p{L}{2,}[,;:!?.]*\\s+\\p{L}|^[\\p{Lu}][\\p{Ll}]+|[\\p{L}&&[^\\x00-\\x7f]]");
+
+    /** A PARSL snippet (an element with attributes, or an element's name in brackets): the file format, English on purpose. */
+    private static final Pattern PARSL = Pattern.compile("<[a-z][\\w-]*(\\s+[\\w-]+=\"|\\s*/?>)|^<[a-z][\\w-]*>$|^<\\?xml |<!-- ");
+
+    /** Arguments of these are a fault of PARPE's own, shown as an internal error with its crash file. */
+    private static final Pattern INTERNAL = Pattern.compile(
+            "new (IllegalStateException|AssertionError|UnsupportedOperationException|BadLocationException)\\(");
+
+    @Test
+    void everyBundleHasEveryKeyNoOtherAndTheEnglishPlaceholders() {
+        List<String> problems = BundleCheck.problems(UiMsg.BUNDLE, List.of(UiMsg.values()));
+        assertEquals(List.of(), problems, String.join("\n", problems));
+    }
+
+    @Test
+    void everyKeyIsUsedByTheCode() {
+        String code = sources().filter(p -> !p.endsWith("text/UiMsg.java")).map(UiTextTest::read).reduce("", String::concat);
+        List<String> unused = new ArrayList<>();
+        for (UiMsg m : UiMsg.values()) {
+            if (!Pattern.compile("\\b" + m.name() + "\\b").matcher(code).find()) {
+                unused.add(m.name());
+            }
+        }
+        assertEquals(List.of(), unused, "keys no code uses");
+    }
+
+    /** JFace's OK, Cancel, Yes, No, ... in every language PARPE speaks (org/eclipse/jface/messages.properties is English). */
+    @Test
+    void jfaceButtonsInEveryLanguage() {
+        List<String> problems = new ArrayList<>();
+        for (Locale l : Lang.SUPPORTED.subList(1, Lang.SUPPORTED.size())) {
+            ResourceBundle b = own("org.eclipse.jface.messages", l);
+            assertNotNull(b, "no org/eclipse/jface/messages_" + l + ".properties");
+            Set<String> have = new TreeSet<>(Collections.list(b.getKeys()));
+            IdeLanguage.JFACE_KEYS.stream().filter(k -> !have.contains(k)).forEach(k -> problems.add(l + ": missing " + k));
+            have.stream().filter(k -> !IdeLanguage.JFACE_KEYS.contains(k)).forEach(k -> problems.add(l + ": unused " + k));
+        }
+        assertEquals(List.of(), problems, String.join("\n", problems));
+    }
+
+    /** Every string literal of the IDE's code that reads as prose is a text outside the bundles. */
+    @Test
+    void noUserVisibleLiteralOutsideTheBundles() {
+        List<String> found = new ArrayList<>();
+        sources().filter(p -> !pending(MAIN.relativize(p).toString().replace('\\', '/')))
+                .forEach(p -> found.addAll(proseLiterals(MAIN.relativize(p).toString(), read(p))));
+        assertEquals(List.of(), found, "user-visible text outside the bundles: give it a key in UiMsg\n" + String.join("\n", found));
+    }
+
+    /** The scan itself: it finds prose and passes code, PARSL and key names (else the test above proves nothing). */
+    @Test
+    void theScanTellsProseFromCode() {
+        String java = String.join("\n",
+                "class A {",
+                "  @Option(names = \"--x\", description = \"annotations are the English help\") String x;",
+                "  void f() {",
+                "    b.setText(\"Run the script\"); // \"a comment\"",
+                "    b.setText(\"Speed:\"); b.setText(\"\\u00dcber\"); t.setText(\"実行\");",
+                "    prefs.put(\"run.speed\", \"yes\"); s.replace(\"<states>\", \"\\t\"); x(\"<up angles=\\\"30\\\"/>\");",
+                "    m.setText(UiMsg.MENU_NEW.text() + \"\\tCtrl+N\"); f(\"*.xml\", \"%.2f s\", \"parpe-engine\");",
+                "    throw new IllegalStateException(\"parpe.png is missing from the build\");",
+                "  }",
+                "}");
+        assertEquals(List.of("A.java:4: \"Run the script\"", "A.java:5: \"Speed:\"", "A.java:5: \"\\u00dcber\"",
+                "A.java:5: \"実行\""), proseLiterals("A.java", java));
+    }
+
+    private static boolean pending(String file) {
+        return PENDING_PANELS.stream().anyMatch(file::startsWith);
+    }
+
+    /** The literals of {@code java} (comments and annotations left out) that read as prose: {@code FILE:LINE: "text"}. */
+    static List<String> proseLiterals(String file, String java) {
+        List<String> out = new ArrayList<>();
+        int line = 1;
+        int annotationDepth = -1;
+        int depth = 0;
+        for (int i = 0; i < java.length(); i++) {
+            char c = java.charAt(i);
+            if (c == '\n') {
+                line++;
+            } else if (java.startsWith("//", i)) {
+                i = java.indexOf('\n', i) - 1;
+                if (i < 0) {
+                    break;
+                }
+            } else if (java.startsWith("/*", i)) {
+                int end = java.indexOf("*/", i + 2);
+                line += count(java.substring(i, end), '\n');
+                i = end + 1;
+            } else if (c == '\'') {
+                i = java.indexOf('\'', i + (java.charAt(i + 1) == '\\' ? 3 : 2));
+            } else if (c == '@' && Character.isUpperCase(java.charAt(i + 1)) && annotationDepth < 0) {
+                int open = i + 1;
+                while (open < java.length() && Character.isJavaIdentifierPart(java.charAt(open))) {
+                    open++;
+                }
+                if (open < java.length() && java.charAt(open) == '(') {
+                    annotationDepth = depth;
+                }
+            } else if (c == '(') {
+                depth++;
+            } else if (c == ')') {
+                depth--;
+                if (depth == annotationDepth) {
+                    annotationDepth = -1;
+                }
+            } else if (c == '"') {
+                int end = i + 1;
+                while (java.charAt(end) != '"') {
+                    end += java.charAt(end) == '\\' ? 2 : 1;
+                }
+                String literal = java.substring(i + 1, end);
+                // the statement up to the literal: its start is after the last ';', '{' or '}'
+                int start = Math.max(java.lastIndexOf(';', i), Math.max(java.lastIndexOf('{', i), java.lastIndexOf('}', i)));
+                String before = java.substring(start + 1, i);
+                if (annotationDepth < 0 && prose(unescape(literal)) && !INTERNAL.matcher(before).find()) {
+                    out.add(file + ":" + line + ": \"" + literal + "\"");
+                }
+                i = end;
+            }
+        }
+        return out;
+    }
+
+    private static boolean prose(String text) {
+        if (ALLOWED.contains(text) || KEYS.matcher(text).matches() || PARSL.matcher(text).find()) {
+            return false;
+        }
+        return PROSE.matcher(text).find();
+    }
+
+    private static String unescape(String literal) {
+        StringBuilder b = new StringBuilder();
+        for (int i = 0; i < literal.length(); i++) {
+            char c = literal.charAt(i);
+            if (c == '\\' && literal.charAt(i + 1) == 'u') {
+                b.append((char) Integer.parseInt(literal.substring(i + 2, i + 6), 16));
+                i += 5;
+            } else if (c == '\\') {
+                char n = literal.charAt(++i);
+                b.append(n == 't' ? '\t' : n == 'n' ? '\n' : n);
+            } else {
+                b.append(c);
+            }
+        }
+        return b.toString();
+    }
+
+    private static int count(String s, char c) {
+        return (int) s.chars().filter(x -> x == c).count();
+    }
+
+    private static ResourceBundle own(String base, Locale l) {
+        try {
+            return ResourceBundle.Control.getControl(ResourceBundle.Control.FORMAT_PROPERTIES)
+                    .newBundle(base, l, "java.properties", UiTextTest.class.getClassLoader(), true);
+        } catch (ReflectiveOperationException | IOException e) {
+            return null;
+        }
+    }
+
+    private static Stream<Path> sources() {
+        try (Stream<Path> s = Files.walk(MAIN)) {
+            return s.filter(p -> p.toString().endsWith(".java")).toList().stream();
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    private static String read(Path p) {
+        try {
+            return Files.readString(p);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+}
