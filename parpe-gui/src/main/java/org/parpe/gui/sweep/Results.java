@@ -293,7 +293,7 @@ final class Results {
     /** The sentence that names the best row {@code best} after a finished or stopped sweep. */
     String bestSentence(SweepRow best) {
         String measured = (best.fell() ? PanelMsg.SWEEP_MEASURED_FELL : PanelMsg.SWEEP_MEASURED)
-                .text(objective.label(), ResultsTable.number(objective.of(best)));
+                .text(RunSettings.label(objective), ResultsTable.number(objective.of(best)));
         return (scriptsOwn(best) ? PanelMsg.SWEEP_NOTHING_BEAT : PanelMsg.SWEEP_BEST).text(number(best), describe(best.values()), measured);
     }
 

@@ -74,8 +74,8 @@ final class ResultsPlot {
             return;
         }
         boolean optimise = results.mode() == Results.Mode.OPTIMISE;
-        String title = optimise ? PanelMsg.SWEEP_PLOT_PER_EVALUATION.text(results.objective().label())
-                : PanelMsg.SWEEP_PLOT_OVER_X.text(results.objective().label(), x);
+        String title = optimise ? PanelMsg.SWEEP_PLOT_PER_EVALUATION.text(RunSettings.label(results.objective()))
+                : PanelMsg.SWEEP_PLOT_OVER_X.text(RunSettings.label(results.objective()), x);
         chart.show(title, optimise ? PanelMsg.SWEEP_EVALUATION.text() : x, pad(xr), pad(yr), f -> {
             if (optimise) {
                 convergence(f, rows, xs, ys);

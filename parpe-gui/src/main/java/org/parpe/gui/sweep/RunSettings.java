@@ -45,7 +45,7 @@ final class RunSettings {
         new Label(parent, SWT.NONE).setText("   " + PanelMsg.SWEEP_OBJECTIVE.text());
         objective = new Combo(parent, SWT.READ_ONLY);
         for (Objective o : Objective.values()) {
-            objective.add(o.label());
+            objective.add(label(o));
         }
         objective.select(0);
         objective.setToolTipText(PanelMsg.SWEEP_OBJECTIVE_TIP.text());
@@ -85,6 +85,17 @@ final class RunSettings {
 
     void selectObjective(Objective o) {
         objective.select(o.ordinal());
+    }
+
+    /** The objective's name with its unit in the IDE's language (the engine's {@link Objective#label()} is English). */
+    static String label(Objective o) {
+        return switch (o) {
+            case FORWARD_SPEED -> PanelMsg.SWEEP_COL_FORWARD_SPEED.text();
+            case SPEED -> PanelMsg.SWEEP_COL_SPEED.text();
+            case FORWARD -> PanelMsg.SWEEP_COL_FORWARD.text();
+            case DISTANCE -> PanelMsg.SWEEP_COL_DISTANCE.text();
+            case SCORE -> PanelMsg.SWEEP_OBJECTIVE_SCORE.text();
+        };
     }
 
     /** Whether the boxes can be changed (not while runs are going on). */

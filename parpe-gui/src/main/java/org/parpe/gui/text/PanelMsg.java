@@ -447,6 +447,7 @@ public enum PanelMsg implements Key {
     SWEEP_WORLD_FILE_BROWSE,
     SWEEP_WORLD_FILE,
     SWEEP_WORLD_TIP,
+    SWEEP_OBJECTIVE_SCORE,
 
     // gui.panels: generated control panels, plots, outline, problems
     PANEL_CONTROLS_APPEAR,
