@@ -28,8 +28,8 @@ import org.parpe.gui.sweep.SweepHost;
 
 /**
  * Issue 38 for the panels: the Pose panel, the diagram with its palette, the Robot tab and the
- * sweep dialog built with real widgets in German and in Japanese show the words of
- * docs/glossary-de.md and docs/glossary-ja.md, not English; screenshots of each at 1366×768 are
+ * sweep dialog built with real widgets in German, Spanish and Japanese show the words of
+ * docs/glossary-de.md, -es.md and -ja.md, not English; screenshots of each at 1366×768 are
  * saved for a person to look at (clipped labels). The language is chosen before the widgets are
  * built, as the IDE chooses it at start, and English is restored after.
  */
@@ -37,10 +37,16 @@ class PanelsInLanguageGuiTest {
 
     /** Texts each part shows in {@code language}: the Pose panel, the diagram, the Robot tab, the sweep dialog. */
     private static List<List<String>> expected(String language) {
+        if (language.equals("es")) {
+            return List.of(List.of("&Capturar", "Del script", "Reproducir", "Guardar grabaci\u00f3n\u2026"),
+                    List.of("Vista:", "Carriles", "Nuevo:", "Tabla de marcha", "Aut\u00f3mata", "Comportamiento", "Todo"),
+                    List.of("Probar", "Conectar", "Numerar", "Colocar", "Hacer ra\u00edz"),
+                    List.of("Barrido", "Optimizar", "Variar", "Fijar en", "Aplicar la mejor", "Guardar CSV\u2026"));
+        }
         return language.equals("de")
                 ? List.of(List.of("&Aufnehmen", "Aus dem Skript", "Abspielen", "Aufnahme speichern\u2026", "Gelenkwinkel (\u00b0)"),
                         List.of("Ansicht:", "Bahnen", "Neu:", "Gangtabelle", "Automat", "Verhalten", "Alle"),
-                        List.of("Ausprobieren", "Verbinden", "Nummern vergeben", "Hinzuf\u00fcgen:", "Setzen", "Zur Wurzel machen"),
+                        List.of("Testen", "Verbinden", "Nummerieren", "Neu:", "Setzen", "Als Wurzel"),
                         List.of("Durchlauf", "Optimieren", "Variieren", "Festhalten bei", "Besten \u00fcbernehmen", "CSV speichern\u2026"))
                 : List.of(List.of("\u8a18\u9332(&C)", "\u30b9\u30af\u30ea\u30d7\u30c8\u304b\u3089", "\u518d\u751f"),
                         List.of("\u30d3\u30e5\u30fc:", "\u30ec\u30fc\u30f3", "\u65b0\u898f:", "\u6b69\u5bb9\u30c6\u30fc\u30d6\u30eb"),
@@ -49,7 +55,7 @@ class PanelsInLanguageGuiTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"de", "ja"})
+    @ValueSource(strings = {"de", "es", "ja"})
     void panelsSpeakTheChosenLanguage(String language) throws Exception {
         Lang.use(Locale.forLanguageTag(language));
         IdeWindow ide = null;
