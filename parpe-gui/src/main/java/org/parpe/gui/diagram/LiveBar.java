@@ -148,7 +148,7 @@ final class LiveBar {
         slider.setVisible(trace != null);
         ((GridData) slider.getLayoutData()).exclude = trace == null;
         if (shownHit != null) {
-            tell(PanelMsg.DIAGRAM_PAUSED.text(shownHit.describe()));
+            tell(PanelMsg.DIAGRAM_PAUSED.text(hit(shownHit)));
         } else if (trace != null) {
             int k = slider.getSelection();
             String at = PanelMsg.DIAGRAM_TRACE_AT.text(trace.file().getFileName(), org.parpe.core.lang.Numbers.format(trace.time(k)), k,
@@ -164,6 +164,13 @@ final class LiveBar {
     }
 
     /** Sets the line beside the buttons (it wraps there when it is long). */
+    /** Which module reached which breakpoint, when (as {@code Breakpoints.Hit.describe()}, in the IDE's language). */
+    private static String hit(Breakpoints.Hit h) {
+        String t = org.parpe.core.lang.Numbers.format(Math.round(h.time() * 1e6) / 1e6);
+        return (h.point().kind() == Breakpoints.Kind.ENTER ? PanelMsg.DIAGRAM_HIT_ENTER : PanelMsg.DIAGRAM_HIT_EXIT)
+                .text(h.moduleId(), h.point().automaton() + "." + h.state(), h.tick(), t);
+    }
+
     private void tell(String line) {
         says.setText(line);
         says.setToolTipText(line.isEmpty() ? null : line);

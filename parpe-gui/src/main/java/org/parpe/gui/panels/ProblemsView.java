@@ -87,7 +87,7 @@ public final class ProblemsView {
         boolean err = d.severity() == Severity.ERROR;
         Icons icons = Icons.of(table.getDisplay());
         it.setImage(0, err ? icons.error : icons.warning);
-        it.setText(0, isRun(d) ? PanelMsg.PROBLEMS_RUN_SEVERITY.text(d.severity().word()) : d.severity().word());
+        it.setText(0, isRun(d) ? PanelMsg.PROBLEMS_RUN_SEVERITY.text(severity(d)) : severity(d));
         it.setForeground(0, table.getDisplay().getSystemColor(err ? SWT.COLOR_RED : SWT.COLOR_DARK_YELLOW));
         it.setText(1, location(d.pos()));
         it.setText(2, d.message(repeats[i]));
@@ -175,7 +175,12 @@ public final class ProblemsView {
 
     /** The tooltip of a row: the whole message and where. */
     static String tip(Diagnostic d) {
-        return PanelMsg.PROBLEMS_TIP.text(d.severity().word(), location(d.pos()), d.message());
+        return PanelMsg.PROBLEMS_TIP.text(severity(d), location(d.pos()), d.message());
+    }
+
+    /** "error" or "warning" in the IDE's language (the command line's {@code FILE:LINE:COL: error:} keeps its English word). */
+    private static String severity(Diagnostic d) {
+        return (d.severity() == Severity.ERROR ? PanelMsg.PROBLEMS_ERROR : PanelMsg.PROBLEMS_WARNING).text();
     }
 
     /**

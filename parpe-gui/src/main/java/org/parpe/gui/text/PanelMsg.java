@@ -255,6 +255,8 @@ public enum PanelMsg implements Key {
     DIAGRAM_ONE_ISLAND,
     DIAGRAM_N_ISLANDS,
     ORDINAL,
+    DIAGRAM_HIT_ENTER,
+    DIAGRAM_HIT_EXIT,
 
     // gui.robot: the Robot tab (the builder)
     ROBOT_ONE_PROBLEM,
@@ -490,6 +492,8 @@ public enum PanelMsg implements Key {
     ROBOT_CHOICE_BROWSE,
     ROBOT_CHOICE_TIP,
     ROBOT_CHOICE_TITLE,
+    PROBLEMS_ERROR,
+    PROBLEMS_WARNING,
 
     // gui.grid: the gait table grid
     GRID_GAIT_TABLE,
