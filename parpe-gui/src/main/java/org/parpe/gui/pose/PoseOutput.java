@@ -9,7 +9,6 @@ import org.eclipse.jface.window.Window;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.layout.GridLayout;
-import org.eclipse.swt.layout.RowLayout;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
@@ -44,10 +43,7 @@ final class PoseOutput {
         this.host = host;
         this.panel = panel;
         Composite row = new Composite(parent, SWT.NONE);
-        // a row that wraps: the labels' words are longer in some languages than the panel is wide
-        RowLayout wrapped = new RowLayout();
-        wrapped.center = true;
-        row.setLayout(wrapped);
+        row.setLayout(new GridLayout(7, false));
         row.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         new Label(row, SWT.NONE).setText(PanelMsg.POSE_PLAY_AT.text());
         rate = new Combo(row, SWT.READ_ONLY);

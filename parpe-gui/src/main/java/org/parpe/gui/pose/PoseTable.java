@@ -5,7 +5,6 @@ import java.util.function.IntConsumer;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.layout.GridLayout;
-import org.eclipse.swt.layout.RowLayout;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Control;
@@ -59,10 +58,7 @@ final class PoseTable {
         column(PanelMsg.POSE_COL_ANGLES.text(), 220);
         table.addListener(SWT.Selection, e -> rowSelected());
         Composite buttons = new Composite(box, SWT.NONE);
-        // a row that wraps: the buttons' words are longer in some languages than the panel is wide
-        RowLayout wrapped = new RowLayout();
-        wrapped.center = true;
-        buttons.setLayout(wrapped);
+        buttons.setLayout(new GridLayout(6, false));
         buttons.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         button(buttons, PanelMsg.POSE_UP.text(), PanelMsg.POSE_UP_TIP.text(), i -> select(list.move(i, -1)));
         button(buttons, PanelMsg.POSE_DOWN.text(), PanelMsg.POSE_DOWN_TIP.text(), i -> select(list.move(i, 1)));
