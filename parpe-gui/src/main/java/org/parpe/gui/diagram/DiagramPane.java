@@ -25,6 +25,7 @@ import org.parpe.core.edit.TextEdit;
 import org.parpe.gui.diagram.Projection.View;
 import org.parpe.gui.editor.AfterChange;
 import org.parpe.gui.editor.ParslEditor;
+import org.parpe.gui.text.PanelMsg;
 
 /**
  * The Diagram pane: one view of the open document (program lane, swimlanes, automaton ring,
@@ -87,12 +88,12 @@ public final class DiagramPane {
         bar.setLayout(row());
         bar.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         Label viewLabel = new Label(bar, SWT.NONE);
-        viewLabel.setText("View:");
+        viewLabel.setText(PanelMsg.DIAGRAM_VIEW.text());
         // on the label, not the choosers: a tool tip over a chooser covered its open list (issue 31)
-        viewLabel.setToolTipText("Which view of the script the diagram draws, and of what: the behavior, automaton or instance");
+        viewLabel.setToolTipText(PanelMsg.DIAGRAM_VIEW_TIP.text());
         viewChoice = new Combo(bar, SWT.READ_ONLY);
         for (View v : View.values()) {
-            viewChoice.add(v.label);
+            viewChoice.add(v.label.text());
         }
         viewChoice.select(0);
         viewChoice.addListener(SWT.Selection, e -> setView(View.values()[viewChoice.getSelectionIndex()]));
@@ -135,7 +136,7 @@ public final class DiagramPane {
                 if (wheel() != null) {
                     previewPhase(phaseAt(e.x, e.y));
                 } else {
-                    message.setText("Release on another entry to move this one there");
+                    message.setText(PanelMsg.DIAGRAM_RELEASE_ENTRY.text());
                 }
             }
         });
@@ -175,8 +176,7 @@ public final class DiagramPane {
         return rl;
     }
 
-    private static final String HINT = "Click a box, an arc or a bar to select its text and edit its values.";
-
+    
     /** The height of a line of text in {@code c}'s font. */
     static int lineHeight(Control c) {
         org.eclipse.swt.graphics.GC gc = new org.eclipse.swt.graphics.GC(c);
@@ -293,7 +293,7 @@ public final class DiagramPane {
         liveProgress = null;
         liveBar.shown();
         canvas.select(selected);
-        message.setText(!p.message().isEmpty() ? p.message() : told != null ? told : !p.targets().isEmpty() ? HINT : "");
+        message.setText(!p.message().isEmpty() ? p.message() : told != null ? told : !p.targets().isEmpty() ? PanelMsg.DIAGRAM_HINT.text() : "");
         told = null;
         showFields();
         box.layout(true, true);
@@ -528,7 +528,7 @@ public final class DiagramPane {
                     var frame = live.since(seen);
                     if (frame != null && frame.tick() >= 0) {
                         seen = frame.version();
-                        liveWhat = "live";
+                        liveWhat = PanelMsg.DIAGRAM_LIVE.text();
                         overlay(frame);
                     }
                 } else if (liveCounts != null) {
@@ -546,7 +546,7 @@ public final class DiagramPane {
     private long liveTick = -1;
     private String[] liveLabels;
     private double[] liveProgress;
-    private String liveWhat = "live";
+    private String liveWhat = PanelMsg.DIAGRAM_LIVE.text();
     private List<org.parpe.core.diagram.Scene.Shape> liveMarks = List.of();
     /** The phase wheel's hand and ticks where the drag going on would put them. */
     private List<org.parpe.core.diagram.Scene.Shape> dragMarks = List.of();
@@ -627,7 +627,7 @@ public final class DiagramPane {
      * this takes is what one frame of the overlay costs the UI thread).
      */
     public void drawFrame(org.parpe.gui.run.LiveStates.Frame f) {
-        showFrame(f, "live");
+        showFrame(f, PanelMsg.DIAGRAM_LIVE.text());
         canvas.control().update();
     }
 
@@ -688,13 +688,13 @@ public final class DiagramPane {
                 if (s instanceof org.parpe.core.diagram.Scene.Rect r && b.pos().equals(r.source()) && counts[b.index()] > 0) {
                     marks.add(new org.parpe.core.diagram.Scene.Rect(r.x() - 3, r.y() - 3, r.w() + 6, r.h() + 6,
                             org.parpe.core.diagram.Scene.NONE, 0x009e73, 3, null));
-                    marks.add(new org.parpe.core.diagram.Scene.Text(r.x() + r.w() - 8, r.y() + 14, counts[b.index()]
-                            + " driven now", 11, 1, 0x009e73, true));
+                    marks.add(new org.parpe.core.diagram.Scene.Text(r.x() + r.w() - 8, r.y() + 14, PanelMsg.DIAGRAM_DRIVEN_NOW.text(counts[b.index()]),
+                            11, 1, 0x009e73, true));
                 }
             }
         }
-        marks.add(new org.parpe.core.diagram.Scene.Text(shown.scene().width() - 12, 28, liveWhat + ": tick " + f.tick()
-                + (f.entry() == lanes.entry() ? " (green: bars driving modules)" : " (another <main> entry is running)"), 11, 1,
+        marks.add(new org.parpe.core.diagram.Scene.Text(shown.scene().width() - 12, 28, (f.entry() == lanes.entry()
+                ? PanelMsg.DIAGRAM_TICK_LANES : PanelMsg.DIAGRAM_TICK_OTHER_ENTRY).text(liveWhat, f.tick()), 11, 1,
                 0x222222, false));
         liveMarks = marks;
         repaintOverlay();
@@ -740,8 +740,8 @@ public final class DiagramPane {
         liveProgress = new double[f.instance().length];
         marks.addAll(RingProgress.marks(ring, shown.scene(), f, automata, liveProgress));
         // under the ring's title, not beside it, and as much lower as the ring's text is larger ({@link #readable})
-        marks.add(new org.parpe.core.diagram.Scene.Text(shown.scene().width() - 12, 50 * textScale, liveWhat + ": tick " + f.tick()
-                + " (dark band: modules in the state; dots: each module's progress)", 11, 1, 0x222222, false));
+        marks.add(new org.parpe.core.diagram.Scene.Text(shown.scene().width() - 12, 50 * textScale,
+                PanelMsg.DIAGRAM_TICK_RING.text(liveWhat, f.tick()), 11, 1, 0x222222, false));
         liveMarks = marks;
         repaintOverlay();
     }
@@ -775,7 +775,7 @@ public final class DiagramPane {
             return;
         }
         if (!current()) {
-            say("The text has changed since the diagram was drawn; try again in a moment.");
+            say(PanelMsg.DIAGRAM_CHANGED.text());
             return;
         }
         apply(from.moveTo().apply(onto.index()));
@@ -823,8 +823,8 @@ public final class DiagramPane {
         for (var t : moved.ticks().subList(0, Math.min(6, moved.ticks().size()))) {
             delays.append(delays.length() == 0 ? "" : ", ").append(org.parpe.core.lang.Numbers.format(Math.round(t.delay() * 100) / 100.0));
         }
-        message.setText("Release to set phase=\"" + org.parpe.core.lang.Numbers.format(phase) + "\": positions 0, 1, 2, \u2026 start "
-                + delays + (moved.ticks().size() > 6 ? ", \u2026" : "") + " of a cycle late (green: where the ticks go)");
+        message.setText(PanelMsg.DIAGRAM_RELEASE_PHASE.text(org.parpe.core.lang.Numbers.format(phase),
+                delays + (moved.ticks().size() > 6 ? ", \u2026" : "")));
     }
 
     /** The wheel's hand and ticks drawn where the drag going on would put them (empty while none is). */
@@ -836,7 +836,7 @@ public final class DiagramPane {
     private void dropPhase(int x, int y) {
         Projection.Target t = shown.targets().get(shown.wheel().pos());
         if (t == null) {
-            say("This instance is not in the open file; edit its phase there.");
+            say(PanelMsg.DIAGRAM_INSTANCE_ELSEWHERE.text());
             return;
         }
         String value = org.parpe.core.lang.Numbers.format(phaseAt(x, y));
@@ -908,10 +908,10 @@ public final class DiagramPane {
         Projection.Target t = shown == null ? null : shown.targets().get(canvas.hit(p[0], p[1]));
         Projection.Field f = t == null ? null : t.fields().stream().filter(g -> g.name().equals("angles")).findFirst().orElse(null);
         if (f == null) {
-            say("Drop a pose on a state of the ring (Ring view) whose definition is in this file.");
+            say(PanelMsg.DIAGRAM_DROP_POSE.text());
             return;
         }
-        act(new Projection.Action("Use pose", List.of(), v -> f.edit().apply(EditRow.usable(angles))), List.of());
+        act(new Projection.Action(PanelMsg.DIAGRAM_USE_POSE.text(), List.of(), v -> f.edit().apply(EditRow.usable(angles))), List.of());
     }
 
     /** Opens a gait table the pane has just written with {@code show} (the grid editor's, by table name). */
@@ -938,13 +938,13 @@ public final class DiagramPane {
     /** Button {@code a} was pressed with its inputs' {@code values}: write its edit (one Undo step). */
     private void act(Projection.Action a, List<String> values) {
         if (!current()) {
-            say("The text has changed since the diagram was drawn; try again in a moment.");
+            say(PanelMsg.DIAGRAM_CHANGED.text());
             return;
         }
         written = null;
         try {
             apply(a.edit().apply(values));
-            if (a.name().equals(Projection.EXPAND)) {
+            if (a.name().equals(Projection.EXPAND.text())) {
                 openTable(values.get(0));
             }
             if (written != null) {
@@ -989,7 +989,7 @@ public final class DiagramPane {
      */
     private void write(Projection.Field f, String value) {
         if (!current()) {
-            say("The text has changed since the diagram was drawn; try again in a moment.");
+            say(PanelMsg.DIAGRAM_CHANGED.text());
             return;
         }
         if (value.equals(f.value())) {
@@ -1010,7 +1010,7 @@ public final class DiagramPane {
         try {
             editor.apply(edit);
         } catch (BadLocationException e) {
-            say("The text changed meanwhile; try again (" + e.getMessage() + ").");
+            say(PanelMsg.DIAGRAM_CHANGED_MEANWHILE.text(e.getMessage()));
         }
     }
 }

@@ -16,6 +16,7 @@ import org.parpe.gui.diagram.Projection.Action;
 import org.parpe.gui.diagram.Projection.Field;
 import org.parpe.gui.diagram.Projection.Target;
 import org.parpe.gui.editor.NameIndex;
+import org.parpe.gui.text.PanelMsg;
 
 /**
  * The edit row of the Diagram pane for one node: its title, its values as fields (Enter writes
@@ -48,12 +49,12 @@ final class EditRow {
                 // a name picked from the script's is written at once, as Enter writes a typed one
                 c.addListener(SWT.Selection, e -> write.accept(f, c.getText()));
             } else {
-                tip(field, "Enter writes the new " + f.name() + " into the text (one Undo step); Ctrl+Space offers names");
+                tip(field, PanelMsg.DIAGRAM_FIELD_TIP.text(f.name()));
             }
             field.addListener(SWT.DefaultSelection, e -> write.accept(f, text(field)));
             if (f.name().equals("angles") && pose != null) {
-                button(row, "Use pose", "The pose selected in the Pose panel becomes this state's angles (or drag it onto the state)",
-                        () -> act.accept(new Action("Use pose", List.of(), v -> f.edit().apply(usable(pose.get()))), List.of()));
+                button(row, PanelMsg.DIAGRAM_USE_POSE.text(), PanelMsg.DIAGRAM_USE_POSE_TIP.text(),
+                        () -> act.accept(new Action(PanelMsg.DIAGRAM_USE_POSE.text(), List.of(), v -> f.edit().apply(usable(pose.get()))), List.of()));
             }
         }
         for (Action a : t.actions()) {
@@ -78,7 +79,7 @@ final class EditRow {
     private static void stepper(Composite row, String name, Text input) {
         for (int step : new int[] {-1, 1}) {
             String one = name.replaceAll("s$", "");
-            button(row, name + (step < 0 ? "\u2212" : "+"), step < 0 ? "One " + one + " less" : "One more " + one, () -> {
+            button(row, name + (step < 0 ? "\u2212" : "+"), (step < 0 ? PanelMsg.DIAGRAM_ONE_LESS : PanelMsg.DIAGRAM_ONE_MORE).text(one), () -> {
                 int n;
                 try {
                     n = Integer.parseInt(input.getText().trim());
@@ -105,11 +106,10 @@ final class EditRow {
      */
     static String usable(String angles) {
         if (angles == null) {
-            throw new IllegalArgumentException("Select a pose in the Pose panel first (or drag one onto the state).");
+            throw new IllegalArgumentException(PanelMsg.DIAGRAM_SELECT_POSE.text());
         }
         if (!angles.matches("\\s*-?[0-9.eE+-]+(\\s*,\\s*-?[0-9.eE+-]+)*\\s*")) {
-            throw new IllegalArgumentException("Only a pose (numbers separated by commas) can become a state's angles, not '"
-                    + angles + "'.");
+            throw new IllegalArgumentException(PanelMsg.DIAGRAM_ONLY_A_POSE.text(angles));
         }
         return angles.trim();
     }
@@ -127,10 +127,10 @@ final class EditRow {
             return List.of();
         }
         java.util.Collection<String> out = switch (name) {
-            case "group" -> Projection.START.equals(action) ? List.of() : names.groups();
-            case "automaton" -> "Make phase automaton".equals(action) ? List.of() : names.automata();
+            case "group" -> Projection.START.text().equals(action) ? List.of() : names.groups();
+            case "automaton" -> PanelMsg.DIAGRAM_MAKE_PHASE_AUTOMATON.text().equals(action) ? List.of() : names.automata();
             case STATES -> names.states();
-            case "behavior" -> "Add instance".equals(action) ? names.behaviorNames() : List.of();
+            case "behavior" -> PanelMsg.DIAGRAM_ADD_INSTANCE.text().equals(action) ? names.behaviorNames() : List.of();
             default -> List.of();
         };
         return out.stream().sorted().toList();
@@ -148,7 +148,7 @@ final class EditRow {
         c.setText(value);
         c.setData("field", name);
         c.setVisibleItemCount(Math.min(12, items.size()));
-        tip(c, "Pick one of the script's names from the list, or type one");
+        tip(c, PanelMsg.DIAGRAM_PICK_NAME_TIP.text());
         int widest = items.stream().mapToInt(String::length).max().orElse(0);
         c.setLayoutData(new RowData(Math.max(90, 9 * (Math.max(widest, value.length()) + 2)), SWT.DEFAULT));
         return c;
@@ -163,7 +163,7 @@ final class EditRow {
             typed[0] = typed[0].isBlank() ? picked : typed[0].strip().replaceAll(",$", "") + ", " + picked;
             c.setText(typed[0]);
         });
-        tip(c, "Pick the states in cycle order: each one picked is added to the list (or type them, separated by commas)");
+        tip(c, PanelMsg.DIAGRAM_PICK_STATES_TIP.text());
     }
 
     /**

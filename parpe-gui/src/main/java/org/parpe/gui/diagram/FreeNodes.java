@@ -8,6 +8,7 @@ import org.parpe.core.diag.SourcePos;
 import org.parpe.core.diagram.Scene;
 import org.parpe.core.edit.TextEdit;
 import org.parpe.core.diagram.Workbench;
+import org.parpe.gui.text.PanelMsg;
 
 /**
  * Dragging the free nodes of the workbench under the program view and the lanes
@@ -97,9 +98,9 @@ final class FreeNodes {
                 return;
             }
             if (edit == null) {
-                pane.say("Not a place to drop " + n.node().name() + ". " + f.hint() + ".");
+                pane.say(PanelMsg.DIAGRAM_NOT_A_PLACE.text(n.node().name(), f.hint()));
             } else if (!pane.current()) {
-                pane.say("The text has changed since the diagram was drawn; try again in a moment.");
+                pane.say(PanelMsg.DIAGRAM_CHANGED.text());
             } else {
                 pane.apply(edit);
             }

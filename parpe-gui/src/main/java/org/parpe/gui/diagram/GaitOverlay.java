@@ -8,6 +8,7 @@ import org.parpe.core.diagram.GaitDiagram;
 import org.parpe.core.diagram.Layouts;
 import org.parpe.core.diagram.Scene;
 import org.parpe.gui.run.LiveStates;
+import org.parpe.gui.text.PanelMsg;
 
 /**
  * The live overlay of the gait diagram: a line at the frame's time (while it lies in the time
@@ -45,7 +46,7 @@ final class GaitOverlay {
         labels = new String[n];
         counts = new int[names.size()];
         double column = left + width + 6;
-        marks.add(new Scene.Text(column + 7, top - 4, "now", 10, 0, INK, true));
+        marks.add(new Scene.Text(column + 7, top - 4, PanelMsg.DIAGRAM_NOW.text(), 10, 0, INK, true));
         for (int m = 0; m < n && m < f.instance().length; m++) {
             String name = gait.stateName(f.entry(), f.instance()[m], f.state()[m]);
             labels[m] = name;
@@ -60,12 +61,12 @@ final class GaitOverlay {
         if (f.tick() < gait.ticks()) {
             double x = left + f.tick() * width / gait.ticks();
             marks.add(new Scene.Line(x, top - 6, x, top + n * rowH + 6, INK, 2, 0));
-            where = "black line: now";
+            where = PanelMsg.DIAGRAM_BLACK_LINE_NOW.text();
         } else {
-            where = "now is after the time drawn";
+            where = PanelMsg.DIAGRAM_NOW_AFTER.text();
         }
-        marks.add(new Scene.Text(left + width, top - 8, what + ": tick " + f.tick() + " (" + where
-                + "; right: each module's state now)", 11, 1, INK, false));
+        marks.add(new Scene.Text(left + width, top - 8, PanelMsg.DIAGRAM_TICK_GAIT.text(what, f.tick(), where),
+                11, 1, INK, false));
         return marks;
     }
 

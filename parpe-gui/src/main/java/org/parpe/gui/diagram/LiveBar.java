@@ -15,6 +15,7 @@ import org.parpe.core.diagram.Ring;
 import org.parpe.core.diagram.Scene;
 import org.parpe.core.model.Program;
 import org.parpe.core.run.Breakpoints;
+import org.parpe.gui.text.PanelMsg;
 
 /**
  * The Diagram pane's row for runs: breakpoints on the selected state of the ring (on entering
@@ -48,13 +49,13 @@ final class LiveBar {
         gl.horizontalSpacing = 3;
         row.setLayout(gl);
         row.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
-        onEnter = button("Break on entry", "Pause a run when a module enters the selected state (click its arc first)");
+        onEnter = button(PanelMsg.DIAGRAM_BREAK_ENTRY.text(), PanelMsg.DIAGRAM_BREAK_ENTRY_TIP.text());
         onEnter.addListener(SWT.Selection, e -> toggle(Breakpoints.Kind.ENTER));
-        onExit = button("Break on exit", "Pause a run when the selected state's exit condition becomes true");
+        onExit = button(PanelMsg.DIAGRAM_BREAK_EXIT.text(), PanelMsg.DIAGRAM_BREAK_EXIT_TIP.text());
         onExit.addListener(SWT.Selection, e -> toggle(Breakpoints.Kind.EXIT));
-        resume = button("Continue", "Go on from the breakpoint (as Resume)");
+        resume = button(PanelMsg.DIAGRAM_CONTINUE.text(), PanelMsg.DIAGRAM_CONTINUE_TIP.text());
         resume.addListener(SWT.Selection, e -> goOn.run());
-        openTrace = button("Trace…", "Open a trace recorded with parpe run --trace FILE.csv and scrub through it");
+        openTrace = button(PanelMsg.DIAGRAM_TRACE.text(), PanelMsg.DIAGRAM_TRACE_TIP.text());
         openTrace.addListener(SWT.Selection, e -> chooseTrace());
         slider = new Scale(row, SWT.HORIZONTAL);
         GridData sd = new GridData(SWT.LEFT, SWT.CENTER, false, false);
@@ -139,23 +140,23 @@ final class LiveBar {
         onExit.setEnabled(breakpoints != null && a != null && a.exit() != null);
         onEnter.setText(a != null && breakpoints != null
                 && breakpoints.has(new Breakpoints.Point(automaton, a.index(), Breakpoints.Kind.ENTER))
-                ? "Clear entry break" : "Break on entry");
+                ? PanelMsg.DIAGRAM_CLEAR_ENTRY.text() : PanelMsg.DIAGRAM_BREAK_ENTRY.text());
         onExit.setText(a != null && a.exit() != null && breakpoints != null
                 && breakpoints.has(new Breakpoints.Point(automaton, a.index(), Breakpoints.Kind.EXIT))
-                ? "Clear exit break" : "Break on exit");
+                ? PanelMsg.DIAGRAM_CLEAR_EXIT.text() : PanelMsg.DIAGRAM_BREAK_EXIT.text());
         resume.setEnabled(shownHit != null);
         slider.setVisible(trace != null);
         ((GridData) slider.getLayoutData()).exclude = trace == null;
         if (shownHit != null) {
-            tell("Paused: " + shownHit.describe() + ". Continue goes on.");
+            tell(PanelMsg.DIAGRAM_PAUSED.text(hit(shownHit)));
         } else if (trace != null) {
             int k = slider.getSelection();
-            tell(trace.file().getFileName() + ": t = " + org.parpe.core.lang.Numbers.format(trace.time(k)) + " s (tick " + k
-                    + " of " + (trace.ticks() - 1) + ")" + (Double.isNaN(trace.differsFrom()) ? ""
-                    : "; from t = " + org.parpe.core.lang.Numbers.format(trace.differsFrom())
-                    + " s its angles differ from this script's: the states are the script's"));
+            String at = PanelMsg.DIAGRAM_TRACE_AT.text(trace.file().getFileName(), org.parpe.core.lang.Numbers.format(trace.time(k)), k,
+                    trace.ticks() - 1);
+            tell(Double.isNaN(trace.differsFrom()) ? at
+                    : PanelMsg.DIAGRAM_TRACE_DIFFERS.text(at, org.parpe.core.lang.Numbers.format(trace.differsFrom())));
         } else {
-            tell(a != null ? "" : "Select a state on the ring to break on it.");
+            tell(a != null ? "" : PanelMsg.DIAGRAM_SELECT_STATE.text());
         }
         onEnter.pack();
         onExit.pack();
@@ -163,6 +164,13 @@ final class LiveBar {
     }
 
     /** Sets the line beside the buttons (it wraps there when it is long). */
+    /** Which module reached which breakpoint, when (as {@code Breakpoints.Hit.describe()}, in the IDE's language). */
+    private static String hit(Breakpoints.Hit h) {
+        String t = org.parpe.core.lang.Numbers.format(Math.round(h.time() * 1e6) / 1e6);
+        return (h.point().kind() == Breakpoints.Kind.ENTER ? PanelMsg.DIAGRAM_HIT_ENTER : PanelMsg.DIAGRAM_HIT_EXIT)
+                .text(h.moduleId(), h.point().automaton() + "." + h.state(), h.tick(), t);
+    }
+
     private void tell(String line) {
         says.setText(line);
         says.setToolTipText(line.isEmpty() ? null : line);
@@ -173,7 +181,7 @@ final class LiveBar {
     void shown() {
         update();
         if (trace != null) {
-            pane.showFrame(trace.frame(slider.getSelection()), "trace");
+            pane.showFrame(trace.frame(slider.getSelection()), PanelMsg.DIAGRAM_TRACE_WORD.text());
         } else {
             pane.repaintOverlay();
         }
@@ -195,7 +203,7 @@ final class LiveBar {
             return;
         }
         Path chosen = org.parpe.gui.panels.FileDialogs.ask(row.getShell(), SWT.OPEN,
-                "Open a trace (parpe run --trace FILE.csv) to scrub through", "*.csv", null, null);
+                PanelMsg.DIAGRAM_OPEN_TRACE_TITLE.text(), "*.csv", null, null);
         if (chosen != null) {
             scrub(chosen);
         }
@@ -205,13 +213,13 @@ final class LiveBar {
     void scrub(Path csv) {
         Program p = pane.program();
         if (p == null) {
-            tell("The script does not load; a trace is scrubbed through its script.");
+            tell(PanelMsg.DIAGRAM_TRACE_NEEDS_SCRIPT.text());
             return;
         }
         try {
             trace = TraceScrubber.load(p, csv);
         } catch (java.io.IOException e) {
-            tell("Cannot read " + csv + ": " + org.parpe.core.io.IoReasons.of(e));
+            tell(PanelMsg.DIAGRAM_CANNOT_READ.text(csv, org.parpe.core.io.IoReasons.of(e)));
             return;
         } catch (IllegalArgumentException e) {
             tell(e.getMessage());
@@ -221,7 +229,7 @@ final class LiveBar {
         slider.setMaximum(Math.max(1, trace.ticks() - 1));
         slider.setPageIncrement(Math.max(1, trace.ticks() / 20));
         slider.setSelection(0);
-        openTrace.setText("Close trace");
+        openTrace.setText(PanelMsg.DIAGRAM_CLOSE_TRACE.text());
         update();
         scrubTo(0);
     }
@@ -234,12 +242,12 @@ final class LiveBar {
         int t = Math.max(0, Math.min(trace.ticks() - 1, k));
         slider.setSelection(t);
         update();
-        pane.showFrame(trace.frame(t), "trace");
+        pane.showFrame(trace.frame(t), PanelMsg.DIAGRAM_TRACE_WORD.text());
     }
 
     private void stopScrubbing() {
         trace = null;
-        openTrace.setText("Trace…");
+        openTrace.setText(PanelMsg.DIAGRAM_TRACE.text());
         update();
         pane.showFrame(null, null);
     }

@@ -19,6 +19,7 @@ import org.parpe.gui.diagram.Projection.Action;
 import org.parpe.gui.diagram.Projection.Target;
 import org.parpe.gui.diagram.Projection.View;
 import org.parpe.gui.editor.Validator;
+import org.parpe.gui.text.PanelMsg;
 
 /**
  * The diagram palette: buttons that define something new in the script, each opening its
@@ -35,7 +36,7 @@ final class Palette {
      * One button: its label, what it is for, its inputs, the view that draws what it adds (its
      * subject the first input; {@code null}: none draws it) and its edit of a loaded text.
      */
-    private record Item(String name, String tip, boolean beginner, List<String> inputs, View shows,
+    private record Item(PanelMsg name, PanelMsg noun, PanelMsg add, PanelMsg tip, boolean beginner, List<String> inputs, View shows,
                         Function<Loaded, Function<List<String>, TextEdit>> edit) {
     }
 
@@ -44,26 +45,26 @@ final class Palette {
     }
 
     private static final List<Item> ITEMS = List.of(
-            new Item("Pose", "a named state: one angle for the whole group, or one per module", true,
+            new Item(PanelMsg.PALETTE_POSE, PanelMsg.PALETTE_POSE_NOUN, PanelMsg.PALETTE_ADD_POSE, PanelMsg.PALETTE_POSE_TIP, true,
                     List.of("name", "angles"), null, l -> v -> PaletteEdits.addPose(l.text, l.p, v.get(0), v.get(1))),
-            new Item("Gait table", "rows \u00d7 modules of angles, all 0 at first: fill them in the grid beside the text", true,
+            new Item(PanelMsg.PALETTE_GAIT_TABLE, PanelMsg.PALETTE_GAIT_TABLE_NOUN, PanelMsg.PALETTE_ADD_GAIT_TABLE, PanelMsg.PALETTE_GAIT_TABLE_TIP, true,
                     List.of("name", "rows", "modules", "times"), View.RING, l -> v -> PaletteEdits.addGaitTable(l.text, l.p,
                             v.get(0), v.get(1), v.get(2), v.get(3))),
-            new Item("Automaton", "a phase automaton: defined states in cycle order, and their times", true,
+            new Item(PanelMsg.PALETTE_AUTOMATON, PanelMsg.PALETTE_AUTOMATON_NOUN, PanelMsg.PALETTE_ADD_AUTOMATON, PanelMsg.PALETTE_AUTOMATON_TIP, true,
                     List.of("name", EditRow.STATES, "times"), View.RING,
                     l -> v -> PaletteEdits.addAutomaton(l.text, l.p, v.get(0), v.get(1), v.get(2))),
-            new Item("Behavior", "a behavior running one automaton on one group, run from <main>", true,
+            new Item(PanelMsg.PALETTE_BEHAVIOR, PanelMsg.PALETTE_BEHAVIOR_NOUN, PanelMsg.DIAGRAM_ADD_BEHAVIOR, PanelMsg.PALETTE_BEHAVIOR_TIP, true,
                     List.of("behavior", "automaton", "group", "time"), View.LANES,
                     l -> v -> BehaviorEdits.addBehavior(l.text, l.p, v.get(0), v.get(1), v.get(2), v.get(3))),
-            new Item("Group", "a group of modules: IDs such as 0, 2, 4 or 0..7", false,
+            new Item(PanelMsg.PALETTE_GROUP, PanelMsg.PALETTE_GROUP_NOUN, PanelMsg.PALETTE_ADD_GROUP, PanelMsg.PALETTE_GROUP_TIP, false,
                     List.of("name", "elements"), null, l -> v -> PaletteEdits.addGroup(l.text, l.p, v.get(0), v.get(1))),
-            new Item("Parameter", "a number fixed for a run, used by name in angles, times and ranges; min, max, label optional",
+            new Item(PanelMsg.PALETTE_PARAMETER, PanelMsg.PALETTE_PARAMETER_NOUN, PanelMsg.PALETTE_ADD_PARAMETER, PanelMsg.PALETTE_PARAMETER_TIP,
                     false, List.of("name", "value", "min", "max", "label"), null, l -> v -> PaletteEdits.addParameter(l.text, l.p,
                             v.get(0), v.get(1), v.get(2), v.get(3), v.get(4))),
-            new Item("Instance", "an automaton on a group in an existing behavior (! mirrors the group)", false,
+            new Item(PanelMsg.PALETTE_INSTANCE, PanelMsg.PALETTE_INSTANCE_NOUN, PanelMsg.DIAGRAM_ADD_INSTANCE, PanelMsg.PALETTE_INSTANCE_TIP, false,
                     List.of("behavior", "automaton", "group"), View.LANES, l -> v -> BehaviorEdits.addInstance(l.text,
                             l.p.behavior(v.get(0)).orElseThrow(() -> new IllegalArgumentException(
-                                    "there is no behavior '" + v.get(0) + "'")), v.get(1), v.get(2))));
+                                    PanelMsg.PALETTE_NO_BEHAVIOR.text(v.get(0)))), v.get(1), v.get(2))));
 
     private final DiagramPane pane;
     private final Composite buttons;
@@ -76,15 +77,15 @@ final class Palette {
         Composite row = new Composite(parent, SWT.NONE);
         row.setLayout(DiagramPane.row());
         Label label = new Label(row, SWT.NONE);
-        label.setText("New:");
+        label.setText(PanelMsg.PALETTE_NEW.text());
         // on the label, not the chooser: a tool tip over it covered its open list (issue 31)
-        label.setToolTipText("New: poses, gait tables, automata and behaviors; with Full, groups, parameters and instances too");
+        label.setToolTipText(PanelMsg.PALETTE_NEW_TIP.text());
         buttons = new Composite(row, SWT.NONE);
         buttons.setLayout(DiagramPane.row());
         // a check box, narrower than a chooser: the view's and the palette's row stays one row at 1366×768
         mode = new Button(row, SWT.CHECK);
-        mode.setText("Full");
-        mode.setToolTipText("The full palette: groups, parameters and instances too");
+        mode.setText(PanelMsg.PALETTE_FULL.text());
+        mode.setToolTipText(PanelMsg.PALETTE_FULL_TIP.text());
         mode.addListener(SWT.Selection, e -> fill());
         fill();
     }
@@ -103,10 +104,9 @@ final class Palette {
     /** Presses button {@code name}: its inputs open in the edit row (nothing when the palette shown lacks it). */
     void choose(String name) {
         for (Item item : ITEMS) {
-            if (item.name().equals(name) && items().contains(name)) {
-                String what = item.name().toLowerCase(java.util.Locale.ROOT);
-                pane.offer(new Target("New " + what + ": " + item.tip(), List.of(), -1, null,
-                        List.of(new Action("Add " + what, item.inputs(), starting(item), v -> {
+            if (item.name().text().equals(name) && items().contains(name)) {
+                pane.offer(new Target(PanelMsg.PALETTE_NEW_TITLE.text(item.noun().text(), item.tip().text()), List.of(), -1, null,
+                        List.of(new Action(item.add().text(), item.inputs(), starting(item), v -> {
                             TextEdit edit = item.edit().apply(load()).apply(v);
                             pane.whenWritten(() -> added(item, v.get(0)));
                             return edit;
@@ -117,7 +117,7 @@ final class Palette {
 
     /** The inputs of {@code item} as the edit row starts them: a gait table of 4 rows × the robot's modules. */
     private List<String> starting(Item item) {
-        if (!item.name().equals("Gait table")) {
+        if (item.name() != PanelMsg.PALETTE_GAIT_TABLE) {
             return java.util.Collections.nCopies(item.inputs().size(), "");
         }
         Projection shown = pane.shown();
@@ -129,15 +129,14 @@ final class Palette {
 
     /** {@code item} named {@code name} was written: the view that draws it shows it, or the line says where it went. */
     private void added(Item item, String name) {
-        String what = item.name().toLowerCase(java.util.Locale.ROOT);
-        if (item.name().equals("Gait table")) {
+        if (item.name() == PanelMsg.PALETTE_GAIT_TABLE) {
             pane.openTable(name.trim());
         }
         if (item.shows() != null) {
             pane.showAdded(item.shows(), name.trim());
         } else {
-            pane.tell("Added " + what + " '" + name.trim() + "' to the text"
-                    + (item.name().equals("Pose") ? "; an automaton's states use it (New \u2192 Automaton)." : "."));
+            pane.tell((item.name() == PanelMsg.PALETTE_POSE ? PanelMsg.PALETTE_ADDED_POSE : PanelMsg.PALETTE_ADDED)
+                    .text(item.noun().text(), name.trim()));
         }
     }
 
@@ -149,9 +148,9 @@ final class Palette {
         for (Item item : ITEMS) {
             if (full || item.beginner()) {
                 Button b = new Button(buttons, SWT.PUSH);
-                b.setText(item.name());
-                b.setToolTipText("New " + item.tip());
-                b.addListener(SWT.Selection, e -> choose(item.name()));
+                b.setText(item.name().text());
+                b.setToolTipText(PanelMsg.PALETTE_ITEM_TIP.text(item.tip().text()));
+                b.addListener(SWT.Selection, e -> choose(item.name().text()));
             }
         }
         buttons.getParent().layout(true, true);
@@ -162,16 +161,15 @@ final class Palette {
     private Loaded load() {
         Projection shown = pane.shown();
         if (shown == null) {
-            throw new IllegalArgumentException("no diagram yet; try again in a moment");
+            throw new IllegalArgumentException(PanelMsg.PALETTE_NO_DIAGRAM.text());
         }
         if (SectionEdits.blank(shown.text())) {
-            throw new IllegalArgumentException("The file is empty: start a robot first (" + Projection.START
-                    + ", in the row below), then add to it.");
+            throw new IllegalArgumentException(PanelMsg.PALETTE_FILE_EMPTY.text(Projection.START.text()));
         }
         Path f = shown.file();
         LoadResult r = Validator.load(f, shown.text(), Map.of());
         if (r.program() == null) {
-            throw new IllegalArgumentException("the script does not load; mend it first (see Problems)");
+            throw new IllegalArgumentException(PanelMsg.PALETTE_DOES_NOT_LOAD.text());
         }
         return new Loaded(shown.text(), r.program());
     }

@@ -9,6 +9,7 @@ import java.util.Collection;
 import java.util.function.Consumer;
 import org.parpe.core.diagram.NodePlaces;
 import org.parpe.core.io.AtomicFiles;
+import org.parpe.gui.text.PanelMsg;
 
 /**
  * The places of the open script's free nodes ({@link NodePlaces}), kept beside the script in
@@ -129,7 +130,7 @@ final class PlacesBeside {
         } catch (IOException | RuntimeException e) {
             if (!toldCannotWrite) {
                 toldCannotWrite = true;
-                say.accept("Cannot write " + file + " (" + e.getMessage() + "); node places are kept while the IDE is open");
+                say.accept(PanelMsg.DIAGRAM_CANNOT_WRITE_LAYOUT.text(file, e.getMessage()));
             }
         }
     }
@@ -141,13 +142,12 @@ final class PlacesBeside {
         }
         try {
             if (!Files.isRegularFile(file) || Files.size(file) > MAX_BYTES) {
-                return new NodePlaces.Read(NodePlaces.NONE, false, file + " is not a PARPE layout file (not a regular file,"
-                        + " or larger than 1 MB); it is left as it is and node places are kept only while the IDE is open");
+                return new NodePlaces.Read(NodePlaces.NONE, false, PanelMsg.DIAGRAM_NOT_A_LAYOUT.text(file));
             }
             return NodePlaces.parse(file.toString(), new String(Files.readAllBytes(file), StandardCharsets.UTF_8));
         } catch (IOException | RuntimeException e) {
-            return new NodePlaces.Read(NodePlaces.NONE, false, "Cannot read " + file + " (" + org.parpe.core.io.IoReasons.of(e)
-                    + "); it is left as it is and node places are kept only while the IDE is open");
+            return new NodePlaces.Read(NodePlaces.NONE, false,
+                    PanelMsg.DIAGRAM_CANNOT_READ_LAYOUT.text(file, org.parpe.core.io.IoReasons.of(e)));
         }
     }
 }

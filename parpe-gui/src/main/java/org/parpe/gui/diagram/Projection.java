@@ -26,7 +26,6 @@ import org.parpe.core.edit.SectionEdits;
 import org.parpe.core.diagram.Swimlanes;
 import org.parpe.core.edit.TextEdit;
 import org.parpe.core.diagram.Workbench;
-import org.parpe.core.lang.Numbers;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.model.Automaton;
 import org.parpe.core.model.Behavior;
@@ -36,6 +35,7 @@ import org.parpe.core.model.Program;
 import org.parpe.core.run.RunOptions;
 import org.parpe.core.run.ScriptRuntimeError;
 import org.parpe.gui.editor.Validator;
+import org.parpe.gui.text.PanelMsg;
 
 /**
  * One view of one text: the script loaded from exactly that text, the view's {@link Scene}, the
@@ -96,11 +96,11 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
 
     /** The views, in the chooser's order. */
     enum View {
-        PROGRAM("Program"), LANES("Lanes"), RING("Ring"), PHASE("Phase"), GAIT("Gait");
+        PROGRAM(PanelMsg.VIEW_PROGRAM), LANES(PanelMsg.VIEW_LANES), RING(PanelMsg.VIEW_RING), PHASE(PanelMsg.VIEW_PHASE), GAIT(PanelMsg.VIEW_GAIT);
 
-        final String label;
+        final PanelMsg label;
 
-        View(String label) {
+        View(PanelMsg label) {
             this.label = label;
         }
     }
@@ -215,7 +215,7 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
             String first = r.diagnostics().stream().filter(d -> d.severity() == Severity.ERROR).findFirst()
                     .map(Diagnostic::format).orElse("");
             return new Projection(text, file, view, List.of(), null, null, Map.of(),
-                    "The script does not load; the diagram shows it again once it does. " + first);
+                    PanelMsg.DIAGRAM_DOES_NOT_LOAD.text(first));
         }
         Map<SourcePos, Target> targets = new LinkedHashMap<>();
         try {
@@ -240,22 +240,20 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
      */
     private static Projection start(String text, Path file, View view) {
         Map<SourcePos, Target> targets = new LinkedHashMap<>();
-        targets.put(new SourcePos(file.toString(), 1, 1), new Target("Start a robot: a chain of", List.of(), -1, null,
-                List.of(new Action(START, List.of("modules", "group"), List.of(START_MODULES, "body"),
+        targets.put(new SourcePos(file.toString(), 1, 1), new Target(PanelMsg.DIAGRAM_START_TITLE.text(), List.of(), -1, null,
+                List.of(new Action(START.text(), List.of("modules", "group"), List.of(START_MODULES, "body"),
                         v -> SectionEdits.startRobot(text, v.get(1), modules(v.get(0)))))));
-        return new Projection(text, file, view, List.of(), null, null, targets, "The file is empty. Start a robot: choose how"
-                + " many modules it has with + and −, name their group, and press " + START + ". Then the palette (New:) adds"
-                + " poses, automata and behaviors.");
+        return new Projection(text, file, view, List.of(), null, null, targets, PanelMsg.DIAGRAM_FILE_EMPTY.text(START.text()));
     }
 
     /** The button that starts a robot in an empty file. */
-    static final String START = "Start robot";
+    static final PanelMsg START = PanelMsg.DIAGRAM_START_ROBOT;
 
     private static int modules(String n) {
         try {
             return Integer.parseInt(n.trim());
         } catch (NumberFormatException e) {
-            throw new IllegalArgumentException("the number of modules is a whole number such as 8, not '" + n + "'");
+            throw new IllegalArgumentException(PanelMsg.DIAGRAM_MODULES_WHOLE.text(n));
         }
     }
 
@@ -273,22 +271,21 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         var lane = Diagrams.program(p);
         if (lane.isEmpty()) {
             return new Projection(text, file, View.PROGRAM, List.of(), null, null, targets,
-                    "The script has no <main> yet: New → Behavior (in Full: Group, Parameter, Automaton, Instance too)"
-                            + " writes one that runs it; the Lanes, Ring and Phase views show the rest.");
+                    PanelMsg.DIAGRAM_NO_MAIN.text());
         }
         var main = p.mainDef().orElseThrow();
         if (mine(main.pos(), file)) {
-            targets.put(main.pos(), new Target("<main> (click a box for an entry)", List.of(), -1, null, List.of(
-                    new Action("Add behavior", List.of("behavior", "automaton", "group", "time"),
+            targets.put(main.pos(), new Target(PanelMsg.DIAGRAM_MAIN_TITLE.text(), List.of(), -1, null, List.of(
+                    new Action(PanelMsg.DIAGRAM_ADD_BEHAVIOR.text(), List.of("behavior", "automaton", "group", "time"),
                             v -> BehaviorEdits.addBehavior(text, p, v.get(0), v.get(1), v.get(2), v.get(3))))));
         }
         for (ProgramLane.Step s : lane.get().steps()) {
             if (mine(s.pos(), file)) {
-                targets.put(s.pos(), new Target("the " + Numbers.ordinal(s.index()) + " <main> entry: " + s.behavior(), List.of(
+                targets.put(s.pos(), new Target(PanelMsg.DIAGRAM_ENTRY_TITLE.text(PanelMsg.ordinal(s.index()), s.behavior()), List.of(
                         new Field("time", s.time() == null ? "" : s.time(),
                                 v -> ScriptEdits.setAttribute(text, s.pos(), "time", v))), s.index(),
                         to -> DiagramEdits.moveEntry(text, main, s.index(), to),
-                        List.of(new Action("Remove entry", List.of(), v -> BehaviorEdits.removeEntry(text, main, s.index())))));
+                        List.of(new Action(PanelMsg.DIAGRAM_REMOVE_ENTRY.text(), List.of(), v -> BehaviorEdits.removeEntry(text, main, s.index())))));
             }
         }
         Scene drawn = Layouts.program(lane.get());
@@ -296,9 +293,8 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         if (mine(main.pos(), file)) {
             drop = (name, y, on) -> y < drawn.height() ? BehaviorEdits.addEntry(text, p, name) : null;
         }
-        Free free = free(FreeNodes.PROGRAM, drawn, "Workbench: behaviors <main> does not run."
-                + " Drag one anywhere here, or onto the lane above to run it.", Workbench.freeBehaviors(p), places, drop,
-                "Release on the lane to run it from <main> (a new last entry), or on the workbench to leave it there");
+        Free free = free(FreeNodes.PROGRAM, drawn, PanelMsg.DIAGRAM_BENCH_BEHAVIORS.text(), Workbench.freeBehaviors(p), places, drop,
+                PanelMsg.DIAGRAM_RELEASE_ON_LANE.text());
         return new Projection(text, file, View.PROGRAM, List.of(), null, free.bench().scene(), targets, "", null, null,
                 List.of(), null, null, free);
     }
@@ -313,15 +309,15 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
                                     NodePlaces places) {
         List<String> names = p.behaviors().stream().map(Behavior::name).toList();
         if (names.isEmpty()) {
-            return new Projection(text, file, View.LANES, names, null, null, targets, "The script has no behaviors.");
+            return new Projection(text, file, View.LANES, names, null, null, targets, PanelMsg.DIAGRAM_NO_BEHAVIORS.text());
         }
         String chosen = names.contains(subject) ? subject
                 : p.main() != null && !p.main().entries().isEmpty() ? p.main().entries().get(0).behavior() : names.get(0);
         Behavior behavior = p.behavior(chosen).orElseThrow();
         Swimlanes s = Diagrams.swimlanes(p, behavior);
         if (mine(behavior.pos(), file)) {
-            targets.put(behavior.pos(), new Target("behavior " + chosen + " (click a bar for an instance)", List.of(), -1, null,
-                    List.of(new Action("Add instance", List.of("automaton", "group"),
+            targets.put(behavior.pos(), new Target(PanelMsg.DIAGRAM_BEHAVIOR_TITLE.text(chosen), List.of(), -1, null,
+                    List.of(new Action(PanelMsg.DIAGRAM_ADD_INSTANCE.text(), List.of("automaton", "group"),
                             v -> BehaviorEdits.addInstance(text, behavior, v.get(0), v.get(1))))));
         }
         for (Swimlanes.Lane l : s.lanes()) {
@@ -329,8 +325,8 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
                 if (mine(b.pos(), file)) {
                     Instance in = behavior.instances().get(b.index());
                     Group g = Diagrams.groupOf(p, behavior, in).orElse(null);
-                    targets.put(b.pos(), instanceTarget(text, file, "instance " + b.index() + ": " + b.automaton() + " on "
-                            + (b.mirrored() ? "!" : "") + l.group(), b.pos(), b.phase(), b.offset(), b.period(), g)
+                    targets.put(b.pos(), instanceTarget(text, file,
+                            PanelMsg.DIAGRAM_INSTANCE_TITLE.text(b.index(), b.automaton(), (b.mirrored() ? "!" : "") + l.group()), b.pos(), b.phase(), b.offset(), b.period(), g)
                             .with(expand(text, p, in, g)));
                 }
             }
@@ -341,15 +337,14 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         if (mine(behavior.pos(), file)) {
             drop = (name, y, on) -> laneOf.containsKey(on) ? BehaviorEdits.addInstance(text, behavior, name, laneOf.get(on)) : null;
         }
-        Free free = free(FreeNodes.LANES, Layouts.lanes(s), "Workbench: automata and gait tables no behavior plays."
-                + " Drag one anywhere here, or onto a bar to play it on that bar's group.", Workbench.freeAutomata(p), places,
-                drop, "Release on a bar to play it on that bar's group in " + chosen + ", or on the workbench to leave it there");
+        Free free = free(FreeNodes.LANES, Layouts.lanes(s), PanelMsg.DIAGRAM_BENCH_AUTOMATA.text(), Workbench.freeAutomata(p), places,
+                drop, PanelMsg.DIAGRAM_RELEASE_ON_BAR.text(chosen));
         return new Projection(text, file, View.LANES, names, chosen, free.bench().scene(), targets,
                 islands(s.islands().size()), null, null, List.of(), s, null, free);
     }
 
     /** The action that writes a gait table, which the pane then opens in the grid editor. */
-    static final String EXPAND = "Expand to gait table";
+    static final PanelMsg EXPAND = PanelMsg.DIAGRAM_EXPAND;
 
     /**
      * "Expand to gait table" for instance {@code in} on group {@code g}, or "Make phase
@@ -360,10 +355,10 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
             return List.of();
         }
         if (in.automaton().table()) {
-            return List.of(new Action("Make phase automaton", List.of("automaton"),
+            return List.of(new Action(PanelMsg.DIAGRAM_MAKE_PHASE_AUTOMATON.text(), List.of("automaton"),
                     v -> GaitTableExpansion.writeCycle(text, p, in, g, v.get(0))));
         }
-        return List.of(new Action(EXPAND, List.of("table"),
+        return List.of(new Action(EXPAND.text(), List.of("table"),
                 v -> GaitTableExpansion.write(text, p, in, g, v.get(0))));
     }
 
@@ -383,18 +378,18 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
     private static Projection ring(String text, Path file, Program p, String subject, Map<SourcePos, Target> targets) {
         List<String> names = p.automata().stream().map(Automaton::name).toList();
         if (names.isEmpty()) {
-            return new Projection(text, file, View.RING, names, null, null, targets, "The script has no automata.");
+            return new Projection(text, file, View.RING, names, null, null, targets, PanelMsg.DIAGRAM_NO_AUTOMATA.text());
         }
         String chosen = names.contains(subject) ? subject : names.get(0);
         final Automaton a = p.automaton(chosen).orElseThrow();
         Ring r = Diagrams.ring(p, a);
         if (mine(a.pos(), file)) {
             if (!a.table()) {
-                targets.put(a.pos(), new Target("automaton " + a.name() + " (click an arc for a state)", List.of(
+                targets.put(a.pos(), new Target(PanelMsg.DIAGRAM_AUTOMATON_TITLE.text(a.name()), List.of(
                         new Field("add state", "", v -> DiagramEdits.addState(text, p, a, v, "1")))));
             }
             for (Ring.Arc arc : r.arcs()) {
-                targets.putIfAbsent(arc.pos(), a.table() ? new Target("the " + Numbers.ordinal(arc.index()) + " row of " + a.name(), List.of(
+                targets.putIfAbsent(arc.pos(), a.table() ? new Target(PanelMsg.DIAGRAM_ROW_TITLE.text(PanelMsg.ordinal(arc.index()), a.name()), List.of(
                         new Field("duration", arc.duration(), v -> DiagramEdits.retime(text, a, arc.index(), v))))
                         : StateTargets.of(text, file, a, arc));
             }
@@ -415,21 +410,20 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         for (Behavior b : p.behaviors()) {
             List<Instance> list = b.instances();
             for (int i = 0; i < list.size(); i++) {
-                String label = b.name() + ", " + Numbers.ordinal(i) + ": " + list.get(i).name() + " on " + list.get(i).group();
+                String label = PanelMsg.DIAGRAM_PHASE_SUBJECT.text(b.name(), PanelMsg.ordinal(i), list.get(i).name(), list.get(i).group());
                 all.put(label, list.get(i));
                 of.put(label, b);
             }
         }
         List<String> labels = new ArrayList<>(all.keySet());
         if (labels.isEmpty()) {
-            return new Projection(text, file, View.PHASE, labels, null, null, targets, "The script has no automaton instances.");
+            return new Projection(text, file, View.PHASE, labels, null, null, targets, PanelMsg.DIAGRAM_NO_INSTANCES.text());
         }
         String chosen = all.containsKey(subject) ? subject : labels.get(0);
         Instance in = all.get(chosen);
         Group g = Diagrams.groupOf(p, of.get(chosen), in).orElse(null);
         if (g == null) {
-            return new Projection(text, file, View.PHASE, labels, chosen, null, targets, "The group of " + chosen
-                    + " is a macro that no <main> entry gives a value.");
+            return new Projection(text, file, View.PHASE, labels, chosen, null, targets, PanelMsg.DIAGRAM_GROUP_MACRO.text(chosen));
         }
         PhaseWheel w = Diagrams.wheel(in, g);
         Scene sc = Layouts.wheel(w);
@@ -441,7 +435,6 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
     }
 
     private static String islands(int n) {
-        return n == 0 ? "" : n + (n == 1 ? " thing" : " things") + " the view cannot draw: listed under it (click one to open"
-                + " its text).";
+        return n == 0 ? "" : (n == 1 ? PanelMsg.DIAGRAM_ONE_ISLAND : PanelMsg.DIAGRAM_N_ISLANDS).text(n);
     }
 }

@@ -12,6 +12,7 @@ import org.parpe.core.model.Automaton;
 import org.parpe.gui.diagram.Projection.Action;
 import org.parpe.gui.diagram.Projection.Field;
 import org.parpe.gui.diagram.Projection.Target;
+import org.parpe.gui.text.PanelMsg;
 
 /**
  * What can be edited on one state of an automaton's ring: its duration, its exit condition and
@@ -36,15 +37,15 @@ final class StateTargets {
                 v -> ScriptEdits.setAttribute(text, d.pos(), "angles", v))));
         List<Action> actions = new ArrayList<>();
         if (k > 0) {
-            actions.add(new Action("Earlier", List.of(), v -> RingEdits.moveState(text, a, k, k - 1)));
+            actions.add(new Action(PanelMsg.DIAGRAM_EARLIER.text(), List.of(), v -> RingEdits.moveState(text, a, k, k - 1)));
         }
         if (k < n - 1) {
-            actions.add(new Action("Later", List.of(), v -> RingEdits.moveState(text, a, k, k + 1)));
+            actions.add(new Action(PanelMsg.DIAGRAM_LATER.text(), List.of(), v -> RingEdits.moveState(text, a, k, k + 1)));
         }
         if (n > 1) {
-            actions.add(new Action("Remove", List.of(), v -> RingEdits.removeState(text, a, k)));
+            actions.add(new Action(PanelMsg.DIAGRAM_REMOVE.text(), List.of(), v -> RingEdits.removeState(text, a, k)));
         }
-        return new Target("state " + k + " of " + a.name() + ": " + arc.state(), fields, k,
+        return new Target(PanelMsg.DIAGRAM_STATE_TITLE.text(k, a.name(), arc.state()), fields, k,
                 to -> RingEdits.moveState(text, a, k, to), actions);
     }
 }

@@ -12,6 +12,7 @@ import org.parpe.core.model.Program;
 import org.parpe.core.run.Engine;
 import org.parpe.core.run.RunOptions;
 import org.parpe.gui.run.LiveStates;
+import org.parpe.gui.text.PanelMsg;
 
 /**
  * A recorded trace ({@code parpe run --trace}, docs/cli.md "Trace") made scrubbable: the trace
@@ -58,7 +59,7 @@ final class TraceScrubber {
         try (BufferedReader in = Files.newBufferedReader(csv, StandardCharsets.UTF_8)) {
             String header = in.readLine();
             if (header == null || !header.startsWith("time,")) {
-                throw new IllegalArgumentException(csv + ":1:1: not a PARPE trace (its header must start with 'time,')");
+                throw new IllegalArgumentException(PanelMsg.DIAGRAM_NOT_A_TRACE.text(csv + ":1:1"));
             }
             String[] names = header.split(",", -1);
             columns = new int[ids.length];
@@ -68,16 +69,14 @@ final class TraceScrubber {
                     int id = Integer.parseInt(names[c].substring(1));
                     int m = Arrays.binarySearch(ids, id);
                     if (m < 0) {
-                        throw new IllegalArgumentException(csv + ":1:1: the trace has module " + id
-                                + ", which the script does not have; open the trace of this script");
+                        throw new IllegalArgumentException(PanelMsg.DIAGRAM_TRACE_EXTRA_MODULE.text(csv + ":1:1", id));
                     }
                     columns[m] = c;
                 }
             }
             for (int m = 0; m < ids.length; m++) {
                 if (columns[m] < 0) {
-                    throw new IllegalArgumentException(csv + ":1:1: the trace has no column m" + ids[m]
-                            + " for module " + ids[m] + " of the script; open the trace of this script");
+                    throw new IllegalArgumentException(PanelMsg.DIAGRAM_TRACE_NO_COLUMN.text(csv + ":1:1", ids[m]));
                 }
             }
             String line;
@@ -95,17 +94,17 @@ final class TraceScrubber {
                         row[m + 1] = Double.parseDouble(cells[columns[m]]);
                     }
                 } catch (NumberFormatException | ArrayIndexOutOfBoundsException e) {
-                    throw new IllegalArgumentException(csv + ":" + number + ":1: not a row of numbers as the header says");
+                    throw new IllegalArgumentException(PanelMsg.DIAGRAM_TRACE_BAD_ROW.text(csv + ":" + number + ":1"));
                 }
                 rows.add(row);
             }
         }
         if (rows.size() < 2) {
-            throw new IllegalArgumentException(csv + ":1:1: the trace has fewer than two ticks");
+            throw new IllegalArgumentException(PanelMsg.DIAGRAM_TRACE_TOO_SHORT.text(csv + ":1:1"));
         }
         double dt = Math.round((rows.get(1)[0] - rows.get(0)[0]) * 1e6) / 1e6;
         if (!(dt > 0)) {
-            throw new IllegalArgumentException(csv + ":3:1: the time does not grow from one row to the next");
+            throw new IllegalArgumentException(PanelMsg.DIAGRAM_TRACE_TIME.text(csv + ":3:1"));
         }
         return replay(csv, p, dt, rows, ids);
     }

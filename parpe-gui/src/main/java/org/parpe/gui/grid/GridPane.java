@@ -28,6 +28,7 @@ import org.parpe.gui.editor.AfterChange;
 import org.parpe.gui.editor.ParslEditor;
 import org.parpe.gui.grid.Fill.Selection;
 import org.parpe.gui.grid.TableEdits.At;
+import org.parpe.gui.text.PanelMsg;
 
 /**
  * The grid editor beside the text: when the script holds a gait table, the table is shown as a
@@ -78,18 +79,18 @@ public final class GridPane implements GridView.Actions {
         // One row whatever the width: the buttons that do not fit go behind a chevron (»), they never wrap.
         bar = new org.parpe.gui.panels.OverflowBar(box).control();
         bar.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
-        new Label(bar, SWT.NONE).setText("Gait table:");
+        new Label(bar, SWT.NONE).setText(PanelMsg.GRID_GAIT_TABLE.text());
         choice = new Combo(bar, SWT.READ_ONLY);
         choice.addListener(SWT.Selection, e -> {
             chosen = choice.getText();
             refresh();
         });
-        command(bar, "+Row", "Add a copy of the focused row below it", this::insertRow);
-        command(bar, "\u2212Rows", "Remove the selected rows", this::deleteRows);
-        command(bar, "+Col", "Add a copy of the last selected module column after it", this::insertColumn);
-        command(bar, "\u2212Cols", "Remove the selected module columns", this::deleteColumns);
-        command(bar, "Wave\u2026", "Fill the selection with a travelling wave", this::askWave);
-        command(bar, "Paste", "Paste cells copied from a spreadsheet at the selection", this::paste);
+        command(bar, PanelMsg.GRID_ADD_ROW.text(), PanelMsg.GRID_ADD_ROW_TIP.text(), this::insertRow);
+        command(bar, PanelMsg.GRID_REMOVE_ROWS.text(), PanelMsg.GRID_REMOVE_ROWS_TIP.text(), this::deleteRows);
+        command(bar, PanelMsg.GRID_ADD_COLUMN.text(), PanelMsg.GRID_ADD_COLUMN_TIP.text(), this::insertColumn);
+        command(bar, PanelMsg.GRID_REMOVE_COLUMNS.text(), PanelMsg.GRID_REMOVE_COLUMNS_TIP.text(), this::deleteColumns);
+        command(bar, PanelMsg.GRID_WAVE.text(), PanelMsg.GRID_WAVE_TIP.text(), this::askWave);
+        command(bar, PanelMsg.GRID_PASTE.text(), PanelMsg.GRID_PASTE_TIP.text(), this::paste);
         grid = new GridView(box, this);
         status = new Label(box, SWT.WRAP);
         status.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
@@ -144,15 +145,14 @@ public final class GridPane implements GridView.Actions {
             for (Button b : commands) {
                 b.setEnabled(false);
             }
-            status.setText(table.name() + ": " + table.rows().size() + " rows \u00d7 " + columns + " columns, more than the "
-                    + MAX_COLUMNS + " the grid shows: edit this table in the text.");
+            status.setText(PanelMsg.GRID_TOO_WIDE.text(table.name(), table.rows().size(), columns, MAX_COLUMNS));
             box.layout();
             return;
         }
         List<String> headers = new ArrayList<>();
         headers.add(TIMES);
         for (int c = 0; c < columns; c++) {
-            headers.add(width == 1 && modules != null ? "all" : modules != null && c < modules.size()
+            headers.add(width == 1 && modules != null ? PanelMsg.GRID_ALL.text() : modules != null && c < modules.size()
                     ? Integer.toString(modules.get(c)) : "#" + (c + 1));
         }
         List<List<String>> rows = new ArrayList<>();
@@ -160,7 +160,7 @@ public final class GridPane implements GridView.Actions {
         // Without times="…" every row gets an equal share of the period: show it in seconds (lesson 2's
         // 0.5 s), not a bare "1" that reads as one second.
         Double share = times == null ? Modules.secondsPerRow(program, table.name(), table.rows().size()) : null;
-        String equal = share == null ? "equal" : org.parpe.core.lang.Numbers.format(share) + " s";
+        String equal = share == null ? PanelMsg.GRID_EQUAL.text() : org.parpe.core.lang.Numbers.format(share) + " s";
         for (int r = 0; r < table.rows().size(); r++) {
             List<String> row = new ArrayList<>();
             row.add(times == null ? equal : r < times.size() ? times.get(r) : "");
@@ -186,16 +186,16 @@ public final class GridPane implements GridView.Actions {
 
     private String describe(int columns, boolean used, int bad, List<String> others) {
         if (stale) {
-            return "The text is not well-formed XML just now: the grid shows the table as it last was.";
+            return PanelMsg.GRID_STALE.text();
         }
         if (table.readOnly() != null) {
-            return "Read-only: " + table.readOnly() + ".";
+            return PanelMsg.GRID_READ_ONLY.text(table.readOnly());
         }
-        StringBuilder s = new StringBuilder(table.name() + ": " + table.rows().size() + " rows \u00d7 " + columns
-                + (columns == 1 ? " column" : " columns") + (!used ? " (not used by a behavior: columns are entry positions)" : " (headers: module IDs)")
-                + (table.times() == null ? "; no times=\"\u2026\": the rows share the period equally" : ""));
+        StringBuilder s = new StringBuilder((columns == 1 ? PanelMsg.GRID_SIZE_ONE_COLUMN : PanelMsg.GRID_SIZE).text(table.name(),
+                table.rows().size(), columns, (used ? PanelMsg.GRID_HEADERS_MODULES : PanelMsg.GRID_NOT_USED).text())
+                + (table.times() == null ? PanelMsg.GRID_NO_TIMES.text() : ""));
         if (bad > 0) {
-            s.append("\n").append(bad).append(bad == 1 ? " cell has a problem" : " cells have problems").append(" (tinted; point at one to read it)");
+            s.append("\n").append((bad == 1 ? PanelMsg.GRID_ONE_BAD_CELL : PanelMsg.GRID_BAD_CELLS).text(bad));
         }
         for (String o : others.subList(0, Math.min(3, others.size()))) {
             s.append("\n").append(o);
@@ -354,11 +354,10 @@ public final class GridPane implements GridView.Actions {
     private void note(int dropped, int outside) {
         String s = status.getText();
         if (dropped > 0) {
-            s += "\n" + dropped + (dropped == 1 ? " entry was" : " entries were") + " left out: an entry cannot hold"
-                    + " ',' or ';' outside parentheses (write decimals with a point: 1.5).";
+            s += "\n" + (dropped == 1 ? PanelMsg.GRID_ONE_DROPPED : PanelMsg.GRID_DROPPED).text(dropped);
         }
         if (outside > 0) {
-            s += "\n" + outside + " pasted cell(s) fell outside the table and were left out.";
+            s += "\n" + PanelMsg.GRID_OUTSIDE.text(outside);
         }
         status.setText(s);
         box.layout();
@@ -371,7 +370,7 @@ public final class GridPane implements GridView.Actions {
         try {
             editor.document().replace(ch.offset(), ch.length(), ch.text());
         } catch (BadLocationException e) {
-            status.setText("The text changed meanwhile; try again (" + e.getMessage() + ").");
+            status.setText(PanelMsg.DIAGRAM_CHANGED_MEANWHILE.text(e.getMessage()));
             return;
         }
         refresh();
@@ -400,7 +399,7 @@ public final class GridPane implements GridView.Actions {
             return;
         }
         Selection s = waveTarget();
-        WaveDialog d = new WaveDialog(box.getShell(), s.rows() + " rows \u00d7 " + s.columns() + " modules", amplitude, phaseStep);
+        WaveDialog d = new WaveDialog(box.getShell(), PanelMsg.GRID_WAVE_TARGET.text(s.rows(), s.columns()), amplitude, phaseStep);
         if (d.open() == Window.OK) {
             amplitude = d.amplitude();
             phaseStep = d.phaseStep();

@@ -15,6 +15,7 @@ import org.eclipse.swt.widgets.TableColumn;
 import org.eclipse.swt.widgets.TableItem;
 import org.eclipse.swt.widgets.Text;
 import org.parpe.gui.grid.Fill.Selection;
+import org.parpe.gui.text.PanelMsg;
 
 /**
  * The grid widget: an SWT table whose first column numbers the rows, then one column per grid
@@ -165,7 +166,7 @@ final class GridView {
         GC gc = new GC(table);
         try {
             int[] w = new int[headers.size() + 1];
-            w[0] = gc.textExtent("Step").x;
+            w[0] = gc.textExtent(PanelMsg.GRID_STEP.text()).x;
             for (int c = 0; c < headers.size(); c++) {
                 w[c + 1] = gc.textExtent(headers.get(c)).x;
             }
@@ -194,13 +195,13 @@ final class GridView {
         while (table.getColumnCount() < headers.size() + 2) {
             new TableColumn(table, SWT.RIGHT);
         }
-        table.getColumn(0).setText("Step");
-        table.getColumn(0).setToolTipText("Row: the time step");
+        table.getColumn(0).setText(PanelMsg.GRID_STEP.text());
+        table.getColumn(0).setToolTipText(PanelMsg.GRID_STEP_TIP.text());
         for (int i = 0; i < headers.size(); i++) {
             String h = headers.get(i);
             table.getColumn(i + 1).setText(h);
-            table.getColumn(i + 1).setToolTipText(i == 0 ? "times: the row's share of the period (relative duration)"
-                    : h.chars().allMatch(Character::isDigit) ? "module " + h : null);
+            table.getColumn(i + 1).setToolTipText(i == 0 ? PanelMsg.GRID_TIMES_TIP.text()
+                    : h.chars().allMatch(Character::isDigit) ? PanelMsg.POSE_MODULE.text(h) : null);
         }
         TableColumn filler = table.getColumn(headers.size() + 1);
         filler.setText("");

@@ -9,6 +9,7 @@ import org.parpe.core.xml.SourceText;
 import org.parpe.core.xml.XElement;
 import org.parpe.core.xml.XText;
 import org.parpe.core.xml.XmlReader;
+import org.parpe.gui.text.PanelMsg;
 
 /**
  * Finds the gait tables of a script's text with the core's XML reader, which places every
@@ -55,9 +56,9 @@ public final class TableText {
         int end = offset(body.posAt(body.value().length()));
         String readOnly = null;
         if (e.texts().size() > 1 || !e.children().isEmpty()) {
-            readOnly = "the rows of '" + e.name() + "' contain a comment or an element; edit them in the text";
+            readOnly = PanelMsg.GRID_ROWS_COMMENT.text(e.name());
         } else if (!Entities.decode(text.substring(start, end)).equals(body.value())) {
-            readOnly = "the rows of '" + e.name() + "' contain CDATA; edit them in the text";
+            readOnly = PanelMsg.GRID_ROWS_CDATA.text(e.name());
         }
         List<List<Cell>> rows = new ArrayList<>();
         for (int[] line : split(start, end, '\n')) {

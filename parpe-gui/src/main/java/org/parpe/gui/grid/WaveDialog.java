@@ -10,6 +10,7 @@ import org.eclipse.swt.widgets.Control;
 import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.Shell;
 import org.eclipse.swt.widgets.Text;
+import org.parpe.gui.text.PanelMsg;
 
 /** Asks for the amplitude and the phase step of a travelling wave; says which cells it will fill. */
 final class WaveDialog extends Dialog {
@@ -30,7 +31,7 @@ final class WaveDialog extends Dialog {
     @Override
     protected void configureShell(Shell shell) {
         super.configureShell(shell);
-        shell.setText("Fill with a travelling wave");
+        shell.setText(PanelMsg.WAVE_TITLE.text());
     }
 
     @Override
@@ -38,15 +39,12 @@ final class WaveDialog extends Dialog {
         Composite c = (Composite) super.createDialogArea(parent);
         c.setLayout(new GridLayout(2, false));
         Label about = new Label(c, SWT.WRAP);
-        about.setText("Fills " + target + " with a wave: every module swings from +A to \u2212A degrees and back once"
-                + " over the rows, each module a step \u03c6 of a swing later than the one before it. \u03c6 = 1/6 makes"
-                + " a wave 6 modules long; \u22121/6 the same wave going the other way. (For the curious:"
-                + " A\u00b7sin(2\u03c0(r/rows + c\u00b7\u03c6)), rounded to 0.1\u00b0.)");
+        about.setText(PanelMsg.WAVE_ABOUT.text(target));
         GridData wide = new GridData(SWT.FILL, SWT.TOP, true, false, 2, 1);
         wide.widthHint = 380;
         about.setLayoutData(wide);
-        amplitudeText = field(c, "Amplitude A (degrees):", amplitude);
-        phaseText = field(c, "Step \u03c6 from module to module (a fraction of a swing, e.g. \u22121/6):", phaseStep);
+        amplitudeText = field(c, PanelMsg.WAVE_AMPLITUDE.text(), amplitude);
+        phaseText = field(c, PanelMsg.WAVE_PHASE_STEP.text(), phaseStep);
         error = new Label(c, SWT.NONE);
         error.setLayoutData(new GridData(SWT.FILL, SWT.TOP, true, false, 2, 1));
         error.setForeground(parent.getDisplay().getSystemColor(SWT.COLOR_DARK_RED));
@@ -66,8 +64,8 @@ final class WaveDialog extends Dialog {
         Double a = number(amplitudeText.getText());
         Double p = number(phaseText.getText());
         if (a == null || p == null) {
-            error.setText((a == null ? "amplitude" : "phase step") + " must be a number, got '"
-                    + (a == null ? amplitudeText : phaseText).getText().trim() + "'");
+            error.setText((a == null ? PanelMsg.WAVE_BAD_AMPLITUDE : PanelMsg.WAVE_BAD_PHASE_STEP)
+                    .text((a == null ? amplitudeText : phaseText).getText().trim()));
             getButton(IDialogConstants.OK_ID).getParent().layout();
             return;
         }

@@ -17,6 +17,7 @@ import org.parpe.core.model.MainEntry;
 import org.parpe.core.model.Parameter;
 import org.parpe.core.model.Program;
 import org.parpe.core.model.StateDef;
+import org.parpe.gui.text.PanelMsg;
 
 /**
  * The outline of the last program that loaded: robot groups, parameters, controls, states,
@@ -57,7 +58,7 @@ public final class OutlineView {
         }
         entries.forEach((section, n) -> {
             if (n > SECTION_LIMIT) {
-                new TreeItem(section, SWT.NONE).setText("\u2026 and " + (n - SECTION_LIMIT) + " more");
+                new TreeItem(section, SWT.NONE).setText(PanelMsg.OUTLINE_MORE.text(n - SECTION_LIMIT));
             }
         });
         entries.clear();
@@ -65,41 +66,41 @@ public final class OutlineView {
     }
 
     private void fill(Program p) {
-        TreeItem robot = section("Robot (" + p.moduleIds().length + " modules)", p.robot().pos());
+        TreeItem robot = section(PanelMsg.OUTLINE_ROBOT.text(p.moduleIds().length), p.robot().pos());
         for (Group g : p.robot().groups()) {
             if (!g.implicit()) {
                 node(robot, g.name() + "  [" + g.size() + "]", g.pos());
             }
         }
         if (!p.parameters().isEmpty()) {
-            TreeItem s = section("Parameters", null);
+            TreeItem s = section(PanelMsg.OUTLINE_PARAMETERS.text(), null);
             for (Parameter x : p.parameters()) {
                 node(s, x.name() + " = " + org.parpe.core.lang.Numbers.format(p.parameterValues().getOrDefault(x.name(), x.value())), x.pos());
             }
         }
         if (!p.controls().isEmpty()) {
-            TreeItem s = section("Controls", null);
+            TreeItem s = section(PanelMsg.OUTLINE_CONTROLS.text(), null);
             for (Control c : p.controls()) {
                 node(s, c.name() + "  (" + c.type().word() + ")", c.pos());
             }
         }
-        TreeItem states = section("States", null);
+        TreeItem states = section(PanelMsg.OUTLINE_STATES.text(), null);
         for (StateDef st : p.states()) {
             node(states, st.name(), st.pos());
         }
-        TreeItem automata = section("Automata", null);
+        TreeItem automata = section(PanelMsg.OUTLINE_AUTOMATA.text(), null);
         for (Automaton a : p.automata()) {
-            node(automata, a.name() + (a.table() ? "  (gait table, " : "  (") + a.states().size() + " states)", a.pos());
+            node(automata, (a.table() ? PanelMsg.OUTLINE_GAIT_TABLE : PanelMsg.OUTLINE_AUTOMATON).text(a.name(), a.states().size()), a.pos());
         }
-        TreeItem behaviors = section("Behaviors", null);
+        TreeItem behaviors = section(PanelMsg.OUTLINE_BEHAVIORS.text(), null);
         for (Behavior b : p.behaviors()) {
             TreeItem bi = node(behaviors, b.name(), b.pos());
             for (Instance in : b.instances()) {
-                node(bi, in.name() + " on " + in.group(), in.pos());
+                node(bi, PanelMsg.OUTLINE_INSTANCE.text(in.name(), in.group()), in.pos());
             }
         }
         p.mainDef().ifPresent(m -> {
-            TreeItem main = section("Main" + (m.cycles() == org.parpe.core.model.MainDef.FOREVER ? " (forever)" : ""), m.pos());
+            TreeItem main = section((m.cycles() == org.parpe.core.model.MainDef.FOREVER ? PanelMsg.OUTLINE_MAIN_FOREVER : PanelMsg.OUTLINE_MAIN).text(), m.pos());
             for (MainEntry e : m.entries()) {
                 node(main, e.behavior(), e.pos());
             }

@@ -3,6 +3,7 @@ package org.parpe.gui.panels;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
+import org.parpe.gui.text.PanelMsg;
 import org.parpe.sim.SimTarget;
 import org.parpe.sim.config.RobotConfigs;
 
@@ -12,8 +13,8 @@ import org.parpe.sim.config.RobotConfigs;
  * Starts on the robot the IDE's run uses. The Sweep dialog and File → Export Robot… show it.
  */
 public final class RobotChoice {
-    private static final String AUTO_TEXT = SimTarget.AUTO + " (from the script)";
-    private static final String BROWSE = "Configuration file\u2026";
+    private final String autoText = PanelMsg.ROBOT_CHOICE_AUTO.text(SimTarget.AUTO);
+    private final String browse = PanelMsg.ROBOT_CHOICE_BROWSE.text();
 
     private final Combo combo;
     private String file;
@@ -21,16 +22,16 @@ public final class RobotChoice {
 
     public RobotChoice(Composite parent, String current) {
         combo = new Combo(parent, SWT.READ_ONLY);
-        combo.add(AUTO_TEXT);
+        combo.add(autoText);
         RobotConfigs.generatorNames().forEach(combo::add);
-        combo.add(BROWSE);
+        combo.add(browse);
         if (current != null && !SimTarget.AUTO.equals(current) && combo.indexOf(current) < 0) {
             useFile(current);
         }
         int at = current == null ? -1 : combo.indexOf(current);
         combo.select(at >= 0 ? at : 0);
         previous = combo.getText();
-        combo.setToolTipText("The simulated robot; 'auto' picks a standard robot that fits the script, as a run does");
+        combo.setToolTipText(PanelMsg.ROBOT_CHOICE_TIP.text());
         combo.addListener(SWT.Selection, e -> chosen());
     }
 
@@ -39,11 +40,11 @@ public final class RobotChoice {
     }
 
     private void chosen() {
-        if (!BROWSE.equals(combo.getText())) {
+        if (!browse.equals(combo.getText())) {
             previous = combo.getText();
             return;
         }
-        java.nio.file.Path chosen = FileDialogs.ask(combo.getShell(), SWT.OPEN, "Robot configuration file", "*.xml", null, null);
+        java.nio.file.Path chosen = FileDialogs.ask(combo.getShell(), SWT.OPEN, PanelMsg.ROBOT_CHOICE_TITLE.text(), "*.xml", null, null);
         if (chosen == null) {
             combo.select(combo.indexOf(previous));
             return;
@@ -66,7 +67,7 @@ public final class RobotChoice {
     /** {@code auto}, a generator name, or a configuration file path. */
     public String robot() {
         String t = combo.getText();
-        return AUTO_TEXT.equals(t) || BROWSE.equals(t) ? SimTarget.AUTO : t;
+        return autoText.equals(t) || browse.equals(t) ? SimTarget.AUTO : t;
     }
 
     /** Selects a generator by name (tests, automation). */

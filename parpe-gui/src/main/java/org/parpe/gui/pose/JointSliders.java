@@ -9,6 +9,7 @@ import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Control;
 import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.Scale;
+import org.parpe.gui.text.PanelMsg;
 
 /**
  * One slider per module of the group being posed (−90…90°, whole degrees on the slider, the
@@ -54,13 +55,13 @@ final class JointSliders {
         values = new Label[ids.length];
         for (int k = 0; k < ids.length; k++) {
             Label name = new Label(rows, SWT.NONE);
-            name.setText("module " + ids[k]);
+            name.setText(PanelMsg.POSE_MODULE.text(ids[k]));
             Scale s = new Scale(rows, SWT.HORIZONTAL);
             s.setMinimum(0);
             s.setMaximum(180);
             s.setPageIncrement(10);
             s.setIncrement(1);
-            s.setToolTipText("Joint angle of module " + ids[k] + ", -90 to 90 degrees");
+            s.setToolTipText(PanelMsg.POSE_JOINT_TIP.text(ids[k]));
             s.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
             int pos = k;
             s.addListener(SWT.Selection, e -> moved(pos));

@@ -2,6 +2,7 @@ package org.parpe.gui.pose;
 
 import java.util.ArrayList;
 import java.util.List;
+import org.parpe.gui.text.PanelMsg;
 import org.parpe.serial.record.PoseRecording;
 
 /**
@@ -129,17 +130,15 @@ public final class PoseList {
 
     private Pose check(double[] angles, double interval) {
         if (angles.length != modules.length) {
-            throw new IllegalArgumentException("a pose of group '" + group + "' needs " + modules.length
-                    + " angles, got " + angles.length);
+            throw new IllegalArgumentException(PanelMsg.POSE_ANGLE_COUNT.text(group, modules.length, angles.length));
         }
         for (double a : angles) {
             if (!(a >= -90 && a <= 90)) {
-                throw new IllegalArgumentException("a joint angle must be in -90..90 degrees, got " + a);
+                throw new IllegalArgumentException(PanelMsg.POSE_ANGLE_RANGE.text(a));
             }
         }
         if (!(interval >= MIN_INTERVAL && interval <= MAX_INTERVAL)) {
-            throw new IllegalArgumentException("the time since the previous pose must be in " + MIN_INTERVAL + ".."
-                    + (int) MAX_INTERVAL + " s, got " + interval);
+            throw new IllegalArgumentException(PanelMsg.POSE_INTERVAL_RANGE.text(MIN_INTERVAL, (int) MAX_INTERVAL, interval));
         }
         return new Pose(angles, interval);
     }

@@ -20,6 +20,7 @@ import org.parpe.core.load.LoadResult;
 import org.parpe.core.model.Program;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.gui.run.RunOn;
+import org.parpe.gui.text.PanelMsg;
 import org.parpe.serial.record.RecordingWriter;
 
 /**
@@ -44,30 +45,30 @@ final class PoseOutput {
         Composite row = new Composite(parent, SWT.NONE);
         row.setLayout(new GridLayout(7, false));
         row.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
-        new Label(row, SWT.NONE).setText("Play at");
+        new Label(row, SWT.NONE).setText(PanelMsg.POSE_PLAY_AT.text());
         rate = new Combo(row, SWT.READ_ONLY);
         for (double r : RATES) {
             rate.add("\u00d7" + (r == Math.rint(r) ? Integer.toString((int) r) : Double.toString(r)));
         }
         rate.select(1);
-        rate.setToolTipText("How fast to play the poses compared with their recorded times");
+        rate.setToolTipText(PanelMsg.POSE_RATE_TIP.text());
         loop = new Button(row, SWT.CHECK);
-        loop.setText("Loop");
-        loop.setToolTipText("Play the poses over and over until Stop; otherwise once");
-        new Label(row, SWT.NONE).setText("on");
+        loop.setText(PanelMsg.POSE_LOOP.text());
+        loop.setToolTipText(PanelMsg.POSE_LOOP_TIP.text());
+        new Label(row, SWT.NONE).setText(PanelMsg.POSE_PLAY_ON.text());
         target = new Combo(row, SWT.READ_ONLY);
         for (RunOn t : RunOn.values()) {
             target.add(t.label());
         }
         target.select(0);
-        button(row, "Play", "Play the poses as PARSL runs them (interpolated in joint space)", this::play);
-        button(row, "Stop", "Stop the playback", host::stop);
+        button(row, PanelMsg.POSE_PLAY.text(), PanelMsg.POSE_PLAY_TIP.text(), this::play);
+        button(row, PanelMsg.POSE_STOP.text(), PanelMsg.POSE_STOP_TIP.text(), host::stop);
         row = new Composite(parent, SWT.NONE);
         row.setLayout(new GridLayout(2, false));
-        button(row, "Save recording\u2026", "Save the poses as a PARSL recording (a gait table and a behavior that plays it)",
+        button(row, PanelMsg.POSE_SAVE_RECORDING.text(), PanelMsg.POSE_SAVE_RECORDING_TIP.text(),
                 this::saveAs);
-        button(row, "Use on another group\u2026",
-                "Write the poses into this script for other groups, with a period, phase and offset", this::useOnGroups);
+        button(row, PanelMsg.POSE_USE_ON_GROUP.text(),
+                PanelMsg.POSE_USE_ON_GROUP_TIP.text(), this::useOnGroups);
     }
 
     private static void button(Composite parent, String text, String tip, Runnable action) {
@@ -92,7 +93,7 @@ final class PoseOutput {
     private PoseList poses() {
         PoseList l = panel.poses();
         if (l == null || l.size() == 0) {
-            host.status("Capture at least one pose first.");
+            host.status(PanelMsg.POSE_CAPTURE_FIRST.text());
             return null;
         }
         return l;
@@ -106,20 +107,20 @@ final class PoseOutput {
             return false;
         }
         if (host.running()) {
-            host.status("A run is going on: stop it first.");
+            host.status(PanelMsg.POSE_RUN_GOING_ON.text());
             return false;
         }
         double r = RATES[Math.max(0, rate.getSelectionIndex())];
         String text = RecordingWriter.toParsl(l.toRecording(), "playback in the Pose panel", r, loop.getSelection());
         LoadResult loaded = host.load(host.scriptPath().resolveSibling("pose-playback.xml"), text);
         if (loaded.program() == null) {
-            host.status("Cannot play the poses: " + loaded.errors().stream().map(Diagnostic::message).findFirst().orElse("?"));
+            host.status(PanelMsg.POSE_CANNOT_PLAY.text(loaded.errors().stream().map(Diagnostic::message).findFirst().orElse("?")));
             return false;
         }
         RunOn t = RunOn.values()[Math.max(0, target.getSelectionIndex())];
         host.play(loaded.program(), t, host.robotSpec(open), outcome -> {
-            host.status("Playback " + (outcome.status() == RunOutcome.Status.ERROR ? "failed: " + outcome.message()
-                    : "ended at t = " + String.format(java.util.Locale.ROOT, "%.2f s", outcome.time())));
+            host.status(outcome.status() == RunOutcome.Status.ERROR ? PanelMsg.POSE_PLAYBACK_FAILED.text(outcome.message())
+                    : PanelMsg.POSE_PLAYBACK_ENDED.text(String.format(java.util.Locale.ROOT, "%.2f", outcome.time())));
             if (onEnd != null) {
                 onEnd.accept(outcome);
             }
@@ -135,7 +136,7 @@ final class PoseOutput {
         if (poses() == null) {
             return;
         }
-        Path chosen = org.parpe.gui.panels.FileDialogs.ask(host.shell(), SWT.SAVE, "Save the poses as a PARSL recording", "*.xml",
+        Path chosen = org.parpe.gui.panels.FileDialogs.ask(host.shell(), SWT.SAVE, PanelMsg.POSE_SAVE_TITLE.text(), "*.xml",
                 panel.poses().group() + "-poses.xml", null);
         if (chosen != null) {
             save(chosen);
@@ -154,8 +155,7 @@ final class PoseOutput {
         for (Path open : host.openFiles()) {
             if (OutputPlan.sameFile(open, file)) {
                 // replacing it on disk would leave the editor with the old text, not even marked modified
-                host.status("Cannot save the poses over " + file.getFileName() + ": it is the script open in the editor."
-                        + " Choose another name, or use \"Use on another group\u2026\" to put the poses into the script.");
+                host.status(PanelMsg.POSE_SAVE_OVER_SCRIPT.text(file.getFileName(), PanelMsg.POSE_USE_ON_GROUP.text()));
                 return false;
             }
         }
@@ -164,11 +164,11 @@ final class PoseOutput {
         try {
             AtomicFiles.write(file, text);
         } catch (IOException | RuntimeException e) {
-            host.status("Cannot save " + file + ": " + e.getMessage());
+            host.status(PanelMsg.POSE_CANNOT_SAVE.text(file, e.getMessage()));
             return false;
         }
         panel.markKept(l);
-        host.status("Saved " + l.size() + " poses of group " + l.group() + " to " + file + ".");
+        host.status(PanelMsg.POSE_SAVED.text(l.size(), l.group(), file));
         return true;
     }
 
@@ -190,7 +190,7 @@ final class PoseOutput {
      */
     ScriptInsert.Result useOnGroups(ScriptInsert.Request request) {
         Program open = panel.program();
-        String problem = open == null ? "The script has not loaded yet." : ScriptInsert.check(open, request);
+        String problem = open == null ? PanelMsg.POSE_NOT_LOADED.text() : ScriptInsert.check(open, request);
         if (problem != null) {
             host.status(problem);
             return null;
@@ -212,7 +212,7 @@ final class PoseOutput {
         try {
             doc.replace(start, endBefore - start, after.substring(start, endAfter));
         } catch (BadLocationException e) {
-            host.status("Cannot change the script: " + e.getMessage());
+            host.status(PanelMsg.POSE_CANNOT_CHANGE.text(e.getMessage()));
             return null;
         }
         panel.markKept(panel.poses());

@@ -19,6 +19,7 @@ import org.eclipse.swt.widgets.Control;
 import org.eclipse.swt.widgets.Label;
 import org.parpe.core.model.Group;
 import org.parpe.core.model.Program;
+import org.parpe.gui.text.PanelMsg;
 
 /**
  * The Pose panel (posable programming, the paper's Level I): choose a group, or Ctrl+click
@@ -61,7 +62,7 @@ public final class PosePanel {
     private static final class Untitled {
         @Override
         public String toString() {
-            return "the untitled script";
+            return PanelMsg.POSE_UNTITLED.text();
         }
     }
 
@@ -73,25 +74,24 @@ public final class PosePanel {
         Composite top = new Composite(box, SWT.NONE);
         top.setLayout(new GridLayout(6, false));
         top.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
-        new Label(top, SWT.NONE).setText("Group:");
+        new Label(top, SWT.NONE).setText(PanelMsg.POSE_GROUP.text());
         groups = new Combo(top, SWT.READ_ONLY);
-        groups.setToolTipText("The group to pose; or Ctrl+click modules in the 3D view to pose just those");
+        groups.setToolTipText(PanelMsg.POSE_GROUP_TIP.text());
         groups.setLayoutData(new GridData(110, SWT.DEFAULT));
         groups.addListener(SWT.Selection, e -> chooseGroup(groups.getText()));
-        new Label(top, SWT.NONE).setText(" with");
+        new Label(top, SWT.NONE).setText(PanelMsg.POSE_WITH.text());
         source = new Combo(top, SWT.READ_ONLY);
-        source.setItems("Simulator", "Robot (limp)");
-        source.setToolTipText("Simulator: pose with the sliders or drag a module in the 3D view. "
-                + "Robot (limp): its servos go limp, move it by hand (connect it in Run > Hardware… first)");
+        source.setItems(PanelMsg.POSE_SIMULATOR.text(), PanelMsg.POSE_ROBOT_LIMP.text());
+        source.setToolTipText(PanelMsg.POSE_SOURCE_TIP.text());
         source.select(0);
         source.addListener(SWT.Selection, e -> sourceChanged());
         Button capture = new Button(top, SWT.PUSH);
-        capture.setText("&Capture");
-        capture.setToolTipText("Add the current pose to the list (or press Space while the panel is shown)");
+        capture.setText(PanelMsg.POSE_CAPTURE.text());
+        capture.setToolTipText(PanelMsg.POSE_CAPTURE_TIP.text());
         capture.addListener(SWT.Selection, e -> capture());
         Button fromScript = new Button(top, SWT.PUSH);
-        fromScript.setText("From script");
-        fromScript.setToolTipText("Add the poses of the gait table the script plays on this group (a saved recording) to the list");
+        fromScript.setText(PanelMsg.POSE_FROM_SCRIPT.text());
+        fromScript.setToolTipText(PanelMsg.POSE_FROM_SCRIPT_TIP.text());
         fromScript.addListener(SWT.Selection, e -> loadFromScript());
 
         SashForm middle = new SashForm(box, SWT.HORIZONTAL);
@@ -106,11 +106,11 @@ public final class PosePanel {
         sliders = new JointSliders(right, this::jointChanged);
         sliders.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true, 2, 1));
         follow = new Button(right, SWT.CHECK);
-        follow.setText("Real robot follows");
-        follow.setToolTipText("Sync mode: the robot connected in Run > Hardware… moves with the sliders");
+        follow.setText(PanelMsg.POSE_FOLLOW.text());
+        follow.setToolTipText(PanelMsg.POSE_FOLLOW_TIP.text());
         timed = new Button(right, SWT.CHECK);
-        timed.setText("Real time");
-        timed.setToolTipText("Each new pose gets the time since the previous capture instead of the time typed under the list");
+        timed.setText(PanelMsg.POSE_REAL_TIME.text());
+        timed.setToolTipText(PanelMsg.POSE_REAL_TIME_TIP.text());
         middle.setWeights(55, 45);
         output = new PoseOutput(box, host, this);
         sim = new PoseSim(msg -> runOnUi(() -> say(msg)));
@@ -207,7 +207,7 @@ public final class PosePanel {
             current = null;
             table.show(null);
             sliders.show(new int[0], new double[0]);
-            say("Ctrl+click modules in the 3D view to pose them.");
+            say(PanelMsg.POSE_CTRL_CLICK.text());
             return;
         }
         current = lists.computeIfAbsent(key, k -> new PoseList(name, modules));
@@ -227,7 +227,7 @@ public final class PosePanel {
         PoseList was = lists.get(PICKED + picked);
         if (was != null && was.size() > 0) {
             // Its poses have an angle per picked module: another set of modules would leave them behind.
-            say("The picked modules " + picked + " have " + was.size() + " poses: save or delete them before picking others.");
+            say(PanelMsg.POSE_PICKED_HAVE_POSES.text(picked, was.size()));
             return;
         }
         if (!picked.remove(id)) {
@@ -235,7 +235,7 @@ public final class PosePanel {
         }
         groups.select(groups.indexOf(PICKED));
         chooseGroup(PICKED);
-        say("Picked modules " + picked + ".");
+        say(PanelMsg.POSE_PICKED.text(picked));
     }
 
     private void jointChanged(int module, double degrees) {
@@ -250,7 +250,7 @@ public final class PosePanel {
 
     private void sourceChanged() {
         if (source.getSelectionIndex() == 1 && host.hardware() == null) {
-            say("Connect the robot in Run > Hardware\u2026 first (keep that window open while posing).");
+            say(PanelMsg.POSE_CONNECT_FIRST.text());
             source.select(0);
             return;
         }
@@ -261,27 +261,27 @@ public final class PosePanel {
         PoseHardware hw = host.hardware();
         if (hw != null && current != null) {
             hw.limp(current.modules(), on);
-            say(on ? "The group is limp: move the robot by hand, then Capture (or Space)." : "The robot holds its pose.");
+            say(on ? PanelMsg.POSE_LIMP.text() : PanelMsg.POSE_HOLDS.text());
         }
     }
 
     /** Adds the current pose (sliders, or the robot's angles when posing by hand) to the list; false if none. */
     boolean capture() {
         if (current == null) {
-            say("Choose a group to pose first.");
+            say(PanelMsg.POSE_CHOOSE_GROUP.text());
             return false;
         }
         double[] angles = sliders.angles();
         if (source.getSelectionIndex() == 1) {
             PoseHardware hw = host.hardware();
             if (hw == null) {
-                say("The robot is no longer connected (Run > Hardware\u2026).");
+                say(PanelMsg.POSE_NO_LONGER_CONNECTED.text());
                 return false;
             }
             try {
                 angles = hw.angles(current.modules());
             } catch (IllegalStateException e) {
-                say("Cannot capture: " + e.getMessage());
+                say(PanelMsg.POSE_CANNOT_CAPTURE.text(e.getMessage()));
                 return false;
             }
             for (int k = 0; k < angles.length; k++) {
@@ -301,7 +301,7 @@ public final class PosePanel {
         lastCapture = now;
         int i = current.add(angles, interval);
         table.select(i);
-        say("Pose " + (i + 1) + " captured.");
+        say(PanelMsg.POSE_CAPTURED.text(i + 1));
         return true;
     }
 
@@ -311,7 +311,7 @@ public final class PosePanel {
      */
     public boolean loadFromScript() {
         if (program == null) {
-            say("The script has not loaded yet.");
+            say(PanelMsg.POSE_NOT_LOADED.text());
             return false;
         }
         Optional<PoseList> found = PoseImport.read(program, current == null ? null : current.group());
@@ -319,7 +319,7 @@ public final class PosePanel {
             found = PoseImport.read(program, null);
         }
         if (found.isEmpty()) {
-            say("The script plays no gait table of plain numbers on a group.");
+            say(PanelMsg.POSE_NO_GAIT_TABLE.text());
             return false;
         }
         PoseList in = found.get();
@@ -335,7 +335,7 @@ public final class PosePanel {
             markKept(current); // they are in the script already
         }
         table.select(first);
-        say(in.size() + " poses of group " + in.group() + " taken from the script.");
+        say(PanelMsg.POSE_TAKEN_FROM_SCRIPT.text(in.size(), in.group()));
         return true;
     }
 
@@ -401,8 +401,8 @@ public final class PosePanel {
         byDocument.forEach((doc, ls) -> {
             for (PoseList l : ls.values()) {
                 if (l.size() > 0 && !l.poses().equals(kept.get(l))) {
-                    out.add(l.size() + " poses of " + l.group() + " in "
-                            + (doc instanceof java.nio.file.Path p ? p.getFileName().toString() : doc.toString()));
+                    out.add(PanelMsg.POSE_UNSAVED_LIST.text(l.size(), l.group(),
+                            doc instanceof java.nio.file.Path p ? p.getFileName().toString() : doc.toString()));
                 }
             }
         });
@@ -412,8 +412,7 @@ public final class PosePanel {
     /** The sentence that says which poses quitting would lose ({@link #unsaved}), or null when none. */
     public String lossSentence() {
         List<String> lost = unsaved();
-        return lost.isEmpty() ? null : "The Pose panel's " + String.join(", ", lost) + " are not saved (Save recording\u2026 or "
-                + "Use on another group\u2026 keeps them) and would be lost.";
+        return lost.isEmpty() ? null : PanelMsg.POSE_LOSS.text(String.join(", ", lost));
     }
 
     /**
@@ -422,8 +421,8 @@ public final class PosePanel {
      */
     public boolean confirmClose() {
         String lost = lossSentence();
-        return lost == null || org.eclipse.jface.dialogs.MessageDialog.openQuestion(box.getShell(), "Unsaved poses",
-                lost + " Close and lose them?");
+        return lost == null || org.eclipse.jface.dialogs.MessageDialog.openQuestion(box.getShell(), PanelMsg.POSE_UNSAVED_TITLE.text(),
+                PanelMsg.POSE_CLOSE_AND_LOSE.text(lost));
     }
 
     /**
@@ -433,7 +432,7 @@ public final class PosePanel {
     public void hardwareGone() {
         if (!box.isDisposed() && source.getSelectionIndex() == 1) {
             source.select(0);
-            say("The robot was disconnected (Run > Hardware… closed); posing with the simulator.");
+            say(PanelMsg.POSE_DISCONNECTED.text());
         }
     }
 

@@ -8,6 +8,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.run.TargetException;
+import org.parpe.gui.text.PanelMsg;
 import org.parpe.sim.snapshot.SimSnapshot;
 import org.parpe.sim.SimTarget;
 import org.parpe.sim.Simulator;
@@ -66,7 +67,7 @@ final class PoseSim implements AutoCloseable {
                 tick = 0;
                 sim = s;
             } catch (TargetException | RuntimeException e) {
-                problems.accept("cannot pose the robot '" + spec + "': " + e.getMessage());
+                problems.accept(PanelMsg.POSE_CANNOT_POSE_ROBOT.text(spec, e.getMessage()));
             }
         });
     }
@@ -90,7 +91,7 @@ final class PoseSim implements AutoCloseable {
             s.accept(tick, tick * Simulator.DEFAULT_TICK, targets);
             tick++;
         } catch (RuntimeException e) {
-            problems.accept("the posing simulator failed: " + e);
+            problems.accept(PanelMsg.POSE_SIM_FAILED.text(e));
             sim = null;
         }
     }

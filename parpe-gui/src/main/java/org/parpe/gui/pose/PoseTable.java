@@ -13,6 +13,7 @@ import org.eclipse.swt.widgets.Table;
 import org.eclipse.swt.widgets.TableColumn;
 import org.eclipse.swt.widgets.TableItem;
 import org.eclipse.swt.widgets.Text;
+import org.parpe.gui.text.PanelMsg;
 
 /**
  * The list of poses with the time since the previous one, and the buttons that edit it: move up
@@ -53,33 +54,31 @@ final class PoseTable {
         table.setLinesVisible(true);
         table.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
         column("#", 34);
-        column("after (s)", 70);
-        column("joint angles (\u00b0)", 220);
+        column(PanelMsg.POSE_COL_AFTER.text(), 70);
+        column(PanelMsg.POSE_COL_ANGLES.text(), 220);
         table.addListener(SWT.Selection, e -> rowSelected());
         Composite buttons = new Composite(box, SWT.NONE);
         buttons.setLayout(new GridLayout(6, false));
         buttons.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
-        button(buttons, "Up", "Move the selected pose earlier", i -> select(list.move(i, -1)));
-        button(buttons, "Down", "Move the selected pose later", i -> select(list.move(i, 1)));
-        button(buttons, "Duplicate", "Insert a copy of the selected pose after it", i -> select(list.duplicate(i)));
-        button(buttons, "Mirror", "Swap the angles of the left and right modules of the selected pose "
-                + "(a group with no left/right partners turns the other way)", owner::mirror);
-        button(buttons, "Update", "Replace the selected pose's angles with the sliders'", i -> list.set(i, owner.sliders()));
-        button(buttons, "Delete", "Delete the selected pose", i -> {
+        button(buttons, PanelMsg.POSE_UP.text(), PanelMsg.POSE_UP_TIP.text(), i -> select(list.move(i, -1)));
+        button(buttons, PanelMsg.POSE_DOWN.text(), PanelMsg.POSE_DOWN_TIP.text(), i -> select(list.move(i, 1)));
+        button(buttons, PanelMsg.POSE_DUPLICATE.text(), PanelMsg.POSE_DUPLICATE_TIP.text(), i -> select(list.duplicate(i)));
+        button(buttons, PanelMsg.POSE_MIRROR.text(), PanelMsg.POSE_MIRROR_TIP.text(), owner::mirror);
+        button(buttons, PanelMsg.POSE_UPDATE.text(), PanelMsg.POSE_UPDATE_TIP.text(), i -> list.set(i, owner.sliders()));
+        button(buttons, PanelMsg.POSE_DELETE.text(), PanelMsg.POSE_DELETE_TIP.text(), i -> {
             list.remove(i);
             select(Math.min(i, list.size() - 1));
         });
         Composite timing = new Composite(box, SWT.NONE);
         timing.setLayout(new GridLayout(4, false));
-        new Label(timing, SWT.NONE).setText("Time:");
+        new Label(timing, SWT.NONE).setText(PanelMsg.POSE_TIME.text());
         time = new Text(timing, SWT.BORDER);
         time.setText("1.00");
-        time.setToolTipText("Seconds from the previous pose to this one (" + PoseList.MIN_INTERVAL + " to "
-                + (int) PoseList.MAX_INTERVAL + "); new poses get this time too. Enter sets it for the selected pose.");
+        time.setToolTipText(PanelMsg.POSE_TIME_TIP.text(PoseList.MIN_INTERVAL, (int) PoseList.MAX_INTERVAL));
         time.setLayoutData(new GridData(50, SWT.DEFAULT));
         time.addListener(SWT.DefaultSelection, e -> retime());
         new Label(timing, SWT.NONE).setText("s");
-        button(timing, "Set time", "Set the time of the selected pose", i -> retime());
+        button(timing, PanelMsg.POSE_SET_TIME.text(), PanelMsg.POSE_SET_TIME_TIP.text(), i -> retime());
     }
 
     private void rowSelected() {
@@ -103,7 +102,7 @@ final class PoseTable {
         b.addListener(SWT.Selection, e -> {
             int i = table.getSelectionIndex();
             if (list == null || i < 0 || i >= list.size()) {
-                owner.say("Select a pose in the list first.");
+                owner.say(PanelMsg.POSE_SELECT_FIRST.text());
                 return;
             }
             onSelected.accept(i);
@@ -163,8 +162,7 @@ final class PoseTable {
     Double interval() {
         Double v = PoseList.parseInterval(time.getText());
         if (v == null) {
-            owner.say("The time must be a number of seconds from " + PoseList.MIN_INTERVAL + " to "
-                    + (int) PoseList.MAX_INTERVAL + ", got '" + time.getText().trim() + "'.");
+            owner.say(PanelMsg.POSE_TIME_NOT_A_NUMBER.text(PoseList.MIN_INTERVAL, (int) PoseList.MAX_INTERVAL, time.getText().trim()));
         }
         return v;
     }
@@ -179,7 +177,7 @@ final class PoseTable {
         Double v = interval();
         if (list == null || i < 0 || v == null) {
             if (v != null) {
-                owner.say("Select a pose in the list first.");
+                owner.say(PanelMsg.POSE_SELECT_FIRST.text());
             }
             return;
         }

@@ -18,6 +18,7 @@ import org.parpe.core.model.Behavior;
 import org.parpe.core.model.Group;
 import org.parpe.core.model.Program;
 import org.parpe.core.model.StateDef;
+import org.parpe.gui.text.PanelMsg;
 import org.parpe.serial.record.PoseRecording;
 import org.parpe.core.xml.SourceText;
 import org.parpe.core.xml.XElement;
@@ -65,11 +66,11 @@ final class ScriptInsert {
 
         /** One sentence for the user: what was written and whether (and when) the script plays it. */
         String said(List<String> targets) {
-            String head = "Added automaton " + automaton + " and behavior " + behavior + " playing it on " + String.join(", ", targets);
-            return head + switch (main) {
-                case ONLY -> "; <main> plays it.";
-                case FIRST -> "; <main> now plays it first, for " + number(firstSeconds) + " s, then the entries it had.";
-                case UNCHANGED -> ". It is not in <main>, so the script does not play it yet: add <" + behavior + "/> to <main>.";
+            String on = String.join(", ", targets);
+            return switch (main) {
+                case ONLY -> PanelMsg.POSE_ADDED_ONLY.text(automaton, behavior, on);
+                case FIRST -> PanelMsg.POSE_ADDED_FIRST.text(automaton, behavior, on, number(firstSeconds));
+                case UNCHANGED -> PanelMsg.POSE_ADDED_UNCHANGED.text(automaton, behavior, on);
             };
         }
     }
@@ -83,28 +84,26 @@ final class ScriptInsert {
      */
     static String check(Program program, Request r) {
         if (r.targets().isEmpty()) {
-            return "Choose at least one group to play the poses on.";
+            return PanelMsg.POSE_CHOOSE_TARGET.text();
         }
         if (!(r.period() > 0) || Double.isInfinite(r.period())) {
-            return "The period must be a number of seconds > 0, got " + r.period() + ".";
+            return PanelMsg.POSE_PERIOD_POSITIVE.text(r.period());
         }
         if (!Double.isFinite(r.phase()) || !Double.isFinite(r.offset())) {
-            return "Phase and offset must be numbers of cycles.";
+            return PanelMsg.POSE_PHASE_OFFSET_NUMBERS.text();
         }
         Set<Integer> used = new HashSet<>();
         for (String t : r.targets()) {
             Group g = program.group(t).orElse(null);
             if (g == null) {
-                return "The script has no group '" + t + "'.";
+                return PanelMsg.POSE_NO_GROUP.text(t);
             }
             if (g.size() != r.recording().modules().length) {
-                return "Group '" + t + "' has " + g.size() + " modules but the poses have " + r.recording().modules().length
-                        + " angles.";
+                return PanelMsg.POSE_GROUP_SIZE.text(t, g.size(), r.recording().modules().length);
             }
             for (int id : g.modules()) {
                 if (!used.add(id)) {
-                    return "Groups " + r.targets() + " share module " + id
-                            + "; automata in one behavior must drive different modules.";
+                    return PanelMsg.POSE_GROUPS_SHARE.text(r.targets(), id);
                 }
             }
         }
@@ -119,7 +118,7 @@ final class ScriptInsert {
         String beh = unique("play_" + r.recording().group(), taken);
         XElement root = XmlReader.read(new SourceText(program.file(), text), new DiagnosticList());
         if (root == null) {
-            throw new IllegalArgumentException("the script is not well-formed XML; mend it first (see Problems)");
+            throw new IllegalArgumentException(PanelMsg.POSE_NOT_WELL_FORMED.text());
         }
         List<Replacement> edits = new ArrayList<>();
         edits.add(section(text, root, "automata", automaton(auto, r.recording())));

@@ -15,6 +15,7 @@ import org.eclipse.swt.widgets.Text;
 import org.parpe.core.model.Group;
 import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.Program;
+import org.parpe.gui.text.PanelMsg;
 import org.parpe.serial.record.PoseRecording;
 import org.parpe.serial.record.RecordingWriter;
 
@@ -50,7 +51,7 @@ final class UseOnGroupDialog extends Dialog {
     @Override
     protected void configureShell(Shell shell) {
         super.configureShell(shell);
-        shell.setText("Use the poses on other groups");
+        shell.setText(PanelMsg.POSE_USE_TITLE.text());
     }
 
     @Override
@@ -58,12 +59,11 @@ final class UseOnGroupDialog extends Dialog {
         Composite area = (Composite) super.createDialogArea(parent);
         area.setLayout(new GridLayout(2, false));
         Label intro = new Label(area, SWT.WRAP);
-        intro.setText("Play the " + recording.size() + " poses of group " + recording.group() + " on these groups ("
-                + recording.modules().length + " modules each). Each chosen group lags the one before by the offset.");
+        intro.setText(PanelMsg.POSE_USE_INTRO.text(recording.size(), recording.group(), recording.modules().length));
         GridData wide = new GridData(SWT.FILL, SWT.CENTER, true, false, 2, 1);
         wide.widthHint = 420;
         intro.setLayoutData(wide);
-        new Label(area, SWT.NONE).setText("Groups:");
+        new Label(area, SWT.NONE).setText(PanelMsg.POSE_GROUPS.text());
         groups = new org.eclipse.swt.widgets.List(area, SWT.MULTI | SWT.BORDER | SWT.V_SCROLL);
         groups.setItems(candidates.toArray(new String[0]));
         GridData gd = new GridData(SWT.FILL, SWT.FILL, true, true);
@@ -73,24 +73,24 @@ final class UseOnGroupDialog extends Dialog {
         for (double t : RecordingWriter.rowTimes(recording)) {
             cycle += t;
         }
-        period = field(area, "Period (s):", Numbers.format(Math.round(cycle * 100) / 100.0),
-                "Seconds per cycle through all the poses");
-        phase = field(area, "Phase (cycles):", "0", "Delay between successive modules of a group, in cycles");
-        offset = field(area, "Offset (cycles):", "0.5", "Delay of each chosen group after the one before, in cycles");
+        period = field(area, PanelMsg.POSE_PERIOD.text(), Numbers.format(Math.round(cycle * 100) / 100.0),
+                PanelMsg.POSE_PERIOD_TIP.text());
+        phase = field(area, PanelMsg.POSE_PHASE.text(), "0", PanelMsg.POSE_PHASE_TIP.text());
+        offset = field(area, PanelMsg.POSE_OFFSET.text(), "0.5", PanelMsg.POSE_OFFSET_TIP.text());
         // <main> plays its entries in turn: a behavior it does not name never plays (issue 23, item 10).
         boolean mainHasEntries = program.mainDef().map(m -> !m.entries().isEmpty()).orElse(false);
         first = new org.eclipse.swt.widgets.Button(area, SWT.CHECK);
         first.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false, 2, 1));
-        first.setText(mainHasEntries ? "Play it first in <main> (" + ScriptInsert.FIRST_CYCLES + " cycles), then what <main> plays now"
-                : "<main> plays it (it has no entries yet)");
-        first.setToolTipText("Without this the behavior is written but <main> does not play it until you add it there");
+        first.setText(mainHasEntries ? PanelMsg.POSE_PLAY_FIRST.text(ScriptInsert.FIRST_CYCLES)
+                : PanelMsg.POSE_MAIN_PLAYS.text());
+        first.setToolTipText(PanelMsg.POSE_PLAY_FIRST_TIP.text());
         first.setSelection(true);
         first.setEnabled(mainHasEntries);
         problem = new Label(area, SWT.WRAP);
         problem.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false, 2, 1));
         problem.setForeground(area.getDisplay().getSystemColor(SWT.COLOR_DARK_RED));
         if (candidates.isEmpty()) {
-            problem.setText("The script has no other group of " + recording.modules().length + " modules.");
+            problem.setText(PanelMsg.POSE_NO_OTHER_GROUP.text(recording.modules().length));
         }
         return area;
     }
@@ -110,8 +110,7 @@ final class UseOnGroupDialog extends Dialog {
         Double ph = Numbers.parsePlain(phase.getText().trim());
         Double off = Numbers.parsePlain(offset.getText().trim());
         if (p == null || ph == null || off == null) {
-            problem.setText("Period, phase and offset must be numbers, got '" + period.getText().trim() + "', '"
-                    + phase.getText().trim() + "', '" + offset.getText().trim() + "'.");
+            problem.setText(PanelMsg.POSE_NOT_NUMBERS.text(period.getText().trim(), phase.getText().trim(), offset.getText().trim()));
             return;
         }
         ScriptInsert.Request r = new ScriptInsert.Request(recording, List.of(groups.getSelection()), p, ph, off, first.getSelection());
@@ -127,7 +126,7 @@ final class UseOnGroupDialog extends Dialog {
 
     @Override
     protected void createButtonsForButtonBar(Composite parent) {
-        createButton(parent, IDialogConstants.OK_ID, "Write into script", true);
+        createButton(parent, IDialogConstants.OK_ID, PanelMsg.POSE_WRITE.text(), true);
         createButton(parent, IDialogConstants.CANCEL_ID, IDialogConstants.CANCEL_LABEL, false);
     }
 

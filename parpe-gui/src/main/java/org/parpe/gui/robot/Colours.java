@@ -9,6 +9,7 @@ import java.util.TreeSet;
 import java.util.stream.Collectors;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.model.Program;
+import org.parpe.gui.text.PanelMsg;
 import org.parpe.sim.build.RobotDraft;
 import org.parpe.sim.build.ScriptFit;
 import org.parpe.sim.config.Kit;
@@ -65,24 +66,24 @@ final class Colours {
         StringBuilder s = new StringBuilder();
         if (d.config() == null) {
             List<Diagnostic> p = d.problems();
-            return p.isEmpty() ? "" : p.size() + (p.size() == 1 ? " problem" : " problems") + " (see Problems): " + p.get(0).format();
+            return p.isEmpty() ? "" : (p.size() == 1 ? PanelMsg.ROBOT_ONE_PROBLEM : PanelMsg.ROBOT_N_PROBLEMS).text(p.size(), p.get(0).format());
         }
         if (script != null) {
             ScriptFit f = ScriptFit.of(script, d.config());
-            s.append("Script ").append(java.nio.file.Path.of(script.file()).getFileName()).append(": ");
-            s.append(f.missing().isEmpty() && f.unused().isEmpty() ? "every module it uses is here, none is left over"
-                    : (f.missing().isEmpty() ? "" : "the robot lacks modules " + ids(f.missing()))
+            s.append(PanelMsg.ROBOT_SCRIPT_FIT.text(java.nio.file.Path.of(script.file()).getFileName(),
+                    f.missing().isEmpty() && f.unused().isEmpty() ? PanelMsg.ROBOT_FIT_ALL.text()
+                    : (f.missing().isEmpty() ? "" : PanelMsg.ROBOT_LACKS_MODULES.text(ids(f.missing())))
                     + (!f.missing().isEmpty() && !f.unused().isEmpty() ? "; " : "")
-                    + (f.unused().isEmpty() ? "" : "no group uses modules " + ids(f.unused())));
+                    + (f.unused().isEmpty() ? "" : PanelMsg.ROBOT_UNUSED_MODULES.text(ids(f.unused())))));
         }
         if (kit != null) {
             Map<PartType, Integer> left = d.left(kit);
-            s.append(s.length() == 0 ? "" : "   ").append("Kit ").append(kit.name()).append(" left: ")
-                    .append(left.entrySet().stream().filter(e -> kit.owned(e.getKey()) > 0)
-                            .map(e -> e.getKey().count(e.getValue())).collect(Collectors.joining(", ")));
+            s.append(s.length() == 0 ? "" : "   ").append(PanelMsg.ROBOT_KIT_LEFT.text(kit.name(),
+                    left.entrySet().stream().filter(e -> kit.owned(e.getKey()) > 0)
+                            .map(e -> e.getKey().count(e.getValue())).collect(Collectors.joining(", "))));
         }
         if (!d.problems().isEmpty()) {
-            s.append(s.length() == 0 ? "" : "   ").append(d.problems().size()).append(" problem(s): ").append(d.problems().get(0).format());
+            s.append(s.length() == 0 ? "" : "   ").append(PanelMsg.ROBOT_PROBLEMS.text(d.problems().size(), d.problems().get(0).format()));
         }
         return s.toString();
     }

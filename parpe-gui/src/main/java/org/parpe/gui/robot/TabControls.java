@@ -15,6 +15,7 @@ import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Control;
 import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.Text;
+import org.parpe.gui.text.PanelMsg;
 import org.parpe.gui.view3d.View3D;
 import org.parpe.sim.config.PartType;
 
@@ -73,17 +74,17 @@ final class TabControls {
 
         Composite top = row();
         source = new Label(top, SWT.NONE);
-        tryIt = button(top, "Try it", "Run the script on this robot in the simulator now");
-        undo = button(top, "Undo", "Take back the last change (Ctrl+Z)");
-        redo = button(top, "Redo", "Make the change taken back again (Ctrl+Y)");
-        connect = button(top, "Connect", "Close a loop: join the two plates selected (click one, Ctrl+click the other)");
-        assignIds = button(top, "Assign IDs", "Give every segment a module ID in chain order from the root");
-        kit = button(top, "Kit\u2026", "Choose the kit file: how many parts of each kind the class owns");
-        editRobot = button(top, "Edit robot", "Open the robot's configuration file in the editor");
-        makeEditable = button(top, "Make editable\u2026", "Write the generator's robot to a file beside the script and use it");
+        tryIt = button(top, PanelMsg.ROBOT_TRY_IT.text(), PanelMsg.ROBOT_TRY_IT_TIP.text());
+        undo = button(top, PanelMsg.ROBOT_UNDO.text(), PanelMsg.ROBOT_UNDO_TIP.text());
+        redo = button(top, PanelMsg.ROBOT_REDO.text(), PanelMsg.ROBOT_REDO_TIP.text());
+        connect = button(top, PanelMsg.ROBOT_CONNECT.text(), PanelMsg.ROBOT_CONNECT_TIP.text());
+        assignIds = button(top, PanelMsg.ROBOT_ASSIGN_IDS.text(), PanelMsg.ROBOT_ASSIGN_IDS_TIP.text());
+        kit = button(top, PanelMsg.ROBOT_KIT.text(), PanelMsg.ROBOT_KIT_TIP.text());
+        editRobot = button(top, PanelMsg.ROBOT_EDIT.text(), PanelMsg.ROBOT_EDIT_TIP.text());
+        makeEditable = button(top, PanelMsg.ROBOT_MAKE_EDITABLE.text(), PanelMsg.ROBOT_MAKE_EDITABLE_TIP.text());
 
         Composite palette = row();
-        new Label(palette, SWT.NONE).setText("Add:");
+        new Label(palette, SWT.NONE).setText(PanelMsg.ROBOT_ADD.text());
         Composite typeBox = group(palette); // radio buttons of one parent exclude each other
         for (PartType t : PartType.values()) {
             Button b = new Button(typeBox, SWT.RADIO);
@@ -91,37 +92,37 @@ final class TabControls {
             types[t.ordinal()] = b;
         }
         types[PartType.SEGMENT.ordinal()].setSelection(true);
-        hubPlates = box(palette, "Plates round a hub's rim (3 to 12; Enter)", 3);
+        hubPlates = box(palette, PanelMsg.ROBOT_HUB_PLATES_TIP.text(), 3);
         hubPlates.setText(Integer.toString(PartType.HUB.defaultPlates()));
-        new Label(palette, SWT.NONE).setText("Turned:");
+        new Label(palette, SWT.NONE).setText(PanelMsg.ROBOT_TURNED.text());
         Composite turnBox = group(palette);
         for (int q = 0; q < 4; q++) {
             turns[q] = new Button(turnBox, SWT.RADIO);
             turns[q].setText(q * 90 + "\u00B0");
-            turns[q].setToolTipText("How the new part is turned on its plate (previewed before Place)");
+            turns[q].setToolTipText(PanelMsg.ROBOT_TURNED_TIP.text());
         }
         turns[0].setSelection(true);
-        place = button(palette, "Place", "Snap the part previewed onto the plate selected (or double-click the plate)");
+        place = button(palette, PanelMsg.ROBOT_PLACE.text(), PanelMsg.ROBOT_PLACE_TIP.text());
 
         Composite props = row();
         partName = new Label(props, SWT.NONE);
-        new Label(props, SWT.NONE).setText("ID");
-        moduleId = box(props, "The segment's module ID (Enter)", 4);
-        new Label(props, SWT.NONE).setText("Angle");
-        angle = box(props, "The segment's initial joint angle, degrees (Enter)", 6);
+        new Label(props, SWT.NONE).setText(PanelMsg.ROBOT_WHAT_ID.text());
+        moduleId = box(props, PanelMsg.ROBOT_ID_TIP.text(), 4);
+        new Label(props, SWT.NONE).setText(PanelMsg.ROBOT_ANGLE.text());
+        angle = box(props, PanelMsg.ROBOT_ANGLE_TIP.text(), 6);
         limp = new Button(props, SWT.CHECK);
-        limp.setText("Limp");
-        limp.setToolTipText("The segment's servo starts limp (back-drivable)");
-        new Label(props, SWT.NONE).setText("Roll");
-        roll = box(props, "The root part's roll, degrees: how the robot lies on the floor (a wheel stands at 90; Enter)", 5);
-        turn = button(props, "Turn 90\u00B0", "Turn the part on the plate it hangs on");
-        delete = button(props, "Delete", "Take the part away with everything that hangs on it");
-        makeRoot = button(props, "Make root", "Make this part the robot's root");
+        limp.setText(PanelMsg.ROBOT_LIMP.text());
+        limp.setToolTipText(PanelMsg.ROBOT_LIMP_TIP.text());
+        new Label(props, SWT.NONE).setText(PanelMsg.ROBOT_ROLL.text());
+        roll = box(props, PanelMsg.ROBOT_ROLL_TIP.text(), 5);
+        turn = button(props, PanelMsg.ROBOT_TURN.text(), PanelMsg.ROBOT_TURN_TIP.text());
+        delete = button(props, PanelMsg.ROBOT_DELETE.text(), PanelMsg.ROBOT_DELETE_TIP.text());
+        makeRoot = button(props, PanelMsg.ROBOT_MAKE_ROOT.text(), PanelMsg.ROBOT_MAKE_ROOT_TIP.text());
 
         view = new View3D(root);
         view.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
         view.setTrackRobot(false);
-        view.setEmptyText("No robot here yet: pick a part in Add, then Place");
+        view.setEmptyText(PanelMsg.ROBOT_EMPTY.text());
         fit = wrapped();
         message = wrapped();
         root.addListener(SWT.Resize, e -> relayout());

@@ -7,6 +7,7 @@ import org.eclipse.swt.widgets.Canvas;
 import org.eclipse.swt.widgets.Composite;
 import org.parpe.core.plot.PlotStyle;
 import org.parpe.gui.panels.ChartView;
+import org.parpe.gui.text.PanelMsg;
 import org.parpe.sim.sweep.SweepRow;
 
 /**
@@ -19,11 +20,11 @@ import org.parpe.sim.sweep.SweepRow;
  * {@link Results#acceptable}'s rule, the command line's.
  */
 final class ResultsPlot {
-    static final String RUNS = "runs";
-    static final String FELL = "fell over or failed (never the best)";
-    static final String BEST = "best at each value";
-    static final String MISSES = "misses a constraint";
-    static final String BEST_SO_FAR = "best so far";
+    static final PanelMsg RUNS = PanelMsg.SWEEP_SERIES_RUNS;
+    static final PanelMsg FELL = PanelMsg.SWEEP_SERIES_FELL;
+    static final PanelMsg BEST = PanelMsg.SWEEP_SERIES_BEST;
+    static final PanelMsg MISSES = PanelMsg.SWEEP_SERIES_MISSES;
+    static final PanelMsg BEST_SO_FAR = PanelMsg.SWEEP_SERIES_BEST_SO_FAR;
 
     private final ChartView chart;
     private Results results;
@@ -56,8 +57,7 @@ final class ResultsPlot {
         }
         List<SweepRow> rows = results == null ? List.of() : results.rows();
         if (rows.isEmpty()) {
-            chart.message(results == null ? "Start a sweep or an optimisation to plot its objective here."
-                    : "Waiting for the first run\u2026");
+            chart.message(results == null ? PanelMsg.SWEEP_PLOT_EMPTY.text() : PanelMsg.SWEEP_PLOT_WAITING.text());
             return;
         }
         int n = rows.size();
@@ -70,12 +70,13 @@ final class ResultsPlot {
         double[] xr = range(xs, ys);
         double[] yr = range(ys, xs);
         if (!(xr[0] <= xr[1])) {
-            chart.message("No run has a measurement yet (see the error column).");
+            chart.message(PanelMsg.SWEEP_PLOT_NO_MEASUREMENT.text());
             return;
         }
         boolean optimise = results.mode() == Results.Mode.OPTIMISE;
-        String title = results.objective().label() + (optimise ? " per evaluation" : " over " + x);
-        chart.show(title, optimise ? "evaluation" : x, pad(xr), pad(yr), f -> {
+        String title = optimise ? PanelMsg.SWEEP_PLOT_PER_EVALUATION.text(RunSettings.label(results.objective()))
+                : PanelMsg.SWEEP_PLOT_OVER_X.text(RunSettings.label(results.objective()), x);
+        chart.show(title, optimise ? PanelMsg.SWEEP_EVALUATION.text() : x, pad(xr), pad(yr), f -> {
             if (optimise) {
                 convergence(f, rows, xs, ys);
             } else {
@@ -125,12 +126,12 @@ final class ResultsPlot {
                 best.merge(xs[i], ys[i], Math::max);
             }
         }
-        f.points(RUNS, xs, upY, n, PlotStyle.OTHER_RUN, false);
-        f.points(FELL, xs, downY, n, PlotStyle.FELL, true);
+        f.points(RUNS.text(), xs, upY, n, PlotStyle.OTHER_RUN, false);
+        f.points(FELL.text(), xs, downY, n, PlotStyle.FELL, true);
         double[] bx = best.keySet().stream().mapToDouble(Double::doubleValue).toArray();
         double[] by = best.values().stream().mapToDouble(Double::doubleValue).toArray();
         if (bx.length > 0) {
-            f.line(BEST, bx, by, bx.length, PlotStyle.BEST, false);
+            f.line(BEST.text(), bx, by, bx.length, PlotStyle.BEST, false);
         }
     }
 
@@ -149,8 +150,8 @@ final class ResultsPlot {
             }
             bestSoFar[i] = best;
         }
-        f.points(RUNS, xs, ok, n, PlotStyle.OTHER_RUN, false);
-        f.points(MISSES, xs, misses, n, PlotStyle.MISSES, false);
-        f.line(BEST_SO_FAR, xs, bestSoFar, n, PlotStyle.BEST_SO_FAR, false);
+        f.points(RUNS.text(), xs, ok, n, PlotStyle.OTHER_RUN, false);
+        f.points(MISSES.text(), xs, misses, n, PlotStyle.MISSES, false);
+        f.line(BEST_SO_FAR.text(), xs, bestSoFar, n, PlotStyle.BEST_SO_FAR, false);
     }
 }

@@ -14,6 +14,7 @@ import org.eclipse.swt.widgets.Table;
 import org.eclipse.swt.widgets.TableColumn;
 import org.eclipse.swt.widgets.TableItem;
 import org.parpe.core.lang.Numbers;
+import org.parpe.gui.text.PanelMsg;
 import org.parpe.sim.sweep.SweepRow;
 
 /**
@@ -57,22 +58,22 @@ final class ResultsTable {
         // The run's place in the engine's order, from 0 as the CSV's and parpe sweep's run column: a
         // sweep's run number, an optimisation's evaluation number (the point's own index restarts
         // with each independent search).
-        columns.add(new Column("run", row -> Integer.toString(place.get(row)), Comparator.comparingInt(place::get)));
+        columns.add(new Column(PanelMsg.SWEEP_COL_RUN.text(), row -> Integer.toString(place.get(row)), Comparator.comparingInt(place::get)));
         for (String p : r.parameters()) {
             columns.add(new Column(p, row -> value(row.values().get(p)),
                     Comparator.comparingDouble(row -> nanLast(row.values().get(p)))));
         }
-        measure("forward speed (m/s)", SweepRow::forwardSpeed);
-        measure("speed (m/s)", SweepRow::speed);
-        measure("forward (m)", SweepRow::forward);
-        measure("distance (m)", SweepRow::distance);
-        measure("max tilt (\u00b0)", SweepRow::maxTiltDeg);
-        measure("joint travel (\u00b0)", SweepRow::jointTravelDeg);
+        measure(PanelMsg.SWEEP_COL_FORWARD_SPEED.text(), SweepRow::forwardSpeed);
+        measure(PanelMsg.SWEEP_COL_SPEED.text(), SweepRow::speed);
+        measure(PanelMsg.SWEEP_COL_FORWARD.text(), SweepRow::forward);
+        measure(PanelMsg.SWEEP_COL_DISTANCE.text(), SweepRow::distance);
+        measure(PanelMsg.SWEEP_COL_MAX_TILT.text(), SweepRow::maxTiltDeg);
+        measure(PanelMsg.SWEEP_COL_JOINT_TRAVEL.text(), SweepRow::jointTravelDeg);
         if (r.scored()) {
-            measure("score", SweepRow::score);
+            measure(PanelMsg.SWEEP_COL_SCORE.text(), SweepRow::score);
         }
-        columns.add(new Column("fell", row -> row.fell() ? "yes" : "no", Comparator.comparing(SweepRow::fell)));
-        columns.add(new Column("error", SweepRow::error, Comparator.comparing(SweepRow::error)));
+        columns.add(new Column(PanelMsg.SWEEP_COL_FELL.text(), row -> (row.fell() ? PanelMsg.SWEEP_YES : PanelMsg.SWEEP_NO).text(), Comparator.comparing(SweepRow::fell)));
+        columns.add(new Column(PanelMsg.SWEEP_COL_ERROR.text(), SweepRow::error, Comparator.comparing(SweepRow::error)));
         for (int i = 0; i < columns.size(); i++) {
             Column c = columns.get(i);
             boolean text = i >= columns.size() - 2;

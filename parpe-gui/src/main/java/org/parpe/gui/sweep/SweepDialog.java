@@ -3,7 +3,6 @@ package org.parpe.gui.sweep;
 import org.parpe.gui.panels.RobotChoice;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import org.eclipse.jface.text.DocumentEvent;
 import org.eclipse.jface.text.IDocumentListener;
@@ -21,6 +20,7 @@ import org.parpe.core.io.OutputPlan;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
 import org.parpe.core.model.Parameter;
+import org.parpe.gui.text.PanelMsg;
 import org.parpe.sim.sweep.SweepRow;
 
 /**
@@ -72,14 +72,14 @@ public final class SweepDialog {
         tabs = new TabFolder(shell, SWT.TOP);
         tabs.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, false));
         sweepTab = new SweepTab(tabs);
-        tab("Sweep", sweepTab.control());
+        tab(PanelMsg.SWEEP_TAB_SWEEP.text(), sweepTab.control());
         optimiseTab = new OptimiseTab(tabs);
-        tab("Optimise", optimiseTab.control());
+        tab(PanelMsg.SWEEP_TAB_OPTIMISE.text(), optimiseTab.control());
         ((GridData) tabs.getLayoutData()).heightHint = 270;
 
         Composite bar = row(shell, 4);
-        start = button(bar, "Start", this::start);
-        stop = button(bar, "Stop", this::stop);
+        start = button(bar, PanelMsg.SWEEP_START.text(), this::start);
+        stop = button(bar, PanelMsg.SWEEP_STOP.text(), this::stop);
         progress = new ProgressBar(bar, SWT.HORIZONTAL);
         progress.setMaximum(1000);
         progress.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
@@ -92,10 +92,10 @@ public final class SweepDialog {
 
         pane = new ResultsPane(shell);
         Composite bottom = row(shell, 3);
-        apply = button(bottom, "Apply best", this::applyBest);
-        apply.setToolTipText("Write the best run's values as the parameters' defaults into the editor (Edit > Undo takes them back)");
-        save = button(bottom, "Save CSV\u2026", this::saveCsv);
-        button(bottom, "Close", shell::close);
+        apply = button(bottom, PanelMsg.SWEEP_APPLY_BEST.text(), this::applyBest);
+        apply.setToolTipText(PanelMsg.SWEEP_APPLY_BEST_TIP.text());
+        save = button(bottom, PanelMsg.SWEEP_SAVE_CSV.text(), this::saveCsv);
+        button(bottom, PanelMsg.SWEEP_CLOSE.text(), shell::close);
         shell.setDefaultButton(start);
         wire();
     }
@@ -173,11 +173,11 @@ public final class SweepDialog {
     private List<Parameter> reload() {
         edited = false;
         Path file = host.script().get();
-        shell.setText("Sweep / Optimise \u2014 " + file.getFileName());
+        shell.setText(PanelMsg.SWEEP_TITLE.text(file.getFileName()));
         LoadResult r = ScriptLoader.loadText(file, host.editor().document().get(), Map.of());
         if (r.program() == null) {
-            String first = r.errors().isEmpty() ? file + ": the script does not load" : r.errors().get(0).format();
-            error(first + (r.errors().size() > 1 ? " (and " + (r.errors().size() - 1) + " more in Problems)" : ""));
+            String first = r.errors().isEmpty() ? PanelMsg.SWEEP_DOES_NOT_LOAD.text(file) : r.errors().get(0).format();
+            error(r.errors().size() > 1 ? PanelMsg.SWEEP_AND_MORE.text(first, r.errors().size() - 1) : first);
             return null;
         }
         List<Parameter> now = r.program().parameters();
@@ -215,10 +215,9 @@ public final class SweepDialog {
         }
         pane.show(results);
         progress.setSelection(0);
-        counts.setText("0 of " + total + " runs");
+        counts.setText(PanelMsg.SWEEP_COUNTS.text(0, total, ""));
         startedAt = System.nanoTime();
-        info(String.format(Locale.ROOT, "Running %d simulation(s) of %s s on %d thread(s)\u2026", total,
-                settings.duration().trim(), settings.jobs()));
+        info(PanelMsg.SWEEP_RUNNING.text(total, settings.duration().trim(), settings.jobs()));
         setRunning(true);
     }
 
@@ -242,7 +241,7 @@ public final class SweepDialog {
             rows.forEach(results::add);
             pane.refresh();
             progress.setSelection(of == 0 ? 0 : (int) (1000L * done / of));
-            counts.setText(done + " of " + of + " runs" + timeLeft(done, of));
+            counts.setText(PanelMsg.SWEEP_COUNTS.text(done, of, timeLeft(done, of)));
             apply.setEnabled(results.best() != null);
         }
 
@@ -263,16 +262,14 @@ public final class SweepDialog {
             }
             int kept = results.count();
             pane.refresh();
-            counts.setText(kept + " of " + total + " runs");
+            counts.setText(PanelMsg.SWEEP_COUNTS.text(kept, total, ""));
             if (!cancelled) {
                 progress.setSelection(1000);
             }
             SweepRow best = results.best();
-            String head = cancelled ? "Stopped after " + kept + " of " + total + " runs. "
-                    : "Finished " + kept + " runs. ";
-            info(head + (best == null ? noBest() : results.bestSentence(best))
-                    + (results.complete() ? "" : " The table and the plot show the first " + results.rows().size()
-                    + " runs; Save CSV\u2026 writes all " + kept + "."));
+            String head = cancelled ? PanelMsg.SWEEP_STOPPED_AFTER.text(kept, total) : PanelMsg.SWEEP_FINISHED.text(kept);
+            String said = head + " " + (best == null ? noBest() : results.bestSentence(best));
+            info(results.complete() ? said : PanelMsg.SWEEP_SHOWN_FIRST.text(said, results.rows().size(), kept));
             apply.setEnabled(best != null);
         }
 
@@ -291,28 +288,27 @@ public final class SweepDialog {
         }
         double left = (System.nanoTime() - startedAt) / 1e9 / done * (of - done);
         long s = Math.round(left);
-        return ", about " + (s >= 3600 ? s / 3600 + " h " + s % 3600 / 60 + " min"
-                : s >= 60 ? s / 60 + " min " + s % 60 + " s" : s + " s") + " left";
+        return PanelMsg.SWEEP_TIME_LEFT.text(s >= 3600 ? s / 3600 + " h " + s % 3600 / 60 + " min"
+                : s >= 60 ? s / 60 + " min " + s % 60 + " s" : s + " s");
     }
 
     /** Why no run can be the best, with the counts the table's columns show. */
     private String noBest() {
         if (results.count() == 0) {
-            return "No run finished.";
+            return PanelMsg.SWEEP_NO_RUN_FINISHED.text();
         }
         int failed = results.failed();
         int fell = results.fell();
         return results.mode() == Results.Mode.SWEEP
-                ? String.format(Locale.ROOT, "No best run: %d fell over and %d failed (see the fell and error columns);"
-                        + " a run whose robot fell over is never the best.", fell, failed)
-                : "No run met the constraints (see the max tilt, fell and error columns).";
+                ? PanelMsg.SWEEP_NO_BEST.text(fell, failed)
+                : PanelMsg.SWEEP_NO_RUN_MET.text();
     }
 
     private void stop() {
         if (runner != null && runner.running()) {
             runner.stop();
             stop.setEnabled(false);
-            info("Stopping: the runs in progress end at their next tick\u2026");
+            info(PanelMsg.SWEEP_STOPPING.text());
         }
     }
 
@@ -331,13 +327,12 @@ public final class SweepDialog {
         }
         Path now = host.script().get();
         if (!now.equals(results.script())) {
-            error("these results are of " + results.script().getFileName() + ", but the editor holds " + now.getFileName()
-                    + "; open " + results.script().getFileName() + " again to apply them");
+            error(PanelMsg.SWEEP_OTHER_SCRIPT.text(results.script().getFileName(), now.getFileName()));
             return;
         }
         try {
             String what = ApplyBest.apply(host.editor(), now, results.bestValues());
-            info("Applied to the editor: " + what + " (Edit > Undo takes it back; the file is saved only when you save it).");
+            info(PanelMsg.SWEEP_APPLIED.text(what));
         } catch (org.parpe.sim.sweep.SweepException e) {
             error(e.getMessage());
         }
@@ -345,7 +340,7 @@ public final class SweepDialog {
 
     private void saveCsv() {
         String name = host.script().get().getFileName().toString().replaceFirst("\\.xml$", "");
-        Path p = org.parpe.gui.panels.FileDialogs.ask(shell, SWT.SAVE, "Save the runs as CSV", "*.csv",
+        Path p = org.parpe.gui.panels.FileDialogs.ask(shell, SWT.SAVE, PanelMsg.SWEEP_SAVE_CSV_TITLE.text(), "*.csv",
                 name + (results.mode() == Results.Mode.SWEEP ? "-sweep.csv" : "-optimise.csv"), null);
         if (p != null) {
             saveCsv(p);
@@ -355,7 +350,7 @@ public final class SweepDialog {
     /** Writes the rows to {@code file} off the UI thread and says when it is done. */
     void saveCsv(Path file) {
         if (OutputPlan.sameFile(host.script().get(), file)) {
-            error("Cannot save the rows over " + file.getFileName() + ": it is the script being swept; choose another name.");
+            error(PanelMsg.SWEEP_SAVE_OVER_SCRIPT.text(file.getFileName()));
             return;
         }
         CsvExport.inBackground(shell.getDisplay(), file, results, total, (ok, said) -> {

@@ -18,6 +18,7 @@ import org.eclipse.swt.widgets.Spinner;
 import org.eclipse.swt.widgets.Text;
 import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.Parameter;
+import org.parpe.gui.text.PanelMsg;
 import org.parpe.sim.sweep.Axis;
 import org.parpe.sim.sweep.SweepException;
 import org.parpe.sim.sweep.SweepSpec;
@@ -30,7 +31,8 @@ import org.parpe.sim.sweep.VarySpec;
  * own checks and messages ({@link VarySpec}).
  */
 final class SweepTab {
-    private static final String[] COLUMNS = {"Vary", "Parameter", "From", "To", "Values", "Hold at", "Bounds (default)"};
+    private static final PanelMsg[] COLUMNS = {PanelMsg.SWEEP_VARY, PanelMsg.SWEEP_PARAMETER, PanelMsg.SWEEP_FROM, PanelMsg.SWEEP_TO,
+        PanelMsg.SWEEP_VALUES, PanelMsg.SWEEP_HOLD_AT, PanelMsg.SWEEP_BOUNDS};
     private final Composite root;
     private final Composite lines;
     private final ScrolledComposite scroller;
@@ -60,7 +62,7 @@ final class SweepTab {
             if (t.matches("\\d{1,7}")) {
                 int n = Integer.parseInt(t);
                 if (n < 1) {
-                    throw new SweepException("Values: type how many values (1 or more) or the values themselves, got '" + t + "'");
+                    throw new SweepException(PanelMsg.SWEEP_BAD_COUNT.text(t));
                 }
                 return new Values(n, List.of());
             }
@@ -69,8 +71,7 @@ final class SweepTab {
             for (String token : t.split(decimalComma ? "[;\\s]+" : "[;,\\s]+")) {
                 Double v = token.isEmpty() ? null : Numbers.parsePlain(decimalComma ? token.replace(',', '.') : token);
                 if (v == null || !Double.isFinite(v)) {
-                    throw new SweepException("Values: type how many values (a whole number) or the values themselves"
-                            + " separated by ';', got '" + t + "'");
+                    throw new SweepException(PanelMsg.SWEEP_BAD_VALUES.text(t));
                 }
                 out.add(v);
             }
@@ -90,16 +91,16 @@ final class SweepTab {
         Composite how = new Composite(root, SWT.NONE);
         how.setLayout(new GridLayout(8, false));
         grid = new Button(how, SWT.RADIO);
-        grid.setText("Grid (every combination)");
+        grid.setText(PanelMsg.SWEEP_GRID.text());
         grid.setSelection(true);
         random = new Button(how, SWT.RADIO);
-        random.setText("Random:");
+        random.setText(PanelMsg.SWEEP_RANDOM.text());
         count = spinner(how, 1, 1_000_000, 20);
-        count.setToolTipText("The number of random combinations (values drawn anywhere between From and To)");
-        new Label(how, SWT.NONE).setText("   Runs per combination:");
+        count.setToolTipText(PanelMsg.SWEEP_RANDOM_TIP.text());
+        new Label(how, SWT.NONE).setText("   " + PanelMsg.SWEEP_REPEAT.text());
         repeat = spinner(how, 1, 1000, 1);
-        repeat.setToolTipText("Each combination this many times, run r with rand() seed = seed + r");
-        new Label(how, SWT.NONE).setText("   Seed:");
+        repeat.setToolTipText(PanelMsg.SWEEP_REPEAT_TIP.text());
+        new Label(how, SWT.NONE).setText("   " + PanelMsg.SWEEP_SEED.text());
         seed = new Text(how, SWT.BORDER);
         seed.setText("0");
         seed.setLayoutData(new GridData(70, SWT.DEFAULT));
@@ -127,9 +128,9 @@ final class SweepTab {
             c.dispose();
         }
         byName.clear();
-        for (String h : COLUMNS) {
+        for (PanelMsg h : COLUMNS) {
             Label l = new Label(lines, SWT.NONE);
-            l.setText(h);
+            l.setText(h.text());
         }
         for (Parameter p : parameters) {
             Line line = line(p);
@@ -145,7 +146,7 @@ final class SweepTab {
         }
         if (parameters.isEmpty()) {
             Label none = new Label(lines, SWT.WRAP);
-            none.setText("The script has no <parameters>: declare some (with min and max) to sweep them.");
+            none.setText(PanelMsg.SWEEP_NO_PARAMETERS.text());
             none.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false, COLUMNS.length, 1));
         }
         lines.setSize(lines.computeSize(SWT.DEFAULT, SWT.DEFAULT));
@@ -166,13 +167,11 @@ final class SweepTab {
         Text values = new Text(lines, SWT.BORDER);
         values.setText("3");
         values.setLayoutData(new GridData(70, SWT.DEFAULT));
-        values.setToolTipText("How many evenly spaced values from From to To (a whole number), or the values"
-                + " themselves instead of From and To (2.5 is one value; 0.5; 1; 2 are three)");
+        values.setToolTipText(PanelMsg.SWEEP_VALUES_TIP.text());
         Text hold = new Text(lines, SWT.BORDER);
         hold.setText(Numbers.format(p.value()));
         hold.setLayoutData(new GridData(70, SWT.DEFAULT));
-        hold.setToolTipText("The value of " + p.name() + " in every run when Vary is not ticked (the script's own: "
-                + Numbers.format(p.value()) + ")");
+        hold.setToolTipText(PanelMsg.SWEEP_HOLD_TIP.text(p.name(), Numbers.format(p.value())));
         Label bounds = new Label(lines, SWT.NONE);
         bounds.setText((p.min() == null ? "-\u221e" : Numbers.format(p.min())) + " \u2026 "
                 + (p.max() == null ? "+\u221e" : Numbers.format(p.max())) + "   (" + Numbers.format(p.value()) + ")");
@@ -215,11 +214,11 @@ final class SweepTab {
             axes.add(draw && a.kind() == Axis.Kind.INTEGERS && !whole(l.parameter()) ? Axis.continuous(name, a.lo(), a.hi()) : a);
         }
         if (axes.isEmpty()) {
-            throw new SweepException("nothing to vary: tick Vary for at least one parameter");
+            throw new SweepException(PanelMsg.SWEEP_NOTHING_TO_VARY.text());
         }
         Double s = Numbers.parsePlain(seed.getText());
         if (s == null || s != Math.rint(s) || Math.abs(s) > 1e15) {
-            throw new SweepException("the seed must be a whole number, got '" + seed.getText().trim() + "'");
+            throw new SweepException(PanelMsg.SWEEP_BAD_SEED.text(seed.getText().trim()));
         }
         SweepSpec spec = draw ? SweepSpec.random(axes, count.getSelection(), repeat.getSelection(), s.longValue())
                 : SweepSpec.grid(axes, repeat.getSelection(), s.longValue());
@@ -239,7 +238,7 @@ final class SweepTab {
             }
             Double v = Numbers.parsePlain(l.hold().getText());
             if (v == null || !Double.isFinite(v)) {
-                throw new SweepException("hold " + l.parameter().name() + " at a number, got '" + l.hold().getText().trim() + "'");
+                throw new SweepException(PanelMsg.SWEEP_BAD_HOLD.text(l.parameter().name(), l.hold().getText().trim()));
             }
             if (v != l.parameter().value()) {
                 out.put(l.parameter().name(), v);

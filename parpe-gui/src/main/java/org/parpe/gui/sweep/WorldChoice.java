@@ -7,6 +7,7 @@ import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
 import org.parpe.gui.files.Examples;
+import org.parpe.gui.text.PanelMsg;
 
 /**
  * Where the runs are simulated, with the choices of the IDE's World picker: the flat floor, the
@@ -14,8 +15,6 @@ import org.parpe.gui.files.Examples;
  * runs, so that a sweep measures what a run shows; only in a world does a run have a score.
  */
 final class WorldChoice {
-    static final String FLAT = "flat floor";
-    private static final String BROWSE = "World file\u2026";
 
     private final Combo combo;
     private final List<Path> files = new ArrayList<>();
@@ -24,15 +23,15 @@ final class WorldChoice {
     /** The choice in {@code parent}, on {@code current} (a world file, or null for the flat floor). */
     WorldChoice(Composite parent, Path current) {
         combo = new Combo(parent, SWT.READ_ONLY);
-        combo.add(FLAT);
+        combo.add(PanelMsg.SWEEP_FLAT.text());
         Examples.worlds().forEach(this::add);
-        combo.add(BROWSE);
+        combo.add(PanelMsg.SWEEP_WORLD_FILE_BROWSE.text());
         combo.select(0);
         if (current != null) {
             choose(current);
         }
         previous = combo.getSelectionIndex();
-        combo.setToolTipText("Where the robot runs: the flat floor, or a world, which gives each run a score");
+        combo.setToolTipText(PanelMsg.SWEEP_WORLD_TIP.text());
         combo.addListener(SWT.Selection, e -> chosen());
     }
 
@@ -46,11 +45,11 @@ final class WorldChoice {
     }
 
     private void chosen() {
-        if (!BROWSE.equals(combo.getText())) {
+        if (!PanelMsg.SWEEP_WORLD_FILE_BROWSE.text().equals(combo.getText())) {
             previous = combo.getSelectionIndex();
             return;
         }
-        Path p = org.parpe.gui.panels.FileDialogs.ask(combo.getShell(), SWT.OPEN, "World file", "*.xml", null, null);
+        Path p = org.parpe.gui.panels.FileDialogs.ask(combo.getShell(), SWT.OPEN, PanelMsg.SWEEP_WORLD_FILE.text(), "*.xml", null, null);
         if (p == null) {
             combo.select(previous);
             return;

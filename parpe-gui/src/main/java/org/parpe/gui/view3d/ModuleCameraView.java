@@ -7,6 +7,7 @@ import org.eclipse.swt.graphics.GC;
 import org.eclipse.swt.graphics.Rectangle;
 import org.eclipse.swt.widgets.Canvas;
 import org.eclipse.swt.widgets.Composite;
+import org.parpe.gui.text.PanelMsg;
 import org.parpe.sim.geom.BodyShape;
 import org.parpe.sim.geom.PartKind;
 import org.parpe.sim.snapshot.SimBody;
@@ -75,7 +76,7 @@ public final class ModuleCameraView {
         }
         gc.setAntialias(SWT.DEFAULT);
         gc.setForeground(renderer.color(0x2A3648));
-        gc.drawText(lens == null ? "The robot has no module " + module : "Camera on module " + module, 8, 6, true);
+        gc.drawText((lens == null ? PanelMsg.CAMERA_NO_MODULE : PanelMsg.CAMERA_ON_MODULE).text(module), 8, 6, true);
     }
 
     /** The turning half of module {@code id}, or null. */

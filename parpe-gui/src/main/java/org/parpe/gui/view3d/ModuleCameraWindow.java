@@ -8,6 +8,7 @@ import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.Shell;
 import org.eclipse.swt.widgets.Spinner;
+import org.parpe.gui.text.PanelMsg;
 
 /**
  * A small window beside the IDE with the camera of a chosen module (the paper's snake carried a
@@ -23,14 +24,14 @@ public final class ModuleCameraWindow {
 
     private ModuleCameraWindow(Shell parent, java.util.function.Supplier<org.parpe.sim.snapshot.SimSnapshot> source, int[] ids) {
         shell = new Shell(parent, SWT.SHELL_TRIM | SWT.TOOL);
-        shell.setText("Module camera");
+        shell.setText(PanelMsg.CAMERA_TITLE.text());
         shell.setLayout(new GridLayout(1, false));
         Composite row = new Composite(shell, SWT.NONE);
         row.setLayout(new GridLayout(2, false));
-        new Label(row, SWT.NONE).setText("Camera on module:");
+        new Label(row, SWT.NONE).setText(PanelMsg.CAMERA_MODULE.text());
         id = new Spinner(row, SWT.BORDER);
         id.setValues(0, 0, 999, 0, 1, 10);
-        id.setToolTipText("The module whose front face carries the camera (the head of a snake is its last module)");
+        id.setToolTipText(PanelMsg.CAMERA_MODULE_TIP.text());
         view = new ModuleCameraView(shell);
         view.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
         view.setSource(source);

@@ -9,6 +9,7 @@ import org.eclipse.swt.graphics.Rectangle;
 import org.eclipse.swt.widgets.Canvas;
 import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Event;
+import org.parpe.gui.text.PanelMsg;
 import org.parpe.sim.snapshot.SimBody;
 import org.parpe.sim.snapshot.SimSnapshot;
 import org.parpe.sim.geom.Vec3;
@@ -32,7 +33,7 @@ public final class View3D {
     private Supplier<String> overlay = () -> "";
     private BuildLayer builder;
     private Point pressed;
-    private String emptyText = "No robot yet: open a script and press Run";
+    private String emptyText = PanelMsg.VIEW3D_EMPTY.text();
     private boolean track = true;
     private boolean labels;
     private boolean animating;
@@ -343,7 +344,7 @@ public final class View3D {
         if (jointDrag == null || !hovering) {
             return "";
         }
-        return hover >= 0 ? "Drag up or down: bend the joint of m" + hover : "Drag: turn the view around";
+        return hover >= 0 ? PanelMsg.VIEW3D_BEND.text(hover) : PanelMsg.VIEW3D_TURN.text();
     }
 
     /** The centre of modules {@code ids} in the last picture, or null when none is drawn. */
@@ -473,7 +474,7 @@ public final class View3D {
         double d = distanceFromStart();
         String text = snap == null ? emptyText : overlay.get();
         return snap != null && track && !Double.isNaN(d)
-                ? text + String.format(java.util.Locale.ROOT, "%s%.2f m from the start", text.isEmpty() ? "" : "   ", d) : text;
+                ? text + (text.isEmpty() ? "" : "   ") + PanelMsg.VIEW3D_FROM_START.text(String.format(java.util.Locale.ROOT, "%.2f", d)) : text;
     }
 
     /**

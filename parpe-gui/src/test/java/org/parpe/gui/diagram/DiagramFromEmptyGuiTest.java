@@ -59,7 +59,7 @@ class DiagramFromEmptyGuiTest {
         }
         assertEquals(Integer.toString(modules), d.pane().fields().get("modules").getText());
         assertEquals(empty, d.text(), "the − and + buttons change the form, not the text");
-        d.press(Projection.START, "group", group);
+        d.press(Projection.START.text(), "group", group);
         assertTrue(d.text().startsWith(empty.strip()), "the declaration and comments stay:\n" + d.text());
         assertTrue(d.text().contains("<" + group + " elements=\"0.." + (modules - 1) + "\"/>"), d.text());
     }
@@ -105,7 +105,7 @@ class DiagramFromEmptyGuiTest {
         for (View v : View.values()) {
             d.show(v, null);
             assertTrue(d.pane().message().startsWith("The file is empty. Start a robot"), v + ": " + d.pane().message());
-            assertTrue(d.pane().actions().containsKey(Projection.START), v + ": " + d.pane().actions().keySet());
+            assertTrue(d.pane().actions().containsKey(Projection.START.text()), v + ": " + d.pane().actions().keySet());
         }
         d.show(View.PROGRAM, null);
         // what a student sees first: the beginner palette (the tests share one window, in any order)
@@ -119,7 +119,7 @@ class DiagramFromEmptyGuiTest {
         assertTrue(d.pane().message().startsWith("The file is empty: start a robot first"), d.pane().message());
         assertEquals("<?xml version=\"1.0\"?>\n<!-- my first robot -->\n", d.text(), "a refused item writes nothing");
         d.clickAside();
-        assertTrue(d.pane().actions().containsKey(Projection.START), "a click on the empty drawing brings the start back");
+        assertTrue(d.pane().actions().containsKey(Projection.START.text()), "a click on the empty drawing brings the start back");
         d.pane().palette().full(false);
     }
 

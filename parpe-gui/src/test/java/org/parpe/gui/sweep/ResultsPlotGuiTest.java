@@ -50,13 +50,13 @@ class ResultsPlotGuiTest {
         ChartView chart = plot.chart();
         Gui.pump(() -> !chart.drawn().isEmpty(), "the plot to be painted", 10_000);
         List<ChartView.Drawn> drawn = chart.drawn();
-        ChartView.Drawn fell = drawn.stream().filter(d -> d.name().equals(ResultsPlot.FELL)).findFirst().orElseThrow();
+        ChartView.Drawn fell = drawn.stream().filter(d -> d.name().equals(ResultsPlot.FELL.text())).findFirst().orElseThrow();
         assertTrue(fell.points() && fell.hollow(), "rings");
         assertEquals(PlotStyle.FELL, fell.rgb());
-        ChartView.Drawn runs = drawn.stream().filter(d -> d.name().equals(ResultsPlot.RUNS)).findFirst().orElseThrow();
+        ChartView.Drawn runs = drawn.stream().filter(d -> d.name().equals(ResultsPlot.RUNS.text())).findFirst().orElseThrow();
         assertFalse(runs.hollow());
         assertEquals(PlotStyle.OTHER_RUN, runs.rgb());
-        ChartView.Drawn best = drawn.stream().filter(d -> d.name().equals(ResultsPlot.BEST)).findFirst().orElseThrow();
+        ChartView.Drawn best = drawn.stream().filter(d -> d.name().equals(ResultsPlot.BEST.text())).findFirst().orElseThrow();
         assertFalse(best.points() || best.dashed());
         assertEquals(PlotStyle.BEST, best.rgb());
     }

@@ -1,0 +1,111 @@
+package org.parpe.gui.text;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Set;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.parpe.core.text.BundleCheck;
+import org.parpe.core.text.Lang;
+
+/**
+ * The translators' check of the IDE's panels (issue 38: "every bundle has every key; no unused
+ * keys"): the bundle {@code Panels} of {@link PanelMsg} in every language, every key used, and no
+ * English prose left in the code of the panels' packages. Run it with
+ * {@code mvn -B -o -pl parpe-gui -am test -Dtest=PanelTextTest -Dsurefire.failIfNoSpecifiedTests=false}.
+ */
+class PanelTextTest {
+    private static final Path MAIN = Path.of("src/main/java/org/parpe/gui");
+
+    /** The packages whose texts are {@link PanelMsg}'s. */
+    private static final List<String> PACKAGES = List.of("pose", "diagram", "robot", "sweep", "panels", "grid", "view3d");
+
+    /**
+     * Literals of those packages that read as prose but are no text of the IDE: what the Pose panel
+     * writes into a PARSL file (comments and the recording's origin, part of the file), the edit
+     * row's name of its state list (an input name like the attributes beside it), the engine's
+     * option names the sweep dialog rewrites into its own words, what a crash file (English, for the
+     * bug report) says PARPE was doing, and a fault of PARPE's own.
+     */
+    private static final Set<String> ALLOWED = Set.of("playback in the Pose panel", "recorded in the PARPE IDE's Pose panel from ",
+            " poses of group ", ", recorded in the Pose panel -->\\n", "add state", "the budget", "the number of searches",
+            "--random COUNT", "a random sweep", "the random count", "runs per combination", "give at least one --vary NAME=A..B",
+            "tick Vary", "running a sweep", "the span ", " lies outside a document of ", "a file dialog needs a title");
+
+    @Test
+    void everyBundleHasEveryKeyNoOtherAndTheEnglishPlaceholders() {
+        List<String> problems = BundleCheck.problems(PanelMsg.BUNDLE, List.of(PanelMsg.values()));
+        assertEquals(List.of(), problems, String.join("\n", problems));
+    }
+
+    @Test
+    void everyKeyIsUsedByTheCode() {
+        // PanelMsg's own code after its constants counts (ORDINAL is used there)
+        String own = read(MAIN.resolve("text/PanelMsg.java"));
+        String code = sources().filter(p -> !p.endsWith("text/PanelMsg.java")).map(PanelTextTest::read)
+                .reduce(own.substring(own.indexOf("String BUNDLE")), String::concat);
+        List<String> unused = new ArrayList<>();
+        for (PanelMsg m : PanelMsg.values()) {
+            if (!Pattern.compile("\\b" + m.name() + "\\b").matcher(code).find()) {
+                unused.add(m.name());
+            }
+        }
+        assertEquals(List.of(), unused, "keys no code uses");
+    }
+
+    /** A literal of two words in the panels' code is a text that bypasses the bundle. */
+    @Test
+    void panelsCodeHasNoProseLiterals() {
+        List<String> found = new ArrayList<>();
+        sources().filter(p -> PACKAGES.contains(MAIN.relativize(p).getName(0).toString())).forEach(p -> {
+            String text = read(p).replaceAll("(?s)/\\*.*?\\*/", "").replaceAll("(?m)//.*$", "");
+            Matcher m = Pattern.compile("\"((?:[^\"\\\\\\n]|\\\\.)*)\"").matcher(text);
+            while (m.find()) {
+                if (!ALLOWED.contains(m.group(1)) && Pattern.compile("[A-Za-z]{2,}[ ,;:]+[A-Za-z]{2,}").matcher(m.group(1)).find()) {
+                    found.add(MAIN.relativize(p) + ": \"" + m.group(1) + "\"");
+                }
+            }
+        });
+        assertEquals(List.of(), found, "user-visible text outside the bundle (add a key to PanelMsg)");
+    }
+
+    /** English counts in words as the loader's messages do; the other languages put the number in their pattern. */
+    @Test
+    void ordinalsReadAsEachLanguageCounts() {
+        try {
+            assertEquals(List.of("first", "second", "11th"), List.of(PanelMsg.ordinal(0), PanelMsg.ordinal(1), PanelMsg.ordinal(10)));
+            Lang.use(Locale.GERMAN);
+            assertEquals(List.of("1.", "11."), List.of(PanelMsg.ordinal(0), PanelMsg.ordinal(10)));
+            assertEquals("die 2. Zeile von wave", PanelMsg.DIAGRAM_ROW_TITLE.text(PanelMsg.ordinal(1), "wave"));
+            Lang.use(Locale.JAPANESE);
+            assertEquals("wave の 2 番目の行", PanelMsg.DIAGRAM_ROW_TITLE.text(PanelMsg.ordinal(1), "wave"));
+        } finally {
+            Lang.use(Locale.ENGLISH);
+        }
+    }
+
+    private static Stream<Path> sources() {
+        try (Stream<Path> s = Files.walk(MAIN)) {
+            return s.filter(p -> p.toString().endsWith(".java")).toList().stream();
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    private static String read(Path p) {
+        try {
+            return Files.readString(p);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+}
