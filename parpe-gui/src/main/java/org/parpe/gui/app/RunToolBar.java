@@ -48,6 +48,7 @@ public final class RunToolBar {
         for (Speed s : Speed.values()) {
             speed.add(s.label());
         }
+        fitItems(speed);
         speed.select(index(Speed.values(), prefs.get("run.speed", Speed.REAL_TIME.name()), Speed::name));
         speed.addListener(SWT.Selection, e -> {
             actions.controller().setSpeed(speed());
@@ -57,6 +58,7 @@ public final class RunToolBar {
         for (RunOn t : RunOn.values()) {
             target.add(t.label());
         }
+        fitItems(target);
         // Every session starts on the simulator; each file keeps its own target (RunChoices).
         target.select(RunOn.SIMULATOR.ordinal());
         target.setToolTipText("Where this file runs: the simulator, the robot on the serial port, or both"
@@ -131,6 +133,14 @@ public final class RunToolBar {
         gd.widthHint = width;
         c.setLayoutData(gd);
         return c;
+    }
+
+    /** A combo at least as wide as its longest item (a longer language's), else at its width. */
+    private static void fitItems(Combo c) {
+        GridData gd = (GridData) c.getLayoutData();
+        if (c.computeSize(SWT.DEFAULT, SWT.DEFAULT).x > c.computeSize(gd.widthHint, SWT.DEFAULT).x) {
+            gd.widthHint = SWT.DEFAULT;
+        }
     }
 
     private void updatePort() {

@@ -7,8 +7,6 @@ import org.eclipse.jface.text.BadLocationException;
 import org.eclipse.jface.text.IDocument;
 import org.eclipse.jface.window.Window;
 import org.eclipse.swt.SWT;
-import org.eclipse.swt.layout.GridData;
-import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
@@ -41,9 +39,7 @@ final class PoseOutput {
     PoseOutput(Composite parent, PoseHost host, PosePanel panel) {
         this.host = host;
         this.panel = panel;
-        Composite row = new Composite(parent, SWT.NONE);
-        row.setLayout(new GridLayout(7, false));
-        row.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        Composite row = org.parpe.gui.panels.WrapRow.of(parent);
         new Label(row, SWT.NONE).setText("Play at");
         rate = new Combo(row, SWT.READ_ONLY);
         for (double r : RATES) {
@@ -62,8 +58,7 @@ final class PoseOutput {
         target.select(0);
         button(row, "Play", "Play the poses as PARSL runs them (interpolated in joint space)", this::play);
         button(row, "Stop", "Stop the playback", host::stop);
-        row = new Composite(parent, SWT.NONE);
-        row.setLayout(new GridLayout(2, false));
+        row = org.parpe.gui.panels.WrapRow.of(parent);
         button(row, "Save recording\u2026", "Save the poses as a PARSL recording (a gait table and a behavior that plays it)",
                 this::saveAs);
         button(row, "Use on another group\u2026",

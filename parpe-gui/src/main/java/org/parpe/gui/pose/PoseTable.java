@@ -56,9 +56,7 @@ final class PoseTable {
         column("after (s)", 70);
         column("joint angles (\u00b0)", 220);
         table.addListener(SWT.Selection, e -> rowSelected());
-        Composite buttons = new Composite(box, SWT.NONE);
-        buttons.setLayout(new GridLayout(6, false));
-        buttons.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        Composite buttons = org.parpe.gui.panels.WrapRow.of(box);
         button(buttons, "Up", "Move the selected pose earlier", i -> select(list.move(i, -1)));
         button(buttons, "Down", "Move the selected pose later", i -> select(list.move(i, 1)));
         button(buttons, "Duplicate", "Insert a copy of the selected pose after it", i -> select(list.duplicate(i)));
