@@ -160,17 +160,37 @@ class LanguageScreensGuiTest {
         for (int i = 0; i < items.size(); i++) {
             MenuItem it = items.get(i);
             String name = it.getText().split("\t")[0].replace("&", "");
-            open(it, name, dir.resolve("dialog-" + i + "-" + slug(name) + "-" + tag + ".png"), problems);
+            open(() -> it.notifyListeners(SWT.Selection, new Event()), name,
+                    dir.resolve("dialog-" + i + "-" + slug(name) + "-" + tag + ".png"), problems);
         }
-        return items.size();
+        return items.size() + windowsOfPanes(dir, tag, problems);
     }
 
     /**
-     * Chooses {@code item} and checks the window it opens, then closes it. A modal dialog blocks
+     * The dialogs a pane opens: the grid's Wave… (the one button of its bar that ends in "…"),
+     * the 3D view's module camera, and the parameters asked before a run of lesson 7.
+     */
+    private int windowsOfPanes(Path dir, String tag, Map<String, String> problems) throws Exception {
+        org.eclipse.swt.widgets.Button wave = Arrays.stream(ide.grid().toolBar().getChildren())
+                .filter(c -> c instanceof org.eclipse.swt.widgets.Button b && b.getText().endsWith("\u2026"))
+                .map(c -> (org.eclipse.swt.widgets.Button) c).findFirst()
+                .orElseThrow(() -> new AssertionError("the grid's bar has no button ending in \u2026 (Wave\u2026)"));
+        open(() -> wave.notifyListeners(SWT.Selection, new Event()), wave.getText(),
+                dir.resolve("pane-wave-" + tag + ".png"), problems);
+        open(ide::openModuleCamera, "module camera", dir.resolve("pane-camera-" + tag + ".png"), problems);
+        var lesson7 = org.parpe.core.load.ScriptLoader.load(Gui.example("tutorial/07-parameters-snake.xml"), Map.of());
+        assertTrue(lesson7.ok() && !lesson7.program().parameters().isEmpty(), "lesson 7 has parameters");
+        open(() -> new org.parpe.gui.panels.ParametersDialog(ide.shell(), lesson7.program().parameters(), Map.of()).open(),
+                "parameters", dir.resolve("pane-parameters-" + tag + ".png"), problems);
+        return 3;
+    }
+
+    /**
+     * Runs {@code trigger} (chooses a menu item, presses a button) and checks the window it opens, then closes it. A modal dialog blocks
      * in its own event loop, so the check runs from a timer inside that loop. An item that opens
      * no window (the tutorial docked beside the outline) is checked in the main window.
      */
-    private void open(MenuItem item, String name, Path png, Map<String, String> problems) throws Exception {
+    private void open(Runnable trigger, String name, Path png, Map<String, String> problems) throws Exception {
         Display d = ide.shell().getDisplay();
         Set<Shell> before = Set.of(d.getShells());
         long until = System.currentTimeMillis() + 5_000;
@@ -188,6 +208,8 @@ class LanguageScreensGuiTest {
                     d.timerExec(100, poll[0]);
                     return;
                 } else {
+                    Gui.settle();
+                    Gui.settle();
                     check(ide.shell(), png, name, problems);
                 }
             } catch (Exception e) {
@@ -196,7 +218,7 @@ class LanguageScreensGuiTest {
             done[0] = true;
         };
         d.timerExec(100, poll[0]);
-        item.notifyListeners(SWT.Selection, new Event());
+        trigger.run();
         Gui.pump(() -> done[0], name + " to open and close");
         if (failed[0] != null) {
             throw failed[0];
