@@ -137,7 +137,9 @@ public final class Main implements Runnable {
 
     private static int executeIn(String[] args, PrintStream out, PrintStream err) {
         CommandLine cl = new CommandLine(new Main());
-        if (!Lang.current().equals(Locale.ENGLISH)) {
+        // picocli's help is written in the annotations (English) and translated by Help_*.properties;
+        // the pseudo-language has no file of its own there, so its help is the English one
+        if (!Lang.current().equals(Locale.ENGLISH) && !Lang.isPseudo(Lang.current())) {
             cl.setResourceBundle(Message.bundle(HELP, Lang.current()));
         }
         cl.setOut(new PrintWriter(out, true, terminal));

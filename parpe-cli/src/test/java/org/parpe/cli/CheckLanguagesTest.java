@@ -89,6 +89,26 @@ class CheckLanguagesTest {
         assertTrue(parpe(Map.of("LANG", "de_DE.UTF-8"), "--lang=ja", "check", file).err().contains("状態「donw」"));
     }
 
+    /** {@code --lang qps}, the testers' pseudo-language (docs/decisions.md): same places, English messages accented. */
+    @Test
+    void thePseudoLanguageKeepsThePlacesAndShowsEveryMessageBracketed() throws Exception {
+        String file = mistakes();
+        List<String[]> english = located(parpe(Map.of(), "check", file, "--lang", "en").err());
+        Result qps = parpe(Map.of(), "check", file, "--lang", "qps");
+        assertEquals(1, qps.code(), qps.err());
+        List<String[]> found = located(qps.err());
+        assertEquals(english.size(), found.size(), qps.err());
+        for (int i = 0; i < found.size(); i++) {
+            assertEquals(english.get(i)[0], found.get(i)[0], "the place and severity of line " + i);
+            assertTrue(found.get(i)[1].startsWith("[") && found.get(i)[1].endsWith("]"), found.get(i)[1]);
+        }
+        assertTrue(qps.err().contains("štåté 'donw' îš ñöt đéfîñéđ"), qps.err());
+        // picocli's help has no pseudo file: English, and no failure
+        Result help = parpe(Map.of(), "check", "--help", "--lang", "qps");
+        assertEquals(0, help.code(), help.err());
+        assertTrue(help.out().startsWith("Usage: parpe check"), help.out());
+    }
+
     @Test
     void anUnknownLanguageIsAUsageErrorInTheEnvironmentsLanguage() {
         Result r = parpe(Map.of("LANG", "de_DE.UTF-8"), "check", "x.xml", "--lang", "fr");

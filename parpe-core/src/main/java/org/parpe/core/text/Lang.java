@@ -15,6 +15,13 @@ public final class Lang {
     public static final List<Locale> SUPPORTED = List.of(Locale.ENGLISH, Locale.GERMAN,
             Locale.forLanguageTag("es"), Locale.JAPANESE);
 
+    /**
+     * The pseudo-language {@code qps} ({@link Pseudo}): English made longer and accented, to test
+     * layouts. Chosen only by {@code --lang qps}, never by the environment, and not one of
+     * {@link #SUPPORTED} (a student's language list does not offer it).
+     */
+    public static final Locale PSEUDO = Locale.forLanguageTag("qps");
+
     /** The environment variables that name a language, strongest first (POSIX). */
     public static final List<String> VARIABLES = List.of("LC_ALL", "LC_MESSAGES", "LANG");
 
@@ -28,17 +35,25 @@ public final class Lang {
         return current;
     }
 
-    /** Makes {@code locale} (one of {@link #SUPPORTED}) the language of every later text. */
+    /** Makes {@code locale} (one of {@link #SUPPORTED}, or {@link #PSEUDO}) the language of every later text. */
     public static void use(Locale locale) {
-        current = supported(locale.getLanguage()) == null ? Locale.ENGLISH : supported(locale.getLanguage());
+        Locale l = isPseudo(locale) ? PSEUDO : supported(locale.getLanguage());
+        current = l == null ? Locale.ENGLISH : l;
+    }
+
+    /** Whether {@code locale} is the pseudo-language {@link #PSEUDO}. */
+    public static boolean isPseudo(Locale locale) {
+        return PSEUDO.getLanguage().equals(locale.getLanguage());
     }
 
     /**
      * The language of a code given by the user ({@code de}, {@code de_DE}, {@code ja-JP}), or
-     * {@code null} when PARPE does not speak it.
+     * {@code null} when PARPE does not speak it. {@code qps} (also {@code qps-ploc}) is
+     * {@link #PSEUDO}.
      */
     public static Locale parse(String code) {
-        return supported(language(code));
+        String language = language(code);
+        return language.equals(PSEUDO.getLanguage()) ? PSEUDO : supported(language);
     }
 
     /**

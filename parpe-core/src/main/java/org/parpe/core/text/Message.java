@@ -66,8 +66,15 @@ public record Message(Key key, List<Object> args) {
         return bundle(key.bundle(), locale).getString(key.name());
     }
 
-    /** The bundle {@code base} in {@code locale}, falling back to English, not to the default locale. */
+    /**
+     * The bundle {@code base} in {@code locale}, falling back to English, not to the default
+     * locale; in the pseudo-language ({@link Lang#PSEUDO}) the English bundle seen through
+     * {@link Pseudo}.
+     */
     public static ResourceBundle bundle(String base, Locale locale) {
+        if (Lang.isPseudo(locale)) {
+            return Pseudo.bundle(bundle(base, Locale.ROOT));
+        }
         try {
             return ResourceBundle.getBundle(base, locale,
                     ResourceBundle.Control.getNoFallbackControl(ResourceBundle.Control.FORMAT_PROPERTIES));

@@ -5,7 +5,9 @@
  * missing key is a compile error. A {@link org.parpe.core.text.Message} is a key with its
  * arguments, formatted in the chosen language only when it is shown; {@link
  * org.parpe.core.text.Lang} chooses the language ({@code --lang}, then {@code LC_ALL},
- * {@code LC_MESSAGES}, {@code LANG}, else English) and holds it for the process.
+ * {@code LC_MESSAGES}, {@code LANG}, else English) and holds it for the process; {@link
+ * org.parpe.core.text.Pseudo} is the testers' pseudo-language {@code qps} (every text longer and
+ * accented, to find layouts that cut a translation off).
  *
  * <p>How to add a language: docs/cli.md, "Translating PARPE". Depends on no other package of
  * PARPE and on nothing but {@code java.util} and {@code java.text}.

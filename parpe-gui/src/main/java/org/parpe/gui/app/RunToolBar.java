@@ -134,10 +134,12 @@ public final class RunToolBar {
         return c;
     }
 
-    /** Widens {@code c} to its longest item, which is longer in some languages ("So schnell wie möglich"). */
+    /** A combo at least as wide as its longest item (a longer language's, e.g. "So schnell wie möglich"), else at its width. */
     private static void fitItems(Combo c) {
         GridData gd = (GridData) c.getLayoutData();
-        gd.widthHint = Math.max(gd.widthHint, c.computeSize(SWT.DEFAULT, SWT.DEFAULT).x);
+        if (c.computeSize(SWT.DEFAULT, SWT.DEFAULT).x > c.computeSize(gd.widthHint, SWT.DEFAULT).x) {
+            gd.widthHint = SWT.DEFAULT;
+        }
     }
 
     private void updatePort() {

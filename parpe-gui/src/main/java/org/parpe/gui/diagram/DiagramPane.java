@@ -166,14 +166,7 @@ public final class DiagramPane {
 
     /** A row of controls that wraps only when the tab is too narrow, with little margin. */
     static RowLayout row() {
-        RowLayout rl = new RowLayout(SWT.HORIZONTAL);
-        rl.center = true;
-        rl.marginTop = 0;
-        rl.marginBottom = 0;
-        rl.marginLeft = 0;
-        rl.marginRight = 0;
-        rl.spacing = 3;
-        return rl;
+        return org.parpe.gui.panels.WrapRow.layout();
     }
 
     

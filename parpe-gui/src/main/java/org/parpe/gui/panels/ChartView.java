@@ -133,7 +133,16 @@ public final class ChartView {
         legend.clear();
         int lineH = gc.getFontMetrics().getHeight();
         if (message != null || content == null) {
-            gc.drawText(message == null ? "" : message, lineH / 2, lineH / 2, true);
+            // wrapped at the chart's width: a longer language or the zoomed font would run past its edge
+            org.eclipse.swt.graphics.TextLayout text = new org.eclipse.swt.graphics.TextLayout(gc.getDevice());
+            try {
+                text.setFont(canvas.getFont());
+                text.setText(message == null ? "" : message);
+                text.setWidth(Math.max(1, area.width - lineH));
+                text.draw(gc, lineH / 2, lineH / 2);
+            } finally {
+                text.dispose();
+            }
             return;
         }
         int left = gc.textExtent("-0.0000").x + lineH / 2;

@@ -72,7 +72,8 @@ final class JointSliders {
             display(k);
         }
         rows.layout(true);
-        scroll.setMinSize(rows.computeSize(SWT.DEFAULT, SWT.DEFAULT));
+        // scrolls up and down only: sideways the sliders shrink to the pane, so names and values stay in sight
+        scroll.setMinHeight(rows.computeSize(SWT.DEFAULT, SWT.DEFAULT).y);
     }
 
     private void moved(int k) {

@@ -7,8 +7,6 @@ import org.eclipse.jface.text.BadLocationException;
 import org.eclipse.jface.text.IDocument;
 import org.eclipse.jface.window.Window;
 import org.eclipse.swt.SWT;
-import org.eclipse.swt.layout.GridData;
-import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
@@ -42,9 +40,7 @@ final class PoseOutput {
     PoseOutput(Composite parent, PoseHost host, PosePanel panel) {
         this.host = host;
         this.panel = panel;
-        Composite row = new Composite(parent, SWT.NONE);
-        row.setLayout(new GridLayout(7, false));
-        row.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        Composite row = org.parpe.gui.panels.WrapRow.of(parent);
         new Label(row, SWT.NONE).setText(PanelMsg.POSE_PLAY_AT.text());
         rate = new Combo(row, SWT.READ_ONLY);
         for (double r : RATES) {
@@ -63,8 +59,7 @@ final class PoseOutput {
         target.select(0);
         button(row, PanelMsg.POSE_PLAY.text(), PanelMsg.POSE_PLAY_TIP.text(), this::play);
         button(row, PanelMsg.POSE_STOP.text(), PanelMsg.POSE_STOP_TIP.text(), host::stop);
-        row = new Composite(parent, SWT.NONE);
-        row.setLayout(new GridLayout(2, false));
+        row = org.parpe.gui.panels.WrapRow.of(parent);
         button(row, PanelMsg.POSE_SAVE_RECORDING.text(), PanelMsg.POSE_SAVE_RECORDING_TIP.text(),
                 this::saveAs);
         button(row, PanelMsg.POSE_USE_ON_GROUP.text(),

@@ -71,13 +71,11 @@ public final class PosePanel {
         this.host = host;
         box = new Composite(parent, SWT.NONE);
         box.setLayout(new GridLayout(1, false));
-        Composite top = new Composite(box, SWT.NONE);
-        top.setLayout(new GridLayout(6, false));
-        top.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        Composite top = org.parpe.gui.panels.WrapRow.of(box);
         new Label(top, SWT.NONE).setText(PanelMsg.POSE_GROUP.text());
         groups = new Combo(top, SWT.READ_ONLY);
         groups.setToolTipText(PanelMsg.POSE_GROUP_TIP.text());
-        groups.setLayoutData(new GridData(110, SWT.DEFAULT));
+        groups.setLayoutData(new org.eclipse.swt.layout.RowData(110, SWT.DEFAULT));
         groups.addListener(SWT.Selection, e -> chooseGroup(groups.getText()));
         new Label(top, SWT.NONE).setText(PanelMsg.POSE_WITH.text());
         source = new Combo(top, SWT.READ_ONLY);
@@ -105,10 +103,13 @@ public final class PosePanel {
         right.setLayout(rl);
         sliders = new JointSliders(right, this::jointChanged);
         sliders.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true, 2, 1));
-        follow = new Button(right, SWT.CHECK);
+        // the two boxes wrap under each other where the pane is narrow (a long language, the Diagram tab beside it)
+        Composite checks = org.parpe.gui.panels.WrapRow.of(right);
+        ((GridData) checks.getLayoutData()).horizontalSpan = 2;
+        follow = new Button(checks, SWT.CHECK);
         follow.setText(PanelMsg.POSE_FOLLOW.text());
         follow.setToolTipText(PanelMsg.POSE_FOLLOW_TIP.text());
-        timed = new Button(right, SWT.CHECK);
+        timed = new Button(checks, SWT.CHECK);
         timed.setText(PanelMsg.POSE_REAL_TIME.text());
         timed.setToolTipText(PanelMsg.POSE_REAL_TIME_TIP.text());
         middle.setWeights(55, 45);

@@ -57,9 +57,7 @@ final class PoseTable {
         column(PanelMsg.POSE_COL_AFTER.text(), 70);
         column(PanelMsg.POSE_COL_ANGLES.text(), 220);
         table.addListener(SWT.Selection, e -> rowSelected());
-        Composite buttons = new Composite(box, SWT.NONE);
-        buttons.setLayout(new GridLayout(6, false));
-        buttons.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        Composite buttons = org.parpe.gui.panels.WrapRow.of(box);
         button(buttons, PanelMsg.POSE_UP.text(), PanelMsg.POSE_UP_TIP.text(), i -> select(list.move(i, -1)));
         button(buttons, PanelMsg.POSE_DOWN.text(), PanelMsg.POSE_DOWN_TIP.text(), i -> select(list.move(i, 1)));
         button(buttons, PanelMsg.POSE_DUPLICATE.text(), PanelMsg.POSE_DUPLICATE_TIP.text(), i -> select(list.duplicate(i)));

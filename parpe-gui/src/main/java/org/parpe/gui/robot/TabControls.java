@@ -143,6 +143,8 @@ final class TabControls {
         rl.center = true;
         rl.marginTop = 1;
         rl.marginBottom = 1;
+        rl.marginLeft = 0; // a line as wide as the row (a radio group at 200 %) is not cut by a margin
+        rl.marginRight = 0;
         rl.spacing = 4;
         c.setLayout(rl);
         c.setLayoutData(new GridData(SWT.FILL, SWT.TOP, true, false));

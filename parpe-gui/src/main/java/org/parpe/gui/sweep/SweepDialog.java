@@ -147,7 +147,9 @@ public final class SweepDialog {
     public static SweepDialog open(SweepHost host) {
         SweepDialog d = new SweepDialog(host);
         d.reload();
-        d.shell.setSize(1200, 900);
+        // 1200x900 where the screen has room; on a 1366x768 laptop no taller than the screen (it scrolled off its bottom)
+        org.eclipse.swt.graphics.Rectangle screen = host.shell().getMonitor().getClientArea();
+        d.shell.setSize(Math.min(1200, screen.width), Math.min(900, screen.height));
         d.shell.open();
         return d;
     }

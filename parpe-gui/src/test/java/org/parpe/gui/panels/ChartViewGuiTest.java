@@ -108,4 +108,48 @@ class ChartViewGuiTest {
         assertEquals(Theme.paper().getRGB(), corner, "the chart's background is the theme's text background (dark with a dark theme)");
         assertNotEquals(Theme.ink().getRGB(), corner, "text stands out from the paper");
     }
+
+    /**
+     * Issue 38: the chart's message was drawn on one line and ran past the chart's right edge in
+     * a narrow pane, at 200 % zoom or in a longer language. Now it wraps at the chart's width.
+     */
+    @Test
+    void aMessageWiderThanTheChartWrapsInsideIt() {
+        shell = new Shell(Gui.display());
+        shell.setLayout(new FillLayout());
+        shell.setSize(240, 300);
+        ChartView chart = new ChartView(shell, SWT.NONE);
+        shell.open();
+        chart.message("Run a script to see joint angles (dashed: commanded, solid: measured)");
+        Gui.settle();
+        GC gc = new GC(chart.control());
+        Image shot = new Image(shell.getDisplay(), chart.control().getSize().x, chart.control().getSize().y);
+        int lineH;
+        try {
+            gc.copyArea(shot, 0, 0);
+            lineH = gc.getFontMetrics().getHeight();
+        } finally {
+            gc.dispose();
+        }
+        ImageData data = shot.getImageData();
+        shot.dispose();
+        RGB paper = data.palette.getRGB(data.getPixel(1, 1));
+        int lines = 0;
+        boolean inLine = false;
+        int rightmostInk = 0;
+        for (int y = 0; y < data.height; y++) {
+            boolean ink = false;
+            for (int x = 0; x < data.width; x++) {
+                if (!data.palette.getRGB(data.getPixel(x, y)).equals(paper)) {
+                    ink = true;
+                    rightmostInk = Math.max(rightmostInk, x);
+                }
+            }
+            lines += ink && !inLine ? 1 : 0;
+            inLine = ink;
+        }
+        assertTrue(lines >= 3, "the message wraps onto several lines: " + lines);
+        assertTrue(rightmostInk < data.width - lineH / 4, "no text at the chart's right edge: ink at x = " + rightmostInk
+                + " of " + data.width);
+    }
 }
