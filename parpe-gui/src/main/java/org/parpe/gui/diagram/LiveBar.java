@@ -63,12 +63,13 @@ final class LiveBar {
         slider.setLayoutData(sd);
         slider.addListener(SWT.Selection, e -> scrubTo(slider.getSelection()));
         says = new Label(row, SWT.WRAP);
-        // one line, never narrower than a few words (a narrow tab wrapped it a syllable a line, issue 31),
-        // the same height whatever it says: the drawing under it does not move; the whole line is its tool tip
+        // never narrower than a few words (a narrow tab wrapped it a syllable a line, issue 31), two lines
+        // (a longer language's sentence wraps), the same height whatever it says: the drawing under it does
+        // not move; the whole text is its tool tip
         GridData sd2 = new GridData(SWT.FILL, SWT.CENTER, true, false);
         sd2.minimumWidth = 160;
         sd2.widthHint = 160;
-        sd2.heightHint = DiagramPane.lineHeight(says);
+        sd2.heightHint = 2 * DiagramPane.lineHeight(says);
         says.setLayoutData(sd2);
         update();
         row.getDisplay().timerExec(100, new Runnable() {

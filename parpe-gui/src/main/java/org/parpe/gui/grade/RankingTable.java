@@ -35,7 +35,8 @@ final class RankingTable {
         for (int i = 0; i < titles.length; i++) {
             TableColumn c = new TableColumn(table, i == 0 || (i >= 2 && i != 3 && i != 6 && i != 8) ? SWT.RIGHT : SWT.LEFT);
             c.setText(titles[i]);
-            c.setWidth(WIDTHS[i]);
+            c.pack(); // no rows yet: as wide as its title, which is longer in some languages
+            c.setWidth(Math.max(WIDTHS[i], c.getWidth()));
         }
     }
 

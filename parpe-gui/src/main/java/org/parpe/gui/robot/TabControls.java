@@ -193,7 +193,7 @@ final class TabControls {
         boolean empty = text.isEmpty();
         ((GridData) label.getLayoutData()).exclude = empty;
         label.setVisible(!empty);
-        root.layout(new Control[] {label});
+        relayout();
     }
 
     private static Button button(Composite parent, String text, String tip) {
@@ -267,7 +267,12 @@ final class TabControls {
         }
         int width = Math.max(50, root.getClientArea().width);
         Point want = rowsBox.computeSize(width, SWT.DEFAULT, true);
-        int most = (int) (root.getClientArea().height * ROWS_SHARE);
+        // the lines under the view keep their room first (a long language at 200 % wraps them to several lines)
+        int lines = 0;
+        for (Label l : new Label[] {fit, message}) {
+            lines += l.getVisible() ? l.computeSize(width, SWT.DEFAULT).y : 0;
+        }
+        int most = (int) (Math.max(0, root.getClientArea().height - lines) * ROWS_SHARE);
         boolean scrolls = want.y > most && most > 0;
         int inner = scrolls ? width - scroll.getVerticalBar().getSize().x : width;
         want = rowsBox.computeSize(inner, SWT.DEFAULT, true);

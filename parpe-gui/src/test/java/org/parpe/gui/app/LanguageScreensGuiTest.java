@@ -167,12 +167,12 @@ class LanguageScreensGuiTest {
     }
 
     /**
-     * The dialogs a pane opens: the grid's Wave… (the one button of its bar that ends in "…"),
+     * The dialogs a pane opens: the grid's Wave… (found by its text in the language shown),
      * the 3D view's module camera, and the parameters asked before a run of lesson 7.
      */
     private int windowsOfPanes(Path dir, String tag, Map<String, String> problems) throws Exception {
         org.eclipse.swt.widgets.Button wave = Arrays.stream(ide.grid().toolBar().getChildren())
-                .filter(c -> c instanceof org.eclipse.swt.widgets.Button b && b.getText().endsWith("\u2026"))
+                .filter(c -> c instanceof org.eclipse.swt.widgets.Button b && b.getText().equals(org.parpe.gui.text.PanelMsg.GRID_WAVE.text()))
                 .map(c -> (org.eclipse.swt.widgets.Button) c).findFirst()
                 .orElseThrow(() -> new AssertionError("the grid's bar has no button ending in \u2026 (Wave\u2026)"));
         open(() -> wave.notifyListeners(SWT.Selection, new Event()), wave.getText(),
