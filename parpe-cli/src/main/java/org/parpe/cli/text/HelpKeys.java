@@ -1,5 +1,6 @@
 package org.parpe.cli.text;
 
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -30,7 +31,7 @@ public final class HelpKeys {
     }
 
     private static List<String> keys() {
-        List<String> k = new java.util.ArrayList<>(List.of("usage.synopsisHeading", "usage.commandListHeading",
+        List<String> k = new ArrayList<>(List.of("usage.synopsisHeading", "usage.commandListHeading",
                 "help", "version", "lang", "parpe.usage.description"));
         for (int i = 0; i <= 6; i++) {
             k.add("parpe.usage.footer." + i);
@@ -49,6 +50,15 @@ public final class HelpKeys {
         o.put("robot", List.of("robot", "check", "kit", "out"));
         o.put("diagram", List.of("file", "view", "behavior", "automaton", "instance", "duration", "tick", "param", "out",
                 "width"));
+        List<String> simSweep = List.of("file", "sim", "duration", "tick", "param", "jobs", "seed", "world", "fall-tilt");
+        List<String> sweep = new ArrayList<>(List.of("vary", "random", "repeat", "out", "plot", "objective", "count-fallen",
+                "shard"));
+        sweep.addAll(simSweep);
+        o.put("sweep", sweep);
+        List<String> optimize = new ArrayList<>(List.of("objective", "budget", "starts", "max-tilt", "not-fallen", "out",
+                "force", "plot"));
+        optimize.addAll(simSweep);
+        o.put("optimize", optimize);
         return o;
     }
 }

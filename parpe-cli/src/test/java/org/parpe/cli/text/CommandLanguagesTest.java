@@ -77,11 +77,13 @@ class CommandLanguagesTest {
     }
 
     @Test
-    void theHelpOfRaceRobotAndDiagramIsTranslated() {
+    void theHelpOfRaceRobotDiagramSweepAndOptimizeIsTranslated() {
         assertHelp(parpe("race", "--help"), "PARSL scripts to race.");
         assertHelp(german("race", "--help"), "PARSL-Skripte, die gegeneinander antreten.");
         assertHelp(german("robot", "--help"), "Den Roboter zeichnen: DATEI.svg oder DATEI.png.");
         assertHelp(german("diagram", "--help"), "program, lanes, ring, phase oder gait (Vorgabe: program).");
+        assertHelp(german("sweep", "--help"), "Simulierte Sekunden je Lauf (Vorgabe 20).");
+        assertHelp(german("optimize", "--help"), "Höchstens so viele Simulationen (Vorgabe 500).");
     }
 
     /** {@code text} in the help printed (picocli wraps it at 80 columns: compared without the line breaks). */
