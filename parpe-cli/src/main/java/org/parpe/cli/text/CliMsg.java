@@ -90,7 +90,21 @@ public enum CliMsg implements Key {
     NO_SUCH_AUTOMATON,
     NO_AUTOMATA,
     INSTANCE_RANGE,
-    GROUP_IS_MACRO;
+    GROUP_IS_MACRO,
+
+    // sweep, optimize: their options' errors (SweepCommand, SimSweepOptions, OptimizeCommand)
+    RANDOM_AT_LEAST_ONE,
+    CANNOT_WRITE_OUT,
+    SHARD_SYNTAX,
+    SHARD_N_TOO_LARGE,
+    SHARD_K_RANGE,
+    SHARD_K_N,
+    BAD_OBJECTIVE,
+    SCORE_NEEDS_WORLD,
+    JOBS_RANGE,
+    FALL_TILT_RANGE,
+    BAD_PARAMS_ABOVE,
+    MAX_TILT_RANGE;
 
     /** The bundle of these keys. */
     public static final String BUNDLE = "org.parpe.cli.text.CliMessages";

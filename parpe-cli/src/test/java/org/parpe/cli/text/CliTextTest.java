@@ -131,7 +131,8 @@ class CliTextTest {
         for (String f : List.of("Main.java", "CheckCommand.java", "RunCommand.java", "options/Inputs.java", "options/ParamValues.java",
                 // (the Arduino sketch's options and checks are in parpe-serial now: core's MessagesTest scans them)
                 "options/ClockOptions.java", "terminal/Progress.java", "export/ExportCommand.java", "sim/SimOptions.java",
-                "sim/RaceCommand.java", "sim/RobotCommand.java", "diagram/DiagramCommand.java", "diagram/ScenePng.java")) {
+                "sim/RaceCommand.java", "sim/RobotCommand.java", "diagram/DiagramCommand.java", "diagram/ScenePng.java",
+                "sweep/SimSweepOptions.java")) {
             String text = withoutAnnotations(read(cli.resolve(f)).replaceAll("(?s)/\\*.*?\\*/", "").replaceAll("(?m)//.*$", ""));
             Matcher m = Pattern.compile("\"((?:[^\"\\\\\\n]|\\\\.)*)\"").matcher(text);
             while (m.find()) {

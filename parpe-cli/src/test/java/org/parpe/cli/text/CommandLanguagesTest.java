@@ -77,6 +77,16 @@ class CommandLanguagesTest {
     }
 
     @Test
+    void aSweepsOptionErrorIsInTheChosenLanguage() {
+        String[] args = {"sweep", "../examples/tutorial/07-parameters-snake.xml", "--vary", "amp=0..10", "--jobs", "0",
+            "--out", tmp.resolve("s.csv").toString()};
+        Result en = parpe(args);
+        Result de = german(args);
+        assertTrue(en.err().contains("parpe: --jobs must be within [1, 1024], got 0\n"), en.err());
+        assertTrue(de.err().contains("parpe: --jobs muss in [1, 1024] liegen, ist aber 0\n"), de.err());
+    }
+
+    @Test
     void theHelpOfRaceRobotDiagramSweepAndOptimizeIsTranslated() {
         assertHelp(parpe("race", "--help"), "PARSL scripts to race.");
         assertHelp(german("race", "--help"), "PARSL-Skripte, die gegeneinander antreten.");
