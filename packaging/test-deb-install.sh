@@ -3,8 +3,9 @@
 # (packaging/linux/deb-test-inside.sh): the install with only the declared dependencies and no
 # desktop-menu tree, parpe and parpe-ide on PATH, `parpe check` on every installed example and
 # lesson, a 2 s simulated run, the IDE on a lesson under an X server with a screenshot
-# (target/deb-test/ide.png), the first-use copy of the examples and lesson 11's optimize there,
-# the one menu entry and the .parsl-only file type, then a purge that leaves nothing behind.
+# (target/deb-test/ide.png), the IDE in German and Japanese by LANG (target/deb-test/ide-de.png,
+# ide-ja.png: its own menus must be in that language), the first-use copy of the examples and
+# lesson 11's optimize there, the one menu entry and the .parsl-only file type, then a purge that leaves nothing behind.
 # Needs root (or unprivileged user namespaces), mmdebstrap, Xvfb and Debian's mirror
 # (PARPE_DEBIAN_MIRROR, default http://deb.debian.org/debian). Builds the .deb with
 # packaging/dist.sh when target/dist has none. Everything it makes is under target/deb-test.
@@ -34,13 +35,16 @@ echo "test-deb-install: $(basename "$deb") into a fresh Debian 12 root from $mir
 TMPDIR=$out mmdebstrap --variant=apt --quiet \
     --customize-hook="upload '$deb' /tmp/parpe.deb" \
     --customize-hook="upload '$root/packaging/linux/deb-test-inside.sh' /tmp/inside.sh" \
-    --customize-hook="chroot \"\$1\" env DISPLAY=:$n sh /tmp/inside.sh > '$out/inside.log' 2>&1; echo \$? > '$out/inside.rc'; touch \"\$1/tmp/ide.png\"" \
+    --customize-hook="chroot \"\$1\" env DISPLAY=:$n sh /tmp/inside.sh > '$out/inside.log' 2>&1; echo \$? > '$out/inside.rc'; touch \"\$1/tmp/ide.png\" \"\$1/tmp/ide-de.png\" \"\$1/tmp/ide-ja.png\"" \
     --customize-hook="download /tmp/ide.png '$out/ide.png'" \
+    --customize-hook="download /tmp/ide-de.png '$out/ide-de.png'" \
+    --customize-hook="download /tmp/ide-ja.png '$out/ide-ja.png'" \
     bookworm "$out/root" "deb $mirror bookworm main" < /dev/null
 rm -rf "$out/root"
-grep -E '^(ok|FAIL|the \.deb)' "$out/inside.log" >&2
+grep -E '^(ok|FAIL|the \.deb|the IDE in)' "$out/inside.log" >&2
 if [ "$(cat "$out/inside.rc")" != 0 ]; then
     echo "test-deb-install: FAILED (the whole log: $out/inside.log)" >&2
     exit 1
 fi
-echo "test-deb-install: passed in $(( $(date +%s) - started )) s; the IDE's window: $out/ide.png" >&2
+echo "test-deb-install: passed in $(( $(date +%s) - started )) s; the IDE's window: $out/ide.png (German:" \
+    "$out/ide-de.png, Japanese: $out/ide-ja.png)" >&2

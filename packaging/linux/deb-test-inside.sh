@@ -74,6 +74,28 @@ as_student sh -c "cd /home/student/PARPE && parpe optimize examples/tutorial/10-
 [ -f /home/student/PARPE/examples/tutorial/10-race-snake-optimised.xml ] && ok "lesson 11's optimize wrote its script" \
     || fail "lesson 11's optimize wrote no script"
 
+# 5b. The IDE in the student's language (issue 38): with LANG=de_DE.UTF-8 and ja_JP.UTF-8 (the
+#     locales generated, and fonts-noto-cjk, which the .deb recommends, for the Japanese glyphs)
+#     it opens with its own menus in German and Japanese: their texts, written by the automated
+#     launch (-Dparpe.menus, Automation.MENUS), and a picture of each window.
+languages_from=$(date +%s)
+apt-get install -y -q --no-install-recommends locales fonts-noto-cjk > /tmp/apt-lang.log 2>&1 \
+    || { cat /tmp/apt-lang.log; fail "installing locales and fonts-noto-cjk"; }
+sed -i -E 's/^# *(de_DE\.UTF-8 UTF-8|ja_JP\.UTF-8 UTF-8)$/\1/' /etc/locale.gen
+locale-gen > /tmp/locale-gen.log 2>&1 || { cat /tmp/locale-gen.log; fail "locale-gen"; }
+for lang in de_DE.UTF-8:Datei ja_JP.UTF-8:ファイル; do
+    locale=${lang%%:*}; file_menu=${lang#*:}; code=${locale%%_*}
+    as_student env -u LC_ALL LANG="$locale" JAVA_TOOL_OPTIONS="-Dparpe.menus=/tmp/menus-$code.txt" timeout 180 \
+        parpe-ide $examples/tutorial/03-hello-snake.xml --screenshot /tmp/ide-$code.png --exit > /tmp/ide-$code.log 2>&1 \
+        || { cat /tmp/ide-$code.log; fail "parpe-ide with LANG=$locale"; }
+    first=$(head -n 1 /tmp/menus-$code.txt 2>/dev/null)
+    case "$first" in
+        "$file_menu"*) ok "with LANG=$locale the IDE's File menu reads '$first' (/tmp/ide-$code.png)" ;;
+        *) fail "with LANG=$locale the IDE's File menu reads '$first', expected '$file_menu' (menus: $(tr '\n' ' ' < /tmp/menus-$code.txt 2>/dev/null))" ;;
+    esac
+done
+echo "the IDE in German and Japanese took $(( $(date +%s) - languages_from )) s (with installing locales and fonts-noto-cjk)"
+
 # 6. The menu entry and the file types: one entry, .parsl only, never a default for XML.
 desktops=$(dpkg -L parpe | grep '^/usr/share/applications/.*\.desktop$')
 [ "$(echo "$desktops" | wc -l)" = 1 ] && ok "one menu entry: $desktops" || fail "menu entries: $desktops"

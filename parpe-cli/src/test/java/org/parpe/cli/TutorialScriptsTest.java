@@ -68,10 +68,12 @@ class TutorialScriptsTest {
     record Check(int code, String out, String err) {
     }
 
-    static Check check(Path file) {
+    static Check check(Path file, String... options) {
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         ByteArrayOutputStream err = new ByteArrayOutputStream();
-        int code = Main.execute(new String[] {"check", file.toString()}, new PrintStream(out, true, StandardCharsets.UTF_8),
+        List<String> args = new ArrayList<>(List.of("check", file.toString()));
+        args.addAll(List.of(options));
+        int code = Main.execute(args.toArray(String[]::new), new PrintStream(out, true, StandardCharsets.UTF_8),
                 new PrintStream(err, true, StandardCharsets.UTF_8));
         return new Check(code, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
     }
@@ -164,6 +166,32 @@ class TutorialScriptsTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("lessons")
     void theWhatWentWrongBoxShowsWhatCheckPrints(Path page) throws IOException {
+        whatWentWrong(page);
+    }
+
+    /** The translated lessons (issue 38): {@code docs/tutorial/LANG/NN-name.md}. */
+    static List<Path> translatedLessons() throws IOException {
+        List<Path> out = new ArrayList<>();
+        for (java.util.Locale l : org.parpe.core.text.Lang.SUPPORTED.subList(1, org.parpe.core.text.Lang.SUPPORTED.size())) {
+            Path dir = DOCS.resolve(l.getLanguage());
+            if (Files.isDirectory(dir)) {
+                try (Stream<Path> s = Files.list(dir)) {
+                    s.filter(p -> p.getFileName().toString().matches("\\d\\d-.*\\.md")).sorted().forEach(out::add);
+                }
+            }
+        }
+        return out;
+    }
+
+    /** A translated lesson's box shows what {@code parpe check --lang LANG} prints, in that language. */
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("translatedLessons")
+    void aTranslatedWhatWentWrongBoxShowsWhatCheckPrintsInItsLanguage(Path page) throws IOException {
+        assertTrue(Files.isRegularFile(DOCS.resolve(name(page))), name(page) + " translates no lesson of " + DOCS);
+        whatWentWrong(page, "--lang", page.getParent().getFileName().toString());
+    }
+
+    private void whatWentWrong(Path page, String... options) throws IOException {
         String text = Files.readString(page);
         Matcher edit = BREAK.matcher(text);
         assertTrue(edit.find(), name(page) + " has no <!-- what-went-wrong: replace `OLD` with `NEW` --> comment");
@@ -180,7 +208,7 @@ class TutorialScriptsTest {
         assertTrue(source.contains(edit.group(1)), name(original) + " no longer contains `" + edit.group(1) + "`");
         Path broken = tmp.resolve(original.getFileName());
         Files.writeString(broken, source.replaceFirst(Pattern.quote(edit.group(1)), Matcher.quoteReplacement(edit.group(2))));
-        Check c = check(broken);
+        Check c = check(broken, options);
         assertEquals(1, c.code(), "the broken copy should have errors:\n" + c.err());
         List<String> printed = c.err().lines().filter(l -> l.contains(": error: "))
                 .map(l -> l.substring(l.lastIndexOf(name(original)))).toList();

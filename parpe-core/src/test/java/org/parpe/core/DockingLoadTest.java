@@ -109,6 +109,10 @@ class DockingLoadTest {
         StimulusParser.StimulusException e = assertThrows(StimulusParser.StimulusException.class,
                 () -> StimulusParser.parse("s.txt", "# a module without the sensor\n1 $1_dock_0=2\n", r.program()));
         assertEquals("s.txt:2:1: error: module 1 has no dock sensor", e.getMessage());
+        // the problem keeps its key and place, so it is shown in the user's language (issue 38)
+        assertEquals(new org.parpe.core.diag.SourcePos("s.txt", 2, 1), e.diagnostic().pos());
+        assertEquals("Modul 1 hat keinen Sensor dock", e.diagnostic().text().format(java.util.Locale.GERMAN));
+        assertEquals("モジュール 1 には dock センサーがありません", e.diagnostic().text().format(java.util.Locale.JAPANESE));
         e = assertThrows(StimulusParser.StimulusException.class,
                 () -> StimulusParser.parse("s.txt", "1 $0_dock_3=2\n", r.program()));
         assertTrue(e.getMessage().startsWith("s.txt:1:1: error: '$0_dock_3' is not a sensor reading"), e.getMessage());

@@ -1,5 +1,6 @@
 package org.parpe.cli.diagram;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -47,7 +48,7 @@ public final class DiagramCommand implements Callable<Integer> {
     /** The views. */
     enum View { program, lanes, ring, phase, gait }
 
-    @Parameters(index = "0", paramLabel = "SCRIPT", description = "The PARSL script.")
+    @Parameters(index = "0", paramLabel = "SCRIPT", descriptionKey = "file", description = "The PARSL script.")
     Path file;
 
     @Option(names = "--view", paramLabel = "VIEW", defaultValue = "program",
@@ -94,20 +95,18 @@ public final class DiagramCommand implements Callable<Integer> {
         String lower = out.toLowerCase(Locale.ROOT);
         boolean png = lower.endsWith(".png");
         if (!png && !lower.endsWith(".svg")) {
-            throw new UsageException("--out must name a .svg or .png file, got '" + out + "'");
+            throw new UsageException(CliMsg.OUT_SVG_OR_PNG.text(out));
         }
         if (width != null && !png) {
-            throw new UsageException("--width is for a .png file; an SVG scales to any size by itself");
+            throw new UsageException(CliMsg.WIDTH_FOR_PNG.text());
         }
         if (width != null && (width < ScenePng.MIN_SIDE || width > ScenePng.MAX_WIDTH)) {
-            throw new UsageException("--width must be within [" + ScenePng.MIN_SIDE + ", " + ScenePng.MAX_WIDTH
-                    + "] pixels, got " + width);
+            throw new UsageException(CliMsg.WIDTH_RANGE.text(ScenePng.MIN_SIDE, ScenePng.MAX_WIDTH, width));
         }
         if (view == View.gait) {
             ClockOptions.check(tick, duration);
             if (duration / tick > MAX_GAIT_TICKS) {
-                throw new UsageException("--duration " + duration + " at --tick " + tick + " is more than "
-                        + MAX_GAIT_TICKS + " ticks, more than a gait diagram can show; draw a shorter time");
+                throw new UsageException(CliMsg.GAIT_TOO_LONG.text(duration, tick, MAX_GAIT_TICKS));
             }
         }
         Inputs.check(file);
@@ -128,8 +127,8 @@ public final class DiagramCommand implements Callable<Integer> {
             int w = width == null ? scene.width() : width;
             String tooLarge = ScenePng.tooLarge(scene, w);
             if (tooLarge != null) {
-                throw new UsageException("cannot draw the " + view + " diagram as --out file '" + out + "': " + tooLarge
-                        + (width == null ? "" : "; or give a smaller --width"));
+                throw new UsageException((width == null ? CliMsg.CANNOT_DRAW_DIAGRAM
+                        : CliMsg.CANNOT_DRAW_DIAGRAM_WIDTH).text(view, out, tooLarge));
             }
             target.write(o -> ImageIO.write(ScenePng.draw(scene, w), "png", o));
         } else {
@@ -143,7 +142,7 @@ public final class DiagramCommand implements Callable<Integer> {
         switch (view) {
             case program:
                 return Layouts.program(Diagrams.program(p).orElseThrow(
-                        () -> new UsageException(file + " has no <main>; draw --view lanes, ring or phase")));
+                        () -> new UsageException(CliMsg.DIAGRAM_NO_MAIN.text(file))));
             case lanes:
                 return Layouts.lanes(Diagrams.swimlanes(p, behavior(p)));
             case ring:
@@ -157,25 +156,25 @@ public final class DiagramCommand implements Callable<Integer> {
 
     private Behavior behavior(Program p) throws UsageException {
         if (behavior != null) {
-            return p.behavior(behavior).orElseThrow(() -> new UsageException("no behavior '" + behavior + "' in " + file
-                    + Names.suggest(behavior, p.behaviors().stream().map(Behavior::name).toList())));
+            return p.behavior(behavior).orElseThrow(() -> new UsageException(CliMsg.NO_SUCH_BEHAVIOR.text(behavior, file,
+                    Names.suggest(behavior, p.behaviors().stream().map(Behavior::name).toList()))));
         }
         if (p.main() != null && !p.main().entries().isEmpty()) {
             return p.main().entries().get(0).definition();
         }
         if (p.behaviors().isEmpty()) {
-            throw new UsageException(file + " has no behaviors");
+            throw new UsageException(CliMsg.NO_BEHAVIORS.text(file));
         }
         return p.behaviors().get(0);
     }
 
     private org.parpe.core.model.Automaton automaton(Program p) throws UsageException {
         if (automaton != null) {
-            return p.automaton(automaton).orElseThrow(() -> new UsageException("no automaton '" + automaton + "' in " + file
-                    + Names.suggest(automaton, p.automata().stream().map(a -> a.name()).toList())));
+            return p.automaton(automaton).orElseThrow(() -> new UsageException(CliMsg.NO_SUCH_AUTOMATON.text(automaton, file,
+                    Names.suggest(automaton, p.automata().stream().map(a -> a.name()).toList()))));
         }
         if (p.automata().isEmpty()) {
-            throw new UsageException(file + " has no automata");
+            throw new UsageException(CliMsg.NO_AUTOMATA.text(file));
         }
         return p.automata().get(0);
     }
@@ -184,12 +183,11 @@ public final class DiagramCommand implements Callable<Integer> {
         Behavior b = behavior(p);
         List<Instance> all = b.instances();
         if (instance < 0 || instance >= all.size()) {
-            throw new UsageException("--instance must be in 0.." + (all.size() - 1) + " for behavior '" + b.name()
-                    + "', got " + instance);
+            throw new UsageException(CliMsg.INSTANCE_RANGE.text(all.size() - 1, b.name(), instance));
         }
         Instance i = all.get(instance);
-        Group g = Diagrams.groupOf(p, b, i).orElseThrow(() -> new UsageException("the group of instance " + instance
-                + " of '" + b.name() + "' is the macro '" + i.groupRef().name() + "', which no <main> entry gives a value"));
+        Group g = Diagrams.groupOf(p, b, i).orElseThrow(() -> new UsageException(CliMsg.GROUP_IS_MACRO.text(instance,
+                b.name(), i.groupRef().name())));
         return Layouts.wheel(Diagrams.wheel(i, g));
     }
 }

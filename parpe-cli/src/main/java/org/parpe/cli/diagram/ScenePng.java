@@ -1,5 +1,6 @@
 package org.parpe.cli.diagram;
 
+import org.parpe.cli.text.CliMsg;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;
@@ -39,9 +40,7 @@ public final class ScenePng {
         if (width <= MAX_SIDE && height <= MAX_SIDE && pixels <= MAX_PIXELS) {
             return null;
         }
-        return "it would be " + width + " x " + height + " px, more than a PNG PARPE draws (at most "
-                + MAX_SIDE + " px a side and " + MAX_PIXELS + " pixels, " + (MAX_PIXELS * 4 >> 20) + " MiB in memory);"
-                + " write an .svg file, which is drawn exactly at any size";
+        return CliMsg.PNG_TOO_LARGE.text(width, height, MAX_SIDE, MAX_PIXELS, MAX_PIXELS * 4 >> 20);
     }
 
     /** The height of the scene drawn {@code width} pixels wide (at least 1). */

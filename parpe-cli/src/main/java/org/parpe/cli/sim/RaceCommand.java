@@ -1,5 +1,6 @@
 package org.parpe.cli.sim;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -35,7 +36,7 @@ import picocli.CommandLine.Spec;
         + " robot, and rank them by how far their robot's centre of mass went forwards (+x), or with --world by"
         + " the world's score.")
 public final class RaceCommand implements Callable<Integer> {
-    @Parameters(arity = "1..*", paramLabel = "FILE", description = "PARSL scripts to race.")
+    @Parameters(arity = "1..*", paramLabel = "FILE", descriptionKey = "files", description = "PARSL scripts to race.")
     List<Path> files = new ArrayList<>();
 
     @Option(names = "--sim", paramLabel = "ROBOT",
@@ -74,7 +75,7 @@ public final class RaceCommand implements Callable<Integer> {
                 duration = scene == null ? 20 : scene.timeLimit();
             }
             if (!(duration > 0)) {
-                throw new UsageException("--duration must be > 0 seconds, got " + duration);
+                throw new UsageException(CliMsg.DURATION_NOT_POSITIVE.text(duration));
             }
             ClockOptions.check(tick, duration);
             for (Path f : files) {
@@ -101,13 +102,13 @@ public final class RaceCommand implements Callable<Integer> {
             err.println(d.format());
         }
         if (r.program() == null || r.program().main() == null) {
-            return new Entry(file.toString(), "", null, r.program() == null ? "script errors" : "no <main>");
+            return new Entry(file.toString(), "", null, (r.program() == null ? CliMsg.SCRIPT_ERRORS : CliMsg.NO_MAIN).text());
         }
         String robot = sim != null ? sim : SimTarget.autoSpec(r.program());
         try (Simulator s = SimOptions.create(robot, r.program().moduleIds(), errStream, scene)) {
             RunOutcome outcome = SimRun.run(r.program(), s, duration, tick, d -> err.println(d.format()));
             if (outcome.status() == RunOutcome.Status.ERROR) {
-                return new Entry(file.toString(), robot, null, "run-time error");
+                return new Entry(file.toString(), robot, null, CliMsg.RUN_TIME_ERROR.text());
             }
             return new Entry(file.toString(), robot, s.metrics(), "");
         }
@@ -133,8 +134,9 @@ public final class RaceCommand implements Callable<Integer> {
         int width = Math.max(6, entries.stream().mapToInt(e -> e.script().length()).max().orElse(6));
         int robotWidth = Math.max(5, entries.stream().mapToInt(e -> e.robot().length()).max().orElse(5));
         String columns = "%-4s  %-" + width + "s  %-" + robotWidth + "s  %11s  %12s  %11s  %13s";
-        out.println(String.format(Locale.ROOT, columns, "rank", "script", "robot", "forward (m)", "distance (m)",
-                "speed (m/s)", "max tilt (°)") + (scored ? String.format(Locale.ROOT, "  %10s  %s", "score", "parts") : ""));
+        out.println(String.format(Locale.ROOT, columns, CliMsg.RANK.text(), CliMsg.SCRIPT.text(), CliMsg.ROBOT.text(),
+                CliMsg.FORWARD_M.text(), CliMsg.DISTANCE_M.text(), CliMsg.SPEED_MPS.text(), CliMsg.MAX_TILT.text())
+                + (scored ? String.format(Locale.ROOT, "  %10s  %s", CliMsg.SCORE.text(), CliMsg.PARTS.text()) : ""));
         int rank = 0;
         for (int i = 0; i < entries.size(); i++) {
             Entry e = entries.get(i);

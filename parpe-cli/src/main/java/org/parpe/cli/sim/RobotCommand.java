@@ -1,5 +1,6 @@
 package org.parpe.cli.sim;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -36,7 +37,7 @@ import picocli.CommandLine.Model.CommandSpec;
         + " FILE:LINE:COL), against a class's kit with --kit, and draw it for a worksheet (top, front and side views"
         + " and a parts list) with --out.")
 public final class RobotCommand implements Callable<Integer> {
-    @Parameters(index = "0", paramLabel = "CONFIG", description = "The robot, as --sim takes it: a configuration file"
+    @Parameters(index = "0", paramLabel = "CONFIG", descriptionKey = "robot", description = "The robot, as --sim takes it: a configuration file"
             + " CONFIG.xml or a generator such as snake:n=12, centipede, wheel, loop, humanoid.")
     String robot;
 
@@ -57,10 +58,10 @@ public final class RobotCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         String lower = out == null ? "" : out.toLowerCase(Locale.ROOT);
         if (out != null && !lower.endsWith(".png") && !lower.endsWith(".svg")) {
-            throw new UsageException("--out must name a .svg or .png file, got '" + out + "'");
+            throw new UsageException(CliMsg.OUT_SVG_OR_PNG.text(out));
         }
         if (check && out != null) {
-            throw new UsageException("--check only checks; leave it out to draw the robot with --out");
+            throw new UsageException(CliMsg.CHECK_ONLY.text());
         }
         List<Path> inputs = new ArrayList<>();
         if (kit != null) {
@@ -82,25 +83,25 @@ public final class RobotCommand implements Callable<Integer> {
         }
         diags.all().forEach(d -> err.println(d.format()));
         if (diags.hasErrors()) {
-            err.println(robot + ": " + diags.errorCount() + (diags.errorCount() == 1 ? " error" : " errors"));
+            err.println(robot + ": " + (diags.errorCount() == 1 ? CliMsg.ONE_ERROR : CliMsg.N_ERRORS).text(diags.errorCount()));
             return 1;
         }
         if (target == null) {
-            spec.commandLine().getOut().println(robot + ": ok (" + RobotSheet.summary(c.parts()) + ")"
-                    + (k == null ? "" : "; the kit keeps " + left(k.left(c))));
+            spec.commandLine().getOut().println(robot + ": " + (k == null ? CliMsg.ROBOT_OK.text(RobotSheet.summary(c.parts()))
+                    : CliMsg.ROBOT_OK_KIT.text(RobotSheet.summary(c.parts()), left(k.left(c)))));
             return 0;
         }
         Scene scene = RobotSheet.of(c, a);
         if (lower.endsWith(".png")) {
             String tooLarge = ScenePng.tooLarge(scene, scene.width());
             if (tooLarge != null) {
-                throw new UsageException("cannot draw the robot as --out file '" + out + "': " + tooLarge);
+                throw new UsageException(CliMsg.CANNOT_DRAW_ROBOT.text(out, tooLarge));
             }
             target.write(o -> ImageIO.write(ScenePng.draw(scene, scene.width()), "png", o));
         } else {
             target.write(scene.svg());
         }
-        spec.commandLine().getOut().println("wrote " + out);
+        spec.commandLine().getOut().println(CliMsg.WROTE.text(out));
         return 0;
     }
 

@@ -1,5 +1,6 @@
 package org.parpe.cli.sim;
 
+import org.parpe.cli.text.CliMsg;
 import org.parpe.core.plot.AngleRecorder;
 import java.io.IOException;
 import java.io.PrintStream;
@@ -65,8 +66,7 @@ public class SimOptions {
         try {
             Path declared = WorldReader.declaredBy(script, Files.readString(script));
             if (declared != null) {
-                err.println(script + ": note: the script is written for the world " + declared
-                        + "; --world " + declared + " runs it there");
+                err.println(script + ": note: " + CliMsg.WRITTEN_FOR_WORLD.text(declared));
             }
         } catch (IOException | java.io.UncheckedIOException e) {
             // the script was read a moment ago; a file gone since loses only this note
@@ -85,7 +85,7 @@ public class SimOptions {
     public void configure(Run.Builder run, PrintStream err) throws UsageException, TargetException {
         if (sim == null) {
             if (metrics != null || plot != null || realtime || world != null) {
-                throw new UsageException("--metrics, --plot, --realtime and --world need --sim");
+                throw new UsageException(CliMsg.NEEDS_SIM.text());
             }
             return;
         }
@@ -119,7 +119,7 @@ public class SimOptions {
         World w = WorldReader.read(file, found);
         found.all().forEach(d -> err.println(d.format()));
         if (w == null) {
-            throw new UsageException("the world file '" + file + "' has errors (above)");
+            throw new UsageException(CliMsg.WORLD_HAS_ERRORS.text(file));
         }
         return w;
     }
@@ -133,7 +133,7 @@ public class SimOptions {
             return SimTarget.create(spec, moduleIds, d -> err.println(d.format()), inWorld);
         } catch (TargetException e) {
             e.diagnostics().forEach(d -> err.println(d.format()));
-            throw new UsageException(e.getMessage() + " above");
+            throw new UsageException(CliMsg.SEE_ABOVE.text(e.getMessage()));
         }
     }
 

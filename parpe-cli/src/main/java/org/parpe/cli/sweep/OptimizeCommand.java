@@ -1,5 +1,6 @@
 package org.parpe.cli.sweep;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -70,7 +71,7 @@ public final class OptimizeCommand extends SimSweepCommand {
     int execute(PrintWriter stdout, PrintWriter err, Cancellation cancel) throws Exception {
         Objective goal = options.objective(objective);
         if (maxTilt != null && !(maxTilt >= 0 && maxTilt <= 180)) {
-            throw new UsageException("--max-tilt must be within [0, 180] degrees, got " + maxTilt);
+            throw new UsageException(CliMsg.MAX_TILT_RANGE.text(maxTilt));
         }
         Evaluator ev = options.evaluator(file, err);
         if (ev == null) {

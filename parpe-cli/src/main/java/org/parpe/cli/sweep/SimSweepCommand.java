@@ -18,7 +18,7 @@ import picocli.CommandLine.Spec;
  * one line and exit code 2, as a {@link org.parpe.cli.options.UsageException} is ({@link org.parpe.cli.Main#failed}).
  */
 abstract class SimSweepCommand implements Callable<Integer> {
-    @Parameters(index = "0", paramLabel = "FILE", description = "The PARSL script.")
+    @Parameters(index = "0", paramLabel = "FILE", descriptionKey = "file", description = "The PARSL script.")
     Path file;
 
     @Mixin

@@ -1,5 +1,6 @@
 package org.parpe.cli.sweep;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
@@ -68,10 +69,10 @@ public class SimSweepOptions {
     static Objective objective(String id, boolean scored) throws UsageException {
         Objective o = Objective.byId(id);
         if (o == null) {
-            throw new UsageException("--objective must be one of " + Objective.ids() + ", got '" + id + "'");
+            throw new UsageException(CliMsg.BAD_OBJECTIVE.text(Objective.ids(), id));
         }
         if (o == Objective.SCORE && !scored) {
-            throw new UsageException("--objective score needs --world WORLD.xml: only a world scores a run");
+            throw new UsageException(CliMsg.SCORE_NEEDS_WORLD.text());
         }
         return o;
     }
@@ -82,7 +83,7 @@ public class SimSweepOptions {
             return Runtime.getRuntime().availableProcessors();
         }
         if (jobs < 1 || jobs > 1024) {
-            throw new UsageException("--jobs must be within [1, 1024], got " + jobs);
+            throw new UsageException(CliMsg.JOBS_RANGE.text(jobs));
         }
         return jobs;
     }
@@ -94,10 +95,10 @@ public class SimSweepOptions {
     Evaluator evaluator(Path file, PrintWriter err) throws UsageException {
         ClockOptions.check(tick, duration);
         if (!(duration > 0)) {
-            throw new UsageException("--duration must be > 0 seconds, got " + duration);
+            throw new UsageException(CliMsg.DURATION_NOT_POSITIVE.text(duration));
         }
         if (!(fallTilt >= 0 && fallTilt <= 180)) {
-            throw new UsageException("--fall-tilt must be within [0, 180] degrees, got " + fallTilt);
+            throw new UsageException(CliMsg.FALL_TILT_RANGE.text(fallTilt));
         }
         Inputs.check(file);
         if (world != null) {
@@ -111,14 +112,14 @@ public class SimSweepOptions {
         }
         if (!r.parameterErrors().isEmpty()) {
             r.parameterErrors().forEach(d -> err.println(d.format()));
-            throw new UsageException("bad --param values above");
+            throw new UsageException(CliMsg.BAD_PARAMS_ABOVE.text());
         }
         try {
             String text = InputFiles.readText(file);
             return Evaluator.load(new Evaluator.Settings(file, text, fixed, sim.trim(), duration, tick, fallTilt,
                     world));
         } catch (IOException e) {
-            throw new UsageException("cannot read '" + file + "': " + e.getMessage());
+            throw new UsageException(CliMsg.CANNOT_READ.text(file, e.getMessage()));
         } catch (SweepException e) {
             throw new UsageException(e.getMessage());
         }

@@ -1,5 +1,6 @@
 package org.parpe.cli.sweep;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.Writer;
@@ -85,7 +86,7 @@ public final class SweepCommand extends SimSweepCommand {
             axes = SweepSpec.declaredSpace(ev.parameters(), ev.fixed().keySet());
         }
         if (random != null && random < 1) {
-            throw new UsageException("--random must be >= 1, got " + random);
+            throw new UsageException(CliMsg.RANDOM_AT_LEAST_ONE.text(random));
         }
         Sweep sweep = new Sweep(ev, random == null ? SweepSpec.grid(axes, repeat, options.seed)
                 : SweepSpec.random(axes, random, repeat, options.seed));
@@ -167,7 +168,7 @@ public final class SweepCommand extends SimSweepCommand {
             try {
                 shardFile.commit();
             } catch (IOException e) {
-                throw new UsageException("cannot write --out file '" + out + "': " + e.getMessage());
+                throw new UsageException(CliMsg.CANNOT_WRITE_OUT.text(out, e.getMessage()));
             }
         }
         return result;
@@ -234,19 +235,19 @@ public final class SweepCommand extends SimSweepCommand {
     public static int[] parseShard(String shard) throws UsageException {
         String[] kn = shard.trim().split("/", -1);
         if (kn.length != 2 || !kn[0].matches("\\d+") || !kn[1].matches("\\d+")) {
-            throw new UsageException("--shard expects K/N with whole numbers, for example 2/8, got '" + shard + "'");
+            throw new UsageException(CliMsg.SHARD_SYNTAX.text(shard));
         }
         // a shard's first line holds K and N in at most six digits (SweepCsv.shardStart)
         if (kn[1].replaceFirst("^0+(?=.)", "").length() > 6) {
-            throw new UsageException("--shard " + shard.trim() + ": N must be at most 999999 shards, got " + kn[1]);
+            throw new UsageException(CliMsg.SHARD_N_TOO_LARGE.text(shard.trim(), kn[1]));
         }
         if (kn[0].replaceFirst("^0+(?=.)", "").length() > 6) {
-            throw new UsageException("--shard " + shard.trim() + ": K must be within [1, N], got " + kn[0]);
+            throw new UsageException(CliMsg.SHARD_K_RANGE.text(shard.trim(), kn[0]));
         }
         int k = Integer.parseInt(kn[0]);
         int n = Integer.parseInt(kn[1]);
         if (n < 1 || k < 1 || k > n) {
-            throw new UsageException("--shard " + shard + ": K must be within [1, N] and N >= 1");
+            throw new UsageException(CliMsg.SHARD_K_N.text(shard));
         }
         return new int[] {k, n};
     }

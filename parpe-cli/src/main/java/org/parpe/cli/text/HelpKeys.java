@@ -1,6 +1,9 @@
 package org.parpe.cli.text;
 
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 
 /**
  * The keys of the help bundles ({@code Help_de.properties} etc.), as picocli looks them up: a
@@ -15,8 +18,11 @@ public final class HelpKeys {
     public static final List<String> COMMANDS = List.of("check", "run", "bench", "race", "robot", "grade", "sweep",
             "optimize", "merge", "emulate", "record", "scan", "calibrate", "export", "diagram", "help");
 
+    /** The commands whose options and parameters are translated, each with the keys of its options. */
+    private static final Map<String, List<String>> OPTIONS = options();
+
     /** The commands whose options and parameters are translated. */
-    public static final List<String> OPTIONS_OF = List.of("check", "run");
+    public static final List<String> OPTIONS_OF = List.copyOf(OPTIONS.keySet());
 
     /** Every key of a help bundle. */
     public static final List<String> KEYS = keys();
@@ -25,17 +31,34 @@ public final class HelpKeys {
     }
 
     private static List<String> keys() {
-        List<String> k = new java.util.ArrayList<>(List.of("usage.synopsisHeading", "usage.commandListHeading",
+        List<String> k = new ArrayList<>(List.of("usage.synopsisHeading", "usage.commandListHeading",
                 "help", "version", "lang", "parpe.usage.description"));
         for (int i = 0; i <= 6; i++) {
             k.add("parpe.usage.footer." + i);
         }
         COMMANDS.forEach(c -> k.add("parpe." + c + ".usage.description"));
-        k.add("parpe.check.files");
-        for (String o : List.of("file", "duration", "tick", "param", "stimulus", "trace", "seed", "sim", "metrics",
-                "world", "plot", "realtime", "port", "hardware", "diverge", "baud", "on-fault", "read-timeout", "retries")) {
-            k.add("parpe.run." + o);
-        }
+        OPTIONS.forEach((c, options) -> options.forEach(o -> k.add("parpe." + c + "." + o)));
         return List.copyOf(k);
+    }
+
+    private static Map<String, List<String>> options() {
+        Map<String, List<String>> o = new LinkedHashMap<>();
+        o.put("check", List.of("files"));
+        o.put("run", List.of("file", "duration", "tick", "param", "stimulus", "trace", "seed", "sim", "metrics",
+                "world", "plot", "realtime", "port", "hardware", "diverge", "baud", "on-fault", "read-timeout", "retries"));
+        o.put("race", List.of("files", "sim", "duration", "world", "tick"));
+        o.put("robot", List.of("robot", "check", "kit", "out"));
+        o.put("diagram", List.of("file", "view", "behavior", "automaton", "instance", "duration", "tick", "param", "out",
+                "width"));
+        List<String> simSweep = List.of("file", "sim", "duration", "tick", "param", "jobs", "seed", "world", "fall-tilt");
+        List<String> sweep = new ArrayList<>(List.of("vary", "random", "repeat", "out", "plot", "objective", "count-fallen",
+                "shard"));
+        sweep.addAll(simSweep);
+        o.put("sweep", sweep);
+        List<String> optimize = new ArrayList<>(List.of("objective", "budget", "starts", "max-tilt", "not-fallen", "out",
+                "force", "plot"));
+        optimize.addAll(simSweep);
+        o.put("optimize", optimize);
+        return o;
     }
 }

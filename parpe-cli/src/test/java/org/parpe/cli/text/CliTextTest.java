@@ -109,8 +109,9 @@ class CliTextTest {
                     String k = "parpe." + c + "." + key(a);
                     if (b.containsKey(k)) {
                         // picocli shows the English text with ${DEFAULT-VALUE} already put in
-                        boolean english = a.defaultValue() != null
-                                && String.join(" ", a.description()).contains("(default " + a.defaultValue() + ")");
+                        String shown = String.join(" ", a.description());
+                        boolean english = a.defaultValue() != null && (shown.contains("(default " + a.defaultValue() + ")")
+                                || shown.contains("(default: " + a.defaultValue() + ")"));
                         assertEquals(english, b.getString(k).contains("${DEFAULT-VALUE}"), l + " " + k);
                     }
                 }
@@ -129,7 +130,9 @@ class CliTextTest {
         Path cli = Path.of("src/main/java/org/parpe/cli");
         for (String f : List.of("Main.java", "CheckCommand.java", "RunCommand.java", "options/Inputs.java", "options/ParamValues.java",
                 // (the Arduino sketch's options and checks are in parpe-serial now: core's MessagesTest scans them)
-                "options/ClockOptions.java", "terminal/Progress.java", "export/ExportCommand.java")) {
+                "options/ClockOptions.java", "terminal/Progress.java", "export/ExportCommand.java", "sim/SimOptions.java",
+                "sim/RaceCommand.java", "sim/RobotCommand.java", "diagram/DiagramCommand.java", "diagram/ScenePng.java",
+                "sweep/SimSweepOptions.java")) {
             String text = withoutAnnotations(read(cli.resolve(f)).replaceAll("(?s)/\\*.*?\\*/", "").replaceAll("(?m)//.*$", ""));
             Matcher m = Pattern.compile("\"((?:[^\"\\\\\\n]|\\\\.)*)\"").matcher(text);
             while (m.find()) {

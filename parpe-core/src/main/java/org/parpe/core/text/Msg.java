@@ -400,7 +400,17 @@ public enum Msg implements Key {
     CANNOT_BUILD_ROBOT,
 
     // simulator: the script and the robot
-    ROBOT_LACKS_MODULES;
+    ROBOT_LACKS_MODULES,
+
+    // stimulus files: StimulusParser
+    STIMULUS_LINE,
+    STIMULUS_TIME,
+    STIMULUS_UNKNOWN_NAME,
+    STIMULUS_NOT_A_READING,
+    STIMULUS_NO_SENSOR,
+    STIMULUS_NUMBER,
+    STIMULUS_RADIO_WORD,
+    STIMULUS_SLIDER_RANGE;
 
     /** The bundle of these keys. */
     public static final String BUNDLE = "org.parpe.core.text.Messages";

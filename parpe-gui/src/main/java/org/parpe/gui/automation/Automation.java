@@ -14,12 +14,17 @@ import org.parpe.gui.run.RunOn;
  * What {@code --run-for}, {@code --screenshot} and {@code --exit} do once the window is up:
  * wait for the script to be validated, run it in the simulator (as fast as possible) for the
  * given simulated time, let the views catch up, save the picture, close. Every wait is bounded.
- * Driven by UI-thread timers, so the window stays live throughout.
+ * Driven by UI-thread timers, so the window stays live throughout. With the system property
+ * {@value #MENUS} set to a file, the texts of the menu bar are written there too (one a line,
+ * without the mnemonic's {@code &}): the .deb's install test reads in them which language the
+ * IDE speaks ({@code JAVA_TOOL_OPTIONS=-Dparpe.menus=/tmp/menus.txt parpe-ide ... --exit}).
  */
 public final class Automation {
     private static final int POLL_MS = 100;
     private static final int LOAD_TIMEOUT_MS = 15_000;
     private static final int SETTLE_MS = 600;
+    /** The system property naming the file for the menu bar's texts. */
+    public static final String MENUS = "parpe.menus";
 
     private final IdeWindow ide;
     private final LaunchOptions options;
@@ -163,9 +168,27 @@ public final class Automation {
                 exitCode = 2;
             }
         }
+        String menus = System.getProperty(MENUS);
+        if (menus != null) {
+            writeMenus(java.nio.file.Path.of(menus));
+        }
         if (options.exit()) {
             ide.files().autosaveNow();
             ide.shell().dispose();
+        }
+    }
+
+    /** The menu bar's texts, one a line, to {@code file} (the install test's view of the IDE's language). */
+    private void writeMenus(java.nio.file.Path file) {
+        StringBuilder texts = new StringBuilder();
+        for (org.eclipse.swt.widgets.MenuItem item : ide.shell().getMenuBar().getItems()) {
+            texts.append(item.getText().replace("&", "")).append('\n');
+        }
+        try {
+            java.nio.file.Files.writeString(file, texts, java.nio.charset.StandardCharsets.UTF_8);
+        } catch (IOException e) {
+            System.err.println("parpe gui: error: " + e.getMessage());
+            exitCode = 2;
         }
     }
 }

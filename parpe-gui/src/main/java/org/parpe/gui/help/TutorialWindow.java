@@ -26,10 +26,12 @@ import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Shell;
+import org.parpe.core.text.Lang;
 
 /**
  * Help → Tutorial: the lessons of {@code docs/tutorial} in a list and the chosen lesson rendered
- * from its Markdown with its pictures. "Open the lesson's script" puts the lesson's example in the
+ * from its Markdown with its pictures, in the IDE's language where they are translated
+ * ({@link Lessons}). "Open the lesson's script" puts the lesson's example in the
  * editor (through the IDE's usual unsaved-text check). Either docked in the IDE ({@link #docked}:
  * a tab of its own, the list above the lesson) where the screen has no room beside the IDE (a
  * 1366×768 laptop), or a normal window, not one pinned above the IDE, sized to fit on the screen
@@ -91,7 +93,7 @@ public final class TutorialWindow {
         this.folder = folder;
         this.openScript = openScript;
         this.insertCode = insertCode;
-        this.pages = pages(folder);
+        this.pages = Lessons.pages(folder, Lang.current());
         docked = dock != null;
         if (docked) {
             shell = parent;
@@ -324,8 +326,9 @@ public final class TutorialWindow {
             return;
         }
         render(page, pages.get(i).getParent());
+        Path dir = pages.get(i).getParent(); // a translated lesson's links start from its language's folder
         script = page.links().stream().filter(l -> l.endsWith(".xml"))
-                .map(l -> pages.get(0).getParent().resolve(l).normalize())
+                .map(l -> dir.resolve(l).normalize())
                 .filter(Files::isRegularFile).findFirst().orElse(null);
         open.setEnabled(script != null);
         open.setText(script == null ? UiMsg.TUTORIAL_OPEN_SCRIPT.text() : UiMsg.TUTORIAL_OPEN_NAMED.text(script.getFileName()));
@@ -515,7 +518,8 @@ public final class TutorialWindow {
     }
 
     /** The picture at {@code p}, scaled to at most {@value #IMAGE_WIDTH} pixels and the text's width, or null. */
-    private Image image(Path p) {
+    private Image image(Path linked) {
+        Path p = Lessons.picture(linked, Lang.current());
         if (!p.startsWith(folder) || !Files.isRegularFile(p)) {
             return null;
         }
@@ -539,21 +543,6 @@ public final class TutorialWindow {
         images.forEach(Image::dispose);
         images.clear();
         pictures.clear();
-    }
-
-    /** index.md, the numbered lessons in order, then any other page (teachers.md). */
-    static List<Path> pages(Path folder) {
-        List<Path> all;
-        try (Stream<Path> s = Files.list(folder)) {
-            all = s.filter(p -> p.getFileName().toString().endsWith(".md")).sorted().toList();
-        } catch (IOException e) {
-            return List.of();
-        }
-        List<Path> out = new ArrayList<>();
-        all.stream().filter(p -> p.getFileName().toString().equals("index.md")).forEach(out::add);
-        all.stream().filter(p -> p.getFileName().toString().matches("\\d+-.*")).forEach(out::add);
-        all.stream().filter(p -> !out.contains(p)).forEach(out::add);
-        return out;
     }
 
     private static String title(Path page) {

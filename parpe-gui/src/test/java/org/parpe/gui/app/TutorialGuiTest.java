@@ -56,6 +56,37 @@ class TutorialGuiTest {
     }
 
     /**
+     * Issue 38: in German, Help → Tutorial lists the German index and lessons 1–6 and the other
+     * lessons in English, and finds the script of a lesson from either folder.
+     */
+    @Test
+    void inGermanTheTranslatedLessonsAndTheOthersInEnglish() throws Exception {
+        Path folder = Examples.tutorialFolder();
+        assertNotNull(folder, "docs/tutorial not found beside " + Examples.folder());
+        org.parpe.core.text.Lang.use(java.util.Locale.GERMAN);
+        TutorialWindow w = new TutorialWindow(ide.shell(), folder, p -> { });
+        try {
+            w.open();
+            String[] titles = w.titles();
+            assertTrue(titles[0].startsWith("PARPE-Tutorial") && titles[1].startsWith("Lektion 1")
+                    && titles[6].startsWith("Lektion 6"), String.join(" | ", titles));
+            assertTrue(titles[7].startsWith("Lesson 7"), "lesson 7 is not translated: " + String.join(" | ", titles));
+            w.show(3);
+            Gui.settle();
+            assertTrue(w.shownText().startsWith("Lektion 3"), w.shownText());
+            assertTrue(w.shownText().contains("\uFFFC"), "lesson 3's picture is not shown");
+            assertEquals("03-hello-snake.xml", w.script().getFileName().toString());
+            Gui.screenshot(w.shell(), "tutorial-lesson-3-de.png");
+            w.show(7);
+            assertNotNull(w.script(), "the English lesson 7 names no script from the German list");
+            assertEquals("07-parameters-snake.xml", w.script().getFileName().toString());
+        } finally {
+            org.parpe.core.text.Lang.use(java.util.Locale.ENGLISH);
+            w.shell().dispose();
+        }
+    }
+
+    /**
      * Issue 23, item 2: the tutorial was transient for the IDE (pinned above it, covering the
      * editor and the 3D view) and ran past the bottom of the screen. Now it is a window of its own
      * that fits the screen's working area, at 1366×768 too, and closes with the IDE.

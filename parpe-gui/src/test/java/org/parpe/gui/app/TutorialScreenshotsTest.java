@@ -45,8 +45,10 @@ import org.parpe.gui.run.RunOn;
  * the run went through with nothing in Problems, plot three of the modules it moves, and save
  * the window to
  * {@code docs/tutorial/img/NAME.png} (folder: system property {@code parpe.tutorialImages},
- * default {@code ../docs/tutorial/img} from the module). One window for the whole class; every
- * wait is bounded.
+ * default {@code ../docs/tutorial/img} from the module). With {@code -Dparpe.tutorialLang=de}
+ * (es, ja) the IDE speaks that language and the pictures are {@code NAME-de.png}, which Help →
+ * Tutorial shows to a German student in place of {@code NAME.png}. One window for the whole
+ * class; every wait is bounded.
  */
 class TutorialScreenshotsTest {
     private static final long WAIT_MS = 30_000;
@@ -55,6 +57,8 @@ class TutorialScreenshotsTest {
     private static Display display;
     private static IdeWindow ide;
     private static Path images;
+    /** The language of the pictures: {@code ""} for English ({@code NAME.png}), else {@code -de} etc. */
+    private static String suffix = "";
 
     static Path tutorialFolder() {
         Path examples = Examples.folder();
@@ -77,6 +81,11 @@ class TutorialScreenshotsTest {
             fail("No X display (DISPLAY is not set). The GUI tests need one: run them under xvfb-run, as ./test-all does.");
         }
         images = Path.of(System.getProperty("parpe.tutorialImages", "../docs/tutorial/img"));
+        String lang = System.getProperty("parpe.tutorialLang", "en");
+        java.util.Locale locale = org.parpe.core.text.Lang.parse(lang);
+        assertNotNull(locale, "parpe.tutorialLang=" + lang + " is not one of " + org.parpe.core.text.Lang.codes());
+        org.parpe.core.text.Lang.use(locale);
+        suffix = locale.equals(java.util.Locale.ENGLISH) ? "" : "-" + locale.getLanguage();
         Files.createDirectories(images);
         Path home = Files.createTempDirectory("parpe-tutorial-test");
         display = Display.getDefault();
@@ -92,6 +101,7 @@ class TutorialScreenshotsTest {
             pump(() -> !ide.runs().running(), "the run to stop", WAIT_MS);
             ide.shell().dispose();
         }
+        org.parpe.core.text.Lang.use(java.util.Locale.ENGLISH);
     }
 
     /** Runs the event loop until {@code done} holds; fails after {@code ms}. */
@@ -187,7 +197,7 @@ class TutorialScreenshotsTest {
         settle(800);
         assertEquals(0, ide.problems().errorCount(), name + " reported problems while running: " + ide.problems().shown());
 
-        Path png = images.resolve(name.replaceFirst("\\.xml$", ".png"));
+        Path png = images.resolve(name.replaceFirst("\\.xml$", suffix + ".png"));
         Screenshot.save(ide.shell(), png);
         ide.view().setTrackRobot(true);
         ImageData d = new ImageLoader().load(png.toString())[0];

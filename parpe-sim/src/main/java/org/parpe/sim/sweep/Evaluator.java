@@ -1,5 +1,6 @@
 package org.parpe.sim.sweep;
 
+import org.parpe.sim.text.SimMsg;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.run.SourceKind;
 import org.parpe.sim.world.World;
@@ -89,28 +90,25 @@ public final class Evaluator implements PointRunner {
      */
     public static Evaluator of(RunSetup s) throws SweepException {
         if (!(s.duration() > 0) || !Double.isFinite(s.duration())) {
-            throw new SweepException("the duration must be > 0 seconds, got " + s.duration());
+            throw new SweepException(SimMsg.DURATION_NOT_POSITIVE, s.duration());
         }
         if (!(s.tick() > 0) || s.tick() > s.duration()) {
-            throw new SweepException("the tick must be > 0 and at most the duration, got " + s.tick() + " s");
+            throw new SweepException(SimMsg.TICK_RANGE, s.tick());
         }
         LoadResult r = ScriptLoader.bind(s.script(), s.fixed());
         if (!r.ok()) {
             List<Diagnostic> problems = r.parameterErrors().isEmpty() ? r.errors() : r.parameterErrors();
-            throw new SweepException(problems.isEmpty() ? s.script().file() + ": the script does not load"
-                    : problems.get(0).format() + (problems.size() > 1 ? " (and " + (problems.size() - 1) + " more)" : ""));
+            throw problems.isEmpty() ? new SweepException(SimMsg.SCRIPT_DOES_NOT_LOAD, s.script().file()) : first(problems);
         }
         if (r.program().main() == null) {
-            throw new SweepException(s.script().file() + ": the script has no <main>, so it would not move the robot");
+            throw new SweepException(SimMsg.NO_MAIN, s.script().file());
         }
         World world = null;
         if (s.world() != null) {
             DiagnosticList found = new DiagnosticList();
             world = WorldReader.read(s.world(), found);
             if (world == null) {
-                List<Diagnostic> problems = found.all();
-                throw new SweepException(problems.get(0).format()
-                        + (problems.size() > 1 ? " (and " + (problems.size() - 1) + " more)" : ""));
+                throw first(found.all());
             }
         }
         String spec = SimTarget.AUTO.equals(s.robot()) ? SimTarget.autoSpec(r.program()) : s.robot();
@@ -151,7 +149,7 @@ public final class Evaluator implements PointRunner {
         LoadResult r = ScriptLoader.bind(setup.script(), values);
         if (!r.ok()) {
             List<Diagnostic> problems = r.parameterErrors().isEmpty() ? r.errors() : r.parameterErrors();
-            return failed(point, problems.isEmpty() ? "the script does not load" : problems.get(0).format());
+            return failed(point, problems.isEmpty() ? SimMsg.NOT_LOADING.text() : problems.get(0).format());
         }
         Program program = r.program();
         DiagnosticSink quiet = d -> { };
@@ -252,6 +250,13 @@ public final class Evaluator implements PointRunner {
     interface Worker extends PointRunner, AutoCloseable {
         @Override
         void close();
+    }
+
+    /** The first of {@code problems} as one line: {@code FILE:LINE:COL: error: MESSAGE (and N more)}. */
+    private static SweepException first(List<Diagnostic> problems) {
+        Diagnostic d = problems.get(0);
+        return new SweepException(problems.size() > 1 ? SimMsg.LOAD_ERRORS : SimMsg.LOAD_ERROR, d.pos(),
+                d.severity().word(), d.text(), problems.size() - 1);
     }
 
     private static SweepRow failed(Point point, String why) {

@@ -1,5 +1,7 @@
 package org.parpe.sim.sweep;
 
+import org.parpe.sim.text.SimMsg;
+
 /**
  * What an optimisation looks for.
  *
@@ -15,10 +17,10 @@ public record OptimizeSpec(Objective objective, Constraints constraints, int bud
     /** Checks the numbers; one line per problem. */
     public void check() throws SweepException {
         if (starts < 1) {
-            throw new SweepException("--starts must be >= 1, got " + starts);
+            throw new SweepException(SimMsg.STARTS_AT_LEAST_ONE, starts);
         }
         if (budget < 2 * starts) {
-            throw new SweepException("--budget must be at least 2 runs per start (" + 2 * starts + "), got " + budget);
+            throw new SweepException(SimMsg.BUDGET_TOO_SMALL, 2 * starts, budget);
         }
     }
 }

@@ -1,5 +1,6 @@
 package org.parpe.sim.sweep;
 
+import org.parpe.sim.text.SimMsg;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
@@ -37,8 +38,7 @@ public final class Optimizer {
         this.spec = spec;
         this.space = new SearchSpace(evaluator.parameters(), evaluator.fixed().keySet());
         if (space.dimension() == 0) {
-            throw new SweepException("nothing to optimise: no parameter of " + evaluator.script()
-                    + " has both a min and a max (and is not fixed with --param)");
+            throw new SweepException(SimMsg.NOTHING_TO_OPTIMISE, evaluator.script());
         }
     }
 

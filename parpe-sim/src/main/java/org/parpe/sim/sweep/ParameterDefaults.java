@@ -1,5 +1,6 @@
 package org.parpe.sim.sweep;
 
+import org.parpe.sim.text.SimMsg;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -34,14 +35,13 @@ public final class ParameterDefaults {
                 .toList();
         for (Parameter p : byPlace) {
             if (!Path.of(p.pos().file()).normalize().equals(file.normalize())) {
-                throw new SweepException("parameter '" + p.name() + "' is defined in " + p.pos().file()
-                        + ", not in " + file + "; set its value there by hand");
+                throw new SweepException(SimMsg.DEFINED_ELSEWHERE, p.name(), p.pos().file(), file);
             }
             if (p.pos().span() == null) {
-                throw new SweepException(p.pos() + ": cannot find the element of parameter '" + p.name() + "'");
+                throw new SweepException(SimMsg.NO_ELEMENT, p.pos(), p.name());
             }
             if (p.pos().span().value("value") == null) {
-                throw new SweepException(p.pos() + ": parameter '" + p.name() + "' has no value attribute to replace");
+                throw new SweepException(SimMsg.NO_VALUE_ATTRIBUTE, p.pos(), p.name());
             }
             edits.addAll(ScriptEdits.setAttribute(text, p.pos(), "value", Numbers.format(values.get(p.name())))
                     .replacements());

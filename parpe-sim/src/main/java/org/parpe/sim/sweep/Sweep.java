@@ -1,5 +1,6 @@
 package org.parpe.sim.sweep;
 
+import org.parpe.sim.text.SimMsg;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -20,7 +21,7 @@ public final class Sweep {
         spec.check();
         for (Axis a : spec.axes()) {
             if (evaluator.fixed().containsKey(a.name())) {
-                throw new SweepException("parameter '" + a.name() + "' is both varied and fixed with --param");
+                throw new SweepException(SimMsg.VARIED_AND_FIXED, a.name());
             }
         }
         this.evaluator = evaluator;

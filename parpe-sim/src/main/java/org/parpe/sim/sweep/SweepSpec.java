@@ -1,5 +1,7 @@
 package org.parpe.sim.sweep;
 
+import org.parpe.sim.text.SimMsg;
+import org.parpe.core.text.Message;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
@@ -65,29 +67,28 @@ public record SweepSpec(List<Axis> axes, int randomCount, long seed, int repeat)
     /** Checks that the sweep can be made; one line per kind of problem. */
     public void check() throws SweepException {
         if (axes.isEmpty()) {
-            throw new SweepException("nothing to vary: give at least one --vary NAME=A..B");
+            throw new SweepException(SimMsg.NOTHING_TO_VARY);
         }
         Set<String> seen = new HashSet<>();
         for (Axis a : axes) {
             if (!seen.add(a.name())) {
-                throw new SweepException("parameter '" + a.name() + "' is varied twice");
+                throw new SweepException(SimMsg.VARIED_TWICE, a.name());
             }
             if (randomCount == 0 && !a.enumerable()) {
-                throw new SweepException("--vary " + a.name() + "=" + Numbers.format(a.lo()) + ".." + Numbers.format(a.hi())
-                        + " has fractional ends, so a grid needs a number of values: write " + a.name() + "="
-                        + Numbers.format(a.lo()) + ".." + Numbers.format(a.hi()) + ":K, or draw with --random COUNT");
+                throw new SweepException(SimMsg.FRACTIONAL_ENDS, a.name(), Numbers.format(a.lo()),
+                        Numbers.format(a.hi()));
             }
         }
         if (repeat < 1) {
-            throw new SweepException("--repeat must be >= 1, got " + repeat);
+            throw new SweepException(SimMsg.REPEAT_AT_LEAST_ONE, repeat);
         }
         if (randomCount < 0) {
-            throw new SweepException("--random must be >= 1, got " + randomCount);
+            throw new SweepException(SimMsg.RANDOM_AT_LEAST_ONE, randomCount);
         }
         long runs = saturated(combinations(), repeat);
         if (runs > MAX_RUNS) {
-            throw new SweepException("the sweep has " + (runs == Long.MAX_VALUE ? "more than 9.2e18" : runs)
-                    + " runs, more than the " + MAX_RUNS + " one sweep may have; use fewer values or --random COUNT");
+            throw new SweepException(SimMsg.TOO_MANY_RUNS,
+                    runs == Long.MAX_VALUE ? Message.of(SimMsg.MORE_THAN, "9.2e18") : runs, MAX_RUNS);
         }
     }
 

@@ -1,8 +1,9 @@
 package org.parpe.sim.sweep;
 
+import org.parpe.sim.text.SimMsg;
+import org.parpe.core.text.Message;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import org.parpe.core.expr.Names;
 import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.Parameter;
@@ -29,14 +30,14 @@ public final class VarySpec {
     public static Axis parse(String text, List<Parameter> parameters) throws SweepException {
         int eq = text.indexOf('=');
         if (eq <= 0) {
-            throw new SweepException("--vary '" + text + "': expected NAME=A..B, NAME=A..B:K or NAME=V1,V2,...");
+            throw new SweepException(SimMsg.VARY_SYNTAX, text);
         }
         String name = text.substring(0, eq).trim();
         String body = text.substring(eq + 1).trim();
         Parameter p = find(name, parameters, text);
-        String where = "--vary " + text.trim() + ": ";
+        String where = text.trim();
         if (body.isEmpty()) {
-            throw new SweepException(where + "no values after '='; expected A..B, A..B:K or V1,V2,...");
+            throw at(where, SimMsg.NO_VALUES);
         }
         Axis axis = body.contains("..") ? range(name, body, where) : list(name, body, where);
         check(axis, p, where);
@@ -50,9 +51,8 @@ public final class VarySpec {
             }
         }
         List<String> names = parameters.stream().map(Parameter::name).toList();
-        throw new SweepException("--vary " + text.trim() + ": unknown parameter '" + name + "'"
-                + Names.suggest(name, names) + (names.isEmpty() ? "; the script has no <parameters>"
-                : "; the script's parameters are " + String.join(", ", names)));
+        throw at(text.trim(), SimMsg.UNKNOWN_PARAMETER, name, Names.suggest(name, names), names.isEmpty()
+                ? Message.of(SimMsg.NO_PARAMETERS) : Message.of(SimMsg.PARAMETERS_ARE, String.join(", ", names)));
     }
 
     private static Axis range(String name, String body, String where) throws SweepException {
@@ -60,38 +60,34 @@ public final class VarySpec {
         String span = colon < 0 ? body : body.substring(0, colon);
         int dots = span.indexOf("..");
         if (dots < 0 || span.indexOf("..", dots + 2) >= 0) {
-            throw new SweepException(where + "expected A..B or A..B:K, got '" + body + "'");
+            throw at(where, SimMsg.RANGE_SYNTAX, body);
         }
         double a = number(span.substring(0, dots), where);
         double b = number(span.substring(dots + 2), where);
         if (a > b) {
-            throw new SweepException(where + "empty range: the start " + Numbers.format(a) + " is greater than the end "
-                    + Numbers.format(b));
+            throw at(where, SimMsg.EMPTY_RANGE, Numbers.format(a), Numbers.format(b));
         }
         if (colon >= 0) {
             String k = body.substring(colon + 1).trim();
             if (!k.matches("[+-]?\\d+")) {
-                throw new SweepException(where + "K (the number of values) must be a whole number >= 1, got '" + k + "'");
+                throw at(where, SimMsg.K_NOT_WHOLE, k);
             }
             if (new java.math.BigInteger(k).compareTo(java.math.BigInteger.valueOf(Integer.MAX_VALUE)) > 0) {
                 // a whole number, only too large to count (a smaller K is weighed with the sweep's size)
-                throw new SweepException(where + "K (the number of values) is " + k + ", more than the "
-                        + SweepSpec.MAX_RUNS + " runs one sweep may have; use fewer values or --random COUNT");
+                throw at(where, SimMsg.K_TOO_LARGE, k, SweepSpec.MAX_RUNS);
             }
             int count = Integer.parseInt(k);
             if (count < 1) {
-                throw new SweepException(where + "K (the number of values) must be >= 1, got " + count);
+                throw at(where, SimMsg.K_BELOW_ONE, count);
             }
             if (count == 1 && a != b) {
-                throw new SweepException(where + "K = 1 gives a single value, but " + Numbers.format(a) + ".."
-                        + Numbers.format(b) + " is a range; write " + name + "=" + Numbers.format(a) + " instead");
+                throw at(where, SimMsg.K_ONE_RANGE, Numbers.format(a), Numbers.format(b), name);
             }
             return Axis.even(name, a, b, count);
         }
         if (a == Math.rint(a) && b == Math.rint(b)) {
             if (b - a >= 1_000_000) {
-                throw new SweepException(where + "too many integers in " + Numbers.format(a) + ".." + Numbers.format(b)
-                        + " (at most 1000000); give a count with :K");
+                throw at(where, SimMsg.TOO_MANY_INTEGERS, Numbers.format(a), Numbers.format(b));
             }
             return Axis.integers(name, (long) a, (long) b);
         }
@@ -109,22 +105,23 @@ public final class VarySpec {
     private static double number(String text, String where) throws SweepException {
         Double v = Numbers.parsePlain(text);
         if (v == null) {
-            throw new SweepException(where + "'" + text.trim() + "' is not a number");
+            throw at(where, SimMsg.NOT_A_NUMBER, text.trim());
         }
         return v;
     }
 
     private static void check(Axis axis, Parameter p, String where) throws SweepException {
         for (double v : new double[] {axis.lo(), axis.hi()}) {
-            String problem = p.check(v);
+            Message problem = p.problem(v);
             if (problem != null) {
-                throw new SweepException(where + problem + bounds(p));
+                throw at(where, SimMsg.WITH_BOUNDS, problem, p.min() == null ? "-inf" : Numbers.format(p.min()),
+                        p.max() == null ? "+inf" : Numbers.format(p.max()));
             }
         }
     }
 
-    private static String bounds(Parameter p) {
-        return String.format(Locale.ROOT, " (its bounds are %s..%s)", p.min() == null ? "-inf" : Numbers.format(p.min()),
-                p.max() == null ? "+inf" : Numbers.format(p.max()));
+    /** The problem {@code key} with {@code args} of the specification {@code --vary WHERE}. */
+    private static SweepException at(String where, SimMsg key, Object... args) {
+        return new SweepException(SimMsg.VARY_WHERE, where, Message.of(key, args));
     }
 }

@@ -65,4 +65,14 @@ class VarySpecTest {
         SweepException e = assertThrows(SweepException.class, () -> SweepSpec.grid(List.of(a, a), 1, 0).check());
         assertEquals("parameter 'bend' is varied twice", e.getMessage());
     }
+
+    @Test
+    void aBadSpecificationKeepsItsKeySoItIsShownInTheUsersLanguage() {
+        SweepException e = assertThrows(SweepException.class, () -> VarySpec.parse("bend=40..20", params()));
+        assertEquals("--vary bend=40..20: empty range: the start 40 is greater than the end 20", e.getMessage());
+        assertEquals("--vary bend=40..20: leerer Bereich: der Anfang 40 ist größer als das Ende 20",
+                e.text().format(java.util.Locale.GERMAN));
+        assertEquals("--vary bend=40..20: intervalo vacío: el inicio 40 es mayor que el final 20",
+                e.text().format(java.util.Locale.forLanguageTag("es")));
+    }
 }

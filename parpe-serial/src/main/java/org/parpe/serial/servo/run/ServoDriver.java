@@ -1,5 +1,6 @@
 package org.parpe.serial.servo.run;
 
+import org.parpe.serial.text.SerialMsg;
 import java.io.IOException;
 import java.util.List;
 import java.util.Locale;
@@ -137,7 +138,7 @@ public final class ServoDriver extends BusThread {
         try {
             armWatchdog();
         } catch (IOException e) {
-            report.problem("bus: could not arm the servos' watchdog: " + e.getMessage());
+            report.problem("bus: " + SerialMsg.WATCHDOG_NOT_ARMED.text(e.getMessage()));
         }
         answeredNow();
         startThread("servo bus " + bus.name());
@@ -279,8 +280,8 @@ public final class ServoDriver extends BusThread {
             readAttempt = 0;
             readFailures++;
             backoff[set.slotOf(k)] = BACKOFF_CYCLES;
-            report.problem("bus: " + ServoSetUp.who(profile.protocol(), set.mappingAt(k)) + " did not answer "
-                    + (config.retries() + 1) + " reads; reading it less often");
+            report.problem("bus: " + SerialMsg.DID_NOT_ANSWER_READS.text(ServoSetUp.who(profile.protocol(), set.mappingAt(k)),
+                    config.retries() + 1));
         }
         return answered;
     }

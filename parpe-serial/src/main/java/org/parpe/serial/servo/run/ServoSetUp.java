@@ -1,5 +1,6 @@
 package org.parpe.serial.servo.run;
 
+import org.parpe.serial.text.SerialMsg;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
@@ -45,8 +46,8 @@ final class ServoSetUp {
 
     /** A servo in messages: {@code servo 3 (module 1)}, or {@code module 1} where they are one (G1 by ID). */
     static String who(ServoProtocol protocol, ServoMapping m) {
-        return protocol.modules() && m.servo() == m.module() ? "module " + m.module()
-                : "servo " + m.servo() + " (module " + m.module() + ")";
+        return protocol.modules() && m.servo() == m.module() ? SerialMsg.WHO_MODULE.text(m.module())
+                : SerialMsg.WHO_SERVO.text(m.servo(), m.module());
     }
 
     private String who(ServoMapping m) {
@@ -97,10 +98,9 @@ final class ServoSetUp {
         boolean same = actual != null && actual.registers() == m.model().registers()
                 && actual.resolution() == m.model().resolution() && actual.rangeDeg() == m.model().rangeDeg()
                 && actual.centre() == m.model().centre();
-        report.problem(String.format(Locale.ROOT, "bus: %s is %s, the profile says %s at %s; %s",
-                who(m), actual == null ? "of unknown model " + model : "an " + actual.label(),
-                m.model().label(), m.where(), same ? "driving it anyway (same control table and units)"
-                        : "it will not move (correct the model in the profile)"));
+        report.problem("bus: " + SerialMsg.WRONG_MODEL.text(who(m), actual == null ? SerialMsg.UNKNOWN_MODEL.text(model)
+                : SerialMsg.A_MODEL.text(actual.label()), m.model().label(), m.where(),
+                (same ? SerialMsg.DRIVING_ANYWAY : SerialMsg.WILL_NOT_MOVE).text()));
         return same;
     }
 
@@ -158,8 +158,7 @@ final class ServoSetUp {
     private boolean holdFound(ServoBus bus, int k, boolean known, int attempts) throws IOException {
         ServoMapping m = set.mappingAt(k);
         if (!known) {
-            report.problem(String.format(Locale.ROOT, "bus: %s answered the ping but not %d reads of its position; "
-                    + "its torque stays off and it will not follow the run", who(m), attempts));
+            report.problem("bus: " + SerialMsg.PING_BUT_NO_READS.text(who(m), attempts));
             return false;
         }
         oneId[0] = m.servo();
@@ -171,9 +170,8 @@ final class ServoSetUp {
             state = bus.torqueState(m.servo(), m.model(), 2);
         }
         if (state != 1) {
-            report.problem(String.format(Locale.ROOT, "bus: %s did not turn its torque on (Torque Enable %s after %d "
-                    + "tries); it is limp and will not follow the run", who(m),
-                    state == 0 ? "read back 0" : "could not be read back", attempts));
+            report.problem("bus: " + SerialMsg.TORQUE_NOT_ON.text(who(m),
+                    (state == 0 ? SerialMsg.READ_BACK_0 : SerialMsg.NOT_READ_BACK).text(), attempts));
         }
         return state == 1;
     }
@@ -216,7 +214,7 @@ final class ServoSetUp {
         oneId[0] = m.servo();
         oneModel[0] = m.model();
         bus.watchdog(oneId, oneModel, 1, profile.watchdogMs(), profile.onFault() == SafeMode.LIMP);
-        report.note("bus: " + who(m) + " answers now; driving it");
+        report.note("bus: " + SerialMsg.ANSWERS_NOW.text(who(m)));
         return 1;
     }
 
