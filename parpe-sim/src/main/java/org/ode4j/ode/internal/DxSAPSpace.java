@@ -572,13 +572,65 @@ public class DxSAPSpace extends DxSpace implements DSapSpace {
 		if (sortA.length < n) {
 			sortA = new DxGeom[n + (n >> 2) + 16];
 			sortB = new DxGeom[sortA.length];
+			lastSorted = new DxGeom[sortA.length];
+			lastSortedCount = -1;
 		}
-		for (int i = 0; i < n; i++) {
-			sortA[i] = list.get(i);
+		if (n == lastSortedCount && sameGeomsAsLastSort(n)) {
+			insertionSortByMinThenIndex(lastSorted, n);
+		} else {
+			for (int i = 0; i < n; i++) {
+				sortA[i] = list.get(i);
+			}
+			System.arraycopy(sortByMin(sortA, sortB, n), 0, lastSorted, 0, n);
 		}
-		DxGeom[] a = sortByMin(sortA, sortB, n);
+		lastSortedCount = n;
 		for (int i = 0; i < n; i++) {
-			list.set(i, a[i]);
+			list.set(i, lastSorted[i]);
+		}
+	}
+
+	/** PARPE: the order {@link #stableSortByMin} gave last, the start of its next sort. */
+	private DxGeom[] lastSorted = new DxGeom[0];
+	private int lastSortedCount = -1;
+
+	/**
+	 * PARPE: whether the {@code n} geoms sorted last are the ones {@link #collide} sorts now (all
+	 * still clean in this space, enabled, with a finite AABB start, none NaN): the same set as
+	 * the list of {@code n}.
+	 */
+	private boolean sameGeomsAsLastSort(int n) {
+		for (int i = 0; i < n; i++) {
+			DxGeom g = lastSorted[i];
+			if (g.parent_space != this || GEOM_GET_GEOM_IDX(g) == GEOM_INVALID_IDX || !GEOM_ENABLED(g)
+					|| g._aabb.getMax(ax0id) == dInfinity || Double.isNaN(g._aabb.getMin(ax0id))) {
+				return false;
+			}
+		}
+		return true;
+	}
+
+	/**
+	 * PARPE: sorts {@code a[0..n)} by AABB start, ties by index in GeomList. The geoms to sort
+	 * stand in GeomList's order, so this strict total order is the one the stable sort gives
+	 * them; starting from the last step's order, where the geoms moved little, it takes about
+	 * one pass.
+	 */
+	private void insertionSortByMinThenIndex(DxGeom[] a, int n) {
+		for (int i = 1; i < n; i++) {
+			DxGeom g = a[i];
+			double min = g._aabb.getMin(ax0id);
+			int index = GEOM_GET_GEOM_IDX(g);
+			int j = i - 1;
+			while (j >= 0) {
+				double m = a[j]._aabb.getMin(ax0id);
+				if (m > min || (m == min && GEOM_GET_GEOM_IDX(a[j]) > index)) {
+					a[j + 1] = a[j];
+					j--;
+				} else {
+					break;
+				}
+			}
+			a[j + 1] = g;
 		}
 	}
 
