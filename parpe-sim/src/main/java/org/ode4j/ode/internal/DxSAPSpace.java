@@ -7,8 +7,9 @@
  * orders them exactly as the other did (issue 36; docs/decisions.md, "The simulator's tick
  * allocates nothing"). collide2 (a world's fixed solids against the robot's space) looks a geom's
  * partners up in the geoms sorted by AABB instead of testing every geom of the space, and calls
- * back the same pairs in the same order (issue 36, "a faster simulator tick"). The arithmetic is
- * untouched.
+ * back the same pairs in the same order; the sort starts from the last step's order, with ties
+ * by index as the stable sort orders them (issue 36; docs/decisions.md, "A faster simulator
+ * tick, same results"). The arithmetic is untouched.
  */
 /*************************************************************************
  *                                                                       *
@@ -432,7 +433,7 @@ public class DxSAPSpace extends DxSpace implements DSapSpace {
 		// AABB starts on the first axis.
 		double lo = geom._aabb.getMin(ax0id);
 		double hi = geom._aabb.getMax(ax0id);
-		if (Double.isFinite(lo) && Double.isFinite(hi)) {
+		if (GeomList.size() >= SORTED_LOOKUP_FROM && Double.isFinite(lo) && Double.isFinite(hi)) {
 			collide2Sorted(data, geom, callback, lo, hi);
 		} else {
 			int geom_count = GeomList.size();
@@ -446,6 +447,8 @@ public class DxSAPSpace extends DxSpace implements DSapSpace {
 		lock_count--;
 	}
 
+	/** PARPE: spaces with fewer geoms are searched by ODE's loop (a small robot's: sorting costs more than it saves). */
+	private static final int SORTED_LOOKUP_FROM = 32;
 	/** PARPE: the clean geoms with a finite AABB on the first axis, by where it starts; stale after any change. */
 	private DxGeom[] byMin = new DxGeom[0], byMinWork = new DxGeom[0];
 	/** PARPE: where each of {@link #byMin}'s AABBs starts on the first axis. */
@@ -453,7 +456,7 @@ public class DxSAPSpace extends DxSpace implements DSapSpace {
 	private int byMinCount;
 	/** PARPE: the widest of {@link #byMin}'s AABBs on the first axis. */
 	private double byMinWidest;
-	/** PARPE: GeomList indices of the clean geoms whose AABB is not finite on the first axis (planes, NaN). */
+	/** PARPE: GeomList indices of the clean geoms whose AABB is not finite on the first axis (planes, NaN) or is long. */
 	private int[] unbounded = new int[0];
 	private int unboundedCount;
 	/** PARPE: GeomList indices of the geoms that one {@link #collide2} call pairs with its geom. */
@@ -530,11 +533,23 @@ public class DxSAPSpace extends DxSpace implements DSapSpace {
 		byMinCount = 0;
 		unboundedCount = 0;
 		byMinWidest = 0;
+		double widths = 0;
+		int finite = 0;
+		for (int i = 0; i < n; i++) {
+			double lo = GeomList.get(i)._aabb.getMin(ax0id);
+			double hi = GeomList.get(i)._aabb.getMax(ax0id);
+			if (Double.isFinite(lo) && Double.isFinite(hi)) {
+				widths += hi - lo;
+				finite++;
+			}
+		}
+		// A few long geoms (a world's walls) would widen every lookup's window: they are tested always.
+		double wide = finite == 0 ? 0 : 4 * widths / finite;
 		for (int i = 0; i < n; i++) {
 			DxGeom g = GeomList.get(i);
 			double lo = g._aabb.getMin(ax0id);
 			double hi = g._aabb.getMax(ax0id);
-			if (Double.isFinite(lo) && Double.isFinite(hi)) {
+			if (Double.isFinite(lo) && Double.isFinite(hi) && hi - lo <= wide) {
 				byMin[byMinCount++] = g;
 				byMinWidest = Math.max(byMinWidest, hi - lo);
 			} else {
