@@ -1,9 +1,15 @@
 /*
  * PARPE: a patched copy of ODE4j 0.5.3's org/ode4j/ode/internal/DxSAPSpace.java (tag parent-0.5.3), used under
  * ODE4j's BSD licence (its notice follows, unchanged). It takes the place of the class in the
- * ODE4j jar (this module's classes come first on the class path and in the shaded jar). The one
- * change: the geoms are sorted by a stable merge sort in arrays kept from step to step, not by Collections.sort (a new comparator, TimSort and its work arrays in every step); a stable sort orders them exactly as the other did (issue 36; docs/decisions.md, "The simulator's tick allocates nothing"). The
- * arithmetic is untouched.
+ * ODE4j jar (this module's classes come first on the class path and in the shaded jar). The
+ * changes: the geoms are sorted by a stable merge sort in arrays kept from step to step, not by
+ * Collections.sort (a new comparator, TimSort and its work arrays in every step); a stable sort
+ * orders them exactly as the other did (issue 36; docs/decisions.md, "The simulator's tick
+ * allocates nothing"). collide2 (a world's fixed solids against the robot's space) looks a geom's
+ * partners up in the geoms sorted by AABB instead of testing every geom of the space, and calls
+ * back the same pairs in the same order; the sort starts from the last step's order, with ties
+ * by index as the stable sort orders them (issue 36; docs/decisions.md, "A faster simulator
+ * tick, same results"). The arithmetic is untouched.
  */
 /*************************************************************************
  *                                                                       *
@@ -269,6 +275,7 @@ public class DxSAPSpace extends DxSpace implements DSapSpace {
 			GeomList.remove( geomSize-1 );
 		}
 
+		byMinStale = true; // PARPE
 		//g->tome_ex = 0;
 		g._qtIdxEx = null;
 		// dUASSERT((g->next_ex = 0, true), "Needed for an assertion check only");
@@ -307,6 +314,7 @@ public class DxSAPSpace extends DxSpace implements DSapSpace {
 		GEOM_SET_GEOM_IDX( g, GEOM_INVALID_IDX );
 		GEOM_SET_DIRTY_IDX( g, DirtyList.size() );
 		DirtyList.add( g );
+		byMinStale = true; // PARPE
 	}
 
 	//void dxSAPSpace::cleanGeoms()
@@ -316,6 +324,7 @@ public class DxSAPSpace extends DxSpace implements DSapSpace {
 		int dirtySize = DirtyList.size();
 		if( dirtySize==0 )
 			return;
+		byMinStale = true; // PARPE
 
 		// compute the AABBs of all dirty geoms, clear the dirty flags,
 		// remove from dirty list, place into geom list
@@ -413,25 +422,151 @@ public class DxSAPSpace extends DxSpace implements DSapSpace {
 	{
 		dAASSERT (geom!=null && callback!=null);
 
-		// TODO: This is just a simple N^2 implementation
-
 		lock_count++;
 
 		cleanGeoms();
 		geom.recomputeAABB();
 
-		// intersect bounding boxes
-		int geom_count = GeomList.size();
-		for ( int i = 0; i < geom_count; ++i ) {
-			DxGeom g = GeomList.get(i);
-			if ( GEOM_ENABLED(g) )
-				collideAABBs (g,geom,data,callback);
+		// PARPE: ODE's N^2 loop tested every geom of this space against geom (a world's fixed
+		// solids against every part of the robot, every sub-step). The same pairs, in the same
+		// order (ascending index in GeomList), are now found in the geoms sorted by where their
+		// AABB starts on the first axis.
+		double lo = geom._aabb.getMin(ax0id);
+		double hi = geom._aabb.getMax(ax0id);
+		if (GeomList.size() >= SORTED_LOOKUP_FROM && Double.isFinite(lo) && Double.isFinite(hi)) {
+			collide2Sorted(data, geom, callback, lo, hi);
+		} else {
+			int geom_count = GeomList.size();
+			for ( int i = 0; i < geom_count; ++i ) {
+				DxGeom g = GeomList.get(i);
+				if ( GEOM_ENABLED(g) )
+					collideAABBs (g,geom,data,callback);
+			}
 		}
 
 		lock_count--;
 	}
 
-	
+	/** PARPE: spaces with fewer geoms are searched by ODE's loop (a small robot's: sorting costs more than it saves). */
+	private static final int SORTED_LOOKUP_FROM = 32;
+	/** PARPE: the clean geoms with a finite AABB on the first axis, by where it starts; stale after any change. */
+	private DxGeom[] byMin = new DxGeom[0], byMinWork = new DxGeom[0];
+	/** PARPE: where each of {@link #byMin}'s AABBs starts on the first axis. */
+	private double[] byMinStart = new double[0];
+	private int byMinCount;
+	/** PARPE: the widest of {@link #byMin}'s AABBs on the first axis. */
+	private double byMinWidest;
+	/** PARPE: GeomList indices of the clean geoms whose AABB is not finite on the first axis (planes, NaN) or is long. */
+	private int[] unbounded = new int[0];
+	private int unboundedCount;
+	/** PARPE: GeomList indices of the geoms that one {@link #collide2} call pairs with its geom. */
+	private int[] hits = new int[0];
+	private boolean byMinStale = true;
+
+	/**
+	 * PARPE: {@link #collide2} for a geom whose AABB spans [{@code lo}, {@code hi}] on the first
+	 * axis: only the geoms whose AABBs overlap its AABB are passed to {@link #collideAABBs}, which
+	 * would reject every other one, in the order of ODE's loop.
+	 */
+	private void collide2Sorted(Object data, DxGeom geom, DNearCallback callback, double lo, double hi) {
+		if (byMinStale) {
+			indexByMin();
+		}
+		DAABB box = geom._aabb;
+		int count = 0;
+		for (int u = 0; u < unboundedCount; u++) {
+			if (!GeomList.get(unbounded[u])._aabb.isDisjoint(box)) {
+				hits[count++] = unbounded[u];
+			}
+		}
+		// Geoms starting before 'from' end before lo (2x and 1e-9 cover the rounding of widths).
+		double from = lo - (2 * byMinWidest + 1e-9);
+		int k = firstStartingAtOrAfter(from);
+		for (; k < byMinCount && byMinStart[k] <= hi; k++) {
+			DxGeom g = byMin[k];
+			if (!g._aabb.isDisjoint(box)) {
+				hits[count++] = GEOM_GET_GEOM_IDX(g);
+			}
+		}
+		for (int i = 1; i < count; i++) {
+			int h = hits[i];
+			int j = i - 1;
+			while (j >= 0 && hits[j] > h) {
+				hits[j + 1] = hits[j];
+				j--;
+			}
+			hits[j + 1] = h;
+		}
+		for (int i = 0; i < count; i++) {
+			DxGeom g = GeomList.get(hits[i]);
+			if ( GEOM_ENABLED(g) )
+				collideAABBs (g,geom,data,callback);
+		}
+	}
+
+	/** PARPE: the index of the first of {@link #byMin} whose AABB starts at or after {@code x}. */
+	private int firstStartingAtOrAfter(double x) {
+		int a = 0;
+		int b = byMinCount;
+		while (a < b) {
+			int m = (a + b) >>> 1;
+			if (byMinStart[m] < x) {
+				a = m + 1;
+			} else {
+				b = m;
+			}
+		}
+		return a;
+	}
+
+	/** PARPE: sorts the clean geoms into {@link #byMin} and {@link #unbounded}. */
+	private void indexByMin() {
+		int n = GeomList.size();
+		if (byMin.length < n) {
+			int size = n + (n >> 2) + 16;
+			byMin = new DxGeom[size];
+			byMinWork = new DxGeom[size];
+			byMinStart = new double[size];
+			unbounded = new int[size];
+			hits = new int[size];
+		}
+		byMinCount = 0;
+		unboundedCount = 0;
+		byMinWidest = 0;
+		double widths = 0;
+		int finite = 0;
+		for (int i = 0; i < n; i++) {
+			double lo = GeomList.get(i)._aabb.getMin(ax0id);
+			double hi = GeomList.get(i)._aabb.getMax(ax0id);
+			if (Double.isFinite(lo) && Double.isFinite(hi)) {
+				widths += hi - lo;
+				finite++;
+			}
+		}
+		// A few long geoms (a world's walls) would widen every lookup's window: they are tested always.
+		double wide = finite == 0 ? 0 : 4 * widths / finite;
+		for (int i = 0; i < n; i++) {
+			DxGeom g = GeomList.get(i);
+			double lo = g._aabb.getMin(ax0id);
+			double hi = g._aabb.getMax(ax0id);
+			if (Double.isFinite(lo) && Double.isFinite(hi) && hi - lo <= wide) {
+				byMin[byMinCount++] = g;
+				byMinWidest = Math.max(byMinWidest, hi - lo);
+			} else {
+				unbounded[unboundedCount++] = i;
+			}
+		}
+		DxGeom[] sorted = sortByMin(byMin, byMinWork, byMinCount);
+		if (sorted != byMin) {
+			byMinWork = byMin;
+			byMin = sorted;
+		}
+		for (int i = 0; i < byMinCount; i++) {
+			byMinStart[i] = byMin[i]._aabb.getMin(ax0id);
+		}
+		byMinStale = false;
+	}
+
 	/** PARPE: the work arrays of {@link #stableSortByMin}. */
 	private DxGeom[] sortA = new DxGeom[0], sortB = new DxGeom[0];
 
@@ -452,12 +587,73 @@ public class DxSAPSpace extends DxSpace implements DSapSpace {
 		if (sortA.length < n) {
 			sortA = new DxGeom[n + (n >> 2) + 16];
 			sortB = new DxGeom[sortA.length];
+			lastSorted = new DxGeom[sortA.length];
+			lastSortedCount = -1;
 		}
-		DxGeom[] a = sortA;
-		DxGeom[] b = sortB;
+		if (n == lastSortedCount && sameGeomsAsLastSort(n)) {
+			insertionSortByMinThenIndex(lastSorted, n);
+		} else {
+			for (int i = 0; i < n; i++) {
+				sortA[i] = list.get(i);
+			}
+			System.arraycopy(sortByMin(sortA, sortB, n), 0, lastSorted, 0, n);
+		}
+		lastSortedCount = n;
 		for (int i = 0; i < n; i++) {
-			a[i] = list.get(i);
+			list.set(i, lastSorted[i]);
 		}
+	}
+
+	/** PARPE: the order {@link #stableSortByMin} gave last, the start of its next sort. */
+	private DxGeom[] lastSorted = new DxGeom[0];
+	private int lastSortedCount = -1;
+
+	/**
+	 * PARPE: whether the {@code n} geoms sorted last are the ones {@link #collide} sorts now (all
+	 * still clean in this space, enabled, with a finite AABB start, none NaN): the same set as
+	 * the list of {@code n}.
+	 */
+	private boolean sameGeomsAsLastSort(int n) {
+		for (int i = 0; i < n; i++) {
+			DxGeom g = lastSorted[i];
+			if (g.parent_space != this || GEOM_GET_GEOM_IDX(g) == GEOM_INVALID_IDX || !GEOM_ENABLED(g)
+					|| g._aabb.getMax(ax0id) == dInfinity || Double.isNaN(g._aabb.getMin(ax0id))) {
+				return false;
+			}
+		}
+		return true;
+	}
+
+	/**
+	 * PARPE: sorts {@code a[0..n)} by AABB start, ties by index in GeomList. The geoms to sort
+	 * stand in GeomList's order, so this strict total order is the one the stable sort gives
+	 * them; starting from the last step's order, where the geoms moved little, it takes about
+	 * one pass.
+	 */
+	private void insertionSortByMinThenIndex(DxGeom[] a, int n) {
+		for (int i = 1; i < n; i++) {
+			DxGeom g = a[i];
+			double min = g._aabb.getMin(ax0id);
+			int index = GEOM_GET_GEOM_IDX(g);
+			int j = i - 1;
+			while (j >= 0) {
+				double m = a[j]._aabb.getMin(ax0id);
+				if (m > min || (m == min && GEOM_GET_GEOM_IDX(a[j]) > index)) {
+					a[j + 1] = a[j];
+					j--;
+				} else {
+					break;
+				}
+			}
+			a[j + 1] = g;
+		}
+	}
+
+	/**
+	 * PARPE: sorts {@code a[0..n)} by {@link #compareMin}, stably, with {@code b} as work array;
+	 * returns the one of the two that holds the result.
+	 */
+	private DxGeom[] sortByMin(DxGeom[] a, DxGeom[] b, int n) {
 		final int run = 16;
 		for (int lo = 0; lo < n; lo += run) {
 			int hi = Math.min(lo + run, n);
@@ -490,9 +686,7 @@ public class DxSAPSpace extends DxSpace implements DSapSpace {
 			a = b;
 			b = t;
 		}
-		for (int i = 0; i < n; i++) {
-			list.set(i, a[i]);
-		}
+		return a;
 	}
 
 	private class GeomComparator implements Comparator<DxGeom> {

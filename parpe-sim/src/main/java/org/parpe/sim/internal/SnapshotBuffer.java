@@ -126,9 +126,15 @@ public final class SnapshotBuffer {
             out[k] = p.get0();
             out[k + 1] = p.get1();
             out[k + 2] = p.get2();
-            for (int j = 0; j < 9; j++) {
-                out[k + 3 + j] = r.get(j / 3, j % 3);
-            }
+            out[k + 3] = r.get00();
+            out[k + 4] = r.get01();
+            out[k + 5] = r.get02();
+            out[k + 6] = r.get10();
+            out[k + 7] = r.get11();
+            out[k + 8] = r.get12();
+            out[k + 9] = r.get20();
+            out[k + 10] = r.get21();
+            out[k + 11] = r.get22();
         }
 
         private static Vec3 position(double[] pose, int k) {
