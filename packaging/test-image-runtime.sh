@@ -16,5 +16,7 @@ echo "test-image-runtime.sh: the image's modules: $modules" >&2
 jlink --add-modules "$modules" --no-man-pages --no-header-files --output "$work/runtime"
 # The IDE's tests: they exercise what a student touches (the CLI's and the core's run on the full JDK in the
 # main verify, and run the same code the IDE calls); the whole suite a second time would double CI's time.
+# The layouts in every language (tag "screens", 126 screens, about 2.5 min) are checked once, in the main verify:
+# they test widths of texts, which do not depend on the Java runtime.
 mvn -B verify -pl parpe-gui -am -Djvm="$work/runtime/bin/java" -Dtest='org/parpe/gui/**/*' \
-    -Dsurefire.failIfNoSpecifiedTests=false "$@"
+    -DexcludedGroups=screens -Dsurefire.failIfNoSpecifiedTests=false "$@"

@@ -50,6 +50,8 @@ public final class StatusBar {
         caret = field(70, false);
         sim.setText(UiMsg.SIM_IDLE.text());
         hardware.setText(UiMsg.HW_NOT_CONNECTED.text());
+        fit(sim);
+        fit(hardware);
         time.setText("t = 0.00 s");
     }
 
@@ -59,6 +61,12 @@ public final class StatusBar {
         gd.widthHint = width;
         l.setLayoutData(gd);
         return l;
+    }
+
+    /** Widens {@code l} to its present text where a language's words are longer than the field. */
+    private static void fit(Label l) {
+        GridData gd = (GridData) l.getLayoutData();
+        gd.widthHint = Math.max(gd.widthHint, l.computeSize(SWT.DEFAULT, SWT.DEFAULT).x);
     }
 
     private void separator() {

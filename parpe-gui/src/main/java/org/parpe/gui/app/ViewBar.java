@@ -119,8 +119,8 @@ public final class ViewBar {
 
     /** {@code auto}, a generator name, or a configuration file path. */
     String robot() {
-        String t = robot.getText();
-        return t.startsWith(SimTarget.AUTO) ? SimTarget.AUTO : t;
+        // the first item is the script's own robot, whatever words the language puts around "auto"
+        return robot.getSelectionIndex() == 0 ? SimTarget.AUTO : robot.getText();
     }
 
     /** Adds the configuration file {@code path} to the choices (replacing the previous file) and selects it. */

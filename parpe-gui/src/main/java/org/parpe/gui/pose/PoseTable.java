@@ -90,7 +90,8 @@ final class PoseTable {
     private void column(String title, int width) {
         TableColumn c = new TableColumn(table, SWT.LEFT);
         c.setText(title);
-        c.setWidth(width);
+        c.pack(); // no rows yet: as wide as its title, which is longer in some languages
+        c.setWidth(Math.max(width, c.getWidth()));
     }
 
     private void button(Composite parent, String text, String tip, IntConsumer onSelected) {

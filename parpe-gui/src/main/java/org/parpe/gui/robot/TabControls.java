@@ -273,7 +273,7 @@ final class TabControls {
             lines += l.getVisible() ? l.computeSize(width, SWT.DEFAULT).y : 0;
         }
         int most = (int) (Math.max(0, root.getClientArea().height - lines) * ROWS_SHARE);
-        boolean scrolls = want.y > most && most > 0;
+        boolean scrolls = want.y > most && root.getClientArea().height > 0;
         int inner = scrolls ? width - scroll.getVerticalBar().getSize().x : width;
         want = rowsBox.computeSize(inner, SWT.DEFAULT, true);
         rowsBox.setSize(inner, want.y);
