@@ -151,9 +151,7 @@ public final class TutorialWindow {
                 e.gc.drawImage(img, e.x, e.y + e.ascent - e.style.metrics.ascent);
             }
         });
-        Composite buttons = new Composite(root, SWT.NONE);
-        buttons.setLayout(new GridLayout(3, false));
-        buttons.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        Composite buttons = org.parpe.gui.panels.WrapRow.of(root); // "Open NAME" wraps under the others in a narrow dock
         Button previous = button(buttons, UiMsg.TUTORIAL_PREVIOUS.text(), () -> show(index.getSelectionIndex() - 1));
         Button next = button(buttons, UiMsg.TUTORIAL_NEXT.text(), () -> show(index.getSelectionIndex() + 1));
         open = button(buttons, UiMsg.TUTORIAL_OPEN_SCRIPT.text(), () -> {
@@ -161,9 +159,6 @@ public final class TutorialWindow {
                 openScript.accept(script);
             }
         });
-        previous.setLayoutData(new GridData(SWT.BEGINNING, SWT.CENTER, false, false));
-        next.setLayoutData(new GridData(SWT.BEGINNING, SWT.CENTER, false, false));
-        open.setLayoutData(new GridData(SWT.END, SWT.CENTER, true, false));
         for (Path p : pages) {
             index.add(title(p));
         }
@@ -332,7 +327,7 @@ public final class TutorialWindow {
                 .filter(Files::isRegularFile).findFirst().orElse(null);
         open.setEnabled(script != null);
         open.setText(script == null ? UiMsg.TUTORIAL_OPEN_SCRIPT.text() : UiMsg.TUTORIAL_OPEN_NAMED.text(script.getFileName()));
-        open.getParent().layout();
+        open.getParent().getParent().layout(true, true);
         text.setTopPixel(0);
     }
 

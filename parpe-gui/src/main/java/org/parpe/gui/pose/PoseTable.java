@@ -67,13 +67,12 @@ final class PoseTable {
             list.remove(i);
             select(Math.min(i, list.size() - 1));
         });
-        Composite timing = new Composite(box, SWT.NONE);
-        timing.setLayout(new GridLayout(4, false));
+        Composite timing = org.parpe.gui.panels.WrapRow.of(box); // a narrow pane wraps it, never widens the table's side
         new Label(timing, SWT.NONE).setText(PanelMsg.POSE_TIME.text());
         time = new Text(timing, SWT.BORDER);
         time.setText("1.00");
         time.setToolTipText(PanelMsg.POSE_TIME_TIP.text(PoseList.MIN_INTERVAL, (int) PoseList.MAX_INTERVAL));
-        time.setLayoutData(new GridData(50, SWT.DEFAULT));
+        time.setLayoutData(new org.eclipse.swt.layout.RowData(50, SWT.DEFAULT));
         time.addListener(SWT.DefaultSelection, e -> retime());
         new Label(timing, SWT.NONE).setText("s");
         button(timing, PanelMsg.POSE_SET_TIME.text(), PanelMsg.POSE_SET_TIME_TIP.text(), i -> retime());
