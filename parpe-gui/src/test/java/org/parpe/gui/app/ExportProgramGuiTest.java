@@ -53,10 +53,10 @@ class ExportProgramGuiTest {
         Path ino = sketch.resolve("parsl_03_hello_snake.ino");
         assertTrue(Files.isRegularFile(ino), d.message());
         assertTrue(Files.readString(ino).startsWith(ProgramExport.MARK), "the sketch is marked as generated");
-        for (String f : List.of("parsl_program.c", "parsl_program.h", "parsl_servo.h", "parsl_rt.c", "parsl_inst.c")) {
+        for (String f : List.of("parsl_program.c", "parsl_program.h", "parsl_servo.h", "parsl_rt.c", "parsl_inst.c", "parsl_maths.h")) {
             assertTrue(Files.isRegularFile(sketch.resolve(f)), f + " in " + sketch);
         }
-        assertTrue(d.message().startsWith("Wrote 9 files to " + sketch + "\n"), d.message());
+        assertTrue(d.message().startsWith("Wrote 10 files to " + sketch + "\n"), d.message());
         assertTrue(d.message().contains("uno"), "the memory estimate for the Uno: " + d.message());
         assertEquals(List.of(), asked, "nothing asked when the folder was empty");
 
