@@ -41,12 +41,7 @@ class CliTextTest {
     void everyMessageKeyIsUsedByTheCode() throws IOException {
         String code = sources().filter(p -> !p.endsWith("text/CliMsg.java")).map(CliTextTest::read)
                 .reduce("", String::concat);
-        List<String> unused = new ArrayList<>();
-        for (CliMsg m : CliMsg.values()) {
-            if (!Pattern.compile("\\b" + m.name() + "\\b").matcher(code).find()) {
-                unused.add(m.name());
-            }
-        }
+        List<String> unused = BundleCheck.unusedIn(code, List.of(CliMsg.values()), "");
         assertEquals(List.of(), unused, "keys no code uses");
     }
 

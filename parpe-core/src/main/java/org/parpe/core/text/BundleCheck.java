@@ -24,6 +24,21 @@ public final class BundleCheck {
     }
 
     /**
+     * The keys of {@code keys} that {@code code} never names: a key counts as used where
+     * {@code prefix} followed by its name stands as a word ({@code "SimMsg."} for code that always
+     * writes the enum's name; {@code ""} for any mention). The translators' "unused keys" list.
+     */
+    public static List<String> unusedIn(CharSequence code, List<? extends Key> keys, String prefix) {
+        List<String> unused = new ArrayList<>();
+        for (Key k : keys) {
+            if (!Pattern.compile((prefix.isEmpty() ? "\\b" : "") + Pattern.quote(prefix + k.name()) + "\\b").matcher(code).find()) {
+                unused.add(k.name());
+            }
+        }
+        return unused;
+    }
+
+    /**
      * The problems of bundle {@code base} against {@code keys} (the constants of its key enum),
      * one line each: {@code de: missing KEY}, {@code ja: unused KEY},
      * {@code es: KEY has placeholders [0, 2], English [0, 1]}; empty when all is well.

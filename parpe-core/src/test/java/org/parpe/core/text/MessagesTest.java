@@ -35,13 +35,9 @@ class MessagesTest {
         // Msg.java counts from its helpers on, not its list of constants
         String code = mainSources().map(p -> p.endsWith("text/Msg.java") ? afterConstants(read(p)) : read(p))
                 .reduce("", String::concat);
-        List<String> unused = new ArrayList<>();
-        for (Msg m : Msg.values()) {
-            // KIND_ constants are reached by name from the kind words (Msg.kind)
-            if (!m.name().startsWith("KIND_") && !Pattern.compile("\\b" + m.name() + "\\b").matcher(code).find()) {
-                unused.add(m.name());
-            }
-        }
+        // KIND_ constants are reached by name from the kind words (Msg.kind)
+        List<String> unused = BundleCheck.unusedIn(code, java.util.Arrays.stream(Msg.values())
+                .filter(m -> !m.name().startsWith("KIND_")).toList(), "");
         assertEquals(List.of(), unused, "keys no code uses: remove them from Msg and every bundle");
     }
 
@@ -153,5 +149,15 @@ class MessagesTest {
         } catch (IOException e) {
             throw new java.io.UncheckedIOException(e);
         }
+    }
+
+    /** The unused-key check itself: a key counts only where its whole name (after the prefix) is written. */
+    @Test
+    void unusedInListsTheKeysTheCodeNeverNames() {
+        Msg a = Msg.values()[0];
+        Msg b = Msg.values()[1];
+        assertEquals(List.of(b.name()), BundleCheck.unusedIn("f(Msg." + a.name() + ");", List.of(a, b), "Msg."));
+        assertEquals(List.of(a.name(), b.name()), BundleCheck.unusedIn("f(" + a.name() + "_MORE, " + b.name() + ");", List.of(a, b), "Msg."));
+        assertEquals(List.of(a.name()), BundleCheck.unusedIn("f(X" + a.name() + ", " + b.name() + ");", List.of(a, b), ""));
     }
 }

@@ -53,12 +53,7 @@ class PanelTextTest {
         String own = read(MAIN.resolve("text/PanelMsg.java"));
         String code = sources().filter(p -> !p.endsWith("text/PanelMsg.java")).map(PanelTextTest::read)
                 .reduce(own.substring(own.indexOf("String BUNDLE")), String::concat);
-        List<String> unused = new ArrayList<>();
-        for (PanelMsg m : PanelMsg.values()) {
-            if (!Pattern.compile("\\b" + m.name() + "\\b").matcher(code).find()) {
-                unused.add(m.name());
-            }
-        }
+        List<String> unused = BundleCheck.unusedIn(code, List.of(PanelMsg.values()), "");
         assertEquals(List.of(), unused, "keys no code uses");
     }
 

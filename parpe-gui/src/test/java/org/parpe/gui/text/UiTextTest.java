@@ -67,12 +67,7 @@ class UiTextTest {
     @Test
     void everyKeyIsUsedByTheCode() {
         String code = sources().filter(p -> !p.endsWith("text/UiMsg.java")).map(UiTextTest::read).reduce("", String::concat);
-        List<String> unused = new ArrayList<>();
-        for (UiMsg m : UiMsg.values()) {
-            if (!Pattern.compile("\\b" + m.name() + "\\b").matcher(code).find()) {
-                unused.add(m.name());
-            }
-        }
+        List<String> unused = BundleCheck.unusedIn(code, List.of(UiMsg.values()), "");
         assertEquals(List.of(), unused, "keys no code uses");
     }
 

@@ -5,9 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
-import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.parpe.core.text.BundleCheck;
@@ -33,12 +31,7 @@ class SerialMessagesTest {
                 code.append(Files.readString(p));
             }
         }
-        List<String> unused = new ArrayList<>();
-        for (SerialMsg m : SerialMsg.values()) {
-            if (!Pattern.compile("SerialMsg\\." + m.name() + "\\b").matcher(code).find()) {
-                unused.add(m.name());
-            }
-        }
+        List<String> unused = BundleCheck.unusedIn(code, List.of(SerialMsg.values()), "SerialMsg.");
         assertEquals(List.of(), unused, "keys no code uses: remove them from SerialMsg and every bundle");
     }
 
