@@ -41,6 +41,19 @@ echo "dist.sh: building the jars" >&2
 mvn -q -B -DskipTests -Dexec.skip=true -pl parpe-cli,parpe-gui -am package \
     org.apache.maven.plugins:maven-dependency-plugin:3.7.1:copy-dependencies \
     -DincludeScope=runtime -Dmdep.stripVersion=true -DoutputDirectory="$input"
+# parpe-sim carries patched copies of some ODE4j classes (docs/decisions.md); the shaded jars leave
+# ODE4j's own out (the parent pom's filter), and so must this class path: jpackage lists core.jar
+# (ODE4j) before parpe-sim.jar, so ODE4j's originals would win and the patches would never run
+# (the smoke test below then fails on the warm-start call only the patched solver has).
+patched=$(cd parpe-sim/target/classes && find org/ode4j -name '*.class' ! -name '*$*' | sed 's/\.class$//')
+ode=$(mktemp -d)
+(cd "$ode" && jar xf "$input/core.jar")
+for c in $patched; do
+    rm -f "$ode/$c.class" "$ode/$c"\$*.class
+done
+rm "$input/core.jar"
+jar --create --no-manifest --file "$input/core.jar" -C "$ode" .
+rm -rf "$ode"
 cp parpe-cli/target/parpe-cli-*.jar "$input/parpe-cli.jar"
 cp parpe-gui/target/parpe-gui-*.jar "$input/parpe-gui.jar"
 cp -r examples docs "$input/"
