@@ -2,9 +2,6 @@ package org.parpe.gui.text;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
-import java.io.IOException;
-import java.io.UncheckedIOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -12,7 +9,6 @@ import java.util.Locale;
 import java.util.Set;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.parpe.core.text.BundleCheck;
 import org.parpe.core.text.Lang;
@@ -50,8 +46,8 @@ class PanelTextTest {
     @Test
     void everyKeyIsUsedByTheCode() {
         // PanelMsg's own code after its constants counts (ORDINAL is used there)
-        String own = read(MAIN.resolve("text/PanelMsg.java"));
-        String code = sources().filter(p -> !p.endsWith("text/PanelMsg.java")).map(PanelTextTest::read)
+        String own = UiTextTest.read(MAIN.resolve("text/PanelMsg.java"));
+        String code = UiTextTest.sources().filter(p -> !p.endsWith("text/PanelMsg.java")).map(UiTextTest::read)
                 .reduce(own.substring(own.indexOf("String BUNDLE")), String::concat);
         List<String> unused = BundleCheck.unusedIn(code, List.of(PanelMsg.values()), "");
         assertEquals(List.of(), unused, "keys no code uses");
@@ -61,8 +57,8 @@ class PanelTextTest {
     @Test
     void panelsCodeHasNoProseLiterals() {
         List<String> found = new ArrayList<>();
-        sources().filter(p -> PACKAGES.contains(MAIN.relativize(p).getName(0).toString())).forEach(p -> {
-            String text = read(p).replaceAll("(?s)/\\*.*?\\*/", "").replaceAll("(?m)//.*$", "");
+        UiTextTest.sources().filter(p -> PACKAGES.contains(MAIN.relativize(p).getName(0).toString())).forEach(p -> {
+            String text = UiTextTest.read(p).replaceAll("(?s)/\\*.*?\\*/", "").replaceAll("(?m)//.*$", "");
             Matcher m = Pattern.compile("\"((?:[^\"\\\\\\n]|\\\\.)*)\"").matcher(text);
             while (m.find()) {
                 if (!ALLOWED.contains(m.group(1)) && Pattern.compile("[A-Za-z]{2,}[ ,;:]+[A-Za-z]{2,}").matcher(m.group(1)).find()) {
@@ -88,19 +84,4 @@ class PanelTextTest {
         }
     }
 
-    private static Stream<Path> sources() {
-        try (Stream<Path> s = Files.walk(MAIN)) {
-            return s.filter(p -> p.toString().endsWith(".java")).toList().stream();
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
-    }
-
-    private static String read(Path p) {
-        try {
-            return Files.readString(p);
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
-    }
 }

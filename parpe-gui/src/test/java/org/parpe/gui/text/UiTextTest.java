@@ -203,7 +203,8 @@ class UiTextTest {
         }
     }
 
-    private static Stream<Path> sources() {
+    /** Every Java file of parpe-gui's main code (also read by {@link PanelTextTest}). */
+    static Stream<Path> sources() {
         try (Stream<Path> s = Files.walk(MAIN)) {
             return s.filter(p -> p.toString().endsWith(".java")).toList().stream();
         } catch (IOException e) {
@@ -211,7 +212,7 @@ class UiTextTest {
         }
     }
 
-    private static String read(Path p) {
+    static String read(Path p) {
         try {
             return Files.readString(p);
         } catch (IOException e) {
