@@ -1,5 +1,6 @@
 package org.parpe.cli;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.PrintStream;
 import java.lang.reflect.InvocationTargetException;
 import java.nio.file.Files;
@@ -43,7 +44,7 @@ final class Ide {
             main = Class.forName(MAIN);
         } catch (ClassNotFoundException e) {
             // the command-line jar of a source checkout: its launcher starts the IDE's own jar
-            err.println("parpe: the IDE is not in this jar; to open the script in the IDE, run: ./parpe gui "
+            err.println("parpe: " + CliMsg.NO_IDE.text() + " ./parpe gui "
                     + String.join(" ", args.length > 0 && args[0].equals("gui")
                     ? java.util.Arrays.copyOfRange(args, 1, args.length) : args));
             return 2;

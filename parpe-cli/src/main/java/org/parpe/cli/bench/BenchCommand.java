@@ -1,5 +1,7 @@
 package org.parpe.cli.bench;
 
+import org.parpe.cli.text.CliMsg;
+import org.parpe.core.text.Lang;
 import java.io.BufferedReader;
 import java.io.InputStreamReader;
 import java.io.PrintStream;
@@ -56,12 +58,11 @@ public final class BenchCommand implements Callable<Integer> {
         }
         for (String name : only) {
             if (all.stream().noneMatch(b -> b.name().equals(name))) {
-                return usage("unknown benchmark '" + name + "' (try --list)");
+                return usage(CliMsg.UNKNOWN_BENCHMARK.text(name));
             }
         }
         if (compare.size() > 2 || compare.size() == 2 && (save != null || !only.isEmpty())) {
-            return usage("--compare takes one earlier run to set beside this one, or two files to set side by side"
-                    + " (then nothing runs: no --only or --save)");
+            return usage(CliMsg.COMPARE_USAGE.text());
         }
         org.parpe.cli.options.OutputFile saved = save == null ? null
                 : org.parpe.cli.options.OutputFile.of(org.parpe.cli.options.OutputFile.plan(compare), "--save", save);
@@ -71,7 +72,7 @@ public final class BenchCommand implements Callable<Integer> {
             try {
                 earlier.add(BenchResults.read(file, everyGoal));
             } catch (java.io.IOException e) {
-                return usage("cannot read " + file + ": " + e.getMessage());
+                return usage(CliMsg.CANNOT_READ_RUN.text(file, e.getMessage()));
             }
         }
         if (compare.size() == 2) {
@@ -88,7 +89,7 @@ public final class BenchCommand implements Callable<Integer> {
                 b.run(shown);
                 shown.flush();
             } else if (fork(b, shown) != 0) {
-                spec.commandLine().getErr().println("parpe: benchmark '" + b.name() + "' failed");
+                spec.commandLine().getErr().println("parpe: " + CliMsg.BENCHMARK_FAILED.text(b.name()));
                 return ExitCode.INTERNAL_ERROR;
             }
         }
@@ -99,7 +100,7 @@ public final class BenchCommand implements Callable<Integer> {
         }
         if (!earlier.isEmpty()) {
             out.println();
-            BenchResults.compare(out, compare.get(0).toString(), earlier.get(0), "this run", results);
+            BenchResults.compare(out, compare.get(0).toString(), earlier.get(0), CliMsg.THIS_RUN.text(), results);
             out.flush();
         }
         return 0;
@@ -119,7 +120,7 @@ public final class BenchCommand implements Callable<Integer> {
         List<String> command = new ArrayList<>(List.of(java));
         command.addAll(b.jvmOptions());
         command.addAll(List.of("-Djava.awt.headless=true", "-cp", System.getProperty("java.class.path"),
-                "org.parpe.cli.Main", "bench", "--only", b.name(), "--no-fork"));
+                "org.parpe.cli.Main", "bench", "--only", b.name(), "--no-fork", "--lang", Lang.current().toLanguageTag()));
         Process p = new ProcessBuilder(command).redirectInput(ProcessBuilder.Redirect.INHERIT)
                 .redirectError(ProcessBuilder.Redirect.INHERIT).start();
         try (BufferedReader in = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8))) {

@@ -1,5 +1,6 @@
 package org.parpe.cli.bench;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
@@ -116,9 +117,10 @@ final class BenchResults {
             }
         }
         List<String> unmeasured = goals.stream().filter(g -> !measured.contains(g)).map(Goal::figures).toList();
-        return String.format(Locale.ROOT, "# goals: %d held, %d missed%s%s", held, missed.size(),
-                missed.isEmpty() ? "" : " (" + String.join(", ", missed) + ")",
-                unmeasured.isEmpty() ? "" : "; not measured: " + String.join(", ", unmeasured));
+        // "# goals:" stays: bench leaves the line of each forked benchmark out by it
+        String said = missed.isEmpty() ? CliMsg.GOALS.text(held, 0) : CliMsg.GOALS_MISSED.text(held, missed.size(),
+                String.join(", ", missed));
+        return "# goals: " + (unmeasured.isEmpty() ? said : CliMsg.NOT_MEASURED.text(said, String.join(", ", unmeasured)));
     }
 
     /**
@@ -129,7 +131,7 @@ final class BenchResults {
         Set<String> names = new LinkedHashSet<>(before.figures.keySet());
         names.addAll(after.figures.keySet());
         List<String[]> rows = new ArrayList<>();
-        rows.add(new String[] {"figure", beforeLabel, afterLabel, "change", "goal"});
+        rows.add(new String[] {CliMsg.FIGURE.text(), beforeLabel, afterLabel, CliMsg.CHANGE.text(), CliMsg.GOAL.text()});
         for (String name : names) {
             String a = before.figures.getOrDefault(name, "-");
             String b = after.figures.getOrDefault(name, "-");
@@ -153,7 +155,7 @@ final class BenchResults {
     }
 
     private static String verdict(Goal g, Double v) {
-        return v == null ? "-" : g.holds(v) ? "holds" : "MISSED";
+        return v == null ? "-" : (g.holds(v) ? CliMsg.HOLDS : CliMsg.MISSED).text();
     }
 
     /** The number a figure's value is, or null for a word ({@code true}, {@code skipped ...}). */

@@ -1,5 +1,6 @@
 package org.parpe.cli.bench;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -43,7 +44,6 @@ public interface Benchmark {
                 }
             }
         }
-        throw new IllegalStateException("the examples folder (examples/hello-snake.xml) was not found above "
-                + Path.of("").toAbsolutePath() + " or " + jar);
+        throw new IllegalStateException(CliMsg.NO_EXAMPLES_FOLDER.text(Path.of("").toAbsolutePath(), jar));
     }
 }

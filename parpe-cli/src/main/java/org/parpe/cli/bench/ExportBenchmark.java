@@ -1,5 +1,6 @@
 package org.parpe.cli.bench;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.lang.management.ManagementFactory;
@@ -146,8 +147,7 @@ public final class ExportBenchmark implements Benchmark {
         try {
             p = new ProcessBuilder(new ArrayList<>(command)).directory(dir.toFile()).redirectErrorStream(true).start();
         } catch (IOException e) {
-            throw new IllegalStateException("cannot start " + command.get(0) + " (the export benchmark needs gcc: "
-                    + "sudo apt-get install gcc): " + e.getMessage());
+            throw new IllegalStateException(CliMsg.NEEDS_GCC.text(command.get(0), e.getMessage()));
         }
         String output = new String(p.getInputStream().readAllBytes());
         if (!p.waitFor(10, TimeUnit.MINUTES) || p.exitValue() != 0) {

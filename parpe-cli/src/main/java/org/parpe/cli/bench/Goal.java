@@ -1,6 +1,6 @@
 package org.parpe.cli.bench;
 
-import java.util.Locale;
+import org.parpe.cli.text.CliMsg;
 import java.util.regex.Pattern;
 
 /**
@@ -41,6 +41,6 @@ public record Goal(String figures, boolean atLeast, double bound) {
 
     /** The goal and its verdict for {@code value}: {@code goal >= 3: holds}. */
     public String verdict(double value) {
-        return String.format(Locale.ROOT, "goal %s: %s", describe(), holds(value) ? "holds" : "MISSED");
+        return CliMsg.GOAL_VERDICT.text(describe(), (holds(value) ? CliMsg.HOLDS : CliMsg.MISSED).text());
     }
 }

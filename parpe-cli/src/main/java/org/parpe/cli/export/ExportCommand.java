@@ -37,7 +37,7 @@ import picocli.CommandLine.Model.CommandSpec;
         + " Arduino sketch that runs it without a PC (see docs/embedded.md), or write a robot as MJCF, URDF or SDF"
         + " with a script's gait (see docs/bridges.md).")
 public final class ExportCommand implements Callable<Integer> {
-    @Parameters(index = "0", arity = "0..1", paramLabel = "SCRIPT",
+    @Parameters(index = "0", arity = "0..1", paramLabel = "SCRIPT", descriptionKey = "file",
             description = "The PARSL script (for mjcf, urdf and sdf: optional, its gait is exported with the robot).")
     Path file;
 

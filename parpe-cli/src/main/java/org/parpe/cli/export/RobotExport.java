@@ -1,5 +1,6 @@
 package org.parpe.cli.export;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
@@ -67,11 +68,11 @@ final class RobotExport {
             }
         }
         ExportFiles.write(q.out(), files);
-        out.println("wrote " + files.size() + (files.size() == 1 ? " file" : " files") + " to " + q.out() + ": "
-                + String.join(", ", files.keySet()));
+        out.println((files.size() == 1 ? CliMsg.WROTE_ONE_FILE_LIST : CliMsg.WROTE_FILES_LIST).text(files.size(), q.out(),
+                String.join(", ", files.keySet())));
         out.println(robot.summary());
         if (q.target().equals("mjcf") && q.program() != null) {
-            out.println("play: python3 " + q.out().resolve("play_mujoco.py") + " " + q.out().resolve(base + ".xml") + " "
+            out.println(CliMsg.PLAY.text() + ": python3 " + q.out().resolve("play_mujoco.py") + " " + q.out().resolve(base + ".xml") + " "
                     + q.out().resolve(base + ".ctrl.csv") + " --out trace.csv");
         }
         return 0;

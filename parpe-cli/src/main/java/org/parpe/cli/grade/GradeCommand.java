@@ -1,5 +1,6 @@
 package org.parpe.cli.grade;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
@@ -41,10 +42,10 @@ import picocli.CommandLine.Spec;
         + " challenge (each in its own JVM, with CPU-time and memory limits, reading only its own folder) and write a"
         + " ranked report: REPORT_DIR/report.csv, REPORT_DIR/report.html and a trace per run in REPORT_DIR/traces/.")
 public final class GradeCommand implements Callable<Integer> {
-    @Parameters(index = "0", paramLabel = "CHALLENGE.xml", description = "The challenge (examples/challenges).")
+    @Parameters(index = "0", paramLabel = "CHALLENGE.xml", descriptionKey = "challenge", description = "The challenge (examples/challenges).")
     Path challengeFile;
 
-    @Parameters(index = "1", paramLabel = "STUDENTS_DIR",
+    @Parameters(index = "1", paramLabel = "STUDENTS_DIR", descriptionKey = "students",
             description = "A folder with one script per student, or one folder per student.")
     Path studentsDir;
 
@@ -83,7 +84,7 @@ public final class GradeCommand implements Callable<Integer> {
             return 2;
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
-            err.println("parpe: interrupted");
+            err.println("parpe: " + CliMsg.INTERRUPTED.text());
             return 130;
         }
     }
@@ -95,10 +96,10 @@ public final class GradeCommand implements Callable<Integer> {
         World world = c == null ? null : WorldReader.read(c.world(), found);
         found.all().forEach(d -> err.println(d.format()));
         if (world == null) {
-            throw new UsageException("the challenge '" + challengeFile + "' has errors (above)");
+            throw new UsageException(CliMsg.CHALLENGE_HAS_ERRORS.text(challengeFile));
         }
         if (!Files.isDirectory(studentsDir)) {
-            throw new UsageException("'" + studentsDir + "' is not a folder of students' scripts");
+            throw new UsageException(CliMsg.NOT_A_STUDENTS_FOLDER.text(studentsDir));
         }
         int n = jobs();
         prepare();
@@ -109,11 +110,11 @@ public final class GradeCommand implements Callable<Integer> {
         try {
             students = Students.of(studentsDir);
         } catch (IOException e) {
-            throw new UsageException("cannot list '" + studentsDir + "': " + e.getMessage());
+            throw new UsageException(CliMsg.CANNOT_LIST.text(studentsDir, e.getMessage()));
         }
         Grading grading = new Grading(challengeFile, c, studentsDir, out, new Isolation.Limits(cpuLimit, memoryMb));
         Grading.Listener progress = (done, total, s) -> {
-            err.println(String.format(Locale.ROOT, "graded %d/%d: %s", done, total, oneLine(s.name())));
+            err.println(CliMsg.GRADED.text(done, total, oneLine(s.name())));
             err.flush();
         };
         if (shard != null) {
@@ -123,8 +124,7 @@ public final class GradeCommand implements Callable<Integer> {
             Path file = out.resolve(GradeShard.fileName(kn[0], kn[1]));
             OutputFile.of(plan, "--out", file.toString()).write(GradeShard.format(kn[0], kn[1], range[0], students.size(), part));
             PrintWriter o = spec.commandLine().getOut();
-            o.println(String.format(Locale.ROOT, "shard %d/%d: students %d..%d of %d graded into %s", kn[0], kn[1],
-                    range[0] + 1, range[1], students.size(), file));
+            o.println(CliMsg.GRADED_SHARD.text(kn[0], kn[1], range[0] + 1, range[1], students.size(), file));
             o.flush();
             return 0;
         }
@@ -137,7 +137,7 @@ public final class GradeCommand implements Callable<Integer> {
             o.println(String.format(Locale.ROOT, "%-4s %s  %s", r.rank() > 0 ? Integer.toString(r.rank()) : "-",
                     oneLine(r.student().name()), r.rank() > 0 ? String.format(Locale.ROOT, "%.1f", r.outcome().score()) : first));
         }
-        o.println(Report.summary(rows, c) + "; report in " + out.resolve("report.html"));
+        o.println(CliMsg.REPORT_IN.text(Report.summary(rows, c), out.resolve("report.html")));
         o.flush();
         return 0;
     }
@@ -145,14 +145,14 @@ public final class GradeCommand implements Callable<Integer> {
     /** Checks the options of sharding and limits; returns how many students are graded at once. */
     private int jobs() throws UsageException {
         if (shard != null && merge != null) {
-            throw new UsageException("--shard K/N grades one shard and --merge N ranks them all: give one of them");
+            throw new UsageException(CliMsg.SHARD_OR_MERGE.text());
         }
         if (!(cpuLimit > 0) || memoryMb < 64) {
-            throw new UsageException("--cpu-limit must be > 0 s and --memory at least 64 MB, got " + cpuLimit + " and " + memoryMb);
+            throw new UsageException(CliMsg.GRADE_LIMITS.text(cpuLimit, memoryMb));
         }
         int n = jobs == null ? Runtime.getRuntime().availableProcessors() : jobs;
         if (n < 1) {
-            throw new UsageException("--jobs must be at least 1, got " + n);
+            throw new UsageException(CliMsg.JOBS_AT_LEAST_ONE.text(n));
         }
         return n;
     }

@@ -1,5 +1,6 @@
 package org.parpe.cli.grade;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -23,7 +24,7 @@ final class Shards {
 
     static List<Row> merge(Grading grading, List<Students.Student> students, int n) throws UsageException {
         if (n < 1 || n > 999_999) {
-            throw new UsageException("--merge expects the number of shards N, 1..999999, got " + n);
+            throw new UsageException(CliMsg.MERGE_N_RANGE.text(n));
         }
         List<GradeShard.Part> parts = new ArrayList<>();
         List<String> missing = new ArrayList<>();
@@ -31,7 +32,7 @@ final class Shards {
             int[] range = SweepSpec.shard(students.size(), k, n);
             Path file = grading.out().resolve(GradeShard.fileName(k, n));
             if (!Files.exists(file)) {
-                missing.add(k + (range[0] < range[1] ? " (students " + (range[0] + 1) + ".." + range[1] + ")" : ""));
+                missing.add(range[0] < range[1] ? CliMsg.SHARD_STUDENTS.text(k, range[0] + 1, range[1]) : Integer.toString(k));
                 continue;
             }
             GradeShard.Part p;
@@ -41,17 +42,15 @@ final class Shards {
                 throw new UsageException(e.getMessage());
             }
             if (p.k() != k || p.n() != n || p.from() != range[0] || p.to() != range[1]) {
-                throw new UsageException(file + ":1: holds students " + (p.from() + 1) + ".." + p.to() + " as shard " + p.k()
-                        + "/" + p.n() + ", not shard " + k + "/" + n + " of these " + students.size() + " students");
+                throw new UsageException(file + ":1: " + CliMsg.WRONG_GRADE_SHARD.text(p.from() + 1, p.to(), p.k() + "/" + p.n(),
+                        k + "/" + n, students.size()));
             }
             parts.add(p);
         }
         if (!missing.isEmpty()) {
             String ks = String.join(", ", missing);
-            throw new UsageException("shard" + (missing.size() > 1 ? "s " : " ") + ks + " of " + n + " missing in '"
-                    + grading.out() + "': run it again (parpe grade CHALLENGE STUDENTS_DIR --out " + grading.out()
-                    + " --shard K/" + n + "; with scripts/grade.slurm: PARPE_SHARDS=" + n + " sbatch --array=K ...),"
-                    + " then merge again; see docs/cluster.md");
+            throw new UsageException((missing.size() > 1 ? CliMsg.GRADE_SHARDS_MISSING : CliMsg.GRADE_SHARD_MISSING)
+                    .text(ks, n, grading.out()));
         }
         try {
             return grading.merge(students, parts);

@@ -1,5 +1,6 @@
 package org.parpe.cli.hw;
 
+import org.parpe.cli.text.CliMsg;
 import org.parpe.cli.options.UsageException;
 import org.parpe.serial.bus.BusConfig;
 import org.parpe.serial.bus.SafeMode;
@@ -30,7 +31,7 @@ public class BusOptions {
         switch (onFault) {
             case "hold" -> mode = SafeMode.HOLD;
             case "limp" -> mode = SafeMode.LIMP;
-            default -> throw new UsageException("--on-fault must be hold or limp, got '" + onFault + "'");
+            default -> throw new UsageException(CliMsg.BAD_ON_FAULT.text(onFault));
         }
         try {
             return BusConfig.defaults().withBaud(baud).withSafeMode(mode).withReads(readTimeout, retries);

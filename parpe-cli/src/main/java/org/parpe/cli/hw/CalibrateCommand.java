@@ -1,5 +1,6 @@
 package org.parpe.cli.hw;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.InputStream;
@@ -64,7 +65,7 @@ public final class CalibrateCommand implements Callable<Integer> {
         // --port is for this session: the profile keeps the port it names
         HardwareProfile profile = port == null ? saved : saved.withPort(port);
         if (profile.port() == null) {
-            throw new UsageException("no serial port: give --port or a port attribute in " + hardware);
+            throw new UsageException(CliMsg.NO_SERIAL_PORT.text(hardware));
         }
         ServoBus bus;
         try {
@@ -84,23 +85,21 @@ public final class CalibrateCommand implements Callable<Integer> {
             throws UsageException, IOException {
         List<Integer> missing = servos.missing();
         if (!missing.isEmpty()) {
-            throw new UsageException("the servos of modules " + missing + " do not answer on " + profile.port() + " ("
-                    + profile.protocol().key() + ", " + profile.baud() + " baud); nothing was made limp");
+            throw new UsageException(CliMsg.SERVOS_SILENT.text(missing, profile.port(), profile.protocol().key(), profile.baud()));
         }
         servos.begin();
-        err.println("calibrate: the servos are limp; pose the robot with every joint at 0° (its zero pose), then press"
-                + " Enter (Ctrl-D cancels)");
+        err.println("calibrate: " + CliMsg.CALIBRATE_POSE.text());
         err.flush();
         BufferedReader in = new BufferedReader(new InputStreamReader(input, StandardCharsets.UTF_8));
         double[] servo = new double[profile.servos().size()];
         try {
             if (in.readLine() == null) {
-                err.println("calibrate: cancelled; " + hardware + " unchanged");
+                err.println("calibrate: " + CliMsg.CALIBRATE_CANCELLED.text(hardware));
                 return 1;
             }
             int silent = servos.captureServoAngles(servo);
             if (silent >= 0) {
-                err.println("calibrate: the servo of module " + silent + " did not answer; " + hardware + " unchanged");
+                err.println("calibrate: " + CliMsg.CALIBRATE_SILENT.text(silent, hardware));
                 return 1;
             }
         } finally {
@@ -112,32 +111,33 @@ public final class CalibrateCommand implements Callable<Integer> {
             ServoMapping m = profile.servos().get(i);
             ServoMapping c = m.withZero(Math.round(servo[i] * 100) / 100.0);
             if (c.reachable().min() > c.reachable().max()) {
-                unreachable.add(String.format(Locale.ROOT, "calibrate: module %d cannot reach %s..%s° with zero %.2f°:"
-                        + " pose it again", m.module(), num(m.min()), num(m.max()), c.zero()));
+                unreachable.add("calibrate: " + CliMsg.CANNOT_REACH.text(m.module(), num(m.min()), num(m.max()),
+                        String.format(Locale.ROOT, "%.2f", c.zero())));
             }
             calibrated.add(c.reachable());
         }
         if (!unreachable.isEmpty()) {
             // checked before anything is written: a profile with min > max is one nothing can load
             unreachable.forEach(err::println);
-            err.println("calibrate: " + hardware + " unchanged");
+            err.println("calibrate: " + CliMsg.UNCHANGED.text(hardware));
             return 1;
         }
         for (int i = 0; i < servo.length; i++) {
             ServoMapping m = profile.servos().get(i);
             ServoMapping c = calibrated.get(i);
-            err.println(String.format(Locale.ROOT, "calibrate: module %d (servo %d): zero %.2f° (was %.2f°)%s",
-                    m.module(), m.servo(), c.zero(), m.zero(), c.min() == m.min() && c.max() == m.max() ? ""
-                            : String.format(Locale.ROOT, "; limits narrowed to %.2f..%.2f° to stay in the servo's range",
-                            c.min(), c.max())));
+            String zero = String.format(Locale.ROOT, "%.2f", c.zero());
+            String was = String.format(Locale.ROOT, "%.2f", m.zero());
+            err.println("calibrate: " + (c.min() == m.min() && c.max() == m.max()
+                    ? CliMsg.ZERO_SET.text(m.module(), m.servo(), zero, was)
+                    : CliMsg.ZERO_SET_NARROWED.text(m.module(), m.servo(), zero, was, String.format(Locale.ROOT, "%.2f", c.min()),
+                            String.format(Locale.ROOT, "%.2f", c.max()))));
         }
         try {
             ProfileWriter.write(saved.withServos(calibrated), hardware, "calibrated by parpe calibrate");
         } catch (IOException e) {
-            throw new UsageException("cannot write --hardware file '" + hardware + "': " + e.getMessage()
-                    + "; it is unchanged");
+            throw new UsageException(CliMsg.CANNOT_WRITE_HARDWARE.text(hardware, e.getMessage()));
         }
-        err.println("calibrate: zero offsets written to " + hardware + "; the servos hold where they are");
+        err.println("calibrate: " + CliMsg.ZEROS_WRITTEN.text(hardware));
         return 0;
     }
 

@@ -1,5 +1,6 @@
 package org.parpe.cli.hw;
 
+import org.parpe.cli.text.CliMsg;
 import java.util.Locale;
 import java.util.function.BiFunction;
 import java.util.function.IntFunction;
@@ -22,15 +23,15 @@ final class ConsoleCommands {
     /**
      * What one emulator offers the console.
      *
-     * @param unit        "module" or "servo"
+     * @param unit        the word for one device: module or servo
      * @param poser       moves a limp device by hand
-     * @param whyNotPosed why a driven device cannot be posed, after "module 3 "
+     * @param whyNotPosed why a driven device cannot be posed: {0} the unit, {1} its ID
      * @param word        the protocol's own command word ({@code touch}, {@code fault})
      * @param usage       the usage line of {@code word}
      * @param apply       runs {@code word} on a device ID with its argument; returns the reply
      * @param status      one line per device
      */
-    record Console(String unit, Poser poser, String whyNotPosed, String word, String usage,
+    record Console(CliMsg unit, Poser poser, CliMsg whyNotPosed, String word, String usage,
                    BiFunction<Integer, String, String> apply, Supplier<String> status) {
     }
 
@@ -42,17 +43,17 @@ final class ConsoleCommands {
         try {
             if (w[0].equals("pose")) {
                 if (w.length != 3) {
-                    return "usage: pose ID DEGREES";
+                    return CliMsg.USAGE.text("pose ID DEGREES");
                 }
                 return c.poser().pose(Integer.parseInt(w[1]), Double.parseDouble(w[2]))
-                        ? c.unit() + " " + w[1] + " posed at " + w[2] + "°"
-                        : c.unit() + " " + w[1] + " " + c.whyNotPosed();
+                        ? CliMsg.POSED_AT.text(c.unit().text(), w[1], w[2])
+                        : c.whyNotPosed().text(c.unit().text(), w[1]);
             } else if (w[0].equals(c.word())) {
-                return w.length != 3 ? "usage: " + c.usage() : c.apply().apply(Integer.parseInt(w[1]), w[2]);
+                return w.length != 3 ? CliMsg.USAGE.text(c.usage()) : c.apply().apply(Integer.parseInt(w[1]), w[2]);
             } else if (w[0].equals("status")) {
                 return c.status().get();
             }
-            return "unknown command '" + w[0] + "'; try pose, " + c.word() + ", status or quit";
+            return CliMsg.UNKNOWN_CONSOLE_COMMAND.text(w[0], c.word());
         } catch (IllegalArgumentException e) {
             return "error: " + e.getMessage();
         }
@@ -60,12 +61,12 @@ final class ConsoleCommands {
 
     /** The console of emulated G1 modules: {@code touch ID left|right|both|none}. */
     static Console of(BusEmulator emu) {
-        return new Console("module", emu::backDrive, "is driven by its servo; it can be posed only while limp", "touch",
+        return new Console(CliMsg.UNIT_MODULE, emu::backDrive, CliMsg.DRIVEN_BY_SERVO, "touch",
                 "touch ID left|right|both|none", (id, side) -> {
                     emu.setTouch(id, touchBits(side));
-                    return "module " + id + " touch " + side;
-                }, () -> lines(emu.moduleIds(), id -> String.format(Locale.ROOT, "module %d: %.2f°%s%s", id,
-                        emu.angle(id), emu.isLimp(id) ? " limp" : "", emu.isSafeStopped(id) ? " stopped" : "")));
+                    return CliMsg.UNIT_MODULE.text() + " " + id + " touch " + side;
+                }, () -> lines(emu.moduleIds(), id -> CliMsg.UNIT_MODULE.text() + String.format(Locale.ROOT, " %d: %.2f°%s%s", id,
+                        emu.angle(id), emu.isLimp(id) ? " " + CliMsg.LIMP.text() : "", emu.isSafeStopped(id) ? " " + CliMsg.STOPPED.text() : "")));
     }
 
     /** One line per device of {@code ids}, as {@code line} writes it. */
@@ -83,7 +84,7 @@ final class ConsoleCommands {
             case "right": return Protocol.Touch.RIGHT.bit();
             case "both": return Protocol.Touch.LEFT.bit() | Protocol.Touch.RIGHT.bit();
             case "none": return 0;
-            default: throw new IllegalArgumentException("touch side must be left, right, both or none, got '" + side + "'");
+            default: throw new IllegalArgumentException(CliMsg.BAD_TOUCH_SIDE.text(side));
         }
     }
 }

@@ -1,5 +1,6 @@
 package org.parpe.cli.hw;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.PrintStream;
 import java.util.Locale;
 import org.parpe.core.sensor.Channel;
@@ -67,10 +68,8 @@ final class DivergenceMonitor implements JointSink {
             boolean now = diverged[i] ? d > HYSTERESIS * threshold : d > threshold;
             if (now != diverged[i]) {
                 diverged[i] = now;
-                err.println(String.format(Locale.ROOT, now
-                        ? "diverge: module %d at t=%.3f s: hardware %.2f°, simulator %.2f° (more than %.2f° apart)"
-                        : "diverge: module %d back within threshold at t=%.3f s: hardware %.2f°, simulator %.2f° (threshold %.2f°)",
-                        ids[i], time, hw, s, threshold));
+                err.println("diverge: " + (now ? CliMsg.DIVERGED : CliMsg.CONVERGED).text(ids[i], f("%.3f", time), f("%.2f", hw),
+                        f("%.2f", s), f("%.2f", threshold)));
             }
         }
     }
@@ -84,13 +83,18 @@ final class DivergenceMonitor implements JointSink {
         for (int i = 0; i < ids.length; i++) {
             if (ticksDiverged[i] > 0) {
                 count++;
-                err.println(String.format(Locale.ROOT, "diverge: module %d was more than %.2f° off for %.2f s; "
-                        + "worst %.2f° at t=%.3f s", ids[i], threshold, ticksDiverged[i] * dt, worst[i], worstTime[i]));
+                err.println("diverge: " + CliMsg.DIVERGED_FOR.text(ids[i], f("%.2f", threshold), f("%.2f", ticksDiverged[i] * dt),
+                        f("%.2f", worst[i]), f("%.3f", worstTime[i])));
             }
         }
         if (count == 0) {
-            err.println(String.format(Locale.ROOT, "diverge: hardware and simulator stayed within %.2f° "
-                    + "(largest difference %.2f°)", threshold, java.util.Arrays.stream(worst).max().orElse(0)));
+            err.println("diverge: " + CliMsg.STAYED_WITHIN.text(f("%.2f", threshold),
+                    f("%.2f", java.util.Arrays.stream(worst).max().orElse(0))));
         }
+    }
+
+    /** A number as the messages show it: a point for the decimals in every language. */
+    private static String f(String format, double v) {
+        return String.format(Locale.ROOT, format, v);
     }
 }

@@ -1,5 +1,6 @@
 package org.parpe.cli.hw;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.InputStreamReader;
@@ -94,16 +95,16 @@ public final class EmulateCommand implements Callable<Integer> {
 
     private EmulatorOptions options(int[] ids) throws UsageException {
         if (baud != null && baud <= 0) {
-            throw new UsageException("--baud must be > 0, got " + baud);
+            throw new UsageException(CliMsg.BAUD_POSITIVE.text(baud));
         }
         if (unplugFor != null && unplugAfter == null) {
-            throw new UsageException("--unplug-for needs --unplug-after");
+            throw new UsageException(CliMsg.UNPLUG_FOR_NEEDS_AFTER.text());
         }
         if (unplugAfter != null && !(unplugAfter >= 0) || unplugFor != null && !(unplugFor >= 0)) {
-            throw new UsageException("--unplug-after and --unplug-for must be >= 0 seconds");
+            throw new UsageException(CliMsg.UNPLUG_NEGATIVE.text());
         }
         if (duration != null && !(duration > 0)) {
-            throw new UsageException("--duration must be > 0 seconds, got " + duration);
+            throw new UsageException(CliMsg.DURATION_NOT_POSITIVE.text(duration));
         }
         try {
             return new EmulatorOptions(ids, drop, corrupt, latency, unplugAfter == null ? -1 : unplugAfter,
@@ -118,14 +119,14 @@ public final class EmulateCommand implements Callable<Integer> {
         EmulatorOptions o = options(ids);
         ServoProtocol p = ServoProtocol.of(protocol);
         if (p == null) {
-            throw new UsageException("--protocol must be one of " + ServoProtocol.keys() + ", got '" + protocol + "'");
+            throw new UsageException(CliMsg.BAD_PROTOCOL.text(ServoProtocol.keys(), protocol));
         }
         int rate = baud == null ? p.scanBauds().get(0) : baud;
         if (p.controlTable()) {
             return new ServoEmulation(port, rate, servoModel(p), o, duration, log, err).serve();
         }
         if (model != null) {
-            throw new UsageException("--model applies to dxl2, sts and scs servos, not to G1 modules");
+            throw new UsageException(CliMsg.MODEL_NOT_FOR_G1.text());
         }
         SetpointLog csv = SetpointLog.open(log, ids);
         BusEmulator emu;
@@ -135,14 +136,12 @@ public final class EmulateCommand implements Callable<Integer> {
             csv.close();
             throw new UsageException(e.getMessage());
         }
-        err.println("emulate: " + ids.length + " modules (" + ModuleList.format(ids) + ") on " + port + " at " + rate
-                + " baud; Ctrl-C to stop");
+        err.println("emulate: " + CliMsg.EMULATING_MODULES.text(ids.length, ModuleList.format(ids), port, rate));
         return serveUntilDone(() -> {
             emu.close();
             csv.close();
             BusEmulator.Stats s = emu.stats();
-            err.println(String.format(Locale.ROOT, "emulate: %d frames accepted, %d rejected by CRC, %d dropped "
-                    + "and %d corrupted on purpose, %d replies", s.frames(), s.checksumErrors(), s.dropped(),
+            err.println("emulate: " + CliMsg.G1_EMULATION_STATS.text(s.frames(), s.checksumErrors(), s.dropped(),
                     s.corrupted(), s.replies()));
         }, w -> ConsoleCommands.apply(ConsoleCommands.of(emu), w), duration, err);
     }
@@ -153,8 +152,7 @@ public final class EmulateCommand implements Callable<Integer> {
         }
         ServoModel m = ServoModel.named(model);
         if (m == null || m.protocol() != p) {
-            throw new UsageException("--model '" + model + "' is not a " + p.key() + " servo PARPE knows; known: "
-                    + ServoModel.names(p));
+            throw new UsageException(CliMsg.UNKNOWN_MODEL.text(model, p.key(), ServoModel.names(p)));
         }
         return m;
     }
@@ -168,7 +166,7 @@ public final class EmulateCommand implements Callable<Integer> {
 
             @Override
             public void onSafeStop(int id, long nanoTime, String why) {
-                err.println("emulate: module " + id + " stopped (" + why + ")");
+                err.println("emulate: " + CliMsg.MODULE_STOPPED.text(id, why));
             }
 
             @Override
@@ -222,7 +220,7 @@ public final class EmulateCommand implements Callable<Integer> {
                 }
             }
         } catch (IOException e) {
-            err.println("emulate: standard input: " + e.getMessage());
+            err.println("emulate: " + CliMsg.STANDARD_INPUT.text(e.getMessage()));
         }
     }
 

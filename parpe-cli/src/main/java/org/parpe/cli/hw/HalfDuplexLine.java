@@ -1,5 +1,6 @@
 package org.parpe.cli.hw;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.IOException;
 import java.util.ArrayDeque;
 import java.util.concurrent.TimeUnit;
@@ -92,7 +93,7 @@ final class HalfDuplexLine {
             lock.lock();
             try {
                 if (closed) {
-                    throw new LinkException(name + " is closed");
+                    throw new LinkException(CliMsg.LINE_CLOSED.text(name));
                 }
                 long now = System.nanoTime();
                 lineFreeAt = Math.max(now, lineFreeAt) + (long) (len * nanosPerByte);
@@ -116,7 +117,7 @@ final class HalfDuplexLine {
                     arrived.await(1, TimeUnit.MILLISECONDS);
                 }
                 if (closed) {
-                    throw new LinkException(name + " is closed");
+                    throw new LinkException(CliMsg.LINE_CLOSED.text(name));
                 }
                 if (partial == null && in.isEmpty()) {
                     return 0;

@@ -1,5 +1,6 @@
 package org.parpe.cli.hw;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.PrintStream;
 import java.nio.file.Path;
 import java.util.List;
@@ -49,7 +50,7 @@ public class HardwareOptions {
     public void configure(Run.Builder run, PrintStream err) throws UsageException, TargetException {
         if (hardware == null && port == null) {
             if (diverge != null) {
-                throw new UsageException("--diverge compares hardware with the simulator: it needs --port and --sim");
+                throw new UsageException(CliMsg.DIVERGE_NEEDS_PORT_SIM.text());
             }
             return;
         }
@@ -66,10 +67,10 @@ public class HardwareOptions {
 
     private void checkDiverge(SensorSource sim) throws UsageException {
         if (diverge != null && !(diverge > 0)) {
-            throw new UsageException("--diverge must be > 0 degrees, got " + diverge);
+            throw new UsageException(CliMsg.DIVERGE_POSITIVE.text(diverge));
         }
         if (diverge != null && sim == null) {
-            throw new UsageException("--diverge compares hardware with the simulator: add --sim");
+            throw new UsageException(CliMsg.DIVERGE_NEEDS_SIM.text());
         }
     }
 }

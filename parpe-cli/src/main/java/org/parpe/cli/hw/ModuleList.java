@@ -1,5 +1,6 @@
 package org.parpe.cli.hw;
 
+import org.parpe.cli.text.CliMsg;
 import java.util.Arrays;
 import java.util.LinkedHashSet;
 import java.util.Set;
@@ -16,7 +17,7 @@ final class ModuleList {
     /** The IDs in the order written; {@code option} names the option in messages. */
     static int[] parse(String text, String option) throws UsageException {
         if (text == null || text.isBlank()) {
-            throw new UsageException(option + " needs a module list such as 0..7 or 0,2,5");
+            throw new UsageException(CliMsg.NEEDS_MODULE_LIST.text(option));
         }
         Set<Integer> ids = new LinkedHashSet<>();
         for (String item : text.split(",", -1)) {
@@ -26,7 +27,7 @@ final class ModuleList {
             int b = dots < 0 ? a : id(s.substring(dots + 2), text, option);
             for (int i = a; a <= b ? i <= b : i >= b; i += a <= b ? 1 : -1) {
                 if (!ids.add(i)) {
-                    throw new UsageException(option + ": module " + i + " is listed twice in '" + text + "'");
+                    throw new UsageException(CliMsg.MODULE_TWICE.text(option, i, text));
                 }
             }
         }
@@ -43,12 +44,11 @@ final class ModuleList {
     private static int id(String s, String text, String option) throws UsageException {
         String t = s.trim();
         if (!t.matches("\\d{1,6}")) {
-            throw new UsageException(option + " expects module IDs or ranges like 0..7, got '" + text + "'");
+            throw new UsageException(CliMsg.MODULE_LIST_SYNTAX.text(option, text));
         }
         int v = Integer.parseInt(t);
         if (v > Protocol.MAX_MODULE_ID) {
-            throw new UsageException(option + ": module ID must be in 0.." + Protocol.MAX_MODULE_ID
-                    + " to be on the bus, got " + v);
+            throw new UsageException(CliMsg.MODULE_ID_RANGE.text(option, Protocol.MAX_MODULE_ID, v));
         }
         return v;
     }

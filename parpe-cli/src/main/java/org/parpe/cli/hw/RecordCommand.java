@@ -1,5 +1,6 @@
 package org.parpe.cli.hw;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.InputStream;
@@ -104,7 +105,7 @@ public final class RecordCommand implements Callable<Integer> {
         Inputs.check(source.script);
         LoadResult r = ScriptLoader.load(source.script, Map.of());
         if (r.program() == null) {
-            StringBuilder b = new StringBuilder("the script has errors:");
+            StringBuilder b = new StringBuilder(CliMsg.SCRIPT_HAS_ERRORS.text());
             for (Diagnostic d : r.errors()) {
                 b.append('\n').append(d.format());
             }
@@ -112,27 +113,26 @@ public final class RecordCommand implements Callable<Integer> {
         }
         Group g = r.program().group(group).orElse(null);
         if (g == null) {
-            throw new UsageException("group '" + group + "' is not defined in " + source.script + "; it defines "
-                    + String.join(", ", r.program().robot().groups().stream().map(Group::name).toList()));
+            throw new UsageException(CliMsg.GROUP_NOT_DEFINED.text(group, source.script,
+                    String.join(", ", r.program().robot().groups().stream().map(Group::name).toList())));
         }
         return g.modules().stream().mapToInt(Integer::intValue).toArray();
     }
 
     private void validate() throws UsageException {
         if (every != null && (every < 1 || every > 3_600_000)) {
-            throw new UsageException("--every must be in 1..3600000 ms, got " + every);
+            throw new UsageException(CliMsg.EVERY_RANGE.text(every));
         }
         if (count != null && count < 1) {
-            throw new UsageException("--count must be >= 1, got " + count);
+            throw new UsageException(CliMsg.COUNT_AT_LEAST_ONE.text(count));
         }
         if (!group.matches("[A-Za-z_][A-Za-z0-9_]*")) {
-            throw new UsageException("--group must be a PARSL name ([A-Za-z_][A-Za-z0-9_]*), got '" + group + "'");
+            throw new UsageException(CliMsg.GROUP_NAME.text(group));
         }
         // the recording defines the group, the automaton rec_GROUP and the behavior play_GROUP
         for (String name : new String[] {group, "rec_" + group, "play_" + group}) {
             if (Vocabulary.isReserved(name) && !name.equals("all")) {
-                throw new UsageException("--group '" + group + "' cannot be used: '" + name
-                        + "' is a reserved word of PARSL (a function, constant or keyword)");
+                throw new UsageException(CliMsg.GROUP_RESERVED.text(group, name));
             }
         }
         List<Path> inputs = new java.util.ArrayList<>();
@@ -152,7 +152,7 @@ public final class RecordCommand implements Callable<Integer> {
         List<ServoMapping> servos = mappings(profile, ids);
         String device = profile == null ? port : profile.port();
         if (device == null) {
-            throw new UsageException("no serial port: give --port or a port attribute in " + hardware);
+            throw new UsageException(CliMsg.NO_SERIAL_PORT.text(hardware));
         }
         ServoProtocol protocol = profile == null ? ServoProtocol.G1 : profile.protocol();
         int rate = profile == null ? baud : profile.baud();
@@ -166,8 +166,7 @@ public final class RecordCommand implements Callable<Integer> {
             PoseRecorder recorder = new PoseRecorder(bus, servos);
             List<Integer> missing = recorder.missing();
             if (!missing.isEmpty()) {
-                throw new UsageException("modules " + missing + " of group '" + group + "' do not answer on " + device
-                        + " (" + protocol.key() + ", " + rate + " baud); nothing was made limp");
+                throw new UsageException(CliMsg.GROUP_SILENT.text(missing, group, device, protocol.key(), rate));
             }
             recorder.begin();
             // A servo recording plays back through its profile; a G1 one through the port.
@@ -185,7 +184,7 @@ public final class RecordCommand implements Callable<Integer> {
     private HardwareProfile profile() throws UsageException {
         if (hardware == null) {
             if (port == null) {
-                throw new UsageException("give --port (G1 modules) or --hardware PROFILE.xml");
+                throw new UsageException(CliMsg.GIVE_PORT_OR_HARDWARE.text());
             }
             return null;
         }
@@ -214,14 +213,14 @@ public final class RecordCommand implements Callable<Integer> {
             }
         }
         if (!unmapped.isEmpty()) {
-            throw new UsageException("modules " + unmapped + " of the group have no <servo> in " + profile.file());
+            throw new UsageException(CliMsg.NO_SERVO_FOR_MODULES.text(unmapped, profile.file()));
         }
         return out;
     }
 
     /** Formats one pose for the console. */
     static String describe(int n, double t, double[] pose) {
-        StringBuilder b = new StringBuilder(String.format(Locale.ROOT, "pose %d at %.3f s:", n, t));
+        StringBuilder b = new StringBuilder(CliMsg.POSE_AT.text(n, String.format(Locale.ROOT, "%.3f", t)));
         for (double a : pose) {
             b.append(String.format(Locale.ROOT, " %.2f", a));
         }

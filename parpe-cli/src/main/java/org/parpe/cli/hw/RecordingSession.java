@@ -1,5 +1,6 @@
 package org.parpe.cli.hw;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -39,9 +40,8 @@ final class RecordingSession {
 
     /** Records until the input ends, {@code count} poses were taken, or the JVM is stopped. */
     int run(Integer everyMs, Integer count, BufferedReader in) throws IOException, InterruptedException, UsageException {
-        err.println("record: group " + recording.group() + " (modules " + ModuleList.format(recording.modules())
-                + ") is limp: pose it by hand; " + (everyMs == null ? "press Enter to capture a pose, Ctrl-D to finish"
-                : "capturing every " + everyMs + " ms, Ctrl-C to finish"));
+        err.println("record: " + (everyMs == null ? CliMsg.RECORD_BY_ENTER.text(recording.group(), ModuleList.format(recording.modules()))
+                : CliMsg.RECORD_EVERY.text(recording.group(), ModuleList.format(recording.modules()), everyMs)));
         try {
             while (count == null || recording.size() < count) {
                 if (everyMs == null) {
@@ -66,7 +66,7 @@ final class RecordingSession {
         double[] pose = new double[recording.modules().length];
         int silent = recorder.capture(pose);
         if (silent >= 0) {
-            err.println("record: module " + silent + " did not answer; pose not captured, try again");
+            err.println("record: " + CliMsg.POSE_NOT_CAPTURED.text(silent));
             return;
         }
         long now = System.nanoTime();
@@ -88,13 +88,12 @@ final class RecordingSession {
             try {
                 recorder.end();
             } catch (IOException e) {
-                err.println("record: could not make the group hold (" + e.getMessage() + ")");
+                err.println("record: " + CliMsg.GROUP_NOT_HOLDING.text(e.getMessage()));
             }
             if (recording.size() == 0) {
-                err.println("record: no pose captured; " + out + " not written");
+                err.println("record: " + CliMsg.NO_POSE_CAPTURED.text(out));
             } else {
-                err.println("record: " + recording.size() + " poses saved in " + out + "; play them with: parpe run "
-                        + out + " " + playWith);
+                err.println("record: " + CliMsg.POSES_SAVED.text(recording.size(), out, playWith));
             }
             err.flush();
         }

@@ -1,5 +1,6 @@
 package org.parpe.cli.hw;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
@@ -61,11 +62,11 @@ public final class ScanCommand implements Callable<Integer> {
         int[] wanted = ids == null ? null : ModuleList.sorted(ModuleList.parse(ids, "--ids"));
         // checked before scanning; --force replaces a regular file only, never a device, FIFO or link to nothing
         OutputFile.of(OutputFile.plan(List.of()), "--out", out.toString(), force ? OutputPlan.Existing.REPLACE
-                : OutputPlan.Existing.KEEP, "choose another --out or add --force");
+                : OutputPlan.Existing.KEEP, CliMsg.OTHER_OUT_OR_FORCE.text());
         ServoScanner.Result r;
         try {
-            r = ServoScanner.scan(port, protocols, baud, wanted, (p, rate) -> err.println(String.format(Locale.ROOT,
-                    "scan: %s at %d baud, IDs %s ...", p.key(), rate, ModuleList.format(ServoScanner.idsFor(p, wanted)))),
+            r = ServoScanner.scan(port, protocols, baud, wanted, (p, rate) -> err.println("scan: "
+                    + CliMsg.SCANNING.text(p.key(), rate, ModuleList.format(ServoScanner.idsFor(p, wanted)))),
                     () -> false);
         } catch (IOException | IllegalArgumentException e) {
             throw new UsageException(e.getMessage());
@@ -73,8 +74,7 @@ public final class ScanCommand implements Callable<Integer> {
         if (r != null) {
             return report(r.protocol(), r.baud(), r.servos(), stdout, err);
         }
-        err.println("scan: no usable servos found on " + port + ": no servo answers (is the robot powered? is the "
-                + "adapter for this bus?)");
+        err.println("scan: " + CliMsg.NO_SERVO_ANSWERS.text(port));
         return 1;
     }
 
@@ -84,7 +84,7 @@ public final class ScanCommand implements Callable<Integer> {
         }
         ServoProtocol p = ServoProtocol.of(protocol);
         if (p == null) {
-            throw new UsageException("--protocol must be one of " + ServoProtocol.keys() + ", got '" + protocol + "'");
+            throw new UsageException(CliMsg.BAD_PROTOCOL.text(ServoProtocol.keys(), protocol));
         }
         return List.of(p);
     }
@@ -92,33 +92,30 @@ public final class ScanCommand implements Callable<Integer> {
     /** Lists the servos found and writes the starter profile; 1, and no file, when none is of a known model. */
     private int report(ServoProtocol p, int rate, List<Found> found, PrintWriter stdout, PrintWriter err)
             throws UsageException {
-        stdout.println(String.format(Locale.ROOT, "%d %s servo%s on %s at %d baud:", found.size(), p.key(),
-                found.size() == 1 ? "" : "s", port, rate));
-        stdout.println("   ID  model               position");
+        stdout.println((found.size() == 1 ? CliMsg.ONE_SERVO_FOUND : CliMsg.N_SERVOS_FOUND).text(found.size(), p.key(), port, rate));
+        stdout.println(String.format(Locale.ROOT, "  %3s  %-18s  %s", CliMsg.SCAN_ID.text(), CliMsg.SCAN_MODEL.text(),
+                CliMsg.SCAN_POSITION.text()));
         for (Found f : found) {
             stdout.println(String.format(Locale.ROOT, "  %3d  %-18s  %s", f.id(),
-                    f.model() == null ? "unknown (" + f.modelNumber() + ")" : f.model().label(),
+                    f.model() == null ? CliMsg.UNKNOWN_MODEL_NUMBER.text(f.modelNumber()) : f.model().label(),
                     Double.isNaN(f.degrees()) ? "?" : String.format(Locale.ROOT, "%.2f°", f.degrees())));
             if (f.model() == null) {
-                err.println("scan: servo " + f.id() + " has model number " + f.modelNumber() + ", which PARPE does not "
-                        + "know; it is left out of the profile (known: " + ServoModel.names(p) + ")");
+                err.println("scan: " + CliMsg.MODEL_LEFT_OUT.text(f.id(), f.modelNumber(), ServoModel.names(p)));
             }
         }
         HardwareProfile profile = ServoScanner.starterProfile(out.toString(), p, port, rate, found);
         int servos = profile.servos().size();
         if (servos == 0) {
-            err.println("scan: no usable servos found on " + port + ": none of a model PARPE knows (" + ServoModel.names(p)
-                    + "); " + out + " not written");
+            err.println("scan: " + CliMsg.NO_KNOWN_MODEL.text(port, ServoModel.names(p), out));
             return 1;
         }
         try {
             ProfileWriter.write(profile, out, "written by parpe scan: one module per servo, in ID order; set module, "
                     + "direction and limits, then run parpe calibrate");
         } catch (IOException e) {
-            throw new UsageException("cannot write --out file '" + out + "': " + e.getMessage());
+            throw new UsageException(CliMsg.CANNOT_WRITE_OUT.text(out, e.getMessage()));
         }
-        err.println("scan: starter profile written to " + out + " (modules 0.." + (servos - 1)
-                + "); next: parpe calibrate --hardware " + out);
+        err.println("scan: " + CliMsg.PROFILE_WRITTEN.text(out, servos - 1));
         return 0;
     }
 }

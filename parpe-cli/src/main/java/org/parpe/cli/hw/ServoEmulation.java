@@ -1,5 +1,6 @@
 package org.parpe.cli.hw;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
@@ -45,26 +46,25 @@ final class ServoEmulation {
             csv.close();
             throw new UsageException(e.getMessage());
         }
-        err.println("emulate: " + ids.length + " " + model.protocol().key() + " servos " + model.label() + " ("
-                + ModuleList.format(ids) + ") on " + port + " at " + baud + " baud; Ctrl-C to stop");
+        err.println("emulate: " + CliMsg.EMULATING_SERVOS.text(ids.length, model.protocol().key(), model.label(),
+                ModuleList.format(ids), port, baud));
         return EmulateCommand.serveUntilDone(() -> {
             emu.close();
             csv.close();
             ServoEmulator.Stats s = emu.stats();
-            err.println(String.format(Locale.ROOT, "emulate: %d packets accepted, %d rejected by checksum, "
-                    + "%d dropped and %d corrupted on purpose, %d replies", s.packets(), s.checksumErrors(),
-                    s.dropped(), s.corrupted(), s.replies()));
+            err.println("emulate: " + CliMsg.SERVO_EMULATION_STATS.text(s.packets(), s.checksumErrors(), s.dropped(),
+                    s.corrupted(), s.replies()));
         }, w -> ConsoleCommands.apply(console(emu), w), duration, err);
     }
 
     /** The console of emulated servos: {@code fault ID overload|overheat|voltage|none}. */
     static ConsoleCommands.Console console(ServoEmulator emu) {
-        return new ConsoleCommands.Console("servo", emu::backDrive, "has its torque on; it can be posed only while limp",
+        return new ConsoleCommands.Console(CliMsg.UNIT_SERVO, emu::backDrive, CliMsg.TORQUE_ON,
                 "fault", "fault ID overload|overheat|voltage|none", (id, what) -> {
                     emu.fault(id, faultBits(what));
-                    return "servo " + id + " fault " + what;
-                }, () -> ConsoleCommands.lines(emu.servoIds(), id -> String.format(Locale.ROOT, "servo %d: %.2f°%s%s%s", id,
-                        emu.angle(id), emu.isLimp(id) ? " limp" : "", emu.watchdogTripped(id) ? " watchdog" : "",
+                    return CliMsg.UNIT_SERVO.text() + " " + id + " fault " + what;
+                }, () -> ConsoleCommands.lines(emu.servoIds(), id -> CliMsg.UNIT_SERVO.text() + String.format(Locale.ROOT, " %d: %.2f°%s%s%s", id,
+                        emu.angle(id), emu.isLimp(id) ? " " + CliMsg.LIMP.text() : "", emu.watchdogTripped(id) ? " watchdog" : "",
                         emu.hardwareError(id) != 0 ? String.format(" error 0x%02X", emu.hardwareError(id)) : "")));
     }
 
@@ -75,8 +75,7 @@ final class ServoEmulation {
             case "overheat" -> 0x04;
             case "voltage" -> 0x01;
             case "none" -> 0;
-            default -> throw new IllegalArgumentException("fault must be overload, overheat, voltage or none, got '"
-                    + what + "'");
+            default -> throw new IllegalArgumentException(CliMsg.BAD_FAULT.text(what));
         };
     }
 }

@@ -1,10 +1,10 @@
 package org.parpe.cli.sim;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import org.knowm.xchart.XYChart;
 import org.parpe.cli.plot.PngCharts;
 import org.parpe.core.plot.AngleRecorder;
@@ -44,13 +44,13 @@ final class PlotWriter {
         int[] ids = data.moduleIds();
         List<Integer> shown = chooseModules(ids);
         List<XYChart> panels = new ArrayList<>();
-        String more = shown.size() < ids.length
-                ? String.format(Locale.ROOT, " (%d of %d modules, those that move)", shown.size(), ids.length) : "";
+        String title = shown.size() < ids.length ? CliMsg.JOINT_ANGLES_OF.text(shown.size(), ids.length)
+                : CliMsg.JOINT_ANGLES.text();
         for (int p = 0; p < shown.size(); p++) {
             int id = ids[shown.get(p)];
             int n = data.copy(id, t, cmd, meas);
-            XYChart c = PngCharts.panel(WIDTH, PANEL, (p == 0 ? "Joint angles over time" + more + ": " : "")
-                    + "module " + id, "time (s)", "angle (°)");
+            XYChart c = PngCharts.panel(WIDTH, PANEL, (p == 0 ? title + ": " : "") + CliMsg.UNIT_MODULE.text() + " " + id,
+                    CliMsg.TIME_S.text(), CliMsg.ANGLE_DEG.text());
             double range = yRange(n);
             c.getStyler().setYAxisMin(-range);
             c.getStyler().setYAxisMax(range);

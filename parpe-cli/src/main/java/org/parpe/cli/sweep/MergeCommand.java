@@ -1,5 +1,6 @@
 package org.parpe.cli.sweep;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.Writer;
@@ -43,7 +44,7 @@ import picocli.CommandLine.Spec;
 @Command(name = "merge", mixinStandardHelpOptions = true, description = "Join the CSV files of the shards of one sweep"
         + " (parpe sweep --shard K/N) into one, in run order; refuses missing, doubled or foreign runs.")
 public final class MergeCommand implements Callable<Integer> {
-    @Parameters(arity = "1..*", paramLabel = "SHARD.csv", description = "The shards' files, in any order.")
+    @Parameters(arity = "1..*", paramLabel = "SHARD.csv", descriptionKey = "files", description = "The shards' files, in any order.")
     List<Path> files = new ArrayList<>();
 
     @Option(names = "--out", paramLabel = "FILE.csv|-", defaultValue = "-", description = "The merged file (default: standard output).")
@@ -69,15 +70,11 @@ public final class MergeCommand implements Callable<Integer> {
         for (Path partial : partialsBeside()) {
             Shard s = firstLine(partial);
             if (s != null && s.n() == e.of() && e.rerun().contains(s.k())) {
-                err.println("parpe: " + partial + " holds what shard " + s.k() + "/" + s.n()
-                        + " finished before its task was stopped");
+                err.println("parpe: " + CliMsg.PARTIAL_HOLDS.text(partial, s.k(), s.n()));
             }
         }
         String ks = e.rerun().stream().map(String::valueOf).collect(Collectors.joining(","));
-        err.println("parpe: rerun shard" + (e.rerun().size() > 1 ? "s " : " ") + ks + " of " + e.of()
-                + " (parpe sweep ... --shard K/" + e.of() + " with the sweep's options; with scripts/sweep.slurm:"
-                + " PARPE_SHARDS=" + e.of() + " sbatch --array=" + ks + " scripts/sweep.slurm OUTDIR SCRIPT OPTIONS...),"
-                + " then merge again; see docs/cluster.md");
+        err.println("parpe: " + (e.rerun().size() > 1 ? CliMsg.RERUN_SHARDS : CliMsg.RERUN_SHARD).text(ks, e.of()));
     }
 
     /** The {@code *.partial} files in the folders of the given shards that were not given themselves. */
@@ -136,7 +133,7 @@ public final class MergeCommand implements Callable<Integer> {
                 return new java.io.BufferedReader(new java.io.InputStreamReader(Files.newInputStream(file),
                         java.nio.charset.StandardCharsets.UTF_8.newDecoder()), 1 << 16).lines();
             } catch (IOException e) {
-                throw new IOException("cannot read '" + file + "': " + IoReasons.of(e), e);
+                throw new IOException(CliMsg.CANNOT_READ.text(file, IoReasons.of(e)), e);
             }
         };
     }
@@ -156,9 +153,9 @@ public final class MergeCommand implements Callable<Integer> {
     /** Plots the merged rows {@code kept} into {@code png}. */
     private void plot(OutputFile png, List<String> kept, Objective goal, PrintWriter err) throws SweepException, UsageException {
         SweepResult result = SweepCsv.read(kept);
-        png.write(o -> Plots.sweep(o, (out.equals("-") ? "merged sweep" : Path.of(out).getFileName()) + ", "
-                + result.rows().size() + " runs", axes(result.rows()), result.rows(), goal, countFallen));
-        err.println("parpe: plot in " + png);
+        png.write(o -> Plots.sweep(o, CliMsg.PLOT_TITLE.text(out.equals("-") ? CliMsg.MERGED_SWEEP.text()
+                : Path.of(out).getFileName(), result.rows().size()), axes(result.rows()), result.rows(), goal, countFallen));
+        err.println("parpe: " + CliMsg.PLOT_IN.text(png));
     }
 
     /** The shards named, each read once; a file given twice is refused. */
@@ -167,7 +164,7 @@ public final class MergeCommand implements Callable<Integer> {
         for (Path f : files) {
             Inputs.checkKind(f);
             if (shards.containsKey(f.toString())) {
-                throw new UsageException("'" + f + "' is given twice");
+                throw new UsageException(CliMsg.GIVEN_TWICE.text(f));
             }
             shards.put(f.toString(), source(f));
         }
@@ -179,7 +176,7 @@ public final class MergeCommand implements Callable<Integer> {
         if (stdout) {
             w.flush();
             if (((PrintWriter) w).checkError()) {
-                err.println("parpe: cannot write to standard output: it is closed or its pipe is broken");
+                err.println("parpe: " + CliMsg.CANNOT_WRITE_STDOUT.text(CliMsg.STDOUT_CLOSED.text()));
                 return false;
             }
         } else {
@@ -207,8 +204,7 @@ public final class MergeCommand implements Callable<Integer> {
                 boolean[] header = {true};
                 runs = SweepCsv.merge(shards, line -> {
                     if (header[0] && goal == Objective.SCORE && !SweepCsv.scored(line)) {
-                        throw new SweepException("--objective score needs the shards of a sweep in a world (with a"
-                                + " score column)");
+                        throw new SweepException(CliMsg.SCORE_NEEDS_SCORED_SHARDS.text());
                     }
                     header[0] = false;
                     if (kept != null) {
@@ -227,7 +223,7 @@ public final class MergeCommand implements Callable<Integer> {
             if (!finish(w, target == null, err)) {
                 return 2;
             }
-            err.println("parpe: merged " + runs + " runs from " + files.size() + " files");
+            err.println("parpe: " + CliMsg.MERGED.text(runs, files.size()));
             if (png != null) {
                 plot(png, kept, goal, err);
             }
@@ -242,7 +238,7 @@ public final class MergeCommand implements Callable<Integer> {
             err.println("parpe: " + e.getMessage()); // names the file: "cannot read 'F': …", "cannot write --out file 'F': …"
             return 2;
         } catch (java.io.UncheckedIOException e) {
-            err.println("parpe: cannot read a shard: " + IoReasons.of(e.getCause()));
+            err.println("parpe: " + CliMsg.CANNOT_READ_SHARD.text(IoReasons.of(e.getCause())));
             return 2;
         } finally {
             OutputFile.abort(w); // a merge that failed leaves the old --out file, no temporary one

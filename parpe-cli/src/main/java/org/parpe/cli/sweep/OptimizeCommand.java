@@ -64,7 +64,7 @@ public final class OptimizeCommand extends SimSweepCommand {
 
     @Override
     String kept() {
-        return "kept the best found so far";
+        return CliMsg.KEPT_BEST.text();
     }
 
     @Override
@@ -85,7 +85,7 @@ public final class OptimizeCommand extends SimSweepCommand {
         OutputPlan plan = OutputFile.plan(inputs);
         // a name PARPE chose replaces nothing unless the user says so: it may be a hand-edited earlier result
         OutputFile xml = OutputFile.of(plan, "--out", script, out != null || force ? OutputPlan.Existing.REPLACE
-                : OutputPlan.Existing.KEEP, "name the file with --out, or add --force to replace it");
+                : OutputPlan.Existing.KEEP, CliMsg.NAME_IT_OR_FORCE.text());
         String base = script.toLowerCase(Locale.ROOT).endsWith(".xml") ? script.substring(0, script.length() - 4) : script;
         OutputFile png = OutputFile.of(plan, "--plot", plot != null ? plot : base + "-convergence.png");
         ProgressBar bar = new ProgressBar(err, SweepListener.NONE);
@@ -94,11 +94,11 @@ public final class OptimizeCommand extends SimSweepCommand {
         if (result.evaluations().isEmpty()) {
             return 0;
         }
-        String title = options.runsOf(file) + ": CMA-ES, " + result.evaluations().size()
-                + " simulations of " + Numbers.format(options.duration) + " s";
+        String title = CliMsg.CONVERGENCE_TITLE.text(options.runsOf(file), result.evaluations().size(),
+                Numbers.format(options.duration));
         if (cancel.cancelled()) {
             // AWT cannot start while the JVM shuts down (Ctrl-C): the script is written, the plot is not.
-            err.println("parpe: interrupted: no convergence plot drawn");
+            err.println("parpe: " + CliMsg.NO_CONVERGENCE_PLOT.text());
             return report(stdout, err, result, optimizer.space().axes(), ev, xml, null);
         }
         png.write(o -> Plots.convergence(o, title, result));
@@ -111,26 +111,25 @@ public final class OptimizeCommand extends SimSweepCommand {
         List<Evaluation> all = result.evaluations();
         Evaluation first = result.starts().get(0).isEmpty() ? null : result.starts().get(0).get(0);
         if (result.best().isEmpty()) {
-            err.println("parpe: no simulation met the constraints" + result.bestIgnoringConstraints()
-                    .map(e -> String.format(Locale.ROOT, " (the best without them: %s %.4f, max tilt %.1f°)", goal.id(),
-                            e.score(), e.row().maxTiltDeg())).orElse("") + "; no script written");
+            err.println("parpe: " + result.bestIgnoringConstraints().map(e -> CliMsg.NONE_MET_CONSTRAINTS_BEST.text(goal.id(),
+                    String.format(Locale.ROOT, "%.4f", e.score()), String.format(Locale.ROOT, "%.1f", e.row().maxTiltDeg())))
+                    .orElse(CliMsg.NONE_MET_CONSTRAINTS.text()));
             if (png != null) {
-                err.println("parpe: convergence plot in " + png);
+                err.println("parpe: " + CliMsg.CONVERGENCE_PLOT_IN.text(png));
             }
             return 1;
         }
         Evaluation best = result.best().get();
-        stdout.println(String.format(Locale.ROOT, "best %s: %.4f after %d simulations%s", goal.id(), best.score(),
-                all.size(), result.cancelled() ? " (stopped early)" : ""));
+        stdout.println((result.cancelled() ? CliMsg.OPTIMUM_STOPPED : CliMsg.OPTIMUM).text(goal.id(),
+                String.format(Locale.ROOT, "%.4f", best.score()), all.size()));
         if (first != null && first.row().values().equals(ev.parameters().stream().filter(p -> first.row().values()
                 .containsKey(p.name())).collect(java.util.stream.Collectors.toMap(p -> p.name(), p -> p.value())))) {
-            stdout.println(String.format(Locale.ROOT, "the script's own values: %.4f%s", first.score(),
-                    first.feasible() ? "" : " (misses a constraint)"));
+            stdout.println((first.feasible() ? CliMsg.OWN_VALUES : CliMsg.OWN_VALUES_MISS).text(
+                    String.format(Locale.ROOT, "%.4f", first.score())));
         }
         printBest(stdout, best.row(), searched);
         xml.write(ParameterDefaults.rewrite(file, ev.text(), ev.parameters(), best.row().values()));
-        err.println("parpe: wrote " + xml + " (the best values as defaults)"
-                + (png == null ? "" : " and the convergence plot " + png));
+        err.println("parpe: " + (png == null ? CliMsg.WROTE_OPTIMISED.text(xml) : CliMsg.WROTE_OPTIMISED_PLOT.text(xml, png)));
         return 0;
     }
 
@@ -141,14 +140,15 @@ public final class OptimizeCommand extends SimSweepCommand {
     private static void printBest(PrintWriter stdout, SweepRow best, List<Axis> searched) {
         for (Axis a : searched) {
             double v = best.values().get(a.name());
-            String bound = a.atBound(v);
-            stdout.println("  " + a.name() + " = " + Numbers.format(v) + (bound.isEmpty() ? "" : "  (" + bound
-                    + ", its " + (v == a.hi() ? "max" : "min") + " in the script)"));
+            String bound = SweepCommand.bound(a, v);
+            stdout.println("  " + a.name() + " = " + Numbers.format(v) + (bound.isEmpty() ? "" : "  ("
+                    + (v == a.hi() ? CliMsg.AT_MAX : CliMsg.AT_MIN).text(bound) + ")"));
         }
-        stdout.println(String.format(Locale.ROOT, "  (distance %.3f m, forward %.3f m, max tilt %.1f°, fell over: %s)",
-                best.distance(), best.forward(), best.maxTiltDeg(), best.fell() ? "yes" : "no"));
+        stdout.println("  (" + CliMsg.BEST_DID.text(String.format(Locale.ROOT, "%.3f", best.distance()),
+                String.format(Locale.ROOT, "%.3f", best.forward()), String.format(Locale.ROOT, "%.1f", best.maxTiltDeg()),
+                (best.fell() ? CliMsg.YES : CliMsg.NO).text()) + ")");
         if (best.parts() != null) {
-            stdout.println("  (the score's parts: " + best.parts().inWords() + ")");
+            stdout.println("  (" + CliMsg.SCORE_PARTS.text(best.parts().inWords()) + ")");
         }
         stdout.flush();
     }

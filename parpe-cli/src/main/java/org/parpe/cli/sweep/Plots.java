@@ -1,5 +1,6 @@
 package org.parpe.cli.sweep;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.util.ArrayList;
@@ -24,10 +25,10 @@ import org.parpe.sim.sweep.SweepRow;
  * optimisation's convergence (every evaluation a dot, the best so far a line).
  */
 final class Plots {
-    static final String RUNS = "each run";
-    static final String FELL = "fell over";
-    static final String FELL_NEVER_BEST = "fell over (never best)";
-    static final String BEST = "best run at this value";
+    static final CliMsg RUNS = CliMsg.PLOT_EACH_RUN;
+    static final CliMsg FELL = CliMsg.PLOT_FELL;
+    static final CliMsg FELL_NEVER_BEST = CliMsg.PLOT_FELL_NEVER_BEST;
+    static final CliMsg BEST = CliMsg.PLOT_BEST_AT_VALUE;
     private static final int WIDTH = 1000;
     /** A panel's height: its plot, axis titles and a legend of up to three rows. */
     private static final int PANEL = 370;
@@ -65,12 +66,12 @@ final class Plots {
                     best.merge(xs[i], scores[i], Math::max);
                 }
             }
-            PngCharts.points(c, RUNS, upX, upY, PlotStyle.OTHER_RUN, false);
-            PngCharts.points(c, countFallen ? FELL : FELL_NEVER_BEST, fellX, fellY, PlotStyle.FELL, true);
+            PngCharts.points(c, RUNS.text(), upX, upY, PlotStyle.OTHER_RUN, false);
+            PngCharts.points(c, (countFallen ? FELL : FELL_NEVER_BEST).text(), fellX, fellY, PlotStyle.FELL, true);
             double[] bx = best.keySet().stream().mapToDouble(Double::doubleValue).toArray();
             double[] by = best.values().stream().mapToDouble(Double::doubleValue).toArray();
             if (bx.length > 0) {
-                PngCharts.line(c, BEST, bx, by, bx.length, PlotStyle.BEST);
+                PngCharts.line(c, BEST.text(), bx, by, bx.length, PlotStyle.BEST);
             }
             panels.add(c);
         }
@@ -92,12 +93,12 @@ final class Plots {
             feasible[i] = all.get(i).feasible() ? all.get(i).score() : Double.NaN;
             misses[i] = all.get(i).feasible() ? Double.NaN : all.get(i).score();
         }
-        XYChart c = PngCharts.panel(WIDTH, PANEL + 20, title, "simulation", result.objective().label());
-        PngCharts.points(c, "each simulation", n, feasible, PlotStyle.OTHER_RUN, false);
-        PngCharts.points(c, "misses a constraint", n, misses, PlotStyle.MISSES, false);
+        XYChart c = PngCharts.panel(WIDTH, PANEL + 20, title, CliMsg.PLOT_SIMULATION.text(), result.objective().label());
+        PngCharts.points(c, CliMsg.PLOT_EACH_SIMULATION.text(), n, feasible, PlotStyle.OTHER_RUN, false);
+        PngCharts.points(c, CliMsg.PLOT_MISSES.text(), n, misses, PlotStyle.MISSES, false);
         double[] best = result.bestSoFar();
         if (java.util.Arrays.stream(best).anyMatch(Double::isFinite)) {
-            PngCharts.line(c, "best so far", n, best, Math.min(n.length, best.length), PlotStyle.BEST_SO_FAR);
+            PngCharts.line(c, CliMsg.PLOT_BEST_SO_FAR.text(), n, best, Math.min(n.length, best.length), PlotStyle.BEST_SO_FAR);
         }
         return c;
     }

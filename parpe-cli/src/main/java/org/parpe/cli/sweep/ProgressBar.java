@@ -1,5 +1,6 @@
 package org.parpe.cli.sweep;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.PrintWriter;
 import java.util.Locale;
 import org.parpe.cli.terminal.TerminalLine;
@@ -67,8 +68,8 @@ final class ProgressBar implements SweepListener {
     private String status(int done, int total, long now) {
         double rate = done / Math.max((now - start) / 1e9, 1e-9);
         long left = Math.round((total - done) / Math.max(rate, 1e-9));
-        return String.format(Locale.ROOT, "%d/%d runs, %.1f runs/s, %d:%02d left", done, total, rate, left / 60,
-                left % 60);
+        return CliMsg.SWEEP_PROGRESS.text(done, total, String.format(Locale.ROOT, "%.1f", rate),
+                String.format(Locale.ROOT, "%d:%02d", left / 60, left % 60));
     }
 
     /** Clears the bar. */

@@ -1,5 +1,6 @@
 package org.parpe.cli.sweep;
 
+import org.parpe.cli.text.CliMsg;
 import java.io.BufferedWriter;
 import java.io.FilterOutputStream;
 import java.io.IOException;
@@ -49,8 +50,7 @@ final class ShardFile {
                 first = "";
             }
             if (SweepCsv.shardOf(first) == null && !first.isEmpty()) {
-                throw new UsageException("cannot write the unfinished shard to '" + out + ".partial': the file exists"
-                        + " and is not a shard's; move it away");
+                throw new UsageException(CliMsg.PARTIAL_NOT_A_SHARD.text(out + ".partial"));
             }
         }
         return f;
@@ -65,7 +65,7 @@ final class ShardFile {
      */
     Writer open() throws IOException {
         if (Files.exists(partial, LinkOption.NOFOLLOW_LINKS) && !Files.isRegularFile(partial, LinkOption.NOFOLLOW_LINKS)) {
-            throw new IOException("'" + partial + "' exists and is not a regular file; move it away");
+            throw new IOException(CliMsg.NOT_A_REGULAR_FILE.text(partial));
         }
         channel = FileChannel.open(partial, StandardOpenOption.CREATE, StandardOpenOption.WRITE, LinkOption.NOFOLLOW_LINKS);
         FileLock lock;
@@ -76,8 +76,7 @@ final class ShardFile {
         }
         if (lock == null) {
             release();
-            throw new IOException("another parpe sweep is writing this shard now (" + partial + " is locked by it);"
-                    + " wait for it to end, or give this one another --out");
+            throw new IOException(CliMsg.SHARD_LOCKED.text(partial));
         }
         channel.truncate(0);
         // closing the writer flushes; the channel and its lock stay until the shard is in place

@@ -57,7 +57,8 @@ public class SimSweepOptions {
 
     /** What every run is, for a plot's title: {@code snake.xml on snake:n=8 in race-track.xml}. */
     String runsOf(Path file) {
-        return file.getFileName() + " on " + sim.trim() + (world == null ? "" : " in " + world.getFileName());
+        return world == null ? CliMsg.RUNS_ON.text(file.getFileName(), sim.trim())
+                : CliMsg.RUNS_ON_IN.text(file.getFileName(), sim.trim(), world.getFileName());
     }
 
     /** The objective named by {@code --objective}; {@code score} needs {@code --world}. */

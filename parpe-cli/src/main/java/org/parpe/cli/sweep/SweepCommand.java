@@ -67,7 +67,7 @@ public final class SweepCommand extends SimSweepCommand {
 
     @Override
     String kept() {
-        return "kept what was finished";
+        return CliMsg.KEPT_FINISHED.text();
     }
 
     @Override
@@ -104,19 +104,17 @@ public final class SweepCommand extends SimSweepCommand {
         OutputFile png = plotTarget;
         if (png != null && cancel.cancelled()) {
             // AWT cannot start while the JVM shuts down (Ctrl-C): the rows are safe, the plot is not drawn.
-            err.println("parpe: interrupted: no plot drawn");
+            err.println("parpe: " + CliMsg.NO_PLOT_DRAWN.text());
             png = null;
         }
         if (png != null) {
-            String title = options.runsOf(file) + ", " + Numbers.format(options.duration) + " s, "
-                    + result.rows().size() + " runs";
+            String title = CliMsg.PLOT_TITLE.text(CliMsg.RUNS_OF_SECONDS.text(options.runsOf(file),
+                    Numbers.format(options.duration)), result.rows().size());
             png.write(o -> Plots.sweep(o, title, sweep.spec().axes(), result.rows(), goal, countFallen));
         }
         summary(err, result, range[1] - range[0], goal, sweep.spec().axes(), png);
         return 0;
     }
-
-    private static final String STDOUT_CLOSED = "it is closed or its pipe is broken";
 
     /**
      * Runs the sweep's share {@code range}, writing the header and each row as it comes; a
@@ -145,7 +143,7 @@ public final class SweepCommand extends SimSweepCommand {
             }
             target.flush();
             if (w == null && stdout.checkError()) {
-                throw new IOException(STDOUT_CLOSED);
+                throw new IOException(CliMsg.STDOUT_CLOSED.text());
             }
             if (w != null) {
                 w.close(); // puts the file in place, also after Ctrl-C (with the rows finished in order)
@@ -153,8 +151,8 @@ public final class SweepCommand extends SimSweepCommand {
             whole = true;
         } catch (java.io.UncheckedIOException | IOException e) {
             String why = e instanceof java.io.UncheckedIOException u ? u.getCause().getMessage() : e.getMessage();
-            throw new UsageException(csv == null ? "cannot write to standard output: " + why
-                    : shardFile != null ? "cannot write --out file '" + out + "': " + why : why);
+            throw new UsageException(csv == null ? CliMsg.CANNOT_WRITE_STDOUT.text(why)
+                    : shardFile != null ? CliMsg.CANNOT_WRITE_OUT.text(out, why) : why);
         } finally {
             OutputFile.abort(w); // after a failure (a full disk, or of PARPE itself) the old file stays, no temporary one
             if (shardFile != null && !(whole && !result.cancelled())) {
@@ -162,8 +160,7 @@ public final class SweepCommand extends SimSweepCommand {
             }
         }
         if (shardFile != null && result.cancelled()) {
-            err.println("parpe: shard " + share[0] + "/" + share[1] + " is unfinished: its " + result.rows().size()
-                    + " finished runs are in " + shardFile.partial() + "; run the shard again to complete it");
+            err.println("parpe: " + CliMsg.SHARD_UNFINISHED.text(share[0], share[1], result.rows().size(), shardFile.partial()));
         } else if (shardFile != null) {
             try {
                 shardFile.commit();
@@ -188,7 +185,7 @@ public final class SweepCommand extends SimSweepCommand {
                         target.flush(); // each finished row reaches the file: a killed task keeps it
                     }
                     if (stdout != null && stdout.checkError()) {
-                        throw new IOException(STDOUT_CLOSED);
+                        throw new IOException(CliMsg.STDOUT_CLOSED.text());
                     }
                 } catch (IOException e) {
                     throw new java.io.UncheckedIOException(e);
@@ -202,23 +199,28 @@ public final class SweepCommand extends SimSweepCommand {
         List<SweepRow> rows = result.rows();
         long failed = rows.stream().filter(r -> !r.ok()).count();
         long fell = rows.stream().filter(SweepRow::fell).count();
-        err.println(String.format(Locale.ROOT, "parpe: %d of %d runs%s; %d with errors, %d fell over", rows.size(),
-                expected, result.cancelled() ? " (stopped: the file holds the runs finished in order)" : "", failed, fell));
+        err.println("parpe: " + (result.cancelled() ? CliMsg.SWEEP_SUMMARY_STOPPED : CliMsg.SWEEP_SUMMARY).text(rows.size(),
+                expected, failed, fell));
         java.util.Optional<SweepRow> best = SweepResult.best(rows, goal, SweepResult.rule(countFallen));
-        best.ifPresent(b -> err.println(String.format(Locale.ROOT, "parpe: best %s %.4f with %s (run %d%s)",
-                goal.id(), goal.of(b), values(b), b.point().index(), b.fell() ? ", fell over" : "")));
+        best.ifPresent(b -> err.println("parpe: " + (b.fell() ? CliMsg.SWEEP_BEST_FELL : CliMsg.SWEEP_BEST).text(goal.id(),
+                String.format(Locale.ROOT, "%.4f", goal.of(b)), values(b), b.point().index())));
         best.ifPresent(b -> axes.forEach(a -> {
-            String bound = a.atBound(b.values().get(a.name()));
+            String bound = bound(a, b.values().get(a.name()));
             if (!bound.isEmpty()) {
-                err.println("parpe: best " + a.name() + "=" + Numbers.format(b.values().get(a.name())) + " is " + bound);
+                err.println("parpe: " + CliMsg.BEST_AT_BOUND.text(a.name() + "=" + Numbers.format(b.values().get(a.name())), bound));
             }
         }));
         if (best.isEmpty() && !rows.isEmpty()) {
-            err.println("parpe: no best run: every run failed" + (countFallen ? "" : " or fell over (--count-fallen lets fallen runs count)"));
+            err.println("parpe: " + (countFallen ? CliMsg.NO_BEST_RUN : CliMsg.NO_BEST_RUN_FELL).text());
         }
         if (png != null) {
-            err.println("parpe: plot in " + png);
+            err.println("parpe: " + CliMsg.PLOT_IN.text(png));
         }
+    }
+
+    /** What to say of a best value {@code v} at an end of {@code a} (where the best may lie beyond it); empty inside. */
+    static String bound(Axis a, double v) {
+        return a.atBound(v).isEmpty() ? "" : (v == a.hi() ? CliMsg.AT_UPPER_BOUND : CliMsg.AT_LOWER_BOUND).text(Numbers.format(v));
     }
 
     private static String values(SweepRow row) {

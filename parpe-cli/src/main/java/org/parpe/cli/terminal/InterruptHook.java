@@ -1,5 +1,6 @@
 package org.parpe.cli.terminal;
 
+import org.parpe.cli.text.CliMsg;
 import java.lang.reflect.InvocationHandler;
 import java.lang.reflect.Method;
 import java.lang.reflect.Proxy;
@@ -53,12 +54,12 @@ public final class InterruptHook implements AutoCloseable {
     public String cause() {
         String signal = lastSignal;
         if ("INT".equals(signal)) {
-            return "interrupted (Ctrl-C)";
+            return CliMsg.INTERRUPTED_CTRL_C.text();
         }
         if ("TERM".equals(signal)) {
-            return "stopped by SIGTERM (scancel, a job's time limit, or kill)";
+            return CliMsg.STOPPED_BY_SIGTERM.text();
         }
-        return "stopped (the program was told to end)";
+        return CliMsg.STOPPED_TOLD.text();
     }
 
     /**

@@ -59,6 +59,16 @@ public final class HelpKeys {
                 "force", "plot"));
         optimize.addAll(simSweep);
         o.put("optimize", optimize);
+        o.put("merge", List.of("files", "out", "plot", "objective", "count-fallen"));
+        o.put("grade", List.of("challenge", "students", "out", "jobs", "cpu-limit", "memory", "shard", "merge"));
+        o.put("bench", List.of("only", "list", "no-fork", "save", "compare"));
+        o.put("emulate", List.of("port", "modules", "baud", "protocol", "model", "drop", "corrupt", "latency", "unplug-after",
+                "unplug-for", "speed", "seed", "log", "duration"));
+        o.put("record", List.of("port", "hardware", "baud", "group", "script", "modules", "out", "every", "count"));
+        o.put("scan", List.of("port", "protocol", "baud", "ids", "out", "force"));
+        o.put("calibrate", List.of("hardware", "port"));
+        o.put("export", List.of("file", "target", "robot", "duration", "stimulus", "out", "tick", "param", "board", "servo",
+                "pins", "baud", "model", "console-sensors"));
         return o;
     }
 }

@@ -41,11 +41,11 @@ class PlotsTest {
         List<XYChart> panels = Plots.sweepPanels("t", List.of(Axis.list("bend", List.of(10.0, 20.0))), rows,
                 Objective.byId("forward-speed"), false);
         XYChart c = panels.get(0);
-        XYSeries fell = c.getSeriesMap().get(Plots.FELL_NEVER_BEST);
+        XYSeries fell = c.getSeriesMap().get(Plots.FELL_NEVER_BEST.text());
         assertNotNull(fell, c.getSeriesMap().keySet().toString());
         assertInstanceOf(PngCharts.Ring.class, fell.getMarker());
         assertEquals(new Color(PlotStyle.FELL), fell.getMarkerColor());
-        XYSeries best = c.getSeriesMap().get(Plots.BEST);
+        XYSeries best = c.getSeriesMap().get(Plots.BEST.text());
         assertArrayEquals(new double[] {0.10, 0.20}, best.getYData(), 1e-12, "the fallen 0.30 is not the best at 20");
         assertEquals("bend", c.getXAxisTitle());
     }
@@ -78,7 +78,7 @@ class PlotsTest {
         List<SweepRow> rows = List.of(row(0, 20, 0.30, true), row(1, 20, 0.20, false));
         XYChart c = Plots.sweepPanels("t", List.of(Axis.list("bend", List.of(20.0))), rows,
                 Objective.byId("forward-speed"), true).get(0);
-        assertArrayEquals(new double[] {0.30}, c.getSeriesMap().get(Plots.BEST).getYData(), 1e-12);
-        assertNotNull(c.getSeriesMap().get(Plots.FELL));
+        assertArrayEquals(new double[] {0.30}, c.getSeriesMap().get(Plots.BEST.text()).getYData(), 1e-12);
+        assertNotNull(c.getSeriesMap().get(Plots.FELL.text()));
     }
 }
