@@ -30,7 +30,7 @@ import org.parpe.core.load.LoadResult;
 import org.parpe.core.model.Program;
 import org.parpe.gui.diagram.DiagramPane;
 import org.parpe.gui.editor.ParslEditor;
-import org.parpe.gui.editor.Validator;
+import org.parpe.gui.editor.ScriptDocument;
 import org.parpe.gui.grid.GridPane;
 import org.parpe.gui.panels.ControlPanel;
 import org.parpe.gui.panels.OutlineView;
@@ -75,7 +75,7 @@ public final class IdeWindow implements HardwareHost {
     private final PlotView plots;
     private final StatusBar status;
     private final RunToolBar toolbar;
-    private final Validator validator;
+    private final ScriptDocument document;
     private final FileActions files;
     private final RunActions runs;
     private final PosePanel pose;
@@ -116,7 +116,6 @@ public final class IdeWindow implements HardwareHost {
         SashForm editorBox = new SashForm(editorFolder, SWT.HORIZONTAL);
         editor = new ParslEditor(editorBox);
         gaitGrid = new GridPane(editorBox, editor);
-        validator = new Validator(display, editor::setNames);
         editorTab = Panels.tab(editorFolder, "untitled.xml", editorBox);
         bottom = Panels.folder(middle);
         problems = new ProblemsView(bottom, d -> reveal(d.pos()), this::markProblems);
@@ -164,8 +163,15 @@ public final class IdeWindow implements HardwareHost {
         status = new StatusBar(shell);
         status.control().setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         files = new FileActions(shell, editor, prefs, this::documentChanged, this::fileSwitched, status::setMessage);
+        document = new ScriptDocument(display, editor.document(), files::pathForLoading);
+        document.addListener(l -> {
+            if (l.names() != null) {
+                editor.setNames(l.names());
+            }
+            showValidation(l.result());
+        });
         org.parpe.gui.panels.FileDialogs.follow(files::file, org.parpe.gui.files.Examples.bundled());
-        diagram = new DiagramPane(viewFolder, editor, files::pathForLoading);
+        diagram = new DiagramPane(viewFolder, editor, document);
         diagram.sayPlacesWith(status::setMessage);
         Panels.tab(viewFolder, UiMsg.TAB_DIAGRAM.text(), diagram.control());
         robotTab = new org.parpe.gui.robot.RobotTab(viewFolder, new RobotBridge(this));
@@ -230,7 +236,7 @@ public final class IdeWindow implements HardwareHost {
         shell.addListener(SWT.Close, e -> e.doit = closeRequested());
         shell.addListener(SWT.Dispose, e -> {
             runs.dispose();
-            validator.close();
+            document.close();
         });
         tickStatus();
         runStateChanged();
@@ -412,7 +418,7 @@ public final class IdeWindow implements HardwareHost {
         String mark = files.dirty() ? "*" : "";
         editorTab.setText(mark + files.name());
         shell.setText(mark + files.name() + " \u2014 PARPE");
-        validator.schedule(files.pathForLoading(), editor.document(), this::showValidation);
+        document.check();
     }
 
     /** Shows a load result: markers, Problems, outline, controls, plots and the robot preview. */
@@ -869,6 +875,11 @@ public final class IdeWindow implements HardwareHost {
     /** Opens a module camera window on the run, looking from the script's last module. */
     public ModuleCameraWindow openModuleCamera() {
         return ModuleCameraWindow.open(shell(), runs::snapshot, program != null ? program.moduleIds() : new int[0]);
+    }
+
+    /** The open script (the editor's text, loaded once per version). */
+    ScriptDocument document() {
+        return document;
     }
 
     public Program program() {

@@ -248,7 +248,7 @@ final class MenuBar {
     /** Run → Sweep / Optimise…: one dialog per window, on the editor's script. */
     private void openSweep() {
         if (sweep == null || sweep.shell().isDisposed()) {
-            sweep = SweepDialog.open(new SweepHost(ide.shell(), ide.editor(), ide.files()::pathForLoading,
+            sweep = SweepDialog.open(new SweepHost(ide.shell(), ide.editor(), ide.document(),
                     ide::robotChoice, () -> ide.viewBar().world().file(), ide::showRunDiagnostics));
         } else {
             sweep.activate();

@@ -26,7 +26,7 @@ import org.parpe.core.run.Run;
 import org.parpe.core.run.RunOptions;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.core.run.TargetException;
-import org.parpe.gui.editor.Validator;
+import org.parpe.gui.editor.ScriptDocument;
 import org.parpe.gui.panels.ControlPanel;
 import org.parpe.gui.panels.ParametersDialog;
 import org.parpe.core.plot.AngleRecorder;
@@ -161,9 +161,9 @@ public final class RunActions implements ControlPanel.ControlSink {
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, UiMsg.OUTCOME_FILE_EMPTY.text()));
             return;
         }
-        Path path = ide.files().pathForLoading();
-        String text = ide.editor().document().get();
-        LoadResult first = Validator.load(path, text, Map.of());
+        // read afresh: the run sees the files the script includes as they are now
+        ScriptDocument.Loaded read = ide.document().reread();
+        LoadResult first = read.result();
         ide.showValidation(first);
         if (first.program() == null) {
             ide.status().setMessage(UiMsg.CANNOT_RUN_ERRORS.text(first.errors().size()));
@@ -177,7 +177,7 @@ public final class RunActions implements ControlPanel.ControlSink {
             ide.status().setMessage(UiMsg.RUN_CANCELLED.text());
             return;
         }
-        LoadResult loaded = params.isEmpty() ? first : Validator.load(path, text, params);
+        LoadResult loaded = read.bind(params);
         if (!loaded.ok()) {
             ide.showValidation(loaded);
             ide.clearRunProblems();
