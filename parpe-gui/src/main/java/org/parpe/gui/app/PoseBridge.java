@@ -98,7 +98,7 @@ final class PoseBridge implements PoseHost {
 
     @Override
     public PoseHardware hardware() {
-        HardwareDialog d = ide.hardwareDialog();
+        HardwareDialog d = ide.hardware().hardwareDialog();
         if (d == null || d.shell().isDisposed() || d.servos().isEmpty()) {
             return null;
         }
