@@ -353,7 +353,7 @@ public final class IdeWindow {
     }
 
     /** The open script (the editor's text, loaded once per version). */
-    public ScriptDocument document() {
+    ScriptDocument document() {
         return document;
     }
 

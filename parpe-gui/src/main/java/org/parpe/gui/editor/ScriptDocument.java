@@ -250,6 +250,9 @@ public final class ScriptDocument implements AutoCloseable {
     }
 
     private void delivered(Loaded l) {
+        if (worker.isShutdown()) {
+            return; // the window closed while the text was read: nobody is left to tell
+        }
         keep(l);
         Loaded now = current();
         if (now == null) {
