@@ -29,6 +29,17 @@ class GuiPackagesTest {
             .should().dependOnClassesThat().resideInAPackage("org.parpe.gui.app..");
 
     /**
+     * Issue 32, item 2: the IDE loads PARSL text in one place, the open script's document
+     * ({@code ScriptDocument}, which loads each version of the editor's text once); every view
+     * reads it there instead of loading the text again. (It failed on the tree before: the sweep
+     * dialog, its runner and "apply best" called the loader themselves.)
+     */
+    @ArchTest
+    static final ArchRule ONLY_THE_DOCUMENT_LOADS_SCRIPTS = noClasses()
+            .that().haveNameNotMatching("org\\.parpe\\.gui\\.editor\\.ScriptDocument(\\$.*)?")
+            .should().dependOnClassesThat().haveFullyQualifiedName("org.parpe.core.load.ScriptLoader");
+
+    /**
      * Issue 32's acceptance: a feature's package reaches the window through a narrow host
      * interface of its own ({@code HardwareHost}, {@code PoseHost}, {@code RobotHost}), and only
      * the window's package implements one, so a feature never hands another feature's object in

@@ -231,7 +231,7 @@ final class MenuBar {
         // the text after a tab only for a key it can read (not Esc): the key is named in the label, as on the tool bar.
         item(m, UiMsg.MENU_EMERGENCY_STOP.text(), 0, r::emergencyStop);
         new MenuItem(m, SWT.SEPARATOR);
-        item(m, UiMsg.MENU_HARDWARE.text(), 0, () -> HardwareDialog.open(ide));
+        item(m, UiMsg.MENU_HARDWARE.text(), 0, () -> HardwareDialog.open(ide.hardware()));
         item(m, UiMsg.MENU_SWEEP.text(), 0, this::openSweep);
         item(m, UiMsg.MENU_GRADE_CLASS.text(), 0, this::openClass);
     }
@@ -248,7 +248,7 @@ final class MenuBar {
     /** Run → Sweep / Optimise…: one dialog per window, on the editor's script. */
     private void openSweep() {
         if (sweep == null || sweep.shell().isDisposed()) {
-            sweep = SweepDialog.open(new SweepHost(ide.shell(), ide.editor(), ide.files()::pathForLoading,
+            sweep = SweepDialog.open(new SweepHost(ide.shell(), ide.editor(), ide.document(),
                     ide::robotChoice, () -> ide.viewBar().world().file(), ide::showRunDiagnostics));
         } else {
             sweep.activate();
@@ -263,7 +263,7 @@ final class MenuBar {
         item(m, UiMsg.MENU_RESET_ZOOM.text() + "\tCtrl+0", SWT.MOD1 + '0', () -> ide.zoom(0));
         new MenuItem(m, SWT.SEPARATOR);
         item(m, UiMsg.MENU_RESET_3D.text(), 0, () -> ide.view().resetView());
-        item(m, UiMsg.MENU_CLEAR_LOG.text(), 0, ide::clearLog);
+        item(m, UiMsg.MENU_CLEAR_LOG.text(), 0, () -> ide.bottom().clearLog());
         new MenuItem(m, SWT.SEPARATOR);
         languageMenu(submenu(m, UiMsg.MENU_LANGUAGE.text()));
     }

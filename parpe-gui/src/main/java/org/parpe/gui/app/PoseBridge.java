@@ -13,7 +13,7 @@ import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.model.Program;
 import org.parpe.core.run.RunOutcome;
-import org.parpe.gui.editor.Validator;
+import org.parpe.gui.editor.ScriptDocument;
 import org.parpe.gui.pose.PoseHardware;
 import org.parpe.gui.pose.PoseHost;
 import org.parpe.gui.run.RunOn;
@@ -73,7 +73,7 @@ final class PoseBridge implements PoseHost {
 
     @Override
     public LoadResult load(Path path, String text) {
-        return Validator.load(path, text, Map.of());
+        return ScriptDocument.load(path, text, Map.of());
     }
 
     @Override
@@ -98,7 +98,7 @@ final class PoseBridge implements PoseHost {
 
     @Override
     public PoseHardware hardware() {
-        HardwareDialog d = ide.hardwareDialog();
+        HardwareDialog d = ide.hardware().hardwareDialog();
         if (d == null || d.shell().isDisposed() || d.servos().isEmpty()) {
             return null;
         }

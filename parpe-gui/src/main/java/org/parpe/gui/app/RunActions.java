@@ -26,7 +26,7 @@ import org.parpe.core.run.Run;
 import org.parpe.core.run.RunOptions;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.core.run.TargetException;
-import org.parpe.gui.editor.Validator;
+import org.parpe.gui.editor.ScriptDocument;
 import org.parpe.gui.panels.ControlPanel;
 import org.parpe.gui.panels.ParametersDialog;
 import org.parpe.core.plot.AngleRecorder;
@@ -109,12 +109,12 @@ public final class RunActions implements ControlPanel.ControlSink {
 
     /** The user picked {@code t} in the tool bar for the file in the editor. */
     void targetChosen(RunOn t) {
-        ide.targetChosen(t);
+        ide.choices().targetChosen(t);
     }
 
     /** Opens the Hardware dialog (Run > Hardware…). */
     void openHardware() {
-        HardwareDialog.open(ide);
+        HardwareDialog.open(ide.hardware());
     }
 
     String hardwareState() {
@@ -148,7 +148,7 @@ public final class RunActions implements ControlPanel.ControlSink {
             }
             return;
         }
-        if (ide.toolbar().target().hardware() && ide.hardwareHeld() != null) {
+        if (ide.toolbar().target().hardware() && ide.hardware().held() != null) {
             // Two owners of one serial port would garble each other's packets.
             String why = UiMsg.HARDWARE_DIALOG_HOLDS_BUS.text();
             ide.status().setMessage(UiMsg.CANNOT_RUN.text(why));
@@ -156,18 +156,18 @@ public final class RunActions implements ControlPanel.ControlSink {
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, why));
             return;
         }
-        if (ide.emptyScript()) {
+        if (ide.checks().emptyScript()) {
             ide.status().setMessage(UiMsg.CANNOT_RUN_EMPTY.text());
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, UiMsg.OUTCOME_FILE_EMPTY.text()));
             return;
         }
-        Path path = ide.files().pathForLoading();
-        String text = ide.editor().document().get();
-        LoadResult first = Validator.load(path, text, Map.of());
-        ide.showValidation(first);
+        // read afresh: the run sees the files the script includes as they are now
+        ScriptDocument.Loaded read = ide.document().reread();
+        LoadResult first = read.result();
+        ide.checks().show(first);
         if (first.program() == null) {
             ide.status().setMessage(UiMsg.CANNOT_RUN_ERRORS.text(first.errors().size()));
-            ide.showProblems();
+            ide.bottom().showProblems();
             ide.shell().getDisplay().beep();
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, UiMsg.OUTCOME_SCRIPT_ERRORS.text()));
             return;
@@ -177,15 +177,15 @@ public final class RunActions implements ControlPanel.ControlSink {
             ide.status().setMessage(UiMsg.RUN_CANCELLED.text());
             return;
         }
-        LoadResult loaded = params.isEmpty() ? first : Validator.load(path, text, params);
+        LoadResult loaded = read.bind(params);
         if (!loaded.ok()) {
-            ide.showValidation(loaded);
-            ide.clearRunProblems();
-            loaded.parameterErrors().forEach(ide::runProblemLater);
+            ide.checks().show(loaded);
+            ide.problems().clearRunDiagnostics();
+            loaded.parameterErrors().forEach(ide.bottom()::runProblemLater);
             String why = loaded.parameterErrors().isEmpty() ? UiMsg.ERRORS_WITH_PARAMETERS.text()
                     : loaded.parameterErrors().get(0).message();
             ide.status().setMessage(UiMsg.CANNOT_RUN.text(why));
-            ide.showProblems();
+            ide.bottom().showProblems();
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, why));
             return;
         }
@@ -197,7 +197,7 @@ public final class RunActions implements ControlPanel.ControlSink {
         start(program, target, robotSpec(program), runFor, onEnd);
         String misfit = target.sim() ? misfit(program, ide.robotChoice()) : null;
         if (misfit != null) {
-            ide.runProblemLater(new Diagnostic(Severity.WARNING, SourcePos.origin(UiMsg.ORIGIN_ROBOT.text(ide.robotChoice())), misfit));
+            ide.bottom().runProblemLater(new Diagnostic(Severity.WARNING, SourcePos.origin(UiMsg.ORIGIN_ROBOT.text(ide.robotChoice())), misfit));
         }
     }
 
@@ -224,7 +224,7 @@ public final class RunActions implements ControlPanel.ControlSink {
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, UiMsg.OUTCOME_RUN_GOING_ON.text()));
             return;
         }
-        if (target.hardware() && ide.hardwareHeld() != null) {
+        if (target.hardware() && ide.hardware().held() != null) {
             ide.status().setMessage(UiMsg.CANNOT_PLAY_ON_ROBOT.text());
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, UiMsg.HARDWARE_DIALOG_HOLDS_BUS.text()));
             return;
@@ -238,12 +238,12 @@ public final class RunActions implements ControlPanel.ControlSink {
         AngleRecorder recorder = org.parpe.gui.panels.PlotView.newRecorder();
         ide.plots().setModules(program.moduleIds());
         ide.plots().setRecorder(recorder);
-        ide.clearRunProblems();
-        ide.log(UiMsg.LOG_RUN.text(ide.files().name(), target.label(), target.sim() ? UiMsg.LOG_RUN_ROBOT.text(spec) : "",
+        ide.problems().clearRunDiagnostics();
+        ide.bottom().log(UiMsg.LOG_RUN.text(ide.files().name(), target.label(), target.sim() ? UiMsg.LOG_RUN_ROBOT.text(spec) : "",
                 !target.hardware() ? "" : profile == null ? UiMsg.LOG_RUN_PORT.text(port) : UiMsg.LOG_RUN_PORT_PROFILE.text(port, profile)));
         controller.setSpeed(ide.toolbar().speed());
         finalScore = null;
-        Run.Builder run = Run.builder(program, RunOptions.defaults(), ide::runProblemLater);
+        Run.Builder run = Run.builder(program, RunOptions.defaults(), ide.bottom()::runProblemLater);
         World world = target.sim() ? ide.viewBar().world().world() : null; // read on the UI thread
         // a world's challenge lasts its time limit, as on the command line
         double limit = world != null && runFor < 0 ? world.timeLimit() : runFor;
@@ -254,7 +254,7 @@ public final class RunActions implements ControlPanel.ControlSink {
             }
             ended(outcome);
             report(onEnd, outcome);
-        }, ide::logLater);
+        }, ide.bottom()::logLater);
         ide.controls().pushAll();
         ide.runStateChanged();
     }
@@ -273,7 +273,7 @@ public final class RunActions implements ControlPanel.ControlSink {
                         AngleRecorder recorder) throws TargetException {
         if (target.hardware()) {
             ServoTarget st = ServoTarget.open(profile == null ? null : Path.of(profile), port, UiMsg.HARDWARE_PROFILE.text(),
-                    BusConfig.defaults(), ide::logLater);
+                    BusConfig.defaults(), ide.bottom()::logLater);
             hardwareState = UiMsg.HW_CONNECTING.text(st.port() == null ? "" : st.port());
             attachDriver(run, st, st.profile() == null ? "" : " (" + st.profile().protocol().key() + ")");
         }
@@ -321,7 +321,7 @@ public final class RunActions implements ControlPanel.ControlSink {
         finalScore = score;
         if (m != null && m.fell()) {
             String choice = ide.robotChoice();
-            ide.runProblemLater(new Diagnostic(Severity.WARNING, SourcePos.origin(UiMsg.ORIGIN_ROBOT.text(choice)), UiMsg.ROBOT_FELL,
+            ide.bottom().runProblemLater(new Diagnostic(Severity.WARNING, SourcePos.origin(UiMsg.ORIGIN_ROBOT.text(choice)), UiMsg.ROBOT_FELL,
                     String.format(java.util.Locale.ROOT, "%.0f", m.maxTiltDeg()), String.format(java.util.Locale.ROOT, "%.0f",
                     SimMetrics.FALL_TILT_DEG), SimTarget.AUTO.equals(choice) ? "" : UiMsg.ROBOT_FELL_WHICH.text(choice)));
             travelled += UiMsg.RUN_FELL_OVER.text();
@@ -332,16 +332,16 @@ public final class RunActions implements ControlPanel.ControlSink {
             case STOPPED -> (emergency ? UiMsg.RUN_EMERGENCY_STOPPED : UiMsg.RUN_STOPPED).text(t, travelled);
             case ERROR -> UiMsg.RUN_FAILED.text(outcome.message());
         };
-        ide.log(said);
+        ide.bottom().log(said);
         if (score == null) {
             ide.status().setMessage(said);
         } else {
             // What a teacher records comes first: the status bar cuts a long message at its end.
             String points = UiMsg.RUN_SCORE.text(String.format(java.util.Locale.ROOT, "%.1f", score.score()));
-            ide.log(points + ": " + score.inWords());
+            ide.bottom().log(points + ": " + score.inWords());
             ide.status().setMessage(points + " (" + score.inWords() + ") \u2014 " + Character.toLowerCase(said.charAt(0))
                     + said.substring(1));
-            ide.showRunLog();
+            ide.bottom().showRunLog();
         }
         ide.runStateChanged();
     }
@@ -395,7 +395,7 @@ public final class RunActions implements ControlPanel.ControlSink {
         }
         if (controller.running()) {
             emergency = true;
-            ide.log(UiMsg.LOG_EMERGENCY_STOP.text());
+            ide.bottom().log(UiMsg.LOG_EMERGENCY_STOP.text());
             ide.status().setMessage(UiMsg.RUN_EMERGENCY_STOP.text());
         }
     }
@@ -425,7 +425,7 @@ public final class RunActions implements ControlPanel.ControlSink {
             Program p = e.program();
             SourcePos where = p.controls().stream().filter(c -> c.name().equals(name)).map(c -> c.pos())
                     .findFirst().orElse(SourcePos.origin(UiMsg.ORIGIN_CONTROL.text(name)));
-            ide.runProblemLater(new Diagnostic(Severity.ERROR, where, ex.getMessage()));
+            ide.bottom().runProblemLater(new Diagnostic(Severity.ERROR, where, ex.getMessage()));
         }
     }
 
@@ -455,7 +455,7 @@ public final class RunActions implements ControlPanel.ControlSink {
                     ide.sayLater(UiMsg.ROBOT_MISFIT_SAY.text(spec, misfit));
                 }
             } catch (RuntimeException e) {
-                ide.logLater(UiMsg.CANNOT_SHOW_ROBOT.text(spec, e.getMessage()));
+                ide.bottom().logLater(UiMsg.CANNOT_SHOW_ROBOT.text(spec, e.getMessage()));
             }
         });
     }

@@ -104,7 +104,7 @@ public final class ViewBar {
     }
 
     private void worldChosen() {
-        ide.worldChosen(world.choice());
+        ide.choices().worldChosen(world.choice());
         ide.runs().invalidatePreview();
         if (ide.program() != null) {
             ide.runs().updatePreview(ide.program());

@@ -25,6 +25,7 @@ import org.parpe.core.edit.TextEdit;
 import org.parpe.gui.diagram.Projection.View;
 import org.parpe.gui.editor.AfterChange;
 import org.parpe.gui.editor.ParslEditor;
+import org.parpe.gui.editor.ScriptDocument;
 import org.parpe.gui.text.PanelMsg;
 
 /**
@@ -41,7 +42,7 @@ import org.parpe.gui.text.PanelMsg;
 public final class DiagramPane {
 
     private final ParslEditor editor;
-    private final Supplier<Path> file;
+    private final ScriptDocument document;
     private final Composite box;
     private final Combo viewChoice;
     private final Combo subjectChoice;
@@ -73,10 +74,10 @@ public final class DiagramPane {
     private final PlacesBeside places = new PlacesBeside(this::say);
     private final FreeNodes freeNodes;
 
-    /** The pane in {@code parent}, showing {@code editor}'s document as the file {@code file} names. */
-    public DiagramPane(Composite parent, ParslEditor editor, Supplier<Path> file) {
+    /** The pane in {@code parent}, showing {@code document}, the text of {@code editor}. */
+    public DiagramPane(Composite parent, ParslEditor editor, ScriptDocument document) {
         this.editor = editor;
-        this.file = file;
+        this.document = document;
         box = new Composite(parent, SWT.NONE);
         GridLayout gl = new GridLayout(1, false);
         gl.marginWidth = 2;
@@ -238,24 +239,27 @@ public final class DiagramPane {
             return;
         }
         long gen = generation.incrementAndGet();
-        String text = editor.document().get();
-        Path f = file.get();
-        View v = view;
-        String s = subject;
-        org.parpe.core.diagram.NodePlaces at = places.places();
-        var display = box.getDisplay();
-        worker.execute(() -> {
-            if (gen != generation.get()) {
+        document.whenLoaded(loaded -> {
+            if (gen != generation.get() || box.isDisposed()) {
                 return;
             }
-            Projection p = Projection.of(text, f, v, s, at);
-            if (!display.isDisposed()) {
-                display.asyncExec(() -> {
-                    if (gen == generation.get() && !box.isDisposed()) {
-                        show(p);
-                    }
-                });
-            }
+            View v = view;
+            String s = subject;
+            org.parpe.core.diagram.NodePlaces at = places.places();
+            var display = box.getDisplay();
+            worker.execute(() -> {
+                if (gen != generation.get()) {
+                    return;
+                }
+                Projection p = Projection.of(loaded, v, s, at);
+                if (!display.isDisposed()) {
+                    display.asyncExec(() -> {
+                        if (gen == generation.get() && !box.isDisposed()) {
+                            show(p);
+                        }
+                    });
+                }
+            });
         });
     }
 
@@ -578,7 +582,12 @@ public final class DiagramPane {
 
     /** The script of the open text as loaded now, or {@code null} when it does not load. */
     org.parpe.core.model.Program program() {
-        return org.parpe.gui.editor.Validator.load(file.get(), editor.document().get(), java.util.Map.of()).program();
+        return document.loaded().program();
+    }
+
+    /** The open text as loaded now. */
+    ScriptDocument.Loaded loaded() {
+        return document.loaded();
     }
 
     /** Opens the trace {@code csv} for scrubbing through the views (as Trace… does). */

@@ -1,9 +1,7 @@
 package org.parpe.gui.diagram;
 
-import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
-import java.util.Map;
 import java.util.function.Function;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Button;
@@ -13,12 +11,11 @@ import org.parpe.core.diagram.BehaviorEdits;
 import org.parpe.core.diagram.PaletteEdits;
 import org.parpe.core.edit.SectionEdits;
 import org.parpe.core.edit.TextEdit;
-import org.parpe.core.load.LoadResult;
 import org.parpe.core.model.Program;
 import org.parpe.gui.diagram.Projection.Action;
 import org.parpe.gui.diagram.Projection.Target;
 import org.parpe.gui.diagram.Projection.View;
-import org.parpe.gui.editor.Validator;
+import org.parpe.gui.editor.ScriptDocument;
 import org.parpe.gui.text.PanelMsg;
 
 /**
@@ -121,8 +118,7 @@ final class Palette {
             return java.util.Collections.nCopies(item.inputs().size(), "");
         }
         Projection shown = pane.shown();
-        Program p = shown == null || SectionEdits.blank(shown.text()) ? null
-                : Validator.load(shown.file(), shown.text(), Map.of()).program();
+        Program p = shown == null || SectionEdits.blank(shown.text()) ? null : pane.program();
         int modules = p == null || p.moduleIds().length == 0 ? 4 : p.moduleIds().length;
         return List.of("", "4", Integer.toString(modules), "");
     }
@@ -166,11 +162,10 @@ final class Palette {
         if (SectionEdits.blank(shown.text())) {
             throw new IllegalArgumentException(PanelMsg.PALETTE_FILE_EMPTY.text(Projection.START.text()));
         }
-        Path f = shown.file();
-        LoadResult r = Validator.load(f, shown.text(), Map.of());
-        if (r.program() == null) {
+        ScriptDocument.Loaded now = pane.loaded();
+        if (now.program() == null) {
             throw new IllegalArgumentException(PanelMsg.PALETTE_DOES_NOT_LOAD.text());
         }
-        return new Loaded(shown.text(), r.program());
+        return new Loaded(now.text(), now.program());
     }
 }

@@ -34,7 +34,7 @@ import org.parpe.core.model.Instance;
 import org.parpe.core.model.Program;
 import org.parpe.core.run.RunOptions;
 import org.parpe.core.run.ScriptRuntimeError;
-import org.parpe.gui.editor.Validator;
+import org.parpe.gui.editor.ScriptDocument;
 import org.parpe.gui.text.PanelMsg;
 
 /**
@@ -199,17 +199,14 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         TextEdit at(String name, double y, SourcePos on);
     }
 
-    /** Loads {@code text} as {@code file} and projects view {@code view} on {@code subject} (null: the default). */
-    static Projection of(String text, Path file, View view, String subject) {
-        return of(text, file, view, subject, NodePlaces.NONE);
-    }
-
-    /** As {@link #of(String, Path, View, String)}, free nodes at {@code places}. */
-    static Projection of(String text, Path file, View view, String subject, NodePlaces places) {
+    /** Projects view {@code view} of the text {@code loaded} on {@code subject} (null: the default), free nodes at {@code places}. */
+    static Projection of(ScriptDocument.Loaded loaded, View view, String subject, NodePlaces places) {
+        String text = loaded.text();
+        Path file = loaded.file();
         if (SectionEdits.blank(text)) {
             return start(text, file, view);
         }
-        LoadResult r = Validator.load(file, text, Map.of());
+        LoadResult r = loaded.result();
         Program p = r.program();
         if (p == null) {
             String first = r.diagnostics().stream().filter(d -> d.severity() == Severity.ERROR).findFirst()

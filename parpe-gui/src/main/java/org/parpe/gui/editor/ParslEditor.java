@@ -172,7 +172,7 @@ public final class ParslEditor {
 
     /**
      * The names {@code text} defines, for completion: scanned now and joined with the names of
-     * the last program the {@link Validator} loaded (which knows the included files' names), or
+     * the last program the {@link ScriptDocument} loaded (which knows the included files' names), or
      * for a text over {@link #COLOUR_LIMIT} (a scan takes about a second at 10 MB) only the
      * latter.
      */
@@ -181,7 +181,7 @@ public final class ParslEditor {
     }
 
     /**
-     * Keeps the names found off the UI thread by the {@link Validator}: those of the program
+     * Keeps the names found off the UI thread by the {@link ScriptDocument}: those of the program
      * it loaded, or for a large text that did not load, those of a scan.
      */
     public void setNames(NameIndex names) {

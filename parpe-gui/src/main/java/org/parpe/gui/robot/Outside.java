@@ -13,7 +13,7 @@ import org.parpe.core.io.AtomicFiles;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.model.Program;
 import org.parpe.core.xml.InputFiles;
-import org.parpe.gui.editor.Validator;
+import org.parpe.gui.editor.ScriptDocument;
 import org.parpe.gui.panels.FileDialogs;
 import org.parpe.gui.text.PanelMsg;
 import org.parpe.sim.config.Kit;
@@ -149,7 +149,7 @@ public final class Outside {
             return null;
         }
         try {
-            LoadResult r = Validator.load(p, InputFiles.readText(p), Map.of());
+            LoadResult r = ScriptDocument.load(p, InputFiles.readText(p), Map.of());
             if (r.program() == null) {
                 say.accept(r.diagnostics().isEmpty() ? PanelMsg.ROBOT_SCRIPT_DOES_NOT_LOAD.text() : r.diagnostics().get(0).format());
             }

@@ -1,12 +1,10 @@
 package org.parpe.gui.sweep;
 
-import java.nio.file.Path;
 import java.util.Map;
 import org.eclipse.jface.text.BadLocationException;
-import org.eclipse.jface.text.IDocument;
 import org.eclipse.jface.text.IRewriteTarget;
 import org.parpe.core.load.LoadResult;
-import org.parpe.core.load.ScriptLoader;
+import org.parpe.gui.editor.ScriptDocument;
 import org.parpe.core.model.Parameter;
 import org.parpe.gui.editor.ParslEditor;
 import org.parpe.gui.text.PanelMsg;
@@ -25,17 +23,16 @@ final class ApplyBest {
     }
 
     /**
-     * Writes {@code values} into {@code editor}'s text (loaded as {@code file}); returns a line
+     * Writes {@code values} into {@code editor}'s text ({@code loaded}, as it is now); returns a line
      * saying what changed. Throws with one line when the script does not load, a parameter is
      * gone or a value is outside its bounds now.
      */
-    static String apply(ParslEditor editor, Path file, Map<String, Double> values) throws SweepException {
+    static String apply(ParslEditor editor, ScriptDocument.Loaded loaded, Map<String, Double> values) throws SweepException {
         if (values.isEmpty()) {
             throw new SweepException(PanelMsg.SWEEP_NO_RESULT.text());
         }
-        IDocument doc = editor.document();
-        String text = doc.get();
-        LoadResult r = ScriptLoader.loadText(file, text, Map.of());
+        String text = loaded.text();
+        LoadResult r = loaded.result();
         if (r.program() == null) {
             throw new SweepException(PanelMsg.SWEEP_SCRIPT_HAS_ERRORS.text());
         }
@@ -47,7 +44,7 @@ final class ApplyBest {
                 throw new SweepException(PanelMsg.SWEEP_BOUNDS_CHANGED.text(problem));
             }
         }
-        String out = ParameterDefaults.rewrite(file, text, r.program().parameters(), values);
+        String out = ParameterDefaults.rewrite(loaded.file(), text, r.program().parameters(), values);
         replaceChanged(editor, text, out);
         return Results.describe(values);
     }

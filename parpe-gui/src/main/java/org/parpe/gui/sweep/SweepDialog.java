@@ -3,7 +3,6 @@ package org.parpe.gui.sweep;
 import org.parpe.gui.panels.RobotChoice;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.Map;
 import org.eclipse.jface.text.DocumentEvent;
 import org.eclipse.jface.text.IDocumentListener;
 import org.eclipse.swt.SWT;
@@ -18,7 +17,7 @@ import org.eclipse.swt.widgets.TabFolder;
 import org.eclipse.swt.widgets.TabItem;
 import org.parpe.core.io.OutputPlan;
 import org.parpe.core.load.LoadResult;
-import org.parpe.core.load.ScriptLoader;
+import org.parpe.gui.editor.ScriptDocument;
 import org.parpe.core.model.Parameter;
 import org.parpe.gui.text.PanelMsg;
 import org.parpe.sim.sweep.SweepRow;
@@ -174,9 +173,10 @@ public final class SweepDialog {
     /** Reads the editor's script and shows its parameters; returns its parameters, or null when it does not load. */
     private List<Parameter> reload() {
         edited = false;
-        Path file = host.script().get();
+        ScriptDocument.Loaded loaded = host.document().loaded();
+        Path file = loaded.file();
         shell.setText(PanelMsg.SWEEP_TITLE.text(file.getFileName()));
-        LoadResult r = ScriptLoader.loadText(file, host.editor().document().get(), Map.of());
+        LoadResult r = loaded.result();
         if (r.program() == null) {
             String first = r.errors().isEmpty() ? PanelMsg.SWEEP_DOES_NOT_LOAD.text(file) : r.errors().get(0).format();
             error(r.errors().size() > 1 ? PanelMsg.SWEEP_AND_MORE.text(first, r.errors().size() - 1) : first);
@@ -199,7 +199,7 @@ public final class SweepDialog {
             return;
         }
         try {
-            StartRequest req = new StartRequest(host.script().get(), host.editor().document().get(), settings.robot().robot(),
+            StartRequest req = new StartRequest(host.document().file(), host.document().text(), settings.robot().robot(),
                     settings.world().world(), settings.duration(), settings.jobs(), settings.objective());
             boolean sweeping = tabs.getSelectionIndex() == 0;
             SweepRunner.Events events = new Events(++generation);
@@ -327,13 +327,13 @@ public final class SweepDialog {
         if (results == null) {
             return;
         }
-        Path now = host.script().get();
+        Path now = host.document().file();
         if (!now.equals(results.script())) {
             error(PanelMsg.SWEEP_OTHER_SCRIPT.text(results.script().getFileName(), now.getFileName()));
             return;
         }
         try {
-            String what = ApplyBest.apply(host.editor(), now, results.bestValues());
+            String what = ApplyBest.apply(host.editor(), host.document().loaded(), results.bestValues());
             info(PanelMsg.SWEEP_APPLIED.text(what));
         } catch (org.parpe.sim.sweep.SweepException e) {
             error(e.getMessage());
@@ -341,7 +341,7 @@ public final class SweepDialog {
     }
 
     private void saveCsv() {
-        String name = host.script().get().getFileName().toString().replaceFirst("\\.xml$", "");
+        String name = host.document().file().getFileName().toString().replaceFirst("\\.xml$", "");
         Path p = org.parpe.gui.panels.FileDialogs.ask(shell, SWT.SAVE, PanelMsg.SWEEP_SAVE_CSV_TITLE.text(), "*.csv",
                 name + (results.mode() == Results.Mode.SWEEP ? "-sweep.csv" : "-optimise.csv"), null);
         if (p != null) {
@@ -351,7 +351,7 @@ public final class SweepDialog {
 
     /** Writes the rows to {@code file} off the UI thread and says when it is done. */
     void saveCsv(Path file) {
-        if (OutputPlan.sameFile(host.script().get(), file)) {
+        if (OutputPlan.sameFile(host.document().file(), file)) {
             error(PanelMsg.SWEEP_SAVE_OVER_SCRIPT.text(file.getFileName()));
             return;
         }

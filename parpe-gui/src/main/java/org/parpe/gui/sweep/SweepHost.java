@@ -7,17 +7,18 @@ import java.util.function.Supplier;
 import org.eclipse.swt.widgets.Shell;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.gui.editor.ParslEditor;
+import org.parpe.gui.editor.ScriptDocument;
 
 /**
  * What the Sweep/Optimise dialog needs from the IDE window.
  *
  * @param shell    the window the dialog belongs to
  * @param editor   the editor whose text is swept and into which the best values are written
- * @param script   the path the editor's text is loaded as (includes are found next to it)
+ * @param document the editor's text, loaded (as its file: includes are found next to it)
  * @param robot    the robot the IDE's runs use: {@code auto}, a generator, or a configuration file
  * @param world    the world file the IDE's runs use, or null for the flat floor (read when the dialog opens)
  * @param problems shows diagnostics that have a place in the Problems view (UI thread or any)
  */
-public record SweepHost(Shell shell, ParslEditor editor, Supplier<Path> script, Supplier<String> robot,
+public record SweepHost(Shell shell, ParslEditor editor, ScriptDocument document, Supplier<String> robot,
                         Supplier<Path> world, Consumer<List<Diagnostic>> problems) {
 }

@@ -8,7 +8,7 @@ import org.eclipse.swt.SWTException;
 import org.eclipse.swt.widgets.Display;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.load.LoadResult;
-import org.parpe.core.load.ScriptLoader;
+import org.parpe.gui.editor.ScriptDocument;
 import org.parpe.core.run.TargetException;
 import org.parpe.gui.run.CrashLog;
 import org.parpe.gui.text.PanelMsg;
@@ -118,7 +118,7 @@ final class SweepRunner {
      * {@link Evaluator#load} then refuses to start with the first of them as its message.
      */
     private void checkRobot(Evaluator.Settings s) {
-        LoadResult loaded = ScriptLoader.loadText(s.script(), s.text(), s.fixed());
+        LoadResult loaded = ScriptDocument.load(s.script(), s.text(), s.fixed());
         if (loaded.program() == null) {
             return;
         }

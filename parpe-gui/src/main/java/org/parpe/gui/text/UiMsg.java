@@ -441,7 +441,7 @@ public enum UiMsg implements Key {
     CLASS_CANNOT_REPLAY,
     CLASS_REPLAY_OF,
 
-    // the editor (FindReplaceDialog, ParslAssistProcessor, ParslEditor, Validator)
+    // the editor (FindReplaceDialog, ParslAssistProcessor, ParslEditor, ScriptDocument)
     FIND_TITLE,
     FIND_FIND,
     FIND_REPLACE_WITH,

@@ -108,7 +108,7 @@ class DiskChangeGuiTest {
         Path script = openScript();
         String text = Files.readString(script);
         Path link = Files.createSymbolicLink(dir.resolve("link.xml"), script);
-        HardwareDialog d = HardwareDialog.open(ide);
+        HardwareDialog d = HardwareDialog.open(ide.hardware());
         try {
             for (Path over : List.of(script, link)) {
                 d.saveProfile(over);

@@ -106,8 +106,8 @@ class HardwareDialogGuiTest {
             // Posing by hand with the dialog open: the Pose panel is shown.
             ide.showPosePanel();
             Gui.settle();
-            HardwareDialog d = HardwareDialog.open(ide);
-            assertTrue(d == HardwareDialog.open(ide), "a second Run > Hardware… brings the same dialog");
+            HardwareDialog d = HardwareDialog.open(ide.hardware());
+            assertTrue(d == HardwareDialog.open(ide.hardware()), "a second Run > Hardware… brings the same dialog");
             d.widgets().port().setText(pty.a().toString());
             // Scan tries every protocol and rate; a pty ignores the rate, so Dynamixel's factory 57 600 answers.
             click(d, "Scan");
@@ -220,14 +220,14 @@ class HardwareDialogGuiTest {
             Gui.pump(() -> d.shell().isDisposed(), "the dialog to close");
             // It used to stay on "Robot (limp)" with nothing connected.
             assertFalse(ide.pose().posingTheRobot(), "the Pose panel no longer poses a robot that is gone");
-            assertTrue(ide.hardwareDialog().session().awaitClosed(5000), "the bus thread ends");
+            assertTrue(ide.hardware().hardwareDialog().session().awaitClosed(5000), "the bus thread ends");
             Gui.pump(() -> !ide.status().hardware().contains("connected ("), "the status bar to drop the dialog's bus");
         }
     }
 
     @Test
     void aMissingPortIsSaidInWords() {
-        HardwareDialog d = HardwareDialog.open(ide);
+        HardwareDialog d = HardwareDialog.open(ide.hardware());
         d.widgets().port().setText(dir.resolve("no-such-port").toString());
         d.widgets().protocol().select(d.widgets().protocol().indexOf("sts"));
         d.widgets().baud().setText("1000000");

@@ -118,7 +118,7 @@ public final class IdeAccess {
      * user would, and waits until {@code servos} servos are listed.
      */
     public static void connectHardware(IdeWindow ide, String port, String protocol, int baud, int servos) {
-        HardwareDialog d = HardwareDialog.open(ide);
+        HardwareDialog d = HardwareDialog.open(ide.hardware());
         d.widgets().port().setText(port);
         d.widgets().protocol().select(d.widgets().protocol().indexOf(protocol));
         d.widgets().baud().setText(Integer.toString(baud));
@@ -143,7 +143,7 @@ public final class IdeAccess {
 
     /** Closes the Hardware dialog (and its bus) and waits until the bus is closed. */
     public static void closeHardware(IdeWindow ide) throws InterruptedException {
-        HardwareDialog d = ide.hardwareDialog();
+        HardwareDialog d = ide.hardware().hardwareDialog();
         if (d != null && !d.shell().isDisposed()) {
             d.shell().close();
             Gui.pump(() -> d.shell().isDisposed(), "the Hardware dialog to close");

@@ -48,7 +48,7 @@ final class LanguageProbe {
                 + "|" + IDialogConstants.NO_LABEL);
         d.close();
         // the biggest dialog of the window's own, beside the main window's picture
-        org.parpe.gui.hardware.HardwareDialog hardware = org.parpe.gui.hardware.HardwareDialog.open(ide);
+        org.parpe.gui.hardware.HardwareDialog hardware = org.parpe.gui.hardware.HardwareDialog.open(ide.hardware());
         Gui.settle();
         Gui.settle();
         Screenshot.save(hardware.shell(), Path.of(args[1].replace(".png", "-hardware.png")));

@@ -82,7 +82,7 @@ class PanelsInLanguageGuiTest {
             has(texts(ide.robotTab().control()), want.get(2), "the Robot tab");
             Gui.screenshot(ide.shell(), "panels-" + language + "-robot-1366x768.png");
 
-            sweep = SweepDialog.open(new SweepHost(ide.shell(), ide.editor(), ide.files()::pathForLoading, ide::robotChoice,
+            sweep = SweepDialog.open(new SweepHost(ide.shell(), ide.editor(), ide.document(), ide::robotChoice,
                     () -> shown.viewBar().world().file(), ide::showRunDiagnostics));
             Gui.settle();
             has(texts(sweep.shell()), want.get(3), "the sweep dialog");

@@ -56,7 +56,7 @@ class ScoreAfterRunGuiTest {
         assertTrue(status.matches("Score \\d+\\.\\d \\(.+\\).*"), "the status bar starts with the score and its parts: " + status);
 
         StyledText log = ide.runLog();
-        assertTrue(ide.runLogInFront(), "the Run log is in front after a run with a score");
+        assertTrue(ide.bottom().runLogInFront(), "the Run log is in front after a run with a score");
         assertTrue(log.getWordWrap(), "the Run log wraps: nobody scrolls sideways for the score");
         assertTrue(log.getHorizontalBar() == null || !log.getHorizontalBar().isVisible(), "no sideways scroll bar");
         String last = log.getLine(log.getLineCount() - 2); // the text ends with a line break

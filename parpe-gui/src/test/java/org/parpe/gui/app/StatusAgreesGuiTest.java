@@ -51,11 +51,11 @@ class StatusAgreesGuiTest {
         assertTrue(ide.status().message().startsWith("1 error, 1 warning: see Problems"), ide.status().message());
         // Put the Run log in front, as after an earlier run, then press Run: it is refused and Problems comes forward.
         ((org.eclipse.swt.custom.CTabFolder) ide.problems().control().getParent()).setSelection(1);
-        assertFalse(ide.problemsInFront());
+        assertFalse(ide.bottom().problemsInFront());
         AtomicReference<RunOutcome> refused = new AtomicReference<>();
         ide.runs().run(false, 1, refused::set);
         assertEquals(RunOutcome.Status.ERROR, refused.get().status());
-        assertTrue(ide.problemsInFront(), "a refused Run brings Problems forward");
+        assertTrue(ide.bottom().problemsInFront(), "a refused Run brings Problems forward");
         assertTrue(ide.status().message().startsWith("Cannot run: fix the 1 error(s)"), ide.status().message());
         assertEquals("\u2716 1  \u26a0 1", ide.status().problems(), "the last run's warning stays until the next run");
         assertTrue(ProblemsView.location(new SourcePos("/home/anna/snake.xml", 3, 4)).equals("snake.xml:3:4"));

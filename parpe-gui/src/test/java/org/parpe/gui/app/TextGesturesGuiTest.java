@@ -78,7 +78,7 @@ class TextGesturesGuiTest {
 
     @Test
     void theRunLogSelectsByMouseAndItsSelectionPastesIntoTheEditor() {
-        ide.log("servo 7 answered");
+        ide.bottom().log("servo 7 answered");
         StyledText log = ide.runLog();
         CTabFolder tabs = (CTabFolder) log.getParent();
         for (CTabItem item : tabs.getItems()) {

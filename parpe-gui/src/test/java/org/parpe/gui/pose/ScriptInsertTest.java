@@ -12,7 +12,7 @@ import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.model.Program;
-import org.parpe.gui.editor.Validator;
+import org.parpe.gui.editor.ScriptDocument;
 import org.parpe.serial.record.PoseRecording;
 
 class ScriptInsertTest {
@@ -36,7 +36,7 @@ class ScriptInsertTest {
             """;
 
     static Program load(String text) {
-        LoadResult r = Validator.load(Path.of("legs.xml"), text, Map.of());
+        LoadResult r = ScriptDocument.load(Path.of("legs.xml"), text, Map.of());
         assertNotNull(r.program(), "does not load: " + r.diagnostics() + "\n" + text);
         assertTrue(r.errors().isEmpty(), r.errors() + "\n" + text);
         return r.program();

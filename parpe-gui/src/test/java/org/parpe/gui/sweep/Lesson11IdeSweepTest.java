@@ -15,6 +15,7 @@ import org.eclipse.swt.widgets.Shell;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.parpe.gui.editor.ParslEditor;
+import org.parpe.gui.editor.ScriptDocument;
 import org.parpe.sim.sweep.SweepRow;
 
 /**
@@ -49,7 +50,7 @@ class Lesson11IdeSweepTest {
         ParslEditor editor = new ParslEditor(window);
         editor.setText(Files.readString(file));
         window.open();
-        dialog = SweepDialog.open(new SweepHost(window, editor, () -> file, () -> "auto", () -> null, d -> { }));
+        dialog = SweepDialog.open(new SweepHost(window, editor, new ScriptDocument(window.getDisplay(), editor.document(), () -> file), () -> "auto", () -> null, d -> { }));
         dialog.setJobs(2);
         dialog.setDuration("30");
         Ui.vary(dialog, "bend", "10", "70", 7);

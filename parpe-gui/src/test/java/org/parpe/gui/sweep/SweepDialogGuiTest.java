@@ -22,6 +22,7 @@ import org.junit.jupiter.api.Test;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.lang.Numbers;
 import org.parpe.gui.editor.ParslEditor;
+import org.parpe.gui.editor.ScriptDocument;
 import org.parpe.sim.sweep.Cancellation;
 import org.parpe.sim.sweep.Constraints;
 import org.parpe.sim.sweep.Evaluation;
@@ -51,6 +52,7 @@ class SweepDialogGuiTest {
     private Shell window;
     private ParslEditor editor;
     private Path file;
+    private ScriptDocument document;
     /** The path the "IDE" says its editor holds. */
     private Path shown;
     private String original;
@@ -70,7 +72,8 @@ class SweepDialogGuiTest {
         editor.setText(original);
         window.open();
         shown = file;
-        dialog = SweepDialog.open(new SweepHost(window, editor, () -> shown, () -> "auto", () -> null, problems::addAll));
+        document = new ScriptDocument(window.getDisplay(), editor.document(), () -> shown);
+        dialog = SweepDialog.open(new SweepHost(window, editor, document, () -> "auto", () -> null, problems::addAll));
         dialog.setJobs(2);
     }
 
@@ -190,6 +193,7 @@ class SweepDialogGuiTest {
         assertTrue(dialog.message().startsWith("these results are of 07-parameters-snake.xml, but the editor holds another.xml"),
                 dialog.message());
         shown = file;
+        document = new ScriptDocument(window.getDisplay(), editor.document(), () -> shown);
         Ui.click(dialog.applyButton());
         String text = editor.document().get();
         assertNotEquals(original, text);
@@ -247,18 +251,23 @@ class SweepDialogGuiTest {
         assertTrue(expected.stream().anyMatch(r -> r.values().get("period") != Math.rint(r.values().get("period"))));
     }
 
+    /** The editor's text as the dialog reads it now. */
+    private ScriptDocument.Loaded loaded() {
+        return document.loaded();
+    }
+
     @Test
     void applyBestRefusesValuesThatNoLongerFitTheScript() {
         org.parpe.sim.sweep.SweepException gone = org.junit.jupiter.api.Assertions.assertThrows(
-                org.parpe.sim.sweep.SweepException.class, () -> ApplyBest.apply(editor, file, Map.of("stride", 3.0)));
+                org.parpe.sim.sweep.SweepException.class, () -> ApplyBest.apply(editor, loaded(), Map.of("stride", 3.0)));
         assertEquals("parameter 'stride' is no longer in the script", gone.getMessage());
         editor.document().set(original.replace("value=\"35\"  min=\"0\"   max=\"60\"", "value=\"25\"  min=\"0\"   max=\"30\""));
         org.parpe.sim.sweep.SweepException narrowed = org.junit.jupiter.api.Assertions.assertThrows(
-                org.parpe.sim.sweep.SweepException.class, () -> ApplyBest.apply(editor, file, Map.of("amp", 40.0)));
+                org.parpe.sim.sweep.SweepException.class, () -> ApplyBest.apply(editor, loaded(), Map.of("amp", 40.0)));
         assertEquals("parameter 'amp' must be <= 30, got 40 (the script's bounds changed since the run)", narrowed.getMessage());
         editor.document().set(original.replace("<main>", "<main"));
         org.parpe.sim.sweep.SweepException broken = org.junit.jupiter.api.Assertions.assertThrows(
-                org.parpe.sim.sweep.SweepException.class, () -> ApplyBest.apply(editor, file, Map.of("amp", 40.0)));
+                org.parpe.sim.sweep.SweepException.class, () -> ApplyBest.apply(editor, loaded(), Map.of("amp", 40.0)));
         assertTrue(broken.getMessage().startsWith("the script has errors now"), broken.getMessage());
         assertEquals(original.replace("<main>", "<main"), editor.document().get(), "nothing was written");
     }
