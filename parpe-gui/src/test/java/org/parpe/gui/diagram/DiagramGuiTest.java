@@ -265,8 +265,8 @@ class DiagramGuiTest {
      */
     private static void live(View view, String subject) throws Exception {
         show(view, subject);
-        DiagramWindow.tenFrames(ide, () -> pane().liveCounts() != null, tick -> {
-            int[] counts = pane().liveCounts();
+        DiagramWindow.tenFrames(ide, () -> pane().live().counts() != null, tick -> {
+            int[] counts = pane().live().counts();
             // The same program's engine, run headless to that tick: which state is each leg's lift in?
             org.parpe.core.run.Engine e = new org.parpe.core.run.Engine(ide.program(), org.parpe.core.run.RunOptions.defaults());
             e.start();
