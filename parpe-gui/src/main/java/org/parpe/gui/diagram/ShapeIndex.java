@@ -68,9 +68,11 @@ final class ShapeIndex {
             }
         }
         Scene.Rect[] bars = new Scene.Rect[n];
+        // the lanes stand each bar for its instance's own element, which no other shape stands for
         for (Scene.Shape shape : scene.shapes()) {
-            if (shape instanceof Scene.Rect r && r.source() != null && barOf.containsKey(r.source()) && bars[barOf.get(r.source())] == null) {
-                bars[barOf.get(r.source())] = r;
+            Integer i = shape instanceof Scene.Rect r && r.source() != null ? barOf.get(r.source()) : null;
+            if (i != null && bars[i] == null) {
+                bars[i] = (Scene.Rect) shape;
             }
         }
         return new ShapeIndex(List.of(), new boolean[0][], bars, new int[0][][], null);
