@@ -249,9 +249,9 @@ public final class DiagramPane {
         showFields();
     }
 
-    /** Text {@code angles} was dropped at canvas pixel {@code x, y}: the state there takes them as its angles. */
-    void dropPose(int x, int y, String angles) {
-        drags.dropPose(x, y, angles);
+    /** The drags on the drawing (a dragged hand's preview, poses dropped, for tests). */
+    CanvasDrags drags() {
+        return drags;
     }
 
     /** Opens a gait table the pane has just written with {@code show} (the grid editor's, by table name). */
@@ -290,14 +290,9 @@ public final class DiagramPane {
         return freeNodes.places().places();
     }
 
-    /** Where on the canvas the middle of free node {@code name} is drawn, or {@code null}. */
-    public Point whereFree(String name) {
-        return freeNodes.where(name);
-    }
-
-    /** Where free node {@code name} is on its workbench ({@code x, y}), or {@code null} when it is not drawn. */
-    public double[] freeAt(String name) {
-        return freeNodes.at(name);
+    /** The workbench's free nodes (where they are, for tests). */
+    FreeNodes workbench() {
+        return freeNodes;
     }
 
     /** The projection shown, or {@code null} before the first. */
@@ -329,11 +324,6 @@ public final class DiagramPane {
     /** Where on the canvas {@code node} is drawn (a click there selects it), or {@code null}. */
     public Point where(SourcePos node) {
         return canvas.centre(node);
-    }
-
-    /** Where on the canvas the phase wheel's point at fraction {@code f} of a turn is, or {@code null}. */
-    public Point onWheel(double f) {
-        return drags.onWheel(f);
     }
 
     /** The line under the view chooser: what the view cannot show or why it is empty. */
@@ -453,10 +443,5 @@ public final class DiagramPane {
     /** The live overlay (what it shows, for tests). */
     LiveOverlay live() {
         return overlay;
-    }
-
-    /** The wheel's hand and ticks drawn where the drag going on would put them (empty while none is). */
-    public List<Scene.Shape> dragPreview() {
-        return drags.preview();
     }
 }

@@ -109,7 +109,7 @@ final class LiveOverlay {
     /** Draws the live marks, the breakpoints and the wheel's dragged hand over the drawing. */
     void repaint() {
         List<Scene.Shape> all = new ArrayList<>(marks);
-        all.addAll(pane.dragPreview());
+        all.addAll(pane.drags().preview());
         Projection shown = pane.shown();
         if (shown != null && shown.ring() != null && shown.scene() != null) {
             all.addAll(bar.marks(shown.ring(), shown.index()));
