@@ -229,6 +229,20 @@ public final class Layouts {
         return new Rings(textScale).wheel(w);
     }
 
+    /**
+     * The sector of each state of {@code r}, by state index, as {@link #ring(Ring, double)} draws it
+     * at {@code textScale}: the index the IDE's live overlay marks states by.
+     */
+    public static List<Scene.Sector> ringArcs(Ring r, double textScale) {
+        Rings rings = new Rings(textScale);
+        return r.arcs().stream().map(rings::arc).toList();
+    }
+
+    /** The circle of the phase wheel, {@code {cx, cy, r}} (r: its outer edge), as {@link #wheel(PhaseWheel, double)} draws it at {@code textScale}. */
+    public static double[] wheelCircle(double textScale) {
+        return new Rings(textScale).wheelCircle();
+    }
+
     /** The size of the smallest text of {@link #ring} and {@link #wheel} at text scale 1. */
     public static final double RING_TEXT = Rings.SMALLEST;
 
@@ -309,10 +323,11 @@ public final class Layouts {
     }
 
     /**
-     * The colour index of every entry's instance's state of {@code g}, by its name's place in
-     * {@link GaitDiagram#stateNames()} (looked up once, not per segment).
+     * The colour index ({@link #stateColour}) of every entry's instance's state of {@code g}, as
+     * {@link #gait} colours them: by its name's place in {@link GaitDiagram#stateNames()} (looked
+     * up once, here, not per segment nor by the IDE's live overlay, which takes this index).
      */
-    private static int[][][] stateColours(GaitDiagram g) {
+    public static int[][][] stateColours(GaitDiagram g) {
         List<String> names = g.stateNames();
         Map<String, Integer> colourOf = new java.util.HashMap<>();
         for (int i = 0; i < names.size(); i++) {

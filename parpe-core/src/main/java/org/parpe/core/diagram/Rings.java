@@ -76,7 +76,7 @@ final class Rings {
         Scene sc = new Scene(Layouts.width((int) Math.ceil(2 * ringX), r.islands()), (int) (caption + 50 + r.islands().size() * 18));
         sc.add(new Scene.Text(20, 28 * t, (r.table() ? "gait table " : "automaton ") + r.automaton(), 15 * t, -1, INK, true));
         for (Ring.Arc a : r.arcs()) {
-            sc.add(new Scene.Sector(ringX, CY, R0, R1, a.from(), a.to(), PALETTE[a.index() % PALETTE.length], 0xffffff, a.pos()));
+            sc.add(arc(a));
             double[] e0 = Scene.onCircle(ringX, CY, R1 + 6, a.to());
             double[] e1 = Scene.onCircle(ringX, CY, R0 - 6, a.to());
             sc.add(new Scene.Line(e0[0], e0[1], e1[0], e1[1], INK, 2, 0));
@@ -95,6 +95,16 @@ final class Rings {
                 12 * t, false, 2 * ringX - 40), 12 * t, 0, GREY, false));
         Layouts.islands(sc, r.islands(), caption + 30);
         return sc;
+    }
+
+    /** The sector of state {@code a} as {@link #ring} draws it. */
+    Scene.Sector arc(Ring.Arc a) {
+        return new Scene.Sector(ringX, CY, R0, R1, a.from(), a.to(), PALETTE[a.index() % PALETTE.length], 0xffffff, a.pos());
+    }
+
+    /** The wheel's circle as {@link #wheel} draws it: its centre and outer edge's radius. */
+    double[] wheelCircle() {
+        return new double[] {CX, wheelY, R + 1};
     }
 
     private double height(List<Labels.Block> blocks) {

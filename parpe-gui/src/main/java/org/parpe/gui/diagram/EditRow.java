@@ -1,6 +1,7 @@
 package org.parpe.gui.diagram;
 
 import java.util.ArrayList;
+import java.util.Collection;
 import java.util.List;
 import java.util.function.BiConsumer;
 import java.util.function.Supplier;
@@ -126,7 +127,7 @@ final class EditRow {
         if (names == null) {
             return List.of();
         }
-        java.util.Collection<String> out = switch (name) {
+        Collection<String> out = switch (name) {
             case "group" -> Projection.START.text().equals(action) ? List.of() : names.groups();
             case "automaton" -> PanelMsg.DIAGRAM_MAKE_PHASE_AUTOMATON.text().equals(action) ? List.of() : names.automata();
             case STATES -> names.states();

@@ -32,10 +32,10 @@ final class FreeNodes {
     private Point from;
     private boolean moved;
 
-    FreeNodes(DiagramPane pane, SceneCanvas canvas, PlacesBeside places) {
+    FreeNodes(DiagramPane pane, SceneCanvas canvas) {
         this.pane = pane;
         this.canvas = canvas;
-        this.places = places;
+        this.places = new PlacesBeside(pane::say);
         canvas.control().addListener(SWT.MouseDown, this::down);
         canvas.control().addListener(SWT.MouseMove, this::move);
         canvas.control().addListener(SWT.MouseUp, this::up);
@@ -45,6 +45,23 @@ final class FreeNodes {
     Workbench.Placed node(String name) {
         Projection.Free f = free();
         return f == null ? null : f.bench().placed().stream().filter(n -> n.node().name().equals(name)).findFirst().orElse(null);
+    }
+
+    /** Where on the canvas the middle of free node {@code name} is drawn, or {@code null}. */
+    Point where(String name) {
+        Workbench.Placed n = node(name);
+        return n == null ? null : canvas.toCanvas(n.sceneX() + n.w() / 2, n.sceneY() + n.h() / 2);
+    }
+
+    /** Where free node {@code name} is on its workbench ({@code x, y}), or {@code null} when it is not drawn. */
+    double[] at(String name) {
+        Workbench.Placed n = node(name);
+        return n == null ? null : new double[] {n.x(), n.y()};
+    }
+
+    /** The places of the free nodes, kept beside the script. */
+    PlacesBeside places() {
+        return places;
     }
 
     private Projection.Free free() {
@@ -102,7 +119,7 @@ final class FreeNodes {
             } else if (!pane.current()) {
                 pane.say(PanelMsg.DIAGRAM_CHANGED.text());
             } else {
-                pane.apply(edit);
+                pane.link().apply(edit);
             }
             return;
         }

@@ -1,9 +1,7 @@
 package org.parpe.gui.diagram;
 
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
 import org.parpe.core.diagram.GaitDiagram;
 import org.parpe.core.diagram.Layouts;
 import org.parpe.core.diagram.Scene;
@@ -13,26 +11,25 @@ import org.parpe.gui.text.PanelMsg;
 /**
  * The live overlay of the gait diagram: a line at the frame's time (while it lies in the time
  * drawn) and, right of the plot, a "now" column with each module's row in the colour of the
- * state it is in at that frame (the same colours as the diagram). Made once per diagram;
+ * state it is in at that frame (the colours the layout gave it, {@link ShapeIndex}). Made once per diagram;
  * {@link #marks} is called for each frame on the UI thread.
  */
 final class GaitOverlay {
     private static final int INK = 0x222222;
 
     private final GaitDiagram gait;
+    private final ShapeIndex index;
     private final double[] plot;
-    private final List<String> names;
-    private final Map<String, Integer> colourOf = new HashMap<>();
+    private final int colours;
     private String[] labels = new String[0];
     private int[] counts = new int[0];
 
-    GaitOverlay(GaitDiagram gait) {
+    /** The overlay of {@code gait}, its states coloured as {@code index} says the layout coloured them. */
+    GaitOverlay(GaitDiagram gait, ShapeIndex index) {
         this.gait = gait;
+        this.index = index;
         this.plot = Layouts.gaitPlot(gait);
-        this.names = gait.stateNames();
-        for (int i = 0; i < names.size(); i++) {
-            colourOf.put(names.get(i), i);
-        }
+        this.colours = gait.stateNames().size();
     }
 
     /** The shapes showing frame {@code f} over the diagram; {@link #labels()} and {@link #counts()} describe it. */
@@ -44,14 +41,13 @@ final class GaitOverlay {
         int n = gait.moduleIds().length;
         List<Scene.Shape> marks = new ArrayList<>();
         labels = new String[n];
-        counts = new int[names.size()];
+        counts = new int[colours];
         double column = left + width + 6;
         marks.add(new Scene.Text(column + 7, top - 4, PanelMsg.DIAGRAM_NOW.text(), 10, 0, INK, true));
         for (int m = 0; m < n && m < f.instance().length; m++) {
-            String name = gait.stateName(f.entry(), f.instance()[m], f.state()[m]);
-            labels[m] = name;
-            Integer k = name == null ? null : colourOf.get(name);
-            if (k != null) {
+            labels[m] = gait.stateName(f.entry(), f.instance()[m], f.state()[m]);
+            int k = index.colour(f.entry(), f.instance()[m], f.state()[m]);
+            if (k >= 0) {
                 counts[k]++;
                 marks.add(new Scene.Rect(column, top + m * rowH, 14, rowH, Layouts.stateColour(k), Scene.NONE, 0, null));
             }

@@ -253,32 +253,28 @@ final class LiveBar {
         pane.showFrame(null, null);
     }
 
-    /** The breakpoints drawn on ring {@code r}: a red dot at each state's start, a red ring while it is hit. */
-    List<Scene.Shape> marks(Ring r, Scene scene) {
+    /** The breakpoints drawn on ring {@code r}, its arcs as {@code index} has them: a red dot at each state's start, a red ring while it is hit. */
+    List<Scene.Shape> marks(Ring r, ShapeIndex index) {
         List<Scene.Shape> marks = new ArrayList<>();
         if (breakpoints == null || r == null) {
             return marks;
         }
-        for (Scene.Shape s : scene.shapes()) {
-            if (!(s instanceof Scene.Sector c) || c.source() == null) {
+        for (Ring.Arc a : r.arcs()) {
+            Scene.Sector c = index.arc(a.index());
+            if (c == null) {
                 continue;
             }
-            for (Ring.Arc a : r.arcs()) {
-                if (!c.source().equals(a.pos())) {
-                    continue;
+            for (Breakpoints.Kind kind : Breakpoints.Kind.values()) {
+                Breakpoints.Point pt = new Breakpoints.Point(r.automaton(), a.index(), kind);
+                if (breakpoints.has(pt)) {
+                    // entering: at the arc's start; exit: at its end, where the edge leaves it
+                    double[] at = Scene.onCircle(c.cx(), c.cy(), c.r1() + 18, kind == Breakpoints.Kind.ENTER
+                            ? c.from() + 0.01 : c.to() - 0.01);
+                    marks.add(new Scene.Sector(at[0], at[1], 0, 7, 0, 1, RED, 0xffffff, null));
                 }
-                for (Breakpoints.Kind kind : Breakpoints.Kind.values()) {
-                    Breakpoints.Point pt = new Breakpoints.Point(r.automaton(), a.index(), kind);
-                    if (breakpoints.has(pt)) {
-                        // entering: at the arc's start; exit: at its end, where the edge leaves it
-                        double[] at = Scene.onCircle(c.cx(), c.cy(), c.r1() + 18, kind == Breakpoints.Kind.ENTER
-                                ? c.from() + 0.01 : c.to() - 0.01);
-                        marks.add(new Scene.Sector(at[0], at[1], 0, 7, 0, 1, RED, 0xffffff, null));
-                    }
-                    if (shownHit != null && shownHit.point().equals(pt)) {
-                        marks.add(new Scene.Sector(c.cx(), c.cy(), c.r1() + 10, c.r1() + 13, c.from(), c.to(), RED,
-                                Scene.NONE, null));
-                    }
+                if (shownHit != null && shownHit.point().equals(pt)) {
+                    marks.add(new Scene.Sector(c.cx(), c.cy(), c.r1() + 10, c.r1() + 13, c.from(), c.to(), RED,
+                            Scene.NONE, null));
                 }
             }
         }

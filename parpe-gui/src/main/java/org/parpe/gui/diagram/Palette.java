@@ -105,7 +105,7 @@ final class Palette {
                 pane.offer(new Target(PanelMsg.PALETTE_NEW_TITLE.text(item.noun().text(), item.tip().text()), List.of(), -1, null,
                         List.of(new Action(item.add().text(), item.inputs(), starting(item), v -> {
                             TextEdit edit = item.edit().apply(load()).apply(v);
-                            pane.whenWritten(() -> added(item, v.get(0)));
+                            pane.link().whenWritten(() -> added(item, v.get(0)));
                             return edit;
                         }))));
             }
@@ -126,7 +126,7 @@ final class Palette {
     /** {@code item} named {@code name} was written: the view that draws it shows it, or the line says where it went. */
     private void added(Item item, String name) {
         if (item.name() == PanelMsg.PALETTE_GAIT_TABLE) {
-            pane.openTable(name.trim());
+            pane.link().openTable(name.trim());
         }
         if (item.shows() != null) {
             pane.showAdded(item.shows(), name.trim());

@@ -8,6 +8,7 @@ import java.nio.file.Path;
 import java.util.Collection;
 import java.util.function.Consumer;
 import org.parpe.core.diagram.NodePlaces;
+import org.parpe.core.io.IoReasons;
 import org.parpe.core.io.AtomicFiles;
 import org.parpe.gui.text.PanelMsg;
 
@@ -147,7 +148,7 @@ final class PlacesBeside {
             return NodePlaces.parse(file.toString(), new String(Files.readAllBytes(file), StandardCharsets.UTF_8));
         } catch (IOException | RuntimeException e) {
             return new NodePlaces.Read(NodePlaces.NONE, false,
-                    PanelMsg.DIAGRAM_CANNOT_READ_LAYOUT.text(file, org.parpe.core.io.IoReasons.of(e)));
+                    PanelMsg.DIAGRAM_CANNOT_READ_LAYOUT.text(file, IoReasons.of(e)));
         }
     }
 }

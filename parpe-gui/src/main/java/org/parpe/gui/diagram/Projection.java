@@ -2,10 +2,12 @@ package org.parpe.gui.diagram;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.function.Function;
+import java.util.function.IntFunction;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.Severity;
 import org.parpe.core.diag.SourcePos;
@@ -53,45 +55,45 @@ import org.parpe.gui.text.PanelMsg;
  * @param message  why there is no drawing, or what the drawing leaves out; empty if nothing
  * @param wheel    the phase wheel drawn (its handle can be dragged), or {@code null}
  * @param ring     the ring drawn (the live overlay marks its states), or {@code null}
- * @param automata per {@code <main>} entry, the automaton of each instance of its behavior in
- *                 document order (how the engine numbers them), for the live overlay
+ * @param index    the shapes of the drawing the live overlay marks, by the engine's indices
  * @param lanes    the swimlanes drawn (the live overlay marks the bars driving modules), or {@code null}
  * @param gait     the gait diagram drawn (the live overlay marks the time and each module's state now), or {@code null}
  * @param free     the workbench of free nodes under the drawing ({@link FreeNodes}), or {@code null}
  */
 record Projection(String text, Path file, View view, List<String> subjects, String subject, Scene scene,
                   Map<SourcePos, Target> targets, String message, PhaseWheel wheel, Ring ring,
-                  List<List<String>> automata, Swimlanes lanes, GaitDiagram gait, Free free) {
+                  ShapeIndex index, Swimlanes lanes, GaitDiagram gait, Free free) {
 
     /** A projection without a workbench. */
     Projection(String text, Path file, View view, List<String> subjects, String subject, Scene scene,
                Map<SourcePos, Target> targets, String message, PhaseWheel wheel, Ring ring,
-               List<List<String>> automata, Swimlanes lanes, GaitDiagram gait) {
-        this(text, file, view, subjects, subject, scene, targets, message, wheel, ring, automata, lanes, gait, null);
+               ShapeIndex index, Swimlanes lanes, GaitDiagram gait) {
+        this(text, file, view, subjects, subject, scene, targets, message, wheel, ring, index, lanes, gait, null);
     }
 
     /** A projection without a gait diagram. */
     Projection(String text, Path file, View view, List<String> subjects, String subject, Scene scene,
                Map<SourcePos, Target> targets, String message, PhaseWheel wheel, Ring ring,
-               List<List<String>> automata, Swimlanes lanes) {
-        this(text, file, view, subjects, subject, scene, targets, message, wheel, ring, automata, lanes, null);
+               ShapeIndex index, Swimlanes lanes) {
+        this(text, file, view, subjects, subject, scene, targets, message, wheel, ring, index, lanes, null);
     }
 
     /** A projection without a wheel or ring. */
     Projection(String text, Path file, View view, List<String> subjects, String subject, Scene scene,
                Map<SourcePos, Target> targets, String message) {
-        this(text, file, view, subjects, subject, scene, targets, message, null, null, List.of(), null);
+        this(text, file, view, subjects, subject, scene, targets, message, null, null, ShapeIndex.NONE, null);
     }
 
     /**
      * This projection with its ring or wheel laid out again with text {@code textScale} times as
-     * large ({@link Layouts#ring(Ring, double)}); the drawings of the other views stay as they are.
+     * large ({@link Layouts#ring(Ring, double)}), and its index with it; the drawings of the other
+     * views stay as they are.
      */
     Projection withTextScale(double textScale) {
         Scene s = ring != null ? Layouts.ring(ring, textScale) : wheel != null && scene != null ? Layouts.wheel(wheel, textScale)
                 : scene;
-        return s == scene ? this : new Projection(text, file, view, subjects, subject, s, targets, message, wheel, ring, automata,
-                lanes, gait, free);
+        return s == scene ? this : new Projection(text, file, view, subjects, subject, s, targets, message, wheel, ring,
+                index.laidOut(ring, wheel, textScale), lanes, gait, free);
     }
 
     /** The views, in the chooser's order. */
@@ -117,11 +119,11 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
      * @param index  its place among the nodes it can be moved between (a {@code <main>} entry's), or −1
      * @param moveTo the text edit that moves it to another place, or {@code null} when it cannot move
      */
-    record Target(String title, List<Field> fields, int index, java.util.function.IntFunction<TextEdit> moveTo,
+    record Target(String title, List<Field> fields, int index, IntFunction<TextEdit> moveTo,
                   List<Action> actions) {
 
         /** A node that moves and has no actions. */
-        Target(String title, List<Field> fields, int index, java.util.function.IntFunction<TextEdit> moveTo) {
+        Target(String title, List<Field> fields, int index, IntFunction<TextEdit> moveTo) {
             this(title, fields, index, moveTo, List.of());
         }
 
@@ -151,7 +153,7 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
 
         /** An action whose inputs start empty. */
         Action(String name, List<String> inputs, Function<List<String>, TextEdit> edit) {
-            this(name, inputs, java.util.Collections.nCopies(inputs.size(), ""), edit);
+            this(name, inputs, Collections.nCopies(inputs.size(), ""), edit);
         }
     }
 
@@ -256,8 +258,8 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
 
     private static Projection gait(String text, Path file, Program p, Map<SourcePos, Target> targets) {
         GaitDiagram g = Gait.record(p, new RunOptions(GAIT_TICK, 0, List.of()), GAIT_SECONDS);
-        return new Projection(text, file, View.GAIT, List.of(), null, Layouts.gait(g), targets, "", null, null, List.of(),
-                null, g);
+        return new Projection(text, file, View.GAIT, List.of(), null, Layouts.gait(g), targets, "", null, null,
+                ShapeIndex.gait(g), null, g);
     }
 
     static boolean mine(SourcePos pos, Path file) {
@@ -293,7 +295,7 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         Free free = free(FreeNodes.PROGRAM, drawn, PanelMsg.DIAGRAM_BENCH_BEHAVIORS.text(), Workbench.freeBehaviors(p), places, drop,
                 PanelMsg.DIAGRAM_RELEASE_ON_LANE.text());
         return new Projection(text, file, View.PROGRAM, List.of(), null, free.bench().scene(), targets, "", null, null,
-                List.of(), null, null, free);
+                ShapeIndex.NONE, null, null, free);
     }
 
     /** The workbench of {@code nodes} under {@code above}, the nodes at {@code places} of {@code view}. */
@@ -337,7 +339,7 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
         Free free = free(FreeNodes.LANES, Layouts.lanes(s), PanelMsg.DIAGRAM_BENCH_AUTOMATA.text(), Workbench.freeAutomata(p), places,
                 drop, PanelMsg.DIAGRAM_RELEASE_ON_BAR.text(chosen));
         return new Projection(text, file, View.LANES, names, chosen, free.bench().scene(), targets,
-                islands(s.islands().size()), null, null, List.of(), s, null, free);
+                islands(s.islands().size()), null, null, ShapeIndex.lanes(s, free.bench().scene()), s, null, free);
     }
 
     /** The action that writes a gait table, which the pane then opens in the grid editor. */
@@ -391,14 +393,8 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
                         : StateTargets.of(text, file, a, arc));
             }
         }
-        List<List<String>> automata = new ArrayList<>();
-        if (p.main() != null) {
-            for (var e : p.main().entries()) {
-                automata.add(e.definition().instances().stream().map(Instance::name).toList());
-            }
-        }
         return new Projection(text, file, View.RING, names, chosen, Layouts.ring(r), targets, islands(r.islands().size()),
-                null, r, automata, null);
+                null, r, ShapeIndex.ring(p, a, r), null);
     }
 
     private static Projection phase(String text, Path file, Program p, String subject, Map<SourcePos, Target> targets) {
@@ -428,7 +424,8 @@ record Projection(String text, Path file, View view, List<String> subjects, Stri
             targets.put(in.pos(), instanceTarget(text, file, chosen, in.pos(), in.phase() == null ? null : in.phase().text(),
                     in.offset() == null ? null : in.offset().text(), in.period() == null ? null : in.period().text(), g));
         }
-        return new Projection(text, file, View.PHASE, labels, chosen, sc, targets, islands(w.islands().size()), w, null, List.of(), null);
+        return new Projection(text, file, View.PHASE, labels, chosen, sc, targets, islands(w.islands().size()), w, null,
+                ShapeIndex.wheel(), null);
     }
 
     private static String islands(int n) {

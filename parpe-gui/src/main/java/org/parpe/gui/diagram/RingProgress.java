@@ -3,7 +3,6 @@ package org.parpe.gui.diagram;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
-import org.parpe.core.diagram.Ring;
 import org.parpe.core.diagram.Scene;
 import org.parpe.gui.run.LiveStates;
 
@@ -19,31 +18,17 @@ final class RingProgress {
     }
 
     /**
-     * The dots for frame {@code f} on {@code ring} as drawn in {@code scene}; {@code automata} are
-     * the automata of the entry's instances. {@code shown} gets, per module, the progress drawn,
-     * or −1 for a module not in a state of this ring.
+     * The dots for frame {@code f} on the ring whose shapes {@code index} has. {@code shown} gets,
+     * per module, the progress drawn, or −1 for a module not in a state of this ring.
      */
-    static List<Scene.Shape> marks(Ring ring, Scene scene, LiveStates.Frame f, List<String> automata, double[] shown) {
+    static List<Scene.Shape> marks(ShapeIndex index, LiveStates.Frame f, double[] shown) {
         Arrays.fill(shown, -1);
-        Scene.Sector[] sectors = new Scene.Sector[ring.arcs().size()];
-        for (Scene.Shape s : scene.shapes()) {
-            if (s instanceof Scene.Sector c && c.source() != null) {
-                for (Ring.Arc a : ring.arcs()) {
-                    if (c.source().equals(a.pos())) {
-                        sectors[a.index()] = c;
-                    }
-                }
-            }
-        }
         List<Scene.Shape> marks = new ArrayList<>();
         for (int m = 0; m < f.instance().length && m < shown.length; m++) {
-            int i = f.instance()[m];
-            int k = f.state()[m];
-            if (i < 0 || i >= automata.size() || !automata.get(i).equals(ring.automaton()) || k < 0 || k >= sectors.length
-                    || sectors[k] == null || f.progress()[m] < 0) {
+            Scene.Sector c = index.arc(f.state()[m]);
+            if (!index.plays(f.entry(), f.instance()[m]) || c == null || f.progress()[m] < 0) {
                 continue;
             }
-            Scene.Sector c = sectors[k];
             shown[m] = f.progress()[m];
             double at = c.from() + Math.min(1, shown[m]) * (c.to() - c.from());
             double[] p = Scene.onCircle(c.cx(), c.cy(), c.r1() + 6, at);

@@ -1,5 +1,6 @@
 package org.parpe.gui.diagram;
 
+import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -9,12 +10,16 @@ import org.eclipse.swt.graphics.Color;
 import org.eclipse.swt.graphics.Font;
 import org.eclipse.swt.graphics.FontData;
 import org.eclipse.swt.graphics.GC;
+import org.eclipse.swt.graphics.Image;
 import org.eclipse.swt.graphics.Path;
 import org.eclipse.swt.graphics.Point;
+import org.eclipse.swt.graphics.Rectangle;
+import org.eclipse.swt.graphics.Transform;
 import org.eclipse.swt.widgets.Canvas;
 import org.eclipse.swt.widgets.Composite;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.diagram.Scene;
+import org.parpe.gui.panels.Theme;
 
 /**
  * Draws a {@link Scene} with SWT, as the SVG and PNG back ends draw it for files, scaled down to
@@ -46,10 +51,10 @@ final class SceneCanvas {
     /** The window's zoom: the smallest text is {@link #MIN_TEXT_PX} times this. */
     private double zoom = 1;
     /** Where the scene's texts were drawn last, in canvas pixels, with their text. */
-    private final List<Map.Entry<org.eclipse.swt.graphics.Rectangle, String>> drawnTexts = new java.util.ArrayList<>();
+    private final List<Map.Entry<Rectangle, String>> drawnTexts = new ArrayList<>();
     private boolean recording;
     /** The scene and the selection drawn once, so that a frame of the live overlay draws only the overlay over it. */
-    private org.eclipse.swt.graphics.Image cache;
+    private Image cache;
 
     /** A canvas in {@code parent}; {@code clicked} learns the place under a left click (or {@code null}). */
     SceneCanvas(Composite parent, Consumer<SourcePos> clicked) {
@@ -87,14 +92,14 @@ final class SceneCanvas {
 
     /** Scene units to canvas pixels: {@code {scale, dx, dy}}, the scene fitted in and centred. */
     private double[] fit() {
-        org.eclipse.swt.graphics.Rectangle a = canvas.getClientArea();
+        Rectangle a = canvas.getClientArea();
         double k = scale(scene, used);
         return new double[] {k, Math.max(0, (a.width - scene.width() * k) / 2), 0};
     }
 
     /** The scale {@code s} is drawn at on the canvas as it is now, {@code used} of its height shown. */
     private double scale(Scene s, double used) {
-        org.eclipse.swt.graphics.Rectangle a = canvas.getClientArea();
+        Rectangle a = canvas.getClientArea();
         double k = Math.min(1, Math.min(a.width / (double) s.width(), a.height / used));
         return k > 0 ? k : 1;
     }
@@ -146,6 +151,11 @@ final class SceneCanvas {
     void overlay(List<Scene.Shape> shapes) {
         overlay = List.copyOf(shapes);
         canvas.redraw();
+    }
+
+    /** The shapes drawn over the scene now ({@link #overlay}). */
+    List<Scene.Shape> overlaid() {
+        return overlay;
     }
 
     /** Outlines the shapes of {@code node} ({@code null}: none). */
@@ -217,12 +227,12 @@ final class SceneCanvas {
 
     private void paint(GC gc) {
         paints++;
-        org.eclipse.swt.graphics.Rectangle area = canvas.getClientArea();
+        Rectangle area = canvas.getClientArea();
         if (area.width <= 0 || area.height <= 0) {
             return;
         }
         if (cache == null) {
-            cache = new org.eclipse.swt.graphics.Image(canvas.getDisplay(), area.width, area.height);
+            cache = new Image(canvas.getDisplay(), area.width, area.height);
             GC image = new GC(cache);
             try {
                 image.setBackground(color(0xffffff));
@@ -250,7 +260,7 @@ final class SceneCanvas {
         gc.setAntialias(SWT.ON);
         gc.setTextAntialias(SWT.ON);
         double[] f = fit();
-        org.eclipse.swt.graphics.Transform t = new org.eclipse.swt.graphics.Transform(canvas.getDisplay(),
+        Transform t = new Transform(canvas.getDisplay(),
                 (float) f[0], 0, 0, (float) f[0], (float) f[1], (float) f[2]);
         try {
             gc.setTransform(t);
@@ -350,19 +360,19 @@ final class SceneCanvas {
         if (recording) {
             Point a = toCanvas(x, Math.round(t.y()) - ascent);
             Point b = toCanvas(x + size.x, Math.round(t.y()) - ascent + size.y);
-            drawnTexts.add(Map.entry(new org.eclipse.swt.graphics.Rectangle(a.x, a.y, b.x - a.x, b.y - a.y), t.text()));
+            drawnTexts.add(Map.entry(new Rectangle(a.x, a.y, b.x - a.x, b.y - a.y), t.text()));
         }
     }
 
     /** The scene's texts as last painted: where on the canvas (pixels) each one's extent went, and its text. */
-    List<Map.Entry<org.eclipse.swt.graphics.Rectangle, String>> drawnTexts() {
+    List<Map.Entry<Rectangle, String>> drawnTexts() {
         return List.copyOf(drawnTexts);
     }
 
     private Color color(int rgb) {
         // the scene's colours are for white paper; a dark theme turns them over (Theme.onPaper)
         return colors.computeIfAbsent(rgb, k -> {
-            int c = org.parpe.gui.panels.Theme.onPaper(k);
+            int c = Theme.onPaper(k);
             return new Color(c >> 16 & 0xff, c >> 8 & 0xff, c & 0xff);
         });
     }

@@ -5,13 +5,12 @@ import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Consumer;
 import org.eclipse.jface.text.BadLocationException;
 import org.eclipse.jface.window.Window;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.custom.SashForm;
-import org.eclipse.swt.dnd.Clipboard;
-import org.eclipse.swt.dnd.TextTransfer;
-import org.eclipse.swt.dnd.Transfer;
+import org.eclipse.swt.graphics.Color;
 import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.widgets.Button;
@@ -20,14 +19,18 @@ import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Control;
 import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.Table;
+import org.eclipse.swt.widgets.Text;
 import org.parpe.core.edit.Replacement;
 import org.parpe.core.diag.Diagnostic;
+import org.parpe.core.lang.Numbers;
 import org.parpe.core.load.ListItem;
 import org.parpe.core.model.Program;
 import org.parpe.gui.editor.AfterChange;
 import org.parpe.gui.editor.ParslEditor;
 import org.parpe.gui.grid.Fill.Selection;
 import org.parpe.gui.grid.TableEdits.At;
+import org.parpe.gui.panels.OverflowBar;
+import org.parpe.gui.panels.Zoom;
 import org.parpe.gui.text.PanelMsg;
 
 /**
@@ -42,7 +45,7 @@ import org.parpe.gui.text.PanelMsg;
 public final class GridPane implements GridView.Actions {
     private static final String TIMES = "times";
     /** The background of a cell with a problem (not selected). */
-    public static final org.eclipse.swt.graphics.Color INVALID = GridView.INVALID;
+    public static final Color INVALID = GridView.INVALID;
 
     private final SashForm sash;
     private final Control text;
@@ -53,6 +56,7 @@ public final class GridPane implements GridView.Actions {
     private final Composite bar;
     private final Combo choice;
     private final GridView grid;
+    private final GridClipboard clipboard;
     private final Label status;
     private final List<Button> commands = new ArrayList<>();
     private List<GaitTable> tables = List.of();
@@ -64,7 +68,7 @@ public final class GridPane implements GridView.Actions {
     private List<Diagnostic> diagnostics = List.of();
     private double amplitude = 15;
     private double phaseStep = -0.125;
-    private java.util.function.Consumer<Boolean> shown = v -> { };
+    private Consumer<Boolean> shown = v -> { };
 
     /** Adds the grid to {@code sash}, beside the editor's control (already in it). */
     public GridPane(SashForm sash, ParslEditor editor) {
@@ -77,7 +81,7 @@ public final class GridPane implements GridView.Actions {
         gl.marginHeight = 2;
         box.setLayout(gl);
         // One row whatever the width: the buttons that do not fit go behind a chevron (»), they never wrap.
-        bar = new org.parpe.gui.panels.OverflowBar(box).control();
+        bar = new OverflowBar(box).control();
         bar.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         new Label(bar, SWT.NONE).setText(PanelMsg.GRID_GAIT_TABLE.text());
         choice = new Combo(bar, SWT.READ_ONLY);
@@ -92,6 +96,7 @@ public final class GridPane implements GridView.Actions {
         command(bar, PanelMsg.GRID_WAVE.text(), PanelMsg.GRID_WAVE_TIP.text(), this::askWave);
         command(bar, PanelMsg.GRID_PASTE.text(), PanelMsg.GRID_PASTE_TIP.text(), this::paste);
         grid = new GridView(box, this);
+        clipboard = new GridClipboard(this, grid);
         status = new Label(box, SWT.WRAP);
         status.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         sash.setWeights(40, 60);
@@ -160,7 +165,7 @@ public final class GridPane implements GridView.Actions {
         // Without times="…" every row gets an equal share of the period: show it in seconds (lesson 2's
         // 0.5 s), not a bare "1" that reads as one second.
         Double share = times == null ? Modules.secondsPerRow(program, table.name(), table.rows().size()) : null;
-        String equal = share == null ? PanelMsg.GRID_EQUAL.text() : org.parpe.core.lang.Numbers.format(share) + " s";
+        String equal = share == null ? PanelMsg.GRID_EQUAL.text() : Numbers.format(share) + " s";
         for (int r = 0; r < table.rows().size(); r++) {
             List<String> row = new ArrayList<>();
             row.add(times == null ? equal : r < times.size() ? times.get(r) : "");
@@ -180,7 +185,8 @@ public final class GridPane implements GridView.Actions {
         box.layout();
     }
 
-    private boolean editable() {
+    /** Whether the table shown can be edited here (it is read, and not read-only). */
+    boolean editable() {
         return table != null && table.readOnly() == null && !stale;
     }
 
@@ -211,7 +217,7 @@ public final class GridPane implements GridView.Actions {
     }
 
     /** {@code listener} learns when the grid appears beside the text (true) or goes (false). */
-    public void onShown(java.util.function.Consumer<Boolean> listener) {
+    public void onShown(Consumer<Boolean> listener) {
         shown = listener;
     }
 
@@ -263,14 +269,14 @@ public final class GridPane implements GridView.Actions {
 
     /**
      * Shows the grid's text {@code steps} × 2 points larger than normal (the window's zoom,
-     * {@link org.parpe.gui.panels.Zoom}); the columns widen or narrow with it.
+     * {@link Zoom}); the columns widen or narrow with it.
      */
     public void zoom(int steps) {
         grid.zoom(steps);
     }
 
     /** The in-place cell editor while one is open, else {@code null}. */
-    public org.eclipse.swt.widgets.Text cellEditor() {
+    public Text cellEditor() {
         return grid.editor();
     }
 
@@ -324,12 +330,21 @@ public final class GridPane implements GridView.Actions {
 
     @Override
     public void edited(int row, int column, String value) {
-        int[] dropped = {0};
-        apply(TableEdits.setCells(editor.document().get(), table, single(Map.of(at(row, column), value), dropped)));
-        note(dropped[0], 0);
+        writeCells(Map.of(at(row, column), value), 0);
     }
 
-    private static At at(int row, int column) {
+    /**
+     * Writes {@code cells} into the table as one edit (values that would split an entry or a row
+     * left out), and says on the status line what was left out, with the {@code outside} cells.
+     */
+    void writeCells(Map<At, String> cells, int outside) {
+        int[] dropped = {0};
+        apply(TableEdits.setCells(editor.document().get(), table, single(cells, dropped)));
+        note(dropped[0], outside);
+    }
+
+    /** The table's place of grid cell {@code row, column} (column 0: the times). */
+    static At at(int row, int column) {
         return column == 0 ? new At(TableEdits.TIMES, row) : new At(row, column - 1);
     }
 
@@ -409,56 +424,22 @@ public final class GridPane implements GridView.Actions {
 
     /** Pastes {@code clip} (tab- or comma-separated lines) at the selection; returns how many cells fell outside. */
     public int paste(String clip) {
-        if (!editable() || clip == null || clip.isBlank()) {
-            return 0;
-        }
-        int[] outside = {0};
-        Map<At, String> cells = new LinkedHashMap<>();
-        Fill.paste(clip, grid.selection(), table.rows().size(), Math.max(1, table.width()) + 1, outside)
-                .forEach((at, v) -> cells.put(at(at.row(), at.column()), v));
-        int[] dropped = {0};
-        apply(TableEdits.setCells(editor.document().get(), table, single(cells, dropped)));
-        note(dropped[0], outside[0]);
-        return outside[0];
+        return clipboard.paste(clip);
     }
 
     @Override
     public void paste() {
-        Clipboard cb = new Clipboard(box.getDisplay());
-        try {
-            paste((String) cb.getContents(TextTransfer.getInstance()));
-        } finally {
-            cb.dispose();
-        }
+        clipboard.paste();
     }
 
     /** The selected cells as tab-separated lines, as a spreadsheet takes them. */
     public String copyText() {
-        Selection s = grid.selection();
-        StringBuilder out = new StringBuilder();
-        List<String> times = table.timeTexts();
-        for (int r = s.r0(); r <= s.r1(); r++) {
-            for (int c = s.c0(); c <= s.c1(); c++) {
-                Cell cell = c == 0 ? null : table.cell(r, c - 1);
-                String v = c == 0 ? (times == null ? "1" : r < times.size() ? times.get(r) : "") : cell == null ? "" : cell.text();
-                out.append(c > s.c0() ? "\t" : "").append(v);
-            }
-            out.append('\n');
-        }
-        return out.toString();
+        return clipboard.copyText();
     }
 
     @Override
     public void copy() {
-        if (table == null) {
-            return;
-        }
-        Clipboard cb = new Clipboard(box.getDisplay());
-        try {
-            cb.setContents(new Object[] {copyText()}, new Transfer[] {TextTransfer.getInstance()});
-        } finally {
-            cb.dispose();
-        }
+        clipboard.copy();
     }
 
     /** Adds a copy of the focused row below the selection. */

@@ -1,5 +1,7 @@
 package org.parpe.gui.view3d;
 
+import java.util.List;
+import java.util.Locale;
 import java.util.Set;
 import java.util.function.Supplier;
 import org.eclipse.swt.SWT;
@@ -48,11 +50,7 @@ public final class View3D {
     private int hover = -1;
     private boolean hovering;
     /** TrackRobot's readout: the centre of mass at the start of the run, and its path since. */
-    private Vec3 start;
-    private double lastTime = Double.NaN;
-    private final java.util.ArrayList<Vec3> trail = new java.util.ArrayList<>();
-    /** The most points of the trail kept (the oldest go first). */
-    static final int TRAIL_POINTS = 4000;
+    private final RunTrail trail = new RunTrail();
 
     /** Creates the view in {@code parent}. */
     public View3D(Composite parent) {
@@ -244,8 +242,6 @@ public final class View3D {
     public void clear() {
         last = null;
         framedFor = null;
-        lastTime = Double.NaN;
-        start = null;
         trail.clear();
         canvas.redraw();
     }
@@ -378,47 +374,12 @@ public final class View3D {
 
     /** TrackRobot's distance of the centre of mass from where the run started, in metres (NaN before a run). */
     public double distanceFromStart() {
-        SimSnapshot snap = last;
-        if (snap == null || start == null || !snap.centerOfMass().isFinite()) {
-            return Double.NaN;
-        }
-        Vec3 c = snap.centerOfMass();
-        return Math.hypot(c.x() - start.x(), c.y() - start.y());
+        return trail.distanceFromStart(last);
     }
 
     /** The points of TrackRobot's trail (tests). */
     public int trailPoints() {
-        return trail.size();
-    }
-
-    /**
-     * A new run (the time went back, or the first picture): the trail starts again, and the view
-     * frames the robot when it is not tracking it, so that a run never starts off the screen.
-     */
-    private void follow(SimSnapshot snap) {
-        if (snap.time() == lastTime) {
-            return;
-        }
-        boolean newRun = Double.isNaN(lastTime) || snap.time() < lastTime;
-        lastTime = snap.time();
-        Vec3 c = snap.centerOfMass();
-        if (!c.isFinite()) {
-            return;
-        }
-        if (newRun) {
-            start = c;
-            trail.clear();
-            if (!track) {
-                framedFor = null;
-            }
-        }
-        Vec3 end = trail.isEmpty() ? null : trail.get(trail.size() - 1);
-        if (end == null || Math.hypot(c.x() - end.x(), c.y() - end.y()) > 0.005) {
-            if (trail.size() == TRAIL_POINTS) {
-                trail.subList(0, TRAIL_POINTS / 4).clear();
-            }
-            trail.add(c);
-        }
+        return trail.points().size();
     }
 
     private void paint(Event e) {
@@ -434,8 +395,9 @@ public final class View3D {
             last = snap;
         }
         snap = last;
-        if (snap != null) {
-            follow(snap);
+        // a new run is framed when the view does not track the robot, so that it never starts off the screen
+        if (snap != null && trail.add(snap) && !track) {
+            framedFor = null;
         }
         if (snap != null && framedFor == null) {
             frame(snap);
@@ -449,7 +411,7 @@ public final class View3D {
         renderer.draw(gc, camera, snap, new SceneRenderer.Style(highlighted.get(), labels, hover,
                 b == null ? null : b::colour), width, height);
         if (snap != null && track) {
-            renderer.trail(gc, camera, trail);
+            renderer.trail(gc, camera, trail.points());
         }
         if (b != null) {
             renderer.ghosts(gc, camera, b.ghosts());
@@ -474,7 +436,7 @@ public final class View3D {
         double d = distanceFromStart();
         String text = snap == null ? emptyText : overlay.get();
         return snap != null && track && !Double.isNaN(d)
-                ? text + (text.isEmpty() ? "" : "   ") + PanelMsg.VIEW3D_FROM_START.text(String.format(java.util.Locale.ROOT, "%.2f", d)) : text;
+                ? text + (text.isEmpty() ? "" : "   ") + PanelMsg.VIEW3D_FROM_START.text(String.format(Locale.ROOT, "%.2f", d)) : text;
     }
 
     /**
@@ -485,7 +447,7 @@ public final class View3D {
         SimSnapshot snap = last;
         double minX = 1e9, minY = 1e9, maxX = -1e9, maxY = -1e9, maxZ = 0;
         boolean any = false;
-        for (SimBody b : snap == null ? java.util.List.<SimBody>of() : snap.bodies()) {
+        for (SimBody b : snap == null ? List.<SimBody>of() : snap.bodies()) {
             if (ids.contains(b.moduleId())) {
                 Vec3 p = b.position();
                 minX = Math.min(minX, p.x());

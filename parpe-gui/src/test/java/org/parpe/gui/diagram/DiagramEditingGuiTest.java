@@ -186,11 +186,11 @@ class DiagramEditingGuiTest {
             assertEquals(original.replace("<stance angles=\"-press\"/>", "<stance angles=\"10, -20.5\"/>"), d.text());
             undo("the pose");
             org.eclipse.swt.graphics.Point at = d.pane().where(d.node("<raise "));
-            d.pane().dropPose(at.x, at.y, "5,6");
+            d.pane().drags().dropPose(at.x, at.y, "5,6");
             d.caughtUp();
             assertEquals(original.replace("<raise  angles=\"lift\"/>", "<raise  angles=\"5,6\"/>"), d.text());
             undo("the dropped pose");
-            d.pane().dropPose(at.x, at.y, "<b/>");
+            d.pane().drags().dropPose(at.x, at.y, "<b/>");
             assertEquals(original, d.text(), "dropped text that is not a pose is refused");
             assertTrue(d.pane().message().startsWith("Only a pose"), d.pane().message());
         } finally {

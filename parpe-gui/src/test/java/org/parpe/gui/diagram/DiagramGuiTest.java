@@ -240,8 +240,8 @@ class DiagramGuiTest {
     void draggingOnThePhaseWheelSetsThePhase() {
         show(View.PHASE, "walk, second: swing on rightSwing");
         // offset 0.5: module 1's tick goes to 0.6 of a turn when the phase is 0.1
-        Point from = pane().onWheel(0.25);
-        Point to = pane().onWheel(0.6);
+        Point from = pane().drags().onWheel(0.25);
+        Point to = pane().drags().onWheel(0.6);
         drag(from, to);
         assertEquals(original.replace("<swing group=\"rightSwing\" offset=\"0.5\" phase=\"0.75\"",
                 "<swing group=\"rightSwing\" offset=\"0.5\" phase=\"0.1\""), text());
@@ -265,8 +265,8 @@ class DiagramGuiTest {
      */
     private static void live(View view, String subject) throws Exception {
         show(view, subject);
-        DiagramWindow.tenFrames(ide, () -> pane().liveCounts() != null, tick -> {
-            int[] counts = pane().liveCounts();
+        DiagramWindow.tenFrames(ide, () -> pane().live().counts() != null, tick -> {
+            int[] counts = pane().live().counts();
             // The same program's engine, run headless to that tick: which state is each leg's lift in?
             org.parpe.core.run.Engine e = new org.parpe.core.run.Engine(ide.program(), org.parpe.core.run.RunOptions.defaults());
             e.start();

@@ -157,10 +157,10 @@ class DiagramLiveGuiTest {
     @Test
     void theGaitDiagramShowsEachModulesStateDuringARun() throws Exception {
         show(View.GAIT, null);
-        DiagramWindow.tenFrames(ide, () -> pane().liveLabels() != null, tick -> {
+        DiagramWindow.tenFrames(ide, () -> pane().live().labels() != null, tick -> {
             String[] expected = statesAt(tick);
             assertEquals(28, Arrays.stream(expected).filter(s -> s != null).count(), "the 28 leg modules are driven");
-            assertEquals(Arrays.toString(expected), Arrays.toString(pane().liveLabels()), "each module's state at tick " + tick);
+            assertEquals(Arrays.toString(expected), Arrays.toString(pane().live().labels()), "each module's state at tick " + tick);
         }, null);
     }
 
@@ -223,9 +223,9 @@ class DiagramLiveGuiTest {
                 Thread.sleep(150);
                 IdeAccess.settle();
                 assertEquals(tick, c.engine().tick(), "no tick runs while paused at the breakpoint");
-                assertEquals(Arrays.toString(stepCountsAt(tick)), Arrays.toString(pane().liveCounts()),
+                assertEquals(Arrays.toString(stepCountsAt(tick)), Arrays.toString(pane().live().counts()),
                         "the ring shows the states at the tick it stopped");
-                assertEquals(stepProgressAt(tick), Arrays.toString(pane().liveProgress()),
+                assertEquals(stepProgressAt(tick), Arrays.toString(pane().live().progress()),
                         "the ring's dots show each lift's progress at the tick it stopped");
                 assertTrue(pane().liveLine().contains("entered step.lower at tick " + tick), pane().liveLine());
                 if (hit == 1) {
@@ -234,11 +234,11 @@ class DiagramLiveGuiTest {
                     DiagramWindow.canvasHasHalfTheTab(ide);
                     // the same stop on the gait diagram: its "now" column at that tick
                     show(View.GAIT, null);
-                    IdeAccess.pump(() -> pane().liveLabels() != null && pane().liveTick() == tick, "the gait overlay at the stop");
-                    assertEquals(Arrays.toString(statesAt(tick)), Arrays.toString(pane().liveLabels()));
+                    IdeAccess.pump(() -> pane().live().labels() != null && pane().liveTick() == tick, "the gait overlay at the stop");
+                    assertEquals(Arrays.toString(statesAt(tick)), Arrays.toString(pane().live().labels()));
                     picture("diagram-live-gait.png");
                     show(View.RING, "step");
-                    IdeAccess.pump(() -> pane().liveCounts() != null && pane().liveTick() == tick, "the ring overlay again");
+                    IdeAccess.pump(() -> pane().live().counts() != null && pane().liveTick() == tick, "the ring overlay again");
                 }
                 press(button("Continue"));
                 IdeAccess.pump(() -> c.breakpoints().hit() == null, "the run to go on");
@@ -276,13 +276,13 @@ class DiagramLiveGuiTest {
             for (int k : new int[] {0, 37, 150, 233, 300}) {
                 pane().scrubTo(k);
                 assertEquals(k, pane().liveTick());
-                assertEquals(Arrays.toString(stepCountsAt(k)), Arrays.toString(pane().liveCounts()), "the ring at tick " + k);
-                assertEquals(stepProgressAt(k), Arrays.toString(pane().liveProgress()), "the ring's progress dots at tick " + k);
+                assertEquals(Arrays.toString(stepCountsAt(k)), Arrays.toString(pane().live().counts()), "the ring at tick " + k);
+                assertEquals(stepProgressAt(k), Arrays.toString(pane().live().progress()), "the ring's progress dots at tick " + k);
             }
             show(View.GAIT, null);
             for (int k : new int[] {0, 80, 299}) {
                 pane().scrubTo(k);
-                assertEquals(Arrays.toString(statesAt(k)), Arrays.toString(pane().liveLabels()), "the gait diagram at tick " + k);
+                assertEquals(Arrays.toString(statesAt(k)), Arrays.toString(pane().live().labels()), "the gait diagram at tick " + k);
             }
             pane().scrubTo(120);
             assertTrue(pane().liveLine().startsWith("walk.csv: t = 1.2 s (tick 120 of 300)"), pane().liveLine());
@@ -290,7 +290,7 @@ class DiagramLiveGuiTest {
         } finally {
             press(button("Close trace"));
         }
-        assertEquals(null, pane().liveLabels(), "no overlay once the trace is closed");
+        assertEquals(null, pane().live().labels(), "no overlay once the trace is closed");
     }
 
     @Test
@@ -301,7 +301,7 @@ class DiagramLiveGuiTest {
         pane().scrub(other);
         assertTrue(pane().liveLine().startsWith(other + ":1:1: the trace has module 99, which the script does not have"),
                 pane().liveLine());
-        assertEquals(null, pane().liveCounts());
+        assertEquals(null, pane().live().counts());
     }
 
     @Test

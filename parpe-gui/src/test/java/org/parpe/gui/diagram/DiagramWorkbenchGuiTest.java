@@ -61,7 +61,7 @@ class DiagramWorkbenchGuiTest {
 
     /** Drags free node {@code name} by {@code dx, dy} canvas pixels with the left button. */
     private static void dragFree(DiagramDriver d, String name, int dx, int dy) {
-        Point a = d.pane().whereFree(name);
+        Point a = d.pane().workbench().where(name);
         assertNotNull(a, name + " is no free node of the " + d.pane().shown().view() + " view");
         dragTo(d, a, new Point(a.x + dx, a.y + dy));
     }
@@ -76,10 +76,10 @@ class DiagramWorkbenchGuiTest {
     /** Waits until free node {@code name} is drawn away from {@code before}, and returns where. */
     private static double[] movedFrom(DiagramDriver d, String name, double[] before) {
         IdeAccess.pump(() -> {
-            double[] now = d.pane().freeAt(name);
+            double[] now = d.pane().workbench().at(name);
             return now != null && (now[0] != before[0] || now[1] != before[1]);
         }, name + " drawn where it was put");
-        return d.pane().freeAt(name);
+        return d.pane().workbench().at(name);
     }
 
     @Test
@@ -93,9 +93,9 @@ class DiagramWorkbenchGuiTest {
         double[] put;
         try {
             DiagramDriver d = new DiagramDriver(ide);
-            double[] before = d.pane().freeAt("idle");
+            double[] before = d.pane().workbench().at("idle");
             assertNotNull(before, "idle, which <main> does not run, is a free node of the program view");
-            assertNull(d.pane().freeAt("walk"), "walk is on the lane, not on the workbench");
+            assertNull(d.pane().workbench().at("walk"), "walk is on the lane, not on the workbench");
             assertFalse(Files.exists(layout), "nothing is written before a node is moved");
             dragFree(d, "idle", 300, 40);
             put = movedFrom(d, "idle", before);
@@ -113,7 +113,7 @@ class DiagramWorkbenchGuiTest {
         IdeWindow again = open(home, script);
         try {
             DiagramDriver d = new DiagramDriver(again);
-            assertArrayEquals(put, d.pane().freeAt("idle"), "reopened, idle is where it was put");
+            assertArrayEquals(put, d.pane().workbench().at("idle"), "reopened, idle is where it was put");
         } finally {
             IdeAccess.closeIde(again);
         }
@@ -133,7 +133,7 @@ class DiagramWorkbenchGuiTest {
             DiagramDriver d = new DiagramDriver(ide);
             // the script's validation says "No problems" when it ends: after that, the status bar is the pane's
             IdeAccess.pump(() -> IdeAccess.status(ide).equals("No problems"), "the script validated");
-            double[] before = d.pane().freeAt("idle");
+            double[] before = d.pane().workbench().at("idle");
             dragFree(d, "idle", 200, 30);
             double[] put = movedFrom(d, "idle", before);
             String said = IdeAccess.status(ide);
@@ -142,7 +142,7 @@ class DiagramWorkbenchGuiTest {
             dragFree(d, "idle", -100, 20);
             movedFrom(d, "idle", put);
             assertFalse(IdeAccess.status(ide).contains("not a PARPE layout file"), "said once: " + IdeAccess.status(ide));
-            put = d.pane().freeAt("idle");
+            put = d.pane().workbench().at("idle");
             assertArrayEquals(put, new double[] {d.pane().places().at(FreeNodes.PROGRAM, "idle")[0],
                     d.pane().places().at(FreeNodes.PROGRAM, "idle")[1]}, "the place is kept in memory");
             assertEquals(theirs, Files.readString(foreign), "the foreign file is not written over");
@@ -164,8 +164,8 @@ class DiagramWorkbenchGuiTest {
             DiagramDriver d = new DiagramDriver(ide);
             d.front();
             d.show(View.PROGRAM, null);
-            IdeAccess.pump(() -> d.pane().freeAt("idle") != null, "the workbench of the untitled script");
-            double[] before = d.pane().freeAt("idle");
+            IdeAccess.pump(() -> d.pane().workbench().at("idle") != null, "the workbench of the untitled script");
+            double[] before = d.pane().workbench().at("idle");
             dragFree(d, "idle", 250, 50);
             double[] put = movedFrom(d, "idle", before);
             try (var files = Files.list(folder)) {
@@ -192,17 +192,17 @@ class DiagramWorkbenchGuiTest {
         IdeWindow ide = open(home, script);
         try {
             DiagramDriver d = new DiagramDriver(ide);
-            dragTo(d, d.pane().whereFree("idle"), d.pane().where(d.node("<walk/>")));
+            dragTo(d, d.pane().workbench().where("idle"), d.pane().where(d.node("<walk/>")));
             d.caughtUp();
             assertEquals(SCRIPT.replace("    <walk/>\n", "    <walk/>\n    <idle/>\n"), d.text());
-            assertNull(d.pane().freeAt("idle"), "idle now runs from <main>: it is on the lane");
+            assertNull(d.pane().workbench().at("idle"), "idle now runs from <main>: it is on the lane");
             ide.editor().run(ITextOperationTarget.UNDO);
             assertEquals(SCRIPT, d.text(), "one Undo takes the drop back");
             d.caughtUp();
 
             d.show(View.LANES, "walk");
-            assertNotNull(d.pane().whereFree("spare"), "spare, which no behavior plays, is a free node of the lanes");
-            dragTo(d, d.pane().whereFree("spare"), d.pane().where(d.node("<wave group")));
+            assertNotNull(d.pane().workbench().where("spare"), "spare, which no behavior plays, is a free node of the lanes");
+            dragTo(d, d.pane().workbench().where("spare"), d.pane().where(d.node("<wave group")));
             d.caughtUp();
             assertEquals(SCRIPT.replace("      <wave group=\"legs\"/>\n",
                     "      <wave group=\"legs\"/>\n      <spare group=\"legs\"/>\n"), d.text());

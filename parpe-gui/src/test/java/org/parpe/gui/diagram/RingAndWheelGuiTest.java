@@ -140,13 +140,13 @@ class RingAndWheelGuiTest {
                 c = new double[] {k.cx(), k.cy()};
             }
         }
-        for (Scene.Shape s : pane.dragPreview()) {
+        for (Scene.Shape s : pane.drags().preview()) {
             if (s instanceof Scene.Line l && c != null && l.x1() == c[0] && l.y1() == c[1]) {
                 double f = Math.atan2(l.x2() - l.x1(), -(l.y2() - l.y1())) / (2 * Math.PI);
                 return f < 0 ? f + 1 : f;
             }
         }
-        throw new AssertionError("no hand is drawn while dragging: " + pane.dragPreview());
+        throw new AssertionError("no hand is drawn while dragging: " + pane.drags().preview());
     }
 
     @Test
@@ -156,19 +156,19 @@ class RingAndWheelGuiTest {
         DiagramWindow.show(ide, View.PHASE, "walk, second: swing on rightSwing");
         String before = d.text();
         // phase 0.75, offset 0.5: position 1's tick, where the hand points, is at 0.25 of a turn
-        Point from = pane.onWheel(0.25);
+        Point from = pane.drags().onWheel(0.25);
         d.mouse(SWT.MouseDown, from);
-        d.mouse(SWT.MouseMove, pane.onWheel(0.6));
+        d.mouse(SWT.MouseMove, pane.drags().onWheel(0.6));
         assertEquals(0.6, handAt(pane), 0.01, "the hand is where the mouse is");
         assertTrue(pane.message().contains("phase=\"0.1\"") && pane.message().contains("start 0.5, 0.6, 0.7, 0.8"),
                 "the new phase and the delays it gives: " + pane.message());
         IdeAccess.screenshot(ide.shell(), "wheel-drag-1366x768.png");
-        d.mouse(SWT.MouseMove, pane.onWheel(0.9));
+        d.mouse(SWT.MouseMove, pane.drags().onWheel(0.9));
         assertEquals(0.9, handAt(pane), 0.01, "the hand follows the mouse");
         assertTrue(pane.message().contains("phase=\"0.4\""), pane.message());
         assertEquals(before, d.text(), "nothing is written while dragging");
-        d.mouse(SWT.MouseUp, pane.onWheel(0.9));
-        assertTrue(pane.dragPreview().isEmpty(), "the preview goes when the mouse is released");
+        d.mouse(SWT.MouseUp, pane.drags().onWheel(0.9));
+        assertTrue(pane.drags().preview().isEmpty(), "the preview goes when the mouse is released");
         assertEquals(before.replace("<swing group=\"rightSwing\" offset=\"0.5\" phase=\"0.75\"",
                 "<swing group=\"rightSwing\" offset=\"0.5\" phase=\"0.4\""), d.text());
     }
