@@ -71,16 +71,17 @@ public final class PosePanel {
         source.setToolTipText(PanelMsg.POSE_SOURCE_TIP.text());
         source.select(0);
         source.addListener(SWT.Selection, e -> sourceChanged());
-        follow = check(top, PanelMsg.POSE_FOLLOW.text(), PanelMsg.POSE_FOLLOW_TIP.text());
         Button capture = new Button(top, SWT.PUSH);
         capture.setText(PanelMsg.POSE_CAPTURE.text());
         capture.setToolTipText(PanelMsg.POSE_CAPTURE_TIP.text());
         capture.addListener(SWT.Selection, e -> capture());
-        timed = check(top, PanelMsg.POSE_REAL_TIME.text(), PanelMsg.POSE_REAL_TIME_TIP.text());
         Button fromScript = new Button(top, SWT.PUSH);
         fromScript.setText(PanelMsg.POSE_FROM_SCRIPT.text());
         fromScript.setToolTipText(PanelMsg.POSE_FROM_SCRIPT_TIP.text());
         fromScript.addListener(SWT.Selection, e -> loadFromScript());
+        // after the buttons, which keep their place on the first line (the Hardware dialog is placed to leave Capture free)
+        follow = check(top, PanelMsg.POSE_FOLLOW.text(), PanelMsg.POSE_FOLLOW_TIP.text());
+        timed = check(top, PanelMsg.POSE_REAL_TIME.text(), PanelMsg.POSE_REAL_TIME_TIP.text());
 
         SashForm middle = new SashForm(box, SWT.HORIZONTAL);
         middle.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
