@@ -33,6 +33,8 @@ final class LiveBar {
     private final Button openTrace;
     private final Scale slider;
     private final Label says;
+    /** The whole line; {@link #says} shows as much of it as its two lines hold. */
+    private String line = "";
     private Breakpoints breakpoints;
     private Runnable goOn = () -> { };
     private Runnable changed = () -> { };
@@ -65,12 +67,14 @@ final class LiveBar {
         says = new Label(row, SWT.WRAP);
         // never narrower than a few words (a narrow tab wrapped it a syllable a line, issue 31), two lines
         // (a longer language's sentence wraps), the same height whatever it says: the drawing under it does
-        // not move; the whole text is its tool tip
+        // not move; what two lines cannot hold ends in "…" and the whole text is its tool tip (decisions.md,
+        // "Layouts in the pseudo-language")
         GridData sd2 = new GridData(SWT.FILL, SWT.CENTER, true, false);
-        sd2.minimumWidth = 160;
+        sd2.minimumWidth = 100;
         sd2.widthHint = 160;
         sd2.heightHint = 2 * DiagramPane.lineHeight(says);
         says.setLayoutData(sd2);
+        says.addListener(SWT.Resize, e -> fit());
         update();
         row.getDisplay().timerExec(100, new Runnable() {
             @Override
@@ -164,7 +168,6 @@ final class LiveBar {
         row.getParent().layout(true, true);
     }
 
-    /** Sets the line beside the buttons (it wraps there when it is long). */
     /** Which module reached which breakpoint, when (as {@code Breakpoints.Hit.describe()}, in the IDE's language). */
     private static String hit(Breakpoints.Hit h) {
         String t = org.parpe.core.lang.Numbers.format(Math.round(h.time() * 1e6) / 1e6);
@@ -172,10 +175,40 @@ final class LiveBar {
                 .text(h.moduleId(), h.point().automaton() + "." + h.state(), h.tick(), t);
     }
 
-    private void tell(String line) {
-        says.setText(line);
-        says.setToolTipText(line.isEmpty() ? null : line);
+    private void tell(String text) {
+        line = text;
+        says.setToolTipText(text.isEmpty() ? null : text);
+        says.setText(text);
         row.getParent().layout(true, true);
+        fit();
+    }
+
+    /** Shows as much of the line as the label's two lines hold at its width: the rest elided with "…". */
+    private void fit() {
+        int width = says.getSize().x;
+        int room = says.getSize().y;
+        says.setText(line);
+        if (width <= 0 || room <= 0 || says.computeSize(width, SWT.DEFAULT).y <= room) {
+            return;
+        }
+        int fits = 0;
+        int over = line.length();
+        while (over - fits > 1) { // the longest start of the line that fits with "…" after it
+            int mid = (fits + over) / 2;
+            says.setText(elided(mid));
+            if (says.computeSize(width, SWT.DEFAULT).y <= room) {
+                fits = mid;
+            } else {
+                over = mid;
+            }
+        }
+        says.setText(elided(fits));
+    }
+
+    /** The first {@code n} characters of the line (a character whole) and "…". */
+    private String elided(int n) {
+        int end = n > 0 && Character.isHighSurrogate(line.charAt(n - 1)) ? n - 1 : n;
+        return line.substring(0, end).stripTrailing() + "\u2026";
     }
 
     /** A new drawing is shown: the buttons for its selection, and the trace's frame on it. */
@@ -188,9 +221,9 @@ final class LiveBar {
         }
     }
 
-    /** The line: the breakpoint the run is paused at, the trace's time, or a hint. */
+    /** The whole line (what the label shows may end elided): the breakpoint the run is paused at, the trace's time, or a hint. */
     String line() {
-        return says.getText();
+        return line;
     }
 
     /** Whether a trace is being scrubbed (the overlay shows it, not the run). */

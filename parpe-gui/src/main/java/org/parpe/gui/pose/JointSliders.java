@@ -22,13 +22,21 @@ final class JointSliders {
         void changed(int module, double degrees);
     }
 
+    /** The width of an angle beside its slider ("-90.0°"). */
+    private static final int VALUE_WIDTH = 60;
+    /** The narrowest a slider is beside its module's name before it goes under it. */
+    private static final int SLIDER_AT_LEAST = 100;
+
     private final ScrolledComposite scroll;
     private final Composite rows;
     private final Listener listener;
     private int[] modules = new int[0];
     private double[] angles = new double[0];
     private Scale[] scales = new Scale[0];
+    private Label[] names = new Label[0];
     private Label[] values = new Label[0];
+    /** Whether each slider is under its module's name and angle rather than between them. */
+    private boolean under;
 
     JointSliders(Composite parent, Listener listener) {
         this.listener = listener;
@@ -38,6 +46,7 @@ final class JointSliders {
         scroll.setContent(rows);
         scroll.setExpandHorizontal(true);
         scroll.setExpandVertical(true);
+        scroll.addListener(SWT.Resize, e -> arrange(false));
     }
 
     Control control() {
@@ -52,10 +61,12 @@ final class JointSliders {
         modules = ids.clone();
         angles = start.clone();
         scales = new Scale[ids.length];
+        names = new Label[ids.length];
         values = new Label[ids.length];
         for (int k = 0; k < ids.length; k++) {
             Label name = new Label(rows, SWT.NONE);
             name.setText(PanelMsg.POSE_MODULE.text(ids[k]));
+            name.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, false, false));
             Scale s = new Scale(rows, SWT.HORIZONTAL);
             s.setMinimum(0);
             s.setMaximum(180);
@@ -66,14 +77,45 @@ final class JointSliders {
             int pos = k;
             s.addListener(SWT.Selection, e -> moved(pos));
             Label v = new Label(rows, SWT.RIGHT);
-            v.setLayoutData(new GridData(60, SWT.DEFAULT));
+            v.setLayoutData(new GridData(VALUE_WIDTH, SWT.DEFAULT));
             scales[k] = s;
+            names[k] = name;
             values[k] = v;
             display(k);
         }
-        rows.layout(true);
-        // scrolls up and down only: sideways the sliders shrink to the pane, so names and values stay in sight
-        scroll.setMinHeight(rows.computeSize(SWT.DEFAULT, SWT.DEFAULT).y);
+        under = false;
+        arrange(true);
+    }
+
+    /**
+     * Each slider between its module's name and angle where the pane leaves it {@link #SLIDER_AT_LEAST}
+     * pixels, else under them across the pane (a narrow pane, a long language: a slider squeezed to its
+     * knob cannot be used). Scrolls up and down only: sideways the sliders shrink to the pane, so names
+     * and values stay in sight.
+     */
+    private void arrange(boolean again) {
+        int width = scroll.getClientArea().width;
+        GridLayout gl = (GridLayout) rows.getLayout();
+        int name = 0;
+        for (Label l : names) {
+            name = Math.max(name, l.computeSize(SWT.DEFAULT, SWT.DEFAULT).x);
+        }
+        boolean narrow = width > 0 && name + VALUE_WIDTH + SLIDER_AT_LEAST + 2 * (gl.horizontalSpacing + gl.marginWidth) > width;
+        if (narrow != under || again) {
+            under = narrow;
+            gl.numColumns = narrow ? 2 : 3;
+            for (int k = 0; k < scales.length; k++) {
+                if (narrow) {
+                    scales[k].moveBelow(values[k]);
+                } else {
+                    scales[k].moveAbove(values[k]);
+                }
+                ((GridData) scales[k].getLayoutData()).horizontalSpan = narrow ? 2 : 1;
+                ((GridData) names[k].getLayoutData()).grabExcessHorizontalSpace = narrow;
+            }
+            rows.layout(true);
+        }
+        scroll.setMinHeight(rows.computeSize(width > 0 ? width : SWT.DEFAULT, SWT.DEFAULT).y);
     }
 
     private void moved(int k) {

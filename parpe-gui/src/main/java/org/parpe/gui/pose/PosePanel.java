@@ -2,9 +2,7 @@ package org.parpe.gui.pose;
 
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import java.util.TreeSet;
@@ -45,32 +43,22 @@ public final class PosePanel {
     private final JointSliders sliders;
     private final PoseOutput output;
     private final PoseSim sim;
-    /** The lists of the document in the editor; each document has its own (issue 23, item 10). */
-    private Map<String, PoseList> lists = new HashMap<>();
-    /** Every document's lists, by its path (an untitled script: a key of its own). */
-    private final Map<Object, Map<String, PoseList>> byDocument = new java.util.LinkedHashMap<>();
-    private Object document = new Untitled();
+    /** The lists of every document; the one in the editor has its own (issue 23, item 10). */
+    private final PoseDocuments documents = new PoseDocuments();
     private final Set<Integer> picked = new TreeSet<>();
-    private final Map<PoseList, List<PoseList.Pose>> kept = new java.util.IdentityHashMap<>();
     private Program program;
     private String robotChoice = "";
     private PoseList current;
     private long lastCapture;
     private volatile boolean shown;
 
-    /** The key of an untitled script's poses: each untitled script is a document of its own. */
-    private static final class Untitled {
-        @Override
-        public String toString() {
-            return PanelMsg.POSE_UNTITLED.text();
-        }
-    }
-
     /** Creates the panel in {@code parent} and hooks it to the 3D view of {@code host}. */
     public PosePanel(Composite parent, PoseHost host) {
         this.host = host;
         box = new Composite(parent, SWT.NONE);
         box.setLayout(new GridLayout(1, false));
+        // one row that wraps where the pane is narrow (a long language, the Diagram tab or the tutorial beside
+        // it): the check boxes are in it rather than under the sliders, whose side is too narrow for them there
         Composite top = org.parpe.gui.panels.WrapRow.of(box);
         new Label(top, SWT.NONE).setText(PanelMsg.POSE_GROUP.text());
         groups = new Combo(top, SWT.READ_ONLY);
@@ -91,47 +79,33 @@ public final class PosePanel {
         fromScript.setText(PanelMsg.POSE_FROM_SCRIPT.text());
         fromScript.setToolTipText(PanelMsg.POSE_FROM_SCRIPT_TIP.text());
         fromScript.addListener(SWT.Selection, e -> loadFromScript());
+        // after the buttons, which keep their place on the first line (the Hardware dialog is placed to leave Capture free)
+        follow = check(top, PanelMsg.POSE_FOLLOW.text(), PanelMsg.POSE_FOLLOW_TIP.text());
+        timed = check(top, PanelMsg.POSE_REAL_TIME.text(), PanelMsg.POSE_REAL_TIME_TIP.text());
 
         SashForm middle = new SashForm(box, SWT.HORIZONTAL);
         middle.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
         table = new PoseTable(middle, new TableOwner());
         PoseDrag.from(table.table(), this::selectedAngles);
-        Composite right = new Composite(middle, SWT.NONE);
-        GridLayout rl = new GridLayout(2, false);
-        rl.marginWidth = 0;
-        rl.marginHeight = 0;
-        right.setLayout(rl);
-        sliders = new JointSliders(right, this::jointChanged);
-        sliders.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true, 2, 1));
-        // the two boxes wrap under each other where the pane is narrow (a long language, the Diagram tab beside it)
-        Composite checks = org.parpe.gui.panels.WrapRow.of(right);
-        ((GridData) checks.getLayoutData()).horizontalSpan = 2;
-        follow = new Button(checks, SWT.CHECK);
-        follow.setText(PanelMsg.POSE_FOLLOW.text());
-        follow.setToolTipText(PanelMsg.POSE_FOLLOW_TIP.text());
-        timed = new Button(checks, SWT.CHECK);
-        timed.setText(PanelMsg.POSE_REAL_TIME.text());
-        timed.setToolTipText(PanelMsg.POSE_REAL_TIME_TIP.text());
+        sliders = new JointSliders(middle, this::jointChanged);
         middle.setWeights(55, 45);
         output = new PoseOutput(box, host, this);
         sim = new PoseSim(msg -> runOnUi(() -> say(msg)));
         PoseInput.attach(this, host);
         box.addListener(SWT.Dispose, e -> sim.close());
-        byDocument.put(document, lists);
         poll();
+    }
+
+    private static Button check(Composite parent, String text, String tip) {
+        Button b = new Button(parent, SWT.CHECK);
+        b.setText(text);
+        b.setToolTipText(tip);
+        return b;
     }
 
     /** The panel's control (a tab's content). */
     public Control control() {
         return box;
-    }
-
-    static Set<Integer> ids(int[] modules) {
-        Set<Integer> s = new TreeSet<>();
-        for (int id : modules) {
-            s.add(id);
-        }
-        return s;
     }
 
     /** Whether the panel is posing: shown, and no run has the 3D view. */
@@ -198,7 +172,7 @@ public final class PosePanel {
             modules = g.modules().stream().mapToInt(Integer::intValue).toArray();
         }
         String key = name + (PICKED.equals(name) ? picked.toString() : Arrays.toString(modules));
-        if (current != null && current == lists.get(key)) {
+        if (current != null && current == documents.lists().get(key)) {
             return; // the script was validated again and this group did not change
         }
         if (groups.indexOf(name) >= 0 && groups.getSelectionIndex() != groups.indexOf(name)) {
@@ -211,7 +185,7 @@ public final class PosePanel {
             say(PanelMsg.POSE_CTRL_CLICK.text());
             return;
         }
-        current = lists.computeIfAbsent(key, k -> new PoseList(name, modules));
+        current = documents.lists().computeIfAbsent(key, k -> new PoseList(name, modules));
         double[] start = new double[modules.length];
         for (int k = 0; k < modules.length; k++) {
             start[k] = sim.target(modules[k]);
@@ -225,7 +199,7 @@ public final class PosePanel {
 
     /** Ctrl+click in the 3D view: adds module {@code id} to (or removes it from) the picked modules. */
     void pick(int id) {
-        PoseList was = lists.get(PICKED + picked);
+        PoseList was = documents.lists().get(PICKED + picked);
         if (was != null && was.size() > 0) {
             // Its poses have an angle per picked module: another set of modules would leave them behind.
             say(PanelMsg.POSE_PICKED_HAVE_POSES.text(picked, was.size()));
@@ -356,7 +330,7 @@ public final class PosePanel {
 
     /** Remembers that the poses of {@code list} as they are now are kept in a file or the script. */
     void markKept(PoseList list) {
-        kept.put(list, list.poses());
+        documents.markKept(list);
     }
 
     /**
@@ -365,15 +339,9 @@ public final class PosePanel {
      * (they are its poses, not the next file's). Save As keeps the document, so it is not a switch.
      */
     public void documentSwitched(java.nio.file.Path file) {
-        Object key = file == null ? new Untitled() : file.toAbsolutePath().normalize();
-        if (key.equals(document)) {
+        if (!documents.switchTo(file)) {
             return;
         }
-        if (document instanceof Untitled && lists.values().stream().allMatch(l -> l.size() == 0)) {
-            byDocument.remove(document); // an untitled script without poses leaves nothing behind
-        }
-        document = key;
-        lists = byDocument.computeIfAbsent(key, k -> new HashMap<>());
         current = null;
         program = null; // the next poll reads the new document's program and chooses its group
         table.show(null);
@@ -382,15 +350,7 @@ public final class PosePanel {
 
     /** The document a Save As gave a path to keeps its poses under that path. */
     public void documentRenamed(java.nio.file.Path file) {
-        Object key = file.toAbsolutePath().normalize();
-        if (!key.equals(document)) {
-            byDocument.remove(document);
-            Map<String, PoseList> before = byDocument.put(key, lists);
-            if (before != null && before != lists) {
-                before.forEach(lists::putIfAbsent);
-            }
-            document = key;
-        }
+        documents.renamed(file);
     }
 
     /**
@@ -398,22 +358,12 @@ public final class PosePanel {
      * of every document, as "3 poses of front in lesson.xml".
      */
     public List<String> unsaved() {
-        List<String> out = new ArrayList<>();
-        byDocument.forEach((doc, ls) -> {
-            for (PoseList l : ls.values()) {
-                if (l.size() > 0 && !l.poses().equals(kept.get(l))) {
-                    out.add(PanelMsg.POSE_UNSAVED_LIST.text(l.size(), l.group(),
-                            doc instanceof java.nio.file.Path p ? p.getFileName().toString() : doc.toString()));
-                }
-            }
-        });
-        return out;
+        return documents.unsaved();
     }
 
     /** The sentence that says which poses quitting would lose ({@link #unsaved}), or null when none. */
     public String lossSentence() {
-        List<String> lost = unsaved();
-        return lost.isEmpty() ? null : PanelMsg.POSE_LOSS.text(String.join(", ", lost));
+        return documents.lossSentence();
     }
 
     /**
@@ -449,7 +399,8 @@ public final class PosePanel {
 
     /** The modules being posed (none before a group is chosen). */
     public Set<Integer> posedModules() {
-        return current == null ? Set.of() : ids(current.modules());
+        return current == null ? Set.of()
+                : Arrays.stream(current.modules()).boxed().collect(java.util.stream.Collectors.toCollection(TreeSet::new));
     }
 
     /**

@@ -3,6 +3,7 @@ package org.parpe.gui.pose;
 import java.util.Locale;
 import java.util.function.IntConsumer;
 import org.eclipse.swt.SWT;
+import org.eclipse.swt.custom.ScrolledComposite;
 import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.widgets.Button;
@@ -21,6 +22,8 @@ import org.parpe.gui.text.PanelMsg;
  * shows it on the sliders. UI thread only.
  */
 final class PoseTable {
+    /** The rows the table shows before the side scrolls. */
+    private static final int ROWS_AT_LEAST = 3;
     /** What the table asks of the panel. */
     interface Owner {
         /** The current angles of the sliders, group order. */
@@ -36,6 +39,8 @@ final class PoseTable {
         void say(String text);
     }
 
+    /** The table, its buttons and its time row; they scroll in a pane too low for them (a docked tutorial beside them). */
+    private final ScrolledComposite scroll;
     private final Composite box;
     private final Table table;
     private final Text time;
@@ -44,7 +49,11 @@ final class PoseTable {
 
     PoseTable(Composite parent, Owner owner) {
         this.owner = owner;
-        box = new Composite(parent, SWT.NONE);
+        scroll = new ScrolledComposite(parent, SWT.V_SCROLL);
+        scroll.setExpandHorizontal(true);
+        scroll.setExpandVertical(true);
+        box = new Composite(scroll, SWT.NONE);
+        scroll.setContent(box);
         GridLayout gl = new GridLayout(1, false);
         gl.marginWidth = 0;
         gl.marginHeight = 0;
@@ -52,7 +61,9 @@ final class PoseTable {
         table = new Table(box, SWT.BORDER | SWT.SINGLE | SWT.FULL_SELECTION);
         table.setHeaderVisible(true);
         table.setLinesVisible(true);
-        table.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
+        GridData td = new GridData(SWT.FILL, SWT.FILL, true, true);
+        td.heightHint = table.getHeaderHeight() + ROWS_AT_LEAST * table.getItemHeight(); // more where the pane has room
+        table.setLayoutData(td);
         column("#", 34);
         column(PanelMsg.POSE_COL_AFTER.text(), 70);
         column(PanelMsg.POSE_COL_ANGLES.text(), 220);
@@ -76,6 +87,15 @@ final class PoseTable {
         time.addListener(SWT.DefaultSelection, e -> retime());
         new Label(timing, SWT.NONE).setText("s");
         button(timing, PanelMsg.POSE_SET_TIME.text(), PanelMsg.POSE_SET_TIME_TIP.text(), i -> retime());
+        scroll.addListener(SWT.Resize, e -> fit());
+    }
+
+    /** Scrolls when the pane is lower than the rows need at its width (the button rows wrap to it). */
+    private void fit() {
+        int width = scroll.getClientArea().width;
+        if (width > 0) {
+            scroll.setMinHeight(box.computeSize(width, SWT.DEFAULT).y);
+        }
     }
 
     private void rowSelected() {
@@ -109,7 +129,7 @@ final class PoseTable {
     }
 
     Control control() {
-        return box;
+        return scroll;
     }
 
     /** Shows {@code poses} (null: none). */

@@ -2,7 +2,7 @@ package org.parpe.gui.sweep;
 
 import org.parpe.gui.panels.RobotChoice;
 import org.eclipse.swt.SWT;
-import org.eclipse.swt.layout.GridData;
+import org.eclipse.swt.layout.RowData;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Label;
@@ -23,7 +23,8 @@ final class RunSettings {
     private final Combo objective;
 
     /**
-     * The line in {@code parent} (a grid of {@link #COLUMNS} columns), starting on the IDE's robot
+     * The line in {@code parent} (a {@link org.parpe.gui.panels.WrapRow}: it wraps where the dialog is narrower
+     * than a longer language's line), starting on the IDE's robot
      * {@code currentRobot} and world {@code currentWorld} (null: the flat floor).
      */
     RunSettings(Composite parent, String currentRobot, java.nio.file.Path currentWorld) {
@@ -34,7 +35,7 @@ final class RunSettings {
         new Label(parent, SWT.NONE).setText("   " + PanelMsg.SWEEP_SECONDS.text());
         duration = new Text(parent, SWT.BORDER);
         duration.setText("10");
-        duration.setLayoutData(new GridData(60, SWT.DEFAULT));
+        duration.setLayoutData(new RowData(60, SWT.DEFAULT));
         duration.setToolTipText(PanelMsg.SWEEP_SECONDS_TIP.text());
         new Label(parent, SWT.NONE).setText("   " + PanelMsg.SWEEP_JOBS.text());
         jobs = new Spinner(parent, SWT.BORDER);
@@ -50,9 +51,6 @@ final class RunSettings {
         objective.select(0);
         objective.setToolTipText(PanelMsg.SWEEP_OBJECTIVE_TIP.text());
     }
-
-    /** The widgets in the line. */
-    static final int COLUMNS = 10;
 
     RobotChoice robot() {
         return robot;

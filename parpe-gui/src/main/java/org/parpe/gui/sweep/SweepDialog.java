@@ -67,7 +67,7 @@ public final class SweepDialog {
         this.host = host;
         shell = new Shell(host.shell(), SWT.SHELL_TRIM | SWT.MODELESS);
         shell.setLayout(new GridLayout(1, false));
-        settings = new RunSettings(row(shell, RunSettings.COLUMNS), host.robot().get(), host.world().get());
+        settings = new RunSettings(org.parpe.gui.panels.WrapRow.of(shell), host.robot().get(), host.world().get());
         tabs = new TabFolder(shell, SWT.TOP);
         tabs.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, false));
         sweepTab = new SweepTab(tabs);

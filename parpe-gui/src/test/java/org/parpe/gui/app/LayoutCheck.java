@@ -39,7 +39,9 @@ import org.eclipse.swt.widgets.ToolBar;
  * <li>two visible siblings that overlap.</li>
  * </ul>
  * Controls hidden on purpose (not visible, or of no size, as an overflow bar hides what does not
- * fit) are not looked at.
+ * fit) are not looked at. A label is checked with the text it shows: one that shortens its text
+ * to its room on purpose (ending in "…", the whole text its tool tip, as the diagram's live line;
+ * decisions.md, "Layouts in the pseudo-language") passes when what it shows fits.
  */
 public final class LayoutCheck {
     /** What GTK's cell renderer takes of a column's width beside the text (as ProjectorZoomGuiTest measured). */

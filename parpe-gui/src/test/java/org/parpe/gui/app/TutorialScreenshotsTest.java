@@ -47,8 +47,10 @@ import org.parpe.gui.run.RunOn;
  * {@code docs/tutorial/img/NAME.png} (folder: system property {@code parpe.tutorialImages},
  * default {@code ../docs/tutorial/img} from the module). With {@code -Dparpe.tutorialLang=de}
  * (es, ja) the IDE speaks that language and the pictures are {@code NAME-de.png}, which Help →
- * Tutorial shows to a German student in place of {@code NAME.png}. One window for the whole
- * class; every wait is bounded.
+ * Tutorial shows to a German student in place of {@code NAME.png}, and the lessons of
+ * {@code docs/tutorial/de/} show; in a language only the lessons translated into it are pictured
+ * ({@code de/01-poses.md}: the scripts {@code 01-*.xml}). One window for the whole class; every
+ * wait is bounded.
  */
 class TutorialScreenshotsTest {
     private static final long WAIT_MS = 30_000;
@@ -72,6 +74,24 @@ class TutorialScreenshotsTest {
         try (Stream<Path> s = Files.list(dir)) {
             return s.filter(p -> p.getFileName().toString().endsWith(".xml")).sorted().toList();
         }
+    }
+
+    /**
+     * The scripts pictured: every lesson's in English; in another language ({@code parpe.tutorialLang})
+     * those of the lessons translated into it, whose numbers its folder beside the pictures' holds.
+     */
+    static List<Path> pictured() throws IOException {
+        java.util.Locale lang = org.parpe.core.text.Lang.parse(System.getProperty("parpe.tutorialLang", "en"));
+        if (lang == null || lang.equals(java.util.Locale.ENGLISH)) {
+            return scripts();
+        }
+        Path lessons = Path.of(System.getProperty("parpe.tutorialImages", "../docs/tutorial/img")).resolveSibling(lang.getLanguage());
+        Set<String> numbers = new TreeSet<>();
+        try (Stream<Path> s = Files.list(lessons)) {
+            s.map(p -> p.getFileName().toString()).filter(n -> n.matches("\\d\\d-.*\\.md")).forEach(n -> numbers.add(n.substring(0, 2)));
+        }
+        assertFalse(numbers.isEmpty(), "no translated lessons in " + lessons);
+        return scripts().stream().filter(p -> numbers.contains(p.getFileName().toString().substring(0, 2))).toList();
     }
 
     @BeforeAll
@@ -165,7 +185,7 @@ class TutorialScreenshotsTest {
     }
 
     @ParameterizedTest(name = "{0}")
-    @MethodSource("scripts")
+    @MethodSource("pictured")
     void runsInTheSimulatorAndTakesTheLessonsPicture(Path script) throws Exception {
         String name = script.getFileName().toString();
         int before = ide.validations();

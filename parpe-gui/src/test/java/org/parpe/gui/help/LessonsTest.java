@@ -66,4 +66,34 @@ class LessonsTest {
         }
         assertEquals(List.of(), broken, "links of docs/tutorial/" + lang + " that lead nowhere");
     }
+
+    /**
+     * Issue 38, "the pictures regenerated per language where they show text": every picture a
+     * translated lesson shows or links ({@code ../img/NAME.png}) is the IDE in the lesson's language
+     * ({@code NAME-de.png}, made by TutorialScreenshotsTest or the lesson's {@code parpe gui --lang}
+     * command) and exists, except the diagrams {@code NN-diagram-*.png}, which {@code parpe diagram}
+     * draws from the script's own names without the IDE.
+     */
+    @ParameterizedTest
+    @ValueSource(strings = {"de", "es", "ja"})
+    void translatedLessonsShowTheIdeInTheirLanguage(String lang) throws IOException {
+        List<String> wrong = new ArrayList<>();
+        int own = 0;
+        for (Path page : Lessons.pages(TUTORIAL, Locale.forLanguageTag(lang))) {
+            if (!page.startsWith(TUTORIAL.resolve(lang))) {
+                continue;
+            }
+            java.util.regex.Matcher m = java.util.regex.Pattern.compile("\\(\\.\\./img/([^)]+\\.png)\\)").matcher(Files.readString(page));
+            while (m.find()) {
+                String name = m.group(1);
+                boolean diagram = name.matches("\\d\\d-diagram-.*");
+                if (!diagram && !name.endsWith("-" + lang + ".png") || !Files.isRegularFile(TUTORIAL.resolve("img").resolve(name))) {
+                    wrong.add(page.getFileName() + ": " + name);
+                }
+                own += diagram ? 0 : 1;
+            }
+        }
+        assertEquals(List.of(), wrong, "pictures of docs/tutorial/" + lang + " not in its language, or missing");
+        assertTrue(own >= 10, "the lessons show the IDE in " + lang + " " + own + " times");
+    }
 }
