@@ -40,10 +40,7 @@ class UiTextTest {
             // the edit row's input names (internal keys, not shown), the keys' names as GTK shows them, the user's folder
             "add state", "Up", "Down", "Left", "Right", "Documents", "a file dialog needs a title",
             // comments the Pose panel writes into the student's PARSL file (the file's language is English)
-            "recorded in the PARPE IDE's Pose panel from ", " poses of group ", ", recorded in the Pose panel -->\n",
-            // the sweep engine's English option names (its messages are English) matched and replaced by the dialog's words
-            "the budget", "the number of searches", "--random COUNT", "a random sweep", "the random count",
-            "runs per combination", "give at least one --vary NAME=A..B", "tick Vary");
+            "recorded in the PARPE IDE's Pose panel from ", " poses of group ", ", recorded in the Pose panel -->\n");
 
     /** A menu accelerator's text after the tab: key names as GTK shows them. */
     private static final Pattern KEYS = Pattern.compile("\t(Ctrl\\+|Shift\\+|Alt\\+)*[^\\s]+");
