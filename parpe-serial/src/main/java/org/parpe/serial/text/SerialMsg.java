@@ -69,7 +69,23 @@ public enum SerialMsg implements Key {
     CLAMPED_JOINT_RANGE,
     CLAMPED_LIMITS,
     FAULT,
-    NO_FAULT_NOW;
+    NO_FAULT_NOW,
+
+    // SerialLink, PipeLink, PtyPair: the serial device
+    LINK_BAD_BAUD,
+    LINK_NO_DEVICE,
+    LINK_NOT_SERIAL,
+    LINK_NO_PERMISSION,
+    LINK_CANNOT_USE,
+    LINK_NOT_TTY,
+    LINK_BUSY,
+    LINK_CANNOT_OPEN,
+    LINK_CLOSED,
+    LINK_GONE,
+    LINK_STALLED,
+    SOCAT_MISSING,
+    SOCAT_NO_PTYS,
+    SOCAT_INTERRUPTED;
 
     /** The bundle of these keys. */
     public static final String BUNDLE = "org.parpe.serial.text.SerialMessages";

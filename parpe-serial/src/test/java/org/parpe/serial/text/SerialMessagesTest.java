@@ -39,12 +39,11 @@ class SerialMessagesTest {
 
     /**
      * Files whose texts for the user are not in the bundles yet (docs/decisions.md, "What is still
-     * English"): the serial device's errors, the bus options' checks, the emulators' options and
+     * English"): the bus options' checks, the emulators' options and
      * log lines, the pose recording's checks (its PARSL comments are the file's, English). Take a
      * file off this list when its texts move to {@link SerialMsg}.
      */
-    private static final java.util.Set<String> NOT_YET = java.util.Set.of("org/parpe/serial/link/SerialLink.java",
-            "org/parpe/serial/link/PtyPair.java", "org/parpe/serial/link/PipeLink.java", "org/parpe/serial/bus/BusConfig.java",
+    private static final java.util.Set<String> NOT_YET = java.util.Set.of("org/parpe/serial/bus/BusConfig.java",
             "org/parpe/serial/emu/EmulatorOptions.java", "org/parpe/serial/emu/ServedLine.java",
             "org/parpe/serial/g1/emu/BusEmulator.java", "org/parpe/serial/record/PoseRecording.java",
             "org/parpe/serial/record/RecordingWriter.java", "org/parpe/serial/servo/host/ServoScanner.java");
@@ -67,6 +66,19 @@ class SerialMessagesTest {
         }
         List<String> unused = BundleCheck.unusedIn(code, List.of(SerialMsg.values()), "SerialMsg.");
         assertEquals(List.of(), unused, "keys no code uses: remove them from SerialMsg and every bundle");
+    }
+
+    /** A serial device that is not there is told in the user's language (before, always in English). */
+    @Test
+    void aMissingSerialDeviceIsToldInGerman() {
+        org.parpe.core.text.Lang.use(java.util.Locale.GERMAN);
+        try {
+            Exception e = org.junit.jupiter.api.Assertions.assertThrows(org.parpe.serial.link.LinkException.class,
+                    () -> org.parpe.serial.link.SerialLink.open("/dev/parpe-no-such-port", 115200));
+            assertEquals("das serielle Gerät /dev/parpe-no-such-port gibt es nicht", e.getMessage());
+        } finally {
+            org.parpe.core.text.Lang.use(java.util.Locale.ENGLISH);
+        }
     }
 
     /** A warning keeps its words apart from the device's, so both are in the user's language. */
