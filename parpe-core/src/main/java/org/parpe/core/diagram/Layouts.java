@@ -24,12 +24,19 @@ public final class Layouts {
     /** The colour of docking (PARSL.md §14): a state's plate actions, the dock readings an exit waits on. */
     static final int LATCH = 0x1f5fbf;
     private static final double CHAR = 0.6;
+    /** The first of the wide characters (CJK radicals onwards: kana, ideographs, full-width forms). */
+    private static final char WIDE = '\u2e80';
 
     private Layouts() {
     }
 
+    /**
+     * The width a text takes at {@code size}: {@link #CHAR} of the size per character, a whole
+     * size for the wide characters of Chinese, Japanese and Korean (the labels are translated).
+     */
     private static double width(String s, double size) {
-        return s.length() * size * CHAR;
+        int wide = (int) s.chars().filter(c -> c >= WIDE).count();
+        return (s.length() - wide) * size * CHAR + wide * size;
     }
 
     /** The {@code <main>} lane: one box per entry, left to right, with the repeat arrow under them. */
