@@ -71,6 +71,30 @@ class DiagramsTest {
         assertTrue(s.lanes().get(1).bars().get(0).overlaps().isEmpty());
     }
 
+    /**
+     * Issue 38: the words the diagrams draw are in the user's language (PARSL's names stay); before,
+     * the lanes and the program lane were English whatever the language. The SVG goldens
+     * ({@code DiagramCommandTest}) hold the English.
+     */
+    @Test
+    void theDiagramsWordsAreInTheUsersLanguage() {
+        Program p = load("centipede-walk.xml");
+        Swimlanes s = Diagrams.swimlanes(p, p.behavior("walk").orElseThrow());
+        ProgramLane lane = Diagrams.program(load("standup-walk.xml")).orElseThrow();
+        String english = org.parpe.core.diagram.Layouts.lanes(s).svg();
+        assertTrue(english.contains(">mirrored (!)<") && english.contains(">7 modules: 0, 2, 4, 6…<"), english);
+        org.parpe.core.text.Lang.use(java.util.Locale.GERMAN);
+        try {
+            String lanes = org.parpe.core.diagram.Layouts.lanes(s).svg();
+            assertTrue(lanes.contains(">gespiegelt (!)<") && lanes.contains(">7 Module: 0, 2, 4, 6…<"), lanes);
+            assertTrue(lanes.contains(">Verhalten walk"), lanes);
+            String program = org.parpe.core.diagram.Layouts.program(lane).svg();
+            assertTrue(program.contains(">Zeit 10 s<"), program);
+        } finally {
+            org.parpe.core.text.Lang.use(java.util.Locale.ENGLISH);
+        }
+    }
+
     /** Issue 35: the ring marks the states that arm or release connection plates (PARSL.md §14), in words. */
     @Test
     void theRingSaysWhatAStateDoesToThePlates() {

@@ -54,6 +54,7 @@ class EditLayerTest {
             .and().doNotHaveFullyQualifiedName("org.parpe.core.run.StimulusParser")
             .and().doNotHaveFullyQualifiedName("org.parpe.sim.sweep.SweepCsv")
             .and().doNotHaveFullyQualifiedName("org.parpe.core.text.BundleCheck") // placeholders in bundle texts
+            .and().doNotHaveFullyQualifiedName("org.parpe.core.text.ProseLiterals") // prose in Java string literals (text tests)
             .and().doNotHaveFullyQualifiedName("org.parpe.sim.world.WorldReader")
             .and().doNotHaveFullyQualifiedName("org.parpe.sim.grade.GradeShard")
             .and().doNotHaveFullyQualifiedName("org.parpe.gui.help.CommandNames")

@@ -15,6 +15,7 @@ import org.parpe.core.run.TargetException;
 import org.parpe.sim.config.RobotConfig;
 import org.parpe.sim.config.RobotConfigs;
 import org.parpe.sim.internal.Assembly;
+import org.parpe.sim.text.SimMsg;
 import org.parpe.sim.world.World;
 
 /**
@@ -87,10 +88,8 @@ public final class SimTarget implements RunTarget {
             diags.report(d);
         }
         Simulator s = b.simulator();
-        String misfit = s.misfit();
-        if (!misfit.isEmpty()) {
-            diags.warning(org.parpe.core.diag.SourcePos.origin("simulated robot " + spec), "the robot " + misfit);
-        }
+        s.misfit().ifPresent(misfit -> diags.warning(org.parpe.core.diag.SourcePos.origin("simulated robot " + spec),
+                SimMsg.ROBOT_MISFIT, misfit));
         return s;
     }
 

@@ -14,6 +14,7 @@ import org.parpe.core.run.RunInfo;
 import org.parpe.core.run.SensorSource;
 import org.parpe.core.sensor.SensorTable;
 import org.parpe.core.run.TraceColumns;
+import org.parpe.core.text.Message;
 import org.parpe.sim.config.RobotConfig;
 import org.parpe.sim.internal.Assembly;
 import org.parpe.sim.internal.Docking;
@@ -21,6 +22,7 @@ import org.parpe.sim.internal.PhysicsParams;
 import org.parpe.sim.internal.PhysicsWorld;
 import org.parpe.sim.internal.SnapshotBuffer;
 import org.parpe.sim.snapshot.SimSnapshot;
+import org.parpe.sim.text.SimMsg;
 import org.parpe.sim.world.World;
 
 /**
@@ -123,29 +125,32 @@ public final class Simulator implements JointSink, SensorSource, PlateSink, Auto
     private static final double FIT_DEPTH = 0.005;
 
     /**
-     * Why the robot does not fit its world at the start, to follow "the robot" ("does not fit the
-     * world W.xml: …"), or empty when it fits (or on the flat floor): it starts inside the world's
-     * walls, ramps, rubble or objects, or outside its arena.
+     * Why the robot does not fit its world at the start, to follow the robot's name ("does not fit
+     * the world W.xml: …", {@link SimMsg#ROBOT_MISFIT}), or empty when it fits (or on the flat
+     * floor): it starts inside the world's walls, ramps, rubble or objects, or outside its arena.
      */
-    public String misfit() {
+    public java.util.Optional<Message> misfit() {
         if (scene == null) {
-            return "";
+            return java.util.Optional.empty();
         }
         String name = scene.name().substring(Math.max(scene.name().lastIndexOf('/'), scene.name().lastIndexOf('\\')) + 1);
         double[] com = progress.com();
         World.Region arena = scene.arena();
         if (arena != null && !arena.contains(com[0], com[1])) {
-            return String.format(java.util.Locale.ROOT, "does not fit the world %s: it starts outside the arena (its"
-                    + " centre of mass at x %.2f, y %.2f m; the arena x %.2f to %.2f, y %.2f to %.2f m)",
-                    name, com[0], com[1], arena.x0(), arena.x1(), arena.y0(), arena.y1());
+            return java.util.Optional.of(Message.of(SimMsg.MISFIT_ARENA, name, m2(com[0]), m2(com[1]), m2(arena.x0()),
+                    m2(arena.x1()), m2(arena.y0()), m2(arena.y1())));
         }
         double depth = world.sceneryOverlap();
         if (depth > FIT_DEPTH) {
-            return String.format(java.util.Locale.ROOT, "does not fit the world %s: it starts %.0f mm deep inside its"
-                    + " walls, ramps, rubble or objects; choose a robot that fits or a world made for it", name,
-                    depth * 1000);
+            return java.util.Optional.of(Message.of(SimMsg.MISFIT_INSIDE, name,
+                    String.format(java.util.Locale.ROOT, "%.0f", depth * 1000)));
         }
-        return "";
+        return java.util.Optional.empty();
+    }
+
+    /** Metres with two decimals and a point, for messages. */
+    private static String m2(double v) {
+        return String.format(java.util.Locale.ROOT, "%.2f", v);
     }
 
     /** How far lever {@code i} of the world is turned from rest, degrees. */

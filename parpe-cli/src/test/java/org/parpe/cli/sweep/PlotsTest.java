@@ -14,6 +14,7 @@ import org.junit.jupiter.api.Test;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYSeries;
 import org.knowm.xchart.style.Styler;
+import org.parpe.core.text.Message;
 import org.parpe.cli.plot.PngCharts;
 import org.parpe.core.plot.PlotStyle;
 import org.parpe.sim.sweep.Axis;
@@ -28,7 +29,7 @@ class PlotsTest {
 
     private static SweepRow row(int i, double bend, double speed, boolean fell) {
         return new SweepRow(new Point(i, i, 0, Map.of("bend", bend), 1), 30, 1, 1, speed, speed, fell ? 97 : 5, 10,
-                fell, "");
+                fell, Message.EMPTY);
     }
 
     @Test

@@ -5,11 +5,14 @@ import java.util.List;
 import java.util.Map;
 import java.util.Locale;
 import org.parpe.core.lang.Numbers;
+import org.parpe.core.text.Msg;
 
 /**
  * Lays the diagrams out as {@link Scene}s: fixed sizes and a fixed palette, so that the same
  * program always gives the same drawing (snapshot tests compare them byte for byte). Text
- * islands are listed under each drawing with the line they open.
+ * islands are listed under each drawing with the line they open. The words a drawing shows are
+ * {@link Msg}'s in the chosen language; PARSL's names ({@code <main>}, {@code cycles},
+ * {@code phase}, ...) stay as the file writes them.
  */
 public final class Layouts {
     /** Colours of states, in order (a colour-blind-safe qualitative palette, Okabe–Ito). */
@@ -21,12 +24,19 @@ public final class Layouts {
     /** The colour of docking (PARSL.md §14): a state's plate actions, the dock readings an exit waits on. */
     static final int LATCH = 0x1f5fbf;
     private static final double CHAR = 0.6;
+    /** The first of the wide characters (CJK radicals onwards: kana, ideographs, full-width forms). */
+    private static final char WIDE = '\u2e80';
 
     private Layouts() {
     }
 
+    /**
+     * The width a text takes at {@code size}: {@link #CHAR} of the size per character, a whole
+     * size for the wide characters of Chinese, Japanese and Korean (the labels are translated).
+     */
     private static double width(String s, double size) {
-        return s.length() * size * CHAR;
+        int wide = (int) s.chars().filter(c -> c >= WIDE).count();
+        return (s.length() - wide) * size * CHAR + wide * size;
     }
 
     /** The {@code <main>} lane: one box per entry, left to right, with the repeat arrow under them. */
@@ -38,9 +48,9 @@ public final class Layouts {
         for (ProgramLane.Step s : lane.steps()) {
             List<String> lines = new ArrayList<>();
             lines.add(s.behavior());
-            lines.add(s.time() == null ? "until its automata end" : "time " + s.time() + " s");
+            lines.add(s.time() == null ? Msg.DIAGRAM_UNTIL_AUTOMATA_END.text() : Msg.DIAGRAM_TIME.text(s.time()));
             if (s.exit() != null) {
-                lines.add("exit when " + s.exit());
+                lines.add(Msg.DIAGRAM_EXIT_WHEN.text(s.exit()));
             }
             dockLine.add(s.dock().isEmpty() ? -1 : lines.size());
             if (!s.dock().isEmpty()) {
@@ -82,7 +92,8 @@ public final class Layouts {
             sc.add(new Scene.Line(x - 20, back, 20, back, INK, 1.5, 0));
             sc.add(new Scene.Line(20, back, 20, y + boxH / 2, INK, 1.5, 0));
             arrow(sc, 20, y + boxH / 2, 40, y + boxH / 2);
-            sc.add(new Scene.Text((x - 20 + 20) / 2, back + 18, lane.cycles().equals("1") ? "runs once" : "runs " + lane.cycles() + (lane.cycles().equals("forever") ? "" : " times"), 12, 0, GREY, false));
+            sc.add(new Scene.Text((x - 20 + 20) / 2, back + 18, lane.cycles().equals("1") ? Msg.DIAGRAM_RUNS_ONCE.text()
+                : lane.cycles().equals("forever") ? Msg.DIAGRAM_RUNS_FOREVER.text() : Msg.DIAGRAM_RUNS_TIMES.text(lane.cycles()), 12, 0, GREY, false));
         }
         return sc;
     }
@@ -113,8 +124,8 @@ public final class Layouts {
         double top = 60;
         double h = top + rows * (barH + 8) + s.lanes().size() * 12 + 40 + s.islands().size() * 18;
         Scene sc = new Scene(width((int) (labelW + plotW + 40), s.islands()), (int) h);
-        sc.add(new Scene.Text(20, 28, "behavior " + s.behavior() + (s.entry() >= 0 ? "  (as the "
-                + org.parpe.core.lang.Numbers.ordinal(s.entry()) + " <main> entry runs it)" : ""), 15, -1, INK, true));
+        sc.add(new Scene.Text(20, 28, s.entry() >= 0 ? Msg.DIAGRAM_BEHAVIOR_ENTRY.text(s.behavior(), Msg.ordinal(s.entry()))
+                : Msg.DIAGRAM_BEHAVIOR.text(s.behavior()), 15, -1, INK, true));
         double scale = plotW / horizon;
         double y = top;
         for (double t = 0; t <= horizon + 1e-9; t += step(horizon)) {
@@ -126,7 +137,7 @@ public final class Layouts {
             double laneH = l.bars().size() * (barH + 8) + 4;
             sc.add(new Scene.Rect(10, y - 2, labelW + plotW + 20, laneH, Scene.NONE, 0xcccccc, 1, null));
             sc.add(new Scene.Text(20, y + 18, l.group(), 13, -1, INK, true));
-            sc.add(new Scene.Text(20, y + 34, l.modules().isEmpty() ? "(macro group)" : modules(l.modules()), 10, -1, GREY,
+            sc.add(new Scene.Text(20, y + 34, l.modules().isEmpty() ? Msg.DIAGRAM_MACRO_GROUP.text() : modules(l.modules()), 10, -1, GREY,
                     false));
             for (Swimlanes.Bar b : l.bars()) {
                 bar(sc, b, labelW, y + 2, barH, scale, plotW);
@@ -163,14 +174,17 @@ public final class Layouts {
         sc.add(new Scene.Text(x + 6, y + 14, label.toString(), 11, -1, INK, false));
         StringBuilder note = new StringBuilder();
         if (b.mirrored()) {
-            note.append("mirrored (!)  ");
+            note.append(Msg.DIAGRAM_MIRRORED.text()).append("  ");
         }
         if (!b.conditions().isEmpty()) {
-            note.append("if ").append(String.join(" and ", b.conditions())).append("  ");
+            String all = b.conditions().get(0);
+            for (String c : b.conditions().subList(1, b.conditions().size())) {
+                all = Msg.DIAGRAM_AND.text(all, c);
+            }
+            note.append(Msg.DIAGRAM_IF.text(all)).append("  ");
         }
         if (red) {
-            note.append("may drive module ").append(b.shared()).append(" twice (with instance ")
-                    .append(b.overlaps().get(0)).append(")");
+            note.append(Msg.DIAGRAM_DRIVES_TWICE.text(b.shared(), b.overlaps().get(0)));
         }
         if (note.length() > 0) {
             sc.add(new Scene.Text(x + 6, y + 28, note.toString().trim(), 10, -1, red ? RED : 0x555555, red));
@@ -187,9 +201,9 @@ public final class Layouts {
     }
 
     private static String modules(List<Integer> ids) {
-        String all = ids.size() + (ids.size() == 1 ? " module: " : " modules: ");
         String list = ids.size() <= 5 ? ids.toString() : ids.subList(0, 4) + "…";
-        return all + list.replace("[", "").replace("]", "");
+        return (ids.size() == 1 ? Msg.DIAGRAM_ONE_MODULE : Msg.DIAGRAM_MODULES).text(ids.size(),
+                list.replace("[", "").replace("]", ""));
     }
 
     private static double step(double horizon) {
@@ -283,9 +297,8 @@ public final class Layouts {
         double h = top + n * rowH + 50 + ((legendRows + 3) / 4) * 18 + 20;
         Scene sc = new Scene((int) (left + plotW + 30), (int) h);
         double seconds = g.ticks() * g.dt();
-        sc.add(new Scene.Text(20, 28, "gait: module × time, coloured by state (" + Numbers.format(Math.round((g.ticks() - 1)
-                * g.dt() * 1000) / 1000.0) + " s, tick "
-                + Numbers.format(g.dt()) + " s)", 15, -1, INK, true));
+        sc.add(new Scene.Text(20, 28, Msg.DIAGRAM_GAIT_TITLE.text(Numbers.format(Math.round((g.ticks() - 1) * g.dt() * 1000)
+                / 1000.0), Numbers.format(g.dt())), 15, -1, INK, true));
         sc.add(new Scene.Rect(left, top, plotW, n * rowH, LIGHT, Scene.NONE, 0, null));
         double scale = plotW / g.ticks();
         for (GaitDiagram.Segment s : g.segments()) {
@@ -307,7 +320,7 @@ public final class Layouts {
             sc.add(new Scene.Text(x, axis + 18, String.format(Locale.ROOT, "%s s", Numbers.format(Math.round(t * 100) / 100.0)),
                     10, 0, INK, false));
         }
-        sc.add(new Scene.Text(12, top + 10, "module", 10, -1, GREY, false));
+        sc.add(new Scene.Text(12, top + 10, Msg.DIAGRAM_MODULE_AXIS.text(), 10, -1, GREY, false));
         double ly = axis + 44;
         for (int i = 0; i < legendRows; i++) {
             double x = left + (i % 4) * 190;
@@ -316,8 +329,8 @@ public final class Layouts {
             sc.add(new Scene.Text(x + 18, y, names.get(i), 11, -1, INK, false));
         }
         if (names.size() > legendRows) {
-            sc.add(new Scene.Text(left, ly + ((legendRows + 3) / 4) * 18, "… and " + (names.size() - legendRows)
-                    + " more states (colours repeat)", 11, -1, GREY, false));
+            sc.add(new Scene.Text(left, ly + ((legendRows + 3) / 4) * 18, Msg.DIAGRAM_MORE_STATES.text(names.size() - legendRows),
+                    11, -1, GREY, false));
         }
         return sc;
     }

@@ -410,7 +410,28 @@ public enum Msg implements Key {
     STIMULUS_NO_SENSOR,
     STIMULUS_NUMBER,
     STIMULUS_RADIO_WORD,
-    STIMULUS_SLIDER_RANGE;
+    STIMULUS_SLIDER_RANGE,
+
+    // diagram.Layouts: the words the diagrams draw (PARSL's names stay as the file writes them)
+    DIAGRAM_UNTIL_AUTOMATA_END,
+    DIAGRAM_TIME,
+    DIAGRAM_EXIT_WHEN,
+    DIAGRAM_RUNS_ONCE,
+    DIAGRAM_RUNS_FOREVER,
+    DIAGRAM_RUNS_TIMES,
+    DIAGRAM_BEHAVIOR,
+    DIAGRAM_BEHAVIOR_ENTRY,
+    ORDINAL,
+    DIAGRAM_MACRO_GROUP,
+    DIAGRAM_MIRRORED,
+    DIAGRAM_IF,
+    DIAGRAM_AND,
+    DIAGRAM_DRIVES_TWICE,
+    DIAGRAM_ONE_MODULE,
+    DIAGRAM_MODULES,
+    DIAGRAM_GAIT_TITLE,
+    DIAGRAM_MODULE_AXIS,
+    DIAGRAM_MORE_STATES;
 
     /** The bundle of these keys. */
     public static final String BUNDLE = "org.parpe.core.text.Messages";
@@ -439,5 +460,15 @@ public enum Msg implements Key {
      */
     public static Message definedAt(Object anchor, Object place) {
         return anchor == null ? Message.EMPTY : Message.of(DEFINED_AT, place);
+    }
+
+    /**
+     * The place of zero-based {@code index} as a person counts: in English the words of
+     * {@link org.parpe.core.lang.Numbers#ordinal} ({@code first}, {@code second}, ...), in the
+     * other languages {@link #ORDINAL} with the number ({@code 1.}, {@code 1.º}, {@code 1 番目}).
+     */
+    public static String ordinal(int index) {
+        return Lang.current().getLanguage().equals(Locale.ENGLISH.getLanguage())
+                ? org.parpe.core.lang.Numbers.ordinal(index) : ORDINAL.text(index + 1);
     }
 }

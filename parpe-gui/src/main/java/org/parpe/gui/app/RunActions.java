@@ -449,11 +449,8 @@ public final class RunActions implements ControlPanel.ControlSink {
             }
             try (Simulator s = new Simulator(config, world)) {
                 preview = s.snapshot();
-                String misfit = s.misfit();
-                if (!misfit.isEmpty()) {
-                    // said when the robot or the world is chosen, not only when a run starts
-                    ide.sayLater(UiMsg.ROBOT_MISFIT_SAY.text(spec, misfit));
-                }
+                // said when the robot or the world is chosen, not only when a run starts
+                s.misfit().ifPresent(misfit -> ide.sayLater(UiMsg.ROBOT_MISFIT_SAY.text(spec, misfit)));
             } catch (RuntimeException e) {
                 ide.bottom().logLater(UiMsg.CANNOT_SHOW_ROBOT.text(spec, e.getMessage()));
             }

@@ -73,7 +73,8 @@ final class ResultsTable {
             measure(PanelMsg.SWEEP_COL_SCORE.text(), SweepRow::score);
         }
         columns.add(new Column(PanelMsg.SWEEP_COL_FELL.text(), row -> (row.fell() ? PanelMsg.SWEEP_YES : PanelMsg.SWEEP_NO).text(), Comparator.comparing(SweepRow::fell)));
-        columns.add(new Column(PanelMsg.SWEEP_COL_ERROR.text(), SweepRow::error, Comparator.comparing(SweepRow::error)));
+        columns.add(new Column(PanelMsg.SWEEP_COL_ERROR.text(), row -> row.error().toString(),
+                Comparator.comparing(row -> row.error().toString())));
         for (int i = 0; i < columns.size(); i++) {
             Column c = columns.get(i);
             boolean text = i >= columns.size() - 2;

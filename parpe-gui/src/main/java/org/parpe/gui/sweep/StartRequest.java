@@ -7,6 +7,8 @@ import java.util.Set;
 import org.eclipse.swt.widgets.Display;
 import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.Parameter;
+import org.parpe.core.text.Key;
+import org.parpe.core.text.Message;
 import org.parpe.gui.text.PanelMsg;
 import org.parpe.sim.sweep.Axis;
 import org.parpe.sim.sweep.Constraints;
@@ -16,6 +18,7 @@ import org.parpe.sim.sweep.OptimizeSpec;
 import org.parpe.sim.sweep.SearchSpace;
 import org.parpe.sim.sweep.SweepException;
 import org.parpe.sim.sweep.SweepSpec;
+import org.parpe.sim.text.SimMsg;
 
 /**
  * What Start was pressed with: the script (the editor's text, loaded as its file), the robot,
@@ -89,10 +92,27 @@ record StartRequest(Path file, String text, String robot, Path world, String dur
         return out;
     }
 
-    /** The engine's option names, as the dialog's boxes call them. */
-    static String words(String engineMessage) {
-        return engineMessage.replaceFirst("^--vary ", "").replace("--budget", "the budget")
-                .replace("--starts", "the number of searches").replace("--random COUNT", "a random sweep").replace("--random", "the random count")
-                .replace("--repeat", "runs per combination").replace("give at least one --vary NAME=A..B", "tick Vary");
+    /**
+     * The engine's messages that name an option of {@code parpe sweep}/{@code optimize}, and the
+     * dialog's words for each: the same arguments, the options named as the boxes are.
+     */
+    private static final Map<Key, Key> DIALOG_WORDS = Map.of(SimMsg.NOTHING_TO_VARY, PanelMsg.SWEEP_NOTHING_TO_VARY,
+            SimMsg.VARY_WHERE, PanelMsg.SWEEP_ENGINE_WHERE, SimMsg.VARY_SYNTAX, PanelMsg.SWEEP_ENGINE_SYNTAX,
+            SimMsg.FRACTIONAL_ENDS, PanelMsg.SWEEP_ENGINE_FRACTIONAL_ENDS, SimMsg.REPEAT_AT_LEAST_ONE, PanelMsg.SWEEP_ENGINE_REPEAT,
+            SimMsg.RANDOM_AT_LEAST_ONE, PanelMsg.SWEEP_ENGINE_RANDOM, SimMsg.TOO_MANY_RUNS, PanelMsg.SWEEP_ENGINE_TOO_MANY_RUNS,
+            SimMsg.K_TOO_LARGE, PanelMsg.SWEEP_ENGINE_K_TOO_LARGE, SimMsg.STARTS_AT_LEAST_ONE, PanelMsg.SWEEP_ENGINE_STARTS,
+            SimMsg.BUDGET_TOO_SMALL, PanelMsg.SWEEP_ENGINE_BUDGET);
+
+    /**
+     * {@code m}, a message of the engine, in the dialog's words: where it names an option of the
+     * command line, the dialog's message with the same arguments (also inside its arguments);
+     * shown in the user's language.
+     */
+    static Message inDialogWords(Message m) {
+        if (m.key() == null) {
+            return m;
+        }
+        List<Object> args = m.args().stream().map(a -> a instanceof Message n ? (Object) inDialogWords(n) : a).toList();
+        return new Message(DIALOG_WORDS.getOrDefault(m.key(), m.key()), args);
     }
 }

@@ -212,7 +212,7 @@ public final class SweepDialog {
             runner = s.runner();
             total = s.total();
         } catch (org.parpe.sim.sweep.SweepException e) {
-            error(StartRequest.words(e.getMessage()));
+            error(StartRequest.inDialogWords(e.text()).toString());
             return;
         }
         pane.show(results);
@@ -254,7 +254,7 @@ public final class SweepDialog {
             }
             setRunning(false);
             if (error != null) {
-                error(StartRequest.words(error));
+                error(error);
                 return;
             }
             // An optimisation's final list is the engine's (its order); a sweep's rows all came through rows()

@@ -104,7 +104,7 @@ final class SweepRunner {
             try {
                 work.run();
             } catch (SweepException e) {
-                end(null, false, e.getMessage());
+                end(null, false, StartRequest.inDialogWords(e.text()).toString());
             } catch (RuntimeException | Error e) {
                 end(null, false, PanelMsg.SWEEP_INTERNAL_ERROR.text(e, CrashLog.write("running a sweep", e)));
             }

@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.parpe.core.text.Message;
 import org.parpe.sim.sweep.Constraints;
 import org.parpe.sim.sweep.Objective;
 import org.parpe.sim.sweep.Point;
@@ -34,7 +35,7 @@ class ResultsMemoryTest {
     private static SweepRow row(int i) {
         Point p = new Point(i, i, 0, Map.of("amp", (double) i), 0L);
         boolean fell = i % 10 == 3;
-        String error = i % 97 == 5 ? "boom, \"quoted\"" : "";
+        Message error = i % 97 == 5 ? Message.verbatim("boom, \"quoted\"") : Message.EMPTY;
         double speed = i == 700 ? 1.0 : (i % 13) / 100.0;
         return new SweepRow(p, 1, speed, speed, speed, speed, fell ? 95 : 5, 10, fell, error);
     }

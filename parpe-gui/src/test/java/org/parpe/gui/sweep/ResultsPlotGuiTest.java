@@ -11,6 +11,7 @@ import org.eclipse.swt.layout.FillLayout;
 import org.eclipse.swt.widgets.Shell;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
+import org.parpe.core.text.Message;
 import org.parpe.core.plot.PlotStyle;
 import org.parpe.gui.app.Gui;
 import org.parpe.gui.panels.ChartView;
@@ -31,7 +32,7 @@ class ResultsPlotGuiTest {
 
     private static SweepRow row(int i, double bend, double speed, boolean fell) {
         return new SweepRow(new Point(i, i, 0, Map.of("bend", bend), 1), 30, 1, 1, speed, speed, fell ? 97 : 5, 10,
-                fell, "");
+                fell, Message.EMPTY);
     }
 
     @Test

@@ -309,6 +309,29 @@ class SweepDialogGuiTest {
         assertTrue(problems.get(0).format().contains("no-such-robot.xml"), problems.get(0).format());
     }
 
+    /**
+     * The engine's messages that name an option of {@code parpe optimize} ({@code --budget}) come
+     * in the dialog's words and in the user's language. Before, the dialog replaced the English
+     * option names in the English text, so in German it showed {@code --budget muss ...}.
+     */
+    @Test
+    void theEnginesRefusalNamesTheBoxesInTheUsersLanguage() {
+        dialog.setDuration("1");
+        dialog.selectTab(1);
+        dialog.optimiseTab().setBudget(3, 2);
+        Ui.click(dialog.startButton());
+        assertFalse(dialog.running());
+        assertEquals("the budget must be at least 2 simulations per independent search (4), got 3", dialog.message());
+        org.parpe.core.text.Lang.use(java.util.Locale.GERMAN);
+        try {
+            Ui.click(dialog.startButton());
+            assertEquals("das Budget muss mindestens 2 Simulationen je unabhängiger Suche haben (4), ist aber 3",
+                    dialog.message());
+        } finally {
+            org.parpe.core.text.Lang.use(java.util.Locale.ENGLISH);
+        }
+    }
+
     @Test
     void editsToTheParametersShowWhenTheDialogIsActivated() {
         vary("amp", "10", "20", 4);

@@ -19,6 +19,7 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.parpe.core.text.BundleCheck;
 import org.parpe.core.text.Lang;
+import org.parpe.core.text.ProseLiterals;
 
 /**
  * The translators' check of the IDE (issue 38: "a test fails on any user-visible string literal in
@@ -40,23 +41,10 @@ class UiTextTest {
             // the edit row's input names (internal keys, not shown), the keys' names as GTK shows them, the user's folder
             "add state", "Up", "Down", "Left", "Right", "Documents", "a file dialog needs a title",
             // comments the Pose panel writes into the student's PARSL file (the file's language is English)
-            "recorded in the PARPE IDE's Pose panel from ", " poses of group ", ", recorded in the Pose panel -->\n",
-            // the sweep engine's English option names (its messages are English) matched and replaced by the dialog's words
-            "the budget", "the number of searches", "--random COUNT", "a random sweep", "the random count",
-            "runs per combination", "give at least one --vary NAME=A..B", "tick Vary");
+            "recorded in the PARPE IDE's Pose panel from ", " poses of group ", ", recorded in the Pose panel -->\n");
 
     /** A menu accelerator's text after the tab: key names as GTK shows them. */
     private static final Pattern KEYS = Pattern.compile("\t(Ctrl\\+|Shift\\+|Alt\\+)*[^\\s]+");
-
-    /** Two letters, a space and a letter: words; or a capitalised word; or a letter outside ASCII. */
-    private static final Pattern PROSE = Pattern.compile("\\p{L}{2,}[,;:!?.]*\\s+\\p{L}|^[\\p{Lu}][\\p{Ll}]+|[\\p{L}&&[^\\x00-\\x7f]]");
-
-    /** A PARSL snippet (an element with attributes, or an element's name in brackets): the file format, English on purpose. */
-    private static final Pattern PARSL = Pattern.compile("<[a-z][\\w-]*(\\s+[\\w-]+=\"|\\s*/?>)|^<[a-z][\\w-]*>$|^<\\?xml |<!-- ");
-
-    /** Arguments of these are a fault of PARPE's own, shown as an internal error with its crash file. */
-    private static final Pattern INTERNAL = Pattern.compile(
-            "new (IllegalStateException|AssertionError|UnsupportedOperationException|BadLocationException)\\(");
 
     @Test
     void everyBundleHasEveryKeyNoOtherAndTheEnglishPlaceholders() {
@@ -114,84 +102,7 @@ class UiTextTest {
 
     /** The literals of {@code java} (comments and annotations left out) that read as prose: {@code FILE:LINE: "text"}. */
     static List<String> proseLiterals(String file, String java) {
-        List<String> out = new ArrayList<>();
-        int line = 1;
-        int annotationDepth = -1;
-        int depth = 0;
-        for (int i = 0; i < java.length(); i++) {
-            char c = java.charAt(i);
-            if (c == '\n') {
-                line++;
-            } else if (java.startsWith("//", i)) {
-                i = java.indexOf('\n', i) - 1;
-                if (i < 0) {
-                    break;
-                }
-            } else if (java.startsWith("/*", i)) {
-                int end = java.indexOf("*/", i + 2);
-                line += count(java.substring(i, end), '\n');
-                i = end + 1;
-            } else if (c == '\'') {
-                i = java.indexOf('\'', i + (java.charAt(i + 1) == '\\' ? 3 : 2));
-            } else if (c == '@' && Character.isUpperCase(java.charAt(i + 1)) && annotationDepth < 0) {
-                int open = i + 1;
-                while (open < java.length() && Character.isJavaIdentifierPart(java.charAt(open))) {
-                    open++;
-                }
-                if (open < java.length() && java.charAt(open) == '(') {
-                    annotationDepth = depth;
-                }
-            } else if (c == '(') {
-                depth++;
-            } else if (c == ')') {
-                depth--;
-                if (depth == annotationDepth) {
-                    annotationDepth = -1;
-                }
-            } else if (c == '"') {
-                int end = i + 1;
-                while (java.charAt(end) != '"') {
-                    end += java.charAt(end) == '\\' ? 2 : 1;
-                }
-                String literal = java.substring(i + 1, end);
-                // the statement up to the literal: its start is after the last ';', '{' or '}'
-                int start = Math.max(java.lastIndexOf(';', i), Math.max(java.lastIndexOf('{', i), java.lastIndexOf('}', i)));
-                String before = java.substring(start + 1, i);
-                if (annotationDepth < 0 && prose(unescape(literal)) && !INTERNAL.matcher(before).find()) {
-                    out.add(file + ":" + line + ": \"" + literal + "\"");
-                }
-                i = end;
-            }
-        }
-        return out;
-    }
-
-    private static boolean prose(String text) {
-        if (ALLOWED.contains(text) || KEYS.matcher(text).matches() || PARSL.matcher(text).find()) {
-            return false;
-        }
-        return PROSE.matcher(text).find();
-    }
-
-    private static String unescape(String literal) {
-        StringBuilder b = new StringBuilder();
-        for (int i = 0; i < literal.length(); i++) {
-            char c = literal.charAt(i);
-            if (c == '\\' && literal.charAt(i + 1) == 'u') {
-                b.append((char) Integer.parseInt(literal.substring(i + 2, i + 6), 16));
-                i += 5;
-            } else if (c == '\\') {
-                char n = literal.charAt(++i);
-                b.append(n == 't' ? '\t' : n == 'n' ? '\n' : n);
-            } else {
-                b.append(c);
-            }
-        }
-        return b.toString();
-    }
-
-    private static int count(String s, char c) {
-        return (int) s.chars().filter(x -> x == c).count();
+        return ProseLiterals.in(file, java, text -> ALLOWED.contains(text) || KEYS.matcher(text).matches());
     }
 
     private static ResourceBundle own(String base, Locale l) {

@@ -2,6 +2,8 @@ package org.parpe.serial.bus;
 
 import java.io.IOException;
 import org.parpe.core.run.RunOutcome;
+import org.parpe.core.text.Message;
+import org.parpe.serial.text.SerialMsg;
 
 /**
  * The thread that owns the wire of a host driver, the same for G1 modules and for Dynamixel or
@@ -21,8 +23,8 @@ public abstract class BusThread implements HostPlant, AutoCloseable {
     protected final BusConfig config;
     /** Where user messages go, from any thread. */
     protected final BusReport report;
-    /** What one addressable unit on this bus is called in messages: "module" or "servo". */
-    private final String unit;
+    /** Whether the addressable units on this bus are modules (G1), not servos: the word in messages. */
+    private final boolean modules;
     private long lastAnswerNanos = System.nanoTime();
     /** Wall-clock time of the last answer, for messages and the IDE's alarm. */
     private volatile long lastAnswerMillis = System.currentTimeMillis();
@@ -33,11 +35,14 @@ public abstract class BusThread implements HostPlant, AutoCloseable {
     private long silentSince;
     private long disconnects;
 
-    /** A driver with {@code config} reporting to {@code report}; {@code unit} names one device in messages. */
-    protected BusThread(BusConfig config, BusReport report, String unit) {
+    /**
+     * A driver with {@code config} reporting to {@code report}; {@code modules} says whether messages
+     * call one device a module (G1) or a servo.
+     */
+    protected BusThread(BusConfig config, BusReport report, boolean modules) {
         this.config = config;
         this.report = report;
-        this.unit = unit;
+        this.modules = modules;
     }
 
     /** One cycle while connected: setpoints out, readings in. */
@@ -69,7 +74,7 @@ public abstract class BusThread implements HostPlant, AutoCloseable {
             try {
                 sendFinalHold();
             } catch (IOException e) {
-                report.problem("bus: could not send the final setpoints and hold: " + e.getMessage());
+                report.problem("bus: " + SerialMsg.FINAL_HOLD_FAILED.text(e.getMessage()));
             }
         }
         report.note(summary());
@@ -83,9 +88,9 @@ public abstract class BusThread implements HostPlant, AutoCloseable {
 
     /**
      * A device answers again: the protocol's set-up after a silence (rediscovery, watchdog,
-     * resume); returns what to add to the "back" note, e.g. {@code " (5 of 5 answer)"}, or "".
+     * resume); returns what to add to the "back" note, e.g. {@code 5 of 5 answer}.
      */
-    protected abstract String setUpAgain() throws IOException;
+    protected abstract Message setUpAgain() throws IOException;
 
     /** Opens the device again after it went away. */
     protected abstract void reopenDevice() throws IOException;
@@ -112,17 +117,17 @@ public abstract class BusThread implements HostPlant, AutoCloseable {
         // unplugged device.
         emergencyStopping();
         long since = notAnsweringSince();
-        String silence = since >= 0 ? "no " + unit + " has answered since " + clock(since) : null;
+        Message silence = since >= 0 ? Message.of(SerialMsg.NONE_ANSWERED_SINCE, unit(), clock(since)) : null;
         try {
             String done = sendEmergencyStop();
             if (silence != null) {
-                report.problem("bus: emergency stop sent but not confirmed: " + silence + "; switch the servo supply off");
+                report.problem("bus: " + SerialMsg.ESTOP_NOT_CONFIRMED.text(silence));
             } else {
-                report.note("bus: emergency stop sent; " + done);
+                report.note("bus: " + SerialMsg.ESTOP_SENT.text(done));
             }
         } catch (IOException e) {
-            report.problem("bus: emergency stop could not be sent (" + e.getMessage() + "); "
-                    + (silence != null ? silence + ": switch the servo supply off" : whileLost()));
+            report.problem("bus: " + (silence != null ? SerialMsg.ESTOP_NOT_SENT_SILENT.text(e.getMessage(), silence)
+                    : SerialMsg.ESTOP_NOT_SENT.text(e.getMessage(), whileLost())));
         }
     }
 
@@ -163,15 +168,12 @@ public abstract class BusThread implements HostPlant, AutoCloseable {
      * and {@code whatTheyDo}, and the thread looks for them.
      */
     protected final void silent(String device, String whatTheyDo) {
-        silent(String.format(java.util.Locale.ROOT, "bus: no reply from any %s on %s for %d ms (robot not responding "
-                + "since %s); %s; waiting for them to come back", unit, device, config.deadAfterMs(),
-                clock(lastAnswerMillis), whatTheyDo));
+        silent("bus: " + SerialMsg.NO_REPLY.text(unit(), device, config.deadAfterMs(), clock(lastAnswerMillis), whatTheyDo));
     }
 
     /** Device {@code id} had stopped on its own watchdog (a read said so) and is being resumed: says so. */
     protected final void watchdogResumed(int id, int watchdogMs) {
-        report.problem("bus: " + unit + " " + id + " had stopped on its watchdog (a gap of more than " + watchdogMs
-                + " ms in the bus traffic); resuming it");
+        report.problem("bus: " + SerialMsg.WATCHDOG_STOPPED.text(unit(), id, watchdogMs));
     }
 
     /** Starts the bus thread, named {@code name}. */
@@ -214,6 +216,11 @@ public abstract class BusThread implements HostPlant, AutoCloseable {
         return state != State.CONNECTED;
     }
 
+    /** What one device on this bus is called: module or servo, in the user's language. */
+    private String unit() {
+        return (modules ? SerialMsg.UNIT_MODULE : SerialMsg.UNIT_SERVO).text();
+    }
+
     /** All modules fell silent: {@code problem} is reported and the thread looks for them. */
     private void silent(String problem) {
         state = State.SILENT;
@@ -230,12 +237,12 @@ public abstract class BusThread implements HostPlant, AutoCloseable {
         int n = lookCount();
         for (int i = 0; i < n; i++) {
             if (answers(i)) {
-                String detail = setUpAgain();
+                Message detail = setUpAgain();
                 answeredNow();
                 state = State.CONNECTED;
                 double away = (System.nanoTime() - silentSince) / 1e9;
-                report.note(String.format(java.util.Locale.ROOT, "bus: %ss back on %s after %.2f s%s; resuming", unit,
-                        name(), away, detail));
+                report.note("bus: " + SerialMsg.BACK.text(modules ? SerialMsg.UNITS_MODULE.text() : SerialMsg.UNITS_SERVO.text(),
+                        name(), String.format(java.util.Locale.ROOT, "%.2f", away), detail));
                 return;
             }
             Thread.sleep(Math.max(1, config.reconnectMs() / n));
@@ -293,7 +300,7 @@ public abstract class BusThread implements HostPlant, AutoCloseable {
         silentSince = System.nanoTime();
         disconnects++;
         closeDevice();
-        report.problem("bus: " + e.getMessage() + "; " + whileLost() + "; waiting for the device to return");
+        report.problem("bus: " + SerialMsg.LINK_LOST.text(e.getMessage(), whileLost()));
     }
 
     private void reopen() throws InterruptedException {

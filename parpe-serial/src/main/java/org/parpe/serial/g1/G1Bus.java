@@ -1,5 +1,6 @@
 package org.parpe.serial.g1;
 
+import org.parpe.serial.text.SerialMsg;
 import java.io.IOException;
 import org.parpe.serial.bus.BusConfig;
 import org.parpe.serial.bus.SafeMode;
@@ -164,11 +165,11 @@ public final class G1Bus implements ServoBus {
             for (int pass = 0; pass < 3; pass++) {
                 master.sendHold(Protocol.BROADCAST, true);
             }
-            return "module watchdogs off; modules finish their move and hold";
+            return SerialMsg.G1_WATCHDOGS_OFF.text();
         }
         master.sendConfig(ms, limp ? SafeMode.LIMP : SafeMode.HOLD, 0);
         master.send(Protocol.BROADCAST, Command.RESUME);
-        return "modules " + (limp ? "go limp" : "hold") + " after " + ms + " ms without a frame (module watchdog)";
+        return (limp ? SerialMsg.G1_WATCHDOG_LIMP : SerialMsg.G1_WATCHDOG_HOLD).text(ms);
     }
 
     /** ESTOP broadcast three times; every module latches it until the next run's RESUME. */
@@ -179,7 +180,7 @@ public final class G1Bus implements ServoBus {
             master.sendEmergencyStop(mode);
         }
         master.drain(100);
-        return "modules " + mode.name().toLowerCase(java.util.Locale.ROOT) + " until the next run";
+        return (limp ? SerialMsg.G1_STOPPED_LIMP : SerialMsg.G1_STOPPED_HOLD).text();
     }
 
     /**
@@ -205,7 +206,7 @@ public final class G1Bus implements ServoBus {
 
     @Override
     public String whileLost(int watchdogMs, boolean limp) {
-        return "modules stop on their watchdog (" + (limp ? "limp" : "hold") + ") within " + watchdogMs + " ms";
+        return (limp ? SerialMsg.G1_WHILE_LOST_LIMP : SerialMsg.G1_WHILE_LOST_HOLD).text(watchdogMs);
     }
 
     @Override

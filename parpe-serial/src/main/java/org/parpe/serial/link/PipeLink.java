@@ -1,5 +1,6 @@
 package org.parpe.serial.link;
 
+import org.parpe.serial.text.SerialMsg;
 import java.io.IOException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.Condition;
@@ -63,7 +64,7 @@ public final class PipeLink implements ByteLink {
             try {
                 while (len > 0) {
                     if (closed) {
-                        throw new LinkException(name + " is closed");
+                        throw new LinkException(SerialMsg.LINK_CLOSED.text(name));
                     }
                     if (size == ring.length) {
                         changed.awaitNanos(1_000_000);
@@ -92,7 +93,7 @@ public final class PipeLink implements ByteLink {
                     changed.await(1, TimeUnit.MILLISECONDS);
                 }
                 if (closed) {
-                    throw new LinkException(name + " is closed");
+                    throw new LinkException(SerialMsg.LINK_CLOSED.text(name));
                 }
                 int n = Math.min(b.length, Math.min(size, ring.length - head));
                 System.arraycopy(ring, head, b, 0, n);

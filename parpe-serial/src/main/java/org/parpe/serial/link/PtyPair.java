@@ -1,5 +1,6 @@
 package org.parpe.serial.link;
 
+import org.parpe.serial.text.SerialMsg;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -73,19 +74,19 @@ public final class PtyPair implements AutoCloseable {
             socat = new ProcessBuilder("socat", "pty,raw,echo=0,link=" + a, "pty,raw,echo=0,link=" + b)
                     .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
         } catch (IOException e) {
-            throw new IOException("cannot run socat (install it: apt-get install socat): " + e.getMessage(), e);
+            throw new IOException(SerialMsg.SOCAT_MISSING.text(e.getMessage()), e);
         }
         long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(START_TIMEOUT_MS);
         while (!(Files.exists(a) && Files.exists(b))) {
             if (!socat.isAlive() || System.nanoTime() > deadline) {
                 unplug();
-                throw new IOException("socat did not create " + a + " and " + b);
+                throw new IOException(SerialMsg.SOCAT_NO_PTYS.text(a, b));
             }
             try {
                 Thread.sleep(10);
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
-                throw new IOException("interrupted while starting socat", e);
+                throw new IOException(SerialMsg.SOCAT_INTERRUPTED.text(), e);
             }
         }
     }

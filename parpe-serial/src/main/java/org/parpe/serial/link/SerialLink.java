@@ -1,5 +1,6 @@
 package org.parpe.serial.link;
 
+import org.parpe.serial.text.SerialMsg;
 import com.fazecast.jSerialComm.SerialPort;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -49,24 +50,23 @@ public final class SerialLink implements ByteLink {
      */
     public static SerialLink open(String path, int baud) throws LinkException {
         if (baud <= 0) {
-            throw new LinkException("baud rate must be > 0, got " + baud);
+            throw new LinkException(SerialMsg.LINK_BAD_BAUD.text(baud));
         }
         Path p = Path.of(path);
         if (!Files.exists(p)) {
-            throw new LinkException("serial device " + path + " does not exist");
+            throw new LinkException(SerialMsg.LINK_NO_DEVICE.text(path));
         }
         if (Files.isDirectory(p) || Files.isRegularFile(p)) {
-            throw new LinkException(path + " is not a serial device");
+            throw new LinkException(SerialMsg.LINK_NOT_SERIAL.text(path));
         }
         if (!Files.isReadable(p) || !Files.isWritable(p)) {
-            throw new LinkException("no permission to open " + path
-                    + " (add yourself to the group that owns it, e.g. dialout)");
+            throw new LinkException(SerialMsg.LINK_NO_PERMISSION.text(path));
         }
         SerialPort port;
         try {
             port = SerialPort.getCommPort(path);
         } catch (RuntimeException e) {
-            throw new LinkException("cannot use serial device " + path + ": " + e.getMessage());
+            throw new LinkException(SerialMsg.LINK_CANNOT_USE.text(path, e.getMessage()));
         }
         port.setComPortParameters(baud, 8, SerialPort.ONE_STOP_BIT, SerialPort.NO_PARITY);
         port.setFlowControl(SerialPort.FLOW_CONTROL_DISABLED);
@@ -87,16 +87,16 @@ public final class SerialLink implements ByteLink {
         if (!os.startsWith("windows")) {
             switch (errno) {
                 case 25:
-                    return path + " is not a serial device (error 25: it does not take serial port settings)";
+                    return SerialMsg.LINK_NOT_TTY.text(path);
                 case 16:
-                    return "cannot open serial device " + path + " (error 16: another program is using it)";
+                    return SerialMsg.LINK_BUSY.text(path);
                 case 13:
-                    return "no permission to open " + path + " (add yourself to the group that owns it, e.g. dialout)";
+                    return SerialMsg.LINK_NO_PERMISSION.text(path);
                 default:
                     break;
             }
         }
-        return "cannot open serial device " + path + " (error " + errno + "; is another program using it?)";
+        return SerialMsg.LINK_CANNOT_OPEN.text(path, errno);
     }
 
     /**
@@ -112,11 +112,11 @@ public final class SerialLink implements ByteLink {
         long deadline = 0;
         while (len > 0) {
             if (closed) {
-                throw new LinkException(path + " is closed");
+                throw new LinkException(SerialMsg.LINK_CLOSED.text(path));
             }
             int n = port.writeBytes(b, len, off);
             if (n < 0 || n == 0 && port.bytesAvailable() < 0) {
-                throw new LinkException("serial device " + path + " went away (unplugged?)");
+                throw new LinkException(SerialMsg.LINK_GONE.text(path));
             }
             if (n == 0) {
                 // A full output buffer: a real UART drains at the baud rate, a pty only when read.
@@ -124,8 +124,7 @@ public final class SerialLink implements ByteLink {
                 if (deadline == 0) {
                     deadline = now + WRITE_STALL_NANOS;
                 } else if (now - deadline > 0) {
-                    throw new LinkException("serial device " + path + " stopped accepting data for "
-                            + WRITE_STALL_NANOS / 1_000_000 + " ms (unplugged?)");
+                    throw new LinkException(SerialMsg.LINK_STALLED.text(path, WRITE_STALL_NANOS / 1_000_000));
                 }
                 LockSupport.parkNanos(POLL_NANOS);
                 continue;
@@ -140,11 +139,11 @@ public final class SerialLink implements ByteLink {
     public int read(byte[] b) throws IOException {
         for (int i = 0; i < POLLS_PER_READ; i++) {
             if (closed) {
-                throw new LinkException(path + " is closed");
+                throw new LinkException(SerialMsg.LINK_CLOSED.text(path));
             }
             int n = port.readBytes(b, b.length);
             if (n < 0) {
-                throw new LinkException("serial device " + path + " went away (unplugged?)");
+                throw new LinkException(SerialMsg.LINK_GONE.text(path));
             }
             if (n > 0) {
                 return n;

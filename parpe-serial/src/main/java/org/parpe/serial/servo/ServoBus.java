@@ -1,5 +1,6 @@
 package org.parpe.serial.servo;
 
+import org.parpe.serial.text.SerialMsg;
 import java.io.IOException;
 
 /**
@@ -135,19 +136,19 @@ public interface ServoBus extends AutoCloseable {
      */
     default String silenced(int[] ids, ServoModel[] models, int n, int watchdogMs, boolean limp) {
         if (!limp) {
-            return "servos hold their last goal";
+            return SerialMsg.HOLD_LAST_GOAL.text();
         }
         try {
             torque(ids, models, n, false);
         } catch (IOException e) {
-            return "servos keep their last goal (the torque-off could not be sent)";
+            return SerialMsg.KEEP_LAST_GOAL.text();
         }
-        return "torque-off sent (limp)";
+        return SerialMsg.TORQUE_OFF_SENT.text();
     }
 
     /** What the devices do while the host has lost the device, for the user. */
     default String whileLost(int watchdogMs, boolean limp) {
-        return "servos hold their last goal" + (watchdogMs > 0 ? " or stop on their own watchdog" : "");
+        return (watchdogMs > 0 ? SerialMsg.HOLD_OR_WATCHDOG : SerialMsg.HOLD_LAST_GOAL).text();
     }
 
     /**

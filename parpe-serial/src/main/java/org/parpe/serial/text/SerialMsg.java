@@ -4,7 +4,8 @@ import org.parpe.core.text.Key;
 
 /**
  * The keys of the servo buses' own messages: a servo that does not answer, whose torque does
- * not come on or whose model differs from the profile. Each constant is a key of
+ * not come on or whose model differs from the profile, a robot that stopped answering, a lost
+ * device, the emergency stop, a setpoint outside the limits, a servo's fault. Each constant is a key of
  * {@code SerialMessages.properties} (English) and of its translations beside it;
  * {@code SerialMessagesTest} fails on a key missing from a bundle, on a bundle key without a
  * constant here, on a constant no code uses and on placeholders that differ from the English ones.
@@ -26,7 +27,65 @@ public enum SerialMsg implements Key {
     NOT_READ_BACK,
     ANSWERS_NOW,
     DID_NOT_ANSWER_READS,
-    WATCHDOG_NOT_ARMED;
+    WATCHDOG_NOT_ARMED,
+    ANSWER,
+    ANSWER_MISSING,
+
+    // BusThread: the device in messages, a lost or silent bus, the emergency stop
+    UNIT_MODULE,
+    UNIT_SERVO,
+    UNITS_MODULE,
+    UNITS_SERVO,
+    FINAL_HOLD_FAILED,
+    NONE_ANSWERED_SINCE,
+    ESTOP_NOT_CONFIRMED,
+    ESTOP_SENT,
+    ESTOP_NOT_SENT_SILENT,
+    ESTOP_NOT_SENT,
+    NO_REPLY,
+    WATCHDOG_STOPPED,
+    BACK,
+    LINK_LOST,
+
+    // ServoBus, ControlTableBus, G1Bus: what the devices do
+    HOLD_LAST_GOAL,
+    KEEP_LAST_GOAL,
+    TORQUE_OFF_SENT,
+    HOLD_OR_WATCHDOG,
+    NO_WATCHDOG,
+    WATCHDOG_ARMED,
+    CANNOT_GO_LIMP,
+    ESTOP_LIMP,
+    ESTOP_HOLD,
+    G1_WATCHDOGS_OFF,
+    G1_WATCHDOG_LIMP,
+    G1_WATCHDOG_HOLD,
+    G1_STOPPED_LIMP,
+    G1_STOPPED_HOLD,
+    G1_WHILE_LOST_LIMP,
+    G1_WHILE_LOST_HOLD,
+
+    // ServoSet: limits and faults
+    CLAMPED_JOINT_RANGE,
+    CLAMPED_LIMITS,
+    FAULT,
+    NO_FAULT_NOW,
+
+    // SerialLink, PipeLink, PtyPair: the serial device
+    LINK_BAD_BAUD,
+    LINK_NO_DEVICE,
+    LINK_NOT_SERIAL,
+    LINK_NO_PERMISSION,
+    LINK_CANNOT_USE,
+    LINK_NOT_TTY,
+    LINK_BUSY,
+    LINK_CANNOT_OPEN,
+    LINK_CLOSED,
+    LINK_GONE,
+    LINK_STALLED,
+    SOCAT_MISSING,
+    SOCAT_NO_PTYS,
+    SOCAT_INTERRUPTED;
 
     /** The bundle of these keys. */
     public static final String BUNDLE = "org.parpe.serial.text.SerialMessages";

@@ -19,6 +19,7 @@ import org.parpe.sim.config.PartSpec;
 import org.parpe.sim.config.RobotConfig;
 import org.parpe.sim.config.RobotConfigs;
 import org.parpe.sim.internal.Assembly;
+import org.parpe.sim.text.SimMsg;
 
 /**
  * A robot exported to MJCF, URDF or SDF, as {@code parpe export --target mjcf|urdf|sdf} and the
@@ -39,9 +40,10 @@ public final class Export {
         public String summary() {
             long servos = model.joints().stream().filter(RobotModel.Joint::revolute).count();
             int loops = model.closures().size();
-            return model.links().size() + " links, " + servos + " servo joints, " + loops + (loops == 1 ? " loop" : " loops")
-                    + (latches.isEmpty() ? "" : ", " + latches.size() + " latchable plate "
-                    + (latches.size() == 1 ? "pair" : "pairs"));
+            String robot = SimMsg.EXPORT_SUMMARY.text(model.links().size(), servos,
+                    (loops == 1 ? SimMsg.EXPORT_LOOP : SimMsg.EXPORT_LOOPS).text(loops));
+            return latches.isEmpty() ? robot : SimMsg.EXPORT_SUMMARY_LATCHES.text(robot,
+                    (latches.size() == 1 ? SimMsg.EXPORT_LATCH_PAIR : SimMsg.EXPORT_LATCH_PAIRS).text(latches.size()));
         }
     }
 
@@ -64,8 +66,7 @@ public final class Export {
         if (a != null) {
             checkNames(config, target, diags);
             if (config.roots().size() > 1) {
-                diags.error(SourcePos.origin(config.name()), "the configuration holds " + config.roots().size()
-                        + " robots (one per <root>); an export writes one robot");
+                diags.error(SourcePos.origin(config.name()), SimMsg.EXPORT_ROBOTS, config.roots().size());
             }
         }
         if (diags.hasErrors()) {
@@ -90,13 +91,12 @@ public final class Export {
      */
     public static String refusal(Path dir, Collection<String> names) {
         if (Files.exists(dir) && !Files.isDirectory(dir)) {
-            return "'" + dir + "' is a file, not a folder";
+            return SimMsg.EXPORT_DIR_IS_FILE.text(dir);
         }
         for (String name : names) {
             Path p = dir.resolve(name);
             if (Files.exists(p, LinkOption.NOFOLLOW_LINKS) && !Files.isRegularFile(p, LinkOption.NOFOLLOW_LINKS)) {
-                return "'" + p + "' is not a regular file (a link, directory, device or FIFO);"
-                        + " an export replaces its own regular files only: move it away or export to another folder";
+                return SimMsg.EXPORT_NOT_REGULAR.text(p);
             }
         }
         return null;
@@ -117,8 +117,7 @@ public final class Export {
     private static void checkNames(RobotConfig config, String target, DiagnosticSink diags) {
         for (PartSpec p : config.parts()) {
             if (!validName(p.name()) || p.name().equals("world")) {
-                diags.error(p.pos(), "part name '" + p.name() + "' cannot be a " + target.toUpperCase(Locale.ROOT)
-                        + " name: use letters, digits, '_', '.' and '-', not starting with a digit, and not 'world'");
+                diags.error(p.pos(), SimMsg.EXPORT_PART_NAME, p.name(), target.toUpperCase(Locale.ROOT));
             }
         }
     }

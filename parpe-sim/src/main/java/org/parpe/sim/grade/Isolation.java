@@ -10,6 +10,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
+import org.parpe.core.text.Lang;
 import org.parpe.core.xml.FlatXmlFile;
 
 /**
@@ -58,7 +59,8 @@ public final class Isolation {
                 "-XX:TieredStopAtLevel=1",
                 "-XX:MaxMetaspaceSize=128m", "-Xss2m", "-Xshare:auto", "-Djava.awt.headless=true",
                 "-cp", System.getProperty("java.class.path"), GradeChild.class.getName(),
-                challenge.toAbsolutePath().toString(), script.toString(), root.toString(), trace.toAbsolutePath().toString()));
+                challenge.toAbsolutePath().toString(), script.toString(), root.toString(), trace.toAbsolutePath().toString(),
+                Lang.current().toLanguageTag()));
         Process p = new ProcessBuilder(cmd).directory(dir.toFile()).redirectError(ProcessBuilder.Redirect.DISCARD).start();
         p.getOutputStream().close();
         CompletableFuture<String> out = CompletableFuture.supplyAsync(() -> read(p.getInputStream()));

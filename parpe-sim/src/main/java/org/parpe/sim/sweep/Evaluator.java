@@ -11,6 +11,8 @@ import java.util.List;
 import java.util.Map;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.DiagnosticSink;
+import org.parpe.core.diag.Severity;
+import org.parpe.core.text.Message;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
 import org.parpe.core.model.Parameter;
@@ -149,15 +151,21 @@ public final class Evaluator implements PointRunner {
         LoadResult r = ScriptLoader.bind(setup.script(), values);
         if (!r.ok()) {
             List<Diagnostic> problems = r.parameterErrors().isEmpty() ? r.errors() : r.parameterErrors();
-            return failed(point, problems.isEmpty() ? SimMsg.NOT_LOADING.text() : problems.get(0).format());
+            return failed(point, problems.isEmpty() ? Message.of(SimMsg.NOT_LOADING) : SweepRow.error(problems.get(0)));
         }
         Program program = r.program();
-        DiagnosticSink quiet = d -> { };
+        // the run-time error, kept as a diagnostic so the row shows it in the user's language
+        Diagnostic[] runError = new Diagnostic[1];
+        DiagnosticSink quiet = d -> {
+            if (d.severity() == Severity.ERROR && runError[0] == null) {
+                runError[0] = d;
+            }
+        };
         Simulator sim;
         try {
             sim = robotFor(program).simulator();
         } catch (TargetException e) {
-            return failed(point, e.diagnostics().isEmpty() ? e.getMessage() : e.diagnostics().get(0).format());
+            return failed(point, e.diagnostics().isEmpty() ? Message.verbatim(e.getMessage()) : SweepRow.error(e.diagnostics().get(0)));
         }
         JointTravel travel = new JointTravel();
         SimMetrics[] measured = new SimMetrics[1];
@@ -182,7 +190,8 @@ public final class Evaluator implements PointRunner {
         double time = m.duration();
         return new SweepRow(point, time, m.distance(), m.dx(), time > 0 ? m.dx() / time : 0, m.speed(),
                 m.maxTiltDeg(), travel.total(), m.maxTiltDeg() > setup.fallTiltDeg(),
-                outcome.status() == RunOutcome.Status.ERROR ? outcome.message() : "",
+                outcome.status() != RunOutcome.Status.ERROR ? Message.EMPTY
+                        : runError[0] != null ? SweepRow.error(runError[0]) : Message.verbatim(outcome.message()),
                 m.score() == null ? Double.NaN : m.score().score(), m.score());
     }
 
@@ -259,7 +268,7 @@ public final class Evaluator implements PointRunner {
                 d.severity().word(), d.text(), problems.size() - 1);
     }
 
-    private static SweepRow failed(Point point, String why) {
+    private static SweepRow failed(Point point, Message why) {
         double nan = Double.NaN;
         return new SweepRow(point, nan, nan, nan, nan, nan, nan, nan, false, why);
     }

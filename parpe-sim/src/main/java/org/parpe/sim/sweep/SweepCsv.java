@@ -7,6 +7,7 @@ import java.util.Map;
 import java.util.TreeMap;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import org.parpe.core.text.Message;
 import org.parpe.core.io.CsvCells;
 import org.parpe.core.lang.Numbers;
 
@@ -116,8 +117,10 @@ public final class SweepCsv {
             b.append(',').append(Double.isNaN(v) ? "" : String.format(Locale.ROOT, "%.6f", v));
         }
         b.append(',').append(row.fell() ? 1 : 0).append(',');
-        if (!row.error().isEmpty()) {
-            String error = CsvCells.safe(row.error().replaceAll("[\\r\\n]+", " "));
+        if (!row.ok()) {
+            // English in every language: the file is data for scripts, and shards from machines
+            // in different languages merge into one (docs/decisions.md, "Language of messages")
+            String error = CsvCells.safe(row.error().format(Locale.ROOT).replaceAll("[\\r\\n]+", " "));
             b.append('"').append(error.replace("\"", "\"\"")).append('"');
         }
         return b.toString();
@@ -162,7 +165,8 @@ public final class SweepCsv {
                 }
                 Point p = new Point(Integer.parseInt(f[0]), Integer.parseInt(f[2]), Integer.parseInt(f[3]), values,
                         Long.parseLong(f[4]));
-                rows.add(new SweepRow(p, m[0], m[1], m[2], m[3], m[4], m[5], m[6], f[columns - 2].equals("1"), error,
+                rows.add(new SweepRow(p, m[0], m[1], m[2], m[3], m[4], m[5], m[6], f[columns - 2].equals("1"),
+                        error.isEmpty() ? Message.EMPTY : Message.verbatim(error),
                         score));
             } catch (NumberFormatException e) {
                 throw new SweepException("a column that should be a number is not, in '" + line + "'");

@@ -3,6 +3,8 @@ package org.parpe.sim.world;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import org.parpe.core.text.Message;
+import org.parpe.sim.text.SimMsg;
 
 /**
  * The score of a run in a world and its parts.
@@ -22,29 +24,33 @@ public record WorldScore(double score, double timeToZone, double pathDistance, i
     /**
      * The parts that count, in words, as {@code parpe race} and {@code parpe optimize} print them:
      * "zone 31.2 s, path 1.40 m, 2 checkpoints, 1 delivered, 2 presses, disqualified (tilt)", or
-     * "-" when none does.
+     * "-" when none does; in the chosen language ({@link org.parpe.core.text.Lang}).
      */
     public String inWords() {
-        List<String> p = new ArrayList<>();
+        List<Message> p = new ArrayList<>();
         if (!Double.isNaN(timeToZone)) {
-            p.add(String.format(Locale.ROOT, "zone %.1f s", timeToZone));
+            p.add(Message.of(SimMsg.SCORE_ZONE, String.format(Locale.ROOT, "%.1f", timeToZone)));
         }
         if (pathDistance > 0) {
-            p.add(String.format(Locale.ROOT, "path %.2f m", pathDistance));
+            p.add(Message.of(SimMsg.SCORE_PATH, String.format(Locale.ROOT, "%.2f", pathDistance)));
         }
         if (checkpoints > 0) {
-            p.add(checkpoints + (checkpoints == 1 ? " checkpoint" : " checkpoints"));
+            p.add(Message.of(checkpoints == 1 ? SimMsg.SCORE_CHECKPOINT : SimMsg.SCORE_CHECKPOINTS, checkpoints));
         }
         if (delivered > 0) {
-            p.add(delivered + " delivered");
+            p.add(Message.of(SimMsg.SCORE_DELIVERED, delivered));
         }
         if (presses > 0) {
-            p.add(presses + (presses == 1 ? " press" : " presses"));
+            p.add(Message.of(presses == 1 ? SimMsg.SCORE_PRESS : SimMsg.SCORE_PRESSES, presses));
         }
         if (!disqualified.isEmpty()) {
-            p.add("disqualified (" + disqualified + ")");
+            p.add(Message.of(SimMsg.SCORE_DISQUALIFIED, switch (disqualified) {
+                case "tilt" -> Message.of(SimMsg.SCORE_TILT);
+                case "arena" -> Message.of(SimMsg.SCORE_ARENA);
+                default -> disqualified;
+            }));
         }
-        return p.isEmpty() ? "-" : String.join(", ", p);
+        return p.isEmpty() ? "-" : String.join(SimMsg.LIST_SEPARATOR.text(), p.stream().map(Message::toString).toList());
     }
 
     /** The score's fields as JSON members (without braces), to add to the simulator's metrics. */

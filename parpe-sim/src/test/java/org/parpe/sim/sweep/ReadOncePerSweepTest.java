@@ -13,6 +13,7 @@ import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.parpe.core.text.Message;
 
 /**
  * Issue 19, item 8: a sweep reads its script, includes and robot file once, when it starts, and
@@ -70,7 +71,7 @@ class ReadOncePerSweepTest {
         List<SweepRow> two = rows(sweep, 2);
         assertEquals(4, two.size());
         for (SweepRow r : two) {
-            assertEquals("", r.error(), r.values().toString());
+            assertEquals(Message.EMPTY, r.error(), r.values().toString());
         }
         assertEquals(two, rows(sweep, 1), "the rows do not depend on --jobs");
     }
@@ -81,7 +82,7 @@ class ReadOncePerSweepTest {
         Sweep sweep = new Sweep(ev, SweepSpec.grid(List.of(VarySpec.parse("last=3,7,3", ev.parameters())), 1, 3));
         List<SweepRow> rows = rows(sweep, 2);
         List<String> errors = new ArrayList<>();
-        rows.forEach(r -> errors.add(r.error()));
+        rows.forEach(r -> errors.add(r.error().toString()));
         assertEquals(List.of("", "", ""), errors);
         // a 4-module and an 8-module snake move differently; the 4-module one again as the first time
         assertNotEquals(rows.get(0).distance(), rows.get(1).distance());

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
+import org.parpe.core.text.Message;
 
 /**
  * The rule of "best" that {@code parpe sweep} and the IDE share (issue 23, item 1: lesson 11's
@@ -16,7 +17,8 @@ class SweepBestTest {
 
     private static SweepRow row(int index, double forwardSpeed, double tilt, boolean fell, String error) {
         Point p = new Point(index, index, 0, Map.of("bend", 10.0 * index), 0);
-        return new SweepRow(p, 30, forwardSpeed * 30, forwardSpeed * 30, forwardSpeed, forwardSpeed, tilt, 1000, fell, error);
+        return new SweepRow(p, 30, forwardSpeed * 30, forwardSpeed * 30, forwardSpeed, forwardSpeed, tilt, 1000, fell,
+                error.isEmpty() ? Message.EMPTY : Message.verbatim(error));
     }
 
     // Lesson 11's runs 12 (bend 50, upright), 15 and 18 (faster, but fallen over), from its CSV.

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
+import org.parpe.core.text.Message;
 
 /**
  * Issue 18 items 8 and 10: an error cell that begins with {@code =} (a script named
@@ -18,7 +19,7 @@ class SweepCsvCellTest {
     void anErrorCellThatASpreadsheetWouldEvaluateGetsAnApostrophe() {
         Point p = new Point(0, 0, 0, Map.of("amp", -1.5), 1);
         SweepRow row = new SweepRow(p, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN,
-                false, "=HYPERLINK(\"http://x\").xml:1:1: error: bad");
+                false, Message.verbatim("=HYPERLINK(\"http://x\").xml:1:1: error: bad"));
         String line = SweepCsv.line(row, 1);
         assertTrue(line.endsWith(",\"'=HYPERLINK(\"\"http://x\"\").xml:1:1: error: bad\""), line);
         assertTrue(line.contains(",-1.5,"), "a negative number stays a number: " + line);

@@ -11,6 +11,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
+import org.parpe.core.text.Message;
 
 class SweepTest {
     private static final double DURATION = 1.5;
@@ -70,25 +71,47 @@ class SweepTest {
         SweepResult read = SweepCsv.read(lines);
         assertEquals(lines.subList(1, 7), read.rows().subList(0, 6).stream().map(r -> SweepCsv.line(r, 6)).toList());
         SweepRow failed = read.rows().get(6);
-        assertEquals("bend 50 > max, \"60\"", failed.error());
+        assertEquals("bend 50 > max, \"60\"", failed.error().toString());
         assertTrue(Double.isNaN(failed.forwardSpeed()) && !failed.ok());
         assertEquals(lines.get(7), SweepCsv.line(failed, 7));
         assertThrows(SweepException.class, () -> SweepCsv.read(List.of(lines.get(0), "0,6,0,0,7,20")));
+    }
+
+    /**
+     * Issue 32 item 6: a row's error is a message, shown in the user's language where it is shown
+     * (the IDE's results table), while the CSV file holds it in English whatever the language (a
+     * file for scripts, merged from shards of machines in other languages). Before, the row held
+     * the text preformatted in the language of the run, and the file held that.
+     */
+    @Test
+    void aRowsErrorIsShownInTheUsersLanguageAndWrittenInEnglish() throws Exception {
+        Evaluator ev = Scripts.snake(0.1, Map.of());
+        org.parpe.core.text.Lang.use(java.util.Locale.GERMAN);
+        try {
+            SweepRow row = ev.run(new Point(0, 0, 0, Map.of("bend", 90.0), 1), new Cancellation());
+            assertFalse(row.ok());
+            assertTrue(row.error().toString().endsWith(": error: Parameter 'bend' muss <= 60 sein, ist aber 90"),
+                    row.error().toString());
+            assertTrue(SweepCsv.line(row, 1).endsWith(": error: parameter 'bend' must be <= 60, got 90\""),
+                    SweepCsv.line(row, 1));
+        } finally {
+            org.parpe.core.text.Lang.use(java.util.Locale.ENGLISH);
+        }
     }
 
     /** A sweep in a world has a last {@code score} column after the quoted error: it reads back too (merge --plot). */
     @Test
     void aScoredCsvReadsBackWithItsScores() throws Exception {
         Point p = new Point(0, 0, 0, Map.of("bend", 20.0), 7);
-        SweepRow ok = new SweepRow(p, 5, 1, 0.9, 0.18, 0.2, 12, 300, false, "", 42.5);
+        SweepRow ok = new SweepRow(p, 5, 1, 0.9, 0.18, 0.2, 12, 300, false, Message.EMPTY, 42.5);
         SweepRow failed = new SweepRow(new Point(1, 1, 0, Map.of("bend", 50.0), 7), Double.NaN, Double.NaN, Double.NaN,
-                Double.NaN, Double.NaN, Double.NaN, Double.NaN, false, "bend 50 > max, \"60\"", Double.NaN);
+                Double.NaN, Double.NaN, Double.NaN, Double.NaN, false, Message.verbatim("bend 50 > max, \"60\""), Double.NaN);
         List<String> lines = List.of(SweepCsv.header(List.of(Axis.list("bend", List.of(20.0, 50.0))), true),
                 SweepCsv.line(ok, 2, true), SweepCsv.line(failed, 2, true));
         assertTrue(lines.get(0).endsWith(",error,score"), lines.get(0));
         SweepResult read = SweepCsv.read(lines);
         assertEquals(42.5, read.rows().get(0).score());
-        assertEquals("bend 50 > max, \"60\"", read.rows().get(1).error());
+        assertEquals("bend 50 > max, \"60\"", read.rows().get(1).error().toString());
         assertEquals(lines.subList(1, 3), read.rows().stream().map(r -> SweepCsv.line(r, 2, true)).toList());
     }
 

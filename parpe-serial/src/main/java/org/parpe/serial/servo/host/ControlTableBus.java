@@ -1,5 +1,6 @@
 package org.parpe.serial.servo.host;
 
+import org.parpe.serial.text.SerialMsg;
 import java.io.IOException;
 import org.parpe.serial.link.ByteLink;
 import org.parpe.serial.servo.Registers;
@@ -311,7 +312,7 @@ public final class ControlTableBus implements ServoBus {
     @Override
     public String watchdog(int[] ids, ServoModel[] models, int n, int ms, boolean limp) throws IOException {
         if (!codec.busWatchdog()) {
-            return codec.family() + " servos have no watchdog: they hold their last goal when the host falls silent";
+            return SerialMsg.NO_WATCHDOG.text(codec.family());
         }
         // Units of 20 ms; writing 0 first also clears an earlier Bus Watchdog error.
         int units = watchdogUnits(ms);
@@ -322,8 +323,8 @@ public final class ControlTableBus implements ServoBus {
                 covered++;
             }
         }
-        return covered + " of " + n + " servos stop and hold after " + units * 20 + " ms without a packet (Bus Watchdog)"
-                + (limp ? "; " + codec.family() + " servos cannot go limp on their own, PARPE turns their torque off when it can" : "");
+        String armed = SerialMsg.WATCHDOG_ARMED.text(covered, n, units * 20);
+        return limp ? SerialMsg.CANNOT_GO_LIMP.text(armed, codec.family()) : armed;
     }
 
     @Override
@@ -341,10 +342,10 @@ public final class ControlTableBus implements ServoBus {
             for (int pass = 0; pass < 3; pass++) {
                 torque(ids, models, n, false);
             }
-            return "servos limp (torque off)";
+            return SerialMsg.ESTOP_LIMP.text();
         }
         holdHere(ids, models, n);
-        return "servos hold where they are";
+        return SerialMsg.ESTOP_HOLD.text();
     }
 
     @Override

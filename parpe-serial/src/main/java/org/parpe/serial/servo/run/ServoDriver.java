@@ -1,5 +1,6 @@
 package org.parpe.serial.servo.run;
 
+import org.parpe.core.text.Message;
 import org.parpe.serial.text.SerialMsg;
 import java.io.IOException;
 import java.util.List;
@@ -73,7 +74,7 @@ public final class ServoDriver extends BusThread {
 
     private ServoDriver(LinkOpener opener, ServoBus bus, BusConfig config, HardwareProfile profile, int[] runModules,
                         BusReport report) {
-        super(config, report, profile.protocol().unit());
+        super(config, report, profile.protocol().modules());
         this.opener = opener;
         this.bus = bus;
         this.profile = profile;
@@ -357,8 +358,8 @@ public final class ServoDriver extends BusThread {
 
     /** The safe start again (present positions held, torque read back), then the watchdog. */
     @Override
-    protected String setUpAgain() throws IOException {
-        String detail = setUp.holdAgain(bus);
+    protected Message setUpAgain() throws IOException {
+        Message detail = setUp.holdAgain(bus);
         armWatchdog();
         failedReads = 0;
         readAttempt = 0;

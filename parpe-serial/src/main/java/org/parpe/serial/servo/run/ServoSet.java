@@ -1,5 +1,7 @@
 package org.parpe.serial.servo.run;
 
+import org.parpe.core.text.Message;
+import org.parpe.serial.text.SerialMsg;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
@@ -140,11 +142,15 @@ final class ServoSet {
      */
     private static String clamped(ServoMapping m, double v, long tick, double c) {
         if ((m.where() == null || m.where() == SourcePos.NONE) && m.min() == -m.max()) {
-            return String.format(Locale.ROOT, "module %d commanded %.2f° at tick %d, outside the joint range ±%.0f°; "
-                    + "sending %.0f° (further clamps are counted)", m.module(), v, tick, m.max(), c);
+            return SerialMsg.CLAMPED_JOINT_RANGE.text(m.module(), f2(v), tick, String.format(Locale.ROOT, "%.0f", m.max()),
+                    String.format(Locale.ROOT, "%.0f", c));
         }
-        return String.format(Locale.ROOT, "module %d commanded %.2f° at tick %d, outside its limits %.2f..%.2f° (%s); "
-                + "sending %.2f° (further clamps are counted)", m.module(), v, tick, m.min(), m.max(), m.where(), c);
+        return SerialMsg.CLAMPED_LIMITS.text(m.module(), f2(v), tick, f2(m.min()), f2(m.max()), m.where(), f2(c));
+    }
+
+    /** A number with two decimals and a point, as the scripts write them. */
+    private static String f2(double v) {
+        return String.format(Locale.ROOT, "%.2f", v);
     }
 
     /** The run's tick of the goals {@link #takeGoals} took last, mod 2¹⁶ (bus thread). */
@@ -209,12 +215,11 @@ final class ServoSet {
                 newFaults++;
                 ServoMapping m = s.mapping;
                 String what = bus.describeFault(m.servo(), m.model(), errors[k]);
-                report.accept(String.format(Locale.ROOT, "servo %d (module %d) reports %s; it may have turned its "
-                        + "torque off: let it cool down or remove the load, then power-cycle it", m.servo(), m.module(),
+                report.accept(SerialMsg.FAULT.text(Message.of(SerialMsg.WHO_SERVO, m.servo(), m.module()),
                         what == null ? String.format("error 0x%02X", errors[k]) : what));
             } else if (!faulty && s.faultShown) {
                 s.faultShown = false;
-                report.accept("servo " + s.mapping.servo() + " (module " + s.mapping.module() + ") reports no fault now");
+                report.accept(SerialMsg.NO_FAULT_NOW.text(Message.of(SerialMsg.WHO_SERVO, s.mapping.servo(), s.mapping.module())));
             }
         }
         return newFaults;

@@ -1,5 +1,6 @@
 package org.parpe.serial.servo.run;
 
+import org.parpe.core.text.Message;
 import org.parpe.serial.text.SerialMsg;
 import java.io.IOException;
 import java.util.ArrayList;
@@ -138,8 +139,8 @@ final class ServoSetUp {
         set.pack();
     }
 
-    /** After a silence: the driven servos held again; returns {@code " (4 of 5 answer, missing 3)"}. */
-    String holdAgain(ServoBus bus) throws IOException {
+    /** After a silence: the driven servos held again; returns {@code 4 of 5 answer, missing 3}. */
+    Message holdAgain(ServoBus bus) throws IOException {
         holdAll(bus);
         List<Integer> missing = new ArrayList<>();
         for (int j = 0; j < set.size(); j++) {
@@ -147,8 +148,9 @@ final class ServoSetUp {
                 missing.add(set.mapping(j).module());
             }
         }
-        return String.format(Locale.ROOT, " (%d of %d answer%s)", set.size() - missing.size(), set.size(),
-                missing.isEmpty() ? "" : ", missing " + org.parpe.serial.bus.Discovery.format(missing));
+        int answer = set.size() - missing.size();
+        return missing.isEmpty() ? Message.of(SerialMsg.ANSWER, answer, set.size())
+                : Message.of(SerialMsg.ANSWER_MISSING, answer, set.size(), org.parpe.serial.bus.Discovery.format(missing));
     }
 
     /**

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
@@ -15,6 +16,7 @@ import org.junit.jupiter.api.Timeout;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.run.RunInfo;
 import org.parpe.core.run.RunOutcome;
+import org.parpe.core.text.Lang;
 import org.parpe.serial.bus.BusConfig;
 import org.parpe.serial.bus.BusReport;
 import org.parpe.serial.bus.SafeMode;
@@ -184,5 +186,28 @@ class ServoDriverTest extends OverPty {
         assertTrue(reports.stream().anyMatch(r -> r.startsWith("bus: emergency stop sent but not confirmed: no servo "
                 + "has answered since ")), reports.toString());
         assertFalse(reports.contains("bus: emergency stop sent; servos hold where they are"), reports.toString());
+    }
+
+    /**
+     * A lost robot and the emergency stop into it are told in the user's language (issue 38: the
+     * servo buses' messages come from the bundles); before, they were English whatever the language.
+     */
+    @Test
+    void aSilentBusAndItsEmergencyStopAreToldInGerman() throws Exception {
+        Lang.use(Locale.GERMAN);
+        try {
+            start(SafeMode.HOLD);
+            driver.accept(0, 0, new double[] {10, 10, 10});
+            await(() -> Math.abs(emulator.angle(13) - 10) < 0.1, "servo 13 at 10°");
+            emulator.close();
+            await(() -> reports.stream().anyMatch(r -> r.startsWith("bus: kein Servo an ")), "the silence reported");
+            assertTrue(reports.stream().anyMatch(r -> r.contains(" (der Roboter antwortet seit ")
+                    && r.contains("; die Servos halten ihr letztes Ziel; es wird gewartet, bis sie wieder antworten")), reports.toString());
+            driver.emergencyStop();
+            assertTrue(reports.stream().anyMatch(r -> r.startsWith("bus: Not-Aus gesendet, aber nicht bestätigt: seit ")
+                    && r.endsWith(" hat kein Servo geantwortet; schalte die Stromversorgung der Servos aus")), reports.toString());
+        } finally {
+            Lang.use(Locale.ENGLISH);
+        }
     }
 }
