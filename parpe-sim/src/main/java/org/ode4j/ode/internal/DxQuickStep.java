@@ -2795,22 +2795,9 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 
 	/** PARPE: lambda of each row from the step before ({@link WarmStart}), and fc = iMJ * lambda. */
 	private static void warmStartRows(dxQuickStepperStage4CallContext ctx, WarmStart warm) {
+		eachJointsRows(ctx, warm, WarmStart::start);
 		dxQuickStepperLocalContext local = ctx.m_localContext;
 		double[] lambda = ctx.m_lambda;
-		int[] mindex = local.m_mindex;
-		DJointWithInfo1[] infos = local.m_jointinfos;
-		for (int ji = 0; ji < local.m_nj; ji++) {
-			DxJoint joint = infos[ji].joint;
-			int from = getMIndex(mindex, ji);
-			int rows = getMIndex(mindex, ji + 1) - from;
-			if (joint instanceof org.ode4j.ode.internal.joints.DxJointContact) {
-				warm.startContact((org.ode4j.ode.internal.joints.DxJointContact) joint, lambda, from, rows);
-			} else {
-				for (int r = 0; r < rows; r++) {
-					lambda[from + r] = joint.lambda[r] * warm.scale;
-				}
-			}
-		}
 		double[] fc = ctx.m_cforce;
 		double[] iMJ = ctx.m_iMJ;
 		int[] jb = local.m_jb;
@@ -2836,19 +2823,17 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 
 	/** PARPE: each joint keeps the forces its rows ended with, each contact in {@code warm}, for the next step. */
 	private static void keepRows(dxQuickStepperStage4CallContext ctx, WarmStart warm) {
+		eachJointsRows(ctx, warm, WarmStart::keep);
+	}
+
+	/** PARPE: {@code action} on each joint of the island with its rows' place in {@code ctx}'s lambda. */
+	private static void eachJointsRows(dxQuickStepperStage4CallContext ctx, WarmStart warm, WarmStart.RowAction action) {
 		dxQuickStepperLocalContext local = ctx.m_localContext;
-		double[] lambda = ctx.m_lambda;
 		int[] mindex = local.m_mindex;
 		DJointWithInfo1[] infos = local.m_jointinfos;
 		for (int ji = 0; ji < local.m_nj; ji++) {
-			DxJoint joint = infos[ji].joint;
 			int from = getMIndex(mindex, ji);
-			int rows = getMIndex(mindex, ji + 1) - from;
-			if (joint instanceof org.ode4j.ode.internal.joints.DxJointContact) {
-				warm.keepContact((org.ode4j.ode.internal.joints.DxJointContact) joint, lambda, from, rows);
-			} else {
-				System.arraycopy(lambda, from, joint.lambda, 0, rows);
-			}
+			action.apply(warm, infos[ji].joint, ctx.m_lambda, from, getMIndex(mindex, ji + 1) - from);
 		}
 	}
 

@@ -2,6 +2,7 @@ package org.ode4j.ode.internal;
 
 import org.ode4j.ode.DContactGeom;
 import org.ode4j.ode.DGeom;
+import org.ode4j.ode.internal.joints.DxJoint;
 import org.ode4j.ode.internal.joints.DxJointContact;
 
 /**
@@ -59,11 +60,40 @@ public final class WarmStart {
         java.util.Arrays.fill(taken, 0, count, false);
     }
 
+    /** What the solver does with one joint's rows {@code lambda[from..from+rows)}: {@link #start} or {@link #keep}. */
+    @FunctionalInterface
+    interface RowAction {
+        void apply(WarmStart warm, DxJoint joint, double[] lambda, int from, int rows);
+    }
+
+    /**
+     * Writes into {@code lambda[from..from+rows)} what {@code joint}'s rows start from: a joint's
+     * own forces of the step before, a contact's those of the contact it continues, times {@link #scale}.
+     */
+    void start(DxJoint joint, double[] lambda, int from, int rows) {
+        if (joint instanceof DxJointContact c) {
+            startContact(c, lambda, from, rows);
+        } else {
+            for (int r = 0; r < rows; r++) {
+                lambda[from + r] = joint.lambda[r] * scale;
+            }
+        }
+    }
+
+    /** Keeps the forces {@code lambda[from..from+rows)} that {@code joint}'s rows ended this step with. */
+    void keep(DxJoint joint, double[] lambda, int from, int rows) {
+        if (joint instanceof DxJointContact c) {
+            keepContact(c, lambda, from, rows);
+        } else {
+            System.arraycopy(lambda, from, joint.lambda, 0, rows);
+        }
+    }
+
     /**
      * Writes into {@code lambda[from..from+rows)} the forces of the last step's contact that
      * {@code c} continues, times {@link #scale}; leaves them zero if it continues none.
      */
-    void startContact(DxJointContact c, double[] lambda, int from, int rows) {
+    private void startContact(DxJointContact c, double[] lambda, int from, int rows) {
         DContactGeom g = c.getContact().geom;
         int best = -1;
         double bestD2 = REACH * REACH;
@@ -90,7 +120,7 @@ public final class WarmStart {
     }
 
     /** Keeps the forces {@code lambda[from..from+rows)} that contact {@code c} ended this step with. */
-    void keepContact(DxJointContact c, double[] lambda, int from, int rows) {
+    private void keepContact(DxJointContact c, double[] lambda, int from, int rows) {
         int i = nextCount++;
         if (2 * nextCount > nextGeoms.length) {
             int room = nextCount + (nextCount >> 2) + 16;

@@ -12,8 +12,9 @@ import org.parpe.sim.internal.Docking;
  * module's angle in radians ({@code ref} is the initial angle); a position servo {@code m<ID>} per
  * joint whose control is that angle, with the servo's torque as its force range; loops
  * closed by {@code weld} equality constraints; the simulator's contact exclusions; friction on
- * the floor and between parts; a 0.5 ms step (the servo's stiffness needs it; MuJoCo's loop
- * closures are soft constraints, and PARPE's 5 ms step lets a 12-module loop open by 6 mm there).
+ * the floor and between parts, in Coulomb's (elliptic) cone; a 0.5 ms step (the servo's
+ * stiffness needs it; MuJoCo's loop closures are soft constraints, and PARPE's 5 ms step lets a
+ * 12-module loop open by 6 mm there).
  */
 public final class Mjcf {
     /**
@@ -21,11 +22,13 @@ public final class Mjcf {
      * a constraint: it holds the speed it is told, gain × error capped at the servo's speed, with
      * up to its torque); as an MJCF servo that is {@code kv·(gain·(ctrl − q) − q̇)}, stiffer the
      * larger kv. With kv = 0.2 N·m·s/rad (kp = 40 × 0.2 = 8) the joint angles follow PARPE's
-     * within 1–2°; it needs MuJoCo's step at 0.5 ms (at 1 ms the optimised race snake diverges).
-     * It is still far softer than ODE's motor (hello-snake goes 0.82 × as far in MuJoCo), but kv 1
-     * already makes the optimised snake diverge at 0.5 ms: MuJoCo's implicit integrator treats the
-     * velocity feedback as damping also while the force range clamps it (docs/simulator.md,
-     * "PARPE against MuJoCo").
+     * within about 1° (RMS over a hello-snake run), and a stiffer servo brings the gaits no nearer
+     * PARPE's (kv 1, stable at a 0.05 ms step: hello-snake 0.57 m instead of 0.61 m). A stiffer
+     * one is not stable at 0.5 ms: while the force range clamps a servo, MuJoCo integrates its
+     * force explicitly, and 0.4 N·m for one step moves the lightest joint (1.1e-5 kg·m² as MuJoCo
+     * sees it) by 18 rad/s, far across the 0.4/kv rad/s in which the servo is not clamped, so it
+     * chatters from bound to bound, the more the stiffer (measured: kv 0.5 diverges at 0.5 ms, kv 2
+     * at 0.25 ms, kv 1 holds at 0.1 ms; docs/decisions.md, "PARPE's step and the MuJoCo cross-check").
      */
     static final double KP = 8;
     /** The custom numeric that tells a runner the servo's speed limit, rad/s. */
@@ -72,7 +75,10 @@ public final class Mjcf {
             x.start("numeric").attr("name", LATCH_CATCH).attr("data", Docking.DRAW_DISTANCE, Docking.DRAW_ANGLE).end();
         }
         x.end();
-        x.start("option").attr("timestep", STEP).attr("integrator", "implicit").attr("gravity", 0, 0, -9.81).end();
+        // Coulomb's cone, not MuJoCo's default pyramid: ODE's pyramid in PARPE gives mu along each floor axis and more
+        // between them, MuJoCo's gives mu/sqrt(2) on the diagonals, the cone mu in every direction (docs/simulator.md)
+        x.start("option").attr("timestep", STEP).attr("integrator", "implicit").attr("cone", "elliptic")
+                .attr("gravity", 0, 0, -9.81).end();
         x.start("default");
         x.start("geom").attr("friction", RobotModel.selfFriction(), 0.005, 0.0001).attr("condim", "3").end();
         x.start("joint").attr("limited", "true").attr("range", -RobotModel.range(), RobotModel.range()).end();
