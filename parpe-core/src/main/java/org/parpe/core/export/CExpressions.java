@@ -28,6 +28,7 @@ final class CExpressions implements ExprTree.Visitor<String> {
     /** The unchecked form of the common case ({@link #fastFunction}), and the number of its next kept value. */
     private final boolean fast;
     private int keptNext;
+    private int memos;
     private boolean keeping;
     private int temps;
     private int depth = 1;
@@ -78,10 +79,16 @@ final class CExpressions implements ExprTree.Visitor<String> {
      * this tree, or −1 where it keeps none. Only for trees without {@code rand()} and local sensors
      * ({@link #fastForm}).
      */
-    static String fastFunction(String name, Node root, int[] sensorSlot, int keptFirst) {
+    static Fast fastFunction(String name, Node root, int[] sensorSlot, int keptFirst) {
         CExpressions c = new CExpressions(sensorSlot, keptFirst < 0 ? null : new Kept(), true, keptFirst);
-        return c.text("static inline double " + name
-                + "(parsl_rt *r, const inst_view *v, int16_t k, const parsl_fast_mod *m)", c.emit(root));
+        String result = c.emit(root);
+        return new Fast(c.text("static inline double " + name
+                + "(parsl_rt *r, const inst_view *v, int16_t k, const parsl_fast_mod *m, parsl_memo *memo)", result),
+                c.memos);
+    }
+
+    /** An unchecked form's C, and how many values it shares between modules ({@code memo[]}, {@link ModuleConstants#worthSharing}). */
+    record Fast(String text, int memos) {
     }
 
     /** Whether {@code root} has an unchecked form: no {@code rand()} (a second run would draw again), no local sensor. */
@@ -137,6 +144,9 @@ final class CExpressions implements ExprTree.Visitor<String> {
      * the interpreter does.
      */
     private String emit(Node n) {
+        if (fast && !keeping && (kept == null || !ModuleConstants.worthKeeping(n)) && ModuleConstants.worthSharing(n)) {
+            return shared(n);
+        }
         if (kept == null || keeping || !ModuleConstants.worthKeeping(n)) {
             return ExprTree.visit(n, this);
         }
@@ -157,6 +167,31 @@ final class CExpressions implements ExprTree.Visitor<String> {
                 .append(";\n").append(pad).append("    parsl_kept_ok").append(slot).append(" = 1;\n").append(pad)
                 .append("}\n#endif\n");
         return v;
+    }
+
+    /**
+     * In the unchecked form, a value the same for every module in the tick (with the same {@code
+     * $cycle} where it reads it): computed for the first and reused, the same operations on the
+     * same values. A guard that fails on the way stores nothing.
+     */
+    private String shared(Node n) {
+        String memo = "memo[" + memos++ + "]";
+        String t = temp();
+        line("if (" + memo + ".ok" + (ModuleConstants.readsCycle(n) ? " && parsl_same(" + memo + ".cycle, m->cycle)" : "")
+                + ") {");
+        line("    " + t + " = " + memo + ".value;");
+        line("} else {");
+        depth++;
+        keeping = true;
+        String v = ExprTree.visit(n, this);
+        keeping = false;
+        line(t + " = " + v + ";");
+        line(memo + ".value = " + t + ";");
+        line(memo + ".cycle = m->cycle;");
+        line(memo + ".ok = 1;");
+        depth--;
+        line("}");
+        return t;
     }
 
     private String temp() {

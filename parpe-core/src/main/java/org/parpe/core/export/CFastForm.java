@@ -29,13 +29,14 @@ final class CFastForm {
             int[] sensorSlot) {
         StringBuilder c = new StringBuilder("#ifdef PARSL_FAST\n#include \"parsl_inst.h\"\n\n");
         StringBuilder dispatch = new StringBuilder();
-        java.util.Set<Integer> written = new java.util.HashSet<>();
+        java.util.Map<Integer, Integer> written = new java.util.HashMap<>(); // expression: its shared values
         for (int a = 0; a < automata.size(); a++) {
             Automaton aut = automata.get(a);
             if (aut.times().stream().anyMatch(tm -> tm.duration().perModule())) {
                 continue;
             }
             StringBuilder cases = new StringBuilder();
+            StringBuilder memos = new StringBuilder();
             for (int s = 0; s < aut.states().size(); s++) {
                 StateDef st = aut.states().get(s);
                 if (aut.times().get(s).exit() != null || st.angles().size() != 1
@@ -44,18 +45,24 @@ final class CFastForm {
                 }
                 Expression e = st.angles().get(0);
                 int x = id.applyAsInt(e);
-                if (written.add(x)) {
-                    c.append("/* ").append(CText.comment(e.text())).append(", unchecked */\n");
-                    c.append(CExpressions.fastFunction("f" + x, e.root(), sensorSlot, keptFirst.applyAsInt(x)));
-                    c.append('\n');
+                if (!written.containsKey(x)) {
+                    CExpressions.Fast f = CExpressions.fastFunction("f" + x, e.root(), sensorSlot, keptFirst.applyAsInt(x));
+                    c.append("/* ").append(CText.comment(e.text())).append(", unchecked */\n").append(f.text()).append('\n');
+                    written.put(x, f.memos());
                 }
-                cases.append("        case ").append(s).append(": a = f").append(x).append("(r, v, k, &m); break;\n");
+                String memo = "0";
+                if (written.get(x) > 0) {
+                    memo = "memo" + s;
+                    memos.append("    parsl_memo ").append(memo).append('[').append(written.get(x)).append("] = {{0, 0, 0}};\n");
+                }
+                cases.append("        case ").append(s).append(": a = f").append(x).append("(r, v, k, &m, ").append(memo)
+                        .append("); break;\n");
             }
             if (cases.isEmpty()) {
                 continue;
             }
             c.append("/* automaton ").append(CText.comment(aut.name())).append(" */\n");
-            c.append(String.format(java.util.Locale.ROOT, LOOP, a, aut.states().size(), cases));
+            c.append(String.format(java.util.Locale.ROOT, LOOP, a, aut.states().size(), memos, cases));
             dispatch.append("    case ").append(a).append(": fast").append(a).append("(r, v); return 1;\n");
         }
         c.append("int parsl_fast(parsl_rt *r, inst_view *v)\n{\n");
@@ -68,16 +75,19 @@ final class CFastForm {
     }
 
     /**
-     * An automaton's loop (its number, its count of states, the cases of its states): as the
+     * An automaton's loop (its number, its count of states, the values its states' angles share
+     * between modules in a tick, the cases of its states): as the
      * runtime's loop over an instance's modules ({@code run_instances}), each module that is not
      * finished advanced and driven in turn; the expression context is left as the last module's,
      * as {@code parsl_advance} leaves it.
      */
     private static final String LOOP = """
-            static void fast%1$d(parsl_rt *r, inst_view *v)
+            static void fast%1$d(parsl_rt *r, inst_view *view)
             {
+                const inst_view copy = *view; /* a copy no store to r can change: its fields stay in registers */
+                const inst_view *v = &copy;
                 parsl_fast_step f[%2$d];
-                parsl_fast_mod m;
+            %3$s    parsl_fast_mod m;
                 int16_t k;
                 int16_t last = -1;
                 int some_finished = v->is->finished != 0; /* else no module's fin is set */
@@ -88,13 +98,13 @@ final class CFastForm {
                         continue;
                     }
                     switch (parsl_fast_enter(r, v, f, k, &m)) {
-            %3$s        default: a = NAN; break;
+            %4$s        default: a = NAN; break;
                     }
                     if (isfinite(a)) {
                         parsl_fast_store(r, v, &f[r->st[v->pool + k]], k, &m, a);
                         last = k;
                     } else {
-                        parsl_advance(r, v, k, PARSL_DT);
+                        parsl_advance(r, view, k, PARSL_DT);
                         last = -1;
                     }
                     parsl_drive(r, v, k);

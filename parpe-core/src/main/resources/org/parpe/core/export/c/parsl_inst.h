@@ -8,6 +8,7 @@
 #include "parsl_rt.h"
 #include "parsl_maths.h"
 #include <math.h>
+#include <string.h>
 
 /* An instance's table row and its slice of the pooled per-module state. */
 typedef struct {
@@ -134,6 +135,20 @@ typedef struct {
     double phase;
     double cycle;
 } parsl_fast_mod;
+
+/* A value of an angle the same for every module of the instance in this tick (or every one with the
+   same cycle count): computed for the first, reused by the others (generated as memo[i]). */
+typedef struct {
+    double value;
+    double cycle;
+    uint8_t ok;
+} parsl_memo;
+
+/* Whether a and b have the same bits (0 and -0 differ). */
+PARSL_HOT int parsl_same(double a, double b)
+{
+    return memcmp(&a, &b, sizeof a) == 0;
+}
 
 /* Generated: runs the tick of the instance v in the common case (1), or 0 where it has none. */
 int parsl_fast(parsl_rt *r, inst_view *v);
