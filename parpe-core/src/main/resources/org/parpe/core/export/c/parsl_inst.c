@@ -232,7 +232,7 @@ PARSL_HOT double setpoint(parsl_rt *r, const inst_view *v, int16_t k, int16_t s)
     if (interp == PARSL_STEP) {
         return g;
     }
-    qq = PARSL_LINEAR(r->p[q], r->p0[q]);
+    qq = PARSL_LINEAR_SHAPE(r->p[q], r->p0[q]);
     shape = interp == PARSL_SMOOTH ? PARSL_SMOOTH_SHAPE(qq) : qq;
     return PARSL_BLEND(r->a0[q], g, shape);
 }

@@ -55,7 +55,7 @@ void parsl_view(parsl_rt *r, int16_t slot, int16_t row, inst_view *v);
 #define PARSL_PHASE_OF(cum, prog, t) ((cum) + (prog) * (t))
 #define PARSL_PHASE(cum, prog, t, sum) (PARSL_PHASE_OF(cum, prog, t) / (sum))
 /* the profile: progress since the anchor, the smooth shape, the blend from a0 to g */
-#define PARSL_LINEAR(p, p0) (((p) - (p0)) / (1 - (p0)))
+#define PARSL_LINEAR_SHAPE(p, p0) (((p) - (p0)) / (1 - (p0)))
 #define PARSL_SMOOTH_SHAPE(qq) ((1.0 - parsl_cos(3.141592653589793 * (qq))) / 2.0)
 #define PARSL_BLEND(a0, g, shape) ((a0) + ((g) - (a0)) * (shape))
 
@@ -219,7 +219,7 @@ PARSL_HOT void parsl_fast_store(parsl_rt *r, const inst_view *v, const parsl_fas
         r->out[q] = g;
     } else {
         /* where 1 - p0 is 1 (p0 is 0 after a transition) the division by it returns its dividend */
-        double qq = 1 - r->p0[q] == 1 ? m->p - r->p0[q] : PARSL_LINEAR(m->p, r->p0[q]);
+        double qq = 1 - r->p0[q] == 1 ? m->p - r->p0[q] : PARSL_LINEAR_SHAPE(m->p, r->p0[q]);
         double shape = fs->interp == PARSL_SMOOTH ? PARSL_SMOOTH_SHAPE(qq) : qq;
         r->out[q] = PARSL_BLEND(r->a0[q], g, shape);
     }
