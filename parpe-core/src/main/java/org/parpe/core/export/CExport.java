@@ -153,7 +153,7 @@ public final class CExport {
         long n = 0;
         boolean keep = false;
         for (String l : source.lines().toList()) {
-            if (l.equals("#ifdef PARSL_KEEP") || l.equals("#ifdef PARSL_FAST")) {
+            if (l.equals("#ifdef PARSL_KEEP") || l.equals(CFastForm.GUARD)) {
                 keep = true;
             } else if (keep && l.equals("#endif")) {
                 keep = false;

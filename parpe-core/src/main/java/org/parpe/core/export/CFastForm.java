@@ -17,6 +17,9 @@ import org.parpe.core.model.StateDef;
  * angle per module, or whose angle draws a random number or reads a local sensor.
  */
 final class CFastForm {
+    /** The line that opens the common case in {@code parsl_program.c} (its {@code #endif} closes it). */
+    static final String GUARD = "#ifdef PARSL_FAST";
+
     private CFastForm() {
     }
 
@@ -27,7 +30,7 @@ final class CFastForm {
      */
     static String source(List<Automaton> automata, ToIntFunction<Expression> id, IntUnaryOperator keptFirst,
             int[] sensorSlot) {
-        StringBuilder c = new StringBuilder("#ifdef PARSL_FAST\n#include \"parsl_inst.h\"\n\n");
+        StringBuilder c = new StringBuilder(GUARD + "\n#include \"parsl_inst.h\"\n\n");
         StringBuilder dispatch = new StringBuilder();
         java.util.Map<Integer, Integer> written = new java.util.HashMap<>(); // expression: its shared values
         for (int a = 0; a < automata.size(); a++) {
