@@ -37,7 +37,7 @@ public final class CoreBenchmark implements Benchmark {
     }
 
     /** A snake of {@code n} modules driven by an expression wave. */
-    static String snake(int n) {
+    public static String snake(int n) {
         return "<program><robot><structure><body elements=\"0.." + (n - 1) + "\"/></structure></robot>"
                 + "<parameters><amp value=\"30\"/></parameters>"
                 + "<controls><speed type=\"slider\" min=\"0.1\" max=\"5\" value=\"1\"/></controls>"

@@ -89,7 +89,7 @@ class ExportEqualityTest {
             }
         }
         for (String n : List.of("functions", "divide-by-zero", "negative-duration", "period-zero", "huge-angles", "total-zero",
-                "pow-huge", "exp-huge", "transitions", "kept-values", "kept-divide-by-zero")) {
+                "pow-huge", "exp-huge", "transitions", "kept-values", "kept-divide-by-zero", "fast-functions", "fast-hidden")) {
             out.add(new Case(n, Path.of("src/test/resources/export/" + n + ".xml").toAbsolutePath(),
                     List.of("--duration", "3", "--seed", "7"), false));
         }
@@ -164,7 +164,7 @@ class ExportEqualityTest {
     }
 
     /** The options {@code names} of {@code args} (pairs of option and value), in order. */
-    private static List<String> options(List<String> args, String... names) {
+    static List<String> options(List<String> args, String... names) {
         List<String> out = new ArrayList<>();
         for (int i = 0; i + 1 < args.size(); i += 2) {
             if (List.of(names).contains(args.get(i))) {

@@ -63,15 +63,21 @@ final class HostCompiler {
 
     /** Compiles every {@code .c} file of {@code dir} into {@code dir/program} with the flags, in one gcc call. */
     static Path compile(Path dir) throws IOException, InterruptedException {
+        return compile(dir, "program");
+    }
+
+    /** As {@link #compile(Path)}, into {@code dir/name}, with {@code flags} after the issue's. */
+    static Path compile(Path dir, String name, String... flags) throws IOException, InterruptedException {
         List<String> cmd = new ArrayList<>(List.of("gcc"));
         cmd.addAll(C_FLAGS);
-        cmd.addAll(List.of("-o", "program"));
+        cmd.addAll(List.of(flags));
+        cmd.addAll(List.of("-o", name));
         try (Stream<Path> s = Files.list(dir)) {
             s.map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".c")).sorted().forEach(cmd::add);
         }
         cmd.add("-lm");
         Result r = run(dir, cmd, 120);
         assertEquals(0, r.code(), () -> "gcc failed:\n" + r.err());
-        return dir.resolve("program");
+        return dir.resolve(name);
     }
 }

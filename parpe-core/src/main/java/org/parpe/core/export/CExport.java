@@ -146,13 +146,14 @@ public final class CExport {
 
     /**
      * Generated statements (indented lines), the measure of expression code for the flash
-     * estimate; the lines that keep values per module are not compiled on AVR and not counted.
+     * estimate; the lines that keep values per module and the common case of a tick ({@link
+     * CFastForm}) are not compiled on AVR and not counted.
      */
     private static long statements(String source) {
         long n = 0;
         boolean keep = false;
         for (String l : source.lines().toList()) {
-            if (l.equals("#ifdef PARSL_KEEP")) {
+            if (l.equals("#ifdef PARSL_KEEP") || l.equals(CFastForm.GUARD)) {
                 keep = true;
             } else if (keep && l.equals("#endif")) {
                 keep = false;

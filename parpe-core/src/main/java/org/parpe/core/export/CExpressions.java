@@ -15,9 +15,20 @@ final class CExpressions implements ExprTree.Visitor<String> {
     static final List<String> FUNCTIONS = List.of("sin", "cos", "tan", "asin", "acos", "atan", "sinh", "cosh", "tanh",
             "asinh", "acosh", "atanh", "log", "ln", "exp", "sqrt", "abs", "round", "floor", "ceil", "rad", "deg");
 
+    /**
+     * Functions whose value can be finite where their argument is not (atan, tanh, exp of −inf, and,
+     * by their formulas, asinh, acosh, atanh): the unchecked form checks their argument. The others
+     * give NaN or an infinity for a non-finite argument (C99 Annex F), so their result shows it.
+     */
+    static final java.util.Set<String> HIDING = java.util.Set.of("atan", "tanh", "exp", "asinh", "acosh", "atanh");
+
     private final StringBuilder body = new StringBuilder();
     private final int[] sensorSlot;
     private final Kept kept;
+    /** The unchecked form of the common case ({@link #fastFunction}), and the number of its next kept value. */
+    private final boolean fast;
+    private int keptNext;
+    private int memos;
     private boolean keeping;
     private int temps;
     private int depth = 1;
@@ -36,9 +47,11 @@ final class CExpressions implements ExprTree.Visitor<String> {
      * {@code sensorSlot} maps the interpreter's flat sensor slots to the compact C table (−1: none);
      * {@code kept} numbers the values kept per module, null where none are (not a state's angle).
      */
-    private CExpressions(int[] sensorSlot, Kept kept) {
+    private CExpressions(int[] sensorSlot, Kept kept, boolean fast, int keptFirst) {
         this.sensorSlot = sensorSlot;
         this.kept = kept;
+        this.fast = fast;
+        this.keptNext = keptFirst;
     }
 
     /** The C function {@code static double NAME(parsl_rt *r)} evaluating {@code root}. */
@@ -52,9 +65,55 @@ final class CExpressions implements ExprTree.Visitor<String> {
      * {@code parsl_kept}, numbered by {@code kept}, where {@code PARSL_KEEP} is defined.
      */
     static String function(String name, Node root, int[] sensorSlot, Kept kept) {
-        CExpressions c = new CExpressions(sensorSlot, kept);
+        CExpressions c = new CExpressions(sensorSlot, kept, false, 0);
+        return c.text("static double " + name + "(parsl_rt *r)", c.emit(root));
+    }
+
+    /**
+     * The unchecked form of a state's angle for the common case of a tick ({@code PARSL_FAST},
+     * {@link CFastForm}): the same operations on the same values as {@link #function}, without
+     * its checks, reading the module's phase and cycle from {@code m} and its position from
+     * {@code k}; NaN (so that the caller runs the checked form, which raises what the interpreter
+     * raises) where an operand an operation could hide is not finite, and where a kept value is
+     * not there yet. {@code keptFirst}: the number of the first value {@link #function} kept for
+     * this tree, or −1 where it keeps none. Only for trees without {@code rand()} and local sensors
+     * ({@link #fastForm}).
+     */
+    static Fast fastFunction(String name, Node root, int[] sensorSlot, int keptFirst) {
+        CExpressions c = new CExpressions(sensorSlot, keptFirst < 0 ? null : new Kept(), true, keptFirst);
         String result = c.emit(root);
-        StringBuilder out = new StringBuilder("static double ").append(name).append("(parsl_rt *r)\n{\n");
+        return new Fast(c.text("static inline double " + name
+                + "(parsl_rt *r, const inst_view *v, int16_t k, const parsl_fast_mod *m, parsl_memo *memo)", result),
+                c.memos);
+    }
+
+    /** An unchecked form's C, and how many values it shares between modules ({@code memo[]}, {@link ModuleConstants#worthSharing}). */
+    record Fast(String text, int memos) {
+    }
+
+    /** Whether {@code root} has an unchecked form: no {@code rand()} (a second run would draw again), no local sensor. */
+    static boolean fastForm(Node root) {
+        return !ExprTree.visit(root, new ExprTree.Question(false) {
+            @Override
+            public Boolean variable(String name) {
+                return false;
+            }
+
+            @Override
+            public Boolean localSensor(int position, int channel) {
+                return true;
+            }
+
+            @Override
+            public Boolean random() {
+                return true;
+            }
+        });
+    }
+
+    private String text(String signature, String result) {
+        CExpressions c = this;
+        StringBuilder out = new StringBuilder(signature).append("\n{\n");
         if (c.temps > 0) {
             out.append("    double ");
             for (int i = 0; i < c.temps; i++) {
@@ -85,8 +144,16 @@ final class CExpressions implements ExprTree.Visitor<String> {
      * the interpreter does.
      */
     private String emit(Node n) {
+        if (fast && !keeping && (kept == null || !ModuleConstants.worthKeeping(n)) && ModuleConstants.worthSharing(n)) {
+            return shared(n);
+        }
         if (kept == null || keeping || !ModuleConstants.worthKeeping(n)) {
             return ExprTree.visit(n, this);
+        }
+        if (fast) {
+            String slot = "[" + keptNext++ + "][v->mod + k]";
+            line("if (!parsl_kept_ok" + slot + ") return NAN;");
+            return set("parsl_kept" + slot);
         }
         int at = body.length();
         String pad = "    ".repeat(depth);
@@ -102,12 +169,44 @@ final class CExpressions implements ExprTree.Visitor<String> {
         return v;
     }
 
+    /**
+     * In the unchecked form, a value the same for every module in the tick (with the same {@code
+     * $cycle} where it reads it): computed for the first and reused, the same operations on the
+     * same values. A guard that fails on the way stores nothing.
+     */
+    private String shared(Node n) {
+        String memo = "memo[" + memos++ + "]";
+        String t = temp();
+        line("if (" + memo + ".ok" + (ModuleConstants.readsCycle(n) ? " && parsl_same(" + memo + ".cycle, m->cycle)" : "")
+                + ") {");
+        line("    " + t + " = " + memo + ".value;");
+        line("} else {");
+        depth++;
+        keeping = true;
+        String v = ExprTree.visit(n, this);
+        keeping = false;
+        line(t + " = " + v + ";");
+        line(memo + ".value = " + t + ";");
+        line(memo + ".cycle = m->cycle;");
+        line(memo + ".ok = 1;");
+        depth--;
+        line("}");
+        return t;
+    }
+
     private String temp() {
         return "t" + temps++;
     }
 
     private void line(String s) {
         body.append("    ".repeat(depth)).append(s).append('\n');
+    }
+
+    /** In the unchecked form: NaN, so that the checked form runs, where {@code x} is not finite. */
+    private void guard(String x) {
+        if (fast && x.startsWith("t")) { // a temporary, not a literal
+            line("if (!isfinite(" + x + ")) return NAN;");
+        }
     }
 
     private String set(String expression) {
@@ -123,6 +222,15 @@ final class CExpressions implements ExprTree.Visitor<String> {
 
     @Override
     public String variable(String name) {
+        if (fast) {
+            switch (name) {
+                case "phase": case "cycle": return set("m->" + name);
+                case "index": return set("(double) k");
+                case "count": return set("(double) v->n");
+                case "id": return set("(double) PARSL_U16(parsl_ids, parsl_module_of(v, k))");
+                default: break;
+            }
+        }
         switch (name) {
             case "index": case "count": case "id":
                 return set("(double) r->" + name);
@@ -149,12 +257,18 @@ final class CExpressions implements ExprTree.Visitor<String> {
 
     @Override
     public String localSensor(int position, int channel) {
+        if (fast) {
+            throw new IllegalStateException("no unchecked form reads a local sensor (fastForm)");
+        }
         return set("parsl_local(r, " + position + ", " + channel + ")");
     }
 
     @Override
     public String unary(boolean not, Node arg) {
         String a = emit(arg);
+        if (not) {
+            guard(a);
+        }
         return set(not ? "(" + a + " == 0 ? 1.0 : 0.0)" : "-" + a);
     }
 
@@ -167,23 +281,43 @@ final class CExpressions implements ExprTree.Visitor<String> {
             case "-": return checked(a + " - " + b, "PARSL_E_DIFF");
             case "*": return checked(a + " * " + b, "PARSL_E_PROD");
             case "/":
-                line("if (" + b + " == 0) parsl_raise(r, PARSL_E_DIV, 0, 0, 0);");
+                // x / inf is 0; x / 0 is not finite and stays so
+                divisor(b, "PARSL_E_DIV");
                 return checked(a + " / " + b, "PARSL_E_QUOT");
             case "%":
-                line("if (" + b + " == 0) parsl_raise(r, PARSL_E_REM, 0, 0, 0);");
+                divisor(b, "PARSL_E_REM");
                 return set("fmod(" + a + ", " + b + ")");
             case "^": {
+                guard(a); // pow(NaN, 0) and pow(1, NaN) are 1
+                guard(b);
                 String t = set("pow(" + a + ", " + b + ")");
-                line("if (!isfinite(" + t + ")) parsl_raise(r, PARSL_E_POW, " + a + ", " + b + ", 0);");
+                if (!fast) {
+                    line("if (!isfinite(" + t + ")) parsl_raise(r, PARSL_E_POW, " + a + ", " + b + ", 0);");
+                }
                 return t;
             }
             default:
+                guard(a); // a comparison is 0 or 1 whatever its operands
+                guard(b);
                 return set("(" + a + " " + op + " " + b + " ? 1.0 : 0.0)");
         }
     }
 
+    /** The check of a divisor: raises at 0; in the unchecked form NaN where it is not finite (x / inf is 0). */
+    private void divisor(String b, String error) {
+        if (fast) {
+            guard(b);
+        } else {
+            line("if (" + b + " == 0) parsl_raise(r, " + error + ", 0, 0, 0);");
+        }
+    }
+
+    /** {@code expression}'s value, checked to be finite; unchecked in the fast form, where + - * and / keep a non-finite operand's. */
     private String checked(String expression, String error) {
         String t = set(expression);
+        if (fast) {
+            return t;
+        }
         line("if (!isfinite(" + t + ")) parsl_raise(r, " + error + ", 0, 0, 0);");
         return t;
     }
@@ -192,9 +326,11 @@ final class CExpressions implements ExprTree.Visitor<String> {
     public String logic(boolean and, Node left, Node right) {
         String a = emit(left);
         String t = temp();
+        guard(a);
         line("if (" + a + (and ? " != 0" : " == 0") + ") {");
         depth++;
         String b = emit(right);
+        guard(b);
         line(t + " = " + b + " != 0 ? 1.0 : 0.0;");
         depth--;
         line("} else {");
@@ -207,6 +343,7 @@ final class CExpressions implements ExprTree.Visitor<String> {
     public String conditional(Node cond, Node then, Node otherwise) {
         String c = emit(cond);
         String t = temp();
+        guard(c);
         line("if (" + c + " != 0) {");
         depth++;
         line(t + " = " + emit(then) + ";");
@@ -222,7 +359,13 @@ final class CExpressions implements ExprTree.Visitor<String> {
     @Override
     public String function1(String name, Node arg) {
         String x = emit(arg);
+        if (HIDING.contains(name)) {
+            guard(x);
+        }
         String t = set(c1(name, x));
+        if (fast) {
+            return t;
+        }
         line("if (!isfinite(" + t + ")) parsl_raise(r, PARSL_E_FUNC, " + x + ", 0, " + FUNCTIONS.indexOf(name) + ");");
         return t;
     }
@@ -251,10 +394,14 @@ final class CExpressions implements ExprTree.Visitor<String> {
     public String function2(String name, Node a, Node b) {
         String x = emit(a);
         String y = emit(b);
+        if (!name.equals("mod")) { // mod's divisor is checked below
+            guard(x); // atan2(inf, 1) is finite, min(inf, 1) 1
+            guard(y);
+        }
         switch (name) {
             case "atan2": return set("atan2(" + x + ", " + y + ")");
             case "mod":
-                line("if (" + y + " == 0) parsl_raise(r, PARSL_E_MODF, 0, 0, 0);");
+                divisor(y, "PARSL_E_MODF");
                 return set("fmod(" + x + ", " + y + ")");
             // java.lang.Math.min/max: NaN wins, and -0.0 is below 0.0
             case "min": return set("parsl_min(" + x + ", " + y + ")");
@@ -269,12 +416,18 @@ final class CExpressions implements ExprTree.Visitor<String> {
             String v = emit(n);
             line(s + " += " + v + ";");
         }
+        if (fast) {
+            return s;
+        }
         line("if (!isfinite(" + s + ")) parsl_raise(r, PARSL_E_SUMF, 0, 0, 0);");
         return s;
     }
 
     @Override
     public String random() {
+        if (fast) {
+            throw new IllegalStateException("no unchecked form draws a random number (fastForm)");
+        }
         return set("parsl_rand(r)");
     }
 }

@@ -299,11 +299,13 @@ public final class CProgram {
         c.append(CText.PRELUDE);
         StringBuilder functions = new StringBuilder();
         CExpressions.Kept kept = new CExpressions.Kept();
+        int[] keptFirst = new int[exprs.size()];
         for (int i = 0; i < exprs.size(); i++) {
             Expression e = exprs.get(i);
             String where = e.pos().line() == 0 ? "default" : e.pos().toString();
             functions.append("/* ").append(CText.comment(where)).append(": ").append(CText.comment(e.text())).append(" */\n");
             boolean angle = angles.contains(i) && !notAngles.contains(i);
+            keptFirst[i] = angle ? kept.count() : -1;
             functions.append(CExpressions.function("x" + i, e.root(), sensorSlot, angle ? kept : null)).append('\n');
         }
         keptValues = kept.count();
@@ -312,6 +314,7 @@ public final class CProgram {
             c.append(String.format(java.util.Locale.ROOT, CText.KEEP, keptValues, positions, keptValues, positions));
         }
         c.append(functions);
+        c.append(CFastForm.source(program.automata(), exprIds::get, x -> keptFirst[x], sensorSlot));
         c.append("PARSL_NO_TABLE double parsl_expr(parsl_rt *r, int16_t x)\n{\n    switch (x) {\n");
         for (int i = 0; i < exprs.size(); i++) {
             c.append("    case ").append(i).append(": return x").append(i).append("(r);\n");

@@ -25,6 +25,77 @@ final class ModuleConstants {
                 && ExprTree.visit(n, new Costly());
     }
 
+    /**
+     * Whether the value of {@code n} is the same for every module of an instance in a tick, or for
+     * every one with the same {@code $cycle}, and worth computing once (issue 36 item 3): built
+     * from numbers, controls, macros, global sensors, {@code $time}, {@code $btime} and {@code
+     * $cycle} only (a tick changes none of them while it runs through the modules), with one of
+     * them, and costly. The unchecked form of the common case computes it for the first module
+     * and reuses it ({@code parsl_memo}).
+     */
+    static boolean worthSharing(Node n) {
+        return ExprTree.visit(n, new Shared()) && ExprTree.visit(n, new Costly()) && !ExprTree.visit(n, new Numbers());
+    }
+
+    /** Whether {@code n} reads {@code $cycle}. */
+    static boolean readsCycle(Node n) {
+        return ExprTree.visit(n, new ExprTree.Question(false) {
+            @Override
+            public Boolean variable(String name) {
+                return name.equals("cycle");
+            }
+        });
+    }
+
+    /** Every leaf the same for all modules in a tick (but {@code $cycle}, the same for those with the same count). */
+    private static final class Shared extends ExprTree.Question {
+        Shared() {
+            super(true);
+        }
+
+        @Override
+        public Boolean constant(double value) {
+            return true;
+        }
+
+        @Override
+        public Boolean control(int index) {
+            return true;
+        }
+
+        @Override
+        public Boolean macro(int index) {
+            return true;
+        }
+
+        @Override
+        public Boolean globalSensor(int slot) {
+            return true;
+        }
+
+        @Override
+        public Boolean variable(String name) {
+            return Set.of("time", "btime", "cycle").contains(name);
+        }
+    }
+
+    /** Every leaf a number. */
+    private static final class Numbers extends ExprTree.Question {
+        Numbers() {
+            super(true);
+        }
+
+        @Override
+        public Boolean constant(double value) {
+            return true;
+        }
+
+        @Override
+        public Boolean variable(String name) {
+            return false;
+        }
+    }
+
     /** Every leaf a number or a module's own variable. */
     private static final class Invariant extends ExprTree.Question {
         Invariant() {

@@ -86,4 +86,33 @@ class ModuleConstantsTest {
                 "ESP32: a double and a flag for each of the 13 positions");
         assertTrue(esp32.format().contains(", kept values 117)"), esp32.format());
     }
+
+    /** The root of the expression {@code text} in a state's angle. */
+    private static org.parpe.core.expr.Node angle(String text) {
+        return program("<a angles=\"" + text + "\"/><b angles=\"0\"/>").automata().get(0).states().get(0).angles()
+                .get(0).root();
+    }
+
+    @Test
+    void partsTheSameForEveryModuleInATickAreShared() {
+        // the benchmark's second wave: the same for every module with the same cycle count
+        assertTrue(ModuleConstants.worthSharing(angle("5*$cycle/($cycle+1)")));
+        assertTrue(ModuleConstants.readsCycle(angle("5*$cycle/($cycle+1)")));
+        assertTrue(ModuleConstants.worthSharing(angle("sin(2*pi*$time)")));
+        assertFalse(ModuleConstants.readsCycle(angle("sin(2*pi*$time)")));
+        assertFalse(ModuleConstants.worthSharing(angle("$cycle + $time")), "no costly operation: cheaper to compute");
+        assertFalse(ModuleConstants.worthSharing(angle("sin($phase)")), "$phase is the module's");
+        assertFalse(ModuleConstants.worthSharing(angle("sin($time + $index)")), "$index is the module's");
+    }
+
+    @Test
+    void theCommonCaseIsGeneratedForOneAngleWithoutExitAndNotForAVR() {
+        String source = translate("<a angles=\"30*sin(2*pi*$phase) + 5*$cycle/($cycle+1)\"/>"
+                + "<b angles=\"rand()\"/>").source();
+        String fast = source.substring(source.indexOf("#ifdef PARSL_FAST"));
+        assertTrue(fast.contains("case 0: a = f"), "state a, one angle, has the common case:\n" + fast);
+        assertFalse(fast.contains("case 1: a = f"), "state b draws a random number: parsl_advance runs it:\n" + fast);
+        assertTrue(fast.contains("memo[0].ok && parsl_same(memo[0].cycle, m->cycle)"), fast);
+        assertFalse(fast.contains("parsl_raise"), "the unchecked form raises nothing itself:\n" + fast);
+    }
 }

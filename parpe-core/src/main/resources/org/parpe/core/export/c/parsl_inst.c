@@ -4,10 +4,8 @@
  * with 32-bit floats (PARSL_EXACT_TIME) the progress is summed in fixed point (below).
  */
 #include "parsl_inst.h"
-#include "parsl_maths.h"
-#include <math.h>
 
-#define EPS 1e-9
+#define EPS PARSL_EPS
 #define MAX_TRANSITIONS 10000
 
 #ifdef PARSL_EXACT_TIME
@@ -62,7 +60,7 @@ static void add_p(parsl_rt *r, int16_t q, double dp)
 #define REACHES(r, q, du, lim) ((r)->u[q] + (du) >= (lim) - EPS)
 #define U_START(r, q, start) ((r)->uk[q] = (r)->u[q] = (start))
 #define U_LIMIT(r, is, q) ((r)->uk[q] + (is)->limit)
-#define U_STEP(rem, d, t, is) ((rem) / (d) * (t) / (is)->sum_t)
+#define U_STEP(rem, d, t, is) PARSL_U_STEP(rem, d, t, (is)->sum_t)
 #define add_u(r, q, du, lim) ((r)->u[q] += (du))
 #endif
 
@@ -81,13 +79,6 @@ static void add_p(parsl_rt *r, int16_t q, double dp)
 #define STEP(v, f) ((v)->step_##f)
 #define STEP_KEEP(v, s, d, du, dp) \
     ((v)->step_s = (int16_t) ((v)->per_module ? -1 : (s)), (v)->step_d = (d), (v)->step_du = (du), (v)->step_dp = (dp))
-
-/* floor(c) of the cycle count: a conversion below 2^52 (without SSE4.1 gcc inlines floor as some
-   twenty instructions); -0 and the rest go to floor, which keeps their sign */
-static double whole(double c)
-{
-    return c > 0 && c < 0x1p52 ? (double) (int64_t) c : floor(c);
-}
 #endif
 
 static void state_error(parsl_rt *r, int16_t code, int16_t pos, double a, int16_t what)
@@ -115,18 +106,6 @@ void parsl_view(parsl_rt *r, int16_t slot, int16_t row, inst_view *v)
 #ifndef PARSL_EXACT_TIME
     v->step_s = -1;
 #endif
-}
-
-static void enter(parsl_rt *r, const inst_view *v, int16_t k)
-{
-    int16_t q = v->pool + k;
-    r->index = k;
-    r->id = PARSL_U16(parsl_ids, parsl_module_of(v, k));
-    r->count = v->n;
-    r->group_off = v->mod;
-    r->group_n = v->n;
-    r->phase = r->ph[q];
-    r->cycle = r->cyc[q];
 }
 
 static void eval_times(parsl_rt *r, const inst_view *v)
@@ -170,7 +149,7 @@ void parsl_inst_init(parsl_rt *r, const inst_view *v, double phase, double offse
         double pos;
         double cum = 0;
         int16_t found = -1;
-        enter(r, v, k);
+        parsl_enter(r, v, k);
         r->phase = start;
         r->cycle = 0;
         if (k == 0 || v->per_module) {
@@ -226,7 +205,7 @@ void parsl_prepare_tick(parsl_rt *r, const inst_view *v)
         }
     }
     if (!v->per_module) {
-        enter(r, v, 0);
+        parsl_enter(r, v, 0);
         eval_times(r, v);
     }
     v->is->scale = per;
@@ -253,9 +232,9 @@ PARSL_HOT double setpoint(parsl_rt *r, const inst_view *v, int16_t k, int16_t s)
     if (interp == PARSL_STEP) {
         return g;
     }
-    qq = (r->p[q] - r->p0[q]) / (1 - r->p0[q]);
-    shape = interp == PARSL_SMOOTH ? (1.0 - parsl_cos(3.141592653589793 * qq)) / 2.0 : qq;
-    return r->a0[q] + (g - r->a0[q]) * shape;
+    qq = PARSL_LINEAR_SHAPE(r->p[q], r->p0[q]);
+    shape = interp == PARSL_SMOOTH ? PARSL_SMOOTH_SHAPE(qq) : qq;
+    return PARSL_BLEND(r->a0[q], g, shape);
 }
 
 static double phase_of(parsl_rt *r, const inst_view *v, int16_t s, double prog)
@@ -265,7 +244,7 @@ static double phase_of(parsl_rt *r, const inst_view *v, int16_t s, double prog)
     for (j = 0; j < s; j++) {
         cum += r->tbuf[v->tb + j];
     }
-    return (cum + prog * r->tbuf[v->tb + s]) / v->is->sum_t;
+    return PARSL_PHASE(cum, prog, r->tbuf[v->tb + s], v->is->sum_t);
 }
 
 static void finish(parsl_rt *r, const inst_view *v, int16_t k, double angle)
@@ -308,7 +287,7 @@ static void finish_at_end(parsl_rt *r, const inst_view *v, int16_t k, int16_t s)
 
 void parsl_hold(parsl_rt *r, const inst_view *v, int16_t k)
 {
-    enter(r, v, k);
+    parsl_enter(r, v, k);
     r->out[v->pool + k] = setpoint(r, v, k, r->st[v->pool + k]);
 }
 
@@ -330,7 +309,7 @@ void parsl_advance(parsl_rt *r, inst_view *v, int16_t k, double dt)
     double rem = dt;
     int16_t skips = 0;
     int16_t transitions = 0;
-    enter(r, v, k);
+    parsl_enter(r, v, k);
     if (v->per_module) {
         eval_times(r, v);
     }
@@ -350,7 +329,7 @@ void parsl_advance(parsl_rt *r, inst_view *v, int16_t k, double dt)
     for (;;) {
         double t = r->tbuf[v->tb + s];
         int kept = STEP_KEPT(v, s, rem, dt);
-        double d = kept ? STEP(v, d) : is->has_scale ? t * is->scale / is->sum_t : t;
+        double d = kept ? STEP(v, d) : PARSL_STEP_D(t, is);
         double need;
         double du;
         double dp;
@@ -402,7 +381,7 @@ void parsl_advance(parsl_rt *r, inst_view *v, int16_t k, double dt)
     }
     r->ph[q] = phase_of(r, v, s, r->p[q]);
 #ifndef PARSL_EXACT_TIME
-    r->cyc[q] = whole(r->u[q] - r->uk[q] + EPS);
+    r->cyc[q] = PARSL_CYCLES(r->u[q], r->uk[q]);
 #endif
     r->phase = r->ph[q];
     r->cycle = r->cyc[q];

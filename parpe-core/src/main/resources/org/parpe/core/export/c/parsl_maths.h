@@ -95,7 +95,15 @@ static inline double parsl_quadrant(uint32_t q, double hi, double lo)
     return (q & 2) ? -v : v;
 }
 
-static inline double parsl_sin(double x)
+/* inline where it is called: gcc would otherwise call a part of it out of line, for a twentieth of
+   a module's tick more */
+#if defined(__GNUC__)
+#define PARSL_INLINE static inline __attribute__((always_inline))
+#else
+#define PARSL_INLINE static inline
+#endif
+
+PARSL_INLINE double parsl_sin(double x)
 {
     double hi;
     double lo;
@@ -106,7 +114,7 @@ static inline double parsl_sin(double x)
     return parsl_reduce(x, &hi, &lo, &q) ? parsl_quadrant(q, hi, lo) : sin(x);
 }
 
-static inline double parsl_cos(double x)
+PARSL_INLINE double parsl_cos(double x)
 {
     double hi;
     double lo;

@@ -166,17 +166,6 @@ void parsl_set_reading(parsl_rt *r, int16_t i, int16_t channel, double value)
 }
 /* ---- the scheduler (Engine) ---- */
 
-PARSL_HOT void drive(parsl_rt *r, const inst_view *v, int16_t k)
-{
-    int16_t m = parsl_module_of(v, k);
-    if (r->driven[m] && r->driver[m] != v->row && r->overlap != NULL) {
-        r->overlap(r, r->driver[m], v->row, m);
-    }
-    r->driven[m] = 1;
-    r->driver[m] = v->row;
-    r->next[m] = r->out[v->pool + k];
-}
-
 static int conditions_hold(parsl_rt *r, int16_t row)
 {
     int16_t first = PARSL_I16(parsl_inst[row], PARSL_I_COND);
@@ -221,7 +210,7 @@ static void run_instances(parsl_rt *r)
                 for (k = 0; k < v.n; k++) {
                     if (!r->fin[v.pool + k]) {
                         parsl_hold(r, &v, k);
-                        drive(r, &v, k);
+                        parsl_drive(r, &v, k);
                     }
                 }
             }
@@ -236,10 +225,15 @@ static void run_instances(parsl_rt *r)
             v.is->was_active = 1;
         }
         parsl_prepare_tick(r, &v);
+#ifdef PARSL_FAST
+        if (parsl_fast(r, &v)) {
+            continue;
+        }
+#endif
         for (k = 0; k < v.n; k++) {
             if (!r->fin[v.pool + k]) {
                 parsl_advance(r, &v, k, PARSL_DT);
-                drive(r, &v, k);
+                parsl_drive(r, &v, k);
             }
         }
     }

@@ -53,6 +53,10 @@ typedef int32_t parsl_cycles;
 #else
 typedef double parsl_cycles;
 #endif
+/* The common case of a tick generated per automaton (parsl_inst.h), where double has 64 bits. */
+#if !defined(PARSL_EXACT_TIME) && !defined(__AVR__) && !defined(PARSL_NO_FAST)
+#define PARSL_FAST 1
+#endif
 
 /* Results of parsl_step. */
 enum { PARSL_ENDED = 0, PARSL_RUNNING = 1, PARSL_ERROR = 2 };
