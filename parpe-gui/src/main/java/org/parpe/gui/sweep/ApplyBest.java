@@ -9,7 +9,7 @@ import org.parpe.core.load.LoadResult;
 import org.parpe.core.load.ScriptLoader;
 import org.parpe.core.model.Parameter;
 import org.parpe.gui.editor.ParslEditor;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 import org.parpe.sim.sweep.ParameterDefaults;
 import org.parpe.sim.sweep.SweepException;
 
@@ -31,20 +31,20 @@ final class ApplyBest {
      */
     static String apply(ParslEditor editor, Path file, Map<String, Double> values) throws SweepException {
         if (values.isEmpty()) {
-            throw new SweepException(PanelMsg.SWEEP_NO_RESULT.text());
+            throw new SweepException(ToolMsg.SWEEP_NO_RESULT.text());
         }
         IDocument doc = editor.document();
         String text = doc.get();
         LoadResult r = ScriptLoader.loadText(file, text, Map.of());
         if (r.program() == null) {
-            throw new SweepException(PanelMsg.SWEEP_SCRIPT_HAS_ERRORS.text());
+            throw new SweepException(ToolMsg.SWEEP_SCRIPT_HAS_ERRORS.text());
         }
         for (Map.Entry<String, Double> v : values.entrySet()) {
             Parameter p = r.program().parameters().stream().filter(q -> q.name().equals(v.getKey())).findFirst()
-                    .orElseThrow(() -> new SweepException(PanelMsg.SWEEP_PARAMETER_GONE.text(v.getKey())));
+                    .orElseThrow(() -> new SweepException(ToolMsg.SWEEP_PARAMETER_GONE.text(v.getKey())));
             String problem = p.check(v.getValue());
             if (problem != null) {
-                throw new SweepException(PanelMsg.SWEEP_BOUNDS_CHANGED.text(problem));
+                throw new SweepException(ToolMsg.SWEEP_BOUNDS_CHANGED.text(problem));
             }
         }
         String out = ParameterDefaults.rewrite(file, text, r.program().parameters(), values);

@@ -7,7 +7,7 @@ import java.util.Set;
 import org.eclipse.swt.widgets.Display;
 import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.Parameter;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 import org.parpe.sim.sweep.Axis;
 import org.parpe.sim.sweep.Constraints;
 import org.parpe.sim.sweep.Evaluator;
@@ -43,11 +43,11 @@ record StartRequest(Path file, String text, String robot, Path world, String dur
     private Evaluator.Settings settings(Map<String, Double> held) throws SweepException {
         if (objective == Objective.SCORE && world == null) {
             // as parpe sweep --objective score without --world: every run's score would be empty
-            throw new SweepException(PanelMsg.SWEEP_SCORE_NEEDS_WORLD.text());
+            throw new SweepException(ToolMsg.SWEEP_SCORE_NEEDS_WORLD.text());
         }
         Double seconds = Numbers.parsePlain(duration);
         if (seconds == null || !(seconds > 0) || seconds.isInfinite() || seconds < TICK) {
-            throw new SweepException(PanelMsg.SWEEP_BAD_SECONDS.text(Numbers.format(TICK), duration.trim()));
+            throw new SweepException(ToolMsg.SWEEP_BAD_SECONDS.text(Numbers.format(TICK), duration.trim()));
         }
         return new Evaluator.Settings(file, text, held, robot, seconds, TICK, FALL_TILT, world);
     }
@@ -70,7 +70,7 @@ record StartRequest(Path file, String text, String robot, Path world, String dur
         OptimizeSpec spec = tab.spec(objective);
         SearchSpace space = new SearchSpace(parameters, Set.of());
         if (space.dimension() == 0) {
-            throw new SweepException(PanelMsg.SWEEP_NOTHING_TO_OPTIMISE.text(file.getFileName()));
+            throw new SweepException(ToolMsg.SWEEP_NOTHING_TO_OPTIMISE.text(file.getFileName()));
         }
         List<String> names = space.parameters().stream().map(Parameter::name).toList();
         Results results = new Results(file, Results.Mode.OPTIMISE, names, own(parameters, names), objective, spec.constraints(),
