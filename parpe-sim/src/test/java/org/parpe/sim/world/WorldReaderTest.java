@@ -31,6 +31,26 @@ class WorldReaderTest {
         return d.all().stream().map(Diagnostic::format).toList();
     }
 
+    /**
+     * Issue 32, trial changes: every kind of movable object is read and built as itself (a kind
+     * that {@code Movables} does not build fails here, not silently as another), and the
+     * "expected …" message names it.
+     */
+    @Test
+    void everyMovableKindIsBuiltAsItselfAndNamedInTheMessage() throws IOException {
+        for (Movables.Kind k : Movables.Kind.values()) {
+            Path f = file(k.xml() + ".xml", "<world>\n  <" + k.xml() + " name=\"o\" x=\"0\" y=\"0\"/>\n</world>\n");
+            DiagnosticList d = new DiagnosticList();
+            World w = WorldReader.read(f, d);
+            assertNotNull(w, k + ": " + d.all());
+            assertEquals(List.of(k.xml()), w.objects().stream().map(World.MovableObject::kind).toList());
+        }
+        String message = errors(file("u.xml", "<world>\n  <nothing/>\n</world>\n")).get(0);
+        for (Movables.Kind k : Movables.Kind.values()) {
+            assertTrue(message.contains("<" + k.xml() + ">"), message);
+        }
+    }
+
     @Test
     void aWorldDefinesItsSceneryRegionsAndScoring() throws IOException {
         Path f = file("w.xml", """
