@@ -51,6 +51,14 @@ class WorldReaderTest {
         }
     }
 
+    /** docs/simulator.md documents every element the reader knows (issue 32, trial changes: a new kind is documented). */
+    @Test
+    void everyElementIsDocumented() throws IOException {
+        String doc = Files.readString(Path.of("../docs/simulator.md"));
+        List<String> missing = WorldReader.ELEMENTS.stream().filter(e -> !doc.contains("`<" + e)).toList();
+        assertEquals(List.of(), missing, "elements docs/simulator.md does not describe");
+    }
+
     @Test
     void aWorldDefinesItsSceneryRegionsAndScoring() throws IOException {
         Path f = file("w.xml", """
