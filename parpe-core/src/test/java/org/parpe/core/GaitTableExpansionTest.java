@@ -181,4 +181,27 @@ class GaitTableExpansionTest {
                 () -> GaitTableExpansion.expand(p, in, Diagrams.groupOf(p, b, in).orElseThrow()));
         assertTrue(e.getMessage().contains("exit condition") || e.getMessage().contains("known only while running"), e.getMessage());
     }
+
+    /**
+     * An instance that starts late or stops after some cycles plays no repeating table: refused;
+     * the same instance without them expands. (Every attribute of {@link Instance} is read or
+     * refused by {@code expand}: a new one does not compile there until it says which.)
+     */
+    @ParameterizedTest
+    @CsvSource({"start=\"1\"", "cycles=\"2\""})
+    void anInstanceThatStartsLateOrStopsIsRefused(String attribute) {
+        String text = "<program><robot><structure><b elements=\"0, 1\"/></structure></robot>\n"
+                + "<main><go/></main><behaviors><go><wave group=\"b\" " + attribute + "/></go></behaviors>\n"
+                + "<automata><wave states=\"up, down\"/></automata>\n"
+                + "<states><up angles=\"30\"/><down angles=\"-30\"/></states></program>";
+        Program p = ScriptLoader.loadText(Path.of("t.xml"), text, Map.of()).program();
+        Behavior b = p.behaviors().get(0);
+        var e = assertThrows(IllegalArgumentException.class,
+                () -> GaitTableExpansion.expand(p, b.instances().get(0), Diagrams.groupOf(p, b, b.instances().get(0)).orElseThrow()));
+        assertTrue(e.getMessage().contains("start or cycles"), e.getMessage());
+        Program plain = ScriptLoader.loadText(Path.of("t.xml"), text.replace(attribute, ""), Map.of()).program();
+        Behavior pb = plain.behaviors().get(0);
+        assertEquals(2, GaitTableExpansion.expand(plain, pb.instances().get(0),
+                Diagrams.groupOf(plain, pb, pb.instances().get(0)).orElseThrow()).rows().size());
+    }
 }

@@ -45,62 +45,90 @@ public final class RunToolBar {
         stop = item(tb, icons.stop, UiMsg.TOOL_STOP.text(), UiMsg.TOOL_STOP_TIP.text(), actions::stop);
         new ToolItem(tb, SWT.SEPARATOR);
         estop = item(tb, icons.estop, UiMsg.TOOL_ESTOP.text(), UiMsg.TOOL_ESTOP_TIP.text(), actions::emergencyStop);
-        speed = combo(UiMsg.TOOL_SPEED.text(), 150);
-        for (Speed s : Speed.values()) {
-            speed.add(s.label());
-        }
-        fitItems(speed);
-        speed.select(index(Speed.values(), prefs.get("run.speed", Speed.REAL_TIME.name()), Speed::name));
-        speed.addListener(SWT.Selection, e -> {
-            actions.controller().setSpeed(speed());
-            prefs.put("run.speed", speed().name());
-        });
-        target = combo(UiMsg.TOOL_TARGET.text(), 170);
-        for (RunOn t : RunOn.values()) {
-            target.add(t.label());
-        }
-        fitItems(target);
-        // Every session starts on the simulator; each file keeps its own target (RunChoices).
-        target.select(RunOn.SIMULATOR.ordinal());
-        target.setToolTipText(UiMsg.TOOL_TARGET_TIP.text());
-        target.addListener(SWT.Selection, e -> {
-            actions.targetChosen(target());
-            updatePort();
-        });
-        Label portLabel = new Label(bar, SWT.NONE);
-        portLabel.setText(UiMsg.TOOL_PORT.text());
-        port = new Combo(bar, SWT.DROP_DOWN);
-        GridData gd = new GridData(SWT.LEFT, SWT.CENTER, false, false);
-        gd.widthHint = 160;
-        port.setLayoutData(gd);
-        port.setToolTipText(UiMsg.TOOL_PORT_TIP.text());
-        port.setText(prefs.get("run.port", ""));
-        port.addListener(SWT.MouseDown, e -> refreshPorts());
-        port.addListener(SWT.Modify, e -> prefs.put("run.port", port.getText()));
-        Label profileLabel = new Label(bar, SWT.NONE);
-        profileLabel.setText(UiMsg.TOOL_PROFILE.text());
-        profile = new Combo(bar, SWT.DROP_DOWN);
-        GridData pd = new GridData(SWT.LEFT, SWT.CENTER, false, false);
-        pd.widthHint = 180;
-        profile.setLayoutData(pd);
-        profile.setToolTipText(UiMsg.TOOL_PROFILE_TIP.text());
-        profile.setText(prefs.get("run.hardware", ""));
-        profile.addListener(SWT.Modify, e -> prefs.put("run.hardware", profile.getText()));
-        browse = new Button(bar, SWT.PUSH);
-        browse.setText("\u2026");
-        browse.setToolTipText(UiMsg.TOOL_PROFILE_BROWSE_TIP.text());
-        browse.addListener(SWT.Selection, e -> {
-            Path chosen = org.parpe.gui.panels.FileDialogs.ask(bar.getShell(), SWT.OPEN, UiMsg.HARDWARE_PROFILE.text(), "*.xml", null, null);
-            if (chosen != null) {
-                profile.setText(chosen.toString());
-            }
-        });
+        speed = speedCombo(actions, prefs);
+        target = targetCombo(actions);
+        port = portCombo(prefs);
+        profile = profileCombo(prefs);
+        browse = browseButton();
         Button hardware = new Button(bar, SWT.PUSH);
         hardware.setText(UiMsg.TOOL_HARDWARE.text());
         hardware.setToolTipText(UiMsg.TOOL_HARDWARE_TIP.text());
         hardware.addListener(SWT.Selection, e -> actions.openHardware());
         refreshPorts();
         updatePort();
+    }
+
+    /** The speed, as the user chose it last time. */
+    private Combo speedCombo(RunActions actions, Prefs prefs) {
+        Combo c = combo(UiMsg.TOOL_SPEED.text(), 150);
+        for (Speed s : Speed.values()) {
+            c.add(s.label());
+        }
+        fitItems(c);
+        c.select(index(Speed.values(), prefs.get("run.speed", Speed.REAL_TIME.name()), Speed::name));
+        c.addListener(SWT.Selection, e -> {
+            actions.controller().setSpeed(speed());
+            prefs.put("run.speed", speed().name());
+        });
+        return c;
+    }
+
+    /** Where the script runs: every session starts on the simulator; each file keeps its own target (RunChoices). */
+    private Combo targetCombo(RunActions actions) {
+        Combo c = combo(UiMsg.TOOL_TARGET.text(), 170);
+        for (RunOn t : RunOn.values()) {
+            c.add(t.label());
+        }
+        fitItems(c);
+        c.select(RunOn.SIMULATOR.ordinal());
+        c.setToolTipText(UiMsg.TOOL_TARGET_TIP.text());
+        c.addListener(SWT.Selection, e -> {
+            actions.targetChosen(target());
+            updatePort();
+        });
+        return c;
+    }
+
+    /** The serial port, typed or picked from the devices present when the list opens. */
+    private Combo portCombo(Prefs prefs) {
+        Combo c = labelledBox(UiMsg.TOOL_PORT.text(), 160, UiMsg.TOOL_PORT_TIP.text());
+        c.setText(prefs.get("run.port", ""));
+        c.addListener(SWT.MouseDown, e -> refreshPorts());
+        c.addListener(SWT.Modify, e -> prefs.put("run.port", c.getText()));
+        return c;
+    }
+
+    /** The hardware profile's file. */
+    private Combo profileCombo(Prefs prefs) {
+        Combo c = labelledBox(UiMsg.TOOL_PROFILE.text(), 180, UiMsg.TOOL_PROFILE_TIP.text());
+        c.setText(prefs.get("run.hardware", ""));
+        c.addListener(SWT.Modify, e -> prefs.put("run.hardware", c.getText()));
+        return c;
+    }
+
+    /** "…": picks the hardware profile's file. */
+    private Button browseButton() {
+        Button b = new Button(bar, SWT.PUSH);
+        b.setText("\u2026");
+        b.setToolTipText(UiMsg.TOOL_PROFILE_BROWSE_TIP.text());
+        b.addListener(SWT.Selection, e -> {
+            Path chosen = org.parpe.gui.panels.FileDialogs.ask(bar.getShell(), SWT.OPEN, UiMsg.HARDWARE_PROFILE.text(), "*.xml", null, null);
+            if (chosen != null) {
+                profile.setText(chosen.toString());
+            }
+        });
+        return b;
+    }
+
+    /** A label and an editable combo box of the given width. */
+    private Combo labelledBox(String label, int width, String tip) {
+        new Label(bar, SWT.NONE).setText(label);
+        Combo c = new Combo(bar, SWT.DROP_DOWN);
+        GridData gd = new GridData(SWT.LEFT, SWT.CENTER, false, false);
+        gd.widthHint = width;
+        c.setLayoutData(gd);
+        c.setToolTipText(tip);
+        return c;
     }
 
     private static <T> int index(T[] values, String name, java.util.function.Function<T, String> key) {

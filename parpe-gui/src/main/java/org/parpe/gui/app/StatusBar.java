@@ -7,6 +7,7 @@ import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Label;
+import org.parpe.gui.panels.TitleWidths;
 
 /**
  * The status bar: a message, where the steering keys go during a run, the simulator's state, the
@@ -50,8 +51,8 @@ public final class StatusBar {
         caret = field(70, false);
         sim.setText(UiMsg.SIM_IDLE.text());
         hardware.setText(UiMsg.HW_NOT_CONNECTED.text());
-        fit(sim);
-        fit(hardware);
+        TitleWidths.label(sim);
+        TitleWidths.label(hardware);
         time.setText("t = 0.00 s");
     }
 
@@ -61,12 +62,6 @@ public final class StatusBar {
         gd.widthHint = width;
         l.setLayoutData(gd);
         return l;
-    }
-
-    /** Widens {@code l} to its present text where a language's words are longer than the field. */
-    private static void fit(Label l) {
-        GridData gd = (GridData) l.getLayoutData();
-        gd.widthHint = Math.max(gd.widthHint, l.computeSize(SWT.DEFAULT, SWT.DEFAULT).x);
     }
 
     private void separator() {

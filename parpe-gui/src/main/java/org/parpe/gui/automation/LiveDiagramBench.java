@@ -81,12 +81,30 @@ final class LiveDiagramBench {
         }
         double s = (System.nanoTime() - t0) / 1e9;
         ide.runs().controller().observeRuns(null);
-        double[] late = new double[ticks - 1];
+        double[] late = lateness(at);
+        int n = late.length;
+        print("live_" + name + "_overlay_frames_per_s", frames / s);
+        print("live_" + name + "_paints_per_s", (pane.paints() - paints0) / s);
+        if (!name.equals("program")) {
+            frameCost(ide, pane, name);
+        }
+        if (n > 0) {
+            print("live_" + name + "_tick_late_ms_p50", late[n / 2]);
+            print("live_" + name + "_tick_late_ms_p99", late[n * 99 / 100]);
+            print("live_" + name + "_tick_late_ms_max", late[n - 1]);
+        }
+    }
+
+    /**
+     * How late each tick after the first came (ms, sorted), against the earliest schedule seen so
+     * far: the pacer starts again from where the run is after a lag of more than 0.25 s
+     * (WallClockPacer), as the start of the simulator causes.
+     */
+    private static double[] lateness(long[] at) {
+        double[] late = new double[at.length - 1];
         int n = 0;
-        // against the earliest schedule seen so far: the pacer starts again from where the run is
-        // after a lag of more than 0.25 s (WallClockPacer), as the start of the simulator causes
         double anchor = Double.POSITIVE_INFINITY;
-        for (int k = 0; k < ticks; k++) {
+        for (int k = 0; k < at.length; k++) {
             if (at[k] != 0) {
                 double due = at[k] / 1e6 - k * 10.0;
                 anchor = Math.min(anchor, due);
@@ -97,25 +115,23 @@ final class LiveDiagramBench {
         }
         late = Arrays.copyOf(late, n);
         Arrays.sort(late);
-        print("live_" + name + "_overlay_frames_per_s", frames / s);
-        print("live_" + name + "_paints_per_s", (pane.paints() - paints0) / s);
+        return late;
+    }
+
+    /** The UI thread's cost of one overlay frame: marks made and the canvas painted. */
+    private static void frameCost(IdeWindow ide, DiagramPane pane, String name) {
         var last = ide.runs().controller().live().since(-1);
-        if (last != null && last.tick() >= 0 && !name.equals("program")) {
-            // the UI thread's cost of one overlay frame: marks made and the canvas painted
-            for (int i = 0; i < 20; i++) {
-                pane.drawFrame(last);
-            }
-            long f0 = System.nanoTime();
-            for (int i = 0; i < 60; i++) {
-                pane.drawFrame(last);
-            }
-            print("live_" + name + "_overlay_frame_ms", (System.nanoTime() - f0) / 1e6 / 60);
+        if (last == null || last.tick() < 0) {
+            return;
         }
-        if (n > 0) {
-            print("live_" + name + "_tick_late_ms_p50", late[n / 2]);
-            print("live_" + name + "_tick_late_ms_p99", late[n * 99 / 100]);
-            print("live_" + name + "_tick_late_ms_max", late[n - 1]);
+        for (int i = 0; i < 20; i++) {
+            pane.drawFrame(last);
         }
+        long f0 = System.nanoTime();
+        for (int i = 0; i < 60; i++) {
+            pane.drawFrame(last);
+        }
+        print("live_" + name + "_overlay_frame_ms", (System.nanoTime() - f0) / 1e6 / 60);
     }
 
     private static void step(Display display) {

@@ -7,8 +7,6 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
 import java.util.function.Consumer;
 import org.eclipse.jface.dialogs.MessageDialog;
 import org.eclipse.swt.SWT;
@@ -67,13 +65,7 @@ public final class FileActions {
     private final Runnable changed;
     private final Runnable switched;
     private final Consumer<String> message;
-    private final ExecutorService reader = Executors.newSingleThreadExecutor(r -> {
-        Thread t = new Thread(r, "parpe-open");
-        t.setDaemon(true);
-        return t;
-    });
-    private long opening;
-    private boolean reading;
+    private final BackgroundRead reader;
     private Path file;
     /** The example this untitled document is a copy of, or null. */
     private Path example;
@@ -89,19 +81,6 @@ public final class FileActions {
     /** The file as it was on disk when it was opened or saved (time, size, file): a change means another program wrote it. */
     private DiskStamp disk;
 
-    /** What tells that a file was written since: its modification time, size and identity. */
-    private record DiskStamp(Object modified, long size, Object key) {
-        static DiskStamp of(Path p) {
-            try {
-                java.nio.file.attribute.BasicFileAttributes a = Files.readAttributes(p,
-                        java.nio.file.attribute.BasicFileAttributes.class);
-                return new DiskStamp(a.lastModifiedTime(), a.size(), a.fileKey());
-            } catch (IOException e) {
-                return new DiskStamp(null, -1, null); // gone
-            }
-        }
-    }
-
     /**
      * {@code changed} runs after the file, the text or the dirty state changed, {@code switched}
      * when another document is shown; {@code message} shows a line in the status bar.
@@ -115,6 +94,7 @@ public final class FileActions {
         this.autosave = new Autosave(prefs.home());
         this.changed = changed;
         this.slot = autosave.untitledSlot();
+        this.reader = new BackgroundRead(shell.getDisplay());
         this.questions = (title, text, buttons) -> new MessageDialog(shell, title, null, text, MessageDialog.QUESTION,
                 buttons, 0).open();
         this.saveTarget = (folder, name) -> SafeSave.ask(shell, folder, name);
@@ -122,7 +102,7 @@ public final class FileActions {
         shell.addListener(SWT.Activate, e -> noticeDiskChange());
         shell.addListener(SWT.Dispose, e -> {
             autosave.close();
-            reader.shutdownNow();
+            reader.close();
         });
         editor.document().addDocumentListener(new org.eclipse.jface.text.IDocumentListener() {
             @Override
@@ -232,33 +212,16 @@ public final class FileActions {
 
     private void read(Path p, boolean copy) {
         Path abs = p.toAbsolutePath().normalize();
-        long gen = ++opening;
-        reading = true;
         editor.viewer().setEditable(false);
         message.accept(UiMsg.OPENING.text(abs.getFileName()));
-        org.eclipse.swt.widgets.Display display = shell.getDisplay();
-        reader.execute(() -> {
-            String text = null;
-            String error = null;
-            try {
-                text = Files.readString(abs, StandardCharsets.UTF_8);
-            } catch (IOException | RuntimeException e) {
-                error = describe(e);
-            }
-            String t = text;
-            String why = error;
-            try {
-                display.asyncExec(() -> opened(gen, abs, t, why, copy));
-            } catch (org.eclipse.swt.SWTException e) {
-                // The window closed while the file was read.
+        reader.read(abs, (text, error) -> {
+            if (!shell.isDisposed()) {
+                opened(abs, text, error, copy);
             }
         });
     }
 
-    private void opened(long gen, Path abs, String text, String error, boolean copy) {
-        if (shell.isDisposed() || gen != opening) {
-            return;
-        }
+    private void opened(Path abs, String text, String error, boolean copy) {
         if (text == null) {
             stopReading();
             message.accept("");
@@ -275,14 +238,13 @@ public final class FileActions {
     }
 
     private void stopReading() {
-        opening++;
-        reading = false;
+        reader.cancel();
         editor.viewer().setEditable(true);
     }
 
     /** Whether a file is being read (the editor is read-only meanwhile). */
     public boolean reading() {
-        return reading;
+        return reader.busy();
     }
 
     /** Asks first if there are unsaved changes, then opens {@code p}. */
@@ -350,7 +312,7 @@ public final class FileActions {
      * so that it is autosaved and quitting asks before it is lost. Asks once per change.
      */
     void noticeDiskChange() {
-        if (reading || !changedOnDisk()) {
+        if (reader.busy() || !changedOnDisk()) {
             return;
         }
         disk = DiskStamp.of(file);

@@ -6,8 +6,8 @@ import java.util.Locale;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Table;
-import org.eclipse.swt.widgets.TableColumn;
 import org.eclipse.swt.widgets.TableItem;
+import org.parpe.gui.panels.TitleWidths;
 import org.parpe.sim.grade.Outcome;
 import org.parpe.sim.grade.Row;
 
@@ -33,10 +33,8 @@ final class RankingTable {
         table.setLinesVisible(true);
         String[] titles = titles();
         for (int i = 0; i < titles.length; i++) {
-            TableColumn c = new TableColumn(table, i == 0 || (i >= 2 && i != 3 && i != 6 && i != 8) ? SWT.RIGHT : SWT.LEFT);
-            c.setText(titles[i]);
-            c.pack(); // no rows yet: as wide as its title, which is longer in some languages
-            c.setWidth(Math.max(WIDTHS[i], c.getWidth()));
+            TitleWidths.column(table, i == 0 || (i >= 2 && i != 3 && i != 6 && i != 8) ? SWT.RIGHT : SWT.LEFT,
+                    titles[i], WIDTHS[i]);
         }
     }
 

@@ -2,6 +2,7 @@ package org.parpe.gui.hardware;
 
 
 import org.parpe.gui.text.UiMsg;
+import org.parpe.gui.panels.TitleWidths;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
@@ -16,7 +17,6 @@ import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.Shell;
 import org.eclipse.swt.widgets.Spinner;
 import org.eclipse.swt.widgets.Table;
-import org.eclipse.swt.widgets.TableColumn;
 import org.eclipse.swt.widgets.TableItem;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.diag.SourcePos;
@@ -70,26 +70,13 @@ public final class HardwareDialog {
         shell.setLayout(new GridLayout(1, false));
         Composite top = row(9);
         label(top, UiMsg.TOOL_PORT.text());
-        port = new Combo(top, SWT.DROP_DOWN);
-        port.setLayoutData(width(170));
-        port.setText(ide.port());
-        port.setToolTipText(UiMsg.HW_PORT_TIP.text());
-        port.addListener(SWT.MouseDown, e -> listPorts());
+        port = portBox(top);
         label(top, UiMsg.HW_PROTOCOL.text());
-        protocol = new Combo(top, SWT.READ_ONLY);
-        protocol.add(ANY);
-        for (ServoProtocol p : ServoProtocol.values()) {
-            protocol.add(p.key());
-        }
-        protocol.select(0);
+        protocol = anyOr(new Combo(top, SWT.READ_ONLY),
+                java.util.Arrays.stream(ServoProtocol.values()).map(ServoProtocol::key).toList());
         label(top, UiMsg.HW_BAUD.text());
-        baud = new Combo(top, SWT.DROP_DOWN);
+        baud = anyOr(new Combo(top, SWT.DROP_DOWN), java.util.Arrays.stream(BAUDS).mapToObj(String::valueOf).toList());
         baud.setLayoutData(width(100));
-        baud.add(ANY);
-        for (int b : BAUDS) {
-            baud.add(String.valueOf(b));
-        }
-        baud.select(0);
         button(top, UiMsg.HW_CONNECT.text(), UiMsg.HW_CONNECT_TIP.text(), this::connect);
         button(top, UiMsg.HW_SCAN.text(), UiMsg.HW_SCAN_TIP.text(), () -> {
             protocol.select(0);
@@ -97,37 +84,13 @@ public final class HardwareDialog {
             connect();
         });
 
-        table = new Table(shell, SWT.BORDER | SWT.FULL_SELECTION | SWT.SINGLE);
-        table.setHeaderVisible(true);
-        table.setLinesVisible(true);
-        GridData td = new GridData(SWT.FILL, SWT.FILL, true, true);
-        td.heightHint = 220;
-        table.setLayoutData(td);
-        for (String[] c : new String[][] {{UiMsg.HW_COL_ID.text(), "50"}, {UiMsg.HW_COL_MODEL.text(), "170"},
-            {UiMsg.HW_COL_POSITION.text(), "100"}, {UiMsg.HW_COL_TORQUE.text(), "80"}, {UiMsg.HW_COL_STATUS.text(), "260"}}) {
-            TableColumn col = new TableColumn(table, SWT.LEFT);
-            col.setText(c[0]);
-            // at least as wide as its header, which is longer in some languages ("Drehmoment")
-            col.pack();
-            col.setWidth(Math.max(col.getWidth(), Integer.parseInt(c[1])));
-        }
-        table.addListener(SWT.Selection, e -> selected());
+        table = servoTable();
 
-        Composite torque = row(5);
-        button(torque, UiMsg.HW_LIMP_ALL.text(), UiMsg.HW_LIMP_ALL_TIP.text(), () -> session.torque(-1, false));
-        button(torque, UiMsg.HW_HOLD_ALL.text(), UiMsg.HW_HOLD_ALL_TIP.text(), () -> session.torque(-1, true));
-        button(torque, UiMsg.HW_LIMP.text(), UiMsg.HW_LIMP_TIP.text(), () -> onSelected(r -> session.torque(r, false)));
-        button(torque, UiMsg.HW_HOLD.text(), UiMsg.HW_HOLD_TIP.text(),
-                () -> onSelected(r -> session.torque(r, true)));
+        torqueButtons();
 
         Composite jog = row(3);
         label(jog, UiMsg.HW_JOG.text());
-        jogBox = new Spinner(jog, SWT.BORDER);
-        jogBox.setLayoutData(width(90));
-        jogBox.setEnabled(false);
-        jogBox.setToolTipText(UiMsg.HW_JOG_TIP.text((int) HardwareSession.JOG_DEG_PER_S));
-        jogBox.addListener(SWT.Selection, e -> jog());
-        jogBox.addListener(SWT.DefaultSelection, e -> jog());
+        jogBox = jogSpinner(jog);
         jogValue = new Label(jog, SWT.NONE);
         jogValue.setLayoutData(width(260));
 
@@ -155,40 +118,69 @@ public final class HardwareDialog {
         shell.open();
     }
 
-    /**
-     * Over the IDE window, never at the screen's corner over the menu, and where it covers as
-     * little as possible of the bottom panels (the Pose panel and its Capture button, used while
-     * the dialog stays open): of the window's four corners and its top centre, inside the screen,
-     * the place that overlaps them least.
-     */
+    /** The serial port, typed or picked from the devices present when the list opens. */
+    private Combo portBox(Composite parent) {
+        Combo c = new Combo(parent, SWT.DROP_DOWN);
+        c.setLayoutData(width(170));
+        c.setText(ide.port());
+        c.setToolTipText(UiMsg.HW_PORT_TIP.text());
+        c.addListener(SWT.MouseDown, e -> listPorts());
+        return c;
+    }
+
+    /** {@code box} offering {@value #ANY} and then {@code choices}, {@value #ANY} chosen. */
+    private static Combo anyOr(Combo box, List<String> choices) {
+        box.add(ANY);
+        choices.forEach(box::add);
+        box.select(0);
+        return box;
+    }
+
+    /** The servos found: id, model, position, torque, status. */
+    private Table servoTable() {
+        Table t = new Table(shell, SWT.BORDER | SWT.FULL_SELECTION | SWT.SINGLE);
+        t.setHeaderVisible(true);
+        t.setLinesVisible(true);
+        GridData td = new GridData(SWT.FILL, SWT.FILL, true, true);
+        td.heightHint = 220;
+        t.setLayoutData(td);
+        TitleWidths.column(t, SWT.LEFT, UiMsg.HW_COL_ID.text(), 50);
+        TitleWidths.column(t, SWT.LEFT, UiMsg.HW_COL_MODEL.text(), 170);
+        TitleWidths.column(t, SWT.LEFT, UiMsg.HW_COL_POSITION.text(), 100);
+        TitleWidths.column(t, SWT.LEFT, UiMsg.HW_COL_TORQUE.text(), 80);
+        TitleWidths.column(t, SWT.LEFT, UiMsg.HW_COL_STATUS.text(), 260);
+        t.addListener(SWT.Selection, e -> selected());
+        return t;
+    }
+
+    /** Limp or hold all servos, or the selected one. */
+    private void torqueButtons() {
+        Composite torque = row(5);
+        button(torque, UiMsg.HW_LIMP_ALL.text(), UiMsg.HW_LIMP_ALL_TIP.text(), () -> session.torque(-1, false));
+        button(torque, UiMsg.HW_HOLD_ALL.text(), UiMsg.HW_HOLD_ALL_TIP.text(), () -> session.torque(-1, true));
+        button(torque, UiMsg.HW_LIMP.text(), UiMsg.HW_LIMP_TIP.text(), () -> onSelected(r -> session.torque(r, false)));
+        button(torque, UiMsg.HW_HOLD.text(), UiMsg.HW_HOLD_TIP.text(),
+                () -> onSelected(r -> session.torque(r, true)));
+    }
+
+    /** The jog box: the selected servo's target, off until a servo's position is known. */
+    private Spinner jogSpinner(Composite parent) {
+        Spinner box = new Spinner(parent, SWT.BORDER);
+        box.setLayoutData(width(90));
+        box.setEnabled(false);
+        box.setToolTipText(UiMsg.HW_JOG_TIP.text((int) HardwareSession.JOG_DEG_PER_S));
+        box.addListener(SWT.Selection, e -> jog());
+        box.addListener(SWT.DefaultSelection, e -> jog());
+        return box;
+    }
+
+    /** Over the IDE window, clear of the Pose panel where it can be ({@link DialogPlace}). */
     private void place() {
-        org.eclipse.swt.graphics.Rectangle owner = ide.shell().getBounds();
-        org.eclipse.swt.graphics.Rectangle screen = ide.shell().getMonitor().getClientArea();
-        org.eclipse.swt.graphics.Point size = shell.getSize();
         org.eclipse.swt.widgets.Control panels = ide.posePanel().getParent();
-        org.eclipse.swt.graphics.Rectangle avoid = ide.shell().getDisplay().map(panels.getParent(), null,
-                panels.getBounds());
-        int top = owner.y + Math.max(40, owner.height / 12);
-        int[][] candidates = {
-            {owner.x + (owner.width - size.x) / 2, top},
-            {owner.x + owner.width - size.x - 20, top},
-            {owner.x + 20, top},
-            {owner.x + owner.width - size.x - 20, owner.y + owner.height - size.y - 20},
-            {owner.x + 20, owner.y + owner.height - size.y - 20}};
-        org.eclipse.swt.graphics.Rectangle best = null;
-        long bestOverlap = Long.MAX_VALUE;
-        for (int[] c : candidates) {
-            int x = Math.max(screen.x, Math.min(c[0], screen.x + screen.width - size.x));
-            int y = Math.max(screen.y, Math.min(c[1], screen.y + screen.height - size.y));
-            org.eclipse.swt.graphics.Rectangle r = new org.eclipse.swt.graphics.Rectangle(x, y, size.x, size.y);
-            org.eclipse.swt.graphics.Rectangle i = r.intersection(avoid);
-            long overlap = (long) Math.max(0, i.width) * Math.max(0, i.height);
-            if (overlap < bestOverlap) {
-                best = r;
-                bestOverlap = overlap;
-            }
-        }
-        shell.setLocation(best.x, best.y);
+        org.eclipse.swt.graphics.Rectangle at = DialogPlace.over(ide.shell().getBounds(),
+                ide.shell().getMonitor().getClientArea(), shell.getSize(),
+                ide.shell().getDisplay().map(panels.getParent(), null, panels.getBounds()));
+        shell.setLocation(at.x, at.y);
     }
 
     /** Fills the port list, keeping what is typed; with no adapter found the dialog says so. */

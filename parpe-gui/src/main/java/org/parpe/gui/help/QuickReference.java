@@ -42,31 +42,10 @@ public final class QuickReference {
             item.setFont(0, JFaceResources.getTextFont());
             item.setFont(2, JFaceResources.getTextFont());
         }
-        // Each column as wide as its widest cell in that cell's font (pack() measures the table's font only).
-        org.eclipse.swt.graphics.GC gc = new org.eclipse.swt.graphics.GC(table);
-        try {
-            for (int c = 0; c < table.getColumnCount(); c++) {
-                TableColumn column = table.getColumn(c);
-                column.pack();
-                int width = column.getWidth();
-                for (TableItem item : table.getItems()) {
-                    gc.setFont(item.getFont(c));
-                    width = Math.max(width, gc.textExtent(item.getText(c)).x + 24);
-                }
-                column.setWidth(width);
-            }
-        } finally {
-            gc.dispose();
-        }
+        fitColumns(table);
         table.addListener(SWT.KeyDown, e -> {
             if ((e.stateMask & SWT.MOD1) != 0 && (e.keyCode == 'c' || e.keyCode == SWT.INSERT)) {
-                StringBuilder b = new StringBuilder();
-                for (TableItem item : table.getSelection()) {
-                    b.append(item.getText(0)).append('\t').append(item.getText(1)).append('\t').append(item.getText(2)).append('\n');
-                }
-                org.eclipse.swt.dnd.Clipboard clip = new org.eclipse.swt.dnd.Clipboard(shell.getDisplay());
-                clip.setContents(new Object[] {b.toString()}, new org.eclipse.swt.dnd.Transfer[] {org.eclipse.swt.dnd.TextTransfer.getInstance()});
-                clip.dispose();
+                copySelection(table);
             }
         });
         String[] notes = HelpText.notes();
@@ -83,5 +62,35 @@ public final class QuickReference {
         shell.setSize(Math.min(size.x + 20, area.width), Math.min(size.y + 20, area.height));
         shell.open();
         return shell;
+    }
+
+    /** Each column as wide as its widest cell in that cell's font (pack() measures the table's font only). */
+    private static void fitColumns(Table table) {
+        org.eclipse.swt.graphics.GC gc = new org.eclipse.swt.graphics.GC(table);
+        try {
+            for (int c = 0; c < table.getColumnCount(); c++) {
+                TableColumn column = table.getColumn(c);
+                column.pack();
+                int width = column.getWidth();
+                for (TableItem item : table.getItems()) {
+                    gc.setFont(item.getFont(c));
+                    width = Math.max(width, gc.textExtent(item.getText(c)).x + 24);
+                }
+                column.setWidth(width);
+            }
+        } finally {
+            gc.dispose();
+        }
+    }
+
+    /** Puts the selected rows on the clipboard, a tab between cells. */
+    private static void copySelection(Table table) {
+        StringBuilder b = new StringBuilder();
+        for (TableItem item : table.getSelection()) {
+            b.append(item.getText(0)).append('\t').append(item.getText(1)).append('\t').append(item.getText(2)).append('\n');
+        }
+        org.eclipse.swt.dnd.Clipboard clip = new org.eclipse.swt.dnd.Clipboard(table.getDisplay());
+        clip.setContents(new Object[] {b.toString()}, new org.eclipse.swt.dnd.Transfer[] {org.eclipse.swt.dnd.TextTransfer.getInstance()});
+        clip.dispose();
     }
 }

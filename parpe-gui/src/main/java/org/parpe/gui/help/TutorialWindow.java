@@ -13,12 +13,9 @@ import java.util.stream.Stream;
 import org.eclipse.jface.resource.JFaceResources;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.custom.SashForm;
-import org.eclipse.swt.custom.StyleRange;
 import org.eclipse.swt.custom.StyledText;
-import org.eclipse.swt.graphics.Color;
 import org.eclipse.swt.graphics.Font;
 import org.eclipse.swt.graphics.FontData;
-import org.eclipse.swt.graphics.GlyphMetrics;
 import org.eclipse.swt.graphics.Image;
 import org.eclipse.swt.graphics.ImageData;
 import org.eclipse.swt.layout.GridData;
@@ -39,7 +36,6 @@ import org.parpe.core.text.Lang;
  */
 public final class TutorialWindow {
     private static final int IMAGE_WIDTH = 720;
-    private static final char OBJECT = '\uFFFC';
 
     private final Shell shell;
     /** What holds the tutorial: its own window, or a composite in the IDE's dock. */
@@ -59,7 +55,7 @@ public final class TutorialWindow {
     private final java.util.Set<String> pictures = new java.util.HashSet<>();
     private final Consumer<Path> openScript;
     private final Consumer<String> insertCode;
-    private final List<LinkRange> links = new ArrayList<>();
+    private final List<PageText.Link> links = new ArrayList<>();
     private Path script;
     /** The text's width when the page shown was laid out. */
     private int renderedWidth = -1;
@@ -120,45 +116,9 @@ public final class TutorialWindow {
         fonts();
         // the pictures and the tables are laid out for the column's width: again when it changes (the dock's sash)
         text.addListener(SWT.Resize, e -> text.getDisplay().timerExec(200, this::fitWidth));
-        // Ctrl + / Ctrl − / Ctrl 0 as in the IDE's editor (a projector): anywhere in this window.
-        org.eclipse.swt.widgets.Listener keys = e -> {
-            var focus = e.display.getFocusControl();
-            if ((e.stateMask & SWT.MOD1) != 0 && inside(focus)
-                    && org.parpe.gui.panels.Zoom.step(e) != org.parpe.gui.panels.Zoom.NONE) {
-                zoom(org.parpe.gui.panels.Zoom.step(e));
-                e.doit = false;
-                e.type = SWT.None;
-            }
-        };
-        shell.getDisplay().addFilter(SWT.KeyDown, keys);
-        root.addListener(SWT.Dispose, e -> e.display.removeFilter(SWT.KeyDown, keys));
-        text.addListener(SWT.MouseUp, e -> {
-            if (e.button == 1 && text.getSelectionCount() == 0) {
-                int at = text.getOffsetAtPoint(new org.eclipse.swt.graphics.Point(e.x, e.y));
-                if (at >= 0) {
-                    click(at);
-                }
-            }
-        });
-        text.addListener(SWT.MouseMove, e -> {
-            int at = text.getOffsetAtPoint(new org.eclipse.swt.graphics.Point(e.x, e.y));
-            boolean over = at >= 0 && links.stream().anyMatch(t -> at >= t.start() && at < t.start() + t.length());
-            text.setCursor(over ? text.getDisplay().getSystemCursor(SWT.CURSOR_HAND) : null);
-        });
-        text.addPaintObjectListener(e -> {
-            Object data = e.style.data;
-            if (data instanceof Image img && !img.isDisposed()) {
-                e.gc.drawImage(img, e.x, e.y + e.ascent - e.style.metrics.ascent);
-            }
-        });
-        Composite buttons = org.parpe.gui.panels.WrapRow.of(root); // "Open NAME" wraps under the others in a narrow dock
-        Button previous = button(buttons, UiMsg.TUTORIAL_PREVIOUS.text(), () -> show(index.getSelectionIndex() - 1));
-        Button next = button(buttons, UiMsg.TUTORIAL_NEXT.text(), () -> show(index.getSelectionIndex() + 1));
-        open = button(buttons, UiMsg.TUTORIAL_OPEN_SCRIPT.text(), () -> {
-            if (script != null) {
-                openScript.accept(script);
-            }
-        });
+        zoomKeys();
+        clicks();
+        open = buttons();
         for (Path p : pages) {
             index.add(title(p));
         }
@@ -170,6 +130,56 @@ public final class TutorialWindow {
         if (!docked) {
             fitTo(parent.getMonitor().getClientArea());
         }
+    }
+
+    /** Ctrl + / Ctrl − / Ctrl 0 as in the IDE's editor (a projector): anywhere in this window. */
+    private void zoomKeys() {
+        org.eclipse.swt.widgets.Listener keys = e -> {
+            var focus = e.display.getFocusControl();
+            if ((e.stateMask & SWT.MOD1) != 0 && inside(focus)
+                    && org.parpe.gui.panels.Zoom.step(e) != org.parpe.gui.panels.Zoom.NONE) {
+                zoom(org.parpe.gui.panels.Zoom.step(e));
+                e.doit = false;
+                e.type = SWT.None;
+            }
+        };
+        shell.getDisplay().addFilter(SWT.KeyDown, keys);
+        root.addListener(SWT.Dispose, e -> e.display.removeFilter(SWT.KeyDown, keys));
+    }
+
+    /** Links and pictures followed on a click, the hand over them; pictures drawn in the text. */
+    private void clicks() {
+        text.addListener(SWT.MouseUp, e -> {
+            if (e.button == 1 && text.getSelectionCount() == 0) {
+                int at = text.getOffsetAtPoint(new org.eclipse.swt.graphics.Point(e.x, e.y));
+                if (at >= 0) {
+                    click(at);
+                }
+            }
+        });
+        text.addListener(SWT.MouseMove, e -> {
+            int at = text.getOffsetAtPoint(new org.eclipse.swt.graphics.Point(e.x, e.y));
+            boolean over = at >= 0 && links.stream().anyMatch(t -> t.holds(at));
+            text.setCursor(over ? text.getDisplay().getSystemCursor(SWT.CURSOR_HAND) : null);
+        });
+        text.addPaintObjectListener(e -> {
+            Object data = e.style.data;
+            if (data instanceof Image img && !img.isDisposed()) {
+                e.gc.drawImage(img, e.x, e.y + e.ascent - e.style.metrics.ascent);
+            }
+        });
+    }
+
+    /** Previous, Next and "Open the lesson's script"; returns the last. */
+    private Button buttons() {
+        Composite buttons = org.parpe.gui.panels.WrapRow.of(root); // "Open NAME" wraps under the others in a narrow dock
+        button(buttons, UiMsg.TUTORIAL_PREVIOUS.text(), () -> show(index.getSelectionIndex() - 1));
+        button(buttons, UiMsg.TUTORIAL_NEXT.text(), () -> show(index.getSelectionIndex() + 1));
+        return button(buttons, UiMsg.TUTORIAL_OPEN_SCRIPT.text(), () -> {
+            if (script != null) {
+                openScript.accept(script);
+            }
+        });
     }
 
     /** Lays the page out again if the text's width changed since it was laid out, staying where it was scrolled to. */
@@ -334,139 +344,14 @@ public final class TutorialWindow {
     private void render(Markdown.Page page, Path dir) {
         disposeImages();
         renderedWidth = text.getClientArea().width;
-        StringBuilder all = new StringBuilder();
-        List<StyleRange> styles = new ArrayList<>();
-        List<int[]> tables = new ArrayList<>();
-        List<int[]> cards = new ArrayList<>();
         links.clear();
-        Color codeBack = shell.getDisplay().getSystemColor(SWT.COLOR_WIDGET_LIGHT_SHADOW);
-        Color link = shell.getDisplay().getSystemColor(SWT.COLOR_LINK_FOREGROUND);
-        for (Markdown.Block given : page.blocks()) {
-            // a table wider than the column (a docked tutorial) reads as cards, not as cells wrapping into each other
-            Markdown.Block b = given.kind() == Markdown.Kind.TABLE && Tables.tooWide(text, given.text()) ? TableCards.cards(given) : given;
-            int start = all.length();
-            String indent = b.kind() == Markdown.Kind.ITEM ? "    ".repeat(Math.max(0, b.level() - 1)) + "  " : "";
-            switch (b.kind()) {
-                case IMAGE -> {
-                    Path file = dir.resolve(b.target()).normalize();
-                    Image img = image(file);
-                    if (img == null) {
-                        all.append(UiMsg.TUTORIAL_PICTURE.text(b.text()));
-                    } else {
-                        all.append(OBJECT);
-                        // scaled to the column, a screenshot is past reading: a click shows it at full size
-                        links.add(new LinkRange(start, 1, file.toString(), null));
-                        String full = "\n" + UiMsg.TUTORIAL_FULL_SIZE.text();
-                        links.add(new LinkRange(start + 2, full.length() - 1, file.toString(), null));
-                        styles.add(linkStyle(start + 2, full.length() - 1, link));
-                        all.append(full);
-                        StyleRange r = new StyleRange();
-                        r.start = start;
-                        r.length = 1;
-                        r.data = img;
-                        org.eclipse.swt.graphics.Rectangle bounds = img.getBounds();
-                        r.metrics = new GlyphMetrics(bounds.height, 0, bounds.width);
-                        styles.add(r);
-                    }
-                }
-                case CODE -> {
-                    all.append(b.text());
-                    StyleRange r = new StyleRange(start, b.text().length(), null, codeBack);
-                    r.font = code;
-                    styles.add(r);
-                    if (insertCode != null && b.text().strip().startsWith("<")) {
-                        // A lesson's XML goes to the editor with one click (where it belongs, one undo).
-                        String action = "\n" + UiMsg.TUTORIAL_INSERT_CODE.text();
-                        int at = all.length() + 1;
-                        all.append(action);
-                        links.add(new LinkRange(at, action.length() - 1, null, b.text()));
-                        styles.add(linkStyle(at, action.length() - 1, link));
-                    }
-                }
-                default -> {
-                    all.append(indent).append(b.text());
-                    int base = start + indent.length();
-                    if (b.kind() == Markdown.Kind.HEADING) {
-                        StyleRange r = new StyleRange(start, b.text().length(), null, null);
-                        r.font = heading;
-                        styles.add(r);
-                    }
-                    if (b.kind() == Markdown.Kind.TABLE) {
-                        tables.add(new int[] {start, b.text().split("\n", -1).length});
-                    } else if (b != given) {
-                        cards.add(new int[] {start, b.text().split("\n", -1).length});
-                    }
-                    for (Markdown.Span s : b.spans()) {
-                        styles.add(span(base + s.start(), s, link));
-                        if (s.style() == Markdown.Style.LINK) {
-                            links.add(new LinkRange(base + s.start(), s.length(), s.target(), null));
-                        }
-                    }
-                }
-            }
-            all.append("\n\n");
-        }
-        text.setText(all.toString());
-        styles.sort(java.util.Comparator.comparingInt(r -> r.start));
-        text.setStyleRanges(merge(styles));
-        for (int[] t : tables) {
-            Tables.tabStops(text, t[0], t[1]);
-        }
-        for (int[] c : cards) {
-            Tables.hangCards(text, c[0], c[1]);
-        }
-    }
-
-    private StyleRange span(int at, Markdown.Span s, Color link) {
-        StyleRange r = new StyleRange(at, s.length(), null, null);
-        switch (s.style()) {
-            case CODE -> r.font = code;
-            case BOLD -> r.fontStyle = SWT.BOLD;
-            case ITALIC -> r.fontStyle = SWT.ITALIC;
-            case LINK -> {
-                return linkStyle(at, s.length(), link);
-            }
-        }
-        return r;
-    }
-
-    private static StyleRange linkStyle(int at, int length, Color link) {
-        StyleRange r = new StyleRange(at, length, link, null);
-        r.underline = true;
-        r.underlineStyle = SWT.UNDERLINE_LINK;
-        return r;
-    }
-
-    /**
-     * Style ranges that never overlap (StyledText refuses overlapping ones): where a run lies
-     * inside another (bold inside a link), the inner one is kept with the outer one's font.
-     */
-    private static StyleRange[] merge(List<StyleRange> sorted) {
-        List<StyleRange> out = new ArrayList<>();
-        int end = 0;
-        for (StyleRange r : sorted) {
-            if (r.start >= end) {
-                out.add(r);
-                end = r.start + r.length;
-            } else if (r.underline && !out.isEmpty()) {
-                // A link around code: the code keeps its font and looks like a link too.
-                StyleRange kept = out.get(out.size() - 1);
-                kept.underline = true;
-                kept.underlineStyle = r.underlineStyle;
-                kept.foreground = r.foreground;
-            }
-        }
-        return out.toArray(new StyleRange[0]);
-    }
-
-    /** A clickable run: a link's target, or code to put into the editor. */
-    private record LinkRange(int start, int length, String link, String code) {
+        links.addAll(new PageText(text, heading, code, insertCode != null, this::image).show(page, dir));
     }
 
     /** Follows the link or sends the code under {@code offset}, if any. */
     private void click(int offset) {
-        for (LinkRange t : links) {
-            if (offset >= t.start() && offset < t.start() + t.length()) {
+        for (PageText.Link t : links) {
+            if (t.holds(offset)) {
                 if (t.code() != null) {
                     insertCode.accept(t.code());
                 } else {

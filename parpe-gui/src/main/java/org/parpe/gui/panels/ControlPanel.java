@@ -18,7 +18,7 @@ import org.eclipse.swt.widgets.Text;
 import org.parpe.core.model.Control.ControlType;
 import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.Program;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 
 /**
  * The control panel generated from a script's {@code <controls>}: a slider, a set of radio
@@ -63,14 +63,14 @@ public final class ControlPanel {
         rows.clear();
         if (program == null || program.controls().isEmpty()) {
             Label l = new Label(body, SWT.WRAP);
-            l.setText(program == null ? PanelMsg.PANEL_CONTROLS_APPEAR.text() : PanelMsg.PANEL_NO_CONTROLS.text());
+            l.setText(program == null ? ToolMsg.PANEL_CONTROLS_APPEAR.text() : ToolMsg.PANEL_NO_CONTROLS.text());
             l.setLayoutData(new GridData(SWT.FILL, SWT.TOP, true, false, 3, 1));
         } else {
             for (org.parpe.core.model.Control c : program.controls()) {
                 rows.add(ControlRow.create(body, c, program, target));
             }
             Label hint = new Label(body, SWT.WRAP);
-            hint.setText(PanelMsg.PANEL_KEYS_HINT.text());
+            hint.setText(ToolMsg.PANEL_KEYS_HINT.text());
             hint.setForeground(body.getDisplay().getSystemColor(SWT.COLOR_DARK_GRAY));
             hint.setLayoutData(new GridData(SWT.FILL, SWT.TOP, true, false, 3, 1));
         }
@@ -306,7 +306,7 @@ public final class ControlPanel {
             text = new Text(body, SWT.BORDER | SWT.SINGLE);
             text.setText(Numbers.format(c.value()));
             text.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
-            text.setToolTipText(PanelMsg.PANEL_TYPE_NUMBER.text());
+            text.setToolTipText(ToolMsg.PANEL_TYPE_NUMBER.text());
             text.addListener(SWT.DefaultSelection, e -> push());
             text.addListener(SWT.FocusOut, e -> push());
         }
@@ -316,11 +316,11 @@ public final class ControlPanel {
             Double v = Numbers.parsePlain(text.getText());
             if (v == null) {
                 text.setBackground(text.getDisplay().getSystemColor(SWT.COLOR_YELLOW));
-                text.setToolTipText(PanelMsg.PANEL_NOT_A_NUMBER_KEEPS.text(text.getText(), def.name()));
+                text.setToolTipText(ToolMsg.PANEL_NOT_A_NUMBER_KEEPS.text(text.getText(), def.name()));
                 return;
             }
             text.setBackground(null);
-            text.setToolTipText(PanelMsg.PANEL_TYPE_NUMBER.text());
+            text.setToolTipText(ToolMsg.PANEL_TYPE_NUMBER.text());
             target.setControl(def.name(), v);
         }
 

@@ -17,7 +17,7 @@ import org.parpe.core.model.MainEntry;
 import org.parpe.core.model.Parameter;
 import org.parpe.core.model.Program;
 import org.parpe.core.model.StateDef;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 
 /**
  * The outline of the last program that loaded: robot groups, parameters, controls, states,
@@ -58,7 +58,7 @@ public final class OutlineView {
         }
         entries.forEach((section, n) -> {
             if (n > SECTION_LIMIT) {
-                new TreeItem(section, SWT.NONE).setText(PanelMsg.OUTLINE_MORE.text(n - SECTION_LIMIT));
+                new TreeItem(section, SWT.NONE).setText(ToolMsg.OUTLINE_MORE.text(n - SECTION_LIMIT));
             }
         });
         entries.clear();
@@ -66,41 +66,41 @@ public final class OutlineView {
     }
 
     private void fill(Program p) {
-        TreeItem robot = section(PanelMsg.OUTLINE_ROBOT.text(p.moduleIds().length), p.robot().pos());
+        TreeItem robot = section(ToolMsg.OUTLINE_ROBOT.text(p.moduleIds().length), p.robot().pos());
         for (Group g : p.robot().groups()) {
             if (!g.implicit()) {
                 node(robot, g.name() + "  [" + g.size() + "]", g.pos());
             }
         }
         if (!p.parameters().isEmpty()) {
-            TreeItem s = section(PanelMsg.OUTLINE_PARAMETERS.text(), null);
+            TreeItem s = section(ToolMsg.OUTLINE_PARAMETERS.text(), null);
             for (Parameter x : p.parameters()) {
                 node(s, x.name() + " = " + org.parpe.core.lang.Numbers.format(p.parameterValues().getOrDefault(x.name(), x.value())), x.pos());
             }
         }
         if (!p.controls().isEmpty()) {
-            TreeItem s = section(PanelMsg.OUTLINE_CONTROLS.text(), null);
+            TreeItem s = section(ToolMsg.OUTLINE_CONTROLS.text(), null);
             for (Control c : p.controls()) {
                 node(s, c.name() + "  (" + c.type().word() + ")", c.pos());
             }
         }
-        TreeItem states = section(PanelMsg.OUTLINE_STATES.text(), null);
+        TreeItem states = section(ToolMsg.OUTLINE_STATES.text(), null);
         for (StateDef st : p.states()) {
             node(states, st.name(), st.pos());
         }
-        TreeItem automata = section(PanelMsg.OUTLINE_AUTOMATA.text(), null);
+        TreeItem automata = section(ToolMsg.OUTLINE_AUTOMATA.text(), null);
         for (Automaton a : p.automata()) {
-            node(automata, (a.table() ? PanelMsg.OUTLINE_GAIT_TABLE : PanelMsg.OUTLINE_AUTOMATON).text(a.name(), a.states().size()), a.pos());
+            node(automata, (a.table() ? ToolMsg.OUTLINE_GAIT_TABLE : ToolMsg.OUTLINE_AUTOMATON).text(a.name(), a.states().size()), a.pos());
         }
-        TreeItem behaviors = section(PanelMsg.OUTLINE_BEHAVIORS.text(), null);
+        TreeItem behaviors = section(ToolMsg.OUTLINE_BEHAVIORS.text(), null);
         for (Behavior b : p.behaviors()) {
             TreeItem bi = node(behaviors, b.name(), b.pos());
             for (Instance in : b.instances()) {
-                node(bi, PanelMsg.OUTLINE_INSTANCE.text(in.name(), in.group()), in.pos());
+                node(bi, ToolMsg.OUTLINE_INSTANCE.text(in.name(), in.group()), in.pos());
             }
         }
         p.mainDef().ifPresent(m -> {
-            TreeItem main = section((m.cycles() == org.parpe.core.model.MainDef.FOREVER ? PanelMsg.OUTLINE_MAIN_FOREVER : PanelMsg.OUTLINE_MAIN).text(), m.pos());
+            TreeItem main = section((m.cycles() == org.parpe.core.model.MainDef.FOREVER ? ToolMsg.OUTLINE_MAIN_FOREVER : ToolMsg.OUTLINE_MAIN).text(), m.pos());
             for (MainEntry e : m.entries()) {
                 node(main, e.behavior(), e.pos());
             }

@@ -21,7 +21,7 @@ import org.eclipse.swt.widgets.MenuItem;
 import org.eclipse.swt.widgets.Text;
 import org.eclipse.swt.widgets.ToolBar;
 import org.eclipse.swt.widgets.ToolItem;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 
 /**
  * A row of controls that never runs off its right edge (a 1366-pixel classroom laptop): the
@@ -47,7 +47,7 @@ public final class OverflowBar {
         bar.setData(KEY, this);
         chevron = new Button(bar, SWT.PUSH);
         chevron.setText("\u00bb");
-        chevron.setToolTipText(PanelMsg.PANEL_MORE_TIP.text());
+        chevron.setToolTipText(ToolMsg.PANEL_MORE_TIP.text());
         chevron.addListener(SWT.Selection, e -> {
             Menu m = menu();
             Rectangle b = chevron.getBounds();
@@ -129,7 +129,7 @@ public final class OverflowBar {
                 v.setSelection(i == combo.getSelectionIndex());
             }
         } else if (c instanceof Combo || c instanceof Text) {
-            String name = label != null ? label : PanelMsg.PANEL_VALUE.text();
+            String name = label != null ? label : ToolMsg.PANEL_VALUE.text();
             item(m, SWT.PUSH, name + ": " + text(c) + "\u2026", c.getEnabled(), () -> {
                 InputDialog d = new InputDialog(c.getShell(), name, name + ":", text(c), null);
                 if (d.open() == Window.OK) {

@@ -15,7 +15,7 @@ import org.eclipse.swt.widgets.Shell;
 import org.eclipse.swt.widgets.Text;
 import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.Parameter;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 
 /**
  * The dialog generated from {@code <parameters>} before a run: one number box per parameter
@@ -41,14 +41,14 @@ public final class ParametersDialog extends TitleAreaDialog {
     @Override
     protected void configureShell(Shell shell) {
         super.configureShell(shell);
-        shell.setText(PanelMsg.PARAMS_TITLE.text());
+        shell.setText(ToolMsg.PARAMS_TITLE.text());
     }
 
     @Override
     protected Control createDialogArea(Composite parent) {
         Composite area = (Composite) super.createDialogArea(parent);
-        setTitle(PanelMsg.PARAMS_HEADING.text());
-        setMessage(PanelMsg.PARAMS_MESSAGE.text());
+        setTitle(ToolMsg.PARAMS_HEADING.text());
+        setMessage(ToolMsg.PARAMS_MESSAGE.text());
         Composite grid = new Composite(area, SWT.NONE);
         grid.setLayout(new GridLayout(3, false));
         grid.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
@@ -68,7 +68,7 @@ public final class ParametersDialog extends TitleAreaDialog {
 
     @Override
     protected void createButtonsForButtonBar(Composite parent) {
-        createButton(parent, IDialogConstants.OK_ID, PanelMsg.PARAMS_RUN.text(), true);
+        createButton(parent, IDialogConstants.OK_ID, ToolMsg.PARAMS_RUN.text(), true);
         createButton(parent, IDialogConstants.CANCEL_ID, IDialogConstants.CANCEL_LABEL, false);
         validate();
     }
@@ -76,7 +76,7 @@ public final class ParametersDialog extends TitleAreaDialog {
     private static String bounds(Parameter p) {
         String lo = p.min() == null ? "" : Numbers.format(p.min()) + " \u2264 ";
         String hi = p.max() == null ? "" : " \u2264 " + Numbers.format(p.max());
-        return PanelMsg.PARAMS_BOUNDS.text(lo + p.name() + hi, Numbers.format(p.value()));
+        return ToolMsg.PARAMS_BOUNDS.text(lo + p.name() + hi, Numbers.format(p.value()));
     }
 
     /** The first problem with the values typed, or null. */
@@ -87,7 +87,7 @@ public final class ParametersDialog extends TitleAreaDialog {
                 continue;
             }
             Double v = Numbers.parsePlain(t.getText());
-            String err = v == null ? PanelMsg.PARAMS_NOT_A_NUMBER.text(p.displayLabel(), t.getText().trim()) : p.check(v);
+            String err = v == null ? ToolMsg.PARAMS_NOT_A_NUMBER.text(p.displayLabel(), t.getText().trim()) : p.check(v);
             if (err != null) {
                 return err;
             }

@@ -8,7 +8,7 @@ import org.eclipse.swt.widgets.Control;
 import org.eclipse.swt.widgets.List;
 import org.parpe.core.plot.AngleRecorder;
 import org.parpe.core.plot.PlotStyle;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 
 /**
  * Live plots of commanded (dashed) and measured (solid) joint angles over the last seconds of
@@ -34,7 +34,7 @@ public final class PlotView {
     public PlotView(Composite parent) {
         sash = new SashForm(parent, SWT.HORIZONTAL);
         chooser = new List(sash, SWT.MULTI | SWT.V_SCROLL | SWT.BORDER);
-        chooser.setToolTipText(PanelMsg.PLOT_CHOOSER_TIP.text());
+        chooser.setToolTipText(ToolMsg.PLOT_CHOOSER_TIP.text());
         chooser.addListener(SWT.Selection, e -> refresh());
         chart = new ChartView(sash, SWT.NONE);
         sash.setWeights(1, 6);
@@ -83,7 +83,7 @@ public final class PlotView {
             return;
         }
         if (recorder == null) {
-            chart.message(PanelMsg.PLOT_EMPTY.text());
+            chart.message(ToolMsg.PLOT_EMPTY.text());
             return;
         }
         int[] sel = chooser.getSelectionIndices();
@@ -94,13 +94,13 @@ public final class PlotView {
                 tEnd = Math.max(tEnd, t[n - 1]);
             }
         }
-        chart.show(PanelMsg.PLOT_TITLE.text(), PanelMsg.PLOT_TIME_AXIS.text(), new double[] {tEnd - WINDOW, tEnd}, new double[] {-90, 90}, f -> {
+        chart.show(ToolMsg.PLOT_TITLE.text(), ToolMsg.PLOT_TIME_AXIS.text(), new double[] {tEnd - WINDOW, tEnd}, new double[] {-90, 90}, f -> {
             for (int k = 0; k < sel.length; k++) {
                 int id = ids[sel[k]];
                 int n = recorder.copy(id, t, cmd, meas);
                 int rgb = PlotStyle.series(k);
-                f.line(PanelMsg.PLOT_MEASURED.text(id), t, meas, n, rgb, false);
-                f.line(PanelMsg.PLOT_COMMANDED.text(id), t, cmd, n, rgb, true);
+                f.line(ToolMsg.PLOT_MEASURED.text(id), t, meas, n, rgb, false);
+                f.line(ToolMsg.PLOT_COMMANDED.text(id), t, cmd, n, rgb, true);
             }
         });
     }

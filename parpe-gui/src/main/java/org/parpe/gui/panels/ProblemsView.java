@@ -14,7 +14,7 @@ import org.eclipse.swt.widgets.TableItem;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.Severity;
 import org.parpe.core.diag.SourcePos;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 
 /**
  * The Problems view: the errors and warnings of the last validation of the text (load
@@ -53,9 +53,9 @@ public final class ProblemsView {
         table = new Table(box, SWT.VIRTUAL | SWT.FULL_SELECTION | SWT.SINGLE | SWT.V_SCROLL | SWT.H_SCROLL);
         table.setHeaderVisible(true);
         table.setLinesVisible(true);
-        column(PanelMsg.PROBLEMS_SEVERITY.text(), 110);
-        column(PanelMsg.PROBLEMS_LOCATION.text(), 190);
-        column(PanelMsg.PROBLEMS_DESCRIPTION.text(), 700);
+        column(ToolMsg.PROBLEMS_SEVERITY.text(), 110);
+        column(ToolMsg.PROBLEMS_LOCATION.text(), 190);
+        column(ToolMsg.PROBLEMS_DESCRIPTION.text(), 700);
         table.addListener(SWT.SetData, this::fill);
         // The description fills the rest of the width; a cut one is read whole in the tooltip.
         table.addListener(SWT.Resize, e -> {
@@ -87,7 +87,7 @@ public final class ProblemsView {
         boolean err = d.severity() == Severity.ERROR;
         Icons icons = Icons.of(table.getDisplay());
         it.setImage(0, err ? icons.error : icons.warning);
-        it.setText(0, isRun(d) ? PanelMsg.PROBLEMS_RUN_SEVERITY.text(severity(d)) : severity(d));
+        it.setText(0, isRun(d) ? ToolMsg.PROBLEMS_RUN_SEVERITY.text(severity(d)) : severity(d));
         it.setForeground(0, table.getDisplay().getSystemColor(err ? SWT.COLOR_RED : SWT.COLOR_DARK_YELLOW));
         it.setText(1, location(d.pos()));
         it.setText(2, d.message(repeats[i]));
@@ -175,12 +175,12 @@ public final class ProblemsView {
 
     /** The tooltip of a row: the whole message and where. */
     static String tip(Diagnostic d) {
-        return PanelMsg.PROBLEMS_TIP.text(severity(d), location(d.pos()), d.message());
+        return ToolMsg.PROBLEMS_TIP.text(severity(d), location(d.pos()), d.message());
     }
 
     /** "error" or "warning" in the IDE's language (the command line's {@code FILE:LINE:COL: error:} keeps its English word). */
     private static String severity(Diagnostic d) {
-        return (d.severity() == Severity.ERROR ? PanelMsg.PROBLEMS_ERROR : PanelMsg.PROBLEMS_WARNING).text();
+        return (d.severity() == Severity.ERROR ? ToolMsg.PROBLEMS_ERROR : ToolMsg.PROBLEMS_WARNING).text();
     }
 
     /**

@@ -3,7 +3,7 @@ package org.parpe.gui.panels;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 import org.parpe.sim.SimTarget;
 import org.parpe.sim.config.RobotConfigs;
 
@@ -13,8 +13,8 @@ import org.parpe.sim.config.RobotConfigs;
  * Starts on the robot the IDE's run uses. The Sweep dialog and File → Export Robot… show it.
  */
 public final class RobotChoice {
-    private final String autoText = PanelMsg.ROBOT_CHOICE_AUTO.text(SimTarget.AUTO);
-    private final String browse = PanelMsg.ROBOT_CHOICE_BROWSE.text();
+    private final String autoText = ToolMsg.ROBOT_CHOICE_AUTO.text(SimTarget.AUTO);
+    private final String browse = ToolMsg.ROBOT_CHOICE_BROWSE.text();
 
     private final Combo combo;
     private String file;
@@ -31,7 +31,7 @@ public final class RobotChoice {
         int at = current == null ? -1 : combo.indexOf(current);
         combo.select(at >= 0 ? at : 0);
         previous = combo.getText();
-        combo.setToolTipText(PanelMsg.ROBOT_CHOICE_TIP.text());
+        combo.setToolTipText(ToolMsg.ROBOT_CHOICE_TIP.text());
         combo.addListener(SWT.Selection, e -> chosen());
     }
 
@@ -44,7 +44,7 @@ public final class RobotChoice {
             previous = combo.getText();
             return;
         }
-        java.nio.file.Path chosen = FileDialogs.ask(combo.getShell(), SWT.OPEN, PanelMsg.ROBOT_CHOICE_TITLE.text(), "*.xml", null, null);
+        java.nio.file.Path chosen = FileDialogs.ask(combo.getShell(), SWT.OPEN, ToolMsg.ROBOT_CHOICE_TITLE.text(), "*.xml", null, null);
         if (chosen == null) {
             combo.select(combo.indexOf(previous));
             return;

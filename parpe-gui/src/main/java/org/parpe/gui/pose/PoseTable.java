@@ -11,10 +11,10 @@ import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Control;
 import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.Table;
-import org.eclipse.swt.widgets.TableColumn;
 import org.eclipse.swt.widgets.TableItem;
 import org.eclipse.swt.widgets.Text;
 import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.panels.TitleWidths;
 
 /**
  * The list of poses with the time since the previous one, and the buttons that edit it: move up
@@ -107,10 +107,7 @@ final class PoseTable {
     }
 
     private void column(String title, int width) {
-        TableColumn c = new TableColumn(table, SWT.LEFT);
-        c.setText(title);
-        c.pack(); // no rows yet: as wide as its title, which is longer in some languages
-        c.setWidth(Math.max(width, c.getWidth()));
+        TitleWidths.column(table, SWT.LEFT, title, width);
     }
 
     private void button(Composite parent, String text, String tip, IntConsumer onSelected) {

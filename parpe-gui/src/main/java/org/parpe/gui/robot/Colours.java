@@ -9,7 +9,7 @@ import java.util.TreeSet;
 import java.util.stream.Collectors;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.model.Program;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 import org.parpe.sim.build.RobotDraft;
 import org.parpe.sim.build.ScriptFit;
 import org.parpe.sim.config.Kit;
@@ -66,24 +66,24 @@ final class Colours {
         StringBuilder s = new StringBuilder();
         if (d.config() == null) {
             List<Diagnostic> p = d.problems();
-            return p.isEmpty() ? "" : (p.size() == 1 ? PanelMsg.ROBOT_ONE_PROBLEM : PanelMsg.ROBOT_N_PROBLEMS).text(p.size(), p.get(0).format());
+            return p.isEmpty() ? "" : (p.size() == 1 ? ToolMsg.ROBOT_ONE_PROBLEM : ToolMsg.ROBOT_N_PROBLEMS).text(p.size(), p.get(0).format());
         }
         if (script != null) {
             ScriptFit f = ScriptFit.of(script, d.config());
-            s.append(PanelMsg.ROBOT_SCRIPT_FIT.text(java.nio.file.Path.of(script.file()).getFileName(),
-                    f.missing().isEmpty() && f.unused().isEmpty() ? PanelMsg.ROBOT_FIT_ALL.text()
-                    : (f.missing().isEmpty() ? "" : PanelMsg.ROBOT_LACKS_MODULES.text(ids(f.missing())))
+            s.append(ToolMsg.ROBOT_SCRIPT_FIT.text(java.nio.file.Path.of(script.file()).getFileName(),
+                    f.missing().isEmpty() && f.unused().isEmpty() ? ToolMsg.ROBOT_FIT_ALL.text()
+                    : (f.missing().isEmpty() ? "" : ToolMsg.ROBOT_LACKS_MODULES.text(ids(f.missing())))
                     + (!f.missing().isEmpty() && !f.unused().isEmpty() ? "; " : "")
-                    + (f.unused().isEmpty() ? "" : PanelMsg.ROBOT_UNUSED_MODULES.text(ids(f.unused())))));
+                    + (f.unused().isEmpty() ? "" : ToolMsg.ROBOT_UNUSED_MODULES.text(ids(f.unused())))));
         }
         if (kit != null) {
             Map<PartType, Integer> left = d.left(kit);
-            s.append(s.length() == 0 ? "" : "   ").append(PanelMsg.ROBOT_KIT_LEFT.text(kit.name(),
+            s.append(s.length() == 0 ? "" : "   ").append(ToolMsg.ROBOT_KIT_LEFT.text(kit.name(),
                     left.entrySet().stream().filter(e -> kit.owned(e.getKey()) > 0)
                             .map(e -> e.getKey().count(e.getValue())).collect(Collectors.joining(", "))));
         }
         if (!d.problems().isEmpty()) {
-            s.append(s.length() == 0 ? "" : "   ").append(PanelMsg.ROBOT_PROBLEMS.text(d.problems().size(), d.problems().get(0).format()));
+            s.append(s.length() == 0 ? "" : "   ").append(ToolMsg.ROBOT_PROBLEMS.text(d.problems().size(), d.problems().get(0).format()));
         }
         return s.toString();
     }

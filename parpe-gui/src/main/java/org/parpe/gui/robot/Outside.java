@@ -15,7 +15,7 @@ import org.parpe.core.model.Program;
 import org.parpe.core.xml.InputFiles;
 import org.parpe.gui.editor.ScriptDocument;
 import org.parpe.gui.panels.FileDialogs;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 import org.parpe.sim.config.Kit;
 
 /**
@@ -47,7 +47,7 @@ public final class Outside {
         questions = new Questions() {
             @Override
             public Path saveRobotAs(Path proposed) {
-                return FileDialogs.ask(shell, SWT.SAVE, PanelMsg.ROBOT_SAVE_AS.text(), "*.xml",
+                return FileDialogs.ask(shell, SWT.SAVE, ToolMsg.ROBOT_SAVE_AS.text(), "*.xml",
                         proposed.getFileName().toString(), proposed.getParent());
             }
 
@@ -78,19 +78,19 @@ public final class Outside {
 
     /** Asks for a kit file and reads it; true when the kit changed. */
     boolean chooseKit() {
-        Path p = questions.open(PanelMsg.ROBOT_KIT_FILE.text());
+        Path p = questions.open(ToolMsg.ROBOT_KIT_FILE.text());
         if (p == null) {
             return false;
         }
         DiagnosticList diags = new DiagnosticList();
         Kit k = Kit.read(p, diags);
         if (k == null) {
-            say.accept(diags.all().isEmpty() ? PanelMsg.ROBOT_CANNOT_READ_KIT.text(p) : diags.all().get(0).format());
+            say.accept(diags.all().isEmpty() ? ToolMsg.ROBOT_CANNOT_READ_KIT.text(p) : diags.all().get(0).format());
             return false;
         }
         kit = k;
         host.prefs().put(KIT, p.toAbsolutePath().toString());
-        say.accept(PanelMsg.ROBOT_KIT_CHOSEN.text(p.getFileName()));
+        say.accept(ToolMsg.ROBOT_KIT_CHOSEN.text(p.getFileName()));
         return true;
     }
 
@@ -107,11 +107,11 @@ public final class Outside {
         try {
             AtomicFiles.write(target, shown.draft().text()); // the robot shown: the generator sized for the script
         } catch (IOException | RuntimeException e) {
-            say.accept(PanelMsg.ROBOT_CANNOT_WRITE.text(target, e.getMessage()));
+            say.accept(ToolMsg.ROBOT_CANNOT_WRITE.text(target, e.getMessage()));
             return Optional.empty();
         }
         host.chooseRobot(target.toString());
-        say.accept(PanelMsg.ROBOT_WROTE.text(target.getFileName()));
+        say.accept(ToolMsg.ROBOT_WROTE.text(target.getFileName()));
         return Optional.of(Shown.ofFile(target));
     }
 
@@ -124,7 +124,7 @@ public final class Outside {
         String robot;
         if (shown.editable()) {
             if (!host.save()) {
-                say.accept(PanelMsg.ROBOT_TRY_NEEDS_SAVED.text());
+                say.accept(ToolMsg.ROBOT_TRY_NEEDS_SAVED.text());
                 return Optional.empty();
             }
             robot = host.file().toAbsolutePath().toString();
@@ -133,29 +133,29 @@ public final class Outside {
             robot = shown.kind() == Shown.Kind.FILE ? shown.config().toString() : shown.spec();
         }
         if (script == null || robot == null) {
-            say.accept(robot == null ? PanelMsg.ROBOT_NO_ROBOT_TO_TRY.text() : PanelMsg.ROBOT_NO_SCRIPT_TO_TRY.text());
+            say.accept(robot == null ? ToolMsg.ROBOT_NO_ROBOT_TO_TRY.text() : ToolMsg.ROBOT_NO_SCRIPT_TO_TRY.text());
             return Optional.empty();
         }
         host.tryIt(script, robot);
-        say.accept(PanelMsg.ROBOT_TRYING.text(Path.of(script.file()).getFileName()));
+        say.accept(ToolMsg.ROBOT_TRYING.text(Path.of(script.file()).getFileName()));
         return Optional.of(script);
     }
 
     /** The script last loaded in the IDE, or the one the user picks; null when none loads. */
     private Program lastScript() {
         String last = host.prefs().get(LAST_SCRIPT, null);
-        Path p = last != null && Files.isRegularFile(Path.of(last)) ? Path.of(last) : questions.open(PanelMsg.ROBOT_SCRIPT_TO_TRY.text());
+        Path p = last != null && Files.isRegularFile(Path.of(last)) ? Path.of(last) : questions.open(ToolMsg.ROBOT_SCRIPT_TO_TRY.text());
         if (p == null) {
             return null;
         }
         try {
             LoadResult r = ScriptDocument.load(p, InputFiles.readText(p), Map.of());
             if (r.program() == null) {
-                say.accept(r.diagnostics().isEmpty() ? PanelMsg.ROBOT_SCRIPT_DOES_NOT_LOAD.text() : r.diagnostics().get(0).format());
+                say.accept(r.diagnostics().isEmpty() ? ToolMsg.ROBOT_SCRIPT_DOES_NOT_LOAD.text() : r.diagnostics().get(0).format());
             }
             return r.program();
         } catch (IOException e) {
-            say.accept(PanelMsg.ROBOT_CANNOT_READ.text(p, e.getMessage()));
+            say.accept(ToolMsg.ROBOT_CANNOT_READ.text(p, e.getMessage()));
             return null;
         }
     }

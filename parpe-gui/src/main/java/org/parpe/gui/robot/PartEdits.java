@@ -6,7 +6,7 @@ import java.util.function.Predicate;
 import java.util.function.Supplier;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Text;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 import org.parpe.sim.build.BuildEdit;
 import org.parpe.sim.build.BuildPlate;
 import org.parpe.sim.build.RobotDraft;
@@ -32,13 +32,13 @@ final class PartEdits {
         this.selected = selected;
         this.apply = apply;
         this.say = say;
-        typed(ui.moduleId, () -> number(ui.moduleId, PanelMsg.ROBOT_WHAT_ID).ifPresent(v -> change(p -> p.moduleId() != v,
+        typed(ui.moduleId, () -> number(ui.moduleId, ToolMsg.ROBOT_WHAT_ID).ifPresent(v -> change(p -> p.moduleId() != v,
                 (d, part) -> d.setModuleId(part, (int) Math.round(v)))));
-        typed(ui.angle, () -> number(ui.angle, PanelMsg.ROBOT_WHAT_ANGLE).ifPresent(v -> change(p -> p.angle() != v,
+        typed(ui.angle, () -> number(ui.angle, ToolMsg.ROBOT_WHAT_ANGLE).ifPresent(v -> change(p -> p.angle() != v,
                 (d, part) -> d.setAngle(part, v))));
         ui.limp.addListener(SWT.Selection, e -> change(p -> p.limp() != ui.limp.getSelection(),
                 (d, part) -> d.setLimp(part, ui.limp.getSelection())));
-        typed(ui.roll, () -> number(ui.roll, PanelMsg.ROBOT_WHAT_ROLL).ifPresent(v -> change(p -> isRoot(p) && rootRoll() != v,
+        typed(ui.roll, () -> number(ui.roll, ToolMsg.ROBOT_WHAT_ROLL).ifPresent(v -> change(p -> isRoot(p) && rootRoll() != v,
                 (d, part) -> d.setRootPose("roll", v))));
         ui.turn.addListener(SWT.Selection, e -> change(p -> true, (d, part) -> d.turn(part, (turnOf(d, part) + 1) % 4)));
         ui.delete.addListener(SWT.Selection, e -> change(p -> true, RobotDraft::remove));
@@ -57,7 +57,7 @@ final class PartEdits {
     }
 
     /** The number in {@code box}, or empty (nothing typed, no part selected, or not a number: said). */
-    private OptionalDouble number(Text box, PanelMsg what) {
+    private OptionalDouble number(Text box, ToolMsg what) {
         if (box.getText().isBlank() || selected.get() == null) {
             return OptionalDouble.empty();
         }
@@ -69,7 +69,7 @@ final class PartEdits {
         } catch (NumberFormatException e) {
             // said below
         }
-        say.accept(PanelMsg.ROBOT_NOT_A_NUMBER.text(what.text(), box.getText().trim()));
+        say.accept(ToolMsg.ROBOT_NOT_A_NUMBER.text(what.text(), box.getText().trim()));
         return OptionalDouble.empty();
     }
 

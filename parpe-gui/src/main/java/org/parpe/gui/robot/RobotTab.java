@@ -13,7 +13,7 @@ import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.edit.TextEdit;
 import org.parpe.core.model.Program;
 import org.parpe.gui.panels.Zoom;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 import org.parpe.gui.view3d.View3D;
 import org.parpe.sim.snapshot.SimBody;
 import org.parpe.sim.snapshot.SimSnapshot;
@@ -215,7 +215,7 @@ public final class RobotTab {
             pending = d.add(targets.first.part(), targets.first.plate(), type, 0, quarter, hubPlates(), outside.kit());
         }
         if (pending != null && pending.refused()) {
-            say(targets.first == null ? pending.refusal() : PanelMsg.ROBOT_PLATE_REFUSAL.text(targets.first.ref(), pending.refusal()));
+            say(targets.first == null ? pending.refusal() : ToolMsg.ROBOT_PLATE_REFUSAL.text(targets.first.ref(), pending.refusal()));
         } else if (pending != null) {
             targets.ghosts = Pictures.ghosts(d, d.apply(pending));
         }
@@ -233,7 +233,7 @@ public final class RobotTab {
 
     private void place() {
         if (pending == null) {
-            say(shown.editable() ? PanelMsg.ROBOT_CLICK_PLATE.text() : PanelMsg.ROBOT_READ_ONLY.text(shown.note()));
+            say(shown.editable() ? ToolMsg.ROBOT_CLICK_PLATE.text() : ToolMsg.ROBOT_READ_ONLY.text(shown.note()));
             return;
         }
         BuildEdit e = pending;
@@ -244,14 +244,14 @@ public final class RobotTab {
         BuildPlate a = targets.first;
         BuildPlate b = targets.second;
         if (a == null || b == null) {
-            say(PanelMsg.ROBOT_SELECT_TWO.text());
+            say(ToolMsg.ROBOT_SELECT_TWO.text());
             return;
         }
         BuildEdit e = shown.draft().closeLoop(a.part(), a.plate(), b.part(), b.plate());
         if (e.refused()) {
             double gap = shown.draft().gap(a.part(), a.plate(), b.part(), b.plate());
             say(e.refusal().contains("apart") ? e.refusal()
-                    : PanelMsg.ROBOT_REFUSAL_GAP.text(e.refusal(), String.format(java.util.Locale.ROOT, "%.1f", gap * 1000)));
+                    : ToolMsg.ROBOT_REFUSAL_GAP.text(e.refusal(), String.format(java.util.Locale.ROOT, "%.1f", gap * 1000)));
             return;
         }
         apply(e);
@@ -279,7 +279,7 @@ public final class RobotTab {
         if (!d.text().equals(doc)) {
             if (!org.parpe.core.edit.SectionEdits.blank(doc)) {
                 show(Shown.of(host.file(), doc, null, null));
-                say(PanelMsg.ROBOT_CHANGED_TRY_AGAIN.text());
+                say(ToolMsg.ROBOT_CHANGED_TRY_AGAIN.text());
                 return;
             }
             edit = Pictures.startIn(doc, d.apply(e).text()); // a blank file: the empty configuration and the part at once
@@ -287,11 +287,11 @@ public final class RobotTab {
         try {
             host.editor().apply(edit);
         } catch (org.eclipse.jface.text.BadLocationException ex) {
-            say(PanelMsg.ROBOT_CHANGED.text(ex.getMessage()));
+            say(ToolMsg.ROBOT_CHANGED.text(ex.getMessage()));
             return;
         }
         show(Shown.of(host.file(), host.editor().document().get(), null, null));
-        say(PanelMsg.ROBOT_UNDO_TAKES_BACK.text(e.description()));
+        say(ToolMsg.ROBOT_UNDO_TAKES_BACK.text(e.description()));
     }
 
     private void editorOperation(int op) {
@@ -317,12 +317,12 @@ public final class RobotTab {
             if (adding && targets.first != null && !Targets.same(p, targets.first)) {
                 targets.second = p; // the part previewed on the first plate stays as it is
                 double gap = shown.draft().gap(targets.first.part(), targets.first.plate(), p.part(), p.plate());
-                say(PanelMsg.ROBOT_PLATES_APART.text(targets.first.ref(), p.ref(), String.format(java.util.Locale.ROOT, "%.1f", gap * 1000)));
+                say(ToolMsg.ROBOT_PLATES_APART.text(targets.first.ref(), p.ref(), String.format(java.util.Locale.ROOT, "%.1f", gap * 1000)));
                 ui.view.control().redraw();
             } else {
                 targets.first = p;
                 targets.second = null;
-                say(PanelMsg.ROBOT_PLATE_PICKED.text(p.ref()));
+                say(ToolMsg.ROBOT_PLATE_PICKED.text(p.ref()));
                 preview();
             }
             update();
@@ -335,7 +335,7 @@ public final class RobotTab {
         public void part(String name) {
             clearSelection();
             targets.part = name;
-            say((shown.editable() ? PanelMsg.ROBOT_PART_EDITABLE : PanelMsg.ROBOT_PART).text(name));
+            say((shown.editable() ? ToolMsg.ROBOT_PART_EDITABLE : ToolMsg.ROBOT_PART).text(name));
             update();
             ui.view.control().redraw();
         }
@@ -364,7 +364,7 @@ public final class RobotTab {
         ui.connect.setEnabled(edit && targets.first != null && targets.second != null);
         ui.assignIds.setEnabled(edit && d != null && d.config() != null);
         PartSpec p = d == null || targets.part == null ? null : d.part(targets.part).orElse(null);
-        String partText = p == null ? PanelMsg.ROBOT_NO_PART.text() : p.name() + " (" + p.type().xmlName() + ")";
+        String partText = p == null ? ToolMsg.ROBOT_NO_PART.text() : p.name() + " (" + p.type().xmlName() + ")";
         boolean seg = edit && p != null && p.isSegment();
         ui.moduleId.setEnabled(seg);
         ui.angle.setEnabled(seg);

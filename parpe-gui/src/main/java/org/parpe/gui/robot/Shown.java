@@ -7,7 +7,7 @@ import org.parpe.core.edit.SectionEdits;
 import org.parpe.core.model.Program;
 import org.parpe.core.xml.InputFiles;
 import org.parpe.core.xml.XmlReader;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 import org.parpe.sim.SimTarget;
 import org.parpe.sim.build.RobotDraft;
 
@@ -43,7 +43,7 @@ record Shown(Kind kind, RobotDraft draft, Path config, String spec, String note)
     static Shown of(Path file, String text, Program program, String choice) {
         if (isConfig(text)) {
             RobotDraft d = SectionEdits.blank(text) ? RobotDraft.empty(file.toString()) : RobotDraft.of(file.toString(), text);
-            return new Shown(Kind.EDITOR, d, file, null, PanelMsg.ROBOT_EDITOR_NOTE.text(file.getFileName()));
+            return new Shown(Kind.EDITOR, d, file, null, ToolMsg.ROBOT_EDITOR_NOTE.text(file.getFileName()));
         }
         if (!SimTarget.AUTO.equals(choice) && Files.isRegularFile(Path.of(choice))) {
             return ofFile(Path.of(choice).toAbsolutePath().normalize());
@@ -51,15 +51,15 @@ record Shown(Kind kind, RobotDraft draft, Path config, String spec, String note)
         String spec = SimTarget.AUTO.equals(choice) ? program == null ? null : SimTarget.autoSpec(program) : choice;
         if (spec == null) {
             return new Shown(Kind.NOTHING, null, null, null,
-                    PanelMsg.ROBOT_OPEN_SOMETHING.text());
+                    ToolMsg.ROBOT_OPEN_SOMETHING.text());
         }
         try {
             // sized by the script's modules, as a run sizes it
             RobotDraft d = RobotDraft.fromGenerator(besideScript(file).toString(), spec, program == null ? new int[0] : program.moduleIds());
             return new Shown(Kind.GENERATOR, d, null, spec,
-                    PanelMsg.ROBOT_GENERATED_NOTE.text(spec, d.config().moduleIds().length));
+                    ToolMsg.ROBOT_GENERATED_NOTE.text(spec, d.config().moduleIds().length));
         } catch (IllegalArgumentException e) {
-            return new Shown(Kind.NOTHING, null, null, null, PanelMsg.ROBOT_CANNOT_SHOW.text(spec, e.getMessage()));
+            return new Shown(Kind.NOTHING, null, null, null, ToolMsg.ROBOT_CANNOT_SHOW.text(spec, e.getMessage()));
         }
     }
 
@@ -68,9 +68,9 @@ record Shown(Kind kind, RobotDraft draft, Path config, String spec, String note)
         try {
             String text = InputFiles.readText(config);
             return new Shown(Kind.FILE, RobotDraft.of(config.toString(), text), config, null,
-                    PanelMsg.ROBOT_FILE_NOTE.text(config.getFileName()));
+                    ToolMsg.ROBOT_FILE_NOTE.text(config.getFileName()));
         } catch (IOException | RuntimeException e) {
-            return new Shown(Kind.NOTHING, null, config, null, PanelMsg.ROBOT_CANNOT_READ.text(config, e.getMessage()));
+            return new Shown(Kind.NOTHING, null, config, null, ToolMsg.ROBOT_CANNOT_READ.text(config, e.getMessage()));
         }
     }
 

@@ -15,7 +15,7 @@ import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Control;
 import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.Text;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 import org.parpe.gui.view3d.View3D;
 import org.parpe.sim.config.PartType;
 
@@ -74,58 +74,66 @@ final class TabControls {
 
         Composite top = row();
         source = new Label(top, SWT.NONE);
-        tryIt = button(top, PanelMsg.ROBOT_TRY_IT.text(), PanelMsg.ROBOT_TRY_IT_TIP.text());
-        undo = button(top, PanelMsg.ROBOT_UNDO.text(), PanelMsg.ROBOT_UNDO_TIP.text());
-        redo = button(top, PanelMsg.ROBOT_REDO.text(), PanelMsg.ROBOT_REDO_TIP.text());
-        connect = button(top, PanelMsg.ROBOT_CONNECT.text(), PanelMsg.ROBOT_CONNECT_TIP.text());
-        assignIds = button(top, PanelMsg.ROBOT_ASSIGN_IDS.text(), PanelMsg.ROBOT_ASSIGN_IDS_TIP.text());
-        kit = button(top, PanelMsg.ROBOT_KIT.text(), PanelMsg.ROBOT_KIT_TIP.text());
-        editRobot = button(top, PanelMsg.ROBOT_EDIT.text(), PanelMsg.ROBOT_EDIT_TIP.text());
-        makeEditable = button(top, PanelMsg.ROBOT_MAKE_EDITABLE.text(), PanelMsg.ROBOT_MAKE_EDITABLE_TIP.text());
+        tryIt = button(top, ToolMsg.ROBOT_TRY_IT.text(), ToolMsg.ROBOT_TRY_IT_TIP.text());
+        undo = button(top, ToolMsg.ROBOT_UNDO.text(), ToolMsg.ROBOT_UNDO_TIP.text());
+        redo = button(top, ToolMsg.ROBOT_REDO.text(), ToolMsg.ROBOT_REDO_TIP.text());
+        connect = button(top, ToolMsg.ROBOT_CONNECT.text(), ToolMsg.ROBOT_CONNECT_TIP.text());
+        assignIds = button(top, ToolMsg.ROBOT_ASSIGN_IDS.text(), ToolMsg.ROBOT_ASSIGN_IDS_TIP.text());
+        kit = button(top, ToolMsg.ROBOT_KIT.text(), ToolMsg.ROBOT_KIT_TIP.text());
+        editRobot = button(top, ToolMsg.ROBOT_EDIT.text(), ToolMsg.ROBOT_EDIT_TIP.text());
+        makeEditable = button(top, ToolMsg.ROBOT_MAKE_EDITABLE.text(), ToolMsg.ROBOT_MAKE_EDITABLE_TIP.text());
 
         Composite palette = row();
-        new Label(palette, SWT.NONE).setText(PanelMsg.ROBOT_ADD.text());
-        Composite typeBox = group(palette); // radio buttons of one parent exclude each other
-        for (PartType t : PartType.values()) {
-            Button b = new Button(typeBox, SWT.RADIO);
-            b.setText(t.xmlName().substring(0, 1).toUpperCase(java.util.Locale.ROOT) + t.xmlName().substring(1));
-            types[t.ordinal()] = b;
-        }
-        types[PartType.SEGMENT.ordinal()].setSelection(true);
-        hubPlates = box(palette, PanelMsg.ROBOT_HUB_PLATES_TIP.text(), 3);
+        new Label(palette, SWT.NONE).setText(ToolMsg.ROBOT_ADD.text());
+        typeButtons(group(palette)); // radio buttons of one parent exclude each other
+        hubPlates = box(palette, ToolMsg.ROBOT_HUB_PLATES_TIP.text(), 3);
         hubPlates.setText(Integer.toString(PartType.HUB.defaultPlates()));
-        new Label(palette, SWT.NONE).setText(PanelMsg.ROBOT_TURNED.text());
-        Composite turnBox = group(palette);
-        for (int q = 0; q < 4; q++) {
-            turns[q] = new Button(turnBox, SWT.RADIO);
-            turns[q].setText(q * 90 + "\u00B0");
-            turns[q].setToolTipText(PanelMsg.ROBOT_TURNED_TIP.text());
-        }
-        turns[0].setSelection(true);
-        place = button(palette, PanelMsg.ROBOT_PLACE.text(), PanelMsg.ROBOT_PLACE_TIP.text());
+        new Label(palette, SWT.NONE).setText(ToolMsg.ROBOT_TURNED.text());
+        turnButtons(group(palette));
+        place = button(palette, ToolMsg.ROBOT_PLACE.text(), ToolMsg.ROBOT_PLACE_TIP.text());
 
         Composite props = row();
         partName = new Label(props, SWT.NONE);
-        new Label(props, SWT.NONE).setText(PanelMsg.ROBOT_WHAT_ID.text());
-        moduleId = box(props, PanelMsg.ROBOT_ID_TIP.text(), 4);
-        new Label(props, SWT.NONE).setText(PanelMsg.ROBOT_ANGLE.text());
-        angle = box(props, PanelMsg.ROBOT_ANGLE_TIP.text(), 6);
+        new Label(props, SWT.NONE).setText(ToolMsg.ROBOT_WHAT_ID.text());
+        moduleId = box(props, ToolMsg.ROBOT_ID_TIP.text(), 4);
+        new Label(props, SWT.NONE).setText(ToolMsg.ROBOT_ANGLE.text());
+        angle = box(props, ToolMsg.ROBOT_ANGLE_TIP.text(), 6);
         limp = new Button(props, SWT.CHECK);
-        limp.setText(PanelMsg.ROBOT_LIMP.text());
-        limp.setToolTipText(PanelMsg.ROBOT_LIMP_TIP.text());
-        new Label(props, SWT.NONE).setText(PanelMsg.ROBOT_ROLL.text());
-        roll = box(props, PanelMsg.ROBOT_ROLL_TIP.text(), 5);
-        turn = button(props, PanelMsg.ROBOT_TURN.text(), PanelMsg.ROBOT_TURN_TIP.text());
-        delete = button(props, PanelMsg.ROBOT_DELETE.text(), PanelMsg.ROBOT_DELETE_TIP.text());
-        makeRoot = button(props, PanelMsg.ROBOT_MAKE_ROOT.text(), PanelMsg.ROBOT_MAKE_ROOT_TIP.text());
+        limp.setText(ToolMsg.ROBOT_LIMP.text());
+        limp.setToolTipText(ToolMsg.ROBOT_LIMP_TIP.text());
+        new Label(props, SWT.NONE).setText(ToolMsg.ROBOT_ROLL.text());
+        roll = box(props, ToolMsg.ROBOT_ROLL_TIP.text(), 5);
+        turn = button(props, ToolMsg.ROBOT_TURN.text(), ToolMsg.ROBOT_TURN_TIP.text());
+        delete = button(props, ToolMsg.ROBOT_DELETE.text(), ToolMsg.ROBOT_DELETE_TIP.text());
+        makeRoot = button(props, ToolMsg.ROBOT_MAKE_ROOT.text(), ToolMsg.ROBOT_MAKE_ROOT_TIP.text());
 
         view = new View3D(root);
         view.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
         view.setTrackRobot(false);
-        view.setEmptyText(PanelMsg.ROBOT_EMPTY.text());
+        view.setEmptyText(ToolMsg.ROBOT_EMPTY.text());
         fit = wrapped();
         message = wrapped();
         root.addListener(SWT.Resize, e -> relayout());
+    }
+
+    /** One radio button a part type, the segment chosen. */
+    private void typeButtons(Composite box) {
+        for (PartType t : PartType.values()) {
+            Button b = new Button(box, SWT.RADIO);
+            b.setText(t.xmlName().substring(0, 1).toUpperCase(java.util.Locale.ROOT) + t.xmlName().substring(1));
+            types[t.ordinal()] = b;
+        }
+        types[PartType.SEGMENT.ordinal()].setSelection(true);
+    }
+
+    /** One radio button a quarter turn, 0° chosen. */
+    private void turnButtons(Composite box) {
+        for (int q = 0; q < 4; q++) {
+            turns[q] = new Button(box, SWT.RADIO);
+            turns[q].setText(q * 90 + "\u00B0");
+            turns[q].setToolTipText(ToolMsg.ROBOT_TURNED_TIP.text());
+        }
+        turns[0].setSelection(true);
     }
 
     private static GridLayout grid(int margin, int spacing) {

@@ -7,7 +7,7 @@ import org.parpe.core.load.LoadResult;
 import org.parpe.gui.editor.ScriptDocument;
 import org.parpe.core.model.Parameter;
 import org.parpe.gui.editor.ParslEditor;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 import org.parpe.sim.sweep.ParameterDefaults;
 import org.parpe.sim.sweep.SweepException;
 
@@ -29,19 +29,19 @@ final class ApplyBest {
      */
     static String apply(ParslEditor editor, ScriptDocument.Loaded loaded, Map<String, Double> values) throws SweepException {
         if (values.isEmpty()) {
-            throw new SweepException(PanelMsg.SWEEP_NO_RESULT.text());
+            throw new SweepException(ToolMsg.SWEEP_NO_RESULT.text());
         }
         String text = loaded.text();
         LoadResult r = loaded.result();
         if (r.program() == null) {
-            throw new SweepException(PanelMsg.SWEEP_SCRIPT_HAS_ERRORS.text());
+            throw new SweepException(ToolMsg.SWEEP_SCRIPT_HAS_ERRORS.text());
         }
         for (Map.Entry<String, Double> v : values.entrySet()) {
             Parameter p = r.program().parameters().stream().filter(q -> q.name().equals(v.getKey())).findFirst()
-                    .orElseThrow(() -> new SweepException(PanelMsg.SWEEP_PARAMETER_GONE.text(v.getKey())));
+                    .orElseThrow(() -> new SweepException(ToolMsg.SWEEP_PARAMETER_GONE.text(v.getKey())));
             String problem = p.check(v.getValue());
             if (problem != null) {
-                throw new SweepException(PanelMsg.SWEEP_BOUNDS_CHANGED.text(problem));
+                throw new SweepException(ToolMsg.SWEEP_BOUNDS_CHANGED.text(problem));
             }
         }
         String out = ParameterDefaults.rewrite(loaded.file(), text, r.program().parameters(), values);

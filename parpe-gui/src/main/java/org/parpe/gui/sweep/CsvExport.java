@@ -10,7 +10,7 @@ import java.util.List;
 import org.eclipse.swt.SWTException;
 import org.eclipse.swt.widgets.Display;
 import org.parpe.core.io.AtomicFiles;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 import org.parpe.sim.sweep.Axis;
 import org.parpe.sim.sweep.SweepCsv;
 import org.parpe.sim.sweep.SweepRow;
@@ -74,11 +74,11 @@ final class CsvExport {
         try {
             spill = results.complete() ? null : results.spill();
         } catch (IOException e) {
-            outcome.done(false, PanelMsg.SWEEP_CANNOT_SAVE.text(file, e.getMessage()));
+            outcome.done(false, ToolMsg.SWEEP_CANNOT_SAVE.text(file, e.getMessage()));
             return;
         }
         if (!results.complete() && spill == null) {
-            outcome.done(false, PanelMsg.SWEEP_CANNOT_SAVE.text(file, results.spillError()));
+            outcome.done(false, ToolMsg.SWEEP_CANNOT_SAVE.text(file, results.spillError()));
             return;
         }
         List<Axis> axes = axes(results.parameters());
@@ -93,10 +93,10 @@ final class CsvExport {
                     write(file, axes, kept, runs, scored);
                 }
                 ok = true;
-                said = PanelMsg.SWEEP_SAVED_ROWS.text(count, file);
+                said = ToolMsg.SWEEP_SAVED_ROWS.text(count, file);
             } catch (IOException | RuntimeException e) {
                 ok = false;
-                said = PanelMsg.SWEEP_CANNOT_SAVE.text(file, e.getMessage());
+                said = ToolMsg.SWEEP_CANNOT_SAVE.text(file, e.getMessage());
             }
             boolean saved = ok;
             String text = said;

@@ -10,7 +10,7 @@ import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.Spinner;
 import org.eclipse.swt.widgets.Text;
 import org.parpe.core.lang.Numbers;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 import org.parpe.sim.sweep.Constraints;
 import org.parpe.sim.sweep.Objective;
 import org.parpe.sim.sweep.OptimizeSpec;
@@ -33,26 +33,26 @@ final class OptimiseTab {
     OptimiseTab(Composite parent) {
         root = new Composite(parent, SWT.NONE);
         root.setLayout(new GridLayout(3, false));
-        budget = spinner(PanelMsg.SWEEP_BUDGET.text(), 2, 1_000_000, 100, PanelMsg.SWEEP_BUDGET_TIP.text());
-        starts = spinner(PanelMsg.SWEEP_STARTS.text(), 1, 64, 4, PanelMsg.SWEEP_STARTS_TIP.text());
+        budget = spinner(ToolMsg.SWEEP_BUDGET.text(), 2, 1_000_000, 100, ToolMsg.SWEEP_BUDGET_TIP.text());
+        starts = spinner(ToolMsg.SWEEP_STARTS.text(), 1, 64, 4, ToolMsg.SWEEP_STARTS_TIP.text());
         tiltOn = new Button(root, SWT.CHECK);
-        tiltOn.setText(PanelMsg.SWEEP_LARGEST_TILT.text());
+        tiltOn.setText(ToolMsg.SWEEP_LARGEST_TILT.text());
         tilt = new Text(root, SWT.BORDER);
         tilt.setText("30");
         tilt.setLayoutData(new GridData(70, SWT.DEFAULT));
-        note(PanelMsg.SWEEP_TILT_NOTE.text());
+        note(ToolMsg.SWEEP_TILT_NOTE.text());
         notFallen = new Button(root, SWT.CHECK);
-        notFallen.setText(PanelMsg.SWEEP_NOT_FALLEN.text());
+        notFallen.setText(ToolMsg.SWEEP_NOT_FALLEN.text());
         notFallen.setSelection(true);
         notFallen.setLayoutData(new GridData(SWT.LEFT, SWT.CENTER, false, false, 2, 1));
-        note(PanelMsg.SWEEP_NOT_FALLEN_NOTE.text(Numbers.format(StartRequest.FALL_TILT)));
-        new Label(root, SWT.NONE).setText(PanelMsg.SWEEP_SEED.text());
+        note(ToolMsg.SWEEP_NOT_FALLEN_NOTE.text(Numbers.format(StartRequest.FALL_TILT)));
+        new Label(root, SWT.NONE).setText(ToolMsg.SWEEP_SEED.text());
         seed = new Text(root, SWT.BORDER);
         seed.setText("0");
         seed.setLayoutData(new GridData(70, SWT.DEFAULT));
-        note(PanelMsg.SWEEP_SEED_NOTE.text());
+        note(ToolMsg.SWEEP_SEED_NOTE.text());
         Label what = new Label(root, SWT.WRAP);
-        what.setText(PanelMsg.SWEEP_SEARCHED.text());
+        what.setText(ToolMsg.SWEEP_SEARCHED.text());
         what.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false, 3, 1));
     }
 
@@ -87,7 +87,7 @@ final class OptimiseTab {
         if (tiltOn.getSelection()) {
             Double t = Numbers.parsePlain(tilt.getText());
             if (t == null || !(t >= 0 && t <= 180)) {
-                throw new SweepException(PanelMsg.SWEEP_BAD_TILT.text(tilt.getText().trim()));
+                throw new SweepException(ToolMsg.SWEEP_BAD_TILT.text(tilt.getText().trim()));
             }
             max = t;
         }
@@ -98,7 +98,7 @@ final class OptimiseTab {
     OptimizeSpec spec(Objective objective) throws SweepException {
         Double s = Numbers.parsePlain(seed.getText());
         if (s == null || s != Math.rint(s) || Math.abs(s) > 1e15) {
-            throw new SweepException(PanelMsg.SWEEP_BAD_SEED.text(seed.getText().trim()));
+            throw new SweepException(ToolMsg.SWEEP_BAD_SEED.text(seed.getText().trim()));
         }
         OptimizeSpec spec = new OptimizeSpec(objective, constraints(), budget.getSelection(), starts.getSelection(),
                 s.longValue());

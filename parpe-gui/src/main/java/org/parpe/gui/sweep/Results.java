@@ -6,7 +6,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.parpe.core.lang.Numbers;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 import org.parpe.sim.sweep.Constraints;
 import java.util.function.Predicate;
 import org.parpe.sim.sweep.Objective;
@@ -159,7 +159,7 @@ final class Results {
 
     /** The temporary file could not be written: the rows beyond {@link #KEEP} cannot be saved; Save CSV… will say why. */
     private void lost(java.io.IOException e) {
-        spillError = PanelMsg.SWEEP_SPILL_ERROR.text(keep, e.getMessage());
+        spillError = ToolMsg.SWEEP_SPILL_ERROR.text(keep, e.getMessage());
         discard();
     }
 
@@ -292,9 +292,9 @@ final class Results {
 
     /** The sentence that names the best row {@code best} after a finished or stopped sweep. */
     String bestSentence(SweepRow best) {
-        String measured = (best.fell() ? PanelMsg.SWEEP_MEASURED_FELL : PanelMsg.SWEEP_MEASURED)
+        String measured = (best.fell() ? ToolMsg.SWEEP_MEASURED_FELL : ToolMsg.SWEEP_MEASURED)
                 .text(RunSettings.label(objective), ResultsTable.number(objective.of(best)));
-        return (scriptsOwn(best) ? PanelMsg.SWEEP_NOTHING_BEAT : PanelMsg.SWEEP_BEST).text(number(best), describe(best.values()), measured);
+        return (scriptsOwn(best) ? ToolMsg.SWEEP_NOTHING_BEAT : ToolMsg.SWEEP_BEST).text(number(best), describe(best.values()), measured);
     }
 
     /** The parameter values of the best row, or an empty map. */

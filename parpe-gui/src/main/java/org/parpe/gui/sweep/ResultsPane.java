@@ -7,7 +7,7 @@ import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Label;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 
 /** The results table beside the plot, with the choice of the parameter the plot runs over. */
 final class ResultsPane {
@@ -25,10 +25,10 @@ final class ResultsPane {
         right.setLayout(new GridLayout(2, false));
         plot = new ResultsPlot(right);
         plot.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true, 2, 1));
-        new Label(right, SWT.NONE).setText(PanelMsg.SWEEP_PLOT_OVER.text());
+        new Label(right, SWT.NONE).setText(ToolMsg.SWEEP_PLOT_OVER.text());
         over = new Combo(right, SWT.READ_ONLY);
         over.setLayoutData(new GridData(160, SWT.DEFAULT));
-        over.setToolTipText(PanelMsg.SWEEP_PLOT_OVER_TIP.text());
+        over.setToolTipText(ToolMsg.SWEEP_PLOT_OVER_TIP.text());
         over.addListener(SWT.Selection, e -> plot.show(results, over.getText()));
         split.setWeights(55, 45);
     }

@@ -7,7 +7,7 @@ import org.eclipse.swt.widgets.Canvas;
 import org.eclipse.swt.widgets.Composite;
 import org.parpe.core.plot.PlotStyle;
 import org.parpe.gui.panels.ChartView;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 import org.parpe.sim.sweep.SweepRow;
 
 /**
@@ -20,11 +20,11 @@ import org.parpe.sim.sweep.SweepRow;
  * {@link Results#acceptable}'s rule, the command line's.
  */
 final class ResultsPlot {
-    static final PanelMsg RUNS = PanelMsg.SWEEP_SERIES_RUNS;
-    static final PanelMsg FELL = PanelMsg.SWEEP_SERIES_FELL;
-    static final PanelMsg BEST = PanelMsg.SWEEP_SERIES_BEST;
-    static final PanelMsg MISSES = PanelMsg.SWEEP_SERIES_MISSES;
-    static final PanelMsg BEST_SO_FAR = PanelMsg.SWEEP_SERIES_BEST_SO_FAR;
+    static final ToolMsg RUNS = ToolMsg.SWEEP_SERIES_RUNS;
+    static final ToolMsg FELL = ToolMsg.SWEEP_SERIES_FELL;
+    static final ToolMsg BEST = ToolMsg.SWEEP_SERIES_BEST;
+    static final ToolMsg MISSES = ToolMsg.SWEEP_SERIES_MISSES;
+    static final ToolMsg BEST_SO_FAR = ToolMsg.SWEEP_SERIES_BEST_SO_FAR;
 
     private final ChartView chart;
     private Results results;
@@ -57,7 +57,7 @@ final class ResultsPlot {
         }
         List<SweepRow> rows = results == null ? List.of() : results.rows();
         if (rows.isEmpty()) {
-            chart.message(results == null ? PanelMsg.SWEEP_PLOT_EMPTY.text() : PanelMsg.SWEEP_PLOT_WAITING.text());
+            chart.message(results == null ? ToolMsg.SWEEP_PLOT_EMPTY.text() : ToolMsg.SWEEP_PLOT_WAITING.text());
             return;
         }
         int n = rows.size();
@@ -70,13 +70,13 @@ final class ResultsPlot {
         double[] xr = range(xs, ys);
         double[] yr = range(ys, xs);
         if (!(xr[0] <= xr[1])) {
-            chart.message(PanelMsg.SWEEP_PLOT_NO_MEASUREMENT.text());
+            chart.message(ToolMsg.SWEEP_PLOT_NO_MEASUREMENT.text());
             return;
         }
         boolean optimise = results.mode() == Results.Mode.OPTIMISE;
-        String title = optimise ? PanelMsg.SWEEP_PLOT_PER_EVALUATION.text(RunSettings.label(results.objective()))
-                : PanelMsg.SWEEP_PLOT_OVER_X.text(RunSettings.label(results.objective()), x);
-        chart.show(title, optimise ? PanelMsg.SWEEP_EVALUATION.text() : x, pad(xr), pad(yr), f -> {
+        String title = optimise ? ToolMsg.SWEEP_PLOT_PER_EVALUATION.text(RunSettings.label(results.objective()))
+                : ToolMsg.SWEEP_PLOT_OVER_X.text(RunSettings.label(results.objective()), x);
+        chart.show(title, optimise ? ToolMsg.SWEEP_EVALUATION.text() : x, pad(xr), pad(yr), f -> {
             if (optimise) {
                 convergence(f, rows, xs, ys);
             } else {

@@ -14,7 +14,7 @@ import org.eclipse.swt.widgets.Table;
 import org.eclipse.swt.widgets.TableColumn;
 import org.eclipse.swt.widgets.TableItem;
 import org.parpe.core.lang.Numbers;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 import org.parpe.sim.sweep.SweepRow;
 
 /**
@@ -58,22 +58,22 @@ final class ResultsTable {
         // The run's place in the engine's order, from 0 as the CSV's and parpe sweep's run column: a
         // sweep's run number, an optimisation's evaluation number (the point's own index restarts
         // with each independent search).
-        columns.add(new Column(PanelMsg.SWEEP_COL_RUN.text(), row -> Integer.toString(place.get(row)), Comparator.comparingInt(place::get)));
+        columns.add(new Column(ToolMsg.SWEEP_COL_RUN.text(), row -> Integer.toString(place.get(row)), Comparator.comparingInt(place::get)));
         for (String p : r.parameters()) {
             columns.add(new Column(p, row -> value(row.values().get(p)),
                     Comparator.comparingDouble(row -> nanLast(row.values().get(p)))));
         }
-        measure(PanelMsg.SWEEP_COL_FORWARD_SPEED.text(), SweepRow::forwardSpeed);
-        measure(PanelMsg.SWEEP_COL_SPEED.text(), SweepRow::speed);
-        measure(PanelMsg.SWEEP_COL_FORWARD.text(), SweepRow::forward);
-        measure(PanelMsg.SWEEP_COL_DISTANCE.text(), SweepRow::distance);
-        measure(PanelMsg.SWEEP_COL_MAX_TILT.text(), SweepRow::maxTiltDeg);
-        measure(PanelMsg.SWEEP_COL_JOINT_TRAVEL.text(), SweepRow::jointTravelDeg);
+        measure(ToolMsg.SWEEP_COL_FORWARD_SPEED.text(), SweepRow::forwardSpeed);
+        measure(ToolMsg.SWEEP_COL_SPEED.text(), SweepRow::speed);
+        measure(ToolMsg.SWEEP_COL_FORWARD.text(), SweepRow::forward);
+        measure(ToolMsg.SWEEP_COL_DISTANCE.text(), SweepRow::distance);
+        measure(ToolMsg.SWEEP_COL_MAX_TILT.text(), SweepRow::maxTiltDeg);
+        measure(ToolMsg.SWEEP_COL_JOINT_TRAVEL.text(), SweepRow::jointTravelDeg);
         if (r.scored()) {
-            measure(PanelMsg.SWEEP_COL_SCORE.text(), SweepRow::score);
+            measure(ToolMsg.SWEEP_COL_SCORE.text(), SweepRow::score);
         }
-        columns.add(new Column(PanelMsg.SWEEP_COL_FELL.text(), row -> (row.fell() ? PanelMsg.SWEEP_YES : PanelMsg.SWEEP_NO).text(), Comparator.comparing(SweepRow::fell)));
-        columns.add(new Column(PanelMsg.SWEEP_COL_ERROR.text(), row -> row.error().toString(),
+        columns.add(new Column(ToolMsg.SWEEP_COL_FELL.text(), row -> (row.fell() ? ToolMsg.SWEEP_YES : ToolMsg.SWEEP_NO).text(), Comparator.comparing(SweepRow::fell)));
+        columns.add(new Column(ToolMsg.SWEEP_COL_ERROR.text(), row -> row.error().toString(),
                 Comparator.comparing(row -> row.error().toString())));
         for (int i = 0; i < columns.size(); i++) {
             Column c = columns.get(i);

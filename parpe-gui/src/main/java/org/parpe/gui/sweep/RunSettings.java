@@ -8,7 +8,7 @@ import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.Spinner;
 import org.eclipse.swt.widgets.Text;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 import org.parpe.sim.sweep.Objective;
 
 /**
@@ -28,28 +28,28 @@ final class RunSettings {
      * {@code currentRobot} and world {@code currentWorld} (null: the flat floor).
      */
     RunSettings(Composite parent, String currentRobot, java.nio.file.Path currentWorld) {
-        new Label(parent, SWT.NONE).setText(PanelMsg.SWEEP_ROBOT.text());
+        new Label(parent, SWT.NONE).setText(ToolMsg.SWEEP_ROBOT.text());
         robot = new RobotChoice(parent, currentRobot);
-        new Label(parent, SWT.NONE).setText("   " + PanelMsg.SWEEP_WORLD.text());
+        new Label(parent, SWT.NONE).setText("   " + ToolMsg.SWEEP_WORLD.text());
         world = new WorldChoice(parent, currentWorld);
-        new Label(parent, SWT.NONE).setText("   " + PanelMsg.SWEEP_SECONDS.text());
+        new Label(parent, SWT.NONE).setText("   " + ToolMsg.SWEEP_SECONDS.text());
         duration = new Text(parent, SWT.BORDER);
         duration.setText("10");
         duration.setLayoutData(new RowData(60, SWT.DEFAULT));
-        duration.setToolTipText(PanelMsg.SWEEP_SECONDS_TIP.text());
-        new Label(parent, SWT.NONE).setText("   " + PanelMsg.SWEEP_JOBS.text());
+        duration.setToolTipText(ToolMsg.SWEEP_SECONDS_TIP.text());
+        new Label(parent, SWT.NONE).setText("   " + ToolMsg.SWEEP_JOBS.text());
         jobs = new Spinner(parent, SWT.BORDER);
         // Each simulation at once holds a robot of its own: more than the cores only costs memory (1 024 took gigabytes).
         int cores = Runtime.getRuntime().availableProcessors();
         jobs.setValues(cores, 1, cores, 0, 1, 4);
-        jobs.setToolTipText(PanelMsg.SWEEP_JOBS_TIP.text(cores));
-        new Label(parent, SWT.NONE).setText("   " + PanelMsg.SWEEP_OBJECTIVE.text());
+        jobs.setToolTipText(ToolMsg.SWEEP_JOBS_TIP.text(cores));
+        new Label(parent, SWT.NONE).setText("   " + ToolMsg.SWEEP_OBJECTIVE.text());
         objective = new Combo(parent, SWT.READ_ONLY);
         for (Objective o : Objective.values()) {
             objective.add(label(o));
         }
         objective.select(0);
-        objective.setToolTipText(PanelMsg.SWEEP_OBJECTIVE_TIP.text());
+        objective.setToolTipText(ToolMsg.SWEEP_OBJECTIVE_TIP.text());
     }
 
     RobotChoice robot() {
@@ -88,11 +88,11 @@ final class RunSettings {
     /** The objective's name with its unit in the IDE's language (the engine's {@link Objective#label()} is English). */
     static String label(Objective o) {
         return switch (o) {
-            case FORWARD_SPEED -> PanelMsg.SWEEP_COL_FORWARD_SPEED.text();
-            case SPEED -> PanelMsg.SWEEP_COL_SPEED.text();
-            case FORWARD -> PanelMsg.SWEEP_COL_FORWARD.text();
-            case DISTANCE -> PanelMsg.SWEEP_COL_DISTANCE.text();
-            case SCORE -> PanelMsg.SWEEP_OBJECTIVE_SCORE.text();
+            case FORWARD_SPEED -> ToolMsg.SWEEP_COL_FORWARD_SPEED.text();
+            case SPEED -> ToolMsg.SWEEP_COL_SPEED.text();
+            case FORWARD -> ToolMsg.SWEEP_COL_FORWARD.text();
+            case DISTANCE -> ToolMsg.SWEEP_COL_DISTANCE.text();
+            case SCORE -> ToolMsg.SWEEP_OBJECTIVE_SCORE.text();
         };
     }
 

@@ -9,7 +9,7 @@ import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.Parameter;
 import org.parpe.core.text.Key;
 import org.parpe.core.text.Message;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 import org.parpe.sim.sweep.Axis;
 import org.parpe.sim.sweep.Constraints;
 import org.parpe.sim.sweep.Evaluator;
@@ -46,11 +46,11 @@ record StartRequest(Path file, String text, String robot, Path world, String dur
     private Evaluator.Settings settings(Map<String, Double> held) throws SweepException {
         if (objective == Objective.SCORE && world == null) {
             // as parpe sweep --objective score without --world: every run's score would be empty
-            throw new SweepException(PanelMsg.SWEEP_SCORE_NEEDS_WORLD.text());
+            throw new SweepException(ToolMsg.SWEEP_SCORE_NEEDS_WORLD.text());
         }
         Double seconds = Numbers.parsePlain(duration);
         if (seconds == null || !(seconds > 0) || seconds.isInfinite() || seconds < TICK) {
-            throw new SweepException(PanelMsg.SWEEP_BAD_SECONDS.text(Numbers.format(TICK), duration.trim()));
+            throw new SweepException(ToolMsg.SWEEP_BAD_SECONDS.text(Numbers.format(TICK), duration.trim()));
         }
         return new Evaluator.Settings(file, text, held, robot, seconds, TICK, FALL_TILT, world);
     }
@@ -73,7 +73,7 @@ record StartRequest(Path file, String text, String robot, Path world, String dur
         OptimizeSpec spec = tab.spec(objective);
         SearchSpace space = new SearchSpace(parameters, Set.of());
         if (space.dimension() == 0) {
-            throw new SweepException(PanelMsg.SWEEP_NOTHING_TO_OPTIMISE.text(file.getFileName()));
+            throw new SweepException(ToolMsg.SWEEP_NOTHING_TO_OPTIMISE.text(file.getFileName()));
         }
         List<String> names = space.parameters().stream().map(Parameter::name).toList();
         Results results = new Results(file, Results.Mode.OPTIMISE, names, own(parameters, names), objective, spec.constraints(),
@@ -96,12 +96,12 @@ record StartRequest(Path file, String text, String robot, Path world, String dur
      * The engine's messages that name an option of {@code parpe sweep}/{@code optimize}, and the
      * dialog's words for each: the same arguments, the options named as the boxes are.
      */
-    private static final Map<Key, Key> DIALOG_WORDS = Map.of(SimMsg.NOTHING_TO_VARY, PanelMsg.SWEEP_NOTHING_TO_VARY,
-            SimMsg.VARY_WHERE, PanelMsg.SWEEP_ENGINE_WHERE, SimMsg.VARY_SYNTAX, PanelMsg.SWEEP_ENGINE_SYNTAX,
-            SimMsg.FRACTIONAL_ENDS, PanelMsg.SWEEP_ENGINE_FRACTIONAL_ENDS, SimMsg.REPEAT_AT_LEAST_ONE, PanelMsg.SWEEP_ENGINE_REPEAT,
-            SimMsg.RANDOM_AT_LEAST_ONE, PanelMsg.SWEEP_ENGINE_RANDOM, SimMsg.TOO_MANY_RUNS, PanelMsg.SWEEP_ENGINE_TOO_MANY_RUNS,
-            SimMsg.K_TOO_LARGE, PanelMsg.SWEEP_ENGINE_K_TOO_LARGE, SimMsg.STARTS_AT_LEAST_ONE, PanelMsg.SWEEP_ENGINE_STARTS,
-            SimMsg.BUDGET_TOO_SMALL, PanelMsg.SWEEP_ENGINE_BUDGET);
+    private static final Map<Key, Key> DIALOG_WORDS = Map.of(SimMsg.NOTHING_TO_VARY, ToolMsg.SWEEP_NOTHING_TO_VARY,
+            SimMsg.VARY_WHERE, ToolMsg.SWEEP_ENGINE_WHERE, SimMsg.VARY_SYNTAX, ToolMsg.SWEEP_ENGINE_SYNTAX,
+            SimMsg.FRACTIONAL_ENDS, ToolMsg.SWEEP_ENGINE_FRACTIONAL_ENDS, SimMsg.REPEAT_AT_LEAST_ONE, ToolMsg.SWEEP_ENGINE_REPEAT,
+            SimMsg.RANDOM_AT_LEAST_ONE, ToolMsg.SWEEP_ENGINE_RANDOM, SimMsg.TOO_MANY_RUNS, ToolMsg.SWEEP_ENGINE_TOO_MANY_RUNS,
+            SimMsg.K_TOO_LARGE, ToolMsg.SWEEP_ENGINE_K_TOO_LARGE, SimMsg.STARTS_AT_LEAST_ONE, ToolMsg.SWEEP_ENGINE_STARTS,
+            SimMsg.BUDGET_TOO_SMALL, ToolMsg.SWEEP_ENGINE_BUDGET);
 
     /**
      * {@code m}, a message of the engine, in the dialog's words: where it names an option of the

@@ -19,7 +19,7 @@ import org.parpe.core.io.OutputPlan;
 import org.parpe.core.load.LoadResult;
 import org.parpe.gui.editor.ScriptDocument;
 import org.parpe.core.model.Parameter;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 import org.parpe.sim.sweep.SweepRow;
 
 /**
@@ -71,14 +71,14 @@ public final class SweepDialog {
         tabs = new TabFolder(shell, SWT.TOP);
         tabs.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, false));
         sweepTab = new SweepTab(tabs);
-        tab(PanelMsg.SWEEP_TAB_SWEEP.text(), sweepTab.control());
+        tab(ToolMsg.SWEEP_TAB_SWEEP.text(), sweepTab.control());
         optimiseTab = new OptimiseTab(tabs);
-        tab(PanelMsg.SWEEP_TAB_OPTIMISE.text(), optimiseTab.control());
+        tab(ToolMsg.SWEEP_TAB_OPTIMISE.text(), optimiseTab.control());
         ((GridData) tabs.getLayoutData()).heightHint = 270;
 
         Composite bar = row(shell, 4);
-        start = button(bar, PanelMsg.SWEEP_START.text(), this::start);
-        stop = button(bar, PanelMsg.SWEEP_STOP.text(), this::stop);
+        start = button(bar, ToolMsg.SWEEP_START.text(), this::start);
+        stop = button(bar, ToolMsg.SWEEP_STOP.text(), this::stop);
         progress = new ProgressBar(bar, SWT.HORIZONTAL);
         progress.setMaximum(1000);
         progress.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
@@ -91,10 +91,10 @@ public final class SweepDialog {
 
         pane = new ResultsPane(shell);
         Composite bottom = row(shell, 3);
-        apply = button(bottom, PanelMsg.SWEEP_APPLY_BEST.text(), this::applyBest);
-        apply.setToolTipText(PanelMsg.SWEEP_APPLY_BEST_TIP.text());
-        save = button(bottom, PanelMsg.SWEEP_SAVE_CSV.text(), this::saveCsv);
-        button(bottom, PanelMsg.SWEEP_CLOSE.text(), shell::close);
+        apply = button(bottom, ToolMsg.SWEEP_APPLY_BEST.text(), this::applyBest);
+        apply.setToolTipText(ToolMsg.SWEEP_APPLY_BEST_TIP.text());
+        save = button(bottom, ToolMsg.SWEEP_SAVE_CSV.text(), this::saveCsv);
+        button(bottom, ToolMsg.SWEEP_CLOSE.text(), shell::close);
         shell.setDefaultButton(start);
         wire();
     }
@@ -175,11 +175,11 @@ public final class SweepDialog {
         edited = false;
         ScriptDocument.Loaded loaded = host.document().loaded();
         Path file = loaded.file();
-        shell.setText(PanelMsg.SWEEP_TITLE.text(file.getFileName()));
+        shell.setText(ToolMsg.SWEEP_TITLE.text(file.getFileName()));
         LoadResult r = loaded.result();
         if (r.program() == null) {
-            String first = r.errors().isEmpty() ? PanelMsg.SWEEP_DOES_NOT_LOAD.text(file) : r.errors().get(0).format();
-            error(r.errors().size() > 1 ? PanelMsg.SWEEP_AND_MORE.text(first, r.errors().size() - 1) : first);
+            String first = r.errors().isEmpty() ? ToolMsg.SWEEP_DOES_NOT_LOAD.text(file) : r.errors().get(0).format();
+            error(r.errors().size() > 1 ? ToolMsg.SWEEP_AND_MORE.text(first, r.errors().size() - 1) : first);
             return null;
         }
         List<Parameter> now = r.program().parameters();
@@ -217,9 +217,9 @@ public final class SweepDialog {
         }
         pane.show(results);
         progress.setSelection(0);
-        counts.setText(PanelMsg.SWEEP_COUNTS.text(0, total, ""));
+        counts.setText(ToolMsg.SWEEP_COUNTS.text(0, total, ""));
         startedAt = System.nanoTime();
-        info(PanelMsg.SWEEP_RUNNING.text(total, settings.duration().trim(), settings.jobs()));
+        info(ToolMsg.SWEEP_RUNNING.text(total, settings.duration().trim(), settings.jobs()));
         setRunning(true);
     }
 
@@ -243,7 +243,7 @@ public final class SweepDialog {
             rows.forEach(results::add);
             pane.refresh();
             progress.setSelection(of == 0 ? 0 : (int) (1000L * done / of));
-            counts.setText(PanelMsg.SWEEP_COUNTS.text(done, of, timeLeft(done, of)));
+            counts.setText(ToolMsg.SWEEP_COUNTS.text(done, of, timeLeft(done, of)));
             apply.setEnabled(results.best() != null);
         }
 
@@ -264,14 +264,14 @@ public final class SweepDialog {
             }
             int kept = results.count();
             pane.refresh();
-            counts.setText(PanelMsg.SWEEP_COUNTS.text(kept, total, ""));
+            counts.setText(ToolMsg.SWEEP_COUNTS.text(kept, total, ""));
             if (!cancelled) {
                 progress.setSelection(1000);
             }
             SweepRow best = results.best();
-            String head = cancelled ? PanelMsg.SWEEP_STOPPED_AFTER.text(kept, total) : PanelMsg.SWEEP_FINISHED.text(kept);
+            String head = cancelled ? ToolMsg.SWEEP_STOPPED_AFTER.text(kept, total) : ToolMsg.SWEEP_FINISHED.text(kept);
             String said = head + " " + (best == null ? noBest() : results.bestSentence(best));
-            info(results.complete() ? said : PanelMsg.SWEEP_SHOWN_FIRST.text(said, results.rows().size(), kept));
+            info(results.complete() ? said : ToolMsg.SWEEP_SHOWN_FIRST.text(said, results.rows().size(), kept));
             apply.setEnabled(best != null);
         }
 
@@ -290,27 +290,27 @@ public final class SweepDialog {
         }
         double left = (System.nanoTime() - startedAt) / 1e9 / done * (of - done);
         long s = Math.round(left);
-        return PanelMsg.SWEEP_TIME_LEFT.text(s >= 3600 ? s / 3600 + " h " + s % 3600 / 60 + " min"
+        return ToolMsg.SWEEP_TIME_LEFT.text(s >= 3600 ? s / 3600 + " h " + s % 3600 / 60 + " min"
                 : s >= 60 ? s / 60 + " min " + s % 60 + " s" : s + " s");
     }
 
     /** Why no run can be the best, with the counts the table's columns show. */
     private String noBest() {
         if (results.count() == 0) {
-            return PanelMsg.SWEEP_NO_RUN_FINISHED.text();
+            return ToolMsg.SWEEP_NO_RUN_FINISHED.text();
         }
         int failed = results.failed();
         int fell = results.fell();
         return results.mode() == Results.Mode.SWEEP
-                ? PanelMsg.SWEEP_NO_BEST.text(fell, failed)
-                : PanelMsg.SWEEP_NO_RUN_MET.text();
+                ? ToolMsg.SWEEP_NO_BEST.text(fell, failed)
+                : ToolMsg.SWEEP_NO_RUN_MET.text();
     }
 
     private void stop() {
         if (runner != null && runner.running()) {
             runner.stop();
             stop.setEnabled(false);
-            info(PanelMsg.SWEEP_STOPPING.text());
+            info(ToolMsg.SWEEP_STOPPING.text());
         }
     }
 
@@ -329,12 +329,12 @@ public final class SweepDialog {
         }
         Path now = host.document().file();
         if (!now.equals(results.script())) {
-            error(PanelMsg.SWEEP_OTHER_SCRIPT.text(results.script().getFileName(), now.getFileName()));
+            error(ToolMsg.SWEEP_OTHER_SCRIPT.text(results.script().getFileName(), now.getFileName()));
             return;
         }
         try {
             String what = ApplyBest.apply(host.editor(), host.document().loaded(), results.bestValues());
-            info(PanelMsg.SWEEP_APPLIED.text(what));
+            info(ToolMsg.SWEEP_APPLIED.text(what));
         } catch (org.parpe.sim.sweep.SweepException e) {
             error(e.getMessage());
         }
@@ -342,7 +342,7 @@ public final class SweepDialog {
 
     private void saveCsv() {
         String name = host.document().file().getFileName().toString().replaceFirst("\\.xml$", "");
-        Path p = org.parpe.gui.panels.FileDialogs.ask(shell, SWT.SAVE, PanelMsg.SWEEP_SAVE_CSV_TITLE.text(), "*.csv",
+        Path p = org.parpe.gui.panels.FileDialogs.ask(shell, SWT.SAVE, ToolMsg.SWEEP_SAVE_CSV_TITLE.text(), "*.csv",
                 name + (results.mode() == Results.Mode.SWEEP ? "-sweep.csv" : "-optimise.csv"), null);
         if (p != null) {
             saveCsv(p);
@@ -352,7 +352,7 @@ public final class SweepDialog {
     /** Writes the rows to {@code file} off the UI thread and says when it is done. */
     void saveCsv(Path file) {
         if (OutputPlan.sameFile(host.document().file(), file)) {
-            error(PanelMsg.SWEEP_SAVE_OVER_SCRIPT.text(file.getFileName()));
+            error(ToolMsg.SWEEP_SAVE_OVER_SCRIPT.text(file.getFileName()));
             return;
         }
         CsvExport.inBackground(shell.getDisplay(), file, results, total, (ok, said) -> {

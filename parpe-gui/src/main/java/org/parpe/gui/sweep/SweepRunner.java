@@ -11,7 +11,7 @@ import org.parpe.core.load.LoadResult;
 import org.parpe.gui.editor.ScriptDocument;
 import org.parpe.core.run.TargetException;
 import org.parpe.gui.run.CrashLog;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 import org.parpe.sim.SimTarget;
 import org.parpe.sim.Simulator;
 import org.parpe.sim.sweep.Cancellation;
@@ -106,7 +106,7 @@ final class SweepRunner {
             } catch (SweepException e) {
                 end(null, false, StartRequest.inDialogWords(e.text()).toString());
             } catch (RuntimeException | Error e) {
-                end(null, false, PanelMsg.SWEEP_INTERNAL_ERROR.text(e, CrashLog.write("running a sweep", e)));
+                end(null, false, ToolMsg.SWEEP_INTERNAL_ERROR.text(e, CrashLog.write("running a sweep", e)));
             }
         }, "parpe-sweep-dialog");
         t.setDaemon(true);

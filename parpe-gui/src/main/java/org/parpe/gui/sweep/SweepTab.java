@@ -18,7 +18,7 @@ import org.eclipse.swt.widgets.Spinner;
 import org.eclipse.swt.widgets.Text;
 import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.Parameter;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 import org.parpe.sim.sweep.Axis;
 import org.parpe.sim.sweep.SweepException;
 import org.parpe.sim.sweep.SweepSpec;
@@ -31,8 +31,8 @@ import org.parpe.sim.sweep.VarySpec;
  * own checks and messages ({@link VarySpec}).
  */
 final class SweepTab {
-    private static final PanelMsg[] COLUMNS = {PanelMsg.SWEEP_VARY, PanelMsg.SWEEP_PARAMETER, PanelMsg.SWEEP_FROM, PanelMsg.SWEEP_TO,
-        PanelMsg.SWEEP_VALUES, PanelMsg.SWEEP_HOLD_AT, PanelMsg.SWEEP_BOUNDS};
+    private static final ToolMsg[] COLUMNS = {ToolMsg.SWEEP_VARY, ToolMsg.SWEEP_PARAMETER, ToolMsg.SWEEP_FROM, ToolMsg.SWEEP_TO,
+        ToolMsg.SWEEP_VALUES, ToolMsg.SWEEP_HOLD_AT, ToolMsg.SWEEP_BOUNDS};
     private final Composite root;
     private final Composite lines;
     private final ScrolledComposite scroller;
@@ -62,7 +62,7 @@ final class SweepTab {
             if (t.matches("\\d{1,7}")) {
                 int n = Integer.parseInt(t);
                 if (n < 1) {
-                    throw new SweepException(PanelMsg.SWEEP_BAD_COUNT.text(t));
+                    throw new SweepException(ToolMsg.SWEEP_BAD_COUNT.text(t));
                 }
                 return new Values(n, List.of());
             }
@@ -71,7 +71,7 @@ final class SweepTab {
             for (String token : t.split(decimalComma ? "[;\\s]+" : "[;,\\s]+")) {
                 Double v = token.isEmpty() ? null : Numbers.parsePlain(decimalComma ? token.replace(',', '.') : token);
                 if (v == null || !Double.isFinite(v)) {
-                    throw new SweepException(PanelMsg.SWEEP_BAD_VALUES.text(t));
+                    throw new SweepException(ToolMsg.SWEEP_BAD_VALUES.text(t));
                 }
                 out.add(v);
             }
@@ -91,16 +91,16 @@ final class SweepTab {
         Composite how = new Composite(root, SWT.NONE);
         how.setLayout(new GridLayout(8, false));
         grid = new Button(how, SWT.RADIO);
-        grid.setText(PanelMsg.SWEEP_GRID.text());
+        grid.setText(ToolMsg.SWEEP_GRID.text());
         grid.setSelection(true);
         random = new Button(how, SWT.RADIO);
-        random.setText(PanelMsg.SWEEP_RANDOM.text());
+        random.setText(ToolMsg.SWEEP_RANDOM.text());
         count = spinner(how, 1, 1_000_000, 20);
-        count.setToolTipText(PanelMsg.SWEEP_RANDOM_TIP.text());
-        new Label(how, SWT.NONE).setText("   " + PanelMsg.SWEEP_REPEAT.text());
+        count.setToolTipText(ToolMsg.SWEEP_RANDOM_TIP.text());
+        new Label(how, SWT.NONE).setText("   " + ToolMsg.SWEEP_REPEAT.text());
         repeat = spinner(how, 1, 1000, 1);
-        repeat.setToolTipText(PanelMsg.SWEEP_REPEAT_TIP.text());
-        new Label(how, SWT.NONE).setText("   " + PanelMsg.SWEEP_SEED.text());
+        repeat.setToolTipText(ToolMsg.SWEEP_REPEAT_TIP.text());
+        new Label(how, SWT.NONE).setText("   " + ToolMsg.SWEEP_SEED.text());
         seed = new Text(how, SWT.BORDER);
         seed.setText("0");
         seed.setLayoutData(new GridData(70, SWT.DEFAULT));
@@ -128,7 +128,7 @@ final class SweepTab {
             c.dispose();
         }
         byName.clear();
-        for (PanelMsg h : COLUMNS) {
+        for (ToolMsg h : COLUMNS) {
             Label l = new Label(lines, SWT.NONE);
             l.setText(h.text());
         }
@@ -146,7 +146,7 @@ final class SweepTab {
         }
         if (parameters.isEmpty()) {
             Label none = new Label(lines, SWT.WRAP);
-            none.setText(PanelMsg.SWEEP_NO_PARAMETERS.text());
+            none.setText(ToolMsg.SWEEP_NO_PARAMETERS.text());
             none.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false, COLUMNS.length, 1));
         }
         lines.setSize(lines.computeSize(SWT.DEFAULT, SWT.DEFAULT));
@@ -167,11 +167,11 @@ final class SweepTab {
         Text values = new Text(lines, SWT.BORDER);
         values.setText("3");
         values.setLayoutData(new GridData(70, SWT.DEFAULT));
-        values.setToolTipText(PanelMsg.SWEEP_VALUES_TIP.text());
+        values.setToolTipText(ToolMsg.SWEEP_VALUES_TIP.text());
         Text hold = new Text(lines, SWT.BORDER);
         hold.setText(Numbers.format(p.value()));
         hold.setLayoutData(new GridData(70, SWT.DEFAULT));
-        hold.setToolTipText(PanelMsg.SWEEP_HOLD_TIP.text(p.name(), Numbers.format(p.value())));
+        hold.setToolTipText(ToolMsg.SWEEP_HOLD_TIP.text(p.name(), Numbers.format(p.value())));
         Label bounds = new Label(lines, SWT.NONE);
         bounds.setText((p.min() == null ? "-\u221e" : Numbers.format(p.min())) + " \u2026 "
                 + (p.max() == null ? "+\u221e" : Numbers.format(p.max())) + "   (" + Numbers.format(p.value()) + ")");
@@ -214,11 +214,11 @@ final class SweepTab {
             axes.add(draw && a.kind() == Axis.Kind.INTEGERS && !whole(l.parameter()) ? Axis.continuous(name, a.lo(), a.hi()) : a);
         }
         if (axes.isEmpty()) {
-            throw new SweepException(PanelMsg.SWEEP_NOTHING_TO_VARY.text());
+            throw new SweepException(ToolMsg.SWEEP_NOTHING_TO_VARY.text());
         }
         Double s = Numbers.parsePlain(seed.getText());
         if (s == null || s != Math.rint(s) || Math.abs(s) > 1e15) {
-            throw new SweepException(PanelMsg.SWEEP_BAD_SEED.text(seed.getText().trim()));
+            throw new SweepException(ToolMsg.SWEEP_BAD_SEED.text(seed.getText().trim()));
         }
         SweepSpec spec = draw ? SweepSpec.random(axes, count.getSelection(), repeat.getSelection(), s.longValue())
                 : SweepSpec.grid(axes, repeat.getSelection(), s.longValue());
@@ -238,7 +238,7 @@ final class SweepTab {
             }
             Double v = Numbers.parsePlain(l.hold().getText());
             if (v == null || !Double.isFinite(v)) {
-                throw new SweepException(PanelMsg.SWEEP_BAD_HOLD.text(l.parameter().name(), l.hold().getText().trim()));
+                throw new SweepException(ToolMsg.SWEEP_BAD_HOLD.text(l.parameter().name(), l.hold().getText().trim()));
             }
             if (v != l.parameter().value()) {
                 out.put(l.parameter().name(), v);

@@ -7,7 +7,7 @@ import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
 import org.parpe.gui.files.Examples;
-import org.parpe.gui.text.PanelMsg;
+import org.parpe.gui.text.ToolMsg;
 
 /**
  * Where the runs are simulated, with the choices of the IDE's World picker: the flat floor, the
@@ -23,15 +23,15 @@ final class WorldChoice {
     /** The choice in {@code parent}, on {@code current} (a world file, or null for the flat floor). */
     WorldChoice(Composite parent, Path current) {
         combo = new Combo(parent, SWT.READ_ONLY);
-        combo.add(PanelMsg.SWEEP_FLAT.text());
+        combo.add(ToolMsg.SWEEP_FLAT.text());
         Examples.worlds().forEach(this::add);
-        combo.add(PanelMsg.SWEEP_WORLD_FILE_BROWSE.text());
+        combo.add(ToolMsg.SWEEP_WORLD_FILE_BROWSE.text());
         combo.select(0);
         if (current != null) {
             choose(current);
         }
         previous = combo.getSelectionIndex();
-        combo.setToolTipText(PanelMsg.SWEEP_WORLD_TIP.text());
+        combo.setToolTipText(ToolMsg.SWEEP_WORLD_TIP.text());
         combo.addListener(SWT.Selection, e -> chosen());
     }
 
@@ -45,11 +45,11 @@ final class WorldChoice {
     }
 
     private void chosen() {
-        if (!PanelMsg.SWEEP_WORLD_FILE_BROWSE.text().equals(combo.getText())) {
+        if (!ToolMsg.SWEEP_WORLD_FILE_BROWSE.text().equals(combo.getText())) {
             previous = combo.getSelectionIndex();
             return;
         }
-        Path p = org.parpe.gui.panels.FileDialogs.ask(combo.getShell(), SWT.OPEN, PanelMsg.SWEEP_WORLD_FILE.text(), "*.xml", null, null);
+        Path p = org.parpe.gui.panels.FileDialogs.ask(combo.getShell(), SWT.OPEN, ToolMsg.SWEEP_WORLD_FILE.text(), "*.xml", null, null);
         if (p == null) {
             combo.select(previous);
             return;

@@ -151,7 +151,8 @@ public final class IdeAccess {
         }
     }
 
-    private static java.util.List<org.eclipse.swt.widgets.Control> allChildren(org.eclipse.swt.widgets.Composite parent) {
+    /** Every control under {@code parent}, depth first. */
+    static java.util.List<org.eclipse.swt.widgets.Control> allChildren(org.eclipse.swt.widgets.Composite parent) {
         java.util.List<org.eclipse.swt.widgets.Control> out = new java.util.ArrayList<>();
         for (org.eclipse.swt.widgets.Control c : parent.getChildren()) {
             out.add(c);

@@ -18,6 +18,8 @@ import org.eclipse.swt.widgets.MenuItem;
 import org.eclipse.swt.widgets.Shell;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 import org.parpe.gui.automation.Screenshot;
 import org.parpe.gui.prefs.Prefs;
 import org.parpe.gui.text.IdeLanguage;
@@ -37,23 +39,22 @@ class LanguageGuiTest {
         Gui.closeIde(ide);
     }
 
-    @Test
-    void startedInGermanTheMenusAndJFaceButtonsAreGerman() throws Exception {
-        Map<String, String> seen = probe(Files.createTempDirectory("parpe-lang-de"), "de", "--lang", "de");
-        assertEquals("&Datei|&Bearbeiten|&Ausführen|&Ansicht|&Hilfe", seen.get("menus"));
-        assertEquals("Simulator: bereit|Hardware: nicht verbunden", seen.get("status"));
-        assertEquals("Abbrechen|OK|&Ja|&Nein", seen.get("buttons"));
-        assertEquals("", seen.get("clipped"), "the Hardware dialog's column headers fit their German words");
-        assertEquals("", seen.get("cut"), "the window's choice boxes fit their German items");
-    }
-
-    @Test
-    void startedInJapaneseTheMenusAndJFaceButtonsAreJapanese() throws Exception {
-        Map<String, String> seen = probe(Files.createTempDirectory("parpe-lang-ja"), "ja", "--lang", "ja");
-        assertEquals("ファイル(&F)|編集(&E)|実行(&R)|表示(&V)|ヘルプ(&H)", seen.get("menus"));
-        assertEquals("キャンセル|OK|はい(&Y)|いいえ(&N)", seen.get("buttons"));
-        assertEquals("", seen.get("clipped"), "the Hardware dialog's column headers fit their Japanese words");
-        assertEquals("", seen.get("cut"), "the window's choice boxes fit their Japanese items");
+    /**
+     * Started in German or Japanese: the menus, the status bar and JFace's buttons are in that
+     * language, and the Hardware dialog's column headers and the window's choice boxes fit its words.
+     */
+    @ParameterizedTest
+    @CsvSource(delimiter = ';', value = {
+        "de; &Datei|&Bearbeiten|&Ausführen|&Ansicht|&Hilfe; Simulator: bereit|Hardware: nicht verbunden; Abbrechen|OK|&Ja|&Nein",
+        "ja; ファイル(&F)|編集(&E)|実行(&R)|表示(&V)|ヘルプ(&H); シミュレーター: 待機中|ハードウェア: 未接続; キャンセル|OK|はい(&Y)|いいえ(&N)"})
+    void startedInALanguageTheMenusAndJFaceButtonsAreInIt(String lang, String menus, String status, String buttons)
+            throws Exception {
+        Map<String, String> seen = probe(Files.createTempDirectory("parpe-lang-" + lang), lang, "--lang", lang);
+        assertEquals(menus, seen.get("menus"));
+        assertEquals(status, seen.get("status"));
+        assertEquals(buttons, seen.get("buttons"));
+        assertEquals("", seen.get("clipped"), "the Hardware dialog's column headers fit the words of " + lang);
+        assertEquals("", seen.get("cut"), "the window's choice boxes fit the items of " + lang);
     }
 
     /** The preference chooses when there is no --lang (the tests' environment is LC_ALL=C.UTF-8: English); --lang beats it. */

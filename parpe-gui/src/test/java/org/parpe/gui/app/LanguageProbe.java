@@ -5,7 +5,15 @@ import java.util.ArrayList;
 import java.util.List;
 import org.eclipse.jface.dialogs.IDialogConstants;
 import org.eclipse.jface.dialogs.InputDialog;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.graphics.GC;
+import org.eclipse.swt.widgets.Button;
+import org.eclipse.swt.widgets.Combo;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Control;
 import org.eclipse.swt.widgets.MenuItem;
+import org.eclipse.swt.widgets.Table;
+import org.eclipse.swt.widgets.TableColumn;
 import org.parpe.gui.automation.Screenshot;
 import org.parpe.gui.prefs.Prefs;
 import org.parpe.gui.text.IdeLanguage;
@@ -59,48 +67,32 @@ final class LanguageProbe {
     }
 
     /** The shown texts of the visible choice boxes in {@code c} narrower than their longest item. */
-    private static List<String> cutCombos(org.eclipse.swt.widgets.Composite c) {
-        List<String> out = new ArrayList<>();
-        for (org.eclipse.swt.widgets.Control k : c.getChildren()) {
-            if (k instanceof org.eclipse.swt.widgets.Combo box && box.isVisible()
-                    && (box.getStyle() & org.eclipse.swt.SWT.READ_ONLY) != 0
-                    && box.getSize().x < box.computeSize(org.eclipse.swt.SWT.DEFAULT, org.eclipse.swt.SWT.DEFAULT).x) {
-                out.add(box.getText());
-            } else if (k instanceof org.eclipse.swt.widgets.Composite inner) {
-                out.addAll(cutCombos(inner));
-            }
-        }
-        return out;
+    private static List<String> cutCombos(Composite c) {
+        return IdeAccess.allChildren(c).stream()
+                .filter(k -> k instanceof Combo box && box.isVisible() && (box.getStyle() & SWT.READ_ONLY) != 0
+                        && box.getSize().x < box.computeSize(SWT.DEFAULT, SWT.DEFAULT).x)
+                .map(k -> ((Combo) k).getText()).toList();
     }
 
     /** The column headers of the tables in {@code c} narrower than their text (and the header's padding). */
-    private static List<String> clippedHeaders(org.eclipse.swt.widgets.Composite c) {
+    private static List<String> clippedHeaders(Composite c) {
         List<String> out = new ArrayList<>();
-        for (org.eclipse.swt.widgets.Control k : c.getChildren()) {
-            if (k instanceof org.eclipse.swt.widgets.Table t) {
-                org.eclipse.swt.graphics.GC gc = new org.eclipse.swt.graphics.GC(t);
-                for (org.eclipse.swt.widgets.TableColumn col : t.getColumns()) {
+        for (Control k : IdeAccess.allChildren(c)) {
+            if (k instanceof Table t) {
+                GC gc = new GC(t);
+                for (TableColumn col : t.getColumns()) {
                     if (col.getWidth() < gc.textExtent(col.getText()).x + 12) {
                         out.add(col.getText());
                     }
                 }
                 gc.dispose();
-            } else if (k instanceof org.eclipse.swt.widgets.Composite inner) {
-                out.addAll(clippedHeaders(inner));
             }
         }
         return out;
     }
 
-    private static List<String> buttons(org.eclipse.swt.widgets.Composite c) {
-        List<String> out = new ArrayList<>();
-        for (org.eclipse.swt.widgets.Control k : c.getChildren()) {
-            if (k instanceof org.eclipse.swt.widgets.Button b && (b.getStyle() & org.eclipse.swt.SWT.PUSH) != 0) {
-                out.add(b.getText());
-            } else if (k instanceof org.eclipse.swt.widgets.Composite inner) {
-                out.addAll(buttons(inner));
-            }
-        }
-        return out;
+    private static List<String> buttons(Composite c) {
+        return IdeAccess.allChildren(c).stream().filter(k -> k instanceof Button b && (b.getStyle() & SWT.PUSH) != 0)
+                .map(k -> ((Button) k).getText()).toList();
     }
 }

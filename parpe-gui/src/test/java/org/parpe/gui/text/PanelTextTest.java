@@ -15,14 +15,14 @@ import org.parpe.core.text.Lang;
 
 /**
  * The translators' check of the IDE's panels (issue 38: "every bundle has every key; no unused
- * keys"): the bundle {@code Panels} of {@link PanelMsg} in every language, every key used, and no
- * English prose left in the code of the panels' packages. Run it with
+ * keys"): the bundles {@code Panels} of {@link PanelMsg} and {@code Tools} of {@link ToolMsg} in
+ * every language, every key used, and no English prose left in the code of the panels' packages. Run it with
  * {@code mvn -B -o -pl parpe-gui -am test -Dtest=PanelTextTest -Dsurefire.failIfNoSpecifiedTests=false}.
  */
 class PanelTextTest {
     private static final Path MAIN = Path.of("src/main/java/org/parpe/gui");
 
-    /** The packages whose texts are {@link PanelMsg}'s. */
+    /** The packages whose texts are {@link PanelMsg}'s and {@link ToolMsg}'s. */
     private static final List<String> PACKAGES = List.of("pose", "diagram", "robot", "sweep", "panels", "grid", "view3d");
 
     /**
@@ -37,17 +37,21 @@ class PanelTextTest {
 
     @Test
     void everyBundleHasEveryKeyNoOtherAndTheEnglishPlaceholders() {
-        List<String> problems = BundleCheck.problems(PanelMsg.BUNDLE, List.of(PanelMsg.values()));
+        List<String> problems = new ArrayList<>(BundleCheck.problems(PanelMsg.BUNDLE, List.of(PanelMsg.values())));
+        problems.addAll(BundleCheck.problems(ToolMsg.BUNDLE, List.of(ToolMsg.values())));
         assertEquals(List.of(), problems, String.join("\n", problems));
     }
 
     @Test
     void everyKeyIsUsedByTheCode() {
-        // PanelMsg's own code after its constants counts (ORDINAL is used there)
-        String own = UiTextTest.read(MAIN.resolve("text/PanelMsg.java"));
-        String code = UiTextTest.sources().filter(p -> !p.endsWith("text/PanelMsg.java")).map(UiTextTest::read)
-                .reduce(own.substring(own.indexOf("String BUNDLE")), String::concat);
-        List<String> unused = BundleCheck.unusedIn(code, List.of(PanelMsg.values()), "");
+        // the key classes' own code after their constants counts (PanelMsg's ORDINAL is used there)
+        String code = UiTextTest.sources().map(p -> {
+            String text = UiTextTest.read(p);
+            boolean keys = p.endsWith("text/PanelMsg.java") || p.endsWith("text/ToolMsg.java");
+            return keys ? text.substring(text.indexOf("String BUNDLE")) : text;
+        }).reduce("", String::concat);
+        List<String> unused = new ArrayList<>(BundleCheck.unusedIn(code, List.of(PanelMsg.values()), ""));
+        unused.addAll(BundleCheck.unusedIn(code, List.of(ToolMsg.values()), ""));
         assertEquals(List.of(), unused, "keys no code uses");
     }
 
@@ -64,7 +68,7 @@ class PanelTextTest {
                 }
             }
         });
-        assertEquals(List.of(), found, "user-visible text outside the bundle (add a key to PanelMsg)");
+        assertEquals(List.of(), found, "user-visible text outside the bundles (add a key to PanelMsg or ToolMsg)");
     }
 
     /** English counts in words as the loader's messages do; the other languages put the number in their pattern. */

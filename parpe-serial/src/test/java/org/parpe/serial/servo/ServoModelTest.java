@@ -11,6 +11,27 @@ import org.parpe.serial.servo.profile.ServoMapping;
 /** Ticks and degrees of the models in the table. */
 class ServoModelTest {
 
+    /**
+     * Every model of the table is in the documentation's two tables (issue 32, trial changes: a new
+     * model is documented): docs/hardware-profile.md with its model number, docs/hardware.md (the
+     * models a profile names; G1 modules have none) with its bus and supply.
+     */
+    @Test
+    void everyModelIsDocumented() throws java.io.IOException {
+        String profile = java.nio.file.Files.readString(java.nio.file.Path.of("../docs/hardware-profile.md"));
+        String hardware = java.nio.file.Files.readString(java.nio.file.Path.of("../docs/hardware.md"));
+        java.util.List<String> missing = new java.util.ArrayList<>();
+        for (ServoModel m : ServoModel.TABLE) {
+            if (!profile.contains(m.name()) || !profile.contains(Integer.toString(m.number()))) {
+                missing.add("hardware-profile.md: " + m.name() + " (" + m.number() + ")");
+            }
+            if (m.protocol() != ServoProtocol.G1 && !hardware.contains("`" + m.name() + "`")) {
+                missing.add("hardware.md: " + m.name());
+            }
+        }
+        assertEquals(java.util.List.of(), missing);
+    }
+
     @Test
     void dynamixelXHas4096TicksPerTurnCentredAt2048() {
         ServoModel xl430 = ServoModel.of(ServoProtocol.DXL2, 1060);

@@ -20,17 +20,41 @@ final class Movables {
     private final WorldReader r;
     private final Scenery scenery;
 
+    /**
+     * The kinds of movable object, named as their elements. Each switch over a kind is exhaustive,
+     * so a new kind does not compile until it says its attributes and how it is built.
+     */
+    enum Kind {
+        CHIP, BALL, CUP, LEVER;
+
+        /** The element's name: {@code <chip>}. */
+        String xml() {
+            return name().toLowerCase(java.util.Locale.ROOT);
+        }
+
+        /** The kind of element {@code name}, or null. */
+        static Kind of(String name) {
+            for (Kind k : values()) {
+                if (k.xml().equals(name)) {
+                    return k;
+                }
+            }
+            return null;
+        }
+    }
+
     Movables(WorldReader r, Scenery scenery) {
         this.r = r;
         this.scenery = scenery;
     }
 
-    void add(String kind, Map<String, String> a, SourcePos at) {
-        boolean ok = switch (kind) {
-            case "chip" -> r.known(a, at, kind, "name", "x", "y", "radius", "thickness", "mass", "friction");
-            case "ball" -> r.known(a, at, kind, "name", "x", "y", "radius", "mass", "friction");
-            case "cup" -> r.known(a, at, kind, "name", "x", "y", "radius", "height", "mass", "friction");
-            default -> r.known(a, at, kind, "name", "x", "y", "yaw", "height", "length", "width", "thickness",
+    void add(Kind k, Map<String, String> a, SourcePos at) {
+        String kind = k.xml();
+        boolean ok = switch (k) {
+            case CHIP -> r.known(a, at, kind, "name", "x", "y", "radius", "thickness", "mass", "friction");
+            case BALL -> r.known(a, at, kind, "name", "x", "y", "radius", "mass", "friction");
+            case CUP -> r.known(a, at, kind, "name", "x", "y", "radius", "height", "mass", "friction");
+            case LEVER -> r.known(a, at, kind, "name", "x", "y", "yaw", "height", "length", "width", "thickness",
                     "axis", "turn", "stiffness", "press-angle", "max-angle", "mass", "friction");
         };
         if (!ok || !r.required(a, at, kind, "name", "x", "y") || !r.unique(a.get("name"), at)) {
@@ -40,20 +64,21 @@ final class Movables {
         double y = r.coord(a, "y", 0, at);
         double friction = r.friction(a, at);
         String name = a.get("name");
-        switch (kind) {
-            case "chip" -> {
+        switch (k) {
+            case CHIP -> {
                 double t = r.length(a, "thickness", 0.0033, at);
                 scenery.addObject(new World.MovableObject(name, kind, List.of(piece(new BodyShape.Cylinder(
                         r.length(a, "radius", 0.02, at), t))), new Vec3(x, y, t / 2 + CLEARANCE), Mat3.IDENTITY,
                         mass(a, 0.01, at), friction));
             }
-            case "ball" -> {
+            case BALL -> {
                 double radius = r.length(a, "radius", 0.03, at);
                 scenery.addObject(new World.MovableObject(name, kind, List.of(piece(new BodyShape.Sphere(radius))),
                         new Vec3(x, y, radius + CLEARANCE), Mat3.IDENTITY, mass(a, 0.05, at), friction));
             }
-            case "cup" -> cup(name, x, y, a, at, friction);
-            default -> lever(name, x, y, a, at, friction);
+            case CUP -> cup(name, x, y, a, at, friction);
+            case LEVER -> lever(name, x, y, a, at, friction);
+            default -> throw new AssertionError(k); // the switch expression above names every kind
         }
     }
 

@@ -175,7 +175,7 @@ final class Scenery {
         return r.num(a, "yaw", 0, at, -360, 360);
     }
 
-    void movable(String kind, Map<String, String> a, SourcePos at) {
+    void movable(Movables.Kind kind, Map<String, String> a, SourcePos at) {
         new Movables(r, this).add(kind, a, at);
     }
 

@@ -34,9 +34,10 @@ public final class WorldReader {
     /** Smallest and largest mass of a movable object, kg (1 g … 1 t). */
     static final double LIGHT = 0.001;
     static final double HEAVY = 1000;
-    private static final String CHILDREN = String.join(", ", "<start>", "<arena>", "<box>", "<step>", "<ramp>", "<wall>",
-            "<cylinder>", "<rubble>", "<chip>", "<ball>", "<cup>", "<lever>", "<zone>", "<checkpoint>", "<goal>",
-            "<path-score>", "<deliver>", "<press>"); // and <disqualify>, the last, in the message
+    private static final List<String> SOLIDS = List.of("box", "step", "ramp", "wall", "cylinder", "rubble");
+    private static final List<String> SCORES = List.of("goal", "path-score", "deliver", "press", "disqualify");
+    /** Every element of a world file, in the order the "expected …" message names them. */
+    static final List<String> ELEMENTS = elements();
 
     /** How a script names the world it is written for: {@code <?parpe world="../worlds/rubble.xml"?>}. */
     private static final java.util.regex.Pattern DECLARED =
@@ -124,11 +125,35 @@ public final class WorldReader {
                     checkpoints.add(region(a.getOrDefault("name", "checkpoint " + (checkpoints.size() + 1)), a, at));
                 }
             }
-            case "box", "step", "ramp", "wall", "cylinder", "rubble" -> scenery.solid(e.name(), a, at);
-            case "chip", "ball", "cup", "lever" -> scenery.movable(e.name(), a, at);
-            case "goal", "path-score", "deliver", "press", "disqualify" -> scoreElements.add(Map.entry(e, e.name()));
-            default -> error(at, Msg.WORLD_UNKNOWN_ELEMENT, e.name(), CHILDREN, "<disqualify>");
+            default -> other(e);
         }
+    }
+
+    /** A solid, a movable object, a score element, or an unknown element. */
+    private void other(FlatXmlFile.Element e) {
+        Movables.Kind movable = Movables.Kind.of(e.name());
+        if (SOLIDS.contains(e.name())) {
+            scenery.solid(e.name(), e.attributes(), e.at());
+        } else if (movable != null) {
+            scenery.movable(movable, e.attributes(), e.at());
+        } else if (SCORES.contains(e.name())) {
+            scoreElements.add(Map.entry(e, e.name()));
+        } else {
+            List<String> tags = ELEMENTS.stream().map(n -> "<" + n + ">").toList();
+            error(e.at(), Msg.WORLD_UNKNOWN_ELEMENT, e.name(), String.join(", ", tags.subList(0, tags.size() - 1)),
+                    tags.get(tags.size() - 1));
+        }
+    }
+
+    private static List<String> elements() {
+        List<String> all = new ArrayList<>(List.of("start", "arena"));
+        all.addAll(SOLIDS);
+        for (Movables.Kind k : Movables.Kind.values()) {
+            all.add(k.xml());
+        }
+        all.addAll(List.of("zone", "checkpoint"));
+        all.addAll(SCORES);
+        return List.copyOf(all);
     }
 
     private void start(Map<String, String> a, SourcePos at) {

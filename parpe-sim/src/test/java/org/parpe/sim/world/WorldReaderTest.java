@@ -31,6 +31,34 @@ class WorldReaderTest {
         return d.all().stream().map(Diagnostic::format).toList();
     }
 
+    /**
+     * Issue 32, trial changes: every kind of movable object is read and built as itself (a kind
+     * that {@code Movables} does not build fails here, not silently as another), and the
+     * "expected …" message names it.
+     */
+    @Test
+    void everyMovableKindIsBuiltAsItselfAndNamedInTheMessage() throws IOException {
+        for (Movables.Kind k : Movables.Kind.values()) {
+            Path f = file(k.xml() + ".xml", "<world>\n  <" + k.xml() + " name=\"o\" x=\"0\" y=\"0\"/>\n</world>\n");
+            DiagnosticList d = new DiagnosticList();
+            World w = WorldReader.read(f, d);
+            assertNotNull(w, k + ": " + d.all());
+            assertEquals(List.of(k.xml()), w.objects().stream().map(World.MovableObject::kind).toList());
+        }
+        String message = errors(file("u.xml", "<world>\n  <nothing/>\n</world>\n")).get(0);
+        for (Movables.Kind k : Movables.Kind.values()) {
+            assertTrue(message.contains("<" + k.xml() + ">"), message);
+        }
+    }
+
+    /** docs/simulator.md documents every element the reader knows (issue 32, trial changes: a new kind is documented). */
+    @Test
+    void everyElementIsDocumented() throws IOException {
+        String doc = Files.readString(Path.of("../docs/simulator.md"));
+        List<String> missing = WorldReader.ELEMENTS.stream().filter(e -> !doc.contains("`<" + e)).toList();
+        assertEquals(List.of(), missing, "elements docs/simulator.md does not describe");
+    }
+
     @Test
     void aWorldDefinesItsSceneryRegionsAndScoring() throws IOException {
         Path f = file("w.xml", """
