@@ -56,7 +56,7 @@ public final class IdeWindow {
     private final RunChoices choices;
     private final CheckResults checks = new CheckResults(this);
     private final HardwareBridge hardware = new HardwareBridge(this);
-    private final CrashReport crashes = new CrashReport(this);
+    private final EventFailures crashes = new EventFailures(this);
     private final WindowKeys keys = new WindowKeys(this);
     private final RunActions runs;
     private final RunToolBar toolbar;
@@ -302,7 +302,7 @@ public final class IdeWindow {
     }
 
     /**
-     * A failure of PARPE itself while handling an event ({@link CrashReport}): a run going on is
+     * A failure of PARPE itself while handling an event ({@link EventFailures}): a run going on is
      * stopped if it is an Error, and the crash file is written and named. Returns the crash file.
      */
     public String internalError(Throwable e) {

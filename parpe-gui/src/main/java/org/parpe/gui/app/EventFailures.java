@@ -11,12 +11,12 @@ import org.parpe.gui.text.UiMsg;
  * Run log and the status bar. The same failure again (a listener failing on each paint) names the
  * file written for it the first time. UI thread only.
  */
-final class CrashReport {
+final class EventFailures {
     private final IdeWindow ide;
     private String lastCrash;
     private String lastCrashFile;
 
-    CrashReport(IdeWindow ide) {
+    EventFailures(IdeWindow ide) {
         this.ide = ide;
     }
 
