@@ -14,7 +14,6 @@ import org.eclipse.swt.graphics.GC;
 import org.eclipse.swt.graphics.Point;
 import org.eclipse.swt.graphics.Rectangle;
 import org.eclipse.swt.layout.GridData;
-import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.layout.RowLayout;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Canvas;
@@ -69,25 +68,22 @@ public final class DiagramPane {
     /** The pane in {@code parent}, showing {@code document}, the text of {@code editor}. */
     public DiagramPane(Composite parent, ParslEditor editor, ScriptDocument document) {
         box = new Composite(parent, SWT.NONE);
-        GridLayout gl = new GridLayout(1, false);
-        gl.marginWidth = 2;
-        gl.marginHeight = 2;
-        gl.verticalSpacing = 2;
-        box.setLayout(gl);
-        // few rows above the drawing (issue 24): at 1366×768 the drawing keeps at least half the tab
-        Composite bar = new Composite(box, SWT.NONE);
+        // few rows above the drawing (issue 24): the drawing keeps at least half the tab, and where
+        // the rows need more (a narrow tab, a longer language) they scroll
+        Composite above = AboveTheDrawing.controlsOf(box);
+        Composite bar = new Composite(above, SWT.NONE);
         bar.setLayout(row());
         bar.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         chooser = new ViewChooser(bar, this::setView, this::relayout);
         palette = new Palette(bar, this);
-        fields = new FieldsRow(box);
-        message = messageLine(box);
-        liveBar = new LiveBar(box, this);
+        fields = new FieldsRow(above, this::layoutAgain);
+        message = messageLine(above);
+        liveBar = new LiveBar(above, this);
         canvas = new SceneCanvas(box, node -> {
             offered = null;
             link().clicked(node);
         });
-        canvas.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
+        AboveTheDrawing.drawing(box, canvas.control());
         drawing = new Drawing(this, editor, document, canvas);
         overlay = new LiveOverlay(this, canvas, liveBar);
         link = new EditorLink(this, editor);
@@ -124,6 +120,11 @@ public final class DiagramPane {
         } finally {
             gc.dispose();
         }
+    }
+
+    /** The pane laid out again, its controls and the drawing under them (after a row changed its height). */
+    void layoutAgain() {
+        box.layout(true, true);
     }
 
     /** Sets the message line (its row keeps its height; a text longer than it shows whole as its tool tip). */

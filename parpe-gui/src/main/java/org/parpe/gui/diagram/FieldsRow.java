@@ -25,13 +25,15 @@ import org.parpe.gui.editor.NameIndex;
  */
 final class FieldsRow {
     private final Composite box;
+    private final Runnable layoutAgain;
     private final Composite fields;
     private final int twoRows;
     private int fitWidth = -1;
 
-    /** The row, in {@code box} (whose layout is a {@code GridLayout}). */
-    FieldsRow(Composite box) {
+    /** The row, in {@code box} (whose layout is a {@code GridLayout}); {@code layoutAgain} lays the pane out when its height changes. */
+    FieldsRow(Composite box, Runnable layoutAgain) {
         this.box = box;
+        this.layoutAgain = layoutAgain;
         fields = new Composite(box, SWT.NONE);
         fields.setLayout(DiagramPane.row());
         GridData fd = new GridData(SWT.FILL, SWT.CENTER, true, false);
@@ -71,7 +73,7 @@ final class FieldsRow {
         fitWidth = width;
         if (fd.heightHint != h) {
             fd.heightHint = h;
-            box.layout(true, true);
+            layoutAgain.run();
         }
     }
 

@@ -8,6 +8,7 @@ import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Control;
 import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.Scale;
 import org.parpe.core.diag.SourcePos;
@@ -75,6 +76,7 @@ final class LiveBar {
         sd2.heightHint = 2 * DiagramPane.lineHeight(says);
         says.setLayoutData(sd2);
         says.addListener(SWT.Resize, e -> fit());
+        row.addListener(SWT.Resize, e -> columns());
         update();
         row.getDisplay().timerExec(100, new Runnable() {
             @Override
@@ -165,7 +167,7 @@ final class LiveBar {
         }
         onEnter.pack();
         onExit.pack();
-        row.getParent().layout(true, true);
+        pane.layoutAgain();
     }
 
     /** Which module reached which breakpoint, when (as {@code Breakpoints.Hit.describe()}, in the IDE's language). */
@@ -179,8 +181,58 @@ final class LiveBar {
         line = text;
         says.setToolTipText(text.isEmpty() ? null : text);
         says.setText(text);
-        row.getParent().layout(true, true);
+        pane.layoutAgain();
         fit();
+    }
+
+    /**
+     * As many of the row's cells side by side as its width holds: all of them in one row where
+     * there is room, else the buttons in fewer columns and the line under them across the row
+     * (a tab beside the docked tutorial, a longer language), instead of buttons past the edge.
+     */
+    private void columns() {
+        int width = row.getClientArea().width;
+        List<Control> cells = new ArrayList<>();
+        for (Control c : row.getChildren()) {
+            if (c != says && !(c.getLayoutData() instanceof GridData g && g.exclude)) {
+                cells.add(c);
+            }
+        }
+        GridLayout gl = (GridLayout) row.getLayout();
+        int n = cells.size() + 1;
+        int lineWidth = ((GridData) says.getLayoutData()).minimumWidth;
+        if (widths(cells, n - 1) + gl.horizontalSpacing + lineWidth > width) {
+            n = cells.size();
+            while (n > 1 && widths(cells, n) > width) {
+                n--;
+            }
+        }
+        GridData sd = (GridData) says.getLayoutData();
+        int span = n > cells.size() ? 1 : n;
+        if (gl.numColumns != n || sd.horizontalSpan != span) {
+            gl.numColumns = n;
+            sd.horizontalSpan = span;
+            row.getDisplay().asyncExec(() -> {
+                if (!row.isDisposed()) {
+                    pane.layoutAgain();
+                }
+            });
+        }
+    }
+
+    /** The width of {@code cells} in {@code n} columns, each as wide as its widest cell. */
+    private int widths(List<Control> cells, int n) {
+        int[] column = new int[n];
+        for (int i = 0; i < cells.size(); i++) {
+            GridData g = (GridData) cells.get(i).getLayoutData();
+            int w = g != null && g.widthHint != SWT.DEFAULT ? g.widthHint : cells.get(i).computeSize(SWT.DEFAULT, SWT.DEFAULT).x;
+            column[i % n] = Math.max(column[i % n], w);
+        }
+        int sum = (n - 1) * ((GridLayout) row.getLayout()).horizontalSpacing;
+        for (int w : column) {
+            sum += w;
+        }
+        return sum;
     }
 
     /** Shows as much of the line as the label's two lines hold at its width: the rest elided with "…". */
