@@ -64,6 +64,7 @@ public final class DiagramPane {
     private Projection.Target offered;
     private Supplier<String> pose;
     private String told;
+    private boolean layoutAsked;
 
     /** The pane in {@code parent}, showing {@code document}, the text of {@code editor}. */
     public DiagramPane(Composite parent, ParslEditor editor, ScriptDocument document) {
@@ -122,9 +123,22 @@ public final class DiagramPane {
         }
     }
 
-    /** The pane laid out again, its controls and the drawing under them (after a row changed its height). */
+    /**
+     * The pane laid out again, its controls and the drawing under them (after a row changed its
+     * height): now, and once more after the event that asked, because a row that changes its
+     * height while the scrolled controls are being laid out is not seen by that layout.
+     */
     void layoutAgain() {
         box.layout(true, true);
+        if (!layoutAsked) {
+            layoutAsked = true;
+            box.getDisplay().asyncExec(() -> {
+                layoutAsked = false;
+                if (!box.isDisposed()) {
+                    box.layout(true, true);
+                }
+            });
+        }
     }
 
     /** Sets the message line (its row keeps its height; a text longer than it shows whole as its tool tip). */

@@ -66,7 +66,7 @@ final class FieldsRow {
      */
     private void fit() {
         GridData fd = (GridData) fields.getLayoutData();
-        int width = box.getClientArea().width - 4;
+        int width = box.getClientArea().width; // the controls have no margin (AboveTheDrawing)
         int need = width > 0 ? fields.computeSize(width, SWT.DEFAULT).y : 0;
         // at the same width the row never shrinks: what an Add switches to does not pull the drawing up
         int h = Math.max(width == fitWidth ? fd.heightHint : twoRows, need);

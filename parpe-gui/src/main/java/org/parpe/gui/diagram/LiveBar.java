@@ -212,11 +212,7 @@ final class LiveBar {
         if (gl.numColumns != n || sd.horizontalSpan != span) {
             gl.numColumns = n;
             sd.horizontalSpan = span;
-            row.getDisplay().asyncExec(() -> {
-                if (!row.isDisposed()) {
-                    pane.layoutAgain();
-                }
-            });
+            pane.layoutAgain();
         }
     }
 
