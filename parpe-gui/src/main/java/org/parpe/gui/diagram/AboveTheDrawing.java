@@ -65,11 +65,13 @@ final class AboveTheDrawing extends Layout {
         int w = Math.max(0, a.width - 2 * MARGIN);
         int h = Math.max(0, a.height - 2 * MARGIN);
         int need = controls.computeSize(w, SWT.DEFAULT, flush).y;
+        // the drawing keeps at least half of the whole pane, margins and gap counted on the controls' side
+        int cap = Math.max(0, h - GAP - (a.height + 1) / 2);
         int height = need;
-        if (need > h / 2) {
+        if (need > cap) {
             ScrollBar bar = top.getVerticalBar();
             need = controls.computeSize(Math.max(0, w - (bar == null ? 0 : bar.getSize().x)), SWT.DEFAULT, flush).y;
-            height = h / 2;
+            height = cap;
         }
         top.setMinSize(0, need);
         top.setBounds(a.x + MARGIN, a.y + MARGIN, w, height);

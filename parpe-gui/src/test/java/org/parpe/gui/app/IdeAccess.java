@@ -1,12 +1,13 @@
 package org.parpe.gui.app;
 
-import org.parpe.gui.hardware.HardwareDialog;
-
 import java.nio.file.Path;
 import java.util.function.BooleanSupplier;
 import java.util.function.Consumer;
 import org.eclipse.swt.widgets.Shell;
 import org.parpe.core.run.RunOutcome;
+import org.parpe.gui.files.Examples;
+import org.parpe.gui.hardware.HardwareDialog;
+import org.parpe.gui.help.TutorialWindow;
 import org.parpe.gui.run.RunOn;
 
 /** {@link Gui}'s helpers and the window's package-private parts, for GUI tests of other packages. */
@@ -57,6 +58,12 @@ public final class IdeAccess {
     }
 
     /** Ends any run and closes the window. */
+    /** Help → Tutorial, docked beside the outline (as where the screen has no room for its own window); fails if it opened elsewhere. */
+    public static void openTutorialDocked(IdeWindow ide) {
+        ide.tutorialDock().open(dock -> TutorialWindow.docked(dock, Examples.tutorialFolder(), p -> { }, code -> { }));
+        org.junit.jupiter.api.Assertions.assertNotNull(ide.tutorialDock().tutorial(), "the docked tutorial");
+    }
+
     public static void closeIde(IdeWindow ide) {
         Gui.closeIde(ide);
     }
@@ -152,7 +159,7 @@ public final class IdeAccess {
     }
 
     /** Every control under {@code parent}, depth first. */
-    static java.util.List<org.eclipse.swt.widgets.Control> allChildren(org.eclipse.swt.widgets.Composite parent) {
+    public static java.util.List<org.eclipse.swt.widgets.Control> allChildren(org.eclipse.swt.widgets.Composite parent) {
         java.util.List<org.eclipse.swt.widgets.Control> out = new java.util.ArrayList<>();
         for (org.eclipse.swt.widgets.Control c : parent.getChildren()) {
             out.add(c);
