@@ -15,13 +15,15 @@ import org.parpe.core.expr.Node;
  */
 final class ModuleConstants {
     private static final Set<String> MODULE = Set.of("index", "count", "id");
+    /** The variables a tick does not change while it runs through the modules. */
+    private static final Set<String> PER_TICK = Set.of("time", "btime", "cycle");
 
     private ModuleConstants() {
     }
 
     /** Whether the value of {@code n} is worth keeping per module. */
     static boolean worthKeeping(Node n) {
-        return ExprTree.visit(n, new Invariant()) && ExprTree.visit(n, new UsesModule())
+        return ExprTree.visit(n, new Leaves(MODULE, false)) && ExprTree.visit(n, new UsesModule())
                 && ExprTree.visit(n, new Costly());
     }
 
@@ -34,7 +36,8 @@ final class ModuleConstants {
      * and reuses it ({@code parsl_memo}).
      */
     static boolean worthSharing(Node n) {
-        return ExprTree.visit(n, new Shared()) && ExprTree.visit(n, new Costly()) && !ExprTree.visit(n, new Numbers());
+        return ExprTree.visit(n, new Leaves(PER_TICK, true)) && ExprTree.visit(n, new Costly())
+                && !ExprTree.visit(n, new Leaves(Set.of(), false));
     }
 
     /** Whether {@code n} reads {@code $cycle}. */
@@ -47,10 +50,19 @@ final class ModuleConstants {
         });
     }
 
-    /** Every leaf the same for all modules in a tick (but {@code $cycle}, the same for those with the same count). */
-    private static final class Shared extends ExprTree.Question {
-        Shared() {
+    /**
+     * Every leaf a number, one of {@code variables}, or (with {@code inputs}) a control, a macro or
+     * a global sensor: with no variables, a tree of numbers; with a module's own, the same for the
+     * module at every tick; with the tick's, the same for all modules in a tick.
+     */
+    private static final class Leaves extends ExprTree.Question {
+        private final Set<String> variables;
+        private final boolean inputs;
+
+        Leaves(Set<String> variables, boolean inputs) {
             super(true);
+            this.variables = variables;
+            this.inputs = inputs;
         }
 
         @Override
@@ -60,56 +72,22 @@ final class ModuleConstants {
 
         @Override
         public Boolean control(int index) {
-            return true;
+            return inputs;
         }
 
         @Override
         public Boolean macro(int index) {
-            return true;
+            return inputs;
         }
 
         @Override
         public Boolean globalSensor(int slot) {
-            return true;
+            return inputs;
         }
 
         @Override
         public Boolean variable(String name) {
-            return Set.of("time", "btime", "cycle").contains(name);
-        }
-    }
-
-    /** Every leaf a number. */
-    private static final class Numbers extends ExprTree.Question {
-        Numbers() {
-            super(true);
-        }
-
-        @Override
-        public Boolean constant(double value) {
-            return true;
-        }
-
-        @Override
-        public Boolean variable(String name) {
-            return false;
-        }
-    }
-
-    /** Every leaf a number or a module's own variable. */
-    private static final class Invariant extends ExprTree.Question {
-        Invariant() {
-            super(true);
-        }
-
-        @Override
-        public Boolean constant(double value) {
-            return true;
-        }
-
-        @Override
-        public Boolean variable(String name) {
-            return MODULE.contains(name);
+            return variables.contains(name);
         }
     }
 
