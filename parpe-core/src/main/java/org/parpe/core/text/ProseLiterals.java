@@ -1,9 +1,13 @@
 package org.parpe.core.text;
 
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Predicate;
 import java.util.regex.Pattern;
+import java.util.stream.Stream;
 
 /**
  * The translators' check of code: the string literals of a Java source that read as prose, that
@@ -23,6 +27,23 @@ public final class ProseLiterals {
             "new (IllegalStateException|AssertionError|UnsupportedOperationException|BadLocationException)\\(");
 
     private ProseLiterals() {
+    }
+
+    /**
+     * {@link #in} over every {@code .java} file under {@code main}'s {@code org/parpe} that
+     * {@code skipped} does not take (it sees the path from {@code main}, with {@code /}).
+     */
+    public static List<String> inTree(Path main, Predicate<String> skipped, Predicate<String> allowed) throws IOException {
+        List<String> out = new ArrayList<>();
+        try (Stream<Path> s = Files.walk(main.resolve("org/parpe"))) {
+            for (Path p : (Iterable<Path>) s.filter(p -> p.toString().endsWith(".java")).sorted()::iterator) {
+                String file = main.relativize(p).toString().replace('\\', '/');
+                if (!skipped.test(file)) {
+                    out.addAll(in(file, Files.readString(p), allowed));
+                }
+            }
+        }
+        return out;
     }
 
     /**

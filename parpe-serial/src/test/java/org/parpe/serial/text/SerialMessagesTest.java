@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.parpe.core.text.BundleCheck;
+import org.parpe.core.text.ProseLiterals;
 
 /**
  * The translators' check of the servo buses' own messages (docs/cli.md, "Translating PARPE"):
@@ -98,16 +99,8 @@ class SerialMessagesTest {
      */
     @Test
     void noProseLiteralOutsideTheBundles() throws IOException {
-        List<String> found = new java.util.ArrayList<>();
-        Path main = Path.of("src/main/java");
-        try (Stream<Path> s = Files.walk(main.resolve("org/parpe"))) {
-            for (Path p : (Iterable<Path>) s.filter(p -> p.toString().endsWith(".java"))::iterator) {
-                String file = main.relativize(p).toString().replace('\\', '/');
-                if (!NOT_WORDS.contains(file) && !NOT_YET.contains(file)) {
-                    found.addAll(org.parpe.core.text.ProseLiterals.in(file, Files.readString(p), ALLOWED::contains));
-                }
-            }
-        }
+        List<String> found = ProseLiterals.inTree(Path.of("src/main/java"), file -> NOT_WORDS.contains(file) || NOT_YET.contains(file),
+                ALLOWED::contains);
         assertEquals(List.of(), found, "text for the user outside the bundles: give it a key in SerialMsg\n" + String.join("\n", found));
     }
 }
