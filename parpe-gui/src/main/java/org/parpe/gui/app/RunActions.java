@@ -124,8 +124,9 @@ public final class RunActions implements ControlPanel.ControlSink {
 
     /** The wall-clock time {@code since} (ms), as the status bar says when the robot went silent. */
     static String silentTime(long since) {
-        return java.time.LocalTime.ofInstant(java.time.Instant.ofEpochMilli(since), java.time.ZoneId.systemDefault())
-                .withNano(0).toString();
+        // always with seconds: LocalTime.toString leaves ":00" out, so one alarm a minute read "09:31"
+        return java.time.format.DateTimeFormatter.ofPattern("HH:mm:ss")
+                .format(java.time.LocalTime.ofInstant(java.time.Instant.ofEpochMilli(since), java.time.ZoneId.systemDefault()));
     }
 
     /** Since when (wall-clock ms) the run's servos or G1 modules have not answered; −1 while they do or none are driven. */
