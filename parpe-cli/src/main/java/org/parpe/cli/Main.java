@@ -1,5 +1,6 @@
 package org.parpe.cli;
 
+import java.io.InputStream;
 import java.io.PrintStream;
 import java.io.PrintWriter;
 import java.nio.file.Path;
@@ -7,6 +8,7 @@ import java.util.Locale;
 import java.util.function.UnaryOperator;
 import org.parpe.cli.bench.BenchCommand;
 import org.parpe.cli.text.CliMsg;
+import org.parpe.cli.options.ReadsInput;
 import org.parpe.cli.options.UsageException;
 import org.parpe.cli.terminal.ExitCode;
 import org.parpe.core.expr.Names;
@@ -91,15 +93,21 @@ public final class Main implements Runnable {
 
     /** Runs the command line with the given streams; returns the exit code. */
     public static int execute(String[] args, PrintStream out, PrintStream err) {
-        return execute(args, out, err, System::getenv);
+        return execute(args, System.in, out, err, System::getenv);
+    }
+
+    /** Runs the command line with the given streams in the language the environment {@code env} chooses. */
+    public static int execute(String[] args, PrintStream out, PrintStream err, UnaryOperator<String> env) {
+        return execute(args, System.in, out, err, env);
     }
 
     /**
      * Runs the command line with the given streams in the language that {@code --lang} or the
      * environment {@code env} chooses ({@link Lang}); returns the exit code. The language is the
-     * process's until the command ends.
+     * process's until the command ends. Commands that read input ({@link ReadsInput}) read {@code in}.
      */
-    public static int execute(String[] args, PrintStream out, PrintStream err, UnaryOperator<String> env) {
+    public static int execute(String[] args, InputStream in, PrintStream out, PrintStream err,
+                              UnaryOperator<String> env) {
         // Without the IDE (the command-line jar alone), `parpe` with no arguments prints the usage.
         if (Ide.wanted(args) && (args.length > 0 || Ide.present())) {
             return Ide.open(args, err);
@@ -116,7 +124,7 @@ public final class Main implements Runnable {
                 }
                 Lang.use(chosen);
             }
-            return executeIn(args, out, err);
+            return executeIn(args, in, out, err);
         } finally {
             Lang.use(before);
         }
@@ -135,8 +143,13 @@ public final class Main implements Runnable {
         return null;
     }
 
-    private static int executeIn(String[] args, PrintStream out, PrintStream err) {
+    private static int executeIn(String[] args, InputStream in, PrintStream out, PrintStream err) {
         CommandLine cl = new CommandLine(new Main());
+        for (CommandLine sub : cl.getSubcommands().values()) {
+            if (sub.getCommand() instanceof ReadsInput reader) {
+                reader.readFrom(in);
+            }
+        }
         // picocli's help is written in the annotations (English) and translated by Help_*.properties;
         // the pseudo-language has no file of its own there, so its help is the English one
         if (!Lang.current().equals(Locale.ENGLISH) && !Lang.isPseudo(Lang.current())) {

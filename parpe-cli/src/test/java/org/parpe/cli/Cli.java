@@ -1,5 +1,6 @@
 package org.parpe.cli;
 
+import java.io.ByteArrayInputStream;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
@@ -22,12 +23,22 @@ public final class Cli {
         return run(args.toArray(new String[0]));
     }
 
-    /** Runs {@code parpe ARGS}. */
+    /**
+     * Runs {@code parpe ARGS} with nothing on its standard input: the forked test JVM's own
+     * standard input carries Surefire's orders, and a command that read it (the emulator's
+     * console) would keep the fork from ending for 30 s.
+     */
     public static Cli run(String... args) {
+        return withInput("", args);
+    }
+
+    /** Runs {@code parpe ARGS} with {@code input} as its standard input. */
+    public static Cli withInput(String input, String... args) {
         ByteArrayOutputStream o = new ByteArrayOutputStream();
         ByteArrayOutputStream e = new ByteArrayOutputStream();
-        int code = Main.execute(args, new PrintStream(o, true, StandardCharsets.UTF_8),
-                new PrintStream(e, true, StandardCharsets.UTF_8));
+        int code = Main.execute(args, new ByteArrayInputStream(input.getBytes(StandardCharsets.UTF_8)),
+                new PrintStream(o, true, StandardCharsets.UTF_8), new PrintStream(e, true, StandardCharsets.UTF_8),
+                System::getenv);
         return new Cli(code, o.toString(StandardCharsets.UTF_8), e.toString(StandardCharsets.UTF_8));
     }
 

@@ -12,6 +12,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import org.parpe.cli.options.ReadsInput;
 import org.parpe.cli.options.UsageException;
 import org.parpe.core.run.TargetException;
 import org.parpe.serial.bus.BusConfig;
@@ -35,7 +36,7 @@ import picocli.CommandLine.Model.CommandSpec;
  */
 @Command(name = "calibrate", mixinStandardHelpOptions = true, description = {"Set the zero offsets of a hardware profile from the robot posed by hand.",
     "The servos go limp; pose the robot with every joint at 0° and press Enter."})
-public final class CalibrateCommand implements Callable<Integer> {
+public final class CalibrateCommand implements ReadsInput, Callable<Integer> {
     @Option(names = "--hardware", required = true, paramLabel = "PROFILE.xml", description = "The profile to calibrate.")
     Path hardware;
 
@@ -45,8 +46,13 @@ public final class CalibrateCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    /** Standard input, replaceable by tests. */
+    /** Standard input, or what the command line was handed instead ({@link ReadsInput}). */
     InputStream input = System.in;
+
+    @Override
+    public void readFrom(InputStream in) {
+        input = in;
+    }
 
     @Override
     public Integer call() throws Exception {

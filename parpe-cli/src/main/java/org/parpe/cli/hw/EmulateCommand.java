@@ -3,6 +3,7 @@ package org.parpe.cli.hw;
 import org.parpe.cli.text.CliMsg;
 import java.io.BufferedReader;
 import java.io.IOException;
+import java.io.InputStream;
 import java.io.InputStreamReader;
 import java.io.PrintWriter;
 import java.io.Writer;
@@ -16,6 +17,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.function.Function;
 import org.parpe.cli.options.OutputFile;
+import org.parpe.cli.options.ReadsInput;
 import org.parpe.cli.options.UsageException;
 import org.parpe.serial.g1.emu.BusEmulator;
 import org.parpe.serial.emu.EmulatorListener;
@@ -38,7 +40,7 @@ import picocli.CommandLine.Model.CommandSpec;
     + "(e.g. one end of a socat pty pair).",
     "Standard input takes: pose ID DEG | touch ID left|right|both|none (G1) | fault ID overload|overheat|voltage|none "
     + "(servos) | status | quit."})
-public final class EmulateCommand implements Callable<Integer> {
+public final class EmulateCommand implements ReadsInput, Callable<Integer> {
     @Option(names = "--port", required = true, paramLabel = "PATH", description = "The serial device to serve.")
     String port;
 
@@ -88,6 +90,14 @@ public final class EmulateCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
+    /** Standard input, or what the command line was handed instead ({@link ReadsInput}). */
+    private InputStream input = System.in;
+
+    @Override
+    public void readFrom(InputStream in) {
+        input = in;
+    }
+
     @Override
     public Integer call() throws Exception {
         return serve(spec.commandLine().getErr());
@@ -123,7 +133,7 @@ public final class EmulateCommand implements Callable<Integer> {
         }
         int rate = baud == null ? p.scanBauds().get(0) : baud;
         if (p.controlTable()) {
-            return new ServoEmulation(port, rate, servoModel(p), o, duration, log, err).serve();
+            return new ServoEmulation(port, rate, servoModel(p), o, duration, log, err).serve(input);
         }
         if (model != null) {
             throw new UsageException(CliMsg.MODEL_NOT_FOR_G1.text());
@@ -143,7 +153,7 @@ public final class EmulateCommand implements Callable<Integer> {
             BusEmulator.Stats s = emu.stats();
             err.println("emulate: " + CliMsg.G1_EMULATION_STATS.text(s.frames(), s.checksumErrors(), s.dropped(),
                     s.corrupted(), s.replies()));
-        }, w -> ConsoleCommands.apply(ConsoleCommands.of(emu), w), duration, err);
+        }, w -> ConsoleCommands.apply(ConsoleCommands.of(emu), w), duration, input, err);
     }
 
     private ServoModel servoModel(ServoProtocol p) throws UsageException {
@@ -176,14 +186,13 @@ public final class EmulateCommand implements Callable<Integer> {
         };
     }
 
-    /** Reads commands from standard input; end of input only stops the console, not the emulator. */
     /**
-     * Serves until {@code quit} on standard input, the end of {@code duration} seconds (null: no
+     * Serves until {@code quit} on {@code input} (the command's standard input), the end of {@code duration} seconds (null: no
      * end) or Ctrl-C, answering console lines with {@code commands}; then runs
      * {@code closeAndReport} once, whichever came first. Returns the exit code 0.
      */
     static int serveUntilDone(Runnable closeAndReport, Function<String[], String> commands, Double duration,
-                              PrintWriter err) throws InterruptedException {
+                              InputStream input, PrintWriter err) throws InterruptedException {
         CountDownLatch done = new CountDownLatch(1);
         AtomicBoolean closed = new AtomicBoolean();
         Runnable shutdown = () -> {
@@ -193,7 +202,7 @@ public final class EmulateCommand implements Callable<Integer> {
         };
         Thread hook = new Thread(shutdown, "emulate-stop");
         Runtime.getRuntime().addShutdownHook(hook);
-        Thread console = new Thread(() -> console(commands, err, done), "emulate-console");
+        Thread console = new Thread(() -> console(input, commands, err, done), "emulate-console");
         console.setDaemon(true);
         console.start();
         if (duration != null) {
@@ -206,8 +215,10 @@ public final class EmulateCommand implements Callable<Integer> {
         return 0;
     }
 
-    private static void console(Function<String[], String> commands, PrintWriter err, CountDownLatch done) {
-        BufferedReader in = new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8));
+    /** Reads commands from {@code input}; end of input only stops the console, not the emulator. */
+    private static void console(InputStream input, Function<String[], String> commands, PrintWriter err,
+                                CountDownLatch done) {
+        BufferedReader in = new BufferedReader(new InputStreamReader(input, StandardCharsets.UTF_8));
         try {
             for (String line; (line = in.readLine()) != null; ) {
                 String[] w = line.trim().split("\\s+");

@@ -15,6 +15,7 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import org.parpe.cli.options.Inputs;
 import org.parpe.cli.options.OutputFile;
+import org.parpe.cli.options.ReadsInput;
 import org.parpe.cli.options.UsageException;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.SourcePos;
@@ -49,7 +50,7 @@ import picocli.CommandLine.Spec;
  */
 @Command(name = "record", mixinStandardHelpOptions = true, description = {"Record poses of a group of modules posed by hand into a PARSL file.",
     "Press Enter to capture a pose; Ctrl-D (end of input) or Ctrl-C finishes."})
-public final class RecordCommand implements Callable<Integer> {
+public final class RecordCommand implements ReadsInput, Callable<Integer> {
     @Option(names = "--port", paramLabel = "PATH",
             description = "The serial device of the modules (G1 without --hardware; overrides the profile's port).")
     String port;
@@ -90,8 +91,13 @@ public final class RecordCommand implements Callable<Integer> {
 
     private OutputFile outFile;
 
-    /** Standard input, replaceable by tests. */
+    /** Standard input, or what the command line was handed instead ({@link ReadsInput}). */
     InputStream input = System.in;
+
+    @Override
+    public void readFrom(InputStream in) {
+        input = in;
+    }
 
     @Override
     public Integer call() throws Exception {

@@ -2,6 +2,7 @@ package org.parpe.cli.hw;
 
 import org.parpe.cli.text.CliMsg;
 import java.io.IOException;
+import java.io.InputStream;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.Locale;
@@ -36,7 +37,7 @@ final class ServoEmulation {
         this.err = err;
     }
 
-    int serve() throws UsageException, InterruptedException {
+    int serve(InputStream input) throws UsageException, InterruptedException {
         int[] ids = options.modules();
         EmulateCommand.SetpointLog csv = EmulateCommand.SetpointLog.open(log, ids);
         ServoEmulator emu;
@@ -54,7 +55,7 @@ final class ServoEmulation {
             ServoEmulator.Stats s = emu.stats();
             err.println("emulate: " + CliMsg.SERVO_EMULATION_STATS.text(s.packets(), s.checksumErrors(), s.dropped(),
                     s.corrupted(), s.replies()));
-        }, w -> ConsoleCommands.apply(console(emu), w), duration, err);
+        }, w -> ConsoleCommands.apply(console(emu), w), duration, input, err);
     }
 
     /** The console of emulated servos: {@code fault ID overload|overheat|voltage|none}. */
