@@ -59,8 +59,16 @@ class ServoProfileGuiTest {
         }
     }
 
+    /**
+     * A test that fails half-way must not leave its run going: the alarm test's 600 s run, left
+     * running by a failed assertion, made the next test's run wait 30 s and fail too.
+     */
     @AfterEach
     void backToTheSimulator() {
+        if (ide.runs().running()) {
+            ide.runs().stop();
+            pump(() -> !ide.runs().running(), "the run left by the test to stop");
+        }
         ide.toolbar().setHardwareProfile("");
         ide.toolbar().setPort("");
         ide.toolbar().setTarget(RunOn.SIMULATOR);
