@@ -180,7 +180,8 @@ public final class Diagrams {
 
     /** {@code plate 0} or {@code plates 0, 1}. */
     static String plateWords(List<Integer> plates) {
-        return (plates.size() == 1 ? DiagramMsg.PLATE : DiagramMsg.PLATES).text(String.join(", ", plates.stream().map(String::valueOf).toList()));
+        String numbers = String.join(", ", plates.stream().map(String::valueOf).toList());
+        return (plates.size() == 1 ? DiagramMsg.PLATE : DiagramMsg.PLATES).text(numbers);
     }
 
     /** The group an automaton is played on, as bound at load, and whether mirrored. */

@@ -17,7 +17,10 @@ import org.parpe.core.text.Msg;
  */
 final class DockReads extends ExprTree.Question {
     private final int[] ids;
-    /** Whose plates are read (a key of {@link DiagramMsg} with its arguments), in the order first read, and which plates of each. */
+    /**
+     * Whose plates are read (a key of {@link DiagramMsg} and its argument), in the order first
+     * read, and which plates of each.
+     */
     private final Map<List<Object>, List<Integer>> reads = new LinkedHashMap<>();
 
     private DockReads(int[] ids) {

@@ -292,7 +292,8 @@ public final class GaitTableExpansion {
                 throw new EditRefused(EditMsg.ANGLE_COUNT, s.name(), s.angles().size(), m);
             }
             for (int k = 0; k < m; k++) {
-                out[i][k] = constant(s.angles().get(s.angles().size() == 1 ? 0 : k), Message.of(EditMsg.ANGLE_OF_STATE, s.name()));
+                out[i][k] = constant(s.angles().get(s.angles().size() == 1 ? 0 : k),
+                        Message.of(EditMsg.ANGLE_OF_STATE, s.name()));
             }
         }
         return out;
@@ -306,7 +307,10 @@ public final class GaitTableExpansion {
         return i;
     }
 
-    /** The value of {@code e}, refused when it is known only while running; {@code what} names it (a message, or an attribute's name). */
+    /**
+     * The value of {@code e}, refused when it is known only while running; {@code what} names it
+     * (a message, or an attribute's name).
+     */
     private static double constant(Expression e, Object what) {
         double v = Diagrams.constant(e);
         if (Double.isNaN(v)) {

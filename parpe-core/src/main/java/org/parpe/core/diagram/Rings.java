@@ -75,7 +75,8 @@ final class Rings {
         double bottom = Math.max(Labels.stack(left, top, CY + R1 + 20, GAP * t), Labels.stack(right, top, CY + R1 + 20, GAP * t));
         double caption = Math.max(CY + R1 + 30 + 14 * t, bottom + 24 * t);
         Scene sc = new Scene(Layouts.width((int) Math.ceil(2 * ringX), r.islands()), (int) (caption + 50 + r.islands().size() * 18));
-        sc.add(new Scene.Text(20, 28 * t, (r.table() ? DiagramMsg.RING_GAIT_TABLE : DiagramMsg.RING_AUTOMATON).text(r.automaton()), 15 * t, -1, INK, true));
+        String title = (r.table() ? DiagramMsg.RING_GAIT_TABLE : DiagramMsg.RING_AUTOMATON).text(r.automaton());
+        sc.add(new Scene.Text(20, 28 * t, title, 15 * t, -1, INK, true));
         for (Ring.Arc a : r.arcs()) {
             sc.add(arc(a));
             double[] e0 = Scene.onCircle(ringX, CY, R1 + 6, a.to());
@@ -264,7 +265,8 @@ final class Rings {
     private static String positions(PhaseWheel w) {
         StringBuilder s = new StringBuilder();
         for (PhaseWheel.Tick tick : w.ticks()) {
-            s.append(tick.position() == 0 ? DiagramMsg.WHEEL_POSITION_0.text(tick.module()) : DiagramMsg.WHEEL_POSITION.text(tick.position(), tick.module()));
+            s.append(tick.position() == 0 ? DiagramMsg.WHEEL_POSITION_0.text(tick.module())
+                    : DiagramMsg.WHEEL_POSITION.text(tick.position(), tick.module()));
             if (s.length() > 120) {
                 s.append(", …");
                 break;
