@@ -70,7 +70,7 @@ class DiagramTextTest {
             assertEquals("es gibt kein Verhalten 'run'", refused.getMessage());
             String ring = Layouts.ring(Diagrams.ring(p, p.automaton("wave").orElseThrow())).svg();
             assertTrue(ring.contains(">ein Zyklus<") && ring.contains(">Automat wave<") && ring.contains("dauert 1 s"), ring);
-            assertTrue(ring.contains("Zustände im Uhrzeigersinn von oben"), ring);
+            assertTrue(ring.contains("Zustände im Uhrzeigersinn ab oben, Bogenlänge = Dauer des Zustands"), ring);
         } finally {
             Lang.use(Locale.ENGLISH);
         }
