@@ -3,6 +3,7 @@ package org.parpe.core.diagram;
 import java.util.ArrayList;
 import java.util.List;
 import org.parpe.core.diag.SourcePos;
+import org.parpe.core.edit.EditRefused;
 import org.parpe.core.edit.ElementWriter;
 import org.parpe.core.edit.Replacement;
 import org.parpe.core.edit.ScriptEdits;
@@ -11,6 +12,8 @@ import org.parpe.core.edit.TextEdit;
 import org.parpe.core.model.Behavior;
 import org.parpe.core.model.MainDef;
 import org.parpe.core.model.Program;
+import org.parpe.core.text.EditMsg;
+import org.parpe.core.text.Msg;
 
 /**
  * Edits made on the program lane and the swimlanes that add elements: an automaton instance
@@ -27,7 +30,7 @@ public final class BehaviorEdits {
     public static TextEdit addInstance(String text, Behavior b, String automaton, String group) {
         ElementWriter.name(automaton, "automaton");
         if (group.isBlank()) {
-            throw new IllegalArgumentException("an instance needs a group");
+            throw new EditRefused(EditMsg.INSTANCE_NEEDS_GROUP);
         }
         SourcePos last = b.items().isEmpty() ? null : b.items().get(b.items().size() - 1).pos();
         return ScriptEdits.appendChild(text, ScriptEdits.span(b.pos()), b.name(),
@@ -44,7 +47,7 @@ public final class BehaviorEdits {
                                        String time) {
         ElementWriter.name(name, "behavior");
         if (p.behavior(name).isPresent()) {
-            throw new IllegalArgumentException("a behavior named '" + name + "' exists already");
+            throw new EditRefused(EditMsg.NAME_TAKEN, Msg.kind("behavior"), name);
         }
         String instance = ElementWriter.tag(ElementWriter.name(automaton, "automaton")).attr("group", group.trim()).empty();
         String entry = ElementWriter.tag(name).attrIfGiven("time", time == null ? null : time.trim()).empty();
@@ -63,12 +66,10 @@ public final class BehaviorEdits {
      * their values.
      */
     public static TextEdit addEntry(String text, Program p, String behavior) {
-        Behavior b = p.behavior(behavior).orElseThrow(() -> new IllegalArgumentException(
-                "there is no behavior '" + behavior + "'"));
+        Behavior b = p.behavior(behavior).orElseThrow(() -> new EditRefused(EditMsg.NO_BEHAVIOR, behavior));
         if (!b.macros().isEmpty()) {
             // PARSL.md §8: every entry gives each macro a value, which a drop does not know
-            throw new IllegalArgumentException("behavior '" + behavior + "' takes macros (" + String.join(", ", b.macros())
-                    + "); write its <main> entry with their values in the text");
+            throw new EditRefused(EditMsg.TAKES_MACROS, behavior, String.join(", ", b.macros()));
         }
         return SectionEdits.add(text, p.file(), indent -> ElementWriter.tag(behavior).empty(), "main");
     }
@@ -80,7 +81,7 @@ public final class BehaviorEdits {
     public static TextEdit removeEntry(String text, MainDef main, int index) {
         int n = main.entries().size();
         if (index < 0 || index >= n) {
-            throw new IllegalArgumentException("<main> has entries 0.." + (n - 1) + ", not " + index);
+            throw new EditRefused(EditMsg.NO_SUCH_ENTRY, n - 1, index);
         }
         return ScriptEdits.removeElement(text, ScriptEdits.span(main.entries().get(index).pos()));
     }

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import org.parpe.core.diag.SourceSpan;
+import org.parpe.core.edit.EditRefused;
 import org.parpe.core.edit.ElementWriter;
 import org.parpe.core.edit.Replacement;
 import org.parpe.core.edit.ScriptEdits;
@@ -13,13 +14,14 @@ import org.parpe.core.load.ListItem;
 import org.parpe.core.model.Automaton;
 import org.parpe.core.model.MainDef;
 import org.parpe.core.model.Program;
+import org.parpe.core.text.EditMsg;
 
 /**
  * Turns an edit made on a diagram into a {@link TextEdit} of the script's text through the
  * source spans of the model's nodes ({@link ScriptEdits}): only the attribute values or elements that change are
  * replaced, so comments, order and layout stay as written. {@code text} is always the text of
  * the file the node was read from, as it was when the program was loaded. An edit that cannot
- * be made is refused with an {@link IllegalArgumentException} whose message says why.
+ * be made is refused with an {@link EditRefused} whose message says why.
  */
 public final class DiagramEdits {
     private DiagramEdits() {
@@ -33,7 +35,7 @@ public final class DiagramEdits {
     public static TextEdit retime(String text, Automaton a, int state, String duration) {
         int n = a.states().size();
         if (state < 0 || state >= n) {
-            throw new IllegalArgumentException("automaton '" + a.name() + "' has states 0.." + (n - 1) + ", not " + state);
+            throw new EditRefused(EditMsg.NO_SUCH_STATE, a.name(), n - 1, state);
         }
         SourceSpan.Range r = ScriptEdits.span(a.pos()).value("times");
         if (r == null) {
@@ -55,7 +57,7 @@ public final class DiagramEdits {
     public static TextEdit moveEntry(String text, MainDef main, int from, int to) {
         int n = main.entries().size();
         if (from < 0 || from >= n || to < 0 || to >= n) {
-            throw new IllegalArgumentException("<main> has entries 0.." + (n - 1) + "; cannot move " + from + " to " + to);
+            throw new EditRefused(EditMsg.CANNOT_MOVE_ENTRY, n - 1, from, to);
         }
         List<Integer> order = new ArrayList<>();
         for (int i = 0; i < n; i++) {
@@ -84,7 +86,7 @@ public final class DiagramEdits {
      */
     public static TextEdit addState(String text, Program p, Automaton a, String state, String duration) {
         if (a.table()) {
-            throw new IllegalArgumentException("'" + a.name() + "' is a gait table: add a row to its table instead");
+            throw new EditRefused(EditMsg.TABLE_ADD_ROW, a.name());
         }
         SourceSpan s = ScriptEdits.span(a.pos());
         List<Replacement> edits = new ArrayList<>();

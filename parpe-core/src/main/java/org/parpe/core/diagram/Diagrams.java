@@ -19,6 +19,7 @@ import org.parpe.core.model.MainEntry;
 import org.parpe.core.model.Program;
 import org.parpe.core.model.StateDef;
 import org.parpe.core.model.Timing;
+import org.parpe.core.text.DiagramMsg;
 
 /**
  * Computes the diagrams of a loaded program. Each is a projection of the model; nothing here
@@ -70,7 +71,7 @@ public final class Diagrams {
             MainEntry.GroupRef ref = entry != null ? entry.groupOf(x.instance) : x.instance.groupRef();
             Group g = entry != null ? entry.boundGroup(x.instance) : x.instance.on();
             if (g == null) {
-                islands.add(new TextIsland("group '" + x.instance.group() + "' is a macro without a value here",
+                islands.add(new TextIsland(DiagramMsg.MACRO_WITHOUT_VALUE.text(x.instance.group()),
                         x.instance.pos()));
             }
             groups.add(g);
@@ -136,8 +137,7 @@ public final class Diagrams {
             Timing t = a.times().get(i);
             seconds[i] = constant(t.duration());
             if (Double.isNaN(seconds[i])) {
-                islands.add(new TextIsland("the duration '" + t.duration().text() + "' of state '"
-                        + a.states().get(i).name() + "' is known only while running; its arc is drawn at the mean",
+                islands.add(new TextIsland(DiagramMsg.DURATION_WHILE_RUNNING.text(t.duration().text(), a.states().get(i).name()),
                         t.duration().pos()));
             } else {
                 known += Math.max(0, seconds[i]);
@@ -170,16 +170,18 @@ public final class Diagrams {
     static String plates(StateDef s) {
         List<String> parts = new ArrayList<>();
         if (!s.latch().isEmpty()) {
-            parts.add("latches " + plateWords(s.latch()));
+            parts.add(DiagramMsg.LATCHES.text(plateWords(s.latch())));
         }
         if (!s.unlatch().isEmpty()) {
-            parts.add("releases " + plateWords(s.unlatch()));
+            parts.add(DiagramMsg.RELEASES.text(plateWords(s.unlatch())));
         }
         return String.join("; ", parts);
     }
 
-    private static String plateWords(List<Integer> plates) {
-        return (plates.size() == 1 ? "plate " : "plates ") + String.join(", ", plates.stream().map(String::valueOf).toList());
+    /** {@code plate 0} or {@code plates 0, 1}. */
+    static String plateWords(List<Integer> plates) {
+        String numbers = String.join(", ", plates.stream().map(String::valueOf).toList());
+        return (plates.size() == 1 ? DiagramMsg.PLATE : DiagramMsg.PLATES).text(numbers);
     }
 
     /** The group an automaton is played on, as bound at load, and whether mirrored. */
@@ -271,7 +273,7 @@ public final class Diagrams {
         }
         double v = constant(e);
         if (Double.isNaN(v)) {
-            islands.add(new TextIsland(what + " '" + e.text() + "' is known only while running; drawn as 0", e.pos()));
+            islands.add(new TextIsland(DiagramMsg.CYCLES_WHILE_RUNNING.text(what, e.text()), e.pos()));
             return 0;
         }
         return v;

@@ -6,8 +6,9 @@ import java.util.List;
 import java.util.Map;
 import org.parpe.core.expr.ExprTree;
 import org.parpe.core.expr.Expression;
-import org.parpe.core.lang.Numbers;
 import org.parpe.core.sensor.Channel;
+import org.parpe.core.text.DiagramMsg;
+import org.parpe.core.text.Msg;
 
 /**
  * The {@code dock} readings an exit condition waits on (PARSL.md §14), in words for the
@@ -16,8 +17,11 @@ import org.parpe.core.sensor.Channel;
  */
 final class DockReads extends ExprTree.Question {
     private final int[] ids;
-    /** Whose plates are read, in the order first read, and which plates of each. */
-    private final Map<String, List<Integer>> reads = new LinkedHashMap<>();
+    /**
+     * Whose plates are read (a key of {@link DiagramMsg} and its argument), in the order first
+     * read, and which plates of each.
+     */
+    private final Map<List<Object>, List<Integer>> reads = new LinkedHashMap<>();
 
     private DockReads(int[] ids) {
         super(false);
@@ -32,9 +36,9 @@ final class DockReads extends ExprTree.Question {
         DockReads d = new DockReads(ids);
         ExprTree.visit(e.root(), d);
         List<String> words = new ArrayList<>();
-        d.reads.forEach((whose, plates) -> words.add(whose + (plates.size() == 1 ? " plate " : " plates ")
-                + String.join(", ", plates.stream().sorted().map(String::valueOf).toList())));
-        return words.isEmpty() ? "" : "dock: " + String.join(", ", words);
+        d.reads.forEach((whose, plates) -> words.add(((DiagramMsg) whose.get(0)).text(whose.get(1),
+                Diagrams.plateWords(plates.stream().sorted().toList()))));
+        return words.isEmpty() ? "" : DiagramMsg.DOCK.text(String.join(", ", words));
     }
 
     @Override
@@ -48,7 +52,7 @@ final class DockReads extends ExprTree.Question {
         int module = slot / Channel.count();
         int plate = plate(channel);
         if (plate >= 0 && module < ids.length) {
-            add("module " + ids[module], plate);
+            add(DiagramMsg.DOCK_MODULE, ids[module], plate);
         }
         return false;
     }
@@ -57,15 +61,16 @@ final class DockReads extends ExprTree.Question {
     public Boolean localSensor(int position, int channel) {
         int plate = plate(channel);
         if (plate >= 0) {
-            add(position == ExprTree.SELF ? "its" : position == ExprTree.PREV ? "the previous module's"
-                    : position == ExprTree.NEXT ? "the next module's" : "the group's " + Numbers.ordinal(position) + " module's",
-                    plate);
+            add(position == ExprTree.SELF ? DiagramMsg.DOCK_ITS : position == ExprTree.PREV ? DiagramMsg.DOCK_PREVIOUS
+                    : position == ExprTree.NEXT ? DiagramMsg.DOCK_NEXT : DiagramMsg.DOCK_NTH,
+                    position >= 0 ? Msg.ordinal(position) : "", plate);
         }
         return false;
     }
 
-    private void add(String whose, int plate) {
-        List<Integer> plates = reads.computeIfAbsent(whose, w -> new ArrayList<>());
+    /** Plate {@code plate} of the module {@code whose} says ({@code {0}} its argument, {@code {1}} the plates). */
+    private void add(DiagramMsg whose, Object argument, int plate) {
+        List<Integer> plates = reads.computeIfAbsent(List.of(whose, String.valueOf(argument)), w -> new ArrayList<>());
         if (!plates.contains(plate)) {
             plates.add(plate);
         }

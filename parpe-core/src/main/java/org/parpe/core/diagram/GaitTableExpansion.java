@@ -4,20 +4,23 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.TreeSet;
 import org.parpe.core.diag.SourceSpan;
+import org.parpe.core.edit.EditRefused;
 import org.parpe.core.edit.ElementWriter;
 import org.parpe.core.edit.Replacement;
 import org.parpe.core.edit.ScriptEdits;
 import org.parpe.core.edit.SectionEdits;
 import org.parpe.core.edit.TextEdit;
+import org.parpe.core.expr.Expression;
 import org.parpe.core.lang.Numbers;
 import org.parpe.core.model.Automaton;
-import org.parpe.core.expr.Expression;
 import org.parpe.core.model.Group;
 import org.parpe.core.model.Instance;
 import org.parpe.core.model.Interp;
 import org.parpe.core.model.Program;
 import org.parpe.core.model.StateDef;
 import org.parpe.core.model.Timing;
+import org.parpe.core.text.EditMsg;
+import org.parpe.core.text.Message;
 
 /**
  * "Expand to gait table": the gait table that drives the modules of a phase-automaton
@@ -82,9 +85,9 @@ public final class GaitTableExpansion {
         for (int i = 0; i < n; i++) {
             Timing ti = a.times().get(i);
             if (ti.exit() != null) {
-                throw new IllegalArgumentException("state " + i + " of '" + a.name() + "' has an exit condition: its time is not fixed");
+                throw new EditRefused(EditMsg.STATE_HAS_EXIT, i, a.name());
             }
-            t[i] = constant(ti.duration(), "the duration of state " + i);
+            t[i] = constant(ti.duration(), Message.of(EditMsg.DURATION_OF_STATE, i));
             sum += t[i];
         }
         double period = in.period() == null ? sum : constant(in.period(), "period");
@@ -136,11 +139,11 @@ public final class GaitTableExpansion {
     private static void refuseUnlessRepeating(Instance in) {
         Automaton a = in.automaton();
         if (a.table()) {
-            throw new IllegalArgumentException("'" + a.name() + "' is a gait table already");
+            throw new EditRefused(EditMsg.ALREADY_TABLE, a.name());
         }
         Instance repeating = new Instance(a, in.group(), in.on(), in.phase(), in.offset(), in.period(), null, null, in.pos());
         if (!repeating.equals(in)) {
-            throw new IllegalArgumentException("an instance with start or cycles does not repeat as a table does");
+            throw new EditRefused(EditMsg.NOT_REPEATING);
         }
     }
 
@@ -175,16 +178,16 @@ public final class GaitTableExpansion {
      */
     public static Cycle cycleOf(Automaton table, int m) {
         if (!table.table()) {
-            throw new IllegalArgumentException("'" + table.name() + "' is not a gait table");
+            throw new EditRefused(EditMsg.NOT_A_TABLE, table.name());
         }
         int rows = table.states().size();
         double[][] cell = targets(table, m);
         double[] seconds = new double[rows];
         for (int r = 0; r < rows; r++) {
             if (table.times().get(r).exit() != null) {
-                throw new IllegalArgumentException("row " + r + " of '" + table.name() + "' has an exit condition");
+                throw new EditRefused(EditMsg.ROW_HAS_EXIT, r, table.name());
             }
-            seconds[r] = constant(table.times().get(r).duration(), "the duration of row " + r);
+            seconds[r] = constant(table.times().get(r).duration(), Message.of(EditMsg.DURATION_OF_ROW, r));
         }
         for (int shift = 0; shift < rows; shift++) {
             if (shifted(cell, shift, m) && (shift == 0 || equal(seconds))) {
@@ -195,8 +198,7 @@ public final class GaitTableExpansion {
                 return new Cycle(column, seconds, (double) shift / rows);
             }
         }
-        throw new IllegalArgumentException("the columns of '" + table.name() + "' are not one sequence shifted by a constant"
-                + " number of rows (with rows of equal length): it is no phase automaton");
+        throw new EditRefused(EditMsg.NOT_SHIFTED, table.name());
     }
 
     /**
@@ -284,13 +286,14 @@ public final class GaitTableExpansion {
         for (int i = 0; i < out.length; i++) {
             StateDef s = a.states().get(i);
             if (s.interp() != Interp.LINEAR) {
-                throw new IllegalArgumentException("state '" + s.name() + "' moves with " + s.interp() + ", not a straight line");
+                throw new EditRefused(EditMsg.NOT_LINEAR, s.name(), s.interp());
             }
             if (s.angles().size() != 1 && s.angles().size() != m) {
-                throw new IllegalArgumentException("state '" + s.name() + "' has " + s.angles().size() + " angles for " + m + " modules");
+                throw new EditRefused(EditMsg.ANGLE_COUNT, s.name(), s.angles().size(), m);
             }
             for (int k = 0; k < m; k++) {
-                out[i][k] = constant(s.angles().get(s.angles().size() == 1 ? 0 : k), "an angle of state '" + s.name() + "'");
+                out[i][k] = constant(s.angles().get(s.angles().size() == 1 ? 0 : k),
+                        Message.of(EditMsg.ANGLE_OF_STATE, s.name()));
             }
         }
         return out;
@@ -304,10 +307,14 @@ public final class GaitTableExpansion {
         return i;
     }
 
-    private static double constant(Expression e, String what) {
+    /**
+     * The value of {@code e}, refused when it is known only while running; {@code what} names it
+     * (a message, or an attribute's name).
+     */
+    private static double constant(Expression e, Object what) {
         double v = Diagrams.constant(e);
         if (Double.isNaN(v)) {
-            throw new IllegalArgumentException(what + " '" + e.text() + "' is known only while running; a table needs numbers");
+            throw new EditRefused(EditMsg.NOT_CONSTANT, what, e.text());
         }
         return v;
     }

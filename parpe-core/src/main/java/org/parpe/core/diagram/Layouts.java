@@ -2,9 +2,10 @@ package org.parpe.core.diagram;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Map;
 import java.util.Locale;
+import java.util.Map;
 import org.parpe.core.lang.Numbers;
+import org.parpe.core.text.DiagramMsg;
 import org.parpe.core.text.Msg;
 
 /**
@@ -48,9 +49,9 @@ public final class Layouts {
         for (ProgramLane.Step s : lane.steps()) {
             List<String> lines = new ArrayList<>();
             lines.add(s.behavior());
-            lines.add(s.time() == null ? Msg.DIAGRAM_UNTIL_AUTOMATA_END.text() : Msg.DIAGRAM_TIME.text(s.time()));
+            lines.add(s.time() == null ? DiagramMsg.UNTIL_AUTOMATA_END.text() : DiagramMsg.TIME.text(s.time()));
             if (s.exit() != null) {
-                lines.add(Msg.DIAGRAM_EXIT_WHEN.text(s.exit()));
+                lines.add(DiagramMsg.EXIT_WHEN.text(s.exit()));
             }
             dockLine.add(s.dock().isEmpty() ? -1 : lines.size());
             if (!s.dock().isEmpty()) {
@@ -92,8 +93,8 @@ public final class Layouts {
             sc.add(new Scene.Line(x - 20, back, 20, back, INK, 1.5, 0));
             sc.add(new Scene.Line(20, back, 20, y + boxH / 2, INK, 1.5, 0));
             arrow(sc, 20, y + boxH / 2, 40, y + boxH / 2);
-            sc.add(new Scene.Text((x - 20 + 20) / 2, back + 18, lane.cycles().equals("1") ? Msg.DIAGRAM_RUNS_ONCE.text()
-                : lane.cycles().equals("forever") ? Msg.DIAGRAM_RUNS_FOREVER.text() : Msg.DIAGRAM_RUNS_TIMES.text(lane.cycles()), 12, 0, GREY, false));
+            sc.add(new Scene.Text((x - 20 + 20) / 2, back + 18, lane.cycles().equals("1") ? DiagramMsg.RUNS_ONCE.text()
+                : lane.cycles().equals("forever") ? DiagramMsg.RUNS_FOREVER.text() : DiagramMsg.RUNS_TIMES.text(lane.cycles()), 12, 0, GREY, false));
         }
         return sc;
     }
@@ -124,8 +125,8 @@ public final class Layouts {
         double top = 60;
         double h = top + rows * (barH + 8) + s.lanes().size() * 12 + 40 + s.islands().size() * 18;
         Scene sc = new Scene(width((int) (labelW + plotW + 40), s.islands()), (int) h);
-        sc.add(new Scene.Text(20, 28, s.entry() >= 0 ? Msg.DIAGRAM_BEHAVIOR_ENTRY.text(s.behavior(), Msg.ordinal(s.entry()))
-                : Msg.DIAGRAM_BEHAVIOR.text(s.behavior()), 15, -1, INK, true));
+        sc.add(new Scene.Text(20, 28, s.entry() >= 0 ? DiagramMsg.BEHAVIOR_ENTRY.text(s.behavior(), Msg.ordinal(s.entry()))
+                : DiagramMsg.BEHAVIOR.text(s.behavior()), 15, -1, INK, true));
         double scale = plotW / horizon;
         double y = top;
         for (double t = 0; t <= horizon + 1e-9; t += step(horizon)) {
@@ -137,7 +138,7 @@ public final class Layouts {
             double laneH = l.bars().size() * (barH + 8) + 4;
             sc.add(new Scene.Rect(10, y - 2, labelW + plotW + 20, laneH, Scene.NONE, 0xcccccc, 1, null));
             sc.add(new Scene.Text(20, y + 18, l.group(), 13, -1, INK, true));
-            sc.add(new Scene.Text(20, y + 34, l.modules().isEmpty() ? Msg.DIAGRAM_MACRO_GROUP.text() : modules(l.modules()), 10, -1, GREY,
+            sc.add(new Scene.Text(20, y + 34, l.modules().isEmpty() ? DiagramMsg.MACRO_GROUP.text() : modules(l.modules()), 10, -1, GREY,
                     false));
             for (Swimlanes.Bar b : l.bars()) {
                 bar(sc, b, labelW, y + 2, barH, scale, plotW);
@@ -174,17 +175,17 @@ public final class Layouts {
         sc.add(new Scene.Text(x + 6, y + 14, label.toString(), 11, -1, INK, false));
         StringBuilder note = new StringBuilder();
         if (b.mirrored()) {
-            note.append(Msg.DIAGRAM_MIRRORED.text()).append("  ");
+            note.append(DiagramMsg.MIRRORED.text()).append("  ");
         }
         if (!b.conditions().isEmpty()) {
             String all = b.conditions().get(0);
             for (String c : b.conditions().subList(1, b.conditions().size())) {
-                all = Msg.DIAGRAM_AND.text(all, c);
+                all = DiagramMsg.AND.text(all, c);
             }
-            note.append(Msg.DIAGRAM_IF.text(all)).append("  ");
+            note.append(DiagramMsg.IF.text(all)).append("  ");
         }
         if (red) {
-            note.append(Msg.DIAGRAM_DRIVES_TWICE.text(b.shared(), b.overlaps().get(0)));
+            note.append(DiagramMsg.DRIVES_TWICE.text(b.shared(), b.overlaps().get(0)));
         }
         if (note.length() > 0) {
             sc.add(new Scene.Text(x + 6, y + 28, note.toString().trim(), 10, -1, red ? RED : 0x555555, red));
@@ -202,7 +203,7 @@ public final class Layouts {
 
     private static String modules(List<Integer> ids) {
         String list = ids.size() <= 5 ? ids.toString() : ids.subList(0, 4) + "…";
-        return (ids.size() == 1 ? Msg.DIAGRAM_ONE_MODULE : Msg.DIAGRAM_MODULES).text(ids.size(),
+        return (ids.size() == 1 ? DiagramMsg.ONE_MODULE : DiagramMsg.MODULES).text(ids.size(),
                 list.replace("[", "").replace("]", ""));
     }
 
@@ -297,7 +298,7 @@ public final class Layouts {
         double h = top + n * rowH + 50 + ((legendRows + 3) / 4) * 18 + 20;
         Scene sc = new Scene((int) (left + plotW + 30), (int) h);
         double seconds = g.ticks() * g.dt();
-        sc.add(new Scene.Text(20, 28, Msg.DIAGRAM_GAIT_TITLE.text(Numbers.format(Math.round((g.ticks() - 1) * g.dt() * 1000)
+        sc.add(new Scene.Text(20, 28, DiagramMsg.GAIT_TITLE.text(Numbers.format(Math.round((g.ticks() - 1) * g.dt() * 1000)
                 / 1000.0), Numbers.format(g.dt())), 15, -1, INK, true));
         sc.add(new Scene.Rect(left, top, plotW, n * rowH, LIGHT, Scene.NONE, 0, null));
         double scale = plotW / g.ticks();
@@ -320,7 +321,7 @@ public final class Layouts {
             sc.add(new Scene.Text(x, axis + 18, String.format(Locale.ROOT, "%s s", Numbers.format(Math.round(t * 100) / 100.0)),
                     10, 0, INK, false));
         }
-        sc.add(new Scene.Text(12, top + 10, Msg.DIAGRAM_MODULE_AXIS.text(), 10, -1, GREY, false));
+        sc.add(new Scene.Text(12, top + 10, DiagramMsg.MODULE_AXIS.text(), 10, -1, GREY, false));
         double ly = axis + 44;
         for (int i = 0; i < legendRows; i++) {
             double x = left + (i % 4) * 190;
@@ -329,7 +330,7 @@ public final class Layouts {
             sc.add(new Scene.Text(x + 18, y, names.get(i), 11, -1, INK, false));
         }
         if (names.size() > legendRows) {
-            sc.add(new Scene.Text(left, ly + ((legendRows + 3) / 4) * 18, Msg.DIAGRAM_MORE_STATES.text(names.size() - legendRows),
+            sc.add(new Scene.Text(left, ly + ((legendRows + 3) / 4) * 18, DiagramMsg.MORE_STATES.text(names.size() - legendRows),
                     11, -1, GREY, false));
         }
         return sc;

@@ -6,6 +6,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.parpe.core.lang.Numbers;
+import org.parpe.core.text.DiagramMsg;
 
 /**
  * Where the user put the free nodes of a script's diagrams ({@link Workbench}): per view, per
@@ -114,8 +115,7 @@ public final class NodePlaces {
             return new Read(NONE, true, "");
         }
         if (!lines[0].strip().equals(HEADER)) {
-            return new Read(NONE, false, file + " is not a PARPE layout file (its first line is not \"" + HEADER
-                    + "\"); it is left as it is and node places are kept only while the IDE is open");
+            return new Read(NONE, false, DiagramMsg.LAYOUT_FOREIGN.text(file, HEADER));
         }
         Map<String, Map<String, double[]>> views = new LinkedHashMap<>();
         List<String> bad = new ArrayList<>();
@@ -128,13 +128,13 @@ public final class NodePlaces {
             Double x = w.length == 4 ? Numbers.parsePlain(w[2]) : null;
             Double y = w.length == 4 ? Numbers.parsePlain(w[3]) : null;
             if (x == null || y == null || !Double.isFinite(x) || !Double.isFinite(y)) {
-                bad.add(file + ":" + (i + 1) + ": expected VIEW NAME X Y, got \"" + shorten(line) + "\"");
+                bad.add(DiagramMsg.LAYOUT_BAD_LINE.text(file + ":" + (i + 1), shorten(line)));
                 continue;
             }
             views.computeIfAbsent(w[0], k -> new LinkedHashMap<>()).put(w[1], new double[] {x, y});
         }
-        String message = bad.isEmpty() ? "" : bad.get(0) + (bad.size() > 1 ? " (and " + (bad.size() - 1)
-                + " more lines)" : "") + "; those nodes get a free place";
+        String message = bad.isEmpty() ? "" : (bad.size() > 1 ? DiagramMsg.LAYOUT_BAD_LINES.text(bad.get(0), bad.size() - 1)
+                : DiagramMsg.LAYOUT_BAD.text(bad.get(0)));
         return new Read(new NodePlaces(views), true, message);
     }
 

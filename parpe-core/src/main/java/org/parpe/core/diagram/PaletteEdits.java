@@ -2,10 +2,13 @@ package org.parpe.core.diagram;
 
 import java.util.Collections;
 import java.util.List;
+import org.parpe.core.edit.EditRefused;
 import org.parpe.core.edit.ElementWriter;
 import org.parpe.core.edit.SectionEdits;
 import org.parpe.core.edit.TextEdit;
 import org.parpe.core.model.Program;
+import org.parpe.core.text.EditMsg;
+import org.parpe.core.text.Msg;
 
 /**
  * The edits of the diagram palette that define something new: a group of modules, a
@@ -68,7 +71,7 @@ public final class PaletteEdits {
     public static TextEdit addGaitTable(String text, Program p, String name, List<String> rows, String times) {
         free(p.automaton(name).isPresent(), name, "automaton");
         if (rows.isEmpty() || rows.stream().anyMatch(String::isBlank)) {
-            throw new IllegalArgumentException("a gait table needs at least one row, and no row may be empty");
+            throw new EditRefused(EditMsg.TABLE_NEEDS_ROWS);
         }
         ElementWriter table = element(name, "gait table").attrIfGiven("times", times == null ? null : times.trim());
         List<String> lines = rows.stream().map(row -> ElementWriter.text(row.trim())).toList();
@@ -92,23 +95,23 @@ public final class PaletteEdits {
         try {
             v = Integer.parseInt(n == null ? "" : n.trim());
         } catch (NumberFormatException e) {
-            throw new IllegalArgumentException(what + " must be a whole number from 1 to " + max + ", got '" + n + "'");
+            throw new EditRefused(EditMsg.COUNT_NOT_WHOLE, what, max, n);
         }
         if (v < 1 || v > max) {
-            throw new IllegalArgumentException(what + " must be from 1 to " + max + ", got " + v);
+            throw new EditRefused(EditMsg.COUNT_RANGE, what, max, v);
         }
         return v;
     }
 
     private static void free(boolean taken, String name, String what) {
         if (taken) {
-            throw new IllegalArgumentException("a " + what + " named '" + name + "' exists already");
+            throw new EditRefused(EditMsg.NAME_TAKEN, Msg.kind(what), name);
         }
     }
 
     private static String value(String v, String attribute) {
         if (v == null || v.isBlank()) {
-            throw new IllegalArgumentException(attribute + " must not be empty");
+            throw new EditRefused(EditMsg.EMPTY_ATTRIBUTE, attribute);
         }
         return v.trim();
     }

@@ -1,15 +1,17 @@
 package org.parpe.core.diagram;
 
-import org.parpe.core.edit.ElementWriter;
-import org.parpe.core.edit.Replacement;
-import org.parpe.core.edit.ScriptEdits;
-import org.parpe.core.edit.TextEdit;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import org.parpe.core.diag.SourceSpan;
+import org.parpe.core.edit.EditRefused;
+import org.parpe.core.edit.ElementWriter;
+import org.parpe.core.edit.Replacement;
+import org.parpe.core.edit.ScriptEdits;
+import org.parpe.core.edit.TextEdit;
 import org.parpe.core.load.ListItem;
 import org.parpe.core.model.Automaton;
+import org.parpe.core.text.EditMsg;
 
 /**
  * Edits of an automaton's cycle made on its ring: remove a state, move a state to another place
@@ -30,7 +32,7 @@ public final class RingEdits {
     public static TextEdit removeState(String text, Automaton a, int state) {
         int n = checked(a, state);
         if (n == 1) {
-            throw new IllegalArgumentException("'" + a.name() + "' has only one state; an automaton needs at least one");
+            throw new EditRefused(EditMsg.LAST_STATE, a.name());
         }
         List<Replacement> edits = new ArrayList<>();
         for (String attr : List.of("states", "times")) {
@@ -101,11 +103,11 @@ public final class RingEdits {
 
     private static int checked(Automaton a, int state) {
         if (a.table()) {
-            throw new IllegalArgumentException("'" + a.name() + "' is a gait table: edit its rows in the grid editor");
+            throw new EditRefused(EditMsg.TABLE_EDIT_ROWS, a.name());
         }
         int n = a.states().size();
         if (state < 0 || state >= n) {
-            throw new IllegalArgumentException("automaton '" + a.name() + "' has states 0.." + (n - 1) + ", not " + state);
+            throw new EditRefused(EditMsg.NO_SUCH_STATE, a.name(), n - 1, state);
         }
         return n;
     }
@@ -121,8 +123,7 @@ public final class RingEdits {
             out.add(ScriptEdits.trim(text, item[0], item[1]));
         }
         if (out.size() != a.states().size()) {
-            throw new IllegalArgumentException("'" + a.name() + "' has " + a.states().size() + " states but " + out.size()
-                    + " items in " + attr + "; mend the text first");
+            throw new EditRefused(EditMsg.ITEMS_MISMATCH, a.name(), a.states().size(), out.size(), attr);
         }
         return out;
     }

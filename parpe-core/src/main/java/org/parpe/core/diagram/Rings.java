@@ -11,6 +11,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.parpe.core.lang.Numbers;
+import org.parpe.core.text.DiagramMsg;
 
 /**
  * The ring and the phase wheel laid out ({@link Layouts#ring}, {@link Layouts#wheel}): wider
@@ -74,7 +75,8 @@ final class Rings {
         double bottom = Math.max(Labels.stack(left, top, CY + R1 + 20, GAP * t), Labels.stack(right, top, CY + R1 + 20, GAP * t));
         double caption = Math.max(CY + R1 + 30 + 14 * t, bottom + 24 * t);
         Scene sc = new Scene(Layouts.width((int) Math.ceil(2 * ringX), r.islands()), (int) (caption + 50 + r.islands().size() * 18));
-        sc.add(new Scene.Text(20, 28 * t, (r.table() ? "gait table " : "automaton ") + r.automaton(), 15 * t, -1, INK, true));
+        String title = (r.table() ? DiagramMsg.RING_GAIT_TABLE : DiagramMsg.RING_AUTOMATON).text(r.automaton());
+        sc.add(new Scene.Text(20, 28 * t, title, 15 * t, -1, INK, true));
         for (Ring.Arc a : r.arcs()) {
             sc.add(arc(a));
             double[] e0 = Scene.onCircle(ringX, CY, R1 + 6, a.to());
@@ -89,9 +91,9 @@ final class Rings {
             leader(sc, (Ring.Arc) b.key, b, ringX - COLUMN + 4);
             b.draw(sc, ringX - COLUMN, 1);
         }
-        sc.add(new Scene.Text(ringX, CY - 6 * t, "one cycle", 12 * t, 0, GREY, false));
+        sc.add(new Scene.Text(ringX, CY - 6 * t, DiagramMsg.ONE_CYCLE.text(), 12 * t, 0, GREY, false));
         sc.add(new Scene.Text(ringX, CY + 14 * t, cycle(r), 15 * t, 0, INK, true));
-        sc.add(new Scene.Text(ringX, caption, Labels.fit("states clockwise from the top, each arc as long as the state lasts",
+        sc.add(new Scene.Text(ringX, caption, Labels.fit(DiagramMsg.RING_CAPTION.text(),
                 12 * t, false, 2 * ringX - 40), 12 * t, 0, GREY, false));
         Layouts.islands(sc, r.islands(), caption + 30);
         return sc;
@@ -121,7 +123,7 @@ final class Rings {
     /** The label of a state: its name, how long it lasts, its angles and its exit, in words. */
     private List<Labels.Line> lines(Ring.Arc a, boolean compact) {
         double room = columnRoom;
-        String lasts = "lasts " + (Double.isNaN(a.seconds()) ? a.duration() : Numbers.format(a.seconds())) + " s";
+        String lasts = DiagramMsg.LASTS.text(Double.isNaN(a.seconds()) ? a.duration() : Numbers.format(a.seconds()));
         List<Labels.Line> out = new ArrayList<>();
         if (compact) {
             String mark = a.plates().isEmpty() ? "" : " (latch)";
@@ -138,7 +140,7 @@ final class Rings {
             out.add(new Labels.Line(Labels.fit(a.plates(), 12 * t, true, room), 12 * t, true, LATCH));
         }
         if (a.exit() != null) {
-            out.add(new Labels.Line(Labels.fit("exit when " + a.exit(), 12 * t, true, room), 12 * t, true, RED));
+            out.add(new Labels.Line(Labels.fit(DiagramMsg.EXIT_WHEN.text(a.exit()), 12 * t, true, room), 12 * t, true, RED));
         }
         if (!a.dock().isEmpty()) {
             out.add(new Labels.Line(Labels.fit(a.dock(), 12 * t, false, room), 12 * t, false, LATCH));
@@ -165,19 +167,18 @@ final class Rings {
         double total = 0;
         for (Ring.Arc a : r.arcs()) {
             if (Double.isNaN(a.seconds())) {
-                return "varies";
+                return DiagramMsg.CYCLE_VARIES.text();
             }
             total += Math.max(0, a.seconds());
         }
-        return Numbers.format(Math.round(total * 1000) / 1000.0) + " s";
+        return DiagramMsg.SECONDS.text(Numbers.format(Math.round(total * 1000) / 1000.0));
     }
 
     Scene wheel(PhaseWheel w) {
         Scene sc = new Scene(Layouts.width(WIDTH, w.islands()), (int) (wheelY + R + 40 + 30 * t + w.islands().size() * 18));
         List<Scene.Text> head = new ArrayList<>();
-        head.add(new Scene.Text(20, 28 * t, w.automaton() + " on " + w.group(), 15 * t, -1, INK, true));
-        head.add(new Scene.Text(20, 50 * t, Labels.fit("position i lags " + brief(w.offset()) + " + i × " + brief(w.phase())
-                + " of a cycle (offset + i × phase)",
+        head.add(new Scene.Text(20, 28 * t, DiagramMsg.ON.text(w.automaton(), w.group()), 15 * t, -1, INK, true));
+        head.add(new Scene.Text(20, 50 * t, Labels.fit(DiagramMsg.WHEEL_LAG.text(brief(w.offset()), brief(w.phase())),
                 12 * t, false, WIDTH - 40), 12 * t, -1, GREY, false));
         head.add(new Scene.Text(20, 68 * t, Labels.fit(positions(w), 12 * t, false, WIDTH - 40), 12 * t, -1, GREY, false));
         List<Labels.Box> taken = Labels.place(sc, head, List.of());
@@ -262,9 +263,10 @@ final class Rings {
 
     /** "position 0 is module 14, 1 is 16, …": what the positions on the wheel are. */
     private static String positions(PhaseWheel w) {
-        StringBuilder s = new StringBuilder("position");
+        StringBuilder s = new StringBuilder();
         for (PhaseWheel.Tick tick : w.ticks()) {
-            s.append(tick.position() == 0 ? " 0 is module " + tick.module() : ", " + tick.position() + " is " + tick.module());
+            s.append(tick.position() == 0 ? DiagramMsg.WHEEL_POSITION_0.text(tick.module())
+                    : DiagramMsg.WHEEL_POSITION.text(tick.position(), tick.module()));
             if (s.length() > 120) {
                 s.append(", …");
                 break;

@@ -11,6 +11,7 @@ import org.parpe.core.model.Behavior;
 import org.parpe.core.model.Instance;
 import org.parpe.core.model.MainEntry;
 import org.parpe.core.model.Program;
+import org.parpe.core.text.DiagramMsg;
 
 /**
  * The workbench under a view, as in Scratch or Choregraphe: the script's parts that the view's
@@ -96,10 +97,10 @@ public final class Workbench {
         List<Node> out = new ArrayList<>();
         for (Behavior b : p.behaviors()) {
             if (!run.contains(b.name())) {
-                List<String> lines = new ArrayList<>(List.of(b.name(), "not run by <main>"));
-                b.instances().stream().limit(3).forEach(in -> lines.add(in.name() + " on " + in.group()));
+                List<String> lines = new ArrayList<>(List.of(b.name(), DiagramMsg.NOT_RUN_BY_MAIN.text()));
+                b.instances().stream().limit(3).forEach(in -> lines.add(DiagramMsg.ON.text(in.name(), in.group())));
                 if (b.instances().size() > 3) {
-                    lines.add("… " + (b.instances().size() - 3) + " more");
+                    lines.add(DiagramMsg.MORE.text(b.instances().size() - 3));
                 }
                 out.add(new Node(b.name(), lines, b.pos()));
             }
@@ -117,8 +118,8 @@ public final class Workbench {
         for (Automaton a : p.automata()) {
             if (!played.contains(a.name())) {
                 String states = String.join(", ", a.states().stream().map(s -> s.name()).toList());
-                out.add(new Node(a.name(), List.of(a.name(), (a.table() ? "gait table, " + a.states().size() + " rows"
-                        : "automaton: " + (states.length() > 28 ? states.substring(0, 27) + "…" : states))), a.pos()));
+                out.add(new Node(a.name(), List.of(a.name(), (a.table() ? DiagramMsg.CARD_GAIT_TABLE.text(a.states().size())
+                        : DiagramMsg.CARD_AUTOMATON.text(states.length() > 28 ? states.substring(0, 27) + "…" : states))), a.pos()));
             }
         }
         return out;

@@ -1,6 +1,8 @@
 package org.parpe.core.edit;
 
 import java.util.List;
+import org.parpe.core.text.EditMsg;
+import org.parpe.core.text.Msg;
 
 /**
  * Writes one XML element of a script or robot file: its tag, its attributes (values escaped for
@@ -94,8 +96,7 @@ public final class ElementWriter {
             ok = nameStart(c) || isAsciiDigit(c) || c == '.' || c == '-';
         }
         if (!ok) {
-            throw new IllegalArgumentException("'" + name + "' cannot name a " + what
-                    + ": a letter or _ first, then letters, digits, _, . or -");
+            throw new EditRefused(EditMsg.BAD_NAME, name, Msg.kind(what));
         }
         return name;
     }

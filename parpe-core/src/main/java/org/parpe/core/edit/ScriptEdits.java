@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.diag.SourceSpan;
+import org.parpe.core.text.EditMsg;
 
 /**
  * Edits of an element found by its {@link SourceSpan} (the place the loader gives every node,
@@ -21,7 +22,7 @@ public final class ScriptEdits {
     /** The span of {@code node}, refused with a message when it was not read from a file's text. */
     public static SourceSpan span(SourcePos node) {
         if (node.span() == null) {
-            throw new IllegalArgumentException(node + " was not read from a file's text; it cannot be edited there");
+            throw new EditRefused(EditMsg.NOT_FROM_TEXT, node);
         }
         return node.span();
     }

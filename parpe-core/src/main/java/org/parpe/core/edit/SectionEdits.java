@@ -6,6 +6,7 @@ import java.util.function.Function;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.diag.SourceSpan;
 import org.parpe.core.lang.Vocabulary;
+import org.parpe.core.text.EditMsg;
 import org.parpe.core.xml.SourceText;
 import org.parpe.core.xml.XElement;
 import org.parpe.core.xml.XmlReader;
@@ -44,11 +45,11 @@ public final class SectionEdits {
      */
     public static TextEdit startRobot(String text, String group, int modules) {
         if (!blank(text)) {
-            throw new IllegalArgumentException("the file has a script already; a robot is started only in an empty file");
+            throw new EditRefused(EditMsg.NOT_EMPTY);
         }
         ElementWriter.name(group, "group");
         if (modules < 1 || modules > MAX_MODULES) {
-            throw new IllegalArgumentException("a robot has 1 to " + MAX_MODULES + " modules, not " + modules);
+            throw new EditRefused(EditMsg.MODULE_COUNT, MAX_MODULES, modules);
         }
         int end = text.length();
         while (end > 0 && Character.isWhitespace(text.charAt(end - 1))) {
@@ -71,7 +72,7 @@ public final class SectionEdits {
         DiagnosticList diags = new DiagnosticList();
         XElement parent = XmlReader.read(new SourceText(file, text), diags);
         if (parent == null) {
-            throw new IllegalArgumentException("the script is not well-formed XML; mend it first (see Problems)");
+            throw new EditRefused(EditMsg.NOT_WELL_FORMED);
         }
         for (int level = 0; level < path.length; level++) {
             XElement child = child(parent, path[level]);
@@ -79,8 +80,7 @@ public final class SectionEdits {
                 return write(text, parent, level, element, path);
             }
             if (child.attr("file") != null) {
-                throw new IllegalArgumentException("<" + path[level] + "> is read from " + child.attr("file").value().value()
-                        + "; add to it there");
+                throw new EditRefused(EditMsg.SECTION_INCLUDED, path[level], child.attr("file").value().value());
             }
             parent = child;
         }
@@ -179,7 +179,7 @@ public final class SectionEdits {
         }
         XElement program = XmlReader.read(new SourceText(file, text), new DiagnosticList());
         if (program == null) {
-            throw new IllegalArgumentException("the script is not well-formed XML; mend it first (see Problems)");
+            throw new EditRefused(EditMsg.NOT_WELL_FORMED);
         }
         List<Replacement> out = new ArrayList<>();
         for (XElement s : sections) {

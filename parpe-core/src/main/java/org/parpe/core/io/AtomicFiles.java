@@ -21,6 +21,7 @@ import java.util.HexFormat;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import org.parpe.core.text.Msg;
 
 /**
  * The one way PARPE puts a file in place. The content goes to a new file with a random name
@@ -96,7 +97,7 @@ public final class AtomicFiles {
         Path abs = target.toAbsolutePath().normalize();
         if (Files.isSymbolicLink(abs)) {
             if (!Files.exists(abs)) {
-                throw new IOException("it is a dangling link");
+                throw new IOException(Msg.DANGLING_LINK.text());
             }
             return abs.toRealPath();
         }
@@ -108,13 +109,12 @@ public final class AtomicFiles {
         Path real = resolve(target);
         int bytes = real.getFileName().toString().getBytes(StandardCharsets.UTF_8).length;
         if (bytes > NAME_MAX) {
-            throw new IOException("its name is " + bytes + " bytes long, more than the " + NAME_MAX
-                    + " a file system takes");
+            throw new IOException(Msg.NAME_TOO_LONG.text(bytes, NAME_MAX));
         }
         checkReplaceable(real);
         Path dir = real.getParent();
         if (dir == null || !Files.isDirectory(dir)) {
-            throw new IOException("directory " + dir + " does not exist");
+            throw new IOException(Msg.NO_DIRECTORY.text(dir));
         }
         for (int attempt = 0; ; attempt++) {
             byte[] r = new byte[8];
@@ -193,13 +193,13 @@ public final class AtomicFiles {
      */
     static void checkReplaceable(Path real) throws IOException {
         if (Files.isDirectory(real, LinkOption.NOFOLLOW_LINKS)) {
-            throw new IOException("it is a directory");
+            throw new IOException(Msg.IS_A_DIRECTORY.text());
         }
         if (!Files.exists(real, LinkOption.NOFOLLOW_LINKS)) {
             return;
         }
         if (!Files.isRegularFile(real, LinkOption.NOFOLLOW_LINKS)) {
-            throw new IOException("it is not a regular file (a device, FIFO or socket); only regular files are replaced");
+            throw new IOException(Msg.NOT_REPLACEABLE.text());
         }
         boolean writable;
         try {
@@ -208,7 +208,7 @@ public final class AtomicFiles {
             writable = Files.isWritable(real);
         }
         if (!writable) {
-            throw new IOException("it is write-protected; make it writable (chmod u+w) or choose another name");
+            throw new IOException(Msg.WRITE_PROTECTED.text());
         }
     }
 
@@ -231,8 +231,7 @@ public final class AtomicFiles {
             return; // no owners here
         }
         if (!owner.equals(writer)) {
-            throw new IOException("it belongs to user " + owner.getName() + "; replacing it would make it "
-                    + writer.getName() + "'s; choose another name or ask " + owner.getName() + " to remove it");
+            throw new IOException(Msg.OTHER_OWNER.text(owner.getName(), writer.getName()));
         }
     }
 

@@ -4,6 +4,7 @@ import java.nio.file.AccessDeniedException;
 import java.nio.file.FileSystemException;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.NotDirectoryException;
+import org.parpe.core.text.Msg;
 
 /**
  * The reason of a failed file operation in words, for every message that names a file and
@@ -18,13 +19,13 @@ public final class IoReasons {
     /** Why {@code e} happened, without the file name the caller already gives. */
     public static String of(Throwable e) {
         if (e instanceof NoSuchFileException) {
-            return "no such file";
+            return Msg.NO_SUCH_FILE.text();
         }
         if (e instanceof AccessDeniedException) {
-            return "permission denied";
+            return Msg.PERMISSION_DENIED.text();
         }
         if (e instanceof NotDirectoryException) {
-            return "a folder in its path is a file";
+            return Msg.FOLDER_IS_FILE.text();
         }
         if (e instanceof FileSystemException fs) {
             return fs.getReason() != null ? fs.getReason() : fs.getClass().getSimpleName();

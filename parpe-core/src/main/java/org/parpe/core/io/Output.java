@@ -6,6 +6,7 @@ import java.io.OutputStreamWriter;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import org.parpe.core.text.Msg;
 
 /**
  * One output of a command, checked by {@link OutputPlan}: written whole through
@@ -62,7 +63,7 @@ public final class Output {
 
     /** The failure {@code e} of this output as one message. */
     public OutputException failed(Exception e) {
-        return new OutputException("cannot write " + option + " file '" + shown + "': " + reason(e));
+        return new OutputException(Msg.CANNOT_WRITE_OUTPUT.text(option, shown, reason(e)));
     }
 
     private static String reason(Exception e) {

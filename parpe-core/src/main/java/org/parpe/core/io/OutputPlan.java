@@ -11,6 +11,7 @@ import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
 import java.util.Objects;
+import org.parpe.core.text.Msg;
 
 /**
  * The files one command reads and writes, checked before it does any work. Every file read
@@ -58,53 +59,51 @@ public final class OutputPlan {
      * an existing file is refused with {@code hint} (what to do instead).
      */
     public Output output(String option, String path, Existing existing, String hint) throws OutputException {
-        String cannot = "cannot write " + option + " file '" + path + "': ";
         Path target;
         try {
             target = Path.of(path).toAbsolutePath().normalize();
         } catch (InvalidPathException e) {
-            throw new OutputException(cannot + "not a valid path");
+            throw cannot(option, path, Msg.NOT_A_VALID_PATH.text());
         }
         if (Files.isDirectory(target)) {
-            throw new OutputException(cannot + "it is a directory");
+            throw cannot(option, path, Msg.IS_A_DIRECTORY.text());
         }
         boolean exists = Files.exists(target, LinkOption.NOFOLLOW_LINKS);
         if (exists && !Files.isRegularFile(target)) {
-            throw new OutputException(cannot + "it is not a regular file (a device, FIFO, socket or dangling link);"
-                    + " outputs replace regular files only");
+            throw cannot(option, path, Msg.OUTPUT_NOT_REGULAR.text());
         }
         Path dir = target.getParent();
         try {
             dir = AtomicFiles.resolve(target).getParent();
         } catch (IOException e) {
-            throw new OutputException(cannot + e.getMessage());
+            throw cannot(option, path, e.getMessage());
         }
         if (dir == null || !Files.isDirectory(dir)) {
-            throw new OutputException(cannot + "directory " + dir + " does not exist");
+            throw cannot(option, path, Msg.NO_DIRECTORY.text(dir));
         }
         if (!Files.isWritable(dir)) {
-            throw new OutputException(cannot + "directory " + dir + " is not writable");
+            throw cannot(option, path, Msg.DIRECTORY_NOT_WRITABLE.text(dir));
         }
         Object id = identity(target);
         for (Path in : inputs) {
             if (id.equals(identity(in))) {
-                throw new OutputException(cannot + "it is the input file '" + in + "'; choose another name");
+                throw cannot(option, path, Msg.OUTPUT_IS_INPUT.text(in));
             }
         }
         for (Output o : outputs) {
             if (id.equals(identity(o.target()))) {
-                throw new OutputException(cannot + "it is also the " + o.option() + " file; give the outputs different names");
+                throw cannot(option, path, Msg.OUTPUT_TWICE.text(o.option()));
             }
         }
         if (exists && existing == Existing.KEEP) {
-            throw new OutputException(cannot + "it exists" + (hint == null ? "" : "; " + hint));
+            throw cannot(option, path, hint == null ? Msg.OUTPUT_EXISTS.text() : Msg.OUTPUT_EXISTS_HINT.text(hint));
         }
         try {
             Path real = AtomicFiles.resolve(target);
             AtomicFiles.checkReplaceable(real);
             AtomicFiles.checkOwner(real, AtomicFiles.currentUser());
         } catch (IOException e) {
-            throw new OutputException(cannot + e.getMessage());
+            throw cannot(option, path, e.getMessage());
         }
         Output o = new Output(option, path, target);
         outputs.add(o);
@@ -135,5 +134,10 @@ public final class OutputPlan {
         } catch (IOException e) {
             return abs;
         }
+    }
+
+    /** {@code cannot write OPTION file 'PATH': WHY}. */
+    private static OutputException cannot(String option, String path, Object why) {
+        return new OutputException(Msg.CANNOT_WRITE_OUTPUT.text(option, path, why));
     }
 }

@@ -9,6 +9,7 @@ import org.parpe.core.model.Instance;
 import org.parpe.core.model.MainEntry;
 import org.parpe.core.model.Program;
 import org.parpe.core.model.StateDef;
+import org.parpe.core.text.Msg;
 
 /**
  * Breakpoints of the diagrams: on a module entering a state of an automaton, or on a state's
@@ -53,10 +54,8 @@ public final class Breakpoints {
 
         /** What the IDE says about it. */
         public String describe() {
-            return (point.kind() == Kind.ENTER ? "module " + moduleId + " entered " : "the exit condition of ")
-                    + point.automaton() + "." + state + (point.kind() == Kind.EXIT ? " became true for module " + moduleId : "")
-                    + " at tick " + tick + " (t = " + org.parpe.core.lang.Numbers.format(Math.round(time * 1e6) / 1e6)
-                    + " s)";
+            return (point.kind() == Kind.ENTER ? Msg.BREAK_ENTERED : Msg.BREAK_EXIT).text(moduleId, point.automaton(), state, tick,
+                    org.parpe.core.lang.Numbers.format(Math.round(time * 1e6) / 1e6));
         }
     }
 

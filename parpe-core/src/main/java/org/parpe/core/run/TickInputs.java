@@ -9,6 +9,7 @@ import org.parpe.core.model.Control;
 import org.parpe.core.model.Program;
 import org.parpe.core.sensor.Channel;
 import org.parpe.core.sensor.SensorTable;
+import org.parpe.core.text.Msg;
 
 /**
  * What flows into the scheduler at step 1 of a tick (PARSL.md §11): control changes queued by
@@ -51,11 +52,10 @@ final class TickInputs {
         int i = controlIndex(name);
         Control c = program.controls().get(i);
         if (c.type() == Control.ControlType.RADIO) {
-            throw new IllegalArgumentException("control '" + name + "' is a radio; set one of its words");
+            throw new IllegalArgumentException(Msg.CONTROL_IS_RADIO.text(name));
         }
         if (!Double.isFinite(value) || c.min() != null && (value < c.min() || value > c.max())) {
-            throw new IllegalArgumentException("control '" + name + "' must be within [" + c.min() + ", " + c.max()
-                    + "], got " + value);
+            throw new IllegalArgumentException(Msg.CONTROL_RANGE.text(name, c.min(), c.max(), value));
         }
         commands.add(() -> ctx.controls[i] = value);
     }
@@ -65,8 +65,7 @@ final class TickInputs {
         int i = controlIndex(name);
         Control c = program.controls().get(i);
         if (!c.words().contains(word)) {
-            throw new IllegalArgumentException("radio '" + name + "' has no word '" + word + "' (words: "
-                    + String.join(", ", c.words()) + ")");
+            throw new IllegalArgumentException(Msg.STIMULUS_RADIO_WORD.text(name, word, String.join(", ", c.words())));
         }
         double code = program.radioWords().get(word);
         commands.add(() -> ctx.controls[i] = code);
@@ -83,7 +82,7 @@ final class TickInputs {
                 return i;
             }
         }
-        throw new IllegalArgumentException("unknown control '" + name + "'");
+        throw new IllegalArgumentException(Msg.UNKNOWN_CONTROL.text(name));
     }
 
     /**

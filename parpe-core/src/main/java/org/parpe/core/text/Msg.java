@@ -77,6 +77,7 @@ public enum Msg implements Key {
     KIND_RADIO,
     KIND_SENSOR,
     KIND_ACTUATOR,
+    KIND_GAIT_TABLE,
 
     // StateResolver, BehaviorResolver, MainResolver
     ALREADY_DEFINED,
@@ -221,6 +222,13 @@ public enum Msg implements Key {
     PART_BY_HAND,
     WHILE_CLOSING,
 
+    // controls set while running (TickInputs), breakpoints reached (Breakpoints)
+    UNKNOWN_CONTROL,
+    CONTROL_IS_RADIO,
+    CONTROL_RANGE,
+    BREAK_ENTERED,
+    BREAK_EXIT,
+
     // export: CExport, MemoryReport
     EXPORT_NEEDS_MAIN,
     TICK_NOT_POSITIVE,
@@ -261,6 +269,23 @@ public enum Msg implements Key {
     FILE_TOO_LARGE,
     N_BYTES,
     MORE_THAN_BYTES,
+
+    // files written: AtomicFiles, OutputPlan, Output, IoReasons (exception texts, formatted when thrown)
+    FOLDER_IS_FILE,
+    DANGLING_LINK,
+    NAME_TOO_LONG,
+    NO_DIRECTORY,
+    NOT_REPLACEABLE,
+    WRITE_PROTECTED,
+    OTHER_OWNER,
+    CANNOT_WRITE_OUTPUT,
+    NOT_A_VALID_PATH,
+    OUTPUT_NOT_REGULAR,
+    DIRECTORY_NOT_WRITABLE,
+    OUTPUT_IS_INPUT,
+    OUTPUT_TWICE,
+    OUTPUT_EXISTS,
+    OUTPUT_EXISTS_HINT,
 
     // files of the simulator, kits and hardware profiles: FlatXmlFile
     CANNOT_READ_THE,
@@ -412,26 +437,8 @@ public enum Msg implements Key {
     STIMULUS_RADIO_WORD,
     STIMULUS_SLIDER_RANGE,
 
-    // diagram.Layouts: the words the diagrams draw (PARSL's names stay as the file writes them)
-    DIAGRAM_UNTIL_AUTOMATA_END,
-    DIAGRAM_TIME,
-    DIAGRAM_EXIT_WHEN,
-    DIAGRAM_RUNS_ONCE,
-    DIAGRAM_RUNS_FOREVER,
-    DIAGRAM_RUNS_TIMES,
-    DIAGRAM_BEHAVIOR,
-    DIAGRAM_BEHAVIOR_ENTRY,
-    ORDINAL,
-    DIAGRAM_MACRO_GROUP,
-    DIAGRAM_MIRRORED,
-    DIAGRAM_IF,
-    DIAGRAM_AND,
-    DIAGRAM_DRIVES_TWICE,
-    DIAGRAM_ONE_MODULE,
-    DIAGRAM_MODULES,
-    DIAGRAM_GAIT_TITLE,
-    DIAGRAM_MODULE_AXIS,
-    DIAGRAM_MORE_STATES;
+    // the place of an entry in the other languages (Msg.ordinal)
+    ORDINAL;
 
     /** The bundle of these keys. */
     public static final String BUNDLE = "org.parpe.core.text.Messages";
