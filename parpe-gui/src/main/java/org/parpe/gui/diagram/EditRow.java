@@ -50,7 +50,7 @@ final class EditRow {
                 // a name picked from the script's is written at once, as Enter writes a typed one
                 c.addListener(SWT.Selection, e -> write.accept(f, c.getText()));
             } else {
-                tip(field, PanelMsg.DIAGRAM_FIELD_TIP.text(f.name()));
+                tip(field, PanelMsg.DIAGRAM_FIELD_TIP.text(label(f.name())));
             }
             field.addListener(SWT.DefaultSelection, e -> write.accept(f, text(field)));
             if (f.name().equals("angles") && pose != null) {
@@ -115,8 +115,20 @@ final class EditRow {
         return angles.trim();
     }
 
-    /** The input that lists states: a state picked from the chooser is added to the list typed so far. */
+    /**
+     * The input that lists states: a state picked from the chooser is added to the list typed so
+     * far. Its name is the key tests and the completion find it by; its label is in the user's
+     * language ({@link #label}).
+     */
     static final String STATES = "add state";
+
+    /**
+     * What the row writes before input {@code name}: the attribute's name, which is PARSL and
+     * stays English as the file writes it, or for the list of states, words in the user's language.
+     */
+    static String label(String name) {
+        return name.equals(STATES) ? PanelMsg.DIAGRAM_ADD_STATE.text() : name;
+    }
 
     /**
      * The script's names offered by a chooser for input {@code name} (of action {@code action},
@@ -143,7 +155,7 @@ final class EditRow {
         if (items.isEmpty()) {
             return field(row, name, value, names);
         }
-        new Label(row, SWT.NONE).setText(name + ":");
+        new Label(row, SWT.NONE).setText(label(name) + ":");
         Combo c = new Combo(row, SWT.DROP_DOWN);
         c.setItems(items.toArray(String[]::new));
         c.setText(value);
@@ -186,7 +198,7 @@ final class EditRow {
     }
 
     private static Text field(Composite row, String name, String value, NameIndex names) {
-        new Label(row, SWT.NONE).setText(name + ":");
+        new Label(row, SWT.NONE).setText(label(name) + ":");
         Text field = new Text(row, SWT.BORDER | SWT.SINGLE);
         field.setData("field", name);
         field.setText(value);

@@ -6,18 +6,24 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.List;
+import java.util.Locale;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Combo;
+import org.eclipse.swt.widgets.Control;
 import org.eclipse.swt.widgets.Event;
+import org.eclipse.swt.widgets.Label;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.parpe.core.diagram.Scene;
+import org.parpe.core.text.Lang;
 import org.parpe.gui.app.IdeAccess;
 import org.parpe.gui.app.IdeWindow;
 import org.parpe.gui.diagram.Projection.View;
+import org.parpe.gui.text.PanelMsg;
 
 /**
  * Issue 31, item 2: building by diagram needed the script's names typed into free-text fields
@@ -87,6 +93,32 @@ class DiagramPaletteGuiTest {
         assertEquals("raise, stance", d.pane().choosers().get("add state").getText(), "picked states make a list in order");
         d.press("Add automaton", "name", "hop", "times", "1, 1");
         assertTrue(d.text().contains("<hop states=\"raise, stance\" times=\"1, 1\"/>"), d.text());
+    }
+
+    @Test
+    void theStatesInputIsNamedInTheUsersLanguage() {
+        // It read "add state:" in every language: the input's key was shown as its name. The
+        // attributes' names before the other inputs are PARSL and stay as the file writes them.
+        Locale before = Lang.current();
+        try {
+            Lang.use(Locale.GERMAN);
+            d.pane().palette().full(true);
+            d.pane().palette().choose(PanelMsg.PALETTE_AUTOMATON.text());
+            assertEquals("Zustand hinzufügen:", nameBefore(d.pane().choosers().get("add state")));
+            assertEquals("times:", nameBefore(d.pane().fields().get("times")));
+        } finally {
+            Lang.use(before);
+            d.pane().palette().full(true);
+        }
+    }
+
+    /** The text of the label the edit row puts before {@code input}. */
+    private static String nameBefore(Control input) {
+        assertTrue(input != null, "no such input; fields: " + d.pane().fields().keySet() + ", choosers: "
+                + d.pane().choosers().keySet());
+        Control[] row = input.getParent().getChildren();
+        int i = Arrays.asList(row).indexOf(input);
+        return ((Label) row[i - 1]).getText();
     }
 
     @Test

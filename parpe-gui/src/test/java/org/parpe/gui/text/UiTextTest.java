@@ -38,7 +38,7 @@ class UiTextTest {
             "PARPE IDE settings", "PARPE autosave", "handling a UI event",
             // what a crash file says PARPE was doing (English, for the bug report)
             "running a sweep", "playback in the Pose panel",
-            // the edit row's input names (internal keys, not shown), the keys' names as GTK shows them, the user's folder
+            // the edit row's input key for the list of states (its label is EditRow.label), the keys' names as GTK shows them, the user's folder
             "add state", "Up", "Down", "Left", "Right", "Documents", "a file dialog needs a title",
             // comments the Pose panel writes into the student's PARSL file (the file's language is English)
             "recorded in the PARPE IDE's Pose panel from ", " poses of group ", ", recorded in the Pose panel -->\n");
