@@ -74,7 +74,8 @@ public final class Main {
             return 2;
         }
         try {
-            return options.bench() ? Bench.run(display, started) : loop(display, options, prefs);
+            return options.bench() ? Bench.run(display, started, (home, file) -> openWindow(display, new Prefs(home), file, true).automated())
+                    : loop(display, options, prefs);
         } finally {
             display.dispose();
         }
@@ -83,10 +84,16 @@ public final class Main {
     private static int loop(Display display, LaunchOptions options, Prefs prefs) {
         // The installed PARPE copies its examples to the user's own folder on first use.
         org.parpe.gui.files.Examples.folder();
-        IdeWindow ide = new IdeWindow(display, prefs);
-        ide.open(options.file(), options.automated());
-        Automation auto = options.automated() ? Automation.start(ide, options) : null;
+        IdeWindow ide = openWindow(display, prefs, options.file(), options.automated());
+        Automation auto = options.automated() ? Automation.start(ide.automated(), options) : null;
         return dispatch(display, ide, auto);
+    }
+
+    /** A new IDE window, open, with {@code file} in its editor (null: it recovers or starts a new script). */
+    private static IdeWindow openWindow(Display display, Prefs prefs, java.nio.file.Path file, boolean automated) {
+        IdeWindow ide = new IdeWindow(display, prefs);
+        ide.open(file, automated);
+        return ide;
     }
 
     /**
@@ -97,7 +104,7 @@ public final class Main {
      * stays, with its text, to be saved.
      */
     static int dispatch(Display display, IdeWindow ide, Automation auto) {
-        while (!ide.shell().isDisposed()) {
+        while (!ide.closed()) {
             try {
                 if (!display.readAndDispatch()) {
                     display.sleep();
