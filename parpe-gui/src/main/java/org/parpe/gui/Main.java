@@ -2,6 +2,7 @@ package org.parpe.gui;
 
 import org.parpe.gui.automation.LaunchOptions;
 
+import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
 import org.eclipse.swt.SWT;
@@ -74,8 +75,9 @@ public final class Main {
             return 2;
         }
         try {
-            return options.bench() ? Bench.run(display, started, (home, file) -> openWindow(display, new Prefs(home), file, true).automated())
-                    : loop(display, options, prefs);
+            // the benchmark's windows: automated, their settings in a home of its own
+            Bench.Windows windows = (home, file) -> openWindow(display, new Prefs(home), file, true).automated();
+            return options.bench() ? Bench.run(display, started, windows) : loop(display, options, prefs);
         } finally {
             display.dispose();
         }
@@ -90,7 +92,7 @@ public final class Main {
     }
 
     /** A new IDE window, open, with {@code file} in its editor (null: it recovers or starts a new script). */
-    private static IdeWindow openWindow(Display display, Prefs prefs, java.nio.file.Path file, boolean automated) {
+    private static IdeWindow openWindow(Display display, Prefs prefs, Path file, boolean automated) {
         IdeWindow ide = new IdeWindow(display, prefs);
         ide.open(file, automated);
         return ide;
