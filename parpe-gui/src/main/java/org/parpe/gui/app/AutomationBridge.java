@@ -65,7 +65,7 @@ final class AutomationBridge implements BenchHost {
 
     @Override
     public boolean showScriptPoses() {
-        ide.showPosePanel();
+        ide.bottom().showPose();
         ide.pose().pollNow();
         return ide.pose().loadFromScript();
     }

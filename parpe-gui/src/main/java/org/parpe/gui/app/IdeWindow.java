@@ -328,11 +328,6 @@ public final class IdeWindow {
         bottom.showRunDiagnostics(diagnostics);
     }
 
-    /** Brings the Pose panel to the front. */
-    void showPosePanel() {
-        bottom.showPose();
-    }
-
     /** Opens a module camera window on the run, looking from the script's last module. */
     ModuleCameraWindow openModuleCamera() {
         Program p = program();

@@ -254,7 +254,7 @@ public final class IdeAccess {
 
     /** Brings the Pose panel to the front. */
     public static void showPosePanel(IdeWindow ide) {
-        ide.showPosePanel();
+        ide.bottom().showPose();
     }
 
     /** The Robot tab beside the 3D view. */
