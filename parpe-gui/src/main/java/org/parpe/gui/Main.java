@@ -2,6 +2,7 @@ package org.parpe.gui;
 
 import org.parpe.gui.automation.LaunchOptions;
 
+import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
 import org.eclipse.swt.SWT;
@@ -74,7 +75,9 @@ public final class Main {
             return 2;
         }
         try {
-            return options.bench() ? Bench.run(display, started) : loop(display, options, prefs);
+            // the benchmark's windows: automated, their settings in a home of its own
+            Bench.Windows windows = (home, file) -> openWindow(display, new Prefs(home), file, true).automated();
+            return options.bench() ? Bench.run(display, started, windows) : loop(display, options, prefs);
         } finally {
             display.dispose();
         }
@@ -83,10 +86,16 @@ public final class Main {
     private static int loop(Display display, LaunchOptions options, Prefs prefs) {
         // The installed PARPE copies its examples to the user's own folder on first use.
         org.parpe.gui.files.Examples.folder();
-        IdeWindow ide = new IdeWindow(display, prefs);
-        ide.open(options.file(), options.automated());
-        Automation auto = options.automated() ? Automation.start(ide, options) : null;
+        IdeWindow ide = openWindow(display, prefs, options.file(), options.automated());
+        Automation auto = options.automated() ? Automation.start(ide.automated(), options) : null;
         return dispatch(display, ide, auto);
+    }
+
+    /** A new IDE window, open, with {@code file} in its editor (null: it recovers or starts a new script). */
+    private static IdeWindow openWindow(Display display, Prefs prefs, Path file, boolean automated) {
+        IdeWindow ide = new IdeWindow(display, prefs);
+        ide.open(file, automated);
+        return ide;
     }
 
     /**
@@ -97,7 +106,7 @@ public final class Main {
      * stays, with its text, to be saved.
      */
     static int dispatch(Display display, IdeWindow ide, Automation auto) {
-        while (!ide.shell().isDisposed()) {
+        while (!ide.closed()) {
             try {
                 if (!display.readAndDispatch()) {
                     display.sleep();

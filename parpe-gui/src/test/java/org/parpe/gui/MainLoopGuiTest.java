@@ -33,17 +33,17 @@ class MainLoopGuiTest {
         IdeWindow ide = IdeAccess.openIde(Files.createTempDirectory("parpe-loop"));
         try {
             IdeAccess.open(ide, Gui.example("hello-snake.xml"));
-            String text = ide.editor().document().get();
+            String text = IdeAccess.editor(ide).document().get();
             AtomicReference<RunOutcome> outcome = new AtomicReference<>();
             IdeAccess.run(ide, RunOn.SIMULATOR, -1, outcome::set);
             IdeAccess.pump(() -> IdeAccess.running(ide) && IdeAccess.controller(ide).status() != null, "the run to start");
             Path crashes = Prefs.defaultHome().resolve("crash");
             List<Path> before = list(crashes);
 
-            Display d = ide.shell().getDisplay();
+            Display d = IdeAccess.shell(ide).getDisplay();
             // A listener that links a missing class, as jface.text's double-click did: the Error
             // comes out of readAndDispatch as it is (asyncExec would wrap it in an SWTException).
-            var editor = ide.editor().widget();
+            var editor = IdeAccess.editor(ide).widget();
             boolean[] thrown = new boolean[1];
             editor.addListener(SWT.Paint, e -> {
                 if (!thrown[0]) {
@@ -57,10 +57,10 @@ class MainLoopGuiTest {
             long until = System.currentTimeMillis() + 30_000;
             Runnable[] watch = new Runnable[1];
             watch[0] = () -> {
-                aliveAfter[0] = !ide.shell().isDisposed();
+                aliveAfter[0] = !IdeAccess.shell(ide).isDisposed();
                 if (outcome.get() != null || System.currentTimeMillis() > until) {
                     logAfter[0] = IdeAccess.runLog(ide);
-                    ide.shell().dispose();
+                    IdeAccess.shell(ide).dispose();
                 } else {
                     d.timerExec(50, watch[0]);
                 }
@@ -77,7 +77,7 @@ class MainLoopGuiTest {
             assertEquals(1, after.size(), "crash files written: " + after);
             String crash = Files.readString(after.get(0));
             assertTrue(crash.contains("java.lang.NoClassDefFoundError: com/ibm/icu/text/BreakIterator"), crash);
-            assertEquals(text, ide.editor().document().get(), "the text changed");
+            assertEquals(text, IdeAccess.editor(ide).document().get(), "the text changed");
             String log = logAfter[0];
             assertTrue(log.contains("please attach " + after.get(0)), "the Run log does not name the crash file: " + log);
             assertTrue(log.contains("EMERGENCY STOP"), log);

@@ -16,6 +16,7 @@ import org.eclipse.swt.widgets.Shell;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.diag.SourcePos;
 import org.parpe.core.model.Program;
+import org.parpe.gui.automation.BenchHost;
 import org.parpe.gui.diagram.DiagramPane;
 import org.parpe.gui.editor.ParslEditor;
 import org.parpe.gui.editor.ScriptDocument;
@@ -327,20 +328,25 @@ public final class IdeWindow {
         bottom.showRunDiagnostics(diagnostics);
     }
 
-    /** Brings the Pose panel to the front. */
-    public void showPosePanel() {
-        bottom.showPose();
-    }
-
     /** Opens a module camera window on the run, looking from the script's last module. */
     ModuleCameraWindow openModuleCamera() {
         Program p = program();
         return ModuleCameraWindow.open(shell, runs::snapshot, p != null ? p.moduleIds() : new int[0]);
     }
 
-    // What the window's parts, the bridges and the automation reach: the parts themselves.
+    /** Whether the window has closed (the event loop of {@code Main} runs until it has). */
+    public boolean closed() {
+        return shell.isDisposed();
+    }
 
-    public Shell shell() {
+    /** The window as the command line's automation and the IDE benchmark drive it. */
+    public BenchHost automated() {
+        return new AutomationBridge(this);
+    }
+
+    // What the window's parts and the bridges reach (tests of other packages: IdeAccess): the parts themselves.
+
+    Shell shell() {
         return shell;
     }
 
@@ -348,7 +354,7 @@ public final class IdeWindow {
         return prefs;
     }
 
-    public ParslEditor editor() {
+    ParslEditor editor() {
         return editor;
     }
 
@@ -358,28 +364,28 @@ public final class IdeWindow {
     }
 
     /** The Diagram pane beside the 3D view. */
-    public DiagramPane diagram() {
+    DiagramPane diagram() {
         return diagram;
     }
 
     /** The gait-table grid beside the editor. */
-    public GridPane grid() {
+    GridPane grid() {
         return gaitGrid;
     }
 
-    public FileActions files() {
+    FileActions files() {
         return files;
     }
 
-    public RunActions runs() {
+    RunActions runs() {
         return runs;
     }
 
-    public StatusBar status() {
+    StatusBar status() {
         return status;
     }
 
-    public RunToolBar toolbar() {
+    RunToolBar toolbar() {
         return toolbar;
     }
 
@@ -391,7 +397,7 @@ public final class IdeWindow {
         return outline;
     }
 
-    public ProblemsView problems() {
+    ProblemsView problems() {
         return bottom.problems();
     }
 
@@ -399,31 +405,31 @@ public final class IdeWindow {
         return plots;
     }
 
-    public View3D view() {
+    View3D view() {
         return view;
     }
 
-    public ViewBar viewBar() {
+    ViewBar viewBar() {
         return viewBar;
     }
 
     /** The Pose panel. */
-    public PosePanel pose() {
+    PosePanel pose() {
         return pose;
     }
 
     /** The Robot tab beside the 3D view. */
-    public RobotTab robotTab() {
+    RobotTab robotTab() {
         return robotTab;
     }
 
     /** The last program that loaded, or null. */
-    public Program program() {
+    Program program() {
         return checks.program();
     }
 
     /** How many validation results have been shown (automation waits for the first). */
-    public int validations() {
+    int validations() {
         return checks.validations();
     }
 

@@ -1,14 +1,12 @@
 package org.parpe.gui.automation;
 
 import org.parpe.gui.text.UiMsg;
-import org.parpe.gui.app.IdeWindow;
 
 import java.io.IOException;
 import org.eclipse.swt.widgets.Display;
 import org.parpe.core.diag.Diagnostic;
 import org.parpe.core.run.RunOutcome;
 import org.parpe.gui.run.Speed;
-import org.parpe.gui.run.RunOn;
 
 /**
  * What {@code --run-for}, {@code --screenshot} and {@code --exit} do once the window is up:
@@ -26,21 +24,21 @@ public final class Automation {
     /** The system property naming the file for the menu bar's texts. */
     public static final String MENUS = "parpe.menus";
 
-    private final IdeWindow ide;
+    private final AutomationHost ide;
     private final LaunchOptions options;
     private final Display display;
     private int exitCode;
     private boolean done;
     private boolean posePanelShown;
 
-    private Automation(IdeWindow ide, LaunchOptions options) {
+    private Automation(AutomationHost ide, LaunchOptions options) {
         this.ide = ide;
         this.options = options;
-        this.display = ide.shell().getDisplay();
+        this.display = ide.display();
     }
 
     /** Starts the automation for {@code ide}. */
-    public static Automation start(IdeWindow ide, LaunchOptions options) {
+    public static Automation start(AutomationHost ide, LaunchOptions options) {
         Automation a = new Automation(ide, options);
         a.waitForLoad(0);
         return a;
@@ -59,7 +57,7 @@ public final class Automation {
 
     private void later(int ms, Runnable r) {
         display.timerExec(ms, () -> {
-            if (!ide.shell().isDisposed()) {
+            if (!ide.closed()) {
                 r.run();
             }
         });
@@ -78,17 +76,15 @@ public final class Automation {
             showGrid(options.grid());
         }
         if (options.runFor() >= 0) {
-            if (ide.program() == null || ide.problems().errorCount() > 0) {
-                for (Diagnostic d : ide.problems().shown()) {
+            if (!ide.runnable()) {
+                for (Diagnostic d : ide.problems()) {
                     System.err.println(d.format());
                 }
                 fail(UiMsg.AUTO_SCRIPT_ERRORS.text());
                 later(SETTLE_MS, this::shoot);
                 return;
             }
-            ide.toolbar().setTarget(RunOn.SIMULATOR);
-            ide.toolbar().setSpeed(Speed.MAX);
-            ide.runs().run(false, options.runFor(), this::ran);
+            ide.runInSimulator(Speed.MAX, options.runFor(), this::ran);
             watchdog();
         } else {
             later(SETTLE_MS * 2, this::shoot);
@@ -101,45 +97,38 @@ public final class Automation {
      */
     private void showPosePanel(int waited) {
         if (waited == 0) {
-            ide.showPosePanel();
-            ide.pose().pollNow();
-            if (!ide.pose().loadFromScript()) {
-                System.err.println("parpe gui: " + ide.status().message());
+            if (!ide.showScriptPoses()) {
+                System.err.println("parpe gui: " + ide.statusMessage());
             }
         }
-        if (!ide.pose().posingReady() && waited < LOAD_TIMEOUT_MS) {
+        if (!ide.posingReady() && waited < LOAD_TIMEOUT_MS) {
             later(POLL_MS, () -> showPosePanel(waited + POLL_MS));
             return;
         }
         posePanelShown = true;
         // The joints take a moment to reach the pose; then the camera goes close to the posed group.
         later(SETTLE_MS * 3, () -> {
-            if (ide.view().focus(ide.pose().posedModules())) {
-                ide.viewBar().trackRobot(false);
-            }
+            ide.focusOnPosedModules();
             later(SETTLE_MS, () -> waitForLoad(LOAD_TIMEOUT_MS));
         });
     }
 
     /** {@code --grid NAME}: the grid editor on gait table NAME, every module cell selected. */
     private void showGrid(String name) {
-        var grid = ide.grid();
-        if (!grid.showTable(name)) {
-            fail(UiMsg.AUTO_NO_GAIT_TABLE.text(name, ide.files().name(),
-                    grid.table() == null ? UiMsg.AUTO_HAS_NONE.text() : UiMsg.AUTO_FIRST_IS.text(grid.table().name())));
-            return;
+        if (!ide.selectGaitTable(name)) {
+            String shown = ide.gaitTableShown();
+            fail(UiMsg.AUTO_NO_GAIT_TABLE.text(name, ide.fileName(),
+                    shown == null ? UiMsg.AUTO_HAS_NONE.text() : UiMsg.AUTO_FIRST_IS.text(shown)));
         }
-        // Focus (and the entry selected in the text) on the first cell, the selection to the last.
-        grid.select(grid.table().rows().size() - 1, Math.max(1, grid.table().width()), 0, 1);
     }
 
     /** Stops a run that takes far longer than it should (a stuck plant) so that --exit always exits. */
     private void watchdog() {
         int limitMs = (int) Math.min(Integer.MAX_VALUE, 120_000 + options.runFor() * 10_000);
         later(limitMs, () -> {
-            if (!done && ide.runs().running()) {
+            if (!done && ide.running()) {
                 fail(UiMsg.AUTO_RUN_TOO_LONG.text(limitMs / 1000));
-                ide.runs().stop();
+                ide.stop();
             }
         });
     }
@@ -148,7 +137,7 @@ public final class Automation {
         if (outcome.status() == RunOutcome.Status.ERROR) {
             fail(UiMsg.AUTO_RUN_FAILED.text(outcome.message()));
         } else {
-            System.out.println("parpe gui: " + UiMsg.AUTO_RAN.text(ide.files().name(),
+            System.out.println("parpe gui: " + UiMsg.AUTO_RAN.text(ide.fileName(),
                     String.format(java.util.Locale.ROOT, "%.2f", outcome.time())));
         }
         later(SETTLE_MS, this::shoot);
@@ -161,7 +150,7 @@ public final class Automation {
         done = true;
         if (options.screenshot() != null) {
             try {
-                Screenshot.save(ide.shell(), options.screenshot());
+                ide.screenshot(options.screenshot());
                 System.out.println("parpe gui: " + UiMsg.AUTO_SCREENSHOT_SAVED.text(options.screenshot()));
             } catch (IOException e) {
                 System.err.println("parpe gui: error: " + e.getMessage());
@@ -173,16 +162,15 @@ public final class Automation {
             writeMenus(java.nio.file.Path.of(menus));
         }
         if (options.exit()) {
-            ide.files().autosaveNow();
-            ide.shell().dispose();
+            ide.close();
         }
     }
 
     /** The menu bar's texts, one a line, to {@code file} (the install test's view of the IDE's language). */
     private void writeMenus(java.nio.file.Path file) {
         StringBuilder texts = new StringBuilder();
-        for (org.eclipse.swt.widgets.MenuItem item : ide.shell().getMenuBar().getItems()) {
-            texts.append(item.getText().replace("&", "")).append('\n');
+        for (String title : ide.menuTitles()) {
+            texts.append(title.replace("&", "")).append('\n');
         }
         try {
             java.nio.file.Files.writeString(file, texts, java.nio.charset.StandardCharsets.UTF_8);

@@ -1,8 +1,6 @@
 package org.parpe.gui.automation;
 
 import org.parpe.gui.text.UiMsg;
-import org.parpe.gui.app.IdeWindow;
-import org.parpe.gui.prefs.Prefs;
 import org.parpe.gui.files.Examples;
 
 import java.lang.management.ManagementFactory;
@@ -34,8 +32,18 @@ public final class Bench {
     private Bench() {
     }
 
-    /** Runs the benchmark; {@code mainStarted} is {@link System#nanoTime()} at the start of main. */
-    public static int run(Display display, long mainStarted) {
+    /** How the benchmark gets its window: the IDE's, automated, with {@code file} open (null: a new script). */
+    @FunctionalInterface
+    public interface Windows {
+        /** Opens a window with its settings in {@code home}. */
+        BenchHost open(Path home, Path file);
+    }
+
+    /**
+     * Runs the benchmark on a window of {@code windows}; {@code mainStarted} is
+     * {@link System#nanoTime()} at the start of main.
+     */
+    public static int run(Display display, long mainStarted, Windows windows) {
         Path home;
         try {
             home = Files.createTempDirectory("parpe-bench");
@@ -43,9 +51,8 @@ public final class Bench {
             System.err.println("parpe gui: error: " + UiMsg.BENCH_NO_TEMP.text(e.getMessage()));
             return 2;
         }
-        IdeWindow ide = new IdeWindow(display, new Prefs(home));
         Path example = Examples.folder() == null ? null : Examples.folder().resolve("hello-snake.xml");
-        ide.open(example != null && Files.isRegularFile(example) ? example : null, true);
+        BenchHost ide = windows.open(home, example != null && Files.isRegularFile(example) ? example : null);
         while (display.readAndDispatch()) {
             // The first paint of every widget.
         }
@@ -78,7 +85,7 @@ public final class Bench {
         view.setShowIds(true);
         print("fps_centipede_with_ids", fps(display, view));
         print("render_ms_centipede_with_ids", renderMs(display, view, c.getSize().x, c.getSize().y));
-        ide.shell().setBounds(display.getPrimaryMonitor().getClientArea());
+        ide.fillScreen();
         drain(display);
         print("view_fullscreen_width_px", c.getSize().x);
         print("view_fullscreen_height_px", c.getSize().y);
@@ -91,7 +98,7 @@ public final class Bench {
             System.err.println("parpe gui: error: " + UiMsg.BENCH_NO_LARGE_SCRIPT.text(e.getMessage()));
             return 2;
         }
-        ide.shell().dispose();
+        ide.close();
         return 0;
     }
 
@@ -114,7 +121,7 @@ public final class Bench {
      * Opens a generated 10 MB script: time until it is in the editor and until it is validated,
      * the longest time the UI thread handled no event meanwhile, and the heap afterwards.
      */
-    private static void openLarge(Display display, IdeWindow ide, Path home) throws java.io.IOException {
+    private static void openLarge(Display display, BenchHost ide, Path home) throws java.io.IOException {
         Path big = home.resolve("large-10mb.xml");
         Files.writeString(big, largeScript(10 << 20));
         int before = ide.validations();
@@ -128,8 +135,8 @@ public final class Bench {
         };
         long t0 = System.nanoTime();
         display.timerExec(5, tick[0]);
-        ide.files().openPath(big);
-        while (ide.files().reading() && !ide.shell().isDisposed()) {
+        ide.open(big);
+        while (ide.reading() && !ide.closed()) {
             step(display);
         }
         long shown = System.nanoTime();

@@ -7,9 +7,9 @@ import java.util.Arrays;
 import java.util.Locale;
 import org.eclipse.swt.widgets.Display;
 import org.parpe.core.run.JointSink;
-import org.parpe.gui.app.IdeWindow;
 import org.parpe.gui.diagram.DiagramPane;
 import org.parpe.gui.files.Examples;
+import org.parpe.gui.run.Speed;
 
 /**
  * The live diagram part of {@code parpe gui --bench}: the centipede walk
@@ -27,27 +27,25 @@ final class LiveDiagramBench {
     private LiveDiagramBench() {
     }
 
-    static void run(Display display, IdeWindow ide) {
+    static void run(Display display, BenchHost ide) {
         Path script = Examples.folder() == null ? null : Examples.folder().resolve("centipede-walk.xml");
         if (script == null || !Files.isRegularFile(script)) {
             System.err.println("parpe gui: warning: " + UiMsg.BENCH_NO_CENTIPEDE_WALK.text());
             return;
         }
-        ide.files().openPath(script);
-        while (ide.files().reading()) {
+        ide.open(script);
+        while (ide.reading()) {
             step(display);
         }
         DiagramPane pane = ide.diagram();
         pane.showTab();
-        ide.toolbar().setTarget(org.parpe.gui.run.RunOn.SIMULATOR);
-        ide.toolbar().setSpeed(org.parpe.gui.run.Speed.REAL_TIME);
         measure(display, ide, pane, "program", "PROGRAM");
         measure(display, ide, pane, "ring", "RING");
         measure(display, ide, pane, "lanes", "LANES");
         measure(display, ide, pane, "gait", "GAIT");
     }
 
-    private static void measure(Display display, IdeWindow ide, DiagramPane pane, String name, String view) {
+    private static void measure(Display display, BenchHost ide, DiagramPane pane, String name, String view) {
         pane.showView(view);
         long until = System.nanoTime() + 30_000_000_000L;
         while ((!pane.current() || !pane.viewShown().equals(view)) && System.nanoTime() < until) {
@@ -55,13 +53,13 @@ final class LiveDiagramBench {
         }
         int ticks = (int) Math.round(SECONDS / 0.01) + 1;
         long[] at = new long[ticks];
-        ide.runs().controller().observeRuns((JointSink) (tick, time, commanded) -> {
+        ide.observeRuns((JointSink) (tick, time, commanded) -> {
             if (tick < ticks) {
                 at[(int) tick] = System.nanoTime();
             }
         });
         boolean[] done = {false};
-        ide.runs().run(false, SECONDS, o -> done[0] = true);
+        ide.runInSimulator(Speed.REAL_TIME, SECONDS, o -> done[0] = true);
         // from the first tick on
         while (at[0] == 0 && !done[0]) {
             step(display);
@@ -80,7 +78,7 @@ final class LiveDiagramBench {
             }
         }
         double s = (System.nanoTime() - t0) / 1e9;
-        ide.runs().controller().observeRuns(null);
+        ide.observeRuns(null);
         double[] late = lateness(at);
         int n = late.length;
         print("live_" + name + "_overlay_frames_per_s", frames / s);
@@ -119,8 +117,8 @@ final class LiveDiagramBench {
     }
 
     /** The UI thread's cost of one overlay frame: marks made and the canvas painted. */
-    private static void frameCost(IdeWindow ide, DiagramPane pane, String name) {
-        var last = ide.runs().controller().live().since(-1);
+    private static void frameCost(BenchHost ide, DiagramPane pane, String name) {
+        var last = ide.live().since(-1);
         if (last == null || last.tick() < 0) {
             return;
         }

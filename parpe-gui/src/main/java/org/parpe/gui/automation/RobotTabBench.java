@@ -6,7 +6,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import org.eclipse.swt.widgets.Canvas;
 import org.eclipse.swt.widgets.Display;
-import org.parpe.gui.app.IdeWindow;
 import org.parpe.gui.robot.RobotTab;
 import org.parpe.sim.build.RobotDraft;
 
@@ -26,7 +25,7 @@ final class RobotTabBench {
     private RobotTabBench() {
     }
 
-    static void run(Display display, IdeWindow ide, Path home) {
+    static void run(Display display, BenchHost ide, Path home) {
         Path file = home.resolve("snake200-robot.xml");
         try {
             Files.writeString(file, RobotDraft.fromGenerator(file.toString(), "snake:n=200").text());
@@ -37,8 +36,8 @@ final class RobotTabBench {
         RobotTab tab = ide.robotTab();
         tab.showTab();
         int before = ide.validations();
-        ide.files().openPath(file);
-        while ((ide.files().reading() || ide.validations() == before) && !ide.shell().isDisposed()) {
+        ide.open(file);
+        while ((ide.reading() || ide.validations() == before) && !ide.closed()) {
             step(display);
         }
         Canvas c = tab.view().control();

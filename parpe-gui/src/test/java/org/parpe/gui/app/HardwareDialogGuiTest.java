@@ -104,7 +104,7 @@ class HardwareDialogGuiTest {
                     })) {
             assertTrue(emu.backDrive(3, 25));
             // Posing by hand with the dialog open: the Pose panel is shown.
-            ide.showPosePanel();
+            ide.bottom().showPose();
             Gui.settle();
             HardwareDialog d = HardwareDialog.open(ide.hardware());
             assertTrue(d == HardwareDialog.open(ide.hardware()), "a second Run > Hardware… brings the same dialog");

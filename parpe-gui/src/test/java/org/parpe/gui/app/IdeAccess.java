@@ -4,13 +4,26 @@ import java.nio.file.Path;
 import java.util.function.BooleanSupplier;
 import java.util.function.Consumer;
 import org.eclipse.swt.widgets.Shell;
+import org.parpe.core.model.Program;
 import org.parpe.core.run.RunOutcome;
+import org.parpe.gui.diagram.DiagramPane;
+import org.parpe.gui.editor.ParslEditor;
 import org.parpe.gui.files.Examples;
+import org.parpe.gui.files.FileActions;
+import org.parpe.gui.grid.GridPane;
 import org.parpe.gui.hardware.HardwareDialog;
 import org.parpe.gui.help.TutorialWindow;
+import org.parpe.gui.panels.ProblemsView;
+import org.parpe.gui.pose.PosePanel;
+import org.parpe.gui.robot.RobotTab;
 import org.parpe.gui.run.RunOn;
+import org.parpe.gui.view3d.View3D;
 
-/** {@link Gui}'s helpers and the window's package-private parts, for GUI tests of other packages. */
+/**
+ * {@link Gui}'s helpers and the window's package-private parts, for GUI tests of other packages:
+ * the one way they reach the window's parts (issue 32, item 2: the window has no public getter;
+ * the main code of other packages reaches it through its host interfaces).
+ */
 public final class IdeAccess {
     private IdeAccess() {
     }
@@ -183,5 +196,79 @@ public final class IdeAccess {
     /** The IDE's run controller (its breakpoints, its pause, the engine of the run). */
     public static org.parpe.gui.run.RunController controller(IdeWindow ide) {
         return ide.runs().controller();
+    }
+
+    // The window's parts (IdeWindow's package-private getters).
+
+    public static Shell shell(IdeWindow ide) {
+        return ide.shell();
+    }
+
+    public static ParslEditor editor(IdeWindow ide) {
+        return ide.editor();
+    }
+
+    /** The Diagram pane beside the 3D view. */
+    public static DiagramPane diagram(IdeWindow ide) {
+        return ide.diagram();
+    }
+
+    /** The gait-table grid beside the editor. */
+    public static GridPane grid(IdeWindow ide) {
+        return ide.grid();
+    }
+
+    public static FileActions files(IdeWindow ide) {
+        return ide.files();
+    }
+
+    public static RunActions runs(IdeWindow ide) {
+        return ide.runs();
+    }
+
+    /** The status bar ({@link #status} is its message). */
+    public static StatusBar statusBar(IdeWindow ide) {
+        return ide.status();
+    }
+
+    public static RunToolBar toolbar(IdeWindow ide) {
+        return ide.toolbar();
+    }
+
+    public static ProblemsView problems(IdeWindow ide) {
+        return ide.problems();
+    }
+
+    public static View3D view(IdeWindow ide) {
+        return ide.view();
+    }
+
+    public static ViewBar viewBar(IdeWindow ide) {
+        return ide.viewBar();
+    }
+
+    /** The Pose panel. */
+    public static PosePanel pose(IdeWindow ide) {
+        return ide.pose();
+    }
+
+    /** Brings the Pose panel to the front. */
+    public static void showPosePanel(IdeWindow ide) {
+        ide.bottom().showPose();
+    }
+
+    /** The Robot tab beside the 3D view. */
+    public static RobotTab robotTab(IdeWindow ide) {
+        return ide.robotTab();
+    }
+
+    /** The last program that loaded, or null. */
+    public static Program program(IdeWindow ide) {
+        return ide.program();
+    }
+
+    /** How many validation results have been shown. */
+    public static int validations(IdeWindow ide) {
+        return ide.validations();
     }
 }

@@ -33,7 +33,7 @@ class OneLoadPerEditGuiTest {
         Files.copy(Gui.example("hello-snake.xml"), copy);
         ide = Gui.openIde(home, 1366, 768);
         Gui.open(ide, copy);
-        ide.showPosePanel();
+        ide.bottom().showPose();
         DiagramPane pane = ide.diagram();
         pane.showTab();
         Gui.pump(() -> pane.current() && ide.program() != null, "the first diagram and the loaded script");

@@ -70,7 +70,7 @@ class PanelsInLanguageGuiTest {
             Gui.settle();
             List<List<String>> want = expected(language);
 
-            ide.showPosePanel();
+            ide.bottom().showPose();
             Gui.settle();
             has(texts(ide.pose().control()), want.get(0), "the Pose panel");
 

@@ -24,7 +24,7 @@ class MenusFileGuiTest {
         Path menus = dir.resolve("menus.txt");
         System.setProperty(Automation.MENUS, menus.toString());
         try {
-            Automation.start(ide, LaunchOptions.parse(List.of("../examples/tutorial/03-hello-snake.xml", "--screenshot",
+            Automation.start(ide.automated(), LaunchOptions.parse(List.of("../examples/tutorial/03-hello-snake.xml", "--screenshot",
                     dir.resolve("ide.png").toString())));
             Gui.pump(() -> Files.exists(menus), "the menus file", 30_000);
             List<String> texts = Files.readAllLines(menus, StandardCharsets.UTF_8);

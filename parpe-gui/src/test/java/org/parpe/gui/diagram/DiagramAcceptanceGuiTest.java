@@ -51,7 +51,7 @@ class DiagramAcceptanceGuiTest {
 
     /** File → New from the menu bar, as a click on it does. */
     private static void fileNew() {
-        for (MenuItem top : ide.shell().getMenuBar().getItems()) {
+        for (MenuItem top : IdeAccess.shell(ide).getMenuBar().getItems()) {
             if (top.getText().replace("&", "").equals("File")) {
                 for (MenuItem item : top.getMenu().getItems()) {
                     if (item.getText().replace("&", "").startsWith("New")) {
@@ -103,7 +103,7 @@ class DiagramAcceptanceGuiTest {
         String built = d.text();
         Path f = Path.of("hello-snake.xml");
         assertEquals(trace(f, example("hello-snake.xml"), 6), trace(f, built, 6), "the snake's trace:\n" + built);
-        IdeAccess.screenshot(ide.shell(), "diagram-built-fig3-snake.png");
+        IdeAccess.screenshot(IdeAccess.shell(ide), "diagram-built-fig3-snake.png");
         d.show(View.LANES, "simpleWave");
         d.bar("<wave group=\"group1\"");
         d.press("Expand to gait table", "table", "waveTable");
@@ -161,7 +161,7 @@ class DiagramAcceptanceGuiTest {
         String built = d.text();
         Path f = Path.of("centipede-walk.xml");
         assertEquals(trace(f, example("centipede-walk.xml"), 6), trace(f, built, 6), "the centipede's trace:\n" + built);
-        IdeAccess.screenshot(ide.shell(), "diagram-built-centipede.png");
+        IdeAccess.screenshot(IdeAccess.shell(ide), "diagram-built-centipede.png");
     }
 
     @Test
@@ -184,6 +184,6 @@ class DiagramAcceptanceGuiTest {
         Path f = Path.of("wheel.xml");
         assertEquals(trace(f, example("wheel.xml"), 6), trace(f, built, 6), "the wheel's trace:\n" + built);
         assertNotEquals(trace(f, template, 6), trace(f, built, 6), "the comparison sees the difference the edits make");
-        IdeAccess.screenshot(ide.shell(), "diagram-built-fig7-wheel.png");
+        IdeAccess.screenshot(IdeAccess.shell(ide), "diagram-built-fig7-wheel.png");
     }
 }

@@ -43,9 +43,9 @@ class DiagramBesideTableGuiTest {
         Path copy = Files.createDirectories(home.resolve("scripts")).resolve("gait-table-12.xml");
         Files.copy(Path.of(System.getProperty("parpe.examples", "../examples"), "gait-table-12.xml"), copy);
         ide = IdeAccess.openIde(home);
-        ide.shell().setBounds(0, 0, 1366, 768);
+        IdeAccess.shell(ide).setBounds(0, 0, 1366, 768);
         IdeAccess.dontSave(ide);
-        DiagramPane pane = ide.diagram();
+        DiagramPane pane = IdeAccess.diagram(ide);
         if (tabFirst) {
             assertEquals("Diagram", pane.showTab());
         }
@@ -53,7 +53,7 @@ class DiagramBesideTableGuiTest {
         if (!tabFirst) {
             assertEquals("Diagram", pane.showTab());
         }
-        IdeAccess.pump(() -> pane.current() && ide.program() != null && ide.grid().visible(),
+        IdeAccess.pump(() -> pane.current() && IdeAccess.program(ide) != null && IdeAccess.grid(ide).visible(),
                 "the diagram, the loaded script and its gait table in the grid");
         IdeAccess.settle();
         return pane;
@@ -61,7 +61,7 @@ class DiagramBesideTableGuiTest {
 
     /** The Diagram tab keeps at least its share (the larger part of the window), and the drawing half of the tab. */
     private void keepsItsShare(DiagramPane pane) {
-        int window = ide.shell().getClientArea().width;
+        int window = IdeAccess.shell(ide).getClientArea().width;
         int tab = pane.control().getSize().x;
         assertTrue(2 * tab >= window, "the Diagram tab is " + tab + " px wide of the window's " + window);
         DiagramWindow.canvasHasHalfTheTab(ide);
@@ -147,15 +147,15 @@ class DiagramBesideTableGuiTest {
         DiagramWindow.Opened o = DiagramWindow.open(Files.createTempDirectory("parpe-diagram-add-table"));
         ide = o.ide();
         IdeAccess.dontSave(ide);
-        DiagramPane pane = ide.diagram();
+        DiagramPane pane = IdeAccess.diagram(ide);
         DiagramDriver d = new DiagramDriver(ide);
-        assertTrue(!ide.grid().visible(), "the centipede walk has no gait table");
+        assertTrue(!IdeAccess.grid(ide).visible(), "the centipede walk has no gait table");
         pane.palette().choose("Gait table");
         IdeAccess.settle();
         Rectangle canvas = onScreen(pane.canvas());
         Rectangle tab = onScreen(pane.control());
         addTable(d, "wave", 2);
-        IdeAccess.pump(() -> ide.grid().visible(), "the grid to show the new table");
+        IdeAccess.pump(() -> IdeAccess.grid(ide).visible(), "the grid to show the new table");
         IdeAccess.settle();
         assertEquals(tab, onScreen(pane.control()), "the Diagram tab after the grid opened");
         assertEquals(canvas, onScreen(pane.canvas()), "the drawing after the grid opened");

@@ -30,7 +30,7 @@ final class DiagramDriver {
     /** Opens the IDE at 1366×768 with its settings in a new folder named from {@code prefix}, never asking to save. */
     static DiagramDriver open(String prefix) throws java.io.IOException {
         IdeWindow ide = IdeAccess.openIde(java.nio.file.Files.createTempDirectory(prefix));
-        ide.shell().setSize(1366, 768);
+        IdeAccess.shell(ide).setSize(1366, 768);
         IdeAccess.dontSave(ide);
         return new DiagramDriver(ide);
     }
@@ -40,11 +40,11 @@ final class DiagramDriver {
     }
 
     DiagramPane pane() {
-        return ide.diagram();
+        return IdeAccess.diagram(ide);
     }
 
     String text() {
-        return ide.editor().document().get();
+        return IdeAccess.editor(ide).document().get();
     }
 
     /** Brings the Diagram tab to the front and waits for its first drawing. */

@@ -46,7 +46,7 @@ class DiagramEditingGuiTest {
         Files.copy(Path.of(System.getProperty("parpe.examples", "../examples"), "centipede-walk.xml"), copy);
         original = Files.readString(copy);
         ide = IdeAccess.openIde(home);
-        ide.shell().setSize(1366, 768);
+        IdeAccess.shell(ide).setSize(1366, 768);
         IdeAccess.open(ide, copy);
         d = new DiagramDriver(ide);
         d.front();
@@ -63,7 +63,7 @@ class DiagramEditingGuiTest {
     }
 
     private static void undo(String what) {
-        ide.editor().run(ITextOperationTarget.UNDO);
+        IdeAccess.editor(ide).run(ITextOperationTarget.UNDO);
         assertEquals(original, d.text(), "one Undo takes back " + what + " byte for byte");
         d.caughtUp();
     }
@@ -139,8 +139,8 @@ class DiagramEditingGuiTest {
         String t = d.text();
         assertTrue(t.contains("<liftTable  group=\"rightLift\"  offset=\"0\" phase=\"0\" period=\"3\"/>"), t);
         assertTrue(t.contains("<step  states=\"raise, lower, stance\" times=\"0.5, 0.5, 2\"/>\n    <liftTable times=\""), t);
-        IdeAccess.pump(() -> ide.grid().visible() && ide.grid().table() != null, "the grid editor");
-        assertEquals("liftTable", ide.grid().table().name(), "the new table opens in the grid editor");
+        IdeAccess.pump(() -> IdeAccess.grid(ide).visible() && IdeAccess.grid(ide).table() != null, "the grid editor");
+        assertEquals("liftTable", IdeAccess.grid(ide).table().name(), "the new table opens in the grid editor");
         undo("the expansion");
     }
 
@@ -159,7 +159,7 @@ class DiagramEditingGuiTest {
             assertTrue(t.contains("<travelCycle states=\"travelCycle_0, travelCycle_1, travelCycle_1, travelCycle_1, travelCycle_1,"
                     + " travelCycle_0, travelCycle_0, travelCycle_0\" times=\"1, 1, 1, 1, 1, 1, 1, 1\"/>"), t);
             assertTrue(t.contains("<states>\n    <travelCycle_0 angles=\"15\"/>\n    <travelCycle_1 angles=\"-15\"/>\n  </states>"), t);
-            ide.editor().run(ITextOperationTarget.UNDO);
+            IdeAccess.editor(ide).run(ITextOperationTarget.UNDO);
             assertEquals(before, d.text(), "one Undo takes it back");
         } finally {
             IdeAccess.open(ide, copy);

@@ -112,7 +112,7 @@ class DiagramFromEmptyGuiTest {
         d.pane().palette().full(false);
         // issue 31: an empty file is a beginning, not an error; the status bar says how to begin
         IdeAccess.pump(() -> IdeAccess.status(ide).startsWith("The file is empty"), "the status bar saying the file is empty");
-        assertEquals(List.of(), ide.problems().shown(), "Problems lists no error beside the start of a robot");
+        assertEquals(List.of(), IdeAccess.problems(ide).shown(), "Problems lists no error beside the start of a robot");
         DiagramWindow.picture(ide, "diagram-empty-start.png");
         d.pane().palette().full(true);
         palette("Pose", "Add pose", "name", "up", "angles", "30");
@@ -132,7 +132,7 @@ class DiagramFromEmptyGuiTest {
         wave(new String[][] {{"up", "30"}, {"down", "-30"}}, "", "simpleWave", "group1", "", "phase", "0.25", "period", "1",
                 "elements", "0,2,4,6");
         sameTrace("hello-snake.xml");
-        IdeAccess.screenshot(ide.shell(), "diagram-empty-built-fig3-snake.png");
+        IdeAccess.screenshot(IdeAccess.shell(ide), "diagram-empty-built-fig3-snake.png");
     }
 
     @Test
@@ -140,7 +140,7 @@ class DiagramFromEmptyGuiTest {
         start("wheel.xml", "<?xml version=\"1.0\" ?>\n<!-- The paper's cart wheel (Figs. 6 and 7) -->\n", 8, "wheel");
         wave(new String[][] {{"down", "-10"}, {"up", "45"}}, ".25, 1", "rotate", "wheel", "150", "phase", "0.25", "period", "2");
         sameTrace("wheel.xml");
-        IdeAccess.screenshot(ide.shell(), "diagram-empty-built-fig7-wheel.png");
+        IdeAccess.screenshot(IdeAccess.shell(ide), "diagram-empty-built-fig7-wheel.png");
     }
 
     @Test
@@ -179,6 +179,6 @@ class DiagramFromEmptyGuiTest {
         assertTrue(d.text().contains("  <parameters>\n    <stride value=\"25\" min=\"0\" max=\"60\" label=\"Stride (degrees of swing)\"/>"),
                 d.text());
         sameTrace("centipede-walk.xml");
-        IdeAccess.screenshot(ide.shell(), "diagram-empty-built-centipede.png");
+        IdeAccess.screenshot(IdeAccess.shell(ide), "diagram-empty-built-centipede.png");
     }
 }

@@ -53,11 +53,11 @@ class DiagramGuiTest {
     }
 
     private static DiagramPane pane() {
-        return ide.diagram();
+        return IdeAccess.diagram(ide);
     }
 
     private static String text() {
-        return ide.editor().document().get();
+        return IdeAccess.editor(ide).document().get();
     }
 
     private static void show(View v, String subject) {
@@ -99,7 +99,7 @@ class DiagramGuiTest {
     }
 
     private static void undoRestoresTheOriginal() {
-        ide.editor().run(ITextOperationTarget.UNDO);
+        IdeAccess.editor(ide).run(ITextOperationTarget.UNDO);
         assertEquals(original, text(), "one Undo restores the text byte for byte");
         IdeAccess.pump(() -> pane().current(), "the diagram of the restored text");
     }
@@ -131,7 +131,7 @@ class DiagramGuiTest {
         show(View.LANES, "walk");
         SourcePos bar = node("<swing group=\"rightSwing\"");
         click(bar);
-        Point sel = ide.editor().viewer().getSelectedRange();
+        Point sel = IdeAccess.editor(ide).viewer().getSelectedRange();
         assertEquals(new Point(bar.span().start(), bar.span().end() - bar.span().start()), sel);
         assertEquals("<swing group=\"rightSwing\" offset=\"0.5\" phase=\"0.75\" period=\"3\"/>",
                 text().substring(sel.x, sel.x + sel.y));
@@ -139,7 +139,7 @@ class DiagramGuiTest {
         assertEquals("0.75", pane().fields().get("phase").getText());
 
         int inStep = text().indexOf("rightLift\"  offset");
-        ide.editor().widget().setSelection(inStep);
+        IdeAccess.editor(ide).widget().setSelection(inStep);
         IdeAccess.settle();
         assertEquals(lineOf("<step  group=\"rightLift\""), pane().selected().line(), "the caret's instance is selected");
         assertEquals("0.5", pane().fields().get("offset").getText());
@@ -149,7 +149,7 @@ class DiagramGuiTest {
     void retimingAStateIsOneUndoableEdit() {
         show(View.RING, "step");
         int lower = text().indexOf("<lower");
-        ide.editor().widget().setSelection(lower + 3);
+        IdeAccess.editor(ide).widget().setSelection(lower + 3);
         IdeAccess.settle();
         assertEquals(lineOf("<lower  angles"), pane().selected().line(), "the caret in <lower> selects its arc");
         assertEquals("0.5", pane().fields().get("duration").getText());
@@ -228,7 +228,7 @@ class DiagramGuiTest {
                     .map(s -> s instanceof org.parpe.core.diagram.Scene.Rect r ? r.source() : null)
                     .filter(p -> p != null && p.span() == null).findFirst().orElseThrow();
             click(at);
-            int caretLine = ide.editor().widget().getLineAtOffset(ide.editor().viewer().getSelectedRange().x) + 1;
+            int caretLine = IdeAccess.editor(ide).widget().getLineAtOffset(IdeAccess.editor(ide).viewer().getSelectedRange().x) + 1;
             assertEquals(lineOf("times=\"1, 1, $hold\""), caretLine, "the island opens the text at its line");
         } finally {
             IdeAccess.open(ide, copy);
@@ -268,7 +268,7 @@ class DiagramGuiTest {
         DiagramWindow.tenFrames(ide, () -> pane().live().counts() != null, tick -> {
             int[] counts = pane().live().counts();
             // The same program's engine, run headless to that tick: which state is each leg's lift in?
-            org.parpe.core.run.Engine e = new org.parpe.core.run.Engine(ide.program(), org.parpe.core.run.RunOptions.defaults());
+            org.parpe.core.run.Engine e = new org.parpe.core.run.Engine(IdeAccess.program(ide), org.parpe.core.run.RunOptions.defaults());
             e.start();
             while (e.tick() < tick) {
                 e.step();
@@ -305,7 +305,7 @@ class DiagramGuiTest {
             drag(from, to);
             assertEquals(before.replace("<main>\n    <standup time=\"10\"/>\n    <walk/>", "<main>\n    <walk/>\n    <standup time=\"10\"/>"),
                     text());
-            ide.editor().run(ITextOperationTarget.UNDO);
+            IdeAccess.editor(ide).run(ITextOperationTarget.UNDO);
             assertEquals(before, text(), "one Undo restores the order byte for byte");
         } finally {
             IdeAccess.open(ide, copy);

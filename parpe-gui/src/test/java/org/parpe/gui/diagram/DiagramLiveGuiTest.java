@@ -61,7 +61,7 @@ class DiagramLiveGuiTest {
     }
 
     private static DiagramPane pane() {
-        return ide.diagram();
+        return IdeAccess.diagram(ide);
     }
 
     private static void show(View v, String subject) {
@@ -333,8 +333,8 @@ class DiagramLiveGuiTest {
             assertTrue(!button("Break on exit").isEnabled(), "reach has no exit condition");
         } finally {
             IdeAccess.open(ide, centipede);
-            IdeAccess.pump(() -> pane().current() && ide.program() != null
-                    && ide.program().behavior("walk").isPresent(), "the centipede again");
+            IdeAccess.pump(() -> pane().current() && IdeAccess.program(ide) != null
+                    && IdeAccess.program(ide).behavior("walk").isPresent(), "the centipede again");
         }
     }
 }

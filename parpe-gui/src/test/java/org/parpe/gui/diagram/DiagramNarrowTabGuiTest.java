@@ -28,7 +28,7 @@ class DiagramNarrowTabGuiTest {
         ide = DiagramWindow.open(Files.createTempDirectory("parpe-diagram-narrow")).ide();
         IdeAccess.dontSave(ide);
         IdeAccess.openTutorialDocked(ide);
-        ide.diagram().showTab();
+        IdeAccess.diagram(ide).showTab();
         IdeAccess.settle();
     }
 
@@ -39,7 +39,7 @@ class DiagramNarrowTabGuiTest {
 
     @Test
     void besideTheDockedTutorialTheDrawingKeepsHalfTheTabAndTheButtonsStayInside() {
-        Composite tab = (Composite) ide.diagram().control();
+        Composite tab = (Composite) IdeAccess.diagram(ide).control();
         int width = tab.getSize().x;
         assertTrue(width < 520, "the Diagram tab beside the docked tutorial is " + width + " px wide: not narrow");
         DiagramWindow.canvasHasHalfTheTab(ide);

@@ -79,7 +79,7 @@ class DiagramOverlayIndexGuiTest {
     }
 
     private static DiagramPane pane() {
-        return ide.diagram();
+        return IdeAccess.diagram(ide);
     }
 
     /** Module 1 (index 0) in state {@code k} of bob, half through it; the other modules nowhere. */

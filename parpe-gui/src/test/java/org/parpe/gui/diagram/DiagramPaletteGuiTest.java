@@ -55,8 +55,8 @@ class DiagramPaletteGuiTest {
 
     @AfterEach
     void backToTheExample() {
-        while (!d.text().equals(original) && ide.editor().viewer().getUndoManager().undoable()) {
-            ide.editor().run(org.eclipse.jface.text.ITextOperationTarget.UNDO);
+        while (!d.text().equals(original) && IdeAccess.editor(ide).viewer().getUndoManager().undoable()) {
+            IdeAccess.editor(ide).run(org.eclipse.jface.text.ITextOperationTarget.UNDO);
         }
         assertEquals(original, d.text(), "the test's edits are undone");
         d.show(View.PROGRAM, null);
@@ -137,7 +137,7 @@ class DiagramPaletteGuiTest {
                 "rows and modules change with + and \u2212: " + d.pane().actions().keySet());
         d.press("Add gait table", "name", "wave", "rows", "2", "modules", "3");
         assertTrue(d.text().contains("<wave>\n      0, 0, 0\n      0, 0, 0\n    </wave>\n  </automata>"), d.text());
-        IdeAccess.pump(() -> ide.grid().visible() && ide.grid().table() != null && "wave".equals(ide.grid().table().name()),
+        IdeAccess.pump(() -> IdeAccess.grid(ide).visible() && IdeAccess.grid(ide).table() != null && "wave".equals(IdeAccess.grid(ide).table().name()),
                 "the grid beside the text to show the new table");
         IdeAccess.pump(() -> d.pane().current() && d.pane().shown().view() == View.RING
                 && "wave".equals(d.pane().shown().subject()), "the diagram to show the new table's rows");

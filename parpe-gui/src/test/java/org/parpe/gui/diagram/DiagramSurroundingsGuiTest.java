@@ -44,7 +44,7 @@ class DiagramSurroundingsGuiTest {
     @Test
     void theDrawingIsOnTheThemesPaper() {
         IdeAccess.settle();
-        Control canvas = ide.diagram().canvas();
+        Control canvas = IdeAccess.diagram(ide).canvas();
         Image image = new Image(canvas.getDisplay(), canvas.getSize().x, canvas.getSize().y);
         try {
             GC gc = new GC(image);
@@ -80,16 +80,16 @@ class DiagramSurroundingsGuiTest {
 
     @Test
     void noChooserOrFieldOfTheDiagramHasAToolTipOverItsList() {
-        ide.diagram().palette().full(true);
-        for (String item : ide.diagram().palette().items()) {
-            ide.diagram().palette().choose(item);
-            for (Control c : all((Composite) ide.diagram().control())) {
+        IdeAccess.diagram(ide).palette().full(true);
+        for (String item : IdeAccess.diagram(ide).palette().items()) {
+            IdeAccess.diagram(ide).palette().choose(item);
+            for (Control c : all((Composite) IdeAccess.diagram(ide).control())) {
                 if (c instanceof Combo || c instanceof Text) {
                     assertEquals(null, c.getToolTipText(), item + ": " + c + " " + c.getData("field"));
                 }
             }
         }
-        ide.diagram().palette().full(false);
+        IdeAccess.diagram(ide).palette().full(false);
     }
 
     private static List<Control> all(Composite c) {

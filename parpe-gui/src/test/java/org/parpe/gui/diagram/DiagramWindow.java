@@ -30,17 +30,17 @@ final class DiagramWindow {
         Path copy = Files.createDirectories(home.resolve("scripts")).resolve("centipede-walk.xml");
         Files.copy(example, copy);
         IdeWindow ide = IdeAccess.openIde(home);
-        ide.shell().setSize(1366, 768);
+        IdeAccess.shell(ide).setSize(1366, 768);
         IdeAccess.open(ide, copy);
-        DiagramPane pane = ide.diagram();
+        DiagramPane pane = IdeAccess.diagram(ide);
         assertEquals("Diagram", pane.showTab());
-        IdeAccess.pump(() -> pane.current() && ide.program() != null, "the first diagram and the loaded script");
+        IdeAccess.pump(() -> pane.current() && IdeAccess.program(ide) != null, "the first diagram and the loaded script");
         return new Opened(ide, copy);
     }
 
     /** Shows view {@code v} on {@code subject} (null: the default) and waits until it shows the text. */
     static void show(IdeWindow ide, View v, String subject) {
-        DiagramPane pane = ide.diagram();
+        DiagramPane pane = IdeAccess.diagram(ide);
         if (subject == null) {
             pane.setView(v);
         } else {
@@ -53,7 +53,7 @@ final class DiagramWindow {
     /** Asserts that the drawing is at least half as tall as the Diagram tab (issue 24: the controls stay compact). */
     static void canvasHasHalfTheTab(IdeWindow ide) {
         IdeAccess.settle();
-        DiagramPane pane = ide.diagram();
+        DiagramPane pane = IdeAccess.diagram(ide);
         int tab = pane.control().getSize().y;
         int drawing = pane.canvas().getSize().y;
         assertTrue(tab > 300, "the Diagram tab at 1366×768 is " + tab + " px tall");
@@ -63,12 +63,12 @@ final class DiagramWindow {
     /** Saves the window to {@code docs/images/ide/NAME} (folder: system property {@code parpe.ideImages}). */
     static void picture(IdeWindow ide, String name) throws Exception {
         // no blinking caret in the editor: the same picture on every run
-        ide.diagram().canvas().setFocus();
+        IdeAccess.diagram(ide).canvas().setFocus();
         IdeAccess.settle();
         Path dir = Path.of(System.getProperty("parpe.ideImages", "../docs/images/ide"));
         Files.createDirectories(dir);
         Path png = dir.resolve(name);
-        Screenshot.save(ide.shell(), png);
+        Screenshot.save(IdeAccess.shell(ide), png);
         var d = new org.eclipse.swt.graphics.ImageLoader().load(png.toString())[0];
         assertEquals(1366, d.width, "picture width");
         assertTrue(Screenshot.distinctColours(d, 64) >= 64, png + " looks blank");
@@ -82,7 +82,7 @@ final class DiagramWindow {
      */
     static void tenFrames(IdeWindow ide, java.util.function.BooleanSupplier shown, java.util.function.LongConsumer check,
                           String evidence) throws Exception {
-        DiagramPane pane = ide.diagram();
+        DiagramPane pane = IdeAccess.diagram(ide);
         IdeAccess.pump(() -> !shown.getAsBoolean(), "no overlay while nothing runs");
         java.util.concurrent.atomic.AtomicReference<org.parpe.core.run.RunOutcome> end = new java.util.concurrent.atomic.AtomicReference<>();
         IdeAccess.run(ide, org.parpe.gui.run.RunOn.SIMULATOR, 600, end::set);
@@ -99,7 +99,7 @@ final class DiagramWindow {
                 last = tick;
             }
             if (evidence != null) {
-                IdeAccess.screenshot(ide.shell(), evidence);
+                IdeAccess.screenshot(IdeAccess.shell(ide), evidence);
             }
         } finally {
             IdeAccess.endRun(ide);

@@ -51,7 +51,7 @@ class DiagramWorkbenchGuiTest {
 
     private static IdeWindow open(Path home, Path script) {
         IdeWindow ide = IdeAccess.openIde(home);
-        ide.shell().setSize(1366, 768);
+        IdeAccess.shell(ide).setSize(1366, 768);
         IdeAccess.open(ide, script);
         DiagramDriver d = new DiagramDriver(ide);
         d.front();
@@ -103,8 +103,8 @@ class DiagramWorkbenchGuiTest {
             String kept = Files.readString(layout);
             assertTrue(kept.startsWith("parpe-layout 1\n") && kept.contains("program idle "), kept);
             assertEquals(SCRIPT, d.text(), "moving a free node changes no text (there is nothing to undo)");
-            assertFalse(ide.files().dirty());
-            assertTrue(ide.files().save());
+            assertFalse(IdeAccess.files(ide).dirty());
+            assertTrue(IdeAccess.files(ide).save());
             DiagramWindow.picture(ide, "diagram-workbench.png");
         } finally {
             IdeAccess.closeIde(ide);
@@ -138,7 +138,7 @@ class DiagramWorkbenchGuiTest {
             double[] put = movedFrom(d, "idle", before);
             String said = IdeAccess.status(ide);
             assertTrue(said.contains("bench.xml.layout is not a PARPE layout file"), said);
-            ide.status().setMessage("");
+            IdeAccess.statusBar(ide).setMessage("");
             dragFree(d, "idle", -100, 20);
             movedFrom(d, "idle", put);
             assertFalse(IdeAccess.status(ide).contains("not a PARPE layout file"), "said once: " + IdeAccess.status(ide));
@@ -156,11 +156,11 @@ class DiagramWorkbenchGuiTest {
         Path home = Files.createTempDirectory("parpe-workbench-test");
         Path folder = Files.createDirectories(home.resolve("scripts"));
         IdeWindow ide = IdeAccess.openIde(home);
-        ide.shell().setSize(1366, 768);
+        IdeAccess.shell(ide).setSize(1366, 768);
         try {
             IdeAccess.dontSave(ide);
-            ide.files().newFile();
-            ide.editor().document().set(SCRIPT);
+            IdeAccess.files(ide).newFile();
+            IdeAccess.editor(ide).document().set(SCRIPT);
             DiagramDriver d = new DiagramDriver(ide);
             d.front();
             d.show(View.PROGRAM, null);
@@ -172,8 +172,8 @@ class DiagramWorkbenchGuiTest {
                 assertEquals(0, files.count(), "an untitled document writes nothing");
             }
             Path target = folder.resolve("new.xml");
-            ide.files().chooseSaveTargetWith((dir, name) -> target);
-            assertTrue(ide.files().saveAs());
+            IdeAccess.files(ide).chooseSaveTargetWith((dir, name) -> target);
+            assertTrue(IdeAccess.files(ide).saveAs());
             assertEquals(SCRIPT, Files.readString(target));
             String kept = Files.readString(folder.resolve("new.xml.layout"));
             assertTrue(kept.contains("program idle "), kept);
@@ -196,7 +196,7 @@ class DiagramWorkbenchGuiTest {
             d.caughtUp();
             assertEquals(SCRIPT.replace("    <walk/>\n", "    <walk/>\n    <idle/>\n"), d.text());
             assertNull(d.pane().workbench().at("idle"), "idle now runs from <main>: it is on the lane");
-            ide.editor().run(ITextOperationTarget.UNDO);
+            IdeAccess.editor(ide).run(ITextOperationTarget.UNDO);
             assertEquals(SCRIPT, d.text(), "one Undo takes the drop back");
             d.caughtUp();
 
@@ -206,7 +206,7 @@ class DiagramWorkbenchGuiTest {
             d.caughtUp();
             assertEquals(SCRIPT.replace("      <wave group=\"legs\"/>\n",
                     "      <wave group=\"legs\"/>\n      <spare group=\"legs\"/>\n"), d.text());
-            ide.editor().run(ITextOperationTarget.UNDO);
+            IdeAccess.editor(ide).run(ITextOperationTarget.UNDO);
             assertEquals(SCRIPT, d.text());
         } finally {
             IdeAccess.closeIde(ide);

@@ -36,9 +36,9 @@ class RingAndWheelGuiTest {
 
     private DiagramPane open(int width, int height) throws Exception {
         ide = DiagramWindow.open(Files.createTempDirectory("parpe-ring")).ide();
-        ide.shell().setBounds(0, 0, width, height);
+        IdeAccess.shell(ide).setBounds(0, 0, width, height);
         IdeAccess.settle();
-        return ide.diagram();
+        return IdeAccess.diagram(ide);
     }
 
     /** The texts painted on the canvas now, after a paint of the whole drawing. */
@@ -76,7 +76,7 @@ class RingAndWheelGuiTest {
         assertTrue(w.contains("one cycle") && w.contains("3 s"), "the cycle in words: " + w);
         assertTrue(w.contains("lasts 0.5 s") && w.contains("lasts 2 s"), "each state's duration in words: " + w);
         assertTrue(w.stream().noneMatch(s -> s.contains("\u03a3") || s.startsWith("T =")), "no symbols: " + w);
-        IdeAccess.screenshot(ide.shell(), "ring-1366x768.png");
+        IdeAccess.screenshot(IdeAccess.shell(ide), "ring-1366x768.png");
 
         DiagramWindow.show(ide, View.PHASE, "walk, second: swing on rightSwing");
         texts = painted(pane);
@@ -87,7 +87,7 @@ class RingAndWheelGuiTest {
         assertTrue(w.contains("0, 4") && w.contains("1, 5"), "ticks numbered by position: " + w);
         assertTrue(w.stream().noneMatch(s -> s.contains("14, 22")), "no tick named by module ID: " + w);
         assertTrue(w.stream().anyMatch(s -> s.contains("position i")), "the text speaks of positions too: " + w);
-        IdeAccess.screenshot(ide.shell(), "wheel-1366x768.png");
+        IdeAccess.screenshot(IdeAccess.shell(ide), "wheel-1366x768.png");
     }
 
     @Test
@@ -95,14 +95,14 @@ class RingAndWheelGuiTest {
         DiagramPane pane = open(1600, 1000);
         DiagramWindow.show(ide, View.RING, "step");
         noOverlap(painted(pane));
-        IdeAccess.screenshot(ide.shell(), "ring-large.png");
+        IdeAccess.screenshot(IdeAccess.shell(ide), "ring-large.png");
         DiagramWindow.show(ide, View.PHASE, "walk, third: step on leftLift");
         noOverlap(painted(pane));
-        IdeAccess.screenshot(ide.shell(), "wheel-large.png");
+        IdeAccess.screenshot(IdeAccess.shell(ide), "wheel-large.png");
     }
 
     private void viewMenu(String item) {
-        var view = java.util.Arrays.stream(ide.shell().getMenuBar().getItems()).filter(i -> i.getText().equals("&View"))
+        var view = java.util.Arrays.stream(IdeAccess.shell(ide).getMenuBar().getItems()).filter(i -> i.getText().equals("&View"))
                 .findFirst().orElseThrow().getMenu();
         java.util.Arrays.stream(view.getItems()).filter(i -> i.getText().replace("&", "").startsWith(item)).findFirst()
                 .orElseThrow().notifyListeners(SWT.Selection, new org.eclipse.swt.widgets.Event());
@@ -124,7 +124,7 @@ class RingAndWheelGuiTest {
         var ring = painted(pane);
         assertTrue(smallest(ring) >= normal * 3 / 2, "the smallest text grew from " + normal + " to " + smallest(ring) + " px");
         noOverlap(ring);
-        IdeAccess.screenshot(ide.shell(), "ring-zoomed-1366x768.png");
+        IdeAccess.screenshot(IdeAccess.shell(ide), "ring-zoomed-1366x768.png");
         DiagramWindow.show(ide, View.PHASE, "walk, second: swing on rightSwing");
         noOverlap(painted(pane));
         viewMenu("Reset Zoom");
@@ -162,7 +162,7 @@ class RingAndWheelGuiTest {
         assertEquals(0.6, handAt(pane), 0.01, "the hand is where the mouse is");
         assertTrue(pane.message().contains("phase=\"0.1\"") && pane.message().contains("start 0.5, 0.6, 0.7, 0.8"),
                 "the new phase and the delays it gives: " + pane.message());
-        IdeAccess.screenshot(ide.shell(), "wheel-drag-1366x768.png");
+        IdeAccess.screenshot(IdeAccess.shell(ide), "wheel-drag-1366x768.png");
         d.mouse(SWT.MouseMove, pane.drags().onWheel(0.9));
         assertEquals(0.9, handAt(pane), 0.01, "the hand follows the mouse");
         assertTrue(pane.message().contains("phase=\"0.4\""), pane.message());

@@ -19,6 +19,7 @@ import org.eclipse.swt.widgets.Shell;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.parpe.gui.app.Gui;
+import org.parpe.gui.app.IdeAccess;
 import org.parpe.gui.app.IdeWindow;
 import org.parpe.gui.automation.Screenshot;
 import org.parpe.sim.snapshot.SimSnapshot;
@@ -60,12 +61,12 @@ class ClassWindowGuiTest {
     @Test
     void theRunMenuOpensTheClassWindow() throws Exception {
         ide = Gui.openIde(Files.createTempDirectory("parpe-class-menu"));
-        MenuItem run = item(ide.shell().getMenuBar(), "Run");
+        MenuItem run = item(IdeAccess.shell(ide).getMenuBar(), "Run");
         MenuItem grade = item(run.getMenu(), "Grade a Class");
         assertNotNull(grade, "no Run > Grade a Class… item");
         grade.notifyListeners(SWT.Selection, new Event());
         grade.notifyListeners(SWT.Selection, new Event());
-        Shell[] open = Arrays.stream(ide.shell().getShells()).filter(s -> !s.isDisposed() && s.getText().startsWith("Class"))
+        Shell[] open = Arrays.stream(IdeAccess.shell(ide).getShells()).filter(s -> !s.isDisposed() && s.getText().startsWith("Class"))
                 .toArray(Shell[]::new);
         assertEquals(1, open.length, "a second click brings the same window");
         assertTrue(open[0].isVisible());
@@ -85,7 +86,7 @@ class ClassWindowGuiTest {
         Path challenge = Files.writeString(dir.resolve("race.xml"), "<challenge world=\"" + world
                 + "\" robot=\"snake:n=8\" duration=\"3\" tick=\"0.01\" max-modules=\"8\" tie-break=\"distance\"/>\n");
         ide = Gui.openIde(Files.createTempDirectory("parpe-class-home"));
-        window = ClassWindow.open(ide.shell());
+        window = ClassWindow.open(IdeAccess.shell(ide));
         window.load(challenge, students);
         assertEquals("", window.message(), "the challenge loads");
         assertTrue(window.gradeButton().isEnabled());
@@ -112,7 +113,7 @@ class ClassWindowGuiTest {
         Path report = dir.resolve("class-3b-report");
         assertTrue(Files.isRegularFile(report.resolve("report.html")) && Files.isRegularFile(report.resolve("report.csv")));
 
-        ide.shell().setBounds(1400, 0, 200, 200); // not behind the picture where the window's trim would be
+        IdeAccess.shell(ide).setBounds(1400, 0, 200, 200); // not behind the picture where the window's trim would be
         window.shell().setBounds(0, 0, 1366, 768);
         window.ranking().control().setSelection(0);
         window.ranking().control().notifyListeners(SWT.Selection, new Event());
@@ -152,7 +153,7 @@ class ClassWindowGuiTest {
         Path challenge = Files.writeString(dir.resolve("race.xml"), "<challenge world=\"" + world
                 + "\" robot=\"snake:n=8\" duration=\"3600\"/>\n");
         ide = Gui.openIde(Files.createTempDirectory("parpe-class-home"));
-        window = ClassWindow.open(ide.shell());
+        window = ClassWindow.open(IdeAccess.shell(ide));
         window.load(challenge, students);
         window.gradeButton().notifyListeners(SWT.Selection, new Event());
         Gui.pump(() -> ProcessHandle.current().children().findAny().isPresent(), "a student's run to start", 60_000);

@@ -67,9 +67,9 @@ class PoseHardwareGuiTest {
              ServoEmulator emu = ServoEmulator.start(LinkOpener.serial(pty.b().toString(), 1_000_000),
                      ServoModel.named("xl430-w250"), EmulatorOptions.of(1, 2), new EmulatorListener() { })) {
             IdeAccess.open(ide, script);
-            IdeAccess.pump(() -> ide.program() != null && ide.program().group("arm").isPresent(), "the arm to load");
-            ide.showPosePanel();
-            PosePanel panel = ide.pose();
+            IdeAccess.pump(() -> IdeAccess.program(ide) != null && IdeAccess.program(ide).group("arm").isPresent(), "the arm to load");
+            IdeAccess.showPosePanel(ide);
+            PosePanel panel = IdeAccess.pose(ide);
             panel.pollNow();
             panel.chooseGroup("arm");
             IdeAccess.connectHardware(ide, pty.a().toString(), "dxl2", 1_000_000, 2);
@@ -100,7 +100,7 @@ class PoseHardwareGuiTest {
             s.setSelection(90 + 10);
             s.notifyListeners(SWT.Selection, new Event());
             IdeAccess.pump(() -> Math.abs(emu.angle(2) - 10) < 0.2, "servo 2 to follow its slider to 10°");
-            IdeAccess.screenshot(ide.shell(), "pose-panel-hardware.png");
+            IdeAccess.screenshot(IdeAccess.shell(ide), "pose-panel-hardware.png");
             IdeAccess.closeHardware(ide);
         }
     }

@@ -73,8 +73,8 @@ class PosePanelGuiTest {
         script = own.resolve("pairs-centipede.xml");
         Files.writeString(script, PAIRS);
         openScript(script);
-        ide.showPosePanel();
-        panel = ide.pose();
+        IdeAccess.showPosePanel(ide);
+        panel = IdeAccess.pose(ide);
         panel.pollNow();
         panel.chooseGroup("front");
         IdeAccess.pump(() -> panel.posingReady() && panel.poses() != null && "front".equals(panel.poses().group()),
@@ -103,12 +103,12 @@ class PosePanelGuiTest {
     }
 
     private static void openScript(Path file) {
-        int before = ide.validations();
+        int before = IdeAccess.validations(ide);
         IdeAccess.open(ide, file);
-        IdeAccess.pump(() -> ide.validations() > before && ide.program() != null
-                && ide.program().file().endsWith(file.getFileName().toString()), file.getFileName() + " to load");
-        assertEquals(0, ide.problems().errorCount(), "errors: " + ide.problems().shown());
-        panel = ide.pose();
+        IdeAccess.pump(() -> IdeAccess.validations(ide) > before && IdeAccess.program(ide) != null
+                && IdeAccess.program(ide).file().endsWith(file.getFileName().toString()), file.getFileName() + " to load");
+        assertEquals(0, IdeAccess.problems(ide).errorCount(), "errors: " + IdeAccess.problems(ide).shown());
+        panel = IdeAccess.pose(ide);
         if (panel != null) {
             panel.pollNow();
         }
@@ -137,7 +137,7 @@ class PosePanelGuiTest {
         e.x = x;
         e.y = y;
         e.button = button;
-        ide.view().control().notifyListeners(type, e);
+        IdeAccess.view(ide).control().notifyListeners(type, e);
     }
 
     /** A module of the group whose picture is under its own screen point (not hidden by another). */
@@ -160,9 +160,9 @@ class PosePanelGuiTest {
         slide(15, -60);
         press("Capture");
 
-        IdeAccess.pump(() -> ide.view().lastSnapshot() != null
-                && Math.abs(ide.view().lastSnapshot().angle(15) + 60) < 5, "the simulated leg to follow the sliders");
-        View3D view = ide.view();
+        IdeAccess.pump(() -> IdeAccess.view(ide).lastSnapshot() != null
+                && Math.abs(IdeAccess.view(ide).lastSnapshot().angle(15) + 60) < 5, "the simulated leg to follow the sliders");
+        View3D view = IdeAccess.view(ide);
         view.focus(panel.posedModules());
         IdeAccess.settle();
         int id = grabbable(view, 1, 15, 0, 14);
@@ -212,7 +212,7 @@ class PosePanelGuiTest {
         assertTrue(panel.table().table().getItem(1).getText(1).equals("0.80"), "the list shows the new time");
         assertTrue(panel.unsaved().contains("3 poses of front in pairs-centipede.xml"),
                 "closing the window would ask before losing them: " + panel.unsaved());
-        IdeAccess.screenshot(ide.shell(), "pose-panel-posed.png");
+        IdeAccess.screenshot(IdeAccess.shell(ide), "pose-panel-posed.png");
     }
 
     @Test
@@ -243,7 +243,7 @@ class PosePanelGuiTest {
         assertTrue(panel.output().save(saved), IdeAccess.status(ide));
         assertEquals(unsavedBefore.size() - 1, panel.unsaved().size(), "saved poses are kept: " + panel.unsaved());
         openScript(saved);
-        Traces trace = Traces.run(ide.program(), 10);
+        Traces trace = Traces.run(IdeAccess.program(ide), 10);
         int[] modules = {0, 1, 14, 15};
         double reached = 0;
         for (int i = 0; i < poses.size(); i++) {
@@ -277,13 +277,13 @@ class PosePanelGuiTest {
      */
     private static void fillUseDialog(List<String> seen) {
         org.eclipse.swt.widgets.Shell dialog = null;
-        for (org.eclipse.swt.widgets.Shell sh : ide.shell().getShells()) {
+        for (org.eclipse.swt.widgets.Shell sh : IdeAccess.shell(ide).getShells()) {
             if (!sh.isDisposed() && sh.getText().equals("Use the poses on other groups")) {
                 dialog = sh;
             }
         }
         if (dialog == null) {
-            ide.shell().getDisplay().timerExec(200, () -> fillUseDialog(seen));
+            IdeAccess.shell(ide).getDisplay().timerExec(200, () -> fillUseDialog(seen));
             return;
         }
         org.eclipse.swt.widgets.List groups = null;
@@ -329,10 +329,10 @@ class PosePanelGuiTest {
     }
 
     private static void closeDialogs() {
-        if (ide.shell().isDisposed()) {
+        if (IdeAccess.shell(ide).isDisposed()) {
             return; // the timer outlived this class's window (a test that ended before it fired)
         }
-        for (org.eclipse.swt.widgets.Shell sh : ide.shell().getShells()) {
+        for (org.eclipse.swt.widgets.Shell sh : IdeAccess.shell(ide).getShells()) {
             if (!sh.isDisposed()) {
                 sh.close();
             }
@@ -343,22 +343,22 @@ class PosePanelGuiTest {
     void usedOnTwoOtherPairsTheScriptRunsThemWithThePhaseDelayAndOneUndoTakesItBack() throws Exception {
         captureThreePoses();
         PoseList recorded = panel.poses();
-        String before = ide.editor().document().get();
+        String before = IdeAccess.editor(ide).document().get();
         assertNotNull(recorded);
         // The dialog is modal: fill it in from a timer while the button's nested event loop runs.
         List<String> seen = new java.util.ArrayList<>();
-        ide.shell().getDisplay().timerExec(300, () -> fillUseDialog(seen));
-        ide.shell().getDisplay().timerExec(25_000, PosePanelGuiTest::closeDialogs);
+        IdeAccess.shell(ide).getDisplay().timerExec(300, () -> fillUseDialog(seen));
+        IdeAccess.shell(ide).getDisplay().timerExec(25_000, PosePanelGuiTest::closeDialogs);
         press("Use on another group\u2026");
         assertEquals(List.of("front,pair1,pair2", "refused: The period must be a number of seconds > 0, got 0.0.", "written"),
                 seen, "the dialog offers the groups of four modules, refuses a period of 0, then writes");
-        assertNotEquals(before, ide.editor().document().get());
-        int v = ide.validations();
-        IdeAccess.pump(() -> ide.validations() > v && ide.program() != null && ide.program().behavior("play_front").isPresent()
-                && ide.program().automaton("rec_front").isPresent(),
+        assertNotEquals(before, IdeAccess.editor(ide).document().get());
+        int v = IdeAccess.validations(ide);
+        IdeAccess.pump(() -> IdeAccess.validations(ide) > v && IdeAccess.program(ide) != null && IdeAccess.program(ide).behavior("play_front").isPresent()
+                && IdeAccess.program(ide).automaton("rec_front").isPresent(),
                 "the changed script to load");
-        assertEquals(0, ide.problems().errorCount(), "errors: " + ide.problems().shown());
-        Traces trace = Traces.run(ide.program(), 6);
+        assertEquals(0, IdeAccess.problems(ide).errorCount(), "errors: " + IdeAccess.problems(ide).shown());
+        Traces trace = Traces.run(IdeAccess.program(ide), 6);
         // pair2 lags pair1 by 0.25 of a 2 s cycle: it is where pair1 was 0.5 s earlier.
         boolean moved = false;
         for (double t = 2.0; t <= 5.5; t += 0.13) {
@@ -368,14 +368,14 @@ class PosePanelGuiTest {
             moved |= trace.at(2, now) != trace.at(4, now);
         }
         assertTrue(moved, "the two pairs move in step");
-        IdeAccess.screenshot(ide.shell(), "pose-panel-used-on-pairs.png");
-        ide.editor().run(ITextOperationTarget.UNDO);
-        assertEquals(before, ide.editor().document().get(), "one Undo should take the whole change back");
+        IdeAccess.screenshot(IdeAccess.shell(ide), "pose-panel-used-on-pairs.png");
+        IdeAccess.editor(ide).run(ITextOperationTarget.UNDO);
+        assertEquals(before, IdeAccess.editor(ide).document().get(), "one Undo should take the whole change back");
     }
 
     @Test
     void ctrlClickInThe3DViewPicksModulesToPose() {
-        View3D view = ide.view();
+        View3D view = IdeAccess.view(ide);
         IdeAccess.pump(() -> panel.posingReady(), "the posed robot");
         IdeAccess.settle();
         int id = grabbable(view, 4, 5, 18, 19, 2, 3);
@@ -397,7 +397,7 @@ class PosePanelGuiTest {
         Path shot = Path.of(System.getProperty("parpe.artefacts", "target/gui-test-artefacts"), "pose-panel-option.png");
         Files.createDirectories(shot.getParent());
         Files.deleteIfExists(shot);
-        org.parpe.gui.automation.Automation.start(ide, new org.parpe.gui.automation.LaunchOptions(example, -1, shot, false, false, true, null, false, null));
+        org.parpe.gui.automation.Automation.start(ide.automated(), new org.parpe.gui.automation.LaunchOptions(example, -1, shot, false, false, true, null, false, null));
         IdeAccess.pump(() -> Files.exists(shot), "the --pose-panel screenshot");
         assertEquals("front", panel.poses().group());
         // The earlier tests' poses of front stay; the recording's four are added after them and selected.
@@ -408,7 +408,7 @@ class PosePanelGuiTest {
         assertArrayEquals(new double[] {25, -60, 25, 20}, poses.get(2).angles());
         assertEquals(all.size() - 4, panel.table().selection(), "the first added pose is selected");
         assertTrue(panel.posingReady());
-        assertEquals(-60, ide.view().lastSnapshot().angle(15), 6, "the posed robot stands in the first pose");
+        assertEquals(-60, IdeAccess.view(ide).lastSnapshot().angle(15), 6, "the posed robot stands in the first pose");
     }
 
     /**
@@ -444,13 +444,13 @@ class PosePanelGuiTest {
         IdeAccess.pump(() -> panel.posingReady() && panel.poses() != null, "front of the first script again");
         assertEquals(2, panel.poses().size(), "the first script's poses are back with it");
 
-        ide.editor().document().replace(0, 0, "<!-- edited -->\n");
+        IdeAccess.editor(ide).document().replace(0, 0, "<!-- edited -->\n");
         List<String> asked = new java.util.ArrayList<>();
         assertTrue(IdeAccess.closeRequested(ide, asked, message -> 1), "Don't Save closes");
         assertEquals(1, asked.size(), "one question before quitting: " + asked);
         assertTrue(asked.get(0).contains("first-centipede.xml has unsaved changes")
                 && asked.get(0).contains("2 poses of front in first-centipede.xml"), asked.get(0));
-        ide.editor().document().replace(0, "<!-- edited -->\n".length(), "");
+        IdeAccess.editor(ide).document().replace(0, "<!-- edited -->\n".length(), "");
     }
 
     /**
@@ -459,7 +459,7 @@ class PosePanelGuiTest {
      */
     @Test
     void hoverSaysWhatADragDoesAndTheWheelZoomsOnTheGroup() throws Exception {
-        View3D view = ide.view();
+        View3D view = IdeAccess.view(ide);
         view.focus(panel.posedModules());
         IdeAccess.settle();
         int id = grabbable(view, 1, 15, 0, 14);
@@ -468,7 +468,7 @@ class PosePanelGuiTest {
         mouse(SWT.MouseMove, p.x, p.y, 0);
         assertEquals(id, view.hovered(), "the module under the mouse is lit");
         assertEquals("Drag up or down: bend the joint of m" + id, view.dragHint());
-        IdeAccess.screenshot(ide.shell(), "pose-panel-hover.png");
+        IdeAccess.screenshot(IdeAccess.shell(ide), "pose-panel-hover.png");
         mouse(SWT.MouseMove, 3, view.control().getSize().y - 3, 0);
         assertEquals(-1, view.hovered());
         assertEquals("Drag: turn the view around", view.dragHint());

@@ -26,7 +26,7 @@ class SweepMenuGuiTest {
     }
 
     private static Shell[] sweepShells(IdeWindow ide) {
-        return Arrays.stream(ide.shell().getShells()).filter(s -> !s.isDisposed() && s.getText().startsWith("Sweep / Optimise"))
+        return Arrays.stream(IdeAccess.shell(ide).getShells()).filter(s -> !s.isDisposed() && s.getText().startsWith("Sweep / Optimise"))
                 .toArray(Shell[]::new);
     }
 
@@ -36,8 +36,8 @@ class SweepMenuGuiTest {
         IdeWindow ide = new IdeWindow(Ui.display(), new Prefs(home));
         try {
             ide.open(null, true);
-            Ui.pump(() -> ide.validations() > 0, "the first validation");
-            MenuItem run = item(ide.shell().getMenuBar(), "Run");
+            Ui.pump(() -> IdeAccess.validations(ide) > 0, "the first validation");
+            MenuItem run = item(IdeAccess.shell(ide).getMenuBar(), "Run");
             assertNotNull(run, "no Run menu");
             MenuItem sweep = item(run.getMenu(), "Sweep / Optimise");
             assertNotNull(sweep, "no Run > Sweep / Optimise… item");
@@ -50,7 +50,7 @@ class SweepMenuGuiTest {
             open[0].close();
             Ui.pump(() -> sweepShells(ide).length == 0, "the dialog to close");
         } finally {
-            ide.shell().dispose();
+            IdeAccess.shell(ide).dispose();
         }
     }
 
@@ -73,7 +73,7 @@ class SweepMenuGuiTest {
         try {
             Path world = Path.of(System.getProperty("parpe.examples", "../examples"), "worlds", "race-track.xml");
             IdeAccess.world(ide, world);
-            item(item(ide.shell().getMenuBar(), "Run").getMenu(), "Sweep / Optimise").notifyListeners(SWT.Selection, new Event());
+            item(item(IdeAccess.shell(ide).getMenuBar(), "Run").getMenu(), "Sweep / Optimise").notifyListeners(SWT.Selection, new Event());
             Shell dialog = sweepShells(ide)[0];
             org.eclipse.swt.widgets.Combo choice = all(dialog).stream()
                     .filter(c -> c instanceof org.eclipse.swt.widgets.Combo k && k.indexOf("flat floor") >= 0)
