@@ -8,7 +8,6 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.parpe.cli.text.CliMsg;
 import org.parpe.core.text.Message;
-import picocli.CommandLine.MaxValuesExceededException;
 import picocli.CommandLine.MissingParameterException;
 import picocli.CommandLine.Model.ArgSpec;
 import picocli.CommandLine.Model.OptionSpec;
@@ -34,7 +33,6 @@ final class ParseErrors {
     private static final Pattern FOUND = Pattern.compile("Expected parameter for .* but found '(.*)'");
     private static final Pattern ONE_OF = Pattern.compile("Error: Missing required argument \\(specify one of these\\): (.*)");
     private static final Pattern EXCLUSIVE = Pattern.compile("Error: (.*) are mutually exclusive \\(specify only one\\)");
-    private static final Pattern WITHOUT = Pattern.compile("option '([^']+)' should be specified without '(.*)' parameter");
     private static final Pattern NOT_A = Pattern.compile("'(.*)' is not an? (int|long|double|boolean)");
     private static final Pattern ENUM = Pattern.compile("expected one of \\[(.*)\\] \\(case-sensitive\\) but was '(.*)'");
 
@@ -73,11 +71,6 @@ final class ParseErrors {
         if (ex instanceof MutuallyExclusiveArgsException) {
             Matcher x = EXCLUSIVE.matcher(text);
             return x.matches() ? Message.of(CliMsg.PICOCLI_EXCLUSIVE, x.group(1)) : null;
-        }
-        if (ex instanceof MaxValuesExceededException) {
-            Matcher w = WITHOUT.matcher(text);
-            return w.matches()
-                    ? Message.of(CliMsg.PICOCLI_WITHOUT_VALUE, Message.of(CliMsg.PICOCLI_OPTION, w.group(1)), w.group(2)) : null;
         }
         if (ex.getCause() instanceof TypeConversionException t && ex.getArgSpec() != null) {
             // picocli names a single value's option without its label, one of several values with it

@@ -1,6 +1,7 @@
 package org.parpe.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -45,6 +46,15 @@ class ParseErrorsTest {
     }
 
     @Test
+    void anArgumentTooManyIsToldInGerman() {
+        String en = error(Cli.run(diagram("y.xml")));
+        assertTrue(en.matches("Unmatched argument at index \\d+: 'y.xml'"), en);
+        // picocli counts every argument, so in German two more: --lang de
+        int at = Integer.parseInt(en.substring("Unmatched argument at index ".length(), en.indexOf(':')));
+        assertEquals("überzähliges Argument an Stelle " + (at + 2) + ": 'y.xml'", error(german(diagram("y.xml"))));
+    }
+
+    @Test
     void picocliSuggestionsAreKeptInTheChosenLanguage() {
         String en = Cli.run(diagram("--vie", "ring")).err;
         String de = german(diagram("--vie", "ring")).err;
@@ -57,6 +67,8 @@ class ParseErrorsTest {
     void aMissingParameterOrValueIsToldInGerman() {
         assertEquals("Missing required parameter: 'FILE|DIR'", error(Cli.run("check")));
         assertEquals("es fehlt der Parameter 'FILE|DIR'", error(german("check")));
+        assertEquals("Missing required option: '--out=FILE'", error(Cli.run("diagram", "x.xml")));
+        assertEquals("es fehlt die Option '--out=FILE'", error(german("diagram", "x.xml")));
         assertEquals("Missing required parameter for option '--tick' (S)", error(Cli.run(diagram("--tick"))));
         assertEquals("der Wert für die Option '--tick' (S) fehlt", error(german(diagram("--tick"))));
         assertEquals("Expected parameter for option '--tick' but found '--duration'",
@@ -79,7 +91,14 @@ class ParseErrorsTest {
     }
 
     @Test
-    void anOptionGivenTwiceAndAMissingChoiceAreToldInGerman() {
+    void aValueForAFlagThatIsNoBooleanIsToldInGerman() {
+        assertEquals("Invalid value for option '--check': 'yes' is not a boolean", error(Cli.run("robot", "snake:n=4", "--check=yes")));
+        assertEquals("ungültiger Wert für die Option '--check': 'yes' ist weder true noch false",
+                error(german("robot", "snake:n=4", "--check=yes")));
+    }
+
+    @Test
+    void anOptionGivenTwiceAndAGroupsChoiceAreToldInGerman() {
         assertEquals("option '--tick' (S) should be specified only once",
                 error(Cli.run(diagram("--tick", "0.01", "--tick", "0.02"))));
         assertEquals("die Option '--tick' (S) darf nur einmal angegeben werden",
@@ -87,5 +106,8 @@ class ParseErrorsTest {
         String[] record = {"record", "--port", "/dev/null", "--group", "g", "--out", "r.xml"};
         assertEquals("Error: Missing required argument (specify one of these): (--script=FILE | --modules=IDS)", error(Cli.run(record)));
         assertEquals("es fehlt eines dieser Argumente: (--script=FILE | --modules=IDS)", error(german(record)));
+        String[] both = {"record", "--port", "/dev/null", "--group", "g", "--out", "r.xml", "--script", "a.xml", "--modules", "0..3"};
+        assertEquals("Error: --script=FILE, --modules=IDS are mutually exclusive (specify only one)", error(Cli.run(both)));
+        assertEquals("--script=FILE, --modules=IDS schließen einander aus (gib nur eines davon an)", error(german(both)));
     }
 }
