@@ -165,8 +165,8 @@ public final class Main implements Runnable {
                 err.println("parpe: " + CliMsg.UNKNOWN_COMMAND.text(command, Names.suggest(command, cl.getSubcommands().keySet()),
                         String.join(", ", cl.getSubcommands().keySet())));
             } else {
-                err.println("parpe: " + ex.getMessage());
-                CommandLine.UnmatchedArgumentException.printSuggestions(ex, err);
+                err.println("parpe: " + ParseErrors.of(ex));
+                ParseErrors.printSuggestions(ex, err);
             }
             err.println(CliMsg.TRY_HELP.text(ex.getCommandLine() == cl ? "" : ex.getCommandLine().getCommandName() + " "));
             return 2;

@@ -1,5 +1,8 @@
 package org.parpe.serial.bus;
 
+import org.parpe.core.text.Msg;
+import org.parpe.serial.text.SerialMsg;
+
 /**
  * Settings of the host side of the bus.
  *
@@ -20,18 +23,18 @@ public record BusConfig(int baud, int readTimeoutMs, int retries, int watchdogMs
     public static final int DEFAULT_BAUD = 115_200;
 
     public BusConfig {
-        positive("baud rate", baud, 10_000_000);
-        positive("read timeout (ms)", readTimeoutMs, 10_000);
+        positive(SerialMsg.OPTION_BAUD, baud, 10_000_000);
+        positive(SerialMsg.OPTION_READ_TIMEOUT, readTimeoutMs, 10_000);
         if (retries < 0 || retries > 20) {
-            throw new IllegalArgumentException("retries must be in 0..20, got " + retries);
+            throw new IllegalArgumentException(Msg.MUST_BE_IN_RANGE.text(SerialMsg.OPTION_RETRIES.text(), 0, 20, retries));
         }
-        positive("watchdog (ms)", watchdogMs, 60_000);
-        positive("dead-bus time (ms)", deadAfterMs, 60_000);
-        positive("keepalive (ms)", keepaliveMs, watchdogMs);
-        positive("reconnect interval (ms)", reconnectMs, 60_000);
-        positive("idle gap (ms)", idleGapMs, 10_000);
+        positive(SerialMsg.OPTION_WATCHDOG, watchdogMs, 60_000);
+        positive(SerialMsg.OPTION_DEAD_AFTER, deadAfterMs, 60_000);
+        positive(SerialMsg.OPTION_KEEPALIVE, keepaliveMs, watchdogMs);
+        positive(SerialMsg.OPTION_RECONNECT, reconnectMs, 60_000);
+        positive(SerialMsg.OPTION_IDLE_GAP, idleGapMs, 10_000);
         if (safeMode == null) {
-            throw new IllegalArgumentException("safe mode must be hold or limp");
+            throw new IllegalArgumentException(SerialMsg.SAFE_MODE_HOLD_OR_LIMP.text());
         }
     }
 
@@ -61,9 +64,9 @@ public record BusConfig(int baud, int readTimeoutMs, int retries, int watchdogMs
                 keepaliveMs, reconnectMs, idleGapMs);
     }
 
-    private static void positive(String what, int v, int max) {
+    private static void positive(SerialMsg what, int v, int max) {
         if (v <= 0 || v > max) {
-            throw new IllegalArgumentException(what + " must be in 1.." + max + ", got " + v);
+            throw new IllegalArgumentException(Msg.MUST_BE_IN_RANGE.text(what.text(), 1, max, v));
         }
     }
 }

@@ -1,6 +1,8 @@
 package org.parpe.serial.emu;
 
 import java.util.Arrays;
+import org.parpe.core.text.Msg;
+import org.parpe.serial.text.SerialMsg;
 
 /**
  * How {@link org.parpe.serial.g1.emu.BusEmulator} behaves.
@@ -21,20 +23,20 @@ public record EmulatorOptions(int[] modules, double drop, double corrupt, double
         modules = modules.clone();
         for (int id : modules) {
             if (id < 0 || id > org.parpe.serial.g1.Protocol.MAX_MODULE_ID) {
-                throw new IllegalArgumentException("module ID must be in 0.."
-                        + org.parpe.serial.g1.Protocol.MAX_MODULE_ID + ", got " + id);
+                throw new IllegalArgumentException(Msg.MUST_BE_IN_RANGE.text(SerialMsg.EMU_MODULE_ID.text(), 0,
+                        org.parpe.serial.g1.Protocol.MAX_MODULE_ID, id));
             }
         }
         if (Arrays.stream(modules).distinct().count() != modules.length) {
-            throw new IllegalArgumentException("a module ID is listed twice: " + Arrays.toString(modules));
+            throw new IllegalArgumentException(SerialMsg.EMU_LISTED_TWICE.text(Arrays.toString(modules)));
         }
-        checkProbability("drop", drop);
-        checkProbability("corrupt", corrupt);
+        checkProbability(SerialMsg.EMU_DROP, drop);
+        checkProbability(SerialMsg.EMU_CORRUPT, corrupt);
         if (!(latencyMs >= 0) || latencyMs > 10_000) {
-            throw new IllegalArgumentException("latency must be in 0..10000 ms, got " + latencyMs);
+            throw new IllegalArgumentException(SerialMsg.EMU_LATENCY.text(10_000, latencyMs));
         }
         if (!(speedDegPerS > 0)) {
-            throw new IllegalArgumentException("servo speed must be > 0 deg/s, got " + speedDegPerS);
+            throw new IllegalArgumentException(SerialMsg.EMU_SPEED.text(speedDegPerS));
         }
     }
 
@@ -53,9 +55,9 @@ public record EmulatorOptions(int[] modules, double drop, double corrupt, double
         return new EmulatorOptions(modules, drop, corrupt, latencyMs, afterS, forS, speedDegPerS, seed);
     }
 
-    private static void checkProbability(String what, double p) {
+    private static void checkProbability(SerialMsg what, double p) {
         if (!(p >= 0 && p <= 1)) {
-            throw new IllegalArgumentException(what + " probability must be in 0..1, got " + p);
+            throw new IllegalArgumentException(Msg.MUST_BE_IN_RANGE.text(what.text(), 0, 1, p));
         }
     }
 }

@@ -6,6 +6,7 @@ import java.util.concurrent.locks.LockSupport;
 import org.parpe.serial.link.ByteLink;
 import org.parpe.serial.link.LinkOpener;
 import org.parpe.serial.link.StreamDecoder;
+import org.parpe.serial.text.SerialMsg;
 
 /**
  * What every emulator does with its end of the line, whatever protocol it speaks: a receive thread
@@ -178,7 +179,7 @@ public abstract class ServedLine implements AutoCloseable {
                 n = l.read(in);
             } catch (IOException e) {
                 if (running) {
-                    listener.onEvent("emulator: " + e.getMessage() + "; waiting for it to come back");
+                    listener.onEvent("emulator: " + SerialMsg.EMU_WAITING.text(e.getMessage()));
                 }
                 l.close();
                 link = null;
@@ -203,7 +204,7 @@ public abstract class ServedLine implements AutoCloseable {
         try {
             link = opener.open();
             deviceGone = false;
-            listener.onEvent("emulator: serving " + link.name() + " again");
+            listener.onEvent("emulator: " + SerialMsg.EMU_SERVING_AGAIN.text(link.name()));
         } catch (IOException e) {
             // Not back yet: try again after the pause.
         }
@@ -219,7 +220,8 @@ public abstract class ServedLine implements AutoCloseable {
                 && (options.unplugForS() < 0 || t < options.unplugAfterS() + options.unplugForS());
         if (out != unplugged) {
             unplugged = out;
-            listener.onEvent(String.format("emulator: cable %s at %.3f s", out ? "unplugged" : "plugged back", t));
+            listener.onEvent("emulator: " + (out ? SerialMsg.EMU_UNPLUGGED : SerialMsg.EMU_PLUGGED_BACK)
+                    .text(String.format(java.util.Locale.ROOT, "%.3f", t)));
         }
         return !out;
     }

@@ -2,12 +2,15 @@ package org.parpe.serial.record;
 
 import java.util.ArrayList;
 import java.util.List;
+import org.parpe.serial.text.SerialMsg;
 
 /**
  * Poses captured from one group, in order, each with the seconds since the previous capture.
  * Mutable while recording; {@link RecordingWriter} turns it into PARSL.
  */
 public final class PoseRecording {
+    /** What a group's name must match. */
+    private static final String NAME = "[A-Za-z_][A-Za-z0-9_]*";
     private final String group;
     private final int[] modules;
     private final List<double[]> poses = new ArrayList<>();
@@ -15,11 +18,11 @@ public final class PoseRecording {
 
     /** An empty recording of {@code group}, whose modules are {@code modules} in group order. */
     public PoseRecording(String group, int[] modules) {
-        if (!group.matches("[A-Za-z_][A-Za-z0-9_]*")) {
-            throw new IllegalArgumentException("group name must match [A-Za-z_][A-Za-z0-9_]*, got '" + group + "'");
+        if (!group.matches(NAME)) {
+            throw new IllegalArgumentException(SerialMsg.REC_GROUP_NAME.text(NAME, group));
         }
         if (modules.length == 0) {
-            throw new IllegalArgumentException("group '" + group + "' has no modules");
+            throw new IllegalArgumentException(SerialMsg.REC_NO_MODULES.text(group));
         }
         this.group = group;
         this.modules = modules.clone();
@@ -28,8 +31,7 @@ public final class PoseRecording {
     /** Appends a pose (angles in group order) captured {@code interval} seconds after the previous one. */
     public void add(double[] angles, double interval) {
         if (angles.length != modules.length) {
-            throw new IllegalArgumentException("a pose of group '" + group + "' has " + modules.length
-                    + " angles, got " + angles.length);
+            throw new IllegalArgumentException(SerialMsg.REC_POSE_ANGLES.text(group, modules.length, angles.length));
         }
         poses.add(angles.clone());
         intervals.add(interval);

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import org.parpe.core.edit.ElementWriter;
+import org.parpe.serial.text.SerialMsg;
 
 /**
  * Writes a {@link PoseRecording} as a PARSL file (PARSL.md §12): a robot with the recorded group,
@@ -48,10 +49,10 @@ public final class RecordingWriter {
      */
     public static String toParsl(PoseRecording r, String origin, double rate, boolean loop) {
         if (!(rate > 0) || Double.isInfinite(rate)) {
-            throw new IllegalArgumentException("rate must be a number > 0, got " + rate);
+            throw new IllegalArgumentException(SerialMsg.REC_RATE.text(rate));
         }
         if (r.size() == 0) {
-            throw new IllegalArgumentException("a recording needs at least one pose");
+            throw new IllegalArgumentException(SerialMsg.REC_NO_POSES.text());
         }
         String g = r.group();
         StringBuilder ids = new StringBuilder();

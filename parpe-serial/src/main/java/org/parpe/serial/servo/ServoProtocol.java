@@ -113,19 +113,6 @@ public enum ServoProtocol {
         return defaultModel;
     }
 
-    /**
-     * What one device on this bus is called in messages: "module" for G1, whose devices are
-     * PolyBot modules (their bus ID is their PARSL module ID), "servo" for the others.
-     */
-    public String unit() {
-        return modules ? "module" : "servo";
-    }
-
-    /** What one packet on this bus is called in messages: "frame" for G1, "packet" for the others. */
-    public String packet() {
-        return controlTable() ? "packet" : "frame";
-    }
-
     /** The name on the command line and in profiles: g1, dxl2, sts, scs. */
     public String key() {
         return key;

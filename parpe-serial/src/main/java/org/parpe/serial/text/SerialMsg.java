@@ -5,7 +5,9 @@ import org.parpe.core.text.Key;
 /**
  * The keys of the servo buses' own messages: a servo that does not answer, whose torque does
  * not come on or whose model differs from the profile, a robot that stopped answering, a lost
- * device, the emergency stop, a setpoint outside the limits, a servo's fault. Each constant is a key of
+ * device, the emergency stop, a setpoint outside the limits, a servo's fault; the bus and emulator
+ * options' checks, the emulators' log lines, the pose recording's checks, the end-of-run counters.
+ * Each constant is a key of
  * {@code SerialMessages.properties} (English) and of its translations beside it;
  * {@code SerialMessagesTest} fails on a key missing from a bundle, on a bundle key without a
  * constant here, on a constant no code uses and on placeholders that differ from the English ones.
@@ -85,7 +87,53 @@ public enum SerialMsg implements Key {
     LINK_STALLED,
     SOCAT_MISSING,
     SOCAT_NO_PTYS,
-    SOCAT_INTERRUPTED;
+    SOCAT_INTERRUPTED,
+
+    // BusConfig: the bus options' names in Msg.MUST_BE_IN_RANGE
+    OPTION_BAUD,
+    OPTION_READ_TIMEOUT,
+    OPTION_RETRIES,
+    OPTION_WATCHDOG,
+    OPTION_DEAD_AFTER,
+    OPTION_KEEPALIVE,
+    OPTION_RECONNECT,
+    OPTION_IDLE_GAP,
+    SAFE_MODE_HOLD_OR_LIMP,
+
+    // EmulatorOptions, ServedLine, BusEmulator, ServoEmulator: the emulators' options and log lines
+    EMU_MODULE_ID,
+    EMU_LISTED_TWICE,
+    EMU_DROP,
+    EMU_CORRUPT,
+    EMU_LATENCY,
+    EMU_SPEED,
+    EMU_WAITING,
+    EMU_SERVING_AGAIN,
+    EMU_UNPLUGGED,
+    EMU_PLUGGED_BACK,
+    EMU_ESTOP,
+    EMU_WATCHDOG,
+    WHO_SERVO_ID,
+    NOT_EMULATED,
+
+    // ServoScanner, ServoEmulator: a servo ID beyond the protocol's
+    SERVO_IDS,
+
+    // PoseRecording, RecordingWriter: the pose recording's checks
+    REC_GROUP_NAME,
+    REC_NO_MODULES,
+    REC_POSE_ANGLES,
+    REC_RATE,
+    REC_NO_POSES,
+
+    // ServoDriver.summary: the end-of-run counters line
+    SUMMARY,
+    SENT_PACKETS,
+    SENT_FRAMES,
+    REJECTED_BY_MODULES,
+    REJECTED_BY_SERVOS,
+    FAULTS_MODULE,
+    FAULTS_SERVO;
 
     /** The bundle of these keys. */
     public static final String BUNDLE = "org.parpe.serial.text.SerialMessages";

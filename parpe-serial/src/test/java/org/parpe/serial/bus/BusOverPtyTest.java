@@ -167,6 +167,26 @@ class BusOverPtyTest extends OverPty {
         assertTrue(reports.get(reports.size() - 1).contains("40 setpoints clamped"), reports.toString());
     }
 
+    /** The end-of-run counters line is in the user's language (before, always in English). */
+    @Test
+    void theCountersLineIsInGerman() throws Exception {
+        org.parpe.core.text.Lang.use(java.util.Locale.GERMAN);
+        try {
+            startEmulator(EmulatorOptions.of(0, 1));
+            startBus(new int[] {0, 1});
+            for (int k = 0; k < 20; k++) {
+                bus.accept(k, k * 0.01, new double[] {120, -95.5});
+                Thread.sleep(5);
+            }
+            bus.finish(new RunOutcome(RunOutcome.Status.COMPLETED, 0.2, ""));
+        } finally {
+            org.parpe.core.text.Lang.use(java.util.Locale.ENGLISH);
+        }
+        String summary = reports.get(reports.size() - 1);
+        assertTrue(summary.matches("Bus .* \\(g1\\): [1-9]\\d* Frames gesendet, \\d+ Abfragen \\(.*, 40 Sollwerte begrenzt, "
+                + "0 Modulfehler, \\d+ Watchdog-Stopps, 0 Verbindungsabbrüche"), summary);
+    }
+
     @Test
     void withDropsCorruptionAndLatencyTheRunCompletesAndCountsTheFaults() throws Exception {
         startEmulator(EmulatorOptions.of(IDS).withFaults(0.05, 0.05, 2));

@@ -14,6 +14,7 @@ import org.parpe.serial.g1.FrameHandler;
 import org.parpe.serial.g1.Protocol;
 import org.parpe.serial.bus.SafeMode;
 import org.parpe.serial.g1.Command;
+import org.parpe.serial.text.SerialMsg;
 
 /**
  * Emulates a chain of modules on the far end of a serial link, byte for byte as the protocol
@@ -129,7 +130,7 @@ public final class BusEmulator extends ServedLine {
     private ServoModule module(int id) {
         ServoModule m = id >= 0 && id < byId.length ? byId[id] : null;
         if (m == null) {
-            throw new IllegalArgumentException("module " + id + " is not emulated");
+            throw new IllegalArgumentException(SerialMsg.NOT_EMULATED.text(SerialMsg.WHO_MODULE.text(id)));
         }
         return m;
     }
@@ -197,7 +198,7 @@ public final class BusEmulator extends ServedLine {
             m.estop = true;
             m.safe(mode);
             if (first) {
-                listener.onSafeStop(m.id, now, "emergency stop");
+                listener.onSafeStop(m.id, now, SerialMsg.EMU_ESTOP.text());
             }
         });
     }
@@ -255,7 +256,7 @@ public final class BusEmulator extends ServedLine {
                 if (silent && m.watchdogArmed && !m.watchdogTripped) {
                     m.watchdogTripped = true;
                     m.safe(safeMode);
-                    listener.onSafeStop(m.id, now, "watchdog");
+                    listener.onSafeStop(m.id, now, SerialMsg.EMU_WATCHDOG.text());
                 }
                 m.step(dt, speed);
             }

@@ -13,6 +13,7 @@ import org.parpe.serial.servo.ServoProtocol;
 import org.parpe.serial.servo.wire.Packet;
 import org.parpe.serial.servo.wire.PacketCodec;
 import org.parpe.serial.servo.wire.PacketDecoder;
+import org.parpe.serial.text.SerialMsg;
 
 /**
  * Emulates a chain of Dynamixel 2.0 or Feetech servos on the far end of a serial link. Incoming
@@ -96,7 +97,7 @@ public final class ServoEmulator extends ServedLine {
         int maxId = models[0].protocol().maxId();
         for (int id : options.modules()) {
             if (id > maxId) {
-                throw new IllegalArgumentException(models[0].protocol().key() + " servo IDs are 0.." + maxId + ", got " + id);
+                throw new IllegalArgumentException(SerialMsg.SERVO_IDS.text(models[0].protocol().key(), maxId, id));
             }
         }
         ServoEmulator e = new ServoEmulator(opener, opener.open(), models, options, listener);
@@ -178,7 +179,7 @@ public final class ServoEmulator extends ServedLine {
                 return s;
             }
         }
-        throw new IllegalArgumentException("servo " + id + " is not emulated");
+        throw new IllegalArgumentException(SerialMsg.NOT_EMULATED.text(SerialMsg.WHO_SERVO_ID.text(id)));
     }
 
 

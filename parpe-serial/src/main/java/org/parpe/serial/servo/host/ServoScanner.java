@@ -13,6 +13,7 @@ import org.parpe.serial.servo.ServoModel;
 import org.parpe.serial.servo.ServoProtocol;
 import org.parpe.serial.servo.profile.HardwareProfile;
 import org.parpe.serial.servo.profile.ServoMapping;
+import org.parpe.serial.text.SerialMsg;
 
 /**
  * Finding servos on a serial device, shared by {@code parpe scan} and the IDE's Hardware dialog:
@@ -103,8 +104,7 @@ public final class ServoScanner {
     /** Throws when an ID is beyond what {@code p} allows; {@code ids} sorted. */
     public static void checkIds(ServoProtocol p, int[] ids) {
         if (ids.length > 0 && ids[ids.length - 1] > p.maxId()) {
-            throw new IllegalArgumentException("--ids: " + p.key() + " servo IDs are 0.." + p.maxId() + ", got "
-                    + ids[ids.length - 1]);
+            throw new IllegalArgumentException("--ids: " + SerialMsg.SERVO_IDS.text(p.key(), p.maxId(), ids[ids.length - 1]));
         }
     }
 

@@ -4,7 +4,6 @@ import org.parpe.core.text.Message;
 import org.parpe.serial.text.SerialMsg;
 import java.io.IOException;
 import java.util.List;
-import java.util.Locale;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
 import org.parpe.core.sensor.Channel;
@@ -184,11 +183,13 @@ public final class ServoDriver extends BusThread {
     public String summary() {
         ServoBus.Counters c = bus.counters();
         ServoProtocol p = profile.protocol();
-        return String.format(Locale.ROOT, "bus %s (%s): %d %ss sent, %d reads (%d timeouts, %d retried ok, %d failed), "
-                + "%d bad checksums received, %s%d setpoints clamped, %d %s faults, %d watchdog stops, %d disconnects",
-                bus.name(), p.key(), c.packetsSent(), p.packet(), reads, c.timeouts(), readsRetried, readFailures,
-                c.checksumErrors(), c.rejected() < 0 ? "" : p.unit() + "s rejected " + c.rejected() + " frames, ",
-                set.clamps(), faults, p.unit(), watchdogResumes, disconnects());
+        boolean g1 = p.modules();
+        Message rejected = c.rejected() < 0 ? Message.EMPTY
+                : Message.of(g1 ? SerialMsg.REJECTED_BY_MODULES : SerialMsg.REJECTED_BY_SERVOS, c.rejected());
+        return SerialMsg.SUMMARY.text(bus.name(), p.key(),
+                Message.of(p.controlTable() ? SerialMsg.SENT_PACKETS : SerialMsg.SENT_FRAMES, c.packetsSent()),
+                reads, c.timeouts(), readsRetried, readFailures, c.checksumErrors(), rejected, set.clamps(),
+                Message.of(g1 ? SerialMsg.FAULTS_MODULE : SerialMsg.FAULTS_SERVO, faults), watchdogResumes, disconnects());
     }
 
     /** Goals when new or due as keepalive, then a read unless goals saturate the line. */
