@@ -120,7 +120,13 @@ class ServoDriverTest extends OverPty {
         assertTrue(emulator.backDrive(12, 50));
         open(SafeMode.HOLD, 30);
         assertEquals(List.of(0, 1, 2), driver.discover());
-        await(() -> Math.abs(emulator.angle(12) - 30) < 0.1, "servo 12 brought to its 30° limit");
+        // The tick just inside 30°: 4096 ticks a turn (e-Manual, XL430-W250 control table,
+        // Goal Position(116), 0.088°/unit), 30° is tick 341.33, so 341 = 29.970703125°. Waiting
+        // only for "within 0.1° of 30" caught the servo on its way down from 50° (30.0005°) when
+        // the machine was loaded; it must come to rest on the inner tick.
+        double inner = 341 * 360.0 / 4096;
+        await(() -> emulator.angle(12) == inner, "servo 12 at rest on the tick inside its 30° limit ("
+                + inner + "°)");
         assertTrue(emulator.angle(12) <= 30, "never beyond it: " + emulator.angle(12));
         assertFalse(emulator.isLimp(12));
     }
