@@ -291,12 +291,23 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 		}
 
 		double[] doubles(int slot, int size) {
+			double[] a = written(slot, size);
+			Arrays.fill(a, 0, size, 0);
+			return a;
+		}
+
+		/**
+		 * Room for {@code size} numbers with whatever the step before left in them, for an array
+		 * whose every entry the step writes before it reads it: {@code J} (stage 2a sets all 16
+		 * numbers of each of the {@code m} rows, then the joints fill them in) and {@code Jcopy}
+		 * (stage 2a copies the rows of the joints with feedback, the only ones stage 4b reads).
+		 * Zeroing them cost a pass over 256 bytes a row in every step.
+		 */
+		double[] written(int slot, int size) {
 			double[] a = doubles[slot];
 			if (a.length < size) {
 				a = new double[room(size)];
 				doubles[slot] = a;
-			} else {
-				Arrays.fill(a, 0, size, 0);
 			}
 			return a;
 		}
@@ -1087,8 +1098,8 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 
 			jb = work.ints(Work.JB, m*2);
 			findex = work.ints(Work.FINDEX, m);
-			J = work.doubles(Work.J, m * JME__MAX);
-			Jcopy = work.doubles(Work.JCOPY, m * JME__MAX);
+			J = work.written(Work.J, m * JME__MAX);
+			Jcopy = work.written(Work.JCOPY, m * JME__MAX);
 		}
 
 		memarena.dummy();
