@@ -3,7 +3,8 @@
  * ODE4j's BSD licence (its notice follows, unchanged). It takes the place of the class in the
  * ODE4j jar (this module's classes come first on the class path and in the shaded jar). The one
  * change: the temporary quaternion of dxStepBody's infinitesimal rotation is this thread's, kept from call to call, instead of new in every call (issue 36; docs/decisions.md, "The simulator's tick allocates nothing"). The
- * arithmetic is untouched.
+ * arithmetic is untouched. And a world stepped on one thread moves a body's geoms without taking
+ * the world's lock ({@code dxStepBody(h, serialize)}).
  */
 /*************************************************************************
  *                                                                       *
@@ -1037,6 +1038,16 @@ public class DxBody extends DObject implements DBody {
 
 	void dxStepBody (double h)
 	{
+		dxStepBody(h, true);
+	}
+
+	/**
+	 * PARPE (issue 36): {@link #dxStepBody(double)}, and when {@code serialize} is false (the world
+	 * is stepped on one thread) without taking the world's lock around each geom's move: a lock
+	 * nobody else can hold costs two atomic operations per geom.
+	 */
+	void dxStepBody (double h, boolean serialize)
+	{
 		// cap the angular velocity
 		if ((flags & dxBodyMaxAngularSpeed) != 0) {
 			final double max_ang_speed = max_angular_speed;
@@ -1125,9 +1136,13 @@ public class DxBody extends DObject implements DBody {
 		// notify all attached geoms that this body has moved
 	    DxWorldProcessContext world_process_context = world.UnsafeGetWorldProcessingContext(); 
 	    for (DxGeom geom2 = geom; geom2 != null; geom2 = geom2.dGeomGetBodyNext ()) {
-	        world_process_context.LockForStepbodySerialization();
+	        if (serialize) {
+	            world_process_context.LockForStepbodySerialization();
+	        }
 	        geom2.dGeomMoved ();
-	        world_process_context.UnlockForStepbodySerialization();
+	        if (serialize) {
+	            world_process_context.UnlockForStepbodySerialization();
+	        }
 	    }
 
 		// notify the user

@@ -8,7 +8,10 @@
  * ({@code dxQuickStepIsland_Stage4LCP_IterationSteps}). The arithmetic is untouched. And, only when
  * a world asks for it ({@link WarmStart}, set per thread by {@code SequentialQuickStep}), the rows
  * start from the forces of the step before instead of zero, as ODE's C solver did with
- * {@code WARM_STARTING} ({@code warmStartRows}, {@code keepRows}).
+ * {@code WARM_STARTING} ({@code warmStartRows}, {@code keepRows}). On one thread, the work
+ * counters are read and written plainly instead of by atomic operations ({@code claim},
+ * {@code take}), and the constraint shuffle draws from the stepping world's own generator
+ * ({@link WorldRandom}) instead of ODE4j's global one: the same numbers in the same order.
  */
 /*************************************************************************
  *                                                                       *
@@ -261,9 +264,11 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 		private static final int MINDEX = 0, JB = 1, FINDEX = 2;
 		private final double[][] doubles = new double[8][0];
 		WarmStart warm;
+		/** The stepping world's generator of the constraint shuffle, or null: ODE4j's global one. */
+		WorldRandom random;
 		private final int[][] ints = new int[3][0];
 		private DJointWithInfo1[] jointinfos = new DJointWithInfo1[0];
-		private IndexError[] order = new IndexError[0];
+		private int[] order = new int[0];
 		final dxQuickStepperStage1CallContext stage1 = new dxQuickStepperStage1CallContext();
 		final dxQuickStepperStage0BodiesCallContext stage0Bodies = new dxQuickStepperStage0BodiesCallContext();
 		final dxQuickStepperStage0JointsCallContext stage0Joints = new dxQuickStepperStage0JointsCallContext();
@@ -286,12 +291,23 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 		}
 
 		double[] doubles(int slot, int size) {
+			double[] a = written(slot, size);
+			Arrays.fill(a, 0, size, 0);
+			return a;
+		}
+
+		/**
+		 * Room for {@code size} numbers with whatever the step before left in them, for an array
+		 * whose every entry the step writes before it reads it: {@code J} (stage 2a sets all 16
+		 * numbers of each of the {@code m} rows, then the joints fill them in) and {@code Jcopy}
+		 * (stage 2a copies the rows of the joints with feedback, the only ones stage 4b reads).
+		 * Zeroing them cost a pass over 256 bytes a row in every step.
+		 */
+		double[] written(int slot, int size) {
 			double[] a = doubles[slot];
 			if (a.length < size) {
 				a = new double[room(size)];
 				doubles[slot] = a;
-			} else {
-				Arrays.fill(a, 0, size, 0);
 			}
 			return a;
 		}
@@ -325,17 +341,16 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 			return jointinfos;
 		}
 
-		/** {@code size} row orders, each as a new one would be. */
-		IndexError[] order(int size) {
+		/**
+		 * {@code size} row orders, each as a new one would be. PARPE: the row indices themselves
+		 * ({@code IndexError}'s one field in use) instead of an object per row, which the LCP
+		 * sweep dereferenced for every row it updated.
+		 */
+		int[] order(int size) {
 			if (order.length < size) {
-				IndexError[] a = Arrays.copyOf(order, room(size));
-				for (int i = order.length; i < a.length; i++) {
-					a[i] = new IndexError();
-				}
-				order = a;
-			}
-			for (int i = 0; i < size; i++) {
-				order[i].index = 0;
+				order = new int[room(size)];
+			} else {
+				Arrays.fill(order, 0, size, 0);
 			}
 			return order;
 		}
@@ -515,7 +530,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 
     private static class dxQuickStepperStage4CallContext {
         void Initialize(DxStepperProcessingCallContext callContext, dxQuickStepperLocalContext localContext,
-                double[] lambda, double[] cforce, double[] iMJ, IndexError[] order, double[] last_lambda,
+                double[] lambda, double[] cforce, double[] iMJ, int[] order, double[] last_lambda,
                 AtomicInteger[] bi_links_or_mi_levels, AtomicInteger[] mi_links) {
             m_stepperCallContext = callContext;
             m_localContext = localContext;
@@ -577,7 +592,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
         double[] m_lambda;
         double[] m_cforce;
         double[] m_iMJ;
-        IndexError[] m_order;
+        int[] m_order;
         double[] m_last_lambda;
         AtomicInteger[] m_bi_links_or_mi_levels;
         AtomicInteger[] m_mi_links;
@@ -620,6 +635,33 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
     }
 
     //***************************************************************************
+	/**
+	 * PARPE (issue 36): {@code Atomics.ThrsafeIncrementIntUpToLimit}, with plain reads and writes
+	 * when the island is stepped on one thread: the same numbers handed out in the same order,
+	 * without a compare-and-set (a locked instruction) for every chunk of rows or bodies.
+	 */
+	private static int claim(AtomicInteger counter, int limit, DxStepperProcessingCallContext callContext) {
+		if (callContext.m_stepperAllowedThreads() != 1) {
+			return Atomics.ThrsafeIncrementIntUpToLimit(counter, limit);
+		}
+		int value = counter.getPlain();
+		if (value >= limit) {
+			return limit;
+		}
+		counter.setPlain(value + 1);
+		return value;
+	}
+
+	/** PARPE (issue 36): {@code Atomics.ThrsafeExchange(flag, 1) == 0}, plainly on one thread (see {@link #claim}). */
+	private static boolean take(AtomicInteger flag, DxStepperProcessingCallContext callContext) {
+		if (callContext.m_stepperAllowedThreads() != 1) {
+			return Atomics.ThrsafeExchange(flag, 1) == 0;
+		}
+		boolean free = flag.getPlain() == 0;
+		flag.setPlain(1);
+		return free;
+	}
+
 	// various common computations involving the matrix J
 
 	/** 
@@ -627,13 +669,13 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 	 * (TZ) Performs a 331 multiplication on the 3-5 and 9-11 parts of
 	 * each row and writes the result into iMJ.  
 	 */
-	private static void compute_invM_JT (AtomicInteger mi_storage, final int m, final double[] J, final double[] iMJ, 
+	private static void compute_invM_JT (AtomicInteger mi_storage, DxStepperProcessingCallContext callContext, final int m, final double[] J, final double[] iMJ, 
 	        final int[] jb,
 			final DxBody[]bodyP, final int bodyOfs, final double[] invI, int step_size)
 	{
 		int m_steps = (m + (step_size - 1)) / step_size;
 	    int mi_step;
-	    while ((mi_step = Atomics.ThrsafeIncrementIntUpToLimit(mi_storage, m_steps)) != m_steps) {
+	    while ((mi_step = claim(mi_storage, m_steps, callContext)) != m_steps) {
 	        int mi = mi_step * step_size;
 	        int miend = mi + Math.min(step_size, m - mi);
 	        int iMJ_ptr = mi * IMJ__MAX;
@@ -671,12 +713,12 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 	 * @param jb int[m*2] of body tags. Paired per joint.
 	 * @param in double[nb*6]
 	 */
-	private static void multiplyAdd_J (AtomicInteger mi_storage, 
+	private static void multiplyAdd_J (AtomicInteger mi_storage, DxStepperProcessingCallContext callContext,
 			int m, int in_offset, int in_stride, final double[] J, final int[] jb, final double[] in, int step_size)
 	{
 		int m_steps = (m + (step_size - 1)) / step_size;
 	    int mi_step;
-	    while ((mi_step = Atomics.ThrsafeIncrementIntUpToLimit(mi_storage, m_steps)) != m_steps) {
+	    while ((mi_step = claim(mi_storage, m_steps, callContext)) != m_steps) {
 	        int mi = mi_step * step_size;
 	        int miend = mi + Math.min(step_size, m - mi);
 	        int J_ptr = mi * JME__MAX;
@@ -697,12 +739,6 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 	            J_ptr += JME__MAX;
 	        }
 		}
-	}
-
-	private static class IndexError {
-//		double error;		// error to sort on
-//		int findex;
-		int index;		// row index
 	}
 
 
@@ -838,13 +874,13 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 	    int bodyOfs = callContext.m_stepperCallContext.m_islandBodiesStartOfs();
 	    int nb = callContext.m_stepperCallContext.m_islandBodiesCount();
 
-	    if (Atomics.ThrsafeExchange(callContext.m_tagsTaken, 1) == 0)
+	    if (take(callContext.m_tagsTaken, callContext.m_stepperCallContext))
 	    {
 	        // number all bodies in the body list - set their tag values
 	        for (int i=0; i<nb; i++) bodyP[bodyOfs+i].tag = i;
 	    }
 
-	    if (Atomics.ThrsafeExchange(callContext.m_gravityTaken, 1) == 0)
+	    if (take(callContext.m_gravityTaken, callContext.m_stepperCallContext))
 	    {
 	        DxWorld world = callContext.m_stepperCallContext.m_world();
 
@@ -886,7 +922,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
         double[] invIA = callContext.m_invI;
         int bodyIndex ;
         Work work = Work.get();
-        while ((bodyIndex = Atomics.ThrsafeIncrementIntUpToLimit(callContext.m_inertiaBodyIndex, nb)) != nb) {
+        while ((bodyIndex = claim(callContext.m_inertiaBodyIndex, nb, callContext.m_stepperCallContext)) != nb) {
             int invIrowP = bodyIndex * IIE__MAX;
             DMatrix3 tmp = work.tmp.setZero();
             DxBody b = bodyP[bodyIndex + bodyOfs];
@@ -1062,8 +1098,8 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 
 			jb = work.ints(Work.JB, m*2);
 			findex = work.ints(Work.FINDEX, m);
-			J = work.doubles(Work.J, m * JME__MAX);
-			Jcopy = work.doubles(Work.JCOPY, m * JME__MAX);
+			J = work.written(Work.J, m * JME__MAX);
+			Jcopy = work.written(Work.JCOPY, m * JME__MAX);
 		}
 
 		memarena.dummy();
@@ -1224,7 +1260,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 	        int validFIndices = 0;
 
 	        int ji;
-	        while ((ji = Atomics.ThrsafeIncrementIntUpToLimit(stage2CallContext.m_ji_J, nj)) != nj) {
+	        while ((ji = claim(stage2CallContext.m_ji_J, nj, callContext)) != nj) {
 				final int ofsi = getMIndex(mindex, ji);
 				final int infom = getMIndex(mindex, ji + 1) - ofsi;
 	            int jRow = ofsi * JME__MAX;
@@ -1318,7 +1354,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 
 	        // create an array of body numbers for each joint row
 	        int ji;
-	        while ((ji = Atomics.ThrsafeIncrementIntUpToLimit(stage2CallContext.m_ji_jb, nj)) != nj) {
+	        while ((ji = claim(stage2CallContext.m_ji_jb, nj, callContext)) != nj) {
 	        	DxJoint joint = jointinfos[ji].joint;
 		                
 	        	int b1 = (joint.node[0].body!=null) ? (joint.node[0].body.tag) : -1;
@@ -1361,7 +1397,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 
 	        // put -(v/h + invM*fe) into rhs_tmp
 	        int bi_step;
-	        while ((bi_step = Atomics.ThrsafeIncrementIntUpToLimit(stage2CallContext.m_bi, nb_steps)) != nb_steps) {
+	        while ((bi_step = claim(stage2CallContext.m_bi, nb_steps, callContext)) != nb_steps) {
 	            int bi = bi_step * step_size;
 	            int biend = bi + Math.min(step_size, nb - bi);
 	            int rhscurr = bi * RHS__MAX;
@@ -1401,7 +1437,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 	        final int m = localContext.m_m;
 
 	        // add J*rhs_tmp to rhs
-	        multiplyAdd_J(stage2CallContext.m_Jrhsi, m, RHS__DYNAMICS_MIN, RHS__MAX, J, jb, rhs_tmp, dxQUICKSTEPISLAND_STAGE2C_STEP);
+	        multiplyAdd_J(stage2CallContext.m_Jrhsi, stage2CallContext.m_stepperCallContext, m, RHS__DYNAMICS_MIN, RHS__MAX, J, jb, rhs_tmp, dxQUICKSTEPISLAND_STAGE2C_STEP);
 			// THis was originally done inside multiplyAdd_J()
 	        dSASSERT(RHS__DYNAMICS_MIN + JME__J1_COUNT <= RHS__MAX);
 	    }
@@ -1433,7 +1469,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
             double[] cforce = work.doubles(Work.CFORCE, nb * CFE__MAX);
             double[] iMJ = work.doubles(Work.IMJ, m * IMJ__MAX);//, INVMJ_ALIGNMENT);
 	        // order to solve constraint rows in
-	        IndexError[] order = work.order(m);
+	        int[] order = work.order(m);
 	        double[] last_lambda = null;
 	        if (CONSTRAINTS_REORDERING_METHOD == ReorderingMethod.REORDERING_METHOD__BY_ERROR) {
 		        // the lambda computed at the previous iteration.
@@ -1572,7 +1608,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
         int nj_steps = (nj + (step_size - 1)) / step_size;
         
         int ji_step;
-        while ((ji_step = Atomics.ThrsafeIncrementIntUpToLimit(stage4CallContext.m_ji_4a, nj_steps)) != nj_steps) {
+        while ((ji_step = claim(stage4CallContext.m_ji_4a, nj_steps, stage4CallContext.m_stepperCallContext)) != nj_steps) {
             int ji = ji_step * step_size;
             int lambdacurr = getMIndex(mindex, ji);
             int lambdsnext = getMIndex(mindex, ji + Math.min(step_size, nj - ji));
@@ -1620,7 +1656,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 	    double[]invI = localContext.m_invI;
 	
 	    // precompute iMJ = inv(M)*J'
-	    compute_invM_JT(stage4CallContext.m_mi_iMJ, m, J, iMJ, jb, body, bodyOfs, invI, dxQUICKSTEPISLAND_STAGE4LCP_IMJ_STEP);
+	    compute_invM_JT(stage4CallContext.m_mi_iMJ, callContext, m, J, iMJ, jb, body, bodyOfs, invI, dxQUICKSTEPISLAND_STAGE4LCP_IMJ_STEP);
 	}
 
     private static
@@ -1689,7 +1725,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
         int nb_steps = (nb + (step_size - 1)) / step_size;
     
         int bi_step;
-        while ((bi_step = Atomics.ThrsafeIncrementIntUpToLimit(stage4CallContext.m_mi_fc, nb_steps)) != nb_steps) {
+        while ((bi_step = claim(stage4CallContext.m_mi_fc, nb_steps, callContext)) != nb_steps) {
             int bi = bi_step * step_size;
             int bicnt = Math.min(step_size, nb - bi);
             dSetZero(fc, bi * CFE__MAX, bicnt * CFE__MAX);
@@ -1726,7 +1762,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
         int m_steps = (m + (step_size - 1)) / step_size;
 
         int mi_step;
-        while ((mi_step = Atomics.ThrsafeIncrementIntUpToLimit(stage4CallContext.m_mi_Ad, m_steps)) != m_steps) {
+        while ((mi_step = claim(stage4CallContext.m_mi_Ad, m_steps, callContext)) != m_steps) {
             int mi = mi_step * step_size;
             int miend = mi + Math.min(step_size, m - mi);
 
@@ -1771,7 +1807,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 	    int m = localContext.m_m;
 		int valid_findices = localContext.m_valid_findices.get();
 
-        IndexError []order = stage4CallContext.m_order;
+        int[] order = stage4CallContext.m_order;
         // make sure constraints with findex < 0 come first.
         int orderhead = 0;
         int ordertail = m - valid_findices;
@@ -1780,10 +1816,10 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
         // Fill the array from both ends
         for (int i = 0; i != m; ++i) {
             if (findex[i] == -1) {
-                order[orderhead].index = i; // Place them at the front
+                order[orderhead] = i; // Place them at the front
                 ++orderhead;
             } else {
-				order[ordertail].index = i; // Place them at the end
+				order[ordertail] = i; // Place them at the end
 				++ordertail;
             }
         }
@@ -2036,7 +2072,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 					 *  It looks like the iterative method needs a shake after it already found
 					 *  some initial approximations and those incurred errors help it to converge even better.
 					 */
-					if (Atomics.ThrsafeExchange(stage4CallContext.m_SOR_reorderHeadTaken, 1) == 0) {
+					if (take(stage4CallContext.m_SOR_reorderHeadTaken, stage4CallContext.m_stepperCallContext)) {
 						// Process the head
 						final dxQuickStepperLocalContext localContext = stage4CallContext.m_localContext;
 						ConstraintsReorderingHelper(stage4CallContext, 0, localContext.m_m);
@@ -2057,10 +2093,11 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 
 	private static void ConstraintsReorderingHelper(dxQuickStepperStage4CallContext stage4CallContext, int startIndex,
 			int indicesCount) {
-		IndexError[] order = stage4CallContext.m_order;
+		int[] order = stage4CallContext.m_order;
+		final WorldRandom random = Work.get().random;
 		for (int index = 1; index < indicesCount; ++index) {
-			int swapIndex = dRandInt(index + 1);
-			IndexError tmp = order[startIndex + index];
+			int swapIndex = random != null ? random.nextInt(index + 1) : dRandInt(index + 1);
+			int tmp = order[startIndex + index];
 			order[startIndex + index] = order[startIndex + swapIndex];
 			order[startIndex + swapIndex] = tmp;
 		}
@@ -2116,12 +2153,12 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
         AtomicInteger[] bi_links = stage4CallContext.m_bi_links_or_mi_levels;
         AtomicInteger[] mi_links = stage4CallContext.m_mi_links;
 
-        IndexError[] order = stage4CallContext.m_order;
+        int[] order = stage4CallContext.m_order;
         int[] jb = localContext.m_jb;
 
         int m = localContext.m_m;
         for (int i = 0; i != m; ++i) {
-            int index = order[i].index;
+            int index = order[i];
 
             int b1 = jb[index * 2];
             int b2 = jb[index * 2 + 1];
@@ -2374,7 +2411,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
     void dxQuickStepIsland_Stage4LCP_IterationSteps(dxQuickStepperStage4CallContext stage4CallContext, int from, int to)
     {
     	dxQuickStepperLocalContext localContext = stage4CallContext.m_localContext;
-        IndexError[ ]order = stage4CallContext.m_order;
+        int[] order = stage4CallContext.m_order;
         double[] lambda = stage4CallContext.m_lambda;
 		double[] J = localContext.m_J;
         double[] fc = stage4CallContext.m_cforce;
@@ -2382,7 +2419,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
         int[] findex = localContext.m_findex;
 	    double[] iMJ = stage4CallContext.m_iMJ;
       for (int i = from; i != to; ++i) {
-        int index = order[i].index;
+        int index = order[i];
 
         double delta = 0;
         
@@ -2478,7 +2515,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
         DxStepperProcessingCallContext callContext = stage4CallContext.m_stepperCallContext;
 	    dxQuickStepperLocalContext localContext = stage4CallContext.m_localContext;
 
-        if (Atomics.ThrsafeExchange(stage4CallContext.m_cf_4b, 1) == 0) {
+        if (take(stage4CallContext.m_cf_4b, callContext)) {
             DxBody[] bodyA = callContext.m_islandBodiesStartA();
             int bodyOfs = callContext.m_islandBodiesStartOfs();
             int nb = callContext.m_islandBodiesCount();
@@ -2512,7 +2549,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
             int nj_steps = (nj + (step_size - 1)) / step_size;
 
             int ji_step;
-            while ((ji_step = Atomics.ThrsafeIncrementIntUpToLimit(stage4CallContext.m_ji_4b, nj_steps)) != nj_steps) {
+            while ((ji_step = claim(stage4CallContext.m_ji_4b, nj_steps, callContext)) != nj_steps) {
                 int ji = ji_step * step_size;
 				final int jiend = ji + Math.min(step_size, nj - ji);
 
@@ -2648,7 +2685,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 	    int nb_steps = (nb + (step_size - 1)) / step_size;
 
 	    int bi_step;
-	    while ((bi_step = Atomics.ThrsafeIncrementIntUpToLimit(stage6CallContext.m_bi_6a, nb_steps)) != nb_steps) {
+	    while ((bi_step = claim(stage6CallContext.m_bi_6a, nb_steps, callContext)) != nb_steps) {
 	        int bi = bi_step * step_size;
 	        int bicnt = Math.min(step_size, nb - bi);
 
@@ -2748,7 +2785,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 	    int nb_steps = (nb + (step_size - 1)) / step_size;
 
 	    int bi_step;
-	    while ((bi_step = Atomics.ThrsafeIncrementIntUpToLimit(stage6CallContext.m_bi_6b, nb_steps)) != nb_steps) {
+	    while ((bi_step = claim(stage6CallContext.m_bi_6b, nb_steps, callContext)) != nb_steps) {
 	        int bi = bi_step * step_size;
 	        int bicnt = Math.min(step_size, nb - bi);
 
@@ -2756,7 +2793,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 	        int bodyend = bodycurr + bicnt;
 	        while (true) {
 	            DxBody b = bodyA[bodyOfs + bodycurr];
-        		b.dxStepBody (stepsize);
+        		b.dxStepBody (stepsize, callContext.m_stepperAllowedThreads() != 1);
 	        	b.facc.setZero();
 	        	b.tacc.setZero();
 	            if (++bodycurr == bodyend) {
@@ -2787,10 +2824,13 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 
 	/**
 	 * PARPE: what the QuickSteps on this thread start their rows from: {@code warm}'s forces of the
-	 * step before, or (null) zero as in ODE4j.
+	 * step before, or (null) zero as in ODE4j; and where they draw the constraint shuffle from:
+	 * {@code random}, the stepping world's own generator, or (null) ODE4j's global one.
 	 */
-	public static void warmStartOnThisThread(WarmStart warm) {
-		Work.get().warm = warm;
+	public static void onThisThread(WarmStart warm, WorldRandom random) {
+		Work work = Work.get();
+		work.warm = warm;
+		work.random = random;
 	}
 
 	/** PARPE: lambda of each row from the step before ({@link WarmStart}), and fc = iMJ * lambda. */

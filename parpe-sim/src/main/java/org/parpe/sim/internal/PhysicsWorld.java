@@ -8,7 +8,6 @@ import org.ode4j.ode.DGeom;
 import org.ode4j.ode.DHingeJoint;
 import org.ode4j.ode.DJointGroup;
 import org.ode4j.ode.DMass;
-import org.ode4j.ode.DMisc;
 import org.ode4j.ode.DSpace;
 import org.ode4j.ode.DWorld;
 import org.ode4j.ode.OdeHelper;
@@ -197,9 +196,9 @@ public final class PhysicsWorld implements AutoCloseable {
                 scenery.springs(h);
                 OdeHelper.spaceCollide2(space, scenery.fixedSpace(), null, contacts);
             }
-            // QuickStep reorders constraints with ODE's global random generator; seeding it from
-            // this world's own step count keeps runs reproducible whatever else uses ODE.
-            DMisc.dRandSetSeed(stepCount++);
+            // QuickStep reorders constraints with random numbers; seeding them from this world's
+            // own step count keeps runs reproducible whatever else uses ODE.
+            quickStep.seed(stepCount++);
             quickStep.step(h);
             contactGroup.empty();
         }

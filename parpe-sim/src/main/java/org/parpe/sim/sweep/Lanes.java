@@ -15,9 +15,10 @@ import org.parpe.sim.world.WorldScore;
 /**
  * Private copies of the simulator's classes, one per worker thread. ODE4j keeps the random
  * generator with which its QuickStep solver shuffles constraints in one static field
- * ({@code org.ode4j.ode.internal.Misc.seed}), and the simulator reseeds it before every step to
- * stay reproducible; two simulations on two threads of one class loader would draw from each
- * other's sequence, and their results would depend on timing. A class loader of its own gives
+ * ({@code org.ode4j.ode.internal.Misc.seed}); two simulations on two threads of one class loader
+ * would draw from each other's sequence, and their results would depend on timing. (A world of
+ * the simulator now draws from its own, {@code WorldRandom}; the lanes keep the rest of ODE4j's
+ * static state apart as well.) A class loader of its own gives
  * each worker its own ODE4j and so its own generator. Only ODE4j and the simulator (which links
  * to it) are private; the script loader, the read script, the scheduler and the XML and
  * expression libraries come from the application's loader, one copy for every worker, which the

@@ -4,7 +4,9 @@ import org.ode4j.ode.DWorld;
 import org.ode4j.ode.internal.DxBody;
 import org.ode4j.ode.internal.DxQuickStep;
 import org.ode4j.ode.internal.DxWorld;
+import org.ode4j.ode.internal.Misc;
 import org.ode4j.ode.internal.WarmStart;
+import org.ode4j.ode.internal.WorldRandom;
 import org.ode4j.ode.internal.joints.DxJoint;
 import org.ode4j.ode.internal.joints.DxJointNode;
 
@@ -31,6 +33,8 @@ public final class SequentialQuickStep {
     private double contextStepSize = Double.NaN;
 
     private final WarmStart warm;
+    private final WorldRandom random = new WorldRandom();
+    private long seed;
 
     /**
      * Steps {@code world}; {@code warm} (or null: from zero, as ODE4j) is what its rows start from,
@@ -41,10 +45,20 @@ public final class SequentialQuickStep {
         this.warm = warm;
     }
 
+    /**
+     * The seed of the next step's constraint shuffle, as {@code dRandSetSeed} before
+     * {@code world.quickStep}: drawn from this world's own generator (ODE4j's global one only for
+     * a world stepped on several threads), the same numbers.
+     */
+    public void seed(long s) {
+        seed = s;
+    }
+
     /** One step of {@code stepSize} seconds, as {@code world.quickStep(stepSize)}. */
     public void step(double stepSize) {
         if (world.GetThreadingIslandsMaxThreadsCount(null) != 1) {
-            DxQuickStep.warmStartOnThisThread(null);
+            DxQuickStep.onThisThread(null, null);
+            Misc.dRandSetSeed(seed);
             world.quickStep(stepSize);
             return;
         }
@@ -56,7 +70,8 @@ public final class SequentialQuickStep {
         if (warm != null) {
             warm.beginStep();
         }
-        DxQuickStep.warmStartOnThisThread(warm);
+        random.setSeed(seed);
+        DxQuickStep.onThisThread(warm, random);
         if (context == null || stepSize != contextStepSize) {
             context = new DxStepperProcessingCallContext(world, stepSize, 1, arena, bodies, joints);
             contextStepSize = stepSize;
@@ -71,7 +86,7 @@ public final class SequentialQuickStep {
             bodyStart += bcount;
             jointStart += jcount;
         }
-        DxQuickStep.warmStartOnThisThread(null);
+        DxQuickStep.onThisThread(null, null);
     }
 
     /**
