@@ -3,12 +3,14 @@ package org.parpe.sim.text;
 import org.parpe.core.text.Key;
 
 /**
- * The keys of the simulator's own messages: why a sweep or an optimisation cannot start, a robot
- * that does not fit its world, a score in words, why a robot cannot be exported, why a student's
- * run did not count. Each
- * constant is a key of {@code SimMessages.properties} (English) and of its translations beside
- * it; {@code SimMessagesTest} fails on a key missing from a bundle, on a bundle key without a
- * constant here, on a constant no code uses and on placeholders that differ from the English ones.
+ * The keys of the simulator's own messages: why a sweep or an optimisation cannot start or its
+ * shards cannot be merged, a robot that does not fit its world, a score in words, why a robot
+ * cannot be exported, the robot builder's refusals and edit names, why a student's run did not
+ * count, the grading report's and the robot sheet's words. Each constant is a key of
+ * {@code SimMessages.properties} (English) and of its translations beside it;
+ * {@code SimMessagesTest} fails on a key missing from a bundle, on a bundle key without a constant
+ * here, on a constant no code uses, on placeholders that differ from the English ones and on an
+ * English sentence in the module's code.
  */
 public enum SimMsg implements Key {
     // SweepSpec, Sweep, OptimizeSpec
