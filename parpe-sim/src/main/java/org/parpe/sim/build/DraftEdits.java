@@ -103,7 +103,8 @@ final class DraftEdits {
         List<Integer> gone = i < 0 ? List.of() : draft.tree().hangingOn(i);
         RootPose root = i < 0 ? null : draft.tree().rootOf(i);
         if (refused == null && root != null && root.part().equals(part) && gone.size() > 1) {
-            refused = gone.size() == 2 ? SimMsg.BUILD_ROOT_HOLDS_ONE.text(part) : SimMsg.BUILD_ROOT_HOLDS.text(part, gone.size() - 1);
+            refused = gone.size() == 2 ? SimMsg.BUILD_ROOT_HOLDS_ONE.text(part)
+                    : SimMsg.BUILD_ROOT_HOLDS.text(part, gone.size() - 1);
         }
         if (refused != null) {
             return BuildEdit.refuse(refused);
@@ -241,7 +242,8 @@ final class DraftEdits {
             if (!POSE.contains(attribute)) {
                 refused = SimMsg.BUILD_POSE_NAMES.text(attribute);
             } else if (!Double.isFinite(value) || attribute.equals("height") && value < 0) {
-                refused = attribute.equals("height") ? SimMsg.BUILD_HEIGHT_NUMBER.text(value) : SimMsg.BUILD_POSE_NUMBER.text(attribute, value);
+                refused = attribute.equals("height") ? SimMsg.BUILD_HEIGHT_NUMBER.text(value)
+                        : SimMsg.BUILD_POSE_NUMBER.text(attribute, value);
             } else if (now == value) {
                 refused = SimMsg.BUILD_POSE_ALREADY.text(attribute, ConfigText.number(value));
             }

@@ -208,7 +208,7 @@ final class Merger {
         return run;
     }
 
-    /** Problem {@code key} of a file at {@code where} ({@code FILE:LINE} or {@code FILE}), as {@code WHERE: error: MESSAGE}. */
+    /** Problem {@code key} of the file at {@code where} ({@code FILE:LINE} or {@code FILE}): {@code WHERE: error: MESSAGE}. */
     private static Message located(String where, SimMsg key, Object... args) {
         return Message.of(SimMsg.LOAD_ERROR, where, Severity.ERROR.word(), Message.of(key, args));
     }
