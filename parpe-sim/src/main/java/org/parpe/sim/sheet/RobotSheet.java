@@ -83,9 +83,15 @@ public final class RobotSheet {
         return s.toString();
     }
 
+    /** A view's title at 12 px, or smaller where a language's words would not fit in {@code room}. */
+    private static Scene.Text title(String text, double x, double y, double room) {
+        double w = Labels.box(new Scene.Text(x, y, text, 12, -1, INK, false)).w();
+        return new Scene.Text(x, y, text, w <= room ? 12 : 12 * room / w, -1, INK, false);
+    }
+
     private static void view(Scene sc, Assembly a, View v, double x0, double y0, double scale) {
         sc.add(new Scene.Rect(x0, y0, VIEW, VIEW, Scene.NONE, 0xcccccc, 1, null));
-        sc.add(new Scene.Text(x0 + 6, y0 + 16, v.title().text(), 12, -1, INK, false));
+        sc.add(title(v.title().text(), x0 + 6, y0 + 16, VIEW - 12));
         double[] lo = {Double.MAX_VALUE, Double.MAX_VALUE};
         double[] hi = {-Double.MAX_VALUE, -Double.MAX_VALUE};
         for (Assembly.PlacedPiece p : a.pieces()) {
@@ -334,7 +340,11 @@ public final class RobotSheet {
         SimMsg[] head = {SimMsg.SHEET_PART, SimMsg.SHEET_TYPE, SimMsg.SHEET_MODULE_ID, SimMsg.SHEET_ANGLE, SimMsg.SHEET_LIMP,
             SimMsg.SHEET_DEFINED_AT};
         for (int i = 0; i < head.length; i++) {
-            sc.add(new Scene.Text(col[i], top, head[i].text(), 12, -1, INK, true));
+            Scene.Text t = new Scene.Text(col[i], top, head[i].text(), 12, -1, INK, true);
+            sc.add(t);
+            if (i + 1 < col.length) { // a longer heading in another language pushes the next columns right
+                col[i + 1] = Math.max(col[i + 1], col[i] + Labels.box(t).w() + 3 * GAP);
+            }
         }
         sc.add(new Scene.Line(MARGIN, top + 4, sc.width() - MARGIN, top + 4, GREY, 1, 0));
         double y = top;
