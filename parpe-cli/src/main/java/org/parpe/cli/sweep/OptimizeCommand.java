@@ -140,7 +140,7 @@ public final class OptimizeCommand extends SimSweepCommand {
     private static void printBest(PrintWriter stdout, SweepRow best, List<Axis> searched) {
         for (Axis a : searched) {
             double v = best.values().get(a.name());
-            String bound = SweepCommand.bound(a, v);
+            String bound = a.atBound(v);
             stdout.println("  " + a.name() + " = " + Numbers.format(v) + (bound.isEmpty() ? "" : "  ("
                     + (v == a.hi() ? CliMsg.AT_MAX : CliMsg.AT_MIN).text(bound) + ")"));
         }

@@ -205,7 +205,7 @@ public final class SweepCommand extends SimSweepCommand {
         best.ifPresent(b -> err.println("parpe: " + (b.fell() ? CliMsg.SWEEP_BEST_FELL : CliMsg.SWEEP_BEST).text(goal.id(),
                 String.format(Locale.ROOT, "%.4f", goal.of(b)), values(b), b.point().index())));
         best.ifPresent(b -> axes.forEach(a -> {
-            String bound = bound(a, b.values().get(a.name()));
+            String bound = a.atBound(b.values().get(a.name()));
             if (!bound.isEmpty()) {
                 err.println("parpe: " + CliMsg.BEST_AT_BOUND.text(a.name() + "=" + Numbers.format(b.values().get(a.name())), bound));
             }
@@ -216,11 +216,6 @@ public final class SweepCommand extends SimSweepCommand {
         if (png != null) {
             err.println("parpe: " + CliMsg.PLOT_IN.text(png));
         }
-    }
-
-    /** What to say of a best value {@code v} at an end of {@code a} (where the best may lie beyond it); empty inside. */
-    static String bound(Axis a, double v) {
-        return a.atBound(v).isEmpty() ? "" : (v == a.hi() ? CliMsg.AT_UPPER_BOUND : CliMsg.AT_LOWER_BOUND).text(Numbers.format(v));
     }
 
     private static String values(SweepRow row) {

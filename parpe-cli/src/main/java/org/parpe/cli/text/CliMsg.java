@@ -311,8 +311,6 @@ public enum CliMsg implements Key {
     STOPPED_BY_SIGTERM,
     STOPPED_TOLD,
     NO_IDE,
-    AT_UPPER_BOUND,
-    AT_LOWER_BOUND,
     CANNOT_READ_RUN,
     GOAL_VERDICT;
 

@@ -178,6 +178,10 @@ class GradeCommandTest {
         assertEquals(18, ranked.size(), ranked.toString());
         ranked.forEach(r -> assertEquals("", r.get(10), r.toString()));
         ranked.forEach(r -> assertEquals("2.00", r.get(8), r.toString()));
+        // a run that ended with a run-time error keeps its trace, whatever words its reason has (they are the teacher's language)
+        String runtimeTrace = byName.get("runtime.xml").get(9);
+        assertTrue(runtimeTrace.startsWith("traces/") && Files.isRegularFile(dir.resolve("r1").resolve(runtimeTrace)),
+                "the run-time error's trace: " + byName.get("runtime.xml"));
         assertTrue(byName.containsKey("'" + HYPERLINK), "the formula name is made safe: " + byName.keySet());
         assertTrue(byName.containsKey(NEWLINE), byName.keySet().toString());
         List<String> tie = List.of(byName.get("good-03.xml").get(0), byName.get("good-04.xml").get(0));

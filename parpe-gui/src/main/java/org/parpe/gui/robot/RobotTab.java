@@ -249,9 +249,10 @@ public final class RobotTab {
         }
         BuildEdit e = shown.draft().closeLoop(a.part(), a.plate(), b.part(), b.plate());
         if (e.refused()) {
-            double gap = shown.draft().gap(a.part(), a.plate(), b.part(), b.plate());
-            say(e.refusal().contains("apart") ? e.refusal()
-                    : ToolMsg.ROBOT_REFUSAL_GAP.text(e.refusal(), String.format(java.util.Locale.ROOT, "%.1f", gap * 1000)));
+            // the distance, unless the refusal says it already (the builder's "plates … mm apart", in any language)
+            String gap = String.format(java.util.Locale.ROOT, "%.1f",
+                    shown.draft().gap(a.part(), a.plate(), b.part(), b.plate()) * 1000);
+            say(e.refusal().contains(gap) ? e.refusal() : ToolMsg.ROBOT_REFUSAL_GAP.text(e.refusal(), gap));
             return;
         }
         apply(e);

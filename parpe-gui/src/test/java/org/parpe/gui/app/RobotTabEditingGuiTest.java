@@ -207,6 +207,28 @@ class RobotTabEditingGuiTest {
         assertEquals(before, ide.editor().document().get(), "nothing written");
     }
 
+    /**
+     * Connect's refusal says how far apart the plates are once, in the user's language: the tab
+     * added the distance unless the refusal held the English word "apart", so in German it said
+     * the distance twice (the builder's refusal, then "(die Platten sind … mm voneinander entfernt)").
+     */
+    @Test
+    void connectSaysTheGapOnceInGerman() throws Exception {
+        openCopy("two.xml", String.join("\n", "<?xml version=\"1.0\" ?>", "<robot-config>",
+                "  <part name=\"a\" type=\"segment\" id=\"0\"/>", "  <part name=\"b\" type=\"segment\" id=\"1\"/>",
+                "  <connect from=\"a.1\" to=\"b.0\"/>", "</robot-config>", ""));
+        org.parpe.core.text.Lang.use(java.util.Locale.GERMAN);
+        try {
+            clickPlate("a", 0, false);
+            clickPlate("b", 1, true);
+            press(button("Connect"));
+            assertTrue(tab().message().startsWith("die Platten liegen ") && tab().message().contains(" mm und ")
+                    && !tab().message().contains("voneinander entfernt"), tab().message());
+        } finally {
+            org.parpe.core.text.Lang.use(java.util.Locale.ENGLISH);
+        }
+    }
+
     @Test
     void tryItRunsTheScriptLastOpenOnTheConfigurationInTheEditor() throws Exception {
         openCopy("wheel.xml", Files.readString(Gui.example("wheel.xml")));

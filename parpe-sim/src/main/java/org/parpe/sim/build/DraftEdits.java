@@ -20,6 +20,7 @@ import org.parpe.sim.config.PartType;
 import org.parpe.sim.config.RobotConfig;
 import org.parpe.sim.config.RootPose;
 import org.parpe.sim.internal.Assembly;
+import org.parpe.sim.text.SimMsg;
 
 /**
  * The edits of a {@link RobotDraft}: what each means for the configuration, and when it is
@@ -48,10 +49,10 @@ final class DraftEdits {
         }
         String name = freeName(type);
         String part = ConfigText.part(newPart(name, type, 0, hubPlates));
-        String what = "Start with " + type.xmlName() + " " + name;
+        String what = SimMsg.BUILD_START.text(type.xmlName(), name);
         if (draft.read().root() == null) {
             if (!XmlReader.noElement(text)) {
-                return BuildEdit.refuse("the file is not a robot configuration yet; mend it first (see Problems)");
+                return BuildEdit.refuse(SimMsg.BUILD_NOT_A_CONFIG.text());
             }
             int end = text.length();
             while (end > 0 && Character.isWhitespace(text.charAt(end - 1))) {
@@ -61,8 +62,7 @@ final class DraftEdits {
             return BuildEdit.of(TextEdit.of(end, text.length() - end, (end == 0 ? "" : "\n") + config), what);
         }
         if (config != null || !draft.problems().isEmpty()) {
-            return BuildEdit.refuse(config != null ? "the robot has parts already; add the next one to a free plate"
-                    : "the configuration has problems; mend them first (see Problems)");
+            return BuildEdit.refuse((config != null ? SimMsg.BUILD_HAS_PARTS : SimMsg.BUILD_HAS_PROBLEMS).text());
         }
         List<FlatXmlFile.Element> all = draft.read().elements();
         SourceSpan last = all.isEmpty() ? null : all.get(all.size() - 1).at().span();
@@ -76,11 +76,11 @@ final class DraftEdits {
         if (refused == null) {
             int plates = type == PartType.HUB ? hubPlates : type.defaultPlates();
             if (newPlate < 0 || newPlate >= plates) {
-                refused = "a " + type.xmlName() + " has plates 0.." + (plates - 1) + ", not " + newPlate;
+                refused = SimMsg.BUILD_TYPE_PLATES.text(type.xmlName(), plates - 1, newPlate);
             } else if (quarterTurns < 0 || quarterTurns > 3) {
-                refused = "a part is turned 0, 1, 2 or 3 quarter turns, not " + quarterTurns;
+                refused = SimMsg.BUILD_QUARTER_TURNS.text(quarterTurns);
             } else if (kit != null && kit.left(config).get(type) <= 0) {
-                refused = "the kit has no " + type.count(1).substring(2) + " left (it has " + type.count(kit.owned(type)) + ")";
+                refused = SimMsg.BUILD_KIT_EMPTY.text(type.count(1).substring(2), type.count(kit.owned(type)));
             }
         }
         if (refused != null) {
@@ -89,8 +89,9 @@ final class DraftEdits {
         String name = freeName(type);
         String newPart = ConfigText.part(newPart(name, type, freeId(), hubPlates));
         String connect = ConfigText.connect(part + "." + plate, name + "." + newPlate, quarterTurns);
-        return BuildEdit.of(places.insert(newPart, connect), "Add " + type.xmlName() + " " + name + " on " + part + "." + plate
-                + (quarterTurns == 0 ? "" : " turned " + quarterTurns * 90 + "°"));
+        return BuildEdit.of(places.insert(newPart, connect), quarterTurns == 0
+                ? SimMsg.BUILD_ADD.text(type.xmlName(), name, part + "." + plate)
+                : SimMsg.BUILD_ADD_TURNED.text(type.xmlName(), name, part + "." + plate, quarterTurns * 90));
     }
 
     BuildEdit remove(String part) {
@@ -102,8 +103,8 @@ final class DraftEdits {
         List<Integer> gone = i < 0 ? List.of() : draft.tree().hangingOn(i);
         RootPose root = i < 0 ? null : draft.tree().rootOf(i);
         if (refused == null && root != null && root.part().equals(part) && gone.size() > 1) {
-            refused = "'" + part + "' is the root and " + (gone.size() - 1) + " part" + (gone.size() == 2 ? "" : "s")
-                    + " hang on it; make another part the root first";
+            refused = gone.size() == 2 ? SimMsg.BUILD_ROOT_HOLDS_ONE.text(part)
+                    : SimMsg.BUILD_ROOT_HOLDS.text(part, gone.size() - 1);
         }
         if (refused != null) {
             return BuildEdit.refuse(refused);
@@ -126,8 +127,8 @@ final class DraftEdits {
             }
         }
         int more = gone.size() - 1;
-        return BuildEdit.of(new TextEdit(out), "Remove " + part
-                + (more == 0 ? "" : " and " + more + " part" + (more == 1 ? "" : "s") + " on it"));
+        return BuildEdit.of(new TextEdit(out), more == 0 ? SimMsg.BUILD_REMOVE.text(part)
+                : more == 1 ? SimMsg.BUILD_REMOVE_WITH_ONE.text(part) : SimMsg.BUILD_REMOVE_WITH.text(part, more));
     }
 
     BuildEdit turn(String part, int quarterTurns) {
@@ -138,18 +139,18 @@ final class DraftEdits {
             if (i < 0) {
                 refused = noPart(part);
             } else if (c == null) {
-                refused = "'" + part + "' hangs on no plate (it is a root); turn a part that hangs on it";
+                refused = SimMsg.BUILD_TURN_ROOT.text(part);
             } else if (quarterTurns < 0 || quarterTurns > 3) {
-                refused = "a part is turned 0, 1, 2 or 3 quarter turns, not " + quarterTurns;
+                refused = SimMsg.BUILD_QUARTER_TURNS.text(quarterTurns);
             } else if (c.quarterTurns() == quarterTurns) {
-                refused = "'" + part + "' is turned " + quarterTurns * 90 + "° already";
+                refused = SimMsg.BUILD_TURNED_ALREADY.text(part, quarterTurns * 90);
             }
         }
         if (refused != null) {
             return BuildEdit.refuse(refused);
         }
         return BuildEdit.of(places.setOrDrop(c.pos(), "orientation", String.valueOf(quarterTurns * 90), quarterTurns == 0),
-                "Turn " + part + " to " + quarterTurns * 90 + "°");
+                SimMsg.BUILD_TURN.text(part, quarterTurns * 90));
     }
 
     BuildEdit setModuleId(String part, int id) {
@@ -159,45 +160,46 @@ final class DraftEdits {
             PartSpec holder = config.parts().stream().filter(q -> q.isSegment() && q.moduleId() == id).findFirst()
                     .orElse(null);
             if (id < 0) {
-                refused = "a module ID is 0 or more, not " + id;
+                refused = SimMsg.BUILD_ID_NEGATIVE.text(id);
             } else if (holder == p) {
-                refused = "'" + part + "' has ID " + id + " already";
+                refused = SimMsg.BUILD_ID_ALREADY.text(part, id);
             } else if (holder != null) {
-                refused = "ID " + id + " is used by " + holder.name();
+                refused = SimMsg.BUILD_ID_USED.text(id, holder.name());
             }
         }
         if (refused != null) {
             return BuildEdit.refuse(refused);
         }
         return BuildEdit.of(ScriptEdits.setAttribute(text, p.pos(), "id", String.valueOf(id)),
-                "Set the ID of " + part + " to " + id);
+                SimMsg.BUILD_SET_ID.text(part, id));
     }
 
     BuildEdit setAngle(String part, double degrees) {
         String refused = segment(part);
         PartSpec p = refused == null ? config.part(part).orElseThrow() : null;
         if (refused == null && !(Math.abs(degrees) <= 90)) {
-            refused = "an initial angle is within -90..90 degrees, not " + ConfigText.number(degrees);
+            refused = SimMsg.BUILD_ANGLE_RANGE.text(ConfigText.number(degrees));
         } else if (refused == null && p.angle() == degrees) {
-            refused = "'" + part + "' starts at " + ConfigText.number(degrees) + "° already";
+            refused = SimMsg.BUILD_ANGLE_ALREADY.text(part, ConfigText.number(degrees));
         }
         if (refused != null) {
             return BuildEdit.refuse(refused);
         }
         return BuildEdit.of(places.setOrDrop(p.pos(), "angle", ConfigText.number(degrees), degrees == 0),
-                "Set the angle of " + part + " to " + ConfigText.number(degrees) + "°");
+                SimMsg.BUILD_SET_ANGLE.text(part, ConfigText.number(degrees)));
     }
 
     BuildEdit setLimp(String part, boolean limp) {
         String refused = segment(part);
         PartSpec p = refused == null ? config.part(part).orElseThrow() : null;
         if (refused == null && p.limp() == limp) {
-            refused = "'" + part + "' is " + (limp ? "limp" : "not limp") + " already";
+            refused = (limp ? SimMsg.BUILD_LIMP_ALREADY : SimMsg.BUILD_STIFF_ALREADY).text(part);
         }
         if (refused != null) {
             return BuildEdit.refuse(refused);
         }
-        return BuildEdit.of(places.setOrDrop(p.pos(), "limp", "true", !limp), "Make " + part + (limp ? " limp" : " stiff"));
+        return BuildEdit.of(places.setOrDrop(p.pos(), "limp", "true", !limp),
+                (limp ? SimMsg.BUILD_MAKE_LIMP : SimMsg.BUILD_MAKE_STIFF).text(part));
     }
 
     BuildEdit makeRoot(String part) {
@@ -208,15 +210,15 @@ final class DraftEdits {
             if (i < 0) {
                 refused = noPart(part);
             } else if (root == null) {
-                refused = "'" + part + "' is not connected to a root; connect it first";
+                refused = SimMsg.BUILD_NOT_CONNECTED.text(part);
             } else if (root.part().equals(part)) {
-                refused = "'" + part + "' is the root already";
+                refused = SimMsg.BUILD_ROOT_ALREADY.text(part);
             }
         }
         if (refused != null) {
             return BuildEdit.refuse(refused);
         }
-        String what = "Make " + part + " the root";
+        String what = SimMsg.BUILD_MAKE_ROOT.text(part);
         if (root.pos().span() != null) {
             return BuildEdit.of(ScriptEdits.setAttribute(text, root.pos(), "part", part), what);
         }
@@ -238,18 +240,19 @@ final class DraftEdits {
                 default -> Double.NaN;
             };
             if (!POSE.contains(attribute)) {
-                refused = "a root pose has x, y, roll, pitch, yaw and height, not '" + attribute + "'";
+                refused = SimMsg.BUILD_POSE_NAMES.text(attribute);
             } else if (!Double.isFinite(value) || attribute.equals("height") && value < 0) {
-                refused = attribute + " must be a number" + (attribute.equals("height") ? " >= 0" : "") + ", not " + value;
+                refused = attribute.equals("height") ? SimMsg.BUILD_HEIGHT_NUMBER.text(value)
+                        : SimMsg.BUILD_POSE_NUMBER.text(attribute, value);
             } else if (now == value) {
-                refused = "the root's " + attribute + " is " + ConfigText.number(value) + " already";
+                refused = SimMsg.BUILD_POSE_ALREADY.text(attribute, ConfigText.number(value));
             }
         }
         if (refused != null) {
             return BuildEdit.refuse(refused);
         }
         boolean isDefault = value == (attribute.equals("height") ? RootPose.RESTING : 0);
-        String what = "Set the root's " + attribute + " to " + ConfigText.number(value);
+        String what = SimMsg.BUILD_SET_POSE.text(attribute, ConfigText.number(value));
         if (root.pos().span() != null) {
             return BuildEdit.of(places.setOrDrop(root.pos(), attribute, ConfigText.number(value), isDefault), what);
         }
@@ -264,9 +267,9 @@ final class DraftEdits {
         RobotDraft.Plate pa = draft.plate(a, plateA);
         RobotDraft.Plate pb = draft.plate(b, plateB);
         if (refused == null && (pa == null || pb == null)) {
-            refused = "the robot does not assemble; mend it first (see Problems)";
+            refused = SimMsg.BUILD_NOT_ASSEMBLED.text();
         } else if (refused == null && a.equals(b)) {
-            refused = "a part cannot be connected to itself";
+            refused = SimMsg.BUILD_LOOP_SELF.text();
         }
         if (refused != null) {
             return BuildEdit.refuse(refused);
@@ -276,12 +279,11 @@ final class DraftEdits {
         double gap = Geo.sub(ca.centre(), cb.centre()).length();
         double angle = Math.toDegrees(Math.acos(Math.max(-1, Math.min(1, -Geo.dot(ca.normal(), cb.normal())))));
         if (gap > Assembly.loopGap() || angle > Math.toDegrees(Assembly.loopTwist())) {
-            return BuildEdit.refuse(String.format(Locale.ROOT, "plates %.1f mm and %.1f degrees apart; they must meet"
-                    + " within %.0f mm and %.0f degrees", gap * 1000, angle, Assembly.loopGap() * 1000,
-                    Math.toDegrees(Assembly.loopTwist())));
+            return BuildEdit.refuse(SimMsg.BUILD_LOOP_APART.text(fixed("%.1f", gap * 1000), fixed("%.1f", angle),
+                    fixed("%.0f", Assembly.loopGap() * 1000), fixed("%.0f", Math.toDegrees(Assembly.loopTwist()))));
         }
         String connect = ConfigText.connect(ca.ref(), cb.ref(), turnsBetween(ca, cb));
-        BuildEdit e = BuildEdit.of(places.insert(null, connect), "Close the loop " + ca.ref() + " – " + cb.ref());
+        BuildEdit e = BuildEdit.of(places.insert(null, connect), SimMsg.BUILD_CLOSE_LOOP.text(ca.ref(), cb.ref()));
         RobotDraft after = draft.apply(e);
         if (after.problems().size() > draft.problems().size()) {
             return BuildEdit.refuse(after.problems().get(after.problems().size() - 1).message());
@@ -312,9 +314,9 @@ final class DraftEdits {
             }
         }
         if (out.isEmpty()) {
-            return BuildEdit.refuse(next == 0 ? "the robot has no segment" : "the IDs are in chain order already");
+            return BuildEdit.refuse((next == 0 ? SimMsg.BUILD_NO_SEGMENT : SimMsg.BUILD_IDS_IN_ORDER).text());
         }
-        return BuildEdit.of(new TextEdit(out), "Number the modules in chain order");
+        return BuildEdit.of(new TextEdit(out), SimMsg.BUILD_NUMBER_MODULES.text());
     }
 
     // --- helpers ---
@@ -334,16 +336,20 @@ final class DraftEdits {
         return best;
     }
 
+    /** {@code value} with {@code format}'s decimals, the same in every language (a measurement, as the file's numbers). */
+    private static String fixed(String format, double value) {
+        return String.format(Locale.ROOT, format, value);
+    }
+
     private String needConfig() {
         if (config != null) {
             return null;
         }
-        return draft.problems().isEmpty() ? "the configuration has no part yet; start with a first part"
-                : "the configuration has problems; mend them first (see Problems)";
+        return (draft.problems().isEmpty() ? SimMsg.BUILD_NO_PART_YET : SimMsg.BUILD_HAS_PROBLEMS).text();
     }
 
     private String noPart(String part) {
-        return "there is no part '" + part + "'";
+        return SimMsg.BUILD_NO_PART.text(part);
     }
 
     /** Null when {@code part} is a segment of a configuration without errors, else why not. */
@@ -356,8 +362,7 @@ final class DraftEdits {
         if (p == null) {
             return noPart(part);
         }
-        return p.isSegment() ? null : "'" + part + "' is a " + p.type().xmlName() + "; only segments have module IDs,"
-                + " angles and limp";
+        return p.isSegment() ? null : SimMsg.BUILD_NOT_SEGMENT.text(part, p.type().xmlName());
     }
 
     /** Null when {@code part.plate} exists and no connection uses it, else why not. */
@@ -367,12 +372,12 @@ final class DraftEdits {
             return noPart(part);
         }
         if (plate < 0 || plate >= p.plates()) {
-            return "'" + part + "' (" + p.type().xmlName() + ") has plates 0.." + (p.plates() - 1) + ", not " + plate;
+            return SimMsg.BUILD_PART_PLATES.text(part, p.type().xmlName(), p.plates() - 1, plate);
         }
         for (Connection c : config.connections()) {
             if (c.from().equals(part) && c.fromPlate() == plate || c.to().equals(part) && c.toPlate() == plate) {
-                return "plate " + part + "." + plate + " is taken (" + c.from() + "." + c.fromPlate() + " to " + c.to()
-                        + "." + c.toPlate() + ", line " + c.pos().line() + ")";
+                return SimMsg.BUILD_PLATE_TAKEN.text(part + "." + plate, c.from() + "." + c.fromPlate(),
+                        c.to() + "." + c.toPlate(), c.pos().line());
             }
         }
         return null;
@@ -380,10 +385,10 @@ final class DraftEdits {
 
     private static String checkType(PartType type, int hubPlates) {
         if (type == null) {
-            return "choose a part type: segment, node, foot or hub";
+            return SimMsg.BUILD_CHOOSE_TYPE.text();
         }
         if (type == PartType.HUB && (hubPlates < 3 || hubPlates > 16)) {
-            return "a hub has 3..16 plates, not " + hubPlates;
+            return SimMsg.BUILD_HUB_PLATES.text(hubPlates);
         }
         return null;
     }

@@ -21,6 +21,7 @@ import org.parpe.sim.config.PartType;
 import org.parpe.sim.config.RobotConfig;
 import org.parpe.sim.config.RobotConfigs;
 import org.parpe.sim.internal.Assembly;
+import org.parpe.sim.text.SimMsg;
 
 /**
  * One state of a robot configuration being built: its text and what it reads as. Immutable, so
@@ -60,8 +61,7 @@ public final class RobotDraft {
             assembly = r.config() == null ? null : Assembly.build(r.config(), diags);
         } catch (RuntimeException e) {
             // never lose the builder to a reader's or assembler's bug: say so where the file starts
-            diags.error(new SourcePos(file, 1, 1), "internal error while reading the robot (please report it with this"
-                    + " file): " + e);
+            diags.error(new SourcePos(file, 1, 1), SimMsg.DRAFT_INTERNAL_ERROR, e);
         }
         this.read = r;
         this.problems = List.copyOf(diags.all());

@@ -105,7 +105,7 @@ public final class GradeChild {
             outcome = run.build().execute();
         }
         if (outcome.status() == RunOutcome.Status.ERROR) {
-            return Outcome.failed(messages(runDiags.all(), SimMsg.GRADE_RUN_TIME_ERROR.text(outcome.time())));
+            return Outcome.failedAt(messages(runDiags.all(), SimMsg.GRADE_RUN_TIME_ERROR.text(outcome.time())), outcome.time());
         }
         Simulator s = target.simulator();
         SimMetrics m = s.metrics();

@@ -10,6 +10,7 @@ import java.util.Locale;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.parpe.core.xml.InputFiles;
+import org.parpe.sim.text.SimMsg;
 
 /**
  * The file of one shard of a grading ({@code parpe grade --shard K/N}): the outcomes of the
@@ -70,8 +71,7 @@ public final class GradeShard {
         List<String> lines = Files.readAllLines(file, StandardCharsets.UTF_8);
         Matcher m = lines.isEmpty() ? null : HEAD.matcher(lines.get(0));
         if (m == null || !m.matches()) {
-            throw new IOException(file + ":1: not the file of a shard of parpe grade (its first line must be"
-                    + " 'parpe grade shard K/N: students FROM..TO of TOTAL')");
+            throw new IOException(file + ":1: " + SimMsg.GRADE_SHARD_FIRST_LINE.text());
         }
         int[] v = new int[5];
         for (int i = 0; i < 5; i++) {
@@ -85,7 +85,7 @@ public final class GradeShard {
             String head = lines.get(line);
             String expected = "#" + (v[2] + names.size()) + " ";
             if (!head.startsWith(expected)) {
-                throw new IOException(file + ":" + (line + 1) + ": expected the student '" + expected.trim() + " NAME'");
+                throw new IOException(file + ":" + (line + 1) + ": " + SimMsg.GRADE_SHARD_EXPECTED.text(expected.trim()));
             }
             int end = line + 1;
             while (end < lines.size() && !lines.get(end).startsWith("#")) {
@@ -95,7 +95,7 @@ public final class GradeShard {
             String trace = lines.subList(line + 1, end).stream().filter(l -> l.startsWith("trace=")).findFirst()
                     .map(l -> l.substring(6)).orElse(null);
             if (o == null || trace == null) {
-                throw new IOException(file + ":" + (line + 1) + ": the outcome of student " + expected.trim() + " is incomplete");
+                throw new IOException(file + ":" + (line + 1) + ": " + SimMsg.GRADE_SHARD_INCOMPLETE.text(expected.trim()));
             }
             names.add(Outcome.unescape(head.substring(expected.length())));
             outcomes.add(o);
@@ -103,7 +103,7 @@ public final class GradeShard {
             line = end;
         }
         if (names.size() != v[3] - v[2]) {
-            throw new IOException(file + ": holds " + names.size() + " students, its first line says " + (v[3] - v[2]));
+            throw new IOException(file + ": " + SimMsg.GRADE_SHARD_HOLDS.text(names.size(), v[3] - v[2]));
         }
         return new Part(v[0], v[1], v[2], v[3], v[4], List.copyOf(names), List.copyOf(outcomes), List.copyOf(traces));
     }

@@ -13,6 +13,7 @@ import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.parpe.core.io.AtomicFiles;
 import org.parpe.sim.world.Challenge;
+import org.parpe.sim.text.SimMsg;
 
 /**
  * Grades a class: every student of a folder run in a challenge, {@code jobs} children at once
@@ -51,12 +52,12 @@ public record Grading(Path challengeFile, Challenge challenge, Path studentsDir,
                 existing = existing.getParent();
             }
             if (existing.toRealPath().startsWith(studentsDir.toRealPath())) {
-                return what + " must not be inside the students' folder '" + studentsDir + "'";
+                return SimMsg.GRADE_OUT_INSIDE.text(what, studentsDir);
             }
             Files.createDirectories(out.resolve("traces"));
             return null;
         } catch (IOException e) {
-            return "cannot make the report folder '" + out + "': " + e.getMessage();
+            return SimMsg.GRADE_CANNOT_MAKE_REPORT.text(out, e.getMessage());
         }
     }
 
@@ -108,17 +109,17 @@ public record Grading(Path challengeFile, Challenge challenge, Path studentsDir,
         Row[] rows = new Row[students.size()];
         for (GradeShard.Part p : parts) {
             if (p.total() != students.size()) {
-                throw new IOException("shard " + p.k() + "/" + p.n() + " is of a class of " + p.total()
-                        + " students; '" + studentsDir + "' has " + students.size());
+                throw new IOException(SimMsg.GRADE_SHARD_CLASS.text(p.k() + "/" + p.n(), p.total(), studentsDir,
+                        students.size()));
             }
             for (int i = p.from(); i < p.to(); i++) {
                 Students.Student s = students.get(i);
                 if (!s.name().equals(p.names().get(i - p.from()))) {
-                    throw new IOException("shard " + p.k() + "/" + p.n() + " graded '" + p.names().get(i - p.from())
-                            + "' as student " + (i + 1) + ", which is '" + s.name() + "' now");
+                    throw new IOException(SimMsg.GRADE_SHARD_NAME.text(p.k() + "/" + p.n(), p.names().get(i - p.from()),
+                            i + 1, s.name()));
                 }
                 if (rows[i] != null) {
-                    throw new IOException("student " + (i + 1) + " ('" + s.name() + "') is in two shards");
+                    throw new IOException(SimMsg.GRADE_STUDENT_TWICE.text(i + 1, s.name()));
                 }
                 String trace = p.traces().get(i - p.from());
                 rows[i] = new Row(s, p.outcomes().get(i - p.from()), trace,
@@ -136,7 +137,8 @@ public record Grading(Path challengeFile, Challenge challenge, Path studentsDir,
         Path part = target.resolveSibling(target.getFileName() + ".part");
         Files.deleteIfExists(part);
         Outcome o = Isolation.run(challengeFile, studentsDir, s.script(), s.root(), part, limits);
-        boolean keep = Files.isRegularFile(part) && (o.ranked() || o.reason().contains("run-time error"));
+        // a run that counts, or that ran until a run-time error (its time), keeps its trace; one stopped at a limit does not
+        boolean keep = Files.isRegularFile(part) && (o.ranked() || o.time() > 0);
         if (!keep) {
             Files.deleteIfExists(part);
             Files.deleteIfExists(target);

@@ -12,6 +12,7 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import org.parpe.core.text.Lang;
 import org.parpe.core.xml.FlatXmlFile;
+import org.parpe.sim.text.SimMsg;
 
 /**
  * Runs one student in a child JVM ({@link GradeChild}) on the same Java and class path, with a
@@ -75,10 +76,10 @@ public final class Isolation {
             return Outcome.failed(stopped);
         }
         if (p.exitValue() == OUT_OF_MEMORY) {
-            return Outcome.failed("the run ran out of memory (the limit is " + limits.memoryMb() + " MB, --memory)");
+            return Outcome.failed(SimMsg.GRADE_OUT_OF_MEMORY.text(limits.memoryMb()));
         }
         Outcome o = Outcome.parse(out.join());
-        return o != null ? o : Outcome.failed("the engine stopped without a result (exit status " + p.exitValue() + ")");
+        return o != null ? o : Outcome.failed(SimMsg.GRADE_NO_RESULT.text(p.exitValue()));
     }
 
     /** Waits for {@code p}; kills it and says why when it breaks a limit (null: it ended by itself). */
@@ -87,9 +88,9 @@ public final class Isolation {
         while (!p.waitFor(50, TimeUnit.MILLISECONDS)) {
             double cpu = p.toHandle().info().totalCpuDuration().map(Duration::toNanos).orElse(0L) / 1e9;
             String why = cpu > limits.cpuSeconds()
-                    ? "stopped after " + FlatXmlFile.plain(limits.cpuSeconds()) + " s of CPU time (the limit, --cpu-limit)"
+                    ? SimMsg.GRADE_CPU_LIMIT.text(FlatXmlFile.plain(limits.cpuSeconds()))
                     : System.nanoTime() > wallEnd
-                    ? "stopped after " + FlatXmlFile.plain(limits.wallSeconds()) + " s without finishing (the wall-clock limit)"
+                    ? SimMsg.GRADE_WALL_LIMIT.text(FlatXmlFile.plain(limits.wallSeconds()))
                     : null;
             if (why != null) {
                 p.destroyForcibly().waitFor();

@@ -22,8 +22,14 @@ import org.parpe.sim.SimMetrics;
 public record Outcome(boolean ranked, String reason, double score, String parts, double dx, double distance, boolean fell,
                double time) {
 
+    /** A run that does not count, and why (it did not start, or broke a limit). */
     public static Outcome failed(String reason) {
         return new Outcome(false, reason, 0, "", 0, 0, false, 0);
+    }
+
+    /** A run that started and ended with a run-time error at {@code time} simulated seconds, {@code reason} saying which. */
+    static Outcome failedAt(String reason, double time) {
+        return new Outcome(false, reason, 0, "", 0, 0, false, time);
     }
 
     static Outcome ran(SimMetrics m, double time) {

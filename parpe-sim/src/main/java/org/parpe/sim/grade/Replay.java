@@ -15,6 +15,7 @@ import org.parpe.sim.SimTarget;
 import org.parpe.sim.Simulator;
 import org.parpe.sim.world.Challenge;
 import org.parpe.sim.world.World;
+import org.parpe.sim.text.SimMsg;
 
 /**
  * A graded run played back from its trace: the trace's commanded angles ({@code m<ID>}, one row
@@ -50,7 +51,7 @@ public final class Replay implements AutoCloseable {
             String[] names = header == null ? new String[0] : header.split(",");
             ids = moduleColumns(names);
             if (names.length == 0 || !names[0].equals("time") || ids.length == 0) {
-                throw new IOException(trace + ":1: not a trace with the commanded angles (time,m<ID>,...)");
+                throw new IOException(trace + ":1: " + SimMsg.REPLAY_NOT_A_TRACE.text());
             }
             int line = 1;
             for (String s = in.readLine(); s != null; s = in.readLine()) {
@@ -62,7 +63,7 @@ public final class Replay implements AutoCloseable {
                         row[k] = Double.parseDouble(cells[k]);
                     }
                 } catch (NumberFormatException | ArrayIndexOutOfBoundsException e) {
-                    throw new IOException(trace + ":" + line + ": not a row of numbers", e);
+                    throw new IOException(trace + ":" + line + ": " + SimMsg.REPLAY_NOT_NUMBERS.text(), e);
                 }
                 rows.add(row);
             }

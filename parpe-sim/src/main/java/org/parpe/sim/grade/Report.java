@@ -4,6 +4,7 @@ import java.util.List;
 import java.util.Locale;
 import org.parpe.core.io.CsvCells;
 import org.parpe.sim.world.Challenge;
+import org.parpe.sim.text.SimMsg;
 
 /**
  * The report's table as CSV: one line per student in rank order, text cells quoted and made safe
@@ -38,7 +39,7 @@ public final class Report {
     /** A one-line summary for the terminal: how many were ranked and how many failed. */
     public static String summary(List<Row> rows, Challenge c) {
         long ranked = rows.stream().filter(r -> r.rank() > 0).count();
-        return String.format(Locale.ROOT, "%d students: %d ranked, %d with problems (challenge %s, %s, %.0f s)",
-                rows.size(), ranked, rows.size() - ranked, c.file().getFileName(), c.robot(), c.duration());
+        return SimMsg.GRADE_SUMMARY.text(rows.size(), ranked, rows.size() - ranked, c.file().getFileName(), c.robot(),
+                String.format(Locale.ROOT, "%.0f", c.duration()));
     }
 }

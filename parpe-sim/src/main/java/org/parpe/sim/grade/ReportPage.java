@@ -2,7 +2,9 @@ package org.parpe.sim.grade;
 
 import java.util.List;
 import java.util.Locale;
+import org.parpe.core.text.Lang;
 import org.parpe.sim.geom.BodyShape;
+import org.parpe.sim.text.SimMsg;
 import org.parpe.sim.world.Challenge;
 import org.parpe.sim.world.World;
 
@@ -22,24 +24,36 @@ public final class ReportPage {
             + "svg{border:1px solid #999;background:#fafafa;max-width:100%;height:auto}.sw{display:inline-block;"
             + "width:1em;height:.6em;margin-right:.3em}";
 
+    /** The table's column headings. */
+    private static final List<SimMsg> HEADINGS = List.of(SimMsg.REPORT_RANK, SimMsg.REPORT_STUDENT, SimMsg.REPORT_SCORE,
+            SimMsg.REPORT_PARTS, SimMsg.REPORT_FORWARD, SimMsg.REPORT_DISTANCE, SimMsg.REPORT_FELL, SimMsg.REPORT_TIME,
+            SimMsg.REPORT_TRACE, SimMsg.REPORT_PROBLEM);
+
     private ReportPage() {
     }
 
-    /** The page for {@code rows} (in rank order) of challenge {@code c} in {@code world}. */
+    /**
+     * The page for {@code rows} (in rank order) of challenge {@code c} in {@code world}, its words
+     * in the chosen language ({@link Lang}), which the page declares.
+     */
     public static String html(List<Row> rows, Challenge c, World world) {
-        StringBuilder b = new StringBuilder("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n");
-        b.append("<title>Results: ").append(esc(c.file().getFileName().toString())).append("</title>\n");
+        String title = esc(SimMsg.REPORT_TITLE.text(c.file().getFileName()));
+        StringBuilder b = new StringBuilder("<!DOCTYPE html>\n<html lang=\"").append(Lang.current().toLanguageTag())
+                .append("\">\n<head>\n<meta charset=\"utf-8\">\n");
+        b.append("<title>").append(title).append("</title>\n");
         b.append("<style>").append(STYLE).append("</style>\n</head>\n<body>\n");
-        b.append("<h1>Results: ").append(esc(c.file().getFileName().toString())).append("</h1>\n<p>")
-                .append(esc(Report.summary(rows, c))).append("</p>\n");
+        b.append("<h1>").append(title).append("</h1>\n<p>").append(esc(Report.summary(rows, c))).append("</p>\n");
         b.append(new WorldMap(world).svg(rows)).append('\n');
         table(b, rows);
         return b.append("</body>\n</html>\n").toString();
     }
 
     private static void table(StringBuilder b, List<Row> rows) {
-        b.append("<table>\n<tr><th>rank</th><th>student</th><th>score</th><th>parts</th><th>forward (m)</th>"
-                + "<th>distance (m)</th><th>fell</th><th>time (s)</th><th>trace</th><th>problem</th></tr>\n");
+        b.append("<table>\n<tr>");
+        for (SimMsg h : HEADINGS) {
+            b.append("<th>").append(esc(h.text())).append("</th>");
+        }
+        b.append("</tr>\n");
         for (int i = 0; i < rows.size(); i++) {
             Row r = rows.get(i);
             Outcome o = r.outcome();
@@ -52,7 +66,7 @@ public final class ReportPage {
             if (o.ranked()) {
                 b.append(String.format(Locale.ROOT, "<td class=\"n\">%.1f</td><td>%s</td><td class=\"n\">%.3f</td>"
                         + "<td class=\"n\">%.3f</td><td>%s</td><td class=\"n\">%.2f</td>", o.score(), esc(o.parts()),
-                        o.dx(), o.distance(), o.fell() ? "yes" : "no", o.time()));
+                        o.dx(), o.distance(), esc((o.fell() ? SimMsg.REPORT_YES : SimMsg.REPORT_NO).text()), o.time()));
             } else {
                 b.append("<td></td><td></td><td></td><td></td><td></td><td></td>");
             }

@@ -8,6 +8,7 @@ import java.util.Comparator;
 import java.util.List;
 import java.util.stream.Stream;
 import org.parpe.core.xml.InputFiles;
+import org.parpe.sim.text.SimMsg;
 
 /**
  * The students of a folder, in name order: each script directly in it is a student handed in as a
@@ -42,8 +43,7 @@ public final class Students {
             }
             if (Files.isSymbolicLink(p)) {
                 // a link could lead to another student's work as well as out of the folder
-                students.add(new Student(name, null, null, "it is a link, not a file or folder handed in"
-                        + " (the confinement rule of parpe grade)"));
+                students.add(new Student(name, null, null, SimMsg.GRADE_LINK.text()));
             } else if (Files.isDirectory(p)) {
                 students.add(folder(dir, p, name));
             } else if (InputFiles.isScript(p)) {
@@ -59,8 +59,8 @@ public final class Students {
         Path chosen = scripts.size() == 1 ? scripts.get(0)
                 : scripts.stream().filter(p -> p.getFileName().toString().equals("main.xml")).findFirst().orElse(null);
         if (chosen == null) {
-            return new Student(name, null, null, scripts.isEmpty() ? "the folder has no .xml or .parsl script"
-                    : "the folder has " + scripts.size() + " scripts and no main.xml to say which one to run");
+            return new Student(name, null, null, scripts.isEmpty() ? SimMsg.GRADE_NO_SCRIPT.text()
+                    : SimMsg.GRADE_SCRIPTS.text(scripts.size()));
         }
         return new Student(name, dir.relativize(chosen), Path.of(name), "");
     }

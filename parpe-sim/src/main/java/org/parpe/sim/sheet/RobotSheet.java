@@ -18,6 +18,7 @@ import org.parpe.sim.config.PartSpec;
 import org.parpe.sim.config.PartType;
 import org.parpe.sim.config.RobotConfig;
 import org.parpe.sim.internal.Assembly;
+import org.parpe.sim.text.SimMsg;
 
 /**
  * A worksheet drawing of an assembled robot at its initial pose: three orthographic views (top,
@@ -39,13 +40,13 @@ public final class RobotSheet {
             PartKind.SEGMENT_ARM, 0x56b4e9, PartKind.NODE, 0x555555, PartKind.FOOT, 0x009e73, PartKind.HUB, 0xd55e00);
 
     /** A view: screen right and screen up as world directions. */
-    private record View(String title, Vec3 right, Vec3 up) {
+    private record View(SimMsg title, Vec3 right, Vec3 up) {
     }
 
     private static final List<View> VIEWS = List.of(
-            new View("top (from above: x right, y up)", new Vec3(1, 0, 0), new Vec3(0, 1, 0)),
-            new View("front (from -y: x right, z up)", new Vec3(1, 0, 0), new Vec3(0, 0, 1)),
-            new View("side (from +x: y right, z up)", new Vec3(0, 1, 0), new Vec3(0, 0, 1)));
+            new View(SimMsg.SHEET_TOP, new Vec3(1, 0, 0), new Vec3(0, 1, 0)),
+            new View(SimMsg.SHEET_FRONT, new Vec3(1, 0, 0), new Vec3(0, 0, 1)),
+            new View(SimMsg.SHEET_SIDE, new Vec3(0, 1, 0), new Vec3(0, 0, 1)));
 
     private RobotSheet() {
     }
@@ -59,14 +60,13 @@ public final class RobotSheet {
         Scene sc = new Scene(2 * MARGIN + 3 * VIEW + 2 * MARGIN, height);
         String name = Path.of(config.name()).getFileName() == null ? config.name()
                 : Path.of(config.name()).getFileName().toString();
-        sc.add(new Scene.Text(MARGIN, 26, "Robot " + name + ": " + summary(parts), 16, -1, INK, true));
+        sc.add(new Scene.Text(MARGIN, 26, SimMsg.SHEET_TITLE.text(name, summary(parts)), 16, -1, INK, true));
         double scale = scale(assembly);
         for (int v = 0; v < VIEWS.size(); v++) {
             view(sc, assembly, VIEWS.get(v), MARGIN + v * (VIEW + MARGIN), TITLE, scale);
         }
-        sc.add(new Scene.Text(MARGIN, TITLE + VIEW + 24, String.format(Locale.ROOT,
-                "scale: the grey bar is 10 cm; the robot is %.0f x %.0f x %.0f cm (x, y, z)",
-                extent(assembly, 0) * 100, extent(assembly, 1) * 100, extent(assembly, 2) * 100), 12, -1, GREY, false));
+        sc.add(new Scene.Text(MARGIN, TITLE + VIEW + 24, SimMsg.SHEET_SCALE.text(cm(assembly, 0), cm(assembly, 1),
+                cm(assembly, 2)), 12, -1, GREY, false));
         partList(sc, parts, listTop);
         return sc;
     }
@@ -83,9 +83,15 @@ public final class RobotSheet {
         return s.toString();
     }
 
+    /** A view's title at 12 px, or smaller where a language's words would not fit in {@code room}. */
+    private static Scene.Text title(String text, double x, double y, double room) {
+        double w = Labels.box(new Scene.Text(x, y, text, 12, -1, INK, false)).w();
+        return new Scene.Text(x, y, text, w <= room ? 12 : 12 * room / w, -1, INK, false);
+    }
+
     private static void view(Scene sc, Assembly a, View v, double x0, double y0, double scale) {
         sc.add(new Scene.Rect(x0, y0, VIEW, VIEW, Scene.NONE, 0xcccccc, 1, null));
-        sc.add(new Scene.Text(x0 + 6, y0 + 16, v.title(), 12, -1, INK, false));
+        sc.add(title(v.title().text(), x0 + 6, y0 + 16, VIEW - 12));
         double[] lo = {Double.MAX_VALUE, Double.MAX_VALUE};
         double[] hi = {-Double.MAX_VALUE, -Double.MAX_VALUE};
         for (Assembly.PlacedPiece p : a.pieces()) {
@@ -263,6 +269,11 @@ public final class RobotSheet {
         return (VIEW - 60) / Math.max(most, 0.05);
     }
 
+    /** The robot's size along {@code axis} in whole centimetres, as the scale line writes it. */
+    private static String cm(Assembly a, int axis) {
+        return String.format(Locale.ROOT, "%.0f", extent(a, axis) * 100);
+    }
+
     /** The robot's extent along world axis {@code axis} (0 x, 1 y, 2 z), m. */
     private static double extent(Assembly a, int axis) {
         double lo = Double.MAX_VALUE;
@@ -326,26 +337,31 @@ public final class RobotSheet {
 
     private static void partList(Scene sc, List<PartSpec> parts, double top) {
         double[] col = {MARGIN, MARGIN + 200, MARGIN + 300, MARGIN + 400, MARGIN + 500, MARGIN + 580};
-        String[] head = {"part", "type", "module ID", "angle", "limp", "defined at"};
+        SimMsg[] head = {SimMsg.SHEET_PART, SimMsg.SHEET_TYPE, SimMsg.SHEET_MODULE_ID, SimMsg.SHEET_ANGLE, SimMsg.SHEET_LIMP,
+            SimMsg.SHEET_DEFINED_AT};
         for (int i = 0; i < head.length; i++) {
-            sc.add(new Scene.Text(col[i], top, head[i], 12, -1, INK, true));
+            Scene.Text t = new Scene.Text(col[i], top, head[i].text(), 12, -1, INK, true);
+            sc.add(t);
+            if (i + 1 < col.length) { // a longer heading in another language pushes the next columns right
+                col[i + 1] = Math.max(col[i + 1], col[i] + Labels.box(t).w() + 3 * GAP);
+            }
         }
         sc.add(new Scene.Line(MARGIN, top + 4, sc.width() - MARGIN, top + 4, GREY, 1, 0));
         double y = top;
         for (int k = 0; k < Math.min(parts.size(), MAX_LISTED); k++) {
             PartSpec p = parts.get(k);
             y += ROW;
-            String[] cells = {p.name(), p.type().xmlName() + (p.type() == PartType.HUB ? " (" + p.plates() + " plates)" : ""),
+            String[] cells = {p.name(), p.type() == PartType.HUB ? SimMsg.SHEET_HUB_PLATES.text(p.type().xmlName(), p.plates())
+                : p.type().xmlName(),
                 p.isSegment() ? Integer.toString(p.moduleId()) : "",
                 p.isSegment() ? org.parpe.core.xml.FlatXmlFile.plain(p.angle()) + "°" : "",
-                p.limp() ? "limp" : "", p.pos().line() > 0 ? "line " + p.pos().line() : ""};
+                p.limp() ? SimMsg.SHEET_LIMP.text() : "", p.pos().line() > 0 ? SimMsg.SHEET_LINE.text(p.pos().line()) : ""};
             for (int i = 0; i < cells.length; i++) {
                 sc.add(new Scene.Text(col[i], y, cells[i], 12, -1, i == 2 ? 0x0072b2 : INK, i == 2));
             }
         }
         if (parts.size() > MAX_LISTED) {
-            sc.add(new Scene.Text(MARGIN, y + ROW, "... and " + (parts.size() - MAX_LISTED) + " more parts", 12, -1, GREY,
-                    false));
+            sc.add(new Scene.Text(MARGIN, y + ROW, SimMsg.SHEET_MORE.text(parts.size() - MAX_LISTED), 12, -1, GREY, false));
         }
     }
 }

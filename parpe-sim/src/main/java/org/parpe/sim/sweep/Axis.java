@@ -3,6 +3,7 @@ package org.parpe.sim.sweep;
 import java.util.List;
 import java.util.SplittableRandom;
 import org.parpe.core.lang.Numbers;
+import org.parpe.sim.text.SimMsg;
 
 /**
  * One varied parameter of a sweep.
@@ -70,8 +71,8 @@ public record Axis(String name, Kind kind, double lo, double hi, List<Double> va
         if (lo == hi) {
             return "";
         }
-        String end = value == hi ? "upper" : value == lo ? "lower" : null;
-        return end == null ? "" : "at its " + end + " bound " + Numbers.format(value) + ": widen the range";
+        SimMsg end = value == hi ? SimMsg.AT_UPPER_BOUND : value == lo ? SimMsg.AT_LOWER_BOUND : null;
+        return end == null ? "" : end.text(Numbers.format(value));
     }
 
     /** Whether a grid can enumerate this axis (everything but {@link Kind#CONTINUOUS}). */

@@ -10,7 +10,10 @@ import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 import java.util.stream.Stream;
+import org.parpe.core.diag.Severity;
+import org.parpe.core.text.Message;
 import org.parpe.sim.sweep.SweepCsv.Shard;
+import org.parpe.sim.text.SimMsg;
 
 /**
  * The shards read so far by {@link SweepCsv#merge}: their header, the sweep's size, and the rows
@@ -27,7 +30,7 @@ final class Merger {
     private Shard split;
     /** The framed shards by number, as their first lines describe them. */
     private final Map<Integer, Shard> shards = new TreeMap<>();
-    private final List<String> problems = new ArrayList<>();
+    private final List<Message> problems = new ArrayList<>();
     private final List<Integer> rerun = new ArrayList<>();
 
     void add(String name, List<String> lines) throws SweepException {
@@ -46,8 +49,7 @@ final class Merger {
         for (int i = 1; i < body.size(); i++) {
             int run = row(name, i + first, body.get(i));
             if (shard != null && (run < shard.from() || run >= shard.to())) {
-                throw new SweepException(name + ":" + (i + first) + ": error: run " + run + " is not one of shard "
-                        + shard.k() + "/" + shard.n() + " (" + shard.span() + ")");
+                throw at(name + ":" + (i + first), SimMsg.MERGE_RUN_NOT_IN_SHARD, run, kn(shard), shard.span());
             }
         }
         if (shard != null) {
@@ -58,15 +60,13 @@ final class Merger {
     /** The header of file {@code name} at line {@code at}: a sweep's, and that of the files before. */
     private void header(String name, int at, String line) throws SweepException {
         if (line == null || !line.startsWith("run,runs,")) {
-            throw new SweepException(name + ":" + at + ": error: not a sweep result (its"
-                    + " first line must be the header 'run,runs,...' that parpe sweep writes)");
+            throw at(name + ":" + at, SimMsg.MERGE_NOT_A_RESULT);
         }
         if (header == null) {
             header = line;
             headerFrom = name;
         } else if (!header.equals(line)) {
-            throw new SweepException(name + ":" + at + ": error: its columns differ from those of " + headerFrom
-                    + "; only shards of one sweep can be merged");
+            throw at(name + ":" + at, SimMsg.MERGE_COLUMNS_DIFFER, headerFrom);
         }
     }
 
@@ -115,38 +115,32 @@ final class Merger {
                     it.next(); // the framing line, the header
                 }
                 if (!it.hasNext()) { // the first pass found at least the end line after them
-                    throw new SweepException(name + ": error: the file changed while it was merged; merge again"
-                            + " once no task writes it");
+                    throw at(name, SimMsg.MERGE_CHANGED);
                 }
                 for (String text = it.next(); it.hasNext(); text = it.next()) {
                     line++;
                     int found = runOf(name, line, text);
-                    String at = name + ":" + line + ": error: ";
                     if (found < shard.from() || found >= shard.to()) {
-                        throw new SweepException(at + "run " + found + " is not one of shard " + shard.k() + "/"
-                                + shard.n() + " (" + shard.span() + ")");
+                        throw at(name + ":" + line, SimMsg.MERGE_RUN_NOT_IN_SHARD, found, kn(shard), shard.span());
                     }
                     if (found != run) {
-                        throw new SweepException(at + "run " + found + " where run " + run + " belongs; a shard's rows"
-                                + " are its runs in order, each once (was the file edited?)");
+                        throw at(name + ":" + line, SimMsg.MERGE_RUN_OUT_OF_ORDER, found, run);
                     }
                     out.line(text);
                     run++;
                 }
             }
             if (run != shard.to()) {
-                throw new SweepException(name + ": error: shard " + shard.k() + "/" + shard.n() + " holds "
-                        + (run - shard.from()) + " of its " + (shard.to() - shard.from()) + " runs (" + shard.span()
-                        + ") but is marked complete (was the file edited?); run it again");
+                throw at(name, SimMsg.MERGE_SHORT_COMPLETE, kn(shard), run - shard.from(), shard.to() - shard.from(),
+                        shard.span());
             }
         }
         return split == null ? 0 : split.runs();
     }
 
     private void unfinished(String name, Shard shard, int lines) {
-        problems.add(name + ": error: shard " + shard.k() + "/" + shard.n() + " is unfinished: it holds "
-                + Math.max(lines - 2, 0) + " of its " + (shard.to() - shard.from()) + " runs ("
-                + shard.span() + "); its task was stopped or killed before the end");
+        problems.add(located(name, SimMsg.MERGE_UNFINISHED, kn(shard), Math.max(lines - 2, 0), shard.to() - shard.from(),
+                shard.span()));
         rerun.add(shard.k());
         shardFrom.put(shard.k(), name);
     }
@@ -156,15 +150,12 @@ final class Merger {
         if (split == null) {
             split = shard;
         } else if (shard.n() != split.n() || shard.runs() != split.runs()) {
-            throw new SweepException(name + ":1: error: shard " + shard.k() + "/" + shard.n() + " of a sweep of "
-                    + shard.runs() + " runs, but " + shardFrom.firstEntry().getValue() + " is shard " + split.k()
-                    + "/" + split.n() + " of a sweep of " + split.runs() + " runs; merge the files of one split"
-                    + " only (a folder reused for another sweep or another number of shards?)");
+            throw at(name + ":1", SimMsg.MERGE_OTHER_SPLIT, kn(shard), shard.runs(), shardFrom.firstEntry().getValue(),
+                    kn(split), split.runs());
         }
         String twice = shardFrom.get(shard.k());
         if (twice != null) {
-            throw new SweepException(name + ":1: error: shard " + shard.k() + "/" + shard.n() + " is also "
-                    + twice + "; give each shard once");
+            throw at(name + ":1", SimMsg.MERGE_SHARD_TWICE, kn(shard), twice);
         }
     }
 
@@ -176,14 +167,14 @@ final class Merger {
         for (int k = 1; k <= split.n(); k++) {
             if (!shardFrom.containsKey(k)) {
                 int[] r = SweepSpec.shard(split.runs(), k, split.n());
-                problems.add("error: shard " + k + "/" + split.n() + " is missing ("
-                        + new Shard(k, split.n(), r[0], r[1], split.runs()).span() + ")");
+                problems.add(Message.of(SimMsg.UNPLACED, Severity.ERROR.word(), Message.of(SimMsg.MERGE_SHARD_MISSING,
+                        k + "/" + split.n(), new Shard(k, split.n(), r[0], r[1], split.runs()).span())));
                 rerun.add(k);
             }
         }
         if (!problems.isEmpty()) {
             java.util.Collections.sort(rerun);
-            throw new IncompleteSweepException(String.join("\n", problems), rerun, split.n());
+            throw new IncompleteSweepException(problems, rerun, split.n());
         }
     }
 
@@ -192,8 +183,7 @@ final class Merger {
         int run = runOf(name, line, text);
         String before = rows.put(run, text);
         if (before != null) {
-            throw new SweepException(name + ":" + line + ": error: run " + run + " is also in " + rowFrom.get(run)
-                    + "; were shards given twice or run with different --shard N?");
+            throw at(name + ":" + line, SimMsg.MERGE_RUN_TWICE, run, rowFrom.get(run));
         }
         rowFrom.put(run, name);
         return run;
@@ -202,20 +192,33 @@ final class Merger {
     /** The run number of a row, checked against the sweep's number of runs (the first row's). */
     private int runOf(String name, int line, String text) throws SweepException {
         String[] f = text.split(",", 3);
-        String at = name + ":" + line + ": error: ";
+        String where = name + ":" + line;
         if (f.length < 3 || !f[0].matches("\\d{1,9}") || !f[1].matches("\\d{1,9}")) {
-            throw new SweepException(at + "expected a run number and the number of runs, got '" + text + "'");
+            throw at(where, SimMsg.MERGE_NOT_A_ROW, text);
         }
         int run = Integer.parseInt(f[0]);
         int total = Integer.parseInt(f[1]);
         if (runs >= 0 && total != runs) {
-            throw new SweepException(at + "a sweep of " + total + " runs, but the shards before are from a sweep of "
-                    + runs);
+            throw at(where, SimMsg.MERGE_OTHER_SIZE, total, runs);
         }
         runs = total;
         if (run >= total) {
-            throw new SweepException(at + "run " + run + " in a sweep of " + total + " runs (numbered from 0)");
+            throw at(where, SimMsg.MERGE_RUN_TOO_LARGE, run, total);
         }
         return run;
+    }
+
+    /** Problem {@code key} of the file at {@code where} ({@code FILE:LINE} or {@code FILE}): {@code WHERE: error: MESSAGE}. */
+    private static Message located(String where, SimMsg key, Object... args) {
+        return Message.of(SimMsg.LOAD_ERROR, where, Severity.ERROR.word(), Message.of(key, args));
+    }
+
+    private static SweepException at(String where, SimMsg key, Object... args) {
+        return new SweepException(located(where, key, args));
+    }
+
+    /** A shard as its number and the split's, {@code K/N}. */
+    private static String kn(Shard s) {
+        return s.k() + "/" + s.n();
     }
 }

@@ -1,24 +1,25 @@
 package org.parpe.sim.sweep;
 
 import java.util.Locale;
+import org.parpe.sim.text.SimMsg;
 
 /** What a sweep's plot shows and an optimisation maximises; every one is larger for a better gait. */
 public enum Objective {
     /** How fast the robot went forwards (+x), m/s: the ranking of {@code parpe race} per second. */
-    FORWARD_SPEED("forward-speed", "forward speed (m/s)"),
+    FORWARD_SPEED("forward-speed", SimMsg.OBJECTIVE_FORWARD_SPEED),
     /** How fast it went in any direction, m/s. */
-    SPEED("speed", "speed (m/s)"),
+    SPEED("speed", SimMsg.OBJECTIVE_SPEED),
     /** How far it went forwards (+x), m. */
-    FORWARD("forward", "forward (m)"),
+    FORWARD("forward", SimMsg.OBJECTIVE_FORWARD),
     /** How far it went in any direction, m. */
-    DISTANCE("distance", "distance (m)"),
+    DISTANCE("distance", SimMsg.OBJECTIVE_DISTANCE),
     /** The score of the run in its world (sweeps with a world only). */
-    SCORE("score", "score (points)");
+    SCORE("score", SimMsg.OBJECTIVE_SCORE);
 
     private final String id;
-    private final String label;
+    private final SimMsg label;
 
-    Objective(String id, String label) {
+    Objective(String id, SimMsg label) {
         this.id = id;
         this.label = label;
     }
@@ -28,9 +29,9 @@ public enum Objective {
         return id;
     }
 
-    /** A label for an axis, with the unit. */
+    /** A label for an axis, with the unit, in the chosen language. */
     public String label() {
-        return label;
+        return label.text();
     }
 
     /** The objective of {@code row} (NaN when the run could not start). */

@@ -10,6 +10,7 @@ import java.util.regex.Pattern;
 import org.parpe.core.text.Message;
 import org.parpe.core.io.CsvCells;
 import org.parpe.core.lang.Numbers;
+import org.parpe.sim.text.SimMsg;
 
 /**
  * The CSV form of sweep rows: a header, then one line per run in combination order. Columns:
@@ -73,8 +74,8 @@ public final class SweepCsv {
      */
     public record Shard(int k, int n, int from, int to, int runs) {
         /** Its runs as people count them ({@code "runs 4950..6599"}). */
-        public String span() {
-            return to > from ? "runs " + from + ".." + (to - 1) : "no runs";
+        public Message span() {
+            return to > from ? Message.of(SimMsg.SHARD_SPAN, from, to - 1) : Message.of(SimMsg.SHARD_NO_RUNS);
         }
     }
 
@@ -148,7 +149,7 @@ public final class SweepCsv {
                 }
                 String[] f = text.split(",", columns);
                 if (params < 0 || f.length != columns) {
-                    throw new SweepException("not a row of " + (columns + (scored ? 1 : 0)) + " columns: '" + line + "'");
+                    throw new SweepException(SimMsg.CSV_COLUMNS, columns + (scored ? 1 : 0), line);
                 }
                 Map<String, Double> values = new java.util.LinkedHashMap<>();
                 for (int a = 0; a < params; a++) {
@@ -169,7 +170,7 @@ public final class SweepCsv {
                         error.isEmpty() ? Message.EMPTY : Message.verbatim(error),
                         score));
             } catch (NumberFormatException e) {
-                throw new SweepException("a column that should be a number is not, in '" + line + "'");
+                throw new SweepException(SimMsg.CSV_NOT_A_NUMBER, line);
             }
         }
         return new SweepResult(rows, false);
@@ -248,13 +249,12 @@ public final class SweepCsv {
             return;
         }
         if (runs < 0) {
-            throw new SweepException("the files hold no runs, only the header; merge the files of a sweep's shards");
+            throw new SweepException(SimMsg.MERGE_ONLY_HEADER);
         }
         int missing = 0;
         while (rows.containsKey(missing)) {
             missing++;
         }
-        throw new SweepException("runs are missing: " + (runs - rows.size()) + " of " + Math.max(runs, 0)
-                + " (the first is run " + missing + "); is a shard missing or unfinished?");
+        throw new SweepException(SimMsg.MERGE_RUNS_MISSING, runs - rows.size(), Math.max(runs, 0), missing);
     }
 }

@@ -27,8 +27,8 @@ public class SweepException extends Exception {
     }
 
     /**
-     * An exception with a line not (yet) in the bundles, shown as it is ({@link Message#verbatim}):
-     * the shard merger's and the IDE's sweep panels' lines.
+     * An exception with a line already in the user's words, shown as it is ({@link Message#verbatim}):
+     * the IDE's sweep panels' and the command line's own refusals, from their bundles.
      */
     public SweepException(String message) {
         this(Message.verbatim(message));
