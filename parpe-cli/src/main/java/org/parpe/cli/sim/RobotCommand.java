@@ -107,6 +107,6 @@ public final class RobotCommand implements Callable<Integer> {
 
     /** "4 segments, 0 nodes, 2 feet, 1 hub". */
     private static String left(Map<PartType, Integer> left) {
-        return String.join(", ", left.entrySet().stream().map(e -> e.getKey().count(e.getValue())).toList());
+        return String.join(", ", left.entrySet().stream().map(e -> e.getKey().count(e.getValue()).toString()).toList());
     }
 }

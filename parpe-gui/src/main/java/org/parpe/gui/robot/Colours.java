@@ -80,7 +80,7 @@ final class Colours {
             Map<PartType, Integer> left = d.left(kit);
             s.append(s.length() == 0 ? "" : "   ").append(ToolMsg.ROBOT_KIT_LEFT.text(kit.name(),
                     left.entrySet().stream().filter(e -> kit.owned(e.getKey()) > 0)
-                            .map(e -> e.getKey().count(e.getValue())).collect(Collectors.joining(", "))));
+                            .map(e -> e.getKey().count(e.getValue()).toString()).collect(Collectors.joining(", "))));
         }
         if (!d.problems().isEmpty()) {
             s.append(s.length() == 0 ? "" : "   ").append(ToolMsg.ROBOT_PROBLEMS.text(d.problems().size(), d.problems().get(0).format()));

@@ -80,7 +80,7 @@ final class DraftEdits {
             } else if (quarterTurns < 0 || quarterTurns > 3) {
                 refused = SimMsg.BUILD_QUARTER_TURNS.text(quarterTurns);
             } else if (kit != null && kit.left(config).get(type) <= 0) {
-                refused = SimMsg.BUILD_KIT_EMPTY.text(type.count(1).substring(2), type.count(kit.owned(type)));
+                refused = SimMsg.BUILD_KIT_EMPTY.text(type.noun(), type.count(kit.owned(type)));
             }
         }
         if (refused != null) {

@@ -83,7 +83,7 @@ public record Kit(String name, Map<PartType, Integer> owned, Map<PartType, Sourc
             int n = used.merge(p.type(), 1, Integer::sum);
             if (n == owned(p.type()) + 1) {
                 SourcePos at = where.getOrDefault(p.type(), SourcePos.NONE);
-                diags.error(p.pos(), Msg.BEYOND_THE_KIT, p.type().xmlName(), p.name(), p.type().count(total.get(p.type())), name,
+                diags.error(p.pos(), Msg.BEYOND_THE_KIT, p.type().noun(), p.name(), p.type().count(total.get(p.type())), name,
                         owned(p.type()), at.line() > 0 ? Message.of(Msg.LINE_NOTE, at.line()) : Message.EMPTY);
                 fits = false;
             }

@@ -1,6 +1,8 @@
 package org.parpe.sim.config;
 
 import java.util.Locale;
+import org.parpe.core.text.Message;
+import org.parpe.sim.text.SimMsg;
 
 /**
  * The kinds of PolyBot G1 part a configuration can use. Sizes and masses are documented in
@@ -8,18 +10,22 @@ import java.util.Locale;
  */
 public enum PartType {
     /** An active segment: one hinge between two plates (plate 0 on the servo half, plate 1 on the turning half). */
-    SEGMENT(2),
+    SEGMENT(2, SimMsg.PART_SEGMENT, SimMsg.PART_SEGMENTS),
     /** A rigid cube with six plates: 0 +x, 1 −x, 2 +y, 3 −y, 4 +z, 5 −z. */
-    NODE(6),
+    NODE(6, SimMsg.PART_NODE, SimMsg.PART_NODES),
     /** A passive foot pad with one plate (0). */
-    FOOT(1),
+    FOOT(1, SimMsg.PART_FOOT, SimMsg.PART_FEET),
     /** A passive wheel hub, a disc with {@code plates} plates round its rim (default 8). */
-    HUB(8);
+    HUB(8, SimMsg.PART_HUB, SimMsg.PART_HUBS);
 
     private final int defaultPlates;
+    private final SimMsg noun;
+    private final SimMsg many;
 
-    PartType(int defaultPlates) {
+    PartType(int defaultPlates, SimMsg noun, SimMsg many) {
         this.defaultPlates = defaultPlates;
+        this.noun = noun;
+        this.many = many;
     }
 
     /** The number of plates of a part of this type unless the configuration says otherwise (hubs only). */
@@ -32,10 +38,14 @@ public enum PartType {
         return name().toLowerCase(Locale.ROOT);
     }
 
-    /** {@code n} parts of this type in words: "1 segment", "12 segments", "2 feet". */
-    public String count(long n) {
-        String word = this == FOOT ? (n == 1 ? "foot" : "feet") : xmlName() + (n == 1 ? "" : "s");
-        return n + " " + word;
+    /** The part's name in the user's language, for messages ("segment", "Nabe"); files use {@link #xmlName}. */
+    public Message noun() {
+        return Message.of(noun);
+    }
+
+    /** {@code n} parts of this type in the user's words: "1 segment", "12 segments", "2 feet", "2 Füße". */
+    public Message count(long n) {
+        return n == 1 ? Message.of(SimMsg.PART_ONE, noun()) : Message.of(many, n);
     }
 
     /** The type called {@code name} in configuration files, or {@code null}. */

@@ -20,6 +20,7 @@ import org.parpe.core.text.Lang;
 import org.parpe.sim.SimTarget;
 import org.parpe.sim.Simulator;
 import org.parpe.sim.bridge.Export;
+import org.parpe.sim.config.PartType;
 import org.parpe.sim.build.RobotDraft;
 import org.parpe.sim.grade.ReportPage;
 import org.parpe.sim.sweep.IncompleteSweepException;
@@ -74,6 +75,26 @@ class SimMessagesLanguageTest {
                 s.inWords());
         assertEquals("1 Kontrollpunkt, 1 Hebeldruck, disqualifiziert (Arena verlassen)",
                 new WorldScore(0, Double.NaN, 0, 1, 0, 1, "arena").inWords());
+    }
+
+    /**
+     * Part counts inside kit messages and the robot's summary: English plurals of the file's
+     * words ("3 segments") stood in every language, as in "der Roboter braucht 3 segments".
+     */
+    @Test
+    void partCountsInEnglishAndGerman() {
+        assertEquals("1 segment, 12 segments, 1 foot, 2 feet, 0 hubs", String.join(", ",
+                PartType.SEGMENT.count(1).toString(), PartType.SEGMENT.count(12).toString(),
+                PartType.FOOT.count(1).toString(), PartType.FOOT.count(2).toString(), PartType.HUB.count(0).toString()));
+        Lang.use(Locale.GERMAN);
+        assertEquals("1 Segment, 12 Segmente, 1 Fuß, 2 Füße, 0 Naben, 3 Knoten", String.join(", ",
+                PartType.SEGMENT.count(1).toString(), PartType.SEGMENT.count(12).toString(),
+                PartType.FOOT.count(1).toString(), PartType.FOOT.count(2).toString(), PartType.HUB.count(0).toString(),
+                PartType.NODE.count(3).toString()));
+        assertEquals("vom Typ Nabe ist im Bausatz nichts mehr übrig (er hat 2 Naben)",
+                SimMsg.BUILD_KIT_EMPTY.text(PartType.HUB.noun(), PartType.HUB.count(2)));
+        Lang.use(Locale.forLanguageTag("ja"));
+        assertEquals("セグメント 1 個, 足 4 個", PartType.SEGMENT.count(1) + ", " + PartType.FOOT.count(4));
     }
 
     @Test
