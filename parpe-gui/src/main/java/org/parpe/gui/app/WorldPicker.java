@@ -2,9 +2,12 @@ package org.parpe.gui.app;
 
 import org.parpe.gui.text.UiMsg;
 import org.parpe.gui.prefs.Prefs;
+import org.parpe.gui.files.Examples;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
@@ -36,8 +39,11 @@ final class WorldPicker {
         new Label(bar, SWT.NONE).setText(UiMsg.VIEW_WORLD.text());
         String file = prefs.get("view.worldFile", null);
         Path last = file == null ? null : Path.of(file);
-        worlds = new WorldCombo(bar, UiMsg.WORLD_FLAT.text(), last != null && Files.isRegularFile(last) ? last : null,
-                UiMsg.WORLD_FILE.text());
+        List<Path> listed = new ArrayList<>(Examples.worlds());
+        if (last != null && Files.isRegularFile(last)) {
+            listed.add(last);
+        }
+        worlds = new WorldCombo(bar, UiMsg.WORLD_FLAT.text(), listed, UiMsg.WORLD_FILE.text());
         Combo combo = worlds.control();
         combo.setToolTipText(UiMsg.VIEW_WORLD_TIP.text());
         // Each file has its own world (RunChoices): the flat floor until the file is shown.

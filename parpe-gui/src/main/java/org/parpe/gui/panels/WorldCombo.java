@@ -7,12 +7,12 @@ import java.util.List;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
-import org.parpe.gui.files.Examples;
 
 /**
  * The choice of a world as the IDE's World picker and the Sweep dialog show it: the flat floor
  * first, the example worlds of {@code examples/worlds} and the world files chosen so far, and last
- * an item that asks for a file. Files are kept as absolute, normalized paths, so a file chosen
+ * an item that asks for a file. (The owner lists the example worlds: {@code files} shows this
+ * package's dialogs, so this package does not read {@code files}.) Files are kept as absolute, normalized paths, so a file chosen
  * twice is listed once. What choosing the last item does is the owner's ({@link #browse}).
  */
 public final class WorldCombo {
@@ -20,15 +20,12 @@ public final class WorldCombo {
     private final String browseItem;
     private final List<Path> files = new ArrayList<>();
 
-    /** The combo in {@code parent}: {@code flat}, the example worlds, {@code extra} where not null, {@code browseItem}. */
-    public WorldCombo(Composite parent, String flat, Path extra, String browseItem) {
+    /** The combo in {@code parent}: {@code flat}, the world files {@code worlds} (each once), {@code browseItem}. */
+    public WorldCombo(Composite parent, String flat, List<Path> worlds, String browseItem) {
         this.browseItem = browseItem;
         combo = new Combo(parent, SWT.READ_ONLY);
         combo.add(flat);
-        Examples.worlds().forEach(this::offer);
-        if (extra != null) {
-            offer(extra);
-        }
+        worlds.forEach(this::offer);
         combo.add(browseItem);
         combo.select(0);
     }

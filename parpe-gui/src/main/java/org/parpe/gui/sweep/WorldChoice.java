@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
+import org.parpe.gui.files.Examples;
 import org.parpe.gui.panels.WorldCombo;
 import org.parpe.gui.text.ToolMsg;
 
@@ -18,7 +19,7 @@ final class WorldChoice {
 
     /** The choice in {@code parent}, on {@code current} (a world file, or null for the flat floor). */
     WorldChoice(Composite parent, Path current) {
-        worlds = new WorldCombo(parent, ToolMsg.SWEEP_FLAT.text(), null, ToolMsg.SWEEP_WORLD_FILE_BROWSE.text());
+        worlds = new WorldCombo(parent, ToolMsg.SWEEP_FLAT.text(), Examples.worlds(), ToolMsg.SWEEP_WORLD_FILE_BROWSE.text());
         worlds.choose(current);
         Combo combo = worlds.control();
         previous = combo.getSelectionIndex();
