@@ -15,7 +15,8 @@ import static org.parpe.core.expr.Nodes.Binary.SUB;
  * {@link ExprTree}, folding and the C export see the general kind; each computes with the
  * general node's arithmetic and checks ({@link Nodes.Binary#add} …), so values and error
  * messages are the same bit for bit. Addition and multiplication commute exactly in IEEE 754,
- * so one class serves a constant on either side.
+ * so one class serves a constant on either side. Each row of the tables below is its own
+ * (anonymous) class for that reason: the rows differ only in what {@code eval} computes.
  */
 final class Arith {
     private Arith() {
@@ -28,11 +29,39 @@ final class Arith {
         if (kl && kr) {
             return null; // folded at load, or kept to fail at run time
         }
+        if (!kl && !kr) {
+            return variables(op, left, right);
+        }
+        double k = ((Nodes.Const) (kl ? left : right)).value;
+        Node x = kl ? right : left;
         switch (op) {
-            case ADD: return kl || kr ? new AddK(left, right) : new Add(left, right);
-            case SUB: return kl ? new KSub(left, right) : kr ? new SubK(left, right) : new Sub(left, right);
-            case MUL: return kl || kr ? new MulK(left, right) : new Mul(left, right);
-            case DIV: return kl ? new KDiv(left, right) : kr ? new DivK(left, right) : new Div(left, right);
+            case ADD: return new Nodes.Binary(op, left, right) {
+                @Override public double eval(EvalContext c) { return add(x.eval(c), k); } };
+            case MUL: return new Nodes.Binary(op, left, right) {
+                @Override public double eval(EvalContext c) { return mul(x.eval(c), k); } };
+            case SUB: return kl ? new Nodes.Binary(op, left, right) {
+                @Override public double eval(EvalContext c) { return sub(k, x.eval(c)); } }
+                : new Nodes.Binary(op, left, right) {
+                @Override public double eval(EvalContext c) { return sub(x.eval(c), k); } };
+            case DIV: return kl ? new Nodes.Binary(op, left, right) {
+                @Override public double eval(EvalContext c) { return div(k, x.eval(c)); } }
+                : new Nodes.Binary(op, left, right) {
+                @Override public double eval(EvalContext c) { return div(x.eval(c), k); } };
+            default: return null;
+        }
+    }
+
+    /** {@code left op right}, neither side a constant (the left operand evaluated first). */
+    private static Nodes.Binary variables(int op, Node left, Node right) {
+        switch (op) {
+            case ADD: return new Nodes.Binary(op, left, right) {
+                @Override public double eval(EvalContext c) { return add(left.eval(c), right.eval(c)); } };
+            case SUB: return new Nodes.Binary(op, left, right) {
+                @Override public double eval(EvalContext c) { return sub(left.eval(c), right.eval(c)); } };
+            case MUL: return new Nodes.Binary(op, left, right) {
+                @Override public double eval(EvalContext c) { return mul(left.eval(c), right.eval(c)); } };
+            case DIV: return new Nodes.Binary(op, left, right) {
+                @Override public double eval(EvalContext c) { return div(left.eval(c), right.eval(c)); } };
             default: return null;
         }
     }
@@ -40,284 +69,24 @@ final class Arith {
     /** The node reading logical variable {@code which} ({@link Nodes.Var#TIME} …). */
     static Nodes.Var variable(int which) {
         switch (which) {
-            case Nodes.Var.TIME: return new Time();
-            case Nodes.Var.BTIME: return new BTime();
-            case Nodes.Var.INDEX: return new Index();
-            case Nodes.Var.COUNT: return new Count();
-            case Nodes.Var.ID: return new Id();
-            case Nodes.Var.PHASE: return new Phase();
-            default: return new Cycle();
+            case Nodes.Var.TIME: return new Nodes.Var(which) { @Override public double eval(EvalContext c) { return c.time; } };
+            case Nodes.Var.BTIME: return new Nodes.Var(which) { @Override public double eval(EvalContext c) { return c.btime; } };
+            case Nodes.Var.INDEX: return new Nodes.Var(which) { @Override public double eval(EvalContext c) { return c.index; } };
+            case Nodes.Var.COUNT: return new Nodes.Var(which) { @Override public double eval(EvalContext c) { return c.count; } };
+            case Nodes.Var.ID: return new Nodes.Var(which) { @Override public double eval(EvalContext c) { return c.id; } };
+            case Nodes.Var.PHASE: return new Nodes.Var(which) { @Override public double eval(EvalContext c) { return c.phase; } };
+            default: return new Nodes.Var(Nodes.Var.CYCLE) { @Override public double eval(EvalContext c) { return c.cycle; } };
         }
     }
 
     /** The specialised node for {@code f(arg)}, or null when the general one serves. */
     static Nodes.Func1 function(Functions.F1 f, Node arg) {
         switch (f) {
-            case SIN: return new Sin(arg);
-            case COS: return new Cos(arg);
+            case SIN: return new Nodes.Func1(f, arg) {
+                @Override public double eval(EvalContext c) { double x = arg.eval(c); return checked(Math.sin(x), x); } };
+            case COS: return new Nodes.Func1(f, arg) {
+                @Override public double eval(EvalContext c) { double x = arg.eval(c); return checked(Math.cos(x), x); } };
             default: return null;
-        }
-    }
-
-    private static double constant(Node n) {
-        return ((Nodes.Const) n).value;
-    }
-
-    /** {@code a + b}. */
-    static final class Add extends Nodes.Binary {
-        Add(Node left, Node right) {
-            super(ADD, left, right);
-        }
-
-        @Override
-        public double eval(EvalContext c) {
-            double a = left.eval(c);
-            return add(a, right.eval(c));
-        }
-    }
-
-    /** {@code a + k} or {@code k + a}. */
-    static final class AddK extends Nodes.Binary {
-        private final double k;
-        private final Node x;
-
-        AddK(Node left, Node right) {
-            super(ADD, left, right);
-            boolean kl = left instanceof Nodes.Const;
-            this.k = constant(kl ? left : right);
-            this.x = kl ? right : left;
-        }
-
-        @Override
-        public double eval(EvalContext c) {
-            return add(x.eval(c), k);
-        }
-    }
-
-    /** {@code a - b}. */
-    static final class Sub extends Nodes.Binary {
-        Sub(Node left, Node right) {
-            super(SUB, left, right);
-        }
-
-        @Override
-        public double eval(EvalContext c) {
-            double a = left.eval(c);
-            return sub(a, right.eval(c));
-        }
-    }
-
-    /** {@code a - k}. */
-    static final class SubK extends Nodes.Binary {
-        private final double k;
-
-        SubK(Node left, Node right) {
-            super(SUB, left, right);
-            this.k = constant(right);
-        }
-
-        @Override
-        public double eval(EvalContext c) {
-            return sub(left.eval(c), k);
-        }
-    }
-
-    /** {@code k - a}. */
-    static final class KSub extends Nodes.Binary {
-        private final double k;
-
-        KSub(Node left, Node right) {
-            super(SUB, left, right);
-            this.k = constant(left);
-        }
-
-        @Override
-        public double eval(EvalContext c) {
-            return sub(k, right.eval(c));
-        }
-    }
-
-    /** {@code a * b}. */
-    static final class Mul extends Nodes.Binary {
-        Mul(Node left, Node right) {
-            super(MUL, left, right);
-        }
-
-        @Override
-        public double eval(EvalContext c) {
-            double a = left.eval(c);
-            return mul(a, right.eval(c));
-        }
-    }
-
-    /** {@code a * k} or {@code k * a}. */
-    static final class MulK extends Nodes.Binary {
-        private final double k;
-        private final Node x;
-
-        MulK(Node left, Node right) {
-            super(MUL, left, right);
-            boolean kl = left instanceof Nodes.Const;
-            this.k = constant(kl ? left : right);
-            this.x = kl ? right : left;
-        }
-
-        @Override
-        public double eval(EvalContext c) {
-            return mul(x.eval(c), k);
-        }
-    }
-
-    /** {@code a / b}. */
-    static final class Div extends Nodes.Binary {
-        Div(Node left, Node right) {
-            super(DIV, left, right);
-        }
-
-        @Override
-        public double eval(EvalContext c) {
-            double a = left.eval(c);
-            return div(a, right.eval(c));
-        }
-    }
-
-    /** {@code a / k}. */
-    static final class DivK extends Nodes.Binary {
-        private final double k;
-
-        DivK(Node left, Node right) {
-            super(DIV, left, right);
-            this.k = constant(right);
-        }
-
-        @Override
-        public double eval(EvalContext c) {
-            return div(left.eval(c), k);
-        }
-    }
-
-    /** {@code k / a}. */
-    static final class KDiv extends Nodes.Binary {
-        private final double k;
-
-        KDiv(Node left, Node right) {
-            super(DIV, left, right);
-            this.k = constant(left);
-        }
-
-        @Override
-        public double eval(EvalContext c) {
-            return div(k, right.eval(c));
-        }
-    }
-
-    /** {@code sin(a)}. */
-    static final class Sin extends Nodes.Func1 {
-        Sin(Node arg) {
-            super(Functions.F1.SIN, arg);
-        }
-
-        @Override
-        public double eval(EvalContext c) {
-            double x = arg.eval(c);
-            return checked(Math.sin(x), x);
-        }
-    }
-
-    /** {@code cos(a)}. */
-    static final class Cos extends Nodes.Func1 {
-        Cos(Node arg) {
-            super(Functions.F1.COS, arg);
-        }
-
-        @Override
-        public double eval(EvalContext c) {
-            double x = arg.eval(c);
-            return checked(Math.cos(x), x);
-        }
-    }
-
-    /** {@code $time}. */
-    static final class Time extends Nodes.Var {
-        Time() {
-            super(TIME);
-        }
-
-        @Override
-        public double eval(EvalContext c) {
-            return c.time;
-        }
-    }
-
-    /** {@code $btime}. */
-    static final class BTime extends Nodes.Var {
-        BTime() {
-            super(BTIME);
-        }
-
-        @Override
-        public double eval(EvalContext c) {
-            return c.btime;
-        }
-    }
-
-    /** {@code $index}. */
-    static final class Index extends Nodes.Var {
-        Index() {
-            super(INDEX);
-        }
-
-        @Override
-        public double eval(EvalContext c) {
-            return c.index;
-        }
-    }
-
-    /** {@code $count}. */
-    static final class Count extends Nodes.Var {
-        Count() {
-            super(COUNT);
-        }
-
-        @Override
-        public double eval(EvalContext c) {
-            return c.count;
-        }
-    }
-
-    /** {@code $id}. */
-    static final class Id extends Nodes.Var {
-        Id() {
-            super(ID);
-        }
-
-        @Override
-        public double eval(EvalContext c) {
-            return c.id;
-        }
-    }
-
-    /** {@code $phase}. */
-    static final class Phase extends Nodes.Var {
-        Phase() {
-            super(PHASE);
-        }
-
-        @Override
-        public double eval(EvalContext c) {
-            return c.phase;
-        }
-    }
-
-    /** {@code $cycle}. */
-    static final class Cycle extends Nodes.Var {
-        Cycle() {
-            super(CYCLE);
-        }
-
-        @Override
-        public double eval(EvalContext c) {
-            return c.cycle;
         }
     }
 }

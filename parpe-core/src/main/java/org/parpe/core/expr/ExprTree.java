@@ -63,12 +63,57 @@ public final class ExprTree {
     }
 
     /**
-     * A yes/no question about a tree: each leaf answers by its kind (no, unless a subclass says
-     * otherwise), an operator or function by its operands' answers, combined with {@code and}
-     * (stopping at the first no) or {@code or} (asking every operand, so that a subclass sees the
-     * whole tree).
+     * A visitor whose leaves (numbers, variables, controls, macros, sensors, {@code rand()}) all
+     * answer {@link #leaf()} unless a subclass says otherwise for one kind; the operators and
+     * functions are the subclass's.
      */
-    public abstract static class Question implements Visitor<Boolean> {
+    public abstract static class ByLeaf<R> implements Visitor<R> {
+        /** What a leaf answers unless its kind's method is overridden. */
+        protected abstract R leaf();
+
+        @Override
+        public R constant(double value) {
+            return leaf();
+        }
+
+        @Override
+        public R variable(String name) {
+            return leaf();
+        }
+
+        @Override
+        public R control(int index) {
+            return leaf();
+        }
+
+        @Override
+        public R macro(int index) {
+            return leaf();
+        }
+
+        @Override
+        public R globalSensor(int slot) {
+            return leaf();
+        }
+
+        @Override
+        public R localSensor(int position, int channel) {
+            return leaf();
+        }
+
+        @Override
+        public R random() {
+            return leaf();
+        }
+    }
+
+    /**
+     * A yes/no question about a tree: each leaf answers by its kind (no, unless a subclass says
+     * otherwise; a subclass always answers for variables), an operator or function by its
+     * operands' answers, combined with {@code and} (stopping at the first no) or {@code or}
+     * (asking every operand, so that a subclass sees the whole tree).
+     */
+    public abstract static class Question extends ByLeaf<Boolean> {
         private final boolean and;
 
         /** A question whose operators answer yes when all operands do ({@code and}) or when any does. */
@@ -90,34 +135,12 @@ public final class ExprTree {
         }
 
         @Override
-        public Boolean constant(double value) {
+        protected Boolean leaf() {
             return false;
         }
 
         @Override
-        public Boolean control(int index) {
-            return false;
-        }
-
-        @Override
-        public Boolean macro(int index) {
-            return false;
-        }
-
-        @Override
-        public Boolean globalSensor(int slot) {
-            return false;
-        }
-
-        @Override
-        public Boolean localSensor(int position, int channel) {
-            return false;
-        }
-
-        @Override
-        public Boolean random() {
-            return false;
-        }
+        public abstract Boolean variable(String name);
 
         @Override
         public Boolean unary(boolean not, Node arg) {

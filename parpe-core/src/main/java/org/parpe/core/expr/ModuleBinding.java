@@ -12,7 +12,7 @@ import org.parpe.core.lang.Vocabulary;
  * The folded values are those the unbound tree computes, bit for bit: the same operations on
  * the same numbers. Parts left as they were are shared with the original tree.
  */
-final class ModuleBinding implements ExprTree.Visitor<Node> {
+final class ModuleBinding extends ExprTree.ByLeaf<Node> {
     private final double index;
     private final double count;
     private final double id;
@@ -40,8 +40,9 @@ final class ModuleBinding implements ExprTree.Visitor<Node> {
         }
     }
 
+    /** A leaf other than those variables stays as it is. */
     @Override
-    public Node constant(double value) {
+    protected Node leaf() {
         return current;
     }
 
@@ -53,31 +54,6 @@ final class ModuleBinding implements ExprTree.Visitor<Node> {
             case Nodes.Var.ID: return new Nodes.Const(id);
             default: return current;
         }
-    }
-
-    @Override
-    public Node control(int index) {
-        return current;
-    }
-
-    @Override
-    public Node macro(int index) {
-        return current;
-    }
-
-    @Override
-    public Node globalSensor(int slot) {
-        return current;
-    }
-
-    @Override
-    public Node localSensor(int position, int channel) {
-        return current;
-    }
-
-    @Override
-    public Node random() {
-        return current;
     }
 
     @Override

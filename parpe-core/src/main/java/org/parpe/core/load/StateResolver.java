@@ -5,6 +5,7 @@ import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.BiConsumer;
 import org.parpe.core.diag.DiagnosticSink;
 import org.parpe.core.expr.ExprCompiler;
 import org.parpe.core.expr.Expression;
@@ -59,17 +60,18 @@ final class StateResolver {
     static Resolved resolve(DiagnosticSink d, Scope moduleScope, List<Includes.Section> stateSections,
                             List<Includes.Section> automataSections) {
         StateResolver r = new StateResolver(d, moduleScope);
-        r.states(stateSections);
-        r.automata(automataSections);
+        r.sections(stateSections, r::state);
+        r.sections(automataSections, r::automaton);
         return new Resolved(r.states, r.automata, r.locals, r.broken);
     }
 
-    private void states(List<Includes.Section> sections) {
+    /** Checks each section's own attributes and text, and hands each child element with its section to {@code each}. */
+    private void sections(List<Includes.Section> sections, BiConsumer<XElement, Includes.Section> each) {
         for (Includes.Section s : sections) {
             Attrs.allow(s.element(), d, Element.SECTION.attributes());
             Attrs.noText(s.element(), d);
             for (XElement e : s.element().children()) {
-                state(e, s);
+                each.accept(e, s);
             }
         }
     }
@@ -167,16 +169,6 @@ final class StateResolver {
             }
         }
         return ok ? out : null;
-    }
-
-    private void automata(List<Includes.Section> sections) {
-        for (Includes.Section s : sections) {
-            Attrs.allow(s.element(), d, Element.SECTION.attributes());
-            Attrs.noText(s.element(), d);
-            for (XElement e : s.element().children()) {
-                automaton(e, s);
-            }
-        }
     }
 
     private void automaton(XElement e, Includes.Section s) {

@@ -1,6 +1,7 @@
 package org.parpe.core.print;
 
 import java.util.List;
+import java.util.function.Consumer;
 import java.util.stream.Collectors;
 import org.parpe.core.edit.ElementWriter;
 import org.parpe.core.expr.Expression;
@@ -45,36 +46,24 @@ public final class ProgramPrinter {
         line(0, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>");
         open(0, "program");
         robot(p);
-        if (!p.parameters().isEmpty()) {
-            open(1, "parameters");
-            p.parameters().forEach(this::parameter);
-            close(1, "parameters");
-        }
-        if (!p.controls().isEmpty()) {
-            open(1, "controls");
-            p.controls().forEach(this::control);
-            close(1, "controls");
-        }
+        section("parameters", p.parameters(), this::parameter);
+        section("controls", p.controls(), this::control);
         if (p.main() != null) {
             main(p.main());
         }
-        if (!p.behaviors().isEmpty()) {
-            open(1, "behaviors");
-            p.behaviors().forEach(this::behavior);
-            close(1, "behaviors");
-        }
-        if (!p.automata().isEmpty()) {
-            open(1, "automata");
-            p.automata().forEach(this::automaton);
-            close(1, "automata");
-        }
-        List<StateDef> named = p.states();
-        if (!named.isEmpty()) {
-            open(1, "states");
-            named.forEach(this::state);
-            close(1, "states");
-        }
+        section("behaviors", p.behaviors(), this::behavior);
+        section("automata", p.automata(), this::automaton);
+        section("states", p.states(), this::state);
         close(0, "program");
+    }
+
+    /** A top-level section {@code <tag>} with an element per item, or nothing where there are none. */
+    private <T> void section(String tag, List<T> items, Consumer<T> each) {
+        if (!items.isEmpty()) {
+            open(1, tag);
+            items.forEach(each);
+            close(1, tag);
+        }
     }
 
     private void robot(Program p) {

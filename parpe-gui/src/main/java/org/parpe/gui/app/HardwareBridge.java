@@ -1,48 +1,25 @@
 package org.parpe.gui.app;
 
-import java.nio.file.Path;
-import java.util.List;
 import org.eclipse.swt.widgets.Control;
-import org.eclipse.swt.widgets.Shell;
 import org.parpe.gui.hardware.HardwareDialog;
 import org.parpe.gui.hardware.HardwareHost;
+import org.parpe.gui.hardware.PortChoice;
 
 /**
  * The IDE window as the Hardware dialog sees it, and the window's one dialog and the bus it
  * holds. UI thread only, except {@link #held}.
  */
-final class HardwareBridge implements HardwareHost {
-    private final IdeWindow ide;
+final class HardwareBridge extends WindowBridge implements HardwareHost {
     private HardwareDialog dialog;
     private volatile String held;
 
     HardwareBridge(IdeWindow ide) {
-        this.ide = ide;
+        super(ide);
     }
 
     @Override
-    public Shell shell() {
-        return ide.shell();
-    }
-
-    @Override
-    public String port() {
-        return ide.toolbar().port();
-    }
-
-    @Override
-    public void setPort(String port) {
-        ide.toolbar().setPort(port);
-    }
-
-    @Override
-    public String hardwareProfile() {
-        return ide.toolbar().hardwareProfile();
-    }
-
-    @Override
-    public void setHardwareProfile(String file) {
-        ide.toolbar().setHardwareProfile(file);
+    public PortChoice portChoice() {
+        return ide.toolbar();
     }
 
     @Override
@@ -53,11 +30,6 @@ final class HardwareBridge implements HardwareHost {
     @Override
     public Control posePanel() {
         return ide.pose().control();
-    }
-
-    @Override
-    public List<Path> openFiles() {
-        return ide.files().openFiles();
     }
 
     @Override

@@ -8,7 +8,6 @@ import java.nio.file.Path;
 import java.util.Map;
 import java.util.function.Consumer;
 import org.eclipse.jface.text.IDocument;
-import org.eclipse.swt.widgets.Shell;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.core.load.LoadResult;
 import org.parpe.core.model.Program;
@@ -23,26 +22,14 @@ import org.parpe.serial.servo.profile.ProfileReader;
 import org.parpe.sim.SimTarget;
 
 /** The IDE window as the Pose panel sees it. UI thread only. */
-final class PoseBridge implements PoseHost {
-    private final IdeWindow ide;
-
+final class PoseBridge extends WindowBridge implements PoseHost {
     PoseBridge(IdeWindow ide) {
-        this.ide = ide;
-    }
-
-    @Override
-    public Shell shell() {
-        return ide.shell();
+        super(ide);
     }
 
     @Override
     public Program program() {
         return ide.program();
-    }
-
-    @Override
-    public String robotChoice() {
-        return ide.robotChoice();
     }
 
     @Override
@@ -59,11 +46,6 @@ final class PoseBridge implements PoseHost {
     @Override
     public IDocument document() {
         return ide.editor().document();
-    }
-
-    @Override
-    public java.util.List<Path> openFiles() {
-        return ide.files().openFiles();
     }
 
     @Override

@@ -10,11 +10,10 @@ import org.parpe.gui.robot.RobotHost;
 import org.parpe.gui.run.RunOn;
 
 /** The IDE window as the Robot tab sees it. UI thread only. */
-final class RobotBridge implements RobotHost {
-    private final IdeWindow ide;
+final class RobotBridge extends WindowBridge implements RobotHost {
 
     RobotBridge(IdeWindow ide) {
-        this.ide = ide;
+        super(ide);
     }
 
     @Override
@@ -25,11 +24,6 @@ final class RobotBridge implements RobotHost {
     @Override
     public Path file() {
         return ide.files().pathForLoading();
-    }
-
-    @Override
-    public String robotChoice() {
-        return ide.robotChoice();
     }
 
     @Override

@@ -14,6 +14,7 @@ import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.ToolBar;
 import org.eclipse.swt.widgets.ToolItem;
+import org.parpe.gui.hardware.PortChoice;
 import org.parpe.gui.panels.Icons;
 import org.parpe.gui.panels.OverflowBar;
 import org.parpe.gui.run.Speed;
@@ -21,7 +22,7 @@ import org.parpe.gui.run.RunOn;
 import org.parpe.serial.link.SerialLink;
 
 /** The run tool bar: Run, Pause, Stop, emergency stop, speed, target, serial port and hardware profile. */
-public final class RunToolBar {
+public final class RunToolBar implements PortChoice {
     private final Composite bar;
     private final ToolItem run;
     private final ToolItem pause;
@@ -228,22 +229,26 @@ public final class RunToolBar {
         return pause;
     }
 
+    @Override
     public String port() {
         return port.getText().trim();
     }
 
     /** The hardware profile chosen, or null for G1 modules without one. */
+    @Override
     public String hardwareProfile() {
         String p = profile.getText().trim();
         return p.isEmpty() ? null : p;
     }
 
     /** Types a hardware profile into the profile box (automation, tests). */
+    @Override
     public void setHardwareProfile(String p) {
         profile.setText(p);
     }
 
     /** Types a serial port into the port box (automation, tests). */
+    @Override
     public void setPort(String p) {
         port.setText(p);
     }

@@ -2,7 +2,6 @@ package org.parpe.gui.app;
 
 import org.parpe.gui.text.UiMsg;
 import org.parpe.gui.prefs.Prefs;
-
 import org.parpe.gui.files.Examples;
 
 import java.nio.file.Files;
@@ -13,6 +12,7 @@ import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Label;
+import org.parpe.gui.panels.WorldCombo;
 import org.parpe.core.diag.DiagnosticList;
 import org.parpe.sim.world.World;
 import org.parpe.sim.world.WorldReader;
@@ -26,11 +26,8 @@ import org.parpe.sim.world.WorldReader;
 final class WorldPicker {
     /** The flat floor as {@link RunChoices} keeps it (a word, not the text shown). */
     static final String FLAT = "flat";
-    /** The last choice, which asks for a file. */
-    private final String browseItem = UiMsg.WORLD_FILE.text();
 
-    private final Combo combo;
-    private final List<Path> files = new ArrayList<>();
+    private final WorldCombo worlds;
     private final IdeWindow ide;
     private final Prefs prefs;
     private Path loadedFrom;
@@ -40,21 +37,19 @@ final class WorldPicker {
         this.ide = ide;
         this.prefs = prefs;
         new Label(bar, SWT.NONE).setText(UiMsg.VIEW_WORLD.text());
-        combo = new Combo(bar, SWT.READ_ONLY);
-        combo.setToolTipText(UiMsg.VIEW_WORLD_TIP.text());
-        combo.add(UiMsg.WORLD_FLAT.text());
-        Examples.worlds().forEach(this::add);
         String file = prefs.get("view.worldFile", null);
-        Path last = file == null ? null : Path.of(file).toAbsolutePath().normalize();
-        if (last != null && Files.isRegularFile(last) && !files.contains(last)) {
-            add(last);
+        Path last = file == null ? null : Path.of(file);
+        List<Path> listed = new ArrayList<>(Examples.worlds());
+        if (last != null && Files.isRegularFile(last)) {
+            listed.add(last);
         }
-        combo.add(browseItem);
+        worlds = new WorldCombo(bar, UiMsg.WORLD_FLAT.text(), listed, UiMsg.WORLD_FILE.text());
+        Combo combo = worlds.control();
+        combo.setToolTipText(UiMsg.VIEW_WORLD_TIP.text());
         // Each file has its own world (RunChoices): the flat floor until the file is shown.
-        combo.select(0);
         combo.addListener(SWT.Selection, e -> {
-            if (browseItem.equals(combo.getText()) && !browse()) {
-                combo.select(0);
+            if (worlds.browsing() && !browse()) {
+                worlds.choose(null);
             }
             changed.run();
         });
@@ -73,57 +68,34 @@ final class WorldPicker {
     void show(String choice) {
         Path p = FLAT.equals(choice) ? null : Path.of(choice);
         if (p != null && !Files.isRegularFile(p)) {
-            p = files.stream().filter(f -> f.getFileName().equals(Path.of(choice).getFileName())).findFirst().orElse(null);
+            p = worlds.files().stream().filter(f -> f.getFileName().equals(Path.of(choice).getFileName())).findFirst().orElse(null);
         }
-        if (p == null) {
-            combo.select(0);
-        } else {
-            choose(p);
-        }
+        worlds.choose(p);
     }
 
     /** Picks the world file {@code p} (null: the flat floor) as the user does in the picker (automation, tests). */
     void pick(Path p) {
-        if (p == null) {
-            combo.select(0);
-        } else {
-            choose(p);
-        }
-        combo.notifyListeners(SWT.Selection, new org.eclipse.swt.widgets.Event());
-    }
-
-    private void add(Path p) {
-        p = p.toAbsolutePath().normalize();
-        files.add(p);
-        combo.add(p.getFileName().toString());
+        worlds.choose(p);
+        worlds.control().notifyListeners(SWT.Selection, new org.eclipse.swt.widgets.Event());
     }
 
     private boolean browse() {
-        Path p = org.parpe.gui.panels.FileDialogs.ask(combo.getShell(), SWT.OPEN, UiMsg.WORLD_FILE_TITLE.text(), "*.xml", null, null);
+        Path p = worlds.browse(UiMsg.WORLD_FILE_TITLE.text());
         if (p == null) {
             return false;
         }
-        choose(p);
         prefs.put("view.worldFile", p.toString());
         return true;
     }
 
     /** Selects the world file {@code p}, adding it to the choices if needed (also for automation and tests). */
     void choose(Path p) {
-        p = p.toAbsolutePath().normalize();
-        int i = files.indexOf(p);
-        if (i < 0) {
-            files.add(p);
-            combo.add(p.getFileName().toString(), combo.getItemCount() - 1);
-            i = files.size() - 1;
-        }
-        combo.select(i + 1);
+        worlds.choose(p);
     }
 
     /** The chosen world file, or null for the flat floor. */
     Path file() {
-        int i = combo.getSelectionIndex() - 1;
-        return i >= 0 && i < files.size() ? files.get(i) : null;
+        return worlds.file();
     }
 
     /** The chosen world, read once per choice; null for the flat floor or after errors (logged). */

@@ -337,39 +337,21 @@ public final class ClassWindow {
         return worker != null;
     }
 
-    Button gradeButton() {
-        return grade;
+    /** The controls a test presses and reads, as a user would. */
+    Controls controls() {
+        return new Controls(grade, stop, progress, ranking, view, script, problem);
     }
 
-    Button stopButton() {
-        return stop;
-    }
-
-    RankingTable ranking() {
-        return ranking;
+    /** The window's controls (for tests). */
+    record Controls(Button grade, Button stop, ProgressBar progress, RankingTable ranking, View3D view,
+            StyledText script, Text problem) {
     }
 
     String message() {
         return message.getText();
     }
 
-    View3D view() {
-        return view;
-    }
-
-    StyledText script() {
-        return script;
-    }
-
-    Text problem() {
-        return problem;
-    }
-
     ReplayPlayer player() {
         return player;
-    }
-
-    ProgressBar progress() {
-        return progress;
     }
 }

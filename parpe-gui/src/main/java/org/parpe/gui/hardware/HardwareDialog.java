@@ -122,7 +122,7 @@ public final class HardwareDialog {
     private Combo portBox(Composite parent) {
         Combo c = new Combo(parent, SWT.DROP_DOWN);
         c.setLayoutData(width(170));
-        c.setText(ide.port());
+        c.setText(ide.portChoice().port());
         c.setToolTipText(UiMsg.HW_PORT_TIP.text());
         c.addListener(SWT.MouseDown, e -> listPorts());
         return c;
@@ -255,7 +255,7 @@ public final class HardwareDialog {
                 return;
             }
         }
-        ide.setPort(p);
+        ide.portChoice().setPort(p);
         setServos(List.of());
         show(proto == null || rate == null ? UiMsg.HW_SCANNING_PORT.text(p) : UiMsg.HW_CONNECTING_NOW.text(), false);
         session.connect(p, proto, rate, null);
@@ -316,7 +316,7 @@ public final class HardwareDialog {
      * profile, or null when there is no profile, it does not load, or it does not map the servo.
      */
     private ServoMapping profileLimits(int id, ServoModel model) {
-        String file = ide.hardwareProfile();
+        String file = ide.portChoice().hardwareProfile();
         if (file == null) {
             return null;
         }
@@ -357,7 +357,7 @@ public final class HardwareDialog {
                 return;
             }
         }
-        session.saveProfile(file, f -> ui(() -> ide.setHardwareProfile(f.toString())));
+        session.saveProfile(file, f -> ui(() -> ide.portChoice().setHardwareProfile(f.toString())));
     }
 
     private void show(String text, boolean error) {

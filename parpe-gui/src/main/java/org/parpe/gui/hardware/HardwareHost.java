@@ -13,13 +13,8 @@ import org.eclipse.swt.widgets.Shell;
 public interface HardwareHost {
     Shell shell();
 
-    String port();
-
-    void setPort(String port);
-
-    String hardwareProfile();
-
-    void setHardwareProfile(String file);
+    /** The tool bar's port and profile. */
+    PortChoice portChoice();
 
     /** What the status bar says while the dialog holds a bus; null when it holds none. */
     void setHardwareHeld(String state);

@@ -89,25 +89,25 @@ class ClassWindowGuiTest {
         window = ClassWindow.open(IdeAccess.shell(ide));
         window.load(challenge, students);
         assertEquals("", window.message(), "the challenge loads");
-        assertTrue(window.gradeButton().isEnabled());
-        window.gradeButton().notifyListeners(SWT.Selection, new Event());
-        assertTrue(window.running() && window.stopButton().isEnabled(), "grading runs off the UI thread");
+        assertTrue(window.controls().grade().isEnabled());
+        window.controls().grade().notifyListeners(SWT.Selection, new Event());
+        assertTrue(window.running() && window.controls().stop().isEnabled(), "grading runs off the UI thread");
         Gui.pump(() -> !window.running(), "the class to be graded", GRADING_MS);
-        assertEquals(4, window.progress().getSelection());
+        assertEquals(4, window.controls().progress().getSelection());
 
-        List<String> names = window.ranking().rows().stream().map(r -> r.student().name()).toList();
+        List<String> names = window.controls().ranking().rows().stream().map(r -> r.student().name()).toList();
         assertEquals(4, names.size(), window.message());
         assertEquals("dan.xml", names.get(3), "the script that does not load is last");
-        String[] dan = RankingTable.cells(window.ranking().rows().get(3));
+        String[] dan = RankingTable.cells(window.controls().ranking().rows().get(3));
         assertEquals("-", dan[0]);
         assertTrue(dan[8].matches("dan\\.xml:\\d+:\\d+: error: unknown section <automaton>.*"), dan[8]);
         for (int i = 0; i < 3; i++) {
-            String[] cells = RankingTable.cells(window.ranking().rows().get(i));
+            String[] cells = RankingTable.cells(window.controls().ranking().rows().get(i));
             assertEquals(Integer.toString(i + 1), cells[0], "ranks 1, 2, 3: " + Arrays.toString(cells));
             assertEquals(List.of(cells), texts(window, i), "the table shows the row's cells");
         }
-        double s1 = window.ranking().rows().get(0).outcome().score();
-        double s3 = window.ranking().rows().get(2).outcome().score();
+        double s1 = window.controls().ranking().rows().get(0).outcome().score();
+        double s3 = window.controls().ranking().rows().get(2).outcome().score();
         assertTrue(s1 >= s3, "ranked by score: " + s1 + " then " + s3);
         assertTrue(window.message().startsWith("4 students: 3 ranked, 1 with problems"), window.message());
         Path report = dir.resolve("class-3b-report");
@@ -115,16 +115,16 @@ class ClassWindowGuiTest {
 
         IdeAccess.shell(ide).setBounds(1400, 0, 200, 200); // not behind the picture where the window's trim would be
         window.shell().setBounds(0, 0, 1366, 768);
-        window.ranking().control().setSelection(0);
-        window.ranking().control().notifyListeners(SWT.Selection, new Event());
+        window.controls().ranking().control().setSelection(0);
+        window.controls().ranking().control().notifyListeners(SWT.Selection, new Event());
         assertNotNull(window.player(), "selecting a ranked student replays its run");
-        assertEquals(Files.readString(students.resolve(names.get(0))), window.script().getText(), "beside its script");
+        assertEquals(Files.readString(students.resolve(names.get(0))), window.controls().script().getText(), "beside its script");
         Gui.pump(() -> {
-            SimSnapshot s = window.view().lastSnapshot();
+            SimSnapshot s = window.controls().view().lastSnapshot();
             return s != null && s.time() >= 1.5;
         }, "1.5 s of the replay in the 3D view", 30_000);
-        assertTrue(window.view().frames() > 0);
-        assertTrue(window.view().hudText().startsWith("replay of ada.xml   t = "), window.view().hudText());
+        assertTrue(window.controls().view().frames() > 0);
+        assertTrue(window.controls().view().hudText().startsWith("replay of ada.xml   t = "), window.controls().view().hudText());
         assertTrue(window.message().startsWith("4 students: 3 ranked"), "the summary stays: " + window.message());
 
         Path images = Path.of(System.getProperty("parpe.ideImages", "../docs/images"));
@@ -136,9 +136,9 @@ class ClassWindowGuiTest {
         assertArrayEquals(new int[] {1366, 768}, new int[] {d.width, d.height});
         assertTrue(Screenshot.distinctColours(d, 64) >= 64, png + " looks blank");
 
-        window.ranking().control().setSelection(3);
-        window.ranking().control().notifyListeners(SWT.Selection, new Event());
-        assertTrue(window.problem().getText().contains("unknown section <automaton>"), window.problem().getText());
+        window.controls().ranking().control().setSelection(3);
+        window.controls().ranking().control().notifyListeners(SWT.Selection, new Event());
+        assertTrue(window.controls().problem().getText().contains("unknown section <automaton>"), window.controls().problem().getText());
     }
 
     @Test
@@ -155,20 +155,20 @@ class ClassWindowGuiTest {
         ide = Gui.openIde(Files.createTempDirectory("parpe-class-home"));
         window = ClassWindow.open(IdeAccess.shell(ide));
         window.load(challenge, students);
-        window.gradeButton().notifyListeners(SWT.Selection, new Event());
+        window.controls().grade().notifyListeners(SWT.Selection, new Event());
         Gui.pump(() -> ProcessHandle.current().children().findAny().isPresent(), "a student's run to start", 60_000);
-        assertTrue(window.stopButton().isEnabled());
-        window.stopButton().notifyListeners(SWT.Selection, new Event());
+        assertTrue(window.controls().stop().isEnabled());
+        window.controls().stop().notifyListeners(SWT.Selection, new Event());
         Gui.pump(() -> !window.running(), "the grading to stop", 60_000);
         assertEquals("grading stopped", window.message());
         Gui.pump(() -> ProcessHandle.current().children().findAny().isEmpty(), "no run left", 30_000);
-        assertTrue(window.gradeButton().isEnabled(), "the class can be graded again");
+        assertTrue(window.controls().grade().isEnabled(), "the class can be graded again");
     }
 
     private static List<String> texts(ClassWindow w, int row) {
         String[] t = new String[RankingTable.titles().length];
         for (int k = 0; k < t.length; k++) {
-            t[k] = w.ranking().control().getItem(row).getText(k);
+            t[k] = w.controls().ranking().control().getItem(row).getText(k);
         }
         return List.of(t);
     }

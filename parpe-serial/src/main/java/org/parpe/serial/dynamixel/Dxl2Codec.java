@@ -134,29 +134,15 @@ public final class Dxl2Codec implements PacketCodec {
     private static final String[] PACKET_ERRORS = {"result fail", "instruction error", "CRC error",
         "data range error", "data length error", "data limit error", "access error"};
 
-    @Override
-    public String family() {
-        return "Dynamixel";
-    }
+    /**
+     * 2-byte addresses, a Ping reply of model number and firmware (3 parameters), status packets
+     * marked by their instruction field, a broadcast Ping, error numbers and a Bus Watchdog.
+     */
+    private static final Traits TRAITS = new Traits("Dynamixel", 2, 3, true, true, true, true);
 
     @Override
-    public int addressBytes() {
-        return 2;
-    }
-
-    @Override
-    public int pingReplyParams() {
-        return 3;
-    }
-
-    @Override
-    public boolean marksStatus() {
-        return true;
-    }
-
-    @Override
-    public boolean broadcastPing() {
-        return true;
+    public Traits traits() {
+        return TRAITS;
     }
 
     /** Every instruction of {@link PacketCodec}. */
@@ -169,11 +155,6 @@ public final class Dxl2Codec implements PacketCodec {
         };
     }
 
-    @Override
-    public boolean errorNumbers() {
-        return true;
-    }
-
     /** The alert bit when the servo has a hardware error, and the error number. */
     @Override
     public int statusByte(int hardwareError, int errorNumber) {
@@ -183,11 +164,6 @@ public final class Dxl2Codec implements PacketCodec {
     @Override
     public boolean answers(int level, boolean read) {
         return level >= 2 || read && level >= 1;
-    }
-
-    @Override
-    public boolean busWatchdog() {
-        return true;
     }
 
     /** Only with the alert bit: the error number in the low bits is about the packet. */

@@ -63,29 +63,15 @@ public final class FeetechCodec implements PacketCodec {
         return p.code;
     }
 
-    @Override
-    public String family() {
-        return "Feetech";
-    }
+    /**
+     * 1-byte addresses, a Ping reply without parameters, status packets not marked, one Ping per
+     * servo, no error numbers and no watchdog.
+     */
+    private static final Traits TRAITS = new Traits("Feetech", 1, 0, false, false, false, false);
 
     @Override
-    public int addressBytes() {
-        return 1;
-    }
-
-    @Override
-    public int pingReplyParams() {
-        return 0;
-    }
-
-    @Override
-    public boolean marksStatus() {
-        return false;
-    }
-
-    @Override
-    public boolean broadcastPing() {
-        return false;
+    public Traits traits() {
+        return TRAITS;
     }
 
     /** The instructions of Feetech's protocol manual: none of Dynamixel 2.0's additions. */
@@ -97,11 +83,6 @@ public final class FeetechCodec implements PacketCodec {
         };
     }
 
-    @Override
-    public boolean errorNumbers() {
-        return false;
-    }
-
     /** The servo's status bits; there are no error numbers. */
     @Override
     public int statusByte(int hardwareError, int errorNumber) {
@@ -111,11 +92,6 @@ public final class FeetechCodec implements PacketCodec {
     @Override
     public boolean answers(int level, boolean read) {
         return read || level >= 1;
-    }
-
-    @Override
-    public boolean busWatchdog() {
-        return false;
     }
 
     /** Every bit of the status byte is a fault of the servo. */

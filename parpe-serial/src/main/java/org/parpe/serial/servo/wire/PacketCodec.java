@@ -59,31 +59,57 @@ public interface PacketCodec {
     // What tells the families apart: each codec answers for its family, so that the host
     // driver and the emulator never compare protocols.
 
-    /** The family in messages: {@code Dynamixel}, {@code Feetech}. */
-    String family();
-
-    /** Bytes of a control-table address, and of a length, in instruction parameters. */
-    int addressBytes();
-
     /**
-     * Parameters of a reply to Ping: the model number (2 bytes) and firmware version on
-     * Dynamixel 2.0 (e-Manual, Protocol 2.0, Ping: Parameters 1–3); none on Feetech, whose
-     * model is read from the control table.
+     * The facts of a family that are one value each.
+     *
+     * @param family in messages: {@code Dynamixel}, {@code Feetech}
+     * @param addressBytes bytes of a control-table address, and of a length, in instruction parameters
+     * @param pingReplyParams parameters of a reply to Ping: the model number (2 bytes) and firmware
+     *     version on Dynamixel 2.0 (e-Manual, Protocol 2.0, Ping: Parameters 1–3); none on Feetech,
+     *     whose model is read from the control table
+     * @param marksStatus whether a status packet is told from an instruction by its instruction
+     *     field ({@link #STATUS}, Dynamixel 2.0): the host then ignores other packets it hears (its
+     *     own, echoed by a half-duplex adapter); on Feetech that field is the status packet's error byte
+     * @param broadcastPing whether the servos answer a broadcast Ping one after another in ID order,
+     *     so that a scan asks them all at once (Dynamixel 2.0); Feetech servos are pinged one by one
+     * @param errorNumbers whether the error byte of a status packet numbers what was wrong with the
+     *     instruction (Dynamixel 2.0: instruction, data range, access error …), so that a servo
+     *     refuses a bad write with an error; Feetech servos ignore a write to a read-only address
+     *     and keep a goal inside their limits instead
+     * @param busWatchdog whether the servos stop on their own when the host falls silent (Dynamixel
+     *     Bus Watchdog, e-Manual, X series, Bus Watchdog(98)); Feetech servos hold their last goal
      */
-    int pingReplyParams();
+    record Traits(String family, int addressBytes, int pingReplyParams, boolean marksStatus,
+            boolean broadcastPing, boolean errorNumbers, boolean busWatchdog) {
+    }
 
-    /**
-     * Whether a status packet is told from an instruction by its instruction field
-     * ({@link #STATUS}, Dynamixel 2.0): the host then ignores other packets it hears (its own,
-     * echoed by a half-duplex adapter). On Feetech that field is the status packet's error byte.
-     */
-    boolean marksStatus();
+    /** This codec's family facts. */
+    Traits traits();
 
-    /**
-     * Whether the servos answer a broadcast Ping one after another in ID order, so that a scan
-     * asks them all at once (Dynamixel 2.0); Feetech servos are pinged one by one.
-     */
-    boolean broadcastPing();
+    /** {@link Traits#family}. */
+    default String family() {
+        return traits().family();
+    }
+
+    /** {@link Traits#addressBytes}. */
+    default int addressBytes() {
+        return traits().addressBytes();
+    }
+
+    /** {@link Traits#pingReplyParams}. */
+    default int pingReplyParams() {
+        return traits().pingReplyParams();
+    }
+
+    /** {@link Traits#marksStatus}. */
+    default boolean marksStatus() {
+        return traits().marksStatus();
+    }
+
+    /** {@link Traits#broadcastPing}. */
+    default boolean broadcastPing() {
+        return traits().broadcastPing();
+    }
 
     /**
      * Whether the family's servos carry out {@code instruction}, one of the codes above: Reboot,
@@ -92,13 +118,10 @@ public interface PacketCodec {
      */
     boolean knows(int instruction);
 
-    /**
-     * Whether the error byte of a status packet numbers what was wrong with the instruction
-     * (Dynamixel 2.0: instruction, data range, access error …), so that a servo refuses a bad
-     * write with an error; Feetech servos ignore a write to a read-only address and keep a goal
-     * inside their limits instead.
-     */
-    boolean errorNumbers();
+    /** {@link Traits#errorNumbers}. */
+    default boolean errorNumbers() {
+        return traits().errorNumbers();
+    }
 
     /** The error byte of a status packet from a servo with these hardware error bits and error number. */
     int statusByte(int hardwareError, int errorNumber);
@@ -111,11 +134,10 @@ public interface PacketCodec {
      */
     boolean answers(int level, boolean read);
 
-    /**
-     * Whether the servos stop on their own when the host falls silent (Dynamixel Bus Watchdog,
-     * e-Manual, X series, Bus Watchdog(98)); Feetech servos hold their last goal.
-     */
-    boolean busWatchdog();
+    /** {@link Traits#busWatchdog}. */
+    default boolean busWatchdog() {
+        return traits().busWatchdog();
+    }
 
     /**
      * Whether a non-zero status error byte reports a fault of the servo: on Dynamixel 2.0 only
