@@ -62,7 +62,8 @@ public final class IdeWindow {
     private final RunActions runs;
     private final RunToolBar toolbar;
     private final AlarmBanner alarm;
-    private final SashForm mainSash;
+    /** The outline | editor | 3D view split (read by the tests). */
+    final SashForm mainSash;
     private final OutlineView outline;
     private final TutorialDock tutorialDock;
     private ParslEditor editor;
@@ -78,7 +79,8 @@ public final class IdeWindow {
     private final ScriptDocument document;
     private final DiagramPane diagram;
     private final RobotTab robotTab;
-    private final MenuBar menus;
+    /** The menu bar's actions (the tests open its dialogs). */
+    final MenuBar menus;
     private final PosePanel pose;
     private boolean wasRunning;
 
@@ -477,19 +479,9 @@ public final class IdeWindow {
         return tutorialDock;
     }
 
-    /** The outline | editor | 3D view split (tests). */
-    SashForm mainSash() {
-        return mainSash;
-    }
-
     /** The red banner under the tool bar while the robot does not answer (tests). */
     AlarmBanner alarm() {
         return alarm;
-    }
-
-    /** The menu bar's actions (tests). */
-    MenuBar menus() {
-        return menus;
     }
 
     /** The Run log's text. */

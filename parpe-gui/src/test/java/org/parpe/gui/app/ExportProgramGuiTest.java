@@ -28,7 +28,7 @@ class ExportProgramGuiTest {
     }
 
     private ExportProgramDialog exportLesson(Path out, List<String> asked, int answer) {
-        ExportProgramDialog d = ide.menus().openExportProgram();
+        ExportProgramDialog d = ide.menus.openExportProgram();
         d.setTarget("arduino");
         d.setServo("pwm");
         d.setFolder(out);

@@ -35,7 +35,7 @@ class ExportRobotGuiTest {
         Gui.open(ide, Gui.example("tutorial/03-hello-snake.xml"));
         Gui.pump(() -> ide.program() != null, "the lesson to load");
         Path out = Files.createTempDirectory("parpe-export").resolve("mjcf");
-        ExportRobotDialog d = ide.menus().openExportRobot();
+        ExportRobotDialog d = ide.menus.openExportRobot();
         assertEquals("auto", d.robot().robot(), "the dialog starts on the script's robot choice");
         d.setTarget("mjcf");
         d.setFolder(out);
@@ -68,7 +68,7 @@ class ExportRobotGuiTest {
         Gui.pump(() -> ide.program() != null, "the lesson to load");
         Path out = Files.createTempDirectory("parpe-export");
         Path mine = Files.writeString(out.resolve("snake.xml"), "<mujoco model=\"edited by hand\"/>");
-        ExportRobotDialog d = ide.menus().openExportRobot();
+        ExportRobotDialog d = ide.menus.openExportRobot();
         d.setTarget("mjcf");
         d.setFolder(out);
         List<String> asked = new ArrayList<>();
@@ -100,7 +100,7 @@ class ExportRobotGuiTest {
         Gui.pump(() -> ide.program() != null, "the lesson to load");
         Path parent = Files.createTempDirectory("parpe-export");
         Path file = Files.writeString(parent.resolve("notes.txt"), "mine");
-        ExportRobotDialog d = ide.menus().openExportRobot();
+        ExportRobotDialog d = ide.menus.openExportRobot();
         d.setFolder(file);
         d.export();
         Gui.pump(() -> !d.busy(), "the export");

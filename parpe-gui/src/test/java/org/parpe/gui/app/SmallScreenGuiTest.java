@@ -115,10 +115,10 @@ class SmallScreenGuiTest {
         ide = Gui.openIde(Files.createTempDirectory("parpe-panes"));
         ide.shell().setBounds(0, 0, 1366, 768);
         Gui.settle();
-        ide.mainSash().setWeights(1, 98, 1);
-        Gui.pump(() -> ide.mainSash().getChildren()[0].getSize().x >= 115, "the outline to grow back to its minimum");
+        ide.mainSash.setWeights(1, 98, 1);
+        Gui.pump(() -> ide.mainSash.getChildren()[0].getSize().x >= 115, "the outline to grow back to its minimum");
         Gui.settle();
-        Control[] panes = Arrays.stream(ide.mainSash().getChildren()).filter(c -> !(c instanceof org.eclipse.swt.widgets.Sash))
+        Control[] panes = Arrays.stream(ide.mainSash.getChildren()).filter(c -> !(c instanceof org.eclipse.swt.widgets.Sash))
                 .toArray(Control[]::new);
         assertTrue(panes[0].getSize().x >= 115, "outline " + panes[0].getSize());
         assertTrue(panes[2].getSize().x >= 295, "3D view " + panes[2].getSize());

@@ -164,7 +164,7 @@ class TutorialGuiTest {
                 "    </structure>", "  </robot>", "  <automata>", "    <wave states=\"up, down\" />", "  </automata>", "</program>", "");
         ide.editor().setText(script);
         ide.editor().widget().setCaretOffset(script.indexOf("states=\"up"));
-        TutorialWindow w = ide.menus().openTutorial();
+        TutorialWindow w = ide.menus.openTutorial();
         try {
             w.show(java.util.Arrays.asList(w.titles()).indexOf(java.util.Arrays.stream(w.titles())
                     .filter(t -> t.startsWith("Lesson 3")).findFirst().orElseThrow()));
