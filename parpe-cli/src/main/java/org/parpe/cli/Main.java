@@ -8,13 +8,14 @@ import java.util.Locale;
 import java.util.function.UnaryOperator;
 import org.parpe.cli.bench.BenchCommand;
 import org.parpe.cli.text.CliMsg;
+import org.parpe.cli.text.CommandLanguage;
+import org.parpe.cli.text.ParseErrors;
 import org.parpe.cli.options.ReadsInput;
 import org.parpe.cli.options.UsageException;
 import org.parpe.cli.terminal.ExitCode;
 import org.parpe.core.expr.Names;
 import org.parpe.core.io.CrashReport;
 import org.parpe.core.text.Lang;
-import org.parpe.core.text.Message;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -115,7 +116,7 @@ public final class Main implements Runnable {
         Locale before = Lang.current();
         try {
             Lang.use(Lang.fromEnvironment(env));
-            String code = langOption(args);
+            String code = CommandLanguage.langOption(args);
             if (code != null) {
                 Locale chosen = Lang.parse(code);
                 if (chosen == null) {
@@ -130,19 +131,6 @@ public final class Main implements Runnable {
         }
     }
 
-    /** The value of {@code --lang CODE} or {@code --lang=CODE} before any {@code --}; null without one. */
-    static String langOption(String[] args) {
-        for (int i = 0; i < args.length && !args[i].equals("--"); i++) {
-            if (args[i].equals("--lang")) {
-                return i + 1 < args.length ? args[i + 1] : "";
-            }
-            if (args[i].startsWith("--lang=")) {
-                return args[i].substring("--lang=".length());
-            }
-        }
-        return null;
-    }
-
     private static int executeIn(String[] args, InputStream in, PrintStream out, PrintStream err) {
         CommandLine cl = new CommandLine(new Main());
         for (CommandLine sub : cl.getSubcommands().values()) {
@@ -150,11 +138,8 @@ public final class Main implements Runnable {
                 reader.readFrom(in);
             }
         }
-        // picocli's help is written in the annotations (English) and translated by Help_*.properties;
-        // the pseudo-language has no file of its own there, so its help is the English one
-        if (!Lang.current().equals(Locale.ENGLISH) && !Lang.isPseudo(Lang.current())) {
-            cl.setResourceBundle(Message.bundle(HELP, Lang.current()));
-        }
+        // picocli's help is written in the annotations (English) and translated by Help_*.properties
+        CommandLanguage.helpIn(cl, HELP);
         cl.setOut(new PrintWriter(out, true, terminal));
         cl.setErr(new PrintWriter(err, true, terminal));
         cl.setExecutionExceptionHandler(Main::failed);

@@ -19,7 +19,8 @@ import com.tngtech.archunit.lang.SimpleConditionEvent;
  * The module layering of STYLE.md ("One direction of dependencies"), over every module this one
  * sees: {@code parpe-cli} → {@code parpe-sim}, {@code parpe-serial} → {@code parpe-core}, the
  * simulator and the serial bus independent of each other, and each library kept to its module.
- * (The IDE sits beside the CLI; Maven's module graph keeps the two apart.)
+ * (The IDE is not on this module's class path: it uses the CLI's {@code cli.text} only, for its
+ * options' help and errors, and Maven's module graph keeps the CLI from using the IDE.)
  */
 @AnalyzeClasses(packages = "org.parpe", importOptions = ImportOption.DoNotIncludeTests.class)
 class ModuleLayersTest {

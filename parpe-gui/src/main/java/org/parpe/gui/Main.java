@@ -5,6 +5,7 @@ import org.parpe.gui.automation.LaunchOptions;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Locale;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.SWTError;
 import org.eclipse.swt.widgets.Display;
@@ -37,26 +38,29 @@ public final class Main {
             list = list.subList(1, list.size());
         }
         Prefs prefs = new Prefs(Prefs.defaultHome());
-        // the language of the preference or the environment for the options' own messages, until --lang is read
-        org.parpe.core.text.Lang.use(IdeLanguage.choose(null, prefs.get(IdeLanguage.PREFERENCE, null), System::getenv));
+        // the language first, as the command line's: the options' own errors and help are told in it
+        Locale language;
+        try {
+            language = IdeLanguage.choose(LaunchOptions.langOption(list), prefs.get(IdeLanguage.PREFERENCE, null),
+                    System::getenv);
+        } catch (IllegalArgumentException e) {
+            System.err.println("parpe gui: error: " + e.getMessage());
+            return 2;
+        }
+        org.parpe.core.text.Lang.use(language);
         LaunchOptions options;
         try {
             options = LaunchOptions.parse(list);
         } catch (IllegalArgumentException e) {
             System.err.println("parpe gui: error: " + e.getMessage());
-            System.err.println(LaunchOptions.USAGE);
-            return 2;
-        }
-        try {
-            IdeLanguage.use(IdeLanguage.choose(options.lang(), prefs.get(IdeLanguage.PREFERENCE, null), System::getenv));
-        } catch (IllegalArgumentException e) {
-            System.err.println("parpe gui: error: " + e.getMessage());
+            System.err.println(LaunchOptions.usage());
             return 2;
         }
         if (options.help()) {
-            System.out.println(LaunchOptions.USAGE);
+            System.out.println(LaunchOptions.usage());
             return 0;
         }
+        IdeLanguage.use(language);
         if (options.file() != null) {
             try {
                 // the command line's rule for an input file: the same words for a folder, a FIFO, a missing file

@@ -18,9 +18,12 @@ import java.util.List;
  * sees. A view that changes a script's text hands the editor the one replacement record, and
  * nothing finds places in script text with regular expressions but the XML reader and the
  * editor's forgiving scanner (which keeps completion working while the script is not
- * well-formed); the rest finds them by the loader's source spans.
+ * well-formed); the rest finds them by the loader's source spans. The command line, on the IDE's
+ * class path for its picocli texts ({@code cli.text}), is left out as before: its rules are its
+ * own ({@code ModuleLayersTest}), and its plotting library is not on this class path.
  */
-@AnalyzeClasses(packages = "org.parpe", importOptions = ImportOption.DoNotIncludeTests.class)
+@AnalyzeClasses(packages = {"org.parpe.core", "org.parpe.sim", "org.parpe.serial", "org.parpe.gui"},
+        importOptions = ImportOption.DoNotIncludeTests.class)
 class EditLayerTest {
     /** A record of an offset, a length or end, and the text that replaces them: a replacement. */
     private static final DescribedPredicate<JavaClass> REPLACEMENT_SHAPED = DescribedPredicate.describe(

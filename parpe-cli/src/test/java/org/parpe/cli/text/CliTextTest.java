@@ -130,7 +130,7 @@ class CliTextTest {
                     "a comment written into the hardware profile (a file, read by anyone who edits it)"),
             new NotProse("hw/CalibrateCommand\\.java", "calibrated by parpe calibrate",
                     "a comment written into the hardware profile"),
-            new NotProse("ParseErrors\\.java", ".*\\((\\.\\*|\\[\\^'\\]\\+|int\\||\\?:).*",
+            new NotProse("text/ParseErrors\\.java", ".*\\((\\.\\*|\\[\\^'\\]\\+|int\\||\\?:).*",
                     "a pattern of picocli's own English message, which ParseErrors reads to say it in the user's language"),
             new NotProse("hw/RecordCommand\\.java", "recorded from ", "a comment written into the recorded PARSL file"),
             new NotProse("export/RobotExport\\.java|Ide\\.java", " --out trace\\.csv| \\./parpe gui ",

@@ -39,7 +39,7 @@ class LaunchOptionsTest {
         assertTrue(LaunchOptions.parse(List.of("-h")).help());
         for (String option : List.of("FILE", "--run-for", "--screenshot", "--exit", "--pose-panel", "--grid", "--bench",
                 "--help")) {
-            assertTrue(LaunchOptions.USAGE.contains(option), option + " in\n" + LaunchOptions.USAGE);
+            assertTrue(LaunchOptions.usage().contains(option), option + " in\n" + LaunchOptions.usage());
         }
     }
 

@@ -21,6 +21,6 @@ class GridOptionTest {
         assertTrue(LaunchOptions.parse(List.of("--grid", "t")).automated(), "--grid alone is automated too");
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> LaunchOptions.parse(List.of("a.xml", "--grid")));
         assertEquals("Missing required parameter for option '--grid' (NAME)", e.getMessage());
-        assertTrue(LaunchOptions.USAGE.contains("--grid=NAME"), LaunchOptions.USAGE);
+        assertTrue(LaunchOptions.usage().contains("--grid=NAME"), LaunchOptions.usage());
     }
 }

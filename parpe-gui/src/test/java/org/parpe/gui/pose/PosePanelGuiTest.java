@@ -397,7 +397,7 @@ class PosePanelGuiTest {
         Path shot = Path.of(System.getProperty("parpe.artefacts", "target/gui-test-artefacts"), "pose-panel-option.png");
         Files.createDirectories(shot.getParent());
         Files.deleteIfExists(shot);
-        org.parpe.gui.automation.Automation.start(ide.automated(), new org.parpe.gui.automation.LaunchOptions(example, -1, shot, false, false, true, null, false, null));
+        org.parpe.gui.automation.Automation.start(ide.automated(), new org.parpe.gui.automation.LaunchOptions(example, -1, shot, false, false, true, null, false));
         IdeAccess.pump(() -> Files.exists(shot), "the --pose-panel screenshot");
         assertEquals("front", panel.poses().group());
         // The earlier tests' poses of front stay; the recording's four are added after them and selected.

@@ -15,6 +15,6 @@ class PosePanelOptionTest {
         assertTrue(o.posePanel());
         assertTrue(o.automated());
         assertFalse(LaunchOptions.parse(List.of("leg.xml")).posePanel());
-        assertTrue(LaunchOptions.USAGE.contains("--pose-panel"));
+        assertTrue(LaunchOptions.usage().contains("--pose-panel"));
     }
 }

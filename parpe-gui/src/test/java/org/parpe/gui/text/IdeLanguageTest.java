@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -50,8 +51,9 @@ class IdeLanguageTest {
 
     @Test
     void parpeGuiTakesLang() {
-        assertEquals("de", LaunchOptions.parse(List.of("x.xml", "--lang", "de")).lang());
-        assertEquals("ja", LaunchOptions.parse(List.of("--lang=ja")).lang());
-        assertTrue(LaunchOptions.USAGE.contains("--lang=CODE"), LaunchOptions.USAGE);
+        assertEquals(Path.of("x.xml"), LaunchOptions.parse(List.of("x.xml", "--lang", "de")).file());
+        assertEquals("de", LaunchOptions.langOption(List.of("x.xml", "--lang", "de")));
+        assertEquals("ja", LaunchOptions.langOption(List.of("--lang=ja")));
+        assertTrue(LaunchOptions.usage().contains("--lang=CODE"), LaunchOptions.usage());
     }
 }

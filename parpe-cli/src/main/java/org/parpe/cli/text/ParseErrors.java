@@ -1,4 +1,4 @@
-package org.parpe.cli;
+package org.parpe.cli.text;
 
 import java.io.PrintStream;
 import java.util.ArrayList;
@@ -6,7 +6,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import org.parpe.cli.text.CliMsg;
 import org.parpe.core.text.Message;
 import picocli.CommandLine.MissingParameterException;
 import picocli.CommandLine.Model.ArgSpec;
@@ -25,9 +24,10 @@ import picocli.CommandLine.UnmatchedArgumentException;
  * with {@link CliMsg} keys whose English texts are picocli 4.7's wording. A message whose English
  * rebuild is not picocli's own text word for word (a wording this class does not know, e.g. after
  * a picocli upgrade) is shown as picocli wrote it, in English, rather than wrongly; so {@code --lang
- * en} prints exactly what picocli prints.
+ * en} prints exactly what picocli prints. Used by every picocli command line of PARPE: {@code parpe}
+ * and the IDE's own, {@code parpe gui}.
  */
-final class ParseErrors {
+public final class ParseErrors {
     private static final Pattern INDEX = Pattern.compile("^Unmatched arguments? (?:at|from) index (\\d+): ");
     private static final Pattern MISSING_FOR = Pattern.compile("Missing required parameter for (.*)");
     private static final Pattern FOUND = Pattern.compile("Expected parameter for .* but found '(.*)'");
@@ -40,7 +40,7 @@ final class ParseErrors {
     }
 
     /** The error in the chosen language; picocli's English text where its wording is not known here. */
-    static Message of(ParameterException ex) {
+    public static Message of(ParameterException ex) {
         Message m = rebuilt(ex);
         return m != null && m.format(Locale.ENGLISH).equals(ex.getMessage()) ? m : Message.verbatim(ex.getMessage());
     }
@@ -49,7 +49,7 @@ final class ParseErrors {
      * picocli's suggestions for an unknown option ({@code Possible solutions: --lang, --list}) in
      * the chosen language, or picocli's own line for other suggestions; nothing without any.
      */
-    static void printSuggestions(ParameterException ex, PrintStream err) {
+    public static void printSuggestions(ParameterException ex, PrintStream err) {
         if (ex instanceof UnmatchedArgumentException u && u.isUnknownOption() && !u.getSuggestions().isEmpty()) {
             err.println(CliMsg.PICOCLI_POSSIBLE_SOLUTIONS.text(String.join(", ", u.getSuggestions())));
         } else {
