@@ -30,7 +30,7 @@ final class AutomationBridge implements BenchHost {
 
     @Override
     public Display display() {
-        return ide.shell().getDisplay();
+        return ide.shell.getDisplay();
     }
 
     @Override
@@ -45,7 +45,7 @@ final class AutomationBridge implements BenchHost {
 
     @Override
     public String fileName() {
-        return ide.files().name();
+        return ide.files.name();
     }
 
     @Override
@@ -60,31 +60,31 @@ final class AutomationBridge implements BenchHost {
 
     @Override
     public String statusMessage() {
-        return ide.status().message();
+        return ide.status.message();
     }
 
     @Override
     public boolean showScriptPoses() {
-        ide.bottom().showPose();
-        ide.pose().pollNow();
-        return ide.pose().loadFromScript();
+        ide.bottom.showPose();
+        ide.pose.pollNow();
+        return ide.pose.loadFromScript();
     }
 
     @Override
     public boolean posingReady() {
-        return ide.pose().posingReady();
+        return ide.pose.posingReady();
     }
 
     @Override
     public void focusOnPosedModules() {
-        if (ide.view().focus(ide.pose().posedModules())) {
-            ide.viewBar().trackRobot(false);
+        if (ide.view.focus(ide.pose.posedModules())) {
+            ide.viewBar.trackRobot(false);
         }
     }
 
     @Override
     public boolean selectGaitTable(String name) {
-        GridPane grid = ide.grid();
+        GridPane grid = ide.grid;
         if (!grid.showTable(name)) {
             return false;
         }
@@ -94,79 +94,79 @@ final class AutomationBridge implements BenchHost {
 
     @Override
     public String gaitTableShown() {
-        return ide.grid().table() == null ? null : ide.grid().table().name();
+        return ide.grid.table() == null ? null : ide.grid.table().name();
     }
 
     @Override
     public void runInSimulator(Speed speed, double seconds, Consumer<RunOutcome> onEnd) {
-        ide.toolbar().setTarget(RunOn.SIMULATOR);
-        ide.toolbar().setSpeed(speed);
-        ide.runs().run(false, seconds, onEnd);
+        ide.toolbar.setTarget(RunOn.SIMULATOR);
+        ide.toolbar.setSpeed(speed);
+        ide.runs.run(false, seconds, onEnd);
     }
 
     @Override
     public boolean running() {
-        return ide.runs().running();
+        return ide.runs.running();
     }
 
     @Override
     public void stop() {
-        ide.runs().stop();
+        ide.runs.stop();
     }
 
     @Override
     public void screenshot(Path file) throws IOException {
-        Screenshot.save(ide.shell(), file);
+        Screenshot.save(ide.shell, file);
     }
 
     @Override
     public List<String> menuTitles() {
-        return Arrays.stream(ide.shell().getMenuBar().getItems()).map(MenuItem::getText).toList();
+        return Arrays.stream(ide.shell.getMenuBar().getItems()).map(MenuItem::getText).toList();
     }
 
     @Override
     public void close() {
-        ide.files().autosaveNow();
-        ide.shell().dispose();
+        ide.files.autosaveNow();
+        ide.shell.dispose();
     }
 
     @Override
     public void open(Path file) {
-        ide.files().openPath(file);
+        ide.files.openPath(file);
     }
 
     @Override
     public boolean reading() {
-        return ide.files().reading();
+        return ide.files.reading();
     }
 
     @Override
     public void fillScreen() {
-        ide.shell().setBounds(display().getPrimaryMonitor().getClientArea());
+        ide.shell.setBounds(display().getPrimaryMonitor().getClientArea());
     }
 
     @Override
     public View3D view() {
-        return ide.view();
+        return ide.view;
     }
 
     @Override
     public DiagramPane diagram() {
-        return ide.diagram();
+        return ide.diagram;
     }
 
     @Override
     public RobotTab robotTab() {
-        return ide.robotTab();
+        return ide.robotTab;
     }
 
     @Override
     public void observeRuns(JointSink sink) {
-        ide.runs().controller().observeRuns(sink);
+        ide.runs.controller().observeRuns(sink);
     }
 
     @Override
     public LiveStates live() {
-        return ide.runs().controller().live();
+        return ide.runs.controller().live();
     }
 }

@@ -40,9 +40,9 @@ final class CheckResults {
     /** Another file is in the editor: nothing of the previous one's program is kept. */
     void forget() {
         program = null;
-        ide.grid().setProgram(null);
-        ide.outline().show(null);
-        ide.controls().show(null);
+        ide.grid.setProgram(null);
+        ide.outline.show(null);
+        ide.controls.show(null);
         ide.problems().setLoadDiagnostics(List.of());
         ide.problems().clearRunDiagnostics();
     }
@@ -50,8 +50,8 @@ final class CheckResults {
     /** Shows a load result: markers, Problems, outline, controls, plots and the robot preview. */
     void show(LoadResult r) {
         validations++;
-        if (ide.robotTab().documentChecked(r.program())) { // a robot configuration: its own problems
-            ide.problems().setLoadDiagnostics(ide.robotTab().problems());
+        if (ide.robotTab.documentChecked(r.program())) { // a robot configuration: its own problems
+            ide.problems().setLoadDiagnostics(ide.robotTab.problems());
             showProblemCounts("");
             return;
         }
@@ -60,25 +60,25 @@ final class CheckResults {
             return;
         }
         ide.problems().setLoadDiagnostics(r.diagnostics());
-        RunActions runs = ide.runs();
+        RunActions runs = ide.runs;
         if (r.program() != null) {
             program = r.program();
-            ide.grid().setProgram(program);
-            ide.outline().show(program);
+            ide.grid.setProgram(program);
+            ide.outline.show(program);
             if (!runs.running()) {
-                ide.controls().show(program);
+                ide.controls.show(program);
             }
-            ide.plots().setModules(program.moduleIds());
+            ide.plots.setModules(program.moduleIds());
             runs.updatePreview(program);
         }
         if (!runs.running()) {
-            showProblemCounts(ide.editor().plain() ? UiMsg.NO_COLOURING.text(ParslEditor.COLOUR_LIMIT / 1_000_000) : "");
+            showProblemCounts(ide.editor.plain() ? UiMsg.NO_COLOURING.text(ParslEditor.COLOUR_LIMIT / 1_000_000) : "");
         }
     }
 
     /** Whether the editor holds no script yet (nothing, white space, or a declaration and comments): the Diagram's "Start a robot". */
     boolean emptyScript() {
-        return SectionEdits.blank(ide.editor().document().get());
+        return SectionEdits.blank(ide.editor.document().get());
     }
 
     /**
@@ -88,13 +88,13 @@ final class CheckResults {
     private void showEmpty() {
         ide.problems().setLoadDiagnostics(List.of());
         program = null;
-        ide.grid().setProgram(null);
-        ide.outline().show(null);
-        if (!ide.runs().running()) {
-            ide.controls().show(null);
-            ide.runs().forgetPreview();
-            ide.view().clear();
-            ide.status().setMessage(empty());
+        ide.grid.setProgram(null);
+        ide.outline.show(null);
+        if (!ide.runs.running()) {
+            ide.controls.show(null);
+            ide.runs.forgetPreview();
+            ide.view.clear();
+            ide.status.setMessage(empty());
         }
     }
 
@@ -122,21 +122,21 @@ final class CheckResults {
     /** Says {@link #problemCounts()} in the status bar, then {@code more}; {@link #problemsChanged} renews it. */
     private void showProblemCounts(String more) {
         shownCounts = problemCounts() + more;
-        ide.status().setMessage(shownCounts);
+        ide.status.setMessage(shownCounts);
     }
 
     /** The Problems view changed: mark this file's problems in the editor and the gait table. */
     void problemsChanged() {
-        if (ide.status().message().equals(shownCounts)) {
+        if (ide.status.message().equals(shownCounts)) {
             showProblemCounts("");
         }
         ProblemsView problems = ide.problems();
-        ide.status().setProblems(problems.errorCount(), problems.shown().size() - problems.errorCount());
-        Path mine = ide.files().pathForLoading().toAbsolutePath().normalize();
+        ide.status.setProblems(problems.errorCount(), problems.shown().size() - problems.errorCount());
+        Path mine = ide.files.pathForLoading().toAbsolutePath().normalize();
         List<Diagnostic> mineOnly = problems.shown().stream().filter(d -> sameFile(d.pos(), mine))
                 .limit(ParslEditor.MARKER_LIMIT).toList();
-        ide.editor().setDiagnostics(mineOnly);
-        ide.grid().setDiagnostics(mineOnly);
+        ide.editor.setDiagnostics(mineOnly);
+        ide.grid.setDiagnostics(mineOnly);
     }
 
     /** Whether {@code p} is in the file {@code mine}. */

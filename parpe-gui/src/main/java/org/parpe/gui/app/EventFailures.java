@@ -25,7 +25,7 @@ final class EventFailures {
         // asyncExec hands on a runnable's Error wrapped in an SWTException
         if (e instanceof Error || e instanceof SWTException s && s.throwable instanceof Error) {
             try {
-                ide.runs().emergencyStop();
+                ide.runs.emergencyStop();
             } catch (RuntimeException | Error stopFailed) {
                 e.addSuppressed(stopFailed);
             }
@@ -38,8 +38,8 @@ final class EventFailures {
         }
         try {
             String message = UiMsg.INTERNAL_ERROR_UI.text(e, lastCrashFile);
-            ide.bottom().log(message);
-            ide.status().setMessage(message);
+            ide.bottom.log(message);
+            ide.status.setMessage(message);
         } catch (RuntimeException | Error notShown) {
             // The file is written; the window cannot say so.
         }

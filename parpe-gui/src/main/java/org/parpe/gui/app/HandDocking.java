@@ -46,19 +46,19 @@ final class HandDocking implements PlateSink {
         what.append("\n\n").append(UiMsg.HAND_DO_IT.text());
         controller.setPaused(true);
         String text = what.toString();
-        Shell shell = ide.shell();
+        Shell shell = ide.shell;
         if (!shell.isDisposed()) {
             shell.getDisplay().asyncExec(() -> ask(text));
         }
     }
 
     private void ask(String text) {
-        if (ide.shell().isDisposed() || !controller.running()) {
+        if (ide.shell.isDisposed() || !controller.running()) {
             return;
         }
-        ide.status().setMessage(UiMsg.HAND_PAUSED.text());
+        ide.status.setMessage(UiMsg.HAND_PAUSED.text());
         ide.runStateChanged();
-        MessageDialog d = new MessageDialog(ide.shell(), title(), null, text, MessageDialog.INFORMATION, 0,
+        MessageDialog d = new MessageDialog(ide.shell, title(), null, text, MessageDialog.INFORMATION, 0,
                 UiMsg.HAND_CONTINUE.text(), UiMsg.TOOL_STOP.text()) {
             @Override
             protected void buttonPressed(int button) {
@@ -67,7 +67,7 @@ final class HandDocking implements PlateSink {
                     controller.stop();
                 } else if (controller.running()) {
                     controller.setPaused(false);
-                    ide.status().setMessage(UiMsg.RUN_RUNNING.text());
+                    ide.status.setMessage(UiMsg.RUN_RUNNING.text());
                 }
                 ide.runStateChanged();
             }

@@ -19,17 +19,17 @@ final class HardwareBridge extends WindowBridge implements HardwareHost {
 
     @Override
     public PortChoice portChoice() {
-        return ide.toolbar();
+        return ide.toolbar;
     }
 
     @Override
     public void hardwareGone() {
-        ide.pose().hardwareGone();
+        ide.pose.hardwareGone();
     }
 
     @Override
     public Control posePanel() {
-        return ide.pose().control();
+        return ide.pose.control();
     }
 
     @Override

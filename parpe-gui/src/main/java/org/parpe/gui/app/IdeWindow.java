@@ -52,36 +52,48 @@ public final class IdeWindow {
     /** The preference (Help > Open the Tutorial at Every Start) that opens the tutorial at each start, not only the first. */
     static final String TUTORIAL_AT_START = "tutorial.atStart";
 
-    private final Shell shell;
-    private final Prefs prefs;
-    private final RunChoices choices;
-    private final CheckResults checks = new CheckResults(this);
-    private final HardwareBridge hardware = new HardwareBridge(this);
+    // The window's parts, read by the bridges and collaborators of this package (and by the tests
+    // of other packages through IdeAccess); other packages' main code reaches them through hosts.
+    final Shell shell;
+    final Prefs prefs;
+    /** The robot, world and target chosen for each file. */
+    final RunChoices choices;
+    /** How the window shows each check of the script. */
+    final CheckResults checks = new CheckResults(this);
+    /** The window as the Hardware dialog sees it. */
+    final HardwareBridge hardware = new HardwareBridge(this);
     private final EventFailures crashes = new EventFailures(this);
     private final WindowKeys keys = new WindowKeys(this);
-    private final RunActions runs;
-    private final RunToolBar toolbar;
-    private final AlarmBanner alarm;
-    /** The outline | editor | 3D view split (read by the tests). */
+    final RunActions runs;
+    final RunToolBar toolbar;
+    /** The red banner under the tool bar while the robot does not answer. */
+    final AlarmBanner alarm;
+    /** The outline | editor | 3D view split. */
     final SashForm mainSash;
-    private final OutlineView outline;
-    private final TutorialDock tutorialDock;
-    private ParslEditor editor;
-    private GridPane gaitGrid;
-    private CTabItem editorTab;
-    private BottomTabs bottom;
-    private View3D view;
-    private ViewBar viewBar;
-    private ControlPanel controls;
-    private PlotView plots;
-    private final StatusBar status;
-    private final FileActions files;
-    private final ScriptDocument document;
-    private final DiagramPane diagram;
-    private final RobotTab robotTab;
-    /** The menu bar's actions (the tests open its dialogs). */
+    final OutlineView outline;
+    final TutorialDock tutorialDock;
+    final ParslEditor editor;
+    /** The gait-table grid beside the editor. */
+    final GridPane grid;
+    private final CTabItem editorTab;
+    /** The tabs below the editor: Problems, the Run log, the Pose panel. */
+    final BottomTabs bottom;
+    final View3D view;
+    final ViewBar viewBar;
+    final ControlPanel controls;
+    final PlotView plots;
+    final StatusBar status;
+    final FileActions files;
+    /** The open script (the editor's text, loaded once per version). */
+    final ScriptDocument document;
+    /** The Diagram pane beside the 3D view. */
+    final DiagramPane diagram;
+    /** The Robot tab beside the 3D view. */
+    final RobotTab robotTab;
+    /** The menu bar's actions. */
     final MenuBar menus;
-    private final PosePanel pose;
+    /** The Pose panel. */
+    final PosePanel pose;
     private boolean wasRunning;
 
     public IdeWindow(Display display, Prefs prefs) {
@@ -91,7 +103,7 @@ public final class IdeWindow {
         shell.setText("PARPE");
         shell.setImage(Panels.icon(display));
         shell.addDisposeListener(e -> shell.getImage().dispose());
-        shell.setLayout(grid(1, 0));
+        shell.setLayout(gridLayout(1, 0));
         runs = new RunActions(this);
         toolbar = new RunToolBar(shell, runs, prefs);
         toolbar.control().setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
@@ -101,10 +113,19 @@ public final class IdeWindow {
         CTabFolder left = Panels.folder(mainSash);
         outline = new OutlineView(left, this::reveal);
         Panels.tab(left, UiMsg.TAB_OUTLINE.text(), outline.control());
-        middleColumn();
-        CTabFolder viewFolder = rightColumn();
+        EditorColumn middle = middleColumn();
+        editor = middle.editor();
+        grid = middle.grid();
+        editorTab = middle.tab();
+        bottom = middle.bottom();
+        ViewColumn right = rightColumn();
+        viewBar = right.bar();
+        view = right.view();
+        controls = right.controls();
+        plots = right.plots();
+        CTabFolder viewFolder = right.folder();
         tutorialDock = new TutorialDock(left, mainSash);
-        ColumnWeights columns = new ColumnWeights(mainSash, (SashForm) viewFolder.getParent(), viewFolder, gaitGrid, tutorialDock);
+        ColumnWeights columns = new ColumnWeights(mainSash, (SashForm) viewFolder.getParent(), viewFolder, grid, tutorialDock);
         status = new StatusBar(shell);
         status.control().setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         files = new FileActions(shell, editor, prefs, this::documentChanged, this::fileSwitched, status::setMessage);
@@ -125,43 +146,52 @@ public final class IdeWindow {
         pose = new PosePanel(bottom.folder(), new PoseBridge(this));
         bottom.addPose(pose.control());
         diagram.usePoses(pose::selectedAngles);
-        diagram.openTablesWith(gaitGrid::showTable);
+        diagram.openTablesWith(grid::showTable);
+    }
+
+    /** The middle column's parts. */
+    private record EditorColumn(ParslEditor editor, GridPane grid, CTabItem tab, BottomTabs bottom) {
+    }
+
+    /** The right column's parts: the views' folder (3D view, later Diagram and Robot), its bar, the controls, the plots. */
+    private record ViewColumn(CTabFolder folder, ViewBar bar, View3D view, ControlPanel controls, PlotView plots) {
     }
 
     /** The editor with the gait table beside it, over Problems and the Run log. */
-    private void middleColumn() {
+    private EditorColumn middleColumn() {
         SashForm middle = new SashForm(mainSash, SWT.VERTICAL);
         CTabFolder editorFolder = Panels.folder(middle);
         SashForm editorBox = new SashForm(editorFolder, SWT.HORIZONTAL);
-        editor = new ParslEditor(editorBox);
-        gaitGrid = new GridPane(editorBox, editor);
-        editorTab = Panels.tab(editorFolder, "untitled.xml", editorBox);
-        bottom = new BottomTabs(middle, d -> reveal(d.pos()), checks::problemsChanged);
+        ParslEditor text = new ParslEditor(editorBox);
+        GridPane table = new GridPane(editorBox, text);
+        CTabItem tab = Panels.tab(editorFolder, "untitled.xml", editorBox);
+        BottomTabs below = new BottomTabs(middle, d -> reveal(d.pos()), checks::problemsChanged);
         SashMinimum.keepMinimum(middle, 160, 90);
+        return new EditorColumn(text, table, tab, below);
     }
 
-    /** The 3D view (and later the Diagram and Robot tabs) over the controls and the plots; returns the views' folder. */
-    private CTabFolder rightColumn() {
+    /** The 3D view (and later the Diagram and Robot tabs) over the controls and the plots. */
+    private ViewColumn rightColumn() {
         SashForm right = new SashForm(mainSash, SWT.VERTICAL);
         CTabFolder viewFolder = Panels.folder(right);
         Composite viewBox = new Composite(viewFolder, SWT.NONE);
-        viewBox.setLayout(grid(1, 0));
-        viewBar = new ViewBar(viewBox, this, prefs);
-        view = new View3D(viewBox);
-        view.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
-        viewBar.attach(view);
+        viewBox.setLayout(gridLayout(1, 0));
+        ViewBar bar = new ViewBar(viewBox, this, prefs);
+        View3D view3d = new View3D(viewBox);
+        view3d.control().setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
+        bar.attach(view3d);
         Panels.tab(viewFolder, UiMsg.TAB_3D_VIEW.text(), viewBox);
         CTabFolder controlFolder = Panels.folder(right);
-        controls = new ControlPanel(controlFolder, runs);
-        Panels.tab(controlFolder, UiMsg.TAB_CONTROLS.text(), controls.control());
+        ControlPanel panel = new ControlPanel(controlFolder, runs);
+        Panels.tab(controlFolder, UiMsg.TAB_CONTROLS.text(), panel.control());
         CTabFolder plotFolder = Panels.folder(right);
-        plots = new PlotView(plotFolder);
+        PlotView plotView = new PlotView(plotFolder);
         ChartView.zoomAll(0); // a new window starts at the normal size, its plots too
-        Panels.tab(plotFolder, UiMsg.TAB_JOINT_ANGLES.text(), plots.control());
-        return viewFolder;
+        Panels.tab(plotFolder, UiMsg.TAB_JOINT_ANGLES.text(), plotView.control());
+        return new ViewColumn(viewFolder, bar, view3d, panel, plotView);
     }
 
-    private static GridLayout grid(int columns, int margin) {
+    private static GridLayout gridLayout(int columns, int margin) {
         GridLayout gl = new GridLayout(columns, false);
         gl.marginWidth = margin;
         gl.marginHeight = margin;
@@ -346,83 +376,9 @@ public final class IdeWindow {
         return new AutomationBridge(this);
     }
 
-    // What the window's parts and the bridges reach (tests of other packages: IdeAccess): the parts themselves.
-
-    Shell shell() {
-        return shell;
-    }
-
-    Prefs prefs() {
-        return prefs;
-    }
-
-    ParslEditor editor() {
-        return editor;
-    }
-
-    /** The open script (the editor's text, loaded once per version). */
-    ScriptDocument document() {
-        return document;
-    }
-
-    /** The Diagram pane beside the 3D view. */
-    DiagramPane diagram() {
-        return diagram;
-    }
-
-    /** The gait-table grid beside the editor. */
-    GridPane grid() {
-        return gaitGrid;
-    }
-
-    FileActions files() {
-        return files;
-    }
-
-    RunActions runs() {
-        return runs;
-    }
-
-    StatusBar status() {
-        return status;
-    }
-
-    RunToolBar toolbar() {
-        return toolbar;
-    }
-
-    ControlPanel controls() {
-        return controls;
-    }
-
-    OutlineView outline() {
-        return outline;
-    }
-
+    /** The Problems view below the editor. */
     ProblemsView problems() {
         return bottom.problems();
-    }
-
-    PlotView plots() {
-        return plots;
-    }
-
-    View3D view() {
-        return view;
-    }
-
-    ViewBar viewBar() {
-        return viewBar;
-    }
-
-    /** The Pose panel. */
-    PosePanel pose() {
-        return pose;
-    }
-
-    /** The Robot tab beside the 3D view. */
-    RobotTab robotTab() {
-        return robotTab;
     }
 
     /** The last program that loaded, or null. */
@@ -435,21 +391,7 @@ public final class IdeWindow {
         return checks.validations();
     }
 
-    /** How the window shows each check of the script. */
-    CheckResults checks() {
-        return checks;
-    }
-
-    /** The window as the Hardware dialog sees it. */
-    HardwareBridge hardware() {
-        return hardware;
-    }
-
-    /** The tabs below the editor: Problems, the Run log, the Pose panel. */
-    BottomTabs bottom() {
-        return bottom;
-    }
-
+    /** The robot picked in the 3D view's bar. */
     String robotChoice() {
         return viewBar.robot();
     }
@@ -460,11 +402,6 @@ public final class IdeWindow {
         robotTab.robotChosen();
     }
 
-    /** The robot, world and target chosen for each file. */
-    RunChoices choices() {
-        return choices;
-    }
-
     /** View → Zoom In (1) / Zoom Out (−1) / Reset Zoom (0) ({@link WindowKeys#zoom(int)}). */
     void zoom(int step) {
         keys.zoom(step);
@@ -473,15 +410,6 @@ public final class IdeWindow {
     /** How many steps of 2 points the text is zoomed in (negative: out). */
     int zoom() {
         return keys.zoom();
-    }
-
-    TutorialDock tutorialDock() {
-        return tutorialDock;
-    }
-
-    /** The red banner under the tool bar while the robot does not answer (tests). */
-    AlarmBanner alarm() {
-        return alarm;
     }
 
     /** The Run log's text. */

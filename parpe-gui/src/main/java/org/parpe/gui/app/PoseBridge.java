@@ -40,17 +40,17 @@ final class PoseBridge extends WindowBridge implements PoseHost {
 
     @Override
     public View3D view() {
-        return ide.view();
+        return ide.view;
     }
 
     @Override
     public IDocument document() {
-        return ide.editor().document();
+        return ide.editor.document();
     }
 
     @Override
     public Path scriptPath() {
-        return ide.files().pathForLoading();
+        return ide.files.pathForLoading();
     }
 
     @Override
@@ -60,37 +60,37 @@ final class PoseBridge extends WindowBridge implements PoseHost {
 
     @Override
     public boolean running() {
-        return ide.runs().running();
+        return ide.runs.running();
     }
 
     @Override
     public void play(Program program, RunOn target, String spec, Consumer<RunOutcome> onEnd) {
-        ide.runs().play(program, target, spec, onEnd);
+        ide.runs.play(program, target, spec, onEnd);
     }
 
     @Override
     public void stop() {
-        ide.runs().stop();
+        ide.runs.stop();
     }
 
     @Override
     public void status(String message) {
-        ide.status().setMessage(message);
+        ide.status.setMessage(message);
     }
 
     @Override
     public PoseHardware hardware() {
-        HardwareDialog d = ide.hardware().hardwareDialog();
+        HardwareDialog d = ide.hardware.hardwareDialog();
         if (d == null || d.shell().isDisposed() || d.servos().isEmpty()) {
             return null;
         }
         HardwareProfile profile = null;
-        String file = ide.toolbar().hardwareProfile();
+        String file = ide.toolbar.hardwareProfile();
         if (file != null) {
             DiagnosticList problems = new DiagnosticList();
             profile = ProfileReader.read(Path.of(file), problems);
             if (profile == null) {
-                ide.status().setMessage(UiMsg.PROFILE_HAS_ERRORS_FIRST.text(file,
+                ide.status.setMessage(UiMsg.PROFILE_HAS_ERRORS_FIRST.text(file,
                         problems.all().isEmpty() ? "" : problems.all().get(0).format()));
                 return null;
             }

@@ -18,36 +18,36 @@ final class RobotBridge extends WindowBridge implements RobotHost {
 
     @Override
     public ParslEditor editor() {
-        return ide.editor();
+        return ide.editor;
     }
 
     @Override
     public Path file() {
-        return ide.files().pathForLoading();
+        return ide.files.pathForLoading();
     }
 
     @Override
     public void chooseRobot(String robot) {
-        ide.viewBar().show(robot);
+        ide.viewBar.show(robot);
         ide.robotChosen(robot);
     }
 
     @Override
     public void open(Path file) {
-        if (ide.files().confirmDiscard()) {
-            ide.files().openPath(file);
+        if (ide.files.confirmDiscard()) {
+            ide.files.openPath(file);
         }
     }
 
     @Override
     public boolean save() {
-        return ide.files().file() != null && !ide.files().dirty() || ide.files().save();
+        return ide.files.file() != null && !ide.files.dirty() || ide.files.save();
     }
 
     @Override
     public void tryIt(Program program, String robot) {
         // the one run path: the Pose panel's playback runs a program made elsewhere on a robot of its choice
-        ide.runs().play(program, RunOn.SIMULATOR, robot, outcome -> {
+        ide.runs.play(program, RunOn.SIMULATOR, robot, outcome -> {
             if (outcome.status() == RunOutcome.Status.ERROR) {
                 ide.sayLater(UiMsg.TRY_IT_FAILED.text(outcome.message()));
             }
@@ -56,11 +56,11 @@ final class RobotBridge extends WindowBridge implements RobotHost {
 
     @Override
     public void say(String message) {
-        ide.status().setMessage(message);
+        ide.status.setMessage(message);
     }
 
     @Override
     public Prefs prefs() {
-        return ide.prefs();
+        return ide.prefs;
     }
 }

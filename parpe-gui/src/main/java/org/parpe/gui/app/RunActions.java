@@ -73,7 +73,7 @@ public final class RunActions implements ControlPanel.ControlSink {
 
     RunActions(IdeWindow ide) {
         this.ide = ide;
-        this.controller = new RunController(ide.shell().getDisplay());
+        this.controller = new RunController(ide.shell.getDisplay());
     }
 
     public RunController controller() {
@@ -109,12 +109,12 @@ public final class RunActions implements ControlPanel.ControlSink {
 
     /** The user picked {@code t} in the tool bar for the file in the editor. */
     void targetChosen(RunOn t) {
-        ide.choices().targetChosen(t);
+        ide.choices.targetChosen(t);
     }
 
     /** Opens the Hardware dialog (Run > Hardware…). */
     void openHardware() {
-        HardwareDialog.open(ide.hardware());
+        HardwareDialog.open(ide.hardware);
     }
 
     String hardwareState() {
@@ -149,44 +149,44 @@ public final class RunActions implements ControlPanel.ControlSink {
             }
             return;
         }
-        if (ide.toolbar().target().hardware() && ide.hardware().held() != null) {
+        if (ide.toolbar.target().hardware() && ide.hardware.held() != null) {
             // Two owners of one serial port would garble each other's packets.
             String why = UiMsg.HARDWARE_DIALOG_HOLDS_BUS.text();
-            ide.status().setMessage(UiMsg.CANNOT_RUN.text(why));
-            ide.shell().getDisplay().beep();
+            ide.status.setMessage(UiMsg.CANNOT_RUN.text(why));
+            ide.shell.getDisplay().beep();
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, why));
             return;
         }
-        if (ide.checks().emptyScript()) {
-            ide.status().setMessage(UiMsg.CANNOT_RUN_EMPTY.text());
+        if (ide.checks.emptyScript()) {
+            ide.status.setMessage(UiMsg.CANNOT_RUN_EMPTY.text());
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, UiMsg.OUTCOME_FILE_EMPTY.text()));
             return;
         }
         // read afresh: the run sees the files the script includes as they are now
-        ScriptDocument.Loaded read = ide.document().reread();
+        ScriptDocument.Loaded read = ide.document.reread();
         LoadResult first = read.result();
-        ide.checks().show(first);
+        ide.checks.show(first);
         if (first.program() == null) {
-            ide.status().setMessage(UiMsg.CANNOT_RUN_ERRORS.text(first.errors().size()));
-            ide.bottom().showProblems();
-            ide.shell().getDisplay().beep();
+            ide.status.setMessage(UiMsg.CANNOT_RUN_ERRORS.text(first.errors().size()));
+            ide.bottom.showProblems();
+            ide.shell.getDisplay().beep();
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, UiMsg.OUTCOME_SCRIPT_ERRORS.text()));
             return;
         }
         Map<String, Double> params = parameters(first.program(), interactive);
         if (params == null) {
-            ide.status().setMessage(UiMsg.RUN_CANCELLED.text());
+            ide.status.setMessage(UiMsg.RUN_CANCELLED.text());
             return;
         }
         LoadResult loaded = read.bind(params);
         if (!loaded.ok()) {
-            ide.checks().show(loaded);
+            ide.checks.show(loaded);
             ide.problems().clearRunDiagnostics();
-            loaded.parameterErrors().forEach(ide.bottom()::runProblemLater);
+            loaded.parameterErrors().forEach(ide.bottom::runProblemLater);
             String why = loaded.parameterErrors().isEmpty() ? UiMsg.ERRORS_WITH_PARAMETERS.text()
                     : loaded.parameterErrors().get(0).message();
-            ide.status().setMessage(UiMsg.CANNOT_RUN.text(why));
-            ide.bottom().showProblems();
+            ide.status.setMessage(UiMsg.CANNOT_RUN.text(why));
+            ide.bottom.showProblems();
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, why));
             return;
         }
@@ -194,11 +194,11 @@ public final class RunActions implements ControlPanel.ControlSink {
     }
 
     private void start(Program program, double runFor, Consumer<RunOutcome> onEnd) {
-        RunOn target = ide.toolbar().target();
+        RunOn target = ide.toolbar.target();
         start(program, target, robotSpec(program), runFor, onEnd);
         String misfit = target.sim() ? misfit(program, ide.robotChoice()) : null;
         if (misfit != null) {
-            ide.bottom().runProblemLater(new Diagnostic(Severity.WARNING, SourcePos.origin(UiMsg.ORIGIN_ROBOT.text(ide.robotChoice())), misfit));
+            ide.bottom.runProblemLater(new Diagnostic(Severity.WARNING, SourcePos.origin(UiMsg.ORIGIN_ROBOT.text(ide.robotChoice())), misfit));
         }
     }
 
@@ -225,8 +225,8 @@ public final class RunActions implements ControlPanel.ControlSink {
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, UiMsg.OUTCOME_RUN_GOING_ON.text()));
             return;
         }
-        if (target.hardware() && ide.hardware().held() != null) {
-            ide.status().setMessage(UiMsg.CANNOT_PLAY_ON_ROBOT.text());
+        if (target.hardware() && ide.hardware.held() != null) {
+            ide.status.setMessage(UiMsg.CANNOT_PLAY_ON_ROBOT.text());
             report(onEnd, new RunOutcome(RunOutcome.Status.ERROR, 0, UiMsg.HARDWARE_DIALOG_HOLDS_BUS.text()));
             return;
         }
@@ -234,29 +234,29 @@ public final class RunActions implements ControlPanel.ControlSink {
     }
 
     private void start(Program program, RunOn target, String spec, double runFor, Consumer<RunOutcome> onEnd) {
-        String port = ide.toolbar().port();
-        String profile = ide.toolbar().hardwareProfile();
+        String port = ide.toolbar.port();
+        String profile = ide.toolbar.hardwareProfile();
         AngleRecorder recorder = org.parpe.gui.panels.PlotView.newRecorder();
-        ide.plots().setModules(program.moduleIds());
-        ide.plots().setRecorder(recorder);
+        ide.plots.setModules(program.moduleIds());
+        ide.plots.setRecorder(recorder);
         ide.problems().clearRunDiagnostics();
-        ide.bottom().log(UiMsg.LOG_RUN.text(ide.files().name(), target.label(), target.sim() ? UiMsg.LOG_RUN_ROBOT.text(spec) : "",
+        ide.bottom.log(UiMsg.LOG_RUN.text(ide.files.name(), target.label(), target.sim() ? UiMsg.LOG_RUN_ROBOT.text(spec) : "",
                 !target.hardware() ? "" : profile == null ? UiMsg.LOG_RUN_PORT.text(port) : UiMsg.LOG_RUN_PORT_PROFILE.text(port, profile)));
-        controller.setSpeed(ide.toolbar().speed());
+        controller.setSpeed(ide.toolbar.speed());
         finalScore = null;
-        Run.Builder run = Run.builder(program, RunOptions.defaults(), ide.bottom()::runProblemLater);
-        World world = target.sim() ? ide.viewBar().world().world() : null; // read on the UI thread
+        Run.Builder run = Run.builder(program, RunOptions.defaults(), ide.bottom::runProblemLater);
+        World world = target.sim() ? ide.viewBar.world().world() : null; // read on the UI thread
         // a world's challenge lasts its time limit, as on the command line
         double limit = world != null && runFor < 0 ? world.timeLimit() : runFor;
         worldLimit = world != null && runFor < 0 ? world.timeLimit() : Double.NaN;
         controller.start(run, b -> attach(b, target, spec, world, port, profile, recorder), limit, outcome -> {
-            if (ide.shell().isDisposed()) {
+            if (ide.shell.isDisposed()) {
                 return; // the window closed while the run was ending
             }
             ended(outcome);
             report(onEnd, outcome);
-        }, ide.bottom()::logLater);
-        ide.controls().pushAll();
+        }, ide.bottom::logLater);
+        ide.controls.pushAll();
         ide.runStateChanged();
     }
 
@@ -274,7 +274,7 @@ public final class RunActions implements ControlPanel.ControlSink {
                         AngleRecorder recorder) throws TargetException {
         if (target.hardware()) {
             ServoTarget st = ServoTarget.open(profile == null ? null : Path.of(profile), port, UiMsg.HARDWARE_PROFILE.text(),
-                    BusConfig.defaults(), ide.bottom()::logLater);
+                    BusConfig.defaults(), ide.bottom::logLater);
             hardwareState = UiMsg.HW_CONNECTING.text(st.port() == null ? "" : st.port());
             attachDriver(run, st, st.profile() == null ? "" : " (" + st.profile().protocol().key() + ")");
         }
@@ -322,7 +322,7 @@ public final class RunActions implements ControlPanel.ControlSink {
         finalScore = score;
         if (m != null && m.fell()) {
             String choice = ide.robotChoice();
-            ide.bottom().runProblemLater(new Diagnostic(Severity.WARNING, SourcePos.origin(UiMsg.ORIGIN_ROBOT.text(choice)), UiMsg.ROBOT_FELL,
+            ide.bottom.runProblemLater(new Diagnostic(Severity.WARNING, SourcePos.origin(UiMsg.ORIGIN_ROBOT.text(choice)), UiMsg.ROBOT_FELL,
                     String.format(java.util.Locale.ROOT, "%.0f", m.maxTiltDeg()), String.format(java.util.Locale.ROOT, "%.0f",
                     SimMetrics.FALL_TILT_DEG), SimTarget.AUTO.equals(choice) ? "" : UiMsg.ROBOT_FELL_WHICH.text(choice)));
             travelled += UiMsg.RUN_FELL_OVER.text();
@@ -333,16 +333,16 @@ public final class RunActions implements ControlPanel.ControlSink {
             case STOPPED -> (emergency ? UiMsg.RUN_EMERGENCY_STOPPED : UiMsg.RUN_STOPPED).text(t, travelled);
             case ERROR -> UiMsg.RUN_FAILED.text(outcome.message());
         };
-        ide.bottom().log(said);
+        ide.bottom.log(said);
         if (score == null) {
-            ide.status().setMessage(said);
+            ide.status.setMessage(said);
         } else {
             // What a teacher records comes first: the status bar cuts a long message at its end.
             String points = UiMsg.RUN_SCORE.text(String.format(java.util.Locale.ROOT, "%.1f", score.score()));
-            ide.bottom().log(points + ": " + score.inWords());
-            ide.status().setMessage(points + " (" + score.inWords() + ") \u2014 " + Character.toLowerCase(said.charAt(0))
+            ide.bottom.log(points + ": " + score.inWords());
+            ide.status.setMessage(points + " (" + score.inWords() + ") \u2014 " + Character.toLowerCase(said.charAt(0))
                     + said.substring(1));
-            ide.bottom().showRunLog();
+            ide.bottom.showRunLog();
         }
         ide.runStateChanged();
     }
@@ -358,27 +358,27 @@ public final class RunActions implements ControlPanel.ControlSink {
         if (program.parameters().isEmpty()) {
             return Map.of();
         }
-        String key = "params." + ide.files().pathForLoading() + ".";
+        String key = "params." + ide.files.pathForLoading() + ".";
         Map<String, Double> last = new HashMap<>();
         for (Parameter p : program.parameters()) {
-            Double v = Numbers.parsePlain(ide.prefs().get(key + p.name(), ""));
+            Double v = Numbers.parsePlain(ide.prefs.get(key + p.name(), ""));
             last.put(p.name(), v != null && p.check(v) == null ? v : p.value());
         }
         if (!interactive) {
             return last;
         }
-        ParametersDialog d = new ParametersDialog(ide.shell(), program.parameters(), last);
+        ParametersDialog d = new ParametersDialog(ide.shell, program.parameters(), last);
         if (d.open() != Window.OK) {
             return null;
         }
-        d.values().forEach((name, v) -> ide.prefs().put(key + name, Numbers.format(v)));
+        d.values().forEach((name, v) -> ide.prefs.put(key + name, Numbers.format(v)));
         return d.values();
     }
 
     void pause() {
         if (controller.running()) {
             controller.setPaused(!controller.paused());
-            ide.status().setMessage(controller.paused() ? UiMsg.RUN_PAUSED.text() : UiMsg.RUN_RUNNING.text());
+            ide.status.setMessage(controller.paused() ? UiMsg.RUN_PAUSED.text() : UiMsg.RUN_RUNNING.text());
             ide.runStateChanged();
         }
     }
@@ -396,8 +396,8 @@ public final class RunActions implements ControlPanel.ControlSink {
         }
         if (controller.running()) {
             emergency = true;
-            ide.bottom().log(UiMsg.LOG_EMERGENCY_STOP.text());
-            ide.status().setMessage(UiMsg.RUN_EMERGENCY_STOP.text());
+            ide.bottom.log(UiMsg.LOG_EMERGENCY_STOP.text());
+            ide.status.setMessage(UiMsg.RUN_EMERGENCY_STOP.text());
         }
     }
 
@@ -426,7 +426,7 @@ public final class RunActions implements ControlPanel.ControlSink {
             Program p = e.program();
             SourcePos where = p.controls().stream().filter(c -> c.name().equals(name)).map(c -> c.pos())
                     .findFirst().orElse(SourcePos.origin(UiMsg.ORIGIN_CONTROL.text(name)));
-            ide.bottom().runProblemLater(new Diagnostic(Severity.ERROR, where, ex.getMessage()));
+            ide.bottom.runProblemLater(new Diagnostic(Severity.ERROR, where, ex.getMessage()));
         }
     }
 
@@ -437,8 +437,8 @@ public final class RunActions implements ControlPanel.ControlSink {
         }
         String spec = robotSpec(program);
         int[] ids = program.moduleIds();
-        World world = ide.viewBar().world().world();
-        String key = spec + java.util.Arrays.toString(ids) + ide.viewBar().world().file();
+        World world = ide.viewBar.world().world();
+        String key = spec + java.util.Arrays.toString(ids) + ide.viewBar.world().file();
         if (key.equals(previewKey)) {
             return;
         }
@@ -453,7 +453,7 @@ public final class RunActions implements ControlPanel.ControlSink {
                 // said when the robot or the world is chosen, not only when a run starts
                 s.misfit().ifPresent(misfit -> ide.sayLater(UiMsg.ROBOT_MISFIT_SAY.text(spec, misfit)));
             } catch (RuntimeException e) {
-                ide.bottom().logLater(UiMsg.CANNOT_SHOW_ROBOT.text(spec, e.getMessage()));
+                ide.bottom.logLater(UiMsg.CANNOT_SHOW_ROBOT.text(spec, e.getMessage()));
             }
         });
     }

@@ -22,8 +22,8 @@ final class StatusTicker {
     }
 
     private void next() {
-        ide.shell().getDisplay().timerExec(100, () -> {
-            if (!ide.shell().isDisposed()) {
+        ide.shell.getDisplay().timerExec(100, () -> {
+            if (!ide.shell.isDisposed()) {
                 tick();
                 next();
             }
@@ -31,25 +31,25 @@ final class StatusTicker {
     }
 
     private void tick() {
-        RunActions runs = ide.runs();
+        RunActions runs = ide.runs;
         boolean running = runs.running();
         var st = runs.controller().status();
-        String simState = (!ide.toolbar().target().sim() ? UiMsg.SIM_OFF
+        String simState = (!ide.toolbar.target().sim() ? UiMsg.SIM_OFF
                 : running ? (runs.controller().paused() ? UiMsg.SIM_PAUSED : UiMsg.SIM_RUNNING)
                 : UiMsg.SIM_IDLE).text();
-        StatusBar status = ide.status();
+        StatusBar status = ide.status;
         status.setSim(simState);
         String held = hardware.held();
         long since = runs.hardwareSilentSince();
         boolean silent = running && since >= 0;
         String state = held != null && !running ? held : runs.hardwareState();
         status.setHardware(state, silent ? UiMsg.ROBOT_SILENT_MESSAGE.text(RunActions.silentTime(since)) : null);
-        ide.alarm().show(silent ? UiMsg.ROBOT_SILENT_BANNER.text(RunActions.silentTime(since)) : null);
+        ide.alarm.show(silent ? UiMsg.ROBOT_SILENT_BANNER.text(RunActions.silentTime(since)) : null);
         if (st != null) {
             status.setTime(st.time());
         }
         if (running) {
-            ide.plots().refresh();
+            ide.plots.refresh();
         }
     }
 }

@@ -96,20 +96,20 @@ public final class ViewBar {
             useFile(p.toString());
         }
         ide.robotChosen(robot());
-        ide.runs().invalidatePreview();
+        ide.runs.invalidatePreview();
         if (ide.program() != null) {
-            ide.runs().updatePreview(ide.program());
+            ide.runs.updatePreview(ide.program());
         }
-        ide.view().resetView();
+        ide.view.resetView();
     }
 
     private void worldChosen() {
-        ide.choices().worldChosen(world.choice());
-        ide.runs().invalidatePreview();
+        ide.choices.worldChosen(world.choice());
+        ide.runs.invalidatePreview();
         if (ide.program() != null) {
-            ide.runs().updatePreview(ide.program());
+            ide.runs.updatePreview(ide.program());
         }
-        ide.view().resetView();
+        ide.view.resetView();
     }
 
     /** The world picker. */
@@ -137,7 +137,7 @@ public final class ViewBar {
     /** Turns TrackRobot on or off for now (automation framing a group), without changing the preference. */
     public void trackRobot(boolean on) {
         track.setSelection(on);
-        ide.view().setTrackRobot(on);
+        ide.view.setTrackRobot(on);
     }
 
     /**

@@ -18,12 +18,12 @@ abstract class WindowBridge {
 
     /** The window's shell, the parent of a feature's dialogs. */
     public Shell shell() {
-        return ide.shell();
+        return ide.shell;
     }
 
     /** The files open in the editor's tabs. */
     public List<Path> openFiles() {
-        return ide.files().openFiles();
+        return ide.files.openFiles();
     }
 
     /** The robot chosen in the view bar for the current file. */

@@ -28,10 +28,10 @@ final class WindowKeys implements Listener {
 
     @Override
     public void handleEvent(Event e) {
-        if (ide.shell().isDisposed()) {
+        if (ide.shell.isDisposed()) {
             return;
         }
-        RunActions runs = ide.runs();
+        RunActions runs = ide.runs;
         if (e.keyCode == SWT.ESC) {
             if (runs.running()) {
                 runs.emergencyStop();
@@ -39,8 +39,8 @@ final class WindowKeys implements Listener {
             return;
         }
         Control focus = e.display.getFocusControl();
-        boolean mine = focus != null && focus.getShell() == ide.shell();
-        if ((e.stateMask & SWT.MOD1) != 0 && mine && !ide.tutorialDock().holds(focus) && zoomKey(e)) {
+        boolean mine = focus != null && focus.getShell() == ide.shell;
+        if ((e.stateMask & SWT.MOD1) != 0 && mine && !ide.tutorialDock.holds(focus) && zoomKey(e)) {
             // the docked tutorial zooms its lesson itself
             e.doit = false;
             e.type = SWT.None;
@@ -49,8 +49,8 @@ final class WindowKeys implements Listener {
         if (!mine || !runs.running() || (e.stateMask & SWT.MODIFIER_MASK) != 0) {
             return;
         }
-        boolean valueBox = (focus instanceof Text || focus instanceof Combo || focus instanceof Spinner) && !ide.grid().hasFocus();
-        if (!valueBox && ide.controls().key(e)) {
+        boolean valueBox = (focus instanceof Text || focus instanceof Combo || focus instanceof Spinner) && !ide.grid.hasFocus();
+        if (!valueBox && ide.controls.key(e)) {
             // Neither the editor's nor the table's key handling sees it: the text stays as it was.
             e.doit = false;
             e.type = SWT.None;
@@ -74,13 +74,13 @@ final class WindowKeys implements Listener {
      */
     void zoom(int step) {
         zoom = Zoom.next(zoom, step);
-        Zoom.apply(ide.editor().widget(), JFaceResources.getTextFont(), zoom);
+        Zoom.apply(ide.editor.widget(), JFaceResources.getTextFont(), zoom);
         Zoom.apply(ide.runLog(), JFaceResources.getTextFont(), zoom);
-        ide.grid().zoom(zoom);
+        ide.grid.zoom(zoom);
         ChartView.zoomAll(zoom);
-        ide.diagram().zoom(zoom);
-        ide.robotTab().zoom(zoom);
-        ide.status().setMessage(zoom == 0 ? UiMsg.ZOOM_NORMAL.text() : UiMsg.ZOOM_POINTS.text((zoom > 0 ? "+" : "") + zoom * 2));
+        ide.diagram.zoom(zoom);
+        ide.robotTab.zoom(zoom);
+        ide.status.setMessage(zoom == 0 ? UiMsg.ZOOM_NORMAL.text() : UiMsg.ZOOM_POINTS.text((zoom > 0 ? "+" : "") + zoom * 2));
     }
 
     /** How many steps of 2 points the text is zoomed in (negative: out). */

@@ -108,7 +108,7 @@ final class WorldPicker {
             DiagnosticList found = new DiagnosticList();
             loaded = WorldReader.read(f, found);
             loadedFrom = f;
-            found.all().forEach(d -> ide.bottom().log(d.format()));
+            found.all().forEach(d -> ide.bottom.log(d.format()));
         }
         return loaded;
     }

@@ -44,11 +44,11 @@ class ControlsWheelGuiTest {
     @Test
     void theWheelOverASliderScrollsThePanelAndLeavesTheSliderAlone() throws Exception {
         ide = Gui.openIde(Files.createTempDirectory("parpe-wheel"));
-        ide.shell().setBounds(0, 0, 1366, 768);
+        ide.shell.setBounds(0, 0, 1366, 768);
         Gui.open(ide, Gui.example("tutorial/08-teleop-snake.xml"));
-        Gui.pump(() -> ide.program() != null && !sliders((Composite) ide.controls().control()).isEmpty(), "the controls");
+        Gui.pump(() -> ide.program() != null && !sliders((Composite) ide.controls.control()).isEmpty(), "the controls");
         Gui.settle();
-        ScrolledComposite panel = (ScrolledComposite) ide.controls().control();
+        ScrolledComposite panel = (ScrolledComposite) ide.controls.control();
         Rectangle view = panel.getDisplay().map(panel, null, panel.getClientArea());
         assertTrue(panel.getContent().getSize().y > view.height, "the panel holds more than it shows at 1366x768");
         Scale slider = sliders(panel).stream().filter(s -> view.contains(s.getDisplay().map(s.getParent(), null,

@@ -34,8 +34,8 @@ class DiskChangeGuiTest {
 
     @AfterEach
     void closeWindow() {
-        if (ide != null && !ide.shell().isDisposed()) {
-            ide.shell().dispose();
+        if (ide != null && !ide.shell.isDisposed()) {
+            ide.shell.dispose();
         }
     }
 
@@ -43,7 +43,7 @@ class DiskChangeGuiTest {
         Path script = dir.resolve("walk.xml");
         Files.writeString(script, Files.readString(Gui.example("hello-snake.xml")));
         ide = new IdeWindow(Gui.display(), new Prefs(dir.resolve("home")));
-        ide.files().answerWith((title, message, buttons) -> {
+        ide.files.answerWith((title, message, buttons) -> {
             asked.add(title + ": " + message);
             return answers.isEmpty() ? -1 : answers.remove(0);
         });
@@ -60,14 +60,14 @@ class DiskChangeGuiTest {
     }
 
     private void activate() {
-        ide.shell().notifyListeners(SWT.Activate, new Event());
+        ide.shell.notifyListeners(SWT.Activate, new Event());
         Gui.settle();
     }
 
     @Test
     void keepingTheEditorsTextMarksItUnsavedAndReloadShowsTheFile() throws Exception {
         Path script = openScript();
-        String mine = ide.editor().document().get();
+        String mine = ide.editor.document().get();
         String theirs = mine.replace("period=\"1\"", "period=\"3\"");
         assertFalse(mine.equals(theirs), "the example has a period to change");
         writtenElsewhere(script, theirs);
@@ -75,31 +75,31 @@ class DiskChangeGuiTest {
         activate();
         assertEquals(1, asked.size(), "asked once: " + asked);
         assertTrue(asked.get(0).startsWith("File changed on disk: walk.xml was changed on disk"), asked.get(0));
-        assertTrue(ide.files().dirty(), "the editor's text is no longer what is on disk");
-        assertEquals(mine, ide.editor().document().get());
+        assertTrue(ide.files.dirty(), "the editor's text is no longer what is on disk");
+        assertEquals(mine, ide.editor.document().get());
         activate();
         assertEquals(1, asked.size(), "the same change is not asked about again");
         writtenElsewhere(script, theirs + "<!-- again -->\n");
         answers.add(0); // Reload
         activate();
-        assertEquals(theirs + "<!-- again -->\n", ide.editor().document().get());
-        assertFalse(ide.files().dirty());
+        assertEquals(theirs + "<!-- again -->\n", ide.editor.document().get());
+        assertFalse(ide.files.dirty());
     }
 
     @Test
     void saveAsksBeforeReplacingAFileChangedOnDisk() throws Exception {
         Path script = openScript();
-        String theirs = ide.editor().document().get() + "<!-- written by another program -->\n";
+        String theirs = ide.editor.document().get() + "<!-- written by another program -->\n";
         writtenElsewhere(script, theirs);
         answers.add(1); // Cancel
-        assertFalse(ide.files().save());
+        assertFalse(ide.files.save());
         assertEquals(theirs, Files.readString(script), "Cancel keeps the other program's text");
         assertTrue(asked.get(0).startsWith("File changed on disk"), asked.toString());
         answers.add(0); // Replace
-        assertTrue(ide.files().save());
-        assertEquals(ide.editor().document().get(), Files.readString(script));
+        assertTrue(ide.files.save());
+        assertEquals(ide.editor.document().get(), Files.readString(script));
         assertEquals(2, asked.size());
-        assertTrue(ide.files().save(), "a file saved since is not asked about");
+        assertTrue(ide.files.save(), "a file saved since is not asked about");
         assertEquals(2, asked.size());
     }
 
@@ -108,7 +108,7 @@ class DiskChangeGuiTest {
         Path script = openScript();
         String text = Files.readString(script);
         Path link = Files.createSymbolicLink(dir.resolve("link.xml"), script);
-        HardwareDialog d = HardwareDialog.open(ide.hardware());
+        HardwareDialog d = HardwareDialog.open(ide.hardware);
         try {
             for (Path over : List.of(script, link)) {
                 d.saveProfile(over);

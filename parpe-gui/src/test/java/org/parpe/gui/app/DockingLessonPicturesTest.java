@@ -55,9 +55,9 @@ class DockingLessonPicturesTest {
 
     @AfterAll
     static void closeWindow() {
-        if (ide != null && !ide.shell().isDisposed()) {
+        if (ide != null && !ide.shell.isDisposed()) {
             Gui.endRun(ide);
-            ide.shell().dispose();
+            ide.shell.dispose();
         }
     }
 
@@ -93,8 +93,8 @@ class DockingLessonPicturesTest {
         Gui.open(ide, script);
         Gui.pump(() -> ide.validations() > before && ide.program() != null, "the lesson to load");
         assertEquals(0L, ide.problems().errorCount(), () -> "problems: " + ide.problems().shown());
-        ide.toolbar().setTarget(RunOn.SIMULATOR);
-        ide.toolbar().setSpeed(Speed.MAX);
+        ide.toolbar.setTarget(RunOn.SIMULATOR);
+        ide.toolbar.setSpeed(Speed.MAX);
         // well before the ends meet; halfway through the draw; a second after the latch closed
         picture("15-docking-before.png", at[0] - 2);
         picture("15-docking-during.png", (at[0] + at[1]) / 2);
@@ -104,22 +104,22 @@ class DockingLessonPicturesTest {
     /** Runs the lesson in the IDE for {@code seconds} and draws its 3D view into {@code name}. */
     private static void picture(String name, double seconds) throws Exception {
         AtomicReference<RunOutcome> outcome = new AtomicReference<>();
-        ide.runs().run(false, seconds, outcome::set);
+        ide.runs.run(false, seconds, outcome::set);
         Gui.pump(() -> outcome.get() != null, seconds + " simulated seconds of the lesson", 180_000);
         assertNotEquals(RunOutcome.Status.ERROR, outcome.get().status(), outcome.get().message());
         assertEquals(seconds, outcome.get().time(), 0.02, "the run stopped where asked");
-        Gui.pump(() -> !ide.runs().running(), "the run to wind up");
+        Gui.pump(() -> !ide.runs.running(), "the run to wind up");
         // the same picture on every run: the camera framed on the pose, not easing towards it
-        ide.view().setTrackRobot(false);
-        ide.view().resetView();
+        ide.view.setTrackRobot(false);
+        ide.view.resetView();
         // the two end modules, whose plates latch, highlighted
-        java.util.function.Supplier<java.util.Set<Integer>> driven = ide.view().highlighted();
-        ide.view().setHighlighted(() -> java.util.Set.of(0, 9));
+        java.util.function.Supplier<java.util.Set<Integer>> driven = ide.view.highlighted();
+        ide.view.setHighlighted(() -> java.util.Set.of(0, 9));
         Image image = new Image(display, WIDTH, HEIGHT);
         try {
             GC gc = new GC(image);
             try {
-                ide.view().render(gc, WIDTH, HEIGHT);
+                ide.view.render(gc, WIDTH, HEIGHT);
             } finally {
                 gc.dispose();
             }
@@ -128,8 +128,8 @@ class DockingLessonPicturesTest {
             Screenshot.write(d, images.resolve(name));
         } finally {
             image.dispose();
-            ide.view().setHighlighted(driven);
-            ide.view().setTrackRobot(true);
+            ide.view.setHighlighted(driven);
+            ide.view.setTrackRobot(true);
         }
     }
 }

@@ -41,7 +41,7 @@ class EmptyFileGuiTest {
     @ValueSource(strings = {"", "  \n\n", "<?xml version=\"1.0\"?>\n<!-- my first robot -->\n"})
     void anEmptyFileShowsNoErrorAndNoOutlineOfTheScriptBefore(String empty) throws Exception {
         Gui.open(ide, Gui.example("hello-snake.xml"));
-        Gui.pump(() -> ide.program() != null && ide.outline().control().getItemCount() > 0, "hello-snake's outline");
+        Gui.pump(() -> ide.program() != null && ide.outline.control().getItemCount() > 0, "hello-snake's outline");
 
         Path f = Files.createTempDirectory("parpe-empty").resolve("mine.xml");
         Files.writeString(f, empty);
@@ -50,28 +50,28 @@ class EmptyFileGuiTest {
         Gui.pump(() -> ide.validations() > before, "the empty file's check");
         Gui.settle();
         assertEquals(0, ide.problems().shown().size(), "Problems is empty: " + ide.problems().shown());
-        assertEquals(0, ide.outline().control().getItemCount(), "no outline of the script before");
+        assertEquals(0, ide.outline.control().getItemCount(), "no outline of the script before");
         assertNull(ide.program());
-        String status = ide.status().message();
+        String status = ide.status.message();
         assertTrue(status.startsWith("The file is empty"), "the status bar says how to begin: " + status);
         assertFalse(status.contains("error"), status);
 
         // typed away: the text of a script deleted in the editor is an empty file too
         Gui.open(ide, Gui.example("hello-snake.xml"));
-        Gui.pump(() -> ide.program() != null && ide.outline().control().getItemCount() > 0, "hello-snake again");
+        Gui.pump(() -> ide.program() != null && ide.outline.control().getItemCount() > 0, "hello-snake again");
         int typed = ide.validations();
-        ide.editor().document().set(empty);
+        ide.editor.document().set(empty);
         Gui.pump(() -> ide.validations() > typed, "the check of the emptied text");
         Gui.settle();
         assertEquals(0, ide.problems().shown().size(), "Problems is empty: " + ide.problems().shown());
-        assertEquals(0, ide.outline().control().getItemCount(), "the deleted script's outline is gone");
+        assertEquals(0, ide.outline.control().getItemCount(), "the deleted script's outline is gone");
         assertNull(ide.program());
 
         AtomicReference<RunOutcome> end = new AtomicReference<>();
-        ide.toolbar().setTarget(RunOn.SIMULATOR);
-        ide.runs().run(false, 1, end::set);
+        ide.toolbar.setTarget(RunOn.SIMULATOR);
+        ide.runs.run(false, 1, end::set);
         assertEquals(RunOutcome.Status.ERROR, end.get().status());
-        assertTrue(ide.status().message().startsWith("Cannot run: the file is empty"), ide.status().message());
+        assertTrue(ide.status.message().startsWith("Cannot run: the file is empty"), ide.status.message());
         assertEquals(0, ide.problems().shown().size(), "Run adds no error either: " + ide.problems().shown());
         IdeAccess.dontSave(ide);
     }

@@ -34,7 +34,7 @@ class FirstStartGuiTest {
     /** The tutorials open: windows of their own, and the one docked in the IDE (where the screen has no room beside it). */
     private long tutorials() {
         return Arrays.stream(Gui.display().getShells()).filter(s -> !s.isDisposed() && "PARPE tutorial".equals(s.getText()))
-                .count() + (ide.shell().isDisposed() || ide.tutorialDock().tutorial() == null ? 0 : 1);
+                .count() + (ide.shell.isDisposed() || ide.tutorialDock.tutorial() == null ? 0 : 1);
     }
 
     @Test
@@ -44,23 +44,23 @@ class FirstStartGuiTest {
         ide.open(null, false);
         Gui.settle();
         assertEquals(1, tutorials(), "the tutorial is offered at the very first start");
-        assertTrue(ide.editor().document().get().contains("Help > Tutorial"), "the new script points to the tutorial");
-        ide.shell().dispose();
+        assertTrue(ide.editor.document().get().contains("Help > Tutorial"), "the new script points to the tutorial");
+        ide.shell.dispose();
         assertEquals(0, tutorials(), "the tutorial closes with the IDE");
         ide = new IdeWindow(Gui.display(), new Prefs(home));
         ide.open(null, false);
         Gui.settle();
         assertEquals(0, tutorials(), "only the first start opens it");
-        org.eclipse.swt.widgets.MenuItem atStart = menuItem(ide.shell().getMenuBar(), "Open the Tutorial at Every Start");
+        org.eclipse.swt.widgets.MenuItem atStart = menuItem(ide.shell.getMenuBar(), "Open the Tutorial at Every Start");
         assertTrue(!atStart.getSelection(), "off unless asked for");
         atStart.setSelection(true);
         atStart.notifyListeners(org.eclipse.swt.SWT.Selection, new org.eclipse.swt.widgets.Event());
-        ide.shell().dispose();
+        ide.shell.dispose();
         ide = new IdeWindow(Gui.display(), new Prefs(home));
         ide.open(null, false);
         Gui.settle();
         assertEquals(1, tutorials(), "the preference opens it at every start");
-        assertTrue(menuItem(ide.shell().getMenuBar(), "Open the Tutorial at Every Start").getSelection());
+        assertTrue(menuItem(ide.shell.getMenuBar(), "Open the Tutorial at Every Start").getSelection());
     }
 
     private static org.eclipse.swt.widgets.MenuItem menuItem(org.eclipse.swt.widgets.Menu menu, String text) {
@@ -83,19 +83,19 @@ class FirstStartGuiTest {
         ide = Gui.openIde(Files.createTempDirectory("parpe-estop"));
         Gui.open(ide, Gui.example("hello-snake.xml"));
         Gui.pump(() -> ide.program() != null, "the example to load");
-        ide.toolbar().setSpeed(Speed.REAL_TIME);
+        ide.toolbar.setSpeed(Speed.REAL_TIME);
         AtomicReference<RunOutcome> outcome = new AtomicReference<>();
-        ide.runs().run(false, -1, outcome::set);
-        Gui.pump(() -> ide.runs().controller().status() != null, "the run to start");
-        ide.runs().emergencyStop();
+        ide.runs.run(false, -1, outcome::set);
+        Gui.pump(() -> ide.runs.controller().status() != null, "the run to start");
+        ide.runs.emergencyStop();
         Gui.pump(() -> outcome.get() != null, "the emergency stop to end the run");
-        assertTrue(ide.status().message().startsWith("Emergency stop at t = "), ide.status().message());
+        assertTrue(ide.status.message().startsWith("Emergency stop at t = "), ide.status.message());
         outcome.set(null);
-        ide.runs().run(false, -1, outcome::set);
-        Gui.pump(() -> ide.runs().controller().status() != null && ide.runs().running(), "the next run to start");
-        ide.runs().stop();
+        ide.runs.run(false, -1, outcome::set);
+        Gui.pump(() -> ide.runs.controller().status() != null && ide.runs.running(), "the next run to start");
+        ide.runs.stop();
         Gui.pump(() -> outcome.get() != null, "Stop to end the run");
-        assertTrue(ide.status().message().startsWith("Run stopped at t = "), ide.status().message());
+        assertTrue(ide.status.message().startsWith("Run stopped at t = "), ide.status.message());
     }
 
     /**
@@ -105,7 +105,7 @@ class FirstStartGuiTest {
     @Test
     void theQuickReferenceIsATableWhoseColumnsShowEveryCell() throws Exception {
         ide = Gui.openIde(Files.createTempDirectory("parpe-help"));
-        org.eclipse.swt.widgets.Shell help = QuickReference.open(ide.shell());
+        org.eclipse.swt.widgets.Shell help = QuickReference.open(ide.shell);
         try {
             Gui.settle();
             org.eclipse.swt.widgets.Table t = Arrays.stream(help.getChildren()).filter(c -> c instanceof org.eclipse.swt.widgets.Table)

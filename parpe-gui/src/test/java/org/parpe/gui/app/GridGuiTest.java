@@ -45,7 +45,7 @@ class GridGuiTest {
     static void openWindow() throws Exception {
         home = Files.createTempDirectory("parpe-grid-test");
         ide = Gui.openIde(home);
-        ide.files().answerWith((title, message, buttons) -> 1);
+        ide.files.answerWith((title, message, buttons) -> 1);
     }
 
     @AfterAll
@@ -60,15 +60,15 @@ class GridGuiTest {
      */
     @BeforeEach
     void openTheExampleCopy() {
-        ide.files().openExample(Gui.example("gait-table-12.xml"));
-        Gui.pump(() -> !ide.files().reading() && ide.files().example() != null && !ide.files().dirty()
+        ide.files.openExample(Gui.example("gait-table-12.xml"));
+        Gui.pump(() -> !ide.files.reading() && ide.files.example() != null && !ide.files.dirty()
                 && grid().visible() && grid().widget().getColumnCount() == 15
                 && "12".equals(grid().widget().getColumn(13).getText()) && "travel".equals(grid().table().name()),
                 "the example copy and its grid, headed by module IDs once the script has loaded");
     }
 
     private static GridPane grid() {
-        return ide.grid();
+        return ide.grid;
     }
 
     /** Sends a mouse press on the cell at {@code row}, table column {@code column} (0 is the step number). */
@@ -93,7 +93,7 @@ class GridGuiTest {
     }
 
     private static String line(int lineNumber) {
-        String[] lines = ide.editor().document().get().split("\n", -1);
+        String[] lines = ide.editor.document().get().split("\n", -1);
         return lines[lineNumber - 1];
     }
 
@@ -103,7 +103,7 @@ class GridGuiTest {
     }
 
     private static int lineOf(String needle, boolean start) {
-        String[] lines = ide.editor().document().get().split("\n", -1);
+        String[] lines = ide.editor.document().get().split("\n", -1);
         for (int i = 0; i < lines.length; i++) {
             if (start ? lines[i].trim().startsWith(needle) : lines[i].contains(needle)) {
                 return i + 1;
@@ -116,11 +116,11 @@ class GridGuiTest {
     void anExampleOpensAsACopyWithItsTableInTheGrid() throws Exception {
         Path example = Gui.example("gait-table-12.xml");
         String before = Files.readString(example);
-        ide.files().openExample(example);
-        Gui.pump(() -> !ide.files().reading() && ide.files().example() != null && grid().visible()
+        ide.files.openExample(example);
+        Gui.pump(() -> !ide.files.reading() && ide.files.example() != null && grid().visible()
                 && grid().widget().getColumnCount() == 15 && "12".equals(grid().widget().getColumn(13).getText()),
                 "the example copy and its grid, headed by module IDs once the script has loaded");
-        assertNull(ide.files().file(), "an example opens as an untitled copy");
+        assertNull(ide.files.file(), "an example opens as an untitled copy");
         assertEquals("travel", grid().table().name());
         assertEquals(8, grid().widget().getItemCount());
         assertEquals(15, grid().widget().getColumnCount(), "step, times, 12 modules and the filler");
@@ -132,13 +132,13 @@ class GridGuiTest {
     @Test
     void editingACellChangesOnlyThatEntryInTheText() {
         int rowLine = lineOf("-15,  15,  15,  15,  15, -15", true);
-        String[] lines = ide.editor().document().get().split("\n", -1);
+        String[] lines = ide.editor.document().get().split("\n", -1);
         click(1, 2, 0);
         assertEquals(1, grid().selection().r0());
         assertEquals(1, grid().selection().c0(), "grid column 1 is module 1");
         var entry = grid().table().cell(1, 0);
-        assertEquals(entry.start(), ide.editor().viewer().getSelectedRange().x, "the focused cell's entry is selected in the text");
-        assertEquals(3, ide.editor().viewer().getSelectedRange().y);
+        assertEquals(entry.start(), ide.editor.viewer().getSelectedRange().x, "the focused cell's entry is selected in the text");
+        assertEquals(3, ide.editor.viewer().getSelectedRange().y);
         key('7', '7');
         Text cell = grid().cellEditor();
         assertNotNull(cell, "typing in a cell opens its editor");
@@ -146,7 +146,7 @@ class GridGuiTest {
         cell.notifyListeners(SWT.DefaultSelection, new Event());
         Gui.pump(() -> line(rowLine).trim().startsWith("7.5,"), "the text to change");
         assertEquals(lines[rowLine - 1].length(), line(rowLine).length(), "the entry keeps its room: columns stay aligned");
-        String[] now = ide.editor().document().get().split("\n", -1);
+        String[] now = ide.editor.document().get().split("\n", -1);
         for (int i = 0; i < lines.length; i++) {
             if (i != rowLine - 1) {
                 assertEquals(lines[i], now[i], "line " + (i + 1) + " should not change");
@@ -154,15 +154,15 @@ class GridGuiTest {
         }
         assertNull(grid().cellEditor(), "Enter closes the cell editor");
         assertEquals(2, grid().selection().r0(), "Enter moves down");
-        ide.editor().run(ITextOperationTarget.UNDO);
+        ide.editor.run(ITextOperationTarget.UNDO);
         Gui.pump(() -> "-15".equals(grid().widget().getItem(1).getText(2)), "Undo to bring the grid back");
     }
 
     @Test
     void editingTheTextChangesTheGrid() throws Exception {
         int rowLine = lineOf("-15, -15, -15, -15,  15,  15,  15,  15", true);
-        int offset = ide.editor().document().getLineOffset(rowLine - 1) + line(rowLine).indexOf("-15, -15, -15, -15");
-        ide.editor().document().replace(offset, 3, "-20");
+        int offset = ide.editor.document().getLineOffset(rowLine - 1) + line(rowLine).indexOf("-15, -15, -15, -15");
+        ide.editor.document().replace(offset, 3, "-20");
         Gui.pump(() -> "-20".equals(grid().widget().getItem(4).getText(2)), "the grid to show -20");
         assertEquals("-20", grid().table().cell(4, 0).text());
     }
@@ -189,8 +189,8 @@ class GridGuiTest {
         grid().widget().notifyListeners(SWT.MouseMove, move);
         assertEquals(d.message(), grid().widget().getToolTipText(), "the cell shows the same message as the text");
         assertTrue(grid().status().contains("1 cell has a problem"), grid().status());
-        Gui.screenshot(ide.shell(), "grid-invalid-cell.png");
-        ide.editor().run(ITextOperationTarget.UNDO);
+        Gui.screenshot(ide.shell, "grid-invalid-cell.png");
+        ide.editor.run(ITextOperationTarget.UNDO);
         Gui.pump(() -> ide.problems().errorCount() == 0 && !line(line).contains("$nowhere"), "Undo to remove the bad entry");
     }
 
@@ -201,15 +201,15 @@ class GridGuiTest {
         assertEquals(8, grid().selection().rows());
         assertEquals(12, grid().selection().columns());
         AtomicReference<String> dialog = new AtomicReference<>();
-        ide.shell().getDisplay().asyncExec(() -> answerWaveDialog("20", "0.125", dialog));
+        ide.shell.getDisplay().asyncExec(() -> answerWaveDialog("20", "0.125", dialog));
         button("Wave\u2026").notifyListeners(SWT.Selection, new Event());
         assertEquals("Fill with a travelling wave", dialog.get(), "the Wave\u2026 button should open its dialog");
         Gui.pump(() -> "14.1".equals(grid().widget().getItem(0).getText(3)), "the wave in the grid");
         assertEquals("20", grid().widget().getItem(2).getText(2), "20 sin(2pi 2/8)");
-        assertTrue(ide.editor().document().get().contains("<!--        module: 1    2    3"), "the comment above the table stays");
+        assertTrue(ide.editor.document().get().contains("<!--        module: 1    2    3"), "the comment above the table stays");
 
         click(6, 2, 0);
-        Clipboard cb = new Clipboard(ide.shell().getDisplay());
+        Clipboard cb = new Clipboard(ide.shell.getDisplay());
         cb.setContents(new Object[] {"1\t2\n3\t4\n"}, new Transfer[] {TextTransfer.getInstance()});
         cb.dispose();
         grid().widget().setFocus();
@@ -225,13 +225,13 @@ class GridGuiTest {
         assertEquals("1", grid().table().cell(6, 0).text(), "a decimal comma would split the entry: left out");
         assertTrue(grid().status().contains("1 entry was left out"), grid().status());
         grid().select(0, 1, 7, 12);
-        Gui.screenshot(ide.shell(), "grid-wave.png");
+        Gui.screenshot(ide.shell, "grid-wave.png");
     }
 
     /** Fills in the wave dialog once it is up (it runs its own event loop) and presses OK. */
     private static void answerWaveDialog(String amplitude, String phase, AtomicReference<String> title) {
-        for (Shell s : ide.shell().getDisplay().getShells()) {
-            if (s != ide.shell() && s.isVisible() && !s.isDisposed()) {
+        for (Shell s : ide.shell.getDisplay().getShells()) {
+            if (s != ide.shell && s.isVisible() && !s.isDisposed()) {
                 title.set(s.getText());
                 java.util.List<Text> fields = new java.util.ArrayList<>();
                 java.util.List<Button> buttons = new java.util.ArrayList<>();
@@ -243,7 +243,7 @@ class GridGuiTest {
                 return;
             }
         }
-        ide.shell().getDisplay().timerExec(50, () -> answerWaveDialog(amplitude, phase, title));
+        ide.shell.getDisplay().timerExec(50, () -> answerWaveDialog(amplitude, phase, title));
     }
 
     private static void collect(Composite c, java.util.List<Text> fields, java.util.List<Button> buttons) {
@@ -269,12 +269,12 @@ class GridGuiTest {
 
     @Test
     void rowButtonsAddAndRemoveRowsAndUndoTakesThemBack() throws Exception {
-        String before = ide.editor().document().get();
+        String before = ide.editor.document().get();
         click(2, 3, 0);
         button("+Row").notifyListeners(SWT.Selection, new Event());
         Gui.pump(() -> grid().widget().getItemCount() == 9, "a ninth row");
         assertEquals(grid().table().texts().get(2), grid().table().texts().get(3), "the new row is a copy of the selected one");
-        String after = ide.editor().document().get();
+        String after = ide.editor.document().get();
         assertEquals(before.substring(0, before.indexOf("<travel>")), after.substring(0, after.indexOf("<travel>")),
                 "the text before the table is unchanged");
         click(0, 0, 0);
@@ -283,9 +283,9 @@ class GridGuiTest {
                 "clicking step numbers selects the rows' module cells");
         button("\u2212Rows").notifyListeners(SWT.Selection, new Event());
         Gui.pump(() -> grid().widget().getItemCount() == 7, "two rows fewer");
-        ide.editor().run(ITextOperationTarget.UNDO);
-        ide.editor().run(ITextOperationTarget.UNDO);
-        assertEquals(before, ide.editor().document().get(), "two Undos should restore the text");
+        ide.editor.run(ITextOperationTarget.UNDO);
+        ide.editor.run(ITextOperationTarget.UNDO);
+        assertEquals(before, ide.editor.document().get(), "two Undos should restore the text");
         Gui.pump(() -> grid().widget().getItemCount() == 8, "the grid to show the 8 rows again");
 
         click(3, 5, 0);
@@ -295,23 +295,23 @@ class GridGuiTest {
         assertEquals("", grid().widget().getItem(0).getText(13), "module 12 has no entry now");
         Gui.pump(() -> grid().status().contains("has 11 angles but group 'snake' has 12 modules"),
                 "the row-length error of the script under the grid; it says: " + grid().status());
-        ide.editor().run(ITextOperationTarget.UNDO);
-        assertEquals(before, ide.editor().document().get(), "Undo should restore the column");
+        ide.editor.run(ITextOperationTarget.UNDO);
+        assertEquals(before, ide.editor.document().get(), "Undo should restore the column");
     }
 
     @Test
     void theCaretInAnotherTableShowsThatTable() throws Exception {
-        String doc = ide.editor().document().get();
+        String doc = ide.editor.document().get();
         int end = doc.indexOf("</automata>");
-        ide.editor().document().replace(end, 0, "  <second>1, 2; 3, 4</second>\n  ");
+        ide.editor.document().replace(end, 0, "  <second>1, 2; 3, 4</second>\n  ");
         Gui.pump(() -> grid().tableNames().equals(java.util.List.of("travel", "second")), "the grid to find the new table");
         assertEquals("travel", grid().table().name(), "the grid stays on its table");
-        int at = ide.editor().document().get().indexOf("3, 4</second>");
-        ide.editor().widget().setCaretOffset(at);
+        int at = ide.editor.document().get().indexOf("3, 4</second>");
+        ide.editor.widget().setCaretOffset(at);
         Gui.pump(() -> "second".equals(grid().table().name()), "the grid to follow the caret into 'second'");
         assertEquals("3", grid().widget().getItem(1).getText(2));
-        ide.editor().run(ITextOperationTarget.UNDO);
-        Gui.pump(() -> "travel".equals(grid().table().name()) && !ide.editor().document().get().contains("<second>"),
+        ide.editor.run(ITextOperationTarget.UNDO);
+        Gui.pump(() -> "travel".equals(grid().table().name()) && !ide.editor.document().get().contains("<second>"),
                 "Undo to remove 'second'");
     }
 
@@ -321,16 +321,16 @@ class GridGuiTest {
         String before = Files.readString(example);
         Path target = home.resolve("my-gait.xml");
         AtomicReference<String> proposed = new AtomicReference<>();
-        ide.files().chooseSaveTargetWith((folder, name) -> {
+        ide.files.chooseSaveTargetWith((folder, name) -> {
             proposed.set(name);
             assertTrue(!folder.startsWith(example.getParent().getParent()), "Save should not start in the install folder: " + folder);
             return target;
         });
-        assertTrue(ide.files().save());
+        assertTrue(ide.files.save());
         assertEquals("gait-table-12.xml", proposed.get());
-        assertEquals(ide.editor().document().get(), Files.readString(target));
+        assertEquals(ide.editor.document().get(), Files.readString(target));
         assertEquals(before, Files.readString(example), "the example was written");
-        assertEquals(target, ide.files().file());
+        assertEquals(target, ide.files.file());
     }
 
     @Test
@@ -339,8 +339,8 @@ class GridGuiTest {
         Files.writeString(script, Files.readString(Gui.example("gait-table-12.xml")));
         Files.setPosixFilePermissions(script, PosixFilePermissions.fromString("rwxrw-r--"));
         Gui.open(ide, script);
-        ide.editor().document().replace(0, 0, "<!-- edited -->\n");
-        assertTrue(ide.files().save());
+        ide.editor.document().replace(0, 0, "<!-- edited -->\n");
+        assertTrue(ide.files.save());
         assertTrue(Files.readString(script).startsWith("<!-- edited -->"));
         assertEquals("rwxrw-r--", PosixFilePermissions.toString(Files.getPosixFilePermissions(script)));
     }

@@ -76,16 +76,16 @@ public final class Gui {
 
     /** Stops the run if any and waits until its end has been reported to the window (through asyncExec). */
     static void endRun(IdeWindow ide) {
-        boolean started = ide.runs().running() || ide.runs().controller().status() != null;
-        ide.runs().stop();
-        pump(() -> !ide.runs().running() && (!started || ide.runs().lastOutcome() != null), "the run to end");
+        boolean started = ide.runs.running() || ide.runs.controller().status() != null;
+        ide.runs.stop();
+        pump(() -> !ide.runs.running() && (!started || ide.runs.lastOutcome() != null), "the run to end");
     }
 
     /** Opens {@code file} in {@code ide} and waits until it is in the editor (files are read in the background). */
     public static void open(IdeWindow ide, Path file) {
         Path abs = file.toAbsolutePath().normalize();
-        ide.files().openPath(abs);
-        pump(() -> !ide.files().reading() && abs.equals(ide.files().file()), "opening " + file.getFileName());
+        ide.files.openPath(abs);
+        pump(() -> !ide.files.reading() && abs.equals(ide.files.file()), "opening " + file.getFileName());
     }
 
     public static Path example(String name) {
@@ -116,16 +116,16 @@ public final class Gui {
     /** As {@link #openIde(Path)}, in a window of {@code width} × {@code height} pixels at the screen's corner. */
     public static IdeWindow openIde(Path home, int width, int height) {
         IdeWindow ide = openIde(home);
-        ide.shell().setBounds(0, 0, width, height);
+        ide.shell.setBounds(0, 0, width, height);
         settle();
         return ide;
     }
 
     /** Ends any run of {@code ide} and closes its window (for {@code @AfterAll}). */
     public static void closeIde(IdeWindow ide) {
-        if (ide != null && !ide.shell().isDisposed()) {
+        if (ide != null && !ide.shell.isDisposed()) {
             endRun(ide);
-            ide.shell().dispose();
+            ide.shell.dispose();
         }
     }
 

@@ -95,16 +95,16 @@ class HandDockingGuiTest {
         assertNotNull(q);
         String asked = text(q);
         assertTrue(asked.contains(expected), asked);
-        assertTrue(ide.runs().controller().paused(), "the run is paused while the question is open");
-        long tick = ide.runs().controller().engine().tick();
+        assertTrue(ide.runs.controller().paused(), "the run is paused while the question is open");
+        long tick = ide.runs.controller().engine().tick();
         Gui.settle();
-        assertEquals(tick, ide.runs().controller().engine().tick(), "the run waits for the answer");
-        Gui.screenshot(ide.shell(), screenshot); // the window: paused, Resume offered, the status line says why
+        assertEquals(tick, ide.runs.controller().engine().tick(), "the run waits for the answer");
+        Gui.screenshot(ide.shell, screenshot); // the window: paused, Resume offered, the status line says why
         org.parpe.gui.automation.Screenshot.save(q, Path.of(System.getProperty("parpe.artefacts",
                 "target/gui-test-artefacts"), "question-" + screenshot));
         press(q, "Continue");
         Gui.pump(() -> q.isDisposed(), "the question to close");
-        Gui.pump(() -> !ide.runs().controller().paused() || !ide.runs().running(), "the run to go on");
+        Gui.pump(() -> !ide.runs.controller().paused() || !ide.runs.running(), "the run to go on");
     }
 
     @Test
@@ -113,7 +113,7 @@ class HandDockingGuiTest {
         Path script = dir.resolve("dock.xml");
         Files.writeString(script, SCRIPT);
         int before = ide.validations();
-        ide.files().openPath(script);
+        ide.files.openPath(script);
         Gui.pump(() -> ide.validations() > before && ide.program() != null, "the script to load");
         assertEquals(0L, ide.problems().errorCount(), () -> "problems: " + ide.problems().shown());
         try (PtyPair pty = PtyPair.start(dir.resolve("a"), dir.resolve("b"));
@@ -122,21 +122,21 @@ class HandDockingGuiTest {
             Path profile = dir.resolve("profile.xml");
             Files.writeString(profile, "<hardware protocol=\"dxl2\" baud=\"1000000\">\n"
                     + "  <servo module=\"0\" id=\"5\"/>\n  <servo module=\"1\" id=\"6\"/>\n</hardware>\n");
-            ide.toolbar().setTarget(RunOn.HARDWARE);
-            ide.toolbar().setHardwareProfile(profile.toString());
-            ide.toolbar().setPort(pty.a().toString());
-            ide.toolbar().setSpeed(Speed.MAX);
+            ide.toolbar.setTarget(RunOn.HARDWARE);
+            ide.toolbar.setHardwareProfile(profile.toString());
+            ide.toolbar.setPort(pty.a().toString());
+            ide.toolbar.setSpeed(Speed.MAX);
             AtomicReference<RunOutcome> outcome = new AtomicReference<>();
-            ide.runs().run(false, -1, outcome::set);
+            ide.runs.run(false, -1, outcome::set);
             answer("arms plate 1 of module 1: join that plate to the plate it meets", "hand-docking-join.png");
             answer("releases plate 1 of module 1: part that plate from the one it holds", "hand-docking-part.png");
             Gui.pump(() -> outcome.get() != null, "the run to end");
             assertEquals(RunOutcome.Status.COMPLETED, outcome.get().status(), outcome.get().message());
             assertEquals(0.6, outcome.get().time(), 0.02);
         } finally {
-            ide.toolbar().setHardwareProfile("");
-            ide.toolbar().setPort("");
-            ide.toolbar().setTarget(RunOn.SIMULATOR);
+            ide.toolbar.setHardwareProfile("");
+            ide.toolbar.setPort("");
+            ide.toolbar.setTarget(RunOn.SIMULATOR);
         }
     }
 }

@@ -104,10 +104,10 @@ class HardwareDialogGuiTest {
                     })) {
             assertTrue(emu.backDrive(3, 25));
             // Posing by hand with the dialog open: the Pose panel is shown.
-            ide.bottom().showPose();
+            ide.bottom.showPose();
             Gui.settle();
-            HardwareDialog d = HardwareDialog.open(ide.hardware());
-            assertTrue(d == HardwareDialog.open(ide.hardware()), "a second Run > Hardware… brings the same dialog");
+            HardwareDialog d = HardwareDialog.open(ide.hardware);
+            assertTrue(d == HardwareDialog.open(ide.hardware), "a second Run > Hardware… brings the same dialog");
             d.widgets().port().setText(pty.a().toString());
             // Scan tries every protocol and rate; a pty ignores the rate, so Dynamixel's factory 57 600 answers.
             click(d, "Scan");
@@ -117,10 +117,10 @@ class HardwareDialogGuiTest {
             assertEquals("dxl2", d.widgets().protocol().getText());
             assertEquals("57600", d.widgets().baud().getText());
             // Placed over the IDE window, not at the screen's corner over the menu.
-            assertTrue(d.shell().getLocation().x > ide.shell().getLocation().x
-                    && d.shell().getLocation().y > ide.shell().getLocation().y, d.shell().getLocation().toString());
+            assertTrue(d.shell().getLocation().x > ide.shell.getLocation().x
+                    && d.shell().getLocation().y > ide.shell.getLocation().y, d.shell().getLocation().toString());
             // Kept open, it leaves the Pose panel's Capture button free.
-            Button capture = button((Composite) ide.pose().control(), "&Capture");
+            Button capture = button((Composite) ide.pose.control(), "&Capture");
             assertNotNull(capture);
             org.eclipse.swt.graphics.Rectangle at = capture.getDisplay().map(capture.getParent(), null, capture.getBounds());
             assertTrue(at.width > 0 && at.height > 0, "the Capture button is laid out: " + at);
@@ -132,7 +132,7 @@ class HardwareDialogGuiTest {
             assertEquals("1", d.widgets().table().getItem(0).getText(0));
             assertEquals("xl430-w250 (1060)", d.widgets().table().getItem(0).getText(1));
             String status = "Hardware: 3 servos connected (DXL2, " + pty.a() + ")";
-            Gui.pump(() -> ide.status().hardware().equals(status), "the status bar to say " + status);
+            Gui.pump(() -> ide.status.hardware().equals(status), "the status bar to say " + status);
 
             d.widgets().table().setSelection(1);
             d.widgets().table().notifyListeners(SWT.Selection, new Event());
@@ -176,7 +176,7 @@ class HardwareDialogGuiTest {
 
             Path profile = dir.resolve("saved.xml");
             d.saveProfile(profile);
-            Gui.pump(() -> profile.toString().equals(ide.toolbar().hardwareProfile()), "the profile to be selected");
+            Gui.pump(() -> profile.toString().equals(ide.toolbar.hardwareProfile()), "the profile to be selected");
             DiagnosticList problems = new DiagnosticList();
             HardwareProfile p = ProfileReader.read(profile, problems);
             assertNotNull(p, problems.all().toString());
@@ -192,7 +192,7 @@ class HardwareDialogGuiTest {
             Files.writeString(limited, "<hardware protocol=\"dxl2\" port=\"" + pty.a() + "\" baud=\"1000000\">\n"
                     + "  <servo module=\"0\" id=\"3\" model=\"xl430-w250\" zero=\"10\" direction=\"-1\" min=\"-60\" max=\"5\"/>\n"
                     + "</hardware>\n");
-            ide.toolbar().setHardwareProfile(limited.toString());
+            ide.toolbar.setHardwareProfile(limited.toString());
             d.widgets().table().setSelection(2);
             d.widgets().table().notifyListeners(SWT.Selection, new Event());
             Gui.pump(() -> d.widgets().jogBox().isEnabled(), "the jog box for servo 3 again");
@@ -200,34 +200,34 @@ class HardwareDialogGuiTest {
             assertEquals(700, d.widgets().jogBox().getMaximum(), "servo angle of joint min -60°: 10 + 60 = 70°");
             assertEquals(700, d.widgets().jogBox().getSelection(), "servo 3 at 81.8° shows the nearest allowed angle");
             assertTrue(d.widgets().jogValue().getText().startsWith("module 0's limits 5"), d.widgets().jogValue().getText());
-            ide.toolbar().setHardwareProfile(profile.toString());
+            ide.toolbar.setHardwareProfile(profile.toString());
 
             Gui.open(ide, Gui.example("hello-snake.xml"));
-            ide.toolbar().setTarget(RunOn.HARDWARE);
+            ide.toolbar.setTarget(RunOn.HARDWARE);
             AtomicReference<RunOutcome> outcome = new AtomicReference<>();
-            ide.runs().run(false, 1, outcome::set);
-            ide.toolbar().setTarget(RunOn.SIMULATOR);
+            ide.runs.run(false, 1, outcome::set);
+            ide.toolbar.setTarget(RunOn.SIMULATOR);
             assertNotNull(outcome.get(), "a hardware run is refused at once while the dialog holds the bus");
             assertEquals(RunOutcome.Status.ERROR, outcome.get().status());
             assertTrue(outcome.get().message().contains("Hardware dialog holds the bus"), outcome.get().message());
 
-            org.eclipse.swt.widgets.Combo source = combo(ide.pose().control(), "Robot (limp)");
+            org.eclipse.swt.widgets.Combo source = combo(ide.pose.control(), "Robot (limp)");
             assertNotNull(source, "the Pose panel's source box");
             source.select(1);
             source.notifyListeners(SWT.Selection, new Event());
-            assertTrue(ide.pose().posingTheRobot(), "posing the connected robot");
+            assertTrue(ide.pose.posingTheRobot(), "posing the connected robot");
             click(d, "Close");
             Gui.pump(() -> d.shell().isDisposed(), "the dialog to close");
             // It used to stay on "Robot (limp)" with nothing connected.
-            assertFalse(ide.pose().posingTheRobot(), "the Pose panel no longer poses a robot that is gone");
-            assertTrue(ide.hardware().hardwareDialog().session().awaitClosed(5000), "the bus thread ends");
-            Gui.pump(() -> !ide.status().hardware().contains("connected ("), "the status bar to drop the dialog's bus");
+            assertFalse(ide.pose.posingTheRobot(), "the Pose panel no longer poses a robot that is gone");
+            assertTrue(ide.hardware.hardwareDialog().session().awaitClosed(5000), "the bus thread ends");
+            Gui.pump(() -> !ide.status.hardware().contains("connected ("), "the status bar to drop the dialog's bus");
         }
     }
 
     @Test
     void aMissingPortIsSaidInWords() {
-        HardwareDialog d = HardwareDialog.open(ide.hardware());
+        HardwareDialog d = HardwareDialog.open(ide.hardware);
         d.widgets().port().setText(dir.resolve("no-such-port").toString());
         d.widgets().protocol().select(d.widgets().protocol().indexOf("sts"));
         d.widgets().baud().setText("1000000");

@@ -39,16 +39,16 @@ public final class IdeAccess {
      * panel's is recorded in {@code asked} as well and closed. True when the window would close.
      */
     public static boolean closeRequested(IdeWindow ide, java.util.List<String> asked, java.util.function.ToIntFunction<String> answer) {
-        ide.files().answerWith((title, message, buttons) -> {
+        ide.files.answerWith((title, message, buttons) -> {
             asked.add(title + ": " + message);
             return answer.applyAsInt(message);
         });
-        org.eclipse.swt.widgets.Display d = ide.shell().getDisplay();
+        org.eclipse.swt.widgets.Display d = ide.shell.getDisplay();
         boolean[] done = new boolean[1];
         Runnable[] watch = new Runnable[1];
         watch[0] = () -> {
             for (Shell s : d.getShells()) {
-                if (!s.isDisposed() && s != ide.shell() && s.getText().startsWith("Unsaved")) {
+                if (!s.isDisposed() && s != ide.shell && s.getText().startsWith("Unsaved")) {
                     asked.add(s.getText());
                     s.dispose();
                 }
@@ -67,14 +67,14 @@ public final class IdeAccess {
 
     /** The chart of the Joint angles panel. */
     public static org.eclipse.swt.widgets.Control plotChart(IdeWindow ide) {
-        return ide.plots().chart().control();
+        return ide.plots.chart().control();
     }
 
     /** Ends any run and closes the window. */
     /** Help → Tutorial, docked beside the outline (as where the screen has no room for its own window); fails if it opened elsewhere. */
     public static void openTutorialDocked(IdeWindow ide) {
-        ide.tutorialDock().open(dock -> TutorialWindow.docked(dock, Examples.tutorialFolder(), p -> { }, code -> { }));
-        org.junit.jupiter.api.Assertions.assertNotNull(ide.tutorialDock().tutorial(), "the docked tutorial");
+        ide.tutorialDock.open(dock -> TutorialWindow.docked(dock, Examples.tutorialFolder(), p -> { }, code -> { }));
+        org.junit.jupiter.api.Assertions.assertNotNull(ide.tutorialDock.tutorial(), "the docked tutorial");
     }
 
     public static void closeIde(IdeWindow ide) {
@@ -88,7 +88,7 @@ public final class IdeAccess {
 
     /** Answers "Don't Save" whenever the window asks about unsaved changes (File > New over an edited text). */
     public static void dontSave(IdeWindow ide) {
-        ide.files().answerWith((title, message, buttons) -> 1);
+        ide.files.answerWith((title, message, buttons) -> 1);
     }
 
     /** Runs the event loop until {@code done} holds (bounded). */
@@ -108,14 +108,14 @@ public final class IdeAccess {
 
     /** Whether a run is going on. */
     public static boolean running(IdeWindow ide) {
-        return ide.runs().running();
+        return ide.runs.running();
     }
 
     /** Runs the editor's script on {@code target} for {@code seconds} of simulated time, as fast as possible. */
     public static void run(IdeWindow ide, RunOn target, double seconds, Consumer<RunOutcome> onEnd) {
-        ide.toolbar().setTarget(target);
-        ide.toolbar().setSpeed(org.parpe.gui.run.Speed.MAX);
-        ide.runs().run(false, seconds, onEnd);
+        ide.toolbar.setTarget(target);
+        ide.toolbar.setSpeed(org.parpe.gui.run.Speed.MAX);
+        ide.runs.run(false, seconds, onEnd);
     }
 
     /** Stops the run, if any, and waits until its end has reached the window. */
@@ -130,7 +130,7 @@ public final class IdeAccess {
 
     /** The status bar's message. */
     public static String status(IdeWindow ide) {
-        return ide.status().message();
+        return ide.status.message();
     }
 
     /**
@@ -138,7 +138,7 @@ public final class IdeAccess {
      * user would, and waits until {@code servos} servos are listed.
      */
     public static void connectHardware(IdeWindow ide, String port, String protocol, int baud, int servos) {
-        HardwareDialog d = HardwareDialog.open(ide.hardware());
+        HardwareDialog d = HardwareDialog.open(ide.hardware);
         d.widgets().port().setText(port);
         d.widgets().protocol().select(d.widgets().protocol().indexOf(protocol));
         d.widgets().baud().setText(Integer.toString(baud));
@@ -163,7 +163,7 @@ public final class IdeAccess {
 
     /** Closes the Hardware dialog (and its bus) and waits until the bus is closed. */
     public static void closeHardware(IdeWindow ide) throws InterruptedException {
-        HardwareDialog d = ide.hardware().hardwareDialog();
+        HardwareDialog d = ide.hardware.hardwareDialog();
         if (d != null && !d.shell().isDisposed()) {
             d.shell().close();
             Gui.pump(() -> d.shell().isDisposed(), "the Hardware dialog to close");
@@ -185,54 +185,54 @@ public final class IdeAccess {
 
     /** Selects the simulated robot (a generator name) as the 3D view's picker does. */
     public static void robot(IdeWindow ide, String name) {
-        ide.viewBar().select(name);
+        ide.viewBar.select(name);
     }
 
     /** Chooses the world file {@code file} in the 3D view's World picker, as the window's runs then use it. */
     public static void world(IdeWindow ide, Path file) {
-        ide.viewBar().world().choose(file.toAbsolutePath().normalize());
+        ide.viewBar.world().choose(file.toAbsolutePath().normalize());
     }
 
     /** The IDE's run controller (its breakpoints, its pause, the engine of the run). */
     public static org.parpe.gui.run.RunController controller(IdeWindow ide) {
-        return ide.runs().controller();
+        return ide.runs.controller();
     }
 
     // The window's parts (IdeWindow's package-private getters).
 
     public static Shell shell(IdeWindow ide) {
-        return ide.shell();
+        return ide.shell;
     }
 
     public static ParslEditor editor(IdeWindow ide) {
-        return ide.editor();
+        return ide.editor;
     }
 
     /** The Diagram pane beside the 3D view. */
     public static DiagramPane diagram(IdeWindow ide) {
-        return ide.diagram();
+        return ide.diagram;
     }
 
     /** The gait-table grid beside the editor. */
     public static GridPane grid(IdeWindow ide) {
-        return ide.grid();
+        return ide.grid;
     }
 
     public static FileActions files(IdeWindow ide) {
-        return ide.files();
+        return ide.files;
     }
 
     public static RunActions runs(IdeWindow ide) {
-        return ide.runs();
+        return ide.runs;
     }
 
     /** The status bar ({@link #status} is its message). */
     public static StatusBar statusBar(IdeWindow ide) {
-        return ide.status();
+        return ide.status;
     }
 
     public static RunToolBar toolbar(IdeWindow ide) {
-        return ide.toolbar();
+        return ide.toolbar;
     }
 
     public static ProblemsView problems(IdeWindow ide) {
@@ -240,26 +240,26 @@ public final class IdeAccess {
     }
 
     public static View3D view(IdeWindow ide) {
-        return ide.view();
+        return ide.view;
     }
 
     public static ViewBar viewBar(IdeWindow ide) {
-        return ide.viewBar();
+        return ide.viewBar;
     }
 
     /** The Pose panel. */
     public static PosePanel pose(IdeWindow ide) {
-        return ide.pose();
+        return ide.pose;
     }
 
     /** Brings the Pose panel to the front. */
     public static void showPosePanel(IdeWindow ide) {
-        ide.bottom().showPose();
+        ide.bottom.showPose();
     }
 
     /** The Robot tab beside the 3D view. */
     public static RobotTab robotTab(IdeWindow ide) {
-        return ide.robotTab();
+        return ide.robotTab;
     }
 
     /** The last program that loaded, or null. */

@@ -36,14 +36,14 @@ class IdeGuiTest {
 
     @AfterAll
     static void closeWindow() {
-        if (ide != null && !ide.shell().isDisposed()) {
+        if (ide != null && !ide.shell.isDisposed()) {
             Gui.endRun(ide);
-            ide.shell().dispose();
+            ide.shell.dispose();
         }
     }
 
     private static double engineTime() {
-        var st = ide.runs().controller().status();
+        var st = ide.runs.controller().status();
         return st == null ? -1 : st.time();
     }
 
@@ -53,31 +53,31 @@ class IdeGuiTest {
         int before = ide.validations();
         Gui.pump(() -> ide.validations() > before && ide.program() != null, "teleop-dirwave.xml to load");
         assertEquals(0, ide.problems().errorCount(), "example has errors: " + ide.problems().shown());
-        ide.toolbar().setTarget(RunOn.SIMULATOR);
-        ide.toolbar().setSpeed(Speed.TIMES_10);
+        ide.toolbar.setTarget(RunOn.SIMULATOR);
+        ide.toolbar.setSpeed(Speed.TIMES_10);
         AtomicReference<RunOutcome> outcome = new AtomicReference<>();
-        ide.runs().run(false, -1, outcome::set);
+        ide.runs.run(false, -1, outcome::set);
         Gui.pump(() -> engineTime() >= 1.0, "1 s of simulated time");
-        assertFalse(ide.runs().driven().isEmpty(), "the wave should drive modules while direction = forward");
+        assertFalse(ide.runs.driven().isEmpty(), "the wave should drive modules while direction = forward");
         // The view draws on its own timer (about 30 frames a second): at x10 the engine may pass 1 s first.
-        Gui.pump(() -> ide.view().lastSnapshot() != null, "the 3D view to draw the robot");
-        assertNotNull(ide.view().lastSnapshot(), "the 3D view has drawn no robot");
-        assertFalse(ide.view().lastSnapshot().bodies().isEmpty());
+        Gui.pump(() -> ide.view.lastSnapshot() != null, "the 3D view to draw the robot");
+        assertNotNull(ide.view.lastSnapshot(), "the 3D view has drawn no robot");
+        assertFalse(ide.view.lastSnapshot().bodies().isEmpty());
 
-        assertTrue(ide.controls().set("direction", "stop"), "no 'direction' radio control in the panel");
+        assertTrue(ide.controls.set("direction", "stop"), "no 'direction' radio control in the panel");
         double changedAt = engineTime();
-        Gui.pump(() -> engineTime() > changedAt + 0.2 && ide.runs().driven().isEmpty(),
+        Gui.pump(() -> engineTime() > changedAt + 0.2 && ide.runs.driven().isEmpty(),
                 "the modules to stop being driven after direction = stop");
-        assertTrue(ide.controls().set("direction", "backward"));
-        Gui.pump(() -> engineTime() >= 3.0 && !ide.runs().driven().isEmpty(), "3 s of simulated time, driven backwards");
+        assertTrue(ide.controls.set("direction", "backward"));
+        Gui.pump(() -> engineTime() >= 3.0 && !ide.runs.driven().isEmpty(), "3 s of simulated time, driven backwards");
         assertEquals(0, ide.problems().errorCount(), "control changes refused: " + ide.problems().shown());
-        Gui.screenshot(ide.shell(), "teleop-running.png");
+        Gui.screenshot(ide.shell, "teleop-running.png");
 
-        ide.runs().stop();
+        ide.runs.stop();
         Gui.pump(() -> outcome.get() != null, "the run to stop");
         assertEquals(RunOutcome.Status.STOPPED, outcome.get().status(), outcome.get().message());
         assertTrue(outcome.get().time() >= 3.0);
-        assertFalse(ide.runs().running());
+        assertFalse(ide.runs.running());
     }
 
     @Test
@@ -93,23 +93,23 @@ class IdeGuiTest {
         }
         assertTrue(line > 0, "hello-snake.xml has no 'states=\"up, down\"' line to break");
         int before = ide.validations();
-        ide.editor().document().set(text.replace("states=\"up, down\"", "states=\"up, dwn\""));
+        ide.editor.document().set(text.replace("states=\"up, down\"", "states=\"up, dwn\""));
         Gui.pump(() -> ide.validations() > before, "validation of the edited text");
         assertTrue(ide.problems().errorCount() > 0, "no error for an undefined state");
-        List<ProblemAnnotation> marks = ide.editor().markers();
+        List<ProblemAnnotation> marks = ide.editor.markers();
         assertFalse(marks.isEmpty(), "no marker in the editor");
         int expected = line;
-        assertTrue(marks.stream().anyMatch(m -> m.isError() && ide.editor().lineOf(m) == expected),
+        assertTrue(marks.stream().anyMatch(m -> m.isError() && ide.editor.lineOf(m) == expected),
                 "no error marker on line " + expected + "; markers on lines "
-                        + marks.stream().map(ide.editor()::lineOf).toList());
-        assertTrue(ide.files().dirty(), "an edited file should be marked dirty");
-        Gui.screenshot(ide.shell(), "broken-script.png");
+                        + marks.stream().map(ide.editor::lineOf).toList());
+        assertTrue(ide.files.dirty(), "an edited file should be marked dirty");
+        Gui.screenshot(ide.shell, "broken-script.png");
 
         AtomicReference<RunOutcome> refused = new AtomicReference<>();
-        ide.runs().run(false, 1, refused::set);
+        ide.runs.run(false, 1, refused::set);
         assertNotNull(refused.get(), "Run should refuse a script with errors at once");
         assertEquals(RunOutcome.Status.ERROR, refused.get().status());
-        assertFalse(ide.runs().running());
+        assertFalse(ide.runs.running());
     }
 
     /** On its own text, not the one the broken-script test leaves (no test depends on another's order). */
@@ -117,10 +117,10 @@ class IdeGuiTest {
     void unsavedTextIsKeptForRecovery() throws Exception {
         Gui.open(ide, Gui.example("hello-snake.xml"));
         String text = Files.readString(Gui.example("hello-snake.xml"));
-        ide.editor().document().set(text.replace("states=\"up, down\"", "states=\"up, dwn\""));
-        assertTrue(ide.files().dirty(), "an edited file should be marked dirty");
-        ide.files().autosaveNow();
-        List<Autosave.Copy> copies = ide.files().autosave().own();
+        ide.editor.document().set(text.replace("states=\"up, down\"", "states=\"up, dwn\""));
+        assertTrue(ide.files.dirty(), "an edited file should be marked dirty");
+        ide.files.autosaveNow();
+        List<Autosave.Copy> copies = ide.files.autosave().own();
         assertEquals(1, copies.size(), "expected one autosave copy of the unsaved text: " + copies);
         assertTrue(copies.get(0).text().contains("up, dwn"));
         assertEquals(Gui.example("hello-snake.xml").toAbsolutePath().normalize(), copies.get(0).file());

@@ -47,27 +47,27 @@ class IdeScreenshotsTest {
         Path images = Path.of(System.getProperty("parpe.ideImages", "../docs/images"));
         Files.createDirectories(images);
         ide = Gui.openIde(Files.createTempDirectory("parpe-ide-shots"));
-        Rectangle screen = ide.shell().getDisplay().getBounds();
+        Rectangle screen = ide.shell.getDisplay().getBounds();
         Gui.open(ide, Gui.example("tutorial/02-gait-table-snake.xml"));
         Gui.pump(() -> ide.program() != null, "lesson 2 to load");
-        assertTrue(ide.grid().showTable("travel"), "lesson 2 has its gait table 'travel'");
-        ide.toolbar().setTarget(RunOn.SIMULATOR);
-        ide.toolbar().setSpeed(Speed.MAX);
-        ide.runs().run(false, -1, null);
-        Gui.pump(() -> ide.runs().controller().status() != null && ide.runs().controller().status().time() >= 4,
+        assertTrue(ide.grid.showTable("travel"), "lesson 2 has its gait table 'travel'");
+        ide.toolbar.setTarget(RunOn.SIMULATOR);
+        ide.toolbar.setSpeed(Speed.MAX);
+        ide.runs.run(false, -1, null);
+        Gui.pump(() -> ide.runs.controller().status() != null && ide.runs.controller().status().time() >= 4,
                 "4 simulated seconds of lesson 2");
-        ide.runs().pause();
+        ide.runs.pause();
         List<Path> made = new ArrayList<>();
         for (int[] size : SIZES) {
             if (size[0] > screen.width || size[1] > screen.height) {
                 continue; // this screen cannot show the window whole; scripts/ide-screenshots uses a bigger one
             }
-            ide.shell().setBounds(0, 0, size[0], size[1]);
-            ide.grid().select(0, 1, 0, 1);
+            ide.shell.setBounds(0, 0, size[0], size[1]);
+            ide.grid.select(0, 1, 0, 1);
             Gui.settle();
             Gui.settle();
             Path png = images.resolve("ide-" + size[0] + "x" + size[1] + "-" + theme() + ".png");
-            Screenshot.save(ide.shell(), png);
+            Screenshot.save(ide.shell, png);
             ImageData d = new ImageLoader().load(png.toString())[0];
             assertTrue(d.width == size[0] && d.height == size[1], png + " is " + d.width + "x" + d.height);
             assertTrue(Screenshot.distinctColours(d, 64) >= 64, png + " looks blank");
@@ -75,6 +75,6 @@ class IdeScreenshotsTest {
         }
         ZoomAndThemeGuiTest.assertReadable(ide);
         assertFalse(made.isEmpty(), "the screen (" + screen.width + "x" + screen.height + ") is smaller than 1366x768");
-        assertTrue(ide.runs().running(), "the run is still going (paused) in the pictures");
+        assertTrue(ide.runs.running(), "the run is still going (paused) in the pictures");
     }
 }

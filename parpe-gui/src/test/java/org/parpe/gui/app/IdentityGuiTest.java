@@ -14,8 +14,8 @@ class IdentityGuiTest {
     void theWindowHasPARPEsIconAndAboutItsVersion() throws Exception {
         IdeWindow ide = Gui.openIde(Files.createTempDirectory("parpe-identity-home"));
         try {
-            assertNotNull(ide.shell().getImage(), "the main window has no icon");
-            assertTrue(ide.shell().getImage().getBounds().width >= 48, "icon " + ide.shell().getImage().getBounds());
+            assertNotNull(ide.shell.getImage(), "the main window has no icon");
+            assertTrue(ide.shell.getImage().getBounds().width >= 48, "icon " + ide.shell.getImage().getBounds());
         } finally {
             Gui.closeIde(ide);
         }

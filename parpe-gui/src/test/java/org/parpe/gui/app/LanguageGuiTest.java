@@ -73,12 +73,12 @@ class LanguageGuiTest {
     void theLanguageMenuKeepsTheChoice() throws Exception {
         Path home = Files.createTempDirectory("parpe-lang-menu");
         ide = Gui.openIde(home);
-        MenuItem deutsch = item(item(ide.shell().getMenuBar(), "&View").getMenu(), "&Language").getMenu().getItems()[3];
+        MenuItem deutsch = item(item(ide.shell.getMenuBar(), "&View").getMenu(), "&Language").getMenu().getItems()[3];
         assertEquals("Deutsch", deutsch.getText());
         String[] told = new String[1];
-        ide.shell().getDisplay().timerExec(200, () -> {
-            for (Shell s : ide.shell().getDisplay().getShells()) {
-                if (s != ide.shell() && !s.isDisposed() && s.isVisible()) {
+        ide.shell.getDisplay().timerExec(200, () -> {
+            for (Shell s : ide.shell.getDisplay().getShells()) {
+                if (s != ide.shell && !s.isDisposed() && s.isVisible()) {
                     told[0] = s.getText();
                     try {
                         Screenshot.save(s, Path.of(System.getProperty("parpe.artefacts", "target/gui-test-artefacts"),

@@ -35,28 +35,28 @@ final class LanguageProbe {
         IdeLanguage.use(IdeLanguage.choose(args.length > 3 ? args[3] : null, prefs.get(IdeLanguage.PREFERENCE, null),
                 System::getenv));
         IdeWindow ide = Gui.openIde(Path.of(args[0]));
-        ide.shell().setBounds(0, 0, 1366, 768);
+        ide.shell.setBounds(0, 0, 1366, 768);
         Gui.open(ide, Gui.example("tutorial/02-gait-table-snake.xml"));
         Gui.pump(() -> ide.program() != null, "lesson 2 to load");
         List<String> menus = new ArrayList<>();
-        for (MenuItem m : ide.shell().getMenuBar().getItems()) {
+        for (MenuItem m : ide.shell.getMenuBar().getItems()) {
             menus.add(m.getText());
         }
-        InputDialog d = new InputDialog(ide.shell(), "?", "?", "", null);
+        InputDialog d = new InputDialog(ide.shell, "?", "?", "", null);
         d.setBlockOnOpen(false);
         d.open();
         Gui.settle();
         Gui.settle();
-        Screenshot.save(ide.shell(), Path.of(args[1]));
+        Screenshot.save(ide.shell, Path.of(args[1]));
         System.out.println("menus=" + String.join("|", menus));
-        System.out.println("cut=" + String.join("|", cutCombos(ide.shell())));
-        System.out.println("status=" + ide.status().sim() + "|" + ide.status().hardware());
+        System.out.println("cut=" + String.join("|", cutCombos(ide.shell)));
+        System.out.println("status=" + ide.status.sim() + "|" + ide.status.hardware());
         // the dialog's own buttons in GTK's order (Cancel, OK, as JFace labels them), then JFace's Yes and No
         System.out.println("buttons=" + String.join("|", buttons(d.getShell())) + "|" + IDialogConstants.YES_LABEL
                 + "|" + IDialogConstants.NO_LABEL);
         d.close();
         // the biggest dialog of the window's own, beside the main window's picture
-        org.parpe.gui.hardware.HardwareDialog hardware = org.parpe.gui.hardware.HardwareDialog.open(ide.hardware());
+        org.parpe.gui.hardware.HardwareDialog hardware = org.parpe.gui.hardware.HardwareDialog.open(ide.hardware);
         Gui.settle();
         Gui.settle();
         Screenshot.save(hardware.shell(), Path.of(args[1].replace(".png", "-hardware.png")));

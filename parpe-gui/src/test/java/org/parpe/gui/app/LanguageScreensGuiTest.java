@@ -69,23 +69,23 @@ class LanguageScreensGuiTest {
         Path dir = Path.of(System.getProperty("parpe.i18nScreens", "target/i18n-screens"));
         Files.createDirectories(dir);
         ide = Gui.openIde(Files.createTempDirectory("parpe-i18n"));
-        ide.shell().setBounds(0, 0, WIDTH, HEIGHT);
+        ide.shell.setBounds(0, 0, WIDTH, HEIGHT);
         Gui.open(ide, Gui.example("tutorial/02-gait-table-snake.xml"));
         Gui.pump(() -> ide.program() != null, "lesson 2 to load");
-        assertTrue(ide.grid().showTable("travel"), "lesson 2 has its gait table 'travel'");
+        assertTrue(ide.grid.showTable("travel"), "lesson 2 has its gait table 'travel'");
         if (zoomed) {
-            int normal = ide.editor().widget().getFont().getFontData()[0].getHeight();
-            while (ide.editor().widget().getFont().getFontData()[0].getHeight() < 2 * normal) {
+            int normal = ide.editor.widget().getFont().getFontData()[0].getHeight();
+            while (ide.editor.widget().getFont().getFontData()[0].getHeight() < 2 * normal) {
                 ide.zoom(1);
             }
         }
         Gui.settle();
         Map<String, String> problems = new LinkedHashMap<>();
-        check(ide.shell(), dir.resolve("main-" + tag + ".png"), "main window", problems);
+        check(ide.shell, dir.resolve("main-" + tag + ".png"), "main window", problems);
         if (!zoomed) {
             Path images = Path.of(System.getProperty("parpe.i18nImages", "../docs/images/i18n"));
             Files.createDirectories(images);
-            Screenshot.save(ide.shell(), images.resolve("main-" + tag + ".png"));
+            Screenshot.save(ide.shell, images.resolve("main-" + tag + ".png"));
         }
         int screens = 1 + tabs(dir, tag, problems) + dialogs(dir, tag, problems);
         assertTrue(screens >= 15, "the tabs and dialogs were found: " + screens + " screens");
@@ -114,7 +114,7 @@ class LanguageScreensGuiTest {
     /** Brings every tab of every folder of the main window to the front in turn; the number of screens. */
     private int tabs(Path dir, String tag, Map<String, String> problems) throws Exception {
         List<CTabFolder> folders = new ArrayList<>();
-        collect(ide.shell(), folders);
+        collect(ide.shell, folders);
         int n = 0;
         for (int f = 0; f < folders.size(); f++) {
             CTabFolder folder = folders.get(f);
@@ -125,7 +125,7 @@ class LanguageScreensGuiTest {
                 e.item = item;
                 folder.notifyListeners(SWT.Selection, e);
                 Gui.settle();
-                check(ide.shell(), dir.resolve("tab-" + f + "." + i + "-" + slug(item.getText()) + "-" + tag + ".png"),
+                check(ide.shell, dir.resolve("tab-" + f + "." + i + "-" + slug(item.getText()) + "-" + tag + ".png"),
                         "tab " + item.getText(), problems);
                 n++;
             }
@@ -146,7 +146,7 @@ class LanguageScreensGuiTest {
 
     /** Opens every dialog of the menus, checks it and closes it; the number of screens. */
     private int dialogs(Path dir, String tag, Map<String, String> problems) throws Exception {
-        MenuItem[] top = ide.shell().getMenuBar().getItems();
+        MenuItem[] top = ide.shell.getMenuBar().getItems();
         List<MenuItem> items = new ArrayList<>();
         for (MenuItem m : top) {
             for (MenuItem it : m.getMenu().getItems()) {
@@ -171,7 +171,7 @@ class LanguageScreensGuiTest {
      * the 3D view's module camera, and the parameters asked before a run of lesson 7.
      */
     private int windowsOfPanes(Path dir, String tag, Map<String, String> problems) throws Exception {
-        org.eclipse.swt.widgets.Button wave = Arrays.stream(ide.grid().toolBar().getChildren())
+        org.eclipse.swt.widgets.Button wave = Arrays.stream(ide.grid.toolBar().getChildren())
                 .filter(c -> c instanceof org.eclipse.swt.widgets.Button b && b.getText().equals(org.parpe.gui.text.PanelMsg.GRID_WAVE.text()))
                 .map(c -> (org.eclipse.swt.widgets.Button) c).findFirst()
                 .orElseThrow(() -> new AssertionError("the grid's bar has no button ending in \u2026 (Wave\u2026)"));
@@ -180,7 +180,7 @@ class LanguageScreensGuiTest {
         open(ide::openModuleCamera, "module camera", dir.resolve("pane-camera-" + tag + ".png"), problems);
         var lesson7 = org.parpe.core.load.ScriptLoader.load(Gui.example("tutorial/07-parameters-snake.xml"), Map.of());
         assertTrue(lesson7.ok() && !lesson7.program().parameters().isEmpty(), "lesson 7 has parameters");
-        open(() -> new org.parpe.gui.panels.ParametersDialog(ide.shell(), lesson7.program().parameters(), Map.of()).open(),
+        open(() -> new org.parpe.gui.panels.ParametersDialog(ide.shell, lesson7.program().parameters(), Map.of()).open(),
                 "parameters", dir.resolve("pane-parameters-" + tag + ".png"), problems);
         return 3;
     }
@@ -191,7 +191,7 @@ class LanguageScreensGuiTest {
      * no window (the tutorial docked beside the outline) is checked in the main window.
      */
     private void open(Runnable trigger, String name, Path png, Map<String, String> problems) throws Exception {
-        Display d = ide.shell().getDisplay();
+        Display d = ide.shell.getDisplay();
         Set<Shell> before = Set.of(d.getShells());
         long until = System.currentTimeMillis() + 5_000;
         boolean[] done = {false};
@@ -210,7 +210,7 @@ class LanguageScreensGuiTest {
                 } else {
                     Gui.settle();
                     Gui.settle();
-                    check(ide.shell(), png, name, problems);
+                    check(ide.shell, png, name, problems);
                 }
             } catch (Exception e) {
                 failed[0] = e;

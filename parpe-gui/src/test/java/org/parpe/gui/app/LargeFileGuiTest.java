@@ -31,8 +31,8 @@ class LargeFileGuiTest {
 
     @AfterEach
     void closeWindow() {
-        if (ide != null && !ide.shell().isDisposed()) {
-            ide.shell().dispose();
+        if (ide != null && !ide.shell.isDisposed()) {
+            ide.shell.dispose();
         }
     }
 
@@ -46,29 +46,29 @@ class LargeFileGuiTest {
         Gui.pump(() -> ide.validations() > 0, "the first validation");
 
         AtomicReference<String> seen = new AtomicReference<>();
-        ide.shell().getDisplay().asyncExec(() -> seen.set("reading=" + ide.files().reading()
-                + " length=" + ide.editor().document().getLength()));
-        ide.files().openPath(big);
+        ide.shell.getDisplay().asyncExec(() -> seen.set("reading=" + ide.files.reading()
+                + " length=" + ide.editor.document().getLength()));
+        ide.files.openPath(big);
         Gui.pump(() -> seen.get() != null, "an event posted before the open");
         assertEquals("reading=true length=" + FileActions.template().length(), seen.get(),
                 "the UI thread was busy with the file: it should be read in the background");
-        assertFalse(ide.editor().viewer().isEditable(), "the editor should be read-only while the file is read");
+        assertFalse(ide.editor.viewer().isEditable(), "the editor should be read-only while the file is read");
 
-        Gui.pump(() -> !ide.files().reading() && big.toAbsolutePath().normalize().equals(ide.files().file()), "the file to open");
-        assertEquals(text.length(), ide.editor().document().getLength());
-        assertEquals(text, ide.editor().document().get());
-        assertTrue(ide.editor().viewer().isEditable());
-        assertTrue(ide.editor().plain(), "a 5 MB text should be shown without colouring");
-        assertFalse(ide.files().dirty());
+        Gui.pump(() -> !ide.files.reading() && big.toAbsolutePath().normalize().equals(ide.files.file()), "the file to open");
+        assertEquals(text.length(), ide.editor.document().getLength());
+        assertEquals(text, ide.editor.document().get());
+        assertTrue(ide.editor.viewer().isEditable());
+        assertTrue(ide.editor.plain(), "a 5 MB text should be shown without colouring");
+        assertFalse(ide.files.dirty());
 
         int before = ide.validations();
         Gui.pump(() -> ide.validations() > before || ide.program() != null && ide.program().states().size() > 2,
                 "the large script to be validated");
         Gui.pump(() -> ide.program() != null && ide.program().states().size() > 2, "the large script to load");
         assertEquals(0, ide.problems().errorCount(), "generated script has errors: " + ide.problems().shown());
-        assertTrue(ide.editor().names(text).states().contains("s1000"),
+        assertTrue(ide.editor.names(text).states().contains("s1000"),
                 "completion should know the states of the large script (scanned in the background)");
-        Tree tree = ide.outline().control();
+        Tree tree = ide.outline.control();
         int shown = 0;
         for (TreeItem section : tree.getItems()) {
             assertTrue(section.getItemCount() <= OutlineView.SECTION_LIMIT + 1,
@@ -76,11 +76,11 @@ class LargeFileGuiTest {
             shown += section.getItemCount();
         }
         assertTrue(shown > 0);
-        assertTrue(ide.status().message().contains("no colouring"), "status bar should say colouring is off: "
-                + ide.status().message());
-        Gui.screenshot(ide.shell(), "large-file.png");
+        assertTrue(ide.status.message().contains("no colouring"), "status bar should say colouring is off: "
+                + ide.status.message());
+        Gui.screenshot(ide.shell, "large-file.png");
 
-        ide.files().newFile();
-        assertFalse(ide.editor().plain(), "a small text should be coloured again");
+        ide.files.newFile();
+        assertFalse(ide.editor.plain(), "a small text should be coloured again");
     }
 }

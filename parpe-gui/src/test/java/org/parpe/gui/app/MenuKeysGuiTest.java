@@ -26,7 +26,7 @@ class MenuKeysGuiTest {
         try {
             List<String> hidden = new ArrayList<>();
             List<MenuItem> all = new ArrayList<>();
-            items(ide.shell().getMenuBar(), all);
+            items(ide.shell.getMenuBar(), all);
             for (MenuItem it : all) {
                 String text = it.getText();
                 int tab = text.indexOf('\t');

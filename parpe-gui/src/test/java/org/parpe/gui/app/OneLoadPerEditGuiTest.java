@@ -33,8 +33,8 @@ class OneLoadPerEditGuiTest {
         Files.copy(Gui.example("hello-snake.xml"), copy);
         ide = Gui.openIde(home, 1366, 768);
         Gui.open(ide, copy);
-        ide.bottom().showPose();
-        DiagramPane pane = ide.diagram();
+        ide.bottom.showPose();
+        DiagramPane pane = ide.diagram;
         pane.showTab();
         Gui.pump(() -> pane.current() && ide.program() != null, "the first diagram and the loaded script");
     }
@@ -46,19 +46,19 @@ class OneLoadPerEditGuiTest {
 
     @Test
     void eachEditIsLoadedOnceWithEveryViewOpen() {
-        DiagramPane pane = ide.diagram();
+        DiagramPane pane = ide.diagram;
         for (int edit = 1; edit <= 3; edit++) {
             // what the views show of the text before the edit is done, and the window is quiet
-            Gui.pump(() -> pane.current() && !ide.document().busy(), "the views to show the text");
+            Gui.pump(() -> pane.current() && !ide.document.busy(), "the views to show the text");
             Gui.settle();
-            int loadsBefore = ide.document().loads();
+            int loadsBefore = ide.document.loads();
             int validationsBefore = ide.validations();
-            var doc = ide.editor().document();
-            ide.editor().widget().replaceTextRange(doc.get().indexOf("<main>"), 0, "<!-- edit " + edit + " -->\n  ");
-            Gui.pump(() -> pane.current() && ide.validations() > validationsBefore && !ide.document().busy(),
+            var doc = ide.editor.document();
+            ide.editor.widget().replaceTextRange(doc.get().indexOf("<main>"), 0, "<!-- edit " + edit + " -->\n  ");
+            Gui.pump(() -> pane.current() && ide.validations() > validationsBefore && !ide.document.busy(),
                     "the diagram and Problems to show edit " + edit);
             Gui.settle();
-            assertEquals(loadsBefore + 1, ide.document().loads(), "loads of the text after edit " + edit);
+            assertEquals(loadsBefore + 1, ide.document.loads(), "loads of the text after edit " + edit);
         }
     }
 
@@ -66,19 +66,19 @@ class OneLoadPerEditGuiTest {
     void aListenerSeesTheResultOfTheNewTextOnTheUiThread() {
         List<ScriptDocument.Loaded> seen = new ArrayList<>();
         List<Boolean> onUiThread = new ArrayList<>();
-        ide.document().addListener(l -> {
+        ide.document.addListener(l -> {
             seen.add(l);
             onUiThread.add(Display.getCurrent() != null);
         });
-        String broken = ide.editor().document().get().replace("<simpleWave />", "<simpleWaves />");
-        ide.editor().document().set(broken);
+        String broken = ide.editor.document().get().replace("<simpleWave />", "<simpleWaves />");
+        ide.editor.document().set(broken);
         Gui.pump(() -> seen.stream().anyMatch(l -> l.text().equals(broken)), "the listener to hear of the new text");
         ScriptDocument.Loaded last = seen.get(seen.size() - 1);
         assertEquals(broken, last.text(), "the last result a listener heard of is the text's now");
         assertNull(last.program(), "the new text does not load");
         assertTrue(last.result().errors().stream().anyMatch(d -> d.message().contains("simpleWaves")),
                 "its error names the unknown behavior: " + last.result().errors());
-        assertEquals(last, ide.document().current(), "the document keeps it as the version now");
+        assertEquals(last, ide.document.current(), "the document keeps it as the version now");
         assertFalse(onUiThread.contains(false), "listeners are told on the UI thread");
     }
 }

@@ -65,25 +65,25 @@ class PanelsInLanguageGuiTest {
             ide.open(null, true);
             IdeWindow shown = ide;
             Gui.pump(() -> shown.validations() > 0, "the first validation");
-            ide.shell().setBounds(0, 0, 1366, 768);
+            ide.shell.setBounds(0, 0, 1366, 768);
             Gui.open(ide, Gui.example("param-loop.xml"));
             Gui.settle();
             List<List<String>> want = expected(language);
 
-            ide.bottom().showPose();
+            ide.bottom.showPose();
             Gui.settle();
-            has(texts(ide.pose().control()), want.get(0), "the Pose panel");
+            has(texts(ide.pose.control()), want.get(0), "the Pose panel");
 
-            select(ide.diagram().control());
-            has(texts(ide.diagram().control()), want.get(1), "the diagram and its palette");
-            Gui.screenshot(ide.shell(), "panels-" + language + "-diagram-pose-1366x768.png");
+            select(ide.diagram.control());
+            has(texts(ide.diagram.control()), want.get(1), "the diagram and its palette");
+            Gui.screenshot(ide.shell, "panels-" + language + "-diagram-pose-1366x768.png");
 
-            select(ide.robotTab().control());
-            has(texts(ide.robotTab().control()), want.get(2), "the Robot tab");
-            Gui.screenshot(ide.shell(), "panels-" + language + "-robot-1366x768.png");
+            select(ide.robotTab.control());
+            has(texts(ide.robotTab.control()), want.get(2), "the Robot tab");
+            Gui.screenshot(ide.shell, "panels-" + language + "-robot-1366x768.png");
 
-            sweep = SweepDialog.open(new SweepHost(ide.shell(), ide.editor(), ide.document(), ide::robotChoice,
-                    () -> shown.viewBar().world().file(), ide::showRunDiagnostics));
+            sweep = SweepDialog.open(new SweepHost(ide.shell, ide.editor, ide.document, ide::robotChoice,
+                    () -> shown.viewBar.world().file(), ide::showRunDiagnostics));
             Gui.settle();
             has(texts(sweep.shell()), want.get(3), "the sweep dialog");
             Gui.screenshot(sweep.shell(), "panels-" + language + "-sweep.png");

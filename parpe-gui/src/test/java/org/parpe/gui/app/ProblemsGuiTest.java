@@ -41,9 +41,9 @@ class ProblemsGuiTest {
 
     @AfterEach
     void closeWindow() {
-        if (ide != null && !ide.shell().isDisposed()) {
+        if (ide != null && !ide.shell.isDisposed()) {
             Gui.endRun(ide);
-            ide.shell().dispose();
+            ide.shell.dispose();
         }
     }
 
@@ -71,7 +71,7 @@ class ProblemsGuiTest {
         String text = Files.readString(script);
         int before = ide.validations();
         // Two undefined states, the later one first in no particular order of the loader.
-        ide.editor().document().set(text.replace("states=\"up, down\"", "states=\"dwn, upp\""));
+        ide.editor.document().set(text.replace("states=\"up, down\"", "states=\"dwn, upp\""));
         Gui.pump(() -> ide.validations() > before, "validation of the edited text");
         ide.showRunDiagnostics(List.of(at(Severity.WARNING, 3, 5, "overlap"), at(Severity.ERROR, 22, 7, "division by zero")));
         Gui.pump(() -> ide.problems().runDiagnostics().size() == 2, "the run diagnostics to be shown");
@@ -99,12 +99,12 @@ class ProblemsGuiTest {
         }
         assertTrue(x <= table.getClientArea().width, "the Location column ends at " + x + " px, beyond the visible "
                 + table.getClientArea().width + " px");
-        Gui.screenshot(ide.shell(), "problems-location-column.png");
+        Gui.screenshot(ide.shell, "problems-location-column.png");
 
         int last = shown.size() - 1;
         table.setSelection(last);
         table.notifyListeners(SWT.DefaultSelection, new Event());
-        int caretLine = ide.editor().widget().getLineAtOffset(ide.editor().widget().getCaretOffset()) + 1;
+        int caretLine = ide.editor.widget().getLineAtOffset(ide.editor.widget().getCaretOffset()) + 1;
         assertEquals(shown.get(last).pos().line(), caretLine, "double-click did not jump to the problem's line");
     }
 
@@ -114,17 +114,17 @@ class ProblemsGuiTest {
         Thread t = new Thread(() -> ide.showRunDiagnostics(List.of(fault)), "test-engine");
         t.start();
         Gui.pump(() -> ide.problems().shown().contains(fault), "the run diagnostic posted from another thread");
-        assertTrue(ide.editor().markers().stream().anyMatch(m -> m.diagnostic() == fault), "no marker for the run diagnostic");
+        assertTrue(ide.editor.markers().stream().anyMatch(m -> m.diagnostic() == fault), "no marker for the run diagnostic");
 
         int before = ide.validations();
-        ide.editor().document().set(ide.editor().document().get() + "\n");
+        ide.editor.document().set(ide.editor.document().get() + "\n");
         Gui.pump(() -> ide.validations() > before, "revalidation");
         assertTrue(ide.problems().shown().contains(fault), "revalidating the text dropped the run diagnostic");
 
-        ide.toolbar().setTarget(RunOn.SIMULATOR);
-        ide.toolbar().setSpeed(Speed.TIMES_10);
-        ide.runs().run(false, -1, null);
-        Gui.pump(() -> ide.runs().running(), "the run to start");
+        ide.toolbar.setTarget(RunOn.SIMULATOR);
+        ide.toolbar.setSpeed(Speed.TIMES_10);
+        ide.runs.run(false, -1, null);
+        Gui.pump(() -> ide.runs.running(), "the run to start");
         assertFalse(ide.problems().shown().contains(fault), "a new run should drop the last run's diagnostics");
     }
 }

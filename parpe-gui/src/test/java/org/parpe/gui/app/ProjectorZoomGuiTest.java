@@ -33,7 +33,7 @@ class ProjectorZoomGuiTest {
     }
 
     private MenuItem viewItem(String text) {
-        Menu bar = ide.shell().getMenuBar();
+        Menu bar = ide.shell.getMenuBar();
         Menu view = Arrays.stream(bar.getItems()).filter(i -> i.getText().equals("&View")).findFirst().orElseThrow().getMenu();
         return Arrays.stream(view.getItems()).filter(i -> i.getText().replace("&", "").startsWith(text)).findFirst()
                 .orElseThrow(() -> new AssertionError("View has no " + text + ": "
@@ -46,13 +46,13 @@ class ProjectorZoomGuiTest {
     }
 
     private int editorPoints() {
-        return ide.editor().widget().getFont().getFontData()[0].getHeight();
+        return ide.editor.widget().getFont().getFontData()[0].getHeight();
     }
 
     @Test
     void theViewMenuZoomsInOutAndBack() throws Exception {
         ide = Gui.openIde(Files.createTempDirectory("parpe-zoom-menu"));
-        ide.shell().setBounds(0, 0, 1366, 768);
+        ide.shell.setBounds(0, 0, 1366, 768);
         Gui.open(ide, Gui.example("hello-snake.xml"));
         for (String name : List.of("Zoom In", "Zoom Out", "Reset Zoom")) {
             MenuItem it = viewItem(name);
@@ -60,11 +60,11 @@ class ProjectorZoomGuiTest {
             assertTrue(it.getText().contains("\tCtrl+"), name + " shows its key: " + it.getText());
         }
         int normal = editorPoints();
-        int gridNormal = ide.grid().widget().getFont().getFontData()[0].getHeight();
+        int gridNormal = ide.grid.widget().getFont().getFontData()[0].getHeight();
         choose("Zoom In");
         assertEquals(1, ide.zoom());
         assertEquals(normal + 2, editorPoints(), "Zoom In makes the editor's text larger");
-        assertEquals(gridNormal + 2, ide.grid().widget().getFont().getFontData()[0].getHeight(), "and the grid's");
+        assertEquals(gridNormal + 2, ide.grid.widget().getFont().getFontData()[0].getHeight(), "and the grid's");
         choose("Zoom In");
         choose("Zoom Out");
         assertEquals(1, ide.zoom());
@@ -77,19 +77,19 @@ class ProjectorZoomGuiTest {
     @Test
     void atTwiceTheTextEveryCellOfTheGaitTableFitsItsColumn() throws Exception {
         ide = Gui.openIde(Files.createTempDirectory("parpe-zoom-grid"));
-        ide.shell().setBounds(0, 0, 1366, 768);
+        ide.shell.setBounds(0, 0, 1366, 768);
         Gui.open(ide, Gui.example("tutorial/02-gait-table-snake.xml"));
-        Gui.pump(() -> ide.program() != null && ide.grid().visible(), "the lesson and its grid");
-        Table t = ide.grid().widget();
+        Gui.pump(() -> ide.program() != null && ide.grid.visible(), "the lesson and its grid");
+        Table t = ide.grid.widget();
         int normal = t.getFont().getFontData()[0].getHeight();
         while (t.getFont().getFontData()[0].getHeight() < 2 * normal) {
             choose("Zoom In");
         }
         Gui.settle();
         assertFits(t);
-        Gui.screenshot(ide.shell(), "grid-zoom-200.png");
+        Gui.screenshot(ide.shell, "grid-zoom-200.png");
         // an edit at this zoom (the grid is shown again) keeps the columns wide
-        ide.grid().edited(0, 1, "-130");
+        ide.grid.edited(0, 1, "-130");
         Gui.pump(() -> "-130".equals(t.getItem(0).getText(2)), "the edit in the grid");
         assertFits(t);
     }

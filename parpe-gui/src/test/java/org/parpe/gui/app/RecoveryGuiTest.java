@@ -30,8 +30,8 @@ class RecoveryGuiTest {
 
     @AfterEach
     void closeWindow() {
-        if (ide != null && !ide.shell().isDisposed()) {
-            ide.shell().dispose();
+        if (ide != null && !ide.shell.isDisposed()) {
+            ide.shell.dispose();
         }
     }
 
@@ -39,7 +39,7 @@ class RecoveryGuiTest {
     private IdeWindow open(Path home, int... answers) {
         IdeWindow w = new IdeWindow(Gui.display(), new Prefs(home));
         int[] next = {0};
-        w.files().answerWith((title, message, buttons) -> {
+        w.files.answerWith((title, message, buttons) -> {
             asked.add(title);
             messages.add(message);
             return next[0] < answers.length ? answers[next[0]++] : 2;
@@ -67,23 +67,23 @@ class RecoveryGuiTest {
 
         ide = open(home, 0, 1); // Recover; then "Don't Save" when closing
         assertEquals("Recover unsaved work", asked.get(0));
-        assertEquals(unsaved, ide.editor().document().get());
-        assertEquals(script.toAbsolutePath().normalize(), ide.files().file());
-        assertTrue(ide.files().dirty(), "recovered text must be unsaved");
-        assertTrue(ide.shell().getText().startsWith("*"), "title should mark unsaved text: " + ide.shell().getText());
+        assertEquals(unsaved, ide.editor.document().get());
+        assertEquals(script.toAbsolutePath().normalize(), ide.files.file());
+        assertTrue(ide.files.dirty(), "recovered text must be unsaved");
+        assertTrue(ide.shell.getText().startsWith("*"), "title should mark unsaved text: " + ide.shell.getText());
         assertTrue(ide.closeRequested(), "Don't Save should let the window close");
-        ide.shell().dispose();
+        ide.shell.dispose();
         assertEquals(List.of(unsaved), orphanTexts(home), "Don't Save after recovering deleted the recovered copy");
         assertEquals(original, Files.readString(script));
 
         asked.clear();
         ide = open(home, 0); // Recover again, then save
-        assertEquals(unsaved, ide.editor().document().get());
-        assertTrue(ide.files().save());
+        assertEquals(unsaved, ide.editor.document().get());
+        assertTrue(ide.files.save());
         assertEquals(unsaved, Files.readString(script));
-        assertFalse(ide.files().dirty());
-        assertEquals(List.of(), ide.files().autosave().own(), "the saved text's copy is still there");
-        ide.shell().dispose();
+        assertFalse(ide.files.dirty());
+        assertEquals(List.of(), ide.files.autosave().own(), "the saved text's copy is still there");
+        ide.shell.dispose();
         assertEquals(List.of(), orphanTexts(home));
     }
 
@@ -95,12 +95,12 @@ class RecoveryGuiTest {
         crashed.close();
 
         ide = open(home, 2); // Not Now
-        assertEquals(FileActions.template(), ide.editor().document().get());
-        ide.shell().dispose();
+        assertEquals(FileActions.template(), ide.editor.document().get());
+        ide.shell.dispose();
         assertEquals(List.of("<program/>"), orphanTexts(home));
 
         ide = open(home, 1); // Discard
-        ide.shell().dispose();
+        ide.shell.dispose();
         assertEquals(List.of(), orphanTexts(home));
     }
 
@@ -115,8 +115,8 @@ class RecoveryGuiTest {
         crashed.close();
         ide = open(home, 0); // Recover
         assertTrue(messages.get(0).contains("your copy of the example 02-gait-table-snake.xml"), messages.get(0));
-        assertEquals("02-gait-table-snake.xml (example copy)", ide.files().name(), "not *untitled.xml");
-        assertTrue(ide.shell().getText().startsWith("*02-gait-table-snake.xml"), ide.shell().getText());
+        assertEquals("02-gait-table-snake.xml (example copy)", ide.files.name(), "not *untitled.xml");
+        assertTrue(ide.shell.getText().startsWith("*02-gait-table-snake.xml"), ide.shell.getText());
     }
 
     @Test
@@ -126,14 +126,14 @@ class RecoveryGuiTest {
         Files.writeString(script, Files.readString(Gui.example("hello-snake.xml")));
         ide = open(home, 1); // "Don't Save"
         Gui.open(ide, script);
-        ide.editor().document().set(ide.editor().document().get() + "\n<!-- edited -->\n");
-        ide.files().autosaveNow();
-        assertEquals(1, ide.files().autosave().own().size());
-        assertTrue(ide.files().confirmDiscard());
+        ide.editor.document().set(ide.editor.document().get() + "\n<!-- edited -->\n");
+        ide.files.autosaveNow();
+        assertEquals(1, ide.files.autosave().own().size());
+        assertTrue(ide.files.confirmDiscard());
         // The autosave timer fires while, say, the Pose panel asks about its poses before quitting.
-        ide.files().autosaveNow();
-        assertEquals(List.of(), ide.files().autosave().own(), "the discarded text was copied again");
-        ide.shell().dispose();
+        ide.files.autosaveNow();
+        assertEquals(List.of(), ide.files.autosave().own(), "the discarded text was copied again");
+        ide.shell.dispose();
         assertEquals(List.of(), orphanTexts(home), "the discarded text is offered at the next start");
     }
 
@@ -145,11 +145,11 @@ class RecoveryGuiTest {
         Files.writeString(script, original);
         ide = open(home);
         Gui.open(ide, script);
-        ide.editor().document().set(original + "\n<!-- edited -->\n");
-        ide.files().autosaveNow();
-        assertEquals(1, ide.files().autosave().own().size());
-        ide.editor().document().set(original);
-        ide.files().autosaveNow();
-        assertEquals(List.of(), ide.files().autosave().own(), "a clean document's copy would be offered after a crash");
+        ide.editor.document().set(original + "\n<!-- edited -->\n");
+        ide.files.autosaveNow();
+        assertEquals(1, ide.files.autosave().own().size());
+        ide.editor.document().set(original);
+        ide.files.autosaveNow();
+        assertEquals(List.of(), ide.files.autosave().own(), "a clean document's copy would be offered after a crash");
     }
 }

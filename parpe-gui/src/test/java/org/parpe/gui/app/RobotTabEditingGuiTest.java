@@ -44,7 +44,7 @@ class RobotTabEditingGuiTest {
     }
 
     private RobotTab tab() {
-        return ide.robotTab();
+        return ide.robotTab;
     }
 
     /** Opens a copy of {@code text} as {@code name}, waits until it is checked and shows the Robot tab. */
@@ -122,13 +122,13 @@ class RobotTabEditingGuiTest {
         // typed in the text: the tab follows after the check
         String typed = text.replace("angle=\"-20\"", "angle=\"-35\"");
         int before = ide.validations();
-        ide.editor().document().set(typed);
+        ide.editor.document().set(typed);
         Gui.pump(() -> ide.validations() > before, "the check of the edited text");
         assertEquals(-35, tab().draft().part("left").orElseThrow().angle(), "the tab shows the text as typed");
         // an edit in the tab changes one line of the text
         clickPart("t1");
         press(button("Turn 90\u00B0"));
-        String after = ide.editor().document().get();
+        String after = ide.editor.document().get();
         List<String> a = typed.lines().toList();
         List<String> b = after.lines().toList();
         assertEquals(a.size(), b.size(), after);
@@ -143,10 +143,10 @@ class RobotTabEditingGuiTest {
         assertEquals(after, tab().draft().text(), "the tab shows the text");
         // one Undo step
         press(button("Undo"));
-        assertEquals(typed, ide.editor().document().get(), "Undo gives back the text before the edit");
+        assertEquals(typed, ide.editor.document().get(), "Undo gives back the text before the edit");
         assertEquals(typed, tab().draft().text(), "and the tab shows it");
         press(button("Redo"));
-        assertEquals(after, ide.editor().document().get());
+        assertEquals(after, ide.editor.document().get());
     }
 
     /**
@@ -156,7 +156,7 @@ class RobotTabEditingGuiTest {
      */
     @Test
     void aConfigurationOpensWithTheDiagramTabInFront() throws Exception {
-        ide.diagram().showTab();
+        ide.diagram.showTab();
         Gui.settle();
         Path f = dir.resolve("tee.xml");
         Files.writeString(f, Files.readString(Gui.example("configs/tee-snake.xml")));
@@ -201,10 +201,10 @@ class RobotTabEditingGuiTest {
         // two free plates of a straight chain do not meet: refused, saying how far apart
         clickPlate("a", 0, false);
         clickPlate("s0", 1, true);
-        String before = ide.editor().document().get();
+        String before = ide.editor.document().get();
         press(button("Connect"));
         assertTrue(tab().message().contains("mm") && tab().message().contains("apart"), tab().message());
-        assertEquals(before, ide.editor().document().get(), "nothing written");
+        assertEquals(before, ide.editor.document().get(), "nothing written");
     }
 
     /**
@@ -236,9 +236,9 @@ class RobotTabEditingGuiTest {
         Path robot = openCopy("wheel6.xml", Files.readString(Gui.example("configs/wheel6.xml")));
         assertTrue(button("Try it").isEnabled());
         press(button("Try it"));
-        Gui.pump(() -> ide.runs().running() || ide.runs().lastOutcome() != null, "the run on the robot");
+        Gui.pump(() -> ide.runs.running() || ide.runs.lastOutcome() != null, "the run on the robot");
         assertTrue(tab().message().startsWith("Trying wheel.xml"), tab().message());
-        Gui.pump(() -> ide.runs().snapshot() != null && ide.runs().snapshot().bodies().size() == tab().draft().bodies().size(),
+        Gui.pump(() -> ide.runs.snapshot() != null && ide.runs.snapshot().bodies().size() == tab().draft().bodies().size(),
                 "the robot of " + robot.getFileName() + " in the 3D view");
         Gui.endRun(ide);
     }
@@ -252,16 +252,16 @@ class RobotTabEditingGuiTest {
     void aBlankFileStartsARobotKeepingItsComment() throws Exception {
         String blank = "<?xml version=\"1.0\"?>\n<!-- my first robot -->\n";
         openCopy("nothing.xml", blank);
-        Gui.pump(() -> ide.status().message().startsWith("The file is empty"), "the status bar saying the file is empty");
+        Gui.pump(() -> ide.status.message().startsWith("The file is empty"), "the status bar saying the file is empty");
         assertTrue(tab().draft().partNames().isEmpty());
         press(button("Place"));
-        String text = ide.editor().document().get();
+        String text = ide.editor.document().get();
         assertTrue(text.startsWith(blank.strip() + "\n<robot-config>"), text);
         assertEquals(text.indexOf("<?xml"), text.lastIndexOf("<?xml"), "one declaration: " + text);
         assertEquals(1, tab().draft().partNames().size(), text);
         assertTrue(tab().draft().problems().isEmpty(), () -> tab().draft().problems().toString());
         press(button("Undo"));
-        assertEquals(blank, ide.editor().document().get(), "one Undo step gives the blank file back");
+        assertEquals(blank, ide.editor.document().get(), "one Undo step gives the blank file back");
     }
 
     @Test
@@ -284,7 +284,7 @@ class RobotTabEditingGuiTest {
             assertFalse(d.format().contains("Exception"), d.format());
         }
         assertTrue(tab().fitText().contains("problem") && tab().fitText().contains(":4:"), "the tab says where: " + tab().fitText());
-        assertTrue(ide.status().message().contains("error"), ide.status().message());
+        assertTrue(ide.status.message().contains("error"), ide.status.message());
         // the window still answers
         long t0 = System.currentTimeMillis();
         Gui.settle();
@@ -317,8 +317,8 @@ class RobotTabEditingGuiTest {
         assertEquals(target.toString(), ide.robotChoice(), "the script's robot is the file now");
         assertTrue(button("Edit robot").isEnabled());
         press(button("Edit robot"));
-        Gui.pump(() -> target.equals(ide.files().file()), "the robot's file in the editor");
-        Gui.pump(() -> button("Place").isEnabled() || tab().draft().text().equals(ide.editor().document().get()), "the tab on the file");
+        Gui.pump(() -> target.equals(ide.files.file()), "the robot's file in the editor");
+        Gui.pump(() -> button("Place").isEnabled() || tab().draft().text().equals(ide.editor.document().get()), "the tab on the file");
         assertEquals(Files.readString(target), tab().draft().text());
         assertTrue(script.toFile().exists());
     }
@@ -327,18 +327,18 @@ class RobotTabEditingGuiTest {
     void everyControlIsInTheWindowAt1366x768AndAtTwiceTheTextSize() throws Exception {
         openCopy("tee.xml", Files.readString(Gui.example("configs/tee-snake.xml")));
         allInside("normal text");
-        Gui.screenshot(ide.shell(), "robot-tab-1366x768.png");
+        Gui.screenshot(ide.shell, "robot-tab-1366x768.png");
         Control probe = tab().controls().get(0);
         int normal = probe.getFont().getFontData()[0].getHeight();
         while (probe.getFont().getFontData()[0].getHeight() < 2 * normal) {
             ide.zoom(1);
         }
         Gui.settle();
-        Gui.screenshot(ide.shell(), "robot-tab-zoom-200.png");
+        Gui.screenshot(ide.shell, "robot-tab-zoom-200.png");
         allInside("twice the text");
         Path out = Path.of(System.getProperty("parpe.ideImages", "../docs/images/ide"));
         Files.createDirectories(out);
-        org.parpe.gui.automation.Screenshot.save(ide.shell(), out.resolve("robot-zoom-200.png"));
+        org.parpe.gui.automation.Screenshot.save(ide.shell, out.resolve("robot-zoom-200.png"));
     }
 
     /**
@@ -347,8 +347,8 @@ class RobotTabEditingGuiTest {
      * rows' box in sight.
      */
     private void allInside(String when) {
-        Rectangle window = ide.shell().getClientArea();
-        Rectangle windowOnScreen = ide.shell().getDisplay().map(ide.shell(), null, window);
+        Rectangle window = ide.shell.getClientArea();
+        Rectangle windowOnScreen = ide.shell.getDisplay().map(ide.shell, null, window);
         Rectangle tabArea = tab().control().getDisplay().map(tab().control(), null, ((org.eclipse.swt.widgets.Composite) tab().control()).getClientArea());
         for (Control c : tab().controls()) {
             if (c instanceof org.eclipse.swt.widgets.Label l && (l.getStyle() & org.eclipse.swt.SWT.WRAP) != 0 && l.getText().isEmpty()) {

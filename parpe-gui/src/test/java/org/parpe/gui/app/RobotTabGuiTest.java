@@ -59,7 +59,7 @@ class RobotTabGuiTest {
     }
 
     private static RobotTab tab() {
-        return ide.robotTab();
+        return ide.robotTab;
     }
 
     /** One building step: a part of {@code type} on plate {@code plate} of the part made by step {@code on} (−1: the first part). */
@@ -111,7 +111,7 @@ class RobotTabGuiTest {
             String added = tab().draft().partNames().stream().filter(n -> !had.contains(n)).findFirst().orElseThrow();
             names.add(added);
             assertTrue(tab().draft().problems().isEmpty(), () -> "step " + i + ": " + tab().draft().problems());
-            assertEquals(tab().draft().text(), ide.editor().document().get(), "the tab shows the text in the editor");
+            assertEquals(tab().draft().text(), ide.editor.document().get(), "the tab shows the text in the editor");
             if (pictures.containsKey(i)) {
                 picture(pictures.get(i));
             }
@@ -201,7 +201,7 @@ class RobotTabGuiTest {
         long until = System.currentTimeMillis() + 500; // not a double click with the click before
         Gui.pump(() -> System.currentTimeMillis() >= until, "a pause between clicks");
         Point on = c.toDisplay(p);
-        assertTrue(ide.shell().getBounds().contains(on), c + " at " + on + " is outside the window " + ide.shell().getBounds());
+        assertTrue(ide.shell.getBounds().contains(on), c + " at " + on + " is outside the window " + ide.shell.getBounds());
         Gui.xdotool("mousemove", "--sync", Integer.toString(on.x), Integer.toString(on.y), "click", "1");
         Gui.settle();
     }
@@ -218,7 +218,7 @@ class RobotTabGuiTest {
         Path out = Path.of(System.getProperty("parpe.ideImages", "../docs/images/ide"));
         Files.createDirectories(out);
         Path png = out.resolve(name);
-        Screenshot.save(ide.shell(), png);
+        Screenshot.save(ide.shell, png);
         var d = new org.eclipse.swt.graphics.ImageLoader().load(png.toString())[0];
         assertTrue(Screenshot.distinctColours(d, 64) >= 64, png + " looks blank");
     }
@@ -286,7 +286,7 @@ class RobotTabGuiTest {
         type(box(2), "20");
         Gui.pump(() -> tab().draft().part(names.get(5)).orElseThrow().angle() == 20, "the right arm's angle: " + tab().message());
         picture("robot-4-tee-snake.png");
-        assertTrue(ide.files().save(), "saved");
+        assertTrue(ide.files.save(), "saved");
         Path example = example("configs/tee-snake.xml");
         sameRobot(Files.readString(example), Files.readString(f));
         Path script = dir.resolve("tee-wave.xml");
@@ -316,7 +316,7 @@ class RobotTabGuiTest {
         type(box(3), "90");
         Gui.pump(() -> tab().draft().config().root().roll() == 90, "the wheel's roll: " + tab().message());
         picture("robot-5-wheel6.png");
-        assertTrue(ide.files().save(), "saved");
+        assertTrue(ide.files.save(), "saved");
         Path example = example("configs/wheel6.xml");
         sameRobot(Files.readString(example), Files.readString(f));
         Path script = example("wheel.xml");

@@ -37,20 +37,20 @@ class RunChoicesGuiTest {
         Path humanoidLesson = Gui.example("standup-walk.xml");
         Path snakeLesson = Gui.example("tutorial/03-hello-snake.xml");
         Gui.open(ide, humanoidLesson);
-        ide.viewBar().select("humanoid");
-        ide.toolbar().chooseTarget(RunOn.HARDWARE);
+        ide.viewBar.select("humanoid");
+        ide.toolbar.chooseTarget(RunOn.HARDWARE);
         Gui.open(ide, snakeLesson);
         assertEquals("auto", ide.robotChoice(), "the snake lesson keeps its own robot");
-        assertEquals(RunOn.SIMULATOR, ide.toolbar().target(), "the snake lesson keeps its own target");
+        assertEquals(RunOn.SIMULATOR, ide.toolbar.target(), "the snake lesson keeps its own target");
         Gui.open(ide, humanoidLesson);
         assertEquals("humanoid", ide.robotChoice());
-        assertEquals(RunOn.HARDWARE, ide.toolbar().target());
-        ide.shell().dispose();
+        assertEquals(RunOn.HARDWARE, ide.toolbar.target());
+        ide.shell.dispose();
 
         ide = Gui.openIde(home);
         Gui.open(ide, humanoidLesson);
         assertEquals("humanoid", ide.robotChoice(), "the robot chosen for a file is remembered");
-        assertEquals(RunOn.SIMULATOR, ide.toolbar().target(), "every session starts on the simulator");
+        assertEquals(RunOn.SIMULATOR, ide.toolbar.target(), "every session starts on the simulator");
     }
 
     @Test
@@ -58,10 +58,10 @@ class RunChoicesGuiTest {
         ide = Gui.openIde(Files.createTempDirectory("parpe-choices"));
         Gui.open(ide, Gui.example("tutorial/03-hello-snake.xml"));
         Gui.pump(() -> ide.program() != null, "the lesson to load");
-        ide.viewBar().select("humanoid");
-        ide.toolbar().setSpeed(Speed.MAX);
+        ide.viewBar.select("humanoid");
+        ide.toolbar.setSpeed(Speed.MAX);
         AtomicReference<RunOutcome> outcome = new AtomicReference<>();
-        ide.runs().run(false, 5, outcome::set);
+        ide.runs.run(false, 5, outcome::set);
         Gui.pump(() -> outcome.get() != null, "5 s of the snake lesson on the humanoid");
         // Both warnings reach Problems through the event queue.
         Gui.pump(() -> ide.problems().shown().stream().filter(d -> d.severity() == Severity.WARNING).count() >= 2,
@@ -69,7 +69,7 @@ class RunChoicesGuiTest {
         List<String> warnings = ide.problems().shown().stream().filter(d -> d.severity() == Severity.WARNING)
                 .map(Diagnostic::message).toList();
         assertTrue(warnings.stream().anyMatch(m -> m.startsWith("this script is written for the snake")), warnings.toString());
-        assertTrue(warnings.stream().anyMatch(m -> m.startsWith("the robot fell over (it tilted ")), warnings + " " + ide.status().message());
-        assertTrue(ide.status().message().contains("it fell over (see Problems)"), ide.status().message());
+        assertTrue(warnings.stream().anyMatch(m -> m.startsWith("the robot fell over (it tilted ")), warnings + " " + ide.status.message());
+        assertTrue(ide.status.message().contains("it fell over (see Problems)"), ide.status.message());
     }
 }

@@ -40,8 +40,8 @@ class RunProblemsGuiTest {
 
     @AfterEach
     void backToTheSimulator() {
-        ide.toolbar().setTarget(RunOn.SIMULATOR);
-        ide.viewBar().select("auto (from the script)");
+        ide.toolbar.setTarget(RunOn.SIMULATOR);
+        ide.viewBar.select("auto (from the script)");
     }
 
     /** Opens {@code text} as a file and waits for it to validate without errors. */
@@ -58,8 +58,8 @@ class RunProblemsGuiTest {
 
     private static RunOutcome runToEnd(double seconds) {
         AtomicReference<RunOutcome> outcome = new AtomicReference<>();
-        ide.toolbar().setSpeed(Speed.MAX);
-        ide.runs().run(false, seconds, outcome::set);
+        ide.toolbar.setSpeed(Speed.MAX);
+        ide.runs.run(false, seconds, outcome::set);
         Gui.pump(() -> outcome.get() != null, "the run to end");
         // Problems reported from the engine thread arrive through asyncExec: let them in.
         Gui.settle();
@@ -80,8 +80,8 @@ class RunProblemsGuiTest {
     @Test
     void hardwareWithoutAPortIsAProblemToFixNotAnInternalError() throws Exception {
         open("hw.xml", snake("20"));
-        ide.toolbar().setTarget(RunOn.HARDWARE);
-        ide.toolbar().setPort("");
+        ide.toolbar.setTarget(RunOn.HARDWARE);
+        ide.toolbar.setPort("");
         RunOutcome o = runToEnd(1);
         assertEquals(RunOutcome.Status.ERROR, o.status());
         assertFalse(o.message().contains("internal error"), o.message());
@@ -92,7 +92,7 @@ class RunProblemsGuiTest {
     @Test
     void aParslScriptChosenAsTheRobotIsALocatedProblem() throws Exception {
         Path script = open("robot-mixup.xml", snake("20"));
-        ide.viewBar().useFile(script.toString());
+        ide.viewBar.useFile(script.toString());
         RunOutcome o = runToEnd(1);
         assertEquals(RunOutcome.Status.ERROR, o.status());
         assertFalse(o.message().contains("internal error"), o.message());
@@ -113,7 +113,7 @@ class RunProblemsGuiTest {
         assertTrue(errors.get(0).message().startsWith("division by zero"), errors.toString());
 
         int before = ide.validations();
-        ide.editor().document().set(ide.editor().document().get() + "\n");
+        ide.editor.document().set(ide.editor.document().get() + "\n");
         Gui.pump(() -> ide.validations() > before, "validation of the edited text");
         assertEquals(1, shown(Severity.ERROR).size(), "the run's error vanished when the text was validated again");
     }
@@ -122,7 +122,7 @@ class RunProblemsGuiTest {
     void aRobotThatLacksModulesOfTheScriptIsWarnedAbout() throws Exception {
         String big = snake("20").replace("elements=\"0..3\"", "elements=\"0..54\"");
         open("big.xml", big);
-        ide.viewBar().select("humanoid");
+        ide.viewBar.select("humanoid");
         RunOutcome o = runToEnd(0.1);
         assertEquals(RunOutcome.Status.COMPLETED, o.status(), o.message());
         List<Diagnostic> warnings = shown(Severity.WARNING);
@@ -134,7 +134,7 @@ class RunProblemsGuiTest {
         open("travel.xml", snake("20"));
         RunOutcome o = runToEnd(0.5);
         assertEquals(RunOutcome.Status.COMPLETED, o.status(), o.message());
-        assertTrue(ide.status().message().matches("Run completed at t = 0\\.50 s; the robot travelled \\d+\\.\\d{3} m .*"),
-                ide.status().message());
+        assertTrue(ide.status.message().matches("Run completed at t = 0\\.50 s; the robot travelled \\d+\\.\\d{3} m .*"),
+                ide.status.message());
     }
 }

@@ -27,15 +27,15 @@ class RunToolBarGuiTest {
 
     @AfterEach
     void closeWindow() {
-        if (ide != null && !ide.shell().isDisposed()) {
+        if (ide != null && !ide.shell.isDisposed()) {
             Gui.endRun(ide);
-            ide.shell().dispose();
+            ide.shell.dispose();
         }
     }
 
     private void assertEmergencyStopShown(String when) {
         Gui.settle();
-        ToolItem estop = ide.toolbar().emergencyStop();
+        ToolItem estop = ide.toolbar.emergencyStop();
         assertTrue(estop.getEnabled(), "emergency stop disabled " + when);
         Rectangle b = estop.getBounds();
         Rectangle bar = estop.getParent().getClientArea();
@@ -47,22 +47,22 @@ class RunToolBarGuiTest {
     @Test
     void emergencyStopIsShownIdleRunningAndPaused() throws Exception {
         assertEmergencyStopShown("while idle");
-        ide.toolbar().setTarget(RunOn.SIMULATOR);
-        ide.toolbar().setSpeed(Speed.TIMES_10);
-        ide.runs().run(false, -1, null);
-        Gui.pump(() -> ide.runs().controller().status() != null && ide.runs().controller().status().time() > 0.3,
+        ide.toolbar.setTarget(RunOn.SIMULATOR);
+        ide.toolbar.setSpeed(Speed.TIMES_10);
+        ide.runs.run(false, -1, null);
+        Gui.pump(() -> ide.runs.controller().status() != null && ide.runs.controller().status().time() > 0.3,
                 "the run to start");
         assertEmergencyStopShown("while running");
-        ide.runs().pause();
-        assertTrue(ide.runs().controller().paused());
+        ide.runs.pause();
+        assertTrue(ide.runs.controller().paused());
         assertEmergencyStopShown("while paused");
-        Gui.screenshot(ide.shell(), "paused-with-emergency-stop.png");
-        ide.runs().pause();
+        Gui.screenshot(ide.shell, "paused-with-emergency-stop.png");
+        ide.runs.pause();
         assertEmergencyStopShown("after resuming");
-        ide.runs().emergencyStop();
-        Gui.pump(() -> !ide.runs().running(), "the emergency stop to end the run");
+        ide.runs.emergencyStop();
+        Gui.pump(() -> !ide.runs.running(), "the emergency stop to end the run");
         assertEmergencyStopShown("after the run");
-        assertEquals(false, ide.runs().running());
+        assertEquals(false, ide.runs.running());
     }
 
     /**
@@ -73,21 +73,21 @@ class RunToolBarGuiTest {
     void atABreakpointResumeIsEnabledAndRunIsNot() throws Exception {
         Gui.open(ide, Gui.example("centipede-walk.xml"));
         Gui.pump(() -> ide.program() != null, "centipede-walk.xml to load");
-        var c = ide.runs().controller();
+        var c = ide.runs.controller();
         c.breakpoints().toggle(new org.parpe.core.run.Breakpoints.Point("step", 1, org.parpe.core.run.Breakpoints.Kind.ENTER));
-        ide.toolbar().setTarget(RunOn.SIMULATOR);
-        ide.toolbar().setSpeed(Speed.MAX);
-        ide.runs().run(false, 600, null);
-        Gui.pump(() -> c.breakpoints().hit() != null && ide.toolbar().pauseItem().getText().equals("Resume"),
+        ide.toolbar.setTarget(RunOn.SIMULATOR);
+        ide.toolbar.setSpeed(Speed.MAX);
+        ide.runs.run(false, 600, null);
+        Gui.pump(() -> c.breakpoints().hit() != null && ide.toolbar.pauseItem().getText().equals("Resume"),
                 "the run to stop at the breakpoint");
         assertTrue(c.paused());
-        assertTrue(ide.toolbar().pauseItem().getEnabled(), "Resume is enabled at the breakpoint");
-        assertEquals(false, ide.toolbar().runItem().getEnabled(), "Run is disabled beside Resume");
+        assertTrue(ide.toolbar.pauseItem().getEnabled(), "Resume is enabled at the breakpoint");
+        assertEquals(false, ide.toolbar.runItem().getEnabled(), "Run is disabled beside Resume");
         assertEmergencyStopShown("at the breakpoint");
-        ide.runs().pause(); // Resume
-        Gui.pump(() -> !c.paused() && ide.toolbar().pauseItem().getText().equals("Pause"), "the run to go on");
-        assertEquals(false, ide.toolbar().runItem().getEnabled(), "Run stays disabled while the run goes on");
+        ide.runs.pause(); // Resume
+        Gui.pump(() -> !c.paused() && ide.toolbar.pauseItem().getText().equals("Pause"), "the run to go on");
+        assertEquals(false, ide.toolbar.runItem().getEnabled(), "Run stays disabled while the run goes on");
         Gui.endRun(ide);
-        assertTrue(ide.toolbar().runItem().getEnabled(), "Run is enabled again after the run");
+        assertTrue(ide.toolbar.runItem().getEnabled(), "Run is enabled again after the run");
     }
 }

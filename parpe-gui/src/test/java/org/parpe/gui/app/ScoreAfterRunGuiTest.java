@@ -44,19 +44,19 @@ class ScoreAfterRunGuiTest {
         Gui.open(ide, Gui.example("worlds/race-track-snake.xml"));
         // the opened text's check, which says "No problems" in the status bar, comes before the run, not after it
         Gui.pump(() -> ide.validations() > checked && ide.program() != null, "the script's check");
-        ide.viewBar().world().choose(Gui.example("worlds/race-track.xml"));
-        ide.toolbar().setTarget(RunOn.SIMULATOR);
-        ide.toolbar().setSpeed(Speed.MAX);
+        ide.viewBar.world().choose(Gui.example("worlds/race-track.xml"));
+        ide.toolbar.setTarget(RunOn.SIMULATOR);
+        ide.toolbar.setSpeed(Speed.MAX);
         AtomicReference<RunOutcome> end = new AtomicReference<>();
-        ide.runs().run(false, 12, end::set);
+        ide.runs.run(false, 12, end::set);
         Gui.pump(() -> end.get() != null, "the run in the race track");
         Gui.settle();
 
-        String status = ide.status().message();
+        String status = ide.status.message();
         assertTrue(status.matches("Score \\d+\\.\\d \\(.+\\).*"), "the status bar starts with the score and its parts: " + status);
 
         StyledText log = ide.runLog();
-        assertTrue(ide.bottom().runLogInFront(), "the Run log is in front after a run with a score");
+        assertTrue(ide.bottom.runLogInFront(), "the Run log is in front after a run with a score");
         assertTrue(log.getWordWrap(), "the Run log wraps: nobody scrolls sideways for the score");
         assertTrue(log.getHorizontalBar() == null || !log.getHorizontalBar().isVisible(), "no sideways scroll bar");
         String last = log.getLine(log.getLineCount() - 2); // the text ends with a line break
@@ -67,14 +67,14 @@ class ScoreAfterRunGuiTest {
         var p = log.getLocationAtOffset(at + "Score".length());
         assertTrue(area.contains(p), "the score is in sight in the Run log: " + p + " in " + area);
 
-        String hud = ide.view().hudText();
+        String hud = ide.view.hudText();
         assertTrue(hud.contains("final score "), "the 3D line keeps the final score after the run: " + hud);
-        GC gc = new GC(ide.view().control());
+        GC gc = new GC(ide.view.control());
         try {
-            assertFalse(gc.textExtent(hud).x > ide.view().control().getSize().x, "the 3D line fits the view: " + hud);
+            assertFalse(gc.textExtent(hud).x > ide.view.control().getSize().x, "the 3D line fits the view: " + hud);
         } finally {
             gc.dispose();
         }
-        Gui.screenshot(ide.shell(), "score-after-run-1366x768.png");
+        Gui.screenshot(ide.shell, "score-after-run-1366x768.png");
     }
 }

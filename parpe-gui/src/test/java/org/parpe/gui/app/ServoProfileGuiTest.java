@@ -53,9 +53,9 @@ class ServoProfileGuiTest {
 
     @AfterAll
     static void closeWindow() {
-        if (ide != null && !ide.shell().isDisposed()) {
-            ide.runs().stop();
-            ide.shell().dispose();
+        if (ide != null && !ide.shell.isDisposed()) {
+            ide.runs.stop();
+            ide.shell.dispose();
         }
     }
 
@@ -65,13 +65,13 @@ class ServoProfileGuiTest {
      */
     @AfterEach
     void backToTheSimulator() {
-        if (ide.runs().running()) {
-            ide.runs().stop();
-            pump(() -> !ide.runs().running(), "the run left by the test to stop");
+        if (ide.runs.running()) {
+            ide.runs.stop();
+            pump(() -> !ide.runs.running(), "the run left by the test to stop");
         }
-        ide.toolbar().setHardwareProfile("");
-        ide.toolbar().setPort("");
-        ide.toolbar().setTarget(RunOn.SIMULATOR);
+        ide.toolbar.setHardwareProfile("");
+        ide.toolbar.setPort("");
+        ide.toolbar.setTarget(RunOn.SIMULATOR);
     }
 
     private static void pump(BooleanSupplier done, String what) {
@@ -82,14 +82,14 @@ class ServoProfileGuiTest {
         Path f = dir.resolve("two.xml");
         Files.writeString(f, SCRIPT);
         int before = ide.validations();
-        ide.files().openPath(f);
+        ide.files.openPath(f);
         pump(() -> ide.validations() > before && ide.program() != null, "the script to load");
     }
 
     private static RunOutcome runToEnd(double seconds) {
         AtomicReference<RunOutcome> outcome = new AtomicReference<>();
-        ide.toolbar().setSpeed(Speed.MAX);
-        ide.runs().run(false, seconds, outcome::set);
+        ide.toolbar.setSpeed(Speed.MAX);
+        ide.runs.run(false, seconds, outcome::set);
         pump(() -> outcome.get() != null, "the run to end");
         pump(() -> !display.readAndDispatch(), "pending UI events");
         return outcome.get();
@@ -101,8 +101,8 @@ class ServoProfileGuiTest {
         Path profile = dir.resolve("bad-profile.xml");
         Files.writeString(profile, "<hardware protocol=\"dxl2\" port=\"/dev/null\">\n  <servo module=\"0\" id=\"999\"/>\n"
                 + "</hardware>\n");
-        ide.toolbar().setTarget(RunOn.HARDWARE);
-        ide.toolbar().setHardwareProfile(profile.toString());
+        ide.toolbar.setTarget(RunOn.HARDWARE);
+        ide.toolbar.setHardwareProfile(profile.toString());
         RunOutcome o = runToEnd(1);
         assertEquals(RunOutcome.Status.ERROR, o.status());
         List<Diagnostic> errors = ide.problems().shown().stream().filter(d -> d.severity() == Severity.ERROR).toList();
@@ -121,9 +121,9 @@ class ServoProfileGuiTest {
             Files.writeString(profile, "<hardware protocol=\"dxl2\" baud=\"1000000\">\n"
                     + "  <servo module=\"0\" id=\"5\" zero=\"10\"/>\n  <servo module=\"1\" id=\"6\" direction=\"-1\"/>\n"
                     + "</hardware>\n");
-            ide.toolbar().setTarget(RunOn.HARDWARE);
-            ide.toolbar().setHardwareProfile(profile.toString());
-            ide.toolbar().setPort(pty.a().toString());
+            ide.toolbar.setTarget(RunOn.HARDWARE);
+            ide.toolbar.setHardwareProfile(profile.toString());
+            ide.toolbar.setPort(pty.a().toString());
             RunOutcome o = runToEnd(1);
             assertEquals(RunOutcome.Status.COMPLETED, o.status(), o.message() + " " + ide.problems().shown());
             Thread.sleep(300);
@@ -144,31 +144,31 @@ class ServoProfileGuiTest {
             Path profile = dir.resolve("alarm.xml");
             Files.writeString(profile, "<hardware protocol=\"dxl2\" baud=\"1000000\">\n"
                     + "  <servo module=\"0\" id=\"5\"/>\n  <servo module=\"1\" id=\"6\"/>\n</hardware>\n");
-            ide.toolbar().setTarget(RunOn.HARDWARE);
-            ide.toolbar().setHardwareProfile(profile.toString());
-            ide.toolbar().setPort(pty.a().toString());
+            ide.toolbar.setTarget(RunOn.HARDWARE);
+            ide.toolbar.setHardwareProfile(profile.toString());
+            ide.toolbar.setPort(pty.a().toString());
             AtomicReference<RunOutcome> outcome = new AtomicReference<>();
-            ide.runs().run(false, 600, outcome::set);
-            pump(() -> ide.status().hardware().startsWith("Hardware: " + pty.a()), "the run to drive the servos");
-            assertFalse(ide.status().hardwareAlarm());
+            ide.runs.run(false, 600, outcome::set);
+            pump(() -> ide.status.hardware().startsWith("Hardware: " + pty.a()), "the run to drive the servos");
+            assertFalse(ide.status.hardwareAlarm());
             emu.close();
-            pump(() -> ide.status().hardwareAlarm(), "the hardware alarm");
-            assertTrue(ide.status().hardware().matches("Hardware: robot not responding since \\d\\d:\\d\\d:\\d\\d"),
-                    ide.status().hardware());
-            assertTrue(ide.status().message().startsWith("Robot not responding since "), ide.status().message());
+            pump(() -> ide.status.hardwareAlarm(), "the hardware alarm");
+            assertTrue(ide.status.hardware().matches("Hardware: robot not responding since \\d\\d:\\d\\d:\\d\\d"),
+                    ide.status.hardware());
+            assertTrue(ide.status.message().startsWith("Robot not responding since "), ide.status.message());
             // and a banner across the window says it, to be seen from across a classroom
-            String banner = ide.alarm().shown();
+            String banner = ide.alarm.shown();
             assertNotNull(banner, "no banner while the robot does not answer");
             assertTrue(banner.startsWith("Robot not responding since "), banner);
             Gui.settle();
-            Gui.screenshot(ide.shell(), "robot-not-responding.png");
-            Gui.screenshot(ide.shell(), "hardware-alarm.png");
-            ide.runs().stop();
+            Gui.screenshot(ide.shell, "robot-not-responding.png");
+            Gui.screenshot(ide.shell, "hardware-alarm.png");
+            ide.runs.stop();
             pump(() -> outcome.get() != null, "the run to stop");
             pump(() -> ide.problems().shown().stream().anyMatch(d ->
                     d.message().startsWith("emergency stop sent but not confirmed")), "the stop said unconfirmed");
-            pump(() -> !ide.status().hardwareAlarm(), "the alarm to end with the run");
-            pump(() -> ide.alarm().shown() == null, "the banner to go with the alarm");
+            pump(() -> !ide.status.hardwareAlarm(), "the alarm to end with the run");
+            pump(() -> ide.alarm.shown() == null, "the banner to go with the alarm");
         }
     }
 }

@@ -52,13 +52,13 @@ class SmallScreenGuiTest {
     @Test
     void atLaptopSizeNothingFallsOffTheBarsAndTheChevronReachesIt() throws Exception {
         ide = Gui.openIde(Files.createTempDirectory("parpe-1366"));
-        ide.shell().setBounds(0, 0, 1366, 768);
+        ide.shell.setBounds(0, 0, 1366, 768);
         Gui.open(ide, Gui.example("tutorial/02-gait-table-snake.xml"));
         Gui.pump(() -> ide.program() != null, "the lesson to load");
-        assertTrue(ide.grid().showTable("travel"));
+        assertTrue(ide.grid.showTable("travel"));
         Gui.settle();
 
-        var run = (Composite) ide.toolbar().control();
+        var run = (Composite) ide.toolbar.control();
         var overflow = (org.parpe.gui.panels.OverflowBar) run.getData(org.parpe.gui.panels.OverflowBar.KEY);
         inside(run);
         assertTrue(overflow.overflowing(), "at 1366 pixels the run tool bar does not hold everything");
@@ -68,7 +68,7 @@ class SmallScreenGuiTest {
         assertTrue(texts(more).contains("Hardware\u2026"), "Hardware… is in the chevron's menu: " + texts(more));
         more.dispose();
 
-        var view = (Composite) ide.viewBar().control();
+        var view = (Composite) ide.viewBar.control();
         var viewOverflow = (org.parpe.gui.panels.OverflowBar) view.getData(org.parpe.gui.panels.OverflowBar.KEY);
         inside(view);
         if (viewOverflow.overflowing()) {
@@ -77,43 +77,43 @@ class SmallScreenGuiTest {
                     () -> new AssertionError("Module IDs is neither in the 3D bar nor behind its chevron: " + texts(m)));
             ids.setSelection(true);
             ids.notifyListeners(SWT.Selection, new org.eclipse.swt.widgets.Event());
-            assertTrue(ide.view().showIds(), "the menu's Module IDs turns the labels on");
+            assertTrue(ide.view.showIds(), "the menu's Module IDs turns the labels on");
             m.dispose();
         }
 
-        Composite gridBar = ide.grid().toolBar();
+        Composite gridBar = ide.grid.toolBar();
         inside(gridBar);
         int rowHeight = Arrays.stream(gridBar.getChildren()).filter(c -> c instanceof Button).mapToInt(c -> c.getSize().y)
                 .max().orElse(0);
         assertTrue(gridBar.getSize().y < 2 * rowHeight, "the grid's buttons are one row, not wrapped: " + gridBar.getSize());
 
-        org.eclipse.swt.widgets.List modules = Arrays.stream(((Composite) ide.plots().control()).getChildren())
+        org.eclipse.swt.widgets.List modules = Arrays.stream(((Composite) ide.plots.control()).getChildren())
                 .filter(c -> c instanceof org.eclipse.swt.widgets.List).map(c -> (org.eclipse.swt.widgets.List) c)
                 .findFirst().orElseThrow();
         assertEquals("m0", modules.getItem(0), "the joint list names modules as the chart's legend does");
         assertTrue(modules.getSize().x >= modules.computeSize(SWT.DEFAULT, SWT.DEFAULT).x - 20,
                 "the joint list is wide enough for its names");
-        Gui.screenshot(ide.shell(), "ide-1366x768.png");
+        Gui.screenshot(ide.shell, "ide-1366x768.png");
     }
 
     @Test
     void theWindowRemembersBeingMaximised() throws Exception {
         var home = Files.createTempDirectory("parpe-max");
         ide = Gui.openIde(home);
-        ide.shell().setMaximized(true);
+        ide.shell.setMaximized(true);
         Gui.settle();
         assertTrue(ide.closeRequested());
-        ide.shell().close();
+        ide.shell.close();
         assertEquals("true", new Prefs(home).get("window.maximised", "false"));
         ide = Gui.openIde(home);
-        assertTrue(ide.shell().getMaximized(), "the window opens maximised again");
-        assertFalse(ide.shell().isDisposed());
+        assertTrue(ide.shell.getMaximized(), "the window opens maximised again");
+        assertFalse(ide.shell.isDisposed());
     }
 
     @Test
     void panesKeepTheirMinimumWhenSqueezed() throws Exception {
         ide = Gui.openIde(Files.createTempDirectory("parpe-panes"));
-        ide.shell().setBounds(0, 0, 1366, 768);
+        ide.shell.setBounds(0, 0, 1366, 768);
         Gui.settle();
         ide.mainSash.setWeights(1, 98, 1);
         Gui.pump(() -> ide.mainSash.getChildren()[0].getSize().x >= 115, "the outline to grow back to its minimum");
@@ -132,13 +132,13 @@ class SmallScreenGuiTest {
     @Test
     void aLongStatusMessageIsShortenedWithTheWholeTextInItsTooltip() throws Exception {
         ide = Gui.openIde(Files.createTempDirectory("parpe-1366-status"));
-        ide.shell().setBounds(0, 0, 1366, 768);
+        ide.shell.setBounds(0, 0, 1366, 768);
         Gui.settle();
         String text = "Score 166.0 (zone 39.0 s, path 12.30 m, 1 delivered, 2 presses) \u2014 run completed at t = 60.00 s;"
                 + " the robot travelled 12.345 m (0.206 m/s, forward +12.300 m); it fell over (see Problems)";
-        ide.status().setMessage(text);
+        ide.status.setMessage(text);
         Gui.settle();
-        org.eclipse.swt.widgets.Label field = ide.status().messageField();
+        org.eclipse.swt.widgets.Label field = ide.status.messageField();
         String shown = field.getText();
         org.eclipse.swt.graphics.GC gc = new org.eclipse.swt.graphics.GC(field);
         int width;
@@ -154,8 +154,8 @@ class SmallScreenGuiTest {
         assertFalse(Character.isLetterOrDigit(text.charAt(shown.length() - 1)) && Character.isLetterOrDigit(shown.charAt(shown.length() - 2)),
                 "cut after a word, not inside one: " + shown);
         assertEquals(text, field.getToolTipText(), "the tooltip has the whole message");
-        assertEquals(text, ide.status().message());
-        ide.shell().setBounds(0, 0, 1920, 1000);
+        assertEquals(text, ide.status.message());
+        ide.shell.setBounds(0, 0, 1920, 1000);
         Gui.settle();
         assertTrue(field.getText().length() > shown.length(), "a wider window shows more of it: " + field.getText());
     }

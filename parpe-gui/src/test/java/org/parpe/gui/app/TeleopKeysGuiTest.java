@@ -41,28 +41,28 @@ class TeleopKeysGuiTest {
         ide = Gui.openIde(Files.createTempDirectory("parpe-keys"));
         Gui.open(ide, Gui.example("teleop-dirwave.xml"));
         Gui.pump(() -> ide.program() != null, "the example to load");
-        String before = ide.editor().document().get();
-        ide.toolbar().setTarget(RunOn.SIMULATOR);
-        ide.toolbar().setSpeed(Speed.REAL_TIME);
-        assertEquals("", ide.status().keys(), "no steering keys before a run");
-        ide.runs().run(false, -1, null);
-        Gui.pump(() -> ide.runs().controller().engine() != null && ide.runs().controller().status() != null,
+        String before = ide.editor.document().get();
+        ide.toolbar.setTarget(RunOn.SIMULATOR);
+        ide.toolbar.setSpeed(Speed.REAL_TIME);
+        assertEquals("", ide.status.keys(), "no steering keys before a run");
+        ide.runs.run(false, -1, null);
+        Gui.pump(() -> ide.runs.controller().engine() != null && ide.runs.controller().status() != null,
                 "the run to start");
-        assertEquals("\u2328 w s space Up Down: steer the robot", ide.status().keys());
-        ide.shell().forceActive();
-        ide.editor().widget().setFocus();
-        ide.editor().widget().setCaretOffset(ide.editor().widget().getOffsetAtLine(19));
-        Gui.pump(() -> ide.editor().widget().isFocusControl(), "the editor to have the focus");
-        press(ide.shell().getDisplay(), 's');
-        Gui.pump(() -> ide.runs().controller().engine().control("direction") == 1, "direction = backward from the key s");
+        assertEquals("\u2328 w s space Up Down: steer the robot", ide.status.keys());
+        ide.shell.forceActive();
+        ide.editor.widget().setFocus();
+        ide.editor.widget().setCaretOffset(ide.editor.widget().getOffsetAtLine(19));
+        Gui.pump(() -> ide.editor.widget().isFocusControl(), "the editor to have the focus");
+        press(ide.shell.getDisplay(), 's');
+        Gui.pump(() -> ide.runs.controller().engine().control("direction") == 1, "direction = backward from the key s");
         Gui.settle();
-        assertEquals(before, ide.editor().document().get(), "the steering key was typed into the script");
-        Gui.screenshot(ide.shell(), "teleop-keys-in-editor.png");
+        assertEquals(before, ide.editor.document().get(), "the steering key was typed into the script");
+        Gui.screenshot(ide.shell, "teleop-keys-in-editor.png");
         Gui.endRun(ide);
-        assertEquals("", ide.status().keys());
+        assertEquals("", ide.status.keys());
         // After the run the same key types again.
-        ide.editor().widget().setFocus();
-        press(ide.shell().getDisplay(), 's');
-        Gui.pump(() -> !ide.editor().document().get().equals(before), "the key to type into the idle editor");
+        ide.editor.widget().setFocus();
+        press(ide.shell.getDisplay(), 's');
+        Gui.pump(() -> !ide.editor.document().get().equals(before), "the key to type into the idle editor");
     }
 }

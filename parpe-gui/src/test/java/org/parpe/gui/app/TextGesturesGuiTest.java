@@ -33,7 +33,7 @@ class TextGesturesGuiTest {
     static void openWindow() throws Exception {
         ide = Gui.openIde(Files.createTempDirectory("parpe-gestures"));
         Gui.open(ide, Gui.example("hello-snake.xml"));
-        ide.shell().forceActive();
+        ide.shell.forceActive();
         Gui.settle();
     }
 
@@ -44,19 +44,19 @@ class TextGesturesGuiTest {
 
     @Test
     void doubleClickSelectsANumberInTheEditorAndTheWindowLives() {
-        StyledText w = ide.editor().widget();
-        int at = ide.editor().document().get().indexOf("angles=\"30\"") + "angles=\"".length();
+        StyledText w = ide.editor.widget();
+        int at = ide.editor.document().get().indexOf("angles=\"30\"") + "angles=\"".length();
         doubleClick(w, at + 1);
         Gui.pump(() -> "30".equals(w.getSelectionText()), "the double-click to select 30; selected: '" + w.getSelectionText() + "'");
-        assertFalse(ide.shell().isDisposed(), "the window closed on a double-click");
-        doubleClick(w, ide.editor().document().get().indexOf("simpleWave") + 3);
+        assertFalse(ide.shell.isDisposed(), "the window closed on a double-click");
+        doubleClick(w, ide.editor.document().get().indexOf("simpleWave") + 3);
         Gui.pump(() -> "simpleWave".equals(w.getSelectionText()), "the double-click to select simpleWave");
     }
 
     @Test
     void tripleClickDragAndMiddleClickInTheEditor() {
-        StyledText w = ide.editor().widget();
-        String text = ide.editor().document().get();
+        StyledText w = ide.editor.widget();
+        String text = ide.editor.document().get();
         int line = w.getLineAtOffset(text.indexOf("<up angles"));
         click(w, w.getOffsetAtLine(line) + 6, 1, 3);
         Gui.pump(() -> w.getSelectionText().strip().equals("<up angles=\"30\" />"),
@@ -65,20 +65,20 @@ class TextGesturesGuiTest {
         int from = text.indexOf("phase=");
         drag(w, from, from + "phase".length());
         Gui.pump(() -> "phase".equals(w.getSelectionText()), "the drag to select 'phase'; selected: '" + w.getSelectionText() + "'");
-        assertEquals(text, ide.editor().document().get(), "selecting changed the text");
+        assertEquals(text, ide.editor.document().get(), "selecting changed the text");
 
         // "phase" is the primary selection now: a middle click at the start of the <down> line pastes it there.
         int down = text.indexOf("<down");
         click(w, down, 2, 1);
-        Gui.pump(() -> ide.editor().document().get().startsWith("phase<down", down),
+        Gui.pump(() -> ide.editor.document().get().startsWith("phase<down", down),
                 "the middle click to paste 'phase' before <down>");
-        ide.editor().run(org.eclipse.jface.text.ITextOperationTarget.UNDO);
-        assertEquals(text, ide.editor().document().get());
+        ide.editor.run(org.eclipse.jface.text.ITextOperationTarget.UNDO);
+        assertEquals(text, ide.editor.document().get());
     }
 
     @Test
     void theRunLogSelectsByMouseAndItsSelectionPastesIntoTheEditor() {
-        ide.bottom().log("servo 7 answered");
+        ide.bottom.log("servo 7 answered");
         StyledText log = ide.runLog();
         CTabFolder tabs = (CTabFolder) log.getParent();
         for (CTabItem item : tabs.getItems()) {
@@ -94,19 +94,19 @@ class TextGesturesGuiTest {
 
         doubleClick(log, at + 2);
         Gui.pump(() -> "answered".equals(log.getSelectionText()), "the log's word to be selected");
-        StyledText editor = ide.editor().widget();
-        String text = ide.editor().document().get();
+        StyledText editor = ide.editor.widget();
+        String text = ide.editor.document().get();
         int down = text.indexOf("<down");
         click(editor, down, 2, 1);
-        Gui.pump(() -> ide.editor().document().get().startsWith("answered<down", down),
+        Gui.pump(() -> ide.editor.document().get().startsWith("answered<down", down),
                 "the middle click to paste the log's word into the editor");
-        ide.editor().run(org.eclipse.jface.text.ITextOperationTarget.UNDO);
-        assertEquals(text, ide.editor().document().get());
+        ide.editor.run(org.eclipse.jface.text.ITextOperationTarget.UNDO);
+        assertEquals(text, ide.editor.document().get());
     }
 
     @Test
     void theTutorialTextSelectsByMouse() {
-        TutorialWindow t = new TutorialWindow(ide.shell(), Examples.tutorialFolder(), p -> { }, code -> { });
+        TutorialWindow t = new TutorialWindow(ide.shell, Examples.tutorialFolder(), p -> { }, code -> { });
         t.open();
         try {
             t.show(3);

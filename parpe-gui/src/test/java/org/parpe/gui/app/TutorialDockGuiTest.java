@@ -49,9 +49,9 @@ class TutorialDockGuiTest {
     @Test
     void atLaptopSizeTheTutorialIsDockedBesideTheEditorAndThe3DView() throws Exception {
         ide = Gui.openIde(Files.createTempDirectory("parpe-tutorial-dock"));
-        ide.shell().setBounds(0, 0, 1366, 768);
+        ide.shell.setBounds(0, 0, 1366, 768);
         Gui.settle();
-        MenuItem help = Arrays.stream(ide.shell().getMenuBar().getItems()).filter(i -> i.getText().replace("&", "").equals("Help"))
+        MenuItem help = Arrays.stream(ide.shell.getMenuBar().getItems()).filter(i -> i.getText().replace("&", "").equals("Help"))
                 .findFirst().orElseThrow();
         MenuItem tutorialItem = Arrays.stream(help.getMenu().getItems()).filter(i -> i.getText().replace("&", "").equals("Tutorial"))
                 .findFirst().orElseThrow();
@@ -59,24 +59,24 @@ class TutorialDockGuiTest {
         Gui.settle();
         assertEquals(0, Arrays.stream(Gui.display().getShells()).filter(s -> !s.isDisposed() && "PARPE tutorial".equals(s.getText()))
                 .count(), "no tutorial window over the IDE");
-        TutorialWindow t = ide.tutorialDock().tutorial();
+        TutorialWindow t = ide.tutorialDock.tutorial();
         assertNotNull(t, "the tutorial is docked in the IDE");
         assertTrue(t.isDocked() && t.control().isVisible(), "the docked tutorial is in front");
         Rectangle lesson = onScreen(t.control());
-        Rectangle view = onScreen(ide.view().control());
-        Rectangle editor = onScreen(ide.editor().widget());
+        Rectangle view = onScreen(ide.view.control());
+        Rectangle editor = onScreen(ide.editor.widget());
         assertTrue(!lesson.intersects(view) && !lesson.intersects(editor), "the tutorial " + lesson + " covers neither the 3D view "
                 + view + " nor the editor " + editor);
         assertTrue(view.width >= 300 && editor.width >= 300 && lesson.width >= 400, "all three are usable: tutorial " + lesson
                 + ", editor " + editor + ", 3D view " + view);
 
         // the Diagram in front of the 3D view's column: the tutorial keeps its column
-        org.eclipse.swt.custom.CTabFolder views = (org.eclipse.swt.custom.CTabFolder) ide.view().control().getParent().getParent();
+        org.eclipse.swt.custom.CTabFolder views = (org.eclipse.swt.custom.CTabFolder) ide.view.control().getParent().getParent();
         views.setSelection(Arrays.stream(views.getItems()).filter(i -> i.getText().equals("Diagram")).findFirst().orElseThrow());
         views.notifyListeners(SWT.Selection, new Event());
         Gui.settle();
         Rectangle withDiagram = onScreen(t.control());
-        assertTrue(withDiagram.width >= 400 && !withDiagram.intersects(onScreen(ide.diagram().control())),
+        assertTrue(withDiagram.width >= 400 && !withDiagram.intersects(onScreen(ide.diagram.control())),
                 "beside the Diagram the tutorial " + withDiagram + " keeps its column");
 
         // the table of lessons on the first page: cards, not cells wrapped into each other's columns
@@ -90,7 +90,7 @@ class TutorialDockGuiTest {
                         "a table row wraps: " + line);
             }
         }
-        Gui.screenshot(ide.shell(), "tutorial-docked-1366x768-" + IdeScreenshotsTest.theme() + ".png");
+        Gui.screenshot(ide.shell, "tutorial-docked-1366x768-" + IdeScreenshotsTest.theme() + ".png");
 
         // a lesson's picture, scaled to the column, opens at full size
         t.show(3);

@@ -33,7 +33,7 @@ class TutorialGuiTest {
         Path folder = Examples.tutorialFolder();
         assertNotNull(folder, "docs/tutorial not found beside " + Examples.folder());
         assertTrue(Examples.lessons().size() >= 10, "File > Examples > Tutorial lessons lists " + Examples.lessons());
-        TutorialWindow w = new TutorialWindow(ide.shell(), folder, p -> ide.files().openConfirmed(p));
+        TutorialWindow w = new TutorialWindow(ide.shell, folder, p -> ide.files.openConfirmed(p));
         w.open();
         try {
             String[] titles = w.titles();
@@ -47,8 +47,8 @@ class TutorialGuiTest {
             assertNotNull(script, "lesson 3 names no script");
             assertEquals("03-hello-snake.xml", script.getFileName().toString());
             Gui.screenshot(w.shell(), "tutorial-lesson-3.png");
-            ide.files().openConfirmed(script);
-            Gui.pump(() -> !ide.files().reading() && script.toAbsolutePath().normalize().equals(ide.files().file()),
+            ide.files.openConfirmed(script);
+            Gui.pump(() -> !ide.files.reading() && script.toAbsolutePath().normalize().equals(ide.files.file()),
                     "the lesson's script in the editor");
         } finally {
             w.shell().dispose();
@@ -66,7 +66,7 @@ class TutorialGuiTest {
         org.parpe.core.text.Lang.use(java.util.Locale.GERMAN);
         TutorialWindow w = null;
         try { // English again whatever fails, even building the window: later tests find widgets by English text
-            w = new TutorialWindow(ide.shell(), folder, p -> { });
+            w = new TutorialWindow(ide.shell, folder, p -> { });
             w.open();
             String[] titles = w.titles();
             assertTrue(titles[0].startsWith("PARPE-Tutorial") && titles[1].startsWith("Lektion 1")
@@ -98,17 +98,17 @@ class TutorialGuiTest {
     void theTutorialIsANormalWindowThatFitsOnTheScreen() throws Exception {
         IdeWindow small = Gui.openIde(Files.createTempDirectory("parpe-tutorial-small"));
         try {
-            small.shell().setBounds(0, 0, 1366, 768);
-            TutorialWindow w = new TutorialWindow(small.shell(), Examples.tutorialFolder(), p -> { });
+            small.shell.setBounds(0, 0, 1366, 768);
+            TutorialWindow w = new TutorialWindow(small.shell, Examples.tutorialFolder(), p -> { });
             w.open();
             Gui.settle();
             assertNull(w.shell().getParent(), "the tutorial is not pinned above the IDE");
-            org.eclipse.swt.graphics.Rectangle area = small.shell().getMonitor().getClientArea();
+            org.eclipse.swt.graphics.Rectangle area = small.shell.getMonitor().getClientArea();
             org.eclipse.swt.graphics.Rectangle b = w.shell().getBounds();
             assertTrue(area.contains(b.x, b.y) && b.x + b.width <= area.x + area.width && b.y + b.height <= area.y + area.height,
                     "the tutorial " + b + " runs past the screen " + area);
             assertTrue(b.width <= area.width / 2 + 1 || b.width <= 1100, "it leaves room for the editor: " + b);
-            small.shell().dispose();
+            small.shell.dispose();
             assertTrue(w.shell().isDisposed(), "the tutorial closes with the IDE");
         } finally {
             Gui.closeIde(small);
@@ -123,7 +123,7 @@ class TutorialGuiTest {
     void tablesItalicsLinksAndCodeForTheEditor() throws Exception {
         java.util.List<String> sent = new java.util.ArrayList<>();
         java.util.List<Path> opened = new java.util.ArrayList<>();
-        TutorialWindow w = new TutorialWindow(ide.shell(), Examples.tutorialFolder(), opened::add, sent::add);
+        TutorialWindow w = new TutorialWindow(ide.shell, Examples.tutorialFolder(), opened::add, sent::add);
         w.open();
         // wide enough for the table's columns (a narrower column shows its rows as cards: TutorialDockGuiTest)
         w.shell().setSize(1100, 800);
@@ -162,8 +162,8 @@ class TutorialGuiTest {
     void insertThisCodePutsASectionAtTheTopLevelNotAtTheCaret() throws Exception {
         String script = String.join("\n", "<program>", "  <robot>", "    <structure>", "      <group1 elements=\"0,2,4,6\" />",
                 "    </structure>", "  </robot>", "  <automata>", "    <wave states=\"up, down\" />", "  </automata>", "</program>", "");
-        ide.editor().setText(script);
-        ide.editor().widget().setCaretOffset(script.indexOf("states=\"up"));
+        ide.editor.setText(script);
+        ide.editor.widget().setCaretOffset(script.indexOf("states=\"up"));
         TutorialWindow w = ide.menus.openTutorial();
         try {
             w.show(java.util.Arrays.asList(w.titles()).indexOf(java.util.Arrays.stream(w.titles())
@@ -173,10 +173,10 @@ class TutorialGuiTest {
             assertTrue(shown.indexOf("<states>") < shown.indexOf("\u25b6 Insert this code"), "lesson 3's first code is not <states>");
             w.clickAt(shown.indexOf("\u25b6 Insert this code") + 3);
             assertEquals(script.replace("  </automata>\n", "  </automata>\n  <states>\n    <up   angles=\"30\"/>\n"
-                    + "    <down angles=\"-30\"/>\n  </states>\n"), ide.editor().document().get());
+                    + "    <down angles=\"-30\"/>\n  </states>\n"), ide.editor.document().get());
             assertTrue(IdeAccess.status(ide).contains("from line 10"), IdeAccess.status(ide));
-            ide.editor().run(org.eclipse.jface.text.ITextOperationTarget.UNDO);
-            assertEquals(script, ide.editor().document().get(), "one Undo takes the code back");
+            ide.editor.run(org.eclipse.jface.text.ITextOperationTarget.UNDO);
+            assertEquals(script, ide.editor.document().get(), "one Undo takes the code back");
         } finally {
             w.shell().dispose();
         }
@@ -188,7 +188,7 @@ class TutorialGuiTest {
      */
     @Test
     void ctrlPlusMinusAndZeroZoomTheTutorial() throws Exception {
-        TutorialWindow w = new TutorialWindow(ide.shell(), Examples.tutorialFolder(), p -> { });
+        TutorialWindow w = new TutorialWindow(ide.shell, Examples.tutorialFolder(), p -> { });
         w.open();
         try {
             w.show(3);

@@ -116,10 +116,10 @@ class TutorialScreenshotsTest {
 
     @AfterAll
     static void closeWindow() {
-        if (ide != null && !ide.shell().isDisposed()) {
-            ide.runs().stop();
-            pump(() -> !ide.runs().running(), "the run to stop", WAIT_MS);
-            ide.shell().dispose();
+        if (ide != null && !ide.shell.isDisposed()) {
+            ide.runs.stop();
+            pump(() -> !ide.runs.running(), "the run to stop", WAIT_MS);
+            ide.shell.dispose();
         }
         org.parpe.core.text.Lang.use(java.util.Locale.ENGLISH);
     }
@@ -160,7 +160,7 @@ class TutorialScreenshotsTest {
      * shows the first three of the robot, which some lessons leave still).
      */
     private static void plotModules(Set<Integer> driven) {
-        for (Control c : ((Composite) ide.plots().control()).getChildren()) {
+        for (Control c : ((Composite) ide.plots.control()).getChildren()) {
             if (c instanceof org.eclipse.swt.widgets.List chooser) {
                 chooser.deselectAll();
                 int shown = 0;
@@ -176,7 +176,7 @@ class TutorialScreenshotsTest {
                 }
             }
         }
-        ide.plots().refresh();
+        ide.plots.refresh();
     }
 
     @Test
@@ -194,32 +194,32 @@ class TutorialScreenshotsTest {
                 name + " to load", WAIT_MS);
         assertEquals(0, ide.problems().errorCount(), name + " has errors: " + ide.problems().shown());
 
-        ide.toolbar().setTarget(RunOn.SIMULATOR);
-        ide.toolbar().setSpeed(Speed.MAX);
+        ide.toolbar.setTarget(RunOn.SIMULATOR);
+        ide.toolbar.setSpeed(Speed.MAX);
         AtomicReference<RunOutcome> outcome = new AtomicReference<>();
         Set<Integer> driven = moved(ide.program());
-        ide.runs().run(false, RUN_FOR, outcome::set);
+        ide.runs.run(false, RUN_FOR, outcome::set);
         // The 55-module centipede is the slowest; allow for a busy machine.
         pump(() -> outcome.get() != null, RUN_FOR + " simulated seconds of " + name, 180_000);
         RunOutcome o = outcome.get();
         assertNotEquals(RunOutcome.Status.ERROR, o.status(), name + " failed: " + o.message());
         assertTrue(o.time() >= RUN_FOR - 0.02 || o.status() == RunOutcome.Status.COMPLETED,
                 name + " stopped early at t = " + o.time());
-        pump(() -> !ide.runs().running(), "the run of " + name + " to wind up", WAIT_MS);
+        pump(() -> !ide.runs.running(), "the run of " + name + " to wind up", WAIT_MS);
         assertFalse(driven.isEmpty(), name + " moves no module");
         plotModules(driven);
         // A picture that is the same on every run, so that the build leaves the committed images
         // alone unless something really changed: the camera framed on the final pose rather than
         // eased towards it frame by frame, and no blinking caret in the editor.
-        ide.view().setTrackRobot(false);
-        ide.view().resetView();
-        ide.view().control().setFocus();
+        ide.view.setTrackRobot(false);
+        ide.view.resetView();
+        ide.view.control().setFocus();
         settle(800);
         assertEquals(0, ide.problems().errorCount(), name + " reported problems while running: " + ide.problems().shown());
 
         Path png = images.resolve(name.replaceFirst("\\.xml$", suffix + ".png"));
-        Screenshot.save(ide.shell(), png);
-        ide.view().setTrackRobot(true);
+        Screenshot.save(ide.shell, png);
+        ide.view.setTrackRobot(true);
         ImageData d = new ImageLoader().load(png.toString())[0];
         assertTrue(d.width > 600 && d.height > 400, "screenshot too small: " + d.width + "x" + d.height);
         assertTrue(Screenshot.distinctColours(d, 64) >= 64, "screenshot " + png + " looks blank");

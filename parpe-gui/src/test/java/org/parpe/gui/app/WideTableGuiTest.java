@@ -33,11 +33,11 @@ class WideTableGuiTest {
         Files.writeString(script, wide);
         ide = Gui.openIde(dir.resolve("home"));
         Gui.open(ide, script);
-        assertTrue(ide.grid().showTable("travel"));
-        Gui.pump(() -> ide.grid().status().contains("more than the"), "the grid to say the table is too wide");
-        assertTrue(ide.grid().widget().getColumnCount() <= GridPane.MAX_COLUMNS + 2,
-                ide.grid().widget().getColumnCount() + " columns");
-        assertTrue(ide.grid().status().contains("5000 columns"), ide.grid().status());
+        assertTrue(ide.grid.showTable("travel"));
+        Gui.pump(() -> ide.grid.status().contains("more than the"), "the grid to say the table is too wide");
+        assertTrue(ide.grid.widget().getColumnCount() <= GridPane.MAX_COLUMNS + 2,
+                ide.grid.widget().getColumnCount() + " columns");
+        assertTrue(ide.grid.status().contains("5000 columns"), ide.grid.status());
     }
 
     /** Issue 23, item 10: a table without times showed "1" in every row where lesson 2 teaches 0.5 s. */
@@ -46,11 +46,11 @@ class WideTableGuiTest {
         ide = Gui.openIde(Files.createTempDirectory("parpe-times"));
         Gui.open(ide, Gui.example("tutorial/02-gait-table-snake.xml"));
         Gui.pump(() -> ide.program() != null, "lesson 2 to load");
-        assertTrue(ide.grid().showTable("travel"));
-        Gui.pump(() -> "0.5 s".equals(ide.grid().widget().getItem(0).getText(1)),
+        assertTrue(ide.grid.showTable("travel"));
+        Gui.pump(() -> "0.5 s".equals(ide.grid.widget().getItem(0).getText(1)),
                 "the times column to show 3 s / 6 rows = 0.5 s, not 1");
         for (int r = 0; r < 6; r++) {
-            org.junit.jupiter.api.Assertions.assertEquals("0.5 s", ide.grid().widget().getItem(r).getText(1));
+            org.junit.jupiter.api.Assertions.assertEquals("0.5 s", ide.grid.widget().getItem(r).getText(1));
         }
     }
 }

@@ -48,7 +48,7 @@ class WorldGuiTest {
         } finally {
             gc.dispose();
             img.dispose();
-            view.setSource(ide.runs()::snapshot);
+            view.setSource(ide.runs::snapshot);
         }
     }
 
@@ -67,7 +67,7 @@ class WorldGuiTest {
     @BeforeAll
     static void open() {
         ide = Gui.openIde(home);
-        ide.shell().setSize(1480, 920);
+        ide.shell.setSize(1480, 920);
     }
 
     @AfterAll
@@ -80,29 +80,29 @@ class WorldGuiTest {
         "slot-machine, tutorial/13-slot-machine-snake.xml"})
     void aChosenWorldIsRunAndDrawn(String world, String script) throws Exception {
         Gui.open(ide, Gui.example(script));
-        ide.viewBar().world().choose(Gui.example("worlds/" + world + ".xml"));
-        World w = ide.viewBar().world().world();
+        ide.viewBar.world().choose(Gui.example("worlds/" + world + ".xml"));
+        World w = ide.viewBar.world().world();
         assertTrue(w != null, world + " did not load");
-        ide.runs().invalidatePreview();
-        ide.runs().updatePreview(ide.program());
+        ide.runs.invalidatePreview();
+        ide.runs.updatePreview(ide.program());
         // the preview (the robot at the world's start) is built in the background: wait for it
-        Gui.pump(() -> ide.runs().snapshot() != null && ide.runs().snapshot().scenery().size() > 0,
+        Gui.pump(() -> ide.runs.snapshot() != null && ide.runs.snapshot().scenery().size() > 0,
                 "the preview in " + world);
-        ide.toolbar().setTarget(RunOn.SIMULATOR);
-        ide.toolbar().setSpeed(Speed.MAX);
+        ide.toolbar.setTarget(RunOn.SIMULATOR);
+        ide.toolbar.setSpeed(Speed.MAX);
         AtomicReference<RunOutcome> end = new AtomicReference<>();
-        ide.runs().run(false, 12, end::set);
+        ide.runs.run(false, 12, end::set);
         Gui.pump(() -> end.get() != null, "the run in " + world);
         Gui.settle();
-        SimSnapshot s = ide.runs().snapshot();
-        assertTrue(s.time() > 11.9, "the view shows the end of the run, t = " + s.time() + "; " + end.get() + "; " + ide.status().message());
+        SimSnapshot s = ide.runs.snapshot();
+        assertTrue(s.time() > 11.9, "the view shows the end of the run, t = " + s.time() + "; " + end.get() + "; " + ide.status.message());
         long solids = s.scenery().stream().filter(b -> b.kind() == PartKind.SCENERY).count();
         long pieces = w.objects().stream().mapToLong(o -> o.pieces().size()).sum();
         assertEquals(w.solids().size(), solids, "the world's solids are in the snapshot the view draws");
         assertEquals(pieces, s.scenery().size() - solids, "and its objects' pieces");
         assertTrue(s.centerOfMass().x() > 0.4, "the robot started at the world's start and moved: " + s.centerOfMass());
-        assertTrue(ide.status().message().startsWith("Score "), "the status gives the score first: " + ide.status().message());
-        Gui.screenshot(ide.shell(), "world-" + world + ".png");
+        assertTrue(ide.status.message().startsWith("Score "), "the status gives the score first: " + ide.status.message());
+        Gui.screenshot(ide.shell, "world-" + world + ".png");
         ModuleCameraWindow camera = ide.openModuleCamera();
         try {
             camera.shell().setSize(720, 520);

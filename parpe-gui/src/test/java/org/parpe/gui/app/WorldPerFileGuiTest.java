@@ -38,20 +38,20 @@ class WorldPerFileGuiTest {
         Path a = Gui.example("tutorial/03-hello-snake.xml");
         Path b = Gui.example("tutorial/05-centipede-mirror.xml");
         Gui.open(ide, a);
-        ide.viewBar().world().pick(race);
+        ide.viewBar.world().pick(race);
         Gui.open(ide, b);
-        assertEquals(WorldPicker.FLAT, ide.viewBar().world().choice(), "lesson 5 keeps its own world");
-        assertEquals(null, ide.viewBar().world().world());
+        assertEquals(WorldPicker.FLAT, ide.viewBar.world().choice(), "lesson 5 keeps its own world");
+        assertEquals(null, ide.viewBar.world().world());
         Gui.open(ide, a);
-        assertEquals(race.toString(), ide.viewBar().world().choice(), "lesson 3 keeps the race track");
-        Gui.screenshot(ide.shell(), "world-per-file.png");
-        ide.shell().dispose();
+        assertEquals(race.toString(), ide.viewBar.world().choice(), "lesson 3 keeps the race track");
+        Gui.screenshot(ide.shell, "world-per-file.png");
+        ide.shell.dispose();
 
         ide = Gui.openIde(home);
         Gui.open(ide, a);
-        assertEquals(race.toString(), ide.viewBar().world().choice(), "the world chosen for a file is remembered");
+        assertEquals(race.toString(), ide.viewBar.world().choice(), "the world chosen for a file is remembered");
         Gui.open(ide, b);
-        assertEquals(WorldPicker.FLAT, ide.viewBar().world().choice());
+        assertEquals(WorldPicker.FLAT, ide.viewBar.world().choice());
     }
 
     @Test
@@ -59,9 +59,9 @@ class WorldPerFileGuiTest {
         ide = Gui.openIde(Files.createTempDirectory("parpe-world"));
         Gui.open(ide, Gui.example("tutorial/12-rubble-snake.xml"));
         assertEquals(Gui.example("worlds/rubble.xml").toAbsolutePath().normalize().toString(),
-                ide.viewBar().world().choice());
+                ide.viewBar.world().choice());
         Gui.open(ide, Gui.example("tutorial/03-hello-snake.xml"));
-        assertEquals(WorldPicker.FLAT, ide.viewBar().world().choice(), "a script that names no world: the flat floor");
+        assertEquals(WorldPicker.FLAT, ide.viewBar.world().choice(), "a script that names no world: the flat floor");
     }
 
     @Test
@@ -73,15 +73,15 @@ class WorldPerFileGuiTest {
                 Gui.example("worlds/race-track.xml")).replace("time-limit=\"60\"", "time-limit=\"1\""));
         Gui.open(ide, Gui.example("tutorial/05-centipede-mirror.xml"));
         Gui.pump(() -> ide.program() != null, "lesson 5 to load");
-        ide.viewBar().select("centipede");
-        ide.viewBar().world().pick(track);
+        ide.viewBar.select("centipede");
+        ide.viewBar.world().pick(track);
         // said as soon as the world is chosen, before any run
-        Gui.pump(() -> ide.status().message().startsWith("Robot centipede does not fit the world race-track-1s.xml: it starts "),
-                "the status to say the centipede does not fit: " + ide.status().message());
-        ide.toolbar().setTarget(RunOn.SIMULATOR);
-        ide.toolbar().setSpeed(Speed.MAX);
+        Gui.pump(() -> ide.status.message().startsWith("Robot centipede does not fit the world race-track-1s.xml: it starts "),
+                "the status to say the centipede does not fit: " + ide.status.message());
+        ide.toolbar.setTarget(RunOn.SIMULATOR);
+        ide.toolbar.setSpeed(Speed.MAX);
         AtomicReference<RunOutcome> outcome = new AtomicReference<>();
-        ide.runs().run(false, -1, outcome::set);
+        ide.runs.run(false, -1, outcome::set);
         Gui.pump(() -> outcome.get() != null, "lesson 5 on the one-second race track");
         Gui.pump(() -> ide.problems().shown().stream().anyMatch(d -> d.severity() == Severity.WARNING),
                 "the warning in Problems: " + ide.problems().shown());
@@ -90,7 +90,7 @@ class WorldPerFileGuiTest {
         assertTrue(warnings.stream().anyMatch(m -> m.startsWith("the robot does not fit the world race-track-1s.xml: ")),
                 warnings.toString());
         // in a world the score comes first (what a teacher records), then how the run ended
-        assertTrue(ide.status().message().contains("run ended at the world's time limit, t = 1.00 s"),
-                ide.status().message());
+        assertTrue(ide.status.message().contains("run ended at the world's time limit, t = 1.00 s"),
+                ide.status.message());
     }
 }

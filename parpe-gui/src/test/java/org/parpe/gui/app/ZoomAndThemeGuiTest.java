@@ -46,35 +46,35 @@ class ZoomAndThemeGuiTest {
     }
 
     private int plotPoints() {
-        return ide.plots().chart().control().getFont().getFontData()[0].getHeight();
+        return ide.plots.chart().control().getFont().getFontData()[0].getHeight();
     }
 
     private int editorPoints() {
-        return ide.editor().widget().getFont().getFontData()[0].getHeight();
+        return ide.editor.widget().getFont().getFontData()[0].getHeight();
     }
 
     @Test
     void ctrlPlusMinusAndZeroZoomTheEditor() throws Exception {
         ide = Gui.openIde(Files.createTempDirectory("parpe-zoom"));
         Gui.open(ide, Gui.example("hello-snake.xml"));
-        String text = ide.editor().document().get();
+        String text = ide.editor.document().get();
         int normal = editorPoints();
-        ide.shell().forceActive();
-        ide.editor().widget().setFocus();
-        Gui.pump(() -> ide.editor().widget().isFocusControl(), "the editor to have the focus");
+        ide.shell.forceActive();
+        ide.editor.widget().setFocus();
+        Gui.pump(() -> ide.editor.widget().isFocusControl(), "the editor to have the focus");
         int plotNormal = plotPoints();
-        chord(ide.shell().getDisplay(), SWT.CTRL, '=');
+        chord(ide.shell.getDisplay(), SWT.CTRL, '=');
         Gui.pump(() -> editorPoints() == normal + 2, "Ctrl+= to make the text larger");
         Gui.pump(() -> plotPoints() == plotNormal + 2, "Ctrl+= to make the plot's text larger too");
-        chord(ide.shell().getDisplay(), SWT.CTRL, '=');
+        chord(ide.shell.getDisplay(), SWT.CTRL, '=');
         Gui.pump(() -> editorPoints() == normal + 4, "a second Ctrl+=");
-        chord(ide.shell().getDisplay(), SWT.CTRL, '-');
+        chord(ide.shell.getDisplay(), SWT.CTRL, '-');
         Gui.pump(() -> editorPoints() == normal + 2, "Ctrl+- to make it smaller");
-        chord(ide.shell().getDisplay(), SWT.CTRL, '0');
+        chord(ide.shell.getDisplay(), SWT.CTRL, '0');
         Gui.pump(() -> editorPoints() == normal, "Ctrl+0 for the normal size");
         Gui.pump(() -> plotPoints() == plotNormal, "Ctrl+0 for the plot's normal size");
         Gui.settle();
-        assertEquals(text, ide.editor().document().get(), "the zoom keys typed into the script");
+        assertEquals(text, ide.editor.document().get(), "the zoom keys typed into the script");
         assertReadable(ide);
     }
 
@@ -100,8 +100,8 @@ class ZoomAndThemeGuiTest {
 
     /** The editor's colours stand out from its background in the theme the test runs with. */
     static void assertReadable(IdeWindow ide) {
-        RGB bg = ide.editor().widget().getBackground().getRGB();
-        RGB fg = ide.editor().widget().getForeground().getRGB();
+        RGB bg = ide.editor.widget().getBackground().getRGB();
+        RGB fg = ide.editor.widget().getForeground().getRGB();
         for (Color c : ParslEditor.colours()) {
             assertTrue(contrast(c.getRGB(), bg) >= 3, "syntax colour " + c.getRGB() + " on the editor's " + bg + ": "
                     + contrast(c.getRGB(), bg));
