@@ -66,7 +66,7 @@ class SourceSizesTest {
         return m.append("        return n;\n    }\n").toString();
     }
 
-    /** Every main source of the five modules but the library copies and the files being split. */
+    /** Every main source of the five modules but the library copies. */
     private static List<Path> mainSources() throws IOException {
         List<Path> files = new ArrayList<>();
         for (String m : MODULES) {
