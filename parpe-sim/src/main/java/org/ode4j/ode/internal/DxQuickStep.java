@@ -11,7 +11,9 @@
  * {@code WARM_STARTING} ({@code warmStartRows}, {@code keepRows}). On one thread, the work
  * counters are read and written plainly instead of by atomic operations ({@code claim},
  * {@code take}), and the constraint shuffle draws from the stepping world's own generator
- * ({@link WorldRandom}) instead of ODE4j's global one: the same numbers in the same order.
+ * ({@link WorldRandom}) instead of ODE4j's global one: the same numbers in the same order. Stage 0's
+ * inertia products in the world frame use {@link Multiply333} (each entry written out, the same
+ * products added in the same order) instead of ODE4j's {@code dMultiply0_333}/{@code dMultiply2_333}.
  */
 /*************************************************************************
  *                                                                       *
@@ -44,8 +46,6 @@ import static org.ode4j.ode.DMatrix.dSetZero;
 import static org.ode4j.ode.OdeConstants.dInfinity;
 import static org.ode4j.ode.OdeMath.dInvertMatrix3;
 import static org.ode4j.ode.OdeMath.dMultiply0_331;
-import static org.ode4j.ode.OdeMath.dMultiply0_333;
-import static org.ode4j.ode.OdeMath.dMultiply2_333;
 import static org.ode4j.ode.OdeMath.dMultiplyAdd0_331;
 import static org.ode4j.ode.OdeMath.dSetCrossMatrixMinus;
 import static org.ode4j.ode.internal.Common.*;
@@ -928,16 +928,16 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
             DxBody b = bodyP[bodyIndex + bodyOfs];
 
             // compute inverse inertia tensor in global frame
-            dMultiply2_333 (tmp,b.invI,b.posr().R());
-			dMultiply0_333(invIA, invIrowP + IIE__MATRIX_MIN, b.posr().R(), tmp);
+            Multiply333.multiply2(tmp,b.invI,b.posr().R());
+			Multiply333.multiply0(invIA, invIrowP + IIE__MATRIX_MIN, b.posr().R(), tmp);
 
             // Don't apply gyroscopic torques to bodies
             // if not flagged or the body is kinematic
             if (b.isFlagsGyroscopic() && (b.invMass>0)) {
                 DMatrix3 I = work.inertia.setZero();
                 // compute inertia tensor in global frame
-                dMultiply2_333 (tmp,b.mass._I,b.posr().R());
-                dMultiply0_333 (I,b.posr().R(),tmp);
+                Multiply333.multiply2(tmp,b.mass._I,b.posr().R());
+                Multiply333.multiply0(I,b.posr().R(),tmp);
                 // compute rotational force
 //	#if 0
 //	                    // Explicit computation
@@ -979,7 +979,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
                 if (dInvertMatrix3(itInv,Itild)!=0) {
                     // "Divide" the original tensor
                     // by the pseudo-tensor (on the right)
-                    dMultiply0_333(Itild,I,itInv);
+                    Multiply333.multiply0(Itild,I,itInv);
                     // Subtract an identity matrix
                     //Itild[0]-=1; Itild[5]-=1; Itild[10]-=1;
                     Itild.sub(0, 0, 1);
