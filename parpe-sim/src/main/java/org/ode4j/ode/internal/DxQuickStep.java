@@ -6,8 +6,8 @@
  * step to step instead of new objects in every step (issue 36; docs/decisions.md, "The simulator's
  * tick allocates nothing"), and the single-threaded LCP sweep runs its rows in one loop
  * ({@code dxQuickStepIsland_Stage4LCP_IterationSteps}), reading a row's body forces once for
- * its sum and their update (the same values: nothing writes them in between). The arithmetic is
- * untouched. And, only when a world asks for it ({@link WarmStart}, set per thread by {@code SequentialQuickStep}), the rows
+ * its sum and their update, and not at all when the row before had the same bodies: it keeps the
+ * forces it stored (the same values). The arithmetic is untouched. And, only when a world asks for it ({@link WarmStart}, set per thread by {@code SequentialQuickStep}), the rows
  * start from the forces of the step before instead of zero, as ODE's C solver did with
  * {@code WARM_STARTING} ({@code warmStartRows}, {@code keepRows}). On one thread, the work
  * counters are read and written plainly instead of by atomic operations ({@code claim},
@@ -2408,7 +2408,11 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
      * read its seven arrays again; with the loop here they are read once. A row's body forces are
      * read once, for its sum and for their update: {@code fc[k] = f + delta * iMJ[..]} with
      * {@code f} the value read before is {@code fc[k] += delta * iMJ[..]} (the one store between
-     * is to {@code lambda}, and a row's two bodies differ). Same rows, same order, same arithmetic.
+     * is to {@code lambda}, and a row's two bodies differ). A row with the bodies of the row
+     * before (a joint's rows follow one another until the shuffle) takes the forces that row
+     * stored from its locals instead of reading them back: each row's sums waited on the stores
+     * of the row before, the chain the sweep's time goes to. Same rows, same order, same
+     * arithmetic.
      */
     private static
     void dxQuickStepIsland_Stage4LCP_IterationSteps(dxQuickStepperStage4CallContext stage4CallContext, int from, int to)
@@ -2421,6 +2425,10 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
         int[] jb = localContext.m_jb;
         int[] findex = localContext.m_findex;
 	    double[] iMJ = stage4CallContext.m_iMJ;
+	    // PARPE: the bodies of the row before and the forces it stored for them (see below).
+	    int last1 = -2, last2 = -2;
+	    double f1lx = 0, f1ly = 0, f1lz = 0, f1ax = 0, f1ay = 0, f1az = 0;
+	    double f2lx = 0, f2ly = 0, f2lz = 0, f2ax = 0, f2ay = 0, f2az = 0;
       for (int i = from; i != to; ++i) {
         int index = order[i];
 
@@ -2437,19 +2445,26 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
         
 	    // @@@ potential optimization: SIMD-ize this and the b2 >= 0 case
         int fc_ptr1 = b1 * CFE__MAX;
-        // PARPE: the body forces are read once, for the sum and for their update below.
-        final double f1lx = fc[fc_ptr1 + CFE_LX], f1ly = fc[fc_ptr1 + CFE_LY], f1lz = fc[fc_ptr1 + CFE_LZ];
-        final double f1ax = fc[fc_ptr1 + CFE_AX], f1ay = fc[fc_ptr1 + CFE_AY], f1az = fc[fc_ptr1 + CFE_AZ];
+        final int fc_ptr2 = b2 * CFE__MAX;
+        // PARPE: the body forces are read once, for the sum and for their update below; when the
+        // row has the bodies of the row before (a joint's rows follow one another), they are the
+        // values that row stored, still in f1.. and f2.., not read back from fc.
+        if (b1 != last1 || b2 != last2) {
+            f1lx = fc[fc_ptr1 + CFE_LX]; f1ly = fc[fc_ptr1 + CFE_LY]; f1lz = fc[fc_ptr1 + CFE_LZ];
+            f1ax = fc[fc_ptr1 + CFE_AX]; f1ay = fc[fc_ptr1 + CFE_AY]; f1az = fc[fc_ptr1 + CFE_AZ];
+            if (b2 != -1) {
+                f2lx = fc[fc_ptr2 + CFE_LX]; f2ly = fc[fc_ptr2 + CFE_LY]; f2lz = fc[fc_ptr2 + CFE_LZ];
+                f2ax = fc[fc_ptr2 + CFE_AX]; f2ay = fc[fc_ptr2 + CFE_AY]; f2az = fc[fc_ptr2 + CFE_AZ];
+            }
+            last1 = b1;
+            last2 = b2;
+        }
         delta -= f1lx * J[J_ptr + JME_J1LX] + f1ly * J[J_ptr + JME_J1LY] +
         		f1lz * J[J_ptr + JME_J1LZ] + f1ax * J[J_ptr + JME_J1AX] +
         		f1ay * J[J_ptr + JME_J1AY] + f1az * J[J_ptr + JME_J1AZ];
 	    // @@@ potential optimization: handle 1-body constraints in a separate
 	    //     loop to avoid the cost of test & jump?
-	    final int fc_ptr2 = b2 * CFE__MAX;
-	    double f2lx = 0, f2ly = 0, f2lz = 0, f2ax = 0, f2ay = 0, f2az = 0;
 	    if (b2 != -1) {
-	        f2lx = fc[fc_ptr2 + CFE_LX]; f2ly = fc[fc_ptr2 + CFE_LY]; f2lz = fc[fc_ptr2 + CFE_LZ];
-	        f2ax = fc[fc_ptr2 + CFE_AX]; f2ay = fc[fc_ptr2 + CFE_AY]; f2az = fc[fc_ptr2 + CFE_AZ];
 	        delta -= f2lx * J[J_ptr + JME_J2LX] + f2ly * J[J_ptr + JME_J2LY] +
 	        		f2lz * J[J_ptr + JME_J2LZ] + f2ax * J[J_ptr + JME_J2AX] +
 	        		f2ay * J[J_ptr + JME_J2AY] + f2az * J[J_ptr + JME_J2AZ];
@@ -2493,21 +2508,21 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 	    final int iMJ_ptr = index * IMJ__MAX;
 		// update fc.
 		// @@@ potential optimization: SIMD for this and the b2 >= 0 case
-	    fc[fc_ptr1 + CFE_LX] = f1lx + delta * iMJ[iMJ_ptr + 0];
-		fc[fc_ptr1 + CFE_LY] = f1ly + delta * iMJ[iMJ_ptr + 1];
-		fc[fc_ptr1 + CFE_LZ] = f1lz + delta * iMJ[iMJ_ptr + 2];
-		fc[fc_ptr1 + CFE_AX] = f1ax + delta * iMJ[iMJ_ptr + 3];
-		fc[fc_ptr1 + CFE_AY] = f1ay + delta * iMJ[iMJ_ptr + 4];
-		fc[fc_ptr1 + CFE_AZ] = f1az + delta * iMJ[iMJ_ptr + 5];
+	    fc[fc_ptr1 + CFE_LX] = f1lx = f1lx + delta * iMJ[iMJ_ptr + 0];
+		fc[fc_ptr1 + CFE_LY] = f1ly = f1ly + delta * iMJ[iMJ_ptr + 1];
+		fc[fc_ptr1 + CFE_LZ] = f1lz = f1lz + delta * iMJ[iMJ_ptr + 2];
+		fc[fc_ptr1 + CFE_AX] = f1ax = f1ax + delta * iMJ[iMJ_ptr + 3];
+		fc[fc_ptr1 + CFE_AY] = f1ay = f1ay + delta * iMJ[iMJ_ptr + 4];
+		fc[fc_ptr1 + CFE_AZ] = f1az = f1az + delta * iMJ[iMJ_ptr + 5];
 		// @@@ potential optimization: handle 1-body constraints in a separate
 		//     loop to avoid the cost of test & jump?
 	    if (b2 != -1) {
-			fc[fc_ptr2 + CFE_LX] = f2lx + delta * iMJ[iMJ_ptr + 6];
-			fc[fc_ptr2 + CFE_LY] = f2ly + delta * iMJ[iMJ_ptr + 7];
-			fc[fc_ptr2 + CFE_LZ] = f2lz + delta * iMJ[iMJ_ptr + 8];
-			fc[fc_ptr2 + CFE_AX] = f2ax + delta * iMJ[iMJ_ptr + 9];
-			fc[fc_ptr2 + CFE_AY] = f2ay + delta * iMJ[iMJ_ptr + 10];
-			fc[fc_ptr2 + CFE_AZ] = f2az + delta * iMJ[iMJ_ptr + 11];
+			fc[fc_ptr2 + CFE_LX] = f2lx = f2lx + delta * iMJ[iMJ_ptr + 6];
+			fc[fc_ptr2 + CFE_LY] = f2ly = f2ly + delta * iMJ[iMJ_ptr + 7];
+			fc[fc_ptr2 + CFE_LZ] = f2lz = f2lz + delta * iMJ[iMJ_ptr + 8];
+			fc[fc_ptr2 + CFE_AX] = f2ax = f2ax + delta * iMJ[iMJ_ptr + 9];
+			fc[fc_ptr2 + CFE_AY] = f2ay = f2ay + delta * iMJ[iMJ_ptr + 10];
+			fc[fc_ptr2 + CFE_AZ] = f2az = f2az + delta * iMJ[iMJ_ptr + 11];
 		}
       }
     }  
