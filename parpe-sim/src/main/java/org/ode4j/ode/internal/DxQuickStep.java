@@ -6,8 +6,8 @@
  * step to step instead of new objects in every step (issue 36; docs/decisions.md, "The simulator's
  * tick allocates nothing"), and the single-threaded LCP sweep runs its rows in one loop
  * ({@code dxQuickStepIsland_Stage4LCP_IterationSteps}), reading a row's body forces once for
- * its sum and their update, and not at all when the row before had the same bodies: it keeps the
- * forces it stored (the same values). The arithmetic is untouched. And, only when a world asks for it ({@link WarmStart}, set per thread by {@code SequentialQuickStep}), the rows
+ * its sum and their update, and not at all for a body of the row before: that row's stored
+ * forces are kept in locals (the same values). The arithmetic is untouched. And, only when a world asks for it ({@link WarmStart}, set per thread by {@code SequentialQuickStep}), the rows
  * start from the forces of the step before instead of zero, as ODE's C solver did with
  * {@code WARM_STARTING} ({@code warmStartRows}, {@code keepRows}). On one thread, the work
  * counters are read and written plainly instead of by atomic operations ({@code claim},
@@ -2408,11 +2408,11 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
      * read its seven arrays again; with the loop here they are read once. A row's body forces are
      * read once, for its sum and for their update: {@code fc[k] = f + delta * iMJ[..]} with
      * {@code f} the value read before is {@code fc[k] += delta * iMJ[..]} (the one store between
-     * is to {@code lambda}, and a row's two bodies differ). A row with the bodies of the row
-     * before (a joint's rows follow one another until the shuffle) takes the forces that row
-     * stored from its locals instead of reading them back: each row's sums waited on the stores
-     * of the row before, the chain the sweep's time goes to. Same rows, same order, same
-     * arithmetic.
+     * is to {@code lambda}, and a row's two bodies differ). A body of the row before (a joint's
+     * rows follow one another until the shuffle, and neighbouring joints share a body) takes the
+     * forces that row stored from the locals instead of reading them back: each row's sums
+     * waited on the stores of the row before, the chain the sweep's time goes to. Same rows, same
+     * order, same arithmetic.
      */
     private static
     void dxQuickStepIsland_Stage4LCP_IterationSteps(dxQuickStepperStage4CallContext stage4CallContext, int from, int to)
@@ -2446,16 +2446,28 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 	    // @@@ potential optimization: SIMD-ize this and the b2 >= 0 case
         int fc_ptr1 = b1 * CFE__MAX;
         final int fc_ptr2 = b2 * CFE__MAX;
-        // PARPE: the body forces are read once, for the sum and for their update below; when the
-        // row has the bodies of the row before (a joint's rows follow one another), they are the
-        // values that row stored, still in f1.. and f2.., not read back from fc.
+        // PARPE: the body forces are read once, for the sum and for their update below; for a body
+        // of the row before they are the values that row stored, still in f1.. or f2.., not read
+        // back from fc.
         if (b1 != last1 || b2 != last2) {
-            f1lx = fc[fc_ptr1 + CFE_LX]; f1ly = fc[fc_ptr1 + CFE_LY]; f1lz = fc[fc_ptr1 + CFE_LZ];
-            f1ax = fc[fc_ptr1 + CFE_AX]; f1ay = fc[fc_ptr1 + CFE_AY]; f1az = fc[fc_ptr1 + CFE_AZ];
-            if (b2 != -1) {
+            double g1lx, g1ly, g1lz, g1ax, g1ay, g1az;
+            if (b1 == last1) {
+                g1lx = f1lx; g1ly = f1ly; g1lz = f1lz; g1ax = f1ax; g1ay = f1ay; g1az = f1az;
+            } else if (b1 == last2) {
+                g1lx = f2lx; g1ly = f2ly; g1lz = f2lz; g1ax = f2ax; g1ay = f2ay; g1az = f2az;
+            } else {
+                g1lx = fc[fc_ptr1 + CFE_LX]; g1ly = fc[fc_ptr1 + CFE_LY]; g1lz = fc[fc_ptr1 + CFE_LZ];
+                g1ax = fc[fc_ptr1 + CFE_AX]; g1ay = fc[fc_ptr1 + CFE_AY]; g1az = fc[fc_ptr1 + CFE_AZ];
+            }
+            if (b2 == -1) {
+                // no second body: f2.. are not used
+            } else if (b2 == last1) {
+                f2lx = f1lx; f2ly = f1ly; f2lz = f1lz; f2ax = f1ax; f2ay = f1ay; f2az = f1az;
+            } else if (b2 != last2) {
                 f2lx = fc[fc_ptr2 + CFE_LX]; f2ly = fc[fc_ptr2 + CFE_LY]; f2lz = fc[fc_ptr2 + CFE_LZ];
                 f2ax = fc[fc_ptr2 + CFE_AX]; f2ay = fc[fc_ptr2 + CFE_AY]; f2az = fc[fc_ptr2 + CFE_AZ];
             }
+            f1lx = g1lx; f1ly = g1ly; f1lz = g1lz; f1ax = g1ax; f1ay = g1ay; f1az = g1az;
             last1 = b1;
             last2 = b2;
         }
