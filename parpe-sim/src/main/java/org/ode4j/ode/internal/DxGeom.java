@@ -1,8 +1,11 @@
 /*
  * PARPE: a patched copy of ODE4j 0.5.3's org/ode4j/ode/internal/DxGeom.java (tag parent-0.5.3), used under
  * ODE4j's BSD licence (its notice follows, unchanged). It takes the place of the class in the
- * ODE4j jar (this module's classes come first on the class path and in the shaded jar). The one
- * change: dCollide's argument check makes its array only when it fails (issue 36; docs/decisions.md, "The simulator's tick allocates nothing"). The
+ * ODE4j jar (this module's classes come first on the class path and in the shaded jar). The
+ * changes: dCollide's argument check makes its array only when it fails (issue 36; docs/decisions.md,
+ * "The simulator's tick allocates nothing"), and {@code computePosr} multiplies the body's rotation
+ * by the offset's with {@link Multiply333} (nine entries written out) instead of ODE4j's
+ * {@code dMultiply0_333} (a call per entry): the same products added in the same order. The
  * arithmetic is untouched.
  */
 /*************************************************************************
@@ -620,7 +623,7 @@ public abstract class DxGeom extends DBase implements DGeom {
 //		_final_posr.pos.v[1] += body._posr.pos.v[1];
 //		_final_posr.pos.v[2] += body._posr.pos.v[2];
 		_final_posr.pos.add( body.posr().pos() );
-		dMultiply0_333 (_final_posr.Rw(),body.posr().R(),offset_posr.R());
+		Multiply333.multiply0(_final_posr.Rw(), body.posr().R(), offset_posr.R());
 	}
 
 //	boolean checkControlValueSizeValidity(void *dataValue, int *dataSize, 

@@ -5,13 +5,16 @@
  * change: the solver's work arrays and call contexts come from a per-thread {@code Work} kept from
  * step to step instead of new objects in every step (issue 36; docs/decisions.md, "The simulator's
  * tick allocates nothing"), and the single-threaded LCP sweep runs its rows in one loop
- * ({@code dxQuickStepIsland_Stage4LCP_IterationSteps}). The arithmetic is untouched. And, only when
- * a world asks for it ({@link WarmStart}, set per thread by {@code SequentialQuickStep}), the rows
+ * ({@code dxQuickStepIsland_Stage4LCP_IterationSteps}), reading a row's body forces once for
+ * its sum and their update, and not at all for a body of the row before: that row's stored
+ * forces are kept in locals (the same values). The arithmetic is untouched. And, only when a world asks for it ({@link WarmStart}, set per thread by {@code SequentialQuickStep}), the rows
  * start from the forces of the step before instead of zero, as ODE's C solver did with
  * {@code WARM_STARTING} ({@code warmStartRows}, {@code keepRows}). On one thread, the work
  * counters are read and written plainly instead of by atomic operations ({@code claim},
  * {@code take}), and the constraint shuffle draws from the stepping world's own generator
- * ({@link WorldRandom}) instead of ODE4j's global one: the same numbers in the same order.
+ * ({@link WorldRandom}) instead of ODE4j's global one: the same numbers in the same order. Stage 0's
+ * inertia products in the world frame use {@link Multiply333} (each entry written out, the same
+ * products added in the same order) instead of ODE4j's {@code dMultiply0_333}/{@code dMultiply2_333}.
  */
 /*************************************************************************
  *                                                                       *
@@ -44,8 +47,6 @@ import static org.ode4j.ode.DMatrix.dSetZero;
 import static org.ode4j.ode.OdeConstants.dInfinity;
 import static org.ode4j.ode.OdeMath.dInvertMatrix3;
 import static org.ode4j.ode.OdeMath.dMultiply0_331;
-import static org.ode4j.ode.OdeMath.dMultiply0_333;
-import static org.ode4j.ode.OdeMath.dMultiply2_333;
 import static org.ode4j.ode.OdeMath.dMultiplyAdd0_331;
 import static org.ode4j.ode.OdeMath.dSetCrossMatrixMinus;
 import static org.ode4j.ode.internal.Common.*;
@@ -928,16 +929,16 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
             DxBody b = bodyP[bodyIndex + bodyOfs];
 
             // compute inverse inertia tensor in global frame
-            dMultiply2_333 (tmp,b.invI,b.posr().R());
-			dMultiply0_333(invIA, invIrowP + IIE__MATRIX_MIN, b.posr().R(), tmp);
+            Multiply333.multiply2(tmp,b.invI,b.posr().R());
+			Multiply333.multiply0(invIA, invIrowP + IIE__MATRIX_MIN, b.posr().R(), tmp);
 
             // Don't apply gyroscopic torques to bodies
             // if not flagged or the body is kinematic
             if (b.isFlagsGyroscopic() && (b.invMass>0)) {
                 DMatrix3 I = work.inertia.setZero();
                 // compute inertia tensor in global frame
-                dMultiply2_333 (tmp,b.mass._I,b.posr().R());
-                dMultiply0_333 (I,b.posr().R(),tmp);
+                Multiply333.multiply2(tmp,b.mass._I,b.posr().R());
+                Multiply333.multiply0(I,b.posr().R(),tmp);
                 // compute rotational force
 //	#if 0
 //	                    // Explicit computation
@@ -979,7 +980,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
                 if (dInvertMatrix3(itInv,Itild)!=0) {
                     // "Divide" the original tensor
                     // by the pseudo-tensor (on the right)
-                    dMultiply0_333(Itild,I,itInv);
+                    Multiply333.multiply0(Itild,I,itInv);
                     // Subtract an identity matrix
                     //Itild[0]-=1; Itild[5]-=1; Itild[10]-=1;
                     Itild.sub(0, 0, 1);
@@ -2404,8 +2405,14 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
      * PARPE (issue 36): the rows {@code from} (inclusive) to {@code to} of the order, one after
      * the other, as {@code dxQuickStepIsland_Stage4LCP_IterationStep} did one call per row. The
      * body is too large for the JIT to inline into the loop of rows, so each row paid a call and
-     * read its seven arrays again; with the loop here they are read once. Same rows, same order,
-     * same arithmetic.
+     * read its seven arrays again; with the loop here they are read once. A row's body forces are
+     * read once, for its sum and for their update: {@code fc[k] = f + delta * iMJ[..]} with
+     * {@code f} the value read before is {@code fc[k] += delta * iMJ[..]} (the one store between
+     * is to {@code lambda}, and a row's two bodies differ). A body of the row before (a joint's
+     * rows follow one another until the shuffle, and neighbouring joints share a body) takes the
+     * forces that row stored from the locals instead of reading them back: each row's sums
+     * waited on the stores of the row before, the chain the sweep's time goes to. Same rows, same
+     * order, same arithmetic.
      */
     private static
     void dxQuickStepIsland_Stage4LCP_IterationSteps(dxQuickStepperStage4CallContext stage4CallContext, int from, int to)
@@ -2418,6 +2425,10 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
         int[] jb = localContext.m_jb;
         int[] findex = localContext.m_findex;
 	    double[] iMJ = stage4CallContext.m_iMJ;
+	    // PARPE: the bodies of the row before and the forces it stored for them (see below).
+	    int last1 = -2, last2 = -2;
+	    double f1lx = 0, f1ly = 0, f1lz = 0, f1ax = 0, f1ay = 0, f1az = 0;
+	    double f2lx = 0, f2ly = 0, f2lz = 0, f2ax = 0, f2ay = 0, f2az = 0;
       for (int i = from; i != to; ++i) {
         int index = order[i];
 
@@ -2434,17 +2445,41 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
         
 	    // @@@ potential optimization: SIMD-ize this and the b2 >= 0 case
         int fc_ptr1 = b1 * CFE__MAX;
-        delta -= fc[fc_ptr1 + CFE_LX] * J[J_ptr + JME_J1LX] + fc[fc_ptr1 + CFE_LY] * J[J_ptr + JME_J1LY] +
-        		fc[fc_ptr1 + CFE_LZ] * J[J_ptr + JME_J1LZ] + fc[fc_ptr1 + CFE_AX] * J[J_ptr + JME_J1AX] +
-        		fc[fc_ptr1 + CFE_AY] * J[J_ptr + JME_J1AY] + fc[fc_ptr1 + CFE_AZ] * J[J_ptr + JME_J1AZ];
-        // @@@ potential optimization: handle 1-body constraints in a separate
+        final int fc_ptr2 = b2 * CFE__MAX;
+        // PARPE: the body forces are read once, for the sum and for their update below; for a body
+        // of the row before they are the values that row stored, still in f1.. or f2.., not read
+        // back from fc.
+        if (b1 != last1 || b2 != last2) {
+            double g1lx, g1ly, g1lz, g1ax, g1ay, g1az;
+            if (b1 == last1) {
+                g1lx = f1lx; g1ly = f1ly; g1lz = f1lz; g1ax = f1ax; g1ay = f1ay; g1az = f1az;
+            } else if (b1 == last2) {
+                g1lx = f2lx; g1ly = f2ly; g1lz = f2lz; g1ax = f2ax; g1ay = f2ay; g1az = f2az;
+            } else {
+                g1lx = fc[fc_ptr1 + CFE_LX]; g1ly = fc[fc_ptr1 + CFE_LY]; g1lz = fc[fc_ptr1 + CFE_LZ];
+                g1ax = fc[fc_ptr1 + CFE_AX]; g1ay = fc[fc_ptr1 + CFE_AY]; g1az = fc[fc_ptr1 + CFE_AZ];
+            }
+            if (b2 == -1) {
+                // no second body: f2.. are not used
+            } else if (b2 == last1) {
+                f2lx = f1lx; f2ly = f1ly; f2lz = f1lz; f2ax = f1ax; f2ay = f1ay; f2az = f1az;
+            } else if (b2 != last2) {
+                f2lx = fc[fc_ptr2 + CFE_LX]; f2ly = fc[fc_ptr2 + CFE_LY]; f2lz = fc[fc_ptr2 + CFE_LZ];
+                f2ax = fc[fc_ptr2 + CFE_AX]; f2ay = fc[fc_ptr2 + CFE_AY]; f2az = fc[fc_ptr2 + CFE_AZ];
+            }
+            f1lx = g1lx; f1ly = g1ly; f1lz = g1lz; f1ax = g1ax; f1ay = g1ay; f1az = g1az;
+            last1 = b1;
+            last2 = b2;
+        }
+        delta -= f1lx * J[J_ptr + JME_J1LX] + f1ly * J[J_ptr + JME_J1LY] +
+        		f1lz * J[J_ptr + JME_J1LZ] + f1ax * J[J_ptr + JME_J1AX] +
+        		f1ay * J[J_ptr + JME_J1AY] + f1az * J[J_ptr + JME_J1AZ];
 	    // @@@ potential optimization: handle 1-body constraints in a separate
 	    //     loop to avoid the cost of test & jump?
 	    if (b2 != -1) {
-	        int fc_ptr2 = b2 * CFE__MAX;
-	        delta -= fc[fc_ptr2 + CFE_LX] * J[J_ptr + JME_J2LX] + fc[fc_ptr2 + CFE_LY] * J[J_ptr + JME_J2LY] +
-	        		fc[fc_ptr2 + CFE_LZ] * J[J_ptr + JME_J2LZ] + fc[fc_ptr2 + CFE_AX] * J[J_ptr + JME_J2AX] +
-	        		fc[fc_ptr2 + CFE_AY] * J[J_ptr + JME_J2AY] + fc[fc_ptr2 + CFE_AZ] * J[J_ptr + JME_J2AZ];
+	        delta -= f2lx * J[J_ptr + JME_J2LX] + f2ly * J[J_ptr + JME_J2LY] +
+	        		f2lz * J[J_ptr + JME_J2LZ] + f2ax * J[J_ptr + JME_J2AX] +
+	        		f2ay * J[J_ptr + JME_J2AY] + f2az * J[J_ptr + JME_J2AZ];
 	    }
 
 	    double hi_act, lo_act;
@@ -2485,22 +2520,21 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 	    final int iMJ_ptr = index * IMJ__MAX;
 		// update fc.
 		// @@@ potential optimization: SIMD for this and the b2 >= 0 case
-	    fc[fc_ptr1 + CFE_LX] += delta * iMJ[iMJ_ptr + 0];
-		fc[fc_ptr1 + CFE_LY] += delta * iMJ[iMJ_ptr + 1];
-		fc[fc_ptr1 + CFE_LZ] += delta * iMJ[iMJ_ptr + 2];
-		fc[fc_ptr1 + CFE_AX] += delta * iMJ[iMJ_ptr + 3];
-		fc[fc_ptr1 + CFE_AY] += delta * iMJ[iMJ_ptr + 4];
-		fc[fc_ptr1 + CFE_AZ] += delta * iMJ[iMJ_ptr + 5];
+	    fc[fc_ptr1 + CFE_LX] = f1lx = f1lx + delta * iMJ[iMJ_ptr + 0];
+		fc[fc_ptr1 + CFE_LY] = f1ly = f1ly + delta * iMJ[iMJ_ptr + 1];
+		fc[fc_ptr1 + CFE_LZ] = f1lz = f1lz + delta * iMJ[iMJ_ptr + 2];
+		fc[fc_ptr1 + CFE_AX] = f1ax = f1ax + delta * iMJ[iMJ_ptr + 3];
+		fc[fc_ptr1 + CFE_AY] = f1ay = f1ay + delta * iMJ[iMJ_ptr + 4];
+		fc[fc_ptr1 + CFE_AZ] = f1az = f1az + delta * iMJ[iMJ_ptr + 5];
 		// @@@ potential optimization: handle 1-body constraints in a separate
 		//     loop to avoid the cost of test & jump?
 	    if (b2 != -1) {
-	        int fc_ptr2 = b2 * CFE__MAX;
-			fc[fc_ptr2 + CFE_LX] += delta * iMJ[iMJ_ptr + 6];
-			fc[fc_ptr2 + CFE_LY] += delta * iMJ[iMJ_ptr + 7];
-			fc[fc_ptr2 + CFE_LZ] += delta * iMJ[iMJ_ptr + 8];
-			fc[fc_ptr2 + CFE_AX] += delta * iMJ[iMJ_ptr + 9];
-			fc[fc_ptr2 + CFE_AY] += delta * iMJ[iMJ_ptr + 10];
-			fc[fc_ptr2 + CFE_AZ] += delta * iMJ[iMJ_ptr + 11];
+			fc[fc_ptr2 + CFE_LX] = f2lx = f2lx + delta * iMJ[iMJ_ptr + 6];
+			fc[fc_ptr2 + CFE_LY] = f2ly = f2ly + delta * iMJ[iMJ_ptr + 7];
+			fc[fc_ptr2 + CFE_LZ] = f2lz = f2lz + delta * iMJ[iMJ_ptr + 8];
+			fc[fc_ptr2 + CFE_AX] = f2ax = f2ax + delta * iMJ[iMJ_ptr + 9];
+			fc[fc_ptr2 + CFE_AY] = f2ay = f2ay + delta * iMJ[iMJ_ptr + 10];
+			fc[fc_ptr2 + CFE_AZ] = f2az = f2az + delta * iMJ[iMJ_ptr + 11];
 		}
       }
     }  

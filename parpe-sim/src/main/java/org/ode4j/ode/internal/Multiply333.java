@@ -1,0 +1,62 @@
+package org.ode4j.ode.internal;
+
+import org.ode4j.math.DMatrix3;
+import org.ode4j.math.DMatrix3C;
+
+/**
+ * PARPE (issue 36): ODE4j 0.5.3's 3x3 matrix products {@code OdeMath.dMultiply0_333} ({@code a = b c})
+ * and {@code dMultiply2_333} ({@code a = b c^T}) with each entry written out, for the tick's hot
+ * callers: a geom's rotation from its body's ({@code DxGeom.computePosr}) and a body's inertia in
+ * the world frame (QuickStep's stage 0). ODE4j computes every entry by {@code DMatrix3C.dotRowCol}
+ * or {@code dotRowRow}, one call per entry that the JIT does not inline (a switch over the row and
+ * column, too large), so nine calls and nine switches per product. Each entry here is the same
+ * three products added in the same order, {@code (b_i0 c_0j + b_i1 c_1j) + b_i2 c_2j}, and the
+ * entries are written in ODE4j's order, row by row: the results are bit-identical, even when
+ * {@code a} is one of the factors (Multiply333Test compares them with ODE4j's).
+ */
+final class Multiply333 {
+	private Multiply333() {
+	}
+
+	/** {@code a = b c}, as {@code OdeMath.dMultiply0_333(DMatrix3, DMatrix3C, DMatrix3C)}. */
+	static void multiply0(DMatrix3 a, DMatrix3C b, DMatrix3C c) {
+		a.set00(b.get00() * c.get00() + b.get01() * c.get10() + b.get02() * c.get20());
+		a.set01(b.get00() * c.get01() + b.get01() * c.get11() + b.get02() * c.get21());
+		a.set02(b.get00() * c.get02() + b.get01() * c.get12() + b.get02() * c.get22());
+		a.set10(b.get10() * c.get00() + b.get11() * c.get10() + b.get12() * c.get20());
+		a.set11(b.get10() * c.get01() + b.get11() * c.get11() + b.get12() * c.get21());
+		a.set12(b.get10() * c.get02() + b.get11() * c.get12() + b.get12() * c.get22());
+		a.set20(b.get20() * c.get00() + b.get21() * c.get10() + b.get22() * c.get20());
+		a.set21(b.get20() * c.get01() + b.get21() * c.get11() + b.get22() * c.get21());
+		a.set22(b.get20() * c.get02() + b.get21() * c.get12() + b.get22() * c.get22());
+	}
+
+	/**
+	 * {@code b c} into the 3x4 block of {@code a} at {@code ofs} (rows 4 numbers apart), as
+	 * {@code OdeMath.dMultiply0_333(double[], int, DMatrix3C, DMatrix3C)}.
+	 */
+	static void multiply0(double[] a, int ofs, DMatrix3C b, DMatrix3C c) {
+		a[ofs] = b.get00() * c.get00() + b.get01() * c.get10() + b.get02() * c.get20();
+		a[ofs + 1] = b.get00() * c.get01() + b.get01() * c.get11() + b.get02() * c.get21();
+		a[ofs + 2] = b.get00() * c.get02() + b.get01() * c.get12() + b.get02() * c.get22();
+		a[ofs + 4] = b.get10() * c.get00() + b.get11() * c.get10() + b.get12() * c.get20();
+		a[ofs + 5] = b.get10() * c.get01() + b.get11() * c.get11() + b.get12() * c.get21();
+		a[ofs + 6] = b.get10() * c.get02() + b.get11() * c.get12() + b.get12() * c.get22();
+		a[ofs + 8] = b.get20() * c.get00() + b.get21() * c.get10() + b.get22() * c.get20();
+		a[ofs + 9] = b.get20() * c.get01() + b.get21() * c.get11() + b.get22() * c.get21();
+		a[ofs + 10] = b.get20() * c.get02() + b.get21() * c.get12() + b.get22() * c.get22();
+	}
+
+	/** {@code a = b c^T}, as {@code OdeMath.dMultiply2_333(DMatrix3, DMatrix3C, DMatrix3C)}. */
+	static void multiply2(DMatrix3 a, DMatrix3C b, DMatrix3C c) {
+		a.set00(b.get00() * c.get00() + b.get01() * c.get01() + b.get02() * c.get02());
+		a.set01(b.get00() * c.get10() + b.get01() * c.get11() + b.get02() * c.get12());
+		a.set02(b.get00() * c.get20() + b.get01() * c.get21() + b.get02() * c.get22());
+		a.set10(b.get10() * c.get00() + b.get11() * c.get01() + b.get12() * c.get02());
+		a.set11(b.get10() * c.get10() + b.get11() * c.get11() + b.get12() * c.get12());
+		a.set12(b.get10() * c.get20() + b.get11() * c.get21() + b.get12() * c.get22());
+		a.set20(b.get20() * c.get00() + b.get21() * c.get01() + b.get22() * c.get02());
+		a.set21(b.get20() * c.get10() + b.get21() * c.get11() + b.get22() * c.get12());
+		a.set22(b.get20() * c.get20() + b.get21() * c.get21() + b.get22() * c.get22());
+	}
+}

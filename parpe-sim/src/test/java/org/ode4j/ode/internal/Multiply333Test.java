@@ -1,0 +1,95 @@
+package org.ode4j.ode.internal;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.SplittableRandom;
+import org.junit.jupiter.api.Test;
+import org.ode4j.math.DMatrix3;
+import org.ode4j.ode.OdeMath;
+
+/**
+ * {@link Multiply333}'s products are bit for bit ODE4j's ({@code OdeMath.dMultiply0_333} and
+ * {@code dMultiply2_333} in the ODE4j 0.5.3 jar, which PARPE does not patch): the same roundings,
+ * so every trace stays as it was. Entries of every size and sign and signed zeros, where a
+ * different order of the additions would round differently; and a product into one of its own
+ * factors, where the order the entries are written in shows.
+ */
+class Multiply333Test {
+    private final SplittableRandom pick = new SplittableRandom(36);
+
+    @Test
+    void productsAreOdesBitForBit() {
+        for (int n = 0; n < 20000; n++) {
+            DMatrix3 b = matrix();
+            DMatrix3 c = matrix();
+            DMatrix3 ode = new DMatrix3();
+            DMatrix3 own = new DMatrix3();
+            OdeMath.dMultiply0_333(ode, b, c);
+            Multiply333.multiply0(own, b, c);
+            assertSame(ode, own, "b c, case " + n);
+            OdeMath.dMultiply2_333(ode, b, c);
+            Multiply333.multiply2(own, b, c);
+            assertSame(ode, own, "b c^T, case " + n);
+
+            double[] odeRows = new double[16];
+            double[] ownRows = new double[16];
+            int ofs = pick.nextInt(5);
+            OdeMath.dMultiply0_333(odeRows, ofs, b, c);
+            Multiply333.multiply0(ownRows, ofs, b, c);
+            for (int i = 0; i < odeRows.length; i++) {
+                assertEquals(Double.doubleToRawLongBits(odeRows[i]), Double.doubleToRawLongBits(ownRows[i]),
+                        "b c into rows at " + ofs + ", number " + i + ", case " + n);
+            }
+        }
+    }
+
+    @Test
+    void aProductIntoItsOwnFactorIsOdes() {
+        for (int n = 0; n < 2000; n++) {
+            DMatrix3 b = matrix();
+            DMatrix3 c = matrix();
+            DMatrix3 ode = new DMatrix3(b);
+            DMatrix3 own = new DMatrix3(b);
+            OdeMath.dMultiply0_333(ode, ode, c);
+            Multiply333.multiply0(own, own, c);
+            assertSame(ode, own, "b := b c, case " + n);
+            ode.set(c);
+            own.set(c);
+            OdeMath.dMultiply2_333(ode, b, ode);
+            Multiply333.multiply2(own, b, own);
+            assertSame(ode, own, "c := b c^T, case " + n);
+        }
+    }
+
+    private DMatrix3 matrix() {
+        DMatrix3 m = new DMatrix3();
+        for (int i = 0; i < 3; i++) {
+            for (int j = 0; j < 3; j++) {
+                m.set(i, j, entry());
+            }
+        }
+        return m;
+    }
+
+    private double entry() {
+        switch (pick.nextInt(8)) {
+            case 0:
+                return 0.0;
+            case 1:
+                return -0.0;
+            case 2:
+                return pick.nextDouble(-1, 1) * Math.pow(10, pick.nextInt(-12, 12));
+            default:
+                return pick.nextDouble(-1, 1);
+        }
+    }
+
+    private static void assertSame(DMatrix3 expected, DMatrix3 actual, String what) {
+        for (int i = 0; i < 3; i++) {
+            for (int j = 0; j < 3; j++) {
+                assertEquals(Double.doubleToRawLongBits(expected.get(i, j)), Double.doubleToRawLongBits(actual.get(i, j)),
+                        what + ", entry " + i + j);
+            }
+        }
+    }
+}
