@@ -687,13 +687,13 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 				double k1 = bodyP[b1+bodyOfs].invMass;
 	            for (int j = 0; j != JVE__L_COUNT; j++) iMJ[iMJ_ptr + IMJ__1L_MIN + j] = k1 * J[J_ptr + JME__J1L_MIN + j];
 	            int invIrow1 = b1 * IIE__MAX + IIE__MATRIX_MIN;
-	            dMultiply0_331 (iMJ, iMJ_ptr + IMJ__1A_MIN, invI, invIrow1, J, J_ptr + JME__J1A_MIN);
+	            Multiply333.multiply0_331(iMJ, iMJ_ptr + IMJ__1A_MIN, invI, invIrow1, J, J_ptr + JME__J1A_MIN);
 
 				if (b2 != -1) {
 					double k2 = bodyP[b2+bodyOfs].invMass;
 		            for (int j = 0; j != JVE__L_COUNT; ++j) iMJ[iMJ_ptr + IMJ__2L_MIN + j] = k2 * J[J_ptr + JME__J2L_MIN + j];
 		            int invIrow2 = b2 * IIE__MAX + IIE__MATRIX_MIN;
-		            dMultiply0_331 (iMJ, iMJ_ptr + IMJ__2A_MIN, invI, invIrow2, J, J_ptr + JME__J2A_MIN);
+		            Multiply333.multiply0_331(iMJ, iMJ_ptr + IMJ__2A_MIN, invI, invIrow2, J, J_ptr + JME__J2A_MIN);
 				}
 
 	            if (++mi == miend) {
@@ -1268,10 +1268,11 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 				{
 					int jEnd = jRow + infom * JME__MAX;
 					for (int jCurr = jRow; jCurr != jEnd; jCurr += JME__MAX) {
-						dSetZero(J, jCurr + JME__J1_MIN, JME__J1_COUNT);
+						// PARPE: the zeros stored here, not by dSetZero (a call per block that was not inlined)
+						for (int k = 0; k != JME__J1_COUNT; k++) J[jCurr + JME__J1_MIN + k] = 0.0;
 						J[jCurr + JME_RHS] = 0.0;
 						J[jCurr + JME_CFM] = worldCFM;
-						dSetZero(J, jCurr + JME__J2_MIN, JME__J2_COUNT);
+						for (int k = 0; k != JME__J2_COUNT; k++) J[jCurr + JME__J2_MIN + k] = 0.0;
 						J[jCurr + JME_LO] = -dInfinity;
 						J[jCurr + JME_HI] = dInfinity;
 					}

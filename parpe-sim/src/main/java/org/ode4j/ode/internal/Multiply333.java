@@ -59,4 +59,22 @@ final class Multiply333 {
 		a.set21(b.get20() * c.get10() + b.get21() * c.get11() + b.get22() * c.get12());
 		a.set22(b.get20() * c.get20() + b.get21() * c.get21() + b.get22() * c.get22());
 	}
+
+	/**
+	 * {@code a = B c} for the 3x3 matrix {@code B} stored as rows 4 numbers apart from {@code ofsB}
+	 * and the 3-vector {@code c}, as {@code OdeMath.dMultiply0_331(double[], int, double[], int,
+	 * double[], int)}, which takes a call to {@code dCalcVectorDot3} and one to {@code dDOTpq} per
+	 * entry (QuickStep's {@code inv(M) J^T}, a row's angular block times its body's inverse inertia,
+	 * runs it twice for every constraint row). Each entry is {@code (B_i0 c_0 + B_i1 c_1) + B_i2 c_2},
+	 * as ODE4j adds it. {@code c} is read once, before {@code a} is written: {@code a} must not
+	 * overlap {@code c} (at every caller they are different arrays).
+	 */
+	static void multiply0_331(double[] a, int ofsA, double[] b, int ofsB, double[] c, int ofsC) {
+		double c0 = c[ofsC];
+		double c1 = c[ofsC + 1];
+		double c2 = c[ofsC + 2];
+		a[ofsA] = b[ofsB] * c0 + b[ofsB + 1] * c1 + b[ofsB + 2] * c2;
+		a[ofsA + 1] = b[ofsB + 4] * c0 + b[ofsB + 5] * c1 + b[ofsB + 6] * c2;
+		a[ofsA + 2] = b[ofsB + 8] * c0 + b[ofsB + 9] * c1 + b[ofsB + 10] * c2;
+	}
 }

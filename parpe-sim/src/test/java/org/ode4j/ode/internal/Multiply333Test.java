@@ -8,11 +8,11 @@ import org.ode4j.math.DMatrix3;
 import org.ode4j.ode.OdeMath;
 
 /**
- * {@link Multiply333}'s products are bit for bit ODE4j's ({@code OdeMath.dMultiply0_333} and
- * {@code dMultiply2_333} in the ODE4j 0.5.3 jar, which PARPE does not patch): the same roundings,
- * so every trace stays as it was. Entries of every size and sign and signed zeros, where a
- * different order of the additions would round differently; and a product into one of its own
- * factors, where the order the entries are written in shows.
+ * {@link Multiply333}'s products are bit for bit ODE4j's ({@code OdeMath.dMultiply0_333},
+ * {@code dMultiply2_333} and {@code dMultiply0_331} in the ODE4j 0.5.3 jar, which PARPE does not
+ * patch): the same roundings, so every trace stays as it was. Entries of every size and sign and
+ * signed zeros, where a different order of the additions would round differently; and a product
+ * into one of its own factors, where the order the entries are written in shows.
  */
 class Multiply333Test {
     private final SplittableRandom pick = new SplittableRandom(36);
@@ -39,6 +39,31 @@ class Multiply333Test {
             for (int i = 0; i < odeRows.length; i++) {
                 assertEquals(Double.doubleToRawLongBits(odeRows[i]), Double.doubleToRawLongBits(ownRows[i]),
                         "b c into rows at " + ofs + ", number " + i + ", case " + n);
+            }
+        }
+    }
+
+    @Test
+    void aMatrixTimesAVectorInArraysIsOdesBitForBit() {
+        for (int n = 0; n < 20000; n++) {
+            double[] b = new double[16];
+            double[] c = new double[8];
+            for (int i = 0; i < b.length; i++) {
+                b[i] = entry();
+            }
+            for (int i = 0; i < c.length; i++) {
+                c[i] = entry();
+            }
+            int ofsA = pick.nextInt(5);
+            int ofsB = pick.nextInt(5);
+            int ofsC = pick.nextInt(5);
+            double[] ode = new double[8];
+            double[] own = new double[8];
+            OdeMath.dMultiply0_331(ode, ofsA, b, ofsB, c, ofsC);
+            Multiply333.multiply0_331(own, ofsA, b, ofsB, c, ofsC);
+            for (int i = 0; i < ode.length; i++) {
+                assertEquals(Double.doubleToRawLongBits(ode[i]), Double.doubleToRawLongBits(own[i]),
+                        "B c at " + ofsA + ", " + ofsB + ", " + ofsC + ", number " + i + ", case " + n);
             }
         }
     }
