@@ -48,7 +48,6 @@ import static org.ode4j.ode.OdeConstants.dInfinity;
 import static org.ode4j.ode.OdeMath.dInvertMatrix3;
 import static org.ode4j.ode.OdeMath.dMultiply0_331;
 import static org.ode4j.ode.OdeMath.dMultiplyAdd0_331;
-import static org.ode4j.ode.OdeMath.dSetCrossMatrixMinus;
 import static org.ode4j.ode.internal.Common.*;
 import static org.ode4j.ode.internal.Matrix.dSetZero;
 import static org.ode4j.ode.internal.Misc.dRandInt;
@@ -63,7 +62,9 @@ import java.util.Arrays;
 import java.util.concurrent.atomic.AtomicInteger;
 
 import org.ode4j.math.DMatrix3;
+import org.ode4j.math.DMatrix3C;
 import org.ode4j.math.DVector3;
+import org.ode4j.math.DVector3C;
 import org.ode4j.ode.DJoint;
 import org.ode4j.ode.internal.Objects_H.dxQuickStepParameters;
 import org.ode4j.ode.internal.cpp4j.FILE;
@@ -925,7 +926,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
         Work work = Work.get();
         while ((bodyIndex = claim(callContext.m_inertiaBodyIndex, nb, callContext.m_stepperCallContext)) != nb) {
             int invIrowP = bodyIndex * IIE__MAX;
-            DMatrix3 tmp = work.tmp.setZero();
+            DMatrix3 tmp = work.tmp; // PARPE: not zeroed, multiply2 writes all of it
             DxBody b = bodyP[bodyIndex + bodyOfs];
 
             // compute inverse inertia tensor in global frame
@@ -935,7 +936,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
             // Don't apply gyroscopic torques to bodies
             // if not flagged or the body is kinematic
             if (b.isFlagsGyroscopic() && (b.invMass>0)) {
-                DMatrix3 I = work.inertia.setZero();
+                DMatrix3 I = work.inertia; // PARPE: not zeroed, multiply0 writes all of it
                 // compute inertia tensor in global frame
                 Multiply333.multiply2(tmp,b.mass._I,b.posr().R());
                 Multiply333.multiply0(I,b.posr().R(),tmp);
@@ -949,8 +950,8 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
                 //"Stabilizing Gyroscopic Forces in Rigid Multibody Simulations"
                 // (LacoursiÃ¨re 2006)
                 double h = callContext.m_stepperCallContext.m_stepSize(); // Step size
-                DVector3 L = work.momentum.setZero(); // Compute angular momentum
-                dMultiply0_331(L,I,b.avel);
+                DVector3 L = work.momentum; // Compute angular momentum
+                Multiply333.multiply0_331(L,I,b.avel);
                 
                 // Compute a new effective 'inertia tensor'
                 // for the implicit step: the cross-product 
@@ -959,19 +960,14 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
                 // Itild may not be symmetric pos-definite, 
                 // but we can still use it to compute implicit
                 // gyroscopic torques.
-                DMatrix3 Itild= work.itild.setZero();//{0};  
-                dSetCrossMatrixMinus(Itild,L);//,4);
-//	                    for (int ii=0;ii<12;++ii) {
-//	                      Itild[ii]=Itild[ii]*h+I[ii];
-//	                    }
-                Itild.scale(h);
-                Itild.add(I);
+                DMatrix3 Itild= work.itild;
+                implicitInertia(Itild, L, h, I);
 
                 // Scale momentum by inverse time to get 
                 // a sort of "torque"
                 L.scale(dRecip(h));//dScaleVector3(L,dRecip(h)); 
                 // Invert the pseudo-tensor
-                DMatrix3 itInv = work.itInv.setZero();
+                DMatrix3 itInv = work.itInv; // PARPE: not zeroed, used only where dInvertMatrix3 wrote all of it
                 // This is a closed-form inversion.
                 // It's probably not numerically stable
                 // when dealing with small masses with
@@ -993,8 +989,8 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
                     // to the old inertia matrix as explicit
                     // torques with a semi-implicit update
                     // step.
-                    DVector3 tau0 = work.tau0.setZero();
-                    dMultiply0_331(tau0,Itild,L);
+                    DVector3 tau0 = work.tau0;
+                    Multiply333.multiply0_331(tau0,Itild,L);
                     
                     // Add the gyro torques to the torque 
                     // accumulator
@@ -1006,6 +1002,25 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 //	#endif
             }
 	    }
+	}
+
+	/**
+	 * PARPE: {@code itild = h [L]x- + i} as ODE4j computes it, {@code itild.setZero()},
+	 * {@code dSetCrossMatrixMinus(itild, L)}, {@code itild.scale(h)}, {@code itild.add(i)}, with the
+	 * entries written out: each is the same product plus the same term (a zero of the diagonal,
+	 * {@code 0.0 * h}, too), without the passes over the whole matrix (Multiply333Test compares them bit for bit).
+	 */
+	static void implicitInertia(DMatrix3 itild, DVector3C L, double h, DMatrix3C i) {
+		double l0 = L.get0(), l1 = L.get1(), l2 = L.get2();
+		itild.set00(0.0 * h + i.get00());
+		itild.set01(l2 * h + i.get01());
+		itild.set02(-l1 * h + i.get02());
+		itild.set10(-l2 * h + i.get10());
+		itild.set11(0.0 * h + i.get11());
+		itild.set12(l0 * h + i.get12());
+		itild.set20(l1 * h + i.get20());
+		itild.set21(-l0 * h + i.get21());
+		itild.set22(0.0 * h + i.get22());
 	}
 
 	private static

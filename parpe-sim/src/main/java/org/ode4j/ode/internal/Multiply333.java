@@ -2,6 +2,8 @@ package org.ode4j.ode.internal;
 
 import org.ode4j.math.DMatrix3;
 import org.ode4j.math.DMatrix3C;
+import org.ode4j.math.DVector3;
+import org.ode4j.math.DVector3C;
 
 /**
  * PARPE (issue 36): ODE4j 0.5.3's 3x3 matrix products {@code OdeMath.dMultiply0_333} ({@code a = b c})
@@ -76,5 +78,20 @@ final class Multiply333 {
 		a[ofsA] = b[ofsB] * c0 + b[ofsB + 1] * c1 + b[ofsB + 2] * c2;
 		a[ofsA + 1] = b[ofsB + 4] * c0 + b[ofsB + 5] * c1 + b[ofsB + 6] * c2;
 		a[ofsA + 2] = b[ofsB + 8] * c0 + b[ofsB + 9] * c1 + b[ofsB + 10] * c2;
+	}
+
+	/**
+	 * {@code a = b c} for a 3x3 matrix and a 3-vector, as {@code OdeMath.dMultiply0_331(DVector3,
+	 * DMatrix3C, DVector3C)}, whose {@code DMatrix3C.dotRow} per entry is a call with a switch over
+	 * the row (QuickStep's stage 0, a body's angular momentum and gyroscopic torque). All three
+	 * entries are computed before {@code a} is written, as ODE4j does, so {@code a} may be {@code c}.
+	 */
+	static void multiply0_331(DVector3 a, DMatrix3C b, DVector3C c) {
+		double c0 = c.get0();
+		double c1 = c.get1();
+		double c2 = c.get2();
+		a.set(b.get00() * c0 + b.get01() * c1 + b.get02() * c2,
+				b.get10() * c0 + b.get11() * c1 + b.get12() * c2,
+				b.get20() * c0 + b.get21() * c1 + b.get22() * c2);
 	}
 }

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 import org.ode4j.math.DMatrix3;
+import org.ode4j.math.DVector3;
 import org.ode4j.ode.OdeMath;
 
 /**
@@ -69,6 +70,42 @@ class Multiply333Test {
     }
 
     @Test
+    void aMatrixTimesAVectorIsOdesBitForBit() {
+        for (int n = 0; n < 20000; n++) {
+            DMatrix3 b = matrix();
+            DVector3 c = new DVector3(entry(), entry(), entry());
+            DVector3 ode = new DVector3();
+            DVector3 own = new DVector3();
+            OdeMath.dMultiply0_331(ode, b, c);
+            Multiply333.multiply0_331(own, b, c);
+            assertSame(ode, own, "b c, case " + n);
+            ode.set(c);
+            own.set(c);
+            OdeMath.dMultiply0_331(ode, b, ode);
+            Multiply333.multiply0_331(own, b, own);
+            assertSame(ode, own, "c := b c, case " + n);
+        }
+    }
+
+    /** QuickStep's stage 0 builds its implicit gyroscopic tensor as ODE4j's calls did. */
+    @Test
+    void theImplicitInertiaIsOdesBitForBit() {
+        for (int n = 0; n < 20000; n++) {
+            DMatrix3 inertia = matrix();
+            DVector3 momentum = new DVector3(entry(), entry(), entry());
+            double h = pick.nextInt(4) == 0 ? entry() : 0.005;
+            DMatrix3 ode = matrix();
+            ode.setZero();
+            OdeMath.dSetCrossMatrixMinus(ode, momentum);
+            ode.scale(h);
+            ode.add(inertia);
+            DMatrix3 own = matrix();
+            DxQuickStep.implicitInertia(own, momentum, h, inertia);
+            assertSame(ode, own, "h [L]x- + I, case " + n);
+        }
+    }
+
+    @Test
     void aProductIntoItsOwnFactorIsOdes() {
         for (int n = 0; n < 2000; n++) {
             DMatrix3 b = matrix();
@@ -115,6 +152,13 @@ class Multiply333Test {
                 assertEquals(Double.doubleToRawLongBits(expected.get(i, j)), Double.doubleToRawLongBits(actual.get(i, j)),
                         what + ", entry " + i + j);
             }
+        }
+    }
+
+    private static void assertSame(DVector3 expected, DVector3 actual, String what) {
+        for (int i = 0; i < 3; i++) {
+            assertEquals(Double.doubleToRawLongBits(expected.get(i)), Double.doubleToRawLongBits(actual.get(i)),
+                    what + ", entry " + i);
         }
     }
 }
