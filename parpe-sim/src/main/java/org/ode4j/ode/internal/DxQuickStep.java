@@ -303,7 +303,11 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 		 * whose every entry the step writes before it reads it: {@code J} (stage 2a sets all 16
 		 * numbers of each of the {@code m} rows, then the joints fill them in) and {@code Jcopy}
 		 * (stage 2a copies the rows of the joints with feedback, the only ones stage 4b reads).
-		 * Zeroing them cost a pass over 256 bytes a row in every step.
+		 * Zeroing them cost a pass over 256 bytes a row in every step. Likewise {@code lambda} and
+		 * the body forces {@code cforce}, which stage 4a and {@code Stage4LCP_STfcComputation} zero
+		 * themselves (as ODE's C solver, whose arrays come unzeroed from its arena), and {@code iMJ},
+		 * whose second body's half of a row is read only where the row has a second body, the
+		 * rows {@code compute_invM_JT} writes in full.
 		 */
 		double[] written(int slot, int size) {
 			double[] a = doubles[slot];
@@ -683,26 +687,31 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 	        int iMJ_ptr = mi * IMJ__MAX;
 	        int J_ptr = mi * JME__MAX;
 	        while (true) {
-		        int b1 = first(jb, mi);
-				int b2 = second(jb, mi);
-				double k1 = bodyP[b1+bodyOfs].invMass;
-	            for (int j = 0; j != JVE__L_COUNT; j++) iMJ[iMJ_ptr + IMJ__1L_MIN + j] = k1 * J[J_ptr + JME__J1L_MIN + j];
-	            int invIrow1 = b1 * IIE__MAX + IIE__MATRIX_MIN;
-	            Multiply333.multiply0_331(iMJ, iMJ_ptr + IMJ__1A_MIN, invI, invIrow1, J, J_ptr + JME__J1A_MIN);
-
-				if (b2 != -1) {
-					double k2 = bodyP[b2+bodyOfs].invMass;
-		            for (int j = 0; j != JVE__L_COUNT; ++j) iMJ[iMJ_ptr + IMJ__2L_MIN + j] = k2 * J[J_ptr + JME__J2L_MIN + j];
-		            int invIrow2 = b2 * IIE__MAX + IIE__MATRIX_MIN;
-		            Multiply333.multiply0_331(iMJ, iMJ_ptr + IMJ__2A_MIN, invI, invIrow2, J, J_ptr + JME__J2A_MIN);
-				}
-
+	            invMJTRow(J, iMJ, jb, bodyP, bodyOfs, invI, mi);
 	            if (++mi == miend) {
 	                break;
-	            }			
-	            iMJ_ptr += IMJ__MAX;
-	            J_ptr += JME__MAX;
+	            }
 	        }
+		}
+	}
+
+	/** PARPE: row {@code mi} of {@code compute_invM_JT}, for it and the single thread's {@code iMJAndAd}. */
+	private static void invMJTRow(final double[] J, final double[] iMJ, final int[] jb,
+			final DxBody[] bodyP, final int bodyOfs, final double[] invI, int mi) {
+		int iMJ_ptr = mi * IMJ__MAX;
+		int J_ptr = mi * JME__MAX;
+		int b1 = first(jb, mi);
+		int b2 = second(jb, mi);
+		double k1 = bodyP[b1+bodyOfs].invMass;
+		for (int j = 0; j != JVE__L_COUNT; j++) iMJ[iMJ_ptr + IMJ__1L_MIN + j] = k1 * J[J_ptr + JME__J1L_MIN + j];
+		int invIrow1 = b1 * IIE__MAX + IIE__MATRIX_MIN;
+		Multiply333.multiply0_331(iMJ, iMJ_ptr + IMJ__1A_MIN, invI, invIrow1, J, J_ptr + JME__J1A_MIN);
+
+		if (b2 != -1) {
+			double k2 = bodyP[b2+bodyOfs].invMass;
+			for (int j = 0; j != JVE__L_COUNT; ++j) iMJ[iMJ_ptr + IMJ__2L_MIN + j] = k2 * J[J_ptr + JME__J2L_MIN + j];
+			int invIrow2 = b2 * IIE__MAX + IIE__MATRIX_MIN;
+			Multiply333.multiply0_331(iMJ, iMJ_ptr + IMJ__2A_MIN, invI, invIrow2, J, J_ptr + JME__J2A_MIN);
 		}
 	}
 
@@ -1480,11 +1489,11 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 
         if (m > 0) {
             // load lambda from the value saved on the previous iteration
-	        double[] lambda = work.doubles(Work.LAMBDA, m);
+	        double[] lambda = work.written(Work.LAMBDA, m);
             int nb = callContext.m_islandBodiesCount();
 
-            double[] cforce = work.doubles(Work.CFORCE, nb * CFE__MAX);
-            double[] iMJ = work.doubles(Work.IMJ, m * IMJ__MAX);//, INVMJ_ALIGNMENT);
+            double[] cforce = work.written(Work.CFORCE, nb * CFE__MAX);
+            double[] iMJ = work.written(Work.IMJ, m * IMJ__MAX);//, INVMJ_ALIGNMENT);
 	        // order to solve constraint rows in
 	        int[] order = work.order(m);
 	        double[] last_lambda = null;
@@ -1513,12 +1522,11 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 	            dxQuickStepIsland_Stage4a(stage4CallContext);
 
 				IFTIMING_dTimerNow ("solving LCP problem");
-				dxQuickStepIsland_Stage4LCP_iMJComputation(stage4CallContext);
+				dxQuickStepIsland_Stage4LCP_iMJAndAdSingleThread(stage4CallContext);
 	            dxQuickStepIsland_Stage4LCP_STfcComputation(stage4CallContext);
 	            if (work.warm != null) {
 	                warmStartRows(stage4CallContext, work.warm);
 	            }
-	            dxQuickStepIsland_Stage4LCP_AdComputation(stage4CallContext);
 	            dxQuickStepIsland_Stage4LCP_ReorderPrep(stage4CallContext);
 	            
 	            DxWorld world = callContext.m_world();
@@ -1783,37 +1791,64 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
             int mi = mi_step * step_size;
             int miend = mi + Math.min(step_size, m - mi);
 
-            int iMJ_ptr = mi * IMJ__MAX;
-            int j_ptr = mi * JME__MAX;
             while (true) {
-                double sum = 0;
-                for (int j=JVE__MIN; j != JVE__MAX; j++) sum += iMJ[iMJ_ptr + j + IMJ__1_MIN] * J[j_ptr + j + JME__J1_MIN];
-                int b2 = jb[mi*2+1];
-                if (b2 != -1) {
-                    for (int j=JVE__MIN; j != JVE__MAX; j++) sum += iMJ[iMJ_ptr + j + IMJ__2_MIN] * J[j_ptr + j + JME__J2_MIN];
-                }
-                double cfm_i = J[j_ptr + JME_CFM];
-                double Ad_i = sor_w / (sum + cfm_i);
-
-                // NOTE: This may seem unnecessary but it's indeed an optimization 
-                // to move multiplication by Ad[i] and cfm[i] out of iteration loop.
-                
-                // scale J and b by Ad
-                J[j_ptr + JME_CFM] = cfm_i * Ad_i;
-                J[j_ptr + JME_RHS] *= Ad_i;
-
-                for (int j = JVE__MIN; j != JVE__MAX; ++j) J[j_ptr + JME__J1_MIN + j] *= Ad_i;
-
-                if (b2 != -1) {
-                    for (int k = JVE__MIN; k != JVE__MAX; ++k) J[j_ptr + JME__J2_MIN + k] *= Ad_i;
-                }
+                adRow(J, iMJ, jb, sor_w, mi);
                 if (++mi == miend) {
                     break;
                 }
-                iMJ_ptr += IMJ__MAX;
-                j_ptr += JME__MAX;
             }
-            
+        }
+    }
+
+    /** PARPE: row {@code mi} of {@code Stage4LCP_AdComputation}, for it and the single thread's {@code iMJAndAd}. */
+    private static void adRow(double[] J, double[] iMJ, int[] jb, double sor_w, int mi) {
+        int iMJ_ptr = mi * IMJ__MAX;
+        int j_ptr = mi * JME__MAX;
+        double sum = 0;
+        for (int j=JVE__MIN; j != JVE__MAX; j++) sum += iMJ[iMJ_ptr + j + IMJ__1_MIN] * J[j_ptr + j + JME__J1_MIN];
+        int b2 = jb[mi*2+1];
+        if (b2 != -1) {
+            for (int j=JVE__MIN; j != JVE__MAX; j++) sum += iMJ[iMJ_ptr + j + IMJ__2_MIN] * J[j_ptr + j + JME__J2_MIN];
+        }
+        double cfm_i = J[j_ptr + JME_CFM];
+        double Ad_i = sor_w / (sum + cfm_i);
+
+        // NOTE: This may seem unnecessary but it's indeed an optimization 
+        // to move multiplication by Ad[i] and cfm[i] out of iteration loop.
+
+        // scale J and b by Ad
+        J[j_ptr + JME_CFM] = cfm_i * Ad_i;
+        J[j_ptr + JME_RHS] *= Ad_i;
+
+        for (int j = JVE__MIN; j != JVE__MAX; ++j) J[j_ptr + JME__J1_MIN + j] *= Ad_i;
+
+        if (b2 != -1) {
+            for (int k = JVE__MIN; k != JVE__MAX; ++k) J[j_ptr + JME__J2_MIN + k] *= Ad_i;
+        }
+    }
+
+    /**
+     * PARPE: on one thread, {@code iMJ = inv(M) J^T} and the scaling of {@code J} by {@code Ad}
+     * in one pass over the rows, each row's {@code iMJ} then its scaling, instead of a pass for
+     * each: a row's {@code Ad} reads only that row's {@code iMJ} and unscaled {@code J}, and what
+     * ran between the two passes (zeroing {@code fc}, the warm start's {@code fc = iMJ lambda})
+     * reads no {@code J}. The same operations on the same values; a row is read while it is in
+     * the cache.
+     */
+    private static void dxQuickStepIsland_Stage4LCP_iMJAndAdSingleThread(dxQuickStepperStage4CallContext stage4CallContext) {
+        DxStepperProcessingCallContext callContext = stage4CallContext.m_stepperCallContext;
+        dxQuickStepperLocalContext localContext = stage4CallContext.m_localContext;
+        double[] iMJ = stage4CallContext.m_iMJ;
+        double[] J = localContext.m_J;
+        int[] jb = localContext.m_jb;
+        DxBody[] body = callContext.m_islandBodiesStartA();
+        int bodyOfs = callContext.m_islandBodiesStartOfs();
+        double[] invI = localContext.m_invI;
+        double sor_w = callContext.m_world().qs.w;
+        int m = localContext.m_m;
+        for (int mi = 0; mi != m; mi++) {
+            invMJTRow(J, iMJ, jb, body, bodyOfs, invI, mi);
+            adRow(J, iMJ, jb, sor_w, mi);
         }
     }
     
