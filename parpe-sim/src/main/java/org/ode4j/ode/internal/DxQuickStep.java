@@ -14,7 +14,11 @@
  * {@code take}), and the constraint shuffle draws from the stepping world's own generator
  * ({@link WorldRandom}) instead of ODE4j's global one: the same numbers in the same order. Stage 0's
  * inertia products in the world frame use {@link Multiply333} (each entry written out, the same
- * products added in the same order) instead of ODE4j's {@code dMultiply0_333}/{@code dMultiply2_333}.
+ * products added in the same order) instead of ODE4j's {@code dMultiply0_333}/{@code dMultiply2_333},
+ * as do its momentum and gyroscopic torque and {@code inv(M) J^T} for ODE4j's {@code dMultiply0_331};
+ * stage 0 builds its implicit tensor entry by entry ({@code implicitInertia}) and zeroes no
+ * temporary the next call writes in full, stage 2a stores a row's zeros itself, and on one thread
+ * a row's {@code iMJ} and its scaling by {@code Ad} are one pass ({@code iMJAndAdSingleThread}).
  */
 /*************************************************************************
  *                                                                       *

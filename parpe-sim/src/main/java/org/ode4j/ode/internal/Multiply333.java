@@ -14,7 +14,10 @@ import org.ode4j.math.DVector3C;
  * column, too large), so nine calls and nine switches per product. Each entry here is the same
  * three products added in the same order, {@code (b_i0 c_0j + b_i1 c_1j) + b_i2 c_2j}, and the
  * entries are written in ODE4j's order, row by row: the results are bit-identical, even when
- * {@code a} is one of the factors (Multiply333Test compares them with ODE4j's).
+ * {@code a} is one of the factors (Multiply333Test compares them with ODE4j's). Likewise a 3x3
+ * matrix times a 3-vector ({@code dMultiply0_331}), whose three entries ODE4j computes by a call
+ * to {@code dCalcVectorDot3} and {@code dDOTpq} (arrays) or to {@code dotRow} with a switch over
+ * the row ({@code DMatrix3}): QuickStep's {@code inv(M) J^T} and stage 0's momentum and torque.
  */
 final class Multiply333 {
 	private Multiply333() {
