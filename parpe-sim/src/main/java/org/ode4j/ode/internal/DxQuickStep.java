@@ -14,7 +14,11 @@
  * {@code take}), and the constraint shuffle draws from the stepping world's own generator
  * ({@link WorldRandom}) instead of ODE4j's global one: the same numbers in the same order. Stage 0's
  * inertia products in the world frame use {@link Multiply333} (each entry written out, the same
- * products added in the same order) instead of ODE4j's {@code dMultiply0_333}/{@code dMultiply2_333}.
+ * products added in the same order) instead of ODE4j's {@code dMultiply0_333}/{@code dMultiply2_333},
+ * as do its momentum and gyroscopic torque and {@code inv(M) J^T} for ODE4j's {@code dMultiply0_331};
+ * stage 0 builds its implicit tensor entry by entry ({@code implicitInertia}) and zeroes no
+ * temporary the next call writes in full, stage 2a stores a row's zeros itself, and on one thread
+ * a row's {@code iMJ} and its scaling by {@code Ad} are one pass ({@code iMJAndAdSingleThread}).
  */
 /*************************************************************************
  *                                                                       *
@@ -48,7 +52,6 @@ import static org.ode4j.ode.OdeConstants.dInfinity;
 import static org.ode4j.ode.OdeMath.dInvertMatrix3;
 import static org.ode4j.ode.OdeMath.dMultiply0_331;
 import static org.ode4j.ode.OdeMath.dMultiplyAdd0_331;
-import static org.ode4j.ode.OdeMath.dSetCrossMatrixMinus;
 import static org.ode4j.ode.internal.Common.*;
 import static org.ode4j.ode.internal.Matrix.dSetZero;
 import static org.ode4j.ode.internal.Misc.dRandInt;
@@ -63,7 +66,9 @@ import java.util.Arrays;
 import java.util.concurrent.atomic.AtomicInteger;
 
 import org.ode4j.math.DMatrix3;
+import org.ode4j.math.DMatrix3C;
 import org.ode4j.math.DVector3;
+import org.ode4j.math.DVector3C;
 import org.ode4j.ode.DJoint;
 import org.ode4j.ode.internal.Objects_H.dxQuickStepParameters;
 import org.ode4j.ode.internal.cpp4j.FILE;
@@ -302,7 +307,11 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 		 * whose every entry the step writes before it reads it: {@code J} (stage 2a sets all 16
 		 * numbers of each of the {@code m} rows, then the joints fill them in) and {@code Jcopy}
 		 * (stage 2a copies the rows of the joints with feedback, the only ones stage 4b reads).
-		 * Zeroing them cost a pass over 256 bytes a row in every step.
+		 * Zeroing them cost a pass over 256 bytes a row in every step. Likewise {@code lambda} and
+		 * the body forces {@code cforce}, which stage 4a and {@code Stage4LCP_STfcComputation} zero
+		 * themselves (as ODE's C solver, whose arrays come unzeroed from its arena), and {@code iMJ},
+		 * whose second body's half of a row is read only where the row has a second body, the
+		 * rows {@code compute_invM_JT} writes in full.
 		 */
 		double[] written(int slot, int size) {
 			double[] a = doubles[slot];
@@ -682,26 +691,31 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 	        int iMJ_ptr = mi * IMJ__MAX;
 	        int J_ptr = mi * JME__MAX;
 	        while (true) {
-		        int b1 = first(jb, mi);
-				int b2 = second(jb, mi);
-				double k1 = bodyP[b1+bodyOfs].invMass;
-	            for (int j = 0; j != JVE__L_COUNT; j++) iMJ[iMJ_ptr + IMJ__1L_MIN + j] = k1 * J[J_ptr + JME__J1L_MIN + j];
-	            int invIrow1 = b1 * IIE__MAX + IIE__MATRIX_MIN;
-	            dMultiply0_331 (iMJ, iMJ_ptr + IMJ__1A_MIN, invI, invIrow1, J, J_ptr + JME__J1A_MIN);
-
-				if (b2 != -1) {
-					double k2 = bodyP[b2+bodyOfs].invMass;
-		            for (int j = 0; j != JVE__L_COUNT; ++j) iMJ[iMJ_ptr + IMJ__2L_MIN + j] = k2 * J[J_ptr + JME__J2L_MIN + j];
-		            int invIrow2 = b2 * IIE__MAX + IIE__MATRIX_MIN;
-		            dMultiply0_331 (iMJ, iMJ_ptr + IMJ__2A_MIN, invI, invIrow2, J, J_ptr + JME__J2A_MIN);
-				}
-
+	            invMJTRow(J, iMJ, jb, bodyP, bodyOfs, invI, mi);
 	            if (++mi == miend) {
 	                break;
-	            }			
-	            iMJ_ptr += IMJ__MAX;
-	            J_ptr += JME__MAX;
+	            }
 	        }
+		}
+	}
+
+	/** PARPE: row {@code mi} of {@code compute_invM_JT}, for it and the single thread's {@code iMJAndAd}. */
+	private static void invMJTRow(final double[] J, final double[] iMJ, final int[] jb,
+			final DxBody[] bodyP, final int bodyOfs, final double[] invI, int mi) {
+		int iMJ_ptr = mi * IMJ__MAX;
+		int J_ptr = mi * JME__MAX;
+		int b1 = first(jb, mi);
+		int b2 = second(jb, mi);
+		double k1 = bodyP[b1+bodyOfs].invMass;
+		for (int j = 0; j != JVE__L_COUNT; j++) iMJ[iMJ_ptr + IMJ__1L_MIN + j] = k1 * J[J_ptr + JME__J1L_MIN + j];
+		int invIrow1 = b1 * IIE__MAX + IIE__MATRIX_MIN;
+		Multiply333.multiply0_331(iMJ, iMJ_ptr + IMJ__1A_MIN, invI, invIrow1, J, J_ptr + JME__J1A_MIN);
+
+		if (b2 != -1) {
+			double k2 = bodyP[b2+bodyOfs].invMass;
+			for (int j = 0; j != JVE__L_COUNT; ++j) iMJ[iMJ_ptr + IMJ__2L_MIN + j] = k2 * J[J_ptr + JME__J2L_MIN + j];
+			int invIrow2 = b2 * IIE__MAX + IIE__MATRIX_MIN;
+			Multiply333.multiply0_331(iMJ, iMJ_ptr + IMJ__2A_MIN, invI, invIrow2, J, J_ptr + JME__J2A_MIN);
 		}
 	}
 
@@ -925,7 +939,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
         Work work = Work.get();
         while ((bodyIndex = claim(callContext.m_inertiaBodyIndex, nb, callContext.m_stepperCallContext)) != nb) {
             int invIrowP = bodyIndex * IIE__MAX;
-            DMatrix3 tmp = work.tmp.setZero();
+            DMatrix3 tmp = work.tmp; // PARPE: not zeroed, multiply2 writes all of it
             DxBody b = bodyP[bodyIndex + bodyOfs];
 
             // compute inverse inertia tensor in global frame
@@ -935,7 +949,7 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
             // Don't apply gyroscopic torques to bodies
             // if not flagged or the body is kinematic
             if (b.isFlagsGyroscopic() && (b.invMass>0)) {
-                DMatrix3 I = work.inertia.setZero();
+                DMatrix3 I = work.inertia; // PARPE: not zeroed, multiply0 writes all of it
                 // compute inertia tensor in global frame
                 Multiply333.multiply2(tmp,b.mass._I,b.posr().R());
                 Multiply333.multiply0(I,b.posr().R(),tmp);
@@ -949,8 +963,8 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
                 //"Stabilizing Gyroscopic Forces in Rigid Multibody Simulations"
                 // (LacoursiÃ¨re 2006)
                 double h = callContext.m_stepperCallContext.m_stepSize(); // Step size
-                DVector3 L = work.momentum.setZero(); // Compute angular momentum
-                dMultiply0_331(L,I,b.avel);
+                DVector3 L = work.momentum; // Compute angular momentum
+                Multiply333.multiply0_331(L,I,b.avel);
                 
                 // Compute a new effective 'inertia tensor'
                 // for the implicit step: the cross-product 
@@ -959,19 +973,14 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
                 // Itild may not be symmetric pos-definite, 
                 // but we can still use it to compute implicit
                 // gyroscopic torques.
-                DMatrix3 Itild= work.itild.setZero();//{0};  
-                dSetCrossMatrixMinus(Itild,L);//,4);
-//	                    for (int ii=0;ii<12;++ii) {
-//	                      Itild[ii]=Itild[ii]*h+I[ii];
-//	                    }
-                Itild.scale(h);
-                Itild.add(I);
+                DMatrix3 Itild= work.itild;
+                implicitInertia(Itild, L, h, I);
 
                 // Scale momentum by inverse time to get 
                 // a sort of "torque"
                 L.scale(dRecip(h));//dScaleVector3(L,dRecip(h)); 
                 // Invert the pseudo-tensor
-                DMatrix3 itInv = work.itInv.setZero();
+                DMatrix3 itInv = work.itInv; // PARPE: not zeroed, used only where dInvertMatrix3 wrote all of it
                 // This is a closed-form inversion.
                 // It's probably not numerically stable
                 // when dealing with small masses with
@@ -993,8 +1002,8 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
                     // to the old inertia matrix as explicit
                     // torques with a semi-implicit update
                     // step.
-                    DVector3 tau0 = work.tau0.setZero();
-                    dMultiply0_331(tau0,Itild,L);
+                    DVector3 tau0 = work.tau0;
+                    Multiply333.multiply0_331(tau0,Itild,L);
                     
                     // Add the gyro torques to the torque 
                     // accumulator
@@ -1006,6 +1015,25 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 //	#endif
             }
 	    }
+	}
+
+	/**
+	 * PARPE: {@code itild = h [L]x- + i} as ODE4j computes it, {@code itild.setZero()},
+	 * {@code dSetCrossMatrixMinus(itild, L)}, {@code itild.scale(h)}, {@code itild.add(i)}, with the
+	 * entries written out: each is the same product plus the same term (a zero of the diagonal,
+	 * {@code 0.0 * h}, too), without the passes over the whole matrix (Multiply333Test compares them bit for bit).
+	 */
+	static void implicitInertia(DMatrix3 itild, DVector3C L, double h, DMatrix3C i) {
+		double l0 = L.get0(), l1 = L.get1(), l2 = L.get2();
+		itild.set00(0.0 * h + i.get00());
+		itild.set01(l2 * h + i.get01());
+		itild.set02(-l1 * h + i.get02());
+		itild.set10(-l2 * h + i.get10());
+		itild.set11(0.0 * h + i.get11());
+		itild.set12(l0 * h + i.get12());
+		itild.set20(l1 * h + i.get20());
+		itild.set21(-l0 * h + i.get21());
+		itild.set22(0.0 * h + i.get22());
 	}
 
 	private static
@@ -1268,10 +1296,11 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 				{
 					int jEnd = jRow + infom * JME__MAX;
 					for (int jCurr = jRow; jCurr != jEnd; jCurr += JME__MAX) {
-						dSetZero(J, jCurr + JME__J1_MIN, JME__J1_COUNT);
+						// PARPE: the zeros stored here, not by dSetZero (a call per block that was not inlined)
+						for (int k = 0; k != JME__J1_COUNT; k++) J[jCurr + JME__J1_MIN + k] = 0.0;
 						J[jCurr + JME_RHS] = 0.0;
 						J[jCurr + JME_CFM] = worldCFM;
-						dSetZero(J, jCurr + JME__J2_MIN, JME__J2_COUNT);
+						for (int k = 0; k != JME__J2_COUNT; k++) J[jCurr + JME__J2_MIN + k] = 0.0;
 						J[jCurr + JME_LO] = -dInfinity;
 						J[jCurr + JME_HI] = dInfinity;
 					}
@@ -1464,11 +1493,11 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 
         if (m > 0) {
             // load lambda from the value saved on the previous iteration
-	        double[] lambda = work.doubles(Work.LAMBDA, m);
+	        double[] lambda = work.written(Work.LAMBDA, m);
             int nb = callContext.m_islandBodiesCount();
 
-            double[] cforce = work.doubles(Work.CFORCE, nb * CFE__MAX);
-            double[] iMJ = work.doubles(Work.IMJ, m * IMJ__MAX);//, INVMJ_ALIGNMENT);
+            double[] cforce = work.written(Work.CFORCE, nb * CFE__MAX);
+            double[] iMJ = work.written(Work.IMJ, m * IMJ__MAX);//, INVMJ_ALIGNMENT);
 	        // order to solve constraint rows in
 	        int[] order = work.order(m);
 	        double[] last_lambda = null;
@@ -1497,12 +1526,11 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
 	            dxQuickStepIsland_Stage4a(stage4CallContext);
 
 				IFTIMING_dTimerNow ("solving LCP problem");
-				dxQuickStepIsland_Stage4LCP_iMJComputation(stage4CallContext);
+				dxQuickStepIsland_Stage4LCP_iMJAndAdSingleThread(stage4CallContext);
 	            dxQuickStepIsland_Stage4LCP_STfcComputation(stage4CallContext);
 	            if (work.warm != null) {
 	                warmStartRows(stage4CallContext, work.warm);
 	            }
-	            dxQuickStepIsland_Stage4LCP_AdComputation(stage4CallContext);
 	            dxQuickStepIsland_Stage4LCP_ReorderPrep(stage4CallContext);
 	            
 	            DxWorld world = callContext.m_world();
@@ -1767,37 +1795,64 @@ dmemestimate_fn_t, dmaxcallcountestimate_fn_t {
             int mi = mi_step * step_size;
             int miend = mi + Math.min(step_size, m - mi);
 
-            int iMJ_ptr = mi * IMJ__MAX;
-            int j_ptr = mi * JME__MAX;
             while (true) {
-                double sum = 0;
-                for (int j=JVE__MIN; j != JVE__MAX; j++) sum += iMJ[iMJ_ptr + j + IMJ__1_MIN] * J[j_ptr + j + JME__J1_MIN];
-                int b2 = jb[mi*2+1];
-                if (b2 != -1) {
-                    for (int j=JVE__MIN; j != JVE__MAX; j++) sum += iMJ[iMJ_ptr + j + IMJ__2_MIN] * J[j_ptr + j + JME__J2_MIN];
-                }
-                double cfm_i = J[j_ptr + JME_CFM];
-                double Ad_i = sor_w / (sum + cfm_i);
-
-                // NOTE: This may seem unnecessary but it's indeed an optimization 
-                // to move multiplication by Ad[i] and cfm[i] out of iteration loop.
-                
-                // scale J and b by Ad
-                J[j_ptr + JME_CFM] = cfm_i * Ad_i;
-                J[j_ptr + JME_RHS] *= Ad_i;
-
-                for (int j = JVE__MIN; j != JVE__MAX; ++j) J[j_ptr + JME__J1_MIN + j] *= Ad_i;
-
-                if (b2 != -1) {
-                    for (int k = JVE__MIN; k != JVE__MAX; ++k) J[j_ptr + JME__J2_MIN + k] *= Ad_i;
-                }
+                adRow(J, iMJ, jb, sor_w, mi);
                 if (++mi == miend) {
                     break;
                 }
-                iMJ_ptr += IMJ__MAX;
-                j_ptr += JME__MAX;
             }
-            
+        }
+    }
+
+    /** PARPE: row {@code mi} of {@code Stage4LCP_AdComputation}, for it and the single thread's {@code iMJAndAd}. */
+    private static void adRow(double[] J, double[] iMJ, int[] jb, double sor_w, int mi) {
+        int iMJ_ptr = mi * IMJ__MAX;
+        int j_ptr = mi * JME__MAX;
+        double sum = 0;
+        for (int j=JVE__MIN; j != JVE__MAX; j++) sum += iMJ[iMJ_ptr + j + IMJ__1_MIN] * J[j_ptr + j + JME__J1_MIN];
+        int b2 = jb[mi*2+1];
+        if (b2 != -1) {
+            for (int j=JVE__MIN; j != JVE__MAX; j++) sum += iMJ[iMJ_ptr + j + IMJ__2_MIN] * J[j_ptr + j + JME__J2_MIN];
+        }
+        double cfm_i = J[j_ptr + JME_CFM];
+        double Ad_i = sor_w / (sum + cfm_i);
+
+        // NOTE: This may seem unnecessary but it's indeed an optimization 
+        // to move multiplication by Ad[i] and cfm[i] out of iteration loop.
+
+        // scale J and b by Ad
+        J[j_ptr + JME_CFM] = cfm_i * Ad_i;
+        J[j_ptr + JME_RHS] *= Ad_i;
+
+        for (int j = JVE__MIN; j != JVE__MAX; ++j) J[j_ptr + JME__J1_MIN + j] *= Ad_i;
+
+        if (b2 != -1) {
+            for (int k = JVE__MIN; k != JVE__MAX; ++k) J[j_ptr + JME__J2_MIN + k] *= Ad_i;
+        }
+    }
+
+    /**
+     * PARPE: on one thread, {@code iMJ = inv(M) J^T} and the scaling of {@code J} by {@code Ad}
+     * in one pass over the rows, each row's {@code iMJ} then its scaling, instead of a pass for
+     * each: a row's {@code Ad} reads only that row's {@code iMJ} and unscaled {@code J}, and what
+     * ran between the two passes (zeroing {@code fc}, the warm start's {@code fc = iMJ lambda})
+     * reads no {@code J}. The same operations on the same values; a row is read while it is in
+     * the cache.
+     */
+    private static void dxQuickStepIsland_Stage4LCP_iMJAndAdSingleThread(dxQuickStepperStage4CallContext stage4CallContext) {
+        DxStepperProcessingCallContext callContext = stage4CallContext.m_stepperCallContext;
+        dxQuickStepperLocalContext localContext = stage4CallContext.m_localContext;
+        double[] iMJ = stage4CallContext.m_iMJ;
+        double[] J = localContext.m_J;
+        int[] jb = localContext.m_jb;
+        DxBody[] body = callContext.m_islandBodiesStartA();
+        int bodyOfs = callContext.m_islandBodiesStartOfs();
+        double[] invI = localContext.m_invI;
+        double sor_w = callContext.m_world().qs.w;
+        int m = localContext.m_m;
+        for (int mi = 0; mi != m; mi++) {
+            invMJTRow(J, iMJ, jb, body, bodyOfs, invI, mi);
+            adRow(J, iMJ, jb, sor_w, mi);
         }
     }
     
