@@ -49,7 +49,7 @@ class CliTextTest {
     void everyHelpBundleHasExactlyTheHelpKeys() {
         List<String> problems = new ArrayList<>();
         for (Locale l : Lang.SUPPORTED.subList(1, Lang.SUPPORTED.size())) {
-            ResourceBundle b = own(Main.HELP, l);
+            ResourceBundle b = BundleCheck.own(Main.HELP, l);
             assertNotNull(b, "no help bundle for " + l);
             Set<String> have = new TreeSet<>(Collections.list(b.getKeys()));
             for (String k : HelpKeys.KEYS) {
@@ -98,7 +98,7 @@ class CliTextTest {
     void translationsKeepPicocliDefaultValuePlaceholders() {
         CommandLine top = new CommandLine(new Main());
         for (Locale l : Lang.SUPPORTED.subList(1, Lang.SUPPORTED.size())) {
-            ResourceBundle b = own(Main.HELP, l);
+            ResourceBundle b = BundleCheck.own(Main.HELP, l);
             for (String c : HelpKeys.OPTIONS_OF) {
                 for (ArgSpec a : top.getSubcommands().get(c).getCommandSpec().args()) {
                     String k = "parpe." + c + "." + key(a);
@@ -213,14 +213,6 @@ class CliTextTest {
         return ((CommandLine.Model.OptionSpec) a).longestName().replaceFirst("^-+", "");
     }
 
-    private static ResourceBundle own(String base, Locale l) {
-        try {
-            return ResourceBundle.Control.getControl(ResourceBundle.Control.FORMAT_PROPERTIES)
-                    .newBundle(base, l, "java.properties", CliTextTest.class.getClassLoader(), true);
-        } catch (ReflectiveOperationException | IOException e) {
-            return null;
-        }
-    }
 
     private static Stream<Path> sources() throws IOException {
         try (Stream<Path> s = Files.walk(Path.of("src/main/java"))) {

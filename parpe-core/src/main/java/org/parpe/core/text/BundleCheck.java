@@ -94,8 +94,11 @@ public final class BundleCheck {
         return out;
     }
 
-    /** The file of {@code locale} alone, without the English file behind it; null if there is none. */
-    private static ResourceBundle own(String base, Locale locale) {
+    /**
+     * The file of {@code locale} alone, without the English file behind it; null if there is none
+     * (the translators' checks, and the tests of bundles this class does not check, read it).
+     */
+    public static ResourceBundle own(String base, Locale locale) {
         // newBundle loads the one file, past the cache of getBundle, which would chain the English parent
         try {
             return ResourceBundle.Control.getControl(ResourceBundle.Control.FORMAT_PROPERTIES)

@@ -6,7 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.ByteArrayOutputStream;
-import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
@@ -17,6 +16,7 @@ import java.util.ResourceBundle;
 import java.util.Set;
 import java.util.TreeSet;
 import org.junit.jupiter.api.Test;
+import org.parpe.core.text.BundleCheck;
 import org.parpe.core.text.Lang;
 import org.parpe.gui.Main;
 
@@ -113,7 +113,7 @@ class LaunchLanguageTest {
                 keys.toString());
         List<String> problems = new ArrayList<>();
         for (Locale l : Lang.SUPPORTED.subList(1, Lang.SUPPORTED.size())) {
-            ResourceBundle b = own(LaunchOptions.HELP, l);
+            ResourceBundle b = BundleCheck.own(LaunchOptions.HELP, l);
             assertNotNull(b, "no help bundle for " + l);
             Set<String> have = new TreeSet<>(Collections.list(b.getKeys()));
             keys.stream().filter(k -> !have.contains(k)).forEach(k -> problems.add(l + ": missing " + k));
@@ -122,12 +122,4 @@ class LaunchLanguageTest {
         assertEquals(List.of(), problems, String.join("\n", problems));
     }
 
-    private static ResourceBundle own(String base, Locale l) {
-        try {
-            return ResourceBundle.Control.getControl(ResourceBundle.Control.FORMAT_PROPERTIES)
-                    .newBundle(base, l, "java.properties", LaunchLanguageTest.class.getClassLoader(), true);
-        } catch (ReflectiveOperationException | IOException e) {
-            return null;
-        }
-    }
 }

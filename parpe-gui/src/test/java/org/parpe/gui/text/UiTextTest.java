@@ -64,7 +64,7 @@ class UiTextTest {
     void jfaceButtonsInEveryLanguage() {
         List<String> problems = new ArrayList<>();
         for (Locale l : Lang.SUPPORTED.subList(1, Lang.SUPPORTED.size())) {
-            ResourceBundle b = own("org.eclipse.jface.messages", l);
+            ResourceBundle b = BundleCheck.own("org.eclipse.jface.messages", l);
             assertNotNull(b, "no org/eclipse/jface/messages_" + l + ".properties");
             Set<String> have = new TreeSet<>(Collections.list(b.getKeys()));
             IdeLanguage.JFACE_KEYS.stream().filter(k -> !have.contains(k)).forEach(k -> problems.add(l + ": missing " + k));
@@ -105,14 +105,6 @@ class UiTextTest {
         return ProseLiterals.in(file, java, text -> ALLOWED.contains(text) || KEYS.matcher(text).matches());
     }
 
-    private static ResourceBundle own(String base, Locale l) {
-        try {
-            return ResourceBundle.Control.getControl(ResourceBundle.Control.FORMAT_PROPERTIES)
-                    .newBundle(base, l, "java.properties", UiTextTest.class.getClassLoader(), true);
-        } catch (ReflectiveOperationException | IOException e) {
-            return null;
-        }
-    }
 
     /** Every Java file of parpe-gui's main code (also read by {@link PanelTextTest}). */
     static Stream<Path> sources() {
