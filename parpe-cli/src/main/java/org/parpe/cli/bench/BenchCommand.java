@@ -83,6 +83,7 @@ public final class BenchCommand implements Callable<Integer> {
         List<Benchmark> chosen = all.stream().filter(b -> only.isEmpty() || only.contains(b.name())).toList();
         BenchResults results = new BenchResults(chosen.stream().flatMap(b -> b.goals().stream()).toList());
         PrintStream shown = results.printer(out);
+        Machine.lines().forEach(shown::println);
         for (Benchmark b : chosen) {
             if (noFork || chosen.size() == 1 && b.jvmOptions().isEmpty()) {
                 shown.println("# " + b.name());
@@ -125,7 +126,8 @@ public final class BenchCommand implements Callable<Integer> {
                 .redirectError(ProcessBuilder.Redirect.INHERIT).start();
         try (BufferedReader in = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8))) {
             for (String line = in.readLine(); line != null; line = in.readLine()) {
-                if (!line.startsWith("# goals:")) {
+                // the parent's machine lines and summary stand for the whole run
+                if (!line.startsWith("# goals:") && !line.startsWith(Machine.PREFIX)) {
                     shown.println(line);
                 }
             }

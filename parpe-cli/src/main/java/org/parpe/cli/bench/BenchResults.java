@@ -137,7 +137,7 @@ final class BenchResults {
             String b = after.figures.getOrDefault(name, "-");
             Double va = value(a);
             Double vb = value(b);
-            String change = va == null || vb == null || va == 0 ? "" : String.format(Locale.ROOT, "%+.1f%%", (vb / va - 1) * 100);
+            String change = va == null || vb == null || va == 0 || name.startsWith(Machine.PREFIX) ? "" : String.format(Locale.ROOT, "%+.1f%%", (vb / va - 1) * 100);
             Goal g = after.goal(name);
             String goal = g == null ? "" : g.describe() + ": " + verdict(g, va) + " -> " + verdict(g, vb);
             rows.add(new String[] {name, a, b, change, goal});
@@ -152,6 +152,18 @@ final class BenchResults {
             out.println(String.format(Locale.ROOT, "%-" + width[0] + "s  %" + width[1] + "s  %" + width[2] + "s  %"
                     + width[3] + "s  %s", (Object[]) r).stripTrailing());
         }
+        String one = machine(before);
+        String other = machine(after);
+        if (one != null && other != null && !one.equals(other)) {
+            out.println("# " + CliMsg.OTHER_MACHINE.text(one, other));
+        }
+    }
+
+    /** The processor and the number of cores a run names, or null for a run that names none. */
+    private static String machine(BenchResults run) {
+        String cpu = run.figures.get(Machine.CPU);
+        String cores = run.figures.get(Machine.CORES);
+        return cpu == null || cores == null ? null : cpu + " × " + cores;
     }
 
     private static String verdict(Goal g, Double v) {

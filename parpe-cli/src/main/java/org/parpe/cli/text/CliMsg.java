@@ -298,6 +298,7 @@ public enum CliMsg implements Key {
     GOAL,
     HOLDS,
     MISSED,
+    OTHER_MACHINE,
     NO_EXAMPLES_FOLDER,
     NEEDS_GCC,
     JOINT_ANGLES,

@@ -85,4 +85,47 @@ class BenchResultsTest {
         Cli three = Cli.run("bench", "--compare", "a", "--compare", "b", "--compare", "c");
         assertEquals(2, three.code, three::toString);
     }
+
+    /** The head of /proc/cpuinfo on the 2-core KVM machine of 2026-11-29 (one processor of two shown). */
+    private static final String EPYC = "processor\t: 0\nvendor_id\t: AuthenticAMD\ncpu family\t: 25\nmodel\t\t: 1\n"
+            + "model name\t: AMD EPYC\nstepping\t: 1\ncpu MHz\t\t: 2445.428\ncache size\t: 512 KB\n";
+
+    @Test
+    void aRunNamesTheMachineItMeasured() {
+        assertEquals(List.of("machine.cpu=AMD EPYC", "machine.cores=2", "machine.cpu_mhz=2445", "machine.java=OpenJDK 17.0.15",
+                "machine.load_average=0.75"), Machine.lines(EPYC, 2, "OpenJDK 17.0.15", 0.75));
+        // no /proc/cpuinfo (not Linux) and no load average (Windows): the architecture, nothing guessed
+        assertEquals(List.of("machine.cpu=" + System.getProperty("os.arch"), "machine.cores=8", "machine.java=J"),
+                Machine.lines("", 8, "J", -1));
+        // a model name padded with runs of spaces, as some processors report it
+        assertEquals("machine.cpu=Intel(R) Xeon(R) CPU E5-2690 v4 @ 2.60GHz",
+                Machine.lines("model name\t: Intel(R) Xeon(R) CPU E5-2690 v4   @ 2.60GHz\n", 1, "J", -1).get(0));
+        List<String> here = Machine.lines();
+        assertTrue(here.get(0).startsWith("machine.cpu=") && here.get(0).length() > "machine.cpu=".length(), here::toString);
+        assertEquals("machine.cores=" + Runtime.getRuntime().availableProcessors(), here.get(1));
+    }
+
+    @Test
+    void runsFromTwoMachinesAreSaidNotToCompare(@TempDir Path dir) throws Exception {
+        Path zen = dir.resolve("zen.txt");
+        Path epyc = dir.resolve("epyc.txt");
+        Path epycAgain = dir.resolve("epyc2.txt");
+        Files.writeString(zen, "machine.cpu=AMD Ryzen 9 9950X\nmachine.cores=2\nsim.snake200.realtime_factor=18.5\n",
+                StandardCharsets.UTF_8);
+        Files.writeString(epyc, "machine.cpu=AMD EPYC\nmachine.cores=2\nmachine.load_average=0.75\n"
+                + "sim.snake200.realtime_factor=8.5\n", StandardCharsets.UTF_8);
+        Files.writeString(epycAgain, "machine.cpu=AMD EPYC\nmachine.cores=2\nmachine.load_average=1.75\n"
+                + "sim.snake200.realtime_factor=8.4\n", StandardCharsets.UTF_8);
+        Cli c = Cli.run("bench", "--compare", zen.toString(), "--compare", epyc.toString());
+        assertEquals(0, c.code, c::toString);
+        List<String> lines = c.out.lines().map(String::stripTrailing).toList();
+        assertTrue(lines.get(1).matches("machine\\.cpu +AMD Ryzen 9 9950X +AMD EPYC"), lines.get(1));
+        assertTrue(lines.get(2).matches("machine\\.cores +2 +2"), "no change in per cent for the machine: " + lines.get(2));
+        assertEquals("# the two runs come from different machines (AMD Ryzen 9 9950X × 2; AMD EPYC × 2): their times do not"
+                + " compare, only their counts and bytes", lines.get(lines.size() - 1));
+        Cli same = Cli.run("bench", "--compare", epyc.toString(), "--compare", epycAgain.toString());
+        assertEquals(0, same.code, same::toString);
+        assertTrue(same.out.lines().noneMatch(l -> l.startsWith("#")), same::toString);
+        assertTrue(same.out.contains("-1.2%"), same::toString);
+    }
 }

@@ -132,6 +132,7 @@ class CliTextTest {
                     "a comment written into the hardware profile"),
             new NotProse("text/ParseErrors\\.java", ".*\\((\\.\\*|\\[\\^'\\]\\+|int\\||\\?:).*",
                     "a pattern of picocli's own English message, which ParseErrors reads to say it in the user's language"),
+            new NotProse("bench/Machine\\.java", "model name|cpu MHz", "a field name of Linux's /proc/cpuinfo, which Machine reads"),
             new NotProse("hw/RecordCommand\\.java", "recorded from ", "a comment written into the recorded PARSL file"),
             new NotProse("export/RobotExport\\.java|Ide\\.java", " --out trace\\.csv| \\./parpe gui ",
                     "part of a command line the user copies"),
