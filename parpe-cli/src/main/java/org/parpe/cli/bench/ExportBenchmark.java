@@ -29,14 +29,16 @@ import org.parpe.core.run.RunOptions;
 
 /**
  * {@code parpe bench --only export}: ticks per second of CPU time of the generated C (gcc -O2) for
- * the 1 000-module benchmark snake of {@link CoreBenchmark} against the Java scheduler (medians of
- * five rounds each; per CPU second, as the scheduler's own figure, because on a shared machine the
- * wall clock also counts the time other processes had the core), and the RAM the exported
+ * the 1 000-module benchmark snake of {@link CoreBenchmark} against the Java scheduler (five
+ * rounds of each, taken in turn, the ratio the median of the five pairs' ratios; per CPU second,
+ * as the scheduler's own figure, because on a shared machine the wall clock also counts the time
+ * other processes had the core), and the RAM the exported
  * hello-world snake and centipede need on an Arduino Uno and on the host.
  */
 public final class ExportBenchmark implements Benchmark {
     private static final int MODULES = 1000;
     private static final int ROUNDS = 5;
+    private static final long WARM_UP_NANOS = 2_000_000_000L;
     private static final Pattern TIME = Pattern.compile("(\\d+)m([\\d.]+)s");
 
     @Override
@@ -52,12 +54,32 @@ public final class ExportBenchmark implements Benchmark {
     @Override
     public void run(PrintStream out) throws Exception {
         Program snake = load(Path.of("bench-snake.xml"), CoreBenchmark.snake(MODULES));
-        double java = javaTicksPerSecond(snake);
-        double c = cTicksPerSecond(snake);
+        Path dir = Files.createTempDirectory("parpe-export-bench");
+        double[] c = new double[ROUNDS];
+        double[] java = new double[ROUNDS];
+        double[] ratio = new double[ROUNDS];
+        try {
+            compile(snake, dir);
+            JavaTicks scheduler = new JavaTicks(snake);
+            // A round of each in turn: a neighbour that slows the machine for a while slows both
+            // sides of a pair, and the ratio is taken pair by pair.
+            for (int round = 0; round < ROUNDS; round++) {
+                java[round] = scheduler.round();
+                c[round] = cTicksPerSecond(dir);
+                ratio[round] = c[round] / java[round];
+            }
+        } finally {
+            try (Stream<Path> s = Files.walk(dir)) {
+                for (Path f : s.sorted(Comparator.reverseOrder()).toList()) {
+                    Files.deleteIfExists(f);
+                }
+            }
+        }
         out.printf(Locale.ROOT, "export.modules=%d%n", MODULES);
-        out.printf(Locale.ROOT, "export.c_ticks_per_s=%.0f%n", c);
-        out.printf(Locale.ROOT, "export.java_ticks_per_s=%.0f%n", java);
-        out.printf(Locale.ROOT, "export.c_over_java=%.2f%n", c / java);
+        out.printf(Locale.ROOT, "export.c_ticks_per_s=%.0f%n", median(c));
+        out.printf(Locale.ROOT, "export.java_ticks_per_s=%.0f%n", median(java));
+        out.printf(Locale.ROOT, "export.c_over_java=%.2f%n", median(ratio));
+        out.printf(Locale.ROOT, "export.c_over_java_min=%.2f%n", Arrays.stream(ratio).min().orElse(0));
         for (String example : List.of("hello-snake", "centipede-walk")) {
             Path file = Benchmark.examples().resolve(example + ".xml");
             Program p = load(file, Files.readString(file));
@@ -73,58 +95,62 @@ public final class ExportBenchmark implements Benchmark {
         }
     }
 
-    private static double javaTicksPerSecond(Program p) {
-        Engine e = new Engine(p, RunOptions.defaults());
-        e.start();
-        for (int i = 0; i < 3000; i++) {
-            e.step();
+    /** The Java scheduler on the benchmark snake, compiled by the JIT before its first round. */
+    private static final class JavaTicks {
+        private final Engine engine;
+        private final ThreadMXBean mx = ManagementFactory.getThreadMXBean();
+
+        JavaTicks(Program p) {
+            engine = new Engine(p, RunOptions.defaults());
+            engine.start();
+            // warm up by CPU time, not by ticks: a slower machine needs more ticks before C2 is done
+            long start = mx.getCurrentThreadCpuTime();
+            while (mx.getCurrentThreadCpuTime() - start < WARM_UP_NANOS) {
+                steps(100);
+            }
         }
-        ThreadMXBean mx = ManagementFactory.getThreadMXBean();
-        double[] rates = new double[ROUNDS];
-        for (int round = 0; round < rates.length; round++) {
+
+        /** Ticks per second of this thread's CPU time over one round of 0.6 s. */
+        double round() {
             long start = mx.getCurrentThreadCpuTime();
             long ticks = 0;
             while (mx.getCurrentThreadCpuTime() - start < 600_000_000L) {
-                for (int i = 0; i < 100; i++) {
-                    e.step();
-                }
+                steps(100);
                 ticks += 100;
             }
-            rates[round] = ticks / ((mx.getCurrentThreadCpuTime() - start) / 1e9);
+            return ticks / ((mx.getCurrentThreadCpuTime() - start) / 1e9);
         }
-        return median(rates);
+
+        private void steps(int n) {
+            for (int i = 0; i < n; i++) {
+                engine.step();
+            }
+        }
     }
 
     private static double median(double[] values) {
-        Arrays.sort(values);
-        return values[values.length / 2];
+        double[] sorted = values.clone();
+        Arrays.sort(sorted);
+        return sorted[sorted.length / 2];
     }
 
-    private static double cTicksPerSecond(Program p) throws IOException, InterruptedException {
-        Path dir = Files.createTempDirectory("parpe-export-bench");
-        try {
-            ExportFolder.writeHost(p, 0.01, dir);
-            List<String> gcc = new ArrayList<>(List.of("gcc", "-std=c99", "-O2", "-o", "program"));
-            try (Stream<Path> s = Files.list(dir)) {
-                s.map(f -> f.getFileName().toString()).filter(n -> n.endsWith(".c")).sorted().forEach(gcc::add);
-            }
-            gcc.add("-lm");
-            run(dir, gcc);
-            int ticks = 60_000; // some 1 s: the shell counts CPU time in hundredths
-            double[] rates = new double[ROUNDS];
-            for (int round = 0; round < rates.length; round++) {
-                // the shell's times (POSIX) prints its children's user and system CPU time on its second line
-                String out = run(dir, List.of("sh", "-c", "./program --duration " + (ticks - 1) * 0.01 + "; times"));
-                rates[round] = ticks / cpuSeconds(out.lines().reduce((a, b) -> b).orElse(""));
-            }
-            return median(rates);
-        } finally {
-            try (Stream<Path> s = Files.walk(dir)) {
-                for (Path f : s.sorted(Comparator.reverseOrder()).toList()) {
-                    Files.deleteIfExists(f);
-                }
-            }
+    /** Writes the host export of {@code p} to {@code dir} and compiles it there with gcc -O2 to {@code program}. */
+    private static void compile(Program p, Path dir) throws IOException, InterruptedException {
+        ExportFolder.writeHost(p, 0.01, dir);
+        List<String> gcc = new ArrayList<>(List.of("gcc", "-std=c99", "-O2", "-o", "program"));
+        try (Stream<Path> s = Files.list(dir)) {
+            s.map(f -> f.getFileName().toString()).filter(n -> n.endsWith(".c")).sorted().forEach(gcc::add);
         }
+        gcc.add("-lm");
+        run(dir, gcc);
+    }
+
+    /** One round of the compiled program: ticks per second of its CPU time. */
+    private static double cTicksPerSecond(Path dir) throws IOException, InterruptedException {
+        int ticks = 60_000; // 1-2 s: the shell counts CPU time in hundredths
+        // the shell's times (POSIX) prints its children's user and system CPU time on its second line
+        String out = run(dir, List.of("sh", "-c", "./program --duration " + (ticks - 1) * 0.01 + "; times"));
+        return ticks / cpuSeconds(out.lines().reduce((a, b) -> b).orElse(""));
     }
 
     /** The sum of the times of a line of the shell's {@code times}, such as {@code 0m0.352000s 0m0.004000s}. */
