@@ -61,7 +61,7 @@ cp -r examples docs "$input/"
 cp README.md "$input/"
 
 # The Java runtime holds only the modules the jars use (jdeps), not the whole JDK; the tests run
-# on such a runtime too (test-image-runtime.sh, from test-all).
+# on such a runtime too (image-runtime.sh: test-all runs the IDE's tests on it).
 modules=$(packaging/runtime-modules.sh "$input")
 echo "dist.sh: runtime modules $modules" >&2
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Prints the Java modules of PARPE's image runtime, comma-separated: those jdeps finds that the
-# jars in DIR use. dist.sh builds the image's runtime from them; test-image-runtime.sh runs the
-# tests on a runtime of exactly these modules, since jdeps sees only static references and a
+# jars in DIR use. dist.sh builds the image's runtime from them; image-runtime.sh builds one for the
+# IDE's tests, a runtime of exactly these modules, since jdeps sees only static references and a
 # module a class reaches lazily (a service, a locale, a charset) would be missing only there.
 # Relative names, and the system's class-path separator, so that Windows' jdeps understands them.
 #   runtime-modules.sh DIR
